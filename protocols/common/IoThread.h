@@ -1,0 +1,49 @@
+#pragma once
+// One Boost.Asio io_context on its own thread: every protocol stack owns one. Commands enter with post();
+// the stack's handlers run only on this thread, so stack state needs no locks.
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/post.hpp>
+
+#include <functional>
+#include <future>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace ocu {
+
+class IoThread {
+public:
+    explicit IoThread(std::string name = "io");
+    ~IoThread();
+    IoThread(const IoThread&) = delete;
+    IoThread& operator=(const IoThread&) = delete;
+
+    void start();
+    // Stops the loop and joins; pending handlers are dropped. Safe to call twice.
+    void stop();
+    bool running() const { return m_thread.joinable(); }
+    bool onThread() const { return std::this_thread::get_id() == m_thread.get_id(); }
+
+    boost::asio::io_context& context() { return m_context; }
+    template <class F> void post(F&& f) { boost::asio::post(m_context, std::forward<F>(f)); }
+    // Runs f on the io thread and waits for its result. Never call from the GUI thread's hot paths:
+    // meant for tests, start-up and shutdown.
+    template <class F> auto call(F&& f) -> decltype(f()) {
+        if (onThread() || !running())
+            return f();
+        std::packaged_task<decltype(f())()> task(std::forward<F>(f));
+        auto fut = task.get_future();
+        boost::asio::post(m_context, [&task] { task(); });
+        return fut.get();
+    }
+
+private:
+    std::string m_name;
+    boost::asio::io_context m_context;
+    std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> m_work;
+    std::thread m_thread;
+};
+
+} // namespace ocu

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every build, test and run dependency of the OCU from Debian 12 packages.
+# Idempotent: when every package is already installed it does nothing (no apt-get update).
+set -euo pipefail
+
+packages=(
+  cmake g++ make ninja-build ccache git ca-certificates pkg-config
+  qt6-base-dev libqt6opengl6-dev qt6-svg-dev qt6-positioning-dev libqt6positioning6-plugins
+  qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools
+  libvtk9-dev
+  nlohmann-json3-dev libboost-dev libssl-dev openssl
+  libgeographiclib-dev libpugixml-dev libsdl2-dev libsqlite3-dev
+  libbenchmark-dev
+  xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-dev libegl-mesa0 libglew-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  SUDO="sudo"
+fi
+echo "install-deps: installing ${#missing[@]} missing packages: ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
