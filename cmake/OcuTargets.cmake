@@ -1,8 +1,11 @@
 # Helpers shared by every folder's CMakeLists.txt.
 
 # Adds a source folder when its CMakeLists.txt exists (protocol stacks land one by one).
+# OCU_SKIP_DIRS (cache list) leaves folders out, for working on one part while others are in flux.
+set(OCU_SKIP_DIRS "" CACHE STRING "Source folders to leave out of the build (development aid)")
 macro(ocu_optional_subdirectory dir)
-  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${dir}/CMakeLists.txt)
+  file(RELATIVE_PATH _ocu_rel ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/${dir})
+  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${dir}/CMakeLists.txt AND NOT _ocu_rel IN_LIST OCU_SKIP_DIRS)
     add_subdirectory(${dir})
   endif()
 endmacro()

@@ -1,0 +1,131 @@
+#include "ConsoleApp.h"
+
+#include "LogRouting.h"
+#include "MainWindow.h"
+#include "Screenshot.h"
+#include "SiteLoader.h"
+#include "SiteRuntime.h"
+
+#include <QApplication>
+#include <QLabel>
+#include <QLocale>
+#include <QMessageBox>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <QTranslator>
+
+#include <cstdio>
+
+namespace ocu {
+
+void prepareSurfaceFormat() {
+    QSurfaceFormat fmt;
+    fmt.setRenderableType(QSurfaceFormat::OpenGL);
+    fmt.setVersion(3, 2);
+    fmt.setProfile(QSurfaceFormat::CoreProfile);
+    fmt.setRedBufferSize(8);
+    fmt.setGreenBufferSize(8);
+    fmt.setBlueBufferSize(8);
+    fmt.setAlphaBufferSize(8);
+    fmt.setDepthBufferSize(24);
+    fmt.setStencilBufferSize(0);
+    fmt.setSamples(0);
+    fmt.setSwapBehavior(QSurfaceFormat::DoubleBuffer);
+    QSurfaceFormat::setDefaultFormat(fmt);
+}
+
+QString languageFromArgs(const QStringList& args) {
+    for (int i = 1; i < args.size(); ++i) {
+        const QString& a = args[i];
+        if (a == QLatin1String("--lang") && i + 1 < args.size())
+            return args[i + 1].toLower();
+        if (a.startsWith(QLatin1String("--lang=")))
+            return a.mid(7).toLower();
+    }
+    return {};
+}
+
+QString installTranslator(QApplication& app, const QString& lang) {
+    QString l = lang;
+    if (l.isEmpty())
+        l = QLocale::system().name().left(2).toLower();
+    if (l != QLatin1String("de") && l != QLatin1String("fr"))
+        return QStringLiteral("en");
+    auto* t = new QTranslator(&app);
+    if (!t->load(QStringLiteral(":/i18n/ocu_%1.qm").arg(l))) {
+        delete t;
+        return QStringLiteral("en");
+    }
+    app.installTranslator(t);
+    QLocale::setDefault(QLocale(l));
+    return l;
+}
+
+static bool interactive(const CommandLineOptions& o) {
+    return !o.headless && o.screenshotFile.isEmpty() &&
+           QGuiApplication::platformName() != QLatin1String("offscreen");
+}
+
+int runConsole(QApplication& app, const CommandLineOptions& options) {
+    installLogRouting();
+    if (!options.logCategories.isEmpty())
+        enableLogCategories(options.logCategories);
+
+    auto site = loadSite(options.configFile);
+    if (!site) {
+        const QString msg = QCoreApplication::translate("ConsoleApp", "The site configuration was refused:\n%1")
+                                .arg(QString::fromStdString(site.error()));
+        std::fprintf(stderr, "ocu: %s\n", qPrintable(msg));
+        if (interactive(options))
+            QMessageBox::critical(nullptr, QCoreApplication::translate("ConsoleApp", "Operator Control Unit"), msg);
+        return 2;
+    }
+    SiteConfig config = std::move(site.value());
+    if (options.noSim)
+        config.simulation.enabled = false;
+
+    SiteRuntime runtime(config);
+    QString startError = runtime.start();
+    if (!startError.isEmpty()) {
+        std::fprintf(stderr, "ocu: %s\n", qPrintable(startError));
+        if (interactive(options))
+            QMessageBox::critical(nullptr, QCoreApplication::translate("ConsoleApp", "Operator Control Unit"),
+                                  startError);
+        return 3;
+    }
+
+    if (options.headless)
+        return runtime.runHeadless(app, options.durationSeconds);
+
+    MainWindow window;
+    window.setWindowTitle(QCoreApplication::translate("ConsoleApp", "Operator Control Unit — %1")
+                              .arg(QString::fromStdString(config.name)));
+    runtime.populate(window);
+    const bool screenshot = !options.screenshotFile.isEmpty();
+    if (screenshot) {
+        window.resize(options.size);
+    } else if (options.resetLayout || !window.restoreLayout()) {
+        window.resize(1600, 1000);
+    }
+    window.show();
+
+    int exitCode = 0;
+    if (screenshot) {
+        QTimer::singleShot(static_cast<int>(options.settleSeconds * 1000), &window, [&] {
+            const QString err = saveScreenshot(window, options.view, options.screenshotFile);
+            if (!err.isEmpty()) {
+                std::fprintf(stderr, "ocu: screenshot failed: %s\n", qPrintable(err));
+                exitCode = 4;
+            }
+            app.quit();
+        });
+        app.exec();
+        runtime.stop();
+        return exitCode;
+    }
+    exitCode = app.exec();
+    runtime.stop();
+    return exitCode;
+}
+
+} // namespace ocu

@@ -1,0 +1,275 @@
+#include "MainWindow.h"
+
+#include "Theme.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace ocu {
+
+namespace {
+constexpr int kLayoutVersion = 1;
+}
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setObjectName(QStringLiteral("OcuMainWindow"));
+    setWindowTitle(tr("Operator Control Unit"));
+    setDockNestingEnabled(true);
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowNestedDocks | QMainWindow::AllowTabbedDocks |
+                   QMainWindow::GroupedDragging);
+    createDocks();
+    createToolBar();
+    createMenus();
+    createStatusBar();
+    applyDefaultLayout();
+    m_defaultState = saveState(kLayoutVersion);
+}
+
+MainWindow::~MainWindow() = default;
+
+QList<Panel> MainWindow::panels() {
+    return {Panel::Fleet, Panel::SiteMap, Panel::Site3D, Panel::JausControl,
+            Panel::Teleop, Panel::PassCounts, Panel::EventLog};
+}
+
+QString MainWindow::panelKey(Panel panel) {
+    switch (panel) {
+    case Panel::Fleet:
+        return QStringLiteral("fleet");
+    case Panel::SiteMap:
+        return QStringLiteral("map");
+    case Panel::Site3D:
+        return QStringLiteral("3d");
+    case Panel::JausControl:
+        return QStringLiteral("jaus");
+    case Panel::Teleop:
+        return QStringLiteral("teleop");
+    case Panel::PassCounts:
+        return QStringLiteral("passcounts");
+    case Panel::EventLog:
+        return QStringLiteral("events");
+    }
+    return {};
+}
+
+QString MainWindow::panelTitle(Panel panel) const {
+    switch (panel) {
+    case Panel::Fleet:
+        return tr("Fleet");
+    case Panel::SiteMap:
+        return tr("Site map (2D)");
+    case Panel::Site3D:
+        return tr("Site 3D");
+    case Panel::JausControl:
+        return tr("JAUS control");
+    case Panel::Teleop:
+        return tr("Teleop");
+    case Panel::PassCounts:
+        return tr("Pass counts");
+    case Panel::EventLog:
+        return tr("Event log");
+    }
+    return {};
+}
+
+void MainWindow::createDocks() {
+    for (Panel p : panels()) {
+        auto* dock = new QDockWidget(panelTitle(p), this);
+        dock->setObjectName(QStringLiteral("dock-") + panelKey(p));
+        dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
+                          QDockWidget::DockWidgetFloatable);
+        auto* empty = new QLabel(tr("Starting…"), dock);
+        empty->setAlignment(Qt::AlignCenter);
+        dock->setWidget(empty);
+        m_docks.insert(p, dock);
+    }
+}
+
+void MainWindow::setPanelWidget(Panel panel, QWidget* widget) {
+    QDockWidget* d = m_docks.value(panel);
+    QWidget* old = d->widget();
+    d->setWidget(widget);
+    if (old && old != widget)
+        old->deleteLater();
+}
+
+QWidget* MainWindow::panelWidget(Panel panel) const { return m_docks.value(panel)->widget(); }
+
+void MainWindow::createToolBar() {
+    auto* tb = new QToolBar(tr("Safety"), this);
+    tb->setObjectName(QStringLiteral("toolbar-safety"));
+    // The stop must never be hidden: not movable, not floatable, no context menu to close it.
+    tb->setMovable(false);
+    tb->setFloatable(false);
+    tb->toggleViewAction()->setVisible(false);
+    tb->setContextMenuPolicy(Qt::PreventContextMenu);
+    tb->setIconSize(QSize(28, 28));
+    addToolBar(Qt::TopToolBarArea, tb);
+
+    m_stopAll = new QAction(tr("STOP ALL"), this);
+    m_stopAll->setObjectName(QStringLiteral("action-stop-all"));
+    m_stopAll->setShortcuts({QKeySequence(Qt::Key_F12), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Space)});
+    m_stopAll->setShortcutContext(Qt::ApplicationShortcut); // also from floating panels
+    m_stopAll->setToolTip(tr("Stop every machine this console may stop: JAUS emergency stop to the vehicles "
+                             "it controls and ISO 23725 all-stop to every AHS link (F12 or Ctrl+Shift+Space). "
+                             "Stopping never asks for confirmation."));
+    connect(m_stopAll, &QAction::triggered, this, &MainWindow::stopAllRequested);
+    tb->addAction(m_stopAll);
+    m_stopAllButton = qobject_cast<QToolButton*>(tb->widgetForAction(m_stopAll));
+    if (m_stopAllButton) {
+        m_stopAllButton->setObjectName(QStringLiteral("button-stop-all"));
+        m_stopAllButton->setMinimumSize(150, 40);
+        m_stopAllButton->setFocusPolicy(Qt::StrongFocus);
+        m_stopAllButton->setStyleSheet(QStringLiteral(
+            "QToolButton { background:#c81e1e; color:white; font-weight:bold; font-size:16px;"
+            " border:2px solid #7a0b0b; border-radius:6px; padding:4px 14px; }"
+            "QToolButton:hover { background:#e02626; } QToolButton:pressed { background:#8e1010; }"
+            "QToolButton:focus { border:3px solid #ffd400; }"));
+    }
+    tb->addSeparator();
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* shot = file->addAction(tr("Save &screenshot…"));
+    shot->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    connect(shot, &QAction::triggered, this, [this] {
+        const QString f = QFileDialog::getSaveFileName(this, tr("Save screenshot"), QStringLiteral("ocu.png"),
+                                                       tr("PNG images (*.png)"));
+        if (!f.isEmpty())
+            grab().save(f, "PNG");
+    });
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"));
+    quit->setShortcut(QKeySequence::Quit);
+    connect(quit, &QAction::triggered, this, &QWidget::close);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    for (Panel p : panels()) {
+        QAction* a = m_docks.value(p)->toggleViewAction();
+        view->addAction(a);
+    }
+    view->addSeparator();
+    QAction* reset = view->addAction(tr("&Reset layout"));
+    reset->setObjectName(QStringLiteral("action-reset-layout"));
+    connect(reset, &QAction::triggered, this, &MainWindow::resetLayout);
+    m_nightAction = view->addAction(tr("&Night palette"));
+    m_nightAction->setObjectName(QStringLiteral("action-night"));
+    m_nightAction->setCheckable(true);
+    m_nightAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+    connect(m_nightAction, &QAction::toggled, this, &MainWindow::setNightMode);
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* keys = help->addAction(tr("&Keyboard shortcuts"));
+    connect(keys, &QAction::triggered, this, [this] {
+        QMessageBox::information(
+            this, tr("Keyboard shortcuts"),
+            tr("F12 or Ctrl+Shift+Space: STOP ALL\n"
+               "Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop\n"
+               "Site map: arrows pan, +/- zoom, F follow the selected machine\n"
+               "Ctrl+Shift+N: night palette\nCtrl+Shift+P: save a screenshot"));
+    });
+    QAction* about = help->addAction(tr("&About"));
+    connect(about, &QAction::triggered, this, [this] {
+        QMessageBox::about(this, tr("About the Operator Control Unit"),
+                           tr("Operator Control Unit %1\nJAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 "
+                              "and OSYRIS on one console.")
+                               .arg(QApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::createStatusBar() {
+    for (const QString& p : {QStringLiteral("JAUS"), QStringLiteral("ISO 23725"), QStringLiteral("OSYRIS")}) {
+        auto* ind = new LinkIndicator(p, this);
+        m_links.insert(p, ind);
+        statusBar()->addPermanentWidget(ind);
+    }
+    m_alarmLabel = new QLabel(this);
+    m_alarmLabel->setObjectName(QStringLiteral("label-alarms"));
+    statusBar()->addPermanentWidget(m_alarmLabel);
+    setUnacknowledgedAlarms(0);
+}
+
+void MainWindow::setUnacknowledgedAlarms(int count) {
+    m_unacked = count;
+    m_alarmLabel->setText(count == 0 ? tr("No unacknowledged alarms") : tr("%n unacknowledged alarm(s)", "", count));
+    m_alarmLabel->setStyleSheet(count == 0 ? QString()
+                                           : QStringLiteral("background:#c81e1e; color:white; font-weight:bold;"
+                                                            " padding:1px 6px; border-radius:3px;"));
+}
+
+void MainWindow::setNightMode(bool night) {
+    m_night = night;
+    if (m_nightAction && m_nightAction->isChecked() != night)
+        m_nightAction->setChecked(night);
+    if (auto* app = qobject_cast<QApplication*>(QCoreApplication::instance()))
+        applyTheme(*app, night ? Theme::Night : Theme::Day);
+}
+
+void MainWindow::applyDefaultLayout() {
+    // Dispatcher layout: fleet list left, map in the middle with 3D as a tab, JAUS and teleop right,
+    // event log and pass counts along the bottom.
+    // Splits first, tabs last: tabifying before a split drags the whole tab group along.
+    addDockWidget(Qt::LeftDockWidgetArea, m_docks[Panel::Fleet]);
+    addDockWidget(Qt::LeftDockWidgetArea, m_docks[Panel::SiteMap]);
+    splitDockWidget(m_docks[Panel::Fleet], m_docks[Panel::SiteMap], Qt::Horizontal);
+    splitDockWidget(m_docks[Panel::SiteMap], m_docks[Panel::JausControl], Qt::Horizontal);
+    addDockWidget(Qt::BottomDockWidgetArea, m_docks[Panel::EventLog]);
+    splitDockWidget(m_docks[Panel::EventLog], m_docks[Panel::PassCounts], Qt::Horizontal);
+    tabifyDockWidget(m_docks[Panel::SiteMap], m_docks[Panel::Site3D]);
+    tabifyDockWidget(m_docks[Panel::JausControl], m_docks[Panel::Teleop]);
+    for (QDockWidget* d : std::as_const(m_docks))
+        d->show();
+    m_docks[Panel::SiteMap]->raise();
+    m_docks[Panel::JausControl]->raise();
+    resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]}, {420, 900, 380},
+                Qt::Horizontal);
+    resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]}, {700, 220}, Qt::Vertical);
+}
+
+void MainWindow::resetLayout() {
+    for (QDockWidget* d : std::as_const(m_docks)) {
+        d->setFloating(false);
+        d->show();
+    }
+    if (!restoreState(m_defaultState, kLayoutVersion))
+        applyDefaultLayout();
+    m_docks[Panel::SiteMap]->raise();
+    m_docks[Panel::JausControl]->raise();
+}
+
+void MainWindow::saveLayout() const {
+    QSettings s;
+    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    s.setValue(QStringLiteral("window/state"), saveState(kLayoutVersion));
+    s.setValue(QStringLiteral("window/night"), m_night);
+}
+
+bool MainWindow::restoreLayout() {
+    QSettings s;
+    const QByteArray geometry = s.value(QStringLiteral("window/geometry")).toByteArray();
+    const QByteArray state = s.value(QStringLiteral("window/state")).toByteArray();
+    setNightMode(s.value(QStringLiteral("window/night"), false).toBool());
+    if (geometry.isEmpty() || state.isEmpty())
+        return false;
+    restoreGeometry(geometry);
+    return restoreState(state, kLayoutVersion);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    saveLayout();
+    QMainWindow::closeEvent(event);
+}
+
+} // namespace ocu

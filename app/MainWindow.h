@@ -1,0 +1,72 @@
+#pragma once
+// The console's main window: dockable, closable, re-openable panels around the site, a toolbar whose
+// STOP ALL is always visible, and a status bar with one indicator per protocol link.
+#include <QMainWindow>
+#include <QMap>
+
+#include "LinkIndicator.h"
+
+class QDockWidget;
+class QLabel;
+class QToolButton;
+
+namespace ocu {
+
+enum class Panel { Fleet, SiteMap, Site3D, JausControl, Teleop, PassCounts, EventLog };
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    static QList<Panel> panels();
+    static QString panelKey(Panel panel); // stable name: fleet, map, 3d, jaus, teleop, passcounts, events
+    QString panelTitle(Panel panel) const;
+
+    QDockWidget* dock(Panel panel) const { return m_docks.value(panel); }
+    // Replaces the panel's content; the window takes ownership.
+    void setPanelWidget(Panel panel, QWidget* widget);
+    QWidget* panelWidget(Panel panel) const;
+
+    QAction* stopAllAction() const { return m_stopAll; }
+    QToolButton* stopAllButton() const { return m_stopAllButton; }
+    LinkIndicator* linkIndicator(const QString& protocol) const { return m_links.value(protocol); }
+    void setUnacknowledgedAlarms(int count);
+    int unacknowledgedAlarms() const { return m_unacked; }
+
+    void setNightMode(bool night);
+    bool nightMode() const { return m_night; }
+
+    // Layout persistence (QSettings). restoreLayout() returns false when nothing was saved.
+    void saveLayout() const;
+    bool restoreLayout();
+    void resetLayout();
+
+signals:
+    void stopAllRequested();
+    void alarmsClicked();
+    void screenshotRequested(const QString& file);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void createDocks();
+    void createToolBar();
+    void createMenus();
+    void createStatusBar();
+    void applyDefaultLayout();
+
+    QMap<Panel, QDockWidget*> m_docks;
+    QMap<QString, LinkIndicator*> m_links;
+    QAction* m_stopAll = nullptr;
+    QToolButton* m_stopAllButton = nullptr;
+    QAction* m_nightAction = nullptr;
+    QLabel* m_alarmLabel = nullptr;
+    QByteArray m_defaultState;
+    int m_unacked = 0;
+    bool m_night = false;
+};
+
+} // namespace ocu

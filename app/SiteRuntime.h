@@ -1,0 +1,39 @@
+#pragma once
+// Everything that runs behind the window for one site: the built-in simulators (when enabled), the
+// protocol stacks on their worker threads, the bridges into Qt, and the models the panels show.
+#include "site/SiteConfig.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+
+class QApplication;
+
+namespace ocu {
+
+class MainWindow;
+
+class SiteRuntime : public QObject {
+    Q_OBJECT
+public:
+    explicit SiteRuntime(SiteConfig config, QObject* parent = nullptr);
+    ~SiteRuntime() override;
+
+    // Starts simulators and stacks; returns an empty string or the reason it could not.
+    QString start();
+    void stop();
+    const SiteConfig& config() const { return m_config; }
+
+    // Fills the window's panels and connects STOP ALL, link indicators and alarms.
+    void populate(MainWindow& window);
+    // JSON-lines monitor on stdout, commands on stdin; returns the exit code.
+    int runHeadless(QApplication& app, double durationSeconds);
+
+private:
+    struct Impl;
+    SiteConfig m_config;
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace ocu

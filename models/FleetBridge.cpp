@@ -1,0 +1,75 @@
+#include "models/FleetBridge.h"
+
+#include <QDateTime>
+
+namespace ocu {
+
+FleetBridge::FleetBridge(Protocol protocol, QObject* parent)
+    : QObject(parent), m_protocol(protocol),
+      m_machines(this, [this](auto&& batch) { deliverMachines(std::move(batch)); }),
+      m_links(this, [this](auto&& batch) { deliverLinks(std::move(batch)); }) {
+    qRegisterMetaType<ocu::MachineState>();
+    qRegisterMetaType<ocu::FleetEvent>();
+    qRegisterMetaType<ocu::LinkStatus>();
+}
+
+FleetBridge::~FleetBridge() = default;
+
+bool FleetBridge::ownsMachine(const QString& id) const { return id.startsWith(protocolPrefix(m_protocol)); }
+
+void FleetBridge::publishMachine(const MachineState& state) { m_machines.push(state.id, state); }
+
+void FleetBridge::publishRemoval(const QString& id) { m_machines.push(id, std::nullopt); }
+
+void FleetBridge::publishLink(const LinkStatus& status) { m_links.push(status.link, status); }
+
+void FleetBridge::publishEvent(const FleetEvent& event) {
+    FleetEvent ev = event;
+    if (ev.timeMs == 0)
+        ev.timeMs = QDateTime::currentMSecsSinceEpoch();
+    if (ev.source.isEmpty())
+        ev.source = toString(m_protocol);
+    QMetaObject::invokeMethod(this, [this, ev] { emit eventRaised(ev); }, Qt::QueuedConnection);
+}
+
+CommandResult FleetBridge::command(const QString& name, const QJsonObject&) {
+    return CommandResult::failure(QStringLiteral("command '%1' not supported by %2").arg(name, toString(m_protocol)));
+}
+
+QVector<LinkStatus> FleetBridge::links() const {
+    QVector<LinkStatus> out;
+    out.reserve(m_linkState.size());
+    for (const LinkStatus& l : m_linkState)
+        out.push_back(l);
+    return out;
+}
+
+void FleetBridge::flushPending() {
+    m_links.drainNow();
+    m_machines.drainNow();
+}
+
+void FleetBridge::deliverMachines(std::vector<std::pair<QString, std::optional<MachineState>>>&& batch) {
+    QVector<MachineState> updated;
+    QStringList removed;
+    updated.reserve(int(batch.size()));
+    for (auto& [id, state] : batch) {
+        if (state)
+            updated.push_back(std::move(*state));
+        else
+            removed.push_back(id);
+    }
+    if (!removed.isEmpty())
+        emit machinesRemoved(removed);
+    if (!updated.isEmpty())
+        emit machinesUpdated(updated);
+}
+
+void FleetBridge::deliverLinks(std::vector<std::pair<QString, LinkStatus>>&& batch) {
+    for (auto& [name, status] : batch) {
+        m_linkState.insert(name, status);
+        emit linkChanged(status);
+    }
+}
+
+} // namespace ocu

@@ -1,0 +1,81 @@
+#include "models/FleetSelection.h"
+
+#include "models/FleetModel.h"
+
+namespace ocu {
+
+FleetSelection::FleetSelection(FleetModel* model, QObject* parent)
+    : QObject(parent), m_model(model), m_selection(new QItemSelectionModel(model, this)) {
+    connect(m_selection, &QItemSelectionModel::selectionChanged, this, &FleetSelection::onModelSelectionChanged);
+    connect(m_selection, &QItemSelectionModel::currentChanged, this,
+            [this](const QModelIndex& cur, const QModelIndex&) { onCurrentChanged(cur); });
+    // Rows removed under the selection: QItemSelectionModel updates itself; keep the current id honest.
+    connect(model, &FleetModel::machineRemoved, this, [this](const QString& id) {
+        if (id == m_current) {
+            m_current.clear();
+            emit currentMachineChanged(QString());
+        }
+        onModelSelectionChanged();
+    });
+}
+
+QStringList FleetSelection::selectedIds() const {
+    QStringList out;
+    for (const QModelIndex& idx : m_selection->selectedRows(0))
+        out.push_back(idx.data(FleetModel::IdRole).toString());
+    return out;
+}
+
+bool FleetSelection::isSelected(const QString& id) const {
+    const int row = m_model->rowOf(id);
+    return row >= 0 && m_selection->isRowSelected(row, {});
+}
+
+void FleetSelection::select(const QStringList& ids, const QString& current) {
+    QItemSelection sel;
+    for (const QString& id : ids) {
+        const int row = m_model->rowOf(id);
+        if (row >= 0)
+            sel.select(m_model->index(row, 0), m_model->index(row, FleetModel::ColumnCount - 1));
+    }
+    const QString cur = !current.isEmpty() && ids.contains(current) ? current : (ids.isEmpty() ? QString() : ids.first());
+    const int curRow = m_model->rowOf(cur);
+    m_selection->select(sel, QItemSelectionModel::ClearAndSelect);
+    m_selection->setCurrentIndex(curRow >= 0 ? m_model->index(curRow, 0) : QModelIndex(),
+                                 QItemSelectionModel::NoUpdate);
+    if (curRow < 0 && !m_current.isEmpty()) {
+        m_current.clear();
+        emit currentMachineChanged(QString());
+    }
+}
+
+void FleetSelection::setCurrent(const QString& id) { select(id.isEmpty() ? QStringList{} : QStringList{id}, id); }
+
+void FleetSelection::toggle(const QString& id) {
+    QStringList ids = selectedIds();
+    if (ids.contains(id))
+        ids.removeAll(id);
+    else
+        ids.push_back(id);
+    select(ids, ids.contains(id) ? id : QString());
+}
+
+void FleetSelection::clear() { select({}); }
+
+void FleetSelection::onModelSelectionChanged() {
+    const QStringList ids = selectedIds();
+    if (ids != m_lastEmitted) {
+        m_lastEmitted = ids;
+        emit selectionChanged(ids);
+    }
+}
+
+void FleetSelection::onCurrentChanged(const QModelIndex& current) {
+    const QString id = current.isValid() ? current.data(FleetModel::IdRole).toString() : QString();
+    if (id != m_current) {
+        m_current = id;
+        emit currentMachineChanged(id);
+    }
+}
+
+} // namespace ocu

@@ -1,0 +1,314 @@
+#include "models/HeadlessMonitor.h"
+
+#include "models/AlarmModel.h"
+#include "models/FleetBridge.h"
+#include "models/FleetModel.h"
+#include "models/StopController.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonParseError>
+#include <QSocketNotifier>
+#include <unistd.h>
+
+namespace ocu {
+
+HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, StopController* stop, QObject* parent)
+    : QObject(parent), m_fleet(fleet), m_alarms(alarms), m_stop(stop) {
+    m_clock.start();
+    if (fleet) {
+        connect(fleet, &FleetModel::machinesChanged, this, &HeadlessMonitor::onMachinesChanged);
+        connect(fleet, &FleetModel::machineStaleChanged, this,
+                [this](const QString& id, bool) { onMachinesChanged({id}); });
+        connect(fleet, &FleetModel::machineRemoved, this, [this](const QString& id) {
+            m_printed.remove(id);
+            m_pending.remove(id);
+            QJsonObject o;
+            o[QStringLiteral("type")] = QStringLiteral("machine_removed");
+            o[QStringLiteral("id")] = id;
+            writeLine(o);
+        });
+    }
+    if (alarms)
+        connect(alarms, &AlarmModel::eventAdded, this, &HeadlessMonitor::onEvent);
+    connect(&m_flushTimer, &QTimer::timeout, this, &HeadlessMonitor::flushPending);
+    setRateLimitMs(1000);
+}
+
+HeadlessMonitor::~HeadlessMonitor() = default;
+
+void HeadlessMonitor::setOutput(QIODevice* out) { m_out = out; }
+
+void HeadlessMonitor::setRateLimitMs(int ms) {
+    m_rateMs = std::max(0, ms);
+    // Pending lines are checked at a quarter of the interval (bounded), so a line is at most ~25 % late.
+    m_flushTimer.start(std::clamp(m_rateMs / 4, 20, 250));
+}
+
+void HeadlessMonitor::addBridge(FleetBridge* bridge) {
+    connect(bridge, &FleetBridge::linkChanged, this, &HeadlessMonitor::onLink);
+}
+
+void HeadlessMonitor::writeLine(const QJsonObject& o) {
+    QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
+    line += '\n';
+    QIODevice* out = m_out.data();
+    if (!out) {
+        if (!m_stdout) {
+            m_stdout = std::make_unique<QFile>();
+            if (!m_stdout->open(STDOUT_FILENO, QIODevice::WriteOnly | QIODevice::Unbuffered))
+                return;
+        }
+        out = m_stdout.get();
+    }
+    out->write(line);
+    if (auto* f = qobject_cast<QFile*>(out))
+        f->flush();
+}
+
+QJsonObject HeadlessMonitor::machineJson(const MachineState& m, bool stale, qint64 ageMs) const {
+    QJsonObject o;
+    o[QStringLiteral("type")] = QStringLiteral("machine");
+    o[QStringLiteral("id")] = m.id;
+    o[QStringLiteral("protocol")] = toString(m.protocol);
+    o[QStringLiteral("name")] = m.name;
+    o[QStringLiteral("machine_type")] = m.type;
+    if (m.hasPosition) {
+        o[QStringLiteral("lat")] = m.lat;
+        o[QStringLiteral("lon")] = m.lon;
+        o[QStringLiteral("e")] = m.e;
+        o[QStringLiteral("n")] = m.n;
+        o[QStringLiteral("u")] = m.u;
+        o[QStringLiteral("heading")] = m.headingDeg;
+    } else {
+        o[QStringLiteral("lat")] = QJsonValue::Null;
+        o[QStringLiteral("lon")] = QJsonValue::Null;
+        o[QStringLiteral("e")] = QJsonValue::Null;
+        o[QStringLiteral("n")] = QJsonValue::Null;
+        o[QStringLiteral("heading")] = QJsonValue::Null;
+    }
+    o[QStringLiteral("speed")] = m.speed;
+    o[QStringLiteral("state")] = m.modeText.isEmpty() ? toString(m.mode) : m.modeText;
+    o[QStringLiteral("mode")] = toString(m.mode);
+    o[QStringLiteral("stop")] = toString(m.stop);
+    if (!m.stopText.isEmpty())
+        o[QStringLiteral("stop_text")] = m.stopText;
+    o[QStringLiteral("controller")] = m.controller.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(m.controller);
+    o[QStringLiteral("control")] = toString(m.control);
+    o[QStringLiteral("health")] = toString(m.health);
+    o[QStringLiteral("link")] = toString(m.link);
+    o[QStringLiteral("stale")] = stale;
+    o[QStringLiteral("status")] = toString(statusOf(m, stale));
+    o[QStringLiteral("age_ms")] = double(ageMs);
+    return o;
+}
+
+static QString signatureOf(const MachineState& m, bool stale) {
+    return QStringLiteral("%1|%2|%3|%4|%5|%6|%7")
+        .arg(int(m.stop))
+        .arg(int(m.link))
+        .arg(m.modeText)
+        .arg(int(m.control))
+        .arg(int(m.health))
+        .arg(stale ? 1 : 0)
+        .arg(m.controller);
+}
+
+void HeadlessMonitor::printMachine(const QString& id) {
+    if (!m_fleet)
+        return;
+    const int row = m_fleet->rowOf(id);
+    if (row < 0)
+        return;
+    const MachineState& m = m_fleet->machineAt(row);
+    const bool stale = m_fleet->isStaleAt(row);
+    writeLine(machineJson(m, stale, m_fleet->ageMsAt(row)));
+    Printed& p = m_printed[id];
+    p.atMs = m_clock.elapsed();
+    p.signature = signatureOf(m, stale);
+    m_pending.remove(id);
+}
+
+void HeadlessMonitor::onMachinesChanged(const QStringList& ids) {
+    if (!m_fleet)
+        return;
+    const qint64 now = m_clock.elapsed();
+    for (const QString& id : ids) {
+        const int row = m_fleet->rowOf(id);
+        if (row < 0)
+            continue;
+        auto it = m_printed.constFind(id);
+        const bool important = it == m_printed.constEnd() ||
+                               it->signature != signatureOf(m_fleet->machineAt(row), m_fleet->isStaleAt(row));
+        if (important || m_rateMs == 0 || now - it->atMs >= m_rateMs)
+            printMachine(id);
+        else
+            m_pending.insert(id);
+    }
+}
+
+void HeadlessMonitor::flushPending() {
+    if (m_pending.isEmpty())
+        return;
+    const qint64 now = m_clock.elapsed();
+    const QSet<QString> pending = m_pending;
+    for (const QString& id : pending) {
+        const Printed p = m_printed.value(id);
+        if (now - p.atMs >= m_rateMs)
+            printMachine(id);
+    }
+}
+
+void HeadlessMonitor::printAll() {
+    if (!m_fleet)
+        return;
+    for (const QString& id : m_fleet->ids())
+        printMachine(id);
+}
+
+void HeadlessMonitor::onLink(const LinkStatus& s) {
+    const QString sig = toString(s.state) + QLatin1Char('|') + s.detail;
+    if (m_linkSig.value(s.link) == sig)
+        return;
+    m_linkSig.insert(s.link, sig);
+    auto* bridge = qobject_cast<FleetBridge*>(sender());
+    QJsonObject o;
+    o[QStringLiteral("type")] = QStringLiteral("link");
+    o[QStringLiteral("protocol")] = bridge ? toString(bridge->protocol()) : QString();
+    o[QStringLiteral("link")] = s.link;
+    o[QStringLiteral("state")] = toString(s.state);
+    o[QStringLiteral("age_ms")] = double(s.dataAgeMs);
+    o[QStringLiteral("detail")] = s.detail;
+    writeLine(o);
+}
+
+void HeadlessMonitor::onEvent(const FleetEvent& e) {
+    QJsonObject o;
+    o[QStringLiteral("type")] = QStringLiteral("event");
+    o[QStringLiteral("time")] = QDateTime::fromMSecsSinceEpoch(e.timeMs, Qt::UTC).toString(Qt::ISODateWithMs);
+    o[QStringLiteral("severity")] = toString(e.severity);
+    o[QStringLiteral("kind")] = toString(e.kind);
+    o[QStringLiteral("machine")] = e.machineId;
+    o[QStringLiteral("source")] = e.source;
+    o[QStringLiteral("text")] = e.text;
+    o[QStringLiteral("requires_ack")] = e.requiresAck;
+    writeLine(o);
+}
+
+QByteArray HeadlessMonitor::result(const QJsonObject& cmd, bool ok, const QString& message) {
+    QJsonObject o;
+    o[QStringLiteral("type")] = QStringLiteral("result");
+    QString name = cmd.value(QStringLiteral("cmd")).toString();
+    if (name.isEmpty())
+        name = cmd.value(QStringLiteral("command")).toString();
+    o[QStringLiteral("cmd")] = name;
+    if (cmd.contains(QStringLiteral("req")))
+        o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
+    if (cmd.contains(QStringLiteral("id")))
+        o[QStringLiteral("id")] = cmd.value(QStringLiteral("id"));
+    o[QStringLiteral("ok")] = ok;
+    o[QStringLiteral("message")] = message;
+    writeLine(o);
+    QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
+    emit commandHandled(line);
+    return line;
+}
+
+QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
+    const QByteArray line = raw.trimmed();
+    if (line.isEmpty())
+        return {};
+    QJsonParseError err{};
+    const QJsonDocument doc = QJsonDocument::fromJson(line, &err);
+    if (err.error != QJsonParseError::NoError || !doc.isObject())
+        return result({}, false,
+                      err.error != QJsonParseError::NoError ? QStringLiteral("invalid JSON: %1").arg(err.errorString())
+                                                            : QStringLiteral("a command must be a JSON object"));
+    const QJsonObject cmd = doc.object();
+    QString name = cmd.value(QStringLiteral("cmd")).toString();
+    if (name.isEmpty())
+        name = cmd.value(QStringLiteral("command")).toString();
+    const QString id = cmd.value(QStringLiteral("id")).toString();
+    if (name == QLatin1String("list")) {
+        printAll();
+        return result(cmd, true, QStringLiteral("%1 machines").arg(m_fleet ? m_fleet->rowCount() : 0));
+    }
+    if (!m_stop)
+        return result(cmd, false, QStringLiteral("no stop controller"));
+    const QString origin = QStringLiteral("headless");
+    if (name == QLatin1String("stop_all")) {
+        const CommandResult r = m_stop->stopAll(origin);
+        return result(cmd, r.ok, r.message);
+    }
+    if (name == QLatin1String("stop")) {
+        if (id.isEmpty())
+            return result(cmd, false, QStringLiteral("missing \"id\""));
+        const CommandResult r = m_stop->stopMachine(id, origin);
+        return result(cmd, r.ok, r.message);
+    }
+    if (name == QLatin1String("clear_stop")) {
+        if (id.isEmpty())
+            return result(cmd, false, QStringLiteral("missing \"id\""));
+        // The scripted equivalent of the GUI's deliberate hold: an explicit "confirm": true.
+        if (cmd.value(QStringLiteral("confirm")).toBool(false) != true) {
+            const CommandResult r = m_stop->clearStop(id, QString(), origin); // audited refusal
+            return result(cmd, false, r.message + QStringLiteral(" (add \"confirm\": true)"));
+        }
+        const CommandResult r = m_stop->clearStop(id, m_stop->requestClearToken(id), origin);
+        return result(cmd, r.ok, r.message);
+    }
+    if (name == QLatin1String("request_control") || name == QLatin1String("release_control") ||
+        name == QLatin1String("drive") || (!name.isEmpty() && m_stop->bridgeFor(id))) {
+        if (id.isEmpty())
+            return result(cmd, false, QStringLiteral("missing \"id\""));
+        const CommandResult r = m_stop->command(name, cmd, origin);
+        return result(cmd, r.ok, r.message);
+    }
+    return result(cmd, false, name.isEmpty() ? QStringLiteral("missing \"cmd\"") : QStringLiteral("unknown command %1").arg(name));
+}
+
+void HeadlessMonitor::consumeInput(const QByteArray& chunk) {
+    m_inBuf += chunk;
+    int nl;
+    while ((nl = int(m_inBuf.indexOf('\n'))) >= 0) {
+        const QByteArray line = m_inBuf.left(nl);
+        m_inBuf.remove(0, nl + 1);
+        handleLine(line);
+    }
+    if (m_inBuf.size() > 1 << 20) { // a runaway line without newline: drop it, say so
+        m_inBuf.clear();
+        result({}, false, QStringLiteral("input line too long (over 1 MiB), dropped"));
+    }
+}
+
+bool HeadlessMonitor::startStdin() {
+    if (m_stdinNotifier)
+        return true;
+    m_stdinNotifier = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, this);
+    connect(m_stdinNotifier, &QSocketNotifier::activated, this, [this] {
+        char buf[4096];
+        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+        if (n <= 0) {
+            m_stdinNotifier->setEnabled(false);
+            if (!m_inBuf.isEmpty())
+                consumeInput("\n");
+            emit inputFinished();
+            return;
+        }
+        consumeInput(QByteArray(buf, int(n)));
+    });
+    return true;
+}
+
+void HeadlessMonitor::setInput(QIODevice* in) {
+    connect(in, &QIODevice::readyRead, this, [this, in] { consumeInput(in->readAll()); });
+    connect(in, &QIODevice::readChannelFinished, this, [this, in] {
+        consumeInput(in->readAll());
+        if (!m_inBuf.isEmpty())
+            consumeInput("\n");
+        emit inputFinished();
+    });
+}
+
+} // namespace ocu

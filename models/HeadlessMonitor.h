@@ -1,0 +1,102 @@
+#pragma once
+// The headless monitor (issue 6 §8): JSON lines on an output device (stdout) for machine changes
+// (rate-limited per machine, default 1 Hz; stop/link/mode/control/health/staleness changes are printed at
+// once), link changes and alarm/event entries; JSON-line commands on an input device (stdin) answered with
+// one result line each. Role and authority are enforced by the bridges, exactly as for the GUI, and every
+// command is audited by the StopController.
+//
+// Output lines:
+//   {"type":"machine","id":"jaus:101","protocol":"jaus","name":..,"machine_type":..,"lat":..,"lon":..,"e":..,
+//    "n":..,"u":..,"heading":..,"speed":..,"state":..,"mode":..,"stop":"none|stopped|unknown","stop_text":..,
+//    "controller":..,"control":..,"health":..,"link":..,"stale":false,"age_ms":..,"status":..}
+//   {"type":"machine_removed","id":..}
+//   {"type":"link","protocol":..,"link":..,"state":..,"age_ms":..,"detail":..}
+//   {"type":"event","time":..,"severity":..,"kind":..,"machine":..,"source":..,"text":..}
+//   {"type":"result","cmd":..,"req":<echoed>,"ok":true|false,"message":..}
+// Commands ("cmd" or "command" key; optional "req" is echoed):
+//   {"cmd":"stop_all"}  {"cmd":"stop","id":..}  {"cmd":"clear_stop","id":..,"confirm":true}
+//   {"cmd":"request_control","id":..}  {"cmd":"release_control","id":..}
+//   {"cmd":"drive","id":..,"mode":"velocity|effort","linear":..,"angular":..,"duration":..}  {"cmd":"list"}
+#include <QByteArray>
+#include <QElapsedTimer>
+#include <QHash>
+#include <QJsonObject>
+#include <QObject>
+#include <QPointer>
+#include <QSet>
+#include <QTimer>
+#include <memory>
+
+class QIODevice;
+class QSocketNotifier;
+class QFile;
+
+namespace ocu {
+
+class AlarmModel;
+class FleetBridge;
+class FleetModel;
+class StopController;
+struct LinkStatus;
+struct FleetEvent;
+struct MachineState;
+
+class HeadlessMonitor : public QObject {
+    Q_OBJECT
+public:
+    HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, StopController* stop, QObject* parent = nullptr);
+    ~HeadlessMonitor() override;
+
+    // Output device (not owned); default stdout.
+    void setOutput(QIODevice* out);
+    // Per-machine minimum interval between routine lines (ms); 0 = every change. Default 1000.
+    void setRateLimitMs(int ms);
+    int rateLimitMs() const { return m_rateMs; }
+    void addBridge(FleetBridge* bridge);
+
+    // Read commands from stdin (QSocketNotifier on fd 0); inputFinished() at end of input.
+    bool startStdin();
+    // Read commands from any device (not owned): readyRead + readChannelFinished.
+    void setInput(QIODevice* in);
+
+    // Executes one JSON command line and returns (and writes) the result line.
+    QByteArray handleLine(const QByteArray& line);
+
+    // Prints one line for every machine now.
+    void printAll();
+
+signals:
+    void inputFinished();
+    void commandHandled(const QByteArray& resultLine);
+
+private:
+    void onMachinesChanged(const QStringList& ids);
+    void onLink(const LinkStatus& s);
+    void onEvent(const FleetEvent& e);
+    void flushPending();
+    void printMachine(const QString& id);
+    void writeLine(const QJsonObject& o);
+    void consumeInput(const QByteArray& chunk);
+    QJsonObject machineJson(const MachineState& m, bool stale, qint64 ageMs) const;
+    QByteArray result(const QJsonObject& cmd, bool ok, const QString& message);
+
+    QPointer<FleetModel> m_fleet;
+    QPointer<AlarmModel> m_alarms;
+    QPointer<StopController> m_stop;
+    QPointer<QIODevice> m_out;
+    std::unique_ptr<QFile> m_stdout;
+    int m_rateMs = 1000;
+    QTimer m_flushTimer;
+    QElapsedTimer m_clock;
+    struct Printed {
+        qint64 atMs = -1; // m_clock time of the last line
+        QString signature; // the fields whose change is printed at once
+    };
+    QHash<QString, Printed> m_printed;
+    QSet<QString> m_pending;
+    QHash<QString, QString> m_linkSig;
+    QByteArray m_inBuf;
+    QSocketNotifier* m_stdinNotifier = nullptr;
+};
+
+} // namespace ocu

@@ -1,0 +1,130 @@
+#include "models/PassCountLayer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ocu {
+
+QRect PassCountLayer::countsIn(QRect cells, std::vector<std::uint16_t>& out) const {
+    const QRect clipped = cells.intersected(QRect(0, 0, columns(), rows()));
+    out.clear();
+    if (clipped.isEmpty())
+        return clipped;
+    out.reserve(size_t(clipped.width()) * size_t(clipped.height()));
+    for (int r = clipped.top(); r <= clipped.bottom(); ++r)
+        for (int c = clipped.left(); c <= clipped.right(); ++c)
+            out.push_back(std::uint16_t(std::clamp(count(c, r), 0, 65535)));
+    return clipped;
+}
+
+GridPassCountLayer::GridPassCountLayer(QPointF origin, double cellSize, int columns, int rows)
+    : m_origin(origin), m_cell(cellSize > 0 ? cellSize : 1.0), m_cols(std::max(0, columns)),
+      m_rows(std::max(0, rows)), m_cells(size_t(m_cols) * size_t(m_rows), 0) {}
+
+int GridPassCountLayer::count(int col, int row) const {
+    if (col < 0 || row < 0 || col >= m_cols || row >= m_rows)
+        return 0;
+    return m_cells[size_t(row) * size_t(m_cols) + size_t(col)];
+}
+
+void GridPassCountLayer::setCount(int col, int row, int count) {
+    if (col < 0 || row < 0 || col >= m_cols || row >= m_rows)
+        return;
+    m_cells[size_t(row) * size_t(m_cols) + size_t(col)] = std::uint16_t(std::clamp(count, 0, 65535));
+    ++m_revision;
+}
+
+void GridPassCountLayer::addPass(double e, double n) {
+    const int col = int(std::floor((e - m_origin.x()) / m_cell));
+    const int row = int(std::floor((n - m_origin.y()) / m_cell));
+    if (col < 0 || row < 0 || col >= m_cols || row >= m_rows)
+        return;
+    auto& c = m_cells[size_t(row) * size_t(m_cols) + size_t(col)];
+    if (c < 65535)
+        ++c;
+    ++m_revision;
+}
+
+void GridPassCountLayer::fillRect(QRect cells, int count) {
+    const QRect r = cells.intersected(QRect(0, 0, m_cols, m_rows));
+    const auto v = std::uint16_t(std::clamp(count, 0, 65535));
+    for (int y = r.top(); y <= r.bottom(); ++y)
+        std::fill_n(m_cells.begin() + ptrdiff_t(size_t(y) * size_t(m_cols) + size_t(r.left())), r.width(), v);
+    ++m_revision;
+}
+
+void GridPassCountLayer::clear() {
+    std::fill(m_cells.begin(), m_cells.end(), std::uint16_t(0));
+    ++m_revision;
+}
+
+QColor passCountDiscreteColor(int count) {
+    switch (count) {
+    case 0:
+        return QColor(0, 0, 0, 0);
+    case 1:
+        return QColor(0x00, 0xA4, 0xA4);
+    case 2:
+        return QColor(0xFF, 0x00, 0x00);
+    case 3:
+        return QColor(0x00, 0xFF, 0xFF);
+    case 4:
+        return QColor(0xAE, 0xAE, 0x00);
+    case 5:
+        return QColor(0x00, 0xFF, 0x00);
+    case 6:
+        return QColor(0xFF, 0x00, 0xFF);
+    case 7:
+        return QColor(0xB0, 0x00, 0xB0);
+    case 8:
+        return QColor(0x40, 0x40, 0x40);
+    default:
+        return QColor(0xAC, 0xFD, 0xEB);
+    }
+}
+
+QColor passCountSummaryColor(int count, PassTarget target) {
+    if (count <= 0)
+        return QColor(0, 0, 0, 0);
+    if (count < target.min)
+        return QColor(0x1E, 0x90, 0xFF); // DodgerBlue
+    if (count > target.max)
+        return QColor(0xFF, 0x00, 0x00); // Red
+    return QColor(0x9A, 0xCD, 0x32);     // YellowGreen
+}
+
+QColor passCountColor(int count, PassPalette palette, PassTarget target) {
+    return palette == PassPalette::Discrete ? passCountDiscreteColor(count) : passCountSummaryColor(count, target);
+}
+
+PassCountSummary summarize(const PassCountLayer& layer, PassTarget target) {
+    PassCountSummary s;
+    s.histogram = QVector<qint64>(10, 0);
+    qint64 below = 0, within = 0, above = 0;
+    const auto* grid = dynamic_cast<const GridPassCountLayer*>(&layer);
+    const int cols = layer.columns(), rows = layer.rows();
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < cols; ++c) {
+            const int v = grid ? grid->data()[size_t(r) * size_t(cols) + size_t(c)] : layer.count(c, r);
+            if (v <= 0)
+                continue;
+            ++s.histogram[std::min(v, 9)];
+            if (v < target.min)
+                ++below;
+            else if (v > target.max)
+                ++above;
+            else
+                ++within;
+        }
+    }
+    s.coveredCells = below + within + above;
+    s.coveredArea = double(s.coveredCells) * layer.cellSize() * layer.cellSize();
+    if (s.coveredCells > 0) {
+        s.belowPct = 100.0 * double(below) / double(s.coveredCells);
+        s.withinPct = 100.0 * double(within) / double(s.coveredCells);
+        s.abovePct = 100.0 * double(above) / double(s.coveredCells);
+    }
+    return s;
+}
+
+} // namespace ocu

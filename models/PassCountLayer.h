@@ -1,0 +1,75 @@
+#pragma once
+// Pass-count grid interface shared by the 2D map, the 3D view and the summary panel, with the palettes of
+// anchors-features.md §4.3 (TRex: discrete per-count palette; below/within/above summary; target 3-5).
+#include <QColor>
+#include <QPointF>
+#include <QRect>
+#include <QVector>
+#include <cstdint>
+#include <vector>
+
+namespace ocu {
+
+// Cell (col, row) covers E in [origin.x + col*cellSize, +cellSize) and N in [origin.y + row*cellSize, ...).
+class PassCountLayer {
+public:
+    virtual ~PassCountLayer() = default;
+    virtual double cellSize() const = 0;
+    virtual QPointF origin() const = 0; // (E, N) of the south-west corner of cell (0, 0)
+    virtual int columns() const = 0;
+    virtual int rows() const = 0;
+    virtual int count(int col, int row) const = 0; // 0 = not covered
+    // Bumped on every change; consumers cache rendered images per revision.
+    virtual quint64 revision() const = 0;
+
+    // Counts of the cells in `cells` (clipped to the grid), row-major, one entry per cell of the clipped rect.
+    QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const;
+};
+
+// A dense in-memory grid (what the OSYRIS bridge fills; 1 km² at 0.34 m is ~8.6 M cells, 17 MB).
+class GridPassCountLayer final : public PassCountLayer {
+public:
+    GridPassCountLayer(QPointF origin, double cellSize, int columns, int rows);
+    double cellSize() const override { return m_cell; }
+    QPointF origin() const override { return m_origin; }
+    int columns() const override { return m_cols; }
+    int rows() const override { return m_rows; }
+    int count(int col, int row) const override;
+    quint64 revision() const override { return m_revision; }
+
+    void setCount(int col, int row, int count); // bumps the revision
+    void addPass(double e, double n);           // +1 at the cell containing (e, n), if inside
+    void fillRect(QRect cells, int count);
+    void clear();
+    const std::uint16_t* data() const { return m_cells.data(); }
+
+private:
+    QPointF m_origin;
+    double m_cell;
+    int m_cols, m_rows;
+    std::vector<std::uint16_t> m_cells;
+    quint64 m_revision = 1;
+};
+
+struct PassTarget {
+    int min = 3; // TRex default target range 3-5
+    int max = 5;
+};
+
+enum class PassPalette { Discrete, Summary };
+
+// TRex PassCountPalette: 1 teal, 2 red, 3 aqua, 4 olive, 5 lime, 6 fuchsia, 7 purple, 8 dark grey, 9+ pale cyan.
+QColor passCountDiscreteColor(int count);
+// Below = DodgerBlue, within = YellowGreen, above = Red.
+QColor passCountSummaryColor(int count, PassTarget target);
+QColor passCountColor(int count, PassPalette palette, PassTarget target);
+
+struct PassCountSummary {
+    qint64 coveredCells = 0;
+    double coveredArea = 0; // m²
+    double belowPct = 0, withinPct = 0, abovePct = 0; // of the covered area
+    QVector<qint64> histogram; // index = pass count (1..), last bucket = 9+; [0] unused
+};
+PassCountSummary summarize(const PassCountLayer& layer, PassTarget target);
+
+} // namespace ocu

@@ -1,0 +1,55 @@
+#pragma once
+// A protocol bridge without a stack, for tests and benchmarks. It records every command and, when
+// `simulateMachines` is on, makes its machines report the stop state that was commanded (like a
+// well-behaved simulator would), through the same coalescing path as a real bridge.
+#include "models/FleetBridge.h"
+
+#include <QHash>
+#include <QJsonObject>
+#include <QStringList>
+#include <mutex>
+
+namespace ocu {
+
+class FakeFleetBridge : public FleetBridge {
+    Q_OBJECT
+public:
+    explicit FakeFleetBridge(Protocol protocol, QObject* parent = nullptr);
+
+    struct Call {
+        QString name; // "stop_all", "stop", "clear_stop", or the command() name
+        QString id;
+        QJsonObject args;
+    };
+
+    // Thread-safe: stores the machine (for the simulated stop reports) and publishes it.
+    void setMachine(const MachineState& m);
+    void removeMachine(const QString& id);
+
+    CommandResult stopAll() override;
+    CommandResult stopMachine(const QString& id) override;
+    CommandResult clearStop(const QString& id) override;
+    CommandResult command(const QString& name, const QJsonObject& args) override;
+
+    QVector<Call> calls() const;
+    void clearCalls();
+
+    bool simulateMachines = true;
+    // Commands named here are refused (to test role/authority enforcement paths).
+    QStringList refusedCommands;
+    // Optional pass-count layer / site map exposed through the base interface.
+    const PassCountLayer* layer = nullptr;
+    SiteMapData map;
+    const PassCountLayer* passCountLayer() const override { return layer; }
+    SiteMapData siteMap() const override { return map; }
+
+private:
+    void record(const QString& name, const QString& id, const QJsonObject& args = {});
+    void setStop(const QString& id, StopState s);
+
+    mutable std::mutex m_mutex;
+    QHash<QString, MachineState> m_machines;
+    QVector<Call> m_calls;
+};
+
+} // namespace ocu

@@ -1,0 +1,95 @@
+#pragma once
+// WebSocket transport for ISO 23725 (research note §2): client (default) or service role, ws:// or wss://,
+// one text frame = one JSON container or one XML map chunk. Boost.Beast stays inside WsTransport.cpp.
+// Every callback runs on the io_context's thread; every method must be called on that thread.
+#include "common/Counters.h"
+#include "common/Result.h"
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace boost::asio {
+class io_context;
+}
+
+namespace ocu::iso23725 {
+
+enum class WsRole { Client, Service };
+
+struct WsTlsOptions {
+    std::string caFile;   // client: CA to verify the service; service: CA for client certificates (mutual TLS)
+    std::string certFile; // client: optional client certificate; service: server certificate chain (wss)
+    std::string keyFile;
+    bool verifyHostname = true; // client: check the certificate names the URL's host (RFC 2818)
+};
+
+struct WsOptions {
+    WsRole role = WsRole::Client;
+    // Client: URL to connect to; service: URL to listen on (host and port; port 0 = any free port).
+    std::string url;
+    WsTlsOptions tls;
+    std::chrono::milliseconds pingInterval{5000}; // [I] §2: ping every 5 s
+    std::chrono::milliseconds deadAfter{15000};   // [I] §2: dead after 15 s without any frame
+    std::chrono::milliseconds backoffMin{1000};   // [I] §2: reconnect 1, 2, 4 ... 30 s
+    std::chrono::milliseconds backoffMax{30000};
+    double backoffJitter = 0.2; // +-20 %
+    std::chrono::milliseconds connectTimeout{5000};
+    std::size_t maxFrameBytes = 16u * 1024u * 1024u;
+    std::string subprotocol; // Sec-WebSocket-Protocol offered (client) / accepted (service); none by default (Q1)
+};
+
+struct WsUrl {
+    bool tls = false;
+    std::string host;
+    std::uint16_t port = 0;
+    std::string target = "/";
+};
+Result<WsUrl> parseWsUrl(const std::string& url);
+
+using SessionId = std::uint64_t;
+
+class WsHandler {
+public:
+    virtual ~WsHandler() = default;
+    virtual void onOpen(SessionId id, const std::string& peer) = 0;
+    virtual void onText(SessionId id, std::string text) = 0;
+    virtual void onClose(SessionId id, const std::string& reason) = 0;
+    // Connection attempts that failed before a session opened (client), with the next retry delay.
+    virtual void onConnectFailed(const std::string& reason, std::chrono::milliseconds retryIn) {
+        (void)reason;
+        (void)retryIn;
+    }
+};
+
+class WsEndpoint {
+public:
+    // counters: "ws.rx.frames", "ws.tx.frames", "rx.rejected.binary", "rx.rejected.too_big", "ws.connect.failed",
+    // "ws.dead" ... are added there.
+    WsEndpoint(boost::asio::io_context& io, WsOptions options, WsHandler& handler, Counters& counters);
+    ~WsEndpoint();
+    WsEndpoint(const WsEndpoint&) = delete;
+    WsEndpoint& operator=(const WsEndpoint&) = delete;
+
+    // Client: starts connecting (and reconnecting); service: binds and listens. Error for a bad URL, TLS files
+    // or an address in use.
+    Result<bool> start();
+    // Closes every session and stops reconnecting; no callback after this returns.
+    void stop();
+    // Queues one text frame; false when the session is not open.
+    bool send(SessionId id, std::string text);
+    void close(SessionId id, const std::string& reason);
+    std::uint16_t localPort() const; // service role, after start()
+    std::size_t queuedBytes() const; // across sessions (outgoing frames not yet written)
+    std::size_t openSessions() const;
+    const WsOptions& options() const;
+
+    struct Impl;
+
+private:
+    std::shared_ptr<Impl> m_impl;
+};
+
+} // namespace ocu::iso23725

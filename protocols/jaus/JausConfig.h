@@ -1,0 +1,62 @@
+#pragma once
+// The site configuration's "jaus" section (docs/jaus.md lists every key).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/ConfigReader.h"
+#include "jaus/JudpCodec.h"
+
+namespace ocu::jaus {
+
+struct StaticEndpoint {
+    JausId id;           // component 255 / node 255 allowed: all components of that node / subsystem
+    std::string address; // IPv4
+    std::uint16_t port = 3794;
+};
+
+enum class Role { Monitor, Operator };
+
+// UDP settings shared by the OCU stack and the simulated UGV.
+struct TransportSettings {
+    std::string bindAddress = "0.0.0.0";
+    std::uint16_t port = 3794; // 0 = ephemeral (replies still reach us: peers learn our source port)
+    bool multicast = true;     // logical broadcasts by multicast (default) or UDP broadcast
+    std::string multicastGroup = "239.255.0.1";
+    std::uint16_t multicastPort = 3794;
+    int multicastTtl = 16; // JTS nm.cfg default
+    std::string interfaceAddress = "0.0.0.0";
+    std::string broadcastAddress = "255.255.255.255"; // when multicast is false
+    std::vector<StaticEndpoint> staticEndpoints;
+    std::size_t maxFragmentPayload = kMaxFragmentPayload;
+};
+
+struct JausConfig {
+    std::uint16_t subsystemId = 200;
+    std::uint8_t nodeId = 1;
+    std::uint8_t componentId = 1;
+    std::string callSign = "OCU";
+    Role role = Role::Operator;
+    std::uint8_t authority = 205; // PRIMARY_OPERATOR band 205-239 (AEP-4818 §4.3.2); MONITOR = 0
+
+    TransportSettings transport;
+
+    double driveRateHz = 20;        // drive stream while a session is open
+    double heartbeatRateHz = 1;     // requested ReportHeartbeatPulse event rate (≥ 1 Hz, AEP-4818 §4.8)
+    double poseRateHz = 10;         // requested pose / velocity-state event rate
+    double statusPollHz = 1;        // QueryStatus / QueryControl polling
+    double discoveryIntervalS = 30; // re-check of every platform manager (AEP-4818 §6.2.2.2.2.1)
+    double linkLostS = 5;           // link down after this long without any message
+    double accessTimeoutS = 5;      // assumed access-control timeout until QueryTimeout answers
+    double eventConfirmTimeoutS = 2; // no ConfirmEventRequest by then: fall back to polling
+    int stopRepeats = 5;            // zero commands sent on stop (never a single message)
+    bool velocityDrive = true;      // default drive mode when a platform offers both drivers
+
+    JausId ownId() const { return JausId{subsystemId, nodeId, componentId}; }
+    bool mayControl() const { return role != Role::Monitor && authority > 0; }
+};
+
+// Reads the "jaus" object strictly; errors go to the ConfigErrors of the section. Calls section.finish().
+JausConfig parseJausConfig(ocu::ConfigObject& section);
+
+} // namespace ocu::jaus

@@ -1,0 +1,107 @@
+#pragma once
+// Values the JAUS stack hands to the console: subsystem snapshots, events, drive commands, the listener.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/Clock.h"
+#include "jaus/JudpCodec.h"
+#include "jaus/Messages.h"
+
+namespace ocu::jaus {
+
+enum class LinkState { Up, Degraded, Down };
+enum class AccessState {
+    NotAvailable,
+    NotControlled,
+    Monitoring, // we only watch (MONITOR role or no control requested)
+    ControlAccepted,
+    ControlReleased,
+    Timeout,
+    InsufficientAuthority,
+    Preempted
+};
+const char* toString(LinkState s);
+const char* toString(AccessState s);
+
+struct ComponentInfo {
+    std::uint8_t component = 0;
+    std::vector<ServiceRecord> services;
+};
+struct NodeInfo {
+    std::uint8_t node = 0;
+    std::vector<ComponentInfo> components;
+};
+
+struct SubsystemSnapshot {
+    std::uint16_t subsystem = 0;
+    std::string callSign;
+    std::string endpoint; // "ip:port" of the platform manager, empty when unknown
+    LinkState link = LinkState::Down;
+    TimePoint lastMessage{};
+    std::int64_t lastMessageUnixMs = 0;
+
+    AccessState access = AccessState::Monitoring;
+    JausId controller;             // all zero when uncontrolled
+    std::uint8_t controllerAuthority = 0;
+    bool controlledByUs = false;
+    std::uint8_t accessTimeoutS = 0; // from ReportTimeout (0 = unknown or disabled)
+
+    std::optional<ManagementState> management;
+    bool emergency = false;
+    bool driving = false; // a drive session of ours is open
+
+    std::optional<GlobalPose> globalPose;
+    std::optional<LocalPose> localPose;
+    std::optional<VelocityState> velocity;
+    std::optional<PlatformSpecifications> platform;
+    std::optional<HealthSummary> health;
+
+    JausId mobilityComponent; // zero until discovered
+    std::vector<NodeInfo> services;
+};
+
+enum class Severity { Info, Warning, Error };
+enum class EventKind {
+    Discovered,
+    LinkLost,
+    LinkRestored,
+    ControlAccepted,
+    ControlRejected,
+    ControlReleased,
+    ControlLost,
+    ControlPreempted,
+    Emergency,
+    EmergencyCleared,
+    ManagementChanged,
+    HealthFault,
+    DecodeError,
+    CommandRefused,
+    TransportError
+};
+const char* toString(EventKind k);
+
+struct JausEvent {
+    Severity severity = Severity::Info;
+    EventKind kind = EventKind::Discovered;
+    std::uint16_t subsystem = 0; // 0 when not about one subsystem
+    std::string text;
+};
+
+struct DriveCommand {
+    enum class Mode { Wrench, Velocity };
+    Mode mode = Mode::Velocity;
+    double linear = 0;  // Wrench: propulsive linear X % [-100,100]; Velocity: m/s (+ forward)
+    double angular = 0; // Wrench: propulsive rotational Z %; Velocity: yaw rate rad/s (+ = right, AEP-4818 §7.7)
+    double brake = 0;   // Wrench only: resistive linear X % [0,100]
+};
+
+// Called on the stack's io thread; implementations must not block.
+struct JausListener {
+    virtual ~JausListener() = default;
+    virtual void onSubsystemChanged(const SubsystemSnapshot& snapshot) = 0;
+    virtual void onEvent(const JausEvent& event) = 0;
+};
+
+} // namespace ocu::jaus

@@ -1,0 +1,108 @@
+#pragma once
+// Pass-count engine (issue 5 §5, rules from research/anchors-features.md §4.2): a sparse tiled grid;
+// the drum footprint is swept between consecutive counted positions of one machine's ribbon, processed
+// strictly in slot order. Counts are a sum over machines of a function of each ribbon alone, so the
+// grid depends only on the ribbons, never on the order datagrams arrived in.
+#include "osyris/OsyrisCodec.h"
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+namespace ocu::osyris {
+
+class RibbonStore;
+
+enum class DirectionFilter { Any, Forward, Backward };
+
+struct PassCountSettings {
+    double cellSize = 0.34;       // m (TRex default)
+    bool vibrationOnly = true;    // count only with POS_VIBRATING
+    DirectionFilter direction = DirectionFilter::Any;
+    std::set<std::uint8_t> machines; // empty = every machine
+    double minMove = 0.25;        // m since the last counted position (Trimble GCS900)
+    double maxJump = 10.0;        // m; a longer step breaks the traversal (GCS900 "< 10 m")
+    double defaultWidth = 2.0;    // m when a position carries no extent
+    int targetMin = 3;
+    int targetMax = 5;
+    bool operator==(const PassCountSettings&) const = default;
+};
+
+struct PassCountSummary {
+    std::uint64_t coveredCells = 0;
+    double coveredAreaM2 = 0;
+    double percentBelow = 0;
+    double percentWithin = 0;
+    double percentAbove = 0;
+    std::vector<std::uint64_t> histogram; // [n] = cells with exactly n passes (n >= 1); last bin = "n or more"
+    int targetMin = 3;
+    int targetMax = 5;
+};
+
+struct GridRect { // in metres, local ENU
+    double xMin = 0, yMin = 0, xMax = 0, yMax = 0;
+};
+
+constexpr int kTileBits = 5;
+constexpr int kTileSize = 1 << kTileBits; // 32 x 32 cells per tile
+
+struct TileSnapshot {
+    std::int32_t tx = 0, ty = 0; // tile index; cell (cx, cy) = (tx*32 + i, ty*32 + j)
+    std::array<std::uint16_t, kTileSize * kTileSize> counts{}; // [j*32 + i]
+    bool operator==(const TileSnapshot&) const = default;
+};
+
+class PassCountGrid {
+public:
+    explicit PassCountGrid(PassCountSettings s = {});
+    ~PassCountGrid();
+
+    const PassCountSettings& settings() const { return m_settings; }
+    // Changing settings clears the grid; the caller re-feeds the ribbons (reset + advanceAll).
+    void setSettings(const PassCountSettings& s);
+    void reset();
+
+    // Feeds the next position of machine's ribbon. The caller guarantees slot order (advance() does).
+    void addPosition(std::uint8_t machine, const CmPos& p);
+    // Feeds every consecutive slot of machine's ribbon that has not been processed yet. Returns how many.
+    std::uint64_t advance(std::uint8_t machine, const RibbonStore& store);
+    std::uint64_t advanceAll(const RibbonStore& store);
+    std::uint32_t nextSlot(std::uint8_t machine) const;
+
+    // Thread-safe readers (for the GUI).
+    int countAt(double x, double y) const;
+    int countAtCell(std::int32_t cx, std::int32_t cy) const;
+    // Counts of the cells [cx0, cx0+cols) x [cy0, cy0+rows) into out[row*cols + col].
+    void countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows, std::uint16_t* out) const;
+    std::vector<TileSnapshot> snapshotTiles() const; // sorted by (ty, tx)
+    PassCountSummary summary() const;
+    std::int32_t cellIndex(double v) const;
+    // Bounding box of cells changed since the last call, if any.
+    std::optional<GridRect> takeDirty();
+
+private:
+    struct Tile {
+        std::array<std::uint16_t, kTileSize * kTileSize> counts{};
+    };
+    struct MachineState;
+    void sweep(MachineState& m, double ax, double ay, double bx, double by, double width);
+    std::uint16_t* cell(std::int32_t cx, std::int32_t cy);
+
+    PassCountSettings m_settings;
+    double m_inv = 1.0 / 0.34;
+    mutable std::mutex m_mutex;
+    std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> m_tiles;
+    std::uint64_t m_lastTileKey = ~0ull;
+    Tile* m_lastTile = nullptr;
+    std::map<std::uint8_t, std::unique_ptr<MachineState>> m_machines;
+    bool m_dirty = false;
+    std::int32_t m_dx0 = 0, m_dy0 = 0, m_dx1 = 0, m_dy1 = 0;
+};
+
+} // namespace ocu::osyris

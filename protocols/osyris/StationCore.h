@@ -1,0 +1,168 @@
+#pragma once
+// The OSYRIS station state machine (seed 004 §4-§6), free of sockets and threads: datagrams enter through
+// receive(), time advances through tick() (once per Beat), datagrams leave through the send function.
+// OsyrisStation wraps it with Boost.Asio; tests drive it with a FakeClock and an in-memory network.
+//
+// Reliability (§5): a "list of wishes" (gaps of every ribbon, requested with NAK) and a "list of assets"
+// (requests this station can answer), both priority queues with dynamic priorities. See docs/osyris.md.
+#include "osyris/IntervalSet.h"
+#include "osyris/OsyrisCodec.h"
+#include "osyris/OsyrisConfig.h"
+#include "osyris/PassCountGrid.h"
+#include "osyris/RibbonStore.h"
+
+#include "common/Clock.h"
+#include "common/Counters.h"
+#include "common/GeoFrame.h"
+
+#include <deque>
+#include <functional>
+#include <map>
+#include <optional>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ocu::osyris {
+
+enum class Severity { Info, Warning, Error };
+
+struct MachineSnapshot {
+    std::uint8_t idx = 0;
+    std::string name;        // from OsyrisStation::setMachineName, empty when unknown
+    double x = 0, y = 0, z = 0; // local ENU [m]
+    double lat = 0, lon = 0; // geo-referenced through the worksite origin
+    double yaw = 0;          // rad, north = 0, west = pi/2 (§6)
+    double headingDeg = 0;   // compass, clockwise from north
+    double speed = 0;        // m/s
+    double width = 0;        // m, from the position extent dx
+    std::uint32_t flags = 0;
+    bool valid = false, vibrating = false, forward = false, backward = false, stopped = false, gpsShadow = false;
+    int accuracy = 0;        // 0 none, 1 low, 2 medium, 3 high
+    std::int64_t timestampMs = 0; // Unix ms from the FILETIME
+    std::uint32_t slot = 0;
+};
+
+// Callbacks run on the station's io thread (or the test's thread); they must not block.
+struct OsyrisListener {
+    virtual ~OsyrisListener() = default;
+    virtual void onMachinePosition(const MachineSnapshot&) {}
+    // A station was heard (ALIVE from its owner); range = its own ribbon's slots, nullopt when it has none.
+    virtual void onStationAlive(std::uint8_t /*idx*/, std::optional<SlotRange> /*range*/) {}
+    virtual void onText(std::uint8_t /*idx*/, const std::string& /*text*/) {}
+    virtual void onPassCountChanged(const GridRect& /*dirty*/) {}
+    virtual void onEvent(Severity /*severity*/, const std::string& /*text*/) {}
+    virtual void onPong(std::uint8_t /*idx*/, double /*rttMs*/, float /*x*/, float /*y*/) {}
+};
+
+MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* frame = nullptr);
+
+class StationCore {
+public:
+    using SendFn = std::function<void(const Bytes&)>;
+    // store and clock must outlive the core; grid and listener may be null.
+    StationCore(OsyrisConfig cfg, const Clock& clock, RibbonStore& store, PassCountGrid* grid,
+                OsyrisListener* listener, SendFn send, std::uint32_t seed = 1);
+
+    // Late join (§4): ask everybody for everything, newest state first.
+    void start();
+    void receive(ByteSpan datagram);
+    void tick();
+
+    // This station's own machine writes a position into its ribbon (slot assigned here). Returns the slot.
+    std::uint32_t publishOwnPosition(CmPos p, std::vector<PosProp> props = {});
+    void sendText(const std::string& text, std::uint8_t to = kIdxAll);
+    void ping(std::uint8_t idx);
+
+    std::uint8_t idx() const { return m_cfg.stationIndex; }
+    const OsyrisConfig& config() const { return m_cfg; }
+    Counters& counters() { return m_counters; }
+    const Counters& counters() const { return m_counters; }
+    std::optional<std::uint32_t> knownMax(std::uint8_t owner) const;
+    std::uint64_t missingCount() const; // slots known to exist but not held
+    std::set<std::uint8_t> heardStations() const;
+    // Advances the grid over every ribbon now (normally done in tick()).
+    void updateGrid();
+
+private:
+    struct Hold {
+        std::uint32_t from, to;
+        TimePoint until;
+    };
+    struct RibbonState {
+        std::optional<std::uint32_t> knownMax;
+        std::optional<std::uint32_t> knownMin;
+        std::vector<Hold> holds; // sorted, disjoint; when each gap may be requested
+        TimePoint lastRepair{};
+        std::uint32_t lastReported = 0;
+        bool reported = false;
+    };
+    struct Asset {
+        std::uint8_t owner;
+        IntervalSet slots;
+        int priority; // higher first
+        TimePoint notBefore;
+        bool ncfSent = false;
+        bool othersAnswering = false;
+    };
+    struct Suppressed {
+        std::uint8_t owner;
+        IntervalSet slots;
+        TimePoint deadline;
+        bool heard = false;
+    };
+    struct Unit {
+        Bytes bytes;
+        TimePoint queuedAt;
+        bool urgent;
+    };
+
+    Duration beats(double n) const;
+    void enqueue(Bytes unit, bool urgent);
+    void enqueuePosition(std::uint8_t owner, const PositionRecord& rec, bool urgent);
+    void enqueueRequest(std::uint8_t whose, const CmRequest& r, bool urgent = true);
+    void flush(TimePoint now, bool force);
+    void handlePosition(const CmHeader& h, const CmPos& p, const std::vector<PosProp>* props, TimePoint now);
+    void handleRequest(const CmHeader& h, const CmRequest& r, TimePoint now);
+    void noteKnown(std::uint8_t owner, std::uint32_t from, std::uint32_t to);
+    void setHold(RibbonState& rs, std::uint32_t a, std::uint32_t b, TimePoint until);
+    void addAsset(std::uint8_t owner, IntervalSet slots, int priority, TimePoint notBefore);
+    void processWishes(TimePoint now);
+    void processAssets(TimePoint now);
+    void sendAlive();
+    int rankFor(std::uint8_t owner) const;
+    std::optional<CmPos> ownPosition() const;
+    void event(Severity s, const std::string& text);
+    void reject(const std::string& reason, const std::string& text);
+
+    OsyrisConfig m_cfg;
+    const Clock& m_clock;
+    RibbonStore& m_store;
+    PassCountGrid* m_grid;
+    OsyrisListener* m_listener;
+    SendFn m_send;
+    std::mt19937 m_rng;
+    Counters m_counters;
+    GeoFrame m_frame;
+    bool m_geo = false;
+
+    std::map<std::uint8_t, RibbonState> m_ribbons;
+    std::vector<Asset> m_assets;
+    std::vector<Suppressed> m_suppressed;
+    std::map<std::uint8_t, TimePoint> m_lastHeard;
+    std::map<std::uint8_t, CmPos> m_senderPos; // newest own position of each sender (MaxRange)
+    std::map<std::uint8_t, TimePoint> m_pings;
+    std::deque<Unit> m_queue;
+    std::size_t m_queuedBytes = 0;
+    TimePoint m_lastAlive{};
+    bool m_aliveSent = false;
+    int m_allRetries = 0;
+    TimePoint m_allRetryAt{};
+    bool m_receivedPositions = false;
+    std::uint32_t m_nextOwnSlot = 0;
+    std::set<std::uint8_t> m_gridDirty;
+    std::map<std::string, std::uint64_t> m_rejectLogged;
+};
+
+} // namespace ocu::osyris

@@ -1,0 +1,97 @@
+#include "SiteConfig.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace ocu {
+
+static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
+    SiteConfig cfg;
+    ConfigObject root(doc, "", errors);
+    if (!root.valid())
+        return cfg;
+    if (auto site = root.object("site")) {
+        cfg.name = site->string("name", cfg.name);
+        if (auto o = site->object("origin")) {
+            cfg.origin.lat = o->requiredNumber("latitude", -90, 90).value_or(0);
+            cfg.origin.lon = o->requiredNumber("longitude", -180, 180).value_or(0);
+            cfg.origin.alt = o->number("altitude", 0, -1000, 9000);
+            o->finish();
+        } else {
+            site->error("origin", "required object is missing (latitude, longitude, altitude)");
+        }
+        site->finish();
+    } else {
+        root.error("site", "required object is missing");
+    }
+    if (auto s = root.object("simulation")) {
+        cfg.simulation.enabled = s->boolean("enabled", cfg.simulation.enabled);
+        cfg.simulation.jausUgvs = static_cast<int>(s->integer("jaus_ugvs", cfg.simulation.jausUgvs, 0, 50));
+        cfg.simulation.ahsTrucks = static_cast<int>(s->integer("ahs_trucks", cfg.simulation.ahsTrucks, 0, 1000));
+        cfg.simulation.osyrisRollers =
+            static_cast<int>(s->integer("osyris_rollers", cfg.simulation.osyrisRollers, 0, 3));
+        cfg.simulation.osyrisSpeedUp = s->number("osyris_speed_up", cfg.simulation.osyrisSpeedUp, 1, 1000);
+        s->finish();
+    }
+    if (auto f = root.object("fleet")) {
+        cfg.fleet.staleAfterSeconds = f->number("stale_after_s", cfg.fleet.staleAfterSeconds, 0.5, 3600);
+        cfg.fleet.removeAfterSeconds = f->number("remove_after_s", cfg.fleet.removeAfterSeconds, 1, 86400 * 7);
+        cfg.fleet.monitorRateHz = f->number("monitor_rate_hz", cfg.fleet.monitorRateHz, 0.01, 100);
+        cfg.fleet.auditLog = f->string("audit_log", cfg.fleet.auditLog);
+        if (cfg.fleet.removeAfterSeconds < cfg.fleet.staleAfterSeconds)
+            f->error("remove_after_s", "must not be shorter than stale_after_s");
+        f->finish();
+    }
+    if (auto p = root.object("own_position")) {
+        cfg.ownPosition.source = p->choice("source", cfg.ownPosition.source, {"none", "system", "nmea-file", "nmea-serial"});
+        cfg.ownPosition.path = p->string("path", cfg.ownPosition.path);
+        cfg.ownPosition.fmsMachineId = p->string("fms_machine_id", cfg.ownPosition.fmsMachineId);
+        if ((cfg.ownPosition.source == "nmea-file" || cfg.ownPosition.source == "nmea-serial") &&
+            cfg.ownPosition.path.empty())
+            p->error("path", "required when source is \"" + cfg.ownPosition.source + "\"");
+        p->finish();
+    }
+#ifdef OCU_SITE_HAVE_JAUS
+    if (auto s = root.object("jaus"))
+        cfg.jaus = jaus::parseJausConfig(*s);
+#else
+    root.raw("jaus");
+#endif
+#ifdef OCU_SITE_HAVE_ISO
+    if (auto s = root.object("iso23725"))
+        cfg.iso23725 = iso23725::parseIsoConfig(*s);
+#else
+    root.raw("iso23725");
+#endif
+#ifdef OCU_SITE_HAVE_OSYRIS
+    if (auto s = root.object("osyris"))
+        cfg.osyris = osyris::parseOsyrisConfig(*s);
+#else
+    root.raw("osyris");
+#endif
+    root.raw("$schema"); // editors may point at a schema; harmless
+    root.finish();
+    return cfg;
+}
+
+Result<SiteConfig> parseSiteConfig(std::string_view text, const std::string& fileName) {
+    auto doc = ConfigDocument::parse(text, fileName);
+    if (!doc)
+        return Error{doc.error()};
+    ConfigErrors errors;
+    SiteConfig cfg = readSite(*doc, errors);
+    if (!errors.empty())
+        return Error{errors.joined()};
+    return cfg;
+}
+
+Result<SiteConfig> loadSiteConfig(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return Error{path + ": cannot open the site configuration"};
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return parseSiteConfig(ss.str(), path);
+}
+
+} // namespace ocu

@@ -1,0 +1,69 @@
+#pragma once
+// The site configuration: one JSON file (docs/site-config.md) with the site origin, the fleet-picture
+// settings and one section per protocol. Parsing is strict: every problem is reported with the key path
+// and line, and a configuration with any error is refused as a whole.
+#include "common/ConfigReader.h"
+#include "common/GeoFrame.h"
+#include "common/Result.h"
+
+#include <optional>
+#include <string>
+
+// OCU_SITE_HAVE_* are set by CMake for each protocol stack that is part of the build.
+#ifdef OCU_SITE_HAVE_JAUS
+#include "jaus/JausConfig.h"
+#endif
+#ifdef OCU_SITE_HAVE_ISO
+#include "iso23725/IsoConfig.h"
+#endif
+#ifdef OCU_SITE_HAVE_OSYRIS
+#include "osyris/OsyrisConfig.h"
+#endif
+
+namespace ocu {
+
+struct SimulationConfig {
+    // When enabled the console starts the built-in simulated site in-process, on loopback sockets,
+    // and points each protocol section at it.
+    bool enabled = false;
+    int jausUgvs = 2;
+    int ahsTrucks = 6;
+    int osyrisRollers = 2;
+    double osyrisSpeedUp = 30.0; // paver pace multiplied for demos
+};
+
+struct FleetConfig {
+    double staleAfterSeconds = 5.0;    // grey after this much silence
+    double removeAfterSeconds = 600.0; // dropped from the list after this
+    double monitorRateHz = 1.0;        // headless monitor: lines per machine per second
+    std::string auditLog;              // append-only audit file; empty = none
+};
+
+struct OwnPositionConfig {
+    std::string source = "none"; // none | system | nmea-file | nmea-serial
+    std::string path;            // NMEA log file or serial device
+    std::string fmsMachineId;    // when set, sent to the AHS as MachinePositionV1
+};
+
+struct SiteConfig {
+    std::string name = "Unnamed site";
+    GeoPoint origin;
+    SimulationConfig simulation;
+    FleetConfig fleet;
+    OwnPositionConfig ownPosition;
+#ifdef OCU_SITE_HAVE_JAUS
+    std::optional<jaus::JausConfig> jaus;
+#endif
+#ifdef OCU_SITE_HAVE_ISO
+    std::optional<iso23725::IsoConfig> iso23725;
+#endif
+#ifdef OCU_SITE_HAVE_OSYRIS
+    std::optional<osyris::OsyrisConfig> osyris;
+#endif
+};
+
+// Parses and validates; the error lists every problem found, one per line, each naming file, line and key.
+Result<SiteConfig> parseSiteConfig(std::string_view text, const std::string& fileName);
+Result<SiteConfig> loadSiteConfig(const std::string& path);
+
+} // namespace ocu

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Configures and builds the OCU into build/ (RelWithDebInfo, Ninja, ccache). Extra arguments go to cmake.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${OCU_BUILD_DIR:-$root/build}"
+jobs="${OCU_JOBS:-$(nproc)}"
+export CCACHE_DIR="${CCACHE_DIR:-$root/.cache/ccache}"
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+start=$(date +%s)
+cmake --build "$build" -j "$jobs"
+echo "build: done in $(( $(date +%s) - start )) s ($build)"

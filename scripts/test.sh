@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The test command: installs what is missing, builds, and runs every test headless (GUI tests on Qt's
+# offscreen platform, OpenGL/VTK tests under xvfb-run). CTest prints the summary line.
+#   scripts/test.sh               the whole suite
+#   scripts/test.sh --sanitize    protocol and simulator tests again under AddressSanitizer + UBSan
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$root/scripts/install-deps.sh"
+unset DISPLAY # every test must run without an X server of the user's; xvfb tests start their own
+export QT_QPA_PLATFORM=offscreen
+if [ "${1:-}" = "--sanitize" ]; then
+  build="$root/build-asan"
+  OCU_BUILD_DIR="$build" "$root/scripts/build.sh" -DOCU_SANITIZE=address,undefined -DOCU_WITH_VTK=OFF \
+    -DOCU_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  cd "$build" && exec ctest -j2 --output-on-failure -L protocols
+fi
+build="${OCU_BUILD_DIR:-$root/build}"
+OCU_BUILD_DIR="$build" "$root/scripts/build.sh"
+cd "$build"
+exec ctest -j2 --output-on-failure --timeout 300

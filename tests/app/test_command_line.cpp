@@ -1,0 +1,83 @@
+#include "CommandLine.h"
+
+#include <QtTest>
+
+using namespace ocu;
+
+class TestCommandLine : public QObject {
+    Q_OBJECT
+    bool parse(const QStringList& args, CommandLineOptions& o, QString& error) {
+        QString help;
+        return parseCommandLine(QStringList{QStringLiteral("ocu")} + args, o, error, help);
+    }
+private slots:
+    void defaults() {
+        CommandLineOptions o;
+        QString e;
+        QVERIFY(parse({}, o, e));
+        QVERIFY(o.configFile.isEmpty()); // built-in simulated site
+        QCOMPARE(o.view, QString("all"));
+        QCOMPARE(o.size, QSize(1600, 1000));
+        QCOMPARE(o.settleSeconds, 3.0);
+        QVERIFY(!o.headless);
+        QVERIFY(!o.noSim);
+    }
+    void everyOption() {
+        CommandLineOptions o;
+        QString e;
+        QVERIFY2(parse({"--config", "site.json", "--no-sim", "--screenshot", "o.png", "--view", "map", "--size",
+                        "800x600", "--settle", "1.5", "--lang", "de", "--log", "ocu.jaus,ocu.iso", "--reset-layout"},
+                       o, e),
+                 qPrintable(e));
+        QCOMPARE(o.configFile, QString("site.json"));
+        QVERIFY(o.noSim);
+        QCOMPARE(o.screenshotFile, QString("o.png"));
+        QCOMPARE(o.view, QString("map"));
+        QCOMPARE(o.size, QSize(800, 600));
+        QCOMPARE(o.settleSeconds, 1.5);
+        QCOMPARE(o.language, QString("de"));
+        QCOMPARE(o.logCategories, QString("ocu.jaus,ocu.iso"));
+        QVERIFY(o.resetLayout);
+    }
+    void headless() {
+        CommandLineOptions o;
+        QString e;
+        QVERIFY(parse({"--headless", "--duration", "15"}, o, e));
+        QVERIFY(o.headless);
+        QCOMPARE(o.durationSeconds, 15.0);
+        QVERIFY(!parse({"--headless", "--screenshot", "x.png"}, o, e));
+        QVERIFY(e.contains("cannot be combined"));
+    }
+    void rejections_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("view") << QStringList{"--view", "radar"} << "--view: unknown view \"radar\"";
+        QTest::newRow("size") << QStringList{"--size", "big"} << "--size: expected WxH";
+        QTest::newRow("tiny") << QStringList{"--size", "10x10"} << "outside 320x240";
+        QTest::newRow("settle") << QStringList{"--settle", "-1"} << "--settle: expected seconds";
+        QTest::newRow("lang") << QStringList{"--lang", "xx"} << "--lang: \"xx\" is not one of en, de, fr";
+        QTest::newRow("duration") << QStringList{"--duration", "soon"} << "--duration: expected seconds";
+        QTest::newRow("unknown") << QStringList{"--frobnicate"} << "Unknown option";
+        QTest::newRow("positional") << QStringList{"extra"} << "Unexpected argument: extra";
+    }
+    void rejections() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        CommandLineOptions o;
+        QString e;
+        QVERIFY(!parse(args, o, e));
+        QVERIFY2(e.contains(message), qPrintable(e));
+    }
+    void helpListsEveryOption() {
+        CommandLineOptions o;
+        QString e, help;
+        QVERIFY(!parseCommandLine({"ocu", "--help"}, o, e, help));
+        QVERIFY(e.isEmpty());
+        for (const char* opt : {"--config", "--no-sim", "--screenshot", "--view", "--size", "--settle", "--lang",
+                                "--log", "--headless", "--duration", "--reset-layout"})
+            QVERIFY2(help.contains(QLatin1String(opt)), opt);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCommandLine)
+#include "test_command_line.moc"

@@ -1,0 +1,106 @@
+// Runs the real `ocu` executable the way a user or a script does.
+#include <QImage>
+#include <QProcess>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QtTest>
+
+class TestOcuBinary : public QObject {
+    Q_OBJECT
+
+    struct Run {
+        int exitCode = -1;
+        QString out, err;
+    };
+    Run run(const QStringList& args, int timeoutMs = 60000) {
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY"); // headless: no X server at all
+        env.insert("QT_QPA_PLATFORM", "offscreen");
+        env.insert("XDG_CONFIG_HOME", m_dir.path()); // never touch the user's saved layout
+        p.setProcessEnvironment(env);
+        p.start(OCU_BINARY, args);
+        Run r;
+        if (!p.waitForFinished(timeoutMs)) {
+            p.kill();
+            p.waitForFinished();
+            r.err = "timed out";
+            return r;
+        }
+        r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+        r.out = QString::fromUtf8(p.readAllStandardOutput());
+        r.err = QString::fromUtf8(p.readAllStandardError());
+        return r;
+    }
+    QString writeFile(const QString& name, const QByteArray& text) {
+        QString path = m_dir.filePath(name);
+        QFile f(path);
+        f.open(QIODevice::WriteOnly);
+        f.write(text);
+        return path;
+    }
+    QTemporaryDir m_dir;
+
+private slots:
+    void help() {
+        Run r = run({"--help"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("--screenshot"));
+        QVERIFY(r.out.contains("--headless"));
+    }
+    void misspelledKeyIsRefused() {
+        QString path = writeFile("typo.json", "{\n  \"site\": {\n    \"origin\": {\"latitude\": 48, \"longitude\": 11},\n"
+                                              "    \"nmae\": \"Quarry\"\n  }\n}\n");
+        Run r = run({"--config", path, "--screenshot", m_dir.filePath("never.png"), "--settle", "0"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(path + ":4: site.nmae: unknown key \"nmae\" (did you mean \"name\"?)"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(m_dir.filePath("never.png")));
+    }
+    void latitudeOutOfRangeIsRefused() {
+        QString path = writeFile("lat.json", "{\n  \"site\": {\n    \"origin\": {\n      \"latitude\": 123,\n"
+                                             "      \"longitude\": 11\n    }\n  }\n}\n");
+        Run r = run({"--config", path, "--headless", "--duration", "1"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(path + ":4: site.origin.latitude: 123 is out of range [-90, 90]"), qPrintable(r.err));
+    }
+    void headlessScreenshotOfWholeWindow() {
+        const QString png = m_dir.filePath("all.png");
+        Run r = run({"--screenshot", png, "--view", "all", "--size", "1280x800", "--settle", "1"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QImage img(png);
+        QVERIFY(!img.isNull());
+        QCOMPARE(img.size(), QSize(1280, 800));
+        // Not blank: many distinct colours, and the red STOP ALL button in the top-left corner.
+        QSet<QRgb> colours;
+        int red = 0;
+        for (int y = 0; y < img.height(); y += 2)
+            for (int x = 0; x < img.width(); x += 2) {
+                QRgb c = img.pixel(x, y);
+                colours.insert(c);
+                if (y < 80 && x < 250 && qRed(c) > 180 && qGreen(c) < 60 && qBlue(c) < 60)
+                    ++red;
+            }
+        QVERIFY2(colours.size() > 20, qPrintable(QString::number(colours.size())));
+        QVERIFY2(red > 200, qPrintable(QString::number(red)));
+    }
+    void headlessScreenshotOfEachPanel() {
+        for (const char* view : {"fleet", "map", "3d", "jaus", "teleop", "passcounts", "events"}) {
+            const QString png = m_dir.filePath(QString("%1.png").arg(view));
+            Run r = run({"--screenshot", png, "--view", view, "--settle", "0.5"});
+            QVERIFY2(r.exitCode == 0, qPrintable(QString(view) + ": " + r.err));
+            QImage img(png);
+            QVERIFY2(!img.isNull() && img.width() > 100 && img.height() > 100, view);
+        }
+    }
+    void noQt5Linked() {
+        QProcess p;
+        p.start("ldd", {OCU_BINARY});
+        QVERIFY(p.waitForFinished(30000));
+        const QString out = QString::fromUtf8(p.readAllStandardOutput());
+        QVERIFY(out.contains("libQt6Widgets"));
+        QVERIFY2(!out.contains("libQt5"), qPrintable(out));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestOcuBinary)
+#include "test_ocu_binary.moc"

@@ -1,0 +1,254 @@
+// HeadlessMonitor: machine/link/event lines, per-machine rate limit, commands and their results.
+#include "models/AlarmModel.h"
+#include "models/FleetModel.h"
+#include "models/HeadlessMonitor.h"
+#include "models/StopController.h"
+#include "models/testing/FakeFleetBridge.h"
+
+#include <QBuffer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTest>
+#include <unistd.h>
+
+using namespace ocu;
+
+namespace {
+MachineState machine(const QString& id, double e) {
+    MachineState m;
+    m.id = id;
+    m.protocol = protocolOfId(id);
+    m.name = QStringLiteral("M-") + id;
+    m.link = LinkState::Up;
+    m.hasPosition = true;
+    m.e = e;
+    m.lat = 48.1;
+    m.lon = 11.5;
+    m.stop = StopState::None;
+    m.modeText = QStringLiteral("AUTONOMOUS");
+    m.mode = ModeCategory::Autonomous;
+    return m;
+}
+
+struct Rig {
+    FleetModel fleet;
+    AlarmModel alarms;
+    StopController stop{&alarms};
+    HeadlessMonitor monitor{&fleet, &alarms, &stop};
+    FakeFleetBridge jaus{Protocol::Jaus}, iso{Protocol::Iso23725}, osy{Protocol::Osyris};
+    QBuffer out;
+    qsizetype readPos = 0;
+
+    Rig() {
+        fleet.setRefreshIntervalMs(0);
+        out.open(QIODevice::ReadWrite);
+        monitor.setOutput(&out);
+        for (FakeFleetBridge* b : {&jaus, &iso, &osy}) {
+            fleet.addBridge(b);
+            alarms.addBridge(b);
+            stop.addBridge(b);
+            monitor.addBridge(b);
+        }
+    }
+    // Lines written since the last call.
+    QList<QJsonObject> take() {
+        QList<QJsonObject> lines;
+        const QByteArray all = out.data().mid(readPos);
+        readPos = out.data().size();
+        for (const QByteArray& l : all.split('\n')) {
+            if (l.trimmed().isEmpty())
+                continue;
+            QJsonParseError err{};
+            const QJsonDocument d = QJsonDocument::fromJson(l, &err);
+            if (err.error != QJsonParseError::NoError)
+                qFatal("not JSON: %s", l.constData());
+            lines.push_back(d.object());
+        }
+        return lines;
+    }
+    static QList<QJsonObject> ofType(const QList<QJsonObject>& lines, const QString& type) {
+        QList<QJsonObject> r;
+        for (const auto& o : lines)
+            if (o.value(QStringLiteral("type")).toString() == type)
+                r.push_back(o);
+        return r;
+    }
+};
+} // namespace
+
+class TestHeadlessMonitor : public QObject {
+    Q_OBJECT
+private slots:
+    void printsMachineLinesWithTheIssueFields() {
+        Rig rig;
+        rig.jaus.setMachine(machine(QStringLiteral("jaus:101"), 12.5));
+        rig.iso.setMachine(machine(QStringLiteral("iso23725:HT1"), 3));
+        QCoreApplication::processEvents();
+        const auto machines = Rig::ofType(rig.take(), QStringLiteral("machine"));
+        QCOMPARE(machines.size(), 2);
+        const QJsonObject& o = machines[0];
+        QCOMPARE(o.value(QStringLiteral("id")).toString(), QStringLiteral("jaus:101"));
+        QCOMPARE(o.value(QStringLiteral("protocol")).toString(), QStringLiteral("jaus"));
+        QCOMPARE(o.value(QStringLiteral("name")).toString(), QStringLiteral("M-jaus:101"));
+        QCOMPARE(o.value(QStringLiteral("e")).toDouble(), 12.5);
+        QCOMPARE(o.value(QStringLiteral("lat")).toDouble(), 48.1);
+        QCOMPARE(o.value(QStringLiteral("state")).toString(), QStringLiteral("AUTONOMOUS"));
+        QCOMPARE(o.value(QStringLiteral("stop")).toString(), QStringLiteral("none"));
+        for (const char* key : {"lon", "n", "heading", "speed", "controller", "age_ms"})
+            QVERIFY2(o.contains(QLatin1String(key)), key);
+        QCOMPARE(machines[1].value(QStringLiteral("protocol")).toString(), QStringLiteral("iso23725"));
+    }
+
+    void rateLimitsRoutineChangesButNotStopChanges() {
+        Rig rig;
+        rig.monitor.setRateLimitMs(400);
+        MachineState m = machine(QStringLiteral("osyris:3"), 0);
+        rig.osy.setMachine(m);
+        QCoreApplication::processEvents();
+        QCOMPARE(Rig::ofType(rig.take(), QStringLiteral("machine")).size(), 1);
+        // 20 position updates within ~100 ms: no line yet (rate limit), then one line with the latest value.
+        for (int i = 1; i <= 20; ++i) {
+            m.e = i;
+            rig.osy.setMachine(m);
+            QCoreApplication::processEvents();
+            QTest::qWait(5);
+        }
+        QCOMPARE(Rig::ofType(rig.take(), QStringLiteral("machine")).size(), 0);
+        QTRY_COMPARE_WITH_TIMEOUT(Rig::ofType(rig.take(), QStringLiteral("machine")).size() > 0 ? 1 : 0, 1, 2000);
+        // The stop state change is printed at once.
+        rig.readPos = rig.out.data().size();
+        m.stop = StopState::Stopped;
+        rig.osy.setMachine(m);
+        QCoreApplication::processEvents();
+        const auto lines = Rig::ofType(rig.take(), QStringLiteral("machine"));
+        QCOMPARE(lines.size(), 1);
+        QCOMPARE(lines[0].value(QStringLiteral("stop")).toString(), QStringLiteral("stopped"));
+    }
+
+    void latestValueIsPrintedAfterTheRateInterval() {
+        Rig rig;
+        rig.monitor.setRateLimitMs(200);
+        MachineState m = machine(QStringLiteral("jaus:5"), 0);
+        rig.jaus.setMachine(m);
+        QCoreApplication::processEvents();
+        rig.take();
+        m.e = 77;
+        rig.jaus.setMachine(m);
+        QCoreApplication::processEvents();
+        QList<QJsonObject> lines;
+        QTRY_VERIFY_WITH_TIMEOUT((lines += Rig::ofType(rig.take(), QStringLiteral("machine")), !lines.isEmpty()), 2000);
+        QCOMPARE(lines.last().value(QStringLiteral("e")).toDouble(), 77.0);
+    }
+
+    void stopAllCommandReachesEveryBridgeAndMachinesReportIt() {
+        Rig rig;
+        rig.jaus.setMachine(machine(QStringLiteral("jaus:1"), 0));
+        rig.iso.setMachine(machine(QStringLiteral("iso23725:A"), 0));
+        rig.osy.setMachine(machine(QStringLiteral("osyris:2"), 0));
+        QCoreApplication::processEvents();
+        rig.take();
+        const QByteArray res = rig.monitor.handleLine(R"({"cmd":"stop_all","req":17})");
+        const QJsonObject r = QJsonDocument::fromJson(res).object();
+        QCOMPARE(r.value(QStringLiteral("type")).toString(), QStringLiteral("result"));
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), true);
+        QCOMPARE(r.value(QStringLiteral("req")).toInt(), 17);
+        for (FakeFleetBridge* b : {&rig.jaus, &rig.iso, &rig.osy})
+            QCOMPARE(b->calls().size(), 1);
+        QCoreApplication::processEvents();
+        const auto all = rig.take();
+        const auto machines = Rig::ofType(all, QStringLiteral("machine"));
+        QCOMPARE(machines.size(), 3);
+        for (const auto& o : machines)
+            QCOMPARE(o.value(QStringLiteral("stop")).toString(), QStringLiteral("stopped"));
+        // Audited: an event line with kind audit.
+        const auto events = Rig::ofType(all, QStringLiteral("event"));
+        QVERIFY(std::any_of(events.begin(), events.end(), [](const QJsonObject& e) {
+            return e.value(QStringLiteral("kind")).toString() == QStringLiteral("audit");
+        }));
+    }
+
+    void clearStopNeedsConfirmTrue() {
+        Rig rig;
+        rig.iso.setMachine(machine(QStringLiteral("iso23725:A"), 0));
+        QCoreApplication::processEvents();
+        QJsonObject r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"clear_stop","id":"iso23725:A"})"))
+                            .object();
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
+        QVERIFY(r.value(QStringLiteral("message")).toString().contains(QStringLiteral("confirm")));
+        QCOMPARE(rig.iso.calls().size(), 0);
+        r = QJsonDocument::fromJson(
+                rig.monitor.handleLine(R"({"cmd":"clear_stop","id":"iso23725:A","confirm":true})"))
+                .object();
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), true);
+        QCOMPARE(rig.iso.calls().size(), 1);
+        QCOMPARE(rig.iso.calls()[0].name, QStringLiteral("clear_stop"));
+    }
+
+    void protocolCommandsAreRoutedAndRefusalsReported() {
+        Rig rig;
+        QJsonObject r = QJsonDocument::fromJson(rig.monitor.handleLine(
+                                                    R"({"cmd":"drive","id":"jaus:101","mode":"velocity","linear":0.5,"angular":0.1,"duration":2})"))
+                            .object();
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), true);
+        QCOMPARE(rig.jaus.calls().size(), 1);
+        QCOMPARE(rig.jaus.calls()[0].name, QStringLiteral("drive"));
+        QCOMPARE(rig.jaus.calls()[0].args.value(QStringLiteral("linear")).toDouble(), 0.5);
+        QCOMPARE(rig.iso.calls().size(), 0);
+
+        rig.jaus.refusedCommands = {QStringLiteral("request_control")};
+        r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"request_control","id":"jaus:101"})")).object();
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
+        QCOMPARE(r.value(QStringLiteral("message")).toString(), QStringLiteral("insufficient authority"));
+
+        r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"request_control","id":"nope:1"})")).object();
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
+        r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"fly"})")).object();
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
+        r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd": "stop_all")")).object();
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
+        QVERIFY(r.value(QStringLiteral("message")).toString().startsWith(QStringLiteral("invalid JSON")));
+    }
+
+    void linkAndAlarmEventsArePrinted() {
+        Rig rig;
+        rig.iso.publishLink({QStringLiteral("ahs-1"), LinkState::Down, 9000, QStringLiteral("timeout")});
+        QCoreApplication::processEvents();
+        const auto lines = rig.take();
+        const auto links = Rig::ofType(lines, QStringLiteral("link"));
+        QCOMPARE(links.size(), 1);
+        QCOMPARE(links[0].value(QStringLiteral("protocol")).toString(), QStringLiteral("iso23725"));
+        QCOMPARE(links[0].value(QStringLiteral("state")).toString(), QStringLiteral("down"));
+        const auto events = Rig::ofType(lines, QStringLiteral("event"));
+        QCOMPARE(events.size(), 1);
+        QCOMPARE(events[0].value(QStringLiteral("kind")).toString(), QStringLiteral("link_loss"));
+    }
+
+    void readsCommandsFromStdin() {
+        int fds[2];
+        QCOMPARE(::pipe(fds), 0);
+        const int savedStdin = ::dup(STDIN_FILENO);
+        QVERIFY(::dup2(fds[0], STDIN_FILENO) >= 0);
+        ::close(fds[0]);
+        {
+            Rig rig;
+            QVERIFY(rig.monitor.startStdin());
+            QSignalSpy finished(&rig.monitor, &HeadlessMonitor::inputFinished);
+            const QByteArray input = "{\"cmd\":\"stop\",\"id\":\"osyris:4\",\"req\":1}\n{\"cmd\":\"list\",\"req\":2}";
+            QCOMPARE(::write(fds[1], input.constData(), size_t(input.size())), ssize_t(input.size()));
+            ::close(fds[1]); // EOF: the unterminated last line is still executed
+            QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 5000);
+            const auto results = Rig::ofType(rig.take(), QStringLiteral("result"));
+            QCOMPARE(results.size(), 2);
+            QCOMPARE(results[0].value(QStringLiteral("req")).toInt(), 1);
+            QCOMPARE(results[0].value(QStringLiteral("ok")).toBool(), true);
+            QCOMPARE(results[1].value(QStringLiteral("req")).toInt(), 2);
+            QCOMPARE(rig.osy.calls().size(), 1);
+        }
+        ::dup2(savedStdin, STDIN_FILENO);
+        ::close(savedStdin);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestHeadlessMonitor)
+#include "test_headless_monitor.moc"

@@ -1,0 +1,227 @@
+// StopController fan-out, confirmation tokens and audit; AlarmModel acknowledgement, filter and CSV export.
+#include "models/AlarmModel.h"
+#include "models/FleetModel.h"
+#include "models/StopController.h"
+#include "models/testing/FakeFleetBridge.h"
+
+#include <QBuffer>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace ocu;
+
+namespace {
+MachineState machine(const QString& id) {
+    MachineState m;
+    m.id = id;
+    m.protocol = protocolOfId(id);
+    m.link = LinkState::Up;
+    m.stop = StopState::None;
+    return m;
+}
+} // namespace
+
+class TestStopAlarms : public QObject {
+    Q_OBJECT
+private slots:
+    void stopAllReachesEveryBridgeAndShowsWhatMachinesReport() {
+        QTemporaryDir dir;
+        FleetModel fleet;
+        fleet.setRefreshIntervalMs(0);
+        AlarmModel alarms;
+        StopController stop(&alarms);
+        stop.setAuditLogPath(dir.filePath(QStringLiteral("audit.jsonl")));
+        FakeFleetBridge jaus(Protocol::Jaus), iso(Protocol::Iso23725), osy(Protocol::Osyris);
+        for (FakeFleetBridge* b : {&jaus, &iso, &osy}) {
+            fleet.addBridge(b);
+            stop.addBridge(b);
+            b->setMachine(machine(protocolPrefix(b->protocol()) + QStringLiteral("1")));
+        }
+        jaus.simulateMachines = false; // this machine does not react: its shown state must stay "none"
+        QCoreApplication::processEvents();
+        QCOMPARE(fleet.rowCount(), 3);
+
+        const CommandResult r = stop.stopAll(QStringLiteral("test"));
+        QVERIFY(r.ok);
+        for (FakeFleetBridge* b : {&jaus, &iso, &osy}) {
+            QCOMPARE(b->calls().size(), 1);
+            QCOMPARE(b->calls().first().name, QStringLiteral("stop_all"));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(fleet.machine(QStringLiteral("iso23725:1"))->stop, StopState::Stopped);
+        QCOMPARE(fleet.machine(QStringLiteral("osyris:1"))->stop, StopState::Stopped);
+        QCOMPARE(fleet.machine(QStringLiteral("jaus:1"))->stop, StopState::None); // not what we asked
+
+        // Audited: an event-log entry and one JSON line in the audit file.
+        QCOMPARE(alarms.rowCount(), 1);
+        QCOMPARE(alarms.eventAt(0).kind, EventKind::Audit);
+        QFile f(stop.auditLogPath());
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+        QCOMPARE(lines.size(), 1);
+        const QJsonObject o = QJsonDocument::fromJson(lines[0]).object();
+        QCOMPARE(o.value(QStringLiteral("action")).toString(), QStringLiteral("stop_all"));
+        QCOMPARE(o.value(QStringLiteral("origin")).toString(), QStringLiteral("test"));
+        QCOMPARE(o.value(QStringLiteral("ok")).toBool(), true);
+    }
+
+    void stopAllStillReachesOthersWhenOneRefuses() {
+        AlarmModel alarms;
+        StopController stop(&alarms);
+        FakeFleetBridge a(Protocol::Jaus), b(Protocol::Iso23725);
+        a.refusedCommands = {QStringLiteral("stop_all")};
+        stop.addBridge(&a);
+        stop.addBridge(&b);
+        const CommandResult r = stop.stopAll();
+        QVERIFY(!r.ok);
+        QVERIFY(r.message.contains(QStringLiteral("jaus")));
+        QCOMPARE(b.calls().size(), 1);
+        // A refused stop is an alarm that needs acknowledgement.
+        QCOMPARE(alarms.unacknowledgedCount(), 1);
+    }
+
+    void stopNeedsNoConfirmationButReleaseDoes() {
+        AlarmModel alarms;
+        StopController stop(&alarms);
+        FakeFleetBridge jaus(Protocol::Jaus), iso(Protocol::Iso23725);
+        stop.addBridge(&jaus);
+        stop.addBridge(&iso);
+        QVERIFY(stop.stopMachine(QStringLiteral("iso23725:T1")).ok);
+        QCOMPARE(iso.calls().size(), 1);
+        QCOMPARE(iso.calls()[0].name, QStringLiteral("stop"));
+        QCOMPARE(jaus.calls().size(), 0);
+
+        // No token, wrong token, token for another machine: refused, bridge untouched.
+        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), QString()).ok);
+        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), QStringLiteral("bogus")).ok);
+        const QString other = stop.requestClearToken(QStringLiteral("iso23725:T9"));
+        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), other).ok);
+        QCOMPARE(iso.calls().size(), 1);
+
+        const QString token = stop.requestClearToken(QStringLiteral("iso23725:T1"));
+        QVERIFY(stop.clearStop(QStringLiteral("iso23725:T1"), token).ok);
+        QCOMPARE(iso.calls().size(), 2);
+        QCOMPARE(iso.calls()[1].name, QStringLiteral("clear_stop"));
+        // Single use.
+        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), token).ok);
+        QCOMPARE(iso.calls().size(), 2);
+
+        // Expired token.
+        stop.setTokenLifetimeMs(-1);
+        const QString expired = stop.requestClearToken(QStringLiteral("iso23725:T1"));
+        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), expired).ok);
+        QCOMPARE(iso.calls().size(), 2);
+    }
+
+    void alarmStaysUntilAcknowledged() {
+        AlarmModel alarms;
+        QSignalSpy count(&alarms, &AlarmModel::unacknowledgedCountChanged);
+        alarms.add(makeEvent(EventSeverity::Info, EventKind::Info, {}, QStringLiteral("hello")));
+        QCOMPARE(alarms.unacknowledgedCount(), 0);
+        alarms.add(makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("jaus:1"),
+                             QStringLiteral("motor fault")));
+        alarms.add(makeEvent(EventSeverity::Warning, EventKind::Timeout, QStringLiteral("jaus:2"),
+                             QStringLiteral("no data")));
+        QCOMPARE(alarms.unacknowledgedCount(), 2);
+        // Trimming never drops unacknowledged alarms.
+        alarms.setMaxEntries(1);
+        alarms.add(makeEvent(EventSeverity::Info, EventKind::Info, {}, QStringLiteral("x")));
+        QCOMPARE(alarms.rowCount(), 2);
+        QCOMPARE(alarms.unacknowledgedCount(), 2);
+        alarms.setMaxEntries(1000);
+        // Still there after time passes and more events arrive.
+        for (int i = 0; i < 50; ++i)
+            alarms.add(makeEvent(EventSeverity::Info, EventKind::Info, {}, QStringLiteral("noise %1").arg(i)));
+        QCOMPARE(alarms.unacknowledgedCount(), 2);
+        alarms.acknowledge(0);
+        QCOMPARE(alarms.unacknowledgedCount(), 1);
+        QVERIFY(alarms.isAcknowledged(0));
+        alarms.acknowledge(0); // idempotent
+        QCOMPARE(alarms.unacknowledgedCount(), 1);
+        alarms.acknowledgeAll();
+        QCOMPARE(alarms.unacknowledgedCount(), 0);
+        QCOMPARE(count.last().at(0).toInt(), 0);
+    }
+
+    void linkLossAndStaleAndHealthFaultRaiseAlarms() {
+        FakeFleetBridge bridge(Protocol::Iso23725);
+        FleetModel fleet;
+        fleet.setRefreshIntervalMs(0);
+        qint64 now = 5'000'000;
+        fleet.setClock([&] { return now; });
+        fleet.addBridge(&bridge);
+        AlarmModel alarms;
+        alarms.addBridge(&bridge);
+        alarms.watchFleet(&fleet);
+
+        bridge.publishLink({QStringLiteral("ahs-1"), LinkState::Down, 12000, QStringLiteral("heartbeat timeout")});
+        bridge.publishLink({QStringLiteral("ahs-1"), LinkState::Down, 13000, QStringLiteral("heartbeat timeout")});
+        QCoreApplication::processEvents();
+        QCOMPARE(alarms.unacknowledgedCount(), 1); // coalesced + deduplicated
+        QCOMPARE(alarms.eventAt(0).kind, EventKind::LinkLoss);
+
+        MachineState m = machine(QStringLiteral("iso23725:T1"));
+        m.lastDataMs = now;
+        m.health = HealthLevel::Fault;
+        m.healthText = QStringLiteral("tyre pressure");
+        bridge.publishMachine(m);
+        QCoreApplication::processEvents();
+        QCOMPARE(alarms.unacknowledgedCount(), 2);
+        QCOMPARE(alarms.eventAt(1).kind, EventKind::HealthFault);
+        QCOMPARE(alarms.eventAt(1).machineId, m.id);
+        bridge.publishMachine(m); // same fault again: no second alarm
+        QCoreApplication::processEvents();
+        QCOMPARE(alarms.unacknowledgedCount(), 2);
+
+        now += 60000;
+        fleet.setRemoveAfterMs(0);
+        fleet.refresh();
+        QCOMPARE(alarms.unacknowledgedCount(), 3);
+        QCOMPARE(alarms.eventAt(2).kind, EventKind::Timeout);
+
+        // Bridge events pass through.
+        FleetEvent ev = makeEvent(EventSeverity::Warning, EventKind::Discrepancy, {}, QStringLiteral("fleet differs"));
+        bridge.publishEvent(ev);
+        QCoreApplication::processEvents();
+        QCOMPARE(alarms.eventAt(alarms.rowCount() - 1).kind, EventKind::Discrepancy);
+        QCOMPARE(alarms.eventAt(alarms.rowCount() - 1).source, QStringLiteral("iso23725"));
+    }
+
+    void filterAndCsvExport() {
+        AlarmModel alarms;
+        FleetEvent a = makeEvent(EventSeverity::Alarm, EventKind::ControlLost, QStringLiteral("jaus:101"),
+                                 QStringLiteral("control lost, \"timeout\", retry"));
+        a.timeMs = 1700000000000;
+        alarms.add(a);
+        alarms.add(makeEvent(EventSeverity::Info, EventKind::TextMessage, QStringLiteral("osyris:3"),
+                             QStringLiteral("paver ready")));
+        AlarmFilterProxy proxy;
+        proxy.setSourceModel(&alarms);
+        QCOMPARE(proxy.rowCount(), 2);
+        proxy.setMinimumSeverity(EventSeverity::Warning);
+        QCOMPARE(proxy.rowCount(), 1);
+        proxy.setMinimumSeverity(EventSeverity::Info);
+        proxy.setText(QStringLiteral("paver"));
+        QCOMPARE(proxy.rowCount(), 1);
+        proxy.setText(QString());
+        proxy.setUnacknowledgedOnly(true);
+        QCOMPARE(proxy.rowCount(), 1);
+
+        QBuffer buf;
+        buf.open(QIODevice::WriteOnly);
+        QVERIFY(alarms.exportCsv(&buf));
+        const QList<QByteArray> lines = buf.data().split('\n');
+        QCOMPARE(lines[0].trimmed(), QByteArray("time,severity,kind,machine,source,text,acknowledged"));
+        QCOMPARE(lines[1].trimmed(), QByteArray("2023-11-14T22:13:20.000Z,alarm,control_lost,jaus:101,,"
+                                                "\"control lost, \"\"timeout\"\", retry\",no"));
+        QVERIFY(lines[2].startsWith(QByteArray()));
+        QVERIFY(lines[2].contains(",info,text_message,osyris:3,,paver ready,n/a"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestStopAlarms)
+#include "test_stop_alarms.moc"

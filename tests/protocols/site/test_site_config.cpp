@@ -1,0 +1,71 @@
+#include "site/SiteConfig.h"
+
+#include <QtTest>
+
+using namespace ocu;
+
+class TestSiteConfig : public QObject {
+    Q_OBJECT
+private slots:
+    void builtInSiteIsValid() {
+        auto cfg = loadSiteConfig(OCU_SOURCE_DIR "/resources/sites/simulated-site.json");
+        QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
+        QVERIFY(cfg->simulation.enabled);
+        QCOMPARE(cfg->origin.lat, 48.2085);
+        QCOMPARE(cfg->origin.lon, 11.4702);
+    }
+    void misspelledKeyNamesKeyAndLine() {
+        const char* text = "{\n"
+                           "  \"site\": {\n"
+                           "    \"name\": \"Quarry\",\n"
+                           "    \"origin\": { \"latitude\": 48.1, \"longitude\": 11.2 }\n"
+                           "  },\n"
+                           "  \"fleet\": { \"stale_afer_s\": 3 }\n"
+                           "}\n";
+        auto cfg = parseSiteConfig(text, "quarry.json");
+        QVERIFY(!cfg.ok());
+        QCOMPARE(QString::fromStdString(cfg.error()),
+                 QString("quarry.json:6: fleet.stale_afer_s: unknown key \"stale_afer_s\" (did you mean "
+                         "\"stale_after_s\"?)"));
+    }
+    void latitudeOutOfRange() {
+        const char* text = "{\n"
+                           "  \"site\": {\n"
+                           "    \"origin\": {\n"
+                           "      \"latitude\": 123,\n"
+                           "      \"longitude\": 11.2\n"
+                           "    }\n"
+                           "  }\n"
+                           "}\n";
+        auto cfg = parseSiteConfig(text, "bad.json");
+        QVERIFY(!cfg.ok());
+        QCOMPARE(QString::fromStdString(cfg.error()),
+                 QString("bad.json:4: site.origin.latitude: 123 is out of range [-90, 90]"));
+    }
+    void everyProblemIsListed() {
+        auto cfg = parseSiteConfig(R"({"site": {"origin": {"latitude": "x"}}, "simulaton": {}})", "m.json");
+        QVERIFY(!cfg.ok());
+        QString e = QString::fromStdString(cfg.error());
+        QVERIFY2(e.contains("site.origin.latitude: must be a number, not string"), qPrintable(e));
+        QVERIFY2(e.contains("site.origin.longitude: required number is missing"), qPrintable(e));
+        QVERIFY2(e.contains("unknown key \"simulaton\" (did you mean \"simulation\"?)"), qPrintable(e));
+    }
+    void missingSiteIsRefused() {
+        auto cfg = parseSiteConfig("{}", "e.json");
+        QVERIFY(!cfg.ok());
+        QVERIFY(QString::fromStdString(cfg.error()).contains("site: required object is missing"));
+        QVERIFY(!parseSiteConfig("[1,2]", "a.json").ok());
+        QVERIFY(!parseSiteConfig("", "z.json").ok());
+        QVERIFY(!loadSiteConfig("/nonexistent/site.json").ok());
+    }
+    void crossFieldCheck() {
+        auto cfg = parseSiteConfig(
+            R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "fleet": {"stale_after_s": 10, "remove_after_s": 5}})",
+            "c.json");
+        QVERIFY(!cfg.ok());
+        QVERIFY(QString::fromStdString(cfg.error()).contains("remove_after_s: must not be shorter than stale_after_s"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSiteConfig)
+#include "test_site_config.moc"

@@ -1,0 +1,124 @@
+// Headless 3D: offscreen Qt platform and no X server (DISPLAY unset by ocu_add_test). The scene is rendered
+// through the Mesa EGL surfaceless context; pixels at projected positions must show terrain, road and
+// machine.
+#include "SyntheticSite.h"
+#include "widgets/view3d/EglOffscreenRenderer.h"
+#include "widgets/view3d/SiteSceneRenderer.h"
+
+#include <QtTest>
+
+using namespace ocu;
+using namespace ocu::testsite;
+
+class TestView3dEgl : public QObject {
+    Q_OBJECT
+
+private:
+    static QRgb pixelAt(const QImage& img, QPointF p) {
+        return img.pixel(static_cast<int>(p.x()), static_cast<int>(p.y()));
+    }
+    static QString describe(QRgb p) {
+        return QStringLiteral("(%1,%2,%3)").arg(qRed(p)).arg(qGreen(p)).arg(qBlue(p));
+    }
+
+private slots:
+    void initTestCase() { QVERIFY(qEnvironmentVariable("DISPLAY").isEmpty()); }
+
+    void rendersTerrainRoadAndMachineWithoutX() {
+        SiteSceneRenderer scene;
+        scene.setScene(makeSite());
+        EglOffscreenRenderer egl;
+        QVERIFY2(egl.initialize(), qPrintable(egl.errorString()));
+        QCOMPARE(egl.backend(), EglOffscreenRenderer::Backend::EglSurfaceless);
+        const QImage img = egl.render(scene, QSize(640, 480));
+        QCOMPARE(img.size(), QSize(640, 480));
+        if (const QString dump = qEnvironmentVariable("OCU_VIEW3D_DUMP"); !dump.isEmpty())
+            img.save(dump + QStringLiteral("/egl_site.png")); // for looking at the picture by eye
+
+        const Machine3D m1 = *scene.machine(QStringLiteral("M1"));
+        const auto top = scene.project(m1.e, m1.n, m1.u + m1.height);
+        QVERIFY(top);
+        QVERIFY(QRectF(0, 0, 640, 480).contains(*top));
+        QVERIFY2(isMagenta(pixelAt(img, *top)), qPrintable(describe(pixelAt(img, *top))));
+
+        const auto road = scene.project(-60.0, 0.0, scene.terrainHeight(-60.0, 0.0));
+        QVERIFY(road);
+        QVERIFY2(isRoadGrey(pixelAt(img, *road)), qPrintable(describe(pixelAt(img, *road))));
+
+        const auto ground = scene.project(-70.0, 60.0, scene.terrainHeight(-70.0, 60.0));
+        QVERIFY(ground);
+        QVERIFY2(isTerrain(pixelAt(img, *ground)), qPrintable(describe(pixelAt(img, *ground))));
+
+        // The pass-count patch is drawn with its legend colours (red column at the east end).
+        const auto red = scene.project(28.0, -35.0, scene.terrainHeight(28.0, -35.0));
+        QVERIFY(red);
+        const QRgb rp = pixelAt(img, *red);
+        QVERIFY2(qRed(rp) > 150 && qGreen(rp) < 80 && qBlue(rp) < 80, qPrintable(describe(rp)));
+
+        // The concave area is draped over the hill (subdivided), not hidden under it.
+        const auto area = scene.project(80.0, 50.0, scene.terrainHeight(80.0, 50.0));
+        QVERIFY(area);
+        const QRgb ap = pixelAt(img, *area);
+        QVERIFY2(qGreen(ap) > qRed(ap) + 40 && qGreen(ap) > qBlue(ap) + 40, qPrintable(describe(ap)));
+
+        // Picking works on the same window: the machine under its pixel, nothing on bare ground.
+        QCOMPARE(scene.pick(top->x(), top->y()), QStringLiteral("M1"));
+        QCOMPARE(scene.pick(ground->x(), ground->y()), QString());
+    }
+
+    void machinesMoveWithoutRebuildingTheScene() {
+        SiteSceneRenderer scene;
+        scene.setScene(makeSite());
+        EglOffscreenRenderer egl;
+        QVERIFY2(egl.initialize(), qPrintable(egl.errorString()));
+        egl.render(scene, QSize(400, 300));
+        const auto builds = scene.sceneBuildCount();
+        const auto layouts = scene.machineLayoutCount();
+
+        std::vector<Machine3D> machines = scene.scene().machines;
+        const Machine3D before = machines[0];
+        machines[0].e = -60.0;
+        machines[0].n = 60.0;
+        machines[0].u = groundU(-60.0, 60.0);
+        scene.updateMachines(machines);
+        QCOMPARE(scene.sceneBuildCount(), builds);
+        QCOMPARE(scene.machineLayoutCount(), layouts); // same set of ids: arrays updated in place
+
+        const QImage img = egl.render(scene, QSize(400, 300));
+        const auto now = scene.project(-60.0, 60.0, machines[0].u + before.height);
+        const auto old = scene.project(before.e, before.n, before.u + before.height);
+        QVERIFY(now && old);
+        QVERIFY2(isMagenta(pixelAt(img, *now)), qPrintable(describe(pixelAt(img, *now))));
+        QVERIFY2(!isMagenta(pixelAt(img, *old)), qPrintable(describe(pixelAt(img, *old))));
+
+        // A new id changes the set: one re-layout, and the new machine is drawn.
+        machines.push_back(machine("M3", 0.0, 50.0, 90.0, kCyan));
+        scene.updateMachines(machines);
+        QCOMPARE(scene.machineLayoutCount(), layouts + 1);
+        const QImage img2 = egl.render(scene, QSize(400, 300));
+        const Machine3D m3 = *scene.machine(QStringLiteral("M3"));
+        const auto p3 = scene.project(m3.e, m3.n, m3.u + m3.height);
+        QVERIFY(p3);
+        QVERIFY2(isCyan(pixelAt(img2, *p3)), qPrintable(describe(pixelAt(img2, *p3))));
+    }
+
+    void flatPlaneWhenNoElevations() {
+        Scene3D s = makeSite();
+        s.terrain.points.clear();
+        s.terrain.planeU = 2.0;
+        for (Machine3D& m : s.machines)
+            m.u = 2.0;
+        SiteSceneRenderer scene;
+        scene.setScene(s);
+        QCOMPARE(scene.terrainHeight(12.0, -7.0), 2.0);
+        EglOffscreenRenderer egl;
+        const QImage img = egl.render(scene, QSize(400, 300));
+        QVERIFY2(!img.isNull(), qPrintable(egl.errorString()));
+        const auto ground = scene.project(-70.0, 60.0, 2.0);
+        QVERIFY(ground);
+        QVERIFY2(isTerrain(pixelAt(img, *ground)), qPrintable(describe(pixelAt(img, *ground))));
+    }
+};
+
+QTEST_MAIN(TestView3dEgl)
+#include "test_view3d_egl.moc"

@@ -1,0 +1,93 @@
+#pragma once
+// Protocol-neutral description of the 3D site scene. Plain value types: no VTK, no models.
+// Coordinates are local ENU metres (E east, N north, U up) relative to the site origin
+// (see protocols/common/GeoFrame.h for the WGS84 <-> ENU conversion).
+#include <QString>
+
+#include <cstdint>
+#include <vector>
+
+namespace ocu {
+
+struct Rgb {
+    std::uint8_t r = 0;
+    std::uint8_t g = 0;
+    std::uint8_t b = 0;
+    friend bool operator==(const Rgb&, const Rgb&) = default;
+};
+
+struct Enu {
+    double e = 0.0;
+    double n = 0.0;
+    double u = 0.0;
+};
+
+// Terrain: a Delaunay surface through `points` when there are at least 3 non-collinear ones,
+// otherwise a flat plane at height `planeU` covering [minE, maxE] x [minN, maxN].
+struct Terrain3D {
+    std::vector<Enu> points;
+    double minE = -100.0;
+    double minN = -100.0;
+    double maxE = 100.0;
+    double maxN = 100.0;
+    double planeU = 0.0;
+    Rgb colour{150, 140, 110}; // base colour; the Delaunay surface is shaded darker/lighter by height
+};
+
+enum class WayKind { Road, Lane, Area };
+
+// A road or lane is a ribbon of `width` metres along the polyline; an area is a filled polygon
+// (the outline, closed implicitly). All are draped over the terrain.
+struct Way3D {
+    WayKind kind = WayKind::Road;
+    std::vector<Enu> points; // only e and n are used; the height comes from the terrain
+    Rgb colour{90, 90, 90};
+    double width = 6.0;
+};
+
+struct Machine3D {
+    QString id;
+    double e = 0.0;
+    double n = 0.0;
+    double u = 0.0;          // ground height under the machine (the box sits on it)
+    double headingDeg = 0.0; // 0 = north, clockwise
+    double length = 10.0;    // along the heading
+    double width = 4.0;
+    double height = 4.0;
+    Rgb colour{0, 200, 0};
+    QString label; // shown above the selected machine (id when empty)
+    bool selected = false;
+};
+
+// Pass-count raster: cell (c, r) covers [originE + c*cellSize, +cellSize] x [originN + r*cellSize,
+// +cellSize]; row 0 is the southernmost row. `rgba` holds cols*rows*4 bytes, row-major; alpha 0 = no data
+// (not drawn).
+struct PassCountRaster {
+    double originE = 0.0;
+    double originN = 0.0;
+    double cellSize = 1.0;
+    int cols = 0;
+    int rows = 0;
+    std::vector<std::uint8_t> rgba;
+    bool empty() const {
+        return cols <= 0 || rows <= 0 || rgba.size() < static_cast<std::size_t>(cols) * rows * 4;
+    }
+};
+
+struct LegendEntry {
+    QString label;
+    Rgb colour;
+};
+
+struct Scene3D {
+    Terrain3D terrain;
+    std::vector<Way3D> ways;
+    std::vector<Machine3D> machines;
+    PassCountRaster passCount;
+    std::vector<LegendEntry> legend; // pass-count legend (same palette as the 2D map)
+    Rgb background{200, 215, 235};
+};
+
+enum class CameraMode { FreeOrbit, FollowSelected, TopDown };
+
+} // namespace ocu

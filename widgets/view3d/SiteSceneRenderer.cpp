@@ -1,0 +1,829 @@
+#include "widgets/view3d/SiteSceneRenderer.h"
+
+#include <vtkActor.h>
+#include <vtkBillboardTextActor3D.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCubeSource.h>
+#include <vtkDelaunay2D.h>
+#include <vtkDoubleArray.h>
+#include <vtkGlyph3DMapper.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextProperty.h>
+#include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <QHash>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace ocu {
+
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+// Draping lifts above the terrain (metres): enough to avoid z-fighting at site scale, small enough to look
+// flat.
+constexpr double kLiftArea = 0.08;
+constexpr double kLiftRoad = 0.15;
+constexpr double kLiftLane = 0.22;
+constexpr double kLiftPassCount = 0.30;
+
+struct Vec3 {
+    double x, y, z;
+};
+
+// Uniform bucket grid over the terrain triangles for height look-ups.
+class TriangleIndex {
+public:
+    void build(std::vector<Enu> pts, std::vector<std::array<int, 3>> tris) {
+        m_pts = std::move(pts);
+        m_tris = std::move(tris);
+        m_buckets.clear();
+        if (m_pts.empty() || m_tris.empty())
+            return;
+        m_minE = m_maxE = m_pts[0].e;
+        m_minN = m_maxN = m_pts[0].n;
+        double sumU = 0.0;
+        for (const Enu& p : m_pts) {
+            m_minE = std::min(m_minE, p.e);
+            m_maxE = std::max(m_maxE, p.e);
+            m_minN = std::min(m_minN, p.n);
+            m_maxN = std::max(m_maxN, p.n);
+            sumU += p.u;
+        }
+        m_meanU = sumU / static_cast<double>(m_pts.size());
+        const int n = static_cast<int>(std::clamp(std::sqrt(static_cast<double>(m_tris.size())), 1.0, 256.0));
+        m_nx = m_ny = n;
+        m_cellE = std::max((m_maxE - m_minE) / n, 1e-6);
+        m_cellN = std::max((m_maxN - m_minN) / n, 1e-6);
+        m_buckets.assign(static_cast<std::size_t>(m_nx * m_ny), {});
+        for (int t = 0; t < static_cast<int>(m_tris.size()); ++t) {
+            double e0 = 1e300, e1 = -1e300, n0 = 1e300, n1 = -1e300;
+            for (int k : m_tris[t]) {
+                e0 = std::min(e0, m_pts[k].e);
+                e1 = std::max(e1, m_pts[k].e);
+                n0 = std::min(n0, m_pts[k].n);
+                n1 = std::max(n1, m_pts[k].n);
+            }
+            for (int j = cellY(n0); j <= cellY(n1); ++j)
+                for (int i = cellX(e0); i <= cellX(e1); ++i)
+                    m_buckets[static_cast<std::size_t>(j * m_nx + i)].push_back(t);
+        }
+    }
+
+    bool valid() const { return !m_buckets.empty(); }
+
+    double height(double e, double n) const {
+        // Outside the hull: clamp into the bounding box, then fall back to the nearest vertex of the bucket.
+        const double ce = std::clamp(e, m_minE, m_maxE);
+        const double cn = std::clamp(n, m_minN, m_maxN);
+        const auto& bucket = m_buckets[static_cast<std::size_t>(cellY(cn) * m_nx + cellX(ce))];
+        for (int t : bucket) {
+            const Enu& a = m_pts[m_tris[t][0]];
+            const Enu& b = m_pts[m_tris[t][1]];
+            const Enu& c = m_pts[m_tris[t][2]];
+            const double det = (b.n - c.n) * (a.e - c.e) + (c.e - b.e) * (a.n - c.n);
+            if (std::abs(det) < 1e-12)
+                continue;
+            const double l1 = ((b.n - c.n) * (ce - c.e) + (c.e - b.e) * (cn - c.n)) / det;
+            const double l2 = ((c.n - a.n) * (ce - c.e) + (a.e - c.e) * (cn - c.n)) / det;
+            const double l3 = 1.0 - l1 - l2;
+            constexpr double eps = -1e-9;
+            if (l1 >= eps && l2 >= eps && l3 >= eps)
+                return l1 * a.u + l2 * b.u + l3 * c.u;
+        }
+        double best = std::numeric_limits<double>::max();
+        double u = m_meanU;
+        for (int t : bucket)
+            for (int k : m_tris[t]) {
+                const double d2 =
+                    (m_pts[k].e - ce) * (m_pts[k].e - ce) + (m_pts[k].n - cn) * (m_pts[k].n - cn);
+                if (d2 < best) {
+                    best = d2;
+                    u = m_pts[k].u;
+                }
+            }
+        return u;
+    }
+
+private:
+    int cellX(double e) const { return std::clamp(static_cast<int>((e - m_minE) / m_cellE), 0, m_nx - 1); }
+    int cellY(double n) const { return std::clamp(static_cast<int>((n - m_minN) / m_cellN), 0, m_ny - 1); }
+
+    std::vector<Enu> m_pts;
+    std::vector<std::array<int, 3>> m_tris;
+    std::vector<std::vector<int>> m_buckets;
+    double m_minE = 0, m_maxE = 0, m_minN = 0, m_maxN = 0, m_cellE = 1, m_cellN = 1, m_meanU = 0;
+    int m_nx = 1, m_ny = 1;
+};
+
+vtkSmartPointer<vtkUnsignedCharArray> makeColours(int components, const char* name) {
+    auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    a->SetNumberOfComponents(components);
+    a->SetName(name);
+    return a;
+}
+
+void configureDirectColours(vtkMapper* mapper, bool cellData) {
+    mapper->SetColorModeToDirectScalars();
+    mapper->ScalarVisibilityOn();
+    if (cellData)
+        mapper->SetScalarModeToUseCellData();
+    else
+        mapper->SetScalarModeToUsePointData();
+}
+
+} // namespace
+
+struct SiteSceneRenderer::Impl {
+    vtkNew<vtkRenderer> renderer;
+
+    // Terrain
+    vtkNew<vtkActor> terrainActor;
+    vtkNew<vtkPolyDataMapper> terrainMapper;
+    TriangleIndex terrainIndex;
+    bool flatTerrain = true;
+
+    // Ways
+    vtkNew<vtkActor> ribbonActor;
+    vtkNew<vtkPolyDataMapper> ribbonMapper;
+    vtkNew<vtkActor> areaActor;
+    vtkNew<vtkPolyDataMapper> areaMapper;
+    vtkNew<vtkTriangleFilter> areaTriangles;
+
+    // Pass count
+    vtkNew<vtkActor> passActor;
+    vtkNew<vtkPolyDataMapper> passMapper;
+
+    // Machines: one instanced glyph mapper (one draw call for all boxes), arrays updated in place.
+    vtkNew<vtkCubeSource> box;
+    vtkNew<vtkPolyData> machineData;
+    vtkNew<vtkPoints> machinePoints;
+    vtkNew<vtkDoubleArray> machineScale;
+    vtkNew<vtkDoubleArray> machineRotation;
+    vtkSmartPointer<vtkUnsignedCharArray> machineColour = makeColours(3, "colour");
+    vtkNew<vtkGlyph3DMapper> machineMapper;
+    vtkNew<vtkActor> machineActor;
+    QHash<QString, int> machineIndex;
+
+    // Selection
+    vtkNew<vtkCubeSource> selectionBox;
+    vtkNew<vtkPolyDataMapper> selectionMapper;
+    vtkNew<vtkActor> selectionActor;
+    vtkNew<vtkBillboardTextActor3D> label;
+
+    Scene3D scene;
+    QString selected;
+    CameraMode cameraMode = CameraMode::FreeOrbit;
+    bool cameraInitialised = false;
+    std::array<double, 4> cameraExtent{0, 0, 0, 0};
+    std::optional<Vec3> followAnchor; // last machine centre the follow camera was aligned to
+    std::uint64_t buildCount = 0;
+    std::uint64_t layoutCount = 0;
+
+    Impl() {
+        renderer->SetBackground(0.78, 0.84, 0.92);
+        renderer->AddActor(terrainActor);
+        renderer->AddActor(areaActor);
+        renderer->AddActor(ribbonActor);
+        renderer->AddActor(passActor);
+        renderer->AddActor(machineActor);
+        renderer->AddActor(selectionActor);
+        renderer->AddActor(label);
+
+        terrainActor->SetMapper(terrainMapper);
+        terrainActor->GetProperty()->SetAmbient(0.35);
+        terrainActor->GetProperty()->SetDiffuse(0.65);
+        configureDirectColours(terrainMapper, false);
+
+        ribbonActor->SetMapper(ribbonMapper);
+        configureDirectColours(ribbonMapper, true);
+        areaTriangles->PassLinesOff();
+        areaTriangles->PassVertsOff();
+        areaActor->SetMapper(areaMapper);
+        configureDirectColours(areaMapper, true);
+        passActor->SetMapper(passMapper);
+        configureDirectColours(passMapper, true);
+        // Draped layers are pulled towards the camera in depth so that they win over the terrain at any
+        // distance.
+        areaMapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-1, -2);
+        ribbonMapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2, -4);
+        passMapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-3, -6);
+        for (vtkActor* a : {ribbonActor.Get(), areaActor.Get(), passActor.Get()}) {
+            a->GetProperty()->SetAmbient(0.5);
+            a->GetProperty()->SetDiffuse(0.5);
+        }
+
+        // Unit box sitting on z = 0: x = width, y = length (forward = +y = north at heading 0), z = height.
+        box->SetCenter(0.0, 0.0, 0.5);
+        box->SetXLength(1.0);
+        box->SetYLength(1.0);
+        box->SetZLength(1.0);
+        machineScale->SetName("scale");
+        machineScale->SetNumberOfComponents(3);
+        machineRotation->SetName("rotation");
+        machineRotation->SetNumberOfComponents(3);
+        machineData->SetPoints(machinePoints);
+        machineData->GetPointData()->AddArray(machineScale);
+        machineData->GetPointData()->AddArray(machineRotation);
+        machineData->GetPointData()->SetScalars(machineColour);
+        machineMapper->SetInputData(machineData);
+        machineMapper->SetSourceConnection(box->GetOutputPort());
+        machineMapper->SetScaleArray("scale");
+        machineMapper->SetScaleModeToScaleByVectorComponents();
+        machineMapper->SetOrientationArray("rotation");
+        machineMapper->SetOrientationModeToRotation();
+        machineMapper->SetColorModeToDirectScalars();
+        machineMapper->SetScalarModeToUsePointData();
+        machineMapper->ScalarVisibilityOn();
+        machineActor->SetMapper(machineMapper);
+        machineActor->GetProperty()->SetAmbient(0.35);
+        machineActor->GetProperty()->SetDiffuse(0.65);
+
+        selectionBox->SetCenter(0.0, 0.0, 0.5);
+        selectionMapper->SetInputConnection(selectionBox->GetOutputPort());
+        selectionActor->SetMapper(selectionMapper);
+        selectionActor->GetProperty()->SetRepresentationToWireframe();
+        selectionActor->GetProperty()->SetColor(1.0, 0.9, 0.0);
+        selectionActor->GetProperty()->SetLineWidth(3.0);
+        selectionActor->GetProperty()->LightingOff();
+        selectionActor->SetVisibility(false);
+
+        label->GetTextProperty()->SetFontSize(16);
+        label->GetTextProperty()->SetBold(true);
+        label->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+        label->GetTextProperty()->SetBackgroundColor(0.1, 0.1, 0.1);
+        label->GetTextProperty()->SetBackgroundOpacity(0.7);
+        label->GetTextProperty()->SetJustificationToCentered();
+        label->SetVisibility(false);
+    }
+
+    double height(double e, double n) const {
+        if (!flatTerrain && terrainIndex.valid())
+            return terrainIndex.height(e, n);
+        return scene.terrain.planeU;
+    }
+
+    void buildTerrain() {
+        const Terrain3D& t = scene.terrain;
+        flatTerrain = true;
+        vtkSmartPointer<vtkPolyData> surface;
+        if (t.points.size() >= 3) {
+            vtkNew<vtkPoints> pts;
+            for (const Enu& p : t.points)
+                pts->InsertNextPoint(p.e, p.n, p.u);
+            vtkNew<vtkPolyData> cloud;
+            cloud->SetPoints(pts);
+            vtkNew<vtkDelaunay2D> delaunay;
+            delaunay->SetInputData(cloud);
+            delaunay->Update();
+            vtkPolyData* out = delaunay->GetOutput();
+            if (out->GetNumberOfPolys() > 0) {
+                std::vector<Enu> verts(static_cast<std::size_t>(out->GetNumberOfPoints()));
+                for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i) {
+                    double x[3];
+                    out->GetPoint(i, x);
+                    verts[static_cast<std::size_t>(i)] = {x[0], x[1], x[2]};
+                }
+                std::vector<std::array<int, 3>> tris;
+                vtkCellArray* polys = out->GetPolys();
+                vtkIdType npts = 0;
+                const vtkIdType* ids = nullptr;
+                for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+                    if (npts == 3)
+                        tris.push_back(
+                            {static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2])});
+                terrainIndex.build(verts, std::move(tris));
+                flatTerrain = !terrainIndex.valid();
+                surface = vtkSmartPointer<vtkPolyData>::New();
+                surface->SetPoints(out->GetPoints());
+                surface->SetPolys(out->GetPolys());
+                // Shade by height so benches and ramps read at a glance.
+                double uMin = verts[0].u, uMax = verts[0].u;
+                for (const Enu& v : verts) {
+                    uMin = std::min(uMin, v.u);
+                    uMax = std::max(uMax, v.u);
+                }
+                auto colours = makeColours(3, "colour");
+                for (const Enu& v : verts) {
+                    const double f = 0.75 + 0.45 * (uMax > uMin ? (v.u - uMin) / (uMax - uMin) : 0.5);
+                    colours->InsertNextTuple3(std::min(255.0, t.colour.r * f),
+                                              std::min(255.0, t.colour.g * f),
+                                              std::min(255.0, t.colour.b * f));
+                }
+                surface->GetPointData()->SetScalars(colours);
+            }
+        }
+        if (flatTerrain) {
+            surface = vtkSmartPointer<vtkPolyData>::New();
+            vtkNew<vtkPoints> pts;
+            pts->InsertNextPoint(t.minE, t.minN, t.planeU);
+            pts->InsertNextPoint(t.maxE, t.minN, t.planeU);
+            pts->InsertNextPoint(t.maxE, t.maxN, t.planeU);
+            pts->InsertNextPoint(t.minE, t.maxN, t.planeU);
+            vtkNew<vtkCellArray> quad;
+            const vtkIdType ids[4] = {0, 1, 2, 3};
+            quad->InsertNextCell(4, ids);
+            surface->SetPoints(pts);
+            surface->SetPolys(quad);
+            auto colours = makeColours(3, "colour");
+            for (int i = 0; i < 4; ++i)
+                colours->InsertNextTuple3(t.colour.r, t.colour.g, t.colour.b);
+            surface->GetPointData()->SetScalars(colours);
+        }
+        terrainMapper->SetInputData(surface);
+    }
+
+    // Draped ribbon: the centre line is resampled every `step` metres so the ribbon follows the terrain.
+    void addRibbon(const Way3D& w, double lift, vtkPoints* pts, vtkCellArray* tris,
+                   vtkUnsignedCharArray* colours) {
+        if (w.points.size() < 2 || w.width <= 0.0)
+            return;
+        const double step = flatTerrain ? 1e9 : 2.0;
+        std::vector<std::pair<double, double>> line;
+        for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
+            const Enu& a = w.points[i];
+            const Enu& b = w.points[i + 1];
+            const double len = std::hypot(b.e - a.e, b.n - a.n);
+            const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+            for (int k = 0; k < n; ++k)
+                line.emplace_back(a.e + (b.e - a.e) * k / n, a.n + (b.n - a.n) * k / n);
+        }
+        line.emplace_back(w.points.back().e, w.points.back().n);
+        // Drop repeated points (zero-length segments have no direction).
+        line.erase(std::unique(line.begin(), line.end(),
+                               [](const auto& p, const auto& q) {
+                                   return std::abs(p.first - q.first) < 1e-6 &&
+                                          std::abs(p.second - q.second) < 1e-6;
+                               }),
+                   line.end());
+        if (line.size() < 2)
+            return;
+        const double half = w.width / 2.0;
+        const vtkIdType base = pts->GetNumberOfPoints();
+        for (std::size_t i = 0; i < line.size(); ++i) {
+            const auto& prev = line[i == 0 ? 0 : i - 1];
+            const auto& next = line[std::min(i + 1, line.size() - 1)];
+            double de = next.first - prev.first, dn = next.second - prev.second;
+            const double len = std::hypot(de, dn);
+            de /= len;
+            dn /= len;
+            // Left normal of the direction (de, dn) is (-dn, de).
+            const double le = line[i].first - dn * half, ln = line[i].second + de * half;
+            const double re = line[i].first + dn * half, rn = line[i].second - de * half;
+            pts->InsertNextPoint(le, ln, height(le, ln) + lift);
+            pts->InsertNextPoint(re, rn, height(re, rn) + lift);
+        }
+        for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+            const vtkIdType l0 = base + 2 * static_cast<vtkIdType>(i), r0 = l0 + 1, l1 = l0 + 2, r1 = l0 + 3;
+            const vtkIdType t1[3] = {l0, r0, r1};
+            const vtkIdType t2[3] = {l0, r1, l1};
+            tris->InsertNextCell(3, t1);
+            tris->InsertNextCell(3, t2);
+            colours->InsertNextTuple3(w.colour.r, w.colour.g, w.colour.b);
+            colours->InsertNextTuple3(w.colour.r, w.colour.g, w.colour.b);
+        }
+    }
+
+    void buildWays() {
+        vtkNew<vtkPoints> rPts;
+        vtkNew<vtkCellArray> rTris;
+        auto rColours = makeColours(3, "colour");
+        vtkNew<vtkPoints> aPts;
+        vtkNew<vtkCellArray> aPolys;
+        auto aColours = makeColours(3, "colour");
+        // Areas first, roads, then lanes on top.
+        for (WayKind kind : {WayKind::Road, WayKind::Lane})
+            for (const Way3D& w : scene.ways)
+                if (w.kind == kind)
+                    addRibbon(w, kind == WayKind::Road ? kLiftRoad : kLiftLane, rPts, rTris, rColours);
+        // Areas: triangulate the outline in 2D (concave outlines allowed), then subdivide every triangle so
+        // the surface follows the terrain instead of cutting through it.
+        vtkNew<vtkPoints> outlinePts;
+        vtkNew<vtkCellArray> outlines;
+        auto outlineColours = makeColours(3, "colour");
+        for (const Way3D& w : scene.ways) {
+            if (w.kind != WayKind::Area || w.points.size() < 3)
+                continue;
+            std::vector<vtkIdType> ids;
+            for (const Enu& p : w.points)
+                ids.push_back(outlinePts->InsertNextPoint(p.e, p.n, 0.0));
+            outlines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+            outlineColours->InsertNextTuple3(w.colour.r, w.colour.g, w.colour.b);
+        }
+        vtkNew<vtkPolyData> outlineData;
+        outlineData->SetPoints(outlinePts);
+        outlineData->SetPolys(outlines);
+        outlineData->GetCellData()->SetScalars(outlineColours);
+        areaTriangles->SetInputData(outlineData);
+        areaTriangles->Update();
+        vtkPolyData* tri = areaTriangles->GetOutput();
+        vtkDataArray* triColours = tri->GetCellData()->GetScalars();
+        const double step = flatTerrain ? 1e9 : 4.0;
+        vtkIdType npts = 0;
+        const vtkIdType* ids = nullptr;
+        vtkIdType cell = 0;
+        vtkCellArray* polys = tri->GetPolys();
+        for (polys->InitTraversal(); polys->GetNextCell(npts, ids); ++cell) {
+            if (npts != 3)
+                continue;
+            double a[3], b[3], c[3];
+            tri->GetPoint(ids[0], a);
+            tri->GetPoint(ids[1], b);
+            tri->GetPoint(ids[2], c);
+            const double longest =
+                std::max({std::hypot(b[0] - a[0], b[1] - a[1]), std::hypot(c[0] - b[0], c[1] - b[1]),
+                          std::hypot(a[0] - c[0], a[1] - c[1])});
+            const int k = std::clamp(static_cast<int>(std::ceil(longest / step)), 1, 64);
+            double rgb[3] = {128, 128, 128};
+            if (triColours != nullptr)
+                triColours->GetTuple(cell, rgb);
+            // Uniform barycentric subdivision into k*k triangles.
+            auto vertex = [&](int i, int j) {
+                const double u = static_cast<double>(i) / k, v = static_cast<double>(j) / k, w0 = 1.0 - u - v;
+                const double e = w0 * a[0] + u * b[0] + v * c[0], n = w0 * a[1] + u * b[1] + v * c[1];
+                return aPts->InsertNextPoint(e, n, height(e, n) + kLiftArea);
+            };
+            for (int i = 0; i < k; ++i)
+                for (int j = 0; j + i < k; ++j) {
+                    const vtkIdType t1[3] = {vertex(i, j), vertex(i + 1, j), vertex(i, j + 1)};
+                    aPolys->InsertNextCell(3, t1);
+                    aColours->InsertNextTuple(rgb);
+                    if (i + j + 1 < k) {
+                        const vtkIdType t2[3] = {vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)};
+                        aPolys->InsertNextCell(3, t2);
+                        aColours->InsertNextTuple(rgb);
+                    }
+                }
+        }
+        vtkNew<vtkPolyData> ribbons;
+        ribbons->SetPoints(rPts);
+        ribbons->SetPolys(rTris);
+        ribbons->GetCellData()->SetScalars(rColours);
+        ribbonMapper->SetInputData(ribbons);
+        vtkNew<vtkPolyData> areas;
+        areas->SetPoints(aPts);
+        areas->SetPolys(aPolys);
+        areas->GetCellData()->SetScalars(aColours);
+        areaMapper->SetInputData(areas);
+    }
+
+    void buildPassCount() {
+        const PassCountRaster& r = scene.passCount;
+        vtkNew<vtkPoints> pts;
+        vtkNew<vtkCellArray> quads;
+        auto colours = makeColours(4, "colour");
+        bool translucent = false;
+        if (!r.empty() && r.cellSize > 0.0) {
+            for (int row = 0; row < r.rows; ++row) {
+                for (int col = 0; col < r.cols; ++col) {
+                    const std::size_t o = (static_cast<std::size_t>(row) * r.cols + col) * 4;
+                    if (r.rgba[o + 3] == 0)
+                        continue;
+                    const double e0 = r.originE + col * r.cellSize, e1 = e0 + r.cellSize;
+                    const double n0 = r.originN + row * r.cellSize, n1 = n0 + r.cellSize;
+                    vtkIdType ids[4];
+                    ids[0] = pts->InsertNextPoint(e0, n0, height(e0, n0) + kLiftPassCount);
+                    ids[1] = pts->InsertNextPoint(e1, n0, height(e1, n0) + kLiftPassCount);
+                    ids[2] = pts->InsertNextPoint(e1, n1, height(e1, n1) + kLiftPassCount);
+                    ids[3] = pts->InsertNextPoint(e0, n1, height(e0, n1) + kLiftPassCount);
+                    quads->InsertNextCell(4, ids);
+                    colours->InsertNextTuple4(r.rgba[o], r.rgba[o + 1], r.rgba[o + 2], r.rgba[o + 3]);
+                    translucent = translucent || r.rgba[o + 3] < 255;
+                }
+            }
+        }
+        vtkNew<vtkPolyData> surface;
+        surface->SetPoints(pts);
+        surface->SetPolys(quads);
+        surface->GetCellData()->SetScalars(colours);
+        passMapper->SetInputData(surface);
+        passActor->SetVisibility(quads->GetNumberOfCells() > 0);
+        (void)translucent; // RGBA scalars with alpha < 255 are drawn in VTK's translucent pass automatically
+    }
+
+    void layoutMachines() {
+        const auto n = static_cast<vtkIdType>(scene.machines.size());
+        machinePoints->SetNumberOfPoints(n);
+        machineScale->SetNumberOfTuples(n);
+        machineRotation->SetNumberOfTuples(n);
+        machineColour->SetNumberOfTuples(n);
+        machineIndex.clear();
+        for (vtkIdType i = 0; i < n; ++i)
+            machineIndex.insert(scene.machines[static_cast<std::size_t>(i)].id, static_cast<int>(i));
+        ++layoutCount;
+    }
+
+    void writeMachine(vtkIdType i, const Machine3D& m) {
+        machinePoints->SetPoint(i, m.e, m.n, m.u);
+        machineScale->SetTuple3(i, std::max(m.width, 0.1), std::max(m.length, 0.1), std::max(m.height, 0.1));
+        machineRotation->SetTuple3(i, 0.0, 0.0,
+                                   -m.headingDeg); // VTK rotates counter-clockwise; heading is clockwise
+        machineColour->SetTuple3(i, m.colour.r, m.colour.g, m.colour.b);
+    }
+
+    void applyMachines(const std::vector<Machine3D>& machines) {
+        bool sameSet = machines.size() == scene.machines.size();
+        for (std::size_t i = 0; sameSet && i < machines.size(); ++i)
+            sameSet = machines[i].id == scene.machines[i].id;
+        scene.machines = machines;
+        if (!sameSet)
+            layoutMachines();
+        for (std::size_t i = 0; i < machines.size(); ++i) {
+            writeMachine(static_cast<vtkIdType>(i), machines[i]);
+            if (machines[i].selected)
+                selected = machines[i].id;
+        }
+        machinePoints->Modified();
+        machineScale->Modified();
+        machineRotation->Modified();
+        machineColour->Modified();
+        machineData->Modified();
+        machineActor->SetVisibility(!machines.empty());
+        updateSelection();
+    }
+
+    const Machine3D* find(const QString& id) const {
+        const auto it = machineIndex.constFind(id);
+        if (id.isEmpty() || it == machineIndex.constEnd())
+            return nullptr;
+        return &scene.machines[static_cast<std::size_t>(*it)];
+    }
+
+    void updateSelection() {
+        const Machine3D* m = find(selected);
+        selectionActor->SetVisibility(m != nullptr);
+        label->SetVisibility(m != nullptr);
+        if (m != nullptr) {
+            selectionActor->SetPosition(m->e, m->n, m->u);
+            selectionActor->SetOrientation(0.0, 0.0, -m->headingDeg);
+            selectionActor->SetScale(m->width + 0.6, m->length + 0.6, m->height + 0.3);
+            label->SetPosition(m->e, m->n, m->u + m->height + 1.5);
+            const QString text = m->label.isEmpty() ? m->id : m->label;
+            label->SetInput(text.toUtf8().constData());
+        }
+        if (cameraMode == CameraMode::FollowSelected)
+            follow();
+    }
+
+    Vec3 centreOf(const Machine3D& m) const { return {m.e, m.n, m.u + m.height / 2.0}; }
+
+    // Follow: the first time (or after a selection change) the camera is put behind the machine; afterwards
+    // it is translated by the machine's movement, which keeps the machine centred and keeps the user's orbit.
+    void follow() {
+        const Machine3D* m = find(selected);
+        if (m == nullptr) {
+            followAnchor.reset();
+            return;
+        }
+        vtkCamera* cam = renderer->GetActiveCamera();
+        const Vec3 c = centreOf(*m);
+        if (!followAnchor) {
+            const double h = m->headingDeg * kDegToRad;
+            const double dist = std::max(40.0, 6.0 * m->length);
+            const double fe = std::sin(h), fn = std::cos(h);
+            cam->SetFocalPoint(c.x, c.y, c.z);
+            cam->SetPosition(c.x - fe * dist * 0.8, c.y - fn * dist * 0.8, c.z + dist * 0.6);
+            cam->SetViewUp(0.0, 0.0, 1.0);
+        } else {
+            double fp[3], pos[3];
+            cam->GetFocalPoint(fp);
+            cam->GetPosition(pos);
+            // Re-centre on the machine exactly (the user may have panned), keeping the view offset.
+            const double off[3] = {pos[0] - fp[0], pos[1] - fp[1], pos[2] - fp[2]};
+            cam->SetFocalPoint(c.x, c.y, c.z);
+            cam->SetPosition(c.x + off[0], c.y + off[1], c.z + off[2]);
+        }
+        followAnchor = c;
+        renderer->ResetCameraClippingRange();
+    }
+
+    void siteBounds(double b[6]) const {
+        const Terrain3D& t = scene.terrain;
+        double e0 = t.minE, e1 = t.maxE, n0 = t.minN, n1 = t.maxN, u0 = t.planeU, u1 = t.planeU;
+        if (!t.points.empty()) {
+            e0 = n0 = u0 = std::numeric_limits<double>::max();
+            e1 = n1 = u1 = std::numeric_limits<double>::lowest();
+            for (const Enu& p : t.points) {
+                e0 = std::min(e0, p.e);
+                e1 = std::max(e1, p.e);
+                n0 = std::min(n0, p.n);
+                n1 = std::max(n1, p.n);
+                u0 = std::min(u0, p.u);
+                u1 = std::max(u1, p.u);
+            }
+        }
+        b[0] = e0;
+        b[1] = e1;
+        b[2] = n0;
+        b[3] = n1;
+        b[4] = u0;
+        b[5] = u1 + 5.0;
+    }
+
+    void resetCamera() {
+        vtkCamera* cam = renderer->GetActiveCamera();
+        double b[6];
+        siteBounds(b);
+        const double ce = (b[0] + b[1]) / 2, cn = (b[2] + b[3]) / 2, cu = (b[4] + b[5]) / 2;
+        cam->SetFocalPoint(ce, cn, cu);
+        if (cameraMode == CameraMode::TopDown) {
+            cam->SetPosition(ce, cn, cu + 100.0);
+            cam->SetViewUp(0.0, 1.0, 0.0); // north up, like the 2D map
+        } else {
+            cam->SetPosition(ce, cn - 100.0, cu + 80.0); // looking north, tilted
+            cam->SetViewUp(0.0, 0.0, 1.0);
+        }
+        renderer->ResetCamera(b);
+        if (cameraMode != CameraMode::TopDown)
+            cam->Dolly(1.25);
+        renderer->ResetCameraClippingRange();
+        followAnchor.reset();
+        if (cameraMode == CameraMode::FollowSelected)
+            follow();
+        cameraInitialised = true;
+    }
+
+    bool windowSize(int& w, int& h) const {
+        vtkRenderWindow* rw = renderer->GetRenderWindow();
+        if (rw == nullptr)
+            return false;
+        const int* s = renderer->GetSize();
+        w = s[0];
+        h = s[1];
+        return w > 0 && h > 0;
+    }
+};
+
+SiteSceneRenderer::SiteSceneRenderer() : d(std::make_unique<Impl>()) {}
+SiteSceneRenderer::~SiteSceneRenderer() = default;
+
+vtkRenderer* SiteSceneRenderer::renderer() const {
+    return d->renderer;
+}
+
+void SiteSceneRenderer::setScene(const Scene3D& scene) {
+    const std::vector<Machine3D> machines = scene.machines;
+    const Terrain3D old = d->scene.terrain;
+    d->scene = scene;
+    d->scene.machines = {};
+    d->machineIndex.clear();
+    d->renderer->SetBackground(scene.background.r / 255.0, scene.background.g / 255.0,
+                               scene.background.b / 255.0);
+    d->buildTerrain();
+    d->buildWays();
+    d->buildPassCount();
+    d->applyMachines(machines);
+    ++d->buildCount;
+    double b[6];
+    d->siteBounds(b);
+    const std::array<double, 4> extent{b[0], b[1], b[2], b[3]};
+    if (!d->cameraInitialised || extent != d->cameraExtent) {
+        d->cameraExtent = extent;
+        d->resetCamera();
+    } else {
+        d->renderer->ResetCameraClippingRange();
+    }
+}
+
+void SiteSceneRenderer::updateMachines(const std::vector<Machine3D>& machines) {
+    d->applyMachines(machines);
+    d->renderer->ResetCameraClippingRange();
+}
+
+void SiteSceneRenderer::setPassCount(const PassCountRaster& raster, const std::vector<LegendEntry>& legend) {
+    d->scene.passCount = raster;
+    d->scene.legend = legend;
+    d->buildPassCount();
+}
+
+void SiteSceneRenderer::setSelectedMachine(const QString& id) {
+    if (id != d->selected)
+        d->followAnchor.reset();
+    d->selected = id;
+    for (Machine3D& m : d->scene.machines)
+        m.selected = (m.id == id);
+    d->updateSelection();
+}
+
+QString SiteSceneRenderer::selectedMachine() const {
+    return d->selected;
+}
+
+void SiteSceneRenderer::setCameraMode(CameraMode mode) {
+    if (mode == d->cameraMode)
+        return;
+    d->cameraMode = mode;
+    d->resetCamera();
+}
+
+CameraMode SiteSceneRenderer::cameraMode() const {
+    return d->cameraMode;
+}
+
+void SiteSceneRenderer::resetCamera() {
+    d->resetCamera();
+}
+
+double SiteSceneRenderer::terrainHeight(double e, double n) const {
+    return d->height(e, n);
+}
+
+QString SiteSceneRenderer::pick(double x, double y) const {
+    int w = 0, h = 0;
+    if (!d->windowSize(w, h))
+        return {};
+    vtkRenderer* r = d->renderer;
+    double ray[2][3];
+    for (int k = 0; k < 2; ++k) {
+        r->SetDisplayPoint(x, h - y, k == 0 ? 0.0 : 1.0);
+        r->DisplayToWorld();
+        double wp[4];
+        r->GetWorldPoint(wp);
+        if (wp[3] == 0.0)
+            return {};
+        for (int i = 0; i < 3; ++i)
+            ray[k][i] = wp[i] / wp[3];
+    }
+    const double dir[3] = {ray[1][0] - ray[0][0], ray[1][1] - ray[0][1], ray[1][2] - ray[0][2]};
+    QString best;
+    double bestT = std::numeric_limits<double>::max();
+    for (const Machine3D& m : d->scene.machines) {
+        // Ray into the box frame: x = right, y = forward, z = up from the ground point.
+        const double hr = m.headingDeg * kDegToRad;
+        const double fe = std::sin(hr), fn = std::cos(hr);  // forward
+        const double re = std::cos(hr), rn = -std::sin(hr); // right
+        const double oe = ray[0][0] - m.e, on = ray[0][1] - m.n, ou = ray[0][2] - m.u;
+        const double o[3] = {oe * re + on * rn, oe * fe + on * fn, ou};
+        const double v[3] = {dir[0] * re + dir[1] * rn, dir[0] * fe + dir[1] * fn, dir[2]};
+        const double lo[3] = {-m.width / 2, -m.length / 2, 0.0};
+        const double hi[3] = {m.width / 2, m.length / 2, m.height};
+        double t0 = 0.0, t1 = 1.0;
+        bool hit = true;
+        for (int i = 0; i < 3 && hit; ++i) {
+            if (std::abs(v[i]) < 1e-12) {
+                hit = o[i] >= lo[i] && o[i] <= hi[i];
+                continue;
+            }
+            double a = (lo[i] - o[i]) / v[i], b = (hi[i] - o[i]) / v[i];
+            if (a > b)
+                std::swap(a, b);
+            t0 = std::max(t0, a);
+            t1 = std::min(t1, b);
+            hit = t0 <= t1;
+        }
+        if (hit && t0 < bestT) {
+            bestT = t0;
+            best = m.id;
+        }
+    }
+    return best;
+}
+
+std::optional<QPointF> SiteSceneRenderer::project(double e, double n, double u) const {
+    int w = 0, h = 0;
+    if (!d->windowSize(w, h))
+        return std::nullopt;
+    vtkRenderer* r = d->renderer;
+    r->SetWorldPoint(e, n, u, 1.0);
+    r->WorldToDisplay();
+    double dp[3];
+    r->GetDisplayPoint(dp);
+    if (dp[2] < 0.0 || dp[2] > 1.0)
+        return std::nullopt;
+    return QPointF(dp[0], h - dp[1]);
+}
+
+const Scene3D& SiteSceneRenderer::scene() const {
+    return d->scene;
+}
+
+std::optional<Machine3D> SiteSceneRenderer::machine(const QString& id) const {
+    const Machine3D* m = d->find(id);
+    if (m == nullptr)
+        return std::nullopt;
+    return *m;
+}
+
+std::uint64_t SiteSceneRenderer::sceneBuildCount() const {
+    return d->buildCount;
+}
+std::uint64_t SiteSceneRenderer::machineLayoutCount() const {
+    return d->layoutCount;
+}
+
+} // namespace ocu

@@ -1,0 +1,63 @@
+#pragma once
+// Builds and updates the VTK scene of the 3D site view from a Scene3D. VTK stays in the .cpp (pimpl);
+// only a forward declaration of vtkRenderer is visible here. The renderer is attached to a window by
+// VtkOpenGLWidget (GUI) or EglOffscreenRenderer (headless); both call only renderer().
+#include "widgets/view3d/Scene3D.h"
+
+#include <QPointF>
+#include <QString>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+class vtkRenderer;
+
+namespace ocu {
+
+class SiteSceneRenderer {
+public:
+    SiteSceneRenderer();
+    ~SiteSceneRenderer();
+    SiteSceneRenderer(const SiteSceneRenderer&) = delete;
+    SiteSceneRenderer& operator=(const SiteSceneRenderer&) = delete;
+
+    vtkRenderer* renderer() const;
+
+    // Full rebuild: terrain, ways, pass-count surface, then the machines. Resets the camera the first time
+    // (and whenever the terrain extent changes).
+    void setScene(const Scene3D& scene);
+    // Fast path: moves/recolours the machine boxes in place. Terrain, ways and raster are not touched; the
+    // machine arrays are only resized when the set of ids changes. A machine with selected == true selects
+    // it.
+    void updateMachines(const std::vector<Machine3D>& machines);
+    // Replaces only the pass-count surface and its legend.
+    void setPassCount(const PassCountRaster& raster, const std::vector<LegendEntry>& legend);
+
+    void setSelectedMachine(const QString& id); // empty = none
+    QString selectedMachine() const;
+
+    void setCameraMode(CameraMode mode);
+    CameraMode cameraMode() const;
+    void resetCamera(); // re-frames the whole site for the current mode
+
+    // Terrain height at (e, n) (barycentric on the Delaunay surface, plane height otherwise).
+    double terrainHeight(double e, double n) const;
+
+    // Both use window pixel coordinates with the origin at the top-left (Qt convention), in device pixels
+    // of the render window the renderer is attached to. They need that window (size > 0).
+    QString pick(double x, double y) const; // machine id under the pixel, or empty
+    std::optional<QPointF> project(double e, double n, double u) const; // world -> pixel; nullopt when behind
+
+    const Scene3D& scene() const; // last scene, machines as last updated
+    std::optional<Machine3D> machine(const QString& id) const;
+    std::uint64_t sceneBuildCount() const;    // number of full rebuilds (setScene calls)
+    std::uint64_t machineLayoutCount() const; // number of times the machine arrays were re-laid out
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> d;
+};
+
+} // namespace ocu
