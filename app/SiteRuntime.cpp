@@ -1,36 +1,324 @@
 #include "SiteRuntime.h"
 
+#include "LogRouting.h"
 #include "MainWindow.h"
+#ifdef OCU_HAVE_OCU_VIEW3D
+#include "Site3DFeed.h"
+#include "widgets/view3d/Site3DView.h"
+#endif
+
+#include "models/AlarmModel.h"
+#include "models/FleetContext.h"
+#include "models/FleetModel.h"
+#include "models/FleetSelection.h"
+#include "models/HeadlessMonitor.h"
+#include "models/OwnPosition.h"
+#include "models/StopController.h"
+#include "sim/SimulatedSite.h"
+#include "widgets/EventLogWidget.h"
+#include "widgets/FleetListWidget.h"
+#include "widgets/PassCountPanel.h"
+#include "widgets/SiteMapView.h"
+#include "widgets/StopControls.h"
+
+#ifdef OCU_HAVE_JAUS_BRIDGE
+#include "models/bridges/JausBridge.h"
+#include "widgets/jaus/JausControlPanel.h"
+#include "widgets/jaus/TeleopPanel.h"
+#include "widgets/teleop/SdlJoystickInput.h"
+#endif
+#ifdef OCU_HAVE_ISO_BRIDGE
+#include "models/bridges/IsoBridge.h"
+#endif
+#ifdef OCU_HAVE_OSYRIS_BRIDGE
+#include "models/bridges/OsyrisBridge.h"
+#endif
 
 #include <QApplication>
+#include <QDateTime>
 #include <QLabel>
+#include <QStatusBar>
 #include <QTimer>
+#include <QVBoxLayout>
 
 namespace ocu {
 
-struct SiteRuntime::Impl {};
+struct SiteRuntime::Impl {
+    GeoFrame frame;
+    std::unique_ptr<sim::SimulatedSite> sim;
+    FleetContext* ctx = nullptr;
+    OwnPosition* own = nullptr;
+#ifdef OCU_HAVE_JAUS_BRIDGE
+    JausBridge* jaus = nullptr;
+#endif
+#ifdef OCU_HAVE_ISO_BRIDGE
+    IsoBridge* iso = nullptr;
+#endif
+#ifdef OCU_HAVE_OSYRIS_BRIDGE
+    OsyrisBridge* osyris = nullptr;
+#endif
+    QStringList startProblems;
+    bool stopped = false;
+
+    SiteMapData mergedMap() const {
+        SiteMapData out;
+#ifdef OCU_HAVE_ISO_BRIDGE
+        if (iso)
+            out = iso->siteMap();
+#endif
+        return out;
+    }
+    const PassCountLayer* passLayer() const {
+#ifdef OCU_HAVE_OSYRIS_BRIDGE
+        if (osyris)
+            return osyris->passCountLayer();
+#endif
+        return nullptr;
+    }
+};
 
 SiteRuntime::SiteRuntime(SiteConfig config, QObject* parent)
     : QObject(parent), m_config(std::move(config)), m_impl(std::make_unique<Impl>()) {}
 
 SiteRuntime::~SiteRuntime() { stop(); }
 
-QString SiteRuntime::start() { return {}; }
+QString SiteRuntime::start() {
+    Impl& d = *m_impl;
+    d.frame = GeoFrame(m_config.origin);
+    if (m_config.simulation.enabled) {
+        d.sim = std::make_unique<sim::SimulatedSite>();
+        const std::string err = d.sim->start(m_config);
+        if (!err.empty())
+            d.startProblems << tr("Simulated site: %1").arg(QString::fromStdString(err));
+    }
+    d.ctx = new FleetContext(this);
+    d.ctx->fleet()->setStaleAfterMs(static_cast<qint64>(m_config.fleet.staleAfterSeconds * 1000));
+    d.ctx->fleet()->setRemoveAfterMs(static_cast<qint64>(m_config.fleet.removeAfterSeconds * 1000));
+    if (!m_config.fleet.auditLog.empty())
+        d.ctx->stop()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
 
-void SiteRuntime::stop() {}
+    // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down
+    // and the reason is an alarm.
+#ifdef OCU_HAVE_JAUS_BRIDGE
+    if (m_config.jaus) {
+        d.jaus = new JausBridge(*m_config.jaus, d.frame, this);
+        d.ctx->addBridge(d.jaus);
+        const QString e = d.jaus->start();
+        if (!e.isEmpty())
+            d.startProblems << e;
+    }
+#endif
+#ifdef OCU_HAVE_ISO_BRIDGE
+    if (m_config.iso23725) {
+        d.iso = new IsoBridge(*m_config.iso23725, d.frame, this);
+        d.ctx->addBridge(d.iso);
+        const QString e = d.iso->start();
+        if (!e.isEmpty())
+            d.startProblems << e;
+    }
+#endif
+#ifdef OCU_HAVE_OSYRIS_BRIDGE
+    if (m_config.osyris) {
+        d.osyris = new OsyrisBridge(*m_config.osyris, d.frame, this);
+        d.ctx->addBridge(d.osyris);
+        const QString e = d.osyris->start();
+        if (!e.isEmpty())
+            d.startProblems << e;
+    }
+#endif
+    d.own = new OwnPosition(d.frame, this);
+    const auto& op = m_config.ownPosition;
+    if (op.source == "system")
+        d.own->startSystemSource();
+    else if (op.source == "nmea-file")
+        d.own->startNmeaFile(QString::fromStdString(op.path), true);
+    else if (op.source == "nmea-serial")
+        d.own->startNmeaFile(QString::fromStdString(op.path), false);
+    connect(d.own, &OwnPosition::error, this, [this](const QString& msg) {
+        m_impl->ctx->alarms()->add(makeEvent(EventSeverity::Warning, EventKind::Info, {},
+                                             tr("Own position: %1").arg(msg), QStringLiteral("gui")));
+    });
+#ifdef OCU_HAVE_ISO_BRIDGE
+    if (d.iso && !op.fmsMachineId.empty()) {
+        const std::string machine = op.fmsMachineId;
+        connect(d.own, &OwnPosition::fixChanged, this, [this, machine](const OwnFix& f) {
+            if (f.valid)
+                m_impl->iso->stack()->setOwnPosition(machine, f.lat, f.lon, f.alt, f.headingDeg, f.speed * 3.6);
+        });
+    }
+#endif
+    for (const QString& p : std::as_const(d.startProblems)) {
+        qCWarning(lcApp).noquote() << p;
+        d.ctx->alarms()->add(makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, p, QStringLiteral("gui")));
+    }
+    return {};
+}
+
+void SiteRuntime::stop() {
+    Impl& d = *m_impl;
+    if (d.stopped)
+        return;
+    d.stopped = true;
+    // Stacks first (JAUS releases control after zero drive commands), then the simulators.
+#ifdef OCU_HAVE_JAUS_BRIDGE
+    if (d.jaus)
+        d.jaus->stop();
+#endif
+#ifdef OCU_HAVE_ISO_BRIDGE
+    if (d.iso)
+        d.iso->stop();
+#endif
+#ifdef OCU_HAVE_OSYRIS_BRIDGE
+    if (d.osyris)
+        d.osyris->stop();
+#endif
+    if (d.sim)
+        d.sim->stop();
+}
+
+static QWidget* notice(const QString& text) {
+    auto* l = new QLabel(text);
+    l->setAlignment(Qt::AlignCenter);
+    l->setWordWrap(true);
+    l->setMargin(20);
+    return l;
+}
+
+static LinkIndicator::State indicatorState(LinkState s) {
+    switch (s) {
+    case LinkState::Up:
+        return LinkIndicator::State::Up;
+    case LinkState::Degraded:
+    case LinkState::Unknown:
+        return LinkIndicator::State::Degraded;
+    case LinkState::Down:
+        return LinkIndicator::State::Down;
+    }
+    return LinkIndicator::State::Down;
+}
 
 void SiteRuntime::populate(MainWindow& window) {
-    for (Panel p : MainWindow::panels()) {
-        auto* l = new QLabel(tr("%1: no stack connected").arg(window.panelTitle(p)));
-        l->setAlignment(Qt::AlignCenter);
-        window.setPanelWidget(p, l);
+    Impl& d = *m_impl;
+    FleetContext* ctx = d.ctx;
+
+    auto* list = new FleetListWidget(ctx->fleet(), ctx->selection());
+    list->setStopController(ctx->stop());
+    window.setPanelWidget(Panel::Fleet, list);
+
+    auto* map = new SiteMapView;
+    map->setFleet(ctx->fleet(), ctx->selection());
+    map->setGeoFrame(d.frame);
+    map->setSiteMap(d.mergedMap());
+    map->setPassCountLayer(d.passLayer());
+    window.setPanelWidget(Panel::SiteMap, map);
+    connect(list, &FleetListWidget::centerOnMapRequested, map, &SiteMapView::centerOnMachine);
+    connect(map, &SiteMapView::contextMenuRequested, list, &FleetListWidget::showContextMenu);
+    connect(d.own, &OwnPosition::fixChanged, map, &SiteMapView::setOwnFix);
+    // Frame the whole site once the first machines have arrived.
+    QTimer::singleShot(1500, map, [map] { map->fitToContent(); });
+
+#ifdef OCU_HAVE_OCU_VIEW3D
+    auto* view3d = new Site3DView;
+    auto* feed = new Site3DFeed(view3d, ctx->fleet(), ctx->selection(), view3d);
+    feed->setPassCountLayer(d.passLayer());
+    window.setPanelWidget(Panel::Site3D, view3d);
+#else
+    QObject* feed = nullptr;
+    window.setPanelWidget(Panel::Site3D, notice(tr("This build has no 3D view (configured with OCU_WITH_VTK=OFF).")));
+#endif
+
+    auto* passPanel = new PassCountPanel;
+    passPanel->setLayer(d.passLayer());
+    window.setPanelWidget(Panel::PassCounts, passPanel);
+    connect(passPanel, &PassCountPanel::paletteChanged, map, &SiteMapView::setPassPalette);
+    connect(passPanel, &PassCountPanel::targetChanged, map, &SiteMapView::setPassTarget);
+#ifdef OCU_HAVE_OCU_VIEW3D
+    connect(passPanel, &PassCountPanel::targetChanged, feed, [feed](PassTarget t) {
+        feed->setPassTarget(t);
+        feed->passCountChanged();
+    });
+#endif
+
+    for (FleetBridge* b : ctx->bridges()) {
+        connect(b, &FleetBridge::siteMapChanged, map, [this, map, feed] {
+            const SiteMapData m = m_impl->mergedMap();
+            map->setSiteMap(m);
+#ifdef OCU_HAVE_OCU_VIEW3D
+            static_cast<Site3DFeed*>(feed)->setSiteMap(m);
+#endif
+            map->fitToContent();
+        });
+        connect(b, &FleetBridge::passCountChanged, map, [map, passPanel, feed] {
+            map->passCountChanged();
+            passPanel->layerChanged();
+#ifdef OCU_HAVE_OCU_VIEW3D
+            static_cast<Site3DFeed*>(feed)->passCountChanged();
+#endif
+        });
+        connect(b, &FleetBridge::linkChanged, &window, [&window](const LinkStatus& s) {
+            const QString proto = s.link.section(QLatin1Char(':'), 0, 0);
+            const QString name = proto == QLatin1String("jaus")       ? QStringLiteral("JAUS")
+                                 : proto == QLatin1String("iso23725") ? QStringLiteral("ISO 23725")
+                                                                      : QStringLiteral("OSYRIS");
+            if (LinkIndicator* ind = window.linkIndicator(name)) {
+                ind->setState(indicatorState(s.state), s.link + (s.detail.isEmpty() ? QString() : ": " + s.detail));
+                if (s.dataAgeMs >= 0)
+                    ind->setDataAgeMs(s.dataAgeMs);
+            }
+        });
     }
+    // Data age per protocol from the newest machine data, refreshed every second.
+    auto* ages = new QTimer(&window);
+    connect(ages, &QTimer::timeout, &window, [ctx, &window] {
+        QHash<Protocol, qint64> newest;
+        for (const MachineState& m : ctx->fleet()->machinesSnapshot())
+            newest[m.protocol] = std::max(newest.value(m.protocol, 0), m.lastDataMs);
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        const QHash<Protocol, QString> names{{Protocol::Jaus, QStringLiteral("JAUS")},
+                                             {Protocol::Iso23725, QStringLiteral("ISO 23725")},
+                                             {Protocol::Osyris, QStringLiteral("OSYRIS")}};
+        for (auto it = newest.begin(); it != newest.end(); ++it)
+            if (LinkIndicator* ind = window.linkIndicator(names.value(it.key())); ind && it.value() > 0)
+                ind->setDataAgeMs(std::max<qint64>(0, now - it.value()));
+    });
+    ages->start(1000);
+
+    window.setPanelWidget(Panel::EventLog, new EventLogWidget(ctx->alarms()));
+    connect(ctx->alarms(), &AlarmModel::unacknowledgedCountChanged, &window, &MainWindow::setUnacknowledgedAlarms);
+    window.setUnacknowledgedAlarms(ctx->alarms()->unacknowledgedCount());
+    connect(&window, &MainWindow::stopAllRequested, ctx->stop(), [ctx] { ctx->stop()->stopAll(QStringLiteral("gui")); });
+
+#ifdef OCU_HAVE_JAUS_BRIDGE
+    if (d.jaus) {
+        window.setPanelWidget(Panel::JausControl, new JausControlPanel(d.jaus, ctx->selection()));
+        auto* joystick = new SdlJoystickInput(&window);
+        window.setPanelWidget(Panel::Teleop, new TeleopPanel(d.jaus, ctx->selection(), joystick));
+    } else
+#endif
+    {
+        const QString why = tr("No JAUS section in the site configuration: no JAUS vehicles on this site.");
+        window.setPanelWidget(Panel::JausControl, notice(why));
+        window.setPanelWidget(Panel::Teleop, notice(why));
+    }
+    for (const QString& p : std::as_const(d.startProblems))
+        window.statusBar()->showMessage(p, 15000);
 }
 
 int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
+    Impl& d = *m_impl;
+    HeadlessMonitor* mon = d.ctx->createHeadlessMonitor();
+    mon->setRateLimitMs(static_cast<int>(1000.0 / m_config.fleet.monitorRateHz));
+    if (!mon->startStdin() && durationSeconds <= 0) {
+        std::fputs("ocu: --headless reads commands from stdin, which is not readable; give --duration\n", stderr);
+        return 2;
+    }
     if (durationSeconds > 0)
         QTimer::singleShot(static_cast<int>(durationSeconds * 1000), &app, &QApplication::quit);
-    return app.exec();
+    else
+        connect(mon, &HeadlessMonitor::inputFinished, &app, &QApplication::quit);
+    const int rc = app.exec();
+    stop();
+    return rc;
 }
 
 } // namespace ocu

@@ -4,9 +4,9 @@
 #include "models/FleetModel.h"
 
 #include <QColor>
-#include <QFont>
 #include <QDateTime>
 #include <QFile>
+#include <QFont>
 #include <QIODevice>
 
 namespace ocu {
@@ -23,10 +23,11 @@ void AlarmModel::onLink(const LinkStatus& status) {
     const bool wasDown = m_linkDown.contains(status.link);
     if (down && !wasDown) {
         m_linkDown.insert(status.link, 1);
-        FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {},
-                                  tr("link %1 lost%2").arg(status.link,
-                                                          status.detail.isEmpty() ? QString() : QStringLiteral(": ") + status.detail),
-                                  status.link);
+        FleetEvent ev = makeEvent(
+            EventSeverity::Alarm, EventKind::LinkLoss, {},
+            tr("link %1 lost%2")
+                .arg(status.link, status.detail.isEmpty() ? QString() : QStringLiteral(": ") + status.detail),
+            status.link);
         add(ev);
     } else if (!down && wasDown && status.state == LinkState::Up) {
         m_linkDown.remove(status.link);
@@ -52,15 +53,19 @@ void AlarmModel::watchFleet(FleetModel* fleet) {
                 if (m->health == HealthLevel::Fault)
                     add(makeEvent(EventSeverity::Alarm, EventKind::HealthFault, id,
                                   m->healthText.isEmpty() ? tr("health fault") : m->healthText,
-                                  toString(m->protocol)));
+                                  toText(m->protocol)));
             }
         }
     });
     connect(fleet, &FleetModel::machineRemoved, this, [this](const QString& id) { m_health.remove(id); });
 }
 
-int AlarmModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : int(m_rows.size()); }
-int AlarmModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int AlarmModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+int AlarmModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 QVariant AlarmModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
@@ -105,11 +110,12 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
     case Qt::DisplayRole:
         switch (index.column()) {
         case ColTime:
-            return QDateTime::fromMSecsSinceEpoch(e.timeMs, Qt::UTC).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+            return QDateTime::fromMSecsSinceEpoch(e.timeMs, Qt::UTC)
+                .toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
         case ColSeverity:
-            return toString(e.severity).toUpper();
+            return toText(e.severity).toUpper();
         case ColKind:
-            return toString(e.kind);
+            return toText(e.kind);
         case ColMachine:
             return e.machineId;
         case ColText:
@@ -221,8 +227,8 @@ bool AlarmModel::exportCsv(QIODevice* out, const QVector<int>& rows) const {
         const Row& r = m_rows[i];
         const FleetEvent& e = r.event;
         buf += csvField(QDateTime::fromMSecsSinceEpoch(e.timeMs, Qt::UTC).toString(Qt::ISODateWithMs)) + ',' +
-               csvField(toString(e.severity)) + ',' + csvField(toString(e.kind)) + ',' + csvField(e.machineId) + ',' +
-               csvField(e.source) + ',' + csvField(e.text) + ',' +
+               csvField(toText(e.severity)) + ',' + csvField(toText(e.kind)) + ',' + csvField(e.machineId) +
+               ',' + csvField(e.source) + ',' + csvField(e.text) + ',' +
                (e.requiresAck ? (r.acked ? "yes" : "no") : "n/a") + "\r\n";
     };
     if (rows.isEmpty()) {
@@ -273,8 +279,9 @@ bool AlarmFilterProxy::filterAcceptsRow(int sourceRow, const QModelIndex& source
         return false;
     if (m_text.isEmpty())
         return true;
-    return e.text.contains(m_text, Qt::CaseInsensitive) || e.machineId.contains(m_text, Qt::CaseInsensitive) ||
-           toString(e.kind).contains(m_text, Qt::CaseInsensitive) ||
+    return e.text.contains(m_text, Qt::CaseInsensitive) ||
+           e.machineId.contains(m_text, Qt::CaseInsensitive) ||
+           toText(e.kind).contains(m_text, Qt::CaseInsensitive) ||
            e.source.contains(m_text, Qt::CaseInsensitive);
 }
 

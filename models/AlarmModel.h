@@ -21,13 +21,21 @@ class AlarmModel : public QAbstractTableModel {
     Q_OBJECT
 public:
     enum Column { ColTime, ColSeverity, ColKind, ColMachine, ColText, ColAck, ColumnCount };
-    enum Role { SeverityRole = Qt::UserRole + 1, KindRole, AckedRole, RequiresAckRole, TimeRole, MachineRole };
+    enum Role {
+        SeverityRole = Qt::UserRole + 1,
+        KindRole,
+        AckedRole,
+        RequiresAckRole,
+        TimeRole,
+        MachineRole
+    };
 
     explicit AlarmModel(QObject* parent = nullptr);
 
     // Bridge events become entries; a link going Down raises a LinkLoss alarm, coming back an info entry.
     void addBridge(FleetBridge* bridge);
-    // Machines going stale raise Timeout alarms; a machine turning to health Fault raises a HealthFault alarm.
+    // Machines going stale raise Timeout alarms; a machine turning to health Fault raises a HealthFault
+    // alarm.
     void watchFleet(FleetModel* fleet);
 
     int rowCount(const QModelIndex& parent = {}) const override;

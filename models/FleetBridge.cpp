@@ -15,25 +15,35 @@ FleetBridge::FleetBridge(Protocol protocol, QObject* parent)
 
 FleetBridge::~FleetBridge() = default;
 
-bool FleetBridge::ownsMachine(const QString& id) const { return id.startsWith(protocolPrefix(m_protocol)); }
+bool FleetBridge::ownsMachine(const QString& id) const {
+    return id.startsWith(protocolPrefix(m_protocol));
+}
 
-void FleetBridge::publishMachine(const MachineState& state) { m_machines.push(state.id, state); }
+void FleetBridge::publishMachine(const MachineState& state) {
+    m_machines.push(state.id, state);
+}
 
-void FleetBridge::publishRemoval(const QString& id) { m_machines.push(id, std::nullopt); }
+void FleetBridge::publishRemoval(const QString& id) {
+    m_machines.push(id, std::nullopt);
+}
 
-void FleetBridge::publishLink(const LinkStatus& status) { m_links.push(status.link, status); }
+void FleetBridge::publishLink(const LinkStatus& status) {
+    m_links.push(status.link, status);
+}
 
 void FleetBridge::publishEvent(const FleetEvent& event) {
     FleetEvent ev = event;
     if (ev.timeMs == 0)
         ev.timeMs = QDateTime::currentMSecsSinceEpoch();
     if (ev.source.isEmpty())
-        ev.source = toString(m_protocol);
-    QMetaObject::invokeMethod(this, [this, ev] { emit eventRaised(ev); }, Qt::QueuedConnection);
+        ev.source = toText(m_protocol);
+    QMetaObject::invokeMethod(
+        this, [this, ev] { emit eventRaised(ev); }, Qt::QueuedConnection);
 }
 
 CommandResult FleetBridge::command(const QString& name, const QJsonObject&) {
-    return CommandResult::failure(QStringLiteral("command '%1' not supported by %2").arg(name, toString(m_protocol)));
+    return CommandResult::failure(
+        QStringLiteral("command '%1' not supported by %2").arg(name, toText(m_protocol)));
 }
 
 QVector<LinkStatus> FleetBridge::links() const {

@@ -77,6 +77,11 @@ public:
     // GUI thread: the latest link states, and a way to deliver pending coalesced data synchronously.
     QVector<LinkStatus> links() const;
     void flushPending();
+    // Backlog and counters of the machine coalescer (benchmarks, diagnostics; any thread).
+    size_t pendingMachineUpdates() const { return m_machines.pending(); }
+    TelemetryCoalescer<QString, std::optional<MachineState>>::Stats machineStats() const {
+        return m_machines.stats();
+    }
 
 signals:
     void machinesUpdated(const QVector<ocu::MachineState>& machines);

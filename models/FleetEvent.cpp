@@ -4,7 +4,7 @@
 
 namespace ocu {
 
-QString toString(EventSeverity s) {
+QString toText(EventSeverity s) {
     switch (s) {
     case EventSeverity::Info:
         return QStringLiteral("info");
@@ -18,7 +18,7 @@ QString toString(EventSeverity s) {
     return QStringLiteral("info");
 }
 
-QString toString(EventKind k) {
+QString toText(EventKind k) {
     switch (k) {
     case EventKind::LinkLoss:
         return QStringLiteral("link_loss");

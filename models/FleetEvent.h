@@ -29,8 +29,8 @@ struct FleetEvent {
     bool requiresAck = false;
 };
 
-QString toString(EventSeverity s); // "info", "warning", "alarm", "critical"
-QString toString(EventKind k);     // "link_loss", "timeout", ...
+QString toText(EventSeverity s); // "info", "warning", "alarm", "critical"
+QString toText(EventKind k);     // "link_loss", "timeout", ...
 // A FleetEvent with requiresAck defaulting to severity >= Warning and time stamped now.
 FleetEvent makeEvent(EventSeverity severity, EventKind kind, const QString& machineId, const QString& text,
                      const QString& source = {});

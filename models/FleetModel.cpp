@@ -25,11 +25,24 @@ void FleetModel::setRefreshIntervalMs(int ms) {
         m_timer.start(ms);
 }
 
-void FleetModel::setClock(std::function<qint64()> nowMs) { m_now = std::move(nowMs); }
+void FleetModel::setStaleAfterMs(Protocol protocol, qint64 ms) {
+    if (ms < 0)
+        m_staleByProtocol.remove(int(protocol));
+    else
+        m_staleByProtocol.insert(int(protocol), ms);
+}
 
-int FleetModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : int(m_rows.size()); }
+void FleetModel::setClock(std::function<qint64()> nowMs) {
+    m_now = std::move(nowMs);
+}
 
-int FleetModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int FleetModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int FleetModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 QString FleetModel::columnName(int column) {
     switch (column) {
@@ -114,7 +127,7 @@ QVariant FleetModel::display(const Row& r, int column) const {
     case ColProtocol:
         return protocolLabel(m.protocol);
     case ColLink:
-        return QStringLiteral("%1 · %2").arg(toString(m.link), ageText(row >= 0 ? ageMsAt(row) : -1));
+        return QStringLiteral("%1 · %2").arg(toText(m.link), ageText(row >= 0 ? ageMsAt(row) : -1));
     case ColEast:
         return m.hasPosition ? QString::number(m.e, 'f', 1) : QString();
     case ColNorth:
@@ -129,7 +142,7 @@ QVariant FleetModel::display(const Row& r, int column) const {
         // Displayed in km/h (anchors-features.md §8.2), stored in m/s.
         return QString::number(m.speed * 3.6, 'f', 1) + QStringLiteral(" km/h");
     case ColMode:
-        return m.modeText.isEmpty() ? toString(m.mode) : m.modeText;
+        return m.modeText.isEmpty() ? toText(m.mode) : m.modeText;
     case ColStop:
         if (m.stop == StopState::Stopped)
             return m.stopText.isEmpty() ? tr("STOPPED") : m.stopText.toUpper();
@@ -137,14 +150,15 @@ QVariant FleetModel::display(const Row& r, int column) const {
     case ColController:
         if (m.control == ControlState::ControlledByMe)
             return tr("this OCU");
-        return m.controller.isEmpty() ? (m.control == ControlState::None ? QString() : toString(m.control))
+        return m.controller.isEmpty() ? (m.control == ControlState::None ? QString() : toText(m.control))
                                       : m.controller;
     case ColHealth:
-        return m.healthText.isEmpty() ? toString(m.health) : QStringLiteral("%1: %2").arg(toString(m.health), m.healthText);
+        return m.healthText.isEmpty() ? toText(m.health)
+                                      : QStringLiteral("%1: %2").arg(toText(m.health), m.healthText);
     case ColLastMessage:
-        return m.lastMessageMs > 0
-                   ? QDateTime::fromMSecsSinceEpoch(m.lastMessageMs, Qt::UTC).toString(QStringLiteral("HH:mm:ss.zzz"))
-                   : QString();
+        return m.lastMessageMs > 0 ? QDateTime::fromMSecsSinceEpoch(m.lastMessageMs, Qt::UTC)
+                                         .toString(QStringLiteral("HH:mm:ss.zzz"))
+                                   : QString();
     default:
         return {};
     }
@@ -196,7 +210,7 @@ QVariant FleetModel::data(const QModelIndex& index, int role) const {
     case Qt::DisplayRole:
         return display(r, index.column());
     case Qt::ToolTipRole:
-        return QStringLiteral("%1 — %2").arg(r.state.id, toString(statusOf(r.state, r.stale)));
+        return QStringLiteral("%1 — %2").arg(r.state.id, toText(statusOf(r.state, r.stale)));
     case Qt::DecorationRole:
         if (index.column() == ColName)
             return statusColor(statusOf(r.state, r.stale));
@@ -273,7 +287,8 @@ void FleetModel::upsert(const QVector<MachineState>& machines) {
         r.state = in;
         if (r.state.lastDataMs == 0)
             r.state.lastDataMs = now;
-        const bool stale = m_staleAfterMs > 0 && now - r.state.lastDataMs > m_staleAfterMs;
+        const qint64 staleMs = staleAfterMs(r.state.protocol);
+        const bool stale = staleMs > 0 && now - r.state.lastDataMs > staleMs;
         if (stale != r.stale) {
             r.stale = stale;
             emit machineStaleChanged(in.id, stale);
@@ -302,7 +317,8 @@ void FleetModel::upsert(const QVector<MachineState>& machines) {
         beginInsertRows({}, first, first + int(unique.size()) - 1);
         for (const MachineState& m : unique) {
             m_index.insert(m.id, int(m_rows.size()));
-            m_rows.push_back(Row{m, m_staleAfterMs > 0 && now - m.lastDataMs > m_staleAfterMs});
+            const qint64 staleMs = staleAfterMs(m.protocol);
+            m_rows.push_back(Row{m, staleMs > 0 && now - m.lastDataMs > staleMs});
         }
         endInsertRows();
         for (const MachineState& m : unique) {
@@ -355,7 +371,8 @@ void FleetModel::refresh() {
             expired.push_back(r.state.id);
             continue;
         }
-        const bool stale = m_staleAfterMs > 0 && age > m_staleAfterMs;
+        const qint64 staleMs = staleAfterMs(r.state.protocol);
+        const bool stale = staleMs > 0 && age > staleMs;
         if (stale != r.stale) {
             r.stale = stale;
             emit dataChanged(index(i, 0), index(i, ColumnCount - 1));

@@ -75,6 +75,12 @@ public:
     // (0 = never); default 60 s.
     void setStaleAfterMs(qint64 ms) { m_staleAfterMs = ms; }
     qint64 staleAfterMs() const { return m_staleAfterMs; }
+    // Protocol-specific staleness (anchors-features.md §8.1: each protocol has its own rate); overrides the
+    // default for that protocol. A negative value removes the override.
+    void setStaleAfterMs(Protocol protocol, qint64 ms);
+    qint64 staleAfterMs(Protocol protocol) const {
+        return m_staleByProtocol.value(int(protocol), m_staleAfterMs);
+    }
     void setRemoveAfterMs(qint64 ms) { m_removeAfterMs = ms; }
     qint64 removeAfterMs() const { return m_removeAfterMs; }
     void setRefreshIntervalMs(int ms); // 0 stops the timer (tests call refresh() themselves)
@@ -109,6 +115,7 @@ private:
     mutable QVector<MachineState> m_snapshot;
     mutable bool m_snapshotValid = false;
     qint64 m_staleAfterMs = 5000;
+    QHash<int, qint64> m_staleByProtocol;
     qint64 m_removeAfterMs = 60000;
     std::function<qint64()> m_now;
     QTimer m_timer;

@@ -28,6 +28,11 @@ public:
     void toggle(const QString& id);     // ctrl-click
     void clear();
 
+    // Helpers for views over proxies: the id of any index (source or proxy; IdRole passes through
+    // proxies), and a machine's index in `model` (the FleetModel or any chain of proxies on it).
+    static QString idAt(const QModelIndex& index);
+    QModelIndex indexFor(const QString& id, const QAbstractItemModel* model) const;
+
 signals:
     void currentMachineChanged(const QString& id); // empty when none
     void selectionChanged(const QStringList& ids);

@@ -38,7 +38,9 @@ HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, StopCont
 
 HeadlessMonitor::~HeadlessMonitor() = default;
 
-void HeadlessMonitor::setOutput(QIODevice* out) { m_out = out; }
+void HeadlessMonitor::setOutput(QIODevice* out) {
+    m_out = out;
+}
 
 void HeadlessMonitor::setRateLimitMs(int ms) {
     m_rateMs = std::max(0, ms);
@@ -71,7 +73,7 @@ QJsonObject HeadlessMonitor::machineJson(const MachineState& m, bool stale, qint
     QJsonObject o;
     o[QStringLiteral("type")] = QStringLiteral("machine");
     o[QStringLiteral("id")] = m.id;
-    o[QStringLiteral("protocol")] = toString(m.protocol);
+    o[QStringLiteral("protocol")] = toText(m.protocol);
     o[QStringLiteral("name")] = m.name;
     o[QStringLiteral("machine_type")] = m.type;
     if (m.hasPosition) {
@@ -89,17 +91,18 @@ QJsonObject HeadlessMonitor::machineJson(const MachineState& m, bool stale, qint
         o[QStringLiteral("heading")] = QJsonValue::Null;
     }
     o[QStringLiteral("speed")] = m.speed;
-    o[QStringLiteral("state")] = m.modeText.isEmpty() ? toString(m.mode) : m.modeText;
-    o[QStringLiteral("mode")] = toString(m.mode);
-    o[QStringLiteral("stop")] = toString(m.stop);
+    o[QStringLiteral("state")] = m.modeText.isEmpty() ? toText(m.mode) : m.modeText;
+    o[QStringLiteral("mode")] = toText(m.mode);
+    o[QStringLiteral("stop")] = toText(m.stop);
     if (!m.stopText.isEmpty())
         o[QStringLiteral("stop_text")] = m.stopText;
-    o[QStringLiteral("controller")] = m.controller.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(m.controller);
-    o[QStringLiteral("control")] = toString(m.control);
-    o[QStringLiteral("health")] = toString(m.health);
-    o[QStringLiteral("link")] = toString(m.link);
+    o[QStringLiteral("controller")] =
+        m.controller.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(m.controller);
+    o[QStringLiteral("control")] = toText(m.control);
+    o[QStringLiteral("health")] = toText(m.health);
+    o[QStringLiteral("link")] = toText(m.link);
     o[QStringLiteral("stale")] = stale;
-    o[QStringLiteral("status")] = toString(statusOf(m, stale));
+    o[QStringLiteral("status")] = toText(statusOf(m, stale));
     o[QStringLiteral("age_ms")] = double(ageMs);
     return o;
 }
@@ -168,16 +171,16 @@ void HeadlessMonitor::printAll() {
 }
 
 void HeadlessMonitor::onLink(const LinkStatus& s) {
-    const QString sig = toString(s.state) + QLatin1Char('|') + s.detail;
+    const QString sig = toText(s.state) + QLatin1Char('|') + s.detail;
     if (m_linkSig.value(s.link) == sig)
         return;
     m_linkSig.insert(s.link, sig);
     auto* bridge = qobject_cast<FleetBridge*>(sender());
     QJsonObject o;
     o[QStringLiteral("type")] = QStringLiteral("link");
-    o[QStringLiteral("protocol")] = bridge ? toString(bridge->protocol()) : QString();
+    o[QStringLiteral("protocol")] = bridge ? toText(bridge->protocol()) : QString();
     o[QStringLiteral("link")] = s.link;
-    o[QStringLiteral("state")] = toString(s.state);
+    o[QStringLiteral("state")] = toText(s.state);
     o[QStringLiteral("age_ms")] = double(s.dataAgeMs);
     o[QStringLiteral("detail")] = s.detail;
     writeLine(o);
@@ -187,8 +190,8 @@ void HeadlessMonitor::onEvent(const FleetEvent& e) {
     QJsonObject o;
     o[QStringLiteral("type")] = QStringLiteral("event");
     o[QStringLiteral("time")] = QDateTime::fromMSecsSinceEpoch(e.timeMs, Qt::UTC).toString(Qt::ISODateWithMs);
-    o[QStringLiteral("severity")] = toString(e.severity);
-    o[QStringLiteral("kind")] = toString(e.kind);
+    o[QStringLiteral("severity")] = toText(e.severity);
+    o[QStringLiteral("kind")] = toText(e.kind);
     o[QStringLiteral("machine")] = e.machineId;
     o[QStringLiteral("source")] = e.source;
     o[QStringLiteral("text")] = e.text;
@@ -223,8 +226,9 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
     const QJsonDocument doc = QJsonDocument::fromJson(line, &err);
     if (err.error != QJsonParseError::NoError || !doc.isObject())
         return result({}, false,
-                      err.error != QJsonParseError::NoError ? QStringLiteral("invalid JSON: %1").arg(err.errorString())
-                                                            : QStringLiteral("a command must be a JSON object"));
+                      err.error != QJsonParseError::NoError
+                          ? QStringLiteral("invalid JSON: %1").arg(err.errorString())
+                          : QStringLiteral("a command must be a JSON object"));
     const QJsonObject cmd = doc.object();
     QString name = cmd.value(QStringLiteral("cmd")).toString();
     if (name.isEmpty())
@@ -258,14 +262,17 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
         const CommandResult r = m_stop->clearStop(id, m_stop->requestClearToken(id), origin);
         return result(cmd, r.ok, r.message);
     }
+    const bool forProtocol = id.isEmpty() && cmd.contains(QStringLiteral("protocol"));
     if (name == QLatin1String("request_control") || name == QLatin1String("release_control") ||
-        name == QLatin1String("drive") || (!name.isEmpty() && m_stop->bridgeFor(id))) {
-        if (id.isEmpty())
+        name == QLatin1String("drive") || (!name.isEmpty() && (m_stop->bridgeFor(id) || forProtocol))) {
+        if (id.isEmpty() && !forProtocol)
             return result(cmd, false, QStringLiteral("missing \"id\""));
         const CommandResult r = m_stop->command(name, cmd, origin);
         return result(cmd, r.ok, r.message);
     }
-    return result(cmd, false, name.isEmpty() ? QStringLiteral("missing \"cmd\"") : QStringLiteral("unknown command %1").arg(name));
+    return result(cmd, false,
+                  name.isEmpty() ? QStringLiteral("missing \"cmd\"")
+                                 : QStringLiteral("unknown command %1").arg(name));
 }
 
 void HeadlessMonitor::consumeInput(const QByteArray& chunk) {

@@ -89,7 +89,7 @@ private:
     QTimer m_flushTimer;
     QElapsedTimer m_clock;
     struct Printed {
-        qint64 atMs = -1; // m_clock time of the last line
+        qint64 atMs = -1;  // m_clock time of the last line
         QString signature; // the fields whose change is printed at once
     };
     QHash<QString, Printed> m_printed;

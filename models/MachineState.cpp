@@ -2,7 +2,7 @@
 
 namespace ocu {
 
-QString toString(Protocol p) {
+QString toText(Protocol p) {
     switch (p) {
     case Protocol::Jaus:
         return QStringLiteral("jaus");
@@ -27,14 +27,16 @@ Protocol protocolFromString(const QString& s) {
     return Protocol::Other;
 }
 
-QString protocolPrefix(Protocol p) { return toString(p) + QLatin1Char(':'); }
+QString protocolPrefix(Protocol p) {
+    return toText(p) + QLatin1Char(':');
+}
 
 Protocol protocolOfId(const QString& id) {
     const int colon = id.indexOf(QLatin1Char(':'));
     return colon > 0 ? protocolFromString(id.left(colon)) : Protocol::Other;
 }
 
-QString toString(LinkState s) {
+QString toText(LinkState s) {
     switch (s) {
     case LinkState::Up:
         return QStringLiteral("up");
@@ -48,7 +50,7 @@ QString toString(LinkState s) {
     return QStringLiteral("unknown");
 }
 
-QString toString(StopState s) {
+QString toText(StopState s) {
     switch (s) {
     case StopState::None:
         return QStringLiteral("none");
@@ -60,7 +62,7 @@ QString toString(StopState s) {
     return QStringLiteral("unknown");
 }
 
-QString toString(HealthLevel h) {
+QString toText(HealthLevel h) {
     switch (h) {
     case HealthLevel::Ok:
         return QStringLiteral("ok");
@@ -74,7 +76,7 @@ QString toString(HealthLevel h) {
     return QStringLiteral("unknown");
 }
 
-QString toString(ModeCategory m) {
+QString toText(ModeCategory m) {
     switch (m) {
     case ModeCategory::Manual:
         return QStringLiteral("manual");
@@ -98,7 +100,7 @@ QString toString(ModeCategory m) {
     return QStringLiteral("unknown");
 }
 
-QString toString(ControlState c) {
+QString toText(ControlState c) {
     switch (c) {
     case ControlState::Monitoring:
         return QStringLiteral("monitoring");
@@ -114,7 +116,7 @@ QString toString(ControlState c) {
     return QStringLiteral("none");
 }
 
-QString toString(StatusCategory c) {
+QString toText(StatusCategory c) {
     switch (c) {
     case StatusCategory::Ok:
         return QStringLiteral("ok");
@@ -136,7 +138,8 @@ StatusCategory statusOf(const MachineState& m, bool stale) {
     if (m.health == HealthLevel::Fault || m.stop == StopState::Stopped || m.mode == ModeCategory::Fault ||
         m.mode == ModeCategory::Stopped)
         return StatusCategory::FaultOrStopped;
-    if (m.health == HealthLevel::Warning || m.link == LinkState::Degraded || m.mode == ModeCategory::Transition)
+    if (m.health == HealthLevel::Warning || m.link == LinkState::Degraded ||
+        m.mode == ModeCategory::Transition)
         return StatusCategory::Warning;
     if (m.mode == ModeCategory::Autonomous || m.mode == ModeCategory::Remote)
         return StatusCategory::Autonomous;

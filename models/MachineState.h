@@ -32,10 +32,10 @@ struct MachineState {
     qint64 lastDataMs = 0; // when this console last received data about the machine
 
     bool hasPosition = false;
-    double e = 0, n = 0, u = 0; // local ENU in the site frame (m)
-    double lat = 0, lon = 0;    // WGS84 degrees
-    double headingDeg = 0;      // 0 = north, clockwise
-    double speed = 0;           // m/s
+    double e = 0, n = 0, u = 0;               // local ENU in the site frame (m)
+    double lat = 0, lon = 0;                  // WGS84 degrees
+    double headingDeg = 0;                    // 0 = north, clockwise
+    double speed = 0;                         // m/s
     double length = 0, width = 0, height = 0; // footprint (m); 0 = unknown
 
     QString modeText; // raw autonomy mode / management state
@@ -55,15 +55,15 @@ struct MachineState {
     bool operator==(const MachineState&) const = default;
 };
 
-QString toString(Protocol p);         // "jaus", "iso23725", "osyris", "other"
+QString toText(Protocol p); // "jaus", "iso23725", "osyris", "other"
 Protocol protocolFromString(const QString& s);
-QString toString(LinkState s);        // "up", "degraded", "down", "unknown"
-QString toString(StopState s);        // "none", "stopped", "unknown"
-QString toString(HealthLevel h);      // "ok", "warning", "fault", "unknown"
-QString toString(ModeCategory m);     // "manual", "autonomous", ...
-QString toString(ControlState c);     // "none", "monitoring", "me", "other", "denied"
-QString toString(StatusCategory c);   // "ok", "warning", "fault", "stale", "autonomous"
-QString protocolPrefix(Protocol p);   // "jaus:" ...
+QString toText(LinkState s);        // "up", "degraded", "down", "unknown"
+QString toText(StopState s);        // "none", "stopped", "unknown"
+QString toText(HealthLevel h);      // "ok", "warning", "fault", "unknown"
+QString toText(ModeCategory m);     // "manual", "autonomous", ...
+QString toText(ControlState c);     // "none", "monitoring", "me", "other", "denied"
+QString toText(StatusCategory c);   // "ok", "warning", "fault", "stale", "autonomous"
+QString protocolPrefix(Protocol p); // "jaus:" ...
 Protocol protocolOfId(const QString& id);
 
 // Status precedence: stale/no comms (grey) > fault or stopped (red) > warning/degraded (amber) >

@@ -11,7 +11,9 @@ OwnPosition::OwnPosition(const GeoFrame& frame, QObject* parent) : QObject(paren
     qRegisterMetaType<ocu::OwnFix>();
 }
 
-OwnPosition::~OwnPosition() { stop(); }
+OwnPosition::~OwnPosition() {
+    stop();
+}
 
 void OwnPosition::setFrame(const GeoFrame& frame) {
     m_frame = frame;
@@ -55,8 +57,8 @@ bool OwnPosition::startNmeaFile(const QString& path, bool simulation) {
         delete file;
         return false;
     }
-    auto* src = new QNmeaPositionInfoSource(
-        simulation ? QNmeaPositionInfoSource::SimulationMode : QNmeaPositionInfoSource::RealTimeMode);
+    auto* src = new QNmeaPositionInfoSource(simulation ? QNmeaPositionInfoSource::SimulationMode
+                                                       : QNmeaPositionInfoSource::RealTimeMode);
     file->setParent(src);
     src->setDevice(file);
     setSource(src);
@@ -82,7 +84,9 @@ void OwnPosition::stop() {
     m_source = nullptr;
 }
 
-QString OwnPosition::sourceName() const { return m_source ? m_source->sourceName() : QString(); }
+QString OwnPosition::sourceName() const {
+    return m_source ? m_source->sourceName() : QString();
+}
 
 void OwnPosition::setPositionInfo(const QGeoPositionInfo& info) {
     const QGeoCoordinate c = info.coordinate();

@@ -17,6 +17,29 @@ QRect PassCountLayer::countsIn(QRect cells, std::vector<std::uint16_t>& out) con
     return clipped;
 }
 
+QRect PassCountLayer::changedCellsSince(quint64) const {
+    return QRect(0, 0, columns(), rows());
+}
+
+void GridPassCountLayer::touched(QRect cells) {
+    ++m_revision;
+    if (m_changes.size() >= kMaxChanges)
+        m_changes.erase(m_changes.begin(), m_changes.begin() + kMaxChanges / 2);
+    m_changes.push_back({m_revision, cells});
+}
+
+QRect GridPassCountLayer::changedCellsSince(quint64 revision) const {
+    if (revision >= m_revision)
+        return {};
+    // History must reach back to the first change after `revision`, otherwise everything may have changed.
+    if (m_changes.empty() || m_changes.front().revision > revision + 1)
+        return QRect(0, 0, m_cols, m_rows);
+    QRect r;
+    for (auto it = m_changes.rbegin(); it != m_changes.rend() && it->revision > revision; ++it)
+        r = r.united(it->cells);
+    return r;
+}
+
 GridPassCountLayer::GridPassCountLayer(QPointF origin, double cellSize, int columns, int rows)
     : m_origin(origin), m_cell(cellSize > 0 ? cellSize : 1.0), m_cols(std::max(0, columns)),
       m_rows(std::max(0, rows)), m_cells(size_t(m_cols) * size_t(m_rows), 0) {}
@@ -31,7 +54,7 @@ void GridPassCountLayer::setCount(int col, int row, int count) {
     if (col < 0 || row < 0 || col >= m_cols || row >= m_rows)
         return;
     m_cells[size_t(row) * size_t(m_cols) + size_t(col)] = std::uint16_t(std::clamp(count, 0, 65535));
-    ++m_revision;
+    touched(QRect(col, row, 1, 1));
 }
 
 void GridPassCountLayer::addPass(double e, double n) {
@@ -42,7 +65,7 @@ void GridPassCountLayer::addPass(double e, double n) {
     auto& c = m_cells[size_t(row) * size_t(m_cols) + size_t(col)];
     if (c < 65535)
         ++c;
-    ++m_revision;
+    touched(QRect(col, row, 1, 1));
 }
 
 void GridPassCountLayer::fillRect(QRect cells, int count) {
@@ -50,12 +73,12 @@ void GridPassCountLayer::fillRect(QRect cells, int count) {
     const auto v = std::uint16_t(std::clamp(count, 0, 65535));
     for (int y = r.top(); y <= r.bottom(); ++y)
         std::fill_n(m_cells.begin() + ptrdiff_t(size_t(y) * size_t(m_cols) + size_t(r.left())), r.width(), v);
-    ++m_revision;
+    touched(r);
 }
 
 void GridPassCountLayer::clear() {
     std::fill(m_cells.begin(), m_cells.end(), std::uint16_t(0));
-    ++m_revision;
+    touched(QRect(0, 0, m_cols, m_rows));
 }
 
 QColor passCountDiscreteColor(int count) {
@@ -94,7 +117,8 @@ QColor passCountSummaryColor(int count, PassTarget target) {
 }
 
 QColor passCountColor(int count, PassPalette palette, PassTarget target) {
-    return palette == PassPalette::Discrete ? passCountDiscreteColor(count) : passCountSummaryColor(count, target);
+    return palette == PassPalette::Discrete ? passCountDiscreteColor(count)
+                                            : passCountSummaryColor(count, target);
 }
 
 PassCountSummary summarize(const PassCountLayer& layer, PassTarget target) {

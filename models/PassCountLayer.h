@@ -22,7 +22,12 @@ public:
     // Bumped on every change; consumers cache rendered images per revision.
     virtual quint64 revision() const = 0;
 
-    // Counts of the cells in `cells` (clipped to the grid), row-major, one entry per cell of the clipped rect.
+    // Bounding rectangle of the cells changed after `revision` (consumers recolour only that part).
+    // Default: the whole grid (always correct).
+    virtual QRect changedCellsSince(quint64 revision) const;
+
+    // Counts of the cells in `cells` (clipped to the grid), row-major, one entry per cell of the clipped
+    // rect.
     QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const;
 };
 
@@ -42,13 +47,23 @@ public:
     void fillRect(QRect cells, int count);
     void clear();
     const std::uint16_t* data() const { return m_cells.data(); }
+    QRect changedCellsSince(quint64 revision) const override;
 
 private:
+    void touched(QRect cells);
+
     QPointF m_origin;
     double m_cell;
     int m_cols, m_rows;
     std::vector<std::uint16_t> m_cells;
     quint64 m_revision = 1;
+    // The last changes (revision after the change, cells), oldest first; older history means "everything".
+    struct Change {
+        quint64 revision;
+        QRect cells;
+    };
+    std::vector<Change> m_changes;
+    static constexpr size_t kMaxChanges = 512;
 };
 
 struct PassTarget {
@@ -58,7 +73,8 @@ struct PassTarget {
 
 enum class PassPalette { Discrete, Summary };
 
-// TRex PassCountPalette: 1 teal, 2 red, 3 aqua, 4 olive, 5 lime, 6 fuchsia, 7 purple, 8 dark grey, 9+ pale cyan.
+// TRex PassCountPalette: 1 teal, 2 red, 3 aqua, 4 olive, 5 lime, 6 fuchsia, 7 purple, 8 dark grey, 9+ pale
+// cyan.
 QColor passCountDiscreteColor(int count);
 // Below = DodgerBlue, within = YellowGreen, above = Red.
 QColor passCountSummaryColor(int count, PassTarget target);
@@ -66,7 +82,7 @@ QColor passCountColor(int count, PassPalette palette, PassTarget target);
 
 struct PassCountSummary {
     qint64 coveredCells = 0;
-    double coveredArea = 0; // m²
+    double coveredArea = 0;                           // m²
     double belowPct = 0, withinPct = 0, abovePct = 0; // of the covered area
     QVector<qint64> histogram; // index = pass count (1..), last bucket = 9+; [0] unused
 };

@@ -40,11 +40,11 @@ CommandResult StopController::stopAll(const QString& origin) {
         if (r.ok)
             ++sent;
         else
-            failures.push_back(toString(b->protocol()) + QStringLiteral(": ") + r.message);
+            failures.push_back(toText(b->protocol()) + QStringLiteral(": ") + r.message);
     }
-    CommandResult result = failures.isEmpty()
-                               ? CommandResult::success(QStringLiteral("stop sent on %1 protocol(s)").arg(sent))
-                               : CommandResult::failure(failures.join(QStringLiteral("; ")));
+    CommandResult result =
+        failures.isEmpty() ? CommandResult::success(QStringLiteral("stop sent on %1 protocol(s)").arg(sent))
+                           : CommandResult::failure(failures.join(QStringLiteral("; ")));
     if (bridges().isEmpty())
         result = CommandResult::failure(QStringLiteral("no protocol bridge registered"));
     audit(origin, QStringLiteral("stop_all"), QString(), result);
@@ -54,7 +54,8 @@ CommandResult StopController::stopAll(const QString& origin) {
 
 CommandResult StopController::stopMachine(const QString& id, const QString& origin) {
     FleetBridge* b = bridgeFor(id);
-    const CommandResult r = b ? b->stopMachine(id) : CommandResult::failure(QStringLiteral("unknown machine %1").arg(id));
+    const CommandResult r =
+        b ? b->stopMachine(id) : CommandResult::failure(QStringLiteral("unknown machine %1").arg(id));
     audit(origin, QStringLiteral("stop"), id, r);
     return r;
 }
@@ -87,9 +88,17 @@ CommandResult StopController::clearStop(const QString& id, const QString& token,
 CommandResult StopController::command(const QString& name, const QJsonObject& args, const QString& origin) {
     const QString id = args.value(QStringLiteral("id")).toString();
     FleetBridge* b = bridgeFor(id);
-    const CommandResult r = b ? b->command(name, args)
-                              : CommandResult::failure(id.isEmpty() ? QStringLiteral("missing \"id\"")
-                                                                    : QStringLiteral("unknown machine %1").arg(id));
+    if (id.isEmpty() && args.contains(QStringLiteral("protocol"))) {
+        // Commands for a whole stack (e.g. JAUS release_all) name the protocol instead of a machine.
+        const Protocol p = protocolFromString(args.value(QStringLiteral("protocol")).toString());
+        for (FleetBridge* candidate : bridges())
+            if (candidate->protocol() == p)
+                b = candidate;
+    }
+    const CommandResult r =
+        b ? b->command(name, args)
+          : CommandResult::failure(id.isEmpty() ? QStringLiteral("missing \"id\" (or \"protocol\")")
+                                                : QStringLiteral("unknown machine %1").arg(id));
     audit(origin, name, id, r);
     return r;
 }
@@ -109,8 +118,9 @@ void StopController::audit(const QString& origin, const QString& action, const Q
 
     if (m_alarms) {
         // A refused stop is an alarm the operator must see; accepted actions are logged as info.
-        FleetEvent ev = makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit, target,
-                                  QStringLiteral("%1 by %2: %3").arg(action, origin, result.message), origin);
+        FleetEvent ev =
+            makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit, target,
+                      QStringLiteral("%1 by %2: %3").arg(action, origin, result.message), origin);
         ev.timeMs = now;
         m_alarms->add(ev);
     }

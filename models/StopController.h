@@ -36,18 +36,22 @@ public:
 
     // Release: first obtain a token (after the operator's deliberate confirmation), then clear.
     QString requestClearToken(const QString& id);
-    CommandResult clearStop(const QString& id, const QString& token, const QString& origin = QStringLiteral("gui"));
+    CommandResult clearStop(const QString& id, const QString& token,
+                            const QString& origin = QStringLiteral("gui"));
 
     // Protocol-specific commands routed to the bridge owning args["id"] (request_control, release_control,
-    // drive, ...), audited like the rest.
-    CommandResult command(const QString& name, const QJsonObject& args, const QString& origin = QStringLiteral("gui"));
+    // drive, ...), or, without an id, to the bridge of args["protocol"] (e.g. {"protocol":"jaus"} for
+    // release_all); audited like the rest.
+    CommandResult command(const QString& name, const QJsonObject& args,
+                          const QString& origin = QStringLiteral("gui"));
 
 signals:
     void stopAllIssued(const ocu::CommandResult& result);
     void audited(const QString& jsonLine);
 
 private:
-    void audit(const QString& origin, const QString& action, const QString& target, const CommandResult& result);
+    void audit(const QString& origin, const QString& action, const QString& target,
+               const CommandResult& result);
 
     QVector<QPointer<FleetBridge>> m_bridges;
     QPointer<AlarmModel> m_alarms;

@@ -166,7 +166,8 @@ Result<MapProgress> MapAssembler::addChunk(std::string_view xml) {
     if (!parseNum(osm.attribute("sequence").value(), seq))
         return fail("missing or malformed 'sequence' attribute (§10.3.2)");
     if (seq != seqExpected)
-        return fail("sequence " + std::to_string(seq) + " out of order, expected " + std::to_string(seqExpected));
+        return fail("sequence " + std::to_string(seq) + " out of order, expected " +
+                    std::to_string(seqExpected));
     for (auto n : osm.children("node")) {
         MapNode node;
         if (!parseNum(n.attribute("id").value(), node.id))
@@ -174,8 +175,10 @@ Result<MapProgress> MapAssembler::addChunk(std::string_view xml) {
         if (node.id == 0)
             return fail("node id 0 is forbidden (§10.2)");
         if (node.id < 0)
-            return fail("node id " + std::to_string(node.id) + " is negative; the service serves positive IDs only (§10.2)");
-        if (!parseNum(n.attribute("lat").value(), node.lat) || !parseNum(n.attribute("lon").value(), node.lon))
+            return fail("node id " + std::to_string(node.id) +
+                        " is negative; the service serves positive IDs only (§10.2)");
+        if (!parseNum(n.attribute("lat").value(), node.lat) ||
+            !parseNum(n.attribute("lon").value(), node.lon))
             return fail("node " + std::to_string(node.id) + ": missing or malformed lat/lon");
         if (std::fabs(node.lat) > 90 || std::fabs(node.lon) > 180)
             return fail("node " + std::to_string(node.id) + ": lat/lon out of range");
@@ -195,7 +198,8 @@ Result<MapProgress> MapAssembler::addChunk(std::string_view xml) {
         if (way.id == 0)
             return fail("way id 0 is forbidden (§10.2)");
         if (way.id < 0)
-            return fail("way id " + std::to_string(way.id) + " is negative; the service serves positive IDs only (§10.2)");
+            return fail("way id " + std::to_string(way.id) +
+                        " is negative; the service serves positive IDs only (§10.2)");
         for (auto nd : w.children("nd")) {
             std::int64_t ref;
             if (!parseNum(nd.attribute("ref").value(), ref))
@@ -239,7 +243,8 @@ Result<MapModel> MapAssembler::finish() {
     static const std::set<std::string> autonomyValues = {"excluded", "exclusive", "mixed"};
     static const std::set<std::string> areaValues = {"AOZ", "exclusion", "obstacle"};
     static const std::set<std::string> onewayValues = {"yes", "no", "reversible", "alternating"};
-    static const std::set<std::string> taskValues = {"load", "offload", "supply", "park", "wait", "drive", "fuel"};
+    static const std::set<std::string> taskValues = {"load", "offload", "supply", "park",
+                                                     "wait", "drive",   "fuel"};
     for (auto& [id, w] : m.ways) {
         const std::string wn = "way " + std::to_string(id);
         for (auto ref : w.nodes)
@@ -265,12 +270,13 @@ Result<MapModel> MapAssembler::finish() {
             for (std::size_t j = i + 2; j < segs; ++j) {
                 if (closed && i == 0 && j == segs - 1)
                     continue;
-                if (segmentsCross(m.nodes[w.nodes[i]].enu, m.nodes[w.nodes[i + 1]].enu, m.nodes[w.nodes[j]].enu,
-                                  m.nodes[w.nodes[j + 1]].enu))
+                if (segmentsCross(m.nodes[w.nodes[i]].enu, m.nodes[w.nodes[i + 1]].enu,
+                                  m.nodes[w.nodes[j]].enu, m.nodes[w.nodes[j + 1]].enu))
                     return makeError(wn + ": crosses itself (segments " + std::to_string(i) + " and " +
                                      std::to_string(j) + ")");
             }
-        auto check = [&](const char* key, const std::set<std::string>& allowed, bool areaOnly, bool roadOnly) {
+        auto check = [&](const char* key, const std::set<std::string>& allowed, bool areaOnly,
+                         bool roadOnly) {
             auto it = w.tags.find(key);
             if (it == w.tags.end())
                 return;
@@ -341,8 +347,8 @@ void writeTags(std::string& out, const Tags& tags) {
 }
 } // namespace
 
-std::vector<std::string> writeOsmChunks(const MapModel& model, std::size_t maxElements, std::int64_t changeset,
-                                        const std::string& generator) {
+std::vector<std::string> writeOsmChunks(const MapModel& model, std::size_t maxElements,
+                                        std::int64_t changeset, const std::string& generator) {
     std::vector<std::int64_t> nodeIds;
     nodeIds.reserve(model.nodes.size());
     for (auto& [id, n] : model.nodes)
@@ -376,8 +382,8 @@ std::vector<std::string> writeOsmChunks(const MapModel& model, std::size_t maxEl
     for (auto id : nodeIds) {
         next();
         const auto& n = model.nodes.at(id);
-        std::snprintf(buf, sizeof buf, "<node id=\"%lld\" lat=\"%.7f\" lon=\"%.7f\"", static_cast<long long>(id), n.lat,
-                      n.lon);
+        std::snprintf(buf, sizeof buf, "<node id=\"%lld\" lat=\"%.7f\" lon=\"%.7f\"",
+                      static_cast<long long>(id), n.lat, n.lon);
         cur += buf;
         if (n.ele) {
             std::snprintf(buf, sizeof buf, " ele=\"%.2f\"", *n.ele);

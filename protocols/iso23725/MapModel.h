@@ -53,7 +53,8 @@ public:
     std::size_t size() const { return m_items.size(); }
     const ConnectivityItem* find(std::int64_t wayId) const;
     std::vector<std::int64_t> successors(std::int64_t wayId) const;
-    // Shortest path by road length (areas cost 0) from one way to another, both included; empty when unreachable.
+    // Shortest path by road length (areas cost 0) from one way to another, both included; empty when
+    // unreachable.
     std::vector<std::int64_t> route(std::int64_t from, std::int64_t to) const;
     // Connections that point to ways not in the graph.
     std::vector<std::string> danglingConnections() const;
@@ -86,8 +87,8 @@ struct MapProgress {
     bool complete() const { return total > 0 && received >= total; }
 };
 
-// Assembles DocumentCount chunks after a MapSummaryV1. A bad chunk fails the whole fetch with a message naming
-// the chunk and the rule; the caller keeps its previous complete map (never a half-loaded one).
+// Assembles DocumentCount chunks after a MapSummaryV1. A bad chunk fails the whole fetch with a message
+// naming the chunk and the rule; the caller keeps its previous complete map (never a half-loaded one).
 class MapAssembler {
 public:
     void begin(const MapSummaryV1& summary);
@@ -109,7 +110,8 @@ private:
 Result<MapModel> parseMapDocument(const std::vector<std::string>& chunks, const MapSummaryV1& summary = {});
 
 // Writes a map as OSM 0.6 chunks of at most maxElements elements (nodes first, then ways), sequence 1..N.
-std::vector<std::string> writeOsmChunks(const MapModel& model, std::size_t maxElements, std::int64_t changeset,
+std::vector<std::string> writeOsmChunks(const MapModel& model, std::size_t maxElements,
+                                        std::int64_t changeset,
                                         const std::string& generator = "ocu simulated AHS");
 
 } // namespace ocu::iso23725

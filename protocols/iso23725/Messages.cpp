@@ -21,22 +21,23 @@ const InferredRules& defaultInferredRules() {
 
 namespace enums {
 const std::vector<std::string_view> equipmentType = {
-    "HaulTruck", "Shovel",      "Excavator",   "Loader",           "LightVehicle", "WaterCart",
-    "Grader",    "FuelTruck",   "LubeTruck",   "Dozer",            "RubberTireDozer", "Drill",
-    "Crusher",   "Scraper",     "BellyDumper", "EmergencyVehicle", "Ambulance",    "Dragline",
-    "SurfaceMiner", "Bus",      "Train",       "Trailer"};
+    "HaulTruck",   "Shovel",           "Excavator", "Loader",          "LightVehicle", "WaterCart", "Grader",
+    "FuelTruck",   "LubeTruck",        "Dozer",     "RubberTireDozer", "Drill",        "Crusher",   "Scraper",
+    "BellyDumper", "EmergencyVehicle", "Ambulance", "Dragline",        "SurfaceMiner", "Bus",       "Train",
+    "Trailer"};
 const std::vector<std::string_view> actor = {"AHS", "FMS"};
 const std::vector<std::string_view> actionRequest = {"Apply", "Remove"};
 const std::vector<std::string_view> actionResponse = {"Accepted", "Rejected"};
 const std::vector<std::string_view> actionStatus = {"On", "Off"};
-const std::vector<std::string_view> autonomyMode = {"Manual",          "Autonomous",    "TransitionToAutonomous",
-                                                    "TransitionToManual", "AllStop",    "EmergencyStop",
-                                                    "RemoteControl"};
+const std::vector<std::string_view> autonomyMode = {
+    "Manual",  "Autonomous",    "TransitionToAutonomous", "TransitionToManual",
+    "AllStop", "EmergencyStop", "RemoteControl"};
 const std::vector<std::string_view> haulTask = {"Load", "Offload", "Fuel", "Park", "Wait"};
 const std::vector<std::string_view> productionState = {"Off",     "Driving", "Spotting", "Loading", "Hauling",
                                                        "Dumping", "Queued",  "Stopped",  "Parked"};
 const std::vector<std::string_view> wayType = {"Road", "Area"};
-const std::vector<std::string_view> defaultTask = {"Load", "Offload", "Supply", "Park", "Wait", "Drive", "Fuel"};
+const std::vector<std::string_view> defaultTask = {"Load", "Offload", "Supply", "Park",
+                                                   "Wait", "Drive",   "Fuel"};
 const std::vector<std::string_view> severity = {"Info", "Warning", "Error"};
 const std::vector<std::string_view> assignmentStatus = {"Pending", "Active", "Completed", "Cancelled"};
 } // namespace enums
@@ -85,7 +86,8 @@ std::optional<std::int64_t> parseStrict(std::string_view s) {
         ++pos;
     } else if (pos < s.size() && (s[pos] == '+' || s[pos] == '-')) {
         int oh, om;
-        if (!digits(s, pos + 1, 2, oh) || pos + 3 >= s.size() || s[pos + 3] != ':' || !digits(s, pos + 4, 2, om))
+        if (!digits(s, pos + 1, 2, oh) || pos + 3 >= s.size() || s[pos + 3] != ':' ||
+            !digits(s, pos + 4, 2, om))
             return std::nullopt;
         offsetMin = (s[pos] == '+' ? 1 : -1) * (oh * 60 + om);
         pos += 6;
@@ -144,7 +146,9 @@ std::string formatTimestamp(std::int64_t unixMs) {
     return buf;
 }
 
-Timestamp makeTimestamp(std::int64_t unixMs) { return Timestamp{formatTimestamp(unixMs), unixMs}; }
+Timestamp makeTimestamp(std::int64_t unixMs) {
+    return Timestamp{formatTimestamp(unixMs), unixMs};
+}
 
 bool isGuid(std::string_view s) {
     if (s.size() != 36)
@@ -162,14 +166,16 @@ bool isGuid(std::string_view s) {
 }
 
 Guid newGuid() {
-    thread_local std::mt19937_64 rng{std::random_device{}() ^ static_cast<std::uint64_t>(
-                                                                  std::chrono::steady_clock::now().time_since_epoch().count())};
+    thread_local std::mt19937_64 rng{
+        std::random_device{}() ^
+        static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count())};
     std::uint64_t a = rng(), b = rng();
     a = (a & 0xffffffffffff0fffULL) | 0x0000000000004000ULL;
     b = (b & 0x3fffffffffffffffULL) | 0x8000000000000000ULL;
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%08x-%04x-%04x-%04x-%012llx", unsigned(a >> 32), unsigned((a >> 16) & 0xffff),
-                  unsigned(a & 0xffff), unsigned(b >> 48), static_cast<unsigned long long>(b & 0xffffffffffffULL));
+    std::snprintf(buf, sizeof buf, "%08x-%04x-%04x-%04x-%012llx", unsigned(a >> 32),
+                  unsigned((a >> 16) & 0xffff), unsigned(a & 0xffff), unsigned(b >> 48),
+                  static_cast<unsigned long long>(b & 0xffffffffffffULL));
     return buf;
 }
 
@@ -224,25 +230,33 @@ public:
         if (!j.is_object())
             fail("", std::string("expected an object, got ") + typeName(j));
     }
+    // Hot path (one per message): a literal path needs no allocation.
+    Obj(const json& j, const char* path, Ctx& ctx) : m_j(j), m_literal(path), m_ctx(ctx) {
+        if (!j.is_object())
+            fail("", std::string("expected an object, got ") + typeName(j));
+    }
 
-    const std::string& path() const { return m_path; }
+    std::string path() const { return m_literal ? std::string(m_literal) : m_path; }
 
     [[noreturn]] void fail(std::string_view key, const std::string& what) const {
-        throw DecodeError{key.empty() ? m_path + ": " + what : m_path + "." + std::string(key) + ": " + what};
+        throw DecodeError{key.empty() ? path() + ": " + what : path() + "." + std::string(key) + ": " + what};
     }
 
     // Finds key (or an accepted alias); nullptr when absent.
     const json* find(std::string_view key, std::string_view alias = {}) {
-        m_seen.push_back(key);
+        see(key);
         auto it = m_j.find(key);
-        if (it != m_j.end())
+        if (it != m_j.end()) {
+            ++m_found;
             return &*it;
+        }
         if (!alias.empty()) {
-            m_seen.push_back(alias);
+            see(alias);
             if (m_ctx.rules.acceptAliases) {
                 auto a = m_j.find(alias);
                 if (a != m_j.end()) {
-                    m_ctx.warnings.push_back(m_path + ": alias '" + std::string(alias) + "' accepted for '" +
+                    ++m_found;
+                    m_ctx.warnings.push_back(path() + ": alias '" + std::string(alias) + "' accepted for '" +
                                              std::string(key) + "'");
                     return &*a;
                 }
@@ -304,7 +318,8 @@ public:
     }
 
     // Numbers: null = unavailable (§4.2.3) when nullable; numeric strings tolerated per InferredRules.
-    std::optional<double> number(std::string_view key, bool required, bool nullable, std::string_view alias = {}) {
+    std::optional<double> number(std::string_view key, bool required, bool nullable,
+                                 std::string_view alias = {}) {
         const json* v = required ? &need(key, alias) : find(key, alias);
         if (!v)
             return std::nullopt;
@@ -323,7 +338,7 @@ public:
             double d = 0;
             auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), d);
             if (ec == std::errc() && p == s.data() + s.size() && std::isfinite(d)) {
-                m_ctx.warnings.push_back(m_path + "." + std::string(key) + ": number sent as a string");
+                m_ctx.warnings.push_back(path() + "." + std::string(key) + ": number sent as a string");
                 return d;
             }
         }
@@ -368,7 +383,8 @@ public:
         if (m_ctx.rules.caseInsensitiveEnums)
             for (auto e : set)
                 if (e.size() == s.size() && std::equal(e.begin(), e.end(), s.begin(), [](char a, char b) {
-                        return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+                        return std::tolower(static_cast<unsigned char>(a)) ==
+                               std::tolower(static_cast<unsigned char>(b));
                     }))
                     return std::string(e);
         fail(key, "'" + s + "' is not one of " + joinSet(set));
@@ -390,7 +406,7 @@ public:
         if (!t.unixMs)
             fail(key, "malformed timestamp '" + t.text + "'");
         if (repaired)
-            m_ctx.warnings.push_back(m_path + "." + std::string(key) + ": malformed timestamp '" + t.text +
+            m_ctx.warnings.push_back(path() + "." + std::string(key) + ": malformed timestamp '" + t.text +
                                      "' repaired");
         return t;
     }
@@ -413,26 +429,45 @@ public:
         return v;
     }
     std::string item(std::string_view key, std::size_t i) const {
-        return m_path + "." + std::string(key) + "[" + std::to_string(i) + "]";
+        return path() + "." + std::string(key) + "[" + std::to_string(i) + "]";
     }
 
     // Unknown members are kept (returned) and reported, never fatal (§4.2).
     json extras() const {
-        json out = json::object();
+        json out; // null unless there are unknown members (no allocation on the hot path)
+        if (m_j.size() == m_found)
+            return out; // every key present was consumed (looked-up names are distinct)
         for (auto it = m_j.begin(); it != m_j.end(); ++it) {
-            if (std::find(m_seen.begin(), m_seen.end(), std::string_view(it.key())) != m_seen.end())
+            if (seen(it.key()))
                 continue;
             out[it.key()] = it.value();
-            m_ctx.warnings.push_back(m_path + ": unknown member '" + it.key() + "' kept");
+            m_ctx.warnings.push_back(path() + ": unknown member '" + it.key() + "' kept");
         }
         return out;
     }
 
 private:
+    void see(std::string_view k) {
+        if (m_nSeen < m_seen.size())
+            m_seen[m_nSeen++] = k;
+        else
+            m_more.push_back(k);
+    }
+    bool seen(std::string_view k) const {
+        for (std::size_t i = 0; i < m_nSeen; ++i)
+            if (m_seen[i] == k)
+                return true;
+        return std::find(m_more.begin(), m_more.end(), k) != m_more.end();
+    }
+
     const json& m_j;
+    const char* m_literal = nullptr;
     std::string m_path;
     Ctx& m_ctx;
-    std::vector<std::string_view> m_seen;
+    std::array<std::string_view, 16> m_seen;
+    std::size_t m_nSeen = 0;
+    std::size_t m_found = 0;
+    std::vector<std::string_view> m_more;
 };
 
 PoseFields readPose(Obj& o) {
@@ -574,14 +609,12 @@ Body decAutonomy(const json& v, Ctx& c, json& x) {
     });
 }
 Body decAvailability(const json& v, Ctx& c, json& x) {
-    return objectMember<MachineDispatchAvailabilityV1>(v, "MachineDispatchAvailabilityV1", c, x,
-                                                       [](Obj& o, auto& m) {
-                                                           m.dispatchingCustodian =
-                                                               o.enumeration("DispatchingCustodian", enums::actor);
-                                                           m.impendingCustodian =
-                                                               o.optEnum("ImpendingCustodian", enums::actor);
-                                                           m.impendingTime = o.optTimestamp("ImpendingTime");
-                                                       });
+    return objectMember<MachineDispatchAvailabilityV1>(
+        v, "MachineDispatchAvailabilityV1", c, x, [](Obj& o, auto& m) {
+            m.dispatchingCustodian = o.enumeration("DispatchingCustodian", enums::actor);
+            m.impendingCustodian = o.optEnum("ImpendingCustodian", enums::actor);
+            m.impendingTime = o.optTimestamp("ImpendingTime");
+        });
 }
 Body decDiagnostic(const json& v, Ctx& c, json&) {
     MachineDiagnosticV2 m;
@@ -609,13 +642,15 @@ Body decConnectivity(const json& v, Ctx& c, json&) {
         }
         it.find(ci.wayType == "Road" ? "AreaProperty" : "RoadProperty"); // tolerated, not kept
         const json& conn = it.array("Connection");
-        eachItem(it, conn, "Connection", c, [&](Obj& w) { ci.connection.push_back(WayRef{w.reqInt("WayId")}); });
+        eachItem(it, conn, "Connection", c,
+                 [&](Obj& w) { ci.connection.push_back(WayRef{w.reqInt("WayId")}); });
         m.items.push_back(std::move(ci));
     });
     return m;
 }
 Body decMapService(const json& v, Ctx& c, json& x) {
-    return objectMember<MapServiceV1>(v, "MapServiceV1", c, x, [](Obj& o, auto& m) { m.api = o.reqInt("API"); });
+    return objectMember<MapServiceV1>(v, "MapServiceV1", c, x,
+                                      [](Obj& o, auto& m) { m.api = o.reqInt("API"); });
 }
 Body decSummary(const json& v, Ctx& c, json& x) {
     return objectMember<MapSummaryV1>(v, "MapSummaryV1", c, x, [](Obj& o, auto& m) {
@@ -661,38 +696,41 @@ Body decInterfaceDiag(const json& v, Ctx& c, json& x) {
     });
 }
 Body decCycle(const json& v, Ctx& c, json& x) {
-    return objectMember<HaulTruckProductionCycleV1>(v, "HaulTruckProductionCycleV1", c, x, [&](Obj& o, auto& m) {
-        m.cycleId = o.guid("CycleId");
-        m.assignmentId = o.nullableGuid("AssignmentId", false);
-        m.loadWayId = o.reqInt("LoadWayId");
-        m.dumpWayId = o.reqInt("DumpWayId");
-        m.loaderEquipmentId = o.nullableGuid("LoaderEquipmentId", false);
-        m.payloadWeight = o.integer("PayloadWeight", false, true);
-        if (const json* a = o.optArray("StateTimes"))
-            eachItem(o, *a, "StateTimes", c, [&](Obj& it) {
-                m.stateTimes.push_back(StateTime{it.enumeration("ProductionState", enums::productionState),
-                                                 it.timestamp("Start"), it.number("Duration", true, true)});
-            });
-    });
+    return objectMember<HaulTruckProductionCycleV1>(
+        v, "HaulTruckProductionCycleV1", c, x, [&](Obj& o, auto& m) {
+            m.cycleId = o.guid("CycleId");
+            m.assignmentId = o.nullableGuid("AssignmentId", false);
+            m.loadWayId = o.reqInt("LoadWayId");
+            m.dumpWayId = o.reqInt("DumpWayId");
+            m.loaderEquipmentId = o.nullableGuid("LoaderEquipmentId", false);
+            m.payloadWeight = o.integer("PayloadWeight", false, true);
+            if (const json* a = o.optArray("StateTimes"))
+                eachItem(o, *a, "StateTimes", c, [&](Obj& it) {
+                    m.stateTimes.push_back(
+                        StateTime{it.enumeration("ProductionState", enums::productionState),
+                                  it.timestamp("Start"), it.number("Duration", true, true)});
+                });
+        });
 }
 Body decProdState(const json& v, Ctx& c, json& x) {
-    return objectMember<HaulTruckProductionStateV2>(v, "HaulTruckProductionStateV2", c, x, [](Obj& o, auto& m) {
-        m.assignmentId = o.nullableGuid("AssignmentId", true);
-        m.wayId = o.integer("WayId", true, true);
-        m.autonomyMode = o.enumeration("AutonomyMode", enums::autonomyMode);
-        m.productionState = o.enumeration("ProductionState", enums::productionState);
-    });
+    return objectMember<HaulTruckProductionStateV2>(
+        v, "HaulTruckProductionStateV2", c, x, [](Obj& o, auto& m) {
+            m.assignmentId = o.nullableGuid("AssignmentId", true);
+            m.wayId = o.integer("WayId", true, true);
+            m.autonomyMode = o.enumeration("AutonomyMode", enums::autonomyMode);
+            m.productionState = o.enumeration("ProductionState", enums::productionState);
+        });
 }
 Body decSensor(const json& v, Ctx& c, json& x) {
-    return objectMember<HaulTruckProductionStateSensorV1>(v, "HaulTruckProductionStateSensorV1", c, x,
-                                                          [](Obj& o, auto& m) {
-                                                              m.loaded = o.optBool("Loaded");
-                                                              m.bodyRaised = o.optBool("BodyRaised");
-                                                              m.parkBrake = o.optBool("ParkBrake");
-                                                              m.payloadWeight = o.integer("PayloadWeight", false, true);
-                                                              m.inLoadArea = o.optBool("InLoadArea");
-                                                              m.inDumpArea = o.optBool("InDumpArea");
-                                                          });
+    return objectMember<HaulTruckProductionStateSensorV1>(
+        v, "HaulTruckProductionStateSensorV1", c, x, [](Obj& o, auto& m) {
+            m.loaded = o.optBool("Loaded");
+            m.bodyRaised = o.optBool("BodyRaised");
+            m.parkBrake = o.optBool("ParkBrake");
+            m.payloadWeight = o.integer("PayloadWeight", false, true);
+            m.inLoadArea = o.optBool("InLoadArea");
+            m.inDumpArea = o.optBool("InDumpArea");
+        });
 }
 Body decPayload(const json& v, Ctx& c, json& x) {
     return objectMember<HaulTruckPayloadV1>(v, "HaulTruckPayloadV1", c, x, [](Obj& o, auto& m) {
@@ -702,7 +740,8 @@ Body decPayload(const json& v, Ctx& c, json& x) {
             if (s->is_string() && !isGuid(s->get_ref<const std::string&>()))
                 o.fail("PayloadSourceId", "malformed GUID '" + s->get<std::string>() + "'");
             if (!s->is_string() && !s->is_number() && !s->is_null())
-                o.fail("PayloadSourceId", std::string("expected a GUID, a number or null, got ") + typeName(*s));
+                o.fail("PayloadSourceId",
+                       std::string("expected a GUID, a number or null, got ") + typeName(*s));
             m.payloadSourceId = *s;
         }
     });
@@ -740,9 +779,8 @@ Body decAssignReq(const json& v, Ctx& c, json&) {
 Body decAssignResp(const json& v, Ctx& c, json&) {
     HaulTruckAssignmentResponseV1 m;
     eachTop(v, "HaulTruckAssignmentResponseV1", c, [&](Obj& it) {
-        m.items.push_back(AssignmentResponseItem{it.guid("AssignmentId"),
-                                                 it.enumeration("Response", enums::actionResponse),
-                                                 it.optStr("Detail")});
+        m.items.push_back(AssignmentResponseItem{
+            it.guid("AssignmentId"), it.enumeration("Response", enums::actionResponse), it.optStr("Detail")});
     });
     return m;
 }
@@ -845,7 +883,7 @@ Result<Envelope> decodeJson(const json& doc, const InferredRules& rules) {
         }
         auto d = table.find(name);
         if (d == table.end()) {
-            env.members.push_back(Member{UnknownMember{key, it.value()}, json::object()});
+            env.members.push_back(Member{UnknownMember{key, it.value()}, json()});
             env.warnings.push_back("unknown member '" + key + "' kept");
             continue;
         }
@@ -854,9 +892,9 @@ Result<Envelope> decodeJson(const json& doc, const InferredRules& rules) {
         try {
             if (d->second.perMachine && !env.header.equipmentId)
                 throw DecodeError{std::string(name) + ": header EquipmentId required for this message"};
-            Member m{Body{}, json::object()};
-            m.body = d->second.decode(it.value(), ctx, m.extra);
-            env.members.push_back(std::move(m));
+            json extra;
+            Body body = d->second.decode(it.value(), ctx, extra);
+            env.members.push_back(Member{std::move(body), std::move(extra)});
         } catch (const DecodeError& e) {
             env.errors.push_back(e.message);
         } catch (const json::exception& e) {
@@ -879,9 +917,15 @@ Result<Envelope> decodeMessage(std::string_view text, const InferredRules& rules
 
 namespace {
 
-json num(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
-json num(const std::optional<std::int64_t>& v) { return v ? json(*v) : json(nullptr); }
-json ts(const Timestamp& t) { return t.text.empty() && t.unixMs ? json(formatTimestamp(*t.unixMs)) : json(t.text); }
+json num(const std::optional<double>& v) {
+    return v ? json(*v) : json(nullptr);
+}
+json num(const std::optional<std::int64_t>& v) {
+    return v ? json(*v) : json(nullptr);
+}
+json ts(const Timestamp& t) {
+    return t.text.empty() && t.unixMs ? json(formatTimestamp(*t.unixMs)) : json(t.text);
+}
 template <class T> void putOpt(json& o, const char* k, const std::optional<T>& v) {
     if (v)
         o[k] = *v;
@@ -890,7 +934,9 @@ void putOptTs(json& o, const char* k, const std::optional<Timestamp>& v) {
     if (v)
         o[k] = ts(*v);
 }
-json guidOrNull(const std::optional<Guid>& g) { return g ? json(*g) : json(nullptr); }
+json guidOrNull(const std::optional<Guid>& g) {
+    return g ? json(*g) : json(nullptr);
+}
 
 void putPose(json& o, const PoseFields& p) {
     o["Heading"] = num(p.heading);
@@ -999,8 +1045,9 @@ struct Encoder {
     }
     json operator()(const MapServiceV1& m) const { return {{"API", m.api}}; }
     json operator()(const MapSummaryV1& m) const {
-        json o = {{"Timestamp", ts(m.timestamp)},     {"ChangeSetMap", m.changeSetMap}, {"ChangeSetWay", m.changeSetWay},
-                  {"NodeCount", m.nodeCount},         {"WayCount", m.wayCount},         {"DocumentCount", m.documentCount}};
+        json o = {{"Timestamp", ts(m.timestamp)},   {"ChangeSetMap", m.changeSetMap},
+                  {"ChangeSetWay", m.changeSetWay}, {"NodeCount", m.nodeCount},
+                  {"WayCount", m.wayCount},         {"DocumentCount", m.documentCount}};
         putOpt(o, "uid", m.uid);
         return o;
     }
@@ -1025,7 +1072,9 @@ struct Encoder {
         putOpt(o, "PayloadWeight", m.payloadWeight);
         json st = json::array();
         for (auto& s : m.stateTimes)
-            st.push_back({{"ProductionState", s.productionState}, {"Start", ts(s.start)}, {"Duration", num(s.duration)}});
+            st.push_back({{"ProductionState", s.productionState},
+                          {"Start", ts(s.start)},
+                          {"Duration", num(s.duration)}});
         o["StateTimes"] = std::move(st);
         return o;
     }
@@ -1099,30 +1148,44 @@ struct NameOf {
     std::string_view operator()(const MachinePositionV1&) const { return "MachinePositionV1"; }
     std::string_view operator()(const BasicMachineHealthV2&) const { return "BasicMachineHealthV2"; }
     std::string_view operator()(const MachineAutonomyModeV1&) const { return "MachineAutonomyModeV1"; }
-    std::string_view operator()(const MachineDispatchAvailabilityV1&) const { return "MachineDispatchAvailabilityV1"; }
+    std::string_view operator()(const MachineDispatchAvailabilityV1&) const {
+        return "MachineDispatchAvailabilityV1";
+    }
     std::string_view operator()(const MachineDiagnosticV2&) const { return "MachineDiagnosticV2"; }
     std::string_view operator()(const MapConnectivityV1&) const { return "MapConnectivityV1"; }
     std::string_view operator()(const MapServiceV1&) const { return defaultInferredRules().mapServiceMember; }
     std::string_view operator()(const MapSummaryV1&) const { return "MapSummaryV1"; }
     std::string_view operator()(const MapCommandV1&) const { return "MapCommandV1"; }
     std::string_view operator()(const InterfaceDiagnosticV1&) const { return "InterfaceDiagnosticV1"; }
-    std::string_view operator()(const HaulTruckProductionCycleV1&) const { return "HaulTruckProductionCycleV1"; }
-    std::string_view operator()(const HaulTruckProductionStateV2&) const { return "HaulTruckProductionStateV2"; }
+    std::string_view operator()(const HaulTruckProductionCycleV1&) const {
+        return "HaulTruckProductionCycleV1";
+    }
+    std::string_view operator()(const HaulTruckProductionStateV2&) const {
+        return "HaulTruckProductionStateV2";
+    }
     std::string_view operator()(const HaulTruckProductionStateSensorV1&) const {
         return "HaulTruckProductionStateSensorV1";
     }
     std::string_view operator()(const HaulTruckPayloadV1&) const { return "HaulTruckPayloadV1"; }
     std::string_view operator()(const HaulTruckDumpV1&) const { return "HaulTruckDumpV1"; }
-    std::string_view operator()(const HaulTruckAssignmentRequestV2&) const { return "HaulTruckAssignmentRequestV2"; }
-    std::string_view operator()(const HaulTruckAssignmentResponseV1&) const { return "HaulTruckAssignmentResponseV1"; }
-    std::string_view operator()(const HaulTruckAssignmentResetV1&) const { return "HaulTruckAssignmentResetV1"; }
+    std::string_view operator()(const HaulTruckAssignmentRequestV2&) const {
+        return "HaulTruckAssignmentRequestV2";
+    }
+    std::string_view operator()(const HaulTruckAssignmentResponseV1&) const {
+        return "HaulTruckAssignmentResponseV1";
+    }
+    std::string_view operator()(const HaulTruckAssignmentResetV1&) const {
+        return "HaulTruckAssignmentResetV1";
+    }
     std::string_view operator()(const HaulTruckAssignmentV1&) const { return "HaulTruckAssignmentV1"; }
     std::string_view operator()(const UnknownMember& m) const { return m.name; }
 };
 
 } // namespace
 
-std::string_view memberName(const Body& body) { return std::visit(NameOf{}, body); }
+std::string_view memberName(const Body& body) {
+    return std::visit(NameOf{}, body);
+}
 
 json toJson(const Envelope& env) {
     json o = json::object();
@@ -1142,7 +1205,9 @@ json toJson(const Envelope& env) {
     return o;
 }
 
-std::string encodeMessage(const Envelope& env) { return toJson(env).dump(); }
+std::string encodeMessage(const Envelope& env) {
+    return toJson(env).dump();
+}
 
 std::string encodeMessage(const Body& body, std::optional<Guid> equipmentId, std::int64_t unixMs) {
     Envelope env;

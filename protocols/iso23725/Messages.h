@@ -245,7 +245,8 @@ struct HaulTruckProductionStateSensorV1 {
 struct HaulTruckPayloadV1 {
     std::optional<std::int64_t> payloadWeight; // t
     std::optional<double> accuracy;
-    std::optional<nlohmann::json> payloadSourceId; // GUID string, number or null (§9 tolerance); absent = nullopt
+    std::optional<nlohmann::json>
+        payloadSourceId; // GUID string, number or null (§9 tolerance); absent = nullopt
     bool operator==(const HaulTruckPayloadV1&) const = default;
 };
 struct HaulTruckDumpV1 {
@@ -300,8 +301,8 @@ struct UnknownMember {
     bool operator==(const UnknownMember&) const = default;
 };
 
-using Body = std::variant<FleetDefinitionV2, MachineAllStopRequestV1, MachineAllStopResponseV1, MachineAllStopV1,
-                          MachinePositionV1, BasicMachineHealthV2, MachineAutonomyModeV1,
+using Body = std::variant<FleetDefinitionV2, MachineAllStopRequestV1, MachineAllStopResponseV1,
+                          MachineAllStopV1, MachinePositionV1, BasicMachineHealthV2, MachineAutonomyModeV1,
                           MachineDispatchAvailabilityV1, MachineDiagnosticV2, MapConnectivityV1, MapServiceV1,
                           MapSummaryV1, MapCommandV1, InterfaceDiagnosticV1, HaulTruckProductionCycleV1,
                           HaulTruckProductionStateV2, HaulTruckProductionStateSensorV1, HaulTruckPayloadV1,
@@ -314,7 +315,7 @@ std::string_view memberName(const Body& body);
 // One decoded message member plus the unknown fields found inside it (kept for a faithful round trip).
 struct Member {
     Body body;
-    nlohmann::json extra = nlohmann::json::object();
+    nlohmann::json extra; // null, or an object of unknown members
 };
 
 // One JSON container (§4.2.1): header plus one or more members.

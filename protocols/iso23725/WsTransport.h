@@ -20,7 +20,7 @@ namespace ocu::iso23725 {
 enum class WsRole { Client, Service };
 
 struct WsTlsOptions {
-    std::string caFile;   // client: CA to verify the service; service: CA for client certificates (mutual TLS)
+    std::string caFile; // client: CA to verify the service; service: CA for client certificates (mutual TLS)
     std::string certFile; // client: optional client certificate; service: server certificate chain (wss)
     std::string keyFile;
     bool verifyHostname = true; // client: check the certificate names the URL's host (RFC 2818)
@@ -38,7 +38,8 @@ struct WsOptions {
     double backoffJitter = 0.2; // +-20 %
     std::chrono::milliseconds connectTimeout{5000};
     std::size_t maxFrameBytes = 16u * 1024u * 1024u;
-    std::string subprotocol; // Sec-WebSocket-Protocol offered (client) / accepted (service); none by default (Q1)
+    std::string
+        subprotocol; // Sec-WebSocket-Protocol offered (client) / accepted (service); none by default (Q1)
 };
 
 struct WsUrl {
@@ -66,20 +67,22 @@ public:
 
 class WsEndpoint {
 public:
-    // counters: "ws.rx.frames", "ws.tx.frames", "rx.rejected.binary", "rx.rejected.too_big", "ws.connect.failed",
-    // "ws.dead" ... are added there.
+    // counters: "ws.rx.frames", "ws.tx.frames", "rx.rejected.binary", "rx.rejected.too_big",
+    // "ws.connect.failed", "ws.dead" ... are added there.
     WsEndpoint(boost::asio::io_context& io, WsOptions options, WsHandler& handler, Counters& counters);
     ~WsEndpoint();
     WsEndpoint(const WsEndpoint&) = delete;
     WsEndpoint& operator=(const WsEndpoint&) = delete;
 
-    // Client: starts connecting (and reconnecting); service: binds and listens. Error for a bad URL, TLS files
-    // or an address in use.
+    // Client: starts connecting (and reconnecting); service: binds and listens. Error for a bad URL, TLS
+    // files or an address in use.
     Result<bool> start();
     // Closes every session and stops reconnecting; no callback after this returns.
     void stop();
     // Queues one text frame; false when the session is not open.
     bool send(SessionId id, std::string text);
+    // Binary frame (never used by ISO 23725 itself: for fault-injection tests of the peer's tolerance).
+    bool sendBinary(SessionId id, std::string data);
     void close(SessionId id, const std::string& reason);
     std::uint16_t localPort() const; // service role, after start()
     std::size_t queuedBytes() const; // across sessions (outgoing frames not yet written)

@@ -13,9 +13,12 @@ struct StaticEndpoint {
     JausId id;           // component 255 / node 255 allowed: all components of that node / subsystem
     std::string address; // IPv4
     std::uint16_t port = 3794;
+    bool tcp = false; // reach this peer over JTCP (a static list is required for JTCP, AEP-4818 §4.7.1)
 };
 
-enum class Role { Monitor, Operator };
+// AEP-4818 §4.3.2 authority bands an OCU may use: MONITOR 0, PRIMARY_OPERATOR 205-239, SAFETY_CRITICAL
+// 240-254.
+enum class Role { Monitor, PrimaryOperator, SafetyCritical };
 
 // UDP settings shared by the OCU stack and the simulated UGV.
 struct TransportSettings {
@@ -29,6 +32,8 @@ struct TransportSettings {
     std::string broadcastAddress = "255.255.255.255"; // when multicast is false
     std::vector<StaticEndpoint> staticEndpoints;
     std::size_t maxFragmentPayload = kMaxFragmentPayload;
+    bool jtcpServer = false;       // accept JTCP connections
+    std::uint16_t jtcpPort = 3794; // JTCP listening port (0 = ephemeral)
 };
 
 struct JausConfig {
@@ -36,21 +41,21 @@ struct JausConfig {
     std::uint8_t nodeId = 1;
     std::uint8_t componentId = 1;
     std::string callSign = "OCU";
-    Role role = Role::Operator;
+    Role role = Role::PrimaryOperator;
     std::uint8_t authority = 205; // PRIMARY_OPERATOR band 205-239 (AEP-4818 §4.3.2); MONITOR = 0
 
     TransportSettings transport;
 
-    double driveRateHz = 20;        // drive stream while a session is open
-    double heartbeatRateHz = 1;     // requested ReportHeartbeatPulse event rate (≥ 1 Hz, AEP-4818 §4.8)
-    double poseRateHz = 10;         // requested pose / velocity-state event rate
-    double statusPollHz = 1;        // QueryStatus / QueryControl polling
-    double discoveryIntervalS = 30; // re-check of every platform manager (AEP-4818 §6.2.2.2.2.1)
-    double linkLostS = 5;           // link down after this long without any message
-    double accessTimeoutS = 5;      // assumed access-control timeout until QueryTimeout answers
+    double driveRateHz = 20;         // drive stream while a session is open
+    double heartbeatRateHz = 1;      // requested ReportHeartbeatPulse event rate (≥ 1 Hz, AEP-4818 §4.8)
+    double poseRateHz = 10;          // requested pose / velocity-state event rate
+    double statusPollHz = 1;         // QueryStatus / QueryControl polling
+    double discoveryIntervalS = 30;  // re-check of every platform manager (AEP-4818 §6.2.2.2.2.1)
+    double linkLostS = 5;            // link down after this long without any message
+    double accessTimeoutS = 5;       // assumed access-control timeout until QueryTimeout answers
     double eventConfirmTimeoutS = 2; // no ConfirmEventRequest by then: fall back to polling
-    int stopRepeats = 5;            // zero commands sent on stop (never a single message)
-    bool velocityDrive = true;      // default drive mode when a platform offers both drivers
+    int stopRepeats = 5;             // zero commands sent on stop (never a single message)
+    bool velocityDrive = true;       // default drive mode when a platform offers both drivers
 
     JausId ownId() const { return JausId{subsystemId, nodeId, componentId}; }
     bool mayControl() const { return role != Role::Monitor && authority > 0; }

@@ -43,7 +43,7 @@ struct SubsystemSnapshot {
     std::int64_t lastMessageUnixMs = 0;
 
     AccessState access = AccessState::Monitoring;
-    JausId controller;             // all zero when uncontrolled
+    JausId controller; // all zero when uncontrolled
     std::uint8_t controllerAuthority = 0;
     bool controlledByUs = false;
     std::uint8_t accessTimeoutS = 0; // from ReportTimeout (0 = unknown or disabled)
@@ -92,9 +92,10 @@ struct JausEvent {
 struct DriveCommand {
     enum class Mode { Wrench, Velocity };
     Mode mode = Mode::Velocity;
-    double linear = 0;  // Wrench: propulsive linear X % [-100,100]; Velocity: m/s (+ forward)
-    double angular = 0; // Wrench: propulsive rotational Z %; Velocity: yaw rate rad/s (+ = right, AEP-4818 §7.7)
-    double brake = 0;   // Wrench only: resistive linear X % [0,100]
+    double linear = 0; // Wrench: propulsive linear X % [-100,100]; Velocity: m/s (+ forward)
+    double angular =
+        0; // Wrench: propulsive rotational Z %; Velocity: yaw rate rad/s (+ = right, AEP-4818 §7.7)
+    double brake = 0; // Wrench only: resistive linear X % [0,100]
 };
 
 // Called on the stack's io thread; implementations must not block.

@@ -48,7 +48,8 @@ Result<JudpMessage> decodeMessage(ByteSpan data, std::size_t& consumed) {
         return makeError("short: message needs 14 bytes, " + std::to_string(data.size()) + " left");
     const std::uint8_t typeHc = data[0];
     if (typeHc != 0) {
-        // JTS tests HC in bits 0-1, JAUS++/Wireshark in bits 6-7 (jaus-wire.md §2.1): refuse both rather than guess.
+        // JTS tests HC in bits 0-1, JAUS++/Wireshark in bits 6-7 (jaus-wire.md §2.1): refuse both rather than
+        // guess.
         if (typeHc & 0xC3)
             return makeError("header_compression: type/HC byte 0x" + std::to_string(typeHc) +
                              " requests header compression, which is not supported");
@@ -89,6 +90,7 @@ Result<DecodedDatagram> decodeDatagram(ByteSpan d) {
     if (d.size() < 1 + kMessageOverhead)
         return makeError("short: datagram of " + std::to_string(d.size()) + " bytes has no complete message");
     DecodedDatagram out;
+    out.messages.reserve(1);
     std::size_t pos = 1;
     while (pos < d.size()) {
         std::size_t used = 0;
@@ -130,9 +132,9 @@ std::vector<JudpMessage> fragmentPayload(const JudpHeader& header, ByteSpan payl
         const std::size_t n = std::min(maxChunk, payload.size() - pos);
         JudpMessage m{header, Bytes(payload.begin() + long(pos), payload.begin() + long(pos + n))};
         m.header.sequence = seq++;
-        m.header.dataFlags = pos == 0                        ? DataFlags::First
+        m.header.dataFlags = pos == 0                    ? DataFlags::First
                              : pos + n >= payload.size() ? DataFlags::Last
-                                                             : DataFlags::Middle;
+                                                         : DataFlags::Middle;
         out.push_back(std::move(m));
     }
     return out;
@@ -158,10 +160,10 @@ Result<std::optional<JudpMessage>> Reassembler::feed(JudpMessage msg, TimePoint 
     }
     auto it = m_sets.find({src, msg.header.sequence});
     if (it == m_sets.end())
-        return makeError("fragment_sequence: " +
-                         std::string(msg.header.dataFlags == DataFlags::Last ? "last" : "middle") +
-                         " fragment seq " + std::to_string(msg.header.sequence) + " from " +
-                         msg.header.source.toString() + " has no preceding fragment");
+        return makeError(
+            "fragment_sequence: " + std::string(msg.header.dataFlags == DataFlags::Last ? "last" : "middle") +
+            " fragment seq " + std::to_string(msg.header.sequence) + " from " + msg.header.source.toString() +
+            " has no preceding fragment");
     Set set = std::move(it->second);
     m_sets.erase(it);
     ByteSpan part(msg.payload);
@@ -169,7 +171,8 @@ Result<std::optional<JudpMessage>> Reassembler::feed(JudpMessage msg, TimePoint 
     if (part.size() >= 2 && part[0] == set.first.payload[0] && part[1] == set.first.payload[1])
         part = part.subspan(2);
     if (set.first.payload.size() + part.size() > m_opt.maxBytes)
-        return makeError("fragment_size: reassembled message exceeds " + std::to_string(m_opt.maxBytes) + " bytes");
+        return makeError("fragment_size: reassembled message exceeds " + std::to_string(m_opt.maxBytes) +
+                         " bytes");
     set.first.payload.insert(set.first.payload.end(), part.begin(), part.end());
     if (msg.header.dataFlags == DataFlags::Last) {
         set.first.header.dataFlags = DataFlags::Single;
@@ -203,7 +206,8 @@ Result<std::vector<JudpMessage>> JtcpStreamDecoder::feed(ByteSpan data) {
     if (!m_versionSeen && !m_buffer.empty()) {
         if (m_buffer[0] != kJudpVersion) {
             m_failed = true;
-            return makeError("version: JTCP stream starts with 0x" + std::to_string(m_buffer[0]) + ", not 0x02");
+            return makeError("version: JTCP stream starts with 0x" + std::to_string(m_buffer[0]) +
+                             ", not 0x02");
         }
         m_versionSeen = true;
         pos = 1;

@@ -40,7 +40,7 @@ struct JausId {
 inline constexpr JausId kBroadcastAll{0xFFFF, 0xFF, 0xFF};
 
 inline constexpr std::uint8_t kJudpVersion = 0x02;
-inline constexpr std::size_t kMessageOverhead = 14;    // DataSize of a payload-less message
+inline constexpr std::size_t kMessageOverhead = 14;      // DataSize of a payload-less message
 inline constexpr std::size_t kMaxFragmentPayload = 4079; // JTS MTU_Size default and maximum
 
 enum class Priority : std::uint8_t { Low = 0, Standard = 1, High = 2, Safety = 3 };

@@ -9,6 +9,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 ByteWriter start(Bytes& out, std::uint16_t id) {
+    out.reserve(48); // most messages fit: one allocation instead of several regrowths
     ByteWriter w(out);
     w.u16(id);
     return w;
@@ -20,7 +21,8 @@ Result<ByteReader> open(ByteSpan payload, std::uint16_t id) {
         return makeError("short: payload has no message ID");
     const std::uint16_t got = peekMessageId(payload);
     if (got != id)
-        return makeError("message_id: expected " + std::string(messageName(id)) + ", got 0x" + std::to_string(got));
+        return makeError("message_id: expected " + std::string(messageName(id)) + ", got 0x" +
+                         std::to_string(got));
     ByteReader r(payload);
     r.u16();
     return r;
@@ -147,75 +149,139 @@ std::vector<NodeServices> getNodes(ByteReader& r) {
 
 const char* messageName(std::uint16_t id) {
     switch (id) {
-    case msg::SetAuthority: return "SetAuthority";
-    case msg::Shutdown: return "Shutdown";
-    case msg::Standby: return "Standby";
-    case msg::Resume: return "Resume";
-    case msg::Reset: return "Reset";
-    case msg::SetEmergency: return "SetEmergency";
-    case msg::ClearEmergency: return "ClearEmergency";
-    case msg::RequestControl: return "RequestControl";
-    case msg::ReleaseControl: return "ReleaseControl";
-    case msg::ConfirmControl: return "ConfirmControl";
-    case msg::RejectControl: return "RejectControl";
-    case msg::CreateEvent: return "CreateEvent";
-    case msg::UpdateEvent: return "UpdateEvent";
-    case msg::CancelEvent: return "CancelEvent";
-    case msg::ConfirmEventRequest: return "ConfirmEventRequest";
-    case msg::RejectEventRequest: return "RejectEventRequest";
-    case msg::RegisterServices: return "RegisterServices";
-    case msg::QueryAuthority: return "QueryAuthority";
-    case msg::QueryStatus: return "QueryStatus";
-    case msg::QueryTimeout: return "QueryTimeout";
-    case msg::QueryControl: return "QueryControl";
-    case msg::QueryEvents: return "QueryEvents";
-    case msg::QueryHeartbeatPulse: return "QueryHeartbeatPulse";
-    case msg::QueryIdentification: return "QueryIdentification";
-    case msg::QueryConfiguration: return "QueryConfiguration";
-    case msg::QuerySubsystemList: return "QuerySubsystemList";
-    case msg::QueryServices: return "QueryServices";
-    case msg::QueryServiceList: return "QueryServiceList";
-    case msg::ReportAuthority: return "ReportAuthority";
-    case msg::ReportStatus: return "ReportStatus";
-    case msg::ReportTimeout: return "ReportTimeout";
-    case msg::ReportControl: return "ReportControl";
-    case msg::ReportEvents: return "ReportEvents";
-    case msg::Event: return "Event";
-    case msg::ReportHeartbeatPulse: return "ReportHeartbeatPulse";
-    case msg::ReportIdentification: return "ReportIdentification";
-    case msg::ReportConfiguration: return "ReportConfiguration";
-    case msg::ReportSubsystemList: return "ReportSubsystemList";
-    case msg::ReportServices: return "ReportServices";
-    case msg::ReportServiceList: return "ReportServiceList";
-    case msg::SetWrenchEffort: return "SetWrenchEffort";
-    case msg::QueryWrenchEffort: return "QueryWrenchEffort";
-    case msg::ReportWrenchEffort: return "ReportWrenchEffort";
-    case msg::SetVelocityCommand: return "SetVelocityCommand";
-    case msg::QueryVelocityCommand: return "QueryVelocityCommand";
-    case msg::ReportVelocityCommand: return "ReportVelocityCommand";
-    case msg::QueryGlobalPose: return "QueryGlobalPose";
-    case msg::ReportGlobalPose: return "ReportGlobalPose";
-    case msg::QueryLocalPose: return "QueryLocalPose";
-    case msg::ReportLocalPose: return "ReportLocalPose";
-    case msg::QueryVelocityState: return "QueryVelocityState";
-    case msg::ReportVelocityState: return "ReportVelocityState";
-    case msg::QueryPlatformSpecifications: return "QueryPlatformSpecifications";
-    case msg::ReportPlatformSpecifications: return "ReportPlatformSpecifications";
-    case msg::QueryHealthSummary: return "QueryHealthSummary";
-    case msg::UpdateHealthSummary: return "UpdateHealthSummary";
-    case msg::ReportHealthSummary: return "ReportHealthSummary";
-    default: return "unknown";
+    case msg::SetAuthority:
+        return "SetAuthority";
+    case msg::Shutdown:
+        return "Shutdown";
+    case msg::Standby:
+        return "Standby";
+    case msg::Resume:
+        return "Resume";
+    case msg::Reset:
+        return "Reset";
+    case msg::SetEmergency:
+        return "SetEmergency";
+    case msg::ClearEmergency:
+        return "ClearEmergency";
+    case msg::RequestControl:
+        return "RequestControl";
+    case msg::ReleaseControl:
+        return "ReleaseControl";
+    case msg::ConfirmControl:
+        return "ConfirmControl";
+    case msg::RejectControl:
+        return "RejectControl";
+    case msg::CreateEvent:
+        return "CreateEvent";
+    case msg::UpdateEvent:
+        return "UpdateEvent";
+    case msg::CancelEvent:
+        return "CancelEvent";
+    case msg::ConfirmEventRequest:
+        return "ConfirmEventRequest";
+    case msg::RejectEventRequest:
+        return "RejectEventRequest";
+    case msg::RegisterServices:
+        return "RegisterServices";
+    case msg::QueryAuthority:
+        return "QueryAuthority";
+    case msg::QueryStatus:
+        return "QueryStatus";
+    case msg::QueryTimeout:
+        return "QueryTimeout";
+    case msg::QueryControl:
+        return "QueryControl";
+    case msg::QueryEvents:
+        return "QueryEvents";
+    case msg::QueryHeartbeatPulse:
+        return "QueryHeartbeatPulse";
+    case msg::QueryIdentification:
+        return "QueryIdentification";
+    case msg::QueryConfiguration:
+        return "QueryConfiguration";
+    case msg::QuerySubsystemList:
+        return "QuerySubsystemList";
+    case msg::QueryServices:
+        return "QueryServices";
+    case msg::QueryServiceList:
+        return "QueryServiceList";
+    case msg::ReportAuthority:
+        return "ReportAuthority";
+    case msg::ReportStatus:
+        return "ReportStatus";
+    case msg::ReportTimeout:
+        return "ReportTimeout";
+    case msg::ReportControl:
+        return "ReportControl";
+    case msg::ReportEvents:
+        return "ReportEvents";
+    case msg::Event:
+        return "Event";
+    case msg::ReportHeartbeatPulse:
+        return "ReportHeartbeatPulse";
+    case msg::ReportIdentification:
+        return "ReportIdentification";
+    case msg::ReportConfiguration:
+        return "ReportConfiguration";
+    case msg::ReportSubsystemList:
+        return "ReportSubsystemList";
+    case msg::ReportServices:
+        return "ReportServices";
+    case msg::ReportServiceList:
+        return "ReportServiceList";
+    case msg::SetWrenchEffort:
+        return "SetWrenchEffort";
+    case msg::QueryWrenchEffort:
+        return "QueryWrenchEffort";
+    case msg::ReportWrenchEffort:
+        return "ReportWrenchEffort";
+    case msg::SetVelocityCommand:
+        return "SetVelocityCommand";
+    case msg::QueryVelocityCommand:
+        return "QueryVelocityCommand";
+    case msg::ReportVelocityCommand:
+        return "ReportVelocityCommand";
+    case msg::QueryGlobalPose:
+        return "QueryGlobalPose";
+    case msg::ReportGlobalPose:
+        return "ReportGlobalPose";
+    case msg::QueryLocalPose:
+        return "QueryLocalPose";
+    case msg::ReportLocalPose:
+        return "ReportLocalPose";
+    case msg::QueryVelocityState:
+        return "QueryVelocityState";
+    case msg::ReportVelocityState:
+        return "ReportVelocityState";
+    case msg::QueryPlatformSpecifications:
+        return "QueryPlatformSpecifications";
+    case msg::ReportPlatformSpecifications:
+        return "ReportPlatformSpecifications";
+    case msg::QueryHealthSummary:
+        return "QueryHealthSummary";
+    case msg::UpdateHealthSummary:
+        return "UpdateHealthSummary";
+    case msg::ReportHealthSummary:
+        return "ReportHealthSummary";
+    default:
+        return "unknown";
     }
 }
 
 const char* toString(ManagementState s) {
     switch (s) {
-    case ManagementState::Init: return "INIT";
-    case ManagementState::Ready: return "READY";
-    case ManagementState::Standby: return "STANDBY";
-    case ManagementState::Shutdown: return "SHUTDOWN";
-    case ManagementState::Failure: return "FAILURE";
-    case ManagementState::Emergency: return "EMERGENCY";
+    case ManagementState::Init:
+        return "INIT";
+    case ManagementState::Ready:
+        return "READY";
+    case ManagementState::Standby:
+        return "STANDBY";
+    case ManagementState::Shutdown:
+        return "SHUTDOWN";
+    case ManagementState::Failure:
+        return "FAILURE";
+    case ManagementState::Emergency:
+        return "EMERGENCY";
     }
     return "UNKNOWN";
 }
@@ -294,7 +360,9 @@ Result<ReportControl> decodeReportControl(ByteSpan p) {
     return finish(*r, m, msg::ReportControl);
 }
 
-Bytes encode(const QueryIdentification& m) { return encodeU8(msg::QueryIdentification, std::uint8_t(m.type)); }
+Bytes encode(const QueryIdentification& m) {
+    return encodeU8(msg::QueryIdentification, std::uint8_t(m.type));
+}
 Result<QueryIdentification> decodeQueryIdentification(ByteSpan p) {
     auto v = decodeU8(p, msg::QueryIdentification);
     if (!v)
@@ -661,7 +729,8 @@ Bytes encodeWrench(std::uint16_t id, const WrenchEffort& m) {
     PvWriter pv;
     const std::optional<double>* prop[] = {&m.propLinX, &m.propLinY, &m.propLinZ,
                                            &m.propRotX, &m.propRotY, &m.propRotZ};
-    const std::optional<double>* res[] = {&m.resLinX, &m.resLinY, &m.resLinZ, &m.resRotX, &m.resRotY, &m.resRotZ};
+    const std::optional<double>* res[] = {&m.resLinX, &m.resLinY, &m.resLinZ,
+                                          &m.resRotX, &m.resRotY, &m.resRotZ};
     for (auto* f : prop)
         pv.mark(*f);
     for (auto* f : res)
@@ -680,7 +749,8 @@ Result<WrenchEffort> decodeWrench(ByteSpan p, std::uint16_t id) {
     if (!r)
         return makeError(r.error());
     WrenchEffort m;
-    std::optional<double>* prop[] = {&m.propLinX, &m.propLinY, &m.propLinZ, &m.propRotX, &m.propRotY, &m.propRotZ};
+    std::optional<double>* prop[] = {&m.propLinX, &m.propLinY, &m.propLinZ,
+                                     &m.propRotX, &m.propRotY, &m.propRotZ};
     std::optional<double>* res[] = {&m.resLinX, &m.resLinY, &m.resLinZ, &m.resRotX, &m.resRotY, &m.resRotZ};
     const std::uint32_t pv = r->u16();
     for (int i = 0; i < 6; ++i)
@@ -725,8 +795,12 @@ Result<VelocityCommand> decodeVelocityCommand(ByteSpan p, std::uint16_t id) {
     getU16s(*r, pv, 5, m.yawRate, -32.768, 32.767);
     return finish(*r, m, id);
 }
-Bytes encodeQueryPv16(std::uint16_t id, std::uint16_t presence) { return encodeU16(id, presence); }
-Result<std::uint16_t> decodeQueryPv16(ByteSpan p, std::uint16_t id) { return decodeU16(p, id); }
+Bytes encodeQueryPv16(std::uint16_t id, std::uint16_t presence) {
+    return encodeU16(id, presence);
+}
+Result<std::uint16_t> decodeQueryPv16(ByteSpan p, std::uint16_t id) {
+    return decodeU16(p, id);
+}
 Bytes encodeQueryVelocityCommand(std::uint8_t presence, std::uint8_t commandType) {
     Bytes out;
     auto w = start(out, msg::QueryVelocityCommand);

@@ -20,23 +20,25 @@ inline constexpr std::uint16_t SetAuthority = 0x0001, Shutdown = 0x0002, Standby
                                Reset = 0x0005, SetEmergency = 0x0006, ClearEmergency = 0x0007,
                                RequestControl = 0x000D, ReleaseControl = 0x000E, ConfirmControl = 0x000F,
                                RejectControl = 0x0010, CreateEvent = 0x01F0, UpdateEvent = 0x01F1,
-                               CancelEvent = 0x01F2, ConfirmEventRequest = 0x01F3, RejectEventRequest = 0x01F4,
-                               RegisterServices = 0x0B00, QueryAuthority = 0x2001, QueryStatus = 0x2002,
-                               QueryTimeout = 0x2003, QueryControl = 0x200D, QueryEvents = 0x21F0,
-                               QueryHeartbeatPulse = 0x2202, QueryIdentification = 0x2B00,
-                               QueryConfiguration = 0x2B01, QuerySubsystemList = 0x2B02, QueryServices = 0x2B03,
-                               QueryServiceList = 0x2B04, ReportAuthority = 0x4001, ReportStatus = 0x4002,
-                               ReportTimeout = 0x4003, ReportControl = 0x400D, ReportEvents = 0x41F0,
-                               Event = 0x41F1, ReportHeartbeatPulse = 0x4202, ReportIdentification = 0x4B00,
+                               CancelEvent = 0x01F2, ConfirmEventRequest = 0x01F3,
+                               RejectEventRequest = 0x01F4, RegisterServices = 0x0B00,
+                               QueryAuthority = 0x2001, QueryStatus = 0x2002, QueryTimeout = 0x2003,
+                               QueryControl = 0x200D, QueryEvents = 0x21F0, QueryHeartbeatPulse = 0x2202,
+                               QueryIdentification = 0x2B00, QueryConfiguration = 0x2B01,
+                               QuerySubsystemList = 0x2B02, QueryServices = 0x2B03, QueryServiceList = 0x2B04,
+                               ReportAuthority = 0x4001, ReportStatus = 0x4002, ReportTimeout = 0x4003,
+                               ReportControl = 0x400D, ReportEvents = 0x41F0, Event = 0x41F1,
+                               ReportHeartbeatPulse = 0x4202, ReportIdentification = 0x4B00,
                                ReportConfiguration = 0x4B01, ReportSubsystemList = 0x4B02,
                                ReportServices = 0x4B03, ReportServiceList = 0x4B04;
 // Mobility (AS6009) and UGV (AS6091)
-inline constexpr std::uint16_t SetWrenchEffort = 0x0405, QueryWrenchEffort = 0x2405, ReportWrenchEffort = 0x4405,
-                               SetVelocityCommand = 0x0415, QueryVelocityCommand = 0x2415,
-                               ReportVelocityCommand = 0x4415, QueryGlobalPose = 0x2402,
-                               ReportGlobalPose = 0x4402, QueryLocalPose = 0x2403, ReportLocalPose = 0x4403,
-                               QueryVelocityState = 0x2404, ReportVelocityState = 0x4404,
-                               QueryPlatformSpecifications = 0x2502, ReportPlatformSpecifications = 0x4502;
+inline constexpr std::uint16_t SetWrenchEffort = 0x0405, QueryWrenchEffort = 0x2405,
+                               ReportWrenchEffort = 0x4405, SetVelocityCommand = 0x0415,
+                               QueryVelocityCommand = 0x2415, ReportVelocityCommand = 0x4415,
+                               QueryGlobalPose = 0x2402, ReportGlobalPose = 0x4402, QueryLocalPose = 0x2403,
+                               ReportLocalPose = 0x4403, QueryVelocityState = 0x2404,
+                               ReportVelocityState = 0x4404, QueryPlatformSpecifications = 0x2502,
+                               ReportPlatformSpecifications = 0x4502;
 // IOP custom Health Monitor (FKIE HealthClass.xml: UGVSummary == "HealthSummary" in AEP-4818)
 inline constexpr std::uint16_t QueryHealthSummary = 0xED10, UpdateHealthSummary = 0xDD10,
                                ReportHealthSummary = 0xFD10;
@@ -48,19 +50,39 @@ inline std::uint16_t peekMessageId(ByteSpan payload) {
 }
 
 // ---- Value types ----------------------------------------------------------------------------------------
-enum class ManagementState : std::uint8_t { Init = 0, Ready = 1, Standby = 2, Shutdown = 3, Failure = 4, Emergency = 5 };
+enum class ManagementState : std::uint8_t {
+    Init = 0,
+    Ready = 1,
+    Standby = 2,
+    Shutdown = 3,
+    Failure = 4,
+    Emergency = 5
+};
 const char* toString(ManagementState s);
-enum class EmergencyCode : std::uint16_t { Stop = 1, Safety = 2 }; // SAFETY=2 is the IOP addition (AEP-4818 §4.5)
+enum class EmergencyCode : std::uint16_t {
+    Stop = 1,
+    Safety = 2
+}; // SAFETY=2 is the IOP addition (AEP-4818 §4.5)
 enum class ConfirmControlCode : std::uint8_t { Accepted = 0, NotAvailable = 1, InsufficientAuthority = 2 };
 enum class RejectControlCode : std::uint8_t { Released = 0, NotAvailable = 1 };
 enum class IdQueryType : std::uint8_t { System = 1, Subsystem = 2, Node = 3, Component = 4 };
-enum class IdType : std::uint16_t { Vehicle = 10001, Ocu = 20001, OtherSubsystem = 30001, Node = 40001,
-                                     Payload = 50001, Component = 60001 };
+enum class IdType : std::uint16_t {
+    Vehicle = 10001,
+    Ocu = 20001,
+    OtherSubsystem = 30001,
+    Node = 40001,
+    Payload = 50001,
+    Component = 60001
+};
 
 // Messages whose body is empty or one integer share these.
 struct Empty {};
-struct U8Body { std::uint8_t value = 0; };
-struct U16Body { std::uint16_t value = 0; };
+struct U8Body {
+    std::uint8_t value = 0;
+};
+struct U16Body {
+    std::uint16_t value = 0;
+};
 
 struct ReportStatus {
     ManagementState status = ManagementState::Init;
@@ -70,7 +92,9 @@ struct ReportControl {
     JausId controller; // all zero when uncontrolled
     std::uint8_t authority = 0;
 };
-struct QueryIdentification { IdQueryType type = IdQueryType::Subsystem; };
+struct QueryIdentification {
+    IdQueryType type = IdQueryType::Subsystem;
+};
 struct ReportIdentification {
     IdQueryType queryType = IdQueryType::Subsystem;
     IdType type = IdType::Vehicle;
@@ -81,7 +105,9 @@ struct ServiceRecord {
     std::uint8_t major = 1;
     std::uint8_t minor = 0;
 };
-struct RegisterServices { std::vector<ServiceRecord> services; };
+struct RegisterServices {
+    std::vector<ServiceRecord> services;
+};
 struct ComponentServices {
     std::uint8_t component = 0;
     std::uint8_t instance = 0;
@@ -98,7 +124,9 @@ struct QueryServices {
     };
     std::vector<Node> nodes{Node{}};
 };
-struct ReportServices { std::vector<NodeServices> nodes; };
+struct ReportServices {
+    std::vector<NodeServices> nodes;
+};
 struct QueryServiceList {
     struct Comp {
         std::uint8_t component = 255;
@@ -121,7 +149,9 @@ struct ReportServiceList {
     };
     std::vector<Subsystem> subsystems;
 };
-struct ReportSubsystemList { std::vector<JausId> subsystems; };
+struct ReportSubsystemList {
+    std::vector<JausId> subsystems;
+};
 
 // Events (AS5710A). Rates are Hz, scaled u16 [0,1092].
 enum class EventType : std::uint8_t { Periodic = 0, EveryChange = 1 };
@@ -171,16 +201,18 @@ struct ReportEvents {
 };
 
 // Mobility. Optional fields = presence-vector bits in declaration order.
-struct WrenchEffort { // percent
+struct WrenchEffort {                                                                 // percent
     std::optional<double> propLinX, propLinY, propLinZ, propRotX, propRotY, propRotZ; // [-100,100]
     std::optional<double> resLinX, resLinY, resLinZ, resRotX, resRotY, resRotZ;       // [0,100]
 };
 struct VelocityCommand {
-    std::uint8_t commandType = 0; // 0 current, 1 max, 2 min, 3 default
-    std::optional<double> vx, vy, vz;          // m/s
+    std::uint8_t commandType = 0;                       // 0 current, 1 max, 2 min, 3 default
+    std::optional<double> vx, vy, vz;                   // m/s
     std::optional<double> rollRate, pitchRate, yawRate; // rad/s
 };
-struct PresenceQuery16 { std::uint16_t presence = 0xFFFF; };
+struct PresenceQuery16 {
+    std::uint16_t presence = 0xFFFF;
+};
 struct GlobalPose {
     std::optional<double> lat, lon, alt, positionRms, roll, pitch, yaw, attitudeRms;
     std::optional<std::uint32_t> timestamp;
@@ -196,15 +228,16 @@ struct VelocityState {
 struct PlatformSpecifications {
     // Variant 0 skid steer, 1 Ackermann.
     std::uint8_t steeringType = 0;
-    std::optional<double> trackSeparation, driveWheelRadius;                                  // skid steer
-    std::optional<double> steeringAngleRange, minTurnRadius, wheelSeparation, ackDriveWheelRadius; // Ackermann
+    std::optional<double> trackSeparation, driveWheelRadius; // skid steer
+    std::optional<double> steeringAngleRange, minTurnRadius, wheelSeparation,
+        ackDriveWheelRadius; // Ackermann
     std::optional<double> maxForwardSpeed, maxReverseSpeed, maxRotationalSpeed;
     std::optional<double> maxForwardAccel, maxReverseAccel, maxForwardDecel, maxReverseDecel;
     std::string name;
     std::optional<double> front, back, right, left, bottom, top; // metres from the reference point
 };
 struct HealthSummary {
-    std::uint8_t severity = 0; // 0 NONE 1 INFO 2 WARN 3 ERR 4 FAIL
+    std::uint8_t severity = 0;                                // 0 NONE 1 INFO 2 WARN 3 ERR 4 FAIL
     std::vector<std::pair<std::uint8_t, std::uint8_t>> nodes; // (node ID, severity)
 };
 

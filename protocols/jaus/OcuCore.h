@@ -6,32 +6,22 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "common/Clock.h"
 #include "common/Counters.h"
 #include "jaus/JausConfig.h"
+#include "jaus/JausOutput.h"
 #include "jaus/JausTypes.h"
 #include "jaus/Messages.h"
 
 namespace ocu::jaus {
 
-struct SendOptions {
-    Priority priority = Priority::Standard;
-    bool ackRequest = false;
-};
-
-class JausOutput {
-public:
-    virtual ~JausOutput() = default;
-    virtual void send(const JausId& destination, const Bytes& payload, SendOptions options) = 0;
-    // "ip:port" last learned for a JAUS ID (for the console), empty when unknown.
-    virtual std::string endpointOf(const JausId&) const { return {}; }
-};
-
 class OcuCore {
 public:
-    OcuCore(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock, Counters& counters);
+    OcuCore(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock,
+            Counters& counters);
 
     // One received (reassembled) message.
     void handle(const JausId& source, const JausId& destination, ByteSpan payload);
@@ -66,7 +56,8 @@ private:
         std::uint16_t queryId = 0;
         JausId target;
         Bytes query;
-        double rateHz = 1;
+        double rateHz = 1; // periodic rate, or the polling rate of an on-change event's fallback
+        EventType type = EventType::Periodic;
         SubState state = SubState::None;
         std::uint8_t requestId = 0;
         std::uint8_t eventId = 0;
@@ -102,7 +93,7 @@ private:
     };
 
     void send(const JausId& dst, const Bytes& payload, SendOptions o = {});
-    void emit(Severity s, EventKind k, std::uint16_t ss, std::string text);
+    void notify(Severity s, EventKind k, std::uint16_t ss, std::string text);
     void changed(Remote& r);
     Remote& remote(std::uint16_t ss);
     Remote* find(std::uint16_t ss);
@@ -114,7 +105,8 @@ private:
     void onServices(Remote& r, const JausId& src, const std::vector<NodeServices>& nodes);
     void onControlLost(Remote& r, const std::string& why);
     void classify(Remote& r, const ReportControl& rc);
-    void subscribe(Remote& r, const JausId& target, std::uint16_t queryId, Bytes query, double rateHz);
+    void subscribe(Remote& r, const JausId& target, std::uint16_t queryId, Bytes query, double rateHz,
+                   EventType type = EventType::Periodic);
     void tickRemote(Remote& r, TimePoint now);
     void sendDrive(Remote& r, bool zero);
     Duration reRequestPeriod(const Remote& r) const;
@@ -126,6 +118,7 @@ private:
     Counters& m_counters;
     JausId m_self;
     std::map<std::uint16_t, Remote> m_remotes;
+    std::set<std::uint16_t> m_otherOcus; // subsystems that identified as OCU
     TimePoint m_lastDiscovery{};
     bool m_started = false;
     std::uint8_t m_nextRequestId = 1;

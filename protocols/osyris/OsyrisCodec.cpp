@@ -6,21 +6,30 @@ namespace ocu::osyris {
 
 const char* toString(RequestType t) {
     switch (t) {
-    case RequestType::Nak: return "NAK";
-    case RequestType::Ncf: return "NCF";
-    case RequestType::All: return "ALL";
-    case RequestType::Ping: return "PING";
-    case RequestType::Pong: return "PONG";
-    case RequestType::Alive: return "ALIVE";
+    case RequestType::Nak:
+        return "NAK";
+    case RequestType::Ncf:
+        return "NCF";
+    case RequestType::All:
+        return "ALL";
+    case RequestType::Ping:
+        return "PING";
+    case RequestType::Pong:
+        return "PONG";
+    case RequestType::Alive:
+        return "ALIVE";
     }
     return "?";
 }
 
 const char* toString(Checksum c) {
     switch (c) {
-    case Checksum::None: return "none";
-    case Checksum::Xor: return "xor";
-    case Checksum::Crc16: return "crc16";
+    case Checksum::None:
+        return "none";
+    case Checksum::Xor:
+        return "xor";
+    case Checksum::Crc16:
+        return "crc16";
     }
     return "?";
 }
@@ -38,13 +47,26 @@ PosProp PosProp::fromFloat(std::uint32_t id, float v) {
     return p;
 }
 
+namespace {
+struct Crc16Table {
+    std::uint16_t t[256];
+    constexpr Crc16Table() : t{} {
+        for (int i = 0; i < 256; ++i) {
+            std::uint16_t c = static_cast<std::uint16_t>(i << 8);
+            for (int k = 0; k < 8; ++k)
+                c = (c & 0x8000) ? static_cast<std::uint16_t>((c << 1) ^ 0x1021)
+                                 : static_cast<std::uint16_t>(c << 1);
+            t[i] = c;
+        }
+    }
+};
+constexpr Crc16Table kCrc16;
+} // namespace
+
 std::uint16_t crc16(ByteSpan data) {
     std::uint16_t crc = 0xFFFF;
-    for (std::uint8_t b : data) {
-        crc ^= static_cast<std::uint16_t>(b) << 8;
-        for (int i = 0; i < 8; ++i)
-            crc = (crc & 0x8000) ? static_cast<std::uint16_t>((crc << 1) ^ 0x1021) : static_cast<std::uint16_t>(crc << 1);
-    }
+    for (std::uint8_t b : data)
+        crc = static_cast<std::uint16_t>((crc << 8) ^ kCrc16.t[((crc >> 8) ^ b) & 0xFF]);
     return crc;
 }
 
@@ -61,9 +83,12 @@ std::uint16_t xor16(ByteSpan data) {
 
 std::uint16_t checksum(Checksum mode, ByteSpan data) {
     switch (mode) {
-    case Checksum::None: return 0;
-    case Checksum::Xor: return xor16(data);
-    case Checksum::Crc16: return crc16(data);
+    case Checksum::None:
+        return 0;
+    case Checksum::Xor:
+        return xor16(data);
+    case Checksum::Crc16:
+        return crc16(data);
     }
     return 0;
 }
@@ -208,7 +233,8 @@ bool decodeOne(ByteSpan bytes, Checksum cs, std::vector<Message>& out, Failure& 
         return false;
     }
     if (h.len != bytes.size()) {
-        f = {"bad_length", "WLen " + std::to_string(h.len) + " != message size " + std::to_string(bytes.size())};
+        f = {"bad_length",
+             "WLen " + std::to_string(h.len) + " != message size " + std::to_string(bytes.size())};
         return false;
     }
     if (cs != Checksum::None) {
@@ -256,7 +282,8 @@ bool decodeOne(ByteSpan bytes, Checksum cs, std::vector<Message>& out, Failure& 
     }
     case static_cast<std::uint16_t>(MsgType::PosProps): {
         if (body % kPosPropSize != 0) {
-            f = {"bad_length", "CmPosProps body of " + std::to_string(body) + " bytes is not a multiple of 8"};
+            f = {"bad_length",
+                 "CmPosProps body of " + std::to_string(body) + " bytes is not a multiple of 8"};
             return false;
         }
         if (h.whose >= kIdxNobody) {
@@ -345,7 +372,8 @@ DecodedDatagram decodeDatagram(ByteSpan d, Checksum cs, std::size_t maxLen) {
     DecodedDatagram res;
     if (d.size() > maxLen) {
         res.reason = "oversized";
-        res.error = "datagram of " + std::to_string(d.size()) + " bytes exceeds MaxLen " + std::to_string(maxLen);
+        res.error =
+            "datagram of " + std::to_string(d.size()) + " bytes exceeds MaxLen " + std::to_string(maxLen);
         return res;
     }
     if (d.empty()) {
@@ -369,7 +397,8 @@ DecodedDatagram decodeDatagram(ByteSpan d, Checksum cs, std::size_t maxLen) {
         }
         if (len > left) {
             res.reason = "truncated";
-            res.error = "WLen " + std::to_string(len) + " exceeds the " + std::to_string(left) + " bytes left";
+            res.error =
+                "WLen " + std::to_string(len) + " exceeds the " + std::to_string(left) + " bytes left";
             return res;
         }
         Failure f;

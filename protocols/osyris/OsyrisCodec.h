@@ -61,12 +61,12 @@ struct CmHeader {
 
 struct CmPos {
     std::uint32_t numPos = 0;
-    float x = 0, y = 0, z = 0;            // m, east / north / height
-    float yaw = 0, pitch = 0, roll = 0;   // rad; yaw north = 0, west = pi/2
+    float x = 0, y = 0, z = 0;          // m, east / north / height
+    float yaw = 0, pitch = 0, roll = 0; // rad; yaw north = 0, west = pi/2
     std::uint32_t flags = 0;
-    float dx = 0, dy = 0, dz = 0;         // extents; dx = drum/machine width (docs)
-    double speed = 0;                     // m/s
-    std::uint64_t time = 0;               // FILETIME, 100 ns since 1601-01-01
+    float dx = 0, dy = 0, dz = 0; // extents; dx = drum/machine width (docs)
+    double speed = 0;             // m/s
+    std::uint64_t time = 0;       // FILETIME, 100 ns since 1601-01-01
     std::uint32_t slot = 0;
     std::uint8_t epoch = 0;
     bool operator==(const CmPos&) const = default;
@@ -116,12 +116,13 @@ inline std::int64_t fileTimeToUnixMillis(std::uint64_t ft) {
 }
 
 // Checksums over the message bytes after the WCrc field ([2, WLen)).
-std::uint16_t crc16(ByteSpan data);    // CRC-16/CCITT-FALSE: poly 0x1021, init 0xFFFF
-std::uint16_t xor16(ByteSpan data);    // XOR of little-endian 16-bit words, odd byte zero-padded
+std::uint16_t crc16(ByteSpan data); // CRC-16/CCITT-FALSE: poly 0x1021, init 0xFFFF
+std::uint16_t xor16(ByteSpan data); // XOR of little-endian 16-bit words, odd byte zero-padded
 std::uint16_t checksum(Checksum mode, ByteSpan data);
 
 // Encoders append one complete message (header + body, checksum filled in) to out.
-void encodePos(Bytes& out, std::uint8_t who, std::uint8_t whose, const CmPos& p, Checksum cs = Checksum::None);
+void encodePos(Bytes& out, std::uint8_t who, std::uint8_t whose, const CmPos& p,
+               Checksum cs = Checksum::None);
 void encodePosProps(Bytes& out, std::uint8_t who, std::uint8_t whose, const std::vector<PosProp>& props,
                     Checksum cs = Checksum::None);
 void encodeRequest(Bytes& out, std::uint8_t who, std::uint8_t whose, const CmRequest& r,
@@ -144,6 +145,7 @@ struct DecodedDatagram {
 };
 // Splits a datagram into messages. A bad message stops decoding (its length can no longer be trusted),
 // but every good message before it is kept.
-DecodedDatagram decodeDatagram(ByteSpan datagram, Checksum cs = Checksum::None, std::size_t maxLen = kMaxDatagram);
+DecodedDatagram decodeDatagram(ByteSpan datagram, Checksum cs = Checksum::None,
+                               std::size_t maxLen = kMaxDatagram);
 
 } // namespace ocu::osyris

@@ -30,8 +30,10 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
     o.group = c.string("group", o.group);
     if (!validIpv4(o.group))
         c.error("group", "is not an IPv4 address");
-    else if (o.addressing == Addressing::Multicast && !boost::asio::ip::make_address_v4(o.group).is_multicast())
-        c.error("group", "must be a class-D multicast address (224.0.0.0-239.255.255.255) with addressing multicast");
+    else if (o.addressing == Addressing::Multicast &&
+             !boost::asio::ip::make_address_v4(o.group).is_multicast())
+        c.error("group",
+                "must be a class-D multicast address (224.0.0.0-239.255.255.255) with addressing multicast");
     o.port = static_cast<std::uint16_t>(c.integer("port", o.port, 49152, 65535));
     o.interfaceAddress = c.string("interface", o.interfaceAddress);
     if (!validIpv4(o.interfaceAddress))
@@ -66,6 +68,15 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
                             : dir == "backward" ? DirectionFilter::Backward
                                                 : DirectionFilter::Any;
     o.passCount.minMove = c.number("minMove", 0.25, 0, 10);
+    for (auto& m : c.objectList("machines")) {
+        auto i = m.integer("idx", -1, 0, 253);
+        auto name = m.string("name", "");
+        if (i < 0)
+            m.error("idx", "is required");
+        else
+            o.machineNames[static_cast<std::uint8_t>(i)] = name;
+        m.finish();
+    }
     o.lossWaitBeats = static_cast<int>(c.integer("lossWaitBeats", o.lossWaitBeats, 0, 1000));
     o.maxNakSlots = static_cast<int>(c.integer("maxNakSlots", o.maxNakSlots, 1, 100000));
     c.finish();
@@ -79,7 +90,8 @@ std::optional<std::string> findItem(const pugi::xml_node& root, const char* name
     auto eq = [&](const char* a) {
         std::string x(a), y(name);
         return x.size() == y.size() && std::equal(x.begin(), x.end(), y.begin(), [](char p, char q) {
-                   return std::tolower(static_cast<unsigned char>(p)) == std::tolower(static_cast<unsigned char>(q));
+                   return std::tolower(static_cast<unsigned char>(p)) ==
+                          std::tolower(static_cast<unsigned char>(q));
                });
     };
     std::optional<std::string> found;
@@ -116,7 +128,8 @@ Result<OsyrisConfig> importOsyrisXml(const std::string& text, OsyrisConfig o) {
     pugi::xml_document doc;
     auto pr = doc.load_string(text.c_str());
     if (!pr)
-        return makeError(std::string("OSYRIS XML: ") + pr.description() + " at offset " + std::to_string(pr.offset));
+        return makeError(std::string("OSYRIS XML: ") + pr.description() + " at offset " +
+                         std::to_string(pr.offset));
     std::vector<std::string> errors;
     auto num = [&](const char* name, double min, double max) -> std::optional<double> {
         auto v = findItem(doc, name);
@@ -125,8 +138,8 @@ Result<OsyrisConfig> importOsyrisXml(const std::string& text, OsyrisConfig o) {
         char* end = nullptr;
         double d = std::strtod(v->c_str(), &end);
         if (end == v->c_str() || *end != '\0' || d < min || d > max) {
-            errors.push_back(std::string(name) + ": '" + *v + "' is not a number in [" + std::to_string(min) + ", " +
-                             std::to_string(max) + "]");
+            errors.push_back(std::string(name) + ": '" + *v + "' is not a number in [" + std::to_string(min) +
+                             ", " + std::to_string(max) + "]");
             return std::nullopt;
         }
         return d;
@@ -149,7 +162,7 @@ Result<OsyrisConfig> importOsyrisXml(const std::string& text, OsyrisConfig o) {
         else {
             o.group = ip;
             auto addr = boost::asio::ip::make_address_v4(ip);
-            o.addressing = addr.is_multicast()                           ? Addressing::Multicast
+            o.addressing = addr.is_multicast()               ? Addressing::Multicast
                            : (addr.to_uint() & 0xFF) == 0xFF ? Addressing::Broadcast
                                                              : Addressing::Unicast;
         }

@@ -7,6 +7,7 @@
 #include "common/Result.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,30 +27,32 @@ constexpr int kActiveDisplayMessages = 8;
 
 struct OsyrisConfig {
     Addressing addressing = Addressing::Multicast;
-    std::string group = "233.1.1.1";           // multicast group, broadcast address or unicast peer
-    std::uint16_t port = 50010;                // IANA dynamic range 49152-65535
-    std::string interfaceAddress = "0.0.0.0";  // interface for IGMP join and outbound multicast
-    std::vector<std::string> unicastPeers;     // extra "ip:port" destinations (unicast testing)
-    int multicastTtl = 1;                      // §7: TTL scoping 1
-    int beatMs = 100;                          // Beat
-    int minLen = 0;                            // MinLen (bytes queued before a flush)
-    int maxLen = 1400;                         // MaxLen (datagram size)
-    int sendPeriodMs = 5000;                   // SendPeriod
-    std::uint32_t tailPos = 0;                 // TailPos; 0 = all
-    int ttlBeats = 20;                         // TTL of requests/responses in beats
-    int active = 15;                           // Active bitmap; OCU default also displays messages
-    double maxRange = 0;                       // MaxRange [m]; 0 = unlimited
+    std::string group = "233.1.1.1";          // multicast group, broadcast address or unicast peer
+    std::uint16_t port = 50010;               // IANA dynamic range 49152-65535
+    std::string interfaceAddress = "0.0.0.0"; // interface for IGMP join and outbound multicast
+    std::vector<std::string> unicastPeers;    // extra "ip:port" destinations (unicast testing)
+    int multicastTtl = 1;                     // §7: TTL scoping 1
+    int beatMs = 100;                         // Beat
+    int minLen = 0;                           // MinLen (bytes queued before a flush)
+    int maxLen = 1400;                        // MaxLen (datagram size)
+    int sendPeriodMs = 5000;                  // SendPeriod
+    std::uint32_t tailPos = 0;                // TailPos; 0 = all
+    int ttlBeats = 20;                        // TTL of requests/responses in beats
+    int active = 15;                          // Active bitmap; OCU default also displays messages
+    double maxRange = 0;                      // MaxRange [m]; 0 = unlimited
     Checksum checksum = Checksum::None;
-    std::uint8_t stationIndex = 200;           // this station's Idx (0..253)
-    std::string sqlitePath;                    // empty = memory only
+    std::uint8_t stationIndex = 200;                    // this station's Idx (0..253)
+    std::string sqlitePath;                             // empty = memory only
     double originLat = 0, originLon = 0, originAlt = 0; // worksite centre (local x/y are ENU around it)
     PassCountSettings passCount;
+    std::map<std::uint8_t, std::string> machineNames; // Idx -> display name (the wire carries only Idx)
     // Engine tuning (not in §7)
-    int lossWaitBeats = 3;          // wait before requesting a gap (§5: until the loss can be estimated)
-    int maxNakSlots = 256;          // slots per NAK
+    int lossWaitBeats = 3; // wait before requesting a gap (§5: until the loss can be estimated)
+    int maxNakSlots = 256; // slots per NAK
     int maxNaksPerBeat = 4;
-    int maxRetxPerBeat = 200;       // positions re-sent per beat
+    int maxRetxPerBeat = 200; // positions re-sent per beat
     int maxDatagramsPerBeat = 16;
+    int answerHoldBeats = 3; // a slot re-sent this recently is not re-sent for another NAK
 };
 
 // Reads the site configuration's "osyris" object strictly (calls section.finish()).

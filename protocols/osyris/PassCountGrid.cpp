@@ -95,7 +95,9 @@ struct PassCountGrid::MachineState {
     }
 };
 
-PassCountGrid::PassCountGrid(PassCountSettings s) { setSettings(s); }
+PassCountGrid::PassCountGrid(PassCountSettings s) {
+    setSettings(s);
+}
 PassCountGrid::~PassCountGrid() = default;
 
 void PassCountGrid::setSettings(const PassCountSettings& s) {
@@ -111,21 +113,26 @@ void PassCountGrid::setSettings(const PassCountSettings& s) {
     m_dirty = false;
 }
 
-void PassCountGrid::reset() { setSettings(PassCountSettings(m_settings)); }
+void PassCountGrid::reset() {
+    setSettings(PassCountSettings(m_settings));
+}
 
-std::int32_t PassCountGrid::cellIndex(double v) const { return static_cast<std::int32_t>(std::floor(v * m_inv)); }
+std::int32_t PassCountGrid::cellIndex(double v) const {
+    return static_cast<std::int32_t>(std::floor(v * m_inv));
+}
 
 std::uint16_t* PassCountGrid::cell(std::int32_t cx, std::int32_t cy) {
     std::int32_t tx = cx >> kTileBits, ty = cy >> kTileBits;
     std::uint64_t key = cellKey(tx, ty);
-    if (key != m_lastTileKey) {
+    if (key != m_lastTileKey || !m_lastTile) { // ~0 is also tile (-1, -1): check the pointer too
         auto& t = m_tiles[key];
         if (!t)
             t = std::make_unique<Tile>();
         m_lastTile = t.get();
         m_lastTileKey = key;
     }
-    return &m_lastTile->counts[static_cast<std::size_t>(((cy & (kTileSize - 1)) << kTileBits) | (cx & (kTileSize - 1)))];
+    return &m_lastTile->counts[static_cast<std::size_t>(((cy & (kTileSize - 1)) << kTileBits) |
+                                                        (cx & (kTileSize - 1)))];
 }
 
 void PassCountGrid::sweep(MachineState& m, double ax, double ay, double bx, double by, double width) {
@@ -137,8 +144,10 @@ void PassCountGrid::sweep(MachineState& m, double ax, double ay, double bx, doub
     double xs[4] = {ax + nx * h, ax - nx * h, bx + nx * h, bx - nx * h};
     double ys[4] = {ay + ny * h, ay - ny * h, by + ny * h, by - ny * h};
     double cs = m_settings.cellSize;
-    std::int32_t cx0 = cellIndex(*std::min_element(xs, xs + 4)), cx1 = cellIndex(*std::max_element(xs, xs + 4));
-    std::int32_t cy0 = cellIndex(*std::min_element(ys, ys + 4)), cy1 = cellIndex(*std::max_element(ys, ys + 4));
+    std::int32_t cx0 = cellIndex(*std::min_element(xs, xs + 4)),
+                 cx1 = cellIndex(*std::max_element(xs, xs + 4));
+    std::int32_t cy0 = cellIndex(*std::min_element(ys, ys + 4)),
+                 cy1 = cellIndex(*std::max_element(ys, ys + 4));
     bool any = false;
     for (std::int32_t cy = cy0; cy <= cy1; ++cy) {
         double py = (cy + 0.5) * cs - ay;
@@ -205,9 +214,11 @@ void PassCountGrid::addPosition(std::uint8_t machine, const CmPos& p) {
     if (k != m.key)
         m.newTraversal(k); // forward and backward runs are separate passes (Carlson)
     const auto& s = m_settings;
-    bool count = (s.machines.empty() || s.machines.count(machine)) && (!s.vibrationOnly || (p.flags & kPosVibrating)) &&
-                 (s.direction == DirectionFilter::Any || (s.direction == DirectionFilter::Forward && k == 1) ||
-                  (s.direction == DirectionFilter::Backward && k == 2));
+    bool count =
+        (s.machines.empty() || s.machines.count(machine)) &&
+        (!s.vibrationOnly || (p.flags & kPosVibrating)) &&
+        (s.direction == DirectionFilter::Any || (s.direction == DirectionFilter::Forward && k == 1) ||
+         (s.direction == DirectionFilter::Backward && k == 2));
     if (count) {
         double w = (p.dx > 0.05 && std::isfinite(p.dx)) ? p.dx : s.defaultWidth;
         sweep(m, m.ax, m.ay, p.x, p.y, w);
@@ -244,21 +255,27 @@ int PassCountGrid::countAtCell(std::int32_t cx, std::int32_t cy) const {
     auto it = m_tiles.find(cellKey(cx >> kTileBits, cy >> kTileBits));
     if (it == m_tiles.end())
         return 0;
-    return it->second->counts[static_cast<std::size_t>(((cy & (kTileSize - 1)) << kTileBits) | (cx & (kTileSize - 1)))];
+    return it->second
+        ->counts[static_cast<std::size_t>(((cy & (kTileSize - 1)) << kTileBits) | (cx & (kTileSize - 1)))];
 }
 
-int PassCountGrid::countAt(double x, double y) const { return countAtCell(cellIndex(x), cellIndex(y)); }
+int PassCountGrid::countAt(double x, double y) const {
+    return countAtCell(cellIndex(x), cellIndex(y));
+}
 
-void PassCountGrid::countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows, std::uint16_t* out) const {
+void PassCountGrid::countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows,
+                                 std::uint16_t* out) const {
     std::lock_guard lock(m_mutex);
-    std::uint64_t lastKey = ~0ull;
+    std::uint64_t lastKey = 0;
+    bool looked = false;
     const Tile* tile = nullptr;
     for (int r = 0; r < rows; ++r) {
         std::int32_t cy = cy0 + r;
         for (int c = 0; c < cols; ++c) {
             std::int32_t cx = cx0 + c;
             std::uint64_t key = cellKey(cx >> kTileBits, cy >> kTileBits);
-            if (key != lastKey) {
+            if (!looked || key != lastKey) {
+                looked = true;
                 auto it = m_tiles.find(key);
                 tile = it == m_tiles.end() ? nullptr : it->second.get();
                 lastKey = key;

@@ -22,13 +22,13 @@ class RibbonStore;
 enum class DirectionFilter { Any, Forward, Backward };
 
 struct PassCountSettings {
-    double cellSize = 0.34;       // m (TRex default)
-    bool vibrationOnly = true;    // count only with POS_VIBRATING
+    double cellSize = 0.34;    // m (TRex default)
+    bool vibrationOnly = true; // count only with POS_VIBRATING
     DirectionFilter direction = DirectionFilter::Any;
     std::set<std::uint8_t> machines; // empty = every machine
-    double minMove = 0.25;        // m since the last counted position (Trimble GCS900)
-    double maxJump = 10.0;        // m; a longer step breaks the traversal (GCS900 "< 10 m")
-    double defaultWidth = 2.0;    // m when a position carries no extent
+    double minMove = 0.25;           // m since the last counted position (Trimble GCS900)
+    double maxJump = 10.0;           // m; a longer step breaks the traversal (GCS900 "< 10 m")
+    double defaultWidth = 2.0;       // m when a position carries no extent
     int targetMin = 3;
     int targetMax = 5;
     bool operator==(const PassCountSettings&) const = default;
@@ -40,7 +40,8 @@ struct PassCountSummary {
     double percentBelow = 0;
     double percentWithin = 0;
     double percentAbove = 0;
-    std::vector<std::uint64_t> histogram; // [n] = cells with exactly n passes (n >= 1); last bin = "n or more"
+    std::vector<std::uint64_t>
+        histogram; // [n] = cells with exactly n passes (n >= 1); last bin = "n or more"
     int targetMin = 3;
     int targetMax = 5;
 };

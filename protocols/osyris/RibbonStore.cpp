@@ -42,7 +42,9 @@ bool exec(sqlite3* db, const char* sql, std::string& err) {
 
 } // namespace
 
-std::unique_ptr<RibbonStore> RibbonStore::inMemory() { return std::unique_ptr<RibbonStore>(new RibbonStore()); }
+std::unique_ptr<RibbonStore> RibbonStore::inMemory() {
+    return std::unique_ptr<RibbonStore>(new RibbonStore());
+}
 
 Result<std::unique_ptr<RibbonStore>> RibbonStore::open(const std::string& path) {
     auto store = inMemory();
@@ -53,7 +55,8 @@ Result<std::unique_ptr<RibbonStore>> RibbonStore::open(const std::string& path) 
         std::string msg = "ribbon store " + path + ": " + what;
         return makeError(msg);
     };
-    if (sqlite3_open_v2(path.c_str(), &store->m_db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+    if (sqlite3_open_v2(path.c_str(), &store->m_db,
+                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
                         nullptr) != SQLITE_OK)
         return fail(store->m_db ? sqlite3_errmsg(store->m_db) : "cannot open");
     sqlite3_busy_timeout(store->m_db, 2000);
@@ -61,12 +64,14 @@ Result<std::unique_ptr<RibbonStore>> RibbonStore::open(const std::string& path) 
     // WAL + synchronous=FULL: a committed transaction survives an application or OS crash.
     if (!exec(store->m_db, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;", err) ||
         !exec(store->m_db,
-              "CREATE TABLE IF NOT EXISTS ribbon_pos(idx INTEGER NOT NULL, slot INTEGER NOT NULL, pos BLOB NOT NULL,"
+              "CREATE TABLE IF NOT EXISTS ribbon_pos(idx INTEGER NOT NULL, slot INTEGER NOT NULL, pos BLOB "
+              "NOT NULL,"
               " props BLOB, PRIMARY KEY(idx, slot)) WITHOUT ROWID;",
               err))
         return fail(err);
     sqlite3_stmt* sel = nullptr;
-    if (sqlite3_prepare_v2(store->m_db, "SELECT idx, slot, pos, props FROM ribbon_pos", -1, &sel, nullptr) != SQLITE_OK)
+    if (sqlite3_prepare_v2(store->m_db, "SELECT idx, slot, pos, props FROM ribbon_pos", -1, &sel, nullptr) !=
+        SQLITE_OK)
         return fail(sqlite3_errmsg(store->m_db));
     std::uint64_t bad = 0;
     while (sqlite3_step(sel) == SQLITE_ROW) {
@@ -89,10 +94,11 @@ Result<std::unique_ptr<RibbonStore>> RibbonStore::open(const std::string& path) 
     sqlite3_finalize(sel);
     if (bad)
         logWarning("osyris", "ribbon store " + path + ": skipped " + std::to_string(bad) + " malformed rows");
-    if (sqlite3_prepare_v2(store->m_db, "INSERT OR IGNORE INTO ribbon_pos(idx, slot, pos, props) VALUES(?,?,?,?)", -1,
+    if (sqlite3_prepare_v2(store->m_db,
+                           "INSERT OR IGNORE INTO ribbon_pos(idx, slot, pos, props) VALUES(?,?,?,?)", -1,
                            &store->m_insert, nullptr) != SQLITE_OK ||
-        sqlite3_prepare_v2(store->m_db, "UPDATE ribbon_pos SET props=? WHERE idx=? AND slot=?", -1, &store->m_update,
-                           nullptr) != SQLITE_OK)
+        sqlite3_prepare_v2(store->m_db, "UPDATE ribbon_pos SET props=? WHERE idx=? AND slot=?", -1,
+                           &store->m_update, nullptr) != SQLITE_OK)
         return fail(sqlite3_errmsg(store->m_db));
     return store;
 }

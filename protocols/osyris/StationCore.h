@@ -30,16 +30,17 @@ enum class Severity { Info, Warning, Error };
 
 struct MachineSnapshot {
     std::uint8_t idx = 0;
-    std::string name;        // from OsyrisStation::setMachineName, empty when unknown
+    std::string name;           // from OsyrisConfig::machineNames, empty when unknown
     double x = 0, y = 0, z = 0; // local ENU [m]
-    double lat = 0, lon = 0; // geo-referenced through the worksite origin
-    double yaw = 0;          // rad, north = 0, west = pi/2 (§6)
-    double headingDeg = 0;   // compass, clockwise from north
-    double speed = 0;        // m/s
-    double width = 0;        // m, from the position extent dx
+    double lat = 0, lon = 0;    // geo-referenced through the worksite origin
+    double yaw = 0;             // rad, north = 0, west = pi/2 (§6)
+    double headingDeg = 0;      // compass, clockwise from north
+    double speed = 0;           // m/s
+    double width = 0;           // m, from the position extent dx
     std::uint32_t flags = 0;
-    bool valid = false, vibrating = false, forward = false, backward = false, stopped = false, gpsShadow = false;
-    int accuracy = 0;        // 0 none, 1 low, 2 medium, 3 high
+    bool valid = false, vibrating = false, forward = false, backward = false, stopped = false,
+         gpsShadow = false;
+    int accuracy = 0;             // 0 none, 1 low, 2 medium, 3 high
     std::int64_t timestampMs = 0; // Unix ms from the FILETIME
     std::uint32_t slot = 0;
 };
@@ -56,7 +57,8 @@ struct OsyrisListener {
     virtual void onPong(std::uint8_t /*idx*/, double /*rttMs*/, float /*x*/, float /*y*/) {}
 };
 
-MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* frame = nullptr);
+MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* frame = nullptr,
+                             const std::string& name = {});
 
 class StationCore {
 public:
@@ -133,6 +135,7 @@ private:
     void sendAlive();
     int rankFor(std::uint8_t owner) const;
     std::optional<CmPos> ownPosition() const;
+    std::string nameOf(std::uint8_t owner) const;
     void event(Severity s, const std::string& text);
     void reject(const std::string& reason, const std::string& text);
 
@@ -163,6 +166,12 @@ private:
     std::uint32_t m_nextOwnSlot = 0;
     std::set<std::uint8_t> m_gridDirty;
     std::map<std::string, std::uint64_t> m_rejectLogged;
+    // Slots this station re-sent recently, per ribbon: a NAK that crossed our answer on the air is not
+    // answered twice (the requester asks again after TTL if the answer was lost).
+    std::map<std::uint8_t, std::map<std::uint32_t, TimePoint>> m_recentlySent;
+    // First time a NAK for (ribbon, slot) was overheard: a non-owner answers only a repeated NAK, i.e. when
+    // the owner evidently did not (out of range, or its answer was lost).
+    std::map<std::uint8_t, std::map<std::uint32_t, TimePoint>> m_nakSeen;
 };
 
 } // namespace ocu::osyris

@@ -53,7 +53,7 @@ private slots:
         QCOMPARE(drains, 1);
         QCOMPARE(got.size(), size_t(1000));
         for (int k = 0; k < 1000; ++k) {
-            QCOMPARE(got[size_t(k)].first, k); // first-push order
+            QCOMPARE(got[size_t(k)].first, k);              // first-push order
             QCOMPARE(got[size_t(k)].second, 9 * 10000 + k); // latest value wins
         }
         const auto st = c.stats();
@@ -162,6 +162,26 @@ private slots:
         QCOMPARE(model.rowOf(m.id), -1);
     }
 
+    void staleThresholdPerProtocol() {
+        qint64 now = 2'000'000;
+        FleetModel model;
+        model.setRefreshIntervalMs(0);
+        model.setClock([&] { return now; });
+        model.setStaleAfterMs(5000);
+        model.setStaleAfterMs(Protocol::Osyris, 1000);
+        MachineState a = machine(QStringLiteral("jaus:1"));
+        MachineState b = machine(QStringLiteral("osyris:1"));
+        a.lastDataMs = b.lastDataMs = now;
+        model.upsert({a, b});
+        now += 2000;
+        model.refresh();
+        QVERIFY(!model.isStale(a.id));
+        QVERIFY(model.isStale(b.id));
+        model.setStaleAfterMs(Protocol::Osyris, -1); // back to the default
+        model.refresh();
+        QVERIFY(!model.isStale(b.id));
+    }
+
     void explicitRemovalThroughTheBridge() {
         FakeFleetBridge bridge(Protocol::Osyris);
         FleetModel model;
@@ -245,6 +265,20 @@ private slots:
         QCOMPARE(sel.selectedIds(), QStringList{QStringLiteral("jaus:2")});
         sel.clear();
         QVERIFY(sel.selectedIds().isEmpty());
+
+        // Mapping through a proxy chain.
+        model.upsert({machine(QStringLiteral("jaus:7"), 5), machine(QStringLiteral("jaus:8"), 1)});
+        FleetFilterProxy proxy;
+        proxy.setSourceModel(&model);
+        proxy.sort(FleetModel::ColEast);
+        FleetFilterProxy outer;
+        outer.setSourceModel(&proxy);
+        const QModelIndex p = sel.indexFor(QStringLiteral("jaus:8"), &proxy);
+        QCOMPARE(p.model(), &proxy);
+        QCOMPARE(FleetSelection::idAt(p), QStringLiteral("jaus:8"));
+        QCOMPARE(FleetSelection::idAt(sel.indexFor(QStringLiteral("jaus:7"), &outer)),
+                 QStringLiteral("jaus:7"));
+        QVERIFY(!sel.indexFor(QStringLiteral("nope"), &proxy).isValid());
     }
 };
 

@@ -26,6 +26,22 @@ private slots:
         QCOMPARE(out, (std::vector<std::uint16_t>{0, 0, 0, 1}));
     }
 
+    void changedCellsAreTracked() {
+        GridPassCountLayer g({0, 0}, 1.0, 100, 100);
+        const quint64 r0 = g.revision();
+        QVERIFY(g.changedCellsSince(r0).isEmpty());
+        g.setCount(5, 6, 2);
+        const quint64 r1 = g.revision();
+        g.fillRect(QRect(10, 10, 5, 5), 3);
+        QCOMPARE(g.changedCellsSince(r1), QRect(10, 10, 5, 5));
+        QCOMPARE(g.changedCellsSince(r0), QRect(5, 6, 10, 9));
+        // Older than the kept history: everything.
+        for (int i = 0; i < 600; ++i)
+            g.addPass(50.5, 50.5);
+        QCOMPARE(g.changedCellsSince(r0), QRect(0, 0, 100, 100));
+        QCOMPARE(g.changedCellsSince(g.revision() - 1), QRect(50, 50, 1, 1));
+    }
+
     void palettesFollowTRex() {
         QCOMPARE(passCountDiscreteColor(1), QColor(0x00, 0xA4, 0xA4));
         QCOMPARE(passCountDiscreteColor(4), QColor(0xAE, 0xAE, 0x00));
@@ -40,9 +56,9 @@ private slots:
 
     void summaryBelowWithinAbove() {
         GridPassCountLayer g({0, 0}, 2.0, 10, 10);
-        g.fillRect(QRect(0, 0, 10, 1), 1);  // 10 cells below
-        g.fillRect(QRect(0, 1, 10, 2), 4);  // 20 cells within
-        g.fillRect(QRect(0, 3, 5, 2), 12);  // 10 cells above
+        g.fillRect(QRect(0, 0, 10, 1), 1); // 10 cells below
+        g.fillRect(QRect(0, 1, 10, 2), 4); // 20 cells within
+        g.fillRect(QRect(0, 3, 5, 2), 12); // 10 cells above
         const PassCountSummary s = summarize(g, {3, 5});
         QCOMPARE(s.coveredCells, qint64(40));
         QCOMPARE(s.coveredArea, 160.0);
@@ -57,10 +73,20 @@ private slots:
     void siteMapBoundsAndTaskColours() {
         SiteMapData d;
         QVERIFY(d.bounds().isNull());
-        d.features.push_back({QStringLiteral("r1"), QStringLiteral("Ramp"), MapFeatureKind::Road,
-                              QStringLiteral("haul"), true, {{-10, 5}, {30, 40}}, 8});
-        d.features.push_back({QStringLiteral("a1"), QStringLiteral("Pit"), MapFeatureKind::Area,
-                              QStringLiteral("load"), true, {{0, -20}, {10, -20}, {5, 0}}, 0});
+        d.features.push_back({QStringLiteral("r1"),
+                              QStringLiteral("Ramp"),
+                              MapFeatureKind::Road,
+                              QStringLiteral("haul"),
+                              true,
+                              {{-10, 5}, {30, 40}},
+                              8});
+        d.features.push_back({QStringLiteral("a1"),
+                              QStringLiteral("Pit"),
+                              MapFeatureKind::Area,
+                              QStringLiteral("load"),
+                              true,
+                              {{0, -20}, {10, -20}, {5, 0}},
+                              0});
         QCOMPARE(d.bounds(), QRectF(QPointF(-10, -20), QPointF(30, 40)));
         QVERIFY(taskColor(QStringLiteral("haul")) != taskColor(QStringLiteral("load")));
         QCOMPARE(taskColor(QStringLiteral("Custom")), taskColor(QStringLiteral("custom")));

@@ -135,7 +135,8 @@ private slots:
         alarms.setMaxEntries(1000);
         // Still there after time passes and more events arrive.
         for (int i = 0; i < 50; ++i)
-            alarms.add(makeEvent(EventSeverity::Info, EventKind::Info, {}, QStringLiteral("noise %1").arg(i)));
+            alarms.add(
+                makeEvent(EventSeverity::Info, EventKind::Info, {}, QStringLiteral("noise %1").arg(i)));
         QCOMPARE(alarms.unacknowledgedCount(), 2);
         alarms.acknowledge(0);
         QCOMPARE(alarms.unacknowledgedCount(), 1);
@@ -158,8 +159,10 @@ private slots:
         alarms.addBridge(&bridge);
         alarms.watchFleet(&fleet);
 
-        bridge.publishLink({QStringLiteral("ahs-1"), LinkState::Down, 12000, QStringLiteral("heartbeat timeout")});
-        bridge.publishLink({QStringLiteral("ahs-1"), LinkState::Down, 13000, QStringLiteral("heartbeat timeout")});
+        bridge.publishLink(
+            {QStringLiteral("ahs-1"), LinkState::Down, 12000, QStringLiteral("heartbeat timeout")});
+        bridge.publishLink(
+            {QStringLiteral("ahs-1"), LinkState::Down, 13000, QStringLiteral("heartbeat timeout")});
         QCoreApplication::processEvents();
         QCOMPARE(alarms.unacknowledgedCount(), 1); // coalesced + deduplicated
         QCOMPARE(alarms.eventAt(0).kind, EventKind::LinkLoss);
@@ -184,7 +187,8 @@ private slots:
         QCOMPARE(alarms.eventAt(2).kind, EventKind::Timeout);
 
         // Bridge events pass through.
-        FleetEvent ev = makeEvent(EventSeverity::Warning, EventKind::Discrepancy, {}, QStringLiteral("fleet differs"));
+        FleetEvent ev =
+            makeEvent(EventSeverity::Warning, EventKind::Discrepancy, {}, QStringLiteral("fleet differs"));
         bridge.publishEvent(ev);
         QCoreApplication::processEvents();
         QCOMPARE(alarms.eventAt(alarms.rowCount() - 1).kind, EventKind::Discrepancy);

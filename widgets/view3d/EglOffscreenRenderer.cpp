@@ -2,6 +2,8 @@
 
 #include "widgets/view3d/SiteSceneRenderer.h"
 
+#include "common/Log.h"
+
 // GLEW first (it must precede any GL header); VTK uses the system GLEW on Debian.
 #include <vtk_glew.h>
 
@@ -237,7 +239,10 @@ bool EglOffscreenRenderer::initialize() {
     if (d->tried)
         return d->backend != Backend::None;
     d->tried = true;
-    if (d->initEgl())
+    // OCU_VIEW3D_NO_EGL=1 skips EGL (diagnosis, and tests of the fallback paths).
+    if (qEnvironmentVariableIntValue("OCU_VIEW3D_NO_EGL") == 1)
+        d->error = QStringLiteral("EGL disabled by OCU_VIEW3D_NO_EGL=1");
+    else if (d->initEgl())
         return true;
     const QString eglError = d->error;
     d->window = nullptr;
@@ -246,7 +251,10 @@ bool EglOffscreenRenderer::initialize() {
         d->error.clear();
         return true;
     }
-    d->error = eglError + QStringLiteral("; no X server for the fallback (DISPLAY is not set)");
+    d->error = eglError + (qEnvironmentVariable("DISPLAY").isEmpty()
+                               ? QStringLiteral("; no X server for the fallback (DISPLAY is not set)")
+                               : QStringLiteral("; the X server in DISPLAY is not reachable"));
+    logWarning("ocu.view3d", d->error.toStdString());
     return false;
 }
 
@@ -284,12 +292,14 @@ QImage EglOffscreenRenderer::render(SiteSceneRenderer& scene, QSize size) {
     renderer->ResetCameraClippingRange();
     rw->Render();
     const int w = size.width(), h = size.height();
-    if (rw->GetPixelData(0, 0, w - 1, h - 1, 0, d->pixels) != 1 /* VTK_OK */) {
+    // RGBA is the framebuffer's own layout (a plain copy in Mesa; RGB would be converted pixel by pixel).
+    // The background's alpha is 0 (toolchain.md pitfall), so the image format ignores alpha.
+    if (rw->GetRGBACharPixelData(0, 0, w - 1, h - 1, 0, d->pixels) != 1 /* VTK_OK */) {
         d->error = QStringLiteral("reading the rendered pixels failed");
         return {};
     }
     // VTK's origin is bottom-left; mirrored() also makes the deep copy.
-    const QImage wrapped(d->pixels->GetPointer(0), w, h, w * 3, QImage::Format_RGB888);
+    const QImage wrapped(d->pixels->GetPointer(0), w, h, w * 4, QImage::Format_RGBX8888);
     return wrapped.mirrored(false, true);
 }
 

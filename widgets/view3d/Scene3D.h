@@ -49,7 +49,7 @@ struct Machine3D {
     QString id;
     double e = 0.0;
     double n = 0.0;
-    double u = 0.0;          // ground height under the machine (the box sits on it)
+    double u = 0.0;          // height of the box bottom (replaced by the terrain height, see Scene3D)
     double headingDeg = 0.0; // 0 = north, clockwise
     double length = 10.0;    // along the heading
     double width = 4.0;
@@ -86,8 +86,39 @@ struct Scene3D {
     PassCountRaster passCount;
     std::vector<LegendEntry> legend; // pass-count legend (same palette as the 2D map)
     Rgb background{200, 215, 235};
+    // Machines stand on the terrain: their u is replaced by the terrain height under (e, n). Turn off only
+    // when u is a trusted height in the same vertical datum as the terrain points.
+    bool clampMachinesToTerrain = true;
 };
 
 enum class CameraMode { FreeOrbit, FollowSelected, TopDown };
+
+// Box size for a machine whose footprint is unknown (0), by equipment type text (case-insensitive match on
+// common words). Rough public figures: a 100 t rigid haul truck is ~10 x 6 x 6 m, a tandem roller ~5 x 2 x 3
+// m.
+struct MachineSize {
+    double length, width, height;
+};
+inline MachineSize defaultMachineSize(const QString& type) {
+    const QString t = type.toLower();
+    if (t.contains(QLatin1String("haul")) || t.contains(QLatin1String("truck")) ||
+        t.contains(QLatin1String("dump")))
+        return {10.0, 6.0, 6.0};
+    if (t.contains(QLatin1String("excavat")) || t.contains(QLatin1String("shovel")))
+        return {11.0, 5.0, 5.0};
+    if (t.contains(QLatin1String("loader")) || t.contains(QLatin1String("dozer")) ||
+        t.contains(QLatin1String("grader")))
+        return {8.0, 4.0, 4.0};
+    if (t.contains(QLatin1String("roller")) || t.contains(QLatin1String("compact")))
+        return {5.0, 2.2, 3.0};
+    if (t.contains(QLatin1String("paver")))
+        return {6.5, 3.2, 3.5};
+    if (t.contains(QLatin1String("ugv")) || t.contains(QLatin1String("robot")))
+        return {1.5, 1.0, 1.0};
+    if (t.contains(QLatin1String("car")) || t.contains(QLatin1String("light")) ||
+        t.contains(QLatin1String("pickup")))
+        return {5.0, 2.0, 2.0};
+    return {6.0, 3.0, 3.0};
+}
 
 } // namespace ocu

@@ -1,14 +1,18 @@
 #include "widgets/view3d/SiteSceneRenderer.h"
 
+#include "common/Log.h"
+
 #include <vtkActor.h>
-#include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCoordinate.h>
 #include <vtkCubeSource.h>
 #include <vtkDelaunay2D.h>
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkGlyph3DMapper.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -18,7 +22,9 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTexture.h>
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -41,6 +47,18 @@ constexpr double kLiftArea = 0.08;
 constexpr double kLiftRoad = 0.15;
 constexpr double kLiftLane = 0.22;
 constexpr double kLiftPassCount = 0.30;
+constexpr std::int64_t kMaxRasterCells = 64'000'000; // beyond this the raster is refused (256 MB of RGBA)
+constexpr int kMaxTextureSide = 8192;                // larger rasters are sampled down for the texture
+constexpr const char* kLogCategory = "ocu.view3d";
+
+bool finite(const Enu& p) {
+    return std::isfinite(p.e) && std::isfinite(p.n) && std::isfinite(p.u);
+}
+
+bool finite(const Machine3D& m) {
+    return std::isfinite(m.e) && std::isfinite(m.n) && std::isfinite(m.u) && std::isfinite(m.headingDeg) &&
+           std::isfinite(m.length) && std::isfinite(m.width) && std::isfinite(m.height);
+}
 
 struct Vec3 {
     double x, y, z;
@@ -86,6 +104,10 @@ public:
     }
 
     bool valid() const { return !m_buckets.empty(); }
+    double minE() const { return m_minE; }
+    double maxE() const { return m_maxE; }
+    double minN() const { return m_minN; }
+    double maxN() const { return m_maxN; }
 
     double height(double e, double n) const {
         // Outside the hull: clamp into the bounding box, then fall back to the nearest vertex of the bucket.
@@ -157,6 +179,9 @@ struct SiteSceneRenderer::Impl {
     vtkNew<vtkPolyDataMapper> terrainMapper;
     TriangleIndex terrainIndex;
     bool flatTerrain = true;
+    double drapeStep = 2.0;                       // resampling distance of draped layers (m)
+    double flatU = 0.0;                           // plane height when flat
+    std::array<double, 4> flatExtent{0, 0, 0, 0}; // minE, maxE, minN, maxN of the plane
 
     // Ways
     vtkNew<vtkActor> ribbonActor;
@@ -168,6 +193,9 @@ struct SiteSceneRenderer::Impl {
     // Pass count
     vtkNew<vtkActor> passActor;
     vtkNew<vtkPolyDataMapper> passMapper;
+    vtkNew<vtkImageData> passImage;
+    vtkNew<vtkTexture> passTexture;
+    std::array<double, 4> passGeometry{0, 0, 0, 0}; // origin, cell size, cols/rows of the current mesh
 
     // Machines: one instanced glyph mapper (one draw call for all boxes), arrays updated in place.
     vtkNew<vtkCubeSource> box;
@@ -184,7 +212,8 @@ struct SiteSceneRenderer::Impl {
     vtkNew<vtkCubeSource> selectionBox;
     vtkNew<vtkPolyDataMapper> selectionMapper;
     vtkNew<vtkActor> selectionActor;
-    vtkNew<vtkBillboardTextActor3D> label;
+    vtkNew<vtkTextActor> label; // 2D overlay anchored to a world point (no translucent pass)
+    vtkNew<vtkCoordinate> labelAnchor;
 
     Scene3D scene;
     QString selected;
@@ -194,9 +223,14 @@ struct SiteSceneRenderer::Impl {
     std::optional<Vec3> followAnchor; // last machine centre the follow camera was aligned to
     std::uint64_t buildCount = 0;
     std::uint64_t layoutCount = 0;
+    std::size_t lastBadMachines = 0;
 
     Impl() {
         renderer->SetBackground(0.78, 0.84, 0.92);
+        // Nothing is drawn in VTK's translucent pass: in 9.1 that pass always runs order-independent
+        // transparency (extra full-screen passes, several ms per frame on llvmpipe). The pass-count surface
+        // is forced opaque (its no-data texels still blend away) and the label is a 2D overlay.
+        renderer->UseDepthPeelingOff();
         renderer->AddActor(terrainActor);
         renderer->AddActor(areaActor);
         renderer->AddActor(ribbonActor);
@@ -217,13 +251,21 @@ struct SiteSceneRenderer::Impl {
         areaActor->SetMapper(areaMapper);
         configureDirectColours(areaMapper, true);
         passActor->SetMapper(passMapper);
-        configureDirectColours(passMapper, true);
+        passMapper->ScalarVisibilityOff();
+        passTexture->SetInputData(passImage);
+        passTexture->InterpolateOff(); // crisp cells, exact palette colours
+        passTexture->RepeatOff();
+        passTexture->EdgeClampOn();
+        passActor->SetTexture(passTexture);
+        passActor->GetProperty()->LightingOff(); // the same colours as the 2D map and the legend
+        passActor->ForceOpaqueOn();              // see UseDepthPeelingOff above; alpha-0 texels blend away
+        passActor->SetVisibility(false);
         // Draped layers are pulled towards the camera in depth so that they win over the terrain at any
         // distance.
         areaMapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-1, -2);
         ribbonMapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2, -4);
         passMapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-3, -6);
-        for (vtkActor* a : {ribbonActor.Get(), areaActor.Get(), passActor.Get()}) {
+        for (vtkActor* a : {ribbonActor.Get(), areaActor.Get()}) {
             a->GetProperty()->SetAmbient(0.5);
             a->GetProperty()->SetDiffuse(0.5);
         }
@@ -269,19 +311,36 @@ struct SiteSceneRenderer::Impl {
         label->GetTextProperty()->SetBackgroundColor(0.1, 0.1, 0.1);
         label->GetTextProperty()->SetBackgroundOpacity(0.7);
         label->GetTextProperty()->SetJustificationToCentered();
+        // Text sits above its anchor so it never hides the machine it names.
+        label->GetTextProperty()->SetVerticalJustificationToBottom();
+        // Anchored 1.5 m above the machine roof, then lifted 14 px on screen.
+        labelAnchor->SetCoordinateSystemToWorld();
+        label->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+        label->GetPositionCoordinate()->SetReferenceCoordinate(labelAnchor);
+        label->GetPositionCoordinate()->SetValue(0.0, 14.0);
         label->SetVisibility(false);
     }
 
     double height(double e, double n) const {
         if (!flatTerrain && terrainIndex.valid())
             return terrainIndex.height(e, n);
-        return scene.terrain.planeU;
+        return flatU;
     }
 
     void buildTerrain() {
         const Terrain3D& t = scene.terrain;
         flatTerrain = true;
         vtkSmartPointer<vtkPolyData> surface;
+        const auto bad =
+            std::count_if(t.points.begin(), t.points.end(), [](const Enu& p) { return !finite(p); });
+        if (bad > 0) {
+            logWarning(kLogCategory,
+                       "terrain: " + std::to_string(bad) + " point(s) with non-finite coordinates ignored");
+            scene.terrain.points.erase(std::remove_if(scene.terrain.points.begin(),
+                                                      scene.terrain.points.end(),
+                                                      [](const Enu& p) { return !finite(p); }),
+                                       scene.terrain.points.end());
+        }
         if (t.points.size() >= 3) {
             vtkNew<vtkPoints> pts;
             for (const Enu& p : t.points)
@@ -309,6 +368,11 @@ struct SiteSceneRenderer::Impl {
                             {static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2])});
                 terrainIndex.build(verts, std::move(tris));
                 flatTerrain = !terrainIndex.valid();
+                // Draped layers are resampled at half the mean terrain point spacing: finer adds triangles
+                // (llvmpipe pays per triangle) without following the piecewise-linear surface any better.
+                const double area = std::max(1.0, (terrainIndex.maxE() - terrainIndex.minE()) *
+                                                      (terrainIndex.maxN() - terrainIndex.minN()));
+                drapeStep = std::clamp(std::sqrt(area / static_cast<double>(verts.size())) / 2.0, 1.0, 25.0);
                 surface = vtkSmartPointer<vtkPolyData>::New();
                 surface->SetPoints(out->GetPoints());
                 surface->SetPolys(out->GetPolys());
@@ -329,12 +393,33 @@ struct SiteSceneRenderer::Impl {
             }
         }
         if (flatTerrain) {
+            // No usable elevations: the given plane, or (points too few or collinear) a plane through their
+            // mean height covering their extent plus a margin.
+            flatU = t.planeU;
+            flatExtent = {std::min(t.minE, t.maxE), std::max(t.minE, t.maxE), std::min(t.minN, t.maxN),
+                          std::max(t.minN, t.maxN)};
+            if (!t.points.empty()) {
+                double sumU = 0.0;
+                flatExtent = {t.points[0].e, t.points[0].e, t.points[0].n, t.points[0].n};
+                for (const Enu& p : t.points) {
+                    sumU += p.u;
+                    flatExtent[0] = std::min(flatExtent[0], p.e - 50.0);
+                    flatExtent[1] = std::max(flatExtent[1], p.e + 50.0);
+                    flatExtent[2] = std::min(flatExtent[2], p.n - 50.0);
+                    flatExtent[3] = std::max(flatExtent[3], p.n + 50.0);
+                }
+                flatU = sumU / static_cast<double>(t.points.size());
+            }
+            if (flatExtent[1] - flatExtent[0] < 1.0)
+                flatExtent[1] = flatExtent[0] + 1.0;
+            if (flatExtent[3] - flatExtent[2] < 1.0)
+                flatExtent[3] = flatExtent[2] + 1.0;
             surface = vtkSmartPointer<vtkPolyData>::New();
             vtkNew<vtkPoints> pts;
-            pts->InsertNextPoint(t.minE, t.minN, t.planeU);
-            pts->InsertNextPoint(t.maxE, t.minN, t.planeU);
-            pts->InsertNextPoint(t.maxE, t.maxN, t.planeU);
-            pts->InsertNextPoint(t.minE, t.maxN, t.planeU);
+            pts->InsertNextPoint(flatExtent[0], flatExtent[2], flatU);
+            pts->InsertNextPoint(flatExtent[1], flatExtent[2], flatU);
+            pts->InsertNextPoint(flatExtent[1], flatExtent[3], flatU);
+            pts->InsertNextPoint(flatExtent[0], flatExtent[3], flatU);
             vtkNew<vtkCellArray> quad;
             const vtkIdType ids[4] = {0, 1, 2, 3};
             quad->InsertNextCell(4, ids);
@@ -351,9 +436,9 @@ struct SiteSceneRenderer::Impl {
     // Draped ribbon: the centre line is resampled every `step` metres so the ribbon follows the terrain.
     void addRibbon(const Way3D& w, double lift, vtkPoints* pts, vtkCellArray* tris,
                    vtkUnsignedCharArray* colours) {
-        if (w.points.size() < 2 || w.width <= 0.0)
+        if (w.points.size() < 2 || !(w.width > 0.0) || !std::isfinite(w.width))
             return;
-        const double step = flatTerrain ? 1e9 : 2.0;
+        const double step = flatTerrain ? 1e9 : drapeStep;
         std::vector<std::pair<double, double>> line;
         for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
             const Enu& a = w.points[i];
@@ -433,7 +518,7 @@ struct SiteSceneRenderer::Impl {
         areaTriangles->Update();
         vtkPolyData* tri = areaTriangles->GetOutput();
         vtkDataArray* triColours = tri->GetCellData()->GetScalars();
-        const double step = flatTerrain ? 1e9 : 4.0;
+        const double step = flatTerrain ? 1e9 : drapeStep;
         vtkIdType npts = 0;
         const vtkIdType* ids = nullptr;
         vtkIdType cell = 0;
@@ -482,38 +567,90 @@ struct SiteSceneRenderer::Impl {
         areaMapper->SetInputData(areas);
     }
 
+    // The raster is a texture (one texel per cell, nearest filtering) on a mesh draped over the terrain, so a
+    // fine grid (1 km² at 0.34 m = 8.6 M cells) costs one texture upload, not millions of quads.
     void buildPassCount() {
         const PassCountRaster& r = scene.passCount;
-        vtkNew<vtkPoints> pts;
-        vtkNew<vtkCellArray> quads;
-        auto colours = makeColours(4, "colour");
-        bool translucent = false;
-        if (!r.empty() && r.cellSize > 0.0) {
-            for (int row = 0; row < r.rows; ++row) {
-                for (int col = 0; col < r.cols; ++col) {
-                    const std::size_t o = (static_cast<std::size_t>(row) * r.cols + col) * 4;
-                    if (r.rgba[o + 3] == 0)
-                        continue;
-                    const double e0 = r.originE + col * r.cellSize, e1 = e0 + r.cellSize;
-                    const double n0 = r.originN + row * r.cellSize, n1 = n0 + r.cellSize;
-                    vtkIdType ids[4];
-                    ids[0] = pts->InsertNextPoint(e0, n0, height(e0, n0) + kLiftPassCount);
-                    ids[1] = pts->InsertNextPoint(e1, n0, height(e1, n0) + kLiftPassCount);
-                    ids[2] = pts->InsertNextPoint(e1, n1, height(e1, n1) + kLiftPassCount);
-                    ids[3] = pts->InsertNextPoint(e0, n1, height(e0, n1) + kLiftPassCount);
-                    quads->InsertNextCell(4, ids);
-                    colours->InsertNextTuple4(r.rgba[o], r.rgba[o + 1], r.rgba[o + 2], r.rgba[o + 3]);
-                    translucent = translucent || r.rgba[o + 3] < 255;
-                }
-            }
+        bool usable = !r.empty() && r.cellSize > 0.0 && std::isfinite(r.cellSize) &&
+                      std::isfinite(r.originE) && std::isfinite(r.originN);
+        if (usable && static_cast<std::int64_t>(r.cols) * r.rows > kMaxRasterCells) {
+            logWarning(kLogCategory, "pass-count raster of " + std::to_string(r.cols) + " x " +
+                                         std::to_string(r.rows) +
+                                         " cells is too large for the 3D view; not drawn");
+            usable = false;
+        } else if (!usable && (r.cols > 0 || r.rows > 0)) {
+            logWarning(kLogCategory,
+                       "pass-count raster ignored: rgba must hold cols*rows*4 bytes and the cell size "
+                       "must be positive");
         }
+        passActor->SetVisibility(usable);
+        if (!usable) {
+            passGeometry = {};
+            return;
+        }
+        const std::array<double, 4> geometry{r.originE, r.originN, r.cellSize,
+                                             static_cast<double>(r.cols) * 1e6 + r.rows};
+        if (geometry != passGeometry) {
+            passGeometry = geometry;
+            buildPassMesh();
+        }
+        fillPassTexture();
+    }
+
+    void buildPassMesh() {
+        const PassCountRaster& r = scene.passCount;
+        const double e0 = r.originE, n0 = r.originN;
+        const double we = r.cols * r.cellSize, wn = r.rows * r.cellSize;
+        // Flat ground needs one quad; on terrain the mesh follows it every drapeStep (at most 128 x 128
+        // quads).
+        const int nx = flatTerrain ? 1 : std::clamp(static_cast<int>(std::ceil(we / drapeStep)), 1, 128);
+        const int ny = flatTerrain ? 1 : std::clamp(static_cast<int>(std::ceil(wn / drapeStep)), 1, 128);
+        vtkNew<vtkPoints> pts;
+        vtkNew<vtkFloatArray> tcoords;
+        tcoords->SetNumberOfComponents(2);
+        tcoords->SetName("tcoords");
+        for (int j = 0; j <= ny; ++j)
+            for (int i = 0; i <= nx; ++i) {
+                const double s = static_cast<double>(i) / nx, t = static_cast<double>(j) / ny;
+                const double e = e0 + s * we, n = n0 + t * wn;
+                pts->InsertNextPoint(e, n, height(e, n) + kLiftPassCount);
+                tcoords->InsertNextTuple2(s, t);
+            }
+        vtkNew<vtkCellArray> quads;
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const vtkIdType a = j * (nx + 1) + i;
+                const vtkIdType ids[4] = {a, a + 1, a + nx + 2, a + nx + 1};
+                quads->InsertNextCell(4, ids);
+            }
         vtkNew<vtkPolyData> surface;
         surface->SetPoints(pts);
         surface->SetPolys(quads);
-        surface->GetCellData()->SetScalars(colours);
+        surface->GetPointData()->SetTCoords(tcoords);
         passMapper->SetInputData(surface);
-        passActor->SetVisibility(quads->GetNumberOfCells() > 0);
-        (void)translucent; // RGBA scalars with alpha < 255 are drawn in VTK's translucent pass automatically
+    }
+
+    void fillPassTexture() {
+        const PassCountRaster& r = scene.passCount;
+        // Very large rasters are sampled down to what every GL implementation can hold (nearest cell).
+        const int step = std::max({1, (r.cols + kMaxTextureSide - 1) / kMaxTextureSide,
+                                   (r.rows + kMaxTextureSide - 1) / kMaxTextureSide});
+        const int tw = (r.cols + step - 1) / step, th = (r.rows + step - 1) / step;
+        if (passImage->GetDimensions()[0] != tw || passImage->GetDimensions()[1] != th) {
+            passImage->SetDimensions(tw, th, 1);
+            passImage->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+        }
+        auto* dst = static_cast<std::uint8_t*>(passImage->GetScalarPointer());
+        // Row 0 is the south row in both the raster and VTK images (origin bottom-left): a straight copy.
+        if (step == 1) {
+            std::copy_n(r.rgba.data(), static_cast<std::size_t>(tw) * th * 4, dst);
+        } else {
+            for (int y = 0; y < th; ++y)
+                for (int x = 0; x < tw; ++x)
+                    std::copy_n(&r.rgba[(static_cast<std::size_t>(y) * step * r.cols + x * step) * 4], 4,
+                                &dst[(static_cast<std::size_t>(y) * tw + x) * 4]);
+        }
+        passImage->Modified();
     }
 
     void layoutMachines() {
@@ -529,6 +666,15 @@ struct SiteSceneRenderer::Impl {
     }
 
     void writeMachine(vtkIdType i, const Machine3D& m) {
+        if (!finite(m)) {
+            // Hidden (zero-size box) rather than dropped, so indices stay stable and the next good update
+            // shows it.
+            machinePoints->SetPoint(i, 0.0, 0.0, 0.0);
+            machineScale->SetTuple3(i, 0.0, 0.0, 0.0);
+            machineRotation->SetTuple3(i, 0.0, 0.0, 0.0);
+            machineColour->SetTuple3(i, 0, 0, 0);
+            return;
+        }
         machinePoints->SetPoint(i, m.e, m.n, m.u);
         machineScale->SetTuple3(i, std::max(m.width, 0.1), std::max(m.length, 0.1), std::max(m.height, 0.1));
         machineRotation->SetTuple3(i, 0.0, 0.0,
@@ -541,13 +687,24 @@ struct SiteSceneRenderer::Impl {
         for (std::size_t i = 0; sameSet && i < machines.size(); ++i)
             sameSet = machines[i].id == scene.machines[i].id;
         scene.machines = machines;
+        if (scene.clampMachinesToTerrain)
+            for (Machine3D& m : scene.machines)
+                if (std::isfinite(m.e) && std::isfinite(m.n))
+                    m.u = height(m.e, m.n);
         if (!sameSet)
             layoutMachines();
-        for (std::size_t i = 0; i < machines.size(); ++i) {
-            writeMachine(static_cast<vtkIdType>(i), machines[i]);
-            if (machines[i].selected)
-                selected = machines[i].id;
+        std::size_t bad = 0;
+        for (std::size_t i = 0; i < scene.machines.size(); ++i) {
+            const Machine3D& m = scene.machines[i];
+            writeMachine(static_cast<vtkIdType>(i), m);
+            bad += finite(m) ? 0 : 1;
+            if (m.selected)
+                selected = m.id;
         }
+        if (bad != lastBadMachines) // only on change: updates come at 10 Hz
+            logWarning(kLogCategory,
+                       std::to_string(bad) + " machine(s) with non-finite pose or size are hidden");
+        lastBadMachines = bad;
         machinePoints->Modified();
         machineScale->Modified();
         machineRotation->Modified();
@@ -557,11 +714,13 @@ struct SiteSceneRenderer::Impl {
         updateSelection();
     }
 
+    // The machine with that id, if it is known and drawable.
     const Machine3D* find(const QString& id) const {
         const auto it = machineIndex.constFind(id);
         if (id.isEmpty() || it == machineIndex.constEnd())
             return nullptr;
-        return &scene.machines[static_cast<std::size_t>(*it)];
+        const Machine3D* m = &scene.machines[static_cast<std::size_t>(*it)];
+        return finite(*m) ? m : nullptr;
     }
 
     void updateSelection() {
@@ -572,7 +731,8 @@ struct SiteSceneRenderer::Impl {
             selectionActor->SetPosition(m->e, m->n, m->u);
             selectionActor->SetOrientation(0.0, 0.0, -m->headingDeg);
             selectionActor->SetScale(m->width + 0.6, m->length + 0.6, m->height + 0.3);
-            label->SetPosition(m->e, m->n, m->u + m->height + 1.5);
+            labelAnchor->SetValue(m->e, m->n, m->u + m->height + 1.5);
+            label->Modified();
             const QString text = m->label.isEmpty() ? m->id : m->label;
             label->SetInput(text.toUtf8().constData());
         }
@@ -613,26 +773,27 @@ struct SiteSceneRenderer::Impl {
     }
 
     void siteBounds(double b[6]) const {
-        const Terrain3D& t = scene.terrain;
-        double e0 = t.minE, e1 = t.maxE, n0 = t.minN, n1 = t.maxN, u0 = t.planeU, u1 = t.planeU;
-        if (!t.points.empty()) {
-            e0 = n0 = u0 = std::numeric_limits<double>::max();
-            e1 = n1 = u1 = std::numeric_limits<double>::lowest();
-            for (const Enu& p : t.points) {
-                e0 = std::min(e0, p.e);
-                e1 = std::max(e1, p.e);
-                n0 = std::min(n0, p.n);
-                n1 = std::max(n1, p.n);
-                u0 = std::min(u0, p.u);
-                u1 = std::max(u1, p.u);
-            }
+        if (flatTerrain) {
+            b[0] = flatExtent[0];
+            b[1] = flatExtent[1];
+            b[2] = flatExtent[2];
+            b[3] = flatExtent[3];
+            b[4] = flatU;
+            b[5] = flatU + 5.0;
+            return;
         }
-        b[0] = e0;
-        b[1] = e1;
-        b[2] = n0;
-        b[3] = n1;
-        b[4] = u0;
-        b[5] = u1 + 5.0;
+        const auto& pts = scene.terrain.points;
+        b[0] = b[2] = b[4] = std::numeric_limits<double>::max();
+        b[1] = b[3] = b[5] = std::numeric_limits<double>::lowest();
+        for (const Enu& p : pts) {
+            b[0] = std::min(b[0], p.e);
+            b[1] = std::max(b[1], p.e);
+            b[2] = std::min(b[2], p.n);
+            b[3] = std::max(b[3], p.n);
+            b[4] = std::min(b[4], p.u);
+            b[5] = std::max(b[5], p.u);
+        }
+        b[5] += 5.0;
     }
 
     void resetCamera() {
@@ -686,6 +847,7 @@ void SiteSceneRenderer::setScene(const Scene3D& scene) {
                                scene.background.b / 255.0);
     d->buildTerrain();
     d->buildWays();
+    d->passGeometry = {}; // the terrain may have changed: re-drape the raster mesh
     d->buildPassCount();
     d->applyMachines(machines);
     ++d->buildCount;
@@ -763,6 +925,8 @@ QString SiteSceneRenderer::pick(double x, double y) const {
     QString best;
     double bestT = std::numeric_limits<double>::max();
     for (const Machine3D& m : d->scene.machines) {
+        if (!finite(m))
+            continue;
         // Ray into the box frame: x = right, y = forward, z = up from the ground point.
         const double hr = m.headingDeg * kDegToRad;
         const double fe = std::sin(hr), fn = std::cos(hr);  // forward

@@ -30,11 +30,12 @@ struct VtkOpenGLWidget::Impl {
     bool initialized = false;
     bool inPaint = false;
 
-    // QOpenGLContext::makeCurrent, not QOpenGLWidget::makeCurrent: the latter re-binds the widget's FBO behind
-    // VTK's state cache and corrupts both framebuffers (toolchain.md §4(a), "the trap").
+    // QOpenGLContext::makeCurrent, not QOpenGLWidget::makeCurrent: the latter re-binds the widget's FBO
+    // behind VTK's state cache and corrupts both framebuffers (toolchain.md §4(a), "the trap").
     static void onMakeCurrent(vtkObject*, unsigned long, void* clientData, void*) {
         auto* self = static_cast<Impl*>(clientData);
-        if (QOpenGLContext* ctx = self->q->context(); ctx != nullptr && QOpenGLContext::currentContext() != ctx)
+        if (QOpenGLContext* ctx = self->q->context();
+            ctx != nullptr && QOpenGLContext::currentContext() != ctx)
             ctx->makeCurrent(ctx->surface());
     }
     static void onIsCurrent(vtkObject*, unsigned long, void* clientData, void* callData) {
@@ -81,7 +82,8 @@ VtkOpenGLWidget::VtkOpenGLWidget(SiteSceneRenderer* scene, QWidget* parent)
 
     d->interactor->SetRenderWindow(d->window);
     d->interactor->SetInteractorStyle(d->style);
-    // Enable(), never Initialize(): Initialize() renders before Qt has a context (segfault, toolchain.md §4(a)).
+    // Enable(), never Initialize(): Initialize() renders before Qt has a context (segfault, toolchain.md
+    // §4(a)).
     d->interactor->Enable();
     // The style's own Render() calls are suppressed; every forwarded event schedules a Qt repaint instead.
     d->interactor->EnableRenderOff();
@@ -109,9 +111,17 @@ QSurfaceFormat VtkOpenGLWidget::defaultFormat() {
     return f;
 }
 
-void VtkOpenGLWidget::requestRender() { update(); }
+void VtkOpenGLWidget::requestRender() {
+    update();
+}
 
-bool VtkOpenGLWidget::isInitialized() const { return d->initialized; }
+void VtkOpenGLWidget::releaseVtkGraphics() {
+    d->finalize();
+}
+
+bool VtkOpenGLWidget::isInitialized() const {
+    return d->initialized;
+}
 
 void VtkOpenGLWidget::initializeGL() {
     vtkGenericOpenGLRenderWindow* rw = d->window;
@@ -121,7 +131,7 @@ void VtkOpenGLWidget::initializeGL() {
     // Default blit mode (BlitToCurrent): VTK copies its result into the FBO Qt has bound for paintGL.
     rw->OpenGLInitContext(); // glewInit inside Qt's context
     d->initialized = true;
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] { d->finalize(); },
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &VtkOpenGLWidget::releaseVtkGraphics,
             Qt::UniqueConnection);
     resizeGL(width(), height());
 }
@@ -153,8 +163,9 @@ namespace {
 
 void setEventInfo(vtkRenderWindowInteractor* iren, QPointF pos, qreal dpr, Qt::KeyboardModifiers mods,
                   int repeat = 0) {
-    iren->SetEventInformationFlipY(qRound(pos.x() * dpr), qRound(pos.y() * dpr), (mods & Qt::ControlModifier) ? 1 : 0,
-                                   (mods & Qt::ShiftModifier) ? 1 : 0, 0, repeat);
+    iren->SetEventInformationFlipY(qRound(pos.x() * dpr), qRound(pos.y() * dpr),
+                                   (mods & Qt::ControlModifier) ? 1 : 0, (mods & Qt::ShiftModifier) ? 1 : 0,
+                                   0, repeat);
     iren->SetAltKey((mods & Qt::AltModifier) ? 1 : 0);
 }
 
@@ -231,9 +242,10 @@ void VtkOpenGLWidget::wheelEvent(QWheelEvent* event) {
 }
 
 void VtkOpenGLWidget::keyPressEvent(QKeyEvent* event) {
-    // Only the harmless trackball keys are forwarded: 'e'/'q' would ask VTK to quit, 'f' flies, 'p' picks.
+    // Only 'r' (reset camera) is forwarded: 'e'/'q' would ask VTK to quit, 'w'/'s' switch every actor to
+    // wireframe/surface (including the selection outline), 'f' flies, 'p' picks with VTK's picker.
     const QString text = event->text().toLower();
-    if (text == QLatin1String("r") || text == QLatin1String("w") || text == QLatin1String("s")) {
+    if (text == QLatin1String("r")) {
         const QByteArray key = text.toLatin1();
         d->interactor->SetKeyEventInformation((event->modifiers() & Qt::ControlModifier) ? 1 : 0,
                                               (event->modifiers() & Qt::ShiftModifier) ? 1 : 0, key[0],
@@ -249,8 +261,7 @@ void VtkOpenGLWidget::keyPressEvent(QKeyEvent* event) {
 }
 
 void VtkOpenGLWidget::keyReleaseEvent(QKeyEvent* event) {
-    const QString text = event->text().toLower();
-    if (text == QLatin1String("r") || text == QLatin1String("w") || text == QLatin1String("s")) {
+    if (event->text().toLower() == QLatin1String("r")) {
         d->interactor->InvokeEvent(vtkCommand::KeyReleaseEvent);
         event->accept();
         return;

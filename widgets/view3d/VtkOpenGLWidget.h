@@ -19,8 +19,8 @@ public:
     explicit VtkOpenGLWidget(SiteSceneRenderer* scene, QWidget* parent = nullptr);
     ~VtkOpenGLWidget() override;
 
-    // OpenGL 3.2 core, RGBA8, depth 24, no multisampling: what VTK 9.1 needs. Set it as the application default
-    // (QSurfaceFormat::setDefaultFormat) before the QApplication is created.
+    // OpenGL 3.2 core, RGBA8, depth 24, no multisampling: what VTK 9.1 needs. Set it as the application
+    // default (QSurfaceFormat::setDefaultFormat) before the QApplication is created.
     static QSurfaceFormat defaultFormat();
 
     // Schedules a repaint; VTK renders inside paintGL (render on demand, coalesced by Qt).
@@ -46,6 +46,7 @@ protected:
     void keyReleaseEvent(QKeyEvent* event) override;
 
 private:
+    void releaseVtkGraphics(); // Qt's context is about to go: free VTK's GL objects first
     struct Impl;
     std::unique_ptr<Impl> d;
     QPoint m_pressPos;

@@ -17,10 +17,12 @@ std::string example() {
     return ss.str();
 }
 std::string chunk(int seq, const std::string& body) {
-    return "<?xml version=\"1.0\"?><osm version=\"0.6\" sequence=\"" + std::to_string(seq) + "\">" + body + "</osm>";
+    return "<?xml version=\"1.0\"?><osm version=\"0.6\" sequence=\"" + std::to_string(seq) + "\">" + body +
+           "</osm>";
 }
-const std::string kNodes = R"(<node id="1" lat="-23.36" lon="119.73"/><node id="2" lat="-23.361" lon="119.731"/>)"
-                           R"(<node id="3" lat="-23.362" lon="119.73"/>)";
+const std::string kNodes =
+    R"(<node id="1" lat="-23.36" lon="119.73"/><node id="2" lat="-23.361" lon="119.731"/>)"
+    R"(<node id="3" lat="-23.362" lon="119.73"/>)";
 } // namespace
 
 class TestIsoMap : public QObject {
@@ -84,26 +86,37 @@ private slots:
     void rejections_data() {
         QTest::addColumn<QString>("xml");
         QTest::addColumn<QString>("error");
-        QTest::newRow("not xml") << QString::fromStdString(chunk(1, "<node id=\"1\"")) << "map chunk 1: not well-formed XML";
-        QTest::newRow("version") << "<osm version=\"0.5\" sequence=\"1\"/>" << "map chunk 1: osm version '0.5' is not 0.6";
+        QTest::newRow("not xml") << QString::fromStdString(chunk(1, "<node id=\"1\""))
+                                 << "map chunk 1: not well-formed XML";
+        QTest::newRow("version") << "<osm version=\"0.5\" sequence=\"1\"/>"
+                                 << "map chunk 1: osm version '0.5' is not 0.6";
         QTest::newRow("sequence") << QString::fromStdString("<osm version=\"0.6\" sequence=\"2\"/>")
                                   << "map chunk 1: sequence 2 out of order, expected 1";
         QTest::newRow("node id 0") << QString::fromStdString(chunk(1, R"(<node id="0" lat="1" lon="1"/>)"))
                                    << "map chunk 1: node id 0 is forbidden (§10.2)";
-        QTest::newRow("negative way") << QString::fromStdString(chunk(1, kNodes + R"(<way id="-5"><nd ref="1"/><nd ref="2"/></way>)"))
-                                      << "map chunk 1: way id -5 is negative; the service serves positive IDs only (§10.2)";
-        QTest::newRow("duplicate node") << QString::fromStdString(chunk(1, kNodes + R"(<node id="2" lat="1" lon="1"/>)"))
-                                        << "map chunk 1: duplicate node id 2 (§10.2: IDs are unique per category)";
+        QTest::newRow("negative way")
+            << QString::fromStdString(chunk(1, kNodes + R"(<way id="-5"><nd ref="1"/><nd ref="2"/></way>)"))
+            << "map chunk 1: way id -5 is negative; the service serves positive IDs only (§10.2)";
+        QTest::newRow("duplicate node")
+            << QString::fromStdString(chunk(1, kNodes + R"(<node id="2" lat="1" lon="1"/>)"))
+            << "map chunk 1: duplicate node id 2 (§10.2: IDs are unique per category)";
         QTest::newRow("lat range") << QString::fromStdString(chunk(1, R"(<node id="4" lat="91" lon="1"/>)"))
                                    << "map chunk 1: node 4: lat/lon out of range";
-        QTest::newRow("dangling ref") << QString::fromStdString(chunk(1, kNodes + R"(<way id="5"><nd ref="1"/><nd ref="9"/></way>)"))
-                                      << "way 5: references unknown node 9";
-        QTest::newRow("short road") << QString::fromStdString(chunk(1, kNodes + R"(<way id="5"><nd ref="1"/></way>)"))
+        QTest::newRow("dangling ref")
+            << QString::fromStdString(chunk(1, kNodes + R"(<way id="5"><nd ref="1"/><nd ref="9"/></way>)"))
+            << "way 5: references unknown node 9";
+        QTest::newRow("short road") << QString::fromStdString(
+                                           chunk(1, kNodes + R"(<way id="5"><nd ref="1"/></way>)"))
                                     << "way 5: a road needs at least 2 nodes";
-        QTest::newRow("small area") << QString::fromStdString(chunk(1, kNodes + R"(<way id="5"><nd ref="1"/><nd ref="2"/><nd ref="1"/></way>)"))
-                                    << "way 5: an area needs at least 3 distinct nodes";
-        QTest::newRow("self crossing") << QString::fromStdString(chunk(1, R"(<node id="1" lat="0" lon="0"/><node id="2" lat="0.001" lon="0.001"/><node id="3" lat="0" lon="0.001"/><node id="4" lat="0.001" lon="0"/><way id="6"><nd ref="1"/><nd ref="2"/><nd ref="3"/><nd ref="4"/></way>)"))
-                                       << "way 6: crosses itself (segments 0 and 2)";
+        QTest::newRow("small area")
+            << QString::fromStdString(
+                   chunk(1, kNodes + R"(<way id="5"><nd ref="1"/><nd ref="2"/><nd ref="1"/></way>)"))
+            << "way 5: an area needs at least 3 distinct nodes";
+        QTest::newRow("self crossing")
+            << QString::fromStdString(chunk(
+                   1,
+                   R"(<node id="1" lat="0" lon="0"/><node id="2" lat="0.001" lon="0.001"/><node id="3" lat="0" lon="0.001"/><node id="4" lat="0.001" lon="0"/><way id="6"><nd ref="1"/><nd ref="2"/><nd ref="3"/><nd ref="4"/></way>)"))
+            << "way 6: crosses itself (segments 0 and 2)";
     }
     void rejections() {
         QFETCH(QString, xml);
@@ -114,8 +127,11 @@ private slots:
     }
 
     void tagWarnings() {
-        auto r = parseMapDocument({chunk(1, kNodes + R"(<way id="5"><nd ref="1"/><nd ref="2"/><tag k="oneway" v="sometimes"/><tag k="autonomy:area" v="AOZ"/></way>)"
-                                                     R"(<way id="6"><nd ref="1"/><nd ref="2"/><nd ref="3"/><nd ref="1"/><tag k="default task" v="park"/></way>)")});
+        auto r = parseMapDocument({chunk(
+            1,
+            kNodes +
+                R"(<way id="5"><nd ref="1"/><nd ref="2"/><tag k="oneway" v="sometimes"/><tag k="autonomy:area" v="AOZ"/></way>)"
+                R"(<way id="6"><nd ref="1"/><nd ref="2"/><nd ref="3"/><nd ref="1"/><tag k="default task" v="park"/></way>)")});
         QVERIFY(r.ok());
         QCOMPARE(r->way(6)->defaultTask(), std::string("park"));
         QCOMPARE(r->warnings.size(), std::size_t(2));
@@ -124,14 +140,16 @@ private slots:
     }
 
     void lanesAreOneway() {
-        auto r = parseMapDocument({chunk(1, kNodes + R"(<way id="5"><nd ref="1"/><nd ref="2"/><tag k="oneway" v="yes"/></way>)")});
+        auto r = parseMapDocument(
+            {chunk(1, kNodes + R"(<way id="5"><nd ref="1"/><nd ref="2"/><tag k="oneway" v="yes"/></way>)")});
         QVERIFY(r.ok());
         QCOMPARE(r->lanes, std::vector<std::int64_t>{5});
         QCOMPARE(r->way(5)->kind, WayKind::Lane);
     }
 
     void connectivityGraph() {
-        auto env = decodeMessage(R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:15:01.000Z","MapConnectivityV1":[
+        auto env = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:15:01.000Z","MapConnectivityV1":[
           {"WayId":4101,"WayType":"Area","AreaProperty":{"DefaultTask":"Offload","Name":"North Waste Dump"},"Connection":[{"WayId":2001}]},
           {"WayId":2001,"WayType":"Road","RoadProperty":{"Length":1840.5,"Name":"North Ramp"},"Connection":[{"WayId":4101},{"WayId":4201}]},
           {"WayId":2002,"WayType":"Road","RoadProperty":{"Length":5000,"Name":"Long way"},"Connection":[{"WayId":4201}]},

@@ -25,12 +25,14 @@ const char* kHdr = R"("Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T
 const char* kEq = R"("EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78")";
 
 std::string msg(const std::string& body, bool withEquipment = false) {
-    return std::string("{") + kHdr + (withEquipment ? std::string(",") + kEq : std::string()) + "," + body + "}";
+    return std::string("{") + kHdr + (withEquipment ? std::string(",") + kEq : std::string()) + "," + body +
+           "}";
 }
 
-const char* kPose = R"("Timestamp":"2025-03-14T02:15:07.380Z","Heading":87,"Latitude":-23.360114,)"
-                    R"("Longitude":119.730552,"Elevation":512.34,"LatitudeAccuracy":0.05,"LongitudeAccuracy":0.06,)"
-                    R"("ElevationAccuracy":0.11,"HeadingAccuracy":0.8,"Speed":34)";
+const char* kPose =
+    R"("Timestamp":"2025-03-14T02:15:07.380Z","Heading":87,"Latitude":-23.360114,)"
+    R"("Longitude":119.730552,"Elevation":512.34,"LatitudeAccuracy":0.05,"LongitudeAccuracy":0.06,)"
+    R"("ElevationAccuracy":0.11,"HeadingAccuracy":0.8,"Speed":34)";
 
 } // namespace
 
@@ -56,14 +58,30 @@ private slots:
             QCOMPARE(toJson(*again), back);
         }
         // Rows 1-13 and 15-24 of the catalogue (14 is the XML map document, tested in tst_iso_map).
-        for (const char* n :
-             {"FleetDefinitionV2", "MachineAllStopRequestV1", "MachineAllStopResponseV1", "MachineAllStopV1",
-              "MachinePositionV1", "BasicMachineHealthV2", "MachineAutonomyModeV1", "MachineDispatchAvailabilityV1",
-              "MachineDiagnosticV2", "MapConnectivityV1", "MapServiceV1", "MapSummaryV1", "MapCommandV1",
-              "InterfaceDiagnosticV1", "HaulTruckProductionCycleV1", "HaulTruckProductionStateV2",
-              "HaulTruckProductionStateSensorV1", "HaulTruckPayloadV1", "HaulTruckDumpV1",
-              "HaulTruckAssignmentRequestV2", "HaulTruckAssignmentResponseV1", "HaulTruckAssignmentResetV1",
-              "HaulTruckAssignmentV1", "MachineDiagnosticV3"})
+        for (const char* n : {"FleetDefinitionV2",
+                              "MachineAllStopRequestV1",
+                              "MachineAllStopResponseV1",
+                              "MachineAllStopV1",
+                              "MachinePositionV1",
+                              "BasicMachineHealthV2",
+                              "MachineAutonomyModeV1",
+                              "MachineDispatchAvailabilityV1",
+                              "MachineDiagnosticV2",
+                              "MapConnectivityV1",
+                              "MapServiceV1",
+                              "MapSummaryV1",
+                              "MapCommandV1",
+                              "InterfaceDiagnosticV1",
+                              "HaulTruckProductionCycleV1",
+                              "HaulTruckProductionStateV2",
+                              "HaulTruckProductionStateSensorV1",
+                              "HaulTruckPayloadV1",
+                              "HaulTruckDumpV1",
+                              "HaulTruckAssignmentRequestV2",
+                              "HaulTruckAssignmentResponseV1",
+                              "HaulTruckAssignmentResetV1",
+                              "HaulTruckAssignmentV1",
+                              "MachineDiagnosticV3"})
             QVERIFY2(names.count(n), n);
     }
 
@@ -80,7 +98,9 @@ private slots:
     }
 
     void nullMeansUnavailable() {
-        auto r = decodeMessage(msg(R"("BasicMachineHealthV2":{"FuelLevel":null,"TotalMachineHour":null,"TotalEngineHour":12.5})", true));
+        auto r = decodeMessage(
+            msg(R"("BasicMachineHealthV2":{"FuelLevel":null,"TotalMachineHour":null,"TotalEngineHour":12.5})",
+                true));
         QVERIFY(r.ok());
         QVERIFY(r->errors.empty());
         auto* h = r->find<BasicMachineHealthV2>();
@@ -101,33 +121,47 @@ private slots:
             << QString::fromStdString(msg(R"("MachineAutonomyModeV1":{"AutonomyMode":3})", true))
             << "MachineAutonomyModeV1.AutonomyMode: expected an enumeration string, got number";
         QTest::newRow("wrong type number")
-            << QString::fromStdString(msg(R"("MachineDiagnosticV2":[{"ComponentId":"abc","FaultCode":1}])", true))
+            << QString::fromStdString(
+                   msg(R"("MachineDiagnosticV2":[{"ComponentId":"abc","FaultCode":1}])", true))
             << "MachineDiagnosticV2[0].ComponentId: expected a number, got string";
         QTest::newRow("enum outside set")
-            << QString::fromStdString(msg(R"("FleetDefinitionV2":{"AHSId":"7d1f3c2a-5b8e-4c61-9a0d-2e4f6b8c1a37","Equipment":[{"EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78","HID":"H1","Type":"Hauler","OEM":"x","Model":"y","Autonomous":true,"Length":1,"Width":1}]})"))
-            << "FleetDefinitionV2.Equipment[0].Type: 'Hauler' is not one of HaulTruck, Shovel, Excavator, Loader, "
-               "LightVehicle, WaterCart, Grader, FuelTruck, LubeTruck, Dozer, RubberTireDozer, Drill, Crusher, "
-               "Scraper, BellyDumper, EmergencyVehicle, Ambulance, Dragline, SurfaceMiner, Bus, Train, Trailer";
+            << QString::fromStdString(msg(
+                   R"("FleetDefinitionV2":{"AHSId":"7d1f3c2a-5b8e-4c61-9a0d-2e4f6b8c1a37","Equipment":[{"EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78","HID":"H1","Type":"Hauler","OEM":"x","Model":"y","Autonomous":true,"Length":1,"Width":1}]})"))
+            << "FleetDefinitionV2.Equipment[0].Type: 'Hauler' is not one of HaulTruck, Shovel, Excavator, "
+               "Loader, "
+               "LightVehicle, WaterCart, Grader, FuelTruck, LubeTruck, Dozer, RubberTireDozer, Drill, "
+               "Crusher, "
+               "Scraper, BellyDumper, EmergencyVehicle, Ambulance, Dragline, SurfaceMiner, Bus, Train, "
+               "Trailer";
         QTest::newRow("malformed GUID")
-            << QString::fromStdString(msg(R"("MachineAllStopRequestV1":{"ModeAllStop":"Apply","ModeAllStopId":"0b7c3e5d-9a21"})"))
+            << QString::fromStdString(msg(
+                   R"("MachineAllStopRequestV1":{"ModeAllStop":"Apply","ModeAllStopId":"0b7c3e5d-9a21"})"))
             << "MachineAllStopRequestV1.ModeAllStopId: malformed GUID '0b7c3e5d-9a21'";
         QTest::newRow("malformed timestamp")
-            << QString::fromStdString(msg(R"("MapSummaryV1":{"Timestamp":"yesterday","ChangeSetMap":1,"ChangeSetWay":1,"NodeCount":1,"WayCount":1,"DocumentCount":1})"))
+            << QString::fromStdString(msg(
+                   R"("MapSummaryV1":{"Timestamp":"yesterday","ChangeSetMap":1,"ChangeSetWay":1,"NodeCount":1,"WayCount":1,"DocumentCount":1})"))
             << "MapSummaryV1.Timestamp: malformed timestamp 'yesterday'";
         QTest::newRow("array null")
-            << QString::fromStdString(msg(R"("FleetDefinitionV2":{"AHSId":"7d1f3c2a-5b8e-4c61-9a0d-2e4f6b8c1a37","Equipment":null})"))
+            << QString::fromStdString(msg(
+                   R"("FleetDefinitionV2":{"AHSId":"7d1f3c2a-5b8e-4c61-9a0d-2e4f6b8c1a37","Equipment":null})"))
             << "FleetDefinitionV2.Equipment: must be an array (may be empty, not null)";
         QTest::newRow("top-level array null")
             << QString::fromStdString(msg(R"("MachineDiagnosticV2":null)", true))
             << "MachineDiagnosticV2: must be an array (may be empty, not null)";
         QTest::newRow("heading range")
-            << QString::fromStdString(msg(std::string(R"("MachinePositionV1":{)") + "\"Timestamp\":\"2025-03-14T02:15:07.380Z\",\"Heading\":360,\"Latitude\":1,\"Longitude\":1,\"Elevation\":1,\"LatitudeAccuracy\":1,\"LongitudeAccuracy\":1,\"ElevationAccuracy\":1,\"HeadingAccuracy\":1,\"Speed\":1}", true))
+            << QString::fromStdString(
+                   msg(std::string(R"("MachinePositionV1":{)") +
+                           "\"Timestamp\":\"2025-03-14T02:15:07.380Z\",\"Heading\":360,\"Latitude\":1,"
+                           "\"Longitude\":1,\"Elevation\":1,\"LatitudeAccuracy\":1,\"LongitudeAccuracy\":1,"
+                           "\"ElevationAccuracy\":1,\"HeadingAccuracy\":1,\"Speed\":1}",
+                       true))
             << "MachinePositionV1.Heading: out of range 0-359: 360";
         QTest::newRow("missing header EquipmentId")
             << QString::fromStdString(msg(R"("MachineAutonomyModeV1":{"AutonomyMode":"Manual"})"))
             << "MachineAutonomyModeV1: header EquipmentId required for this message";
         QTest::newRow("non-null shall")
-            << QString::fromStdString(msg(R"("MachineDiagnosticV2":[{"ComponentId":null,"FaultCode":1}])", true))
+            << QString::fromStdString(
+                   msg(R"("MachineDiagnosticV2":[{"ComponentId":null,"FaultCode":1}])", true))
             << "MachineDiagnosticV2[0].ComponentId: must not be null";
     }
     void rejections() {
@@ -150,7 +184,8 @@ private slots:
         auto noTs = decodeMessage(R"({"Protocol":"ISO23725","Version":1,"MapServiceV1":{"API":1}})");
         QVERIFY(!noTs.ok());
         QCOMPARE(QString::fromStdString(noTs.error()), QString("header.Timestamp: required member missing"));
-        auto badTs = decodeMessage(R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-13-01T00:00:00Z","MapServiceV1":{"API":1}})");
+        auto badTs = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-13-01T00:00:00Z","MapServiceV1":{"API":1}})");
         QVERIFY(!badTs.ok());
         QCOMPARE(QString::fromStdString(badTs.error()),
                  QString("header.Timestamp: malformed timestamp '2025-13-01T00:00:00Z'"));
@@ -158,7 +193,9 @@ private slots:
 
     void goodMembersSurviveABadOne() {
         // A bad piggy-backed position must not drop the autonomy mode it came with.
-        auto r = decodeMessage(msg(R"("MachineAutonomyModeV1":{"AutonomyMode":"Manual"},"MachinePositionV1":{"Heading":"north"})", true));
+        auto r = decodeMessage(msg(
+            R"("MachineAutonomyModeV1":{"AutonomyMode":"Manual"},"MachinePositionV1":{"Heading":"north"})",
+            true));
         QVERIFY(r.ok());
         QVERIFY(r->find<MachineAutonomyModeV1>());
         QCOMPARE(r->errors.size(), std::size_t(1));
@@ -167,13 +204,15 @@ private slots:
 
     void lenientWhereTheNoteSaysSo() {
         // Seed example timestamp "…10.43.511Z" is repaired, with a warning.
-        auto r = decodeMessage(R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2018-10-31T09:30:10.43.511Z","FleetDefinitionV2":{"AHSId":"5318e44c-e9f0-42e2-9965-a4a1ff364f4b","Equipment":[]}})");
+        auto r = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2018-10-31T09:30:10.43.511Z","FleetDefinitionV2":{"AHSId":"5318e44c-e9f0-42e2-9965-a4a1ff364f4b","Equipment":[]}})");
         QVERIFY(r.ok());
         QVERIFY(r->errors.empty());
         QCOMPARE(*r->header.timestamp.unixMs, parseTimestamp("2018-10-31T09:30:10.435Z", false).value());
         QVERIFY(!r->warnings.empty());
         // Numbers as strings, decimal speed, HeightAccuracy alias, AttachmentV1 alias, missing Version.
-        auto p = decodeMessage(R"({"Protocol":"ISO23725","Timestamp":"2025-03-14T02:15:07.412Z","EquipmentID":"C3A51F7E-0D24-4B9A-8F63-1E2D4C5B6A78","MachinePositionV1":{"Timestamp":"2025-03-14T02:15:07.380Z","Heading":"222","Latitude":-23.36,"Longitude":119.73,"Elevation":512.3,"LatitudeAccuracy":0.1,"LongitudeAccuracy":0.1,"HeightAccuracy":0.2,"HeadingAccuracy":1,"Speed":"43.1","AttachmentV1":[]}})");
+        auto p = decodeMessage(
+            R"({"Protocol":"ISO23725","Timestamp":"2025-03-14T02:15:07.412Z","EquipmentID":"C3A51F7E-0D24-4B9A-8F63-1E2D4C5B6A78","MachinePositionV1":{"Timestamp":"2025-03-14T02:15:07.380Z","Heading":"222","Latitude":-23.36,"Longitude":119.73,"Elevation":512.3,"LatitudeAccuracy":0.1,"LongitudeAccuracy":0.1,"HeightAccuracy":0.2,"HeadingAccuracy":1,"Speed":"43.1","AttachmentV1":[]}})");
         QVERIFY(p.ok());
         QVERIFY2(p->errors.empty(), p->errors.empty() ? "" : p->errors[0].c_str());
         auto* pos = p->find<MachinePositionV1>();
@@ -189,7 +228,8 @@ private slots:
         QVERIFY(out["MachinePositionV1"].contains("Attachment"));
         QVERIFY(out.contains("EquipmentId"));
         // "GET" accepted in any case; status alias of Q4.
-        auto c = decodeMessage(msg(R"("MapCommandV1":{"Method":"Get","Scope":"/"},"MachineAllStopStatusV1":{"ModeAllStop":"off","ModeAllStopId":null})"));
+        auto c = decodeMessage(msg(
+            R"("MapCommandV1":{"Method":"Get","Scope":"/"},"MachineAllStopStatusV1":{"ModeAllStop":"off","ModeAllStopId":null})"));
         QVERIFY(c.ok());
         QCOMPARE(c->find<MapCommandV1>()->method, std::string("GET"));
         QCOMPARE(c->find<MachineAllStopV1>()->modeAllStop, std::string("Off"));
@@ -201,16 +241,22 @@ private slots:
         strict.repairTimestamps = false;
         strict.acceptAliases = false;
         strict.acceptMissingVersion = false;
-        auto r = decodeMessage(msg(R"("MachineDiagnosticV2":[{"ComponentId":"5","FaultCode":1}])", true), strict);
-        QCOMPARE(r->errors.at(0), std::string("MachineDiagnosticV2[0].ComponentId: expected a number, got string"));
-        auto t = decodeMessage(R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2018-10-31T09:30:10.43.511Z","MapServiceV1":{"API":1}})", strict);
+        auto r =
+            decodeMessage(msg(R"("MachineDiagnosticV2":[{"ComponentId":"5","FaultCode":1}])", true), strict);
+        QCOMPARE(r->errors.at(0),
+                 std::string("MachineDiagnosticV2[0].ComponentId: expected a number, got string"));
+        auto t = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2018-10-31T09:30:10.43.511Z","MapServiceV1":{"API":1}})",
+            strict);
         QVERIFY(!t.ok());
-        auto v = decodeMessage(R"({"Protocol":"ISO23725","Timestamp":"2018-10-31T09:30:10Z","MapServiceV1":{"API":1}})", strict);
+        auto v = decodeMessage(
+            R"({"Protocol":"ISO23725","Timestamp":"2018-10-31T09:30:10Z","MapServiceV1":{"API":1}})", strict);
         QCOMPARE(QString::fromStdString(v.error()), QString("header.Version: required member missing"));
     }
 
     void unknownMembersAndProtocolsKept() {
-        std::string text = R"({"Protocol":"Open-Autonomy","Version":1,"Timestamp":"2025-03-14T02:15:09.001Z","OutOfSyncV1":{"X":1},"MapServiceV1":{"API":2,"Vendor":"acme"}})";
+        std::string text =
+            R"({"Protocol":"Open-Autonomy","Version":1,"Timestamp":"2025-03-14T02:15:09.001Z","OutOfSyncV1":{"X":1},"MapServiceV1":{"API":2,"Vendor":"acme"}})";
         auto r = decodeMessage(text);
         QVERIFY(r.ok());
         QVERIFY(r->outOfStandard);

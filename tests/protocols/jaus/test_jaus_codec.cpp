@@ -22,7 +22,8 @@ Bytes hex(const char* s) {
     return out;
 }
 QString toHex(const Bytes& b) {
-    return QString::fromLatin1(QByteArray(reinterpret_cast<const char*>(b.data()), qsizetype(b.size())).toHex());
+    return QString::fromLatin1(
+        QByteArray(reinterpret_cast<const char*>(b.data()), qsizetype(b.size())).toHex());
 }
 
 JudpHeader header(JausId dst, JausId src, std::uint16_t seq = 0, std::uint8_t props = 0x01) {
@@ -80,7 +81,8 @@ private slots:
     // §5.1 captured vectors
     void capturedC1QueryIdentification() {
         auto h = header(kBroadcastAll, JausId{150, 64, 200}, 3565, 0x09);
-        checkVector("0200110009ffffffffc8409600002b04ed0d", h, encode(QueryIdentification{IdQueryType::Component}));
+        checkVector("0200110009ffffffffc8409600002b04ed0d", h,
+                    encode(QueryIdentification{IdQueryType::Component}));
         auto m = decodeOne(hex("0200110009ffffffffc8409600002b04ed0d"));
         auto q = decodeQueryIdentification(m.payload);
         QVERIFY(q.ok());
@@ -98,9 +100,11 @@ private slots:
         // C3 ACK: produced by makeAckHeader from C2
         checkVector("02000e003114017e000a017e000100", makeAckHeader(c2.header), Bytes{});
         // C4 ConfirmControl ACCEPTED
-        checkVector("020011000114017e000a017e000f00000100", header(ocu, plat, 1), encodeU8(msg::ConfirmControl, 0));
+        checkVector("020011000114017e000a017e000f00000100", header(ocu, plat, 1),
+                    encodeU8(msg::ConfirmControl, 0));
         // C5 QueryStatus, C6 ReportStatus STANDBY
-        checkVector("02001000010a017e0014017e0002200200", header(plat, ocu, 2), encodeEmpty(msg::QueryStatus));
+        checkVector("02001000010a017e0014017e0002200200", header(plat, ocu, 2),
+                    encodeEmpty(msg::QueryStatus));
         checkVector("020015000114017e000a017e00024002000000000200", header(ocu, plat, 2),
                     encode(ReportStatus{ManagementState::Standby, 0}));
         auto rs = decodeReportStatus(decodeOne(hex("020015000114017e000a017e00024002000000000200")).payload);
@@ -109,28 +113,44 @@ private slots:
         // C7 Resume / Standby / ReleaseControl
         checkVector("02001000010a017e0014017e0004000300", header(plat, ocu, 3), encodeEmpty(msg::Resume));
         checkVector("02001000010a017e0014017e0003000a00", header(plat, ocu, 10), encodeEmpty(msg::Standby));
-        checkVector("02001000010a017e0014017e000e000b00", header(plat, ocu, 11), encodeEmpty(msg::ReleaseControl));
+        checkVector("02001000010a017e0014017e000e000b00", header(plat, ocu, 11),
+                    encodeEmpty(msg::ReleaseControl));
         // C8 SetEmergency / ClearEmergency with code 0 (a real JTS OCU sent 0: must be tolerated)
-        checkVector("02001200010a017e0014017e00060000000500", header(plat, ocu, 5), encodeU16(msg::SetEmergency, 0));
-        checkVector("02001200010a017e0014017e00070000000700", header(plat, ocu, 7), encodeU16(msg::ClearEmergency, 0));
-        QCOMPARE(*decodeU16(decodeOne(hex("02001200010a017e0014017e00060000000500")).payload, msg::SetEmergency),
-                 std::uint16_t(0));
+        checkVector("02001200010a017e0014017e00060000000500", header(plat, ocu, 5),
+                    encodeU16(msg::SetEmergency, 0));
+        checkVector("02001200010a017e0014017e00070000000700", header(plat, ocu, 7),
+                    encodeU16(msg::ClearEmergency, 0));
+        QCOMPARE(
+            *decodeU16(decodeOne(hex("02001200010a017e0014017e00060000000500")).payload, msg::SetEmergency),
+            std::uint16_t(0));
         // C9 RejectControl CONTROL_RELEASED
-        checkVector("020011000114017e000a017e001000000600", header(ocu, plat, 6), encodeU8(msg::RejectControl, 0));
+        checkVector("020011000114017e000a017e001000000600", header(ocu, plat, 6),
+                    encodeU8(msg::RejectControl, 0));
     }
     void capturedFullPcapDecodes() {
         // All 22 packets of the JTS capture decode as single AS5669A messages with known IDs.
-        const char* pkts[] = {"02001100190a017e0014017e000d00c80100", "020011000114017e000a017e000f00000100",
-                              "02000e003114017e000a017e000100", "02001000010a017e0014017e0002200200",
-                              "020015000114017e000a017e00024002000000000200", "02001000010a017e0014017e0004000300",
-                              "02001000010a017e0014017e0002200400", "020015000114017e000a017e00024001000000000300",
-                              "02001200010a017e0014017e00060000000500", "02001000010a017e0014017e0002200600",
-                              "020015000114017e000a017e00024005000000000400", "02001200010a017e0014017e00070000000700",
-                              "02001000010a017e0014017e0002200800", "020015000114017e000a017e00024001000000000500",
-                              "02001000010a017e0014017e0004000900", "02001000010a017e0014017e0003000a00",
-                              "02001000010a017e0014017e000e000b00", "020011000114017e000a017e001000000600",
-                              "02001100010a017e0014017e000d00c80c00", "020011000114017e000a017e000f00000700",
-                              "02001000010a017e0014017e0002200d00", "020015000114017e000a017e00024002000000000800"};
+        const char* pkts[] = {"02001100190a017e0014017e000d00c80100",
+                              "020011000114017e000a017e000f00000100",
+                              "02000e003114017e000a017e000100",
+                              "02001000010a017e0014017e0002200200",
+                              "020015000114017e000a017e00024002000000000200",
+                              "02001000010a017e0014017e0004000300",
+                              "02001000010a017e0014017e0002200400",
+                              "020015000114017e000a017e00024001000000000300",
+                              "02001200010a017e0014017e00060000000500",
+                              "02001000010a017e0014017e0002200600",
+                              "020015000114017e000a017e00024005000000000400",
+                              "02001200010a017e0014017e00070000000700",
+                              "02001000010a017e0014017e0002200800",
+                              "020015000114017e000a017e00024001000000000500",
+                              "02001000010a017e0014017e0004000900",
+                              "02001000010a017e0014017e0003000a00",
+                              "02001000010a017e0014017e000e000b00",
+                              "020011000114017e000a017e001000000600",
+                              "02001100010a017e0014017e000d00c80c00",
+                              "020011000114017e000a017e000f00000700",
+                              "02001000010a017e0014017e0002200d00",
+                              "020015000114017e000a017e00024002000000000800"};
         for (auto* p : pkts) {
             auto m = decodeOne(hex(p));
             QCOMPARE(toHex(encodeDatagram(m.header, m.payload)), toHex(hex(p)));
@@ -142,19 +162,24 @@ private slots:
     // §5.2 computed vectors, OCU 2.1.1, UGV 126.1.199
     void computedCoreVectors() {
         const JausId ocu{2, 1, 1}, ugv{126, 1, 199};
-        checkVector("0200100001c7017e000101020002220000", header(ugv, ocu), encodeEmpty(msg::QueryHeartbeatPulse));
-        checkVector("020010000101010200c7017e0002420000", header(ocu, ugv), encodeEmpty(msg::ReportHeartbeatPulse));
+        checkVector("0200100001c7017e000101020002220000", header(ugv, ocu),
+                    encodeEmpty(msg::QueryHeartbeatPulse));
+        checkVector("020010000101010200c7017e0002420000", header(ocu, ugv),
+                    encodeEmpty(msg::ReportHeartbeatPulse));
         checkVector("0200100009ffffffffc7017e0002420000", header(kBroadcastAll, ugv, 0, 0x09),
                     encodeEmpty(msg::ReportHeartbeatPulse));
-        checkVector("0200110001c7017e00010102000100640000", header(ugv, ocu), encodeU8(msg::SetAuthority, 100));
+        checkVector("0200110001c7017e00010102000100640000", header(ugv, ocu),
+                    encodeU8(msg::SetAuthority, 100));
         checkVector("0200100001c7017e000101020002000000", header(ugv, ocu), encodeEmpty(msg::Shutdown));
         checkVector("0200100001c7017e000101020005000000", header(ugv, ocu), encodeEmpty(msg::Reset));
     }
     void computedEventVectors() {
         const JausId ocu{2, 1, 1}, ugv{126, 1, 199};
         CreateEvent k6{1, EventType::Periodic, 10.0, encodeQueryPv16(msg::QueryGlobalPose, 0x01FF)};
-        checkVector("02001c0001c7017e0001010200f00101005802040000000224ff010000", header(ugv, ocu), encode(k6));
-        auto d6 = decodeCreateEvent(decodeOne(hex("02001c0001c7017e0001010200f00101005802040000000224ff010000")).payload);
+        checkVector("02001c0001c7017e0001010200f00101005802040000000224ff010000", header(ugv, ocu),
+                    encode(k6));
+        auto d6 = decodeCreateEvent(
+            decodeOne(hex("02001c0001c7017e0001010200f00101005802040000000224ff010000")).payload);
         QVERIFY(d6.ok());
         QCOMPARE(d6->requestId, std::uint8_t(1));
         QCOMPARE(d6->type, EventType::Periodic);
@@ -167,19 +192,23 @@ private slots:
 
         checkVector("020014000101010200c7017e00f301010558020000", header(ocu, ugv),
                     encode(ConfirmEventRequest{1, 5, 10.0}));
-        auto d8 = decodeConfirmEventRequest(decodeOne(hex("020014000101010200c7017e00f301010558020000")).payload);
+        auto d8 =
+            decodeConfirmEventRequest(decodeOne(hex("020014000101010200c7017e00f301010558020000")).payload);
         QVERIFY(d8.ok() && d8->eventId == 5 && std::abs(d8->rateHz - 10.0) < 0.02);
 
         RejectEventRequest k9;
         k9.requestId = 1;
         k9.responseCode = 5;
         checkVector("020013000101010200c7017e00f4010101050000", header(ocu, ugv), encode(k9));
-        auto d9 = decodeRejectEventRequest(decodeOne(hex("020013000101010200c7017e00f4010101050000")).payload);
+        auto d9 =
+            decodeRejectEventRequest(decodeOne(hex("020013000101010200c7017e00f4010101050000")).payload);
         QVERIFY(d9.ok() && d9->responseCode == std::uint8_t(5) && !d9->errorMessage);
 
         EventMsg k10{5, 0, encode(ReportStatus{ManagementState::Ready, 0})};
-        checkVector("02001d000101010200c7017e00f141050007000000024001000000000000", header(ocu, ugv), encode(k10));
-        auto d10 = decodeEvent(decodeOne(hex("02001d000101010200c7017e00f141050007000000024001000000000000")).payload);
+        checkVector("02001d000101010200c7017e00f141050007000000024001000000000000", header(ocu, ugv),
+                    encode(k10));
+        auto d10 = decodeEvent(
+            decodeOne(hex("02001d000101010200c7017e00f141050007000000024001000000000000")).payload);
         QVERIFY(d10.ok());
         QCOMPARE(decodeReportStatus(d10->reportMessage)->status, ManagementState::Ready);
 
@@ -212,7 +241,8 @@ private slots:
         k16.yawRate = 0.2;
         checkVector("0200180001c7017e00010102001504210096809680c8800000", header(ugv, ocu),
                     encodeVelocityCommand(msg::SetVelocityCommand, k16));
-        auto d16 = decodeVelocityCommand(decodeOne(hex("0200180001c7017e00010102001504210096809680c8800000")).payload);
+        auto d16 = decodeVelocityCommand(
+            decodeOne(hex("0200180001c7017e00010102001504210096809680c8800000")).payload);
         QVERIFY(d16.ok() && std::abs(*d16->vx - 1.5) < 1e-6 && std::abs(*d16->yawRate - 0.2) < 1e-3);
 
         checkVector("0200120001c7017e00010102000224ff010000", header(ugv, ocu),
@@ -224,7 +254,8 @@ private slots:
         k18.yaw = 1.0;
         checkVector("020020000101010200c7017e0002444700f13376c47a5e3b8846dcd83bbea80000", header(ocu, ugv),
                     encode(k18));
-        auto d18 = decodeGlobalPose(decodeOne(hex("020020000101010200c7017e0002444700f13376c47a5e3b8846dcd83bbea80000")).payload);
+        auto d18 = decodeGlobalPose(
+            decodeOne(hex("020020000101010200c7017e0002444700f13376c47a5e3b8846dcd83bbea80000")).payload);
         QVERIFY(d18.ok());
         QVERIFY(std::abs(*d18->lat - 48.137154) < 1e-6 && std::abs(*d18->lon - 11.576124) < 1e-6);
         QVERIFY(std::abs(*d18->alt - 520) < 1e-3 && std::abs(*d18->yaw - 1.0) < 1e-3 && !d18->roll);
@@ -233,8 +264,10 @@ private slots:
         k19.x = 10.5;
         k19.y = -3.25;
         k19.yaw = -std::numbers::pi / 2;
-        checkVector("02001c000101010200c7017e0003444300cd7003805eeffe7f00400000", header(ocu, ugv), encode(k19));
-        auto d19 = decodeLocalPose(decodeOne(hex("02001c000101010200c7017e0003444300cd7003805eeffe7f00400000")).payload);
+        checkVector("02001c000101010200c7017e0003444300cd7003805eeffe7f00400000", header(ocu, ugv),
+                    encode(k19));
+        auto d19 = decodeLocalPose(
+            decodeOne(hex("02001c000101010200c7017e0003444300cd7003805eeffe7f00400000")).payload);
         QVERIFY(d19.ok() && std::abs(*d19->x - 10.5) < 1e-3 && std::abs(*d19->y + 3.25) < 1e-3);
 
         checkVector("0200120001c7017e00010102000424ff010000", header(ugv, ocu),
@@ -243,7 +276,8 @@ private slots:
         k21.vx = 1.5;
         k21.yawRate = 0.2;
         checkVector("020018000101010200c7017e000444410096809680c8800000", header(ocu, ugv), encode(k21));
-        auto d21 = decodeVelocityState(decodeOne(hex("020018000101010200c7017e000444410096809680c8800000")).payload);
+        auto d21 =
+            decodeVelocityState(decodeOne(hex("020018000101010200c7017e000444410096809680c8800000")).payload);
         QVERIFY(d21.ok() && std::abs(*d21->vx - 1.5) < 1e-6 && std::abs(*d21->yawRate - 0.2) < 1e-3);
     }
     void computedPlatformAndDiscoveryVectors() {
@@ -261,26 +295,31 @@ private slots:
         checkVector("020027000101010200c7017e00024500031f05d70307b005d802c428000007546573745547560000",
                     header(ocu, ugv), encode(k23));
         auto d23 = decodePlatformSpecifications(
-            decodeOne(hex("020027000101010200c7017e00024500031f05d70307b005d802c428000007546573745547560000")).payload);
+            decodeOne(hex("020027000101010200c7017e00024500031f05d70307b005d802c428000007546573745547560000"))
+                .payload);
         QVERIFY(d23.ok());
         QCOMPARE(d23->name, std::string("TestUGV"));
         QVERIFY(std::abs(*d23->maxForwardSpeed - 2) < 0.01 && std::abs(*d23->maxRotationalSpeed - 1) < 0.001);
         QVERIFY(!d23->maxForwardAccel && !d23->front);
 
         RegisterServices k24{{{"urn:jaus:jss:core:Liveness", 1, 1}}};
-        checkVector("02002e000101017e00c7017e00000b011a75726e3a6a6175733a6a73733a636f72653a4c6976656e65737301010000",
-                    header(JausId{126, 1, 1}, ugv), encode(k24));
+        checkVector(
+            "02002e000101017e00c7017e00000b011a75726e3a6a6175733a6a73733a636f72653a4c6976656e65737301010000",
+            header(JausId{126, 1, 1}, ugv), encode(k24));
         auto d24 = decodeRegisterServices(encode(k24));
-        QVERIFY(d24.ok() && d24->services.size() == 1 && d24->services[0].uri == "urn:jaus:jss:core:Liveness");
+        QVERIFY(d24.ok() && d24->services.size() == 1 &&
+                d24->services[0].uri == "urn:jaus:jss:core:Liveness");
     }
     void structuredRoundTrips() {
         ReportServices rs;
-        rs.nodes.push_back({1, {{1, 0, {{"urn:jaus:jss:core:Discovery", 1, 1}, {"urn:jaus:jss:core:Liveness", 1, 1}}}}});
+        rs.nodes.push_back(
+            {1, {{1, 0, {{"urn:jaus:jss:core:Discovery", 1, 1}, {"urn:jaus:jss:core:Liveness", 1, 1}}}}});
         rs.nodes.push_back({3, {{1, 0, {{"urn:jaus:jss:mobility:PrimitiveDriver", 1, 1}}}}});
         auto d = decodeReportServices(encode(rs));
         QVERIFY(d.ok());
         QCOMPARE(d->nodes.size(), std::size_t(2));
-        QCOMPARE(d->nodes[1].components[0].services[0].uri, std::string("urn:jaus:jss:mobility:PrimitiveDriver"));
+        QCOMPARE(d->nodes[1].components[0].services[0].uri,
+                 std::string("urn:jaus:jss:mobility:PrimitiveDriver"));
 
         ReportServiceList rsl;
         rsl.subsystems.push_back({126, rs.nodes});
@@ -290,7 +329,8 @@ private slots:
         QueryServiceList qsl;
         qsl.subsystems[0].nodes[0].components[0].searchFilter = "urn:jaus:jss:core";
         auto dq = decodeQueryServiceList(encode(qsl));
-        QVERIFY(dq.ok() && dq->subsystems[0].nodes[0].components[0].searchFilter == std::string("urn:jaus:jss:core"));
+        QVERIFY(dq.ok() &&
+                dq->subsystems[0].nodes[0].components[0].searchFilter == std::string("urn:jaus:jss:core"));
 
         auto dqs = decodeQueryServices(encode(QueryServices{}));
         QVERIFY(dqs.ok() && dqs->nodes.size() == 1 && dqs->nodes[0].node == 255);
@@ -354,7 +394,8 @@ private slots:
         auto bad = decodeGlobalPose(hex("02444700f133"));
         QVERIFY(!bad.ok());
         QCOMPARE(rejectReason(bad.error()), std::string("truncated"));
-        QCOMPARE(rejectReason(decodeReportStatus(encodeEmpty(msg::QueryStatus)).error()), std::string("message_id"));
+        QCOMPARE(rejectReason(decodeReportStatus(encodeEmpty(msg::QueryStatus)).error()),
+                 std::string("message_id"));
     }
     void severalMessagesPerDatagram() {
         JudpMessage a{header(JausId{126, 1, 1}, JausId{2, 1, 1}, 1), encodeEmpty(msg::QueryStatus)};
@@ -380,10 +421,10 @@ private slots:
         } cases[] = {
             {Bytes{}, "short"},
             {hex("02"), "short"},
-            {hex("0200100001c7017e0001010200022200"), "size"},                  // one byte missing
-            {hex("0200ff0001c7017e000101020002220000"), "size"},                // DataSize larger than datagram
+            {hex("0200100001c7017e0001010200022200"), "size"},   // one byte missing
+            {hex("0200ff0001c7017e000101020002220000"), "size"}, // DataSize larger than datagram
             {hex("0200100001c7"), "short"},
-            {hex("0200050001c7017e000101020002220000"), "size"},                // DataSize below 14
+            {hex("0200050001c7017e000101020002220000"), "size"}, // DataSize below 14
             {hex("0300100001c7017e000101020002220000"), "version"},
             {hex("0100000010000000000000000000000000000000"), "legacy_v1"},
             {Bytes{'J', 'A', 'U', 'S', '0', '1', '.', '0', 0, 0, 0, 0, 0, 0, 0, 0}, "legacy_opc"},

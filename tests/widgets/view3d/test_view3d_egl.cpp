@@ -52,8 +52,14 @@ private slots:
         // The pass-count patch is drawn with its legend colours (red column at the east end).
         const auto red = scene.project(28.0, -35.0, scene.terrainHeight(28.0, -35.0));
         QVERIFY(red);
-        const QRgb rp = pixelAt(img, *red);
-        QVERIFY2(qRed(rp) > 150 && qGreen(rp) < 80 && qBlue(rp) < 80, qPrintable(describe(rp)));
+        QCOMPARE(pixelAt(img, *red), qRgb(255, 0, 0)); // unlit: exactly the legend colour
+        const auto green = scene.project(19.0, -33.0, scene.terrainHeight(19.0, -33.0));
+        QVERIFY(green);
+        QCOMPARE(pixelAt(img, *green), qRgb(154, 205, 50));
+        // The no-data cell (alpha 0) lets the terrain through.
+        const auto noData = scene.project(11.0, -39.0, scene.terrainHeight(11.0, -39.0));
+        QVERIFY(noData);
+        QVERIFY2(isTerrain(pixelAt(img, *noData)), qPrintable(describe(pixelAt(img, *noData))));
 
         // The concave area is draped over the hill (subdivided), not hidden under it.
         const auto area = scene.project(80.0, 50.0, scene.terrainHeight(80.0, 50.0));
@@ -79,13 +85,14 @@ private slots:
         const Machine3D before = machines[0];
         machines[0].e = -60.0;
         machines[0].n = 60.0;
-        machines[0].u = groundU(-60.0, 60.0);
+        machines[0].u = 500.0; // ignored: machines are put on the terrain
         scene.updateMachines(machines);
+        QVERIFY(qAbs(scene.machine(QStringLiteral("M1"))->u - scene.terrainHeight(-60.0, 60.0)) < 1e-9);
         QCOMPARE(scene.sceneBuildCount(), builds);
         QCOMPARE(scene.machineLayoutCount(), layouts); // same set of ids: arrays updated in place
 
         const QImage img = egl.render(scene, QSize(400, 300));
-        const auto now = scene.project(-60.0, 60.0, machines[0].u + before.height);
+        const auto now = scene.project(-60.0, 60.0, scene.machine(QStringLiteral("M1"))->u + before.height);
         const auto old = scene.project(before.e, before.n, before.u + before.height);
         QVERIFY(now && old);
         QVERIFY2(isMagenta(pixelAt(img, *now)), qPrintable(describe(pixelAt(img, *now))));
@@ -100,6 +107,27 @@ private slots:
         const auto p3 = scene.project(m3.e, m3.n, m3.u + m3.height);
         QVERIFY(p3);
         QVERIFY2(isCyan(pixelAt(img2, *p3)), qPrintable(describe(pixelAt(img2, *p3))));
+    }
+
+    void passCountUpdateRecolours() {
+        SiteSceneRenderer scene;
+        scene.setScene(makeSite());
+        EglOffscreenRenderer egl;
+        QVERIFY2(egl.initialize(), qPrintable(egl.errorString()));
+        egl.render(scene, QSize(640, 480));
+        PassCountRaster r = scene.scene().passCount;
+        for (std::size_t o = 0; o < r.rgba.size(); o += 4) {
+            r.rgba[o] = 255;
+            r.rgba[o + 1] = 0;
+            r.rgba[o + 2] = 255; // everything fuchsia now
+        }
+        const auto builds = scene.sceneBuildCount();
+        scene.setPassCount(r, {{QStringLiteral("6"), {255, 0, 255}}});
+        QCOMPARE(scene.sceneBuildCount(), builds);
+        const QImage img = egl.render(scene, QSize(640, 480));
+        const auto p = scene.project(19.0, -33.0, scene.terrainHeight(19.0, -33.0));
+        QVERIFY(p);
+        QCOMPARE(pixelAt(img, *p), qRgb(255, 0, 255));
     }
 
     void flatPlaneWhenNoElevations() {
@@ -117,6 +145,70 @@ private slots:
         const auto ground = scene.project(-70.0, 60.0, 2.0);
         QVERIFY(ground);
         QVERIFY2(isTerrain(pixelAt(img, *ground)), qPrintable(describe(pixelAt(img, *ground))));
+    }
+
+    void degenerateInputIsDrawnWithoutCrashing() {
+        SiteSceneRenderer scene;
+        scene.setScene(Scene3D{}); // nothing at all: the default flat plane
+        EglOffscreenRenderer egl;
+        QVERIFY(!egl.render(scene, QSize(200, 150)).isNull());
+        QCOMPARE(scene.pick(100, 75), QString());
+
+        Scene3D s = makeSite();
+        s.terrain.points.push_back({std::nan(""), 0.0, 0.0});
+        s.terrain.points.push_back({0.0, INFINITY, 0.0});
+        Way3D single;
+        single.points = {{1, 1, 0}};
+        Way3D repeated;
+        repeated.points = {{5, 5, 0}, {5, 5, 0}, {5, 5, 0}};
+        Way3D line;
+        line.kind = WayKind::Area;
+        line.points = {{0, 0, 0}, {10, 0, 0}};
+        Way3D noWidth;
+        noWidth.points = {{0, 0, 0}, {10, 0, 0}};
+        noWidth.width = std::nan("");
+        s.ways.insert(s.ways.end(), {single, repeated, line, noWidth});
+        s.passCount.rgba.resize(7); // inconsistent with cols*rows*4: ignored
+        s.machines[1].e = std::nan("");
+        scene.setScene(s);
+        const QImage img = egl.render(scene, QSize(640, 480));
+        QVERIFY(!img.isNull());
+        // The good data survives: Delaunay terrain, M1 drawn and pickable; M2 (bad pose) hidden, not
+        // pickable.
+        QVERIFY(qAbs(scene.terrainHeight(-70.0, 60.0) - groundU(-70.0, 60.0)) < 0.5);
+        const Machine3D m1 = *scene.machine(QStringLiteral("M1"));
+        const auto p1 = scene.project(m1.e, m1.n, m1.u + m1.height);
+        QVERIFY(p1);
+        QVERIFY2(isMagenta(pixelAt(img, *p1)), qPrintable(describe(pixelAt(img, *p1))));
+        QCOMPARE(scene.pick(p1->x(), p1->y()), QStringLiteral("M1"));
+        QVERIFY(!scene.machine(QStringLiteral("M2")));
+        // The pass-count patch is gone (raster refused), so its red column shows terrain.
+        const auto red = scene.project(28.0, -35.0, scene.terrainHeight(28.0, -35.0));
+        QVERIFY(red);
+        QVERIFY2(isTerrain(pixelAt(img, *red)), qPrintable(describe(pixelAt(img, *red))));
+    }
+
+    void defaultSizesByEquipmentType() {
+        const MachineSize truck = defaultMachineSize(QStringLiteral("Haul Truck"));
+        const MachineSize roller = defaultMachineSize(QStringLiteral("tandem roller"));
+        const MachineSize ugv = defaultMachineSize(QStringLiteral("UGV"));
+        QVERIFY(truck.height > roller.height && roller.height > ugv.height);
+        QVERIFY(truck.length > roller.length);
+        QCOMPARE(defaultMachineSize(QStringLiteral("paver")).width, 3.2);
+        QVERIFY(defaultMachineSize(QString()).length > 0.0); // unknown type still gets a visible box
+    }
+
+    void clearMessageWithoutEglAndWithoutDisplay() {
+        qputenv("OCU_VIEW3D_NO_EGL", "1");
+        EglOffscreenRenderer egl;
+        const bool ok = egl.initialize();
+        qunsetenv("OCU_VIEW3D_NO_EGL");
+        QVERIFY(!ok);
+        QCOMPARE(egl.backend(), EglOffscreenRenderer::Backend::None);
+        QVERIFY2(egl.errorString().contains(QStringLiteral("DISPLAY")), qPrintable(egl.errorString()));
+        SiteSceneRenderer scene;
+        scene.setScene(makeSite());
+        QVERIFY(egl.render(scene, QSize(100, 100)).isNull());
     }
 };
 

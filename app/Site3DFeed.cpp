@@ -1,0 +1,147 @@
+#include "Site3DFeed.h"
+
+#include "models/FleetModel.h"
+#include "models/FleetSelection.h"
+#include "widgets/view3d/Site3DView.h"
+
+#include <QTimer>
+
+namespace ocu {
+
+static Rgb rgb(const QColor& c) {
+    return Rgb{static_cast<std::uint8_t>(c.red()), static_cast<std::uint8_t>(c.green()),
+               static_cast<std::uint8_t>(c.blue())};
+}
+
+Site3DFeed::Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* selection, QObject* parent)
+    : QObject(parent), m_view(view), m_fleet(fleet), m_machineTimer(new QTimer(this)), m_passTimer(new QTimer(this)) {
+    connect(fleet, &FleetModel::machinesChanged, this, [this] { m_machinesDirty = true; });
+    connect(fleet, &FleetModel::machineAdded, this, [this] { m_machinesDirty = true; });
+    connect(fleet, &FleetModel::machineRemoved, this, [this] { m_machinesDirty = true; });
+    connect(fleet, &FleetModel::machineStaleChanged, this, [this] { m_machinesDirty = true; });
+    connect(m_machineTimer, &QTimer::timeout, this, [this] {
+        if (m_machinesDirty)
+            pushMachines();
+    });
+    m_machineTimer->start(100);
+    connect(m_passTimer, &QTimer::timeout, this, [this] {
+        if (m_passDirty)
+            pushPassCount();
+    });
+    m_passTimer->start(1000);
+    if (selection) {
+        connect(view, &Site3DView::machinePicked, selection, &FleetSelection::setCurrent);
+        connect(selection, &FleetSelection::currentMachineChanged, view, &Site3DView::setSelectedMachine);
+    }
+    rebuildScene();
+}
+
+void Site3DFeed::setSiteMap(const SiteMapData& map) {
+    m_map = map;
+    rebuildScene();
+}
+
+void Site3DFeed::setPassCountLayer(const PassCountLayer* layer) {
+    m_layer = layer;
+    m_passDirty = true;
+}
+
+void Site3DFeed::passCountChanged() { m_passDirty = true; }
+
+void Site3DFeed::pushMachines() {
+    if (!m_view)
+        return;
+    m_machinesDirty = false;
+    std::vector<Machine3D> out;
+    const auto& machines = m_fleet->machinesSnapshot();
+    out.reserve(static_cast<std::size_t>(machines.size()));
+    for (int row = 0; row < machines.size(); ++row) {
+        const MachineState& s = machines[row];
+        if (!s.hasPosition)
+            continue;
+        const MachineSize d = defaultMachineSize(s.type);
+        Machine3D m;
+        m.id = s.id;
+        m.e = s.e;
+        m.n = s.n;
+        m.u = s.u;
+        m.headingDeg = s.headingDeg;
+        m.length = s.length > 0 ? s.length : d.length;
+        m.width = s.width > 0 ? s.width : d.width;
+        m.height = s.height > 0 ? s.height : d.height;
+        const int modelRow = m_fleet->rowOf(s.id);
+        m.colour = rgb(statusColor(modelRow >= 0 ? m_fleet->statusAt(modelRow) : statusOf(s, false)));
+        m.label = s.name;
+        out.push_back(std::move(m));
+    }
+    m_view->updateMachines(out);
+}
+
+void Site3DFeed::pushPassCount() {
+    if (!m_view || !m_layer)
+        return;
+    m_passDirty = false;
+    if (m_layer->revision() == m_layerRevision)
+        return;
+    m_layerRevision = m_layer->revision();
+    PassCountRaster r;
+    r.originE = m_layer->origin().x();
+    r.originN = m_layer->origin().y();
+    r.cellSize = m_layer->cellSize();
+    r.cols = m_layer->columns();
+    r.rows = m_layer->rows();
+    if (r.cols <= 0 || r.rows <= 0 || static_cast<qint64>(r.cols) * r.rows > 16'000'000)
+        return;
+    std::vector<std::uint16_t> counts;
+    m_layer->countsIn(QRect(0, 0, r.cols, r.rows), counts);
+    r.rgba.assign(static_cast<std::size_t>(r.cols) * r.rows * 4, 0);
+    for (std::size_t i = 0; i < counts.size() && i * 4 + 3 < r.rgba.size(); ++i) {
+        if (counts[i] == 0)
+            continue;
+        const QColor c = passCountColor(counts[i], PassPalette::Summary, m_target);
+        r.rgba[i * 4] = static_cast<std::uint8_t>(c.red());
+        r.rgba[i * 4 + 1] = static_cast<std::uint8_t>(c.green());
+        r.rgba[i * 4 + 2] = static_cast<std::uint8_t>(c.blue());
+        r.rgba[i * 4 + 3] = 255;
+    }
+    const std::vector<LegendEntry> legend{
+        {tr("below %1").arg(m_target.min), rgb(passCountSummaryColor(m_target.min - 1, m_target))},
+        {tr("%1–%2").arg(m_target.min).arg(m_target.max), rgb(passCountSummaryColor(m_target.min, m_target))},
+        {tr("above %1").arg(m_target.max), rgb(passCountSummaryColor(m_target.max + 1, m_target))}};
+    m_view->setPassCount(r, legend);
+}
+
+void Site3DFeed::rebuildScene() {
+    if (!m_view)
+        return;
+    Scene3D scene;
+    QRectF b = m_map.bounds();
+    // Machines outside the map (UGVs, the road works) must stand on the ground too.
+    for (const MachineState& s : m_fleet->machinesSnapshot())
+        if (s.hasPosition)
+            b = b.isNull() ? QRectF(s.e - 1, s.n - 1, 2, 2) : b.united(QRectF(s.e - 1, s.n - 1, 2, 2));
+    if (b.isNull())
+        b = QRectF(-200, -200, 400, 400);
+    b = b.adjusted(-60, -60, 60, 60);
+    scene.terrain.minE = b.left();
+    scene.terrain.maxE = b.right();
+    scene.terrain.minN = b.top();
+    scene.terrain.maxN = b.bottom();
+    for (const MapFeature& f : m_map.features) {
+        Way3D w;
+        w.kind = f.kind == MapFeatureKind::Area ? WayKind::Area
+                 : f.kind == MapFeatureKind::Lane ? WayKind::Lane
+                                                  : WayKind::Road;
+        w.colour = rgb(taskColor(f.defaultTask));
+        w.width = f.width > 0 ? f.width : (w.kind == WayKind::Lane ? 4.0 : 8.0);
+        for (const QPointF& p : f.points)
+            w.points.push_back({p.x(), p.y(), 0});
+        scene.ways.push_back(std::move(w));
+    }
+    m_view->setScene(scene);
+    m_machinesDirty = true;
+    m_layerRevision = 0;
+    m_passDirty = m_layer != nullptr;
+}
+
+} // namespace ocu

@@ -1,0 +1,46 @@
+#pragma once
+// Feeds the 3D view from the fleet model, the site map and the pass-count layer: machines through the
+// fast path at most 10 times a second, the map as a full scene rebuild when its revision changes, the
+// pass-count raster at most once a second. Selection goes both ways through the shared FleetSelection.
+#include "models/PassCountLayer.h"
+#include "models/SiteMapData.h"
+
+#include <QObject>
+#include <QPointer>
+
+class QTimer;
+
+namespace ocu {
+
+class FleetModel;
+class FleetSelection;
+class Site3DView;
+
+class Site3DFeed : public QObject {
+    Q_OBJECT
+public:
+    Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* selection, QObject* parent = nullptr);
+
+    void setSiteMap(const SiteMapData& map);
+    void setPassCountLayer(const PassCountLayer* layer);
+    void setPassTarget(PassTarget target) { m_target = target; }
+    void passCountChanged();
+
+private:
+    void pushMachines();
+    void pushPassCount();
+    void rebuildScene();
+
+    QPointer<Site3DView> m_view;
+    FleetModel* m_fleet;
+    SiteMapData m_map;
+    const PassCountLayer* m_layer = nullptr;
+    quint64 m_layerRevision = 0;
+    PassTarget m_target;
+    QTimer* m_machineTimer;
+    QTimer* m_passTimer;
+    bool m_machinesDirty = true;
+    bool m_passDirty = false;
+};
+
+} // namespace ocu

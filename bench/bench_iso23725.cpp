@@ -1,0 +1,137 @@
+// bench_iso23725: parse+validate MachinePositionV1 (msgs/s), a 100k-node / 20k-way map document (parse time),
+// and 1,000 simulated trucks at 10 Hz over loopback ws:// into the IsoStack (does the OCU keep up?).
+#include "iso23725/IsoStack.h"
+#include "iso23725/MapModel.h"
+#include "sim/iso23725/SimulatedAhs.h"
+
+#include "common/Log.h"
+
+#include <benchmark/benchmark.h>
+
+#include <atomic>
+#include <thread>
+
+using namespace ocu::iso23725;
+
+namespace {
+
+const std::string kPosition =
+    R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:15:07.412Z","EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78",)"
+    R"("MachinePositionV1":{"Timestamp":"2025-03-14T02:15:07.380Z","Heading":87,"Latitude":-23.360114,"Longitude":119.730552,"Elevation":512.34,)"
+    R"("LatitudeAccuracy":0.05,"LongitudeAccuracy":0.06,"ElevationAccuracy":0.11,"HeadingAccuracy":0.8,"Speed":34}})";
+
+void BM_ParseValidatePosition(benchmark::State& state) {
+    std::int64_t sum = 0;
+    for (auto _ : state) {
+        auto r = decodeMessage(kPosition);
+        if (!r || !r->errors.empty())
+            state.SkipWithError("decode failed");
+        sum += *r->find<MachinePositionV1>()->pose.heading;
+    }
+    benchmark::DoNotOptimize(sum);
+    state.SetItemsProcessed(state.iterations());
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(kPosition.size()));
+}
+BENCHMARK(BM_ParseValidatePosition);
+
+// Reference on the same machine and load: nlohmann DOM parse alone, no validation.
+void BM_JsonParseOnlyReference(benchmark::State& state) {
+    std::size_t n = 0;
+    for (auto _ : state) {
+        auto j = nlohmann::json::parse(kPosition.begin(), kPosition.end(), nullptr, false);
+        n += j.size();
+    }
+    benchmark::DoNotOptimize(n);
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_JsonParseOnlyReference);
+
+std::vector<std::string> bigMap(std::size_t nodes, std::size_t ways) {
+    MapModel m;
+    for (std::size_t i = 0; i < nodes; ++i) {
+        MapNode n;
+        n.id = static_cast<std::int64_t>(i + 1);
+        n.lat = -23.36 + 0.00001 * static_cast<double>(i % 1000);
+        n.lon = 119.73 + 0.00001 * static_cast<double>(i / 1000);
+        n.ele = 500.0;
+        m.nodes[n.id] = n;
+    }
+    const std::size_t per = nodes / ways; // 5 nodes per way, rows of the grid
+    for (std::size_t w = 0; w < ways; ++w) {
+        MapWay way;
+        way.id = static_cast<std::int64_t>(w + 1);
+        for (std::size_t k = 0; k < per; ++k)
+            way.nodes.push_back(static_cast<std::int64_t>(w * per + k + 1));
+        way.tags = {{"name", "road " + std::to_string(w)}, {"autonomy", "mixed"}, {"oneway", "no"}};
+        m.ways[way.id] = way;
+    }
+    return writeOsmChunks(m, 10000, 1);
+}
+
+void BM_ParseMap100kNodes20kWays(benchmark::State& state) {
+    auto chunks = bigMap(100000, 20000);
+    std::size_t bytes = 0;
+    for (auto& c : chunks)
+        bytes += c.size();
+    for (auto _ : state) {
+        auto r = parseMapDocument(chunks);
+        if (!r || r->nodes.size() != 100000 || r->ways.size() != 20000)
+            state.SkipWithError(r ? "wrong counts" : r.error().c_str());
+    }
+    state.counters["chunks"] = static_cast<double>(chunks.size());
+    state.counters["MB"] = static_cast<double>(bytes) / 1e6;
+}
+BENCHMARK(BM_ParseMap100kNodes20kWays)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+struct CountingListener : IsoListener {
+    std::atomic<std::uint64_t> changes{0};
+    void onMachineChanged(const IsoMachineSnapshot&) override { ++changes; }
+};
+
+// 1,000 trucks at 10 Hz: the simulator's send queue must not grow and every position must be decoded.
+void BM_Loopback1000TrucksAt10Hz(benchmark::State& state) {
+    ocu::setLogThreshold(ocu::LogLevel::Error);
+    ocu::sim::SimulatedAhsConfig sc;
+    sc.truckCount = 1000;
+    sc.positionRateHz = 10;
+    sc.healthEvents = false;
+    ocu::sim::SimulatedAhs ahs(sc);
+    if (!ahs.start()) {
+        state.SkipWithError("simulator did not start");
+        return;
+    }
+    IsoConfig ic;
+    ic.links.push_back(IsoLinkConfig{"ahs", {}});
+    ic.links[0].ws.url = ahs.url();
+    CountingListener listener;
+    IsoStack stack(ic, listener);
+    stack.start();
+    for (int i = 0; i < 500 && stack.counters().get("rx.positions") < 1000; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const double seconds = static_cast<double>(state.range(0));
+    std::size_t maxQueue = 0, lastQueue = 0;
+    for (auto _ : state) {
+        auto rx0 = stack.counters().get("rx.positions");
+        auto tx0 = ahs.stats().positionsSent;
+        auto t0 = std::chrono::steady_clock::now();
+        while (std::chrono::steady_clock::now() - t0 < std::chrono::duration<double>(seconds)) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(250));
+            lastQueue = ahs.stats().queuedBytes;
+            maxQueue = std::max(maxQueue, lastQueue);
+        }
+        double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        state.counters["rx_positions_per_s"] =
+            static_cast<double>(stack.counters().get("rx.positions") - rx0) / dt;
+        state.counters["tx_positions_per_s"] = static_cast<double>(ahs.stats().positionsSent - tx0) / dt;
+    }
+    state.counters["max_queue_kB"] = static_cast<double>(maxQueue) / 1024.0;
+    state.counters["end_queue_kB"] = static_cast<double>(lastQueue) / 1024.0;
+    state.counters["rejected"] = static_cast<double>(stack.counters().sumPrefix("rx.rejected."));
+    stack.stop();
+    ahs.stop();
+}
+BENCHMARK(BM_Loopback1000TrucksAt10Hz)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
+
+} // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,317 @@
+#include "IsoBridge.h"
+
+#include <QJsonObject>
+#include <QMetaObject>
+
+#include <cmath>
+
+namespace ocu {
+
+using namespace iso23725;
+
+static QString q(const std::string& s) { return QString::fromStdString(s); }
+
+IsoBridge::IsoBridge(const IsoConfig& config, const GeoFrame& frame, QObject* parent)
+    : FleetBridge(Protocol::Iso23725, parent), m_config(config), m_frame(frame) {
+    m_stack = std::make_unique<IsoStack>(m_config, static_cast<IsoListener&>(*this));
+}
+
+IsoBridge::~IsoBridge() { stop(); }
+
+QString IsoBridge::start() {
+    for (const auto& l : m_config.links)
+        publishLink({QStringLiteral("iso23725:") + q(l.name), ocu::LinkState::Unknown, -1, tr("connecting")});
+    if (!m_stack->start())
+        return tr("ISO 23725: a link could not start (see the event log)");
+    return {};
+}
+
+void IsoBridge::stop() {
+    if (m_stack)
+        m_stack->stop();
+}
+
+QStringList IsoBridge::linkNames() const {
+    QStringList out;
+    for (const auto& l : m_config.links)
+        out << q(l.name);
+    return out;
+}
+
+AllStopState IsoBridge::allStopState(const QString& link) const {
+    return static_cast<AllStopState>(m_allStop.value(link, static_cast<int>(AllStopState::Unknown)));
+}
+
+// ---- io thread ----
+
+void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, const std::string& reason) {
+    LinkStatus s;
+    s.link = QStringLiteral("iso23725:") + q(link);
+    s.state = state == iso23725::LinkState::Up     ? ocu::LinkState::Up
+              : state == iso23725::LinkState::Down ? ocu::LinkState::Down
+                                                   : ocu::LinkState::Unknown;
+    s.dataAgeMs = state == iso23725::LinkState::Up ? 0 : -1;
+    s.detail = q(reason);
+    if (state == iso23725::LinkState::Up)
+        m_everUp.insert(link);
+    // Before the first connection the link is "connecting", not lost: no alarm for that.
+    if (state == iso23725::LinkState::Down && !m_everUp.count(link))
+        s.state = ocu::LinkState::Unknown;
+    publishLink(s);
+    if (state != iso23725::LinkState::Up && m_everUp.count(link)) {
+        // §2.1: while the link is down nothing about its machines is known.
+        m_allStopIo[link] = AllStopState::Unknown;
+        publishEvent(makeEvent(EventSeverity::Warning, ocu::EventKind::LinkLoss, {},
+                               tr("ISO 23725 link %1 down: %2").arg(q(link), q(reason)), QStringLiteral("iso23725")));
+        for (auto& [key, snap] : m_snapshots) {
+            if (snap.link != link)
+                continue;
+            snap.stateKnown = false;
+            publishMachine(toMachine(snap, AllStopState::Unknown));
+        }
+    }
+}
+
+void IsoBridge::onMachineChanged(const IsoMachineSnapshot& machine) {
+    const std::string key = machine.link + "/" + machine.equipmentId;
+    m_snapshots[key] = machine;
+    MachineState m = toMachine(machine, m_allStopIo.count(machine.link) ? m_allStopIo[machine.link] : AllStopState::Unknown);
+    {
+        std::lock_guard lock(m_machineLinksMutex);
+        m_machineLinks.insert(m.id, q(machine.link));
+    }
+    publishMachine(m);
+}
+
+void IsoBridge::onMachineRemoved(const std::string& link, const Guid& equipmentId) {
+    m_snapshots.erase(link + "/" + equipmentId);
+    publishRemoval(protocolPrefix(Protocol::Iso23725) + q(equipmentId));
+}
+
+void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& status) {
+    m_allStopIo[link] = status.state;
+    for (const auto& [key, snap] : m_snapshots)
+        if (snap.link == link)
+            publishMachine(toMachine(snap, status.state));
+    const QString l = q(link);
+    const int st = static_cast<int>(status.state);
+    QMetaObject::invokeMethod(this, [this, l, st] { m_allStop.insert(l, st); }, Qt::QueuedConnection);
+    publishEvent(makeEvent(status.state == AllStopState::On ? EventSeverity::Alarm : EventSeverity::Info,
+                           ocu::EventKind::Info, {},
+                           tr("AHS %1 reports all-stop %2%3")
+                               .arg(l, QString::fromUtf8(toString(status.state)),
+                                    status.external ? tr(" (issued by another system)") : QString()),
+                           QStringLiteral("iso23725")));
+}
+
+void IsoBridge::onMapProgress(const std::string& link, const MapProgress& progress) {
+    const QString l = q(link);
+    const int r = progress.received, t = progress.total;
+    QMetaObject::invokeMethod(this, [this, l, r, t] { emit mapProgress(l, r, t); }, Qt::QueuedConnection);
+}
+
+void IsoBridge::onMapChanged(const std::string& link, const MapModel& map) {
+    // Nodes are re-projected into the site frame through their WGS84 coordinates: the map's own ENU
+    // origin (its centroid) is not the site origin.
+    SiteMapData data;
+    data.features.reserve(static_cast<qsizetype>(map.ways.size()));
+    for (const auto& [id, way] : map.ways) {
+        MapFeature f;
+        f.id = QStringLiteral("%1/%2").arg(q(link)).arg(id);
+        f.name = q(way.name());
+        f.kind = way.kind == WayKind::Area ? MapFeatureKind::Area
+                 : way.kind == WayKind::Lane ? MapFeatureKind::Lane
+                                             : MapFeatureKind::Road;
+        f.defaultTask = q(way.defaultTask());
+        if (f.defaultTask.isEmpty() && f.kind != MapFeatureKind::Area)
+            f.defaultTask = QStringLiteral("haul");
+        const std::string autonomy = way.tag(f.kind == MapFeatureKind::Area ? "autonomy:area" : "autonomy");
+        f.autonomous = autonomy == "yes" || autonomy == "true" || (autonomy.empty() && way.tag("autonomy") == "yes");
+        const std::string width = way.tag("width");
+        if (!width.empty())
+            f.width = std::atof(width.c_str());
+        for (std::int64_t nid : way.nodes) {
+            auto it = map.nodes.find(nid);
+            if (it == map.nodes.end())
+                continue;
+            const EnuPoint p = m_frame.toLocal({it->second.lat, it->second.lon, it->second.ele.value_or(0)});
+            f.points.push_back(QPointF(p.e, p.n));
+        }
+        if (!f.points.isEmpty())
+            data.features.push_back(std::move(f));
+    }
+    QMetaObject::invokeMethod(
+        this,
+        [this, data = std::move(data)]() mutable {
+            data.revision = m_map.revision + 1;
+            m_map = std::move(data);
+            emit siteMapChanged();
+        },
+        Qt::QueuedConnection);
+}
+
+void IsoBridge::onFleetDiscrepancies(const std::string& link, const std::vector<std::string>& items) {
+    for (const auto& item : items)
+        publishEvent(makeEvent(EventSeverity::Warning, ocu::EventKind::Discrepancy, {},
+                               tr("Fleet definition discrepancy on %1: %2").arg(q(link), q(item)),
+                               QStringLiteral("iso23725")));
+}
+
+void IsoBridge::onEvent(IsoSeverity severity, const std::string& text) {
+    const EventSeverity s = severity == IsoSeverity::Error     ? EventSeverity::Alarm
+                            : severity == IsoSeverity::Warning ? EventSeverity::Warning
+                                                               : EventSeverity::Info;
+    publishEvent(makeEvent(s, ocu::EventKind::Info, {}, q(text), QStringLiteral("iso23725")));
+}
+
+static ModeCategory modeCategory(const std::string& mode) {
+    QString m = QString::fromStdString(mode).toLower();
+    if (m.isEmpty())
+        return ModeCategory::Unknown;
+    if (m.contains(QLatin1String("auto")))
+        return ModeCategory::Autonomous;
+    if (m.contains(QLatin1String("manual")))
+        return ModeCategory::Manual;
+    if (m.contains(QLatin1String("remote")) || m.contains(QLatin1String("tele")))
+        return ModeCategory::Remote;
+    if (m.contains(QLatin1String("stop")))
+        return ModeCategory::Stopped;
+    if (m.contains(QLatin1String("fault")) || m.contains(QLatin1String("error")))
+        return ModeCategory::Fault;
+    if (m.contains(QLatin1String("idle")) || m.contains(QLatin1String("park")))
+        return ModeCategory::Idle;
+    return ModeCategory::Transition;
+}
+
+MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop) const {
+    MachineState m;
+    m.id = protocolPrefix(Protocol::Iso23725) + q(s.equipmentId);
+    m.protocol = Protocol::Iso23725;
+    m.name = s.hid.empty() ? q(s.equipmentId).left(8) : q(s.hid);
+    m.type = q(s.type);
+    m.link = s.stateKnown ? ocu::LinkState::Up : ocu::LinkState::Unknown;
+    if (s.position) {
+        const auto& p = *s.position;
+        const EnuPoint e = m_frame.toLocal({p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)});
+        m.hasPosition = true;
+        m.e = e.e;
+        m.n = e.n;
+        m.u = e.u;
+        m.lat = p.latitude;
+        m.lon = p.longitude;
+        m.headingDeg = p.heading.value_or(0);
+        m.speed = p.speedKmh.value_or(0) / 3.6;
+        m.lastDataMs = p.receivedUnixMs;
+        m.lastMessageMs = p.measuredUnixMs.value_or(0);
+    }
+    m.length = s.length.value_or(0);
+    m.width = s.width.value_or(0);
+    const QString type = m.type.toLower();
+    if (type.contains(QLatin1String("truck"))) {
+        m.length = m.length > 0 ? m.length : 12.0;
+        m.width = m.width > 0 ? m.width : 7.0;
+        m.height = 6.5;
+    } else if (type.contains(QLatin1String("shovel")) || type.contains(QLatin1String("excavator"))) {
+        m.length = m.length > 0 ? m.length : 15.0;
+        m.width = m.width > 0 ? m.width : 8.0;
+        m.height = 9.0;
+    } else {
+        m.length = m.length > 0 ? m.length : 5.0;
+        m.width = m.width > 0 ? m.width : 2.2;
+        m.height = 2.2;
+    }
+    m.modeText = q(s.autonomyMode);
+    m.mode = s.stateKnown ? modeCategory(s.autonomyMode) : ModeCategory::Unknown;
+    if (!s.stateKnown || !s.autonomous) {
+        m.stop = s.autonomous ? StopState::Unknown : StopState::None;
+    } else {
+        m.stop = stop == AllStopState::On    ? StopState::Stopped
+                 : stop == AllStopState::Off ? StopState::None
+                                             : StopState::Unknown;
+        if (m.stop == StopState::Stopped)
+            m.stopText = tr("all-stop");
+    }
+    if (s.diagnostics) {
+        m.health = s.diagnostics->empty() ? HealthLevel::Ok : HealthLevel::Warning;
+        QStringList codes;
+        for (const auto& d : *s.diagnostics)
+            codes << QStringLiteral("%1:%2").arg(d.componentId).arg(d.faultCode);
+        m.healthText = codes.isEmpty() ? tr("no active diagnostics") : tr("diagnostics %1").arg(codes.join(QLatin1Char(' ')));
+    } else if (s.health) {
+        m.health = HealthLevel::Ok;
+    }
+    if (s.health && s.health->fuelLevel && *s.health->fuelLevel < 10) {
+        m.health = std::max(m.health, HealthLevel::Warning);
+        m.healthText += (m.healthText.isEmpty() ? QString() : QStringLiteral("; ")) +
+                        tr("fuel %1 %").arg(*s.health->fuelLevel);
+    }
+    return m;
+}
+
+// ---- GUI thread: commands ----
+
+QString IsoBridge::linkOf(const QString& machineId) const {
+    std::lock_guard lock(m_machineLinksMutex);
+    return m_machineLinks.value(machineId);
+}
+
+CommandResult IsoBridge::stopAll() {
+    QStringList done;
+    for (const auto& l : m_config.links) {
+        m_stack->allStopApply(l.name);
+        done << q(l.name);
+    }
+    if (done.isEmpty())
+        return CommandResult::failure(tr("no ISO 23725 link configured"));
+    return CommandResult::success(tr("all-stop Apply sent on %1 (state shown as the AHS reports it)").arg(done.join(QStringLiteral(", "))));
+}
+
+CommandResult IsoBridge::stopMachine(const QString& id) {
+    const QString link = linkOf(id);
+    if (link.isEmpty())
+        return CommandResult::failure(tr("unknown ISO 23725 machine: %1").arg(id));
+    // ISO 23725 stops autonomous machines per AHS (all-stop); there is no single-machine stop message.
+    m_stack->allStopApply(link.toStdString());
+    return CommandResult::success(tr("all-stop Apply sent to AHS %1 (ISO 23725 stops per AHS, not per machine)").arg(link));
+}
+
+CommandResult IsoBridge::clearStop(const QString& id) {
+    const QString link = linkOf(id);
+    if (link.isEmpty())
+        return CommandResult::failure(tr("unknown ISO 23725 machine: %1").arg(id));
+    m_stack->allStopRemove(link.toStdString());
+    return CommandResult::success(tr("all-stop Remove sent to AHS %1").arg(link));
+}
+
+CommandResult IsoBridge::command(const QString& name, const QJsonObject& args) {
+    QString link = args.value(QStringLiteral("link")).toString();
+    if (link.isEmpty() && args.contains(QStringLiteral("id")))
+        link = linkOf(args.value(QStringLiteral("id")).toString());
+    if (link.isEmpty() && m_config.links.size() == 1)
+        link = q(m_config.links.front().name);
+    if (!linkNames().contains(link))
+        return CommandResult::failure(tr("%1: unknown ISO 23725 link \"%2\"").arg(name, link));
+    if (name == QLatin1String("all_stop_apply")) {
+        m_stack->allStopApply(link.toStdString());
+        return CommandResult::success(tr("all-stop Apply sent to %1").arg(link));
+    }
+    if (name == QLatin1String("all_stop_remove")) {
+        m_stack->allStopRemove(link.toStdString());
+        return CommandResult::success(tr("all-stop Remove sent to %1").arg(link));
+    }
+    if (name == QLatin1String("fetch_map")) {
+        m_stack->fetchMap(link.toStdString());
+        return CommandResult::success(tr("map requested from %1").arg(link));
+    }
+    if (name == QLatin1String("reset_assignment")) {
+        const QString id = args.value(QStringLiteral("id")).toString();
+        const QString prefix = protocolPrefix(Protocol::Iso23725);
+        if (!id.startsWith(prefix))
+            return CommandResult::failure(tr("reset_assignment: \"id\" must name an ISO 23725 machine"));
+        m_stack->resetAssignment(link.toStdString(), id.mid(prefix.size()).toStdString());
+        return CommandResult::success(tr("assignment reset sent"));
+    }
+    return FleetBridge::command(name, args);
+}
+
+} // namespace ocu

@@ -1,0 +1,71 @@
+#pragma once
+// The Qt face of the ISO 23725 stack (the FMS side): AHS machines become MachineState rows (coalesced),
+// links become link states, the AHS map becomes SiteMapData, and STOP ALL becomes all-stop Apply on
+// every AHS link. The stop state shown is only ever what MachineAllStopV1 reported.
+#include "models/FleetBridge.h"
+
+#include "common/GeoFrame.h"
+#include "iso23725/IsoConfig.h"
+#include "iso23725/IsoStack.h"
+
+#include <QHash>
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+
+namespace ocu {
+
+class IsoBridge : public FleetBridge, private iso23725::IsoListener {
+    Q_OBJECT
+public:
+    IsoBridge(const iso23725::IsoConfig& config, const GeoFrame& frame, QObject* parent = nullptr);
+    ~IsoBridge() override;
+
+    QString start();
+    void stop();
+    iso23725::IsoStack* stack() const { return m_stack.get(); }
+    QStringList linkNames() const;
+
+    CommandResult stopAll() override;
+    CommandResult stopMachine(const QString& id) override;
+    CommandResult clearStop(const QString& id) override;
+    // all_stop_apply / all_stop_remove {"link"}, fetch_map {"link"}, reset_assignment {"id"}.
+    CommandResult command(const QString& name, const QJsonObject& args) override;
+    SiteMapData siteMap() const override { return m_map; }
+
+    // GUI thread: the all-stop status per link as the AHS reported it.
+    iso23725::AllStopState allStopState(const QString& link) const;
+
+signals:
+    void mapProgress(const QString& link, int received, int total);
+
+private:
+    void onLinkState(const std::string& link, iso23725::LinkState state, const std::string& reason) override;
+    void onMachineChanged(const iso23725::IsoMachineSnapshot& machine) override;
+    void onMachineRemoved(const std::string& link, const iso23725::Guid& equipmentId) override;
+    void onAllStopChanged(const std::string& link, const iso23725::AllStopStatus& status) override;
+    void onMapProgress(const std::string& link, const iso23725::MapProgress& progress) override;
+    void onMapChanged(const std::string& link, const iso23725::MapModel& map) override;
+    void onFleetDiscrepancies(const std::string& link, const std::vector<std::string>& items) override;
+    void onEvent(iso23725::IsoSeverity severity, const std::string& text) override;
+
+    MachineState toMachine(const iso23725::IsoMachineSnapshot& m, iso23725::AllStopState stop) const;
+    QString linkOf(const QString& machineId) const;
+
+    iso23725::IsoConfig m_config;
+    GeoFrame m_frame;
+    std::unique_ptr<iso23725::IsoStack> m_stack;
+    // io thread only: latest snapshots and all-stop per link, to re-derive rows when the all-stop changes.
+    std::map<std::string, iso23725::IsoMachineSnapshot> m_snapshots;
+    std::map<std::string, iso23725::AllStopState> m_allStopIo;
+    std::set<std::string> m_everUp;
+    // GUI thread
+    SiteMapData m_map;
+    QHash<QString, int> m_allStop;
+    mutable std::mutex m_machineLinksMutex;
+    QHash<QString, QString> m_machineLinks; // machine id -> link (written on the io thread)
+};
+
+} // namespace ocu

@@ -1,0 +1,359 @@
+#include "JausBridge.h"
+
+#include "jaus/JausStack.h"
+
+#include <QDateTime>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace ocu {
+
+using namespace jaus;
+
+JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject* parent)
+    : FleetBridge(Protocol::Jaus, parent), m_config(config), m_frame(frame),
+      m_snapshots(this, [this](auto&& batch) {
+          for (auto& [id, snap] : batch) {
+              m_latest.insert(id, snap);
+              emit subsystemUpdated(snap);
+          }
+      }) {
+    qRegisterMetaType<SubsystemSnapshot>();
+    qRegisterMetaType<JausEvent>();
+    m_stack = std::make_unique<JausStack>(m_config, static_cast<JausListener&>(*this));
+}
+
+JausBridge::~JausBridge() { stop(); }
+
+QString JausBridge::start() {
+    try {
+        m_stack->start();
+    } catch (const std::exception& e) {
+        publishLink({QStringLiteral("jaus"), ocu::LinkState::Down, -1, QString::fromUtf8(e.what())});
+        return tr("JAUS: %1").arg(QString::fromUtf8(e.what()));
+    }
+    publishLink({QStringLiteral("jaus"), ocu::LinkState::Degraded, -1, tr("searching for subsystems")});
+    return {};
+}
+
+void JausBridge::stop() {
+    if (m_stack)
+        m_stack->stop(); // releases control after zero drive commands
+}
+
+QString JausBridge::machineId(std::uint16_t subsystem) {
+    return protocolPrefix(Protocol::Jaus) + QString::number(subsystem);
+}
+
+std::optional<std::uint16_t> JausBridge::subsystemOf(const QString& machineId) {
+    const QString prefix = protocolPrefix(Protocol::Jaus);
+    if (!machineId.startsWith(prefix))
+        return std::nullopt;
+    bool ok = false;
+    const uint v = machineId.mid(prefix.size()).toUInt(&ok);
+    if (!ok || v == 0 || v > 65534)
+        return std::nullopt;
+    return static_cast<std::uint16_t>(v);
+}
+
+QList<std::uint16_t> JausBridge::subsystems() const {
+    auto keys = m_latest.keys();
+    std::sort(keys.begin(), keys.end());
+    return keys;
+}
+
+std::optional<SubsystemSnapshot> JausBridge::subsystem(std::uint16_t id) const {
+    auto it = m_latest.find(id);
+    if (it == m_latest.end())
+        return std::nullopt;
+    return *it;
+}
+
+// ---- io thread ----
+
+void JausBridge::onSubsystemChanged(const SubsystemSnapshot& snapshot) {
+    m_snapshots.push(snapshot.subsystem, snapshot);
+    publishMachine(toMachine(snapshot));
+    const bool up = snapshot.link == jaus::LinkState::Up;
+    publishLink({QStringLiteral("jaus"), up ? ocu::LinkState::Up : ocu::LinkState::Degraded, 0,
+                 QString::fromStdString(snapshot.callSign)});
+}
+
+void JausBridge::onEvent(const JausEvent& event) {
+    FleetEvent e = makeEvent(EventSeverity::Info, ocu::EventKind::Info,
+                             event.subsystem ? machineId(event.subsystem) : QString(),
+                             QString::fromStdString(event.text), QStringLiteral("jaus"));
+    switch (event.kind) {
+    case jaus::EventKind::LinkLost:
+        e.kind = ocu::EventKind::LinkLoss;
+        break;
+    case jaus::EventKind::ControlLost:
+    case jaus::EventKind::ControlPreempted:
+    case jaus::EventKind::ControlRejected:
+        e.kind = ocu::EventKind::ControlLost;
+        break;
+    case jaus::EventKind::HealthFault:
+        e.kind = ocu::EventKind::HealthFault;
+        break;
+    default:
+        e.kind = ocu::EventKind::Info;
+        break;
+    }
+    switch (event.severity) {
+    case Severity::Info:
+        e.severity = EventSeverity::Info;
+        break;
+    case Severity::Warning:
+        e.severity = EventSeverity::Warning;
+        break;
+    case Severity::Error:
+        e.severity = EventSeverity::Alarm;
+        break;
+    }
+    if (event.kind == jaus::EventKind::Emergency)
+        e.severity = EventSeverity::Alarm;
+    e.requiresAck = e.severity >= EventSeverity::Warning;
+    publishEvent(e);
+    QMetaObject::invokeMethod(this, [this, event] { emit jausEvent(event); }, Qt::QueuedConnection);
+}
+
+MachineState JausBridge::toMachine(const SubsystemSnapshot& s) const {
+    MachineState m;
+    m.id = machineId(s.subsystem);
+    m.protocol = Protocol::Jaus;
+    m.name = s.callSign.empty() ? QStringLiteral("UGV %1").arg(s.subsystem) : QString::fromStdString(s.callSign);
+    m.type = QStringLiteral("UGV");
+    m.link = s.link == jaus::LinkState::Up       ? ocu::LinkState::Up
+             : s.link == jaus::LinkState::Degraded ? ocu::LinkState::Degraded
+                                                   : ocu::LinkState::Down;
+    m.lastDataMs = s.lastMessageUnixMs;
+    m.lastMessageMs = s.lastMessageUnixMs;
+    if (s.globalPose && s.globalPose->lat && s.globalPose->lon) {
+        const GeoPoint g{*s.globalPose->lat, *s.globalPose->lon, s.globalPose->alt.value_or(m_frame.origin().alt)};
+        const EnuPoint p = m_frame.toLocal(g);
+        m.hasPosition = true;
+        m.e = p.e;
+        m.n = p.n;
+        m.u = p.u;
+        m.lat = g.lat;
+        m.lon = g.lon;
+        if (s.globalPose->yaw) // JAUS yaw: from north, positive clockwise (NED), radians
+            m.headingDeg = std::fmod(*s.globalPose->yaw * 180.0 / M_PI + 360.0, 360.0);
+    } else if (s.localPose && s.localPose->x && s.localPose->y) {
+        // Local pose is in the vehicle's NED-like frame: x north, y east.
+        const EnuPoint p{*s.localPose->y, *s.localPose->x, 0};
+        const GeoPoint g = m_frame.toGeodetic(p);
+        m.hasPosition = true;
+        m.e = p.e;
+        m.n = p.n;
+        m.lat = g.lat;
+        m.lon = g.lon;
+        if (s.localPose->yaw)
+            m.headingDeg = std::fmod(*s.localPose->yaw * 180.0 / M_PI + 360.0, 360.0);
+    }
+    if (s.velocity && s.velocity->vx)
+        m.speed = std::hypot(*s.velocity->vx, s.velocity->vy.value_or(0));
+    if (s.platform) {
+        const auto& p = *s.platform;
+        if (p.front && p.back)
+            m.length = *p.front + *p.back;
+        if (p.left && p.right)
+            m.width = *p.left + *p.right;
+        if (p.top)
+            m.height = *p.top + p.bottom.value_or(0);
+    }
+    if (m.length <= 0)
+        m.length = 1.2;
+    if (m.width <= 0)
+        m.width = 0.8;
+    if (s.management) {
+        m.modeText = QString::fromUtf8(jaus::toString(*s.management));
+        switch (*s.management) {
+        case ManagementState::Ready:
+            m.mode = s.controlledByUs || s.controller.subsystem ? ModeCategory::Remote : ModeCategory::Idle;
+            break;
+        case ManagementState::Standby:
+        case ManagementState::Init:
+            m.mode = ModeCategory::Idle;
+            break;
+        case ManagementState::Shutdown:
+            m.mode = ModeCategory::Shutdown;
+            break;
+        case ManagementState::Failure:
+            m.mode = ModeCategory::Fault;
+            break;
+        case ManagementState::Emergency:
+            m.mode = ModeCategory::Stopped;
+            break;
+        }
+        m.stop = s.emergency ? StopState::Stopped : StopState::None;
+    } else {
+        m.stop = s.emergency ? StopState::Stopped : StopState::Unknown;
+    }
+    if (s.emergency)
+        m.stopText = tr("emergency");
+    if (s.controlledByUs) {
+        m.control = ControlState::ControlledByMe;
+        m.controller = tr("this console (%1)").arg(s.controllerAuthority);
+    } else if (s.controller.subsystem != 0) {
+        m.control = ControlState::ControlledByOther;
+        m.controller = QStringLiteral("%1.%2.%3 (%4)")
+                           .arg(s.controller.subsystem)
+                           .arg(s.controller.node)
+                           .arg(s.controller.component)
+                           .arg(s.controllerAuthority);
+    } else if (s.access == AccessState::InsufficientAuthority) {
+        m.control = ControlState::Denied;
+    } else {
+        m.control = ControlState::Monitoring;
+    }
+    if (s.health) {
+        switch (s.health->severity) {
+        case 0:
+        case 1:
+            m.health = HealthLevel::Ok;
+            break;
+        case 2:
+            m.health = HealthLevel::Warning;
+            break;
+        default:
+            m.health = HealthLevel::Fault;
+            break;
+        }
+        static const char* names[] = {"none", "info", "warning", "error", "failure"};
+        m.healthText = QString::fromLatin1(names[std::min<int>(s.health->severity, 4)]);
+    } else if (s.management == ManagementState::Failure) {
+        m.health = HealthLevel::Fault;
+    }
+    return m;
+}
+
+// ---- GUI thread: commands ----
+
+CommandResult JausBridge::refuseIfMonitor(const QString& what) const {
+    if (!m_config.mayControl())
+        return CommandResult::failure(tr("%1 refused: this console's JAUS role is MONITOR").arg(what));
+    return CommandResult::success();
+}
+
+CommandResult JausBridge::stopAll() {
+    if (auto r = refuseIfMonitor(tr("emergency stop")); !r.ok)
+        return r;
+    int n = 0;
+    for (const auto& s : std::as_const(m_latest)) {
+        if (s.controlledByUs) {
+            m_stack->setEmergency(s.subsystem);
+            ++n;
+        }
+    }
+    return CommandResult::success(tr("SetEmergency sent to %n vehicle(s) this console controls", "", n));
+}
+
+CommandResult JausBridge::stopMachine(const QString& id) {
+    auto sub = subsystemOf(id);
+    if (!sub)
+        return CommandResult::failure(tr("not a JAUS machine: %1").arg(id));
+    if (auto r = refuseIfMonitor(tr("emergency stop")); !r.ok)
+        return r;
+    m_stack->setEmergency(*sub);
+    return CommandResult::success(tr("SetEmergency sent to %1").arg(id));
+}
+
+CommandResult JausBridge::clearStop(const QString& id) {
+    auto sub = subsystemOf(id);
+    if (!sub)
+        return CommandResult::failure(tr("not a JAUS machine: %1").arg(id));
+    if (auto r = refuseIfMonitor(tr("clear emergency")); !r.ok)
+        return r;
+    m_stack->clearEmergency(*sub);
+    return CommandResult::success(tr("ClearEmergency sent to %1").arg(id));
+}
+
+CommandResult JausBridge::drive(std::uint16_t subsystem, const DriveCommand& command) {
+    if (auto r = refuseIfMonitor(tr("drive")); !r.ok)
+        return r;
+    auto s = this->subsystem(subsystem);
+    if (!s || !s->controlledByUs)
+        return CommandResult::failure(tr("drive refused: this console does not control %1").arg(machineId(subsystem)));
+    if (!s->driving)
+        m_stack->startDriving(subsystem);
+    m_stack->setDriveCommand(subsystem, command);
+    return CommandResult::success(tr("drive command sent"));
+}
+
+CommandResult JausBridge::stopDriving(std::uint16_t subsystem) {
+    m_stack->stopDriving(subsystem); // zeros, several times
+    if (QTimer* t = m_driveTimers.take(subsystem))
+        t->deleteLater();
+    return CommandResult::success(tr("drive stopped"));
+}
+
+CommandResult JausBridge::command(const QString& name, const QJsonObject& args) {
+    if (name == QLatin1String("release_all")) {
+        m_stack->releaseAll();
+        return CommandResult::success(tr("control released on every subsystem"));
+    }
+    auto sub = subsystemOf(args.value(QStringLiteral("id")).toString());
+    if (!sub)
+        return CommandResult::failure(tr("%1: \"id\" must name a JAUS machine such as \"jaus:101\"").arg(name));
+    if (name == QLatin1String("release_control")) {
+        m_stack->releaseControl(*sub);
+        return CommandResult::success(tr("ReleaseControl sent to %1").arg(machineId(*sub)));
+    }
+    if (auto r = refuseIfMonitor(name); !r.ok)
+        return r;
+    if (name == QLatin1String("request_control")) {
+        m_stack->requestControl(*sub);
+        return CommandResult::success(tr("RequestControl sent to %1 with authority %2")
+                                          .arg(machineId(*sub))
+                                          .arg(m_config.authority));
+    }
+    if (name == QLatin1String("resume")) {
+        m_stack->resume(*sub);
+        return CommandResult::success(tr("Resume sent"));
+    }
+    if (name == QLatin1String("standby")) {
+        m_stack->standby(*sub);
+        return CommandResult::success(tr("Standby sent"));
+    }
+    if (name == QLatin1String("shutdown")) {
+        m_stack->shutdown(*sub);
+        return CommandResult::success(tr("Shutdown sent"));
+    }
+    if (name == QLatin1String("reset")) {
+        m_stack->reset(*sub);
+        return CommandResult::success(tr("Reset sent"));
+    }
+    if (name == QLatin1String("drive_stop"))
+        return stopDriving(*sub);
+    if (name == QLatin1String("drive")) {
+        DriveCommand c;
+        const QString mode = args.value(QStringLiteral("mode")).toString(QStringLiteral("velocity"));
+        if (mode != QLatin1String("velocity") && mode != QLatin1String("effort"))
+            return CommandResult::failure(tr("drive: \"mode\" must be \"velocity\" or \"effort\""));
+        c.mode = mode == QLatin1String("effort") ? DriveCommand::Mode::Wrench : DriveCommand::Mode::Velocity;
+        c.linear = args.value(QStringLiteral("linear")).toDouble(0);
+        c.angular = args.value(QStringLiteral("angular")).toDouble(0);
+        const double duration = args.value(QStringLiteral("duration")).toDouble(1.0);
+        if (!(duration > 0 && duration <= 60))
+            return CommandResult::failure(tr("drive: \"duration\" must be between 0 and 60 seconds"));
+        if (c.mode == DriveCommand::Mode::Wrench && (std::abs(c.linear) > 100 || std::abs(c.angular) > 100))
+            return CommandResult::failure(tr("drive: effort must be within ±100 %"));
+        auto r = drive(*sub, c);
+        if (!r.ok)
+            return r;
+        QTimer*& t = m_driveTimers[*sub];
+        if (!t) {
+            t = new QTimer(this);
+            t->setSingleShot(true);
+            const std::uint16_t s = *sub;
+            connect(t, &QTimer::timeout, this, [this, s] { stopDriving(s); });
+        }
+        t->start(static_cast<int>(duration * 1000));
+        return CommandResult::success(tr("driving %1 for %2 s").arg(machineId(*sub)).arg(duration));
+    }
+    return FleetBridge::command(name, args);
+}
+
+} // namespace ocu

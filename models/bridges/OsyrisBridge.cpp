@@ -1,0 +1,202 @@
+#include "OsyrisBridge.h"
+
+#include <QDateTime>
+#include <QJsonObject>
+#include <QMetaObject>
+
+#include <climits>
+#include <cmath>
+
+namespace ocu {
+
+using namespace osyris;
+
+static QString q(const std::string& s) { return QString::fromStdString(s); }
+
+OsyrisPassCountLayer::OsyrisPassCountLayer(const PassCountGrid& grid, QPointF worksiteOffset)
+    : m_grid(grid), m_offset(worksiteOffset) {}
+
+double OsyrisPassCountLayer::cellSize() const { return m_grid.settings().cellSize; }
+
+QPointF OsyrisPassCountLayer::origin() const {
+    const double s = cellSize();
+    return {m_offset.x() + m_cx0 * s, m_offset.y() + m_cy0 * s};
+}
+
+int OsyrisPassCountLayer::count(int col, int row) const {
+    if (col < 0 || row < 0 || col >= m_cols || row >= m_rows)
+        return 0;
+    return m_grid.countAtCell(m_cx0 + col, m_cy0 + row);
+}
+
+void OsyrisPassCountLayer::refreshExtent() {
+    const auto tiles = m_grid.snapshotTiles();
+    if (tiles.empty()) {
+        m_cols = m_rows = 0;
+    } else {
+        std::int32_t tx0 = INT_MAX, ty0 = INT_MAX, tx1 = INT_MIN, ty1 = INT_MIN;
+        for (const auto& t : tiles) {
+            tx0 = std::min(tx0, t.tx);
+            ty0 = std::min(ty0, t.ty);
+            tx1 = std::max(tx1, t.tx);
+            ty1 = std::max(ty1, t.ty);
+        }
+        m_cx0 = tx0 * kTileSize;
+        m_cy0 = ty0 * kTileSize;
+        m_cols = (tx1 - tx0 + 1) * kTileSize;
+        m_rows = (ty1 - ty0 + 1) * kTileSize;
+    }
+    ++m_revision;
+}
+
+OsyrisBridge::OsyrisBridge(const OsyrisConfig& config, const GeoFrame& siteFrame, QObject* parent)
+    : FleetBridge(Protocol::Osyris, parent), m_config(config), m_frame(siteFrame) {
+    m_station = std::make_unique<OsyrisStation>(m_config, static_cast<OsyrisListener&>(*this));
+    const EnuPoint o = m_frame.toLocal({config.originLat, config.originLon, config.originAlt});
+    m_layer = std::make_unique<OsyrisPassCountLayer>(m_station->grid(), QPointF(o.e, o.n));
+}
+
+OsyrisBridge::~OsyrisBridge() { stop(); }
+
+QString OsyrisBridge::start() {
+    std::string error;
+    const QString link = QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port);
+    if (!m_station->start(&error)) {
+        publishLink({link, ocu::LinkState::Down, -1, q(error)});
+        return tr("OSYRIS: %1").arg(q(error));
+    }
+    publishLink({link, ocu::LinkState::Degraded, -1, tr("joined, waiting for stations")});
+    return {};
+}
+
+void OsyrisBridge::stop() {
+    if (m_station)
+        m_station->stop();
+}
+
+osyris::PassCountSummary OsyrisBridge::passCountSummary() const { return m_station->grid().summary(); }
+
+// ---- io thread ----
+
+void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
+    MachineState m;
+    m.id = protocolPrefix(Protocol::Osyris) + QString::number(s.idx);
+    m.protocol = Protocol::Osyris;
+    m.name = s.name.empty() ? tr("Machine %1").arg(s.idx) : q(s.name);
+    const QString lower = m.name.toLower();
+    const bool paver = lower.contains(QLatin1String("paver")) || lower.contains(QLatin1String("fertiger"));
+    m.type = paver ? QStringLiteral("paver") : QStringLiteral("roller");
+    m.link = ocu::LinkState::Up;
+    m.lastDataMs = QDateTime::currentMSecsSinceEpoch();
+    m.lastMessageMs = s.timestampMs;
+    // Positions are geo-referenced by the station through the worksite origin; place them in the site frame.
+    const EnuPoint p = m_frame.toLocal({s.lat, s.lon, m_config.originAlt + s.z});
+    m.hasPosition = s.valid || s.lat != 0 || s.lon != 0;
+    m.e = p.e;
+    m.n = p.n;
+    m.u = p.u;
+    m.lat = s.lat;
+    m.lon = s.lon;
+    m.headingDeg = s.headingDeg;
+    m.speed = s.speed;
+    m.width = s.width > 0 ? s.width : (paver ? 3.0 : 2.0);
+    m.length = paver ? 6.5 : 4.5;
+    m.height = paver ? 3.5 : 3.0;
+    QStringList mode;
+    mode << (s.vibrating ? tr("vibration on") : tr("vibration off"));
+    if (s.forward)
+        mode << tr("forward");
+    else if (s.backward)
+        mode << tr("backward");
+    else if (s.stopped)
+        mode << tr("standing");
+    m.modeText = mode.join(QStringLiteral(", "));
+    m.mode = ModeCategory::Manual;
+    m.stop = StopState::None; // OSYRIS carries no stop state: rollers and pavers are manned
+    if (s.gpsShadow || !s.valid) {
+        m.health = HealthLevel::Warning;
+        m.healthText = s.gpsShadow ? tr("GPS shadow") : tr("position not valid");
+    } else if (s.accuracy < 2) {
+        m.health = HealthLevel::Warning;
+        m.healthText = tr("low position accuracy");
+    } else {
+        m.health = HealthLevel::Ok;
+        m.healthText = s.accuracy >= 3 ? tr("high accuracy") : tr("medium accuracy");
+    }
+    publishMachine(m);
+}
+
+void OsyrisBridge::onStationAlive(std::uint8_t idx, std::optional<SlotRange>) {
+    (void)idx;
+    publishLink({QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port), ocu::LinkState::Up, 0,
+                 tr("stations heard")});
+}
+
+void OsyrisBridge::onText(std::uint8_t idx, const std::string& text) {
+    FleetEvent e = makeEvent(EventSeverity::Info, ocu::EventKind::TextMessage,
+                             protocolPrefix(Protocol::Osyris) + QString::number(idx),
+                             tr("Message from station %1: %2").arg(idx).arg(q(text)), QStringLiteral("osyris"));
+    e.requiresAck = true; // an operator should read messages from the machines
+    publishEvent(e);
+}
+
+void OsyrisBridge::onPassCountChanged(const GridRect&) {
+    // One queued refresh per burst: the grid is read on the GUI thread through its thread-safe readers.
+    if (m_passCountQueued.exchange(true))
+        return;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_passCountQueued = false;
+            m_layer->refreshExtent();
+            emit passCountChanged();
+        },
+        Qt::QueuedConnection);
+}
+
+void OsyrisBridge::onEvent(Severity severity, const std::string& text) {
+    const EventSeverity s = severity == Severity::Error     ? EventSeverity::Alarm
+                            : severity == Severity::Warning ? EventSeverity::Warning
+                                                            : EventSeverity::Info;
+    publishEvent(makeEvent(s, ocu::EventKind::Info, {}, q(text), QStringLiteral("osyris")));
+}
+
+// ---- GUI thread ----
+
+CommandResult OsyrisBridge::stopAll() {
+    // OSYRIS has no stop command (manned machines); the stop reaches every driver's display as a message.
+    m_station->sendText("STOP ALL issued by the operator control unit");
+    return CommandResult::success(tr("OSYRIS has no remote stop: STOP message sent to every machine's display"));
+}
+
+CommandResult OsyrisBridge::stopMachine(const QString& id) {
+    if (!id.startsWith(protocolPrefix(Protocol::Osyris)))
+        return CommandResult::failure(tr("not an OSYRIS machine: %1").arg(id));
+    m_station->sendText("STOP " + id.mid(protocolPrefix(Protocol::Osyris).size()).toStdString() +
+                        ": stop requested by the operator control unit");
+    return CommandResult::success(tr("OSYRIS has no remote stop: STOP message sent to the machine displays"));
+}
+
+CommandResult OsyrisBridge::clearStop(const QString& id) {
+    return CommandResult::failure(tr("%1: OSYRIS machines carry no stop state to clear").arg(id));
+}
+
+CommandResult OsyrisBridge::command(const QString& name, const QJsonObject& args) {
+    if (name == QLatin1String("send_text")) {
+        const QString text = args.value(QStringLiteral("text")).toString();
+        if (text.isEmpty() || text.toUtf8().size() > 80)
+            return CommandResult::failure(tr("send_text: \"text\" must be 1 to 80 bytes (CmMsg)"));
+        m_station->sendText(text.toStdString());
+        return CommandResult::success(tr("message sent to every station"));
+    }
+    if (name == QLatin1String("ping")) {
+        const int idx = args.value(QStringLiteral("idx")).toInt(-1);
+        if (idx < 0 || idx > 253)
+            return CommandResult::failure(tr("ping: \"idx\" must be a station index 0-253"));
+        m_station->ping(static_cast<std::uint8_t>(idx));
+        return CommandResult::success(tr("PING sent to station %1").arg(idx));
+    }
+    return FleetBridge::command(name, args);
+}
+
+} // namespace ocu

@@ -1,0 +1,74 @@
+#pragma once
+// The Qt face of the OCU's OSYRIS station: machine positions become MachineState rows (coalesced), text
+// messages become events, and the station's pass-count grid is offered to the map as a PassCountLayer
+// placed in the site frame through the worksite origin.
+#include "models/FleetBridge.h"
+#include "models/PassCountLayer.h"
+
+#include "common/GeoFrame.h"
+// The OSYRIS headers use "slots" as a member name, which is a Qt keyword macro.
+#pragma push_macro("slots")
+#undef slots
+#include "osyris/OsyrisConfig.h"
+#include "osyris/OsyrisStation.h"
+#pragma pop_macro("slots")
+
+#include <atomic>
+#include <memory>
+
+namespace ocu {
+
+// Reads the station's sparse grid (thread-safe readers) as a dense layer over its covered extent.
+class OsyrisPassCountLayer final : public PassCountLayer {
+public:
+    OsyrisPassCountLayer(const osyris::PassCountGrid& grid, QPointF worksiteOffset);
+    double cellSize() const override;
+    QPointF origin() const override;
+    int columns() const override { return m_cols; }
+    int rows() const override { return m_rows; }
+    int count(int col, int row) const override;
+    quint64 revision() const override { return m_revision; }
+    // GUI thread: re-reads the covered extent after the grid changed.
+    void refreshExtent();
+
+private:
+    const osyris::PassCountGrid& m_grid;
+    QPointF m_offset; // site-frame (E, N) of the worksite origin
+    std::int32_t m_cx0 = 0, m_cy0 = 0;
+    int m_cols = 0, m_rows = 0;
+    quint64 m_revision = 1;
+};
+
+class OsyrisBridge : public FleetBridge, private osyris::OsyrisListener {
+    Q_OBJECT
+public:
+    OsyrisBridge(const osyris::OsyrisConfig& config, const GeoFrame& siteFrame, QObject* parent = nullptr);
+    ~OsyrisBridge() override;
+
+    QString start();
+    void stop();
+    osyris::OsyrisStation* station() const { return m_station.get(); }
+
+    CommandResult stopAll() override;
+    CommandResult stopMachine(const QString& id) override;
+    CommandResult clearStop(const QString& id) override;
+    // send_text {"text"}, ping {"idx"}.
+    CommandResult command(const QString& name, const QJsonObject& args) override;
+    const PassCountLayer* passCountLayer() const override { return m_layer.get(); }
+    osyris::PassCountSummary passCountSummary() const;
+
+private:
+    void onMachinePosition(const osyris::MachineSnapshot& s) override;
+    void onStationAlive(std::uint8_t idx, std::optional<osyris::SlotRange> range) override;
+    void onText(std::uint8_t idx, const std::string& text) override;
+    void onPassCountChanged(const osyris::GridRect& dirty) override;
+    void onEvent(osyris::Severity severity, const std::string& text) override;
+
+    osyris::OsyrisConfig m_config;
+    GeoFrame m_frame;
+    std::unique_ptr<osyris::OsyrisStation> m_station;
+    std::unique_ptr<OsyrisPassCountLayer> m_layer;
+    std::atomic<bool> m_passCountQueued{false};
+};
+
+} // namespace ocu

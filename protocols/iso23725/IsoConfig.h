@@ -1,0 +1,41 @@
+#pragma once
+// Configuration of the ISO 23725 stack: the site configuration's `iso23725` object (docs/iso23725.md).
+#include "InferredRules.h"
+#include "Messages.h"
+#include "WsTransport.h"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace ocu {
+class ConfigObject;
+}
+
+namespace ocu::iso23725 {
+
+struct IsoLinkConfig {
+    std::string name; // shown to the operator, used as the link key in commands and callbacks
+    WsOptions ws;     // URL, role, TLS, ping/dead/backoff, max frame size
+};
+
+struct IsoConfig {
+    bool enabled = true;
+    // The FMS's own fleet id, sent as AHSId in its FleetDefinitionV2 ([I], research note §6 example 1).
+    Guid fmsId = "00000000-0000-4000-8000-000000000000";
+    std::vector<IsoLinkConfig> links;
+    // The FMS's configured fleet: manned machines it owns (Autonomous=false; sent in its FleetDefinitionV2)
+    // and the autonomous machines it expects from the AHS (compared with the AHS list, never sent).
+    std::vector<Equipment> fleet;
+    bool sendPositions = false;                           // send MachinePositionV1 for own manned machines
+    double positionRateHz = 1.0;                          // 1-10 Hz (§7.4)
+    std::chrono::milliseconds allStopAckTimeout{2000};    // [I] §7.6
+    std::chrono::milliseconds allStopStatusTimeout{5000}; // [I] §7.6
+    double dimensionTolerance = 0.05;                     // metres, for fleet discrepancy checks
+    InferredRules rules;
+};
+
+// Reads the `iso23725` object strictly (unknown keys, wrong types and bad values are errors naming the key).
+IsoConfig parseIsoConfig(ocu::ConfigObject& section);
+
+} // namespace ocu::iso23725

@@ -1,0 +1,29 @@
+#pragma once
+// The seam between the JAUS state machines (OcuCore, the simulated UGV) and the transport.
+#include <string>
+
+#include "common/Bytes.h"
+#include "jaus/JudpCodec.h"
+
+namespace ocu::jaus {
+
+struct SendOptions {
+    Priority priority = Priority::Standard;
+    bool ackRequest = false;
+};
+
+class JausOutput {
+public:
+    virtual ~JausOutput() = default;
+    virtual void send(const JausId& destination, const Bytes& payload, SendOptions options) = 0;
+    // For hosts of several components (the simulated UGV): send with an explicit source ID.
+    virtual void sendFrom(const JausId& source, const JausId& destination, const Bytes& payload,
+                          SendOptions options) {
+        (void)source;
+        send(destination, payload, options);
+    }
+    // "ip:port" last learned for a JAUS ID (for the console), empty when unknown.
+    virtual std::string endpointOf(const JausId&) const { return {}; }
+};
+
+} // namespace ocu::jaus

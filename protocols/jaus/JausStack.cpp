@@ -1,0 +1,197 @@
+#include "jaus/JausStack.h"
+
+#include <boost/asio/steady_timer.hpp>
+
+#include <atomic>
+#include <map>
+#include <thread>
+
+#include "common/IoThread.h"
+#include "common/Log.h"
+#include "jaus/JudpTransport.h"
+#include "jaus/OcuCore.h"
+
+namespace ocu::jaus {
+
+struct JausStack::Impl : JausOutput {
+    Impl(JausConfig c, JausListener& l, Clock& clk)
+        : cfg(std::move(c)), listener(l), clock(clk), io("jaus"),
+          transport(io.context(), cfg.transport, counters, clock, "ocu.jaus"),
+          core(cfg, listener, *this, clock, counters), timer(io.context()) {}
+
+    void send(const JausId& dst, const Bytes& payload, SendOptions o) override {
+        transport.send(cfg.ownId(), dst, payload, o);
+    }
+    std::string endpointOf(const JausId& id) const override { return transport.endpointOf(id); }
+
+    void scheduleTick() {
+        timer.expires_after(std::chrono::milliseconds(10));
+        timer.async_wait([this](boost::system::error_code ec) {
+            if (ec)
+                return;
+            core.tick();
+            scheduleTick();
+        });
+    }
+    template <class F> void post(F&& f) {
+        if (!running)
+            return;
+        io.post(std::forward<F>(f));
+    }
+
+    JausConfig cfg;
+    JausListener& listener;
+    Clock& clock;
+    Counters counters;
+    IoThread io;
+    JudpTransport transport;
+    OcuCore core;
+    boost::asio::steady_timer timer;
+    std::map<std::string, TimePoint> lastDecodeEvent;
+    std::atomic<bool> running{false};
+    std::atomic<std::uint16_t> port{0};
+};
+
+JausStack::JausStack(JausConfig config, JausListener& listener, Clock& clock)
+    : m_impl(std::make_unique<Impl>(std::move(config), listener, clock)) {}
+
+JausStack::~JausStack() {
+    stop();
+}
+
+void JausStack::start() {
+    if (m_impl->running)
+        return;
+    Impl* d = m_impl.get();
+    d->transport.setLocalIds([d](const JausId& id) { return id == d->cfg.ownId(); });
+    d->transport.setHandlers(
+        [d](const JausId& src, const JausId& dst, ByteSpan p) { d->core.handle(src, dst, p); },
+        [d](const std::string& reason, const std::string& text) {
+            // One decode-error event per reason and second: bad peers must not flood the console.
+            auto now = d->clock.now();
+            auto& last = d->lastDecodeEvent[reason];
+            if (last != TimePoint{} && now - last < std::chrono::seconds(1))
+                return;
+            last = now;
+            d->listener.onEvent(
+                JausEvent{Severity::Warning, EventKind::DecodeError, 0, "rejected datagram: " + text});
+        });
+    d->transport.open();
+    d->port = d->transport.localPort();
+    logInfo("ocu.jaus", "JAUS " + d->cfg.ownId().toString() + " (" + d->cfg.callSign + ") on UDP port " +
+                            std::to_string(d->port.load()));
+    d->running = true;
+    d->io.start();
+    d->io.post([d] {
+        d->core.tick();
+        d->scheduleTick();
+    });
+}
+
+void JausStack::stop() {
+    if (!m_impl || !m_impl->running)
+        return;
+    Impl* d = m_impl.get();
+    d->io.call([d] {
+        d->core.releaseAll();
+        d->timer.cancel();
+        return 0;
+    });
+    // UDP sends are synchronous; JTCP writes are asynchronous: give the releases up to 300 ms to leave.
+    for (int i = 0; i < 30 && d->io.call([d] { return d->transport.pendingTcpWrites(); }) > 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    d->io.call([d] {
+        d->transport.close();
+        return 0;
+    });
+    d->running = false;
+    d->io.stop();
+}
+
+bool JausStack::running() const {
+    return m_impl->running;
+}
+
+#define OCU_JAUS_POST(expr)                                                                                  \
+    do {                                                                                                     \
+        Impl* d = m_impl.get();                                                                              \
+        d->post([=] { (void)(expr); });                                                                      \
+    } while (0)
+
+void JausStack::requestControl(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.requestControl(ss));
+}
+void JausStack::releaseControl(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.releaseControl(ss));
+}
+void JausStack::releaseAll() {
+    OCU_JAUS_POST((d->core.releaseAll(), 0));
+}
+void JausStack::setEmergency(std::uint16_t ss, EmergencyCode code) {
+    OCU_JAUS_POST(d->core.setEmergency(ss, code));
+}
+void JausStack::clearEmergency(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.clearEmergency(ss));
+}
+void JausStack::resume(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.resume(ss));
+}
+void JausStack::standby(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.standby(ss));
+}
+void JausStack::shutdown(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.shutdown(ss));
+}
+void JausStack::reset(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.reset(ss));
+}
+void JausStack::startDriving(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.startDriving(ss));
+}
+void JausStack::setDriveCommand(std::uint16_t ss, DriveCommand c) {
+    OCU_JAUS_POST(d->core.setDriveCommand(ss, c));
+}
+void JausStack::stopDriving(std::uint16_t ss) {
+    OCU_JAUS_POST(d->core.stopDriving(ss));
+}
+void JausStack::discoverNow() {
+    OCU_JAUS_POST((d->core.discoverNow(), 0));
+}
+
+#undef OCU_JAUS_POST
+
+void JausStack::setTransmitFaults(double loss, int delayMs) {
+    Impl* d = m_impl.get();
+    d->post([d, loss, delayMs] {
+        NetFaults f;
+        f.loss = loss;
+        f.delay = std::chrono::milliseconds(delayMs);
+        d->transport.setFaults(f);
+    });
+}
+
+Counters& JausStack::counters() {
+    return m_impl->counters;
+}
+const JausConfig& JausStack::config() const {
+    return m_impl->cfg;
+}
+std::uint16_t JausStack::localPort() const {
+    return m_impl->port;
+}
+
+std::optional<SubsystemSnapshot> JausStack::snapshot(std::uint16_t ss) const {
+    Impl* d = m_impl.get();
+    if (!d->running)
+        return d->core.snapshot(ss);
+    return d->io.call([d, ss] { return d->core.snapshot(ss); });
+}
+
+std::vector<std::uint16_t> JausStack::subsystems() const {
+    Impl* d = m_impl.get();
+    if (!d->running)
+        return d->core.subsystems();
+    return d->io.call([d] { return d->core.subsystems(); });
+}
+
+} // namespace ocu::jaus

@@ -1,0 +1,59 @@
+#pragma once
+// The OCU side of JAUS: OcuCore (client services) + JudpTransport on its own io thread.
+// Command methods are thread-safe (they post to the io thread); listener callbacks run on the io thread.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "common/Clock.h"
+#include "common/Counters.h"
+#include "jaus/JausConfig.h"
+#include "jaus/JausTypes.h"
+
+namespace ocu::jaus {
+
+class JausStack {
+public:
+    JausStack(JausConfig config, JausListener& listener, ocu::Clock& clock = SteadyClock::instance());
+    ~JausStack(); // stop()
+    JausStack(const JausStack&) = delete;
+    JausStack& operator=(const JausStack&) = delete;
+
+    // Opens the sockets and starts the io thread; throws std::runtime_error when a socket cannot be opened.
+    void start();
+    // Releases all control (zero drive commands first), then stops the io thread. Safe to call twice.
+    void stop();
+    bool running() const;
+
+    void requestControl(std::uint16_t subsystem);
+    void releaseControl(std::uint16_t subsystem);
+    void releaseAll();
+    void setEmergency(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety);
+    void clearEmergency(std::uint16_t subsystem);
+    void resume(std::uint16_t subsystem);
+    void standby(std::uint16_t subsystem);
+    void shutdown(std::uint16_t subsystem);
+    void reset(std::uint16_t subsystem);
+    void startDriving(std::uint16_t subsystem);
+    void setDriveCommand(std::uint16_t subsystem, DriveCommand command);
+    void stopDriving(std::uint16_t subsystem);
+    void discoverNow();
+
+    // Fault injection on what the OCU sends (e.g. loss = 1: the OCU falls silent). Tests and ocu-sim drills.
+    void setTransmitFaults(double loss, int delayMs = 0);
+
+    Counters& counters();
+    const JausConfig& config() const;
+    // The UDP port actually bound (useful with port 0). 0 before start().
+    std::uint16_t localPort() const;
+    // Blocking reads through the io thread (tests, start-up); not for the GUI's hot paths.
+    std::optional<SubsystemSnapshot> snapshot(std::uint16_t subsystem) const;
+    std::vector<std::uint16_t> subsystems() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace ocu::jaus

@@ -1,0 +1,476 @@
+#include "jaus/JudpTransport.h"
+
+#include <boost/asio/ip/address_v4.hpp>
+#include <boost/asio/write.hpp>
+#include <boost/system/system_error.hpp>
+
+#include <stdexcept>
+
+#include "common/Log.h"
+
+namespace ocu::jaus {
+
+namespace asio = boost::asio;
+using asio::ip::udp;
+
+struct JudpTransport::Receiver {
+    explicit Receiver(asio::io_context& io) : socket(io) {}
+    udp::socket socket;
+    UdpOptions options;
+    std::array<std::uint8_t, 65536> buffer{};
+    udp::endpoint from;
+};
+
+struct JudpTransport::TcpConn {
+    explicit TcpConn(asio::io_context& io) : socket(io) {}
+    asio::ip::tcp::socket socket;
+    JtcpStreamDecoder decoder;
+    std::array<std::uint8_t, 16384> buffer{};
+    std::deque<Bytes> queue;
+    bool writing = false;
+    bool connected = false;
+    bool versionSent = false;
+    bool dead = false;
+    std::string peer;
+};
+
+JudpTransport::JudpTransport(asio::io_context& io, TransportSettings settings, Counters& counters,
+                             const Clock& clock, std::string logCategory)
+    : m_io(io), m_cfg(std::move(settings)), m_counters(counters), m_clock(clock),
+      m_log(std::move(logCategory)) {}
+
+JudpTransport::~JudpTransport() {
+    close();
+}
+
+void JudpTransport::setHandlers(MessageHandler onMessage, ErrorHandler onError) {
+    m_onMessage = std::move(onMessage);
+    m_onError = std::move(onError);
+}
+
+void JudpTransport::open() {
+    try {
+        m_unicast = std::make_unique<Receiver>(m_io);
+        UdpOptions u;
+        u.bindAddress = m_cfg.bindAddress;
+        u.port = m_cfg.port;
+        u.interfaceAddress = m_cfg.interfaceAddress;
+        u.multicastTtl = m_cfg.multicastTtl;
+        u.broadcast = !m_cfg.multicast;
+        // One socket when unicast and multicast share the port (the usual 3794 set-up, like JTS).
+        const bool shared = m_cfg.multicast && m_cfg.port != 0 && m_cfg.port == m_cfg.multicastPort;
+        if (shared)
+            u.multicastGroup = m_cfg.multicastGroup;
+        m_unicast->options = u;
+        openUdpSocket(m_unicast->socket, u);
+        if (m_cfg.multicast && !shared) {
+            m_multicast = std::make_unique<Receiver>(m_io);
+            UdpOptions mo;
+            mo.bindAddress = "0.0.0.0";
+            mo.port = m_cfg.multicastPort;
+            mo.multicastGroup = m_cfg.multicastGroup;
+            mo.interfaceAddress = m_cfg.interfaceAddress;
+            mo.multicastTtl = m_cfg.multicastTtl;
+            m_multicast->options = mo;
+            openUdpSocket(m_multicast->socket, mo);
+        }
+    } catch (const boost::system::system_error& e) {
+        close();
+        throw std::runtime_error(std::string("JUDP socket: ") + e.what());
+    }
+    if (m_cfg.jtcpServer) {
+        try {
+            namespace ip = asio::ip;
+            m_acceptor = std::make_unique<ip::tcp::acceptor>(m_io);
+            ip::tcp::endpoint ep(ip::make_address_v4(m_cfg.bindAddress), m_cfg.jtcpPort);
+            m_acceptor->open(ep.protocol());
+            m_acceptor->set_option(asio::socket_base::reuse_address(true));
+            m_acceptor->bind(ep);
+            m_acceptor->listen();
+        } catch (const boost::system::system_error& e) {
+            close();
+            throw std::runtime_error(std::string("JTCP listen: ") + e.what());
+        }
+    }
+    m_open = true;
+    if (m_acceptor)
+        startAccept();
+    startReceive(*m_unicast);
+    if (m_multicast)
+        startReceive(*m_multicast);
+}
+
+void JudpTransport::close() {
+    m_open = false;
+    boost::system::error_code ec;
+    if (m_acceptor)
+        m_acceptor->close(ec);
+    for (auto& c : m_conns)
+        c->socket.close(ec);
+    m_conns.clear();
+    m_tcpClients.clear();
+    m_tcpRoutes.clear();
+    if (m_multicast) {
+        leaveMulticast(m_multicast->socket, m_multicast->options);
+        m_multicast->socket.close(ec);
+    }
+    if (m_unicast) {
+        leaveMulticast(m_unicast->socket, m_unicast->options);
+        m_unicast->socket.close(ec);
+    }
+}
+
+std::uint16_t JudpTransport::localPort() const {
+    boost::system::error_code ec;
+    if (!m_unicast)
+        return 0;
+    auto ep = m_unicast->socket.local_endpoint(ec);
+    return ec ? 0 : ep.port();
+}
+
+std::uint16_t JudpTransport::localTcpPort() const {
+    boost::system::error_code ec;
+    if (!m_acceptor)
+        return 0;
+    auto ep = m_acceptor->local_endpoint(ec);
+    return ec ? 0 : ep.port();
+}
+
+std::size_t JudpTransport::pendingTcpWrites() const {
+    std::size_t n = 0;
+    for (auto& c : m_conns)
+        if (!c->dead)
+            n += c->queue.size() + (c->writing ? 1 : 0);
+    return n;
+}
+
+void JudpTransport::startReceive(Receiver& r) {
+    r.socket.async_receive_from(asio::buffer(r.buffer), r.from,
+                                [this, &r](boost::system::error_code ec, std::size_t n) {
+                                    if (ec == asio::error::operation_aborted || !m_open)
+                                        return;
+                                    if (!ec)
+                                        onDatagram(ByteSpan(r.buffer.data(), n), r.from);
+                                    else
+                                        m_counters.add("rx.socket_errors");
+                                    startReceive(r);
+                                });
+}
+
+void JudpTransport::onDatagram(ByteSpan data, const Endpoint& from) {
+    m_counters.add("rx.datagrams");
+    auto reject = [&](const std::string& err) {
+        const std::string reason = rejectReason(err);
+        m_counters.add("rx.rejected." + reason);
+        // At most one log line per reason and second: a broken or hostile peer must not flood the log.
+        const TimePoint t = m_clock.now();
+        auto& last = m_lastLog[reason];
+        if (last == TimePoint{} || t - last >= std::chrono::seconds(1)) {
+            last = t;
+            logWarning(m_log, "datagram from " + from.address().to_string() + ":" +
+                                  std::to_string(from.port()) + " rejected: " + err);
+        }
+        if (m_onError)
+            m_onError(reason, err);
+    };
+    auto d = decodeDatagram(data);
+    if (!d)
+        return reject(d.error());
+    if (!d->error.empty())
+        reject(d->error);
+    const TimePoint now = m_clock.now();
+    if (auto n = m_reassembler.expire(now))
+        m_counters.add("rx.rejected.fragment_timeout", n);
+    for (auto& m : d->messages) {
+        const JudpHeader& h = m.header;
+        // Learn where this JAUS ID lives (AEP-4818 §4.7.2: dynamic address list from every message).
+        if (!h.source.isBroadcast() && h.source.subsystem != 0)
+            m_learned[h.source.value()] = from;
+        if (h.ackNak == AckNak::Ack || h.ackNak == AckNak::Nak) {
+            m_counters.add(h.ackNak == AckNak::Ack ? "rx.ack" : "rx.nak");
+            continue;
+        }
+        // Answer ACK requests even when received by multicast: that is how a JTS peer finds us (§2.2).
+        if (h.ackNak == AckNak::Request && m_isLocal && !h.destination.isBroadcast() &&
+            m_isLocal(h.destination)) {
+            rawSend(encodeDatagram(makeAckHeader(h), ByteSpan{}), from);
+            m_counters.add("tx.ack");
+        }
+        deliver(std::move(m), now, reject);
+    }
+}
+
+void JudpTransport::deliver(JudpMessage m, TimePoint now,
+                            const std::function<void(const std::string&)>& reject) {
+    auto r = m_reassembler.feed(std::move(m), now);
+    if (!r) {
+        reject(r.error());
+        return;
+    }
+    if (!*r)
+        return;
+    const JudpMessage& full = **r;
+    if (full.payload.size() < 2) {
+        reject("short: message without a message ID");
+        return;
+    }
+    if (m_onMessage)
+        m_onMessage(full.header.source, full.header.destination, full.payload);
+}
+
+// ---- JTCP ----
+
+void JudpTransport::startAccept() {
+    auto c = std::make_shared<TcpConn>(m_io);
+    m_acceptor->async_accept(c->socket, [this, c](boost::system::error_code ec) {
+        if (!m_open || ec == asio::error::operation_aborted)
+            return;
+        if (!ec) {
+            boost::system::error_code e2;
+            auto rep = c->socket.remote_endpoint(e2);
+            c->peer = e2 ? "?" : rep.address().to_string() + ":" + std::to_string(rep.port());
+            c->connected = true;
+            m_conns.insert(c);
+            m_counters.add("jtcp.accepted");
+            startRead(c);
+        }
+        startAccept();
+    });
+}
+
+void JudpTransport::startRead(const TcpPtr& c) {
+    c->socket.async_read_some(
+        asio::buffer(c->buffer), [this, c](boost::system::error_code ec, std::size_t n) {
+            if (!m_open || ec == asio::error::operation_aborted)
+                return;
+            if (ec)
+                return dropConn(c, ec.message());
+            auto msgs = c->decoder.feed(ByteSpan(c->buffer.data(), n));
+            if (!msgs) {
+                m_counters.add("rx.rejected." + rejectReason(msgs.error()));
+                logWarning(m_log, "JTCP stream from " + c->peer + " closed: " + msgs.error());
+                return dropConn(c, msgs.error());
+            }
+            const TimePoint now = m_clock.now();
+            auto reject = [&](const std::string& err) {
+                m_counters.add("rx.rejected." + rejectReason(err));
+                logWarning(m_log, "JTCP message from " + c->peer + " rejected: " + err);
+            };
+            for (auto& m : *msgs) {
+                m_counters.add("rx.jtcp.messages");
+                if (!m.header.source.isBroadcast() && m.header.source.subsystem != 0)
+                    m_tcpRoutes[m.header.source.value()] = c;
+                if (m.header.ackNak == AckNak::Ack || m.header.ackNak == AckNak::Nak)
+                    continue;
+                deliver(std::move(m), now, reject);
+            }
+            startRead(c);
+        });
+}
+
+void JudpTransport::tcpWrite(const TcpPtr& c, Bytes bytes) {
+    c->queue.push_back(std::move(bytes));
+    if (c->connected && !c->writing)
+        flush(c);
+}
+
+void JudpTransport::flush(const TcpPtr& c) {
+    if (c->queue.empty() || c->dead) {
+        c->writing = false;
+        return;
+    }
+    c->writing = true;
+    auto data = std::make_shared<Bytes>(std::move(c->queue.front()));
+    c->queue.pop_front();
+    asio::async_write(c->socket, asio::buffer(*data),
+                      [this, c, data](boost::system::error_code ec, std::size_t) {
+                          if (!m_open || ec == asio::error::operation_aborted)
+                              return;
+                          if (ec)
+                              return dropConn(c, ec.message());
+                          m_counters.add("tx.jtcp.writes");
+                          flush(c);
+                      });
+}
+
+void JudpTransport::dropConn(const TcpPtr& c, const std::string& why) {
+    if (c->dead)
+        return;
+    c->dead = true;
+    boost::system::error_code ec;
+    c->socket.close(ec);
+    m_conns.erase(c);
+    for (auto it = m_tcpClients.begin(); it != m_tcpClients.end();)
+        it = it->second == c ? m_tcpClients.erase(it) : std::next(it);
+    m_counters.add("jtcp.closed");
+    logInfo(m_log, "JTCP connection " + c->peer + " closed: " + why);
+}
+
+JudpTransport::TcpPtr JudpTransport::tcpRoute(const JausId& dst) {
+    if (auto it = m_tcpRoutes.find(dst.value()); it != m_tcpRoutes.end()) {
+        if (auto c = it->second.lock(); c && !c->dead)
+            return c;
+        m_tcpRoutes.erase(it);
+    }
+    for (std::size_t i = 0; i < m_cfg.staticEndpoints.size(); ++i) {
+        const auto& s = m_cfg.staticEndpoints[i];
+        if (!s.tcp || s.id.subsystem != dst.subsystem || (s.id.node != 0xFF && s.id.node != dst.node) ||
+            (s.id.component != 0xFF && s.id.component != dst.component))
+            continue;
+        if (auto it = m_tcpClients.find(i); it != m_tcpClients.end())
+            return it->second;
+        boost::system::error_code ec;
+        auto addr = asio::ip::make_address_v4(s.address, ec);
+        if (ec)
+            return nullptr;
+        auto c = std::make_shared<TcpConn>(m_io);
+        c->peer = s.address + ":" + std::to_string(s.port);
+        m_tcpClients[i] = c;
+        m_conns.insert(c);
+        c->socket.async_connect(asio::ip::tcp::endpoint(addr, s.port),
+                                [this, c](boost::system::error_code e) {
+                                    if (!m_open || e == asio::error::operation_aborted)
+                                        return;
+                                    if (e)
+                                        return dropConn(c, "connect: " + e.message());
+                                    c->connected = true;
+                                    m_counters.add("jtcp.connected");
+                                    startRead(c);
+                                    flush(c);
+                                });
+        return c;
+    }
+    return nullptr;
+}
+
+std::optional<JudpTransport::Endpoint> JudpTransport::resolve(const JausId& dst) const {
+    if (auto it = m_learned.find(dst.value()); it != m_learned.end())
+        return it->second;
+    for (auto& s : m_cfg.staticEndpoints) {
+        if (s.id.matches(dst) ||
+            (s.id.subsystem == dst.subsystem && (s.id.node == 0xFF || s.id.node == dst.node) &&
+             (s.id.component == 0xFF || s.id.component == dst.component))) {
+            boost::system::error_code ec;
+            auto a = asio::ip::make_address_v4(s.address, ec);
+            if (!ec)
+                return Endpoint(a, s.port);
+        }
+    }
+    // Components of one node usually share a node manager / socket.
+    for (auto& [k, ep] : m_learned) {
+        JausId id = JausId::fromValue(k);
+        if (id.subsystem == dst.subsystem && id.node == dst.node)
+            return ep;
+    }
+    return std::nullopt;
+}
+
+JudpTransport::Endpoint JudpTransport::broadcastEndpoint() const {
+    boost::system::error_code ec;
+    if (m_cfg.multicast)
+        return Endpoint(asio::ip::make_address_v4(m_cfg.multicastGroup, ec), m_cfg.multicastPort);
+    return Endpoint(asio::ip::make_address_v4(m_cfg.broadcastAddress, ec), m_cfg.multicastPort);
+}
+
+std::string JudpTransport::endpointOf(const JausId& id) const {
+    if (auto it = m_tcpRoutes.find(id.value()); it != m_tcpRoutes.end())
+        if (auto c = it->second.lock(); c && !c->dead)
+            return "tcp:" + c->peer;
+    auto ep = resolve(id);
+    if (!ep)
+        return {};
+    return ep->address().to_string() + ":" + std::to_string(ep->port());
+}
+
+void JudpTransport::send(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions o) {
+    if (!m_open)
+        return;
+    JudpHeader h;
+    h.priority = o.priority;
+    h.ackNak = o.ackRequest ? AckNak::Request : AckNak::None;
+    h.source = src;
+    h.destination = dst;
+    if (!dst.isBroadcast()) {
+        if (auto c = tcpRoute(dst)) {
+            std::uint16_t& tseq = m_sequence[src.value()];
+            h.sequence = tseq;
+            h.ackNak = AckNak::None; // TCP is reliable
+            auto frags = fragmentPayload(h, payload, m_cfg.maxFragmentPayload);
+            tseq = std::uint16_t(tseq + frags.size());
+            for (auto& f : frags) {
+                tcpWrite(c, encodeJtcp(f.header, f.payload, !c->versionSent));
+                c->versionSent = true;
+            }
+            m_counters.add("tx.jtcp.messages");
+            return;
+        }
+    }
+    Endpoint to;
+    if (dst.isBroadcast()) {
+        h.broadcast = dst.subsystem == 0xFFFF ? BroadcastFlag::Global : BroadcastFlag::Local;
+        h.ackNak = AckNak::None; // no ACKs for wildcard destinations (JTS JuniorMgr::sendto)
+        to = broadcastEndpoint();
+    } else if (auto ep = resolve(dst)) {
+        to = *ep;
+    } else {
+        // Unknown address: broadcast with an ACK request so the ACK reveals the peer (JTS JuniorRTE, §2.2).
+        h.broadcast = BroadcastFlag::Global;
+        h.ackNak = AckNak::Request;
+        to = broadcastEndpoint();
+        m_counters.add("tx.unknown_destination");
+    }
+    std::uint16_t& seq = m_sequence[src.value()];
+    h.sequence = seq;
+    auto frags = fragmentPayload(h, payload, m_cfg.maxFragmentPayload);
+    if (frags.size() > 1 && h.broadcast != BroadcastFlag::None) {
+        m_counters.add("tx.refused.broadcast_too_large");
+        logWarning(m_log, "refusing to broadcast a message larger than one fragment");
+        return;
+    }
+    seq = std::uint16_t(seq + frags.size());
+    for (auto& f : frags)
+        transmit(encodeDatagram(f.header, f.payload), to);
+}
+
+void JudpTransport::transmit(Bytes datagram, const Endpoint& to) {
+    if (m_faults.loss > 0 && std::uniform_real_distribution<double>(0, 1)(m_rng) < m_faults.loss) {
+        m_counters.add("tx.fault.dropped");
+        return;
+    }
+    auto out = [this](Bytes d, const Endpoint& e) {
+        if (m_faults.delay > Duration::zero()) {
+            auto t = std::make_shared<asio::steady_timer>(m_io, m_faults.delay);
+            t->async_wait([this, t, d = std::move(d), e](boost::system::error_code ec) {
+                if (!ec && m_open)
+                    rawSend(d, e);
+            });
+        } else {
+            rawSend(d, e);
+        }
+    };
+    if (m_faults.reorder) {
+        if (!m_held) {
+            m_held = std::make_pair(std::move(datagram), to);
+            return;
+        }
+        auto held = std::move(*m_held);
+        m_held.reset();
+        out(std::move(datagram), to); // the newer one first
+        out(std::move(held.first), held.second);
+        return;
+    }
+    out(std::move(datagram), to);
+}
+
+void JudpTransport::rawSend(const Bytes& datagram, const Endpoint& to) {
+    boost::system::error_code ec;
+    m_unicast->socket.send_to(asio::buffer(datagram), to, 0, ec);
+    if (ec) {
+        m_counters.add("tx.errors");
+        logDebug(m_log, "send_to " + to.address().to_string() + ": " + ec.message());
+    } else {
+        m_counters.add("tx.datagrams");
+    }
+}
+
+} // namespace ocu::jaus

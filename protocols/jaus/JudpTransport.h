@@ -1,0 +1,109 @@
+#pragma once
+// JUDP over Boost.Asio (AS5669A, AEP-4818 §4.7): unicast socket (port 3794 or ephemeral) plus multicast
+// reception (239.255.0.1 by default) or UDP broadcast; dynamic JAUS-ID -> endpoint learning from every
+// datagram, an optional static table, ACK answering (also for multicast-received requests, jaus-wire.md
+// §2.2), fragmentation and reassembly. Runs on the owner's io_context; not thread-safe (call from that
+// thread).
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/ip/udp.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include <array>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <random>
+#include <set>
+#include <string>
+
+#include "common/Clock.h"
+#include "common/Counters.h"
+#include "common/Udp.h"
+#include "jaus/JausConfig.h"
+#include "jaus/JausOutput.h"
+#include "jaus/JudpCodec.h"
+
+namespace ocu::jaus {
+
+// Network fault injection (simulated UGV, AEP-4818 §10 item 24): applied to outgoing datagrams.
+struct NetFaults {
+    double loss = 0;      // probability 0..1 of dropping a datagram
+    Duration delay{};     // added latency
+    bool reorder = false; // swap every other pair of datagrams
+};
+
+class JudpTransport {
+public:
+    using MessageHandler = std::function<void(const JausId& src, const JausId& dst, ByteSpan payload)>;
+    using ErrorHandler = std::function<void(const std::string& reason, const std::string& text)>;
+
+    JudpTransport(boost::asio::io_context& io, TransportSettings settings, Counters& counters,
+                  const Clock& clock, std::string logCategory);
+    ~JudpTransport();
+    JudpTransport(const JudpTransport&) = delete;
+    JudpTransport& operator=(const JudpTransport&) = delete;
+
+    // Opens the sockets; throws std::runtime_error naming what failed.
+    void open();
+    void close();
+    void setHandlers(MessageHandler onMessage, ErrorHandler onError);
+    // Which destination IDs are ours (for ACK answering).
+    void setLocalIds(std::function<bool(const JausId&)> isLocal) { m_isLocal = std::move(isLocal); }
+
+    void send(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions options);
+    std::string endpointOf(const JausId& id) const;
+    std::uint16_t localPort() const;
+    std::uint16_t localTcpPort() const; // JTCP server port, 0 when not listening
+    // JTCP bytes still queued or being written (stop() waits for the releases to leave).
+    std::size_t pendingTcpWrites() const;
+    void setFaults(NetFaults f) { m_faults = f; }
+
+private:
+    using Endpoint = boost::asio::ip::udp::endpoint;
+    struct Receiver;
+    struct TcpConn;
+    using TcpPtr = std::shared_ptr<TcpConn>;
+
+    void startReceive(Receiver& r);
+    void onDatagram(ByteSpan data, const Endpoint& from);
+    std::optional<Endpoint> resolve(const JausId& dst) const;
+    Endpoint broadcastEndpoint() const;
+    void transmit(Bytes datagram, const Endpoint& to);
+    void rawSend(const Bytes& datagram, const Endpoint& to);
+    void deliver(JudpMessage m, TimePoint now, const std::function<void(const std::string&)>& reject);
+    // JTCP (AS5669A; AEP-4818 §4.7.1: static address list, port 3794)
+    void startAccept();
+    void startRead(const TcpPtr& c);
+    void tcpWrite(const TcpPtr& c, Bytes bytes);
+    void flush(const TcpPtr& c);
+    void dropConn(const TcpPtr& c, const std::string& why);
+    TcpPtr tcpRoute(const JausId& dst);
+
+    boost::asio::io_context& m_io;
+    TransportSettings m_cfg;
+    Counters& m_counters;
+    const Clock& m_clock;
+    std::string m_log;
+    std::unique_ptr<Receiver> m_unicast;
+    std::unique_ptr<Receiver> m_multicast;
+    MessageHandler m_onMessage;
+    ErrorHandler m_onError;
+    std::function<bool(const JausId&)> m_isLocal;
+    std::map<std::uint32_t, Endpoint> m_learned;
+    std::map<std::uint32_t, std::uint16_t> m_sequence; // per source component
+    Reassembler m_reassembler;
+    NetFaults m_faults;
+    std::mt19937 m_rng{12345};
+    std::optional<std::pair<Bytes, Endpoint>> m_held; // reorder fault
+    std::map<std::string, TimePoint> m_lastLog;
+    bool m_open = false;
+    std::unique_ptr<boost::asio::ip::tcp::acceptor> m_acceptor;
+    std::set<TcpPtr> m_conns;
+    std::map<std::uint32_t, std::weak_ptr<TcpConn>> m_tcpRoutes; // learned from JTCP traffic
+    std::map<std::size_t, TcpPtr> m_tcpClients;                  // by static-table index
+};
+
+} // namespace ocu::jaus

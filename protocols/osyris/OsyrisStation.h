@@ -1,0 +1,79 @@
+#pragma once
+// The OCU (or a simulated machine) as an OSYRIS station: StationCore on its own IoThread with a UDP socket
+// (multicast with IGMP join/leave, broadcast or unicast) and a Beat timer. Everything except the
+// constructor's arguments is thread-safe; listener callbacks run on the io thread.
+#include "osyris/OsyrisConfig.h"
+#include "osyris/PassCountGrid.h"
+#include "osyris/RibbonStore.h"
+#include "osyris/StationCore.h"
+
+#include "common/Counters.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace ocu::osyris {
+
+// Receive-side impairment for tests and demos (loss, duplication, reordering on a real socket).
+struct RxImpairment {
+    double loss = 0;      // probability a datagram is dropped
+    double duplicate = 0; // probability it is delivered twice
+    double reorder = 0;   // probability it is held back by delayMs
+    int delayMs = 150;
+    std::uint32_t seed = 1;
+};
+
+class OsyrisStation {
+public:
+    OsyrisStation(OsyrisConfig cfg, OsyrisListener& listener);
+    ~OsyrisStation();
+    OsyrisStation(const OsyrisStation&) = delete;
+    OsyrisStation& operator=(const OsyrisStation&) = delete;
+
+    // Opens the ribbon store and the socket, joins the group and starts the Beat. On failure returns false
+    // with the reason in *error (also reported through onEvent).
+    bool start(std::string* error = nullptr);
+    void stop();
+    bool running() const;
+
+    void sendText(std::string text);
+    void ping(std::uint8_t idx);
+    // For stations that are machines (simulated rollers): write a position into the own ribbon.
+    void publishOwnPosition(CmPos p, std::vector<PosProp> props = {});
+    void setImpairment(const RxImpairment& imp);
+
+    const OsyrisConfig& config() const { return m_cfg; }
+    Counters& counters();
+    // Thread-safe (own locks); valid after start().
+    RibbonStore* store();
+    PassCountGrid& grid() { return m_grid; }
+    std::uint16_t localPort() const { return m_localPort; }
+    // Runs f(core) on the io thread and returns its result (tests, diagnostics).
+    template <class F> auto withCore(F&& f) -> decltype(f(std::declval<StationCore&>()));
+
+private:
+    struct Impl;
+    OsyrisConfig m_cfg;
+    OsyrisListener& m_listener;
+    PassCountGrid m_grid;
+    std::unique_ptr<Impl> m_impl;
+    std::uint16_t m_localPort = 0;
+    Counters m_fallbackCounters;
+    StationCore* core();
+    void callOnIo(const std::function<void()>& f);
+};
+
+template <class F> auto OsyrisStation::withCore(F&& f) -> decltype(f(std::declval<StationCore&>())) {
+    using R = decltype(f(std::declval<StationCore&>()));
+    if constexpr (std::is_void_v<R>) {
+        callOnIo([&] { f(*core()); });
+    } else {
+        std::optional<R> out;
+        callOnIo([&] { out.emplace(f(*core())); });
+        return std::move(*out);
+    }
+}
+
+} // namespace ocu::osyris

@@ -1,0 +1,697 @@
+#include "osyris/StationCore.h"
+
+#include "common/Log.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace ocu::osyris {
+
+namespace {
+constexpr int kPrioOwner = 3;   // our own ribbon
+constexpr int kPrioAll = 2;     // we hold every requested slot
+constexpr int kPrioPartial = 1; // we hold some
+constexpr int kPrioBoost = 4;   // nobody answered an overheard NCF
+} // namespace
+
+MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* frame,
+                             const std::string& name) {
+    MachineSnapshot s;
+    s.idx = idx;
+    s.name = name;
+    s.x = p.x;
+    s.y = p.y;
+    s.z = p.z;
+    s.yaw = p.yaw;
+    double h = -p.yaw * 180.0 / std::numbers::pi; // yaw counter-clockwise from north -> compass
+    h = std::fmod(h, 360.0);
+    if (h < 0)
+        h += 360.0;
+    s.headingDeg = h;
+    s.speed = p.speed;
+    s.width = p.dx;
+    s.flags = p.flags;
+    s.valid = p.flags & kPosValid;
+    s.vibrating = p.flags & kPosVibrating;
+    s.forward = p.flags & kPosForward;
+    s.backward = p.flags & kPosBackward;
+    s.stopped = p.flags & kPosStop;
+    s.gpsShadow = p.flags & kPosGpsShadow;
+    s.accuracy = (p.flags & kPosAccuracyHigh)  ? 3
+                 : (p.flags & kPosAccuracyMed) ? 2
+                 : (p.flags & kPosAccuracyLow) ? 1
+                                               : 0;
+    s.timestampMs = p.time ? fileTimeToUnixMillis(p.time) : 0;
+    s.slot = p.slot;
+    if (frame) {
+        auto g = frame->toGeodetic({p.x, p.y, p.z});
+        s.lat = g.lat;
+        s.lon = g.lon;
+    }
+    return s;
+}
+
+StationCore::StationCore(OsyrisConfig cfg, const Clock& clock, RibbonStore& store, PassCountGrid* grid,
+                         OsyrisListener* listener, SendFn send, std::uint32_t seed)
+    : m_cfg(std::move(cfg)), m_clock(clock), m_store(store), m_grid(grid), m_listener(listener),
+      m_send(std::move(send)), m_rng(seed),
+      m_frame(GeoPoint{m_cfg.originLat, m_cfg.originLon, m_cfg.originAlt}) {
+    m_geo = m_cfg.originLat != 0 || m_cfg.originLon != 0;
+    if (auto n = m_store.newest(idx()))
+        m_nextOwnSlot = n->pos.slot + 1; // restart: continue our own ribbon
+    for (auto owner : m_store.machines()) {
+        auto held = m_store.held(owner);
+        auto& rs = m_ribbons[owner];
+        rs.knownMin = held.min();
+        rs.knownMax = held.max();
+        m_gridDirty.insert(owner);
+    }
+}
+
+Duration StationCore::beats(double n) const {
+    return std::chrono::duration_cast<Duration>(std::chrono::duration<double, std::milli>(n * m_cfg.beatMs));
+}
+
+void StationCore::event(Severity s, const std::string& text) {
+    if (m_listener)
+        m_listener->onEvent(s, text);
+}
+
+void StationCore::reject(const std::string& reason, const std::string& text) {
+    m_counters.add("rx.rejected." + reason);
+    auto& n = m_rejectLogged[reason];
+    if (n++ < 5 || n % 1000 == 0) // bounded logging: a noisy radio must not flood the log
+        logWarning("osyris",
+                   "station " + std::to_string(idx()) + ": datagram rejected (" + reason + "): " + text);
+}
+
+void StationCore::start() {
+    auto now = m_clock.now();
+    m_lastAlive = now;
+    auto machines = m_store.machines();
+    bool haveOthers =
+        std::any_of(machines.begin(), machines.end(), [this](std::uint8_t m) { return m != idx(); });
+    // A station restarted on its site file already has the history: it asks only for the gap (NAK), which
+    // ALIVE and live positions reveal. Only an empty station joins late with ALL (§4).
+    if ((m_cfg.active & kActiveAskRequests) && !haveOthers) {
+        enqueueRequest(kIdxAll, {RequestType::All, 0, kSlotLast, 0, 0});
+        m_counters.add("tx.all");
+        m_allRetries = 0;
+        m_allRetryAt = now + beats(m_cfg.ttlBeats);
+    }
+    sendAlive();
+    m_aliveSent = true;
+    flush(now, true);
+}
+
+std::uint32_t StationCore::publishOwnPosition(CmPos p, std::vector<PosProp> props) {
+    p.slot = m_nextOwnSlot++;
+    PositionRecord rec{p, std::move(props)};
+    m_store.put(idx(), rec);
+    auto& rs = m_ribbons[idx()];
+    if (!rs.knownMin)
+        rs.knownMin = p.slot;
+    rs.knownMax = std::max(rs.knownMax.value_or(0), p.slot);
+    m_gridDirty.insert(idx());
+    if (m_cfg.active & kActiveSendPositions) {
+        enqueuePosition(idx(), rec, false);
+        m_counters.add("tx.pos");
+    }
+    if (m_listener)
+        m_listener->onMachinePosition(makeSnapshot(idx(), p, m_geo ? &m_frame : nullptr, nameOf(idx())));
+    return p.slot;
+}
+
+void StationCore::sendText(const std::string& text, std::uint8_t to) {
+    Bytes b;
+    encodeMsg(b, idx(), to, text, m_cfg.checksum);
+    enqueue(std::move(b), true);
+    m_counters.add("tx.msg");
+}
+
+void StationCore::ping(std::uint8_t target) {
+    auto own = ownPosition();
+    m_pings[target] = m_clock.now();
+    enqueueRequest(target, {RequestType::Ping, 0, 0, own ? own->x : 0.f, own ? own->y : 0.f});
+    m_counters.add("tx.ping");
+}
+
+std::string StationCore::nameOf(std::uint8_t owner) const {
+    auto it = m_cfg.machineNames.find(owner);
+    return it == m_cfg.machineNames.end() ? std::string() : it->second;
+}
+
+std::optional<CmPos> StationCore::ownPosition() const {
+    if (auto n = m_store.newest(idx()))
+        return n->pos;
+    return std::nullopt;
+}
+
+std::optional<std::uint32_t> StationCore::knownMax(std::uint8_t owner) const {
+    auto it = m_ribbons.find(owner);
+    return it == m_ribbons.end() ? std::nullopt : it->second.knownMax;
+}
+
+std::uint64_t StationCore::missingCount() const {
+    std::uint64_t n = 0;
+    for (auto& [owner, rs] : m_ribbons) {
+        if (!rs.knownMax)
+            continue;
+        auto held = m_store.held(owner);
+        for (auto& g : held.gaps(rs.knownMin.value_or(0), *rs.knownMax))
+            n += g.size();
+    }
+    return n;
+}
+
+std::set<std::uint8_t> StationCore::heardStations() const {
+    std::set<std::uint8_t> s;
+    for (auto& [i, t] : m_lastHeard)
+        s.insert(i);
+    return s;
+}
+
+// ---- sending ----
+
+void StationCore::enqueue(Bytes unit, bool urgent) {
+    m_queuedBytes += unit.size();
+    m_queue.push_back({std::move(unit), m_clock.now(), urgent});
+}
+
+void StationCore::enqueuePosition(std::uint8_t owner, const PositionRecord& rec, bool urgent) {
+    Bytes b;
+    encodePos(b, idx(), owner, rec.pos, m_cfg.checksum);
+    if (!rec.props.empty()) // CmPosProps immediately follows its position, in the same datagram
+        encodePosProps(b, idx(), owner, rec.props, m_cfg.checksum);
+    enqueue(std::move(b), urgent);
+}
+
+void StationCore::enqueueRequest(std::uint8_t whose, const CmRequest& r, bool urgent) {
+    Bytes b;
+    encodeRequest(b, idx(), whose, r, m_cfg.checksum);
+    enqueue(std::move(b), urgent);
+}
+
+void StationCore::flush(TimePoint now, bool force) {
+    if (m_queue.empty())
+        return;
+    bool urgent = std::any_of(m_queue.begin(), m_queue.end(), [](const Unit& u) { return u.urgent; });
+    bool due = force || urgent || m_queuedBytes >= static_cast<std::size_t>(m_cfg.minLen) ||
+               now - m_queue.front().queuedAt >= std::chrono::milliseconds(m_cfg.sendPeriodMs);
+    if (!due)
+        return;
+    int datagrams = 0;
+    const std::size_t maxLen = static_cast<std::size_t>(m_cfg.maxLen);
+    while (!m_queue.empty() && datagrams < m_cfg.maxDatagramsPerBeat) {
+        Bytes d;
+        while (!m_queue.empty() && (d.empty() || d.size() + m_queue.front().bytes.size() <= maxLen)) {
+            auto& u = m_queue.front();
+            d.insert(d.end(), u.bytes.begin(), u.bytes.end());
+            m_queuedBytes -= u.bytes.size();
+            m_queue.pop_front();
+        }
+        m_counters.add("tx.datagrams");
+        m_counters.add("tx.bytes", d.size());
+        m_send(d);
+        ++datagrams;
+    }
+}
+
+void StationCore::sendAlive() {
+    bool any = false;
+    for (auto owner : m_store.machines()) {
+        auto held = m_store.held(owner);
+        if (held.empty())
+            continue;
+        // ALIVE per ribbon held: the owner's range, or what this station can relay for others (§4 soft
+        // relay).
+        enqueueRequest(owner, {RequestType::Alive, held.min(), held.max(), 0, 0}, false);
+        any = any || owner == idx();
+        m_counters.add("tx.alive");
+    }
+    if (!any) {
+        enqueueRequest(idx(), {RequestType::Alive, kSlotLast, 0, 0, 0}, false); // From > To: no own ribbon
+        m_counters.add("tx.alive");
+    }
+}
+
+// ---- receiving ----
+
+void StationCore::receive(ByteSpan datagram) {
+    auto now = m_clock.now();
+    m_counters.add("rx.datagrams");
+    auto d = decodeDatagram(datagram, m_cfg.checksum, static_cast<std::size_t>(std::max(m_cfg.maxLen, 1500)));
+    if (!d.reason.empty())
+        reject(d.reason, d.error);
+    if (d.messages.empty())
+        return;
+    std::uint8_t who = d.messages.front().header.who;
+    if (who == idx()) {
+        m_counters.add("rx.own"); // our own multicast looped back
+        return;
+    }
+    if (m_cfg.maxRange > 0) {
+        for (auto& m : d.messages)
+            if (auto* p = std::get_if<CmPos>(&m.body); p && m.header.whose == who) {
+                auto it = m_senderPos.find(who);
+                if (it == m_senderPos.end() || it->second.slot < p->slot)
+                    m_senderPos[who] = *p;
+            }
+        auto own = ownPosition();
+        auto it = m_senderPos.find(who);
+        if (own && it != m_senderPos.end() &&
+            std::hypot(double(own->x) - it->second.x, double(own->y) - it->second.y) > m_cfg.maxRange) {
+            m_counters.add("rx.dropped.range"); // §7 MaxRange: simulated range-limited transmission
+            return;
+        }
+    }
+    if (!m_lastHeard.count(who))
+        event(Severity::Info, "OSYRIS station " + std::to_string(who) + " heard");
+    m_lastHeard[who] = now;
+    for (std::size_t i = 0; i < d.messages.size(); ++i) {
+        const auto& m = d.messages[i];
+        if (auto* p = std::get_if<CmPos>(&m.body)) {
+            const std::vector<PosProp>* props = nullptr;
+            if (i + 1 < d.messages.size() && d.messages[i + 1].header.whose == m.header.whose)
+                if (auto* pp = std::get_if<CmPosProps>(&d.messages[i + 1].body)) {
+                    props = &pp->props;
+                    ++i;
+                }
+            handlePosition(m.header, *p, props, now);
+        } else if (std::get_if<CmPosProps>(&m.body)) {
+            m_counters.add("rx.props.orphan"); // no position before it: nothing to attach to
+        } else if (auto* r = std::get_if<CmRequest>(&m.body)) {
+            handleRequest(m.header, *r, now);
+        } else if (auto* t = std::get_if<CmMsg>(&m.body)) {
+            m_counters.add("rx.msg");
+            if ((m_cfg.active & kActiveDisplayMessages) &&
+                (m.header.whose == kIdxAll || m.header.whose == idx()) && m_listener)
+                m_listener->onText(who, t->text);
+        }
+    }
+}
+
+void StationCore::noteKnown(std::uint8_t owner, std::uint32_t from, std::uint32_t to) {
+    auto& rs = m_ribbons[owner];
+    rs.knownMin = rs.knownMin ? std::min(*rs.knownMin, from) : from;
+    rs.knownMax = rs.knownMax ? std::max(*rs.knownMax, to) : to;
+}
+
+void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::vector<PosProp>* props,
+                                 TimePoint now) {
+    std::uint8_t owner = h.whose;
+    PositionRecord rec{p, props ? *props : std::vector<PosProp>{}};
+    bool isNew = m_store.put(owner, rec);
+    if (!isNew && props)
+        m_store.addProps(owner, p.slot, *props);
+    auto& rs = m_ribbons[owner];
+    bool newest = !rs.knownMax || p.slot > *rs.knownMax;
+    bool repair = rs.knownMax && p.slot < *rs.knownMax;
+    noteKnown(owner, p.slot, p.slot);
+    if (isNew) {
+        m_counters.add("rx.pos.new");
+        m_receivedPositions = true;
+        m_gridDirty.insert(owner);
+        if (repair)
+            rs.lastRepair = now; // an answer is flowing: hold our own requests for this ribbon
+    } else {
+        m_counters.add("rx.pos.duplicate");
+    }
+    // Someone else answers this data: our pending answers for it are no longer needed (§5).
+    for (auto& a : m_assets)
+        if (a.owner == owner && a.slots.contains(p.slot)) {
+            a.slots.erase(p.slot);
+            a.othersAnswering = true;
+        }
+    // A retransmission was overheard: whoever answers this ribbon is alive, so a repeated NAK for the slot
+    // means the answer was lost, not that nobody answers; push our relay wait further out.
+    if (h.who != idx() && (!isNew || repair))
+        if (auto ns = m_nakSeen.find(owner); ns != m_nakSeen.end())
+            if (auto it = ns->second.find(p.slot); it != ns->second.end())
+                it->second = now + beats(m_cfg.ttlBeats);
+    for (auto& s : m_suppressed)
+        if (s.owner == owner && s.slots.contains(p.slot)) {
+            s.slots.erase(p.slot);
+            s.heard = true;
+        }
+    if (isNew && (newest || !rs.reported || p.slot > rs.lastReported)) {
+        rs.reported = true;
+        rs.lastReported = p.slot;
+        if (m_listener)
+            m_listener->onMachinePosition(makeSnapshot(owner, p, m_geo ? &m_frame : nullptr, nameOf(owner)));
+    }
+}
+
+void StationCore::setHold(RibbonState& rs, std::uint32_t a, std::uint32_t b, TimePoint until) {
+    std::vector<Hold> out;
+    out.reserve(rs.holds.size() + 2);
+    for (auto& h : rs.holds) {
+        if (h.to < a || h.from > b) {
+            out.push_back(h);
+            continue;
+        }
+        if (h.from < a)
+            out.push_back({h.from, a - 1, h.until});
+        if (h.to > b)
+            out.push_back({b + 1, h.to, h.until});
+    }
+    out.push_back({a, b, until});
+    std::sort(out.begin(), out.end(), [](const Hold& x, const Hold& y) { return x.from < y.from; });
+    rs.holds = std::move(out);
+}
+
+int StationCore::rankFor(std::uint8_t owner) const {
+    // Deterministic stagger of non-owner answers: stations closer after the owner (mod 256) answer first.
+    auto dist = [owner](std::uint8_t s) { return static_cast<std::uint8_t>(s - owner); };
+    int rank = 0;
+    auto now = m_clock.now();
+    for (auto& [s, t] : m_lastHeard)
+        if (s != owner && s != idx() && now - t < std::chrono::milliseconds(3 * m_cfg.sendPeriodMs) &&
+            dist(s) < dist(idx()))
+            ++rank;
+    return rank;
+}
+
+void StationCore::addAsset(std::uint8_t owner, IntervalSet slots, int priority, TimePoint notBefore) {
+    for (auto& a : m_assets)
+        if (a.owner == owner && !a.ncfSent) { // merge requests for the same ribbon
+            for (auto& r : slots.ranges())
+                a.slots.insert(r.from, r.to);
+            a.priority = std::max(a.priority, priority);
+            a.notBefore = std::min(a.notBefore, notBefore);
+            return;
+        }
+    m_assets.push_back({owner, std::move(slots), priority, notBefore, false, false});
+}
+
+void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint now) {
+    std::uint8_t who = h.who;
+    switch (r.type) {
+    case RequestType::Nak: {
+        m_counters.add("rx.nak");
+        std::uint8_t owner = h.whose;
+        if (owner >= kIdxNobody)
+            return;
+        auto held = m_store.held(owner);
+        std::uint32_t to = r.to == kSlotLast ? (held.empty() ? 0 : held.max()) : r.to;
+        // Overheard: the answer will be multicast, so our own wish for the same slots waits (§5).
+        if (m_cfg.active & kActiveAskRequests)
+            if (auto it = m_ribbons.find(owner); it != m_ribbons.end() && r.from <= to)
+                setHold(it->second, r.from, to, now + beats(m_cfg.ttlBeats));
+        if (!(m_cfg.active & kActiveAnswerRequests) || r.from > to)
+            return;
+        IntervalSet have;
+        for (auto& x : held.intersect(r.from, to))
+            have.insert(x.from, x.to);
+        if (auto rs = m_recentlySent.find(owner); rs != m_recentlySent.end()) {
+            for (auto it = rs->second.lower_bound(r.from); it != rs->second.end() && it->first <= to; ++it)
+                if (now - it->second < beats(m_cfg.answerHoldBeats)) {
+                    have.erase(it->first);
+                    m_counters.add("rx.nak.crossed");
+                }
+        }
+        if (have.empty()) {
+            m_counters.add("rx.nak.ignored"); // we hold none of it (§5)
+            return;
+        }
+        if (owner != idx()) {
+            // Soft relay (§5): a non-owner answers a NAK only when it is repeated after TTL/2, i.e. the owner
+            // did not answer the first one. The first NAK is remembered.
+            auto& seen = m_nakSeen[owner];
+            IntervalSet due;
+            for (auto& x : have.ranges())
+                for (std::uint64_t sl = x.from; sl <= x.to; ++sl) {
+                    auto [it, fresh] = seen.emplace(static_cast<std::uint32_t>(sl), now);
+                    if (!fresh && now - it->second >= beats(m_cfg.ttlBeats / 2.0))
+                        due.insert(static_cast<std::uint32_t>(sl));
+                }
+            if (due.empty()) {
+                m_counters.add("rx.nak.deferred");
+                return;
+            }
+            have = std::move(due);
+        }
+        bool all = have.count() == std::uint64_t(to) - r.from + 1;
+        int prio;
+        TimePoint nb;
+        if (owner == idx()) {
+            prio = kPrioOwner;
+            nb = now;
+        } else {
+            prio = all ? kPrioAll : kPrioPartial;
+            nb = now + beats((all ? 2.0 : 3.0) + rankFor(owner));
+        }
+        addAsset(owner, std::move(have), prio, nb);
+        break;
+    }
+    case RequestType::Ncf: {
+        m_counters.add("rx.ncf");
+        std::uint8_t owner = h.whose;
+        if (owner >= kIdxNobody || r.from > r.to)
+            return;
+        // Another station will answer: lower our answer for the same interval (suppressed until TTL)...
+        for (auto& a : m_assets) {
+            if (a.owner != owner || a.ncfSent)
+                continue;
+            IntervalSet moved;
+            for (auto& x : a.slots.intersect(r.from, r.to))
+                moved.insert(x.from, x.to);
+            if (moved.empty())
+                continue;
+            a.slots.erase(r.from, r.to);
+            m_counters.add("asset.suppressed");
+            m_suppressed.push_back({owner, std::move(moved), now + beats(m_cfg.ttlBeats), false});
+        }
+        // ...and our own wish for it waits for the retransmission.
+        if (auto it = m_ribbons.find(owner); it != m_ribbons.end())
+            setHold(it->second, r.from, r.to, now + beats(m_cfg.ttlBeats));
+        break;
+    }
+    case RequestType::All: {
+        m_counters.add("rx.all");
+        if (!(m_cfg.active & kActiveAnswerRequests))
+            return;
+        for (auto owner : m_store.machines()) {
+            if (h.whose != kIdxAll && h.whose != owner)
+                continue;
+            auto held = m_store.held(owner);
+            if (held.empty())
+                continue;
+            // Newest state first (§4 late join): the newest position of every ribbon, right away.
+            if (auto n = m_store.newest(owner)) {
+                enqueuePosition(owner, *n, true);
+                m_counters.add("tx.retx");
+                m_counters.add("tx.retx.newest");
+            }
+            enqueueRequest(owner, {RequestType::Alive, held.min(), held.max(), 0, 0}, true);
+            m_counters.add("tx.alive");
+            if (owner == idx() && held.max() > held.min()) {
+                // Owner sends its tail (TailPos, default all), newest first, with an NCF.
+                std::uint32_t hi = held.max() - 1;
+                std::uint32_t lo = held.min();
+                if (m_cfg.tailPos > 0 && hi - lo + 1 > m_cfg.tailPos)
+                    lo = hi - (m_cfg.tailPos - 1);
+                IntervalSet tail;
+                for (auto& x : held.intersect(lo, hi))
+                    tail.insert(x.from, x.to);
+                if (!tail.empty())
+                    addAsset(owner, std::move(tail), kPrioOwner, now);
+            }
+        }
+        break;
+    }
+    case RequestType::Ping: {
+        m_counters.add("rx.ping");
+        if (h.whose != idx() && h.whose != kIdxAll)
+            return;
+        auto own = ownPosition();
+        enqueueRequest(who, {RequestType::Pong, 0, 0, own ? own->x : 0.f, own ? own->y : 0.f});
+        m_counters.add("tx.pong");
+        break;
+    }
+    case RequestType::Pong: {
+        m_counters.add("rx.pong");
+        if (h.whose != idx())
+            return;
+        auto it = m_pings.find(who);
+        double rtt = -1;
+        if (it != m_pings.end()) {
+            rtt = std::chrono::duration<double, std::milli>(now - it->second).count();
+            m_pings.erase(it);
+        }
+        if (m_listener)
+            m_listener->onPong(who, rtt, r.x, r.y);
+        event(Severity::Info,
+              "PONG from station " + std::to_string(who) + " after " + std::to_string(int(rtt)) + " ms");
+        break;
+    }
+    case RequestType::Alive: {
+        m_counters.add("rx.alive");
+        std::uint8_t owner = h.whose;
+        bool hasRange = r.from <= r.to && r.to != kSlotLast;
+        if (owner < kIdxNobody && hasRange)
+            noteKnown(owner, r.from, r.to);
+        if (owner == who && m_listener)
+            m_listener->onStationAlive(who, hasRange ? std::optional<SlotRange>(SlotRange{r.from, r.to})
+                                                     : std::nullopt);
+        break;
+    }
+    }
+}
+
+// ---- the Beat ----
+
+void StationCore::processWishes(TimePoint now) {
+    struct Cand {
+        std::uint8_t owner;
+        std::uint32_t from, to;
+    };
+    std::vector<Cand> cands;
+    for (auto& [owner, rs] : m_ribbons) {
+        if (owner == idx() || !rs.knownMax)
+            continue;
+        auto held = m_store.held(owner);
+        auto gaps = held.gaps(rs.knownMin.value_or(0), *rs.knownMax);
+        // Rebuild the holds over the current gaps; a new gap waits lossWaitBeats before it may be asked for.
+        std::vector<Hold> holds;
+        for (auto& g : gaps) {
+            std::uint64_t cur = g.from;
+            for (auto& h : rs.holds) {
+                if (h.to < g.from || h.from > g.to)
+                    continue;
+                std::uint64_t f = std::max<std::uint64_t>(cur, h.from);
+                if (f > cur)
+                    holds.push_back({static_cast<std::uint32_t>(cur), static_cast<std::uint32_t>(f - 1),
+                                     now + beats(m_cfg.lossWaitBeats)});
+                std::uint32_t t = std::min(g.to, h.to);
+                if (f <= t)
+                    holds.push_back({static_cast<std::uint32_t>(f), t, h.until});
+                cur = std::uint64_t(t) + 1;
+            }
+            if (cur <= g.to)
+                holds.push_back({static_cast<std::uint32_t>(cur), g.to, now + beats(m_cfg.lossWaitBeats)});
+        }
+        rs.holds = std::move(holds);
+        if (now < rs.lastRepair + beats(2))
+            continue; // retransmissions for this ribbon are arriving: let them finish
+        for (auto& h : rs.holds)
+            if (h.until <= now)
+                cands.push_back({owner, h.from, h.to});
+    }
+    // Newest and longest misses first (§4).
+    std::sort(cands.begin(), cands.end(), [](const Cand& a, const Cand& b) {
+        if (a.to != b.to)
+            return a.to > b.to;
+        return (a.to - a.from) > (b.to - b.from);
+    });
+    int issued = 0;
+    for (auto& c : cands) {
+        if (issued >= m_cfg.maxNaksPerBeat)
+            break;
+        std::uint32_t n = static_cast<std::uint32_t>(m_cfg.maxNakSlots);
+        std::uint32_t from = (c.to - c.from + 1 > n) ? c.to - n + 1 : c.from;
+        enqueueRequest(c.owner, {RequestType::Nak, from, c.to, 0, 0});
+        setHold(m_ribbons[c.owner], from, c.to, now + beats(m_cfg.ttlBeats));
+        m_counters.add("tx.nak");
+        m_counters.add("tx.nak.slots", std::uint64_t(c.to) - from + 1);
+        ++issued;
+    }
+}
+
+void StationCore::processAssets(TimePoint now) {
+    // Suppressed answers nobody delivered come back with a boosted priority (§5).
+    for (auto it = m_suppressed.begin(); it != m_suppressed.end();) {
+        if (it->deadline > now) {
+            ++it;
+            continue;
+        }
+        if (!it->heard && !it->slots.empty()) {
+            m_counters.add("asset.boosted");
+            addAsset(it->owner, std::move(it->slots), kPrioBoost, now);
+        }
+        it = m_suppressed.erase(it);
+    }
+    // Drop answers somebody else is already giving, and empty ones.
+    std::erase_if(m_assets, [&](const Asset& a) {
+        if (a.slots.empty())
+            return true;
+        if (a.othersAnswering && !a.ncfSent && a.owner != idx()) {
+            m_counters.add("asset.dropped.answered");
+            return true;
+        }
+        return false;
+    });
+    std::stable_sort(m_assets.begin(), m_assets.end(), [](const Asset& a, const Asset& b) {
+        if (a.priority != b.priority)
+            return a.priority > b.priority;
+        return a.slots.max() > b.slots.max();
+    });
+    int budget = m_cfg.maxRetxPerBeat;
+    for (auto& a : m_assets) {
+        if (budget <= 0)
+            break;
+        if (a.notBefore > now || a.slots.empty())
+            continue;
+        if (!a.ncfSent) {
+            // NCF before the retransmission, so other holders stand back (§6).
+            enqueueRequest(a.owner, {RequestType::Ncf, a.slots.min(), a.slots.max(), 0, 0});
+            m_counters.add("tx.ncf");
+            a.ncfSent = true;
+        }
+        while (budget > 0 && !a.slots.empty()) {
+            std::uint32_t s = a.slots.max(); // newest first
+            a.slots.erase(s);
+            if (auto rec = m_store.get(a.owner, s)) {
+                m_recentlySent[a.owner][s] = now;
+                enqueuePosition(a.owner, *rec, true);
+                m_counters.add("tx.retx");
+                if (a.owner != idx())
+                    m_counters.add("tx.retx.relay");
+                if (a.priority == kPrioBoost)
+                    m_counters.add("tx.retx.boosted");
+                --budget;
+            }
+        }
+    }
+    std::erase_if(m_assets, [](const Asset& a) { return a.slots.empty(); });
+    for (auto& [owner, sent] : m_recentlySent)
+        std::erase_if(sent, [&](const auto& kv) { return now - kv.second >= beats(m_cfg.answerHoldBeats); });
+    for (auto& [owner, seen] : m_nakSeen)
+        std::erase_if(seen, [&](const auto& kv) { return now - kv.second >= beats(3.0 * m_cfg.ttlBeats); });
+}
+
+void StationCore::updateGrid() {
+    if (!m_grid)
+        return;
+    for (auto owner : m_gridDirty)
+        m_grid->advance(owner, m_store);
+    m_gridDirty.clear();
+    if (auto r = m_grid->takeDirty(); r && m_listener)
+        m_listener->onPassCountChanged(*r);
+}
+
+void StationCore::tick() {
+    auto now = m_clock.now();
+    if ((m_cfg.active & kActiveAskRequests) && !m_receivedPositions && m_allRetries < 3 &&
+        m_allRetryAt != TimePoint{} && now >= m_allRetryAt) {
+        enqueueRequest(kIdxAll, {RequestType::All, 0, kSlotLast, 0, 0}); // the first ALL may have been lost
+        m_counters.add("tx.all");
+        ++m_allRetries;
+        m_allRetryAt = now + beats(m_cfg.ttlBeats);
+    }
+    if (m_cfg.active & kActiveAskRequests)
+        processWishes(now);
+    if (m_cfg.active & kActiveAnswerRequests)
+        processAssets(now);
+    if (!m_aliveSent || now - m_lastAlive >= std::chrono::milliseconds(m_cfg.sendPeriodMs)) {
+        sendAlive();
+        m_lastAlive = now;
+        m_aliveSent = true;
+    }
+    flush(now, false);
+    m_store.commit();
+    updateGrid();
+}
+
+} // namespace ocu::osyris

@@ -1,0 +1,91 @@
+#pragma once
+// A simulated autonomous haulage system (AHS) speaking ISO 23725 as a WebSocket service (or client): a
+// generated open-pit map served in chunks, N haul trucks on load-haul-dump cycles over the road graph,
+// all-stop and assignments honoured. No Qt. Runs on its own io thread.
+#include "iso23725/Messages.h"
+#include "iso23725/WsTransport.h"
+
+#include "common/Counters.h"
+#include "common/GeoFrame.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ocu::sim {
+
+struct SimulatedAhsConfig {
+    std::uint16_t port = 0; // 0 = any free port (see SimulatedAhs::port())
+    std::string bindAddress = "127.0.0.1";
+    std::string path = "/iso23725";
+    bool tls = false; // wss:// with certFile/keyFile
+    std::string certFile;
+    std::string keyFile;
+    std::string clientCaFile; // require client certificates signed by this CA (mutual TLS)
+    // Client mode (optional): connect to an FMS listening at this URL instead of serving.
+    std::string connectUrl;
+    std::string caFile; // client mode: CA of the FMS
+    int truckCount = 6;
+    int shovelCount = 2;
+    int dumpCount = 2;
+    double positionRateHz = 2.0; // 1-10 Hz
+    GeoPoint origin{-23.36, 119.73, 500.0};
+    std::uint32_t seed = 1;
+    double timeScale = 1.0;           // >1 runs the haul cycle faster (tests)
+    std::size_t mapChunkElements = 0; // 0 = choose so the map has at least 3 chunks
+    bool healthEvents = true;         // periodic health, occasional diagnostics and autonomy changes
+    std::string ahsId = "7d1f3c2a-5b8e-4c61-9a0d-2e4f6b8c1a37";
+    std::chrono::milliseconds pingInterval{5000};
+    std::chrono::milliseconds deadAfter{15000};
+};
+
+struct SimulatedAhsStats {
+    std::uint64_t positionsSent = 0;
+    std::uint64_t framesReceived = 0;
+    std::size_t queuedBytes = 0;
+    std::size_t sessions = 0;
+    bool allStopOn = false;
+    int movingTrucks = 0;
+    std::vector<std::string> fmsFirstMessages; // first member of each FMS connection's first frame
+};
+
+class SimulatedAhs {
+public:
+    explicit SimulatedAhs(SimulatedAhsConfig config);
+    ~SimulatedAhs();
+    SimulatedAhs(const SimulatedAhs&) = delete;
+    SimulatedAhs& operator=(const SimulatedAhs&) = delete;
+
+    // Starts the io thread and listens (or connects); false with a message in lastError() on failure.
+    bool start();
+    void stop();
+    bool running() const;
+    std::uint16_t port() const;
+    std::string url() const; // ws://127.0.0.1:port/iso23725 (or wss://)
+    const std::string& lastError() const { return m_error; }
+
+    // The generated fleet (truck GUIDs are stable for a given seed).
+    std::vector<iso23725::Equipment> fleet() const;
+    SimulatedAhsStats stats();
+    Counters& counters() { return m_counters; }
+
+    // Test and demo hooks (thread-safe).
+    void bumpMapChangeSet();                     // edits the map: pushes a new MapSummaryV1
+    void sendRaw(const std::string& text);       // text frame to every connected FMS (fault injection)
+    void sendRawBinary(const std::string& data); // binary frame to every connected FMS (fault injection)
+    // Blocks the simulator's io thread for d (a network stall: no frames, no pongs) to exercise dead-link
+    // detection.
+    void freezeFor(std::chrono::milliseconds d);
+    void setTruckManual(int index, bool manual); // autonomy mode change
+    std::vector<double> truckSpeedsKmh();        // current speeds
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> m_impl;
+    Counters m_counters;
+    std::string m_error;
+};
+
+} // namespace ocu::sim

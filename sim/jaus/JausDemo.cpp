@@ -1,0 +1,68 @@
+#include "sim/jaus/JausDemo.h"
+
+#include "common/Udp.h"
+
+namespace ocu::sim {
+
+jaus::TransportSettings JausDemo::loopbackTransport(std::uint16_t multicastPort, const std::string& group) {
+    jaus::TransportSettings t;
+    t.bindAddress = "127.0.0.1";
+    t.port = 0;
+    t.multicast = true;
+    t.multicastGroup = group;
+    t.multicastPort = multicastPort;
+    t.multicastTtl = 0; // never leaves the host (toolchain.md §7)
+    t.interfaceAddress = "127.0.0.1";
+    return t;
+}
+
+JausDemo::JausDemo(JausDemoOptions options) : m_opt(std::move(options)) {
+    m_mcPort = findFreeUdpPort();
+    for (int i = 0; i < m_opt.count; ++i) {
+        SimulatedUgvConfig c;
+        c.subsystemId = std::uint16_t(m_opt.firstSubsystemId + i);
+        c.callSign = "UGV-" + std::to_string(c.subsystemId);
+        c.kinematics =
+            (m_opt.alternateKinematics && i % 2 == 1) ? Kinematics::Ackermann : Kinematics::SkidSteer;
+        c.origin = m_opt.origin;
+        c.startX = 0;
+        c.startY = m_opt.spacingM * i;
+        c.accessTimeoutS = m_opt.accessTimeoutS;
+        c.driveTimeoutS = m_opt.driveTimeoutS;
+        c.network = loopbackTransport(m_mcPort, m_opt.multicastGroup);
+        auto u = std::make_unique<SimulatedUgv>(c);
+        u->start();
+        m_ugvs.push_back(std::move(u));
+    }
+}
+
+JausDemo::~JausDemo() {
+    stop();
+}
+
+void JausDemo::stop() {
+    for (auto& u : m_ugvs)
+        u->stop();
+}
+
+SimulatedUgv* JausDemo::find(std::uint16_t ss) {
+    for (auto& u : m_ugvs)
+        if (u->config().subsystemId == ss)
+            return u.get();
+    return nullptr;
+}
+
+void JausDemo::configure(jaus::JausConfig& config) const {
+    auto statics = config.transport.staticEndpoints;
+    config.transport = loopbackTransport(m_mcPort, m_opt.multicastGroup);
+    config.transport.staticEndpoints = statics;
+    for (auto& u : m_ugvs) {
+        jaus::StaticEndpoint e;
+        e.id = jaus::JausId{u->config().subsystemId, 0xFF, 0xFF};
+        e.address = "127.0.0.1";
+        e.port = u->localPort();
+        config.transport.staticEndpoints.push_back(e);
+    }
+}
+
+} // namespace ocu::sim

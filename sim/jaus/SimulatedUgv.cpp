@@ -1,0 +1,184 @@
+#include "sim/jaus/SimulatedUgv.h"
+
+#include <boost/asio/steady_timer.hpp>
+
+#include <atomic>
+
+#include "common/IoThread.h"
+#include "common/Log.h"
+#include "jaus/JudpTransport.h"
+
+namespace ocu::sim {
+
+using namespace ocu::jaus;
+
+struct SimulatedUgv::Impl : JausOutput {
+    Impl(SimulatedUgvConfig c, Clock& clk)
+        : cfg(c), clock(clk), io("jaus-ugv-" + std::to_string(c.subsystemId)),
+          transport(io.context(), c.network, counters, clock, "ocu.sim.jaus"),
+          core(c, *this, clock, counters), timer(io.context()) {}
+
+    void send(const JausId& dst, const Bytes& payload, SendOptions o) override {
+        transport.send(core.platformManager(), dst, payload, o);
+    }
+    void sendFrom(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions o) override {
+        transport.send(src, dst, payload, o);
+    }
+    std::string endpointOf(const JausId& id) const override { return transport.endpointOf(id); }
+
+    void applyNetFaults() {
+        auto& f = core.faults();
+        NetFaults n;
+        n.loss = f.packetLoss;
+        n.delay = std::chrono::milliseconds(f.delayMs);
+        n.reorder = f.reorder;
+        transport.setFaults(n);
+    }
+    void scheduleTick() {
+        timer.expires_after(std::chrono::microseconds(long(1e6 / std::max(cfg.physicsRateHz, 1.0))));
+        timer.async_wait([this](boost::system::error_code ec) {
+            if (ec)
+                return;
+            core.tick();
+            scheduleTick();
+        });
+    }
+    template <class F> void post(F&& f) {
+        if (running)
+            io.post(std::forward<F>(f));
+        else
+            f();
+    }
+
+    SimulatedUgvConfig cfg;
+    Clock& clock;
+    Counters counters;
+    IoThread io;
+    JudpTransport transport;
+    UgvCore core;
+    boost::asio::steady_timer timer;
+    std::atomic<bool> running{false};
+    std::atomic<std::uint16_t> port{0};
+    std::atomic<std::uint16_t> tcpPort{0};
+};
+
+SimulatedUgv::SimulatedUgv(SimulatedUgvConfig config, Clock& clock)
+    : m_impl(std::make_unique<Impl>(std::move(config), clock)) {}
+
+SimulatedUgv::~SimulatedUgv() {
+    stop();
+}
+
+void SimulatedUgv::start() {
+    Impl* d = m_impl.get();
+    if (d->running)
+        return;
+    d->transport.setLocalIds([d](const JausId& id) { return d->core.isLocal(id); });
+    d->transport.setHandlers([d](const JausId& s, const JausId& t, ByteSpan p) { d->core.handle(s, t, p); },
+                             {});
+    d->transport.open();
+    d->applyNetFaults();
+    d->port = d->transport.localPort();
+    d->tcpPort = d->transport.localTcpPort();
+    logInfo("ocu.sim.jaus", "simulated UGV " + d->cfg.callSign + " (subsystem " +
+                                std::to_string(d->cfg.subsystemId) + ") on UDP port " +
+                                std::to_string(d->port.load()));
+    d->running = true;
+    d->io.start();
+    d->io.post([d] {
+        d->core.tick();
+        d->scheduleTick();
+    });
+}
+
+void SimulatedUgv::stop() {
+    if (!m_impl || !m_impl->running)
+        return;
+    Impl* d = m_impl.get();
+    d->io.call([d] {
+        d->timer.cancel();
+        d->transport.close();
+        return 0;
+    });
+    d->running = false;
+    d->io.stop();
+}
+
+bool SimulatedUgv::running() const {
+    return m_impl->running;
+}
+std::uint16_t SimulatedUgv::localPort() const {
+    return m_impl->port;
+}
+std::uint16_t SimulatedUgv::localTcpPort() const {
+    return m_impl->tcpPort;
+}
+const SimulatedUgvConfig& SimulatedUgv::config() const {
+    return m_impl->cfg;
+}
+Counters& SimulatedUgv::counters() {
+    return m_impl->counters;
+}
+
+#define OCU_SIM_POST(body)                                                                                   \
+    do {                                                                                                     \
+        Impl* d = m_impl.get();                                                                              \
+        d->post([=] { body; });                                                                              \
+    } while (0)
+
+void SimulatedUgv::setDropHeartbeat(bool on) {
+    OCU_SIM_POST(d->core.faults().dropHeartbeat = on);
+}
+void SimulatedUgv::setHeartbeatRate(double hz) {
+    OCU_SIM_POST(d->core.faults().heartbeatRateHz = hz);
+}
+void SimulatedUgv::setPacketLoss(double p) {
+    OCU_SIM_POST(d->core.faults().packetLoss = p; d->applyNetFaults());
+}
+void SimulatedUgv::setPacketDelay(int ms) {
+    OCU_SIM_POST(d->core.faults().delayMs = ms; d->applyNetFaults());
+}
+void SimulatedUgv::setReorder(bool on) {
+    OCU_SIM_POST(d->core.faults().reorder = on; d->applyNetFaults());
+}
+void SimulatedUgv::setRejectControl(bool on) {
+    OCU_SIM_POST(d->core.faults().rejectControl = on);
+}
+void SimulatedUgv::setRejectEvents(bool on) {
+    OCU_SIM_POST(d->core.faults().rejectEvents = on);
+}
+void SimulatedUgv::setEventRateScale(double s) {
+    OCU_SIM_POST(d->core.faults().eventRateScale = s);
+}
+void SimulatedUgv::setLoseDiscovery(bool on) {
+    OCU_SIM_POST(d->core.faults().loseDiscovery = on);
+}
+void SimulatedUgv::preemptControl(std::uint8_t a) {
+    OCU_SIM_POST(d->core.preemptControl(a));
+}
+void SimulatedUgv::forceDriveTimeout() {
+    OCU_SIM_POST(d->core.forceDriveTimeout());
+}
+void SimulatedUgv::enterEmergency() {
+    OCU_SIM_POST(d->core.enterEmergency());
+}
+void SimulatedUgv::enterFailure() {
+    OCU_SIM_POST(d->core.enterFailure());
+}
+void SimulatedUgv::clearFailure() {
+    OCU_SIM_POST(d->core.clearFailure());
+}
+
+#undef OCU_SIM_POST
+
+UgvState SimulatedUgv::state() const {
+    Impl* d = m_impl.get();
+    return d->io.call([d] { return d->core.state(); });
+}
+
+jaus::GlobalPose SimulatedUgv::globalPose() const {
+    Impl* d = m_impl.get();
+    return d->io.call([d] { return d->core.globalPose(); });
+}
+
+} // namespace ocu::sim

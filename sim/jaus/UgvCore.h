@@ -1,0 +1,141 @@
+#pragma once
+// The simulated UGV's JAUS services as a socket-free state machine (AEP-4818 §10 items 1-18, 24):
+// platform manager 1.1 (Discovery, Liveness, HealthMonitor, UnsolicitedHeartbeat), Core Mobility
+// Component 3.1 (AccessControl, Management, PrimitiveDriver, VelocityStateDriver, PlatformSpecifications),
+// pose/velocity sensor component 3.2 (GlobalPoseSensor, LocalPoseSensor, VelocityStateSensor), events on
+// every component, and a kinematic model. Driven by handle()/tick() with an ocu::Clock, so tests can use a
+// FakeClock.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/Clock.h"
+#include "common/Counters.h"
+#include "common/GeoFrame.h"
+#include "jaus/JausConfig.h"
+#include "jaus/JausOutput.h"
+#include "jaus/Messages.h"
+
+namespace ocu::sim {
+
+enum class Kinematics { SkidSteer, Ackermann };
+
+struct UgvFaults {
+    bool dropHeartbeat = false; // no unsolicited heartbeat
+    double heartbeatRateHz = 1; // unsolicited heartbeat rate (slow it to test liveness)
+    bool rejectControl = false; // answer every RequestControl with NOT_AVAILABLE
+    bool rejectEvents = false;  // answer CreateEvent with RejectEventRequest
+    double eventRateScale = 1;  // confirm periodic events at this fraction of the requested rate
+    bool loseDiscovery = false; // ignore QueryServices / QueryIdentification
+    double packetLoss = 0;      // outgoing datagrams dropped (transport fault)
+    int delayMs = 0;            // outgoing latency (transport fault)
+    bool reorder = false;       // outgoing reordering (transport fault)
+};
+
+struct SimulatedUgvConfig {
+    std::uint16_t subsystemId = 126;
+    std::string callSign = "UGV-126";
+    Kinematics kinematics = Kinematics::SkidSteer;
+    double startX = 0, startY = 0,
+           startYaw = 0; // local frame: x north, y east, yaw clockwise from north (rad)
+    GeoPoint origin{48.137154, 11.576124, 520}; // local (0,0) on the globe
+    jaus::TransportSettings network;
+
+    std::uint8_t defaultAuthority = 125; // Mobility-node components ≥ 125 (AEP-4818 §4.3.2)
+    double accessTimeoutS = 5;
+    double driveTimeoutS = 1; // 0 disables (AEP-4818 §7.1.1)
+    double driveRecoveryS = 1;
+    double minDriveRateHz = 5;                                         // "Drive Frequency" for recovery
+    double maxForwardSpeed = 2, maxReverseSpeed = 1, maxYawRate = 1.0; // m/s, rad/s
+    double maxAccel = 2, maxYawAccel = 4;                              // m/s², rad/s²
+    double trackWidth = 0.6, wheelRadius = 0.15, minTurnRadius = 2.0, wheelBase = 1.2;
+    double length = 1.2, width = 0.8, height = 0.9;
+    double physicsRateHz = 50;
+    UgvFaults faults;
+};
+
+struct UgvState {
+    double x = 0, y = 0, yaw = 0, v = 0, w = 0;
+    jaus::ManagementState management = jaus::ManagementState::Standby;
+    jaus::JausId controller;
+    std::uint8_t controllerAuthority = 0;
+    bool driveTimedOut = false;
+    double odometer = 0; // metres travelled
+};
+
+class UgvCore {
+public:
+    UgvCore(SimulatedUgvConfig config, jaus::JausOutput& output, const Clock& clock, Counters& counters);
+
+    void handle(const jaus::JausId& src, const jaus::JausId& dst, ByteSpan payload);
+    void tick();
+
+    // Fault injection and inspection (owner's thread).
+    UgvFaults& faults() { return m_cfg.faults; }
+    void preemptControl(std::uint8_t authority = 255); // an internal SAFETY_CRITICAL client takes control
+    void forceDriveTimeout();
+    void enterEmergency();
+    void enterFailure();
+    void clearFailure();
+    const UgvState& state() const { return m_s; }
+    const SimulatedUgvConfig& config() const { return m_cfg; }
+    bool isLocal(const jaus::JausId& id) const;
+    jaus::GlobalPose globalPose() const;
+
+    jaus::JausId platformManager() const { return {m_cfg.subsystemId, 1, 1}; }
+    jaus::JausId mobility() const { return {m_cfg.subsystemId, 3, 1}; }
+    jaus::JausId sensors() const { return {m_cfg.subsystemId, 3, 2}; }
+    // The on-board SAFETY_CRITICAL client used by the pre-emption fault.
+    jaus::JausId internalClient() const { return {m_cfg.subsystemId, 3, 200}; }
+
+private:
+    struct EventSub {
+        std::uint8_t eventId = 0;
+        std::uint8_t requestId = 0;
+        jaus::JausId requester;
+        jaus::JausId component;
+        jaus::EventType type = jaus::EventType::Periodic;
+        double rateHz = 0;
+        Bytes query;
+        TimePoint lastSent{};
+        Bytes lastReport;
+        std::uint8_t sequence = 0;
+    };
+
+    void send(const jaus::JausId& from, const jaus::JausId& to, const Bytes& payload,
+              jaus::Priority prio = jaus::Priority::Standard);
+    bool serves(const jaus::JausId& comp, std::uint16_t id) const;
+    std::vector<jaus::ServiceRecord> servicesOf(const jaus::JausId& comp) const;
+    void handleAt(const jaus::JausId& comp, const jaus::JausId& src, const jaus::JausId& dst,
+                  std::uint16_t id, ByteSpan p);
+    std::optional<Bytes> report(const jaus::JausId& comp, ByteSpan query);
+    void accessRequest(const jaus::JausId& src, std::uint8_t authority);
+    void releaseController(jaus::RejectControlCode code);
+    bool isController(const jaus::JausId& src) const { return m_s.controller == src && src.subsystem != 0; }
+    void driveMessage(TimePoint now);
+    void physics(TimePoint now);
+    void createEvent(const jaus::JausId& comp, const jaus::JausId& src, const jaus::CreateEvent& ce);
+
+    SimulatedUgvConfig m_cfg;
+    jaus::JausOutput& m_out;
+    const Clock& m_clock;
+    Counters& m_counters;
+    GeoFrame m_geo;
+    UgvState m_s;
+    jaus::ManagementState m_beforeEmergency = jaus::ManagementState::Standby;
+    TimePoint m_lastRequest{}, m_lastDrive{}, m_lastPrevDrive{}, m_recoveryStart{}, m_lastPhysics{},
+        m_lastHeartbeat{};
+    bool m_haveDrive = false;
+    bool m_started = false;
+    // Last accepted command
+    bool m_velocityMode = true;
+    double m_cmdV = 0, m_cmdW = 0, m_brake = 0;
+    jaus::WrenchEffort m_wrench;
+    jaus::VelocityCommand m_velCmd;
+    std::map<std::uint8_t, EventSub> m_events;
+    std::uint8_t m_nextEventId = 1;
+};
+
+} // namespace ocu::sim

@@ -1,0 +1,161 @@
+#include "sim/osyris/OsyrisDemo.h"
+
+#include "common/Clock.h"
+#include "common/IoThread.h"
+#include "common/Udp.h"
+
+#include <boost/asio/steady_timer.hpp>
+
+#include <atomic>
+
+namespace ocu::sim::osyris {
+
+using namespace ocu::osyris;
+
+struct OsyrisDemo::Impl {
+    OsyrisListener quiet; // simulated machines ignore events
+    std::vector<std::unique_ptr<OsyrisStation>> stations;
+    std::vector<std::optional<SimulatedMachine>> machines; // parallel to stations
+    IoThread driver{"osyris-demo"};
+    std::unique_ptr<boost::asio::steady_timer> timer;
+    std::chrono::steady_clock::time_point t0;
+    double nextT = 0;
+    bool running = false;
+    std::atomic<bool> paused{false};
+};
+
+OsyrisDemo::OsyrisDemo(OsyrisDemoOptions opts) : m_opts(std::move(opts)), m_impl(std::make_unique<Impl>()) {}
+OsyrisDemo::~OsyrisDemo() {
+    stop();
+}
+
+std::size_t OsyrisDemo::stationCount() const {
+    return m_impl->stations.size();
+}
+OsyrisStation& OsyrisDemo::station(std::size_t i) {
+    return *m_impl->stations.at(i);
+}
+
+double OsyrisDemo::simTime() const {
+    if (!m_impl->running)
+        return 0;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_impl->t0).count() *
+           m_opts.speedUp;
+}
+
+OsyrisConfig OsyrisDemo::ocuConfig() const {
+    OsyrisConfig c;
+    c.addressing = Addressing::Multicast;
+    c.group = m_opts.group;
+    c.port = m_opts.port;
+    c.interfaceAddress = m_opts.interfaceAddress;
+    c.multicastTtl = 0; // never leaves the host
+    c.beatMs = m_opts.beatMs;
+    c.checksum = m_opts.checksum;
+    c.stationIndex = m_opts.ocuIndex;
+    c.active = 15;
+    c.sendPeriodMs = 2000;
+    c.ttlBeats = 10;
+    for (auto& m : m_machines)
+        c.machineNames[m.idx] = m.name;
+    return c;
+}
+
+bool OsyrisDemo::start(std::string* error) {
+    if (m_impl->running)
+        return true;
+    if (m_opts.port == 0)
+        m_opts.port = findFreeUdpPort();
+    m_machines.clear();
+    std::vector<std::pair<std::optional<MachineSpec>, std::uint8_t>> plan;
+    std::uint8_t next = 0;
+    if (m_opts.paver)
+        plan.emplace_back(paverSpec(), next++);
+    const double lanes[] = {-1.2, 1.2, 0.0};
+    const double widths[] = {2.1, 1.7, 2.0};
+    for (int r = 0; r < std::min(m_opts.rollers, 3); ++r)
+        plan.emplace_back(rollerSpec("Roller " + std::to_string(r + 1), lanes[r], widths[r], 12.0 * r,
+                                     static_cast<std::uint32_t>(r + 1)),
+                          next++);
+    if (m_opts.relay)
+        plan.emplace_back(std::nullopt, next++);
+    for (auto& [spec, idx] : plan) {
+        OsyrisConfig c = ocuConfig();
+        c.stationIndex = idx;
+        c.active = 7; // §7 default for machines
+        auto st = std::make_unique<OsyrisStation>(c, m_impl->quiet);
+        auto imp = m_opts.impairment;
+        imp.seed += idx;
+        st->setImpairment(imp);
+        std::string err;
+        if (!st->start(&err)) {
+            if (error)
+                *error = err;
+            stop();
+            return false;
+        }
+        m_machines.push_back({idx, spec ? spec->name : "Relay", spec ? spec->kind : MachineKind::Relay});
+        if (spec) {
+            // The paver starts ahead of the rollers' window; shadow (bridge) on a short stretch for roller 2.
+            if (spec->kind == MachineKind::Roller && spec->name == "Roller 2") {
+                spec->shadowFromX = 18;
+                spec->shadowToX = 21;
+            }
+            m_impl->machines.emplace_back(SimulatedMachine(*spec));
+        } else {
+            m_impl->machines.emplace_back(std::nullopt);
+        }
+        m_impl->stations.push_back(std::move(st));
+    }
+    m_impl->running = true;
+    m_impl->t0 = std::chrono::steady_clock::now();
+    m_impl->nextT = 0;
+    m_impl->driver.start();
+    m_impl->timer = std::make_unique<boost::asio::steady_timer>(m_impl->driver.context());
+    auto periodMs = std::max(5.0, 1000.0 * m_opts.positionPeriodS / std::max(0.01, m_opts.speedUp));
+    m_impl->driver.post([this, periodMs] {
+        auto step = [this, periodMs](auto&& self) -> void {
+            double t = simTime();
+            while (m_impl->nextT <= t) {
+                for (std::size_t i = 0; i < m_impl->stations.size(); ++i)
+                    if (m_impl->machines[i] && !m_impl->paused)
+                        m_impl->stations[i]->publishOwnPosition(
+                            m_impl->machines[i]->poseAt(m_impl->nextT, unixMillisNow()));
+                m_impl->nextT += m_opts.positionPeriodS;
+            }
+            m_impl->timer->expires_after(std::chrono::microseconds(static_cast<long>(periodMs * 1000)));
+            m_impl->timer->async_wait([self](boost::system::error_code ec) {
+                if (!ec)
+                    self(self);
+            });
+        };
+        step(step);
+    });
+    return true;
+}
+
+void OsyrisDemo::setPaused(bool paused) {
+    m_impl->paused = paused;
+}
+
+void OsyrisDemo::setImpairment(const RxImpairment& imp) {
+    for (std::size_t i = 0; i < m_impl->stations.size(); ++i) {
+        auto x = imp;
+        x.seed += static_cast<std::uint32_t>(i);
+        m_impl->stations[i]->setImpairment(x);
+    }
+}
+
+void OsyrisDemo::stop() {
+    if (m_impl->running) {
+        m_impl->driver.call([this] { m_impl->timer->cancel(); });
+        m_impl->driver.stop();
+        m_impl->running = false;
+    }
+    for (auto& s : m_impl->stations)
+        s->stop();
+    m_impl->stations.clear();
+    m_impl->machines.clear();
+}
+
+} // namespace ocu::sim::osyris

@@ -1,0 +1,166 @@
+// JudpTransport over real loopback sockets: multicast for unknown destinations with an ACK request and
+// endpoint learning from the ACK (jaus-wire.md §2.2), unicast replies, static table, fragmentation of a
+// large message across datagrams, and JTCP client/server with route learning.
+#include <QtTest>
+
+#include <boost/asio/io_context.hpp>
+
+#include "common/Log.h"
+#include "common/Udp.h"
+#include "jaus/JudpTransport.h"
+#include "jaus/Messages.h"
+
+using namespace ocu;
+using namespace ocu::jaus;
+
+namespace {
+
+struct Rx {
+    JausId src, dst;
+    Bytes payload;
+};
+
+struct Node {
+    Node(boost::asio::io_context& io, TransportSettings s, JausId id)
+        : self(id), transport(io, std::move(s), counters, SteadyClock::instance(), "test.jaus") {
+        transport.setLocalIds([this](const JausId& x) { return x == self; });
+        transport.setHandlers(
+            [this](const JausId& s, const JausId& d, ByteSpan p) {
+                got.push_back({s, d, Bytes(p.begin(), p.end())});
+            },
+            {});
+    }
+    JausId self;
+    Counters counters;
+    JudpTransport transport;
+    std::vector<Rx> got;
+};
+
+TransportSettings loopback(std::uint16_t mcPort) {
+    TransportSettings t;
+    t.bindAddress = "127.0.0.1";
+    t.port = 0;
+    t.multicastGroup = "239.255.0.1";
+    t.multicastPort = mcPort;
+    t.multicastTtl = 0;
+    t.interfaceAddress = "127.0.0.1";
+    return t;
+}
+
+template <class Pred> bool runUntil(boost::asio::io_context& io, Pred p, int ms = 2000) {
+    for (int i = 0; i < ms / 10; ++i) {
+        if (p())
+            return true;
+        io.restart();
+        io.run_for(std::chrono::milliseconds(10));
+    }
+    return p();
+}
+
+} // namespace
+
+class TestJausTransport : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { setLogThreshold(LogLevel::Warning); }
+
+    void unknownDestinationGoesMulticastAndAckTeachesTheAddress() {
+        boost::asio::io_context io;
+        const std::uint16_t mc = findFreeUdpPort();
+        Node a(io, loopback(mc), JausId{126, 1, 1});
+        Node b(io, loopback(mc), JausId{200, 1, 1});
+        a.transport.open();
+        b.transport.open();
+        b.transport.send(b.self, a.self, encodeEmpty(msg::QueryStatus), {});
+        QVERIFY(runUntil(io, [&] { return a.got.size() == 1; }));
+        QCOMPARE(b.counters.get("tx.unknown_destination"), std::uint64_t(1));
+        QVERIFY(runUntil(io, [&] { return b.counters.get("rx.ack") == 1; }));
+        QCOMPARE(a.counters.get("tx.ack"), std::uint64_t(1));
+        QCOMPARE(b.transport.endpointOf(a.self), "127.0.0.1:" + std::to_string(a.transport.localPort()));
+        // A replies by unicast to the port B sent from (learned), B's next message is unicast too.
+        a.transport.send(a.self, b.self, encode(ReportStatus{ManagementState::Ready, 0}), {});
+        QVERIFY(runUntil(io, [&] { return b.got.size() == 1; }));
+        QCOMPARE(a.counters.get("tx.unknown_destination"), std::uint64_t(0));
+        b.transport.send(b.self, a.self, encodeEmpty(msg::QueryStatus), {});
+        QVERIFY(runUntil(io, [&] { return a.got.size() == 2; }));
+        QCOMPARE(b.counters.get("tx.unknown_destination"), std::uint64_t(1));
+        // Broadcasts reach everybody on the group (and loop back to the sender, which filters by ID
+        // upstream).
+        b.transport.send(b.self, kBroadcastAll, encode(QueryIdentification{}), {});
+        QVERIFY(runUntil(io, [&] { return a.got.size() == 3; }));
+        QCOMPARE(a.got.back().dst, kBroadcastAll);
+    }
+
+    void staticTableAvoidsTheBroadcast() {
+        boost::asio::io_context io;
+        const std::uint16_t mc = findFreeUdpPort();
+        Node a(io, loopback(mc), JausId{126, 1, 1});
+        a.transport.open();
+        auto s = loopback(mc);
+        s.staticEndpoints.push_back({JausId{126, 255, 255}, "127.0.0.1", a.transport.localPort(), false});
+        Node b(io, s, JausId{200, 1, 1});
+        b.transport.open();
+        b.transport.send(b.self, JausId{126, 3, 1}, encodeEmpty(msg::QueryStatus), {});
+        QVERIFY(runUntil(io, [&] { return a.got.size() == 1; }));
+        QCOMPARE(b.counters.get("tx.unknown_destination"), std::uint64_t(0));
+    }
+
+    void largeMessagesAreFragmentedAndReassembled() {
+        boost::asio::io_context io;
+        const std::uint16_t mc = findFreeUdpPort();
+        Node a(io, loopback(mc), JausId{126, 1, 1});
+        Node b(io, loopback(mc), JausId{200, 1, 1});
+        a.transport.open();
+        b.transport.open();
+        b.transport.send(b.self, a.self, encodeEmpty(msg::QueryHeartbeatPulse), {});
+        QVERIFY(runUntil(io, [&] { return a.got.size() == 1; }));
+        ReportServices big;
+        for (int n = 0; n < 40; ++n) {
+            NodeServices node{std::uint8_t(n + 1), {}};
+            for (int c = 0; c < 5; ++c)
+                node.components.push_back(
+                    {std::uint8_t(c + 1),
+                     0,
+                     {{"urn:jaus:jss:core:Liveness", 1, 1}, {"urn:jaus:jss:core:Events", 1, 1}}});
+            big.nodes.push_back(node);
+        }
+        const Bytes payload = encode(big);
+        QVERIFY(payload.size() > 2 * kMaxFragmentPayload);
+        a.transport.send(a.self, b.self, payload, {});
+        // (b also hears its own first message looped back by multicast: the stack filters src == self.)
+        auto isServices = [](const Rx& r) { return peekMessageId(r.payload) == msg::ReportServices; };
+        QVERIFY(runUntil(io, [&] { return std::any_of(b.got.begin(), b.got.end(), isServices); }));
+        QCOMPARE(std::find_if(b.got.begin(), b.got.end(), isServices)->payload, payload);
+        QVERIFY(a.counters.get("tx.datagrams") >= 3);
+    }
+
+    void jtcpClientAndServer() {
+        boost::asio::io_context io;
+        const std::uint16_t mc = findFreeUdpPort();
+        auto sa = loopback(mc);
+        sa.jtcpServer = true;
+        sa.jtcpPort = 0;
+        Node a(io, sa, JausId{126, 1, 1});
+        a.transport.open();
+        QVERIFY(a.transport.localTcpPort() != 0);
+        auto sb = loopback(mc);
+        sb.staticEndpoints.push_back({JausId{126, 255, 255}, "127.0.0.1", a.transport.localTcpPort(), true});
+        Node b(io, sb, JausId{200, 1, 1});
+        b.transport.open();
+        b.transport.send(b.self, a.self, encodeU8(msg::RequestControl, 205), {});
+        b.transport.send(b.self, a.self, encodeEmpty(msg::QueryStatus), {});
+        QVERIFY(runUntil(io, [&] { return a.got.size() == 2; }));
+        QCOMPARE(a.counters.get("rx.jtcp.messages"), std::uint64_t(2));
+        QCOMPARE(a.counters.get("rx.datagrams"), std::uint64_t(0));
+        QCOMPARE(peekMessageId(a.got[0].payload), msg::RequestControl);
+        // The server answers over the connection it learned.
+        a.transport.send(a.self, b.self, encodeU8(msg::ConfirmControl, 0), {});
+        QVERIFY(runUntil(io, [&] { return b.got.size() == 1; }));
+        QCOMPARE(b.counters.get("rx.jtcp.messages"), std::uint64_t(1));
+        QVERIFY(a.transport.endpointOf(b.self).rfind("tcp:", 0) == 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestJausTransport)
+#include "test_jaus_transport.moc"

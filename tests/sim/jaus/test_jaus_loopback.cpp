@@ -1,0 +1,342 @@
+// End to end over real loopback sockets (127.0.0.1, free ports, multicast TTL 0): the OCU JausStack against
+// two SimulatedUgvs started by JausDemo (issue 3 acceptance list).
+#include <QtTest>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/udp.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <random>
+#include <thread>
+
+#include "common/GeoFrame.h"
+#include "common/Log.h"
+#include "common/Udp.h"
+#include "jaus/JausStack.h"
+#include "sim/jaus/JausDemo.h"
+
+using namespace ocu;
+using namespace ocu::jaus;
+using namespace ocu::sim;
+using Clk = std::chrono::steady_clock;
+
+namespace {
+
+struct Recorder : JausListener {
+    std::mutex mutex;
+    std::vector<JausEvent> events;
+    void onSubsystemChanged(const SubsystemSnapshot&) override {}
+    void onEvent(const JausEvent& e) override {
+        std::lock_guard lock(mutex);
+        events.push_back(e);
+    }
+    int count(EventKind k, std::uint16_t ss) {
+        std::lock_guard lock(mutex);
+        return int(std::count_if(events.begin(), events.end(),
+                                 [&](const JausEvent& e) { return e.kind == k && e.subsystem == ss; }));
+    }
+};
+
+template <class Pred> bool waitFor(Pred p, double seconds) {
+    const auto end =
+        Clk::now() + std::chrono::duration_cast<Clk::duration>(std::chrono::duration<double>(seconds));
+    while (Clk::now() < end) {
+        if (p())
+            return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return p();
+}
+
+JausConfig ocuConfig(const JausDemo& demo, std::uint16_t ss = 200, std::uint8_t authority = 205) {
+    JausConfig c;
+    c.subsystemId = ss;
+    c.callSign = "OCU-" + std::to_string(ss);
+    c.authority = authority;
+    demo.configure(c);
+    return c;
+}
+
+struct Fixture {
+    explicit Fixture(JausDemoOptions o = {}) : demo(o), stack(ocuConfig(demo), rec) { stack.start(); }
+    ~Fixture() {
+        stack.stop();
+        demo.stop();
+    }
+    std::optional<SubsystemSnapshot> snap(std::uint16_t ss) { return stack.snapshot(ss); }
+    bool ready(std::uint16_t ss) {
+        auto s = snap(ss);
+        return s && s->platform && s->mobilityComponent.subsystem != 0;
+    }
+    bool takeControl(std::uint16_t ss) {
+        if (!waitFor([&] { return ready(ss); }, 5))
+            return false;
+        stack.requestControl(ss);
+        return waitFor([&] { return snap(ss) && snap(ss)->controlledByUs; }, 3);
+    }
+    void drive(std::uint16_t ss, double v) {
+        stack.startDriving(ss);
+        DriveCommand c;
+        c.linear = v;
+        stack.setDriveCommand(ss, c);
+    }
+    JausDemo demo;
+    Recorder rec;
+    JausStack stack;
+};
+
+} // namespace
+
+class TestJausLoopback : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { setLogThreshold(LogLevel::Warning); }
+
+    void discoversTwoUgvsWithCallSignsWithin3s() {
+        const auto t0 = Clk::now();
+        Fixture f;
+        QVERIFY(waitFor(
+            [&] {
+                auto a = f.snap(126), b = f.snap(127);
+                return a && b && a->callSign == "UGV-126" && b->callSign == "UGV-127";
+            },
+            3.0));
+        const double elapsed = std::chrono::duration<double>(Clk::now() - t0).count();
+        QVERIFY2(elapsed < 3.0, qPrintable(QString::number(elapsed)));
+        QCOMPARE(f.rec.count(EventKind::Discovered, 126), 1);
+        QCOMPARE(f.rec.count(EventKind::Discovered, 127), 1);
+        QVERIFY(waitFor([&] { return f.ready(126) && f.ready(127); }, 3));
+        QCOMPARE(f.snap(127)->platform->steeringType, std::uint8_t(1)); // the second one is Ackermann
+        QVERIFY(!f.snap(126)->endpoint.empty());
+        QVERIFY(waitFor([&] { return f.snap(126)->globalPose.has_value(); }, 2));
+        QCOMPARE(f.stack.counters().sumPrefix("rx.rejected."), std::uint64_t(0));
+    }
+
+    void takeControlAndDriveFiveMetres() {
+        Fixture f;
+        QVERIFY(f.takeControl(126));
+        f.drive(126, 1.0);
+        QVERIFY(waitFor([&] { return f.snap(126)->management == ManagementState::Ready; }, 2));
+        std::this_thread::sleep_for(std::chrono::milliseconds(5000));
+        f.stack.stopDriving(126);
+        QVERIFY(waitFor([&] { return std::abs(f.demo.find(126)->state().v) < 1e-6; }, 3));
+        std::this_thread::sleep_for(std::chrono::milliseconds(300)); // one more pose report
+        const double truth = f.demo.find(126)->state().x;
+        QVERIFY2(std::abs(truth - 5.0) <= 0.5, qPrintable(QString::number(truth)));
+        auto s = f.snap(126);
+        QVERIFY(s->localPose && s->localPose->x);
+        QVERIFY2(std::abs(*s->localPose->x - 5.0) <= 0.5, qPrintable(QString::number(*s->localPose->x)));
+        // The global pose on the map moved ~5 m north of the origin as well.
+        GeoFrame frame(JausDemoOptions{}.origin);
+        auto enu = frame.toLocal(GeoPoint{*s->globalPose->lat, *s->globalPose->lon, 0});
+        QVERIFY2(std::abs(enu.n - 5.0) <= 0.5, qPrintable(QString::number(enu.n)));
+        // The other UGV did not move.
+        QCOMPARE(f.demo.find(127)->state().x, 0.0);
+    }
+
+    void emergencyStopsUntilCleared() {
+        Fixture f;
+        QVERIFY(f.takeControl(126));
+        f.drive(126, 1.0);
+        QVERIFY(waitFor([&] { return f.demo.find(126)->state().v > 0.9; }, 3));
+        f.stack.setEmergency(126);
+        QVERIFY(
+            waitFor([&] { return f.demo.find(126)->state().management == ManagementState::Emergency; }, 1));
+        QCOMPARE(f.demo.find(126)->state().v, 0.0);
+        QVERIFY(waitFor([&] { return f.snap(126)->emergency; }, 2));
+        QCOMPARE(f.rec.count(EventKind::Emergency, 126), 1);
+        const double x = f.demo.find(126)->state().x;
+        f.drive(126, 1.0); // refused while in emergency
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        QCOMPARE(f.demo.find(126)->state().x, x);
+        QVERIFY(f.rec.count(EventKind::CommandRefused, 126) >= 1);
+        f.stack.clearEmergency(126);
+        QVERIFY(waitFor([&] { return !f.snap(126)->emergency; }, 2));
+        QCOMPARE(f.rec.count(EventKind::EmergencyCleared, 126), 1);
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));
+        QCOMPARE(f.demo.find(126)->state().x, x); // still stopped: nothing drives it
+    }
+
+    void ugvStopsAfterDriveTimeoutWhenStreamingStops() {
+        Fixture f;
+        QVERIFY(f.takeControl(126));
+        f.drive(126, 1.0);
+        QVERIFY(waitFor([&] { return f.demo.find(126)->state().v > 0.9; }, 3));
+        const auto t0 = Clk::now();
+        f.stack.setTransmitFaults(1.0); // the OCU stops streaming (and everything else)
+        QVERIFY(waitFor([&] { return f.demo.find(126)->state().driveTimedOut; }, 2));
+        const double dt = std::chrono::duration<double>(Clk::now() - t0).count();
+        QVERIFY2(dt >= 0.9 && dt < 1.6, qPrintable(QString::number(dt)));
+        QVERIFY(waitFor([&] { return f.demo.find(126)->state().v == 0.0; }, 1.5));
+    }
+
+    void silentOcuLosesControlAfterAccessTimeout() {
+        JausDemoOptions o;
+        o.accessTimeoutS = 2; // fast timer: the UGV's timeout is configurable
+        Fixture f(o);
+        QVERIFY(f.takeControl(126));
+        QVERIFY(waitFor([&] { return f.snap(126)->accessTimeoutS == 2; }, 2));
+        const auto t0 = Clk::now();
+        f.stack.setTransmitFaults(1.0);
+        QVERIFY(waitFor([&] { return f.demo.find(126)->state().controller.subsystem == 0; }, 4));
+        const double dt = std::chrono::duration<double>(Clk::now() - t0).count();
+        QVERIFY2(dt > 1.0 && dt < 3.5, qPrintable(QString::number(dt)));
+        // The OCU notices it too (it still hears the UGV).
+        QVERIFY(waitFor([&] { return !f.snap(126)->controlledByUs; }, 3));
+    }
+
+    void higherAuthorityOcuPreempts() {
+        Fixture f;
+        QVERIFY(f.takeControl(126));
+        QVERIFY(f.takeControl(127));
+        Recorder rec2;
+        JausStack second(ocuConfig(f.demo, 201, 230), rec2);
+        second.start();
+        QVERIFY(waitFor(
+            [&] {
+                auto s = second.snapshot(126);
+                return s && s->mobilityComponent.subsystem != 0;
+            },
+            5));
+        second.requestControl(126);
+        QVERIFY(waitFor([&] { return second.snapshot(126)->controlledByUs; }, 3));
+        QVERIFY(waitFor([&] { return f.rec.count(EventKind::ControlPreempted, 126) == 1; }, 3));
+        QCOMPARE(f.snap(126)->access, AccessState::Preempted);
+        QCOMPARE(f.snap(126)->controller, (JausId{201, 1, 1}));
+        // The other vehicle stays ours.
+        QVERIFY(f.snap(127)->controlledByUs);
+        QCOMPARE(f.demo.find(127)->state().controller, (JausId{200, 1, 1}));
+        second.stop(); // releases 126
+        QVERIFY(waitFor([&] { return f.demo.find(126)->state().controller.subsystem == 0; }, 2));
+    }
+
+    void stopReleasesAllControl() {
+        Fixture f;
+        QVERIFY(f.takeControl(126));
+        QVERIFY(f.takeControl(127));
+        f.stack.stop();
+        QVERIFY(waitFor(
+            [&] {
+                return f.demo.find(126)->state().controller.subsystem == 0 &&
+                       f.demo.find(127)->state().controller.subsystem == 0;
+            },
+            2));
+    }
+
+    void injectedFaultsLoseAndRestoreTheLink() {
+        JausDemoOptions o;
+        o.count = 1;
+        JausDemo demo(o);
+        Recorder rec;
+        JausConfig c = ocuConfig(demo);
+        c.linkLostS = 1.5; // fast timer (configurable)
+        JausStack stack(c, rec);
+        stack.start();
+        QVERIFY(waitFor(
+            [&] {
+                auto s = stack.snapshot(126);
+                return s && s->platform.has_value();
+            },
+            5));
+        // 30 % loss, 20 ms delay and reordering: the vehicle stays usable.
+        auto* ugv = demo.find(126);
+        ugv->setPacketLoss(0.3);
+        ugv->setPacketDelay(20);
+        ugv->setReorder(true);
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        QCOMPARE(stack.snapshot(126)->link, LinkState::Up);
+        QCOMPARE(rec.count(EventKind::LinkLost, 126), 0);
+        // Total silence: link lost after link_lost_s.
+        ugv->setPacketLoss(1.0);
+        QVERIFY(waitFor([&] { return stack.snapshot(126)->link == LinkState::Down; }, 3));
+        QCOMPARE(rec.count(EventKind::LinkLost, 126), 1);
+        ugv->setPacketLoss(0);
+        ugv->setPacketDelay(0);
+        ugv->setReorder(false);
+        QVERIFY(waitFor([&] { return stack.snapshot(126)->link == LinkState::Up; }, 3));
+        QCOMPARE(rec.count(EventKind::LinkRestored, 126), 1);
+        // Other switches: failure shows in management and health; rejected control is reported.
+        ugv->enterFailure();
+        QVERIFY(waitFor([&] { return stack.snapshot(126)->management == ManagementState::Failure; }, 2));
+        ugv->clearFailure();
+        ugv->setRejectControl(true);
+        stack.requestControl(126);
+        QVERIFY(waitFor([&] { return stack.snapshot(126)->access == AccessState::NotAvailable; }, 2));
+        QCOMPARE(rec.count(EventKind::ControlRejected, 126), 1);
+        stack.stop();
+    }
+
+    void preemptionByOnBoardClientIsReported() {
+        Fixture f;
+        QVERIFY(f.takeControl(126));
+        f.demo.find(126)->preemptControl(255);
+        QVERIFY(waitFor([&] { return f.snap(126)->access == AccessState::Preempted; }, 3));
+        QCOMPARE(f.rec.count(EventKind::ControlPreempted, 126), 1);
+        QCOMPARE(f.snap(126)->controllerAuthority, std::uint8_t(255));
+    }
+
+    void jtcpPeer() {
+        // A UGV reachable over JTCP (static table entry with "tcp"); broadcasts stay on JUDP.
+        const std::uint16_t mc = findFreeUdpPort();
+        SimulatedUgvConfig uc;
+        uc.subsystemId = 140;
+        uc.callSign = "TCP-UGV";
+        uc.network = JausDemo::loopbackTransport(mc);
+        uc.network.jtcpServer = true;
+        uc.network.jtcpPort = 0;
+        SimulatedUgv ugv(uc);
+        ugv.start();
+        const std::uint16_t tcpPort = ugv.localTcpPort();
+        QVERIFY(tcpPort != 0);
+        JausConfig c;
+        c.transport = JausDemo::loopbackTransport(mc);
+        c.transport.staticEndpoints.push_back({JausId{140, 255, 255}, "127.0.0.1", tcpPort, true});
+        Recorder rec;
+        JausStack stack(c, rec);
+        stack.start();
+        QVERIFY(waitFor(
+            [&] {
+                auto s = stack.snapshot(140);
+                return s && s->platform.has_value();
+            },
+            5));
+        QCOMPARE(stack.snapshot(140)->callSign, std::string("TCP-UGV"));
+        QVERIFY(stack.counters().get("tx.jtcp.messages") > 0);
+        QVERIFY(stack.counters().get("rx.jtcp.messages") > 0);
+        stack.requestControl(140);
+        QVERIFY(waitFor([&] { return stack.snapshot(140)->controlledByUs; }, 3));
+        stack.stop();
+        QVERIFY(waitFor([&] { return ugv.state().controller.subsystem == 0; }, 2));
+        ugv.stop();
+    }
+
+    void garbageIsCountedNotFatal() {
+        Fixture f;
+        QVERIFY(waitFor([&] { return f.ready(126); }, 5));
+        // Random bytes and legacy headers to the OCU's port.
+        boost::asio::io_context io;
+        boost::asio::ip::udp::socket s(
+            io, boost::asio::ip::udp::endpoint(boost::asio::ip::address_v4::loopback(), 0));
+        boost::asio::ip::udp::endpoint to(boost::asio::ip::address_v4::loopback(), f.stack.localPort());
+        std::mt19937 rng(7);
+        for (int i = 0; i < 50; ++i) {
+            Bytes d(std::size_t(1 + rng() % 1400));
+            for (auto& b : d)
+                b = std::uint8_t(rng());
+            s.send_to(boost::asio::buffer(d), to);
+        }
+        const std::string legacy = "JAUS01.0xxxxxxxxxxxxxxxx";
+        s.send_to(boost::asio::buffer(legacy), to);
+        QVERIFY(waitFor([&] { return f.stack.counters().get("rx.rejected.legacy_opc") == 1; }, 2));
+        QVERIFY(f.stack.counters().sumPrefix("rx.rejected.") >= 45);
+        QVERIFY(f.rec.count(EventKind::DecodeError, 0) >= 1);
+        // Still working.
+        QVERIFY(f.takeControl(126));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestJausLoopback)
+#include "test_jaus_loopback.moc"

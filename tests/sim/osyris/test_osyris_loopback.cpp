@@ -1,0 +1,218 @@
+// OSYRIS over real loopback multicast (127.0.0.1, free port, TTL 0): the demo site with the OCU joining,
+// recovery after impaired reception, restart on the same SQLite file.
+#include "sim/osyris/OsyrisDemo.h"
+
+#include "common/Udp.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <atomic>
+#include <mutex>
+#include <set>
+#include <thread>
+
+using namespace ocu;
+using namespace ocu::osyris;
+using namespace ocu::sim::osyris;
+
+namespace {
+
+struct Recorder : OsyrisListener {
+    std::mutex m;
+    std::set<int> machines, alive;
+    std::set<std::string> names;
+    std::atomic<int> passChanges{0}, pongs{0};
+    std::vector<std::string> events;
+    void onMachinePosition(const MachineSnapshot& s) override {
+        std::lock_guard l(m);
+        machines.insert(s.idx);
+        names.insert(s.name);
+    }
+    void onStationAlive(std::uint8_t idx, std::optional<SlotRange>) override {
+        std::lock_guard l(m);
+        alive.insert(idx);
+    }
+    void onPassCountChanged(const GridRect&) override { ++passChanges; }
+    void onPong(std::uint8_t, double, float, float) override { ++pongs; }
+    void onEvent(Severity, const std::string& t) override {
+        std::lock_guard l(m);
+        events.push_back(t);
+    }
+    std::size_t machineCount() {
+        std::lock_guard l(m);
+        return machines.size();
+    }
+};
+
+bool waitFor(const std::function<bool()>& pred, int ms) {
+    for (int i = 0; i < ms / 20; ++i) {
+        if (pred())
+            return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return pred();
+}
+
+// The OCU holds every slot each machine holds of its own ribbon.
+bool ocuComplete(OsyrisDemo& demo, OsyrisStation& ocu) {
+    for (std::size_t i = 0; i < demo.stationCount(); ++i) {
+        auto idx = demo.station(i).config().stationIndex;
+        auto own = demo.station(i).store()->held(idx);
+        if (own.empty())
+            continue;
+        if (!ocu.store()->held(idx).containsAll(0, own.max()))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+class TestOsyrisLoopback : public QObject {
+    Q_OBJECT
+private slots:
+    void demoSiteAndOcuJoin() {
+        OsyrisDemoOptions o;
+        o.speedUp = 20;
+        OsyrisDemo demo(o);
+        std::string err;
+        QVERIFY2(demo.start(&err), err.c_str());
+        QCOMPARE(demo.machines().size(), std::size_t(5)); // paver, 3 rollers, relay
+        Recorder rec;
+        OsyrisStation ocu(demo.ocuConfig(), rec);
+        QVERIFY2(ocu.start(&err), err.c_str());
+        QVERIFY(waitFor([&] { return rec.machineCount() >= 4; }, 10000));
+        {
+            std::lock_guard l(rec.m);
+            QVERIFY(!rec.names.empty() && rec.names.count("Roller 1"));
+        }
+        QVERIFY2(waitFor([&] { return ocu.grid().summary().coveredCells > 50; }, 15000),
+                 "a pass-count patch appears");
+        QVERIFY(rec.passChanges > 0);
+        ocu.ping(1);
+        QVERIFY(waitFor([&] { return rec.pongs > 0; }, 5000));
+        ocu.sendText("OCU online");
+        QVERIFY(waitFor([&] { return ocu.counters().get("tx.msg") == 1; }, 2000));
+        QVERIFY(waitFor([&] { return rec.alive.size() >= 5; }, 6000));
+        ocu.stop();
+        demo.stop();
+    }
+
+    void lossyLoopbackRecovers() {
+        OsyrisDemoOptions o;
+        o.speedUp = 10;
+        o.relay = false;
+        o.impairment = RxImpairment{0.30, 0.10, 0.20, 120, 5};
+        OsyrisDemo demo(o); // paver + 3 rollers + the OCU = five stations
+        std::string err;
+        QVERIFY2(demo.start(&err), err.c_str());
+        Recorder rec;
+        OsyrisStation ocu(demo.ocuConfig(), rec);
+        ocu.setImpairment(o.impairment);
+        QVERIFY(ocu.start(&err));
+        std::this_thread::sleep_for(std::chrono::seconds(6));
+        demo.setImpairment({});
+        ocu.setImpairment({});
+        demo.setPaused(true);
+        QVERIFY2(waitFor([&] { return ocuComplete(demo, ocu); }, 20000), "the OCU recovers every slot");
+        for (std::size_t i = 0; i < demo.stationCount(); ++i)
+            for (std::size_t j = 0; j < demo.stationCount(); ++j) {
+                auto idx = demo.station(j).config().stationIndex;
+                auto own = demo.station(j).store()->held(idx);
+                QVERIFY(waitFor([&] { return demo.station(i).store()->held(idx).containsAll(0, own.max()); },
+                                10000));
+            }
+        std::uint64_t lost = ocu.counters().get("rx.impaired.lost"), retx = ocu.counters().get("tx.retx");
+        for (std::size_t i = 0; i < demo.stationCount(); ++i) {
+            lost += demo.station(i).counters().get("rx.impaired.lost");
+            retx += demo.station(i).counters().get("tx.retx");
+        }
+        qInfo("loopback, 30%% rx loss: %llu datagrams dropped at receivers, %llu positions retransmitted",
+              qulonglong(lost), qulonglong(retx));
+        QVERIFY(lost > 50);
+        QVERIFY(ocu.counters().get("rx.impaired.duplicated") > 0);
+        ocu.stop();
+        demo.stop();
+    }
+
+    void badInterfaceFailsCleanly() {
+        OsyrisConfig c;
+        c.port = findFreeUdpPort();
+        c.interfaceAddress = "192.0.2.1"; // TEST-NET: not an interface of this host
+        Recorder rec;
+        OsyrisStation st(c, rec);
+        std::string err;
+        QVERIFY(!st.start(&err));
+        QVERIFY(QString::fromStdString(err).contains("OSYRIS socket"));
+        QVERIFY(!st.running());
+        QCOMPARE(rec.events.size(), std::size_t(1));
+    }
+
+    void unicastPair() {
+        // Unicast for testing (§7): two stations on 127.0.0.1 with their own ports, each the other's peer.
+        std::uint16_t pa = findFreeUdpPort(), pb = findFreeUdpPort();
+        auto mk = [](std::uint8_t idx, std::uint16_t port, std::uint16_t peer) {
+            OsyrisConfig c;
+            c.addressing = Addressing::Unicast;
+            c.group = "127.0.0.1";
+            c.interfaceAddress = "127.0.0.1";
+            c.port = port;
+            c.unicastPeers = {"127.0.0.1:" + std::to_string(peer)};
+            c.stationIndex = idx;
+            c.beatMs = 50;
+            c.machineNames[idx] = "unit " + std::to_string(idx);
+            return c;
+        };
+        Recorder ra, rb;
+        OsyrisStation a(mk(1, pa, pb), ra), b(mk(2, pb, pa), rb);
+        std::string err;
+        QVERIFY2(a.start(&err), err.c_str());
+        QVERIFY2(b.start(&err), err.c_str());
+        for (int i = 0; i < 20; ++i) {
+            CmPos p;
+            p.x = float(i);
+            p.flags = kPosValid | kPosAccuracyHigh | kPosForward;
+            a.publishOwnPosition(p);
+        }
+        QVERIFY(waitFor([&] { return b.store()->count(1) == 20; }, 5000));
+        QVERIFY(rb.machineCount() == 1);
+        a.stop();
+        b.stop();
+    }
+
+    void restartKeepsSqlite() {
+        QTemporaryDir dir;
+        OsyrisDemoOptions o;
+        o.speedUp = 10;
+        o.rollers = 1;
+        o.relay = false;
+        OsyrisDemo demo(o);
+        std::string err;
+        QVERIFY(demo.start(&err));
+        auto cfg = demo.ocuConfig();
+        cfg.sqlitePath = dir.filePath("site.sqlite").toStdString();
+        std::uint64_t had = 0;
+        {
+            Recorder rec;
+            OsyrisStation ocu(cfg, rec);
+            QVERIFY(ocu.start(&err));
+            QVERIFY(waitFor([&] { return ocu.store()->totalCount() > 40; }, 10000));
+            ocu.stop();
+            had = ocu.store()->totalCount();
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        demo.setPaused(true);
+        Recorder rec;
+        OsyrisStation ocu(cfg, rec);
+        QVERIFY(ocu.start(&err));
+        QVERIFY(ocu.store()->totalCount() >= had);
+        QVERIFY(waitFor([&] { return ocuComplete(demo, ocu); }, 15000));
+        QCOMPARE(ocu.counters().get("tx.all"), std::uint64_t(0)); // only the gap is asked for
+        ocu.stop();
+        demo.stop();
+    }
+};
+
+QTEST_GUILESS_MAIN(TestOsyrisLoopback)
+#include "test_osyris_loopback.moc"

@@ -1,0 +1,247 @@
+// The JAUS access-control and teleop panels against two simulated UGVs on loopback (issue 7).
+#include "models/FleetContext.h"
+#include "models/FleetSelection.h"
+#include "models/bridges/JausBridge.h"
+#include "sim/jaus/JausDemo.h"
+#include "widgets/jaus/JausControlPanel.h"
+#include "widgets/jaus/JausSubsystemModel.h"
+#include "widgets/jaus/TeleopPanel.h"
+#include "widgets/teleop/TeleopController.h"
+
+#include "jaus/JausStack.h"
+
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QVBoxLayout>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace ocu;
+using namespace ocu::jaus;
+
+namespace {
+
+struct Site {
+    explicit Site(Role role = Role::Operator) : demo(options()) {
+        JausConfig c;
+        c.subsystemId = 200;
+        c.callSign = "OCU-TEST";
+        c.role = role;
+        c.authority = role == Role::Monitor ? 0 : 205;
+        demo.configure(c);
+        bridge = std::make_unique<JausBridge>(c, GeoFrame(options().origin));
+        ctx.addBridge(bridge.get());
+        QString e = bridge->start();
+        if (!e.isEmpty())
+            qFatal("%s", qPrintable(e));
+    }
+    static sim::JausDemoOptions options() {
+        sim::JausDemoOptions o;
+        o.count = 2;
+        o.alternateKinematics = false;
+        return o;
+    }
+    sim::SimulatedUgv& ugv(std::uint16_t id) { return *demo.find(id); }
+    // Displacement of the UGV along its own heading since `from` (x north, y east, yaw clockwise).
+    double forwardSince(const sim::UgvState& from, std::uint16_t id) {
+        const auto s = ugv(id).state();
+        return (s.x - from.x) * std::cos(from.yaw) + (s.y - from.y) * std::sin(from.yaw);
+    }
+
+    sim::JausDemo demo;
+    FleetContext ctx;
+    std::unique_ptr<JausBridge> bridge;
+};
+
+// A window with the two panels side by side and a line edit to move the focus to.
+struct Window {
+    explicit Window(Site& s)
+        : control(new JausControlPanel(s.bridge.get(), s.ctx.selection())),
+          teleop(new TeleopPanel(s.bridge.get(), s.ctx.selection(), nullptr)), other(new QLineEdit) {
+        auto* l = new QVBoxLayout(&w);
+        l->addWidget(control);
+        l->addWidget(teleop);
+        l->addWidget(other);
+        w.resize(900, 900);
+        w.show();
+    }
+    QWidget w;
+    JausControlPanel* control;
+    TeleopPanel* teleop;
+    QLineEdit* other;
+};
+
+JausSubsystemModel::RowColour colourOf(JausControlPanel* p, std::uint16_t id) {
+    const int row = p->model()->rowOf(id);
+    if (row < 0)
+        return JausSubsystemModel::RowColour::None;
+    return static_cast<JausSubsystemModel::RowColour>(
+        p->model()->index(row, 0).data(JausSubsystemModel::RowColourRole).toInt());
+}
+
+QString accessOf(JausControlPanel* p, std::uint16_t id) {
+    const int row = p->model()->rowOf(id);
+    return row < 0 ? QString() : p->model()->index(row, JausSubsystemModel::Access).data().toString();
+}
+
+void takeControl(Window& win, std::uint16_t id) {
+    QTRY_VERIFY_WITH_TIMEOUT(win.control->controlButton(id) && win.control->controlButton(id)->isEnabled(), 5000);
+    QTest::mouseClick(win.control->controlButton(id), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(accessOf(win.control, id), QString("CONTROL_ACCEPTED"), 5000);
+}
+
+} // namespace
+
+class TestJausPanels : public QObject {
+    Q_OBJECT
+private slots:
+    void discoveredRowsWithDetails() {
+        Site s;
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(win.control->model()->index(0, 0).data().toString().contains("UGV-126"), 5000);
+        QCOMPARE(accessOf(win.control, 126), QString("MONITORING"));
+        // The details tree shows subsystem -> node -> component [s.n.c] -> service URI and version.
+        win.control->table()->setCurrentIndex(win.control->model()->index(0, 0));
+        QCOMPARE(s.ctx.selection()->currentId(), QString("jaus:126"));
+        auto hasService = [&] {
+            for (auto* item : win.control->details()->tree()->findItems("urn:jaus:jss:core:AccessControl",
+                                                                        Qt::MatchRecursive))
+                if (item->parent() && item->parent()->text(0).startsWith("[126.") && item->text(1).startsWith("v"))
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(hasService(), 5000);
+    }
+
+    void takeControlTurnsRowGreen() {
+        Site s;
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 5000);
+        QCOMPARE(colourOf(win.control, 126), JausSubsystemModel::RowColour::None);
+        takeControl(win, 126);
+        QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::OursOk, 3000);
+        QVERIFY(win.control->releaseButton(126)->isEnabled());
+        QVERIFY(!win.control->controlButton(126)->isEnabled());
+        QTest::mouseClick(win.control->releaseButton(126), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(accessOf(win.control, 126) != "CONTROL_ACCEPTED", 3000);
+        QCOMPARE(colourOf(win.control, 126), JausSubsystemModel::RowColour::None);
+        QTRY_COMPARE_WITH_TIMEOUT(s.ugv(126).state().controller.subsystem, std::uint16_t(0), 3000);
+    }
+
+    void driveWithKeysAndReleaseSendsZeros() {
+        Site s;
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 5000);
+        takeControl(win, 126);
+        win.teleop->setVehicle(126);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 3000);
+        win.teleop->setFocus();
+        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
+        QSignalSpy commands(win.teleop->controller(), &TeleopController::command);
+        const sim::UgvState start = s.ugv(126).state();
+        QTest::keyPress(win.teleop, Qt::Key_Shift);
+        QTest::keyPress(win.teleop, Qt::Key_W, Qt::ShiftModifier);
+        // +X is forward: the vehicle moves along its heading.
+        QTRY_VERIFY_WITH_TIMEOUT(s.forwardSince(start, 126) > 0.5, 5000);
+        QVERIFY(s.ugv(126).state().v > 0.3);
+        // Positive rotation is a right turn (yaw clockwise from north).
+        QTest::keyPress(win.teleop, Qt::Key_D, Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(126).state().w > 0.1, 3000);
+        QTest::keyRelease(win.teleop, Qt::Key_D, Qt::ShiftModifier);
+        QTest::keyRelease(win.teleop, Qt::Key_W, Qt::ShiftModifier);
+        // Releasing the keys sends zeros at once: the vehicle stops well before its 1 s drive timeout.
+        QVERIFY(commands.last().at(0).value<DriveAxes>().isZero());
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(126).state().v) < 1e-3, 900);
+        QVERIFY(!s.ugv(126).state().driveTimedOut);
+        QTest::keyRelease(win.teleop, Qt::Key_Shift);
+    }
+
+    void focusLossSendsZeros() {
+        Site s;
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 5000);
+        takeControl(win, 127);
+        win.teleop->setVehicle(127);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 3000);
+        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
+        win.teleop->setFocus();
+        QTest::keyPress(win.teleop, Qt::Key_Shift);
+        QTest::keyPress(win.teleop, Qt::Key_Up, Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(127).state().v > 0.3, 5000);
+        // The operator clicks elsewhere with the keys still held: the teleop panel loses focus.
+        QFocusEvent out(QEvent::FocusOut, Qt::MouseFocusReason);
+        QApplication::sendEvent(win.teleop, &out);
+        win.other->setFocus();
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(127).state().v) < 1e-3, 900);
+        QVERIFY(!s.ugv(127).state().driveTimedOut);
+        QVERIFY(!win.teleop->controller()->isDriving());
+    }
+
+    void spaceStopsTheVehicle() {
+        Site s;
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 5000);
+        takeControl(win, 126);
+        win.teleop->setVehicle(126);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 3000);
+        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
+        win.teleop->setFocus();
+        QTest::keyPress(win.teleop, Qt::Key_Shift);
+        QTest::keyPress(win.teleop, Qt::Key_W, Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(126).state().v > 0.3, 5000);
+        QTest::keyClick(win.teleop, Qt::Key_Space, Qt::ShiftModifier);
+        QTRY_COMPARE_WITH_TIMEOUT(s.ugv(126).state().management, ManagementState::Emergency, 2000);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(126).state().v) < 1e-3, 2000);
+        // The panel shows the emergency; driving is disabled until the emergency is cleared.
+        QTRY_VERIFY_WITH_TIMEOUT(!win.teleop->controller()->isEnabled(), 2000);
+        QVERIFY(win.teleop->clearEmergencyButton()->isEnabled());
+        QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::OursWarning, 2000);
+    }
+
+    void preemptedByHigherAuthorityTurnsGrey() {
+        Site s;
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 5000);
+        takeControl(win, 126);
+        // A second console with a higher authority in the same band.
+        struct Quiet : JausListener {
+            void onSubsystemChanged(const SubsystemSnapshot&) override {}
+            void onEvent(const JausEvent&) override {}
+        } quiet;
+        JausConfig c2;
+        c2.subsystemId = 201;
+        c2.callSign = "OCU-2";
+        c2.authority = 230;
+        s.demo.configure(c2);
+        JausStack second(c2, quiet);
+        second.start();
+        QTRY_VERIFY_WITH_TIMEOUT(second.snapshot(126).has_value() && second.snapshot(126)->mobilityComponent.subsystem,
+                                 5000);
+        second.requestControl(126);
+        QTRY_COMPARE_WITH_TIMEOUT(accessOf(win.control, 126), QString("PREEMPTED"), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::Other, 5000);
+        const int row = win.control->model()->rowOf(126);
+        QVERIFY(win.control->model()->index(row, JausSubsystemModel::Controller).data().toString().startsWith("201."));
+        second.stop();
+    }
+
+    void monitorRoleCommandsNothing() {
+        Site s(Role::Monitor);
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 5000);
+        QVERIFY(win.control->controlButton(126));
+        QVERIFY(!win.control->controlButton(126)->isEnabled());
+        const auto r = s.bridge->command("request_control", {{"id", "jaus:126"}});
+        QVERIFY(!r.ok);
+        QVERIFY(r.message.contains("MONITOR"));
+        QTest::qWait(500);
+        QCOMPARE(s.ugv(126).state().controller.subsystem, std::uint16_t(0));
+    }
+};
+
+QTEST_MAIN(TestJausPanels)
+#include "test_jaus_panels.moc"

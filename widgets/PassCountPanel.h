@@ -1,0 +1,51 @@
+#pragma once
+// Pass-count summary (issue 6 §5; anchors-features.md §4.3-4.4): % of the covered area below / within /
+// above the target range, covered area, a histogram per pass count, palette choice and target range.
+// The summary is recomputed at most once per second while the layer changes.
+#include "models/PassCountLayer.h"
+
+#include <QTimer>
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QSpinBox;
+
+namespace ocu {
+
+class PassCountPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PassCountPanel(QWidget* parent = nullptr);
+
+    // Not owned.
+    void setLayer(const PassCountLayer* layer);
+    PassCountSummary summary() const { return m_summary; }
+    PassPalette palette() const;
+    PassTarget target() const;
+    void setTarget(PassTarget t);
+    void setPalette(PassPalette p);
+
+    QLabel* summaryLabel() const { return m_summaryLabel; }
+
+public slots:
+    void layerChanged(); // throttled recompute
+    void recompute();    // now
+
+signals:
+    void paletteChanged(ocu::PassPalette palette);
+    void targetChanged(ocu::PassTarget target);
+
+private:
+    class Histogram;
+    const PassCountLayer* m_layer = nullptr;
+    PassCountSummary m_summary;
+    QComboBox* m_palette;
+    QSpinBox* m_min;
+    QSpinBox* m_max;
+    QLabel* m_summaryLabel;
+    Histogram* m_histogram;
+    QTimer m_throttle;
+};
+
+} // namespace ocu

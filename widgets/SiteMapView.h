@@ -1,0 +1,172 @@
+#pragma once
+// The live 2D site map (issue 6 §5), drawn with QPainter on the raster engine.
+//
+// Performance design (perf-anchors.md §4): everything that does not move with the machines (map roads,
+// lanes, areas, names, pass-count overlay) is rendered into a cached static layer that is rebuilt only when
+// the view (centre/scale/size), the data revision or a layer switch changes; each frame blits it and draws
+// trails (1 px opaque pens: the raster engine's fast path), footprints as precomputed polygons, and the
+// overlays. Level of detail: footprints below 4 px become 5 px squares, glyphs and labels appear only when
+// big enough, map names only when the feature is large on screen, features outside the view are culled.
+#include "common/GeoFrame.h"
+#include "models/MachineState.h"
+#include "models/OwnPosition.h"
+#include "models/PassCountLayer.h"
+#include "models/SiteMapData.h"
+
+#include <QHash>
+#include <QImage>
+#include <QPointer>
+#include <QWidget>
+#include <deque>
+
+namespace ocu {
+
+class FleetModel;
+class FleetSelection;
+
+class SiteMapView : public QWidget {
+    Q_OBJECT
+public:
+    enum Layer : unsigned {
+        LayerMap = 1u << 0,
+        LayerMapNames = 1u << 1,
+        LayerMachines = 1u << 2,
+        LayerLabels = 1u << 3,
+        LayerTrails = 1u << 4,
+        LayerOwnPosition = 1u << 5,
+        LayerPassCount = 1u << 6,
+        LayerLegend = 1u << 7,
+        LayerScaleBar = 1u << 8,
+        LayerNorthArrow = 1u << 9,
+        LayerCursor = 1u << 10,
+        LayerAll = 0x7ffu
+    };
+
+    explicit SiteMapView(QWidget* parent = nullptr);
+    ~SiteMapView() override;
+
+    void setFleet(FleetModel* fleet, FleetSelection* selection);
+    void setSiteMap(const SiteMapData& map);
+    const SiteMapData& siteMap() const { return m_map; }
+    // Not owned; must outlive the view or be reset to nullptr. Call passCountChanged() after edits.
+    void setPassCountLayer(const PassCountLayer* layer);
+    void setGeoFrame(const GeoFrame& frame) {
+        m_frame = frame;
+        update();
+    }
+
+    void setLayerVisible(Layer layer, bool visible);
+    bool isLayerVisible(Layer layer) const { return (m_layers & layer) != 0; }
+    void setPassPalette(PassPalette palette);
+    PassPalette passPalette() const { return m_palette; }
+    void setPassTarget(PassTarget target);
+    PassTarget passTarget() const { return m_target; }
+    void setTrailLength(int points) { m_trailMax = std::max(0, points); }
+
+    // View: centre in site ENU metres, scale in pixels per metre.
+    QPointF center() const { return m_center; }
+    double scale() const { return m_scale; }
+    void setView(QPointF centerEN, double pixelsPerMetre);
+    void zoomBy(double factor, QPointF anchorPx);
+    void panByPixels(QPointF delta);
+    void centerOnMachine(const QString& id);
+    void fitToContent();
+    void setFollow(bool follow);
+    bool isFollowing() const { return m_follow; }
+
+    QPointF worldToScreen(QPointF en) const;
+    QPointF screenToWorld(QPointF px) const;
+    // Topmost machine under the pixel (footprint or 8 px pick radius), or empty.
+    QString machineAt(QPointF px) const;
+
+    // Draws the whole scene (what paintEvent does) into any painter, e.g. an offscreen QImage.
+    void paintScene(QPainter& p, const QSize& size);
+    // Frame statistics of the last paintScene (for benchmarks and the status bar).
+    struct FrameStats {
+        bool staticRebuilt = false;
+        int machinesDrawn = 0;
+        int featuresDrawn = 0;
+    };
+    FrameStats lastFrame() const { return m_stats; }
+
+public slots:
+    void passCountChanged();
+    void setOwnFix(const ocu::OwnFix& fix);
+
+signals:
+    void cursorMoved(QPointF en, double lat, double lon);
+    void machineActivated(const QString& id); // double click
+    void contextMenuRequested(const QString& id, QPoint globalPos);
+    void followChanged(bool follow);
+
+protected:
+    void paintEvent(QPaintEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
+    void mousePressEvent(QMouseEvent* e) override;
+    void mouseMoveEvent(QMouseEvent* e) override;
+    void mouseReleaseEvent(QMouseEvent* e) override;
+    void mouseDoubleClickEvent(QMouseEvent* e) override;
+    void wheelEvent(QWheelEvent* e) override;
+    void keyPressEvent(QKeyEvent* e) override;
+    void contextMenuEvent(QContextMenuEvent* e) override;
+    void leaveEvent(QEvent* e) override;
+
+private:
+    void onMachinesChanged(const QStringList& ids);
+    void onMachineRemoved(const QString& id);
+    void followCurrent();
+    void ensureStaticLayer(const QSize& size, qreal dpr);
+    void drawStatic(QPainter& p, const QSize& size);
+    void drawPassCount(QPainter& p, const QSize& size);
+    void rebuildPassImage();
+    void drawTrails(QPainter& p, const QRectF& visibleWorld);
+    void drawMachines(QPainter& p, const QRectF& visibleWorld);
+    void drawOwnPosition(QPainter& p);
+    void drawLegend(QPainter& p, const QSize& size);
+    void drawScaleBar(QPainter& p, const QSize& size);
+    void drawNorthArrow(QPainter& p, const QSize& size);
+    void drawCursor(QPainter& p, const QSize& size);
+    QRectF visibleWorld(const QSize& size) const;
+    void invalidateStatic() { m_staticValid = false; }
+
+    QPointer<FleetModel> m_fleet;
+    QPointer<FleetSelection> m_selection;
+    SiteMapData m_map;
+    QVector<QRectF> m_featureBounds;
+    const PassCountLayer* m_pass = nullptr;
+    GeoFrame m_frame;
+    OwnFix m_own;
+
+    unsigned m_layers = LayerAll;
+    PassPalette m_palette = PassPalette::Discrete;
+    PassTarget m_target;
+
+    QSize m_viewSize; // the size the transform refers to (widget size, or the size given to paintScene)
+    QPointF m_center{0, 0};
+    double m_scale = 1.0; // px per metre
+    bool m_follow = false;
+    bool m_autoFitted = false;
+
+    // Static layer cache and its key.
+    QImage m_static;
+    bool m_staticValid = false;
+    QPointF m_staticCenter;
+    double m_staticScale = 0;
+    // Pass-count colour image (one pixel per cell, row 0 = southernmost at the bottom).
+    QImage m_passImage;
+    quint64 m_passImageRevision = 0;
+    PassPalette m_passImagePalette = PassPalette::Discrete;
+    PassTarget m_passImageTarget{-1, -1};
+
+    QHash<QString, std::deque<QPointF>> m_trails;
+    int m_trailMax = 120;
+
+    // Interaction.
+    bool m_dragging = false;
+    bool m_dragMoved = false;
+    QPointF m_dragLast;
+    QPointF m_cursorPx{-1, -1};
+    FrameStats m_stats;
+};
+
+} // namespace ocu

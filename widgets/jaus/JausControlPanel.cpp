@@ -1,0 +1,160 @@
+#include "JausControlPanel.h"
+
+#include "JausSubsystemModel.h"
+#include "VehicleDetailsWidget.h"
+#include "models/FleetSelection.h"
+#include "models/bridges/JausBridge.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QJsonObject>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace ocu {
+
+using namespace jaus;
+
+JausControlPanel::JausControlPanel(JausBridge* bridge, FleetSelection* selection, QWidget* parent)
+    : QWidget(parent), m_bridge(bridge), m_selection(selection), m_model(new JausSubsystemModel(bridge, this)),
+      m_table(new QTableView(this)), m_details(new VehicleDetailsWidget(bridge, this)), m_roleLabel(new QLabel(this)),
+      m_releaseAll(new QPushButton(tr("Release all"), this)) {
+    setObjectName(QStringLiteral("jaus-control-panel"));
+    auto* top = new QHBoxLayout;
+    const auto& cfg = bridge->config();
+    m_roleLabel->setText(cfg.mayControl()
+                             ? tr("This console: %1 [%2] · authority %3")
+                                   .arg(QString::fromStdString(cfg.callSign))
+                                   .arg(cfg.subsystemId)
+                                   .arg(cfg.authority)
+                             : tr("This console: %1 [%2] · MONITOR role: commands are disabled")
+                                   .arg(QString::fromStdString(cfg.callSign))
+                                   .arg(cfg.subsystemId));
+    top->addWidget(m_roleLabel, 1);
+    m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
+    m_releaseAll->setEnabled(cfg.mayControl());
+    connect(m_releaseAll, &QPushButton::clicked, this,
+            [this] { m_bridge->command(QStringLiteral("release_all"), {}); });
+    top->addWidget(m_releaseAll);
+
+    m_table->setModel(m_model);
+    m_table->setObjectName(QStringLiteral("jaus-subsystems"));
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->verticalHeader()->setVisible(false);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->verticalHeader()->setDefaultSectionSize(30);
+
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_table);
+    split->addWidget(m_details);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+    auto* l = new QVBoxLayout(this);
+    l->setContentsMargins(2, 2, 2, 2);
+    l->addLayout(top);
+    l->addWidget(split);
+
+    connect(m_model, &QAbstractItemModel::rowsInserted, this,
+            [this](const QModelIndex&, int first, int last) { installRowButtons(first, last); });
+    connect(m_model, &QAbstractItemModel::dataChanged, this, &JausControlPanel::refreshButtons);
+    installRowButtons(0, m_model->rowCount() - 1);
+
+    connect(m_table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& current) {
+                const std::uint16_t sub = m_model->subsystemAt(current.row());
+                m_details->showSubsystem(sub);
+                if (m_selection && sub)
+                    m_selection->setCurrent(JausBridge::machineId(sub));
+            });
+    if (m_selection)
+        connect(m_selection, &FleetSelection::currentMachineChanged, this, [this](const QString& id) {
+            if (auto sub = JausBridge::subsystemOf(id))
+                selectSubsystem(*sub);
+        });
+}
+
+void JausControlPanel::selectSubsystem(std::uint16_t subsystem) {
+    const int row = m_model->rowOf(subsystem);
+    if (row < 0 || m_table->currentIndex().row() == row)
+        return;
+    m_table->setCurrentIndex(m_model->index(row, 0));
+}
+
+static QPushButton* findButton(QWidget* cell, const char* name) {
+    return cell ? cell->findChild<QPushButton*>(QLatin1String(name)) : nullptr;
+}
+
+QPushButton* JausControlPanel::controlButton(std::uint16_t subsystem) const {
+    return findButton(m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
+                      "control");
+}
+QPushButton* JausControlPanel::releaseButton(std::uint16_t subsystem) const {
+    return findButton(m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
+                      "release");
+}
+QPushButton* JausControlPanel::monitorButton(std::uint16_t subsystem) const {
+    return findButton(m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
+                      "monitor");
+}
+
+void JausControlPanel::installRowButtons(int first, int last) {
+    for (int row = first; row <= last && row >= 0; ++row) {
+        const std::uint16_t sub = m_model->subsystemAt(row);
+        auto* cell = new QWidget(m_table);
+        auto* h = new QHBoxLayout(cell);
+        h->setContentsMargins(2, 0, 2, 0);
+        h->setSpacing(3);
+        auto make = [&](const QString& text, const char* name, const QString& tip) {
+            auto* b = new QPushButton(text, cell);
+            b->setObjectName(QLatin1String(name));
+            b->setToolTip(tip);
+            h->addWidget(b);
+            return b;
+        };
+        auto* monitor = make(tr("Monitor"), "monitor", tr("Select this vehicle to watch it (no control)"));
+        auto* control = make(tr("Control"), "control", tr("Request control with this console's authority"));
+        auto* release = make(tr("Release"), "release", tr("Release control of this vehicle"));
+        connect(monitor, &QPushButton::clicked, this, [this, sub] {
+            selectSubsystem(sub);
+            if (m_selection)
+                m_selection->setCurrent(JausBridge::machineId(sub));
+        });
+        connect(control, &QPushButton::clicked, this, [this, sub] {
+            selectSubsystem(sub);
+            m_bridge->command(QStringLiteral("request_control"), {{QStringLiteral("id"), JausBridge::machineId(sub)}});
+        });
+        connect(release, &QPushButton::clicked, this, [this, sub] {
+            m_bridge->command(QStringLiteral("release_control"), {{QStringLiteral("id"), JausBridge::machineId(sub)}});
+        });
+        m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
+    }
+    // Rows inserted above shift the index widgets: reinstall them for every row.
+    if (first < m_model->rowCount() - 1 && last < m_model->rowCount() - 1 && first >= 0) {
+        for (int row = last + 1; row < m_model->rowCount(); ++row)
+            if (!m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions)))
+                installRowButtons(row, row);
+    }
+    refreshButtons();
+}
+
+void JausControlPanel::refreshButtons() {
+    const bool may = m_bridge->mayCommand();
+    for (int row = 0; row < m_model->rowCount(); ++row) {
+        const SubsystemSnapshot* s = m_model->snapshotAt(row);
+        QWidget* cell = m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions));
+        if (!s || !cell)
+            continue;
+        const bool up = s->link != jaus::LinkState::Down;
+        if (auto* b = findButton(cell, "control"))
+            b->setEnabled(may && up && !s->controlledByUs);
+        if (auto* b = findButton(cell, "release"))
+            b->setEnabled(may && s->controlledByUs);
+    }
+}
+
+} // namespace ocu

@@ -1,0 +1,45 @@
+#pragma once
+// Access-control panel (issue 7 §1): one row per discovered subsystem with monitor / control / release,
+// who controls it, the access state in words and the row colours of the FKIE IOP panels; below it the
+// details of the selected vehicle.
+#include <QWidget>
+
+class QTableView;
+class QPushButton;
+class QLabel;
+
+namespace ocu {
+
+class JausBridge;
+class JausSubsystemModel;
+class VehicleDetailsWidget;
+class FleetSelection;
+
+class JausControlPanel : public QWidget {
+    Q_OBJECT
+public:
+    JausControlPanel(JausBridge* bridge, FleetSelection* selection, QWidget* parent = nullptr);
+
+    JausSubsystemModel* model() const { return m_model; }
+    QTableView* table() const { return m_table; }
+    VehicleDetailsWidget* details() const { return m_details; }
+    // The action buttons of a row (for keyboard users and tests).
+    QPushButton* controlButton(std::uint16_t subsystem) const;
+    QPushButton* releaseButton(std::uint16_t subsystem) const;
+    QPushButton* monitorButton(std::uint16_t subsystem) const;
+
+private:
+    void installRowButtons(int first, int last);
+    void refreshButtons();
+    void selectSubsystem(std::uint16_t subsystem);
+
+    JausBridge* m_bridge;
+    FleetSelection* m_selection;
+    JausSubsystemModel* m_model;
+    QTableView* m_table;
+    VehicleDetailsWidget* m_details;
+    QLabel* m_roleLabel;
+    QPushButton* m_releaseAll;
+};
+
+} // namespace ocu

@@ -1,0 +1,187 @@
+#include "JausSubsystemModel.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QDateTime>
+
+namespace ocu {
+
+using namespace jaus;
+
+JausSubsystemModel::JausSubsystemModel(JausBridge* bridge, QObject* parent)
+    : QAbstractTableModel(parent), m_bridge(bridge) {
+    for (std::uint16_t id : bridge->subsystems())
+        if (auto s = bridge->subsystem(id))
+            m_rows.push_back(*s);
+    connect(bridge, &JausBridge::subsystemUpdated, this, &JausSubsystemModel::onSnapshot);
+    // Data ages change with time even without messages.
+    auto* t = new QTimer(this);
+    connect(t, &QTimer::timeout, this, [this] {
+        if (!m_rows.isEmpty())
+            emit dataChanged(index(0, Link), index(rowCount() - 1, Link), {Qt::DisplayRole});
+    });
+    t->start(1000);
+}
+
+int JausSubsystemModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : static_cast<int>(m_rows.size());
+}
+int JausSubsystemModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+
+std::uint16_t JausSubsystemModel::subsystemAt(int row) const {
+    return row >= 0 && row < m_rows.size() ? m_rows[row].subsystem : 0;
+}
+
+const SubsystemSnapshot* JausSubsystemModel::snapshotAt(int row) const {
+    return row >= 0 && row < m_rows.size() ? &m_rows[row] : nullptr;
+}
+
+int JausSubsystemModel::rowOf(std::uint16_t subsystem) const {
+    for (int i = 0; i < m_rows.size(); ++i)
+        if (m_rows[i].subsystem == subsystem)
+            return i;
+    return -1;
+}
+
+void JausSubsystemModel::onSnapshot(const SubsystemSnapshot& s) {
+    const int row = rowOf(s.subsystem);
+    if (row >= 0) {
+        m_rows[row] = s;
+        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+        return;
+    }
+    int at = 0;
+    while (at < m_rows.size() && m_rows[at].subsystem < s.subsystem)
+        ++at;
+    beginInsertRows({}, at, at);
+    m_rows.insert(at, s);
+    endInsertRows();
+}
+
+QString JausSubsystemModel::accessText(AccessState s) {
+    // The vocabulary operators know from the FKIE IOP panels.
+    switch (s) {
+    case AccessState::NotAvailable:
+        return QStringLiteral("NOT_AVAILABLE");
+    case AccessState::NotControlled:
+        return QStringLiteral("NOT_CONTROLLED");
+    case AccessState::Monitoring:
+        return QStringLiteral("MONITORING");
+    case AccessState::ControlAccepted:
+        return QStringLiteral("CONTROL_ACCEPTED");
+    case AccessState::ControlReleased:
+        return QStringLiteral("CONTROL_RELEASED");
+    case AccessState::Timeout:
+        return QStringLiteral("TIMEOUT");
+    case AccessState::InsufficientAuthority:
+        return QStringLiteral("INSUFFICIENT_AUTHORITY");
+    case AccessState::Preempted:
+        return QStringLiteral("PREEMPTED");
+    }
+    return {};
+}
+
+JausSubsystemModel::RowColour JausSubsystemModel::rowColour(const SubsystemSnapshot& s) {
+    if (s.controlledByUs) {
+        // Standby and Ready are normal while controlled; anything else needs the operator's attention.
+        const bool normalState = !s.management || *s.management == ManagementState::Ready ||
+                                 *s.management == ManagementState::Standby;
+        const bool warn = s.emergency || s.link != jaus::LinkState::Up || (s.health && s.health->severity >= 2) ||
+                          !normalState;
+        return warn ? RowColour::OursWarning : RowColour::OursOk;
+    }
+    if (s.controller.subsystem != 0)
+        return RowColour::Other;
+    return RowColour::None;
+}
+
+QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const SubsystemSnapshot& s = m_rows[index.row()];
+    if (role == SubsystemRole)
+        return s.subsystem;
+    if (role == AccessStateRole)
+        return static_cast<int>(s.access);
+    if (role == RowColourRole)
+        return static_cast<int>(rowColour(s));
+    if (role == Qt::BackgroundRole) {
+        switch (rowColour(s)) {
+        case RowColour::OursOk:
+            return QBrush(QColor(150, 215, 150));
+        case RowColour::OursWarning:
+            return QBrush(QColor(245, 185, 100));
+        case RowColour::Other:
+            return QBrush(QColor(180, 180, 180));
+        case RowColour::None:
+            return {};
+        }
+    }
+    if (role == Qt::ForegroundRole && rowColour(s) != RowColour::None)
+        return QBrush(Qt::black);
+    if (role != Qt::DisplayRole && role != Qt::ToolTipRole)
+        return {};
+    switch (index.column()) {
+    case Vehicle:
+        return QStringLiteral("%1 [%2]")
+            .arg(s.callSign.empty() ? tr("unnamed") : QString::fromStdString(s.callSign))
+            .arg(s.subsystem);
+    case Link: {
+        const QString state = QString::fromUtf8(jaus::toString(s.link));
+        if (s.lastMessageUnixMs <= 0)
+            return state;
+        const qint64 age = std::max<qint64>(0, QDateTime::currentMSecsSinceEpoch() - s.lastMessageUnixMs);
+        return tr("%1 · %2 s").arg(state).arg(age / 1000.0, 0, 'f', 1);
+    }
+    case Access:
+        return accessText(s.access);
+    case Controller:
+        if (s.controlledByUs)
+            return tr("this console (%1)").arg(s.controllerAuthority);
+        if (s.controller.subsystem != 0)
+            return tr("%1.%2.%3 (%4)")
+                .arg(s.controller.subsystem)
+                .arg(s.controller.node)
+                .arg(s.controller.component)
+                .arg(s.controllerAuthority);
+        return tr("nobody");
+    case Management: {
+        QString t = s.management ? QString::fromUtf8(jaus::toString(*s.management)) : tr("unknown");
+        if (s.emergency)
+            t += tr(" · EMERGENCY");
+        return t;
+    }
+    case Health: {
+        if (!s.health)
+            return tr("unknown");
+        static const char* names[] = {"NONE", "INFO", "WARNING", "ERROR", "FAILURE"};
+        return QString::fromLatin1(names[std::min<int>(s.health->severity, 4)]);
+    }
+    default:
+        return {};
+    }
+}
+
+QVariant JausSubsystemModel::headerData(int section, Qt::Orientation o, int role) const {
+    if (o != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case Vehicle:
+        return tr("Vehicle [ID]");
+    case Link:
+        return tr("Link");
+    case Access:
+        return tr("Access");
+    case Controller:
+        return tr("Controlled by");
+    case Management:
+        return tr("Management");
+    case Health:
+        return tr("Health");
+    case Actions:
+        return tr("Actions");
+    }
+    return {};
+}
+
+} // namespace ocu

@@ -1,0 +1,267 @@
+#include "TeleopPanel.h"
+
+#include "models/FleetSelection.h"
+#include "models/bridges/JausBridge.h"
+#include "widgets/HoldToConfirmButton.h"
+#include "widgets/teleop/SdlJoystickInput.h"
+#include "widgets/teleop/TeleopController.h"
+#include "widgets/teleop/VirtualStick.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QPushButton>
+#include <QShortcut>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ocu {
+
+using namespace jaus;
+
+TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDevice* device, QWidget* parent)
+    : QWidget(parent), m_bridge(bridge), m_selection(selection), m_controller(new TeleopController(this)),
+      m_stick(new VirtualStick(this)), m_axes(new AxisDisplay(this)), m_title(new QLabel(this)),
+      m_state(new QLabel(this)), m_live(new QLabel(this)), m_device(new QLabel(this)), m_mode(new QComboBox(this)),
+      m_limit(new QSlider(Qt::Horizontal, this)), m_limitLabel(new QLabel(this)),
+      m_estop(new QPushButton(tr("E-STOP"), this)), m_clear(new HoldToConfirmButton(tr("Hold to clear emergency"), this)) {
+    setObjectName(QStringLiteral("teleop-panel"));
+    setFocusPolicy(Qt::StrongFocus);
+    m_controller->setRateHz(bridge->config().driveRateHz);
+
+    QFont big = m_title->font();
+    big.setPointSizeF(big.pointSizeF() * 1.3);
+    big.setBold(true);
+    m_title->setFont(big);
+
+    m_estop->setObjectName(QStringLiteral("button-estop"));
+    m_estop->setMinimumHeight(64);
+    m_estop->setStyleSheet(QStringLiteral("QPushButton { background:#c81e1e; color:white; font-size:22px;"
+                                          " font-weight:bold; border:3px solid #6d0a0a; border-radius:8px; }"
+                                          "QPushButton:pressed { background:#8e1010; }"
+                                          "QPushButton:focus { border:3px solid #ffd400; }"));
+    m_estop->setToolTip(tr("Emergency stop of this vehicle (Space or Esc). Never asks for confirmation."));
+    connect(m_estop, &QPushButton::clicked, this, &TeleopPanel::emergencyStop);
+    for (QKeySequence k : {QKeySequence(Qt::Key_Space), QKeySequence(Qt::Key_Escape)}) {
+        auto* sc = new QShortcut(k, this);
+        sc->setContext(Qt::WidgetWithChildrenShortcut);
+        connect(sc, &QShortcut::activated, this, &TeleopPanel::emergencyStop);
+    }
+    m_clear->setObjectName(QStringLiteral("button-clear-emergency"));
+    m_clear->setHoldDurationMs(1500);
+    connect(m_clear, &HoldToConfirmButton::confirmed, this, [this] {
+        if (m_subsystem)
+            m_bridge->clearStop(JausBridge::machineId(m_subsystem));
+    });
+
+    m_mode->setObjectName(QStringLiteral("combo-drive-mode"));
+    m_mode->addItem(tr("Velocity (m/s, rad/s)"), QStringLiteral("velocity"));
+    m_mode->addItem(tr("Wrench effort (%)"), QStringLiteral("effort"));
+    m_limit->setRange(5, 100);
+    m_limit->setValue(50);
+    m_limit->setObjectName(QStringLiteral("slider-speed-limit"));
+    connect(m_limit, &QSlider::valueChanged, this, [this](int v) {
+        m_controller->setSpeedLimit(v / 100.0);
+        refresh();
+    });
+    m_controller->setSpeedLimit(0.5);
+
+    auto* settings = new QFormLayout;
+    settings->addRow(tr("Mode"), m_mode);
+    auto* limitRow = new QHBoxLayout;
+    limitRow->addWidget(m_limit, 1);
+    limitRow->addWidget(m_limitLabel);
+    settings->addRow(tr("Speed limit"), limitRow);
+    settings->addRow(tr("Joystick"), m_device);
+
+    auto* inputs = new QHBoxLayout;
+    inputs->addWidget(m_stick, 1);
+    auto* right = new QVBoxLayout;
+    right->addLayout(settings);
+    right->addWidget(m_axes);
+    auto* keysHint = new QLabel(tr("Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows."), this);
+    keysHint->setWordWrap(true);
+    right->addWidget(keysHint);
+    right->addStretch(1);
+    inputs->addLayout(right, 1);
+
+    auto* l = new QVBoxLayout(this);
+    l->addWidget(m_title);
+    l->addWidget(m_state);
+    l->addWidget(m_live);
+    l->addLayout(inputs, 1);
+    auto* stops = new QHBoxLayout;
+    stops->addWidget(m_estop, 2);
+    stops->addWidget(m_clear, 1);
+    l->addLayout(stops);
+
+    connect(m_stick, &VirtualStick::axesChanged, m_controller, &TeleopController::setStick);
+    connect(m_controller, &TeleopController::command, this, &TeleopPanel::onCommand);
+    connect(m_controller, &TeleopController::command, m_axes, &AxisDisplay::setMapped);
+    if (device) {
+        m_controller->setDevice(device);
+        connect(device, &InputDevice::connectedChanged, this, &TeleopPanel::refresh);
+        if (auto* sdl = qobject_cast<SdlJoystickInput*>(device))
+            connect(sdl, &SdlJoystickInput::rawAxesChanged, m_axes, &AxisDisplay::setAxes);
+    }
+    connect(bridge, &JausBridge::subsystemUpdated, this, [this](const SubsystemSnapshot& s) {
+        if (s.subsystem == m_subsystem)
+            refresh();
+    });
+    if (selection)
+        connect(selection, &FleetSelection::currentMachineChanged, this, [this](const QString& id) {
+            if (auto sub = JausBridge::subsystemOf(id))
+                setVehicle(*sub);
+        });
+    // Window focus loss (another application, a dialog): stop driving at once.
+    connect(qApp, &QApplication::applicationStateChanged, this, [this](Qt::ApplicationState st) {
+        if (st != Qt::ApplicationActive)
+            m_controller->releaseAll(tr("window lost focus"));
+    });
+    m_stick->installEventFilter(this);
+    refresh();
+}
+
+TeleopPanel::~TeleopPanel() {
+    if (m_subsystem && m_sessionOpen)
+        m_bridge->stopDriving(m_subsystem);
+}
+
+void TeleopPanel::setVehicle(std::uint16_t subsystem) {
+    if (subsystem == m_subsystem)
+        return;
+    m_controller->releaseAll(tr("vehicle changed"));
+    if (m_subsystem && m_sessionOpen)
+        m_bridge->stopDriving(m_subsystem);
+    m_sessionOpen = false;
+    m_subsystem = subsystem;
+    refresh();
+}
+
+bool TeleopPanel::velocityMode() const { return m_mode->currentData().toString() == QLatin1String("velocity"); }
+
+DriveCommand TeleopPanel::toDriveCommand(DriveAxes a) const {
+    DriveCommand c;
+    if (velocityMode()) {
+        c.mode = DriveCommand::Mode::Velocity;
+        double fwd = 1.0, rev = 1.0, rot = 1.0; // conservative defaults until the platform reports its limits
+        if (auto s = m_bridge->subsystem(m_subsystem); s && s->platform) {
+            fwd = s->platform->maxForwardSpeed.value_or(fwd);
+            rev = s->platform->maxReverseSpeed.value_or(rev);
+            rot = s->platform->maxRotationalSpeed.value_or(rot);
+        }
+        c.linear = a.forward >= 0 ? a.forward * fwd : a.forward * rev;
+        c.angular = a.turn * rot;
+    } else {
+        c.mode = DriveCommand::Mode::Wrench;
+        c.linear = a.forward * 100.0;
+        c.angular = a.turn * 100.0;
+    }
+    return c;
+}
+
+void TeleopPanel::onCommand(DriveAxes axes) {
+    if (!m_subsystem)
+        return;
+    if (axes.isZero() && !m_sessionOpen)
+        return;
+    const auto r = m_bridge->drive(m_subsystem, toDriveCommand(axes));
+    m_sessionOpen = r.ok;
+}
+
+void TeleopPanel::emergencyStop() {
+    m_controller->releaseAll(tr("emergency stop"));
+    if (m_subsystem)
+        m_bridge->stopMachine(JausBridge::machineId(m_subsystem));
+}
+
+void TeleopPanel::refresh() {
+    InputDevice* dev = m_controller->device();
+    m_device->setText(dev ? (dev->isConnected() ? dev->name() : tr("none connected")) : tr("none"));
+    auto s = m_subsystem ? m_bridge->subsystem(m_subsystem) : std::nullopt;
+    if (!s) {
+        m_title->setText(tr("No JAUS vehicle selected"));
+        m_state->setText(tr("Select a vehicle in the fleet list or the JAUS control panel, then take control."));
+        m_live->clear();
+        m_controller->setEnabled(false);
+        m_estop->setEnabled(false);
+        m_clear->setEnabled(false);
+        return;
+    }
+    m_title->setText(tr("%1 [%2]").arg(QString::fromStdString(s->callSign)).arg(s->subsystem));
+    const bool may = m_bridge->mayCommand();
+    const bool ours = s->controlledByUs;
+    const bool up = s->link == jaus::LinkState::Up;
+    m_controller->setEnabled(may && ours && up && !s->emergency);
+    m_estop->setEnabled(may);
+    m_clear->setEnabled(may && s->emergency);
+    QStringList state;
+    if (!may)
+        state << tr("MONITOR role: driving disabled");
+    else if (!ours)
+        state << tr("not controlled by this console: take control first");
+    else
+        state << tr("controlled by this console");
+    if (s->emergency)
+        state << tr("EMERGENCY — hold the clear button to release");
+    if (!up)
+        state << tr("link %1").arg(QString::fromUtf8(jaus::toString(s->link)));
+    if (s->management)
+        state << tr("state %1").arg(QString::fromUtf8(jaus::toString(*s->management)));
+    state << (s->driving ? tr("drive session open") : tr("drive session closed (vehicle stops after its 1 s drive timeout)"));
+    m_state->setText(state.join(QStringLiteral(" · ")));
+    m_state->setStyleSheet(s->emergency ? QStringLiteral("color:#c81e1e; font-weight:bold;") : QString());
+    QStringList live;
+    if (s->velocity && s->velocity->vx)
+        live << tr("speed %1 m/s").arg(*s->velocity->vx, 0, 'f', 2);
+    if (s->globalPose && s->globalPose->yaw)
+        live << tr("heading %1°").arg(std::fmod(*s->globalPose->yaw * 180 / M_PI + 360, 360), 0, 'f', 0);
+    if (s->globalPose && s->globalPose->lat && s->globalPose->lon)
+        live << tr("pose %1, %2").arg(*s->globalPose->lat, 0, 'f', 6).arg(*s->globalPose->lon, 0, 'f', 6);
+    if (s->localPose && s->localPose->x && s->localPose->y)
+        live << tr("local %1 / %2 m").arg(*s->localPose->x, 0, 'f', 1).arg(*s->localPose->y, 0, 'f', 1);
+    m_live->setText(live.join(QStringLiteral(" · ")));
+    double maxFwd = 1.0;
+    if (s->platform && s->platform->maxForwardSpeed)
+        maxFwd = *s->platform->maxForwardSpeed;
+    m_limitLabel->setText(velocityMode() ? tr("%1 % · %2 m/s").arg(m_limit->value()).arg(maxFwd * m_limit->value() / 100.0, 0, 'f', 2)
+                                         : tr("%1 %").arg(m_limit->value()));
+}
+
+void TeleopPanel::keyPressEvent(QKeyEvent* e) {
+    if (!m_controller->handleKey(e->key(), true, e->isAutoRepeat()))
+        QWidget::keyPressEvent(e);
+}
+
+void TeleopPanel::keyReleaseEvent(QKeyEvent* e) {
+    if (!m_controller->handleKey(e->key(), false, e->isAutoRepeat()))
+        QWidget::keyReleaseEvent(e);
+}
+
+void TeleopPanel::focusOutEvent(QFocusEvent* e) {
+    m_controller->releaseAll(tr("teleop panel lost keyboard focus"));
+    QWidget::focusOutEvent(e);
+}
+
+void TeleopPanel::hideEvent(QHideEvent* e) {
+    m_controller->releaseAll(tr("teleop panel hidden"));
+    QWidget::hideEvent(e);
+}
+
+bool TeleopPanel::eventFilter(QObject* watched, QEvent* event) {
+    // Keys typed while the stick has focus drive too.
+    if (watched == m_stick && (event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease)) {
+        auto* k = static_cast<QKeyEvent*>(event);
+        if (m_controller->handleKey(k->key(), event->type() == QEvent::KeyPress, k->isAutoRepeat()))
+            return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+} // namespace ocu

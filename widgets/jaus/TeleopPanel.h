@@ -1,0 +1,73 @@
+#pragma once
+// Teleop panel (issue 7 §2) for the selected vehicle this console controls: on-screen stick, keyboard
+// (W/A/S/D or arrows with the dead-man key), SDL2 joysticks; wrench effort or velocity as the platform
+// offers; a speed limit within the platform specifications; zero on release, focus loss and joystick
+// loss; a large E-STOP (Space, Esc) and clear-emergency only by holding a confirm button.
+#include "jaus/JausTypes.h"
+#include "widgets/teleop/InputDevice.h"
+
+#include <QWidget>
+
+class QLabel;
+class QComboBox;
+class QSlider;
+class QPushButton;
+
+namespace ocu {
+
+class JausBridge;
+class FleetSelection;
+class TeleopController;
+class VirtualStick;
+class AxisDisplay;
+class HoldToConfirmButton;
+class InputDevice;
+
+class TeleopPanel : public QWidget {
+    Q_OBJECT
+public:
+    // device: the joystick source (SDL2 in the app, a fake in tests); may be null.
+    TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDevice* device, QWidget* parent = nullptr);
+    ~TeleopPanel() override;
+
+    std::uint16_t vehicle() const { return m_subsystem; }
+    void setVehicle(std::uint16_t subsystem);
+    TeleopController* controller() const { return m_controller; }
+    VirtualStick* stick() const { return m_stick; }
+    QPushButton* emergencyButton() const { return m_estop; }
+    HoldToConfirmButton* clearEmergencyButton() const { return m_clear; }
+    // The JAUS drive command for a normalised demand, with the current mode and platform limits.
+    jaus::DriveCommand toDriveCommand(DriveAxes axes) const;
+    bool velocityMode() const;
+
+protected:
+    void keyPressEvent(QKeyEvent* e) override;
+    void keyReleaseEvent(QKeyEvent* e) override;
+    void focusOutEvent(QFocusEvent* e) override;
+    void hideEvent(QHideEvent* e) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void refresh();
+    void emergencyStop();
+    void onCommand(DriveAxes axes);
+
+    JausBridge* m_bridge;
+    FleetSelection* m_selection;
+    std::uint16_t m_subsystem = 0;
+    TeleopController* m_controller;
+    VirtualStick* m_stick;
+    AxisDisplay* m_axes;
+    QLabel* m_title;
+    QLabel* m_state;
+    QLabel* m_live;
+    QLabel* m_device;
+    QComboBox* m_mode;
+    QSlider* m_limit;
+    QLabel* m_limitLabel;
+    QPushButton* m_estop;
+    HoldToConfirmButton* m_clear;
+    bool m_sessionOpen = false;
+};
+
+} // namespace ocu

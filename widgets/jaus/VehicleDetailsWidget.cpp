@@ -1,0 +1,148 @@
+#include "VehicleDetailsWidget.h"
+
+#include "JausSubsystemModel.h"
+#include "models/bridges/JausBridge.h"
+
+#include <QDateTime>
+#include <QHeaderView>
+#include <QListWidget>
+#include <QSplitter>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ocu {
+
+using namespace jaus;
+
+VehicleDetailsWidget::VehicleDetailsWidget(JausBridge* bridge, QWidget* parent)
+    : QWidget(parent), m_bridge(bridge), m_tree(new QTreeWidget(this)), m_messages(new QListWidget(this)) {
+    auto* l = new QVBoxLayout(this);
+    l->setContentsMargins(0, 0, 0, 0);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    m_tree->setColumnCount(2);
+    m_tree->setHeaderLabels({tr("Item"), tr("Value")});
+    m_tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_tree->setObjectName(QStringLiteral("jaus-details-tree"));
+    m_messages->setObjectName(QStringLiteral("jaus-last-messages"));
+    split->addWidget(m_tree);
+    split->addWidget(m_messages);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    l->addWidget(split);
+    connect(bridge, &JausBridge::subsystemUpdated, this, [this](const SubsystemSnapshot& s) {
+        if (s.subsystem == m_subsystem)
+            rebuild(s);
+    });
+    connect(bridge, &JausBridge::jausEvent, this, [this](const JausEvent& e) {
+        if (e.subsystem != m_subsystem || m_subsystem == 0)
+            return;
+        m_messages->insertItem(0, QStringLiteral("%1  %2  %3")
+                                      .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")),
+                                           QString::fromUtf8(jaus::toString(e.kind)), QString::fromStdString(e.text)));
+        while (m_messages->count() > 200)
+            delete m_messages->takeItem(m_messages->count() - 1);
+    });
+}
+
+void VehicleDetailsWidget::showSubsystem(std::uint16_t subsystem) {
+    if (subsystem != m_subsystem)
+        m_messages->clear();
+    m_subsystem = subsystem;
+    m_tree->clear();
+    if (auto s = m_bridge->subsystem(subsystem))
+        rebuild(*s);
+}
+
+static QString num(const std::optional<double>& v, int prec, const QString& unit) {
+    return v ? QStringLiteral("%1 %2").arg(*v, 0, 'f', prec).arg(unit) : QStringLiteral("—");
+}
+
+void VehicleDetailsWidget::rebuild(const SubsystemSnapshot& s) {
+    // Keep the user's expansion state across the frequent updates.
+    QSet<QString> collapsed;
+    for (int i = 0; i < m_tree->topLevelItemCount(); ++i)
+        if (!m_tree->topLevelItem(i)->isExpanded())
+            collapsed.insert(m_tree->topLevelItem(i)->text(0));
+    m_tree->clear();
+    auto section = [&](const QString& name) {
+        auto* it = new QTreeWidgetItem(m_tree, {name});
+        it->setExpanded(!collapsed.contains(name));
+        return it;
+    };
+    auto row = [](QTreeWidgetItem* parent, const QString& k, const QString& v) {
+        return new QTreeWidgetItem(parent, {k, v});
+    };
+    auto* ident = section(tr("Identification"));
+    row(ident, tr("Call sign"), QString::fromStdString(s.callSign));
+    row(ident, tr("Subsystem ID"), QString::number(s.subsystem));
+    row(ident, tr("Endpoint"), QString::fromStdString(s.endpoint));
+    row(ident, tr("Link"), QString::fromUtf8(jaus::toString(s.link)));
+
+    auto* state = section(tr("State"));
+    row(state, tr("Access"), JausSubsystemModel::accessText(s.access));
+    row(state, tr("Management"), s.management ? QString::fromUtf8(jaus::toString(*s.management)) : tr("unknown"));
+    row(state, tr("Emergency"), s.emergency ? tr("YES") : tr("no"));
+    row(state, tr("Drive session"), s.driving ? tr("open") : tr("closed"));
+    row(state, tr("Access timeout"), s.accessTimeoutS ? tr("%1 s").arg(s.accessTimeoutS) : tr("unknown"));
+
+    auto* platform = section(tr("Platform"));
+    if (s.platform) {
+        const auto& p = *s.platform;
+        row(platform, tr("Name"), QString::fromStdString(p.name));
+        row(platform, tr("Steering"), p.steeringType == 1 ? tr("Ackermann") : tr("skid steer"));
+        if (p.front && p.back)
+            row(platform, tr("Length"), QStringLiteral("%1 m").arg(*p.front + *p.back, 0, 'f', 2));
+        if (p.left && p.right)
+            row(platform, tr("Width"), QStringLiteral("%1 m").arg(*p.left + *p.right, 0, 'f', 2));
+        row(platform, tr("Max forward speed"), num(p.maxForwardSpeed, 2, QStringLiteral("m/s")));
+        row(platform, tr("Max reverse speed"), num(p.maxReverseSpeed, 2, QStringLiteral("m/s")));
+        row(platform, tr("Max rotational speed"), num(p.maxRotationalSpeed, 2, QStringLiteral("rad/s")));
+    } else {
+        row(platform, tr("Specifications"), tr("not reported yet"));
+    }
+
+    auto* pose = section(tr("Pose"));
+    if (s.globalPose) {
+        row(pose, tr("Latitude"), num(s.globalPose->lat, 7, QStringLiteral("°")));
+        row(pose, tr("Longitude"), num(s.globalPose->lon, 7, QStringLiteral("°")));
+        row(pose, tr("Altitude"), num(s.globalPose->alt, 1, QStringLiteral("m")));
+        if (s.globalPose->yaw)
+            row(pose, tr("Heading"), QStringLiteral("%1 °").arg(std::fmod(*s.globalPose->yaw * 180 / M_PI + 360, 360), 0, 'f', 1));
+    }
+    if (s.localPose) {
+        row(pose, tr("Local X"), num(s.localPose->x, 2, QStringLiteral("m")));
+        row(pose, tr("Local Y"), num(s.localPose->y, 2, QStringLiteral("m")));
+    }
+    if (s.velocity) {
+        row(pose, tr("Speed"), num(s.velocity->vx, 2, QStringLiteral("m/s")));
+        row(pose, tr("Yaw rate"), num(s.velocity->yawRate, 2, QStringLiteral("rad/s")));
+    }
+
+    auto* health = section(tr("Health"));
+    if (s.health) {
+        static const char* names[] = {"NONE", "INFO", "WARNING", "ERROR", "FAILURE"};
+        row(health, tr("Summary"), QString::fromLatin1(names[std::min<int>(s.health->severity, 4)]));
+        for (auto [node, sev] : s.health->nodes)
+            row(health, tr("Node %1").arg(node), QString::fromLatin1(names[std::min<int>(sev, 4)]));
+    } else {
+        row(health, tr("Summary"), tr("unknown"));
+    }
+
+    auto* services = section(tr("Services"));
+    auto* sub = row(services, tr("Subsystem %1").arg(s.subsystem), QString::fromStdString(s.callSign));
+    sub->setExpanded(true);
+    for (const NodeInfo& n : s.services) {
+        auto* node = row(sub, tr("Node %1").arg(n.node), QString());
+        node->setExpanded(true);
+        for (const ComponentInfo& c : n.components) {
+            auto* comp = row(node, QStringLiteral("[%1.%2.%3]").arg(s.subsystem).arg(n.node).arg(c.component), QString());
+            comp->setExpanded(true);
+            for (const ServiceRecord& r : c.services)
+                row(comp, QString::fromStdString(r.uri), QStringLiteral("v%1.%2").arg(r.major).arg(r.minor));
+        }
+    }
+}
+
+} // namespace ocu

@@ -1,0 +1,32 @@
+#pragma once
+// Vehicle details (issue 7 §3): platform specifications, mode and state, health, the services tree
+// subsystem → node → component [s.n.c] → service URI and version, and the vehicle's last messages.
+#include "jaus/JausTypes.h"
+
+#include <QWidget>
+
+class QTreeWidget;
+class QListWidget;
+
+namespace ocu {
+
+class JausBridge;
+
+class VehicleDetailsWidget : public QWidget {
+    Q_OBJECT
+public:
+    explicit VehicleDetailsWidget(JausBridge* bridge, QWidget* parent = nullptr);
+    void showSubsystem(std::uint16_t subsystem);
+    std::uint16_t subsystem() const { return m_subsystem; }
+    QTreeWidget* tree() const { return m_tree; }
+    QListWidget* messages() const { return m_messages; }
+
+private:
+    void rebuild(const jaus::SubsystemSnapshot& s);
+    JausBridge* m_bridge;
+    std::uint16_t m_subsystem = 0;
+    QTreeWidget* m_tree;
+    QListWidget* m_messages;
+};
+
+} // namespace ocu

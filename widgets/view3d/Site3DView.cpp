@@ -1,0 +1,336 @@
+#include "widgets/view3d/Site3DView.h"
+
+#include "widgets/view3d/EglOffscreenRenderer.h"
+#include "widgets/view3d/SiteSceneRenderer.h"
+#include "widgets/view3d/VtkOpenGLWidget.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QEvent>
+#include <QGuiApplication>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include <functional>
+
+namespace ocu {
+
+namespace {
+
+// Headless stand-in for the GL widget: paints the last EGL-rendered image. The image is re-rendered lazily in
+// paintEvent when the scene changed, so a grab() always shows the current scene.
+class ImageView : public QWidget {
+public:
+    std::function<QImage(QSize)> render;
+    std::function<void(QPointF)> clicked;
+    QString message;
+
+    explicit ImageView(QWidget* parent) : QWidget(parent) {
+        setMinimumSize(64, 64);
+        setAttribute(Qt::WA_OpaquePaintEvent);
+    }
+    void markDirty() { m_dirty = true; }
+    QSize pixelSize() const {
+        const qreal dpr = devicePixelRatioF();
+        return {qMax(1, qRound(width() * dpr)), qMax(1, qRound(height() * dpr))};
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        const QSize want = pixelSize();
+        if ((m_dirty || m_image.size() != want) && render) {
+            m_image = render(want);
+            m_image.setDevicePixelRatio(devicePixelRatioF());
+            m_dirty = false;
+        }
+        QPainter p(this);
+        if (m_image.isNull()) {
+            p.fillRect(rect(), QColor(60, 60, 60));
+            p.setPen(Qt::white);
+            p.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignCenter | Qt::TextWordWrap,
+                       message.isEmpty() ? tr("3D view unavailable") : message);
+            return;
+        }
+        p.drawImage(QPointF(0, 0), m_image);
+    }
+    void resizeEvent(QResizeEvent*) override { m_dirty = true; }
+    void mousePressEvent(QMouseEvent* e) override { m_press = e->position(); }
+    void mouseReleaseEvent(QMouseEvent* e) override {
+        if (e->button() == Qt::LeftButton && (e->position() - m_press).manhattanLength() <= 4 && clicked) {
+            const qreal dpr = devicePixelRatioF();
+            clicked(e->position() * dpr);
+        }
+    }
+
+private:
+    QImage m_image;
+    bool m_dirty = true;
+    QPointF m_press;
+};
+
+// Pass-count legend in the top-right corner of its parent (the GL widget or the image view).
+class LegendOverlay : public QWidget {
+public:
+    explicit LegendOverlay(QWidget* parent) : QWidget(parent) {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        parent->installEventFilter(this);
+        hide();
+    }
+    void setEntries(const std::vector<LegendEntry>& entries) {
+        m_entries = entries;
+        const QFontMetrics fm(font());
+        int w = 0;
+        for (const LegendEntry& e : m_entries)
+            w = qMax(w, fm.horizontalAdvance(e.label));
+        resize(w + 2 * kPad + kSwatch + kGap, static_cast<int>(m_entries.size()) * kRow + 2 * kPad + kRow);
+        setVisible(!m_entries.empty());
+        place();
+        update();
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (watched == parentWidget() && event->type() == QEvent::Resize)
+            place();
+        return false;
+    }
+    void paintEvent(QPaintEvent*) override {
+        QPainter p(this);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(255, 255, 255, 215));
+        p.drawRoundedRect(rect().adjusted(0, 0, -1, -1), 4, 4);
+        p.setPen(Qt::black);
+        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter, tr("Passes"));
+        int y = kPad + kRow;
+        for (const LegendEntry& e : m_entries) {
+            p.fillRect(QRect(kPad, y + 3, kSwatch, kRow - 6), QColor(e.colour.r, e.colour.g, e.colour.b));
+            p.drawText(QRect(kPad + kSwatch + kGap, y, width(), kRow), Qt::AlignVCenter, e.label);
+            y += kRow;
+        }
+    }
+
+private:
+    void place() {
+        if (parentWidget() != nullptr)
+            move(parentWidget()->width() - width() - 8, 8);
+    }
+    static constexpr int kPad = 6, kSwatch = 16, kGap = 6, kRow = 18;
+    std::vector<LegendEntry> m_entries;
+};
+
+} // namespace
+
+struct Site3DView::Impl {
+    SiteSceneRenderer scene;
+    Backend backend = Backend::OpenGLWidget;
+    VtkOpenGLWidget* gl = nullptr;
+    ImageView* image = nullptr;
+    std::unique_ptr<EglOffscreenRenderer> egl;
+    LegendOverlay* legend = nullptr;
+    QTimer renderTimer;
+    QAction* orbit = nullptr;
+    QAction* follow = nullptr;
+    QAction* top = nullptr;
+    QString status;
+};
+
+Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+
+    auto* toolbar = new QToolBar(this);
+    toolbar->setObjectName(QStringLiteral("view3dToolbar"));
+    auto* group = new QActionGroup(this);
+    d->orbit = toolbar->addAction(tr("Orbit"));
+    d->orbit->setToolTip(tr("Free orbit camera (drag to rotate, wheel to zoom)"));
+    d->follow = toolbar->addAction(tr("Follow"));
+    d->follow->setToolTip(tr("Keep the selected machine in the centre"));
+    d->top = toolbar->addAction(tr("Top"));
+    d->top->setToolTip(tr("Top-down view, north up"));
+    for (QAction* a : {d->orbit, d->follow, d->top}) {
+        a->setCheckable(true);
+        group->addAction(a);
+    }
+    d->orbit->setChecked(true);
+    toolbar->addSeparator();
+    QAction* reset = toolbar->addAction(tr("Reset view"));
+    connect(d->orbit, &QAction::triggered, this, [this] { setCameraMode(CameraMode::FreeOrbit); });
+    connect(d->follow, &QAction::triggered, this, [this] { setCameraMode(CameraMode::FollowSelected); });
+    connect(d->top, &QAction::triggered, this, [this] { setCameraMode(CameraMode::TopDown); });
+    connect(reset, &QAction::triggered, this, [this] { resetCamera(); });
+    layout->addWidget(toolbar);
+
+    QWidget* view = nullptr;
+    if (useOffscreenImage()) {
+        d->backend = Backend::OffscreenImage;
+        d->egl = std::make_unique<EglOffscreenRenderer>();
+        d->image = new ImageView(this);
+        d->image->render = [this](QSize size) {
+            QImage img = d->egl->render(d->scene, size);
+            d->status = img.isNull() ? tr("3D view unavailable: %1").arg(d->egl->errorString()) : QString();
+            d->image->message = d->status;
+            return img;
+        };
+        d->image->clicked = [this](QPointF px) {
+            const QString id = d->scene.pick(px.x(), px.y());
+            if (!id.isEmpty()) {
+                setSelectedMachine(id);
+                emit machinePicked(id);
+            }
+        };
+        if (!d->egl->initialize()) {
+            d->status = tr("3D view unavailable: %1").arg(d->egl->errorString());
+            d->image->message = d->status;
+        }
+        // Throttle: scene changes within 50 ms are drawn once (at most 20 renders per second).
+        d->renderTimer.setSingleShot(true);
+        d->renderTimer.setInterval(50);
+        connect(&d->renderTimer, &QTimer::timeout, d->image, qOverload<>(&QWidget::update));
+        view = d->image;
+    } else {
+        d->backend = Backend::OpenGLWidget;
+        d->gl = new VtkOpenGLWidget(&d->scene, this);
+        connect(d->gl, &VtkOpenGLWidget::machinePicked, this, [this](const QString& id) {
+            setSelectedMachine(id);
+            emit machinePicked(id);
+        });
+        view = d->gl;
+    }
+    view->setObjectName(QStringLiteral("view3dCanvas"));
+    layout->addWidget(view, 1);
+    d->legend = new LegendOverlay(view);
+}
+
+Site3DView::~Site3DView() {
+    // The GL widget holds the scene's renderer; delete it before the scene (a member of d) goes away.
+    delete d->gl;
+    d->gl = nullptr;
+}
+
+void Site3DView::prepareDefaultFormat() {
+    QSurfaceFormat::setDefaultFormat(VtkOpenGLWidget::defaultFormat());
+}
+
+bool Site3DView::useOffscreenImage() {
+    if (qEnvironmentVariableIntValue("OCU_VIEW3D_IMAGE") == 1)
+        return true;
+    const QString platform = QGuiApplication::platformName();
+    return platform == QLatin1String("offscreen") || platform == QLatin1String("minimal");
+}
+
+Site3DView::Backend Site3DView::backend() const {
+    return d->backend;
+}
+
+QString Site3DView::statusMessage() const {
+    return d->status;
+}
+
+void Site3DView::scheduleRender() {
+    if (d->gl != nullptr) {
+        d->gl->requestRender(); // Qt coalesces repaints
+        return;
+    }
+    d->image->markDirty();
+    if (!d->renderTimer.isActive())
+        d->renderTimer.start();
+}
+
+void Site3DView::setScene(const Scene3D& scene) {
+    d->scene.setScene(scene);
+    d->legend->setEntries(scene.legend);
+    scheduleRender();
+}
+
+void Site3DView::updateMachines(const std::vector<Machine3D>& machines) {
+    d->scene.updateMachines(machines);
+    scheduleRender();
+}
+
+void Site3DView::setPassCount(const PassCountRaster& raster, const std::vector<LegendEntry>& legend) {
+    d->scene.setPassCount(raster, legend);
+    d->legend->setEntries(legend);
+    scheduleRender();
+}
+
+void Site3DView::setSelectedMachine(const QString& id) {
+    if (id == d->scene.selectedMachine())
+        return;
+    d->scene.setSelectedMachine(id);
+    scheduleRender();
+}
+
+QString Site3DView::selectedMachine() const {
+    return d->scene.selectedMachine();
+}
+
+void Site3DView::setCameraMode(CameraMode mode) {
+    const bool changed = mode != d->scene.cameraMode();
+    d->scene.setCameraMode(mode);
+    syncModeButtons();
+    scheduleRender();
+    if (changed)
+        emit cameraModeChanged(mode);
+}
+
+CameraMode Site3DView::cameraMode() const {
+    return d->scene.cameraMode();
+}
+
+void Site3DView::resetCamera() {
+    d->scene.resetCamera();
+    scheduleRender();
+}
+
+void Site3DView::syncModeButtons() {
+    switch (d->scene.cameraMode()) {
+    case CameraMode::FreeOrbit:
+        d->orbit->setChecked(true);
+        break;
+    case CameraMode::FollowSelected:
+        d->follow->setChecked(true);
+        break;
+    case CameraMode::TopDown:
+        d->top->setChecked(true);
+        break;
+    }
+}
+
+QImage Site3DView::renderImage(QSize size) {
+    if (size.isEmpty())
+        size = viewPixelSize();
+    if (d->egl) {
+        QImage img = d->egl->render(d->scene, size);
+        d->image->markDirty(); // the shared window now has `size`; repaint the panel at its own size
+        d->image->update();
+        return img;
+    }
+    const QImage frame = d->gl->grabFramebuffer();
+    if (frame.isNull() || frame.size() == size)
+        return frame;
+    return frame.scaled(size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+}
+
+SiteSceneRenderer& Site3DView::sceneRenderer() {
+    return d->scene;
+}
+
+QSize Site3DView::viewPixelSize() const {
+    const QWidget* v = viewWidget();
+    const qreal dpr = v->devicePixelRatioF();
+    return {qMax(1, qRound(v->width() * dpr)), qMax(1, qRound(v->height() * dpr))};
+}
+
+QWidget* Site3DView::viewWidget() const {
+    if (d->gl != nullptr)
+        return d->gl;
+    return d->image;
+}
+
+} // namespace ocu
