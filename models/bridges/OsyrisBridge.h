@@ -6,12 +6,8 @@
 #include "models/PassCountLayer.h"
 
 #include "common/GeoFrame.h"
-// The OSYRIS headers use "slots" as a member name, which is a Qt keyword macro.
-#pragma push_macro("slots")
-#undef slots
 #include "osyris/OsyrisConfig.h"
 #include "osyris/OsyrisStation.h"
-#pragma pop_macro("slots")
 
 #include <atomic>
 #include <memory>

@@ -245,20 +245,18 @@ public:
     // Finds key (or an accepted alias); nullptr when absent.
     const json* find(std::string_view key, std::string_view alias = {}) {
         see(key);
-        auto it = m_j.find(key);
-        if (it != m_j.end()) {
+        if (const json* v = lookup(key)) {
             ++m_found;
-            return &*it;
+            return v;
         }
         if (!alias.empty()) {
             see(alias);
             if (m_ctx.rules.acceptAliases) {
-                auto a = m_j.find(alias);
-                if (a != m_j.end()) {
+                if (const json* a = lookup(alias)) {
                     ++m_found;
                     m_ctx.warnings.push_back(path() + ": alias '" + std::string(alias) + "' accepted for '" +
                                              std::string(key) + "'");
-                    return &*a;
+                    return a;
                 }
             }
         }
@@ -446,7 +444,32 @@ public:
         return out;
     }
 
+    // Hot messages: one pass over the object resolves these keys, instead of one map lookup per key.
+    void prefetch(std::initializer_list<std::string_view> keys) {
+        m_npk = 0;
+        for (auto k : keys)
+            if (m_npk < m_pk.size()) {
+                m_pk[m_npk] = k;
+                m_pv[m_npk++] = nullptr;
+            }
+        for (auto it = m_j.begin(); it != m_j.end(); ++it) {
+            const std::string& key = it.key();
+            for (std::size_t i = 0; i < m_npk; ++i)
+                if (m_pk[i].size() == key.size() && m_pk[i] == key) {
+                    m_pv[i] = &*it;
+                    break;
+                }
+        }
+    }
+
 private:
+    const json* lookup(std::string_view key) const {
+        for (std::size_t i = 0; i < m_npk; ++i)
+            if (m_pk[i] == key)
+                return m_pv[i];
+        auto it = m_j.find(key);
+        return it == m_j.end() ? nullptr : &*it;
+    }
     void see(std::string_view k) {
         if (m_nSeen < m_seen.size())
             m_seen[m_nSeen++] = k;
@@ -467,6 +490,9 @@ private:
     std::array<std::string_view, 16> m_seen;
     std::size_t m_nSeen = 0;
     std::size_t m_found = 0;
+    std::array<std::string_view, 16> m_pk;
+    std::array<const json*, 16> m_pv{};
+    std::size_t m_npk = 0;
     std::vector<std::string_view> m_more;
 };
 
@@ -492,6 +518,9 @@ PoseFields readPose(Obj& o) {
 }
 
 MachinePositionV1 readPosition(Obj& o, Ctx& ctx) {
+    o.prefetch({"Timestamp", "Heading", "Latitude", "Longitude", "Elevation", "LatitudeAccuracy",
+                "LongitudeAccuracy", "ElevationAccuracy", "HeightAccuracy", "HeadingAccuracy", "Speed",
+                "Attachment", "AttachmentV1"});
     MachinePositionV1 m;
     m.timestamp = o.timestamp("Timestamp");
     m.pose = readPose(o);
@@ -844,6 +873,7 @@ Result<Envelope> decodeJson(const json& doc, const InferredRules& rules) {
     Ctx ctx{rules, env.warnings};
     try {
         Obj h(doc, "header", ctx);
+        h.prefetch({"Protocol", "Version", "Timestamp", "EquipmentId", "EquipmentID"});
         env.header.protocol = h.str("Protocol");
         if (const json* v = h.find("Version")) {
             env.header.version = h.asInteger("Version", *v, false);

@@ -71,10 +71,14 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
     for (auto& m : c.objectList("machines")) {
         auto i = m.integer("idx", -1, 0, 253);
         auto name = m.string("name", "");
-        if (i < 0)
+        auto type = m.string("type", "");
+        if (i < 0) {
             m.error("idx", "is required");
-        else
+        } else {
             o.machineNames[static_cast<std::uint8_t>(i)] = name;
+            if (!type.empty())
+                o.machineTypes[static_cast<std::uint8_t>(i)] = type;
+        }
         m.finish();
     }
     o.lossWaitBeats = static_cast<int>(c.integer("lossWaitBeats", o.lossWaitBeats, 0, 1000));

@@ -46,6 +46,7 @@ struct OsyrisConfig {
     double originLat = 0, originLon = 0, originAlt = 0; // worksite centre (local x/y are ENU around it)
     PassCountSettings passCount;
     std::map<std::uint8_t, std::string> machineNames; // Idx -> display name (the wire carries only Idx)
+    std::map<std::uint8_t, std::string> machineTypes; // Idx -> "roller", "paver", "relay", ... (free text)
     // Engine tuning (not in §7)
     int lossWaitBeats = 3; // wait before requesting a gap (§5: until the loss can be estimated)
     int maxNakSlots = 256; // slots per NAK

@@ -33,7 +33,7 @@ public:
     OsyrisStation& operator=(const OsyrisStation&) = delete;
 
     // Opens the ribbon store and the socket, joins the group and starts the Beat. On failure returns false
-    // with the reason in *error (also reported through onEvent).
+    // with the reason in *error (also reported through onEvent, on the calling thread).
     bool start(std::string* error = nullptr);
     void stop();
     bool running() const;

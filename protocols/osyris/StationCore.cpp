@@ -15,11 +15,12 @@ constexpr int kPrioPartial = 1; // we hold some
 constexpr int kPrioBoost = 4;   // nobody answered an overheard NCF
 } // namespace
 
-MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* frame,
-                             const std::string& name) {
+MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* frame, const std::string& name,
+                             const std::string& type) {
     MachineSnapshot s;
     s.idx = idx;
     s.name = name;
+    s.type = type;
     s.x = p.x;
     s.y = p.y;
     s.z = p.z;
@@ -119,7 +120,8 @@ std::uint32_t StationCore::publishOwnPosition(CmPos p, std::vector<PosProp> prop
         m_counters.add("tx.pos");
     }
     if (m_listener)
-        m_listener->onMachinePosition(makeSnapshot(idx(), p, m_geo ? &m_frame : nullptr, nameOf(idx())));
+        m_listener->onMachinePosition(
+            makeSnapshot(idx(), p, m_geo ? &m_frame : nullptr, nameOf(idx()), typeOf(idx())));
     return p.slot;
 }
 
@@ -140,6 +142,11 @@ void StationCore::ping(std::uint8_t target) {
 std::string StationCore::nameOf(std::uint8_t owner) const {
     auto it = m_cfg.machineNames.find(owner);
     return it == m_cfg.machineNames.end() ? std::string() : it->second;
+}
+
+std::string StationCore::typeOf(std::uint8_t owner) const {
+    auto it = m_cfg.machineTypes.find(owner);
+    return it == m_cfg.machineTypes.end() ? std::string() : it->second;
 }
 
 std::optional<CmPos> StationCore::ownPosition() const {
@@ -320,8 +327,8 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
     }
     // Someone else answers this data: our pending answers for it are no longer needed (§5).
     for (auto& a : m_assets)
-        if (a.owner == owner && a.slots.contains(p.slot)) {
-            a.slots.erase(p.slot);
+        if (a.owner == owner && a.pending.contains(p.slot)) {
+            a.pending.erase(p.slot);
             a.othersAnswering = true;
         }
     // A retransmission was overheard: whoever answers this ribbon is alive, so a repeated NAK for the slot
@@ -331,15 +338,16 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
             if (auto it = ns->second.find(p.slot); it != ns->second.end())
                 it->second = now + beats(m_cfg.ttlBeats);
     for (auto& s : m_suppressed)
-        if (s.owner == owner && s.slots.contains(p.slot)) {
-            s.slots.erase(p.slot);
+        if (s.owner == owner && s.pending.contains(p.slot)) {
+            s.pending.erase(p.slot);
             s.heard = true;
         }
     if (isNew && (newest || !rs.reported || p.slot > rs.lastReported)) {
         rs.reported = true;
         rs.lastReported = p.slot;
         if (m_listener)
-            m_listener->onMachinePosition(makeSnapshot(owner, p, m_geo ? &m_frame : nullptr, nameOf(owner)));
+            m_listener->onMachinePosition(
+                makeSnapshot(owner, p, m_geo ? &m_frame : nullptr, nameOf(owner), typeOf(owner)));
     }
 }
 
@@ -377,7 +385,7 @@ void StationCore::addAsset(std::uint8_t owner, IntervalSet slots, int priority, 
     for (auto& a : m_assets)
         if (a.owner == owner && !a.ncfSent) { // merge requests for the same ribbon
             for (auto& r : slots.ranges())
-                a.slots.insert(r.from, r.to);
+                a.pending.insert(r.from, r.to);
             a.priority = std::max(a.priority, priority);
             a.notBefore = std::min(a.notBefore, notBefore);
             return;
@@ -455,11 +463,11 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
             if (a.owner != owner || a.ncfSent)
                 continue;
             IntervalSet moved;
-            for (auto& x : a.slots.intersect(r.from, r.to))
+            for (auto& x : a.pending.intersect(r.from, r.to))
                 moved.insert(x.from, x.to);
             if (moved.empty())
                 continue;
-            a.slots.erase(r.from, r.to);
+            a.pending.erase(r.from, r.to);
             m_counters.add("asset.suppressed");
             m_suppressed.push_back({owner, std::move(moved), now + beats(m_cfg.ttlBeats), false});
         }
@@ -606,15 +614,15 @@ void StationCore::processAssets(TimePoint now) {
             ++it;
             continue;
         }
-        if (!it->heard && !it->slots.empty()) {
+        if (!it->heard && !it->pending.empty()) {
             m_counters.add("asset.boosted");
-            addAsset(it->owner, std::move(it->slots), kPrioBoost, now);
+            addAsset(it->owner, std::move(it->pending), kPrioBoost, now);
         }
         it = m_suppressed.erase(it);
     }
     // Drop answers somebody else is already giving, and empty ones.
     std::erase_if(m_assets, [&](const Asset& a) {
-        if (a.slots.empty())
+        if (a.pending.empty())
             return true;
         if (a.othersAnswering && !a.ncfSent && a.owner != idx()) {
             m_counters.add("asset.dropped.answered");
@@ -625,23 +633,23 @@ void StationCore::processAssets(TimePoint now) {
     std::stable_sort(m_assets.begin(), m_assets.end(), [](const Asset& a, const Asset& b) {
         if (a.priority != b.priority)
             return a.priority > b.priority;
-        return a.slots.max() > b.slots.max();
+        return a.pending.max() > b.pending.max();
     });
     int budget = m_cfg.maxRetxPerBeat;
     for (auto& a : m_assets) {
         if (budget <= 0)
             break;
-        if (a.notBefore > now || a.slots.empty())
+        if (a.notBefore > now || a.pending.empty())
             continue;
         if (!a.ncfSent) {
             // NCF before the retransmission, so other holders stand back (§6).
-            enqueueRequest(a.owner, {RequestType::Ncf, a.slots.min(), a.slots.max(), 0, 0});
+            enqueueRequest(a.owner, {RequestType::Ncf, a.pending.min(), a.pending.max(), 0, 0});
             m_counters.add("tx.ncf");
             a.ncfSent = true;
         }
-        while (budget > 0 && !a.slots.empty()) {
-            std::uint32_t s = a.slots.max(); // newest first
-            a.slots.erase(s);
+        while (budget > 0 && !a.pending.empty()) {
+            std::uint32_t s = a.pending.max(); // newest first
+            a.pending.erase(s);
             if (auto rec = m_store.get(a.owner, s)) {
                 m_recentlySent[a.owner][s] = now;
                 enqueuePosition(a.owner, *rec, true);
@@ -654,7 +662,7 @@ void StationCore::processAssets(TimePoint now) {
             }
         }
     }
-    std::erase_if(m_assets, [](const Asset& a) { return a.slots.empty(); });
+    std::erase_if(m_assets, [](const Asset& a) { return a.pending.empty(); });
     for (auto& [owner, sent] : m_recentlySent)
         std::erase_if(sent, [&](const auto& kv) { return now - kv.second >= beats(m_cfg.answerHoldBeats); });
     for (auto& [owner, seen] : m_nakSeen)

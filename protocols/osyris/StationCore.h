@@ -30,7 +30,8 @@ enum class Severity { Info, Warning, Error };
 
 struct MachineSnapshot {
     std::uint8_t idx = 0;
-    std::string name;           // from OsyrisConfig::machineNames, empty when unknown
+    std::string name; // from OsyrisConfig::machineNames, empty when unknown
+    std::string type; // from OsyrisConfig::machineTypes ("roller", "paver", ...), empty when unknown
     double x = 0, y = 0, z = 0; // local ENU [m]
     double lat = 0, lon = 0;    // geo-referenced through the worksite origin
     double yaw = 0;             // rad, north = 0, west = pi/2 (§6)
@@ -58,7 +59,7 @@ struct OsyrisListener {
 };
 
 MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* frame = nullptr,
-                             const std::string& name = {});
+                             const std::string& name = {}, const std::string& type = {});
 
 class StationCore {
 public:
@@ -102,7 +103,7 @@ private:
     };
     struct Asset {
         std::uint8_t owner;
-        IntervalSet slots;
+        IntervalSet pending; // slots still to send (Asset) or overheard (Suppressed)
         int priority; // higher first
         TimePoint notBefore;
         bool ncfSent = false;
@@ -110,7 +111,7 @@ private:
     };
     struct Suppressed {
         std::uint8_t owner;
-        IntervalSet slots;
+        IntervalSet pending; // slots still to send (Asset) or overheard (Suppressed)
         TimePoint deadline;
         bool heard = false;
     };
@@ -136,6 +137,7 @@ private:
     int rankFor(std::uint8_t owner) const;
     std::optional<CmPos> ownPosition() const;
     std::string nameOf(std::uint8_t owner) const;
+    std::string typeOf(std::uint8_t owner) const;
     void event(Severity s, const std::string& text);
     void reject(const std::string& reason, const std::string& text);
 

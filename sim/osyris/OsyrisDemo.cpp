@@ -56,8 +56,12 @@ OsyrisConfig OsyrisDemo::ocuConfig() const {
     c.active = 15;
     c.sendPeriodMs = 2000;
     c.ttlBeats = 10;
-    for (auto& m : m_machines)
+    for (auto& m : m_machines) {
         c.machineNames[m.idx] = m.name;
+        c.machineTypes[m.idx] = m.kind == MachineKind::Paver    ? "paver"
+                                : m.kind == MachineKind::Roller ? "roller"
+                                                                : "relay";
+    }
     return c;
 }
 

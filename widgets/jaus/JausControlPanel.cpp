@@ -149,7 +149,8 @@ void JausControlPanel::refreshButtons() {
         QWidget* cell = m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions));
         if (!s || !cell)
             continue;
-        const bool up = s->link != jaus::LinkState::Down;
+        // Control can be requested once the vehicle's mobility component (its access-control service) is known.
+        const bool up = s->link != jaus::LinkState::Down && s->mobilityComponent.subsystem != 0;
         if (auto* b = findButton(cell, "control"))
             b->setEnabled(may && up && !s->controlledByUs);
         if (auto* b = findButton(cell, "release"))

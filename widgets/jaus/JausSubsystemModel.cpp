@@ -81,7 +81,7 @@ QString JausSubsystemModel::accessText(AccessState s) {
     return {};
 }
 
-JausSubsystemModel::RowColour JausSubsystemModel::rowColour(const SubsystemSnapshot& s) {
+JausSubsystemModel::RowColour JausSubsystemModel::rowColour(const SubsystemSnapshot& s) const {
     if (s.controlledByUs) {
         // Standby and Ready are normal while controlled; anything else needs the operator's attention.
         const bool normalState = !s.management || *s.management == ManagementState::Ready ||
@@ -90,7 +90,8 @@ JausSubsystemModel::RowColour JausSubsystemModel::rowColour(const SubsystemSnaps
                           !normalState;
         return warn ? RowColour::OursWarning : RowColour::OursOk;
     }
-    if (s.controller.subsystem != 0)
+    // Our own ID in a report after we released is a stale report, not another console.
+    if (s.controller.subsystem != 0 && !(s.controller == m_bridge->config().ownId()))
         return RowColour::Other;
     return RowColour::None;
 }
@@ -138,7 +139,7 @@ QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
     case Controller:
         if (s.controlledByUs)
             return tr("this console (%1)").arg(s.controllerAuthority);
-        if (s.controller.subsystem != 0)
+        if (s.controller.subsystem != 0 && !(s.controller == m_bridge->config().ownId()))
             return tr("%1.%2.%3 (%4)")
                 .arg(s.controller.subsystem)
                 .arg(s.controller.node)

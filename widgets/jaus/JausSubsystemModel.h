@@ -26,7 +26,7 @@ public:
     int rowOf(std::uint16_t subsystem) const;
     const jaus::SubsystemSnapshot* snapshotAt(int row) const;
     static QString accessText(jaus::AccessState s);
-    static RowColour rowColour(const jaus::SubsystemSnapshot& s);
+    RowColour rowColour(const jaus::SubsystemSnapshot& s) const;
 
 private:
     void onSnapshot(const jaus::SubsystemSnapshot& s);

@@ -48,7 +48,9 @@ TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDev
                                           "QPushButton:focus { border:3px solid #ffd400; }"));
     m_estop->setToolTip(tr("Emergency stop of this vehicle (Space or Esc). Never asks for confirmation."));
     connect(m_estop, &QPushButton::clicked, this, &TeleopPanel::emergencyStop);
-    for (QKeySequence k : {QKeySequence(Qt::Key_Space), QKeySequence(Qt::Key_Escape)}) {
+    // With or without the dead-man key (Shift) held: the stop must never depend on modifiers.
+    for (QKeySequence k : {QKeySequence(Qt::Key_Space), QKeySequence(Qt::Key_Escape), QKeySequence(Qt::SHIFT | Qt::Key_Space),
+                           QKeySequence(Qt::SHIFT | Qt::Key_Escape)}) {
         auto* sc = new QShortcut(k, this);
         sc->setContext(Qt::WidgetWithChildrenShortcut);
         connect(sc, &QShortcut::activated, this, &TeleopPanel::emergencyStop);

@@ -126,7 +126,7 @@ private slots:
         auto doc = ConfigDocument::parse(R"({"osyris": {"group": "233.1.1.2", "port": 50123, "beatMs": 50,
             "checksum": "crc16", "stationIndex": 9, "targetMin": 2, "targetMax": 4, "active": 15,
             "originLat": 48.1, "originLon": 11.5, "cellSize": 0.5, "tailPos": 100,
-            "machines": [{"idx": 1, "name": "Roller 1"}]}})");
+            "machines": [{"idx": 1, "name": "Roller 1", "type": "roller"}]}})");
         QVERIFY(doc.ok());
         ConfigErrors errs;
         ConfigObject root(*doc, "", errs);
@@ -142,6 +142,7 @@ private slots:
         QCOMPARE(c.passCount.cellSize, 0.5);
         QCOMPARE(c.tailPos, 100u);
         QCOMPARE(c.machineNames.at(1), std::string("Roller 1"));
+        QCOMPARE(c.machineTypes.at(1), std::string("roller"));
 
         auto bad = ConfigDocument::parse(R"({"osyris": {"group": "10.0.0.1", "port": 80, "beatMS": 5}})");
         ConfigErrors e2;

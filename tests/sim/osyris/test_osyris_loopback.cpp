@@ -21,13 +21,14 @@ namespace {
 struct Recorder : OsyrisListener {
     std::mutex m;
     std::set<int> machines, alive;
-    std::set<std::string> names;
+    std::set<std::string> names, types;
     std::atomic<int> passChanges{0}, pongs{0};
     std::vector<std::string> events;
     void onMachinePosition(const MachineSnapshot& s) override {
         std::lock_guard l(m);
         machines.insert(s.idx);
         names.insert(s.name);
+        types.insert(s.type);
     }
     void onStationAlive(std::uint8_t idx, std::optional<SlotRange>) override {
         std::lock_guard l(m);
@@ -38,6 +39,10 @@ struct Recorder : OsyrisListener {
     void onEvent(Severity, const std::string& t) override {
         std::lock_guard l(m);
         events.push_back(t);
+    }
+    std::size_t aliveCount() {
+        std::lock_guard l(m);
+        return alive.size();
     }
     std::size_t machineCount() {
         std::lock_guard l(m);
@@ -86,6 +91,7 @@ private slots:
         {
             std::lock_guard l(rec.m);
             QVERIFY(!rec.names.empty() && rec.names.count("Roller 1"));
+            QVERIFY(rec.types.count("roller") && rec.types.count("paver"));
         }
         QVERIFY2(waitFor([&] { return ocu.grid().summary().coveredCells > 50; }, 15000),
                  "a pass-count patch appears");
@@ -94,7 +100,7 @@ private slots:
         QVERIFY(waitFor([&] { return rec.pongs > 0; }, 5000));
         ocu.sendText("OCU online");
         QVERIFY(waitFor([&] { return ocu.counters().get("tx.msg") == 1; }, 2000));
-        QVERIFY(waitFor([&] { return rec.alive.size() >= 5; }, 6000));
+        QVERIFY(waitFor([&] { return rec.aliveCount() >= 5; }, 6000));
         ocu.stop();
         demo.stop();
     }

@@ -6,6 +6,8 @@
 #include "widgets/jaus/JausControlPanel.h"
 #include "widgets/jaus/JausSubsystemModel.h"
 #include "widgets/jaus/TeleopPanel.h"
+#include "widgets/jaus/VehicleDetailsWidget.h"
+#include "widgets/HoldToConfirmButton.h"
 #include "widgets/teleop/TeleopController.h"
 
 #include "jaus/JausStack.h"
@@ -14,6 +16,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableView>
+#include <QTreeWidget>
 #include <QVBoxLayout>
 #include <QtTest>
 
@@ -25,7 +28,7 @@ using namespace ocu::jaus;
 namespace {
 
 struct Site {
-    explicit Site(Role role = Role::Operator) : demo(options()) {
+    explicit Site(Role role = Role::PrimaryOperator) : demo(options()) {
         JausConfig c;
         c.subsystemId = 200;
         c.callSign = "OCU-TEST";
@@ -128,7 +131,7 @@ private slots:
         QVERIFY(!win.control->controlButton(126)->isEnabled());
         QTest::mouseClick(win.control->releaseButton(126), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(accessOf(win.control, 126) != "CONTROL_ACCEPTED", 3000);
-        QCOMPARE(colourOf(win.control, 126), JausSubsystemModel::RowColour::None);
+        QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::None, 3000);
         QTRY_COMPARE_WITH_TIMEOUT(s.ugv(126).state().controller.subsystem, std::uint16_t(0), 3000);
     }
 
