@@ -5,6 +5,7 @@
 #include <QDateTime>
 #include <QJsonObject>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ocu {
@@ -75,9 +76,20 @@ std::optional<SubsystemSnapshot> JausBridge::subsystem(std::uint16_t id) const {
 void JausBridge::onSubsystemChanged(const SubsystemSnapshot& snapshot) {
     m_snapshots.push(snapshot.subsystem, snapshot);
     publishMachine(toMachine(snapshot));
-    const bool up = snapshot.link == jaus::LinkState::Up;
-    publishLink({QStringLiteral("jaus"), up ? ocu::LinkState::Up : ocu::LinkState::Degraded, 0,
-                 QString::fromStdString(snapshot.callSign)});
+    // The JAUS link is up while at least one subsystem is; published on change only (data age comes from
+    // the machines).
+    m_linkUp[snapshot.subsystem] = snapshot.link == jaus::LinkState::Up;
+    bool anyUp = false;
+    for (const auto& [id, up] : m_linkUp)
+        anyUp = anyUp || up;
+    const ocu::LinkState state = anyUp ? ocu::LinkState::Up : ocu::LinkState::Degraded;
+    if (state != m_publishedLink) {
+        m_publishedLink = state;
+        publishLink({QStringLiteral("jaus"), state, 0,
+                     anyUp ? tr("%n subsystem(s) up", "", int(std::count_if(m_linkUp.begin(), m_linkUp.end(),
+                                                                               [](auto& p) { return p.second; })))
+                           : tr("no subsystem answering")});
+    }
 }
 
 void JausBridge::onEvent(const JausEvent& event) {

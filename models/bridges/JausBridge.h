@@ -11,6 +11,7 @@
 #include <QHash>
 #include <QTimer>
 
+#include <map>
 #include <memory>
 
 namespace ocu::jaus {
@@ -68,6 +69,9 @@ private:
     TelemetryCoalescer<std::uint16_t, jaus::SubsystemSnapshot> m_snapshots;
     QHash<std::uint16_t, jaus::SubsystemSnapshot> m_latest;
     QHash<std::uint16_t, QTimer*> m_driveTimers;
+    // io thread only
+    std::map<std::uint16_t, bool> m_linkUp;
+    ocu::LinkState m_publishedLink = ocu::LinkState::Unknown;
 };
 
 } // namespace ocu

@@ -128,6 +128,8 @@ void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
 
 void OsyrisBridge::onStationAlive(std::uint8_t idx, std::optional<SlotRange>) {
     (void)idx;
+    if (m_linkUp.exchange(true))
+        return; // published once; positions keep the data age fresh
     publishLink({QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port), ocu::LinkState::Up, 0,
                  tr("stations heard")});
 }

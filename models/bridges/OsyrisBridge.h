@@ -65,6 +65,7 @@ private:
     std::unique_ptr<osyris::OsyrisStation> m_station;
     std::unique_ptr<OsyrisPassCountLayer> m_layer;
     std::atomic<bool> m_passCountQueued{false};
+    std::atomic<bool> m_linkUp{false};
 };
 
 } // namespace ocu
