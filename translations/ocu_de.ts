@@ -1,4 +1,1574 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
+<context>
+    <name>CommandLine</name>
+    <message>
+        <source>Mixed-fleet Operator Control Unit: JAUS ground vehicles, ISO 23725 autonomous haulage and OSYRIS rollers and pavers on one console.
+Without --config it starts on the built-in simulated site.</source>
+        <translation>Operator Control Unit für gemischte Flotten: JAUS-Bodenfahrzeuge, autonome Förderung nach ISO 23725 sowie OSYRIS-Walzen und -Fertiger auf einer Konsole.
+Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translation>
+    </message>
+    <message>
+        <source>Site configuration (JSON, see docs/site-config.md). Default: the built-in simulated site.</source>
+        <translation>Baustellenkonfiguration (JSON, siehe docs/site-config.md). Standard: die eingebaute simulierte Baustelle.</translation>
+    </message>
+    <message>
+        <source>Do not start the built-in simulators, even if the configuration enables them.</source>
+        <translation>Eingebaute Simulatoren nicht starten, auch wenn die Konfiguration sie aktiviert.</translation>
+    </message>
+    <message>
+        <source>Write a PNG screenshot to FILE after --settle seconds, then exit 0.</source>
+        <translation>Nach --settle Sekunden ein PNG-Bildschirmfoto nach FILE schreiben, dann mit 0 beenden.</translation>
+    </message>
+    <message>
+        <source>What --screenshot captures: all (the whole window) or one panel: %1.</source>
+        <translation>Was --screenshot aufnimmt: all (das ganze Fenster) oder ein Panel: %1.</translation>
+    </message>
+    <message>
+        <source>Window size for the screenshot, e.g. 1600x1000.</source>
+        <translation>Fenstergröße für das Bildschirmfoto, z. B. 1600x1000.</translation>
+    </message>
+    <message>
+        <source>Seconds to let live data arrive before the screenshot (default 3).</source>
+        <translation>Sekunden Wartezeit auf Live-Daten vor dem Bildschirmfoto (Standard 3).</translation>
+    </message>
+    <message>
+        <source>User interface language: en, de or fr (default: the system locale).</source>
+        <translation>Sprache der Oberfläche: en, de oder fr (Standard: Systemgebietsschema).</translation>
+    </message>
+    <message>
+        <source>Enable debug output for these logging categories, comma-separated: ocu.jaus, ocu.iso, ocu.osyris, ocu.ui, ocu.sim, ocu.* (Qt wildcard rules).</source>
+        <translation>Debug-Ausgabe für diese Logging-Kategorien aktivieren, durch Kommas getrennt: ocu.jaus, ocu.iso, ocu.osyris, ocu.ui, ocu.sim, ocu.* (Qt-Platzhalterregeln).</translation>
+    </message>
+    <message>
+        <source>No window: print one JSON line per machine change and per event on stdout, read JSON-line commands on stdin (see README).</source>
+        <translation>Kein Fenster: je Maschinenänderung und je Ereignis eine JSON-Zeile auf stdout ausgeben, JSON-Zeilen-Befehle von stdin lesen (siehe README).</translation>
+    </message>
+    <message>
+        <source>With --headless: stop after SECONDS (default: run until stdin closes).</source>
+        <translation>Mit --headless: nach SECONDS beenden (Standard: bis stdin geschlossen wird).</translation>
+    </message>
+    <message>
+        <source>Start with the default panel layout instead of the saved one.</source>
+        <translation>Mit dem Standard-Panel-Layout statt dem gespeicherten starten.</translation>
+    </message>
+    <message>
+        <source>Unexpected argument: %1</source>
+        <translation>Unerwartetes Argument: %1</translation>
+    </message>
+    <message>
+        <source>--view: unknown view &quot;%1&quot;; use all, %2</source>
+        <translation>--view: unbekannte Ansicht „%1“; zulässig: all, %2</translation>
+    </message>
+    <message>
+        <source>--size: expected WxH such as 1600x1000, got &quot;%1&quot;</source>
+        <translation>--size: WxH erwartet, z. B. 1600x1000, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <source>--size: %1 is outside 320x240 .. 8192x8192</source>
+        <translation>--size: %1 liegt außerhalb von 320x240 .. 8192x8192</translation>
+    </message>
+    <message>
+        <source>--settle: expected seconds between 0 and 3600, got &quot;%1&quot;</source>
+        <translation>--settle: Sekunden zwischen 0 und 3600 erwartet, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <source>--lang: &quot;%1&quot; is not one of en, de, fr</source>
+        <translation>--lang: „%1“ ist nicht en, de oder fr</translation>
+    </message>
+    <message>
+        <source>--duration: expected seconds &gt;= 0, got &quot;%1&quot;</source>
+        <translation>--duration: Sekunden &gt;= 0 erwartet, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <source>--headless and --screenshot cannot be combined</source>
+        <translation>--headless und --screenshot können nicht kombiniert werden</translation>
+    </message>
+</context>
+<context>
+    <name>ConsoleApp</name>
+    <message>
+        <source>The site configuration was refused:
+%1</source>
+        <translation>Die Baustellenkonfiguration wurde abgelehnt:
+%1</translation>
+    </message>
+    <message>
+        <source>Operator Control Unit</source>
+        <translation>Bedienstation</translation>
+    </message>
+    <message>
+        <source>Operator Control Unit — %1</source>
+        <translation>Bedienstation — %1</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>STOP ALL</source>
+        <translation>ALLE STOPPEN</translation>
+    </message>
+    <message>
+        <source>Stop every machine of every protocol (F12)</source>
+        <translation>Alle Maschinen aller Protokolle stoppen (F12)</translation>
+    </message>
+</context>
+<context>
+    <name>Screenshot</name>
+    <message>
+        <source>unknown view &quot;%1&quot;</source>
+        <translation>unbekannte Ansicht „%1“</translation>
+    </message>
+    <message>
+        <source>nothing to grab for view &quot;%1&quot;</source>
+        <translation>nichts aufzunehmen für Ansicht „%1“</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>SiteLoader</name>
+    <message>
+        <source>%1: cannot open the site configuration: %2</source>
+        <translation>%1: Baustellenkonfiguration kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1: larger than 64 MiB</source>
+        <translation>%1: größer als 64 MiB</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::AlarmModel</name>
+    <message>
+        <source>link %1 lost%2</source>
+        <translation>Verbindung %1 verloren%2</translation>
+    </message>
+    <message>
+        <source>link %1 restored</source>
+        <translation>Verbindung %1 wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>no data from %1</source>
+        <translation>keine Daten von %1</translation>
+    </message>
+    <message>
+        <source>health fault</source>
+        <translation>Zustandsfehler</translation>
+    </message>
+    <message>
+        <source>Time (UTC)</source>
+        <translation>Zeit (UTC)</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>Schweregrad</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>Ack</source>
+        <translation>Quitt.</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>NO</source>
+        <translation>NEIN</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::AxisDisplay</name>
+    <message>
+        <source>forward</source>
+        <translation>vorwärts</translation>
+    </message>
+    <message>
+        <source>turn</source>
+        <translation>drehen</translation>
+    </message>
+    <message>
+        <source>axis %1</source>
+        <translation>Achse %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::EventLogWidget</name>
+    <message>
+        <source>Unacknowledged</source>
+        <translation>Nicht quittiert</translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation>Quittieren</translation>
+    </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Alle quittieren</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>CSV exportieren…</translation>
+    </message>
+    <message>
+        <source>Search events…</source>
+        <translation>Ereignisse suchen…</translation>
+    </message>
+    <message>
+        <source>All severities</source>
+        <translation>Alle Schweregrade</translation>
+    </message>
+    <message>
+        <source>Warning and above</source>
+        <translation>Warnung und höher</translation>
+    </message>
+    <message>
+        <source>Alarms only</source>
+        <translation>Nur Alarme</translation>
+    </message>
+    <message>
+        <source>Export events</source>
+        <translation>Ereignisse exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>&lt;b style=&apos;color:#d01010&apos;&gt;%1 unacknowledged&lt;/b&gt;</source>
+        <translation>&lt;b style=&apos;color:#d01010&apos;&gt;%1 nicht quittiert&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>no open alarms</source>
+        <translation>keine offenen Alarme</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::FleetListWidget</name>
+    <message>
+        <source>Filter machines…</source>
+        <translation>Maschinen filtern…</translation>
+    </message>
+    <message>
+        <source>All protocols</source>
+        <translation>Alle Protokolle</translation>
+    </message>
+    <message>
+        <source>All states</source>
+        <translation>Alle Zustände</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Fault / stopped</source>
+        <translation>Fehler / gestoppt</translation>
+    </message>
+    <message>
+        <source>Stale / no comms</source>
+        <translation>Veraltet / keine Verbindung</translation>
+    </message>
+    <message>
+        <source>Autonomous</source>
+        <translation>Autonom</translation>
+    </message>
+    <message>
+        <source>Large rows</source>
+        <translation>Große Zeilen</translation>
+    </message>
+    <message>
+        <source>Switch between dense rows (workstation) and large rows (field laptop)</source>
+        <translation>Zwischen kompakten Zeilen (Arbeitsplatz) und großen Zeilen (Feld-Laptop) umschalten</translation>
+    </message>
+    <message>
+        <source>Id: %1</source>
+        <translation>ID: %1</translation>
+    </message>
+    <message>
+        <source>Name: %1</source>
+        <translation>Name: %1</translation>
+    </message>
+    <message>
+        <source>Type: %1</source>
+        <translation>Typ: %1</translation>
+    </message>
+    <message>
+        <source>Protocol: %1</source>
+        <translation>Protokoll: %1</translation>
+    </message>
+    <message>
+        <source>Link: %1</source>
+        <translation>Verbindung: %1</translation>
+    </message>
+    <message>
+        <source>Position: E %1 m, N %2 m, U %3 m</source>
+        <translation>Position: E %1 m, N %2 m, U %3 m</translation>
+    </message>
+    <message>
+        <source>WGS84: %1, %2</source>
+        <translation>WGS84: %1, %2</translation>
+    </message>
+    <message>
+        <source>Heading: %1°  Speed: %2 km/h</source>
+        <translation>Kurs: %1°  Geschw.: %2 km/h</translation>
+    </message>
+    <message>
+        <source>Size: %1 × %2 × %3 m</source>
+        <translation>Größe: %1 × %2 × %3 m</translation>
+    </message>
+    <message>
+        <source>Mode: %1 (%2)</source>
+        <translation>Modus: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Stop (reported): %1 %2</source>
+        <translation>Stopp (gemeldet): %1 %2</translation>
+    </message>
+    <message>
+        <source>Controller: %1 (%2)</source>
+        <translation>Gesteuert von: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Health: %1 %2</source>
+        <translation>Zustand: %1 %2</translation>
+    </message>
+    <message>
+        <source>Centre on map</source>
+        <translation>Auf Karte zentrieren</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stoppen</translation>
+    </message>
+    <message>
+        <source>Stop %1 selected</source>
+        <translation>%1 ausgewählte stoppen</translation>
+    </message>
+    <message>
+        <source>Details…</source>
+        <translation>Details…</translation>
+    </message>
+    <message>
+        <source>Machine %1</source>
+        <translation>Maschine %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::FleetModel</name>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Link / age</source>
+        <translation>Verbindung / Alter</translation>
+    </message>
+    <message>
+        <source>E (m)</source>
+        <translation>E (m)</translation>
+    </message>
+    <message>
+        <source>N (m)</source>
+        <translation>N (m)</translation>
+    </message>
+    <message>
+        <source>Lat</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Lon</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Kurs</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschw.</translation>
+    </message>
+    <message>
+        <source>Mode / state</source>
+        <translation>Modus / Zustand</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Gesteuert von</translation>
+    </message>
+    <message>
+        <source>Health</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Last message</source>
+        <translation>Letzte Meldung</translation>
+    </message>
+    <message>
+        <source>STOPPED</source>
+        <translation>GESTOPPT</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>in Betrieb</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>this OCU</source>
+        <translation>diese Konsole</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::HoldToConfirmButton</name>
+    <message>
+        <source>Press and hold to confirm</source>
+        <translation>Zum Bestätigen gedrückt halten</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::ImageView</name>
+    <message>
+        <source>3D view unavailable</source>
+        <translation>3D-Ansicht nicht verfügbar</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::IsoBridge</name>
+    <message>
+        <source>connecting</source>
+        <translation>Verbindungsaufbau</translation>
+    </message>
+    <message>
+        <source>ISO 23725: a link could not start (see the event log)</source>
+        <translation>ISO 23725: eine Verbindung konnte nicht starten (siehe Ereignisprotokoll)</translation>
+    </message>
+    <message>
+        <source>ISO 23725 link %1 down: %2</source>
+        <translation>ISO 23725-Verbindung %1 ausgefallen: %2</translation>
+    </message>
+    <message>
+        <source>AHS %1 reports all-stop %2%3</source>
+        <translation>AHS %1 meldet Gesamtstopp %2%3</translation>
+    </message>
+    <message>
+        <source> (issued by another system)</source>
+        <translation> (von einem anderen System ausgelöst)</translation>
+    </message>
+    <message>
+        <source>Fleet definition discrepancy on %1: %2</source>
+        <translation>Abweichung der Flottendefinition bei %1: %2</translation>
+    </message>
+    <message>
+        <source>all-stop</source>
+        <translation>Gesamtstopp</translation>
+    </message>
+    <message>
+        <source>no active diagnostics</source>
+        <translation>keine aktive Diagnose</translation>
+    </message>
+    <message>
+        <source>diagnostics %1</source>
+        <translation>Diagnose %1</translation>
+    </message>
+    <message>
+        <source>fuel %1 %</source>
+        <translation>Kraftstoff %1 %</translation>
+    </message>
+    <message>
+        <source>no ISO 23725 link configured</source>
+        <translation>keine ISO 23725-Verbindung konfiguriert</translation>
+    </message>
+    <message>
+        <source>all-stop Apply sent on %1 (state shown as the AHS reports it)</source>
+        <translation>Gesamtstopp Apply an %1 gesendet (Zustand wie vom AHS gemeldet)</translation>
+    </message>
+    <message>
+        <source>unknown ISO 23725 machine: %1</source>
+        <translation>unbekannte ISO 23725-Maschine: %1</translation>
+    </message>
+    <message>
+        <source>all-stop Apply sent to AHS %1 (ISO 23725 stops per AHS, not per machine)</source>
+        <translation>Gesamtstopp Apply an AHS %1 gesendet (ISO 23725 stoppt je AHS, nicht je Maschine)</translation>
+    </message>
+    <message>
+        <source>all-stop Remove sent to AHS %1</source>
+        <translation>Gesamtstopp Remove an AHS %1 gesendet</translation>
+    </message>
+    <message>
+        <source>%1: unknown ISO 23725 link &quot;%2&quot;</source>
+        <translation>%1: unbekannte ISO 23725-Verbindung „%2“</translation>
+    </message>
+    <message>
+        <source>all-stop Apply sent to %1</source>
+        <translation>Gesamtstopp Apply an %1 gesendet</translation>
+    </message>
+    <message>
+        <source>all-stop Remove sent to %1</source>
+        <translation>Gesamtstopp Remove an %1 gesendet</translation>
+    </message>
+    <message>
+        <source>map requested from %1</source>
+        <translation>Karte von %1 angefordert</translation>
+    </message>
+    <message>
+        <source>reset_assignment: &quot;id&quot; must name an ISO 23725 machine</source>
+        <translation>reset_assignment: &quot;id&quot; muss eine ISO 23725-Maschine bezeichnen</translation>
+    </message>
+    <message>
+        <source>assignment reset sent</source>
+        <translation>Zuweisungs-Reset gesendet</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::JausBridge</name>
+    <message>
+        <source>JAUS: %1</source>
+        <translation>JAUS: %1</translation>
+    </message>
+    <message>
+        <source>searching for subsystems</source>
+        <translation>Suche nach Subsystemen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n subsystem(s) up</source>
+        <translation>
+            <numerusform>%n Subsystem aktiv</numerusform>
+            <numerusform>%n Subsysteme aktiv</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no subsystem answering</source>
+        <translation>kein Subsystem antwortet</translation>
+    </message>
+    <message>
+        <source>emergency</source>
+        <translation>Not-Halt</translation>
+    </message>
+    <message>
+        <source>this console (%1)</source>
+        <translation>diese Konsole (%1)</translation>
+    </message>
+    <message>
+        <source>%1 refused: this console&apos;s JAUS role is MONITOR</source>
+        <translation>%1: abgelehnt, JAUS-Rolle dieser Konsole ist MONITOR</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <translation>Not-Halt</translation>
+    </message>
+    <message numerus="yes">
+        <source>SetEmergency sent to %n vehicle(s) this console controls</source>
+        <translation>
+            <numerusform>SetEmergency an %n von dieser Konsole gesteuertes Fahrzeug gesendet</numerusform>
+            <numerusform>SetEmergency an %n von dieser Konsole gesteuerte Fahrzeuge gesendet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not a JAUS machine: %1</source>
+        <translation>keine JAUS-Maschine: %1</translation>
+    </message>
+    <message>
+        <source>SetEmergency sent to %1</source>
+        <translation>SetEmergency an %1 gesendet</translation>
+    </message>
+    <message>
+        <source>clear emergency</source>
+        <translation>Not-Halt aufheben</translation>
+    </message>
+    <message>
+        <source>ClearEmergency sent to %1</source>
+        <translation>ClearEmergency an %1 gesendet</translation>
+    </message>
+    <message>
+        <source>drive</source>
+        <translation>Fahren</translation>
+    </message>
+    <message>
+        <source>drive refused: this console does not control %1</source>
+        <translation>Fahren abgelehnt: diese Konsole steuert %1 nicht</translation>
+    </message>
+    <message>
+        <source>drive command sent</source>
+        <translation>Fahrbefehl gesendet</translation>
+    </message>
+    <message>
+        <source>drive stopped</source>
+        <translation>Fahren gestoppt</translation>
+    </message>
+    <message>
+        <source>control released on every subsystem</source>
+        <translation>Steuerung auf allen Subsystemen freigegeben</translation>
+    </message>
+    <message>
+        <source>%1: &quot;id&quot; must name a JAUS machine such as &quot;jaus:101&quot;</source>
+        <translation>%1: &quot;id&quot; muss eine JAUS-Maschine bezeichnen, z. B. &quot;jaus:101&quot;</translation>
+    </message>
+    <message>
+        <source>ReleaseControl sent to %1</source>
+        <translation>ReleaseControl an %1 gesendet</translation>
+    </message>
+    <message>
+        <source>RequestControl sent to %1 with authority %2</source>
+        <translation>RequestControl an %1 mit Autorität %2 gesendet</translation>
+    </message>
+    <message>
+        <source>Resume sent</source>
+        <translation>Resume gesendet</translation>
+    </message>
+    <message>
+        <source>Standby sent</source>
+        <translation>Standby gesendet</translation>
+    </message>
+    <message>
+        <source>Shutdown sent</source>
+        <translation>Shutdown gesendet</translation>
+    </message>
+    <message>
+        <source>Reset sent</source>
+        <translation>Reset gesendet</translation>
+    </message>
+    <message>
+        <source>drive: &quot;mode&quot; must be &quot;velocity&quot; or &quot;effort&quot;</source>
+        <translation>drive: &quot;mode&quot; muss &quot;velocity&quot; oder &quot;effort&quot; sein</translation>
+    </message>
+    <message>
+        <source>drive: &quot;duration&quot; must be between 0 and 60 seconds</source>
+        <translation>drive: &quot;duration&quot; muss zwischen 0 und 60 Sekunden liegen</translation>
+    </message>
+    <message>
+        <source>drive: effort must be within ±100 %</source>
+        <translation>drive: Stellwert muss innerhalb von ±100 % liegen</translation>
+    </message>
+    <message>
+        <source>driving %1 for %2 s</source>
+        <translation>%1 fährt für %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::JausControlPanel</name>
+    <message>
+        <source>Release all</source>
+        <translation>Alle freigeben</translation>
+    </message>
+    <message>
+        <source>This console: %1 [%2] · authority %3</source>
+        <translation>Diese Konsole: %1 [%2] · Autorität %3</translation>
+    </message>
+    <message>
+        <source>This console: %1 [%2] · MONITOR role: commands are disabled</source>
+        <translation>Diese Konsole: %1 [%2] · Rolle MONITOR: Befehle deaktiviert</translation>
+    </message>
+    <message>
+        <source>Monitor</source>
+        <translation>Beobachten</translation>
+    </message>
+    <message>
+        <source>Select this vehicle to watch it (no control)</source>
+        <translation>Dieses Fahrzeug zur Beobachtung auswählen (keine Steuerung)</translation>
+    </message>
+    <message>
+        <source>Control</source>
+        <translation>Steuern</translation>
+    </message>
+    <message>
+        <source>Request control with this console&apos;s authority</source>
+        <translation>Steuerung mit der Autorität dieser Konsole anfordern</translation>
+    </message>
+    <message>
+        <source>Release</source>
+        <translation>Freigeben</translation>
+    </message>
+    <message>
+        <source>Release control of this vehicle</source>
+        <translation>Steuerung dieses Fahrzeugs freigeben</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::JausSubsystemModel</name>
+    <message>
+        <source>unnamed</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>%1 · %2 s</source>
+        <translation>%1 · %2 s</translation>
+    </message>
+    <message>
+        <source>this console (%1)</source>
+        <translation>diese Konsole (%1)</translation>
+    </message>
+    <message>
+        <source>%1.%2.%3 (%4)</source>
+        <translation>%1.%2.%3 (%4)</translation>
+    </message>
+    <message>
+        <source>nobody</source>
+        <translation>niemand</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source> · EMERGENCY</source>
+        <translation> · EMERGENCY</translation>
+    </message>
+    <message>
+        <source>Vehicle [ID]</source>
+        <translation>Fahrzeug [ID]</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>Zugriff</translation>
+    </message>
+    <message>
+        <source>Controlled by</source>
+        <translation>Gesteuert von</translation>
+    </message>
+    <message>
+        <source>Management</source>
+        <translation>Verwaltung</translation>
+    </message>
+    <message>
+        <source>Health</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Actions</source>
+        <translation>Aktionen</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::LegendOverlay</name>
+    <message>
+        <source>Passes</source>
+        <translation>Überfahrten</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::LinkIndicator</name>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <source>degraded</source>
+        <translation>beeinträchtigt</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>ausgefallen</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::MachineStopControls</name>
+    <message>
+        <source>Stop</source>
+        <translation>Stoppen</translation>
+    </message>
+    <message>
+        <source>Hold to release</source>
+        <translation>Halten zum Freigeben</translation>
+    </message>
+    <message>
+        <source>No machine selected</source>
+        <translation>Keine Maschine ausgewählt</translation>
+    </message>
+    <message>
+        <source>STOPPED%1</source>
+        <translation>GESTOPPT%1</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>in Betrieb</translation>
+    </message>
+    <message>
+        <source>stop state unknown</source>
+        <translation>Stoppzustand unbekannt</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::MainWindow</name>
+    <message>
+        <source>Operator Control Unit</source>
+        <translation>Bedienstation</translation>
+    </message>
+    <message>
+        <source>Fleet</source>
+        <translation>Flotte</translation>
+    </message>
+    <message>
+        <source>Site map (2D)</source>
+        <translation>Lageplan (2D)</translation>
+    </message>
+    <message>
+        <source>Site 3D</source>
+        <translation>Baustelle 3D</translation>
+    </message>
+    <message>
+        <source>JAUS control</source>
+        <translation>JAUS-Steuerung</translation>
+    </message>
+    <message>
+        <source>Teleop</source>
+        <translation>Fernsteuerung</translation>
+    </message>
+    <message>
+        <source>Pass counts</source>
+        <translation>Verdichtungsübergänge</translation>
+    </message>
+    <message>
+        <source>Event log</source>
+        <translation>Ereignisprotokoll</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Startet…</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Sicherheit</translation>
+    </message>
+    <message>
+        <source>STOP ALL</source>
+        <translation>ALLE STOPPEN</translation>
+    </message>
+    <message>
+        <source>Stop every machine this console may stop: JAUS emergency stop to the vehicles it controls and ISO 23725 all-stop to every AHS link (F12 or Ctrl+Shift+Space). Stopping never asks for confirmation.</source>
+        <translation>Alle Maschinen stoppen, die diese Konsole stoppen darf: JAUS-Not-Halt an die von ihr gesteuerten Fahrzeuge und ISO 23725-Gesamtstopp an jede AHS-Verbindung (F12 oder Strg+Umschalt+Leertaste). Stoppen fragt nie nach Bestätigung.</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>Save &amp;screenshot…</source>
+        <translation>Bildschirmfoto &amp;speichern…</translation>
+    </message>
+    <message>
+        <source>Save screenshot</source>
+        <translation>Bildschirmfoto speichern</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>Layout &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>&amp;Night palette</source>
+        <translation>&amp;Nachtpalette</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>F12 or Ctrl+Shift+Space: STOP ALL
+Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop
+Site map: arrows pan, +/- zoom, F follow the selected machine
+Ctrl+Shift+N: night palette
+Ctrl+Shift+P: save a screenshot</source>
+        <translation>F12 oder Strg+Umschalt+Leertaste: ALLE STOPPEN
+Fernsteuerung: W/A/S/D oder Pfeiltasten bei gehaltener Totmanntaste; Leertaste oder Esc: Not-Halt
+Lageplan: Pfeiltasten verschieben, +/- zoomen, F folgt der ausgewählten Maschine
+Strg+Umschalt+N: Nachtpalette
+Strg+Umschalt+P: Bildschirmfoto speichern</translation>
+    </message>
+    <message>
+        <source>&amp;About</source>
+        <translation>&amp;Über</translation>
+    </message>
+    <message>
+        <source>About the Operator Control Unit</source>
+        <translation>Über die Bedienstation</translation>
+    </message>
+    <message>
+        <source>Operator Control Unit %1
+JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 and OSYRIS on one console.</source>
+        <translation>Bedienstation %1
+JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</translation>
+    </message>
+    <message>
+        <source>No unacknowledged alarms</source>
+        <translation>Keine unquittierten Alarme</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unacknowledged alarm(s)</source>
+        <translation>
+            <numerusform>%n unquittierter Alarm</numerusform>
+            <numerusform>%n unquittierte Alarme</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ocu::OsyrisBridge</name>
+    <message>
+        <source>OSYRIS: %1</source>
+        <translation>OSYRIS: %1</translation>
+    </message>
+    <message>
+        <source>joined, waiting for stations</source>
+        <translation>beigetreten, warte auf Stationen</translation>
+    </message>
+    <message>
+        <source>Machine %1</source>
+        <translation>Maschine %1</translation>
+    </message>
+    <message>
+        <source>vibration on</source>
+        <translation>Vibration ein</translation>
+    </message>
+    <message>
+        <source>vibration off</source>
+        <translation>Vibration aus</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>vorwärts</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>rückwärts</translation>
+    </message>
+    <message>
+        <source>standing</source>
+        <translation>steht</translation>
+    </message>
+    <message>
+        <source>GPS shadow</source>
+        <translation>GPS-Abschattung</translation>
+    </message>
+    <message>
+        <source>position not valid</source>
+        <translation>Position ungültig</translation>
+    </message>
+    <message>
+        <source>low position accuracy</source>
+        <translation>geringe Positionsgenauigkeit</translation>
+    </message>
+    <message>
+        <source>high accuracy</source>
+        <translation>hohe Genauigkeit</translation>
+    </message>
+    <message>
+        <source>medium accuracy</source>
+        <translation>mittlere Genauigkeit</translation>
+    </message>
+    <message>
+        <source>stations heard</source>
+        <translation>Stationen empfangen</translation>
+    </message>
+    <message>
+        <source>Message from station %1: %2</source>
+        <translation>Meldung von Station %1: %2</translation>
+    </message>
+    <message>
+        <source>OSYRIS has no remote stop: STOP message sent to every machine&apos;s display</source>
+        <translation>OSYRIS hat keinen Fern-Stopp: STOP-Meldung an das Display jeder Maschine gesendet</translation>
+    </message>
+    <message>
+        <source>not an OSYRIS machine: %1</source>
+        <translation>keine OSYRIS-Maschine: %1</translation>
+    </message>
+    <message>
+        <source>OSYRIS has no remote stop: STOP message sent to the machine displays</source>
+        <translation>OSYRIS hat keinen Fern-Stopp: STOP-Meldung an die Maschinendisplays gesendet</translation>
+    </message>
+    <message>
+        <source>%1: OSYRIS machines carry no stop state to clear</source>
+        <translation>%1: OSYRIS-Maschinen haben keinen Stoppzustand zum Aufheben</translation>
+    </message>
+    <message>
+        <source>send_text: &quot;text&quot; must be 1 to 80 bytes (CmMsg)</source>
+        <translation>send_text: &quot;text&quot; muss 1 bis 80 Bytes lang sein (CmMsg)</translation>
+    </message>
+    <message>
+        <source>message sent to every station</source>
+        <translation>Meldung an alle Stationen gesendet</translation>
+    </message>
+    <message>
+        <source>ping: &quot;idx&quot; must be a station index 0-253</source>
+        <translation>ping: &quot;idx&quot; muss ein Stationsindex 0-253 sein</translation>
+    </message>
+    <message>
+        <source>PING sent to station %1</source>
+        <translation>PING an Station %1 gesendet</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::OwnPosition</name>
+    <message>
+        <source>position source error %1</source>
+        <translation>Fehler der Positionsquelle %1</translation>
+    </message>
+    <message>
+        <source>no system position source available</source>
+        <translation>keine System-Positionsquelle verfügbar</translation>
+    </message>
+    <message>
+        <source>cannot open NMEA log %1: %2</source>
+        <translation>NMEA-Log %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>no NMEA device</source>
+        <translation>kein NMEA-Gerät</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::PassCountPanel</name>
+    <message>
+        <source>Pass count (discrete)</source>
+        <translation>Überfahrten (diskret)</translation>
+    </message>
+    <message>
+        <source>Summary (below / within / above)</source>
+        <translation>Übersicht (unter / im / über Soll)</translation>
+    </message>
+    <message>
+        <source>Palette</source>
+        <translation>Palette</translation>
+    </message>
+    <message>
+        <source>Target passes</source>
+        <translation>Soll-Überfahrten</translation>
+    </message>
+    <message>
+        <source>No pass-count data</source>
+        <translation>Keine Überfahrtsdaten</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%1&apos;&gt;■&lt;/span&gt; below %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%4&apos;&gt;■&lt;/span&gt; within %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%8&apos;&gt;■&lt;/span&gt; above %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;covered area&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%1&apos;&gt;■&lt;/span&gt; unter %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%4&apos;&gt;■&lt;/span&gt; im Soll %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%8&apos;&gt;■&lt;/span&gt; über %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;abgedeckte Fläche&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::SdlJoystickInput</name>
+    <message>
+        <source>No joystick</source>
+        <translation>Kein Joystick</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::Site3DFeed</name>
+    <message>
+        <source>below %1</source>
+        <translation>unter %1</translation>
+    </message>
+    <message>
+        <source>%1–%2</source>
+        <translation>%1–%2</translation>
+    </message>
+    <message>
+        <source>above %1</source>
+        <translation>über %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::Site3DView</name>
+    <message>
+        <source>Orbit</source>
+        <translation>Orbit</translation>
+    </message>
+    <message>
+        <source>Free orbit camera (drag to rotate, wheel to zoom)</source>
+        <translation>Freie Orbit-Kamera (Ziehen zum Drehen, Mausrad zum Zoomen)</translation>
+    </message>
+    <message>
+        <source>Follow</source>
+        <translation>Folgen</translation>
+    </message>
+    <message>
+        <source>Keep the selected machine in the centre</source>
+        <translation>Ausgewählte Maschine in der Mitte halten</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Draufsicht</translation>
+    </message>
+    <message>
+        <source>Top-down view, north up</source>
+        <translation>Draufsicht, Norden oben</translation>
+    </message>
+    <message>
+        <source>Reset view</source>
+        <translation>Ansicht zurücksetzen</translation>
+    </message>
+    <message>
+        <source>3D view unavailable: %1</source>
+        <translation>3D-Ansicht nicht verfügbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::SiteMapView</name>
+    <message>
+        <source>below (&lt;%1)</source>
+        <translation>unter (&lt;%1)</translation>
+    </message>
+    <message>
+        <source>within %1–%2</source>
+        <translation>im Soll %1–%2</translation>
+    </message>
+    <message>
+        <source>above (&gt;%1)</source>
+        <translation>über (&gt;%1)</translation>
+    </message>
+    <message>
+        <source>Passes · target %1–%2</source>
+        <translation>Überfahrten · Soll %1–%2</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::SiteRuntime</name>
+    <message>
+        <source>Simulated site: %1</source>
+        <translation>Simulierte Baustelle: %1</translation>
+    </message>
+    <message>
+        <source>Own position: %1</source>
+        <translation>Eigene Position: %1</translation>
+    </message>
+    <message>
+        <source>This build has no 3D view (configured with OCU_WITH_VTK=OFF).</source>
+        <translation>Dieser Build hat keine 3D-Ansicht (konfiguriert mit OCU_WITH_VTK=OFF).</translation>
+    </message>
+    <message>
+        <source>No JAUS section in the site configuration: no JAUS vehicles on this site.</source>
+        <translation>Kein JAUS-Abschnitt in der Baustellenkonfiguration: keine JAUS-Fahrzeuge auf dieser Baustelle.</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::StopAllButton</name>
+    <message>
+        <source>STOP ALL</source>
+        <translation>ALLE STOPPEN</translation>
+    </message>
+    <message>
+        <source>Stop every machine of every protocol (F12)</source>
+        <translation>Alle Maschinen aller Protokolle stoppen (F12)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::TeleopController</name>
+    <message>
+        <source>control lost or disabled</source>
+        <translation>Steuerung verloren oder deaktiviert</translation>
+    </message>
+    <message>
+        <source>joystick released</source>
+        <translation>Joystick losgelassen</translation>
+    </message>
+    <message>
+        <source>joystick unplugged</source>
+        <translation>Joystick abgesteckt</translation>
+    </message>
+    <message>
+        <source>dead-man key released</source>
+        <translation>Totmanntaste losgelassen</translation>
+    </message>
+    <message>
+        <source>keys released</source>
+        <translation>Tasten losgelassen</translation>
+    </message>
+    <message>
+        <source>stick released</source>
+        <translation>Stick losgelassen</translation>
+    </message>
+    <message>
+        <source>input released</source>
+        <translation>Eingabe losgelassen</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::TeleopPanel</name>
+    <message>
+        <source>E-STOP</source>
+        <translation>NOT-HALT</translation>
+    </message>
+    <message>
+        <source>Hold to clear emergency</source>
+        <translation>Halten, um Not-Halt aufzuheben</translation>
+    </message>
+    <message>
+        <source>Emergency stop of this vehicle (Space or Esc). Never asks for confirmation.</source>
+        <translation>Not-Halt dieses Fahrzeugs (Leertaste oder Esc). Fragt nie nach Bestätigung.</translation>
+    </message>
+    <message>
+        <source>Velocity (m/s, rad/s)</source>
+        <translation>Geschwindigkeit (m/s, rad/s)</translation>
+    </message>
+    <message>
+        <source>Wrench effort (%)</source>
+        <translation>Stellwert (%)</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Speed limit</source>
+        <translation>Geschwindigkeitsbegrenzung</translation>
+    </message>
+    <message>
+        <source>Joystick</source>
+        <translation>Joystick</translation>
+    </message>
+    <message>
+        <source>Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows.</source>
+        <translation>Tastatur: Umschalt (Totmann) halten und W/A/S/D oder Pfeiltasten verwenden.</translation>
+    </message>
+    <message>
+        <source>window lost focus</source>
+        <translation>Fenster hat Fokus verloren</translation>
+    </message>
+    <message>
+        <source>vehicle changed</source>
+        <translation>Fahrzeug gewechselt</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <translation>Not-Halt</translation>
+    </message>
+    <message>
+        <source>none connected</source>
+        <translation>keines angeschlossen</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>No JAUS vehicle selected</source>
+        <translation>Kein JAUS-Fahrzeug ausgewählt</translation>
+    </message>
+    <message>
+        <source>Select a vehicle in the fleet list or the JAUS control panel, then take control.</source>
+        <translation>Fahrzeug in der Flottenliste oder im JAUS-Steuerungspanel auswählen, dann Steuerung übernehmen.</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1 [%2]</translation>
+    </message>
+    <message>
+        <source>MONITOR role: driving disabled</source>
+        <translation>Rolle MONITOR: Fahren deaktiviert</translation>
+    </message>
+    <message>
+        <source>not controlled by this console: take control first</source>
+        <translation>nicht von dieser Konsole gesteuert: zuerst Steuerung übernehmen</translation>
+    </message>
+    <message>
+        <source>controlled by this console</source>
+        <translation>von dieser Konsole gesteuert</translation>
+    </message>
+    <message>
+        <source>EMERGENCY — hold the clear button to release</source>
+        <translation>EMERGENCY — zum Aufheben die Freigabetaste halten</translation>
+    </message>
+    <message>
+        <source>link %1</source>
+        <translation>Verbindung %1</translation>
+    </message>
+    <message>
+        <source>state %1</source>
+        <translation>Zustand %1</translation>
+    </message>
+    <message>
+        <source>drive session open</source>
+        <translation>Fahrsitzung offen</translation>
+    </message>
+    <message>
+        <source>drive session closed (vehicle stops after its 1 s drive timeout)</source>
+        <translation>Fahrsitzung geschlossen (Fahrzeug hält nach seinem Fahr-Timeout von 1 s an)</translation>
+    </message>
+    <message>
+        <source>speed %1 m/s</source>
+        <translation>Geschw. %1 m/s</translation>
+    </message>
+    <message>
+        <source>heading %1°</source>
+        <translation>Kurs %1°</translation>
+    </message>
+    <message>
+        <source>pose %1, %2</source>
+        <translation>Pose %1, %2</translation>
+    </message>
+    <message>
+        <source>local %1 / %2 m</source>
+        <translation>lokal %1 / %2 m</translation>
+    </message>
+    <message>
+        <source>%1 % · %2 m/s</source>
+        <translation>%1 % · %2 m/s</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>teleop panel lost keyboard focus</source>
+        <translation>Fernsteuerungs-Panel hat Tastaturfokus verloren</translation>
+    </message>
+    <message>
+        <source>teleop panel hidden</source>
+        <translation>Fernsteuerungs-Panel ausgeblendet</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::VehicleDetailsWidget</name>
+    <message>
+        <source>Item</source>
+        <translation>Eintrag</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Identification</source>
+        <translation>Identifikation</translation>
+    </message>
+    <message>
+        <source>Call sign</source>
+        <translation>Rufzeichen</translation>
+    </message>
+    <message>
+        <source>Subsystem ID</source>
+        <translation>Subsystem-ID</translation>
+    </message>
+    <message>
+        <source>Endpoint</source>
+        <translation>Endpunkt</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>Zugriff</translation>
+    </message>
+    <message>
+        <source>Management</source>
+        <translation>Verwaltung</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>Emergency</source>
+        <translation>Not-Halt</translation>
+    </message>
+    <message>
+        <source>YES</source>
+        <translation>JA</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>Drive session</source>
+        <translation>Fahrsitzung</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>offen</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>geschlossen</translation>
+    </message>
+    <message>
+        <source>Access timeout</source>
+        <translation>Zugriffs-Timeout</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Platform</source>
+        <translation>Plattform</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Steering</source>
+        <translation>Lenkung</translation>
+    </message>
+    <message>
+        <source>Ackermann</source>
+        <translation>Ackermann</translation>
+    </message>
+    <message>
+        <source>skid steer</source>
+        <translation>Skid-Steer</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Max forward speed</source>
+        <translation>Max. Vorwärtsgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Max reverse speed</source>
+        <translation>Max. Rückwärtsgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Max rotational speed</source>
+        <translation>Max. Drehgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Specifications</source>
+        <translation>Spezifikationen</translation>
+    </message>
+    <message>
+        <source>not reported yet</source>
+        <translation>noch nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>Pose</source>
+        <translation>Pose</translation>
+    </message>
+    <message>
+        <source>Latitude</source>
+        <translation>Breitengrad</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Längengrad</translation>
+    </message>
+    <message>
+        <source>Altitude</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Kurs</translation>
+    </message>
+    <message>
+        <source>Local X</source>
+        <translation>Lokal X</translation>
+    </message>
+    <message>
+        <source>Local Y</source>
+        <translation>Lokal Y</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Yaw rate</source>
+        <translation>Gierrate</translation>
+    </message>
+    <message>
+        <source>Health</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Übersicht</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>Services</source>
+        <translation>Dienste</translation>
+    </message>
+    <message>
+        <source>Subsystem %1</source>
+        <translation>Subsystem %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::VirtualStick</name>
+    <message>
+        <source>Drag to drive: up = forward, right = turn right. Release to stop.</source>
+        <translation>Ziehen zum Fahren: oben = vorwärts, rechts = rechts drehen. Loslassen zum Anhalten.</translation>
+    </message>
+    <message>
+        <source>fwd</source>
+        <translation>vor</translation>
+    </message>
+</context>
 </TS>

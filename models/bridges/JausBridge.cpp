@@ -296,8 +296,10 @@ CommandResult JausBridge::drive(std::uint16_t subsystem, const DriveCommand& com
 
 CommandResult JausBridge::stopDriving(std::uint16_t subsystem) {
     m_stack->stopDriving(subsystem); // zeros, several times
-    if (QTimer* t = m_driveTimers.take(subsystem))
+    if (QTimer* t = m_driveTimers.take(subsystem)) {
+        t->stop();
         t->deleteLater();
+    }
     return CommandResult::success(tr("drive stopped"));
 }
 
@@ -355,14 +357,21 @@ CommandResult JausBridge::command(const QString& name, const QJsonObject& args) 
         auto r = drive(*sub, c);
         if (!r.ok)
             return r;
+        // The demand is refreshed at the drive rate for the duration (the stack zeroes a stale demand),
+        // then the session stops with zeros.
         QTimer*& t = m_driveTimers[*sub];
         if (!t) {
             t = new QTimer(this);
-            t->setSingleShot(true);
-            const std::uint16_t s = *sub;
-            connect(t, &QTimer::timeout, this, [this, s] { stopDriving(s); });
+            t->setTimerType(Qt::PreciseTimer);
         }
-        t->start(static_cast<int>(duration * 1000));
+        t->disconnect();
+        const std::uint16_t s = *sub;
+        const qint64 until = QDateTime::currentMSecsSinceEpoch() + static_cast<qint64>(duration * 1000);
+        connect(t, &QTimer::timeout, this, [this, s, c, until] {
+            if (QDateTime::currentMSecsSinceEpoch() >= until || !drive(s, c).ok)
+                stopDriving(s);
+        });
+        t->start(static_cast<int>(1000.0 / std::max(1.0, m_config.driveRateHz)));
         return CommandResult::success(tr("driving %1 for %2 s").arg(machineId(*sub)).arg(duration));
     }
     return FleetBridge::command(name, args);

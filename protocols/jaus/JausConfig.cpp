@@ -76,6 +76,7 @@ JausConfig parseJausConfig(ConfigObject& s) {
     c.accessTimeoutS = s.number("access_timeout_s", c.accessTimeoutS, 1, 255);
     c.eventConfirmTimeoutS = s.number("event_confirm_timeout_s", c.eventConfirmTimeoutS, 0.2, 30);
     c.stopRepeats = int(s.integer("stop_repeats", c.stopRepeats, 2, 50));
+    c.driveCommandTimeoutS = s.number("drive_command_timeout_s", c.driveCommandTimeoutS, 0, 10);
     c.velocityDrive = s.choice("drive_mode", "velocity", {"velocity", "wrench"}) == "velocity";
     s.finish();
     return c;

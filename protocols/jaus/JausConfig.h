@@ -55,6 +55,9 @@ struct JausConfig {
     double accessTimeoutS = 5;       // assumed access-control timeout until QueryTimeout answers
     double eventConfirmTimeoutS = 2; // no ConfirmEventRequest by then: fall back to polling
     int stopRepeats = 5;             // zero commands sent on stop (never a single message)
+    // The console's drive demand must be refreshed within this time, or the stream goes to zero: a frozen
+    // GUI or script must not keep a vehicle moving on its last command. 0 disables.
+    double driveCommandTimeoutS = 0.5;
     bool velocityDrive = true;       // default drive mode when a platform offers both drivers
 
     JausId ownId() const { return JausId{subsystemId, nodeId, componentId}; }

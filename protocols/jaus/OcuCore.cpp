@@ -743,6 +743,8 @@ bool OcuCore::startDriving(std::uint16_t ss) {
     r->drive.mode = m_cfg.velocityDrive ? DriveCommand::Mode::Velocity : DriveCommand::Mode::Wrench;
     r->snap.driving = true;
     r->lastDriveSent = TimePoint{};
+    r->lastDriveUpdate = m_clock.now();
+    r->driveStale = false;
     changed(*r);
     return true;
 }
@@ -766,6 +768,8 @@ bool OcuCore::setDriveCommand(std::uint16_t ss, DriveCommand c) {
             c.angular = std::clamp(c.angular, -*p.maxRotationalSpeed, *p.maxRotationalSpeed);
     }
     r->drive = c;
+    r->lastDriveUpdate = m_clock.now();
+    r->driveStale = false;
     return true;
 }
 
@@ -927,6 +931,16 @@ void OcuCore::tickRemote(Remote& r, TimePoint now) {
         send(target, encodeU16(msg::SetEmergency, std::uint16_t(r.emergencyCode)),
              SendOptions{Priority::Safety, false});
         send(target, encodeEmpty(msg::QueryStatus));
+    }
+    // Drive command watchdog: the stream carries the console's demand only while the console refreshes it.
+    if (r.driveActive && !r.driveStale && m_cfg.driveCommandTimeoutS > 0 &&
+        now - r.lastDriveUpdate > secondsD(m_cfg.driveCommandTimeoutS) &&
+        (r.drive.linear != 0 || r.drive.angular != 0)) {
+        r.driveStale = true;
+        r.drive.linear = r.drive.angular = 0;
+        notify(Severity::Warning, EventKind::CommandRefused, r.snap.subsystem,
+               "drive demand for " + r.snap.callSign + " not refreshed within " +
+                   std::to_string(m_cfg.driveCommandTimeoutS) + " s: streaming zero");
     }
     if ((r.driveActive || r.stopRepeatsLeft > 0) && now - r.lastDriveSent >= periodOf(m_cfg.driveRateHz)) {
         if (r.driveActive) {

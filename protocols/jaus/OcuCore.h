@@ -90,6 +90,8 @@ private:
         int stopRepeatsLeft = 0;
         DriveCommand drive;
         TimePoint lastDriveSent{};
+        TimePoint lastDriveUpdate{}; // last setDriveCommand (drive command watchdog)
+        bool driveStale = false;
     };
 
     void send(const JausId& dst, const Bytes& payload, SendOptions o = {});

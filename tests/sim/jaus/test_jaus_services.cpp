@@ -87,8 +87,10 @@ struct World {
     std::unique_ptr<UgvCore> ugv;
     bool ocuSilent = false;
 
-    explicit World(std::uint8_t authority = 205, SimulatedUgvConfig ucfg = {}) {
+    // The drive-command watchdog is off unless a test asks for it: most tests set a demand once and let it stream.
+    explicit World(std::uint8_t authority = 205, SimulatedUgvConfig ucfg = {}, double driveWatchdogS = 0) {
         auto cfg = ocuConfig(200, authority);
+        cfg.driveCommandTimeoutS = driveWatchdogS;
         ocuPort = std::make_unique<Port>(bus, cfg.ownId());
         ocuPort->log = &ocuSent;
         ocu = std::make_unique<OcuCore>(cfg, rec, *ocuPort, clock, ocuCounters);
@@ -324,8 +326,11 @@ private slots:
         QVERIFY(w.runUntil([&] { return w.snap().management == ManagementState::Ready; }, 1));
         DriveCommand c;
         c.linear = 1.0;
-        QVERIFY(w.ocu->setDriveCommand(126, c));
-        w.run(5.0);
+        // A console refreshes its demand continuously (teleop at the drive rate).
+        for (int i = 0; i < 50; ++i) {
+            QVERIFY(w.ocu->setDriveCommand(126, c));
+            w.run(0.1);
+        }
         QVERIFY(w.ocu->stopDriving(126));
         w.run(1.5);
         const double x = w.ugv->state().x;
@@ -344,6 +349,33 @@ private slots:
         QVERIFY(zeros >= 5);
         // Drive rate 20 Hz while streaming: about 100 commands in 5 s.
         QVERIFY(w.sentCount(msg::SetVelocityCommand) >= 95);
+    }
+
+    void staleDemandStreamsZero() {
+        // A frozen console (demand set once, never refreshed) must not keep the vehicle moving.
+        World w(205, {}, 0.5);
+        QVERIFY(w.runUntil([&] { return w.snap().platform.has_value(); }, 3));
+        w.ocu->requestControl(126);
+        QVERIFY(w.runUntil([&] { return w.snap().controlledByUs; }, 1));
+        QVERIFY(w.ocu->startDriving(126));
+        QVERIFY(w.runUntil([&] { return w.snap().management == ManagementState::Ready; }, 1));
+        DriveCommand c;
+        c.linear = 1.0;
+        QVERIFY(w.ocu->setDriveCommand(126, c));
+        w.run(0.4); // within the 0.5 s watchdog: the demand is streamed
+        QVERIFY(w.ugv->state().v > 0.3);
+        w.run(1.0);
+        QCOMPARE(w.ugv->state().v, 0.0); // zero streamed after 0.5 s, not the 1 s drive timeout
+        QVERIFY(!w.ugv->state().driveTimedOut);
+        QVERIFY(w.snap().driving); // the session stays open, streaming zero
+        bool warned = false;
+        for (auto& e : w.rec.events)
+            warned = warned || (e.kind == EventKind::CommandRefused && e.text.find("not refreshed") != std::string::npos);
+        QVERIFY(warned);
+        // A fresh demand drives again.
+        QVERIFY(w.ocu->setDriveCommand(126, c));
+        w.run(0.3);
+        QVERIFY(w.ugv->state().v > 0.3);
     }
 
     void clampedToPlatformSpecification() {
