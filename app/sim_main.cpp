@@ -15,7 +15,11 @@
 #include "sim/osyris/OsyrisDemo.h"
 #endif
 
+#include <boost/asio/ip/address_v4.hpp>
+#include <nlohmann/json.hpp>
+
 #include <QCommandLineParser>
+#include <QFile>
 #include <QCoreApplication>
 #include <QTimer>
 
@@ -26,6 +30,60 @@
 namespace {
 std::atomic<bool> g_quit{false};
 void onSignal(int) { g_quit = true; }
+
+// The site configuration a console on any host needs to reach these simulators (keys as in
+// docs/site-config.md and the protocol documents).
+nlohmann::json consoleConfig(const ocu::SiteConfig& cfg, ocu::sim::SimulatedSite& sim) {
+    using nlohmann::json;
+    const std::string iface = cfg.simulation.interfaceAddress;
+    json out;
+    out["site"] = {{"name", cfg.name + " (ocu-sim)"},
+                   {"origin", {{"latitude", cfg.origin.lat}, {"longitude", cfg.origin.lon}, {"altitude", cfg.origin.alt}}}};
+#ifdef OCU_HAVE_SIM_JAUS
+    if (auto* j = sim.jaus()) {
+        json statics = json::array();
+        for (auto& u : j->ugvs())
+            statics.push_back({{"subsystem", u->config().subsystemId}, {"address", iface}, {"port", u->localPort()}});
+        out["jaus"] = {{"subsystem_id", 200},
+                       {"call_sign", "OCU"},
+                       {"role", "primary_operator"},
+                       {"authority", 205},
+                       {"port", 0},
+                       {"multicast_group", cfg.jaus->transport.multicastGroup},
+                       {"multicast_port", j->multicastPort()},
+                       {"multicast_ttl", iface == "127.0.0.1" ? 0 : 1},
+                       {"interface_address", iface == "127.0.0.1" ? "127.0.0.1" : "0.0.0.0"},
+                       {"static_endpoints", statics}};
+    }
+#endif
+#ifdef OCU_HAVE_SIM_ISO23725
+    if (auto* i = sim.iso(); i && i->ahs) {
+        json links = json::array();
+        for (const auto& l : cfg.iso23725->links)
+            links.push_back({{"name", l.name}, {"url", l.ws.url}});
+        out["iso23725"] = {{"links", links}};
+    }
+#endif
+#ifdef OCU_HAVE_SIM_OSYRIS
+    if (sim.osyris()) {
+        const auto& o = *cfg.osyris;
+        json machines = json::array();
+        for (const auto& [idx, name] : o.machineNames) {
+            auto t = o.machineTypes.find(idx);
+            machines.push_back({{"idx", idx}, {"name", name}, {"type", t == o.machineTypes.end() ? "" : t->second}});
+        }
+        out["osyris"] = {{"group", o.group},
+                         {"port", o.port},
+                         {"interface", iface == "127.0.0.1" ? "127.0.0.1" : "0.0.0.0"},
+                         {"multicastTtl", o.multicastTtl},
+                         {"originLat", o.originLat},
+                         {"originLon", o.originLon},
+                         {"originAlt", o.originAlt},
+                         {"machines", machines}};
+    }
+#endif
+    return out;
+}
 } // namespace
 
 int main(int argc, char** argv) {
@@ -51,7 +109,16 @@ int main(int argc, char** argv) {
                               QStringLiteral("N"));
     QCommandLineOption rollers(QStringLiteral("rollers"), QStringLiteral("Number of simulated rollers (0-3)."),
                                QStringLiteral("N"));
-    p.addOptions({config, duration, ugvs, trucks, rollers});
+    QCommandLineOption iface(QStringLiteral("interface"),
+                             QStringLiteral("IPv4 address the simulators listen on and send multicast from "
+                                            "(default 127.0.0.1: nothing leaves this host). Use this host's LAN "
+                                            "address to serve consoles on other hosts."),
+                             QStringLiteral("ADDR"));
+    QCommandLineOption writeConfig(QStringLiteral("write-config"),
+                                   QStringLiteral("Write a site configuration for a console that connects to "
+                                                  "these simulators (ocu --config FILE --no-sim)."),
+                                   QStringLiteral("FILE"));
+    p.addOptions({config, duration, ugvs, trucks, rollers, iface, writeConfig});
     p.process(app);
 
     auto site = ocu::loadSite(p.value(config));
@@ -76,6 +143,15 @@ int main(int argc, char** argv) {
         !intOption(rollers, cfg.simulation.osyrisRollers, 3))
         return 2;
     cfg.simulation.enabled = true;
+    if (p.isSet(iface)) {
+        boost::system::error_code ec;
+        boost::asio::ip::make_address_v4(p.value(iface).toStdString(), ec);
+        if (ec) {
+            std::fprintf(stderr, "ocu-sim: --interface: \"%s\" is not an IPv4 address\n", qPrintable(p.value(iface)));
+            return 2;
+        }
+        cfg.simulation.interfaceAddress = p.value(iface).toStdString();
+    }
 
     ocu::sim::SimulatedSite sim;
     const std::string err = sim.start(cfg);
@@ -103,6 +179,18 @@ int main(int argc, char** argv) {
                     cfg.osyris->port, cfg.osyris->interfaceAddress.c_str());
 #endif
     std::fflush(stdout);
+    if (p.isSet(writeConfig)) {
+        const std::string text = consoleConfig(cfg, sim).dump(2) + "\n";
+        QFile f(p.value(writeConfig));
+        if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+            f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size())) {
+            std::fprintf(stderr, "ocu-sim: cannot write %s: %s\n", qPrintable(f.fileName()), qPrintable(f.errorString()));
+            return 2;
+        }
+        std::printf("ocu-sim: console configuration written to %s (use: ocu --config %s --no-sim)\n",
+                    qPrintable(f.fileName()), qPrintable(f.fileName()));
+        std::fflush(stdout);
+    }
 
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);

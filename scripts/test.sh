@@ -13,7 +13,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   OCU_BUILD_DIR="$build" "$root/scripts/build.sh" -DOCU_SANITIZE=address,undefined -DOCU_WITH_VTK=OFF \
     -DOCU_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  cd "$build" && exec ctest -j2 --output-on-failure -L protocols
+  cd "$build" && exec ctest -j2 --output-on-failure --timeout 600 -L "protocols|jaus|osyris|iso23725|sim"
 fi
 build="${OCU_BUILD_DIR:-$root/build}"
 OCU_BUILD_DIR="$build" "$root/scripts/build.sh"

@@ -68,6 +68,7 @@ std::string SimulatedSite::start(SiteConfig& config) {
             JausDemoOptions o;
             o.count = s.jausUgvs;
             o.origin = frame.toGeodetic({kUgvAreaE, kUgvAreaN, 0});
+            o.interfaceAddress = s.interfaceAddress;
             m_impl->jaus = std::make_unique<JausDemo>(o);
             if (!config.jaus)
                 config.jaus = jaus::JausConfig{};
@@ -83,6 +84,7 @@ std::string SimulatedSite::start(SiteConfig& config) {
         c.truckCount = s.ahsTrucks;
         c.origin = config.origin;
         c.positionRateHz = 2.0;
+        c.bindAddress = s.interfaceAddress;
         auto demo = std::make_unique<IsoDemo>(startIsoDemo(c));
         if (!demo->ahs) {
             fail("simulated AHS: " + demo->error);
@@ -101,6 +103,7 @@ std::string SimulatedSite::start(SiteConfig& config) {
         osyris::OsyrisDemoOptions o;
         o.rollers = s.osyrisRollers;
         o.speedUp = s.osyrisSpeedUp;
+        o.interfaceAddress = s.interfaceAddress;
         auto demo = std::make_unique<osyris::OsyrisDemo>(o);
         std::string err;
         if (!demo->start(&err)) {

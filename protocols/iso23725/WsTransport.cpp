@@ -180,6 +180,8 @@ private:
     }
     void onRead(error_code ec) {
         if (ec) {
+            // Counted even when a failed write closed the session first (Beast fails pending writes while it
+            // sends the 1009 close of an oversized frame).
             if (ec == websocket::error::message_too_big) {
                 m_ep->counters.add("rx.rejected.too_big");
                 std::string msg = "incoming frame larger than the maximum of " +
@@ -227,6 +229,12 @@ private:
         }
     }
     void onWrite(error_code ec, std::size_t) {
+        if (ec == websocket::error::closed) {
+            // The read side is closing the stream (peer close or an oversized frame answered with 1009): let
+            // the pending read report the real reason.
+            m_writing = false;
+            return;
+        }
         if (ec) {
             fail("write failed: " + ec.message());
             return;

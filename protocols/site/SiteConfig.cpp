@@ -1,5 +1,7 @@
 #include "SiteConfig.h"
 
+#include <boost/asio/ip/address_v4.hpp>
+
 #include <fstream>
 #include <sstream>
 
@@ -31,6 +33,11 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
         cfg.simulation.osyrisRollers =
             static_cast<int>(s->integer("osyris_rollers", cfg.simulation.osyrisRollers, 0, 3));
         cfg.simulation.osyrisSpeedUp = s->number("osyris_speed_up", cfg.simulation.osyrisSpeedUp, 1, 1000);
+        cfg.simulation.interfaceAddress = s->string("interface", cfg.simulation.interfaceAddress);
+        boost::system::error_code ec;
+        boost::asio::ip::make_address_v4(cfg.simulation.interfaceAddress, ec);
+        if (ec)
+            s->error("interface", "\"" + cfg.simulation.interfaceAddress + "\" is not an IPv4 address");
         s->finish();
     }
     if (auto f = root.object("fleet")) {

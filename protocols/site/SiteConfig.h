@@ -30,6 +30,9 @@ struct SimulationConfig {
     int ahsTrucks = 6;
     int osyrisRollers = 2;
     double osyrisSpeedUp = 30.0; // paver pace multiplied for demos
+    // Address the simulators listen on. 127.0.0.1 (default) keeps all traffic on the host; a LAN
+    // address lets consoles on other hosts reach `ocu-sim`.
+    std::string interfaceAddress = "127.0.0.1";
 };
 
 struct FleetConfig {

@@ -4,7 +4,8 @@ namespace ocu::sim {
 
 IsoDemo startIsoDemo(SimulatedAhsConfig ahsConfig) {
     IsoDemo demo;
-    ahsConfig.bindAddress = "127.0.0.1";
+    if (ahsConfig.bindAddress.empty())
+        ahsConfig.bindAddress = "127.0.0.1";
     ahsConfig.port = 0; // the OS picks a free port: no race with another process
     auto ahs = std::make_unique<SimulatedAhs>(ahsConfig);
     if (!ahs->start()) {

@@ -4,15 +4,17 @@
 
 namespace ocu::sim {
 
-jaus::TransportSettings JausDemo::loopbackTransport(std::uint16_t multicastPort, const std::string& group) {
+jaus::TransportSettings JausDemo::loopbackTransport(std::uint16_t multicastPort, const std::string& group,
+                                                   const std::string& interfaceAddress) {
     jaus::TransportSettings t;
-    t.bindAddress = "127.0.0.1";
+    const bool loopback = interfaceAddress == "127.0.0.1";
+    t.bindAddress = loopback ? "127.0.0.1" : "0.0.0.0";
     t.port = 0;
     t.multicast = true;
     t.multicastGroup = group;
     t.multicastPort = multicastPort;
-    t.multicastTtl = 0; // never leaves the host (toolchain.md §7)
-    t.interfaceAddress = "127.0.0.1";
+    t.multicastTtl = loopback ? 0 : 1; // on loopback never leaves the host (toolchain.md §7)
+    t.interfaceAddress = interfaceAddress;
     return t;
 }
 
@@ -29,7 +31,7 @@ JausDemo::JausDemo(JausDemoOptions options) : m_opt(std::move(options)) {
         c.startY = m_opt.spacingM * i;
         c.accessTimeoutS = m_opt.accessTimeoutS;
         c.driveTimeoutS = m_opt.driveTimeoutS;
-        c.network = loopbackTransport(m_mcPort, m_opt.multicastGroup);
+        c.network = loopbackTransport(m_mcPort, m_opt.multicastGroup, m_opt.interfaceAddress);
         auto u = std::make_unique<SimulatedUgv>(c);
         u->start();
         m_ugvs.push_back(std::move(u));
@@ -54,12 +56,12 @@ SimulatedUgv* JausDemo::find(std::uint16_t ss) {
 
 void JausDemo::configure(jaus::JausConfig& config) const {
     auto statics = config.transport.staticEndpoints;
-    config.transport = loopbackTransport(m_mcPort, m_opt.multicastGroup);
+    config.transport = loopbackTransport(m_mcPort, m_opt.multicastGroup, m_opt.interfaceAddress);
     config.transport.staticEndpoints = statics;
     for (auto& u : m_ugvs) {
         jaus::StaticEndpoint e;
         e.id = jaus::JausId{u->config().subsystemId, 0xFF, 0xFF};
-        e.address = "127.0.0.1";
+        e.address = m_opt.interfaceAddress;
         e.port = u->localPort();
         config.transport.staticEndpoints.push_back(e);
     }

@@ -18,6 +18,8 @@ struct JausDemoOptions {
     std::string multicastGroup = "239.255.0.1";
     double accessTimeoutS = 5;
     double driveTimeoutS = 1;
+    // 127.0.0.1 keeps everything on the host (TTL 0); another address serves consoles on other hosts.
+    std::string interfaceAddress = "127.0.0.1";
 };
 
 class JausDemo {
@@ -36,7 +38,8 @@ public:
 
     // Loopback transport settings (127.0.0.1, TTL 0, the given multicast port, ephemeral unicast port).
     static jaus::TransportSettings loopbackTransport(std::uint16_t multicastPort,
-                                                     const std::string& group = "239.255.0.1");
+                                                     const std::string& group = "239.255.0.1",
+                                                     const std::string& interfaceAddress = "127.0.0.1");
 
 private:
     JausDemoOptions m_opt;

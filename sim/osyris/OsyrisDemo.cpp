@@ -7,8 +7,30 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <atomic>
+#include <random>
 
 namespace ocu::sim::osyris {
+
+namespace {
+// A free UDP port in the IANA dynamic range 49152-65535 that OSYRIS §7 prescribes (the kernel's ephemeral
+// range starts lower, so findFreeUdpPort() alone may give a port the configuration would refuse).
+std::uint16_t freeDynamicPort() {
+    std::random_device rd;
+    std::mt19937 rng(rd());
+    std::uniform_int_distribution<int> dist(49152, 65535);
+    boost::asio::io_context ctx;
+    for (int attempt = 0; attempt < 200; ++attempt) {
+        const auto port = static_cast<std::uint16_t>(dist(rng));
+        boost::asio::ip::udp::socket s(ctx);
+        boost::system::error_code ec;
+        s.open(boost::asio::ip::udp::v4(), ec);
+        s.bind({boost::asio::ip::address_v4::any(), port}, ec);
+        if (!ec)
+            return port;
+    }
+    return findFreeUdpPort();
+}
+} // namespace
 
 using namespace ocu::osyris;
 
@@ -69,7 +91,7 @@ bool OsyrisDemo::start(std::string* error) {
     if (m_impl->running)
         return true;
     if (m_opts.port == 0)
-        m_opts.port = findFreeUdpPort();
+        m_opts.port = freeDynamicPort();
     m_machines.clear();
     std::vector<std::pair<std::optional<MachineSpec>, std::uint8_t>> plan;
     std::uint8_t next = 0;

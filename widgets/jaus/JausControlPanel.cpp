@@ -132,6 +132,9 @@ void JausControlPanel::installRowButtons(int first, int last) {
             m_bridge->command(QStringLiteral("release_control"), {{QStringLiteral("id"), JausBridge::machineId(sub)}});
         });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
+        // Index widgets do not take part in ResizeToContents: size the column for the buttons.
+        m_table->horizontalHeader()->setSectionResizeMode(JausSubsystemModel::Actions, QHeaderView::Fixed);
+        m_table->setColumnWidth(JausSubsystemModel::Actions, cell->sizeHint().width() + 4);
     }
     // Rows inserted above shift the index widgets: reinstall them for every row.
     if (first < m_model->rowCount() - 1 && last < m_model->rowCount() - 1 && first >= 0) {

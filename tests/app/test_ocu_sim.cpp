@@ -1,0 +1,77 @@
+// ocu-sim as a separate process and a console that connects to it through the configuration ocu-sim
+// writes (the two-host set-up of the README, on loopback).
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QtTest>
+
+class TestOcuSim : public QObject {
+    Q_OBJECT
+private slots:
+    void consoleConnectsToOcuSim() {
+        QTemporaryDir dir;
+        const QString cfg = dir.filePath("sim-site.json");
+        QProcess sim;
+        sim.start(OCU_SIM_BINARY, {"--duration", "40", "--ugvs", "1", "--trucks", "3", "--rollers", "1",
+                                   "--write-config", cfg});
+        QVERIFY(sim.waitForStarted(10000));
+        QElapsedTimer t;
+        t.start();
+        while (!QFile::exists(cfg) && t.elapsed() < 20000)
+            QTest::qWait(100);
+        QTest::qWait(300);
+        QVERIFY2(QFile::exists(cfg), sim.readAllStandardError().constData());
+        QFile f(cfg);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject site = QJsonDocument::fromJson(f.readAll()).object();
+        for (const char* k : {"site", "jaus", "iso23725", "osyris"})
+            QVERIFY2(site.contains(k), k);
+
+        QProcess ocu;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY");
+        ocu.setProcessEnvironment(env);
+        ocu.start(OCU_BINARY, {"--config", cfg, "--no-sim", "--headless", "--duration", "12"});
+        QVERIFY(ocu.waitForStarted(10000));
+        QSet<QString> protocols, ids;
+        QByteArray buf;
+        t.restart();
+        while (t.elapsed() < 20000 && !(protocols.size() == 3 && ids.size() >= 6)) {
+            ocu.waitForReadyRead(100);
+            buf += ocu.readAllStandardOutput();
+            int nl;
+            while ((nl = buf.indexOf('\n')) >= 0) {
+                const QJsonObject o = QJsonDocument::fromJson(buf.left(nl)).object();
+                buf.remove(0, nl + 1);
+                if (o.value("type") == "machine") {
+                    protocols.insert(o.value("protocol").toString());
+                    ids.insert(o.value("id").toString());
+                }
+            }
+        }
+        QVERIFY2(protocols.size() == 3, qPrintable(QStringList(protocols.values()).join(",") + " / " +
+                                                    QString::fromUtf8(ocu.readAllStandardError())));
+        QVERIFY(ids.contains("jaus:126"));
+        QVERIFY(ids.size() >= 1 + 3 + 2); // 1 UGV, 3 trucks, a paver and a roller
+        ocu.closeWriteChannel();
+        ocu.waitForFinished(20000);
+        sim.terminate(); // SIGTERM: ocu-sim stops its simulators and exits 0
+        QVERIFY(sim.waitForFinished(10000));
+        QCOMPARE(sim.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(sim.exitCode(), 0);
+    }
+    void badInterfaceIsRefused() {
+        QProcess sim;
+        sim.start(OCU_SIM_BINARY, {"--interface", "not-an-address", "--duration", "1"});
+        QVERIFY(sim.waitForFinished(20000));
+        QCOMPARE(sim.exitCode(), 2);
+        QVERIFY(sim.readAllStandardError().contains("is not an IPv4 address"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestOcuSim)
+#include "test_ocu_sim.moc"
