@@ -324,10 +324,12 @@ void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
 
 void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
     const QRectF world = visibleWorld(size);
-    if ((m_layers & LayerPassCount) && m_pass)
-        drawPassCount(p, size);
-    if (!(m_layers & LayerMap))
+    const bool passCounts = (m_layers & LayerPassCount) && m_pass;
+    if (!(m_layers & LayerMap)) {
+        if (passCounts)
+            drawPassCount(p, size);
         return;
+    }
     p.setRenderHint(QPainter::Antialiasing, true);
     const double s = m_scale;
     const double cx = size.width() / 2.0, cy = size.height() / 2.0;
@@ -342,8 +344,13 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
     // Many thin lines: aliased 1 px lines are several times cheaper and look the same at that density.
     const bool dense = visible > 1000;
     p.setRenderHint(QPainter::Antialiasing, !dense);
-    // Areas first (under the roads), then roads and lanes.
+    // Areas first, then the pass-count overlay (translucent area fills must not tint it), then roads and
+    // lanes on top.
     for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1 && passCounts) {
+            drawPassCount(p, size);
+            p.setRenderHint(QPainter::Antialiasing, !dense);
+        }
         for (int i = 0; i < m_map.features.size(); ++i) {
             const MapFeature& f = m_map.features[i];
             const bool area = f.kind == MapFeatureKind::Area;

@@ -50,6 +50,7 @@ public:
     const SiteMapData& siteMap() const { return m_map; }
     // Not owned; must outlive the view or be reset to nullptr. Call passCountChanged() after edits.
     void setPassCountLayer(const PassCountLayer* layer);
+    const PassCountLayer* passCountLayer() const { return m_pass; }
     void setGeoFrame(const GeoFrame& frame) {
         m_frame = frame;
         update();

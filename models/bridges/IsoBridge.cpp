@@ -130,6 +130,8 @@ void IsoBridge::onMapChanged(const std::string& link, const MapModel& map) {
         const std::string width = way.tag("width");
         if (!width.empty())
             f.width = std::atof(width.c_str());
+        if (f.width <= 0 && f.kind != MapFeatureKind::Area)
+            f.width = f.kind == MapFeatureKind::Lane ? 10.0 : 20.0; // untagged: typical haul road / lane widths
         for (std::int64_t nid : way.nodes) {
             auto it = map.nodes.find(nid);
             if (it == map.nodes.end())
