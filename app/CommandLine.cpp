@@ -7,17 +7,18 @@
 namespace ocu {
 
 QStringList screenshotViewNames() {
-    return {QStringLiteral("fleet"),      QStringLiteral("map"),  QStringLiteral("3d"),
-            QStringLiteral("jaus"),       QStringLiteral("teleop"), QStringLiteral("passcounts"),
+    return {QStringLiteral("fleet"), QStringLiteral("map"),    QStringLiteral("3d"),
+            QStringLiteral("jaus"),  QStringLiteral("teleop"), QStringLiteral("passcounts"),
             QStringLiteral("events")};
 }
 
 bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& error, QString& helpText) {
     QCommandLineParser p;
     p.setApplicationDescription(QCoreApplication::translate(
-        "CommandLine", "Mixed-fleet Operator Control Unit: JAUS ground vehicles, ISO 23725 autonomous haulage "
-                       "and OSYRIS rollers and pavers on one console.\nWithout --config it starts on the built-in "
-                       "simulated site."));
+        "CommandLine",
+        "Mixed-fleet Operator Control Unit: JAUS ground vehicles, ISO 23725 autonomous haulage "
+        "and OSYRIS rollers and pavers on one console.\nWithout --config it starts on the built-in "
+        "simulated site."));
     auto help = p.addHelpOption();
     auto version = p.addVersionOption();
     QCommandLineOption config({QStringLiteral("c"), QStringLiteral("config")},
@@ -26,8 +27,9 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
                                                                          "built-in simulated site."),
                               QStringLiteral("FILE"));
     QCommandLineOption noSim(QStringLiteral("no-sim"),
-                             QCoreApplication::translate("CommandLine", "Do not start the built-in simulators, "
-                                                                        "even if the configuration enables them."));
+                             QCoreApplication::translate("CommandLine",
+                                                         "Do not start the built-in simulators, "
+                                                         "even if the configuration enables them."));
     QCommandLineOption shot(QStringLiteral("screenshot"),
                             QCoreApplication::translate("CommandLine", "Write a PNG screenshot to FILE after "
                                                                        "--settle seconds, then exit 0."),
@@ -42,27 +44,32 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
                                                                        "1600x1000."),
                             QStringLiteral("WxH"), QStringLiteral("1600x1000"));
     QCommandLineOption settle(QStringLiteral("settle"),
-                              QCoreApplication::translate("CommandLine", "Seconds to let live data arrive before "
-                                                                         "the screenshot (default 3)."),
+                              QCoreApplication::translate("CommandLine",
+                                                          "Seconds to let live data arrive before "
+                                                          "the screenshot (default 3)."),
                               QStringLiteral("SECONDS"), QStringLiteral("3"));
     QCommandLineOption lang(QStringLiteral("lang"),
-                            QCoreApplication::translate("CommandLine", "User interface language: en, de or fr "
-                                                                       "(default: the system locale)."),
+                            QCoreApplication::translate("CommandLine",
+                                                        "User interface language: en, de or fr "
+                                                        "(default: the system locale)."),
                             QStringLiteral("LANG"));
     QCommandLineOption log(QStringLiteral("log"),
-                           QCoreApplication::translate("CommandLine", "Enable debug output for these logging "
-                                                                      "categories, comma-separated: ocu.jaus, "
-                                                                      "ocu.iso, ocu.osyris, ocu.ui, ocu.sim, ocu.* "
-                                                                      "(Qt wildcard rules)."),
+                           QCoreApplication::translate("CommandLine",
+                                                       "Enable debug output for these logging "
+                                                       "categories, comma-separated: ocu.jaus, "
+                                                       "ocu.iso, ocu.osyris, ocu.ui, ocu.sim, ocu.* "
+                                                       "(Qt wildcard rules)."),
                            QStringLiteral("CATEGORIES"));
     QCommandLineOption headless(QStringLiteral("headless"),
-                                QCoreApplication::translate("CommandLine", "No window: print one JSON line per "
-                                                                           "machine change and per event on "
-                                                                           "stdout, read JSON-line commands on "
-                                                                           "stdin (see README)."));
+                                QCoreApplication::translate("CommandLine",
+                                                            "No window: print one JSON line per "
+                                                            "machine change and per event on "
+                                                            "stdout, read JSON-line commands on "
+                                                            "stdin (see README)."));
     QCommandLineOption duration(QStringLiteral("duration"),
-                                QCoreApplication::translate("CommandLine", "With --headless: stop after SECONDS "
-                                                                           "(default: run until stdin closes)."),
+                                QCoreApplication::translate("CommandLine",
+                                                            "With --headless: stop after SECONDS "
+                                                            "(default: run until stdin closes)."),
                                 QStringLiteral("SECONDS"), QStringLiteral("0"));
     QCommandLineOption reset(QStringLiteral("reset-layout"),
                              QCoreApplication::translate("CommandLine", "Start with the default panel layout "
@@ -79,7 +86,8 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
         return false;
     }
     if (p.isSet(version)) {
-        helpText = QCoreApplication::applicationName() + QLatin1Char(' ') + QCoreApplication::applicationVersion();
+        helpText =
+            QCoreApplication::applicationName() + QLatin1Char(' ') + QCoreApplication::applicationVersion();
         error.clear();
         return false;
     }
@@ -100,8 +108,9 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     static const QRegularExpression sizeRe(QStringLiteral("^(\\d{2,5})x(\\d{2,5})$"));
     auto m = sizeRe.match(p.value(size));
     if (!m.hasMatch()) {
-        error = QCoreApplication::translate("CommandLine", "--size: expected WxH such as 1600x1000, got \"%1\"")
-                    .arg(p.value(size));
+        error =
+            QCoreApplication::translate("CommandLine", "--size: expected WxH such as 1600x1000, got \"%1\"")
+                .arg(p.value(size));
         return false;
     }
     o.size = QSize(m.captured(1).toInt(), m.captured(2).toInt());
@@ -113,15 +122,17 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     bool ok = false;
     o.settleSeconds = p.value(settle).toDouble(&ok);
     if (!ok || o.settleSeconds < 0 || o.settleSeconds > 3600) {
-        error = QCoreApplication::translate("CommandLine", "--settle: expected seconds between 0 and 3600, got "
-                                                           "\"%1\"")
-                    .arg(p.value(settle));
+        error =
+            QCoreApplication::translate("CommandLine", "--settle: expected seconds between 0 and 3600, got "
+                                                       "\"%1\"")
+                .arg(p.value(settle));
         return false;
     }
     o.language = p.value(lang).toLower();
     if (!o.language.isEmpty() && o.language != QLatin1String("en") && o.language != QLatin1String("de") &&
         o.language != QLatin1String("fr")) {
-        error = QCoreApplication::translate("CommandLine", "--lang: \"%1\" is not one of en, de, fr").arg(o.language);
+        error = QCoreApplication::translate("CommandLine", "--lang: \"%1\" is not one of en, de, fr")
+                    .arg(o.language);
         return false;
     }
     o.logCategories = p.value(log);

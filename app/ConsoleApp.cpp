@@ -73,11 +73,13 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
 
     auto site = loadSite(options.configFile);
     if (!site) {
-        const QString msg = QCoreApplication::translate("ConsoleApp", "The site configuration was refused:\n%1")
-                                .arg(QString::fromStdString(site.error()));
+        const QString msg =
+            QCoreApplication::translate("ConsoleApp", "The site configuration was refused:\n%1")
+                .arg(QString::fromStdString(site.error()));
         std::fprintf(stderr, "ocu: %s\n", qPrintable(msg));
         if (interactive(options))
-            QMessageBox::critical(nullptr, QCoreApplication::translate("ConsoleApp", "Operator Control Unit"), msg);
+            QMessageBox::critical(nullptr, QCoreApplication::translate("ConsoleApp", "Operator Control Unit"),
+                                  msg);
         return 2;
     }
     SiteConfig config = std::move(site.value());

@@ -6,7 +6,6 @@
 
 class QApplication;
 
-
 namespace ocu {
 
 // OpenGL 3.2 core default format for the VTK view (must be set before QApplication; toolchain.md §4a).

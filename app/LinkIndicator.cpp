@@ -44,7 +44,9 @@ qint64 LinkIndicator::dataAgeMs() const {
     return m_ageOffsetMs + m_sinceData.elapsed();
 }
 
-QString LinkIndicator::text() const { return m_label->text(); }
+QString LinkIndicator::text() const {
+    return m_label->text();
+}
 
 void LinkIndicator::refresh() {
     QString stateText;
@@ -70,11 +72,11 @@ void LinkIndicator::refresh() {
     QString t = m_protocol + QLatin1Char(' ') + stateText;
     const qint64 age = dataAgeMs();
     if (m_state != State::NotConfigured && age >= 0)
-        t += QStringLiteral(" · ") + (age < 10000 ? tr("%1 s").arg(age / 1000.0, 0, 'f', 1)
-                                                  : tr("%1 s").arg(age / 1000));
+        t += QStringLiteral(" · ") +
+             (age < 10000 ? tr("%1 s").arg(age / 1000.0, 0, 'f', 1) : tr("%1 s").arg(age / 1000));
     m_label->setText(t);
-    m_lamp->setStyleSheet(QStringLiteral("background:%1; border-radius:6px; border:1px solid #333;")
-                              .arg(colour.name()));
+    m_lamp->setStyleSheet(
+        QStringLiteral("background:%1; border-radius:6px; border:1px solid #333;").arg(colour.name()));
     setToolTip(m_detail.isEmpty() ? t : t + QLatin1Char('\n') + m_detail);
 }
 

@@ -26,8 +26,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("OcuMainWindow"));
     setWindowTitle(tr("Operator Control Unit"));
     setDockNestingEnabled(true);
-    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowNestedDocks | QMainWindow::AllowTabbedDocks |
-                   QMainWindow::GroupedDragging);
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowNestedDocks |
+                   QMainWindow::AllowTabbedDocks | QMainWindow::GroupedDragging);
     createDocks();
     createToolBar();
     createMenus();
@@ -39,7 +39,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 MainWindow::~MainWindow() = default;
 
 QList<Panel> MainWindow::panels() {
-    return {Panel::Fleet, Panel::SiteMap, Panel::Site3D, Panel::JausControl,
+    return {Panel::Fleet,  Panel::SiteMap,    Panel::Site3D,  Panel::JausControl,
             Panel::Teleop, Panel::PassCounts, Panel::EventLog};
 }
 
@@ -104,7 +104,9 @@ void MainWindow::setPanelWidget(Panel panel, QWidget* widget) {
         old->deleteLater();
 }
 
-QWidget* MainWindow::panelWidget(Panel panel) const { return m_docks.value(panel)->widget(); }
+QWidget* MainWindow::panelWidget(Panel panel) const {
+    return m_docks.value(panel)->widget();
+}
 
 void MainWindow::createToolBar() {
     auto* tb = new QToolBar(tr("Safety"), this);
@@ -121,9 +123,10 @@ void MainWindow::createToolBar() {
     m_stopAll->setObjectName(QStringLiteral("action-stop-all"));
     m_stopAll->setShortcuts({QKeySequence(Qt::Key_F12), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Space)});
     m_stopAll->setShortcutContext(Qt::ApplicationShortcut); // also from floating panels
-    m_stopAll->setToolTip(tr("Stop every machine this console may stop: JAUS emergency stop to the vehicles "
-                             "it controls and ISO 23725 all-stop to every AHS link (F12 or Ctrl+Shift+Space). "
-                             "Stopping never asks for confirmation."));
+    m_stopAll->setToolTip(
+        tr("Stop every machine this console may stop: JAUS emergency stop to the vehicles "
+           "it controls and ISO 23725 all-stop to every AHS link (F12 or Ctrl+Shift+Space). "
+           "Stopping never asks for confirmation."));
     connect(m_stopAll, &QAction::triggered, this, &MainWindow::stopAllRequested);
     tb->addAction(m_stopAll);
     m_stopAllButton = qobject_cast<QToolButton*>(tb->widgetForAction(m_stopAll));
@@ -203,10 +206,12 @@ void MainWindow::createStatusBar() {
 
 void MainWindow::setUnacknowledgedAlarms(int count) {
     m_unacked = count;
-    m_alarmLabel->setText(count == 0 ? tr("No unacknowledged alarms") : tr("%n unacknowledged alarm(s)", "", count));
-    m_alarmLabel->setStyleSheet(count == 0 ? QString()
-                                           : QStringLiteral("background:#c81e1e; color:white; font-weight:bold;"
-                                                            " padding:1px 6px; border-radius:3px;"));
+    m_alarmLabel->setText(count == 0 ? tr("No unacknowledged alarms")
+                                     : tr("%n unacknowledged alarm(s)", "", count));
+    m_alarmLabel->setStyleSheet(count == 0
+                                    ? QString()
+                                    : QStringLiteral("background:#c81e1e; color:white; font-weight:bold;"
+                                                     " padding:1px 6px; border-radius:3px;"));
 }
 
 void MainWindow::setNightMode(bool night) {
@@ -233,8 +238,8 @@ void MainWindow::applyDefaultLayout() {
         d->show();
     m_docks[Panel::SiteMap]->raise();
     m_docks[Panel::JausControl]->raise();
-    resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]}, {420, 900, 380},
-                Qt::Horizontal);
+    resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]},
+                {420, 900, 380}, Qt::Horizontal);
     resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]}, {700, 220}, Qt::Vertical);
 }
 

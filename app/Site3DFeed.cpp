@@ -14,7 +14,8 @@ static Rgb rgb(const QColor& c) {
 }
 
 Site3DFeed::Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* selection, QObject* parent)
-    : QObject(parent), m_view(view), m_fleet(fleet), m_machineTimer(new QTimer(this)), m_passTimer(new QTimer(this)) {
+    : QObject(parent), m_view(view), m_fleet(fleet), m_machineTimer(new QTimer(this)),
+      m_passTimer(new QTimer(this)) {
     connect(fleet, &FleetModel::machinesChanged, this, [this] { m_machinesDirty = true; });
     connect(fleet, &FleetModel::machineAdded, this, [this] { m_machinesDirty = true; });
     connect(fleet, &FleetModel::machineRemoved, this, [this] { m_machinesDirty = true; });
@@ -46,7 +47,9 @@ void Site3DFeed::setPassCountLayer(const PassCountLayer* layer) {
     m_passDirty = true;
 }
 
-void Site3DFeed::passCountChanged() { m_passDirty = true; }
+void Site3DFeed::passCountChanged() {
+    m_passDirty = true;
+}
 
 void Site3DFeed::pushMachines() {
     if (!m_view)
@@ -129,7 +132,7 @@ void Site3DFeed::rebuildScene() {
     scene.terrain.maxN = b.bottom();
     for (const MapFeature& f : m_map.features) {
         Way3D w;
-        w.kind = f.kind == MapFeatureKind::Area ? WayKind::Area
+        w.kind = f.kind == MapFeatureKind::Area   ? WayKind::Area
                  : f.kind == MapFeatureKind::Lane ? WayKind::Lane
                                                   : WayKind::Road;
         w.colour = rgb(taskColor(f.defaultTask));

@@ -5,7 +5,9 @@
 
 namespace ocu {
 
-QString builtInSitePath() { return QStringLiteral(":/sites/simulated-site.json"); }
+QString builtInSitePath() {
+    return QStringLiteral(":/sites/simulated-site.json");
+}
 
 Result<SiteConfig> loadSite(const QString& configFile) {
     const QString path = configFile.isEmpty() ? builtInSitePath() : configFile;
@@ -15,7 +17,8 @@ Result<SiteConfig> loadSite(const QString& configFile) {
                          .arg(path, f.errorString())
                          .toStdString()};
     if (f.size() > 64 * 1024 * 1024)
-        return Error{QCoreApplication::translate("SiteLoader", "%1: larger than 64 MiB").arg(path).toStdString()};
+        return Error{
+            QCoreApplication::translate("SiteLoader", "%1: larger than 64 MiB").arg(path).toStdString()};
     const QByteArray text = f.readAll();
     return parseSiteConfig(std::string_view(text.constData(), static_cast<std::size_t>(text.size())),
                            path.toStdString());

@@ -80,7 +80,9 @@ struct SiteRuntime::Impl {
 SiteRuntime::SiteRuntime(SiteConfig config, QObject* parent)
     : QObject(parent), m_config(std::move(config)), m_impl(std::make_unique<Impl>()) {}
 
-SiteRuntime::~SiteRuntime() { stop(); }
+SiteRuntime::~SiteRuntime() {
+    stop();
+}
 
 QString SiteRuntime::start() {
     Impl& d = *m_impl;
@@ -97,8 +99,8 @@ QString SiteRuntime::start() {
     if (!m_config.fleet.auditLog.empty())
         d.ctx->stop()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
 
-    // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down
-    // and the reason is an alarm.
+        // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down
+        // and the reason is an alarm.
 #ifdef OCU_HAVE_JAUS_BRIDGE
     if (m_config.jaus) {
         d.jaus = new JausBridge(*m_config.jaus, d.frame, this);
@@ -143,13 +145,15 @@ QString SiteRuntime::start() {
         const std::string machine = op.fmsMachineId;
         connect(d.own, &OwnPosition::fixChanged, this, [this, machine](const OwnFix& f) {
             if (f.valid)
-                m_impl->iso->stack()->setOwnPosition(machine, f.lat, f.lon, f.alt, f.headingDeg, f.speed * 3.6);
+                m_impl->iso->stack()->setOwnPosition(machine, f.lat, f.lon, f.alt, f.headingDeg,
+                                                     f.speed * 3.6);
         });
     }
 #endif
     for (const QString& p : std::as_const(d.startProblems)) {
         qCWarning(lcApp).noquote() << p;
-        d.ctx->alarms()->add(makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, p, QStringLiteral("gui")));
+        d.ctx->alarms()->add(
+            makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, p, QStringLiteral("gui")));
     }
     return {};
 }
@@ -224,7 +228,8 @@ void SiteRuntime::populate(MainWindow& window) {
     window.setPanelWidget(Panel::Site3D, view3d);
 #else
     QObject* feed = nullptr;
-    window.setPanelWidget(Panel::Site3D, notice(tr("This build has no 3D view (configured with OCU_WITH_VTK=OFF).")));
+    window.setPanelWidget(Panel::Site3D,
+                          notice(tr("This build has no 3D view (configured with OCU_WITH_VTK=OFF).")));
 #endif
 
     auto* passPanel = new PassCountPanel;
@@ -261,7 +266,8 @@ void SiteRuntime::populate(MainWindow& window) {
                                  : proto == QLatin1String("iso23725") ? QStringLiteral("ISO 23725")
                                                                       : QStringLiteral("OSYRIS");
             if (LinkIndicator* ind = window.linkIndicator(name)) {
-                ind->setState(indicatorState(s.state), s.link + (s.detail.isEmpty() ? QString() : ": " + s.detail));
+                ind->setState(indicatorState(s.state),
+                              s.link + (s.detail.isEmpty() ? QString() : ": " + s.detail));
                 if (s.dataAgeMs >= 0)
                     ind->setDataAgeMs(s.dataAgeMs);
             }
@@ -284,9 +290,11 @@ void SiteRuntime::populate(MainWindow& window) {
     ages->start(1000);
 
     window.setPanelWidget(Panel::EventLog, new EventLogWidget(ctx->alarms()));
-    connect(ctx->alarms(), &AlarmModel::unacknowledgedCountChanged, &window, &MainWindow::setUnacknowledgedAlarms);
+    connect(ctx->alarms(), &AlarmModel::unacknowledgedCountChanged, &window,
+            &MainWindow::setUnacknowledgedAlarms);
     window.setUnacknowledgedAlarms(ctx->alarms()->unacknowledgedCount());
-    connect(&window, &MainWindow::stopAllRequested, ctx->stop(), [ctx] { ctx->stop()->stopAll(QStringLiteral("gui")); });
+    connect(&window, &MainWindow::stopAllRequested, ctx->stop(),
+            [ctx] { ctx->stop()->stopAll(QStringLiteral("gui")); });
 
 #ifdef OCU_HAVE_JAUS_BRIDGE
     if (d.jaus) {
@@ -309,7 +317,8 @@ int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
     HeadlessMonitor* mon = d.ctx->createHeadlessMonitor();
     mon->setRateLimitMs(static_cast<int>(1000.0 / m_config.fleet.monitorRateHz));
     if (!mon->startStdin() && durationSeconds <= 0) {
-        std::fputs("ocu: --headless reads commands from stdin, which is not readable; give --duration\n", stderr);
+        std::fputs("ocu: --headless reads commands from stdin, which is not readable; give --duration\n",
+                   stderr);
         return 2;
     }
     if (durationSeconds > 0)

@@ -10,11 +10,13 @@
 int main(int argc, char** argv) {
     // --headless, --help and --version need no display at all, nor does --screenshot when there is none;
     // decide the platform before QApplication exists.
-    const bool haveDisplay = !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+    const bool haveDisplay =
+        !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
     bool noWindowNeeded = false, screenshot = false;
     for (int i = 1; i < argc; ++i) {
         const QByteArray a(argv[i]);
-        if (a == "--headless" || a == "--help" || a == "-h" || a == "--version" || a == "-v" || a == "--help-all")
+        if (a == "--headless" || a == "--help" || a == "-h" || a == "--version" || a == "-v" ||
+            a == "--help-all")
             noWindowNeeded = true;
         if (a == "--screenshot" || a.startsWith("--screenshot="))
             screenshot = true;

@@ -19,8 +19,8 @@
 #include <nlohmann/json.hpp>
 
 #include <QCommandLineParser>
-#include <QFile>
 #include <QCoreApplication>
+#include <QFile>
 #include <QTimer>
 
 #include <atomic>
@@ -29,7 +29,9 @@
 
 namespace {
 std::atomic<bool> g_quit{false};
-void onSignal(int) { g_quit = true; }
+void onSignal(int) {
+    g_quit = true;
+}
 
 // The site configuration a console on any host needs to reach these simulators (keys as in
 // docs/site-config.md and the protocol documents).
@@ -37,13 +39,16 @@ nlohmann::json consoleConfig(const ocu::SiteConfig& cfg, ocu::sim::SimulatedSite
     using nlohmann::json;
     const std::string iface = cfg.simulation.interfaceAddress;
     json out;
-    out["site"] = {{"name", cfg.name + " (ocu-sim)"},
-                   {"origin", {{"latitude", cfg.origin.lat}, {"longitude", cfg.origin.lon}, {"altitude", cfg.origin.alt}}}};
+    out["site"] = {
+        {"name", cfg.name + " (ocu-sim)"},
+        {"origin",
+         {{"latitude", cfg.origin.lat}, {"longitude", cfg.origin.lon}, {"altitude", cfg.origin.alt}}}};
 #ifdef OCU_HAVE_SIM_JAUS
     if (auto* j = sim.jaus()) {
         json statics = json::array();
         for (auto& u : j->ugvs())
-            statics.push_back({{"subsystem", u->config().subsystemId}, {"address", iface}, {"port", u->localPort()}});
+            statics.push_back(
+                {{"subsystem", u->config().subsystemId}, {"address", iface}, {"port", u->localPort()}});
         out["jaus"] = {{"subsystem_id", 200},
                        {"call_sign", "OCU"},
                        {"role", "primary_operator"},
@@ -70,7 +75,8 @@ nlohmann::json consoleConfig(const ocu::SiteConfig& cfg, ocu::sim::SimulatedSite
         json machines = json::array();
         for (const auto& [idx, name] : o.machineNames) {
             auto t = o.machineTypes.find(idx);
-            machines.push_back({{"idx", idx}, {"name", name}, {"type", t == o.machineTypes.end() ? "" : t->second}});
+            machines.push_back(
+                {{"idx", idx}, {"name", name}, {"type", t == o.machineTypes.end() ? "" : t->second}});
         }
         out["osyris"] = {{"group", o.group},
                          {"port", o.port},
@@ -101,19 +107,22 @@ int main(int argc, char** argv) {
                               QStringLiteral("Site configuration whose \"site\" and \"simulation\" sections "
                                              "are used (default: the built-in simulated site)."),
                               QStringLiteral("FILE"));
-    QCommandLineOption duration(QStringLiteral("duration"), QStringLiteral("Stop after SECONDS (default: never)."),
+    QCommandLineOption duration(QStringLiteral("duration"),
+                                QStringLiteral("Stop after SECONDS (default: never)."),
                                 QStringLiteral("SECONDS"), QStringLiteral("0"));
     QCommandLineOption ugvs(QStringLiteral("ugvs"), QStringLiteral("Number of simulated JAUS UGVs."),
                             QStringLiteral("N"));
-    QCommandLineOption trucks(QStringLiteral("trucks"), QStringLiteral("Number of simulated haul trucks (≤ 1000)."),
+    QCommandLineOption trucks(QStringLiteral("trucks"),
+                              QStringLiteral("Number of simulated haul trucks (≤ 1000)."),
                               QStringLiteral("N"));
-    QCommandLineOption rollers(QStringLiteral("rollers"), QStringLiteral("Number of simulated rollers (0-3)."),
-                               QStringLiteral("N"));
-    QCommandLineOption iface(QStringLiteral("interface"),
-                             QStringLiteral("IPv4 address the simulators listen on and send multicast from "
-                                            "(default 127.0.0.1: nothing leaves this host). Use this host's LAN "
-                                            "address to serve consoles on other hosts."),
-                             QStringLiteral("ADDR"));
+    QCommandLineOption rollers(QStringLiteral("rollers"),
+                               QStringLiteral("Number of simulated rollers (0-3)."), QStringLiteral("N"));
+    QCommandLineOption iface(
+        QStringLiteral("interface"),
+        QStringLiteral("IPv4 address the simulators listen on and send multicast from "
+                       "(default 127.0.0.1: nothing leaves this host). Use this host's LAN "
+                       "address to serve consoles on other hosts."),
+        QStringLiteral("ADDR"));
     QCommandLineOption writeConfig(QStringLiteral("write-config"),
                                    QStringLiteral("Write a site configuration for a console that connects to "
                                                   "these simulators (ocu --config FILE --no-sim)."),
@@ -133,7 +142,8 @@ int main(int argc, char** argv) {
         bool ok = false;
         const int v = p.value(o).toInt(&ok);
         if (!ok || v < 0 || v > max) {
-            std::fprintf(stderr, "ocu-sim: --%s must be an integer 0..%d\n", qPrintable(o.names().constLast()), max);
+            std::fprintf(stderr, "ocu-sim: --%s must be an integer 0..%d\n",
+                         qPrintable(o.names().constLast()), max);
             return false;
         }
         target = v;
@@ -147,7 +157,8 @@ int main(int argc, char** argv) {
         boost::system::error_code ec;
         boost::asio::ip::make_address_v4(p.value(iface).toStdString(), ec);
         if (ec) {
-            std::fprintf(stderr, "ocu-sim: --interface: \"%s\" is not an IPv4 address\n", qPrintable(p.value(iface)));
+            std::fprintf(stderr, "ocu-sim: --interface: \"%s\" is not an IPv4 address\n",
+                         qPrintable(p.value(iface)));
             return 2;
         }
         cfg.simulation.interfaceAddress = p.value(iface).toStdString();
@@ -158,7 +169,8 @@ int main(int argc, char** argv) {
     if (!err.empty())
         std::fprintf(stderr, "ocu-sim: %s\n", err.c_str());
 
-    std::printf("ocu-sim: simulated site \"%s\" around %.6f, %.6f\n", cfg.name.c_str(), cfg.origin.lat, cfg.origin.lon);
+    std::printf("ocu-sim: simulated site \"%s\" around %.6f, %.6f\n", cfg.name.c_str(), cfg.origin.lat,
+                cfg.origin.lon);
 #ifdef OCU_HAVE_SIM_JAUS
     if (auto* j = sim.jaus()) {
         std::printf("  JAUS: %zu UGVs, multicast %s:%u on 127.0.0.1\n", j->ugvs().size(),
@@ -171,12 +183,13 @@ int main(int argc, char** argv) {
 #ifdef OCU_HAVE_SIM_ISO23725
     if (auto* i = sim.iso(); i && i->ahs)
         for (const auto& l : cfg.iso23725->links)
-            std::printf("  ISO 23725: AHS with %d trucks at %s\n", cfg.simulation.ahsTrucks, l.ws.url.c_str());
+            std::printf("  ISO 23725: AHS with %d trucks at %s\n", cfg.simulation.ahsTrucks,
+                        l.ws.url.c_str());
 #endif
 #ifdef OCU_HAVE_SIM_OSYRIS
     if (auto* o = sim.osyris())
-        std::printf("  OSYRIS: %zu stations on %s:%u (interface %s)\n", o->stationCount(), cfg.osyris->group.c_str(),
-                    cfg.osyris->port, cfg.osyris->interfaceAddress.c_str());
+        std::printf("  OSYRIS: %zu stations on %s:%u (interface %s)\n", o->stationCount(),
+                    cfg.osyris->group.c_str(), cfg.osyris->port, cfg.osyris->interfaceAddress.c_str());
 #endif
     std::fflush(stdout);
     if (p.isSet(writeConfig)) {
@@ -184,7 +197,8 @@ int main(int argc, char** argv) {
         QFile f(p.value(writeConfig));
         if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
             f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size())) {
-            std::fprintf(stderr, "ocu-sim: cannot write %s: %s\n", qPrintable(f.fileName()), qPrintable(f.errorString()));
+            std::fprintf(stderr, "ocu-sim: cannot write %s: %s\n", qPrintable(f.fileName()),
+                         qPrintable(f.errorString()));
             return 2;
         }
         std::printf("ocu-sim: console configuration written to %s (use: ocu --config %s --no-sim)\n",

@@ -30,7 +30,9 @@ struct SimulatedSite::Impl {
 };
 
 SimulatedSite::SimulatedSite() : m_impl(std::make_unique<Impl>()) {}
-SimulatedSite::~SimulatedSite() { stop(); }
+SimulatedSite::~SimulatedSite() {
+    stop();
+}
 
 JausDemo* SimulatedSite::jaus() const {
 #ifdef OCU_HAVE_SIM_JAUS

@@ -9,14 +9,18 @@ namespace ocu {
 
 using namespace iso23725;
 
-static QString q(const std::string& s) { return QString::fromStdString(s); }
+static QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
 
 IsoBridge::IsoBridge(const IsoConfig& config, const GeoFrame& frame, QObject* parent)
     : FleetBridge(Protocol::Iso23725, parent), m_config(config), m_frame(frame) {
     m_stack = std::make_unique<IsoStack>(m_config, static_cast<IsoListener&>(*this));
 }
 
-IsoBridge::~IsoBridge() { stop(); }
+IsoBridge::~IsoBridge() {
+    stop();
+}
 
 QString IsoBridge::start() {
     for (const auto& l : m_config.links)
@@ -62,7 +66,8 @@ void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, 
         // §2.1: while the link is down nothing about its machines is known.
         m_allStopIo[link] = AllStopState::Unknown;
         publishEvent(makeEvent(EventSeverity::Warning, ocu::EventKind::LinkLoss, {},
-                               tr("ISO 23725 link %1 down: %2").arg(q(link), q(reason)), QStringLiteral("iso23725")));
+                               tr("ISO 23725 link %1 down: %2").arg(q(link), q(reason)),
+                               QStringLiteral("iso23725")));
         for (auto& [key, snap] : m_snapshots) {
             if (snap.link != link)
                 continue;
@@ -75,7 +80,8 @@ void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, 
 void IsoBridge::onMachineChanged(const IsoMachineSnapshot& machine) {
     const std::string key = machine.link + "/" + machine.equipmentId;
     m_snapshots[key] = machine;
-    MachineState m = toMachine(machine, m_allStopIo.count(machine.link) ? m_allStopIo[machine.link] : AllStopState::Unknown);
+    MachineState m = toMachine(machine, m_allStopIo.count(machine.link) ? m_allStopIo[machine.link]
+                                                                        : AllStopState::Unknown);
     {
         std::lock_guard lock(m_machineLinksMutex);
         m_machineLinks.insert(m.id, q(machine.link));
@@ -95,7 +101,8 @@ void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& s
             publishMachine(toMachine(snap, status.state));
     const QString l = q(link);
     const int st = static_cast<int>(status.state);
-    QMetaObject::invokeMethod(this, [this, l, st] { m_allStop.insert(l, st); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, l, st] { m_allStop.insert(l, st); }, Qt::QueuedConnection);
     publishEvent(makeEvent(status.state == AllStopState::On ? EventSeverity::Alarm : EventSeverity::Info,
                            ocu::EventKind::Info, {},
                            tr("AHS %1 reports all-stop %2%3")
@@ -107,7 +114,8 @@ void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& s
 void IsoBridge::onMapProgress(const std::string& link, const MapProgress& progress) {
     const QString l = q(link);
     const int r = progress.received, t = progress.total;
-    QMetaObject::invokeMethod(this, [this, l, r, t] { emit mapProgress(l, r, t); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, l, r, t] { emit mapProgress(l, r, t); }, Qt::QueuedConnection);
 }
 
 void IsoBridge::onMapChanged(const std::string& link, const MapModel& map) {
@@ -119,19 +127,21 @@ void IsoBridge::onMapChanged(const std::string& link, const MapModel& map) {
         MapFeature f;
         f.id = QStringLiteral("%1/%2").arg(q(link)).arg(id);
         f.name = q(way.name());
-        f.kind = way.kind == WayKind::Area ? MapFeatureKind::Area
+        f.kind = way.kind == WayKind::Area   ? MapFeatureKind::Area
                  : way.kind == WayKind::Lane ? MapFeatureKind::Lane
                                              : MapFeatureKind::Road;
         f.defaultTask = q(way.defaultTask());
         if (f.defaultTask.isEmpty() && f.kind != MapFeatureKind::Area)
             f.defaultTask = QStringLiteral("haul");
         const std::string autonomy = way.tag(f.kind == MapFeatureKind::Area ? "autonomy:area" : "autonomy");
-        f.autonomous = autonomy == "yes" || autonomy == "true" || (autonomy.empty() && way.tag("autonomy") == "yes");
+        f.autonomous =
+            autonomy == "yes" || autonomy == "true" || (autonomy.empty() && way.tag("autonomy") == "yes");
         const std::string width = way.tag("width");
         if (!width.empty())
             f.width = std::atof(width.c_str());
         if (f.width <= 0 && f.kind != MapFeatureKind::Area)
-            f.width = f.kind == MapFeatureKind::Lane ? 10.0 : 20.0; // untagged: typical haul road / lane widths
+            f.width =
+                f.kind == MapFeatureKind::Lane ? 10.0 : 20.0; // untagged: typical haul road / lane widths
         for (std::int64_t nid : way.nodes) {
             auto it = map.nodes.find(nid);
             if (it == map.nodes.end())
@@ -194,7 +204,8 @@ MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop
     m.link = s.stateKnown ? ocu::LinkState::Up : ocu::LinkState::Unknown;
     if (s.position) {
         const auto& p = *s.position;
-        const EnuPoint e = m_frame.toLocal({p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)});
+        const EnuPoint e =
+            m_frame.toLocal({p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)});
         m.hasPosition = true;
         m.e = e.e;
         m.n = e.n;
@@ -238,7 +249,8 @@ MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop
         QStringList codes;
         for (const auto& d : *s.diagnostics)
             codes << QStringLiteral("%1:%2").arg(d.componentId).arg(d.faultCode);
-        m.healthText = codes.isEmpty() ? tr("no active diagnostics") : tr("diagnostics %1").arg(codes.join(QLatin1Char(' ')));
+        m.healthText = codes.isEmpty() ? tr("no active diagnostics")
+                                       : tr("diagnostics %1").arg(codes.join(QLatin1Char(' ')));
     } else if (s.health) {
         m.health = HealthLevel::Ok;
     }
@@ -265,7 +277,8 @@ CommandResult IsoBridge::stopAll() {
     }
     if (done.isEmpty())
         return CommandResult::failure(tr("no ISO 23725 link configured"));
-    return CommandResult::success(tr("all-stop Apply sent on %1 (state shown as the AHS reports it)").arg(done.join(QStringLiteral(", "))));
+    return CommandResult::success(tr("all-stop Apply sent on %1 (state shown as the AHS reports it)")
+                                      .arg(done.join(QStringLiteral(", "))));
 }
 
 CommandResult IsoBridge::stopMachine(const QString& id) {
@@ -274,7 +287,8 @@ CommandResult IsoBridge::stopMachine(const QString& id) {
         return CommandResult::failure(tr("unknown ISO 23725 machine: %1").arg(id));
     // ISO 23725 stops autonomous machines per AHS (all-stop); there is no single-machine stop message.
     m_stack->allStopApply(link.toStdString());
-    return CommandResult::success(tr("all-stop Apply sent to AHS %1 (ISO 23725 stops per AHS, not per machine)").arg(link));
+    return CommandResult::success(
+        tr("all-stop Apply sent to AHS %1 (ISO 23725 stops per AHS, not per machine)").arg(link));
 }
 
 CommandResult IsoBridge::clearStop(const QString& id) {

@@ -25,7 +25,9 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
     m_stack = std::make_unique<JausStack>(m_config, static_cast<JausListener&>(*this));
 }
 
-JausBridge::~JausBridge() { stop(); }
+JausBridge::~JausBridge() {
+    stop();
+}
 
 QString JausBridge::start() {
     try {
@@ -86,8 +88,9 @@ void JausBridge::onSubsystemChanged(const SubsystemSnapshot& snapshot) {
     if (state != m_publishedLink) {
         m_publishedLink = state;
         publishLink({QStringLiteral("jaus"), state, 0,
-                     anyUp ? tr("%n subsystem(s) up", "", int(std::count_if(m_linkUp.begin(), m_linkUp.end(),
-                                                                               [](auto& p) { return p.second; })))
+                     anyUp ? tr("%n subsystem(s) up", "",
+                                int(std::count_if(m_linkUp.begin(), m_linkUp.end(),
+                                                  [](auto& p) { return p.second; })))
                            : tr("no subsystem answering")});
     }
 }
@@ -127,22 +130,25 @@ void JausBridge::onEvent(const JausEvent& event) {
         e.severity = EventSeverity::Alarm;
     e.requiresAck = e.severity >= EventSeverity::Warning;
     publishEvent(e);
-    QMetaObject::invokeMethod(this, [this, event] { emit jausEvent(event); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, event] { emit jausEvent(event); }, Qt::QueuedConnection);
 }
 
 MachineState JausBridge::toMachine(const SubsystemSnapshot& s) const {
     MachineState m;
     m.id = machineId(s.subsystem);
     m.protocol = Protocol::Jaus;
-    m.name = s.callSign.empty() ? QStringLiteral("UGV %1").arg(s.subsystem) : QString::fromStdString(s.callSign);
+    m.name =
+        s.callSign.empty() ? QStringLiteral("UGV %1").arg(s.subsystem) : QString::fromStdString(s.callSign);
     m.type = QStringLiteral("UGV");
-    m.link = s.link == jaus::LinkState::Up       ? ocu::LinkState::Up
+    m.link = s.link == jaus::LinkState::Up         ? ocu::LinkState::Up
              : s.link == jaus::LinkState::Degraded ? ocu::LinkState::Degraded
                                                    : ocu::LinkState::Down;
     m.lastDataMs = s.lastMessageUnixMs;
     m.lastMessageMs = s.lastMessageUnixMs;
     if (s.globalPose && s.globalPose->lat && s.globalPose->lon) {
-        const GeoPoint g{*s.globalPose->lat, *s.globalPose->lon, s.globalPose->alt.value_or(m_frame.origin().alt)};
+        const GeoPoint g{*s.globalPose->lat, *s.globalPose->lon,
+                         s.globalPose->alt.value_or(m_frame.origin().alt)};
         const EnuPoint p = m_frame.toLocal(g);
         m.hasPosition = true;
         m.e = p.e;
@@ -287,7 +293,8 @@ CommandResult JausBridge::drive(std::uint16_t subsystem, const DriveCommand& com
         return r;
     auto s = this->subsystem(subsystem);
     if (!s || !s->controlledByUs)
-        return CommandResult::failure(tr("drive refused: this console does not control %1").arg(machineId(subsystem)));
+        return CommandResult::failure(
+            tr("drive refused: this console does not control %1").arg(machineId(subsystem)));
     if (!s->driving)
         m_stack->startDriving(subsystem);
     m_stack->setDriveCommand(subsystem, command);
@@ -310,7 +317,8 @@ CommandResult JausBridge::command(const QString& name, const QJsonObject& args) 
     }
     auto sub = subsystemOf(args.value(QStringLiteral("id")).toString());
     if (!sub)
-        return CommandResult::failure(tr("%1: \"id\" must name a JAUS machine such as \"jaus:101\"").arg(name));
+        return CommandResult::failure(
+            tr("%1: \"id\" must name a JAUS machine such as \"jaus:101\"").arg(name));
     if (name == QLatin1String("release_control")) {
         m_stack->releaseControl(*sub);
         return CommandResult::success(tr("ReleaseControl sent to %1").arg(machineId(*sub)));
@@ -319,9 +327,8 @@ CommandResult JausBridge::command(const QString& name, const QJsonObject& args) 
         return r;
     if (name == QLatin1String("request_control")) {
         m_stack->requestControl(*sub);
-        return CommandResult::success(tr("RequestControl sent to %1 with authority %2")
-                                          .arg(machineId(*sub))
-                                          .arg(m_config.authority));
+        return CommandResult::success(
+            tr("RequestControl sent to %1 with authority %2").arg(machineId(*sub)).arg(m_config.authority));
     }
     if (name == QLatin1String("resume")) {
         m_stack->resume(*sub);

@@ -11,12 +11,16 @@ namespace ocu {
 
 using namespace osyris;
 
-static QString q(const std::string& s) { return QString::fromStdString(s); }
+static QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
 
 OsyrisPassCountLayer::OsyrisPassCountLayer(const PassCountGrid& grid, QPointF worksiteOffset)
     : m_grid(grid), m_offset(worksiteOffset) {}
 
-double OsyrisPassCountLayer::cellSize() const { return m_grid.settings().cellSize; }
+double OsyrisPassCountLayer::cellSize() const {
+    return m_grid.settings().cellSize;
+}
 
 QPointF OsyrisPassCountLayer::origin() const {
     const double s = cellSize();
@@ -56,7 +60,9 @@ OsyrisBridge::OsyrisBridge(const OsyrisConfig& config, const GeoFrame& siteFrame
     m_layer = std::make_unique<OsyrisPassCountLayer>(m_station->grid(), QPointF(o.e, o.n));
 }
 
-OsyrisBridge::~OsyrisBridge() { stop(); }
+OsyrisBridge::~OsyrisBridge() {
+    stop();
+}
 
 QString OsyrisBridge::start() {
     std::string error;
@@ -74,7 +80,9 @@ void OsyrisBridge::stop() {
         m_station->stop();
 }
 
-osyris::PassCountSummary OsyrisBridge::passCountSummary() const { return m_station->grid().summary(); }
+osyris::PassCountSummary OsyrisBridge::passCountSummary() const {
+    return m_station->grid().summary();
+}
 
 // ---- io thread ----
 
@@ -130,14 +138,15 @@ void OsyrisBridge::onStationAlive(std::uint8_t idx, std::optional<SlotRange>) {
     (void)idx;
     if (m_linkUp.exchange(true))
         return; // published once; positions keep the data age fresh
-    publishLink({QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port), ocu::LinkState::Up, 0,
-                 tr("stations heard")});
+    publishLink({QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port), ocu::LinkState::Up,
+                 0, tr("stations heard")});
 }
 
 void OsyrisBridge::onText(std::uint8_t idx, const std::string& text) {
-    FleetEvent e = makeEvent(EventSeverity::Info, ocu::EventKind::TextMessage,
-                             protocolPrefix(Protocol::Osyris) + QString::number(idx),
-                             tr("Message from station %1: %2").arg(idx).arg(q(text)), QStringLiteral("osyris"));
+    FleetEvent e =
+        makeEvent(EventSeverity::Info, ocu::EventKind::TextMessage,
+                  protocolPrefix(Protocol::Osyris) + QString::number(idx),
+                  tr("Message from station %1: %2").arg(idx).arg(q(text)), QStringLiteral("osyris"));
     e.requiresAck = true; // an operator should read messages from the machines
     publishEvent(e);
 }
@@ -168,7 +177,8 @@ void OsyrisBridge::onEvent(Severity severity, const std::string& text) {
 CommandResult OsyrisBridge::stopAll() {
     // OSYRIS has no stop command (manned machines); the stop reaches every driver's display as a message.
     m_station->sendText("STOP ALL issued by the operator control unit");
-    return CommandResult::success(tr("OSYRIS has no remote stop: STOP message sent to every machine's display"));
+    return CommandResult::success(
+        tr("OSYRIS has no remote stop: STOP message sent to every machine's display"));
 }
 
 CommandResult OsyrisBridge::stopMachine(const QString& id) {

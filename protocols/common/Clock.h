@@ -29,7 +29,8 @@ public:
 
 class FakeClock final : public Clock {
 public:
-    explicit FakeClock(TimePoint start = TimePoint{} + std::chrono::hours(1)) : m_now(start.time_since_epoch().count()) {}
+    explicit FakeClock(TimePoint start = TimePoint{} + std::chrono::hours(1))
+        : m_now(start.time_since_epoch().count()) {}
     TimePoint now() const override { return TimePoint(Duration(m_now.load())); }
     void advance(Duration d) { m_now += d.count(); }
     void set(TimePoint t) { m_now = t.time_since_epoch().count(); }

@@ -231,7 +231,9 @@ ConfigDocument::~ConfigDocument() = default;
 ConfigDocument::ConfigDocument(ConfigDocument&&) noexcept = default;
 ConfigDocument& ConfigDocument::operator=(ConfigDocument&&) noexcept = default;
 
-const json& ConfigDocument::root() const { return *m_root; }
+const json& ConfigDocument::root() const {
+    return *m_root;
+}
 
 int ConfigDocument::lineOf(const std::string& pointer) const {
     auto it = m_lines.find(pointer);
@@ -286,7 +288,8 @@ ConfigObject::ConfigObject(const ConfigDocument& doc, std::string pointer, Confi
     } else {
         std::ostringstream os;
         os << doc.fileName() << ":" << doc.lineOf(m_pointer) << ": "
-           << (m_pointer.empty() ? std::string("document") : m_pointer.substr(1)) << ": must be a JSON object";
+           << (m_pointer.empty() ? std::string("document") : m_pointer.substr(1))
+           << ": must be a JSON object";
         errors.add(os.str());
     }
 }
@@ -313,7 +316,9 @@ void ConfigObject::error(std::string_view key, std::string_view message) {
     m_errors->add(where(key) + ": " + std::string(message));
 }
 
-bool ConfigObject::has(std::string_view key) const { return m_json && m_json->contains(std::string(key)); }
+bool ConfigObject::has(std::string_view key) const {
+    return m_json && m_json->contains(std::string(key));
+}
 
 const json* ConfigObject::find(std::string_view key) {
     m_known.insert(std::string(key));
@@ -358,7 +363,8 @@ double ConfigObject::number(std::string_view key, double def, double min, double
     return v ? *v : def;
 }
 
-std::int64_t ConfigObject::integer(std::string_view key, std::int64_t def, std::int64_t min, std::int64_t max) {
+std::int64_t ConfigObject::integer(std::string_view key, std::int64_t def, std::int64_t min,
+                                   std::int64_t max) {
     const json* j = find(key);
     if (!j)
         return def;
@@ -366,11 +372,11 @@ std::int64_t ConfigObject::integer(std::string_view key, std::int64_t def, std::
         error(key, "must be an integer, not " + std::string(j->is_number() ? "a fraction" : j->type_name()));
         return def;
     }
-    std::int64_t v = j->is_number_unsigned() ? static_cast<std::int64_t>(j->get<std::uint64_t>())
-                                             : j->get<std::int64_t>();
+    std::int64_t v =
+        j->is_number_unsigned() ? static_cast<std::int64_t>(j->get<std::uint64_t>()) : j->get<std::int64_t>();
     if (v < min || v > max) {
-        error(key, std::to_string(v) + " is out of range [" + std::to_string(min) + ", " + std::to_string(max) +
-                       "]");
+        error(key, std::to_string(v) + " is out of range [" + std::to_string(min) + ", " +
+                       std::to_string(max) + "]");
         return def;
     }
     return v;
@@ -398,7 +404,8 @@ std::string ConfigObject::string(std::string_view key, const std::string& def) {
     return j->get<std::string>();
 }
 
-std::string ConfigObject::choice(std::string_view key, const std::string& def, const std::vector<std::string>& allowed) {
+std::string ConfigObject::choice(std::string_view key, const std::string& def,
+                                 const std::vector<std::string>& allowed) {
     bool present = has(key);
     std::string v = string(key, def);
     if (present && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
@@ -455,7 +462,9 @@ std::vector<ConfigObject> ConfigObject::objectList(std::string_view key) {
     return out;
 }
 
-const json* ConfigObject::raw(std::string_view key) { return find(key); }
+const json* ConfigObject::raw(std::string_view key) {
+    return find(key);
+}
 
 static std::size_t editDistance(const std::string& a, const std::string& b) {
     std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);

@@ -9,8 +9,8 @@ struct GeoFrame::Impl {
 };
 
 GeoFrame::GeoFrame(GeoPoint origin)
-    : m_origin(origin), m_impl(std::make_unique<Impl>(Impl{GeographicLib::LocalCartesian(origin.lat, origin.lon,
-                                                                                           origin.alt)})) {}
+    : m_origin(origin), m_impl(std::make_unique<Impl>(
+                            Impl{GeographicLib::LocalCartesian(origin.lat, origin.lon, origin.alt)})) {}
 GeoFrame::~GeoFrame() = default;
 GeoFrame::GeoFrame(const GeoFrame& o) : m_origin(o.m_origin), m_impl(std::make_unique<Impl>(*o.m_impl)) {}
 GeoFrame& GeoFrame::operator=(const GeoFrame& o) {

@@ -9,7 +9,9 @@ namespace ocu {
 
 IoThread::IoThread(std::string name) : m_name(std::move(name)) {}
 
-IoThread::~IoThread() { stop(); }
+IoThread::~IoThread() {
+    stop();
+}
 
 void IoThread::start() {
     if (running())

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <future>
+#include <memory>
 #include <optional>
 #include <string>
 #include <thread>
@@ -33,9 +34,10 @@ public:
     template <class F> auto call(F&& f) -> decltype(f()) {
         if (onThread() || !running())
             return f();
-        std::packaged_task<decltype(f())()> task(std::forward<F>(f));
-        auto fut = task.get_future();
-        boost::asio::post(m_context, [&task] { task(); });
+        // Shared: the io thread may still be leaving task() after the caller already has the result.
+        auto task = std::make_shared<std::packaged_task<decltype(f())()>>(std::forward<F>(f));
+        auto fut = task->get_future();
+        boost::asio::post(m_context, [task] { (*task)(); });
         return fut.get();
     }
 

@@ -30,9 +30,13 @@ void setLogSink(LogSink sink) {
     g_sink = std::move(sink);
 }
 
-void setLogThreshold(LogLevel level) { g_threshold = static_cast<int>(level); }
+void setLogThreshold(LogLevel level) {
+    g_threshold = static_cast<int>(level);
+}
 
-bool logEnabled(LogLevel level) { return static_cast<int>(level) >= g_threshold.load(); }
+bool logEnabled(LogLevel level) {
+    return static_cast<int>(level) >= g_threshold.load();
+}
 
 void logMessage(LogLevel level, std::string_view category, std::string_view message) {
     if (!logEnabled(level))
@@ -46,8 +50,8 @@ void logMessage(LogLevel level, std::string_view category, std::string_view mess
         sink(level, category, message);
         return;
     }
-    std::fprintf(stderr, "[%s] %.*s: %.*s\n", toString(level), static_cast<int>(category.size()), category.data(),
-                 static_cast<int>(message.size()), message.data());
+    std::fprintf(stderr, "[%s] %.*s: %.*s\n", toString(level), static_cast<int>(category.size()),
+                 category.data(), static_cast<int>(message.size()), message.data());
 }
 
 } // namespace ocu

@@ -22,9 +22,15 @@ inline void logDebug(std::string_view cat, std::string_view msg) {
     if (logEnabled(LogLevel::Debug))
         logMessage(LogLevel::Debug, cat, msg);
 }
-inline void logInfo(std::string_view cat, std::string_view msg) { logMessage(LogLevel::Info, cat, msg); }
-inline void logWarning(std::string_view cat, std::string_view msg) { logMessage(LogLevel::Warning, cat, msg); }
-inline void logError(std::string_view cat, std::string_view msg) { logMessage(LogLevel::Error, cat, msg); }
+inline void logInfo(std::string_view cat, std::string_view msg) {
+    logMessage(LogLevel::Info, cat, msg);
+}
+inline void logWarning(std::string_view cat, std::string_view msg) {
+    logMessage(LogLevel::Warning, cat, msg);
+}
+inline void logError(std::string_view cat, std::string_view msg) {
+    logMessage(LogLevel::Error, cat, msg);
+}
 
 const char* toString(LogLevel level);
 

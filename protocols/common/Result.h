@@ -30,6 +30,8 @@ private:
     std::variant<T, Error> m_v;
 };
 
-inline Error makeError(std::string message) { return Error{std::move(message)}; }
+inline Error makeError(std::string message) {
+    return Error{std::move(message)};
+}
 
 } // namespace ocu

@@ -13,7 +13,7 @@ struct UdpOptions {
     std::string bindAddress = "0.0.0.0"; // local address to bind
     std::uint16_t port = 0;              // 0 = ephemeral
     bool reuseAddress = true;
-    std::string multicastGroup;          // empty = no multicast membership
+    std::string multicastGroup;               // empty = no multicast membership
     std::string interfaceAddress = "0.0.0.0"; // interface for join and outbound multicast; 0.0.0.0 = default
     int multicastTtl = 1;
     bool multicastLoop = true;

@@ -186,9 +186,9 @@ struct IsoStack::Impl {
                 items.push_back("machine " + a.hid + " (" + a.equipmentId + ", " + a.type +
                                 ") of the AHS is not in the FMS fleet");
         counters.add("fleet.discrepancies", items.size());
+        listener.onFleetDiscrepancies(l.cfg.name, items);
         for (auto& i : items)
             event(IsoSeverity::Warning, "fleet discrepancy on " + l.cfg.name + ": " + i);
-        listener.onFleetDiscrepancies(l.cfg.name, items);
     }
 
     void onFleet(Link& l, const FleetDefinitionV2& f) {
@@ -588,8 +588,6 @@ void Link::onClose(SessionId id, const std::string& reason) {
                                           (map ? " (previous map kept)" : std::string()));
     }
     fetchPending = false;
-    s.listener.onLinkState(cfg.name, LinkState::Down, reason);
-    s.event(IsoSeverity::Warning, "link " + cfg.name + " down: " + reason);
     // §2.1 rule 5 / §7.7: all-stop and machine state are UNKNOWN while disconnected.
     allStop.state = AllStopState::Unknown;
     allStop.activeId.reset();
@@ -599,6 +597,9 @@ void Link::onClose(SessionId id, const std::string& reason) {
         m.stateKnown = false;
         s.listener.onMachineChanged(m);
     }
+    // Reported last, so a listener that sees DOWN already sees UNKNOWN all-stop and machine state.
+    s.listener.onLinkState(cfg.name, LinkState::Down, reason);
+    s.event(IsoSeverity::Warning, "link " + cfg.name + " down: " + reason);
 }
 
 void Link::onConnectFailed(const std::string& reason, std::chrono::milliseconds retryIn) {

@@ -58,7 +58,7 @@ struct JausConfig {
     // The console's drive demand must be refreshed within this time, or the stream goes to zero: a frozen
     // GUI or script must not keep a vehicle moving on its last command. 0 disables.
     double driveCommandTimeoutS = 0.5;
-    bool velocityDrive = true;       // default drive mode when a platform offers both drivers
+    bool velocityDrive = true; // default drive mode when a platform offers both drivers
 
     JausId ownId() const { return JausId{subsystemId, nodeId, componentId}; }
     bool mayControl() const { return role != Role::Monitor && authority > 0; }

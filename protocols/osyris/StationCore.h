@@ -104,7 +104,7 @@ private:
     struct Asset {
         std::uint8_t owner;
         IntervalSet pending; // slots still to send (Asset) or overheard (Suppressed)
-        int priority; // higher first
+        int priority;        // higher first
         TimePoint notBefore;
         bool ncfSent = false;
         bool othersAnswering = false;

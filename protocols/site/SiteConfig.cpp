@@ -29,7 +29,8 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
     if (auto s = root.object("simulation")) {
         cfg.simulation.enabled = s->boolean("enabled", cfg.simulation.enabled);
         cfg.simulation.jausUgvs = static_cast<int>(s->integer("jaus_ugvs", cfg.simulation.jausUgvs, 0, 50));
-        cfg.simulation.ahsTrucks = static_cast<int>(s->integer("ahs_trucks", cfg.simulation.ahsTrucks, 0, 1000));
+        cfg.simulation.ahsTrucks =
+            static_cast<int>(s->integer("ahs_trucks", cfg.simulation.ahsTrucks, 0, 1000));
         cfg.simulation.osyrisRollers =
             static_cast<int>(s->integer("osyris_rollers", cfg.simulation.osyrisRollers, 0, 3));
         cfg.simulation.osyrisSpeedUp = s->number("osyris_speed_up", cfg.simulation.osyrisSpeedUp, 1, 1000);
@@ -42,7 +43,8 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
     }
     if (auto f = root.object("fleet")) {
         cfg.fleet.staleAfterSeconds = f->number("stale_after_s", cfg.fleet.staleAfterSeconds, 0.5, 3600);
-        cfg.fleet.removeAfterSeconds = f->number("remove_after_s", cfg.fleet.removeAfterSeconds, 1, 86400 * 7);
+        cfg.fleet.removeAfterSeconds =
+            f->number("remove_after_s", cfg.fleet.removeAfterSeconds, 1, 86400 * 7);
         cfg.fleet.monitorRateHz = f->number("monitor_rate_hz", cfg.fleet.monitorRateHz, 0.01, 100);
         cfg.fleet.auditLog = f->string("audit_log", cfg.fleet.auditLog);
         if (cfg.fleet.removeAfterSeconds < cfg.fleet.staleAfterSeconds)
@@ -50,7 +52,8 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
         f->finish();
     }
     if (auto p = root.object("own_position")) {
-        cfg.ownPosition.source = p->choice("source", cfg.ownPosition.source, {"none", "system", "nmea-file", "nmea-serial"});
+        cfg.ownPosition.source =
+            p->choice("source", cfg.ownPosition.source, {"none", "system", "nmea-file", "nmea-serial"});
         cfg.ownPosition.path = p->string("path", cfg.ownPosition.path);
         cfg.ownPosition.fmsMachineId = p->string("fms_machine_id", cfg.ownPosition.fmsMachineId);
         if ((cfg.ownPosition.source == "nmea-file" || cfg.ownPosition.source == "nmea-serial") &&

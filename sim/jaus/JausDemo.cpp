@@ -5,7 +5,7 @@
 namespace ocu::sim {
 
 jaus::TransportSettings JausDemo::loopbackTransport(std::uint16_t multicastPort, const std::string& group,
-                                                   const std::string& interfaceAddress) {
+                                                    const std::string& interfaceAddress) {
     jaus::TransportSettings t;
     const bool loopback = interfaceAddress == "127.0.0.1";
     t.bindAddress = loopback ? "127.0.0.1" : "0.0.0.0";

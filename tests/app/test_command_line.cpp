@@ -25,8 +25,9 @@ private slots:
     void everyOption() {
         CommandLineOptions o;
         QString e;
-        QVERIFY2(parse({"--config", "site.json", "--no-sim", "--screenshot", "o.png", "--view", "map", "--size",
-                        "800x600", "--settle", "1.5", "--lang", "de", "--log", "ocu.jaus,ocu.iso", "--reset-layout"},
+        QVERIFY2(parse({"--config", "site.json", "--no-sim", "--screenshot", "o.png", "--view", "map",
+                        "--size", "800x600", "--settle", "1.5", "--lang", "de", "--log", "ocu.jaus,ocu.iso",
+                        "--reset-layout"},
                        o, e),
                  qPrintable(e));
         QCOMPARE(o.configFile, QString("site.json"));
@@ -73,8 +74,8 @@ private slots:
         QString e, help;
         QVERIFY(!parseCommandLine({"ocu", "--help"}, o, e, help));
         QVERIFY(e.isEmpty());
-        for (const char* opt : {"--config", "--no-sim", "--screenshot", "--view", "--size", "--settle", "--lang",
-                                "--log", "--headless", "--duration", "--reset-layout"})
+        for (const char* opt : {"--config", "--no-sim", "--screenshot", "--view", "--size", "--settle",
+                                "--lang", "--log", "--headless", "--duration", "--reset-layout"})
             QVERIFY2(help.contains(QLatin1String(opt)), opt);
     }
 };

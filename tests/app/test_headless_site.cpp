@@ -72,16 +72,20 @@ private slots:
         QVERIFY(m_p.waitForStarted(10000));
     }
     void machinesOfAllThreeProtocols() {
-        QVERIFY2(waitFor([&] { return machinesOf("jaus") >= 2 && machinesOf("iso23725") >= 6 && machinesOf("osyris") >= 3; },
-                         20000),
+        QVERIFY2(waitFor(
+                     [&] {
+                         return machinesOf("jaus") >= 2 && machinesOf("iso23725") >= 6 &&
+                                machinesOf("osyris") >= 3;
+                     },
+                     20000),
                  qPrintable(QString("jaus %1 iso %2 osyris %3")
                                 .arg(machinesOf("jaus"))
                                 .arg(machinesOf("iso23725"))
                                 .arg(machinesOf("osyris"))));
         // Every machine line carries the documented fields.
         for (const auto& o : machines())
-            for (const char* k : {"id", "protocol", "name", "lat", "lon", "e", "n", "heading", "speed", "state", "stop",
-                                  "controller", "age_ms"})
+            for (const char* k : {"id", "protocol", "name", "lat", "lon", "e", "n", "heading", "speed",
+                                  "state", "stop", "controller", "age_ms"})
                 QVERIFY2(o.contains(k), qPrintable(o.value("id").toString() + " lacks " + k));
     }
     void clearStopNeedsConfirmation() {
@@ -93,17 +97,22 @@ private slots:
         // JAUS emergency stops go to the vehicles this console controls: take control of both first.
         send(R"({"cmd":"request_control","id":"jaus:126","req":1})");
         send(R"({"cmd":"request_control","id":"jaus:127","req":2})");
-        QVERIFY(waitFor([&] {
-            const auto m = machines();
-            return m.value("jaus:126").value("control") == "me" && m.value("jaus:127").value("control") == "me";
-        }, 8000));
+        QVERIFY(waitFor(
+            [&] {
+                const auto m = machines();
+                return m.value("jaus:126").value("control") == "me" &&
+                       m.value("jaus:127").value("control") == "me";
+            },
+            8000));
         // ISO 23725 machines must be known (not UNKNOWN) before the stop, so the change is visible.
-        QVERIFY(waitFor([&] {
-            for (const auto& o : machines())
-                if (o.value("protocol") == "iso23725" && o.value("stop") != "none")
-                    return false;
-            return true;
-        }, 8000));
+        QVERIFY(waitFor(
+            [&] {
+                for (const auto& o : machines())
+                    if (o.value("protocol") == "iso23725" && o.value("stop") != "none")
+                        return false;
+                return true;
+            },
+            8000));
         const int before = m_lines.size();
         QElapsedTimer t;
         t.start();

@@ -30,8 +30,8 @@ private slots:
             QVERIFY(d->features() & QDockWidget::DockWidgetMovable);
             titles << d->windowTitle();
         }
-        QCOMPARE(titles, QStringList({"Fleet", "Site map (2D)", "Site 3D", "JAUS control", "Teleop", "Pass counts",
-                                      "Event log"}));
+        QCOMPARE(titles, QStringList({"Fleet", "Site map (2D)", "Site 3D", "JAUS control", "Teleop",
+                                      "Pass counts", "Event log"}));
     }
     void stopAllAlwaysVisibleWithShortcut() {
         MainWindow w;

@@ -49,11 +49,13 @@ private slots:
         QVERIFY(r.out.contains("--headless"));
     }
     void misspelledKeyIsRefused() {
-        QString path = writeFile("typo.json", "{\n  \"site\": {\n    \"origin\": {\"latitude\": 48, \"longitude\": 11},\n"
-                                              "    \"nmae\": \"Quarry\"\n  }\n}\n");
+        QString path = writeFile("typo.json",
+                                 "{\n  \"site\": {\n    \"origin\": {\"latitude\": 48, \"longitude\": 11},\n"
+                                 "    \"nmae\": \"Quarry\"\n  }\n}\n");
         Run r = run({"--config", path, "--screenshot", m_dir.filePath("never.png"), "--settle", "0"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains(path + ":4: site.nmae: unknown key \"nmae\" (did you mean \"name\"?)"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(path + ":4: site.nmae: unknown key \"nmae\" (did you mean \"name\"?)"),
+                 qPrintable(r.err));
         QVERIFY(!QFile::exists(m_dir.filePath("never.png")));
     }
     void latitudeOutOfRangeIsRefused() {
@@ -61,7 +63,8 @@ private slots:
                                              "      \"longitude\": 11\n    }\n  }\n}\n");
         Run r = run({"--config", path, "--headless", "--duration", "1"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains(path + ":4: site.origin.latitude: 123 is out of range [-90, 90]"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(path + ":4: site.origin.latitude: 123 is out of range [-90, 90]"),
+                 qPrintable(r.err));
     }
     void headlessScreenshotOfWholeWindow() {
         const QString png = m_dir.filePath("all.png");

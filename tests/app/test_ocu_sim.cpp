@@ -54,7 +54,7 @@ private slots:
             }
         }
         QVERIFY2(protocols.size() == 3, qPrintable(QStringList(protocols.values()).join(",") + " / " +
-                                                    QString::fromUtf8(ocu.readAllStandardError())));
+                                                   QString::fromUtf8(ocu.readAllStandardError())));
         QVERIFY(ids.contains("jaus:126"));
         QVERIFY(ids.size() >= 1 + 3 + 2); // 1 UGV, 3 trucks, a paver and a roller
         ocu.closeWriteChannel();

@@ -116,7 +116,8 @@ private slots:
                     for (int col = 0; col < pc->columns() && !count; col += 3)
                         if (int n = pc->count(col, row); n > 0) {
                             count = n;
-                            cellCentre = pc->origin() + QPointF((col + 0.5) * pc->cellSize(), (row + 0.5) * pc->cellSize());
+                            cellCentre = pc->origin() +
+                                         QPointF((col + 0.5) * pc->cellSize(), (row + 0.5) * pc->cellSize());
                         }
                 return count > 0;
             }(),

@@ -19,20 +19,20 @@ namespace ocu {
 using namespace jaus;
 
 JausControlPanel::JausControlPanel(JausBridge* bridge, FleetSelection* selection, QWidget* parent)
-    : QWidget(parent), m_bridge(bridge), m_selection(selection), m_model(new JausSubsystemModel(bridge, this)),
-      m_table(new QTableView(this)), m_details(new VehicleDetailsWidget(bridge, this)), m_roleLabel(new QLabel(this)),
+    : QWidget(parent), m_bridge(bridge), m_selection(selection),
+      m_model(new JausSubsystemModel(bridge, this)), m_table(new QTableView(this)),
+      m_details(new VehicleDetailsWidget(bridge, this)), m_roleLabel(new QLabel(this)),
       m_releaseAll(new QPushButton(tr("Release all"), this)) {
     setObjectName(QStringLiteral("jaus-control-panel"));
     auto* top = new QHBoxLayout;
     const auto& cfg = bridge->config();
-    m_roleLabel->setText(cfg.mayControl()
-                             ? tr("This console: %1 [%2] · authority %3")
-                                   .arg(QString::fromStdString(cfg.callSign))
-                                   .arg(cfg.subsystemId)
-                                   .arg(cfg.authority)
-                             : tr("This console: %1 [%2] · MONITOR role: commands are disabled")
-                                   .arg(QString::fromStdString(cfg.callSign))
-                                   .arg(cfg.subsystemId));
+    m_roleLabel->setText(cfg.mayControl() ? tr("This console: %1 [%2] · authority %3")
+                                                .arg(QString::fromStdString(cfg.callSign))
+                                                .arg(cfg.subsystemId)
+                                                .arg(cfg.authority)
+                                          : tr("This console: %1 [%2] · MONITOR role: commands are disabled")
+                                                .arg(QString::fromStdString(cfg.callSign))
+                                                .arg(cfg.subsystemId));
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
     m_releaseAll->setEnabled(cfg.mayControl());
@@ -90,16 +90,19 @@ static QPushButton* findButton(QWidget* cell, const char* name) {
 }
 
 QPushButton* JausControlPanel::controlButton(std::uint16_t subsystem) const {
-    return findButton(m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
-                      "control");
+    return findButton(
+        m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
+        "control");
 }
 QPushButton* JausControlPanel::releaseButton(std::uint16_t subsystem) const {
-    return findButton(m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
-                      "release");
+    return findButton(
+        m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
+        "release");
 }
 QPushButton* JausControlPanel::monitorButton(std::uint16_t subsystem) const {
-    return findButton(m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
-                      "monitor");
+    return findButton(
+        m_table->indexWidget(m_model->index(m_model->rowOf(subsystem), JausSubsystemModel::Actions)),
+        "monitor");
 }
 
 void JausControlPanel::installRowButtons(int first, int last) {
@@ -126,10 +129,12 @@ void JausControlPanel::installRowButtons(int first, int last) {
         });
         connect(control, &QPushButton::clicked, this, [this, sub] {
             selectSubsystem(sub);
-            m_bridge->command(QStringLiteral("request_control"), {{QStringLiteral("id"), JausBridge::machineId(sub)}});
+            m_bridge->command(QStringLiteral("request_control"),
+                              {{QStringLiteral("id"), JausBridge::machineId(sub)}});
         });
         connect(release, &QPushButton::clicked, this, [this, sub] {
-            m_bridge->command(QStringLiteral("release_control"), {{QStringLiteral("id"), JausBridge::machineId(sub)}});
+            m_bridge->command(QStringLiteral("release_control"),
+                              {{QStringLiteral("id"), JausBridge::machineId(sub)}});
         });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
         // Index widgets do not take part in ResizeToContents: size the column for the buttons.
@@ -152,7 +157,8 @@ void JausControlPanel::refreshButtons() {
         QWidget* cell = m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions));
         if (!s || !cell)
             continue;
-        // Control can be requested once the vehicle's mobility component (its access-control service) is known.
+        // Control can be requested once the vehicle's mobility component (its access-control service) is
+        // known.
         const bool up = s->link != jaus::LinkState::Down && s->mobilityComponent.subsystem != 0;
         if (auto* b = findButton(cell, "control"))
             b->setEnabled(may && up && !s->controlledByUs);

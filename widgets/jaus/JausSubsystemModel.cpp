@@ -26,7 +26,9 @@ JausSubsystemModel::JausSubsystemModel(JausBridge* bridge, QObject* parent)
 int JausSubsystemModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : static_cast<int>(m_rows.size());
 }
-int JausSubsystemModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int JausSubsystemModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 std::uint16_t JausSubsystemModel::subsystemAt(int row) const {
     return row >= 0 && row < m_rows.size() ? m_rows[row].subsystem : 0;
@@ -86,8 +88,8 @@ JausSubsystemModel::RowColour JausSubsystemModel::rowColour(const SubsystemSnaps
         // Standby and Ready are normal while controlled; anything else needs the operator's attention.
         const bool normalState = !s.management || *s.management == ManagementState::Ready ||
                                  *s.management == ManagementState::Standby;
-        const bool warn = s.emergency || s.link != jaus::LinkState::Up || (s.health && s.health->severity >= 2) ||
-                          !normalState;
+        const bool warn = s.emergency || s.link != jaus::LinkState::Up ||
+                          (s.health && s.health->severity >= 2) || !normalState;
         return warn ? RowColour::OursWarning : RowColour::OursOk;
     }
     // Our own ID in a report after we released is a stale report, not another console.

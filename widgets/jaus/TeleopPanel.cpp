@@ -28,9 +28,10 @@ using namespace jaus;
 TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDevice* device, QWidget* parent)
     : QWidget(parent), m_bridge(bridge), m_selection(selection), m_controller(new TeleopController(this)),
       m_stick(new VirtualStick(this)), m_axes(new AxisDisplay(this)), m_title(new QLabel(this)),
-      m_state(new QLabel(this)), m_live(new QLabel(this)), m_device(new QLabel(this)), m_mode(new QComboBox(this)),
-      m_limit(new QSlider(Qt::Horizontal, this)), m_limitLabel(new QLabel(this)),
-      m_estop(new QPushButton(tr("E-STOP"), this)), m_clear(new HoldToConfirmButton(tr("Hold to clear emergency"), this)) {
+      m_state(new QLabel(this)), m_live(new QLabel(this)), m_device(new QLabel(this)),
+      m_mode(new QComboBox(this)), m_limit(new QSlider(Qt::Horizontal, this)), m_limitLabel(new QLabel(this)),
+      m_estop(new QPushButton(tr("E-STOP"), this)),
+      m_clear(new HoldToConfirmButton(tr("Hold to clear emergency"), this)) {
     setObjectName(QStringLiteral("teleop-panel"));
     setFocusPolicy(Qt::StrongFocus);
     m_controller->setRateHz(bridge->config().driveRateHz);
@@ -49,8 +50,9 @@ TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDev
     m_estop->setToolTip(tr("Emergency stop of this vehicle (Space or Esc). Never asks for confirmation."));
     connect(m_estop, &QPushButton::clicked, this, &TeleopPanel::emergencyStop);
     // With or without the dead-man key (Shift) held: the stop must never depend on modifiers.
-    for (QKeySequence k : {QKeySequence(Qt::Key_Space), QKeySequence(Qt::Key_Escape), QKeySequence(Qt::SHIFT | Qt::Key_Space),
-                           QKeySequence(Qt::SHIFT | Qt::Key_Escape)}) {
+    for (QKeySequence k :
+         {QKeySequence(Qt::Key_Space), QKeySequence(Qt::Key_Escape), QKeySequence(Qt::SHIFT | Qt::Key_Space),
+          QKeySequence(Qt::SHIFT | Qt::Key_Escape)}) {
         auto* sc = new QShortcut(k, this);
         sc->setContext(Qt::WidgetWithChildrenShortcut);
         connect(sc, &QShortcut::activated, this, &TeleopPanel::emergencyStop);
@@ -146,7 +148,9 @@ void TeleopPanel::setVehicle(std::uint16_t subsystem) {
     refresh();
 }
 
-bool TeleopPanel::velocityMode() const { return m_mode->currentData().toString() == QLatin1String("velocity"); }
+bool TeleopPanel::velocityMode() const {
+    return m_mode->currentData().toString() == QLatin1String("velocity");
+}
 
 DriveCommand TeleopPanel::toDriveCommand(DriveAxes a) const {
     DriveCommand c;
@@ -189,7 +193,8 @@ void TeleopPanel::refresh() {
     auto s = m_subsystem ? m_bridge->subsystem(m_subsystem) : std::nullopt;
     if (!s) {
         m_title->setText(tr("No JAUS vehicle selected"));
-        m_state->setText(tr("Select a vehicle in the fleet list or the JAUS control panel, then take control."));
+        m_state->setText(
+            tr("Select a vehicle in the fleet list or the JAUS control panel, then take control."));
         m_live->clear();
         m_controller->setEnabled(false);
         m_estop->setEnabled(false);
@@ -216,7 +221,8 @@ void TeleopPanel::refresh() {
         state << tr("link %1").arg(QString::fromUtf8(jaus::toString(s->link)));
     if (s->management)
         state << tr("state %1").arg(QString::fromUtf8(jaus::toString(*s->management)));
-    state << (s->driving ? tr("drive session open") : tr("drive session closed (vehicle stops after its 1 s drive timeout)"));
+    state << (s->driving ? tr("drive session open")
+                         : tr("drive session closed (vehicle stops after its 1 s drive timeout)"));
     m_state->setText(state.join(QStringLiteral(" · ")));
     m_state->setStyleSheet(s->emergency ? QStringLiteral("color:#c81e1e; font-weight:bold;") : QString());
     QStringList live;
@@ -232,8 +238,10 @@ void TeleopPanel::refresh() {
     double maxFwd = 1.0;
     if (s->platform && s->platform->maxForwardSpeed)
         maxFwd = *s->platform->maxForwardSpeed;
-    m_limitLabel->setText(velocityMode() ? tr("%1 % · %2 m/s").arg(m_limit->value()).arg(maxFwd * m_limit->value() / 100.0, 0, 'f', 2)
-                                         : tr("%1 %").arg(m_limit->value()));
+    m_limitLabel->setText(
+        velocityMode()
+            ? tr("%1 % · %2 m/s").arg(m_limit->value()).arg(maxFwd * m_limit->value() / 100.0, 0, 'f', 2)
+            : tr("%1 %").arg(m_limit->value()));
 }
 
 void TeleopPanel::keyPressEvent(QKeyEvent* e) {

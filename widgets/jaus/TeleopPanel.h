@@ -27,7 +27,8 @@ class TeleopPanel : public QWidget {
     Q_OBJECT
 public:
     // device: the joystick source (SDL2 in the app, a fake in tests); may be null.
-    TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDevice* device, QWidget* parent = nullptr);
+    TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDevice* device,
+                QWidget* parent = nullptr);
     ~TeleopPanel() override;
 
     std::uint16_t vehicle() const { return m_subsystem; }

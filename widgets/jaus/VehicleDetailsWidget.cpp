@@ -40,7 +40,8 @@ VehicleDetailsWidget::VehicleDetailsWidget(JausBridge* bridge, QWidget* parent)
             return;
         m_messages->insertItem(0, QStringLiteral("%1  %2  %3")
                                       .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")),
-                                           QString::fromUtf8(jaus::toString(e.kind)), QString::fromStdString(e.text)));
+                                           QString::fromUtf8(jaus::toString(e.kind)),
+                                           QString::fromStdString(e.text)));
         while (m_messages->count() > 200)
             delete m_messages->takeItem(m_messages->count() - 1);
     });
@@ -82,7 +83,8 @@ void VehicleDetailsWidget::rebuild(const SubsystemSnapshot& s) {
 
     auto* state = section(tr("State"));
     row(state, tr("Access"), JausSubsystemModel::accessText(s.access));
-    row(state, tr("Management"), s.management ? QString::fromUtf8(jaus::toString(*s.management)) : tr("unknown"));
+    row(state, tr("Management"),
+        s.management ? QString::fromUtf8(jaus::toString(*s.management)) : tr("unknown"));
     row(state, tr("Emergency"), s.emergency ? tr("YES") : tr("no"));
     row(state, tr("Drive session"), s.driving ? tr("open") : tr("closed"));
     row(state, tr("Access timeout"), s.accessTimeoutS ? tr("%1 s").arg(s.accessTimeoutS) : tr("unknown"));
@@ -109,7 +111,8 @@ void VehicleDetailsWidget::rebuild(const SubsystemSnapshot& s) {
         row(pose, tr("Longitude"), num(s.globalPose->lon, 7, QStringLiteral("°")));
         row(pose, tr("Altitude"), num(s.globalPose->alt, 1, QStringLiteral("m")));
         if (s.globalPose->yaw)
-            row(pose, tr("Heading"), QStringLiteral("%1 °").arg(std::fmod(*s.globalPose->yaw * 180 / M_PI + 360, 360), 0, 'f', 1));
+            row(pose, tr("Heading"),
+                QStringLiteral("%1 °").arg(std::fmod(*s.globalPose->yaw * 180 / M_PI + 360, 360), 0, 'f', 1));
     }
     if (s.localPose) {
         row(pose, tr("Local X"), num(s.localPose->x, 2, QStringLiteral("m")));
@@ -137,7 +140,8 @@ void VehicleDetailsWidget::rebuild(const SubsystemSnapshot& s) {
         auto* node = row(sub, tr("Node %1").arg(n.node), QString());
         node->setExpanded(true);
         for (const ComponentInfo& c : n.components) {
-            auto* comp = row(node, QStringLiteral("[%1.%2.%3]").arg(s.subsystem).arg(n.node).arg(c.component), QString());
+            auto* comp = row(node, QStringLiteral("[%1.%2.%3]").arg(s.subsystem).arg(n.node).arg(c.component),
+                             QString());
             comp->setExpanded(true);
             for (const ServiceRecord& r : c.services)
                 row(comp, QString::fromStdString(r.uri), QStringLiteral("v%1.%2").arg(r.major).arg(r.minor));

@@ -27,7 +27,9 @@ SdlJoystickInput::~SdlJoystickInput() {
         SDL_QuitSubSystem(SDL_INIT_JOYSTICK);
 }
 
-QString SdlJoystickInput::name() const { return m_joystick ? m_name : tr("No joystick"); }
+QString SdlJoystickInput::name() const {
+    return m_joystick ? m_name : tr("No joystick");
+}
 
 QStringList SdlJoystickInput::deviceNames() const {
     QStringList out;
@@ -95,7 +97,8 @@ void SdlJoystickInput::poll() {
         double v = std::clamp(raw[idx], -1.0, 1.0);
         return applyDeadZone(invert ? -v : v, m_mapping.deadZone);
     };
-    DriveAxes a{axis(m_mapping.forwardAxis, m_mapping.invertForward), axis(m_mapping.turnAxis, m_mapping.invertTurn)};
+    DriveAxes a{axis(m_mapping.forwardAxis, m_mapping.invertForward),
+                axis(m_mapping.turnAxis, m_mapping.invertTurn)};
     if (!(a == m_axes)) {
         m_axes = a;
         emit axesChanged(a);

@@ -10,8 +10,8 @@ class QTimer;
 namespace ocu {
 
 struct AxisMapping {
-    int forwardAxis = 1; // SDL axis index (game controller: left stick Y)
-    int turnAxis = 0;    // left stick X
+    int forwardAxis = 1;       // SDL axis index (game controller: left stick Y)
+    int turnAxis = 0;          // left stick X
     bool invertForward = true; // stick pushed away reads negative in SDL
     bool invertTurn = false;
     double deadZone = 0.12;

@@ -18,7 +18,9 @@ void TeleopController::setRateHz(double hz) {
     m_timer->start(static_cast<int>(1000.0 / m_rateHz));
 }
 
-void TeleopController::setSpeedLimit(double fraction) { m_limit = std::clamp(fraction, 0.0, 1.0); }
+void TeleopController::setSpeedLimit(double fraction) {
+    m_limit = std::clamp(fraction, 0.0, 1.0);
+}
 
 void TeleopController::setEnabled(bool enabled) {
     if (m_enabled == enabled)
@@ -88,7 +90,7 @@ TeleopController::Source TeleopController::activeSource() const {
 }
 
 bool TeleopController::handleKey(int key, bool pressed, bool autoRepeat) {
-    static const QSet<int> driving{Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D,
+    static const QSet<int> driving{Qt::Key_W,  Qt::Key_A,    Qt::Key_S,    Qt::Key_D,
                                    Qt::Key_Up, Qt::Key_Down, Qt::Key_Left, Qt::Key_Right};
     if (key != m_deadManKey && !driving.contains(key))
         return false;

@@ -15,7 +15,9 @@ VirtualStick::VirtualStick(QWidget* parent) : QWidget(parent) {
     setToolTip(tr("Drag to drive: up = forward, right = turn right. Release to stop."));
 }
 
-double VirtualStick::radius() const { return std::min(width(), height()) / 2.0 - 14.0; }
+double VirtualStick::radius() const {
+    return std::min(width(), height()) / 2.0 - 14.0;
+}
 
 QPointF VirtualStick::pointFor(DriveAxes a) const {
     const QPointF c = rect().center();
@@ -60,7 +62,9 @@ void VirtualStick::mouseMoveEvent(QMouseEvent* e) {
         moveTo(e->position());
 }
 
-void VirtualStick::mouseReleaseEvent(QMouseEvent*) { release(); }
+void VirtualStick::mouseReleaseEvent(QMouseEvent*) {
+    release();
+}
 
 void VirtualStick::hideEvent(QHideEvent* e) {
     release();
@@ -106,7 +110,9 @@ void VirtualStick::paintEvent(QPaintEvent*) {
     p.drawEllipse(k, 13, 13);
 }
 
-AxisDisplay::AxisDisplay(QWidget* parent) : QWidget(parent) { setObjectName(QStringLiteral("axis-display")); }
+AxisDisplay::AxisDisplay(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("axis-display"));
+}
 
 void AxisDisplay::setAxes(const QVector<double>& raw) {
     m_raw = raw;

@@ -92,19 +92,23 @@ private slots:
         QCOMPARE(int(errors.messages().size()), 2);
         QCOMPARE(QString::fromStdString(errors.messages()[0]),
                  QString("site.json:3: origin.latitude: 123 is out of range [-90, 90]"));
-        QCOMPARE(QString::fromStdString(errors.messages()[1]),
-                 QString("site.json:4: origin.longitdue: unknown key \"longitdue\" (did you mean \"longitude\"?)"));
+        QCOMPARE(
+            QString::fromStdString(errors.messages()[1]),
+            QString(
+                "site.json:4: origin.longitdue: unknown key \"longitdue\" (did you mean \"longitude\"?)"));
     }
     void configSyntaxErrorNamesLine() {
         auto doc = ConfigDocument::parse("{\n \"a\": 1,\n \"b\": tru\n}", "x.json");
         QVERIFY(!doc.ok());
-        QVERIFY2(QString::fromStdString(doc.error()).startsWith("x.json:3: JSON syntax error"), doc.error().c_str());
+        QVERIFY2(QString::fromStdString(doc.error()).startsWith("x.json:3: JSON syntax error"),
+                 doc.error().c_str());
         auto dup = ConfigDocument::parse("{\"a\":1,\"a\":2}", "d.json");
         QVERIFY(!dup.ok());
         QVERIFY(QString::fromStdString(dup.error()).contains("duplicate key"));
     }
     void configTypes() {
-        auto doc = ConfigDocument::parse(R"({"port": "3794", "rate": 2.5, "mode": "fast", "on": 1})", "t.json");
+        auto doc =
+            ConfigDocument::parse(R"({"port": "3794", "rate": 2.5, "mode": "fast", "on": 1})", "t.json");
         QVERIFY(doc.ok());
         ConfigErrors errors;
         ConfigObject root(*doc, "", errors);
@@ -115,7 +119,8 @@ private slots:
         root.finish();
         QCOMPARE(int(errors.messages().size()), 4);
         QVERIFY(QString::fromStdString(errors.joined()).contains("port: must be an integer, not string"));
-        QVERIFY(QString::fromStdString(errors.joined()).contains("\"fast\" is not one of \"slow\", \"normal\""));
+        QVERIFY(
+            QString::fromStdString(errors.joined()).contains("\"fast\" is not one of \"slow\", \"normal\""));
     }
     void geoFrameRoundTrip() {
         GeoFrame f({48.0, 11.0, 500.0});

@@ -63,7 +63,8 @@ private slots:
             R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "fleet": {"stale_after_s": 10, "remove_after_s": 5}})",
             "c.json");
         QVERIFY(!cfg.ok());
-        QVERIFY(QString::fromStdString(cfg.error()).contains("remove_after_s: must not be shorter than stale_after_s"));
+        QVERIFY(QString::fromStdString(cfg.error())
+                    .contains("remove_after_s: must not be shorter than stale_after_s"));
     }
 };
 

@@ -55,7 +55,8 @@ JausConfig ocuConfig(const JausDemo& demo, std::uint16_t ss = 200, std::uint8_t 
     c.subsystemId = ss;
     c.callSign = "OCU-" + std::to_string(ss);
     c.authority = authority;
-    c.driveCommandTimeoutS = 0; // these tests set a demand once and let the stack stream it (watchdog: services test)
+    c.driveCommandTimeoutS =
+        0; // these tests set a demand once and let the stack stream it (watchdog: services test)
     demo.configure(c);
     return c;
 }

@@ -87,7 +87,8 @@ struct World {
     std::unique_ptr<UgvCore> ugv;
     bool ocuSilent = false;
 
-    // The drive-command watchdog is off unless a test asks for it: most tests set a demand once and let it stream.
+    // The drive-command watchdog is off unless a test asks for it: most tests set a demand once and let it
+    // stream.
     explicit World(std::uint8_t authority = 205, SimulatedUgvConfig ucfg = {}, double driveWatchdogS = 0) {
         auto cfg = ocuConfig(200, authority);
         cfg.driveCommandTimeoutS = driveWatchdogS;
@@ -370,7 +371,8 @@ private slots:
         QVERIFY(w.snap().driving); // the session stays open, streaming zero
         bool warned = false;
         for (auto& e : w.rec.events)
-            warned = warned || (e.kind == EventKind::CommandRefused && e.text.find("not refreshed") != std::string::npos);
+            warned = warned || (e.kind == EventKind::CommandRefused &&
+                                e.text.find("not refreshed") != std::string::npos);
         QVERIFY(warned);
         // A fresh demand drives again.
         QVERIFY(w.ocu->setDriveCommand(126, c));

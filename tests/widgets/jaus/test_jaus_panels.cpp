@@ -3,11 +3,11 @@
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"
 #include "sim/jaus/JausDemo.h"
+#include "widgets/HoldToConfirmButton.h"
 #include "widgets/jaus/JausControlPanel.h"
 #include "widgets/jaus/JausSubsystemModel.h"
 #include "widgets/jaus/TeleopPanel.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
-#include "widgets/HoldToConfirmButton.h"
 #include "widgets/teleop/TeleopController.h"
 
 #include "jaus/JausStack.h"
@@ -91,7 +91,8 @@ QString accessOf(JausControlPanel* p, std::uint16_t id) {
 }
 
 void takeControl(Window& win, std::uint16_t id) {
-    QTRY_VERIFY_WITH_TIMEOUT(win.control->controlButton(id) && win.control->controlButton(id)->isEnabled(), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(win.control->controlButton(id) && win.control->controlButton(id)->isEnabled(),
+                             5000);
     QTest::mouseClick(win.control->controlButton(id), Qt::LeftButton);
     QTRY_COMPARE_WITH_TIMEOUT(accessOf(win.control, id), QString("CONTROL_ACCEPTED"), 5000);
 }
@@ -105,7 +106,8 @@ private slots:
         Site s;
         Window win(s);
         QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(win.control->model()->index(0, 0).data().toString().contains("UGV-126"), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(win.control->model()->index(0, 0).data().toString().contains("UGV-126"),
+                                 5000);
         QCOMPARE(accessOf(win.control, 126), QString("MONITORING"));
         // The details tree shows subsystem -> node -> component [s.n.c] -> service URI and version.
         win.control->table()->setCurrentIndex(win.control->model()->index(0, 0));
@@ -113,7 +115,8 @@ private slots:
         auto hasService = [&] {
             for (auto* item : win.control->details()->tree()->findItems("urn:jaus:jss:core:AccessControl",
                                                                         Qt::MatchRecursive))
-                if (item->parent() && item->parent()->text(0).startsWith("[126.") && item->text(1).startsWith("v"))
+                if (item->parent() && item->parent()->text(0).startsWith("[126.") &&
+                    item->text(1).startsWith("v"))
                     return true;
             return false;
         };
@@ -202,7 +205,8 @@ private slots:
         // The panel shows the emergency; driving is disabled until the emergency is cleared.
         QTRY_VERIFY_WITH_TIMEOUT(!win.teleop->controller()->isEnabled(), 2000);
         QVERIFY(win.teleop->clearEmergencyButton()->isEnabled());
-        QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::OursWarning, 2000);
+        QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::OursWarning,
+                                  2000);
     }
 
     void preemptedByHigherAuthorityTurnsGrey() {
@@ -222,13 +226,17 @@ private slots:
         s.demo.configure(c2);
         JausStack second(c2, quiet);
         second.start();
-        QTRY_VERIFY_WITH_TIMEOUT(second.snapshot(126).has_value() && second.snapshot(126)->mobilityComponent.subsystem,
-                                 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            second.snapshot(126).has_value() && second.snapshot(126)->mobilityComponent.subsystem, 5000);
         second.requestControl(126);
         QTRY_COMPARE_WITH_TIMEOUT(accessOf(win.control, 126), QString("PREEMPTED"), 5000);
         QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::Other, 5000);
         const int row = win.control->model()->rowOf(126);
-        QVERIFY(win.control->model()->index(row, JausSubsystemModel::Controller).data().toString().startsWith("201."));
+        QVERIFY(win.control->model()
+                    ->index(row, JausSubsystemModel::Controller)
+                    .data()
+                    .toString()
+                    .startsWith("201."));
         second.stop();
     }
 

@@ -28,9 +28,9 @@ private slots:
         QTest::qWait(150);
         QCOMPARE(spy.count(), 0);
         QVERIFY(t.handleKey(Qt::Key_Shift, true));
-        QCOMPARE(spy.count(), 1); // at once, not at the next period
+        QCOMPARE(spy.count(), 1);                      // at once, not at the next period
         QCOMPARE(axesAt(spy, 0), (DriveAxes{0.5, 0})); // default limit 50 %
-        QVERIFY(!t.handleKey(Qt::Key_Q, true)); // not a driving key
+        QVERIFY(!t.handleKey(Qt::Key_Q, true));        // not a driving key
     }
     void streamsAtRateAndZeroesOnRelease() {
         TeleopController t;
