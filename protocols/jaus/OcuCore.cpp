@@ -767,9 +767,14 @@ bool OcuCore::setDriveCommand(std::uint16_t ss, DriveCommand c) {
         if (p.maxRotationalSpeed)
             c.angular = std::clamp(c.angular, -*p.maxRotationalSpeed, *p.maxRotationalSpeed);
     }
+    const bool changed = c.mode != r->drive.mode || c.linear != r->drive.linear ||
+                         c.angular != r->drive.angular || c.brake != r->drive.brake || r->driveStale;
     r->drive = c;
     r->lastDriveUpdate = m_clock.now();
     r->driveStale = false;
+    // A new demand goes out at once (teleop latency); the periodic stream repeats it.
+    if (changed && r->snap.mobilityComponent.subsystem)
+        sendDrive(*r, false);
     return true;
 }
 

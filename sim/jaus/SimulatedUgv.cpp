@@ -58,12 +58,18 @@ struct SimulatedUgv::Impl : JausOutput {
     UgvCore core;
     boost::asio::steady_timer timer;
     std::atomic<bool> running{false};
+    std::shared_ptr<const SimulatedUgv::MessageTap> tap;
     std::atomic<std::uint16_t> port{0};
     std::atomic<std::uint16_t> tcpPort{0};
 };
 
 SimulatedUgv::SimulatedUgv(SimulatedUgvConfig config, Clock& clock)
     : m_impl(std::make_unique<Impl>(std::move(config), clock)) {}
+
+void SimulatedUgv::setMessageTap(MessageTap tap) {
+    std::atomic_store(&m_impl->tap, tap ? std::make_shared<const MessageTap>(std::move(tap))
+                                        : std::shared_ptr<const MessageTap>());
+}
 
 SimulatedUgv::~SimulatedUgv() {
     stop();
@@ -74,8 +80,13 @@ void SimulatedUgv::start() {
     if (d->running)
         return;
     d->transport.setLocalIds([d](const JausId& id) { return d->core.isLocal(id); });
-    d->transport.setHandlers([d](const JausId& s, const JausId& t, ByteSpan p) { d->core.handle(s, t, p); },
-                             {});
+    d->transport.setHandlers(
+        [d](const JausId& s, const JausId& t, ByteSpan p) {
+            if (auto tap = std::atomic_load(&d->tap))
+                (*tap)(p);
+            d->core.handle(s, t, p);
+        },
+        {});
     d->transport.open();
     d->applyNetFaults();
     d->port = d->transport.localPort();

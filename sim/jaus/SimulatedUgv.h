@@ -1,6 +1,7 @@
 #pragma once
 // A simulated RAS-G IOP UGV on its own io thread: UgvCore behind a JudpTransport (AEP-4818 §10).
 // Several can run at once (distinct subsystem IDs, distinct unicast ports, one shared multicast group).
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -40,6 +41,11 @@ public:
     void enterEmergency();
     void enterFailure();
     void clearFailure();
+
+    // Every message payload the UGV receives, on its io thread, before it is handled (benchmarks measure
+    // command latency on the wire with it). Empty function removes the tap.
+    using MessageTap = std::function<void(ByteSpan payload)>;
+    void setMessageTap(MessageTap tap);
 
     // Blocking snapshot of the simulated state (tests, demo).
     UgvState state() const;
