@@ -6,11 +6,14 @@
 #include "SiteLoader.h"
 #include "SiteRuntime.h"
 
+#ifdef OCU_HAVE_OCU_VIEW3D
+#include "widgets/view3d/Site3DView.h"
+#endif
+
 #include <QApplication>
 #include <QLabel>
 #include <QLocale>
 #include <QMessageBox>
-#include <QSurfaceFormat>
 #include <QTimer>
 #include <QTranslator>
 
@@ -19,19 +22,9 @@
 namespace ocu {
 
 void prepareSurfaceFormat() {
-    QSurfaceFormat fmt;
-    fmt.setRenderableType(QSurfaceFormat::OpenGL);
-    fmt.setVersion(3, 2);
-    fmt.setProfile(QSurfaceFormat::CoreProfile);
-    fmt.setRedBufferSize(8);
-    fmt.setGreenBufferSize(8);
-    fmt.setBlueBufferSize(8);
-    fmt.setAlphaBufferSize(8);
-    fmt.setDepthBufferSize(24);
-    fmt.setStencilBufferSize(0);
-    fmt.setSamples(0);
-    fmt.setSwapBehavior(QSurfaceFormat::DoubleBuffer);
-    QSurfaceFormat::setDefaultFormat(fmt);
+#ifdef OCU_HAVE_OCU_VIEW3D
+    Site3DView::prepareDefaultFormat(); // OpenGL 3.2 core for VTK (toolchain.md §4a)
+#endif
 }
 
 QString languageFromArgs(const QStringList& args) {

@@ -8,7 +8,7 @@ class QApplication;
 
 namespace ocu {
 
-// OpenGL 3.2 core default format for the VTK view (must be set before QApplication; toolchain.md §4a).
+// The OpenGL 3.2 core default format the VTK view needs, set before QApplication (toolchain.md §4a).
 void prepareSurfaceFormat();
 // en | de | fr from --lang (scanned before the parser runs so --help is translated too), else "".
 QString languageFromArgs(const QStringList& args);

@@ -9,11 +9,17 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 unset DISPLAY # every test must run without an X server of the user's; xvfb tests start their own
 export QT_QPA_PLATFORM=offscreen
 if [ "${1:-}" = "--sanitize" ]; then
+  # Only the protocol and simulator tests (plain C++ under test): configure, build exactly those, run them.
   build="$root/build-asan"
-  OCU_BUILD_DIR="$build" "$root/scripts/build.sh" -DOCU_SANITIZE=address,undefined -DOCU_WITH_VTK=OFF \
-    -DOCU_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
+  labels="protocols|jaus|osyris|iso23725|sim"
+  export CCACHE_DIR="${CCACHE_DIR:-$root/.cache/ccache}"
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DOCU_SANITIZE=address,undefined \
+    -DOCU_WITH_VTK=OFF -DOCU_BUILD_BENCH=OFF >/dev/null
+  cd "$build"
+  mapfile -t targets < <(ctest -N -L "$labels" | sed -n 's/^ *Test *#[0-9]*: *//p')
+  cmake --build . -j "$(nproc)" --target "${targets[@]}"
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  cd "$build" && exec ctest -j2 --output-on-failure --timeout 600 -L "protocols|jaus|osyris|iso23725|sim"
+  exec ctest -j2 --output-on-failure --timeout 600 -L "$labels"
 fi
 build="${OCU_BUILD_DIR:-$root/build}"
 OCU_BUILD_DIR="$build" "$root/scripts/build.sh"
