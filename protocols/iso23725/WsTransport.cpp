@@ -316,32 +316,41 @@ template <class Ws> void setHandshakeOptions(Ws& ws, const WsOptions& o, bool cl
 Result<bool> WsEndpoint::Impl::setupTls() {
     if (!url.tls)
         return true;
+    // Which file was being loaded, so the operator's message names it (a bare OpenSSL error does not).
+    std::string what = "TLS options";
     try {
         const auto& t = options.tls;
         sslCtx.set_options(ssl::context::default_workarounds | ssl::context::no_sslv2 |
                            ssl::context::no_sslv3 | ssl::context::no_tlsv1 | ssl::context::no_tlsv1_1);
+        const std::string keyFile = t.keyFile.empty() ? t.certFile : t.keyFile;
         if (options.role == WsRole::Client) {
+            what = "CA file " + t.caFile + " (tls.ca)";
             if (!t.caFile.empty())
                 sslCtx.load_verify_file(t.caFile);
             else
                 sslCtx.set_default_verify_paths();
             sslCtx.set_verify_mode(ssl::verify_peer);
             if (!t.certFile.empty()) {
+                what = "certificate file " + t.certFile + " (tls.cert)";
                 sslCtx.use_certificate_chain_file(t.certFile);
-                sslCtx.use_private_key_file(t.keyFile.empty() ? t.certFile : t.keyFile, ssl::context::pem);
+                what = "key file " + keyFile + " (tls.key)";
+                sslCtx.use_private_key_file(keyFile, ssl::context::pem);
             }
         } else {
             if (t.certFile.empty())
                 return makeError("wss service needs a certificate file (tls.cert)");
+            what = "certificate file " + t.certFile + " (tls.cert)";
             sslCtx.use_certificate_chain_file(t.certFile);
-            sslCtx.use_private_key_file(t.keyFile.empty() ? t.certFile : t.keyFile, ssl::context::pem);
+            what = "key file " + keyFile + " (tls.key)";
+            sslCtx.use_private_key_file(keyFile, ssl::context::pem);
             if (!t.caFile.empty()) {
+                what = "CA file " + t.caFile + " (tls.ca)";
                 sslCtx.load_verify_file(t.caFile);
                 sslCtx.set_verify_mode(ssl::verify_peer | ssl::verify_fail_if_no_peer_cert);
             }
         }
     } catch (const std::exception& e) {
-        return makeError(std::string("TLS setup failed: ") + e.what());
+        return makeError("TLS setup failed: " + what + ": " + e.what());
     }
     return true;
 }
