@@ -300,6 +300,13 @@ void SiteRuntime::populate(MainWindow& window) {
     if (d.jaus) {
         window.setPanelWidget(Panel::JausControl, new JausControlPanel(d.jaus, ctx->selection()));
         auto* joystick = new SdlJoystickInput(&window);
+        AxisMapping mapping;
+        mapping.forwardAxis = m_config.teleop.forwardAxis;
+        mapping.turnAxis = m_config.teleop.turnAxis;
+        mapping.invertForward = m_config.teleop.invertForward;
+        mapping.invertTurn = m_config.teleop.invertTurn;
+        mapping.deadZone = m_config.teleop.deadZone;
+        joystick->setMapping(mapping);
         window.setPanelWidget(Panel::Teleop, new TeleopPanel(d.jaus, ctx->selection(), joystick));
     } else
 #endif

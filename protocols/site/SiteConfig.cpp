@@ -61,6 +61,20 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
             p->error("path", "required when source is \"" + cfg.ownPosition.source + "\"");
         p->finish();
     }
+    if (auto t = root.object("teleop")) {
+        if (auto j = t->object("joystick")) {
+            auto& c = cfg.teleop;
+            c.forwardAxis = static_cast<int>(j->integer("forward_axis", c.forwardAxis, 0, 31));
+            c.turnAxis = static_cast<int>(j->integer("turn_axis", c.turnAxis, 0, 31));
+            c.invertForward = j->boolean("invert_forward", c.invertForward);
+            c.invertTurn = j->boolean("invert_turn", c.invertTurn);
+            c.deadZone = j->number("dead_zone", c.deadZone, 0, 0.9);
+            if (c.forwardAxis == c.turnAxis)
+                j->error("turn_axis", "must differ from forward_axis");
+            j->finish();
+        }
+        t->finish();
+    }
 #ifdef OCU_SITE_HAVE_JAUS
     if (auto s = root.object("jaus"))
         cfg.jaus = jaus::parseJausConfig(*s);

@@ -48,12 +48,22 @@ struct OwnPositionConfig {
     std::string fmsMachineId;    // when set, sent to the AHS as MachinePositionV1
 };
 
+// Joystick / game controller used by the teleop panel (SDL2 axis indices).
+struct TeleopInputConfig {
+    int forwardAxis = 1;       // game controller left stick Y
+    int turnAxis = 0;          // left stick X
+    bool invertForward = true; // SDL reports a stick pushed away as negative
+    bool invertTurn = false;
+    double deadZone = 0.12;
+};
+
 struct SiteConfig {
     std::string name = "Unnamed site";
     GeoPoint origin;
     SimulationConfig simulation;
     FleetConfig fleet;
     OwnPositionConfig ownPosition;
+    TeleopInputConfig teleop;
 #ifdef OCU_SITE_HAVE_JAUS
     std::optional<jaus::JausConfig> jaus;
 #endif

@@ -58,6 +58,26 @@ private slots:
         QVERIFY(!parseSiteConfig("", "z.json").ok());
         QVERIFY(!loadSiteConfig("/nonexistent/site.json").ok());
     }
+    void joystickMapping() {
+        auto cfg = parseSiteConfig(
+            R"({"site": {"origin": {"latitude": 1, "longitude": 2}},
+                "teleop": {"joystick": {"forward_axis": 3, "turn_axis": 2, "invert_forward": false, "dead_zone": 0.2}}})",
+            "j.json");
+        QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
+        QCOMPARE(cfg->teleop.forwardAxis, 3);
+        QCOMPARE(cfg->teleop.turnAxis, 2);
+        QCOMPARE(cfg->teleop.invertForward, false);
+        QCOMPARE(cfg->teleop.deadZone, 0.2);
+        auto bad = parseSiteConfig(
+            R"({"site": {"origin": {"latitude": 1, "longitude": 2}},
+                "teleop": {"joystick": {"forward_axis": 1, "turn_axis": 1, "dead_zone": 0.95}}})",
+            "b.json");
+        QVERIFY(!bad.ok());
+        QVERIFY(QString::fromStdString(bad.error())
+                    .contains("teleop.joystick.turn_axis: must differ from forward_axis"));
+        QVERIFY(
+            QString::fromStdString(bad.error()).contains("teleop.joystick.dead_zone: 0.95 is out of range"));
+    }
     void crossFieldCheck() {
         auto cfg = parseSiteConfig(
             R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "fleet": {"stale_after_s": 10, "remove_after_s": 5}})",
