@@ -17,6 +17,19 @@ QRect PassCountLayer::countsIn(QRect cells, std::vector<std::uint16_t>& out) con
     return clipped;
 }
 
+QRect GridPassCountLayer::countsIn(QRect cells, std::vector<std::uint16_t>& out) const {
+    const QRect clipped = cells.intersected(QRect(0, 0, m_cols, m_rows));
+    out.clear();
+    if (clipped.isEmpty())
+        return clipped;
+    out.reserve(size_t(clipped.width()) * size_t(clipped.height()));
+    for (int r = clipped.top(); r <= clipped.bottom(); ++r) {
+        const std::uint16_t* row = m_cells.data() + size_t(r) * size_t(m_cols);
+        out.insert(out.end(), row + clipped.left(), row + clipped.right() + 1);
+    }
+    return clipped;
+}
+
 QRect PassCountLayer::changedCellsSince(quint64) const {
     return QRect(0, 0, columns(), rows());
 }

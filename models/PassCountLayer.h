@@ -28,7 +28,8 @@ public:
 
     // Counts of the cells in `cells` (clipped to the grid), row-major, one entry per cell of the clipped
     // rect.
-    QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const;
+    // Layers with a faster bulk read (a dense array, a grid with one lock per call) override it.
+    virtual QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const;
 };
 
 // A dense in-memory grid (what the OSYRIS bridge fills; 1 km² at 0.34 m is ~8.6 M cells, 17 MB).
@@ -47,6 +48,7 @@ public:
     void fillRect(QRect cells, int count);
     void clear();
     const std::uint16_t* data() const { return m_cells.data(); }
+    QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const override;
     QRect changedCellsSince(quint64 revision) const override;
 
 private:

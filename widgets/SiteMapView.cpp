@@ -422,18 +422,16 @@ void SiteMapView::rebuildPassImage() {
     for (int c = 0; c < 16; ++c)
         lut[c] = passCountColor(c, m_palette, m_target).rgba();
     lut[0] = 0;
-    const auto* grid = dynamic_cast<const GridPassCountLayer*>(m_pass);
-    for (int r = region.top(); r <= region.bottom(); ++r) {
+    // One bulk read of the changed cells (one lock for a live grid), then a table lookup per cell.
+    std::vector<std::uint16_t> counts;
+    const QRect got = m_pass->countsIn(region, counts);
+    const int width = got.width();
+    for (int r = got.top(); r <= got.bottom(); ++r) {
         // Image row 0 is the northernmost cell row.
         auto* line = reinterpret_cast<QRgb*>(m_passImage.scanLine(rows - 1 - r));
-        if (grid) {
-            const std::uint16_t* src = grid->data() + size_t(r) * size_t(cols);
-            for (int c = region.left(); c <= region.right(); ++c)
-                line[c] = lut[std::min<int>(src[c], 15)];
-        } else {
-            for (int c = region.left(); c <= region.right(); ++c)
-                line[c] = lut[std::clamp(m_pass->count(c, r), 0, 15)];
-        }
+        const std::uint16_t* src = counts.data() + size_t(r - got.top()) * size_t(width);
+        for (int c = 0; c < width; ++c)
+            line[got.left() + c] = lut[std::min<int>(src[c], 15)];
     }
     m_passImageRevision = m_pass->revision();
     m_passImagePalette = m_palette;

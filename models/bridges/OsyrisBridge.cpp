@@ -33,6 +33,15 @@ int OsyrisPassCountLayer::count(int col, int row) const {
     return m_grid.countAtCell(m_cx0 + col, m_cy0 + row);
 }
 
+QRect OsyrisPassCountLayer::countsIn(QRect cells, std::vector<std::uint16_t>& out) const {
+    const QRect clipped = cells.intersected(QRect(0, 0, m_cols, m_rows));
+    out.assign(clipped.isEmpty() ? 0 : size_t(clipped.width()) * size_t(clipped.height()), 0);
+    if (!clipped.isEmpty()) // one lock for the whole rectangle instead of one per cell
+        m_grid.countsInRect(m_cx0 + clipped.left(), m_cy0 + clipped.top(), clipped.width(), clipped.height(),
+                            out.data());
+    return clipped;
+}
+
 void OsyrisPassCountLayer::refreshExtent() {
     const auto tiles = m_grid.snapshotTiles();
     if (tiles.empty()) {

@@ -24,6 +24,7 @@ public:
     int rows() const override { return m_rows; }
     int count(int col, int row) const override;
     quint64 revision() const override { return m_revision; }
+    QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const override;
     // GUI thread: re-reads the covered extent after the grid changed.
     void refreshExtent();
 
