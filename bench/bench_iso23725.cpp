@@ -101,7 +101,7 @@ void BM_Loopback1000TrucksAt10Hz(benchmark::State& state) {
         return;
     }
     IsoConfig ic;
-    ic.links.push_back(IsoLinkConfig{"ahs", {}});
+    ic.links.push_back(IsoLinkConfig{"ahs", {}, {}});
     ic.links[0].ws.url = ahs.url();
     CountingListener listener;
     IsoStack stack(ic, listener);

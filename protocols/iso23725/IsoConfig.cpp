@@ -25,6 +25,8 @@ IsoConfig parseIsoConfig(ConfigObject& section) {
     c.allStopAckTimeout = ms(section, "allStopAckTimeoutMs", c.allStopAckTimeout, 100, 60000);
     c.allStopStatusTimeout = ms(section, "allStopStatusTimeoutMs", c.allStopStatusTimeout, 100, 120000);
     c.dimensionTolerance = section.number("dimensionTolerance", 0.05, 0.0, 10.0);
+    c.interfaceDiagnosticPeriod =
+        ms(section, "interfaceDiagnosticPeriodMs", c.interfaceDiagnosticPeriod, 1000, 3600000);
     std::set<std::string> names;
     for (auto& l : section.objectList("links")) {
         IsoLinkConfig link;
@@ -54,6 +56,14 @@ IsoConfig parseIsoConfig(ConfigObject& section) {
         link.ws.subprotocol = l.string("subprotocol", "");
         if (link.ws.deadAfter <= link.ws.pingInterval)
             l.error("deadAfterMs", "must be longer than pingIntervalMs");
+        // Q10 [I]: the map service on its own socket; same TLS files and timing, always the client side.
+        if (std::string mapUrl = l.string("mapUrl", ""); !mapUrl.empty()) {
+            if (auto u = parseWsUrl(mapUrl); !u)
+                l.error("mapUrl", u.error());
+            link.mapWs = link.ws;
+            link.mapWs.role = WsRole::Client;
+            link.mapWs.url = mapUrl;
+        }
         l.finish();
         c.links.push_back(std::move(link));
     }

@@ -17,6 +17,9 @@ namespace ocu::iso23725 {
 struct IsoLinkConfig {
     std::string name; // shown to the operator, used as the link key in commands and callbacks
     WsOptions ws;     // URL, role, TLS, ping/dead/backoff, max frame size
+    // Q10 [I]: the map service on its own socket (client role, TLS and timing as ws); empty url = the map
+    // service shares the main socket.
+    WsOptions mapWs;
 };
 
 struct IsoConfig {
@@ -32,6 +35,10 @@ struct IsoConfig {
     std::chrono::milliseconds allStopAckTimeout{2000};    // [I] §7.6
     std::chrono::milliseconds allStopStatusTimeout{5000}; // [I] §7.6
     double dimensionTolerance = 0.05;                     // metres, for fleet discrepancy checks
+    // §5 #15 [I] (Q7): InterfaceDiagnosticV1 "periodic (60 s) + on error"; error reports are sent at most once
+    // per errorDiagnosticInterval (the rest are batched into the next one) so bad input cannot flood the AHS.
+    std::chrono::milliseconds interfaceDiagnosticPeriod{60000};
+    std::chrono::milliseconds errorDiagnosticInterval{1000};
     InferredRules rules;
 };
 

@@ -1,6 +1,8 @@
 // The only translation unit with Boost.Beast (~12 s to compile): keep it that way.
 #include "WsTransport.h"
 
+#include "LinkTiming.h"
+
 #include "common/Log.h"
 
 #include <boost/asio/ip/tcp.hpp>
@@ -90,7 +92,7 @@ public:
 struct WsEndpoint::Impl : std::enable_shared_from_this<WsEndpoint::Impl> {
     Impl(asio::io_context& io, WsOptions o, WsHandler& h, Counters& c)
         : io(io), options(std::move(o)), handler(&h), counters(c), reconnectTimer(io), acceptor(io),
-          sslCtx(ssl::context::tls) {}
+          sslCtx(ssl::context::tls), backoff(options.backoffMin, options.backoffMax, options.backoffJitter) {}
 
     asio::io_context& io;
     WsOptions options;
@@ -102,9 +104,8 @@ struct WsEndpoint::Impl : std::enable_shared_from_this<WsEndpoint::Impl> {
     ssl::context sslCtx;
     std::map<SessionId, std::shared_ptr<SessionBase>> sessions;
     SessionId nextId = 1;
-    int attempt = 0;
+    ReconnectBackoff backoff;
     bool stopped = false;
-    std::mt19937 rng{std::random_device{}()};
     tcp::resolver::results_type resolvedCache;
 
     Result<bool> setupTls();
@@ -114,7 +115,7 @@ struct WsEndpoint::Impl : std::enable_shared_from_this<WsEndpoint::Impl> {
     template <class Ws> void startSession(std::shared_ptr<Ws> ws, std::string peer, bool client);
     void opened(SessionId id, std::shared_ptr<SessionBase> s, const std::string& peer) {
         sessions[id] = std::move(s);
-        attempt = 0;
+        backoff.reset();
         counters.add("ws.sessions.opened");
         if (handler)
             handler->onOpen(id, peer);
@@ -139,17 +140,18 @@ template <class Ws>
 class Session final : public SessionBase, public std::enable_shared_from_this<Session<Ws>> {
 public:
     Session(std::shared_ptr<WsEndpoint::Impl> ep, std::shared_ptr<Ws> ws, SessionId id)
-        : m_ep(std::move(ep)), m_ws(std::move(ws)), m_id(id), m_timer(m_ep->io) {}
+        : m_ep(std::move(ep)), m_ws(std::move(ws)), m_id(id), m_timer(m_ep->io),
+          m_keepAlive(m_ep->options.pingInterval, m_ep->options.deadAfter) {}
 
     void run() {
         m_ws->read_message_max(m_ep->options.maxFrameBytes);
         m_ws->auto_fragment(false);
         m_ws->binary(false);
-        m_lastRx = std::chrono::steady_clock::now();
+        m_keepAlive.start(SteadyClock::instance().now());
         std::weak_ptr<Session> weak = this->shared_from_this();
         m_ws->control_callback([weak](websocket::frame_type, beast::string_view) {
             if (auto s = weak.lock())
-                s->m_lastRx = std::chrono::steady_clock::now();
+                s->m_keepAlive.received(SteadyClock::instance().now());
         });
         read();
         tick();
@@ -196,7 +198,7 @@ private:
             }
             return;
         }
-        m_lastRx = std::chrono::steady_clock::now();
+        m_keepAlive.received(SteadyClock::instance().now());
         m_ep->counters.add("ws.rx.frames");
         if (!m_ws->got_text()) {
             // §2: binary frames are logged and ignored; the link stays up.
@@ -247,24 +249,29 @@ private:
         write();
     }
 
-    // Keepalive [I] §2: ping every pingInterval; dead after deadAfter without any received frame.
+    // Keepalive [I] §2: the timing decisions are KeepAlive's (LinkTiming.h); this only sleeps until they are due.
     void tick() {
-        m_timer.expires_after(m_ep->options.pingInterval);
+        m_timer.expires_at(m_keepAlive.deadline());
         m_timer.async_wait([self = this->shared_from_this()](error_code ec) {
             if (ec || self->m_closing)
                 return;
-            auto silent = std::chrono::steady_clock::now() - self->m_lastRx;
-            if (silent >= self->m_ep->options.deadAfter) {
+            const auto now = SteadyClock::instance().now();
+            switch (self->m_keepAlive.poll(now)) {
+            case KeepAlive::Action::Dead: {
                 self->m_ep->counters.add("ws.dead");
-                self->fail(
-                    "link dead: no frame for " +
-                    std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(silent).count()) +
-                    " ms");
+                auto silent =
+                    std::chrono::duration_cast<std::chrono::milliseconds>(self->m_keepAlive.silentFor(now));
+                self->fail("link dead: no frame for " + std::to_string(silent.count()) + " ms");
                 return;
             }
-            self->m_queue.push_back(Item{{}, true, false});
-            if (!self->m_writing)
-                self->write();
+            case KeepAlive::Action::SendPing:
+                self->m_queue.push_back(Item{{}, true, false});
+                if (!self->m_writing)
+                    self->write();
+                break;
+            case KeepAlive::Action::None:
+                break;
+            }
             self->tick();
         });
     }
@@ -289,7 +296,7 @@ private:
     std::size_t m_queuedBytes = 0;
     bool m_writing = false;
     bool m_closing = false;
-    std::chrono::steady_clock::time_point m_lastRx;
+    KeepAlive m_keepAlive;
 };
 
 template <class Ws> void setHandshakeOptions(Ws& ws, const WsOptions& o, bool client) {
@@ -365,12 +372,7 @@ template <class Ws> void WsEndpoint::Impl::startSession(std::shared_ptr<Ws> ws, 
 void WsEndpoint::Impl::scheduleReconnect(const std::string& reason) {
     if (stopped)
         return;
-    // Exponential backoff with jitter [I] §2.
-    double base = static_cast<double>(options.backoffMin.count()) * std::pow(2.0, std::min(attempt, 16));
-    base = std::min(base, static_cast<double>(options.backoffMax.count()));
-    std::uniform_real_distribution<double> j(-options.backoffJitter, options.backoffJitter);
-    auto delay = std::chrono::milliseconds(static_cast<std::int64_t>(base * (1.0 + j(rng))));
-    ++attempt;
+    auto delay = backoff.next();
     if (handler && sessions.empty())
         handler->onConnectFailed(reason, delay);
     reconnectTimer.expires_after(delay);

@@ -163,7 +163,7 @@ private slots:
         QVERIFY(ahs->start());
         const auto port = ahs->port();
         IsoConfig ic;
-        ic.links.push_back(IsoLinkConfig{"ahs", {}});
+        ic.links.push_back(IsoLinkConfig{"ahs", {}, {}});
         ic.links[0].ws.url = ahs->url();
         fastLink(ic);
         Recorder rec;
@@ -201,7 +201,7 @@ private slots:
         SimulatedAhs ahs(cfg);
         QVERIFY(ahs.start());
         IsoConfig ic;
-        ic.links.push_back(IsoLinkConfig{"ahs", {}});
+        ic.links.push_back(IsoLinkConfig{"ahs", {}, {}});
         ic.links[0].ws.url = ahs.url();
         fastLink(ic);
         Recorder rec;
@@ -251,7 +251,7 @@ private slots:
         SimulatedAhs ahs(cfg);
         QVERIFY(ahs.start());
         IsoConfig ic;
-        ic.links.push_back(IsoLinkConfig{"ahs", {}});
+        ic.links.push_back(IsoLinkConfig{"ahs", {}, {}});
         ic.links[0].ws.url = ahs.url();
         fastLink(ic);
         ic.links[0].ws.pingInterval = std::chrono::milliseconds(200);
@@ -274,7 +274,7 @@ private slots:
 
     void refusedWhenNeverConnected() {
         IsoConfig ic;
-        ic.links.push_back(IsoLinkConfig{"nowhere", {}});
+        ic.links.push_back(IsoLinkConfig{"nowhere", {}, {}});
         ic.links[0].ws.url = "ws://127.0.0.1:" + std::to_string(ocu::findFreeTcpPort()) + "/iso23725";
         fastLink(ic);
         Recorder rec;

@@ -55,7 +55,7 @@ class TestIsoEndToEndTls : public QObject {
     }
     IsoConfig stackConfig(const std::string& url, const std::string& ca) {
         IsoConfig ic;
-        ic.links.push_back(IsoLinkConfig{"ahs", {}});
+        ic.links.push_back(IsoLinkConfig{"ahs", {}, {}});
         auto& ws = ic.links[0].ws;
         ws.url = url;
         ws.tls.caFile = ca;

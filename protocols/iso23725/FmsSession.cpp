@@ -1,0 +1,785 @@
+#include "FmsSession.h"
+
+#include "common/Log.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ocu::iso23725 {
+
+static constexpr const char* kLog = "ocu.iso";
+// The API version of the map service this console speaks (§10.6.1 [I]).
+static constexpr std::int64_t kMapServiceApi = 1;
+// At most this many error entries wait for the next rate-limited diagnostic; the rest are only counted.
+static constexpr std::size_t kMaxPendingErrors = 20;
+
+const char* toString(LinkState s) {
+    switch (s) {
+    case LinkState::Up:
+        return "UP";
+    case LinkState::Down:
+        return "DOWN";
+    default:
+        return "UNKNOWN";
+    }
+}
+
+const char* toString(AllStopState s) {
+    switch (s) {
+    case AllStopState::On:
+        return "On";
+    case AllStopState::Off:
+        return "Off";
+    default:
+        return "UNKNOWN";
+    }
+}
+
+namespace {
+// The member an error text is about: codec errors start with the member name ("MachinePositionV1.Heading ...").
+std::optional<std::string> memberOf(const std::string& error) {
+    auto end = error.find_first_of(".: [");
+    if (end == 0 || end == std::string::npos)
+        return std::nullopt;
+    std::string name = error.substr(0, end);
+    if (name == "message" || name == "header")
+        return std::nullopt;
+    return name;
+}
+} // namespace
+
+FmsSession::FmsSession(const IsoConfig& config, IsoLinkConfig link, IsoListener& listener, Counters& counters,
+                       const Clock& clock, FmsOutbound& out)
+    : m_cfg(config), m_link(std::move(link)), m_listener(listener), m_counters(counters), m_clock(clock),
+      m_out(out) {}
+
+void FmsSession::event(IsoSeverity s, const std::string& text) {
+    if (s == IsoSeverity::Info)
+        logInfo(kLog, text);
+    else
+        logWarning(kLog, text);
+    m_listener.onEvent(s, text);
+}
+
+bool FmsSession::upOrRefuse(const char* what) {
+    if (m_state != LinkState::Up) {
+        // §2.1 rule 1: commands are never queued while the link is down.
+        m_counters.add("cmd.refused.link_down");
+        event(IsoSeverity::Warning, std::string(what) + " refused: link '" + m_link.name + "' is " +
+                                        toString(m_state) + " (commands are not queued)");
+        return false;
+    }
+    return true;
+}
+
+bool FmsSession::sendBody(const Body& body, std::optional<Guid> eq) {
+    Envelope env;
+    env.header.protocol = m_cfg.rules.protocol;
+    env.header.timestamp = makeTimestamp(unixMillisNow());
+    env.header.equipmentId = std::move(eq);
+    env.members.push_back(Member{body, nlohmann::json::object()});
+    if (!m_out.sendMain(encodeMessage(env)))
+        return false;
+    ++m_messagesSent;
+    m_counters.add("tx.messages");
+    return true;
+}
+
+bool FmsSession::sendMapBody(const Body& body) {
+    if (!separateMapService())
+        return sendBody(body);
+    Envelope env;
+    env.header.protocol = m_cfg.rules.protocol;
+    env.header.timestamp = makeTimestamp(unixMillisNow());
+    env.members.push_back(Member{body, nlohmann::json::object()});
+    if (!m_out.sendMap(encodeMessage(env)))
+        return false;
+    m_counters.add("tx.map_service");
+    return true;
+}
+
+FleetDefinitionV2 FmsSession::ownFleet() const {
+    FleetDefinitionV2 f;
+    f.ahsId = m_cfg.fmsId;
+    for (auto& e : m_cfg.fleet)
+        if (!e.autonomous)
+            f.equipment.push_back(e);
+    return f;
+}
+
+IsoMachineSnapshot& FmsSession::machine(const Guid& id) {
+    auto it = m_machines.find(id);
+    if (it != m_machines.end())
+        return it->second;
+    auto& m = m_machines[id];
+    m.link = m_link.name;
+    m.equipmentId = id;
+    return m;
+}
+
+std::string FmsSession::label(const IsoMachineSnapshot& m) {
+    return m.hid.empty() ? m.equipmentId : m.hid;
+}
+
+// ---------------------------------------------------------------- main channel
+
+void FmsSession::opened(const std::string& peer) {
+    m_state = LinkState::Up;
+    m_gotFirstMessage = false;
+    if (!separateMapService())
+        interruptMapTransfer("reconnected");
+    m_listener.onLinkState(m_link.name, LinkState::Up, "connected to " + peer);
+    event(IsoSeverity::Info, "link " + m_link.name + " up (" + peer + ")");
+    // [ISO-seed]: FleetDefinitionV2 is the first message sent by both actors upon connection.
+    sendBody(ownFleet());
+    m_nextPeriodicDiagnostic = m_clock.now() + m_cfg.interfaceDiagnosticPeriod;
+}
+
+void FmsSession::text(std::string_view frame) {
+    handleFrame(frame, false);
+}
+
+void FmsSession::closed(const std::string& reason) {
+    m_state = LinkState::Down;
+    m_ackDeadline.at.reset();
+    m_statusDeadline.at.reset();
+    m_nextPeriodicDiagnostic.reset();
+    m_pendingErrors.clear();
+    if (!separateMapService())
+        interruptMapTransfer("link down");
+    // §2.1 rule 5 / §7.7: all-stop and machine state are UNKNOWN while disconnected.
+    m_allStop.state = AllStopState::Unknown;
+    m_allStop.activeId.reset();
+    m_allStop.external = false;
+    m_listener.onAllStopChanged(m_link.name, m_allStop);
+    for (auto& [id, m] : m_machines) {
+        m.stateKnown = false;
+        m_listener.onMachineChanged(m);
+    }
+    // Reported last, so a listener that sees DOWN already sees UNKNOWN all-stop and machine state.
+    m_listener.onLinkState(m_link.name, LinkState::Down, reason);
+    event(IsoSeverity::Warning, "link " + m_link.name + " down: " + reason);
+}
+
+void FmsSession::connectFailed(const std::string& reason, std::chrono::milliseconds retryIn) {
+    m_counters.add("link.connect_failed");
+    if (m_state != LinkState::Down) {
+        m_state = LinkState::Down;
+        m_listener.onLinkState(m_link.name, LinkState::Down, reason);
+    }
+    logInfo(kLog, "link " + m_link.name + ": " + reason + "; retry in " + std::to_string(retryIn.count()) +
+                      " ms");
+}
+
+// ---------------------------------------------------------------- map service channel (Q10)
+
+void FmsSession::mapOpened(const std::string& peer) {
+    m_mapState = LinkState::Up;
+    interruptMapTransfer("map service reconnected");
+    m_counters.add("map_service.opened");
+    event(IsoSeverity::Info, "map service of " + m_link.name + " up (" + peer + ")");
+    // The service speaks first (MapServiceV1, §10.6.1 [I]); the summary is asked for when it has.
+}
+
+void FmsSession::mapText(std::string_view frame) {
+    handleFrame(frame, true);
+}
+
+void FmsSession::mapClosed(const std::string& reason) {
+    m_mapState = LinkState::Down;
+    interruptMapTransfer("map service down");
+    event(IsoSeverity::Warning, "map service of " + m_link.name + " down: " + reason);
+}
+
+// ---------------------------------------------------------------- incoming frames
+
+void FmsSession::handleFrame(std::string_view frame, bool mapChannel) {
+    m_counters.add(mapChannel ? "rx.map_service.frames" : "rx.frames");
+    ++m_framesReceived;
+    const std::string& from = mapChannel ? "map service of " + m_link.name : m_link.name;
+    std::size_t i = frame.find_first_not_of(" \t\r\n");
+    if (i != std::string_view::npos && frame[i] == '<') {
+        if (mapChannel != separateMapService()) {
+            m_counters.add("rx.rejected.map_on_wrong_channel");
+            event(IsoSeverity::Warning, "map chunk on the main socket of " + m_link.name +
+                                            " ignored: the map service has its own URL");
+            return;
+        }
+        onChunk(frame);
+        return;
+    }
+    auto env = decodeMessage(frame, m_cfg.rules);
+    if (!env) {
+        const bool json = env.error() == "message: invalid JSON";
+        m_counters.add(json ? "rx.rejected.invalid_json" : "rx.rejected.header");
+        ++m_framesRejected;
+        event(IsoSeverity::Warning, "message from " + from + " rejected: " + env.error());
+        reportError(json ? "InvalidJson" : "InvalidHeader", env.error(), std::nullopt, std::nullopt);
+        return;
+    }
+    if (!env->errors.empty())
+        ++m_framesRejected;
+    for (auto& e : env->errors) {
+        m_counters.add("rx.rejected.invalid_member");
+        event(IsoSeverity::Warning, "message from " + from + " rejected: " + e);
+        reportError("InvalidMember", e, memberOf(e), env->header.timestamp);
+    }
+    for (auto& w : env->warnings) {
+        m_counters.add("rx.tolerated");
+        logWarning(kLog, from + ": " + w);
+    }
+    if (env->outOfStandard)
+        m_counters.add("rx.out_of_standard");
+    if (!mapChannel && !m_gotFirstMessage && !env->members.empty()) {
+        m_gotFirstMessage = true;
+        if (!env->find<FleetDefinitionV2>()) {
+            m_counters.add("rx.first_not_fleet_definition");
+            event(IsoSeverity::Warning, "first message from " + m_link.name + " was " +
+                                            std::string(memberName(env->members.front().body)) +
+                                            ", not FleetDefinitionV2");
+        }
+    }
+    handle(*env, mapChannel);
+}
+
+void FmsSession::handle(const Envelope& env, bool mapChannel) {
+    const auto& eq = env.header.equipmentId;
+    const std::int64_t hdrMs = env.header.timestamp.unixMs.value_or(unixMillisNow());
+    for (auto& mem : env.members) {
+        const bool mapMember = std::holds_alternative<MapServiceV1>(mem.body) ||
+                               std::holds_alternative<MapSummaryV1>(mem.body);
+        if (mapChannel && !mapMember && !std::holds_alternative<InterfaceDiagnosticV1>(mem.body) &&
+            !std::holds_alternative<UnknownMember>(mem.body)) {
+            m_counters.add("rx.rejected.wrong_channel");
+            event(IsoSeverity::Warning, std::string(memberName(mem.body)) + " on the map service socket of " +
+                                            m_link.name + " ignored");
+            continue;
+        }
+        std::visit(
+            [&](auto&& b) {
+                using T = std::decay_t<decltype(b)>;
+                if constexpr (std::is_same_v<T, FleetDefinitionV2>) {
+                    onFleet(b);
+                } else if constexpr (std::is_same_v<T, MachineAllStopV1>) {
+                    setAllStop(b);
+                } else if constexpr (std::is_same_v<T, MachineAllStopResponseV1>) {
+                    onAllStopResponse(b);
+                } else if constexpr (std::is_same_v<T, MapServiceV1>) {
+                    onMapService(b, mapChannel);
+                } else if constexpr (std::is_same_v<T, MapSummaryV1>) {
+                    if (mapChannel != separateMapService()) {
+                        m_counters.add("rx.rejected.map_on_wrong_channel");
+                        return;
+                    }
+                    onSummary(b);
+                } else if constexpr (std::is_same_v<T, MapConnectivityV1>) {
+                    m_connectivity = b;
+                    if (m_map) {
+                        auto m = std::make_shared<MapModel>(*m_map);
+                        m->connectivity.assign(b);
+                        m_map = m;
+                        m_listener.onMapChanged(m_link.name, *m);
+                    }
+                } else if constexpr (std::is_same_v<T, InterfaceDiagnosticV1>) {
+                    for (auto& m : b.message)
+                        event(m.severity == "Error"     ? IsoSeverity::Error
+                              : m.severity == "Warning" ? IsoSeverity::Warning
+                                                        : IsoSeverity::Info,
+                              "interface diagnostic from " + m_link.name + ": " + m.code +
+                                  (m.detail ? " - " + *m.detail : std::string()));
+                    m_counters.add("rx.interface_diagnostic");
+                } else if constexpr (std::is_same_v<T, UnknownMember>) {
+                    m_counters.add("rx.unknown_member");
+                } else if constexpr (std::is_same_v<T, MachineAllStopRequestV1> ||
+                                     std::is_same_v<T, MapCommandV1> ||
+                                     std::is_same_v<T, HaulTruckAssignmentRequestV2> ||
+                                     std::is_same_v<T, HaulTruckAssignmentResetV1>) {
+                    m_counters.add("rx.rejected.wrong_direction");
+                    const std::string name(memberName(Body(b)));
+                    event(IsoSeverity::Warning,
+                          name + " from " + m_link.name + " ignored: only the FMS sends it");
+                    reportError("WrongDirection", name + " is sent by the FMS only", name, env.header.timestamp);
+                } else {
+                    if (!eq)
+                        return; // checked by the codec for per-machine members
+                    auto& m = machine(*eq);
+                    if (!m.inAhsFleet && !m.stateKnown) {
+                        m_counters.add("rx.unknown_machine");
+                        event(IsoSeverity::Warning, std::string(memberName(Body(b))) + " from " + m_link.name +
+                                                        " for machine " + *eq + " not in its fleet definition");
+                    }
+                    machineMember(m, b, hdrMs);
+                    m.stateKnown = true;
+                    m_listener.onMachineChanged(m);
+                }
+            },
+            mem.body);
+    }
+}
+
+template <class T> void FmsSession::machineMember(IsoMachineSnapshot& m, const T& b, std::int64_t hdrMs) {
+    if constexpr (std::is_same_v<T, MachinePositionV1>) {
+        if (!b.pose.latitude || !b.pose.longitude) {
+            m_counters.add("rx.position_unavailable");
+            return;
+        }
+        if (m.position && m.position->measuredUnixMs && b.timestamp.unixMs &&
+            *b.timestamp.unixMs < *m.position->measuredUnixMs) {
+            m_counters.add("rx.late_position"); // latest state wins (§2.1 rule 2)
+            return;
+        }
+        IsoPosition p;
+        p.latitude = *b.pose.latitude;
+        p.longitude = *b.pose.longitude;
+        p.elevation = b.pose.elevation;
+        if (b.pose.heading)
+            p.heading = static_cast<double>(*b.pose.heading);
+        if (b.pose.speed)
+            p.speedKmh = static_cast<double>(*b.pose.speed);
+        if (b.pose.latitudeAccuracy && b.pose.longitudeAccuracy)
+            p.horizontalAccuracy = std::max(*b.pose.latitudeAccuracy, *b.pose.longitudeAccuracy);
+        p.measuredUnixMs = b.timestamp.unixMs;
+        p.receivedUnixMs = unixMillisNow();
+        m.position = p;
+        m_counters.add("rx.positions");
+    } else if constexpr (std::is_same_v<T, MachineAutonomyModeV1>) {
+        m.autonomyMode = b.autonomyMode;
+    } else if constexpr (std::is_same_v<T, MachineDispatchAvailabilityV1>) {
+        if (m.dispatchingCustodian == "AHS" && b.dispatchingCustodian == "FMS")
+            event(IsoSeverity::Info, "machine " + label(m) + " needs an assignment (custodian AHS -> FMS, §8.3.4)");
+        m.dispatchingCustodian = b.dispatchingCustodian;
+    } else if constexpr (std::is_same_v<T, MachineDiagnosticV2>) {
+        m.diagnostics = b.entries; // full list each time; [] clears (§8.4)
+    } else if constexpr (std::is_same_v<T, BasicMachineHealthV2>) {
+        m.health = b;
+    } else if constexpr (std::is_same_v<T, HaulTruckProductionStateV2>) {
+        // §2.1 rule 4: a late event never overwrites newer state.
+        if (hdrMs < m.productionUnixMs) {
+            m_counters.add("rx.late_event");
+            event(IsoSeverity::Info, "late production state " + b.productionState + " of " + label(m) + " at " +
+                                         formatTimestamp(hdrMs) + " kept in history only");
+            return;
+        }
+        m.production = b;
+        m.productionUnixMs = hdrMs;
+    } else if constexpr (std::is_same_v<T, HaulTruckPayloadV1>) {
+        if (hdrMs < m.payloadUnixMs) {
+            m_counters.add("rx.late_event");
+            event(IsoSeverity::Info,
+                  "late payload of " + label(m) + " at " + formatTimestamp(hdrMs) + " kept in history only");
+            return;
+        }
+        m.payload = b;
+        m.payloadUnixMs = hdrMs;
+    } else if constexpr (std::is_same_v<T, HaulTruckProductionStateSensorV1>) {
+        m.sensor = b;
+        m_counters.add("rx.production_sensor");
+    } else if constexpr (std::is_same_v<T, HaulTruckDumpV1>) {
+        m.lastDump = b;
+        event(IsoSeverity::Info,
+              "dump by " + label(m) + " at way " + std::to_string(b.wayId) +
+                  (b.dumpedWeight ? ", " + std::to_string(*b.dumpedWeight) + " t" : std::string()));
+    } else if constexpr (std::is_same_v<T, HaulTruckProductionCycleV1>) {
+        m.lastCycle = b;
+        event(IsoSeverity::Info, "cycle " + b.cycleId + " completed by " + label(m));
+    } else if constexpr (std::is_same_v<T, HaulTruckAssignmentV1>) {
+        m.assignment = b;
+    } else if constexpr (std::is_same_v<T, HaulTruckAssignmentResponseV1>) {
+        m.assignmentResponses = b.items;
+        for (auto& r : b.items)
+            event(r.response == "Accepted" ? IsoSeverity::Info : IsoSeverity::Warning,
+                  "assignment " + r.assignmentId + " for " + label(m) + " " + r.response +
+                      (r.detail ? " (" + *r.detail + ")" : std::string()));
+    }
+}
+
+// ---------------------------------------------------------------- fleet definition
+
+void FmsSession::onFleet(const FleetDefinitionV2& f) {
+    m_ahsFleet = f;
+    std::set<Guid> listed;
+    for (auto& e : f.equipment) {
+        listed.insert(e.equipmentId);
+        auto& m = machine(e.equipmentId);
+        m.hid = e.hid;
+        m.type = e.type;
+        m.oem = e.oem;
+        m.model = e.model;
+        m.autonomous = e.autonomous;
+        m.length = e.length;
+        m.width = e.width;
+        m.inAhsFleet = true;
+        m_listener.onMachineChanged(m);
+    }
+    // No delete command exists: absence from a re-sent list removes the machine [ISO-seed].
+    for (auto it = m_machines.begin(); it != m_machines.end();) {
+        if (!listed.count(it->first)) {
+            m_listener.onMachineRemoved(m_link.name, it->first);
+            it = m_machines.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    checkDiscrepancies();
+}
+
+void FmsSession::checkDiscrepancies() {
+    std::vector<std::string> items;
+    std::map<Guid, const Equipment*> ahsById;
+    for (auto& e : m_ahsFleet->equipment)
+        ahsById[e.equipmentId] = &e;
+    auto dimDiff = [&](const std::optional<double>& a, const std::optional<double>& b) {
+        return a.has_value() != b.has_value() || (a && std::fabs(*a - *b) > m_cfg.dimensionTolerance);
+    };
+    auto fmt = [](const std::optional<double>& v) {
+        if (!v)
+            return std::string("null");
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.2f", *v);
+        return std::string(buf);
+    };
+    for (auto& mine : m_cfg.fleet) {
+        auto it = ahsById.find(mine.equipmentId);
+        if (it == ahsById.end()) {
+            if (mine.autonomous)
+                items.push_back("machine " + mine.hid + " (" + mine.equipmentId +
+                                ") is missing from the AHS fleet definition");
+            continue;
+        }
+        const Equipment& a = *it->second;
+        const std::string who = "machine " + mine.equipmentId + ": ";
+        if (!mine.autonomous)
+            items.push_back(who + "listed by both the FMS (manned) and the AHS");
+        if (a.hid != mine.hid)
+            items.push_back(who + "HID '" + a.hid + "' at the AHS, '" + mine.hid + "' at the FMS");
+        if (a.type != mine.type)
+            items.push_back(who + "type " + a.type + " at the AHS, " + mine.type + " at the FMS");
+        if (dimDiff(a.length, mine.length) || dimDiff(a.width, mine.width))
+            items.push_back(who + "dimensions " + fmt(a.length) + " x " + fmt(a.width) + " m at the AHS, " +
+                            fmt(mine.length) + " x " + fmt(mine.width) + " m at the FMS");
+    }
+    std::set<Guid> mineIds;
+    for (auto& e : m_cfg.fleet)
+        mineIds.insert(e.equipmentId);
+    for (auto& a : m_ahsFleet->equipment)
+        if (!mineIds.count(a.equipmentId))
+            items.push_back("machine " + a.hid + " (" + a.equipmentId + ", " + a.type +
+                            ") of the AHS is not in the FMS fleet");
+    m_counters.add("fleet.discrepancies", items.size());
+    m_listener.onFleetDiscrepancies(m_link.name, items);
+    for (auto& i : items)
+        event(IsoSeverity::Warning, "fleet discrepancy on " + m_link.name + ": " + i);
+}
+
+// ---------------------------------------------------------------- all-stop (§7.6, §7.7)
+
+void FmsSession::setAllStop(const MachineAllStopV1& s) {
+    auto& a = m_allStop;
+    a.state = s.modeAllStop == "On" ? AllStopState::On : AllStopState::Off;
+    a.activeId = s.modeAllStopId;
+    a.external = a.state == AllStopState::On && s.modeAllStopId && !m_issuedIds.count(*s.modeAllStopId);
+    if (a.pendingId && s.modeAllStopId == a.pendingId) {
+        // The status confirms our request: Apply is confirmed by On, Remove by Off with the same id.
+        m_statusDeadline.at.reset();
+        if (a.state == AllStopState::Off)
+            a.pendingId.reset();
+    }
+    if (a.external)
+        event(IsoSeverity::Warning, "all-stop active on " + m_link.name + " (external, id " + *a.activeId + ")");
+    m_listener.onAllStopChanged(m_link.name, a);
+}
+
+void FmsSession::onAllStopResponse(const MachineAllStopResponseV1& b) {
+    m_ackDeadline.at.reset();
+    std::string d = b.detail ? " (" + *b.detail + ")" : std::string();
+    if (b.response == "Accepted") {
+        event(IsoSeverity::Info, "all-stop request " + b.modeAllStopId + " accepted by " + m_link.name + d);
+        // The response is not the state: only MachineAllStopV1 is (§7.7); wait for it.
+        if (m_allStop.state != AllStopState::On || m_allStop.activeId != b.modeAllStopId)
+            m_statusDeadline = {m_clock.now() + m_cfg.allStopStatusTimeout,
+                                "all-stop accepted but status not confirmed"};
+    } else {
+        if (b.detail && b.detail->find("not supported") != std::string::npos) {
+            m_allStop.supported = false;
+            m_listener.onAllStopChanged(m_link.name, m_allStop);
+        }
+        event(IsoSeverity::Error, "all-stop request " + b.modeAllStopId + " rejected by " + m_link.name + d);
+    }
+}
+
+bool FmsSession::allStopApply() {
+    if (!upOrRefuse("all-stop Apply"))
+        return false;
+    Guid id = newGuid();
+    m_issuedIds.insert(id);
+    m_allStop.pendingId = id;
+    sendBody(MachineAllStopRequestV1{"Apply", id});
+    m_counters.add("allstop.apply");
+    event(IsoSeverity::Info, "all-stop Apply " + id + " sent to " + m_link.name);
+    m_ackDeadline = {m_clock.now() + m_cfg.allStopAckTimeout, "all-stop not acknowledged"};
+    m_listener.onAllStopChanged(m_link.name, m_allStop);
+    return true;
+}
+
+bool FmsSession::allStopRemove() {
+    if (!upOrRefuse("all-stop Remove"))
+        return false;
+    // "Same ID used in apply must be used when removing" [OA-iso].
+    std::optional<Guid> id = m_allStop.activeId ? m_allStop.activeId : m_allStop.pendingId;
+    if (!id) {
+        event(IsoSeverity::Warning, "all-stop Remove refused on " + m_link.name + ": no active all-stop id");
+        return false;
+    }
+    m_allStop.pendingId = id;
+    sendBody(MachineAllStopRequestV1{"Remove", *id});
+    m_counters.add("allstop.remove");
+    event(IsoSeverity::Info, "all-stop Remove " + *id + " sent to " + m_link.name);
+    m_ackDeadline = {m_clock.now() + m_cfg.allStopAckTimeout, "all-stop Remove not acknowledged"};
+    return true;
+}
+
+// ---------------------------------------------------------------- assignments (§13.3)
+
+bool FmsSession::requestAssignment(const Guid& equipmentId, std::vector<AssignmentItem> items) {
+    if (!upOrRefuse("assignment request"))
+        return false;
+    auto it = m_machines.find(equipmentId);
+    if (it == m_machines.end()) {
+        event(IsoSeverity::Warning, "assignment refused: machine " + equipmentId + " unknown on " + m_link.name);
+        return false;
+    }
+    if (it->second.dispatchingCustodian == "AHS") {
+        event(IsoSeverity::Warning,
+              "assignment refused: " + label(it->second) + " is dispatched by the AHS (DispatchingCustodian AHS)");
+        return false;
+    }
+    if (items.empty()) {
+        event(IsoSeverity::Warning, "assignment refused: empty request");
+        return false;
+    }
+    for (auto& a : items) {
+        if (a.assignmentId.empty())
+            a.assignmentId = newGuid();
+        if (a.route && !m_cfg.rules.emitNegativeWayIds)
+            for (auto& w : *a.route)
+                w.wayId = std::abs(w.wayId); // Q6: negative ids not emitted unless enabled
+    }
+    it->second.requestedAssignments = items;
+    sendBody(HaulTruckAssignmentRequestV2{items}, equipmentId);
+    m_counters.add("assignment.request");
+    m_listener.onMachineChanged(it->second);
+    return true;
+}
+
+bool FmsSession::resetAssignment(const Guid& equipmentId) {
+    if (!upOrRefuse("assignment reset"))
+        return false;
+    sendBody(HaulTruckAssignmentResetV1{newGuid()}, equipmentId);
+    m_counters.add("assignment.reset");
+    return true;
+}
+
+// ---------------------------------------------------------------- own machines' positions (§7.4)
+
+void FmsSession::sendOwnPositions(const std::map<Guid, IsoPosition>& positions) {
+    if (m_state != LinkState::Up)
+        return;
+    const auto now = unixMillisNow();
+    for (auto& [id, p] : positions) {
+        MachinePositionV1 m;
+        m.timestamp = makeTimestamp(p.measuredUnixMs.value_or(now));
+        m.pose.latitude = p.latitude;
+        m.pose.longitude = p.longitude;
+        m.pose.elevation = p.elevation;
+        if (p.heading)
+            m.pose.heading = static_cast<std::int64_t>(std::lround(*p.heading)) % 360;
+        if (p.speedKmh)
+            m.pose.speed = std::lround(*p.speedKmh);
+        sendBody(m, id);
+    }
+}
+
+// ---------------------------------------------------------------- map service (§10.6)
+
+void FmsSession::onMapService(const MapServiceV1& s, bool mapChannel) {
+    m_counters.add("rx.map_service");
+    if (s.api > kMapServiceApi)
+        logInfo(kLog, "map service of " + m_link.name + " offers API " + std::to_string(s.api) + "; using " +
+                          std::to_string(kMapServiceApi));
+    if (s.api < kMapServiceApi)
+        event(IsoSeverity::Warning, "map service of " + m_link.name + " offers API " + std::to_string(s.api) +
+                                        " only; this console speaks API " + std::to_string(kMapServiceApi));
+    if (mapChannel != separateMapService())
+        return; // identification on the other socket: nothing to ask there
+    // Identified: ask where the map stands; the summary decides whether to fetch (§10.6.3).
+    if (!m_fetchPending && !m_assembler.active())
+        sendMapBody(MapCommandV1{"GET", "/summary"});
+}
+
+bool FmsSession::fetchMap() {
+    if (separateMapService()) {
+        if (m_mapState != LinkState::Up) {
+            m_counters.add("cmd.refused.link_down");
+            event(IsoSeverity::Warning, "map fetch refused: the map service of '" + m_link.name + "' is " +
+                                            toString(m_mapState) + " (commands are not queued)");
+            return false;
+        }
+    } else if (!upOrRefuse("map fetch")) {
+        return false;
+    }
+    m_assembler.reset();
+    requestMap();
+    return true;
+}
+
+void FmsSession::requestMap() {
+    m_fetchPending = true;
+    sendMapBody(MapCommandV1{"GET", "/"});
+    m_counters.add("map.fetch");
+}
+
+void FmsSession::interruptMapTransfer(const std::string& why) {
+    if (m_assembler.active()) {
+        m_assembler.reset();
+        event(IsoSeverity::Warning, "map transfer from " + m_link.name + " interrupted (" + why + ")" +
+                                        (m_map ? ", previous map kept" : std::string()));
+    }
+    m_fetchPending = false;
+}
+
+void FmsSession::onSummary(const MapSummaryV1& s) {
+    if (m_assembler.active()) {
+        if (m_fetchingSummary && m_fetchingSummary->changeSetMap == s.changeSetMap &&
+            m_fetchingSummary->changeSetWay == s.changeSetWay)
+            return; // the same map being transferred
+        event(IsoSeverity::Warning, "map changed during transfer on " + m_link.name + ": fetching again");
+        m_assembler.reset();
+        if (!m_fetchPending) {
+            requestMap();
+            return;
+        }
+    }
+    if (m_fetchPending) {
+        m_fetchPending = false;
+        m_fetchingSummary = s;
+        m_assembler.begin(s);
+        m_listener.onMapProgress(m_link.name, m_assembler.progress());
+        if (s.documentCount == 0)
+            finishMap();
+        return;
+    }
+    // Re-fetch when the change sets moved (§8 exchange).
+    if (!m_map || m_map->summary.changeSetMap != s.changeSetMap || m_map->summary.changeSetWay != s.changeSetWay)
+        requestMap();
+}
+
+void FmsSession::onChunk(std::string_view xml) {
+    if (!m_assembler.active()) {
+        m_counters.add("rx.rejected.unexpected_map_chunk");
+        event(IsoSeverity::Warning, "map chunk from " + m_link.name + " without a pending map request ignored");
+        return;
+    }
+    auto p = m_assembler.addChunk(xml);
+    if (!p) {
+        m_counters.add("rx.rejected.map");
+        ++m_framesRejected;
+        event(IsoSeverity::Error, "map from " + m_link.name + " rejected: " + p.error() +
+                                      (m_map ? " (previous map kept)" : std::string()));
+        reportError("MapRejected", p.error(), std::nullopt, std::nullopt);
+        return;
+    }
+    m_listener.onMapProgress(m_link.name, *p);
+    if (p->complete())
+        finishMap();
+}
+
+void FmsSession::finishMap() {
+    auto m = m_assembler.finish();
+    if (!m) {
+        m_counters.add("rx.rejected.map");
+        event(IsoSeverity::Error, "map from " + m_link.name + " rejected: " + m.error());
+        reportError("MapRejected", m.error(), std::nullopt, std::nullopt);
+        return;
+    }
+    auto model = std::make_shared<MapModel>(std::move(*m));
+    if (m_connectivity)
+        model->connectivity.assign(*m_connectivity);
+    for (auto& w : model->warnings)
+        event(IsoSeverity::Warning, "map from " + m_link.name + ": " + w);
+    m_map = model;
+    m_counters.add("map.complete");
+    event(IsoSeverity::Info, "map from " + m_link.name + " complete: " + std::to_string(model->nodes.size()) +
+                                 " nodes, " + std::to_string(model->ways.size()) + " ways");
+    m_listener.onMapChanged(m_link.name, *model);
+}
+
+// ---------------------------------------------------------------- interface diagnostic (§5 #15 [I])
+
+void FmsSession::reportError(const std::string& code, const std::string& detail,
+                             std::optional<std::string> refMember, std::optional<Timestamp> refTimestamp) {
+    if (m_state != LinkState::Up)
+        return;
+    if (m_pendingErrors.size() >= kMaxPendingErrors) {
+        ++m_errorsDropped; // reported as a measurement in the next diagnostic
+        return;
+    }
+    constexpr std::size_t kMaxDetail = 200; // the offending text may be megabytes; the AHS needs the gist
+    m_pendingErrors.push_back(DiagMessage{"Error", code, detail.substr(0, kMaxDetail), std::move(refMember),
+                                          refTimestamp && refTimestamp->unixMs ? refTimestamp : std::nullopt});
+    const auto now = m_clock.now();
+    if (!m_lastErrorDiagnostic || now - *m_lastErrorDiagnostic >= m_cfg.errorDiagnosticInterval)
+        flushErrorDiagnostics();
+}
+
+void FmsSession::flushErrorDiagnostics() {
+    if (m_pendingErrors.empty())
+        return;
+    InterfaceDiagnosticV1 d;
+    d.message = std::move(m_pendingErrors);
+    m_pendingErrors.clear();
+    if (m_errorsDropped)
+        d.measurement.push_back(DiagMeasurement{"ErrorsNotDetailed", static_cast<double>(m_errorsDropped), "count"});
+    m_errorsDropped = 0;
+    m_lastErrorDiagnostic = m_clock.now();
+    if (sendBody(d))
+        m_counters.add("tx.interface_diagnostic.error");
+}
+
+void FmsSession::sendPeriodicDiagnostic() {
+    InterfaceDiagnosticV1 d;
+    d.measurement = {
+        {"MessagesReceived", static_cast<double>(m_framesReceived), "count"},
+        {"MessagesSent", static_cast<double>(m_messagesSent), "count"},
+        {"MessagesRejected", static_cast<double>(m_framesRejected), "count"},
+        {"MachinesKnown", static_cast<double>(m_machines.size()), "count"},
+    };
+    if (sendBody(d))
+        m_counters.add("tx.interface_diagnostic.periodic");
+}
+
+// ---------------------------------------------------------------- timers
+
+void FmsSession::poll() {
+    const auto now = m_clock.now();
+    for (Deadline* d : {&m_ackDeadline, &m_statusDeadline}) {
+        if (d->at && now >= *d->at) {
+            d->at.reset();
+            m_counters.add("allstop.timeout");
+            event(IsoSeverity::Error, d->alarm + " on " + m_link.name);
+        }
+    }
+    if (m_state != LinkState::Up)
+        return;
+    if (!m_pendingErrors.empty() && m_lastErrorDiagnostic &&
+        now - *m_lastErrorDiagnostic >= m_cfg.errorDiagnosticInterval)
+        flushErrorDiagnostics();
+    if (m_nextPeriodicDiagnostic && now >= *m_nextPeriodicDiagnostic) {
+        sendPeriodicDiagnostic();
+        // Keeps its cadence from the connection time; a late poll does not send a burst.
+        while (*m_nextPeriodicDiagnostic <= now)
+            *m_nextPeriodicDiagnostic += m_cfg.interfaceDiagnosticPeriod;
+    }
+}
+
+} // namespace ocu::iso23725
