@@ -37,7 +37,8 @@ const char* toString(AllStopState s) {
 }
 
 namespace {
-// The member an error text is about: codec errors start with the member name ("MachinePositionV1.Heading ...").
+// The member an error text is about: codec errors start with the member name ("MachinePositionV1.Heading
+// ...").
 std::optional<std::string> memberOf(const std::string& error) {
     auto end = error.find_first_of(".: [");
     if (end == 0 || end == std::string::npos)
@@ -168,8 +169,8 @@ void FmsSession::connectFailed(const std::string& reason, std::chrono::milliseco
         m_state = LinkState::Down;
         m_listener.onLinkState(m_link.name, LinkState::Down, reason);
     }
-    logInfo(kLog, "link " + m_link.name + ": " + reason + "; retry in " + std::to_string(retryIn.count()) +
-                      " ms");
+    logInfo(kLog,
+            "link " + m_link.name + ": " + reason + "; retry in " + std::to_string(retryIn.count()) + " ms");
 }
 
 // ---------------------------------------------------------------- map service channel (Q10)
@@ -247,8 +248,8 @@ void FmsSession::handle(const Envelope& env, bool mapChannel) {
     const auto& eq = env.header.equipmentId;
     const std::int64_t hdrMs = env.header.timestamp.unixMs.value_or(unixMillisNow());
     for (auto& mem : env.members) {
-        const bool mapMember = std::holds_alternative<MapServiceV1>(mem.body) ||
-                               std::holds_alternative<MapSummaryV1>(mem.body);
+        const bool mapMember =
+            std::holds_alternative<MapServiceV1>(mem.body) || std::holds_alternative<MapSummaryV1>(mem.body);
         if (mapChannel && !mapMember && !std::holds_alternative<InterfaceDiagnosticV1>(mem.body) &&
             !std::holds_alternative<UnknownMember>(mem.body)) {
             m_counters.add("rx.rejected.wrong_channel");
@@ -299,15 +300,17 @@ void FmsSession::handle(const Envelope& env, bool mapChannel) {
                     const std::string name(memberName(Body(b)));
                     event(IsoSeverity::Warning,
                           name + " from " + m_link.name + " ignored: only the FMS sends it");
-                    reportError("WrongDirection", name + " is sent by the FMS only", name, env.header.timestamp);
+                    reportError("WrongDirection", name + " is sent by the FMS only", name,
+                                env.header.timestamp);
                 } else {
                     if (!eq)
                         return; // checked by the codec for per-machine members
                     auto& m = machine(*eq);
                     if (!m.inAhsFleet && !m.stateKnown) {
                         m_counters.add("rx.unknown_machine");
-                        event(IsoSeverity::Warning, std::string(memberName(Body(b))) + " from " + m_link.name +
-                                                        " for machine " + *eq + " not in its fleet definition");
+                        event(IsoSeverity::Warning, std::string(memberName(Body(b))) + " from " +
+                                                        m_link.name + " for machine " + *eq +
+                                                        " not in its fleet definition");
                     }
                     machineMember(m, b, hdrMs);
                     m.stateKnown = true;
@@ -347,7 +350,8 @@ template <class T> void FmsSession::machineMember(IsoMachineSnapshot& m, const T
         m.autonomyMode = b.autonomyMode;
     } else if constexpr (std::is_same_v<T, MachineDispatchAvailabilityV1>) {
         if (m.dispatchingCustodian == "AHS" && b.dispatchingCustodian == "FMS")
-            event(IsoSeverity::Info, "machine " + label(m) + " needs an assignment (custodian AHS -> FMS, §8.3.4)");
+            event(IsoSeverity::Info,
+                  "machine " + label(m) + " needs an assignment (custodian AHS -> FMS, §8.3.4)");
         m.dispatchingCustodian = b.dispatchingCustodian;
     } else if constexpr (std::is_same_v<T, MachineDiagnosticV2>) {
         m.diagnostics = b.entries; // full list each time; [] clears (§8.4)
@@ -357,8 +361,8 @@ template <class T> void FmsSession::machineMember(IsoMachineSnapshot& m, const T
         // §2.1 rule 4: a late event never overwrites newer state.
         if (hdrMs < m.productionUnixMs) {
             m_counters.add("rx.late_event");
-            event(IsoSeverity::Info, "late production state " + b.productionState + " of " + label(m) + " at " +
-                                         formatTimestamp(hdrMs) + " kept in history only");
+            event(IsoSeverity::Info, "late production state " + b.productionState + " of " + label(m) +
+                                         " at " + formatTimestamp(hdrMs) + " kept in history only");
             return;
         }
         m.production = b;
@@ -486,7 +490,8 @@ void FmsSession::setAllStop(const MachineAllStopV1& s) {
             a.pendingId.reset();
     }
     if (a.external)
-        event(IsoSeverity::Warning, "all-stop active on " + m_link.name + " (external, id " + *a.activeId + ")");
+        event(IsoSeverity::Warning,
+              "all-stop active on " + m_link.name + " (external, id " + *a.activeId + ")");
     m_listener.onAllStopChanged(m_link.name, a);
 }
 
@@ -546,12 +551,13 @@ bool FmsSession::requestAssignment(const Guid& equipmentId, std::vector<Assignme
         return false;
     auto it = m_machines.find(equipmentId);
     if (it == m_machines.end()) {
-        event(IsoSeverity::Warning, "assignment refused: machine " + equipmentId + " unknown on " + m_link.name);
+        event(IsoSeverity::Warning,
+              "assignment refused: machine " + equipmentId + " unknown on " + m_link.name);
         return false;
     }
     if (it->second.dispatchingCustodian == "AHS") {
-        event(IsoSeverity::Warning,
-              "assignment refused: " + label(it->second) + " is dispatched by the AHS (DispatchingCustodian AHS)");
+        event(IsoSeverity::Warning, "assignment refused: " + label(it->second) +
+                                        " is dispatched by the AHS (DispatchingCustodian AHS)");
         return false;
     }
     if (items.empty()) {
@@ -670,14 +676,16 @@ void FmsSession::onSummary(const MapSummaryV1& s) {
         return;
     }
     // Re-fetch when the change sets moved (§8 exchange).
-    if (!m_map || m_map->summary.changeSetMap != s.changeSetMap || m_map->summary.changeSetWay != s.changeSetWay)
+    if (!m_map || m_map->summary.changeSetMap != s.changeSetMap ||
+        m_map->summary.changeSetWay != s.changeSetWay)
         requestMap();
 }
 
 void FmsSession::onChunk(std::string_view xml) {
     if (!m_assembler.active()) {
         m_counters.add("rx.rejected.unexpected_map_chunk");
-        event(IsoSeverity::Warning, "map chunk from " + m_link.name + " without a pending map request ignored");
+        event(IsoSeverity::Warning,
+              "map chunk from " + m_link.name + " without a pending map request ignored");
         return;
     }
     auto p = m_assembler.addChunk(xml);
@@ -725,8 +733,9 @@ void FmsSession::reportError(const std::string& code, const std::string& detail,
         return;
     }
     constexpr std::size_t kMaxDetail = 200; // the offending text may be megabytes; the AHS needs the gist
-    m_pendingErrors.push_back(DiagMessage{"Error", code, detail.substr(0, kMaxDetail), std::move(refMember),
-                                          refTimestamp && refTimestamp->unixMs ? refTimestamp : std::nullopt});
+    m_pendingErrors.push_back(
+        DiagMessage{"Error", code, detail.substr(0, kMaxDetail), std::move(refMember),
+                    refTimestamp && refTimestamp->unixMs ? refTimestamp : std::nullopt});
     const auto now = m_clock.now();
     if (!m_lastErrorDiagnostic || now - *m_lastErrorDiagnostic >= m_cfg.errorDiagnosticInterval)
         flushErrorDiagnostics();
@@ -739,7 +748,8 @@ void FmsSession::flushErrorDiagnostics() {
     d.message = std::move(m_pendingErrors);
     m_pendingErrors.clear();
     if (m_errorsDropped)
-        d.measurement.push_back(DiagMeasurement{"ErrorsNotDetailed", static_cast<double>(m_errorsDropped), "count"});
+        d.measurement.push_back(
+            DiagMeasurement{"ErrorsNotDetailed", static_cast<double>(m_errorsDropped), "count"});
     m_errorsDropped = 0;
     m_lastErrorDiagnostic = m_clock.now();
     if (sendBody(d))

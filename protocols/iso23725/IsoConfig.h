@@ -35,8 +35,9 @@ struct IsoConfig {
     std::chrono::milliseconds allStopAckTimeout{2000};    // [I] §7.6
     std::chrono::milliseconds allStopStatusTimeout{5000}; // [I] §7.6
     double dimensionTolerance = 0.05;                     // metres, for fleet discrepancy checks
-    // §5 #15 [I] (Q7): InterfaceDiagnosticV1 "periodic (60 s) + on error"; error reports are sent at most once
-    // per errorDiagnosticInterval (the rest are batched into the next one) so bad input cannot flood the AHS.
+    // §5 #15 [I] (Q7): InterfaceDiagnosticV1 "periodic (60 s) + on error"; error reports are sent at most
+    // once per errorDiagnosticInterval (the rest are batched into the next one) so bad input cannot flood the
+    // AHS.
     std::chrono::milliseconds interfaceDiagnosticPeriod{60000};
     std::chrono::milliseconds errorDiagnosticInterval{1000};
     InferredRules rules;

@@ -66,7 +66,8 @@ struct Link final : FmsOutbound {
 
     void mainOpened(SessionId id, const std::string& peer) {
         if (mainSession) { // service role: a second AHS connection replaces the first
-            logWarning(kLog, "link " + session->name() + ": new connection from " + peer + " replaces the old one");
+            logWarning(kLog,
+                       "link " + session->name() + ": new connection from " + peer + " replaces the old one");
             auto old = *mainSession;
             mainSession.reset(); // so the old session's close is not reported as the link going down
             main->close(old, "replaced");
@@ -76,8 +77,12 @@ struct Link final : FmsOutbound {
         session->opened(peer);
     }
 
-    bool sendMain(std::string text) override { return mainSession && main->send(*mainSession, std::move(text)); }
-    bool sendMap(std::string text) override { return mapSession && map && map->send(*mapSession, std::move(text)); }
+    bool sendMain(std::string text) override {
+        return mainSession && main->send(*mainSession, std::move(text));
+    }
+    bool sendMap(std::string text) override {
+        return mapSession && map && map->send(*mapSession, std::move(text));
+    }
 
     std::unique_ptr<FmsSession> session;
     MainHandler mainHandler;

@@ -16,7 +16,8 @@ class KeepAlive {
 public:
     enum class Action { None, SendPing, Dead };
 
-    KeepAlive(Duration pingInterval, Duration deadAfter) : m_pingInterval(pingInterval), m_deadAfter(deadAfter) {}
+    KeepAlive(Duration pingInterval, Duration deadAfter)
+        : m_pingInterval(pingInterval), m_deadAfter(deadAfter) {}
 
     void start(TimePoint now) {
         m_lastRx = now;

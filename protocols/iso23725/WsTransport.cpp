@@ -249,7 +249,8 @@ private:
         write();
     }
 
-    // Keepalive [I] §2: the timing decisions are KeepAlive's (LinkTiming.h); this only sleeps until they are due.
+    // Keepalive [I] §2: the timing decisions are KeepAlive's (LinkTiming.h); this only sleeps until they are
+    // due.
     void tick() {
         m_timer.expires_at(m_keepAlive.deadline());
         m_timer.async_wait([self = this->shared_from_this()](error_code ec) {

@@ -1,6 +1,6 @@
 // FmsSession on a fake clock, no sockets: the fleet definition goes first, commands are refused while down,
-// the all-stop acknowledgement and status timeouts raise their alarms exactly at the deadline, state comes only
-// from MachineAllStopV1, interface diagnostics are sent every period and on error (rate-limited), and a
+// the all-stop acknowledgement and status timeouts raise their alarms exactly at the deadline, state comes
+// only from MachineAllStopV1, interface diagnostics are sent every period and on error (rate-limited), and a
 // separate map-service socket (Q10) carries the map exchange.
 #include "iso23725/FmsSession.h"
 
@@ -183,8 +183,7 @@ private slots:
         f.session->closed("gone");
         QCOMPARE(f.session->allStop().state, AllStopState::Unknown);
         QVERIFY(!f.session->machines().at(kTruck).stateKnown);
-        QCOMPARE(f.listener.order,
-                 (std::vector<std::string>{"allstop:UNKNOWN", "machine", "link:DOWN"}));
+        QCOMPARE(f.listener.order, (std::vector<std::string>{"allstop:UNKNOWN", "machine", "link:DOWN"}));
     }
 
     void allStopAckTimeoutExactlyAtDeadline() {
@@ -217,7 +216,8 @@ private slots:
         f.advance(4999ms);
         QCOMPARE(f.counters.get("allstop.timeout"), std::uint64_t(0)); // the ack deadline was cancelled
         f.advance(1ms);
-        QCOMPARE(f.listener.count(IsoSeverity::Error, "all-stop accepted but status not confirmed on ahs"), 1);
+        QCOMPARE(f.listener.count(IsoSeverity::Error, "all-stop accepted but status not confirmed on ahs"),
+                 1);
     }
 
     void applyConfirmedThenRemoved() {
@@ -250,10 +250,12 @@ private slots:
         f.connect();
         f.session->text(fromAhs(MachineAllStopV1{"On", "11111111-2222-4333-8444-555555555555"}));
         QVERIFY(f.session->allStop().external);
-        QCOMPARE(f.listener.count(IsoSeverity::Warning, "(external, id 11111111-2222-4333-8444-555555555555)"), 1);
+        QCOMPARE(
+            f.listener.count(IsoSeverity::Warning, "(external, id 11111111-2222-4333-8444-555555555555)"), 1);
         f.session->allStopApply();
         auto id = bodyOf<MachineAllStopRequestV1>(f.out.main.back())->modeAllStopId;
-        f.session->text(fromAhs(MachineAllStopResponseV1{"Rejected", id, std::string("all-stop not supported")}));
+        f.session->text(
+            fromAhs(MachineAllStopResponseV1{"Rejected", id, std::string("all-stop not supported")}));
         QVERIFY(!f.session->allStop().supported);
         QCOMPARE(f.listener.count(IsoSeverity::Error, "rejected by ahs (all-stop not supported)"), 1);
     }

@@ -79,25 +79,55 @@ private slots:
     }
 
     void wssEndToEnd() {
-        SimulatedAhs ahs(simConfig());
-        QVERIFY2(ahs.start(), ahs.lastError().c_str());
-        QVERIFY(ahs.url().rfind("wss://127.0.0.1:", 0) == 0);
+        auto cfg = simConfig();
+        auto ahs = std::make_unique<SimulatedAhs>(cfg);
+        QVERIFY2(ahs->start(), ahs->lastError().c_str());
+        QVERIFY(ahs->url().rfind("wss://127.0.0.1:", 0) == 0);
+        const auto port = ahs->port();
+        // The FMS expects one truck of the AHS with another HID, and a truck the AHS does not have.
+        auto ic = stackConfig(ahs->url(), d + "/ca.pem");
+        auto expected = ahs->fleet().front();
+        expected.hid = "T-WRONG";
+        ic.fleet.push_back(expected);
+        ic.fleet.push_back(
+            Equipment{"9b8a7c6d-5e4f-4a3b-8c2d-1e0f9a8b7c6d", "HT99", "HaulTruck", "", "", true, 12.0, 7.0});
         Recorder rec;
-        IsoStack stack(stackConfig(ahs.url(), d + "/ca.pem"), rec);
+        IsoStack stack(ic, rec);
         QVERIFY(stack.start());
         QVERIFY(waitFor([&] { return rec.link("ahs") == LinkState::Up; }));
-        QVERIFY(waitFor([&] { return !ahs.stats().fmsFirstMessages.empty(); }));
-        QCOMPARE(ahs.stats().fmsFirstMessages.front(), std::string("FleetDefinitionV2"));
+        QVERIFY(waitFor([&] { return !ahs->stats().fmsFirstMessages.empty(); }));
+        QCOMPARE(ahs->stats().fmsFirstMessages.front(), std::string("FleetDefinitionV2"));
+        QVERIFY(waitFor([&] {
+            return rec.hasEvent("at the AHS, 'T-WRONG' at the FMS") &&
+                   rec.hasEvent("machine HT99 (9b8a7c6d-5e4f-4a3b-8c2d-1e0f9a8b7c6d) is missing");
+        }));
         QVERIFY(
             waitFor([&] { return rec.machinesWith([](auto& m) { return m.position.has_value(); }) == 4; }));
         QVERIFY(waitFor([&] { return rec.with([&] { return rec.maps; }) == 1; }));
         QVERIFY(stack.map("ahs")->summary.documentCount >= 3);
         stack.allStopApply("ahs");
         QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::On; }));
-        QVERIFY(waitFor([&] { return ahs.stats().movingTrucks == 0; }));
+        QVERIFY(waitFor([&] { return ahs->stats().movingTrucks == 0; }));
         stack.allStopRemove("ahs");
         QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::Off; }));
         QCOMPARE(stack.counters().get("ws.tls.failed"), 0u);
+
+        // Killed: UNKNOWN meanwhile, commands refused; restarted on the same port: state rebuilt over wss.
+        ahs->stop();
+        QVERIFY(waitFor([&] { return rec.link("ahs") == LinkState::Down; }));
+        QCOMPARE(rec.allStop(), AllStopState::Unknown);
+        QCOMPARE(rec.machinesWith([](auto& m) { return m.stateKnown; }), 0);
+        stack.allStopApply("ahs");
+        QVERIFY(waitFor([&] { return rec.hasEvent("all-stop Apply refused: link 'ahs' is DOWN"); }));
+        ahs.reset();
+        cfg.port = port;
+        auto again = std::make_unique<SimulatedAhs>(cfg);
+        QVERIFY2(again->start(), again->lastError().c_str());
+        QVERIFY(waitFor([&] { return rec.link("ahs") == LinkState::Up; }));
+        QVERIFY(waitFor(
+            [&] { return rec.machinesWith([](auto& m) { return m.stateKnown && m.position; }) == 4; }));
+        QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::Off; }));
+        QCOMPARE(again->counters().get("sim.allstop.on"), 0u);
         stack.stop();
     }
 
