@@ -1,7 +1,9 @@
-// bench_iso23725: parse+validate MachinePositionV1 (msgs/s), a 100k-node / 20k-way map document (parse time),
-// and 1,000 simulated trucks at 10 Hz over loopback ws:// into the IsoStack (does the OCU keep up?).
+// bench_iso23725: parse+validate MachinePositionV1 (msgs/s, public decodeMessage and the DOM path alone),
+// a 100k-node / 20k-way map document (parse time), and 1,000 simulated trucks at 10 Hz over loopback ws://
+// into the IsoStack (does the OCU keep up?).
 #include "iso23725/IsoStack.h"
 #include "iso23725/MapModel.h"
+#include "iso23725/PositionFastPath.h"
 #include "sim/iso23725/SimulatedAhs.h"
 
 #include "common/Log.h"
@@ -33,6 +35,21 @@ void BM_ParseValidatePosition(benchmark::State& state) {
     state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(kPosition.size()));
 }
 BENCHMARK(BM_ParseValidatePosition);
+
+// The same message through the DOM path alone (nlohmann parse + decodeJson), as before the fast path.
+void BM_ParseValidatePositionDomPath(benchmark::State& state) {
+    std::int64_t sum = 0;
+    for (auto _ : state) {
+        auto r = decodeMessageDom(kPosition);
+        if (!r || !r->errors.empty())
+            state.SkipWithError("decode failed");
+        sum += *r->find<MachinePositionV1>()->pose.heading;
+    }
+    benchmark::DoNotOptimize(sum);
+    state.SetItemsProcessed(state.iterations());
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(kPosition.size()));
+}
+BENCHMARK(BM_ParseValidatePositionDomPath);
 
 // Reference on the same machine and load: nlohmann DOM parse alone, no validation.
 void BM_JsonParseOnlyReference(benchmark::State& state) {

@@ -1,4 +1,5 @@
 #include "Messages.h"
+#include "PositionFastPath.h"
 
 #include <algorithm>
 #include <array>
@@ -937,6 +938,13 @@ Result<Envelope> decodeJson(const json& doc, const InferredRules& rules) {
 }
 
 Result<Envelope> decodeMessage(std::string_view text, const InferredRules& rules) {
+    // Hot path (ISO §7.4, note §5 row 5: 1-10 Hz per machine): clean MachinePositionV1 frames skip the DOM.
+    if (auto fast = tryDecodePositionFast(text, rules))
+        return std::move(*fast);
+    return decodeMessageDom(text, rules);
+}
+
+Result<Envelope> decodeMessageDom(std::string_view text, const InferredRules& rules) {
     json doc = json::parse(text.begin(), text.end(), nullptr, false);
     if (doc.is_discarded())
         return makeError("message: invalid JSON");

@@ -43,6 +43,13 @@ private slots:
         QVERIFY(c.links[0].ws.tls.verifyHostname);
         QCOMPARE(c.links[0].ws.pingInterval.count(), 2000);
         QCOMPARE(c.links[0].ws.maxFrameBytes, std::size_t(1048576));
+        QCOMPARE(c.interfaceDiagnosticPeriod.count(), 30000);
+        // Q10: the map service's own socket takes the link's TLS files and timing, always as a client.
+        QCOMPARE(c.links[0].mapWs.url, std::string("wss://ahs.example:8444/map"));
+        QCOMPARE(c.links[0].mapWs.role, WsRole::Client);
+        QCOMPARE(c.links[0].mapWs.tls.certFile, std::string("/etc/ocu/me.pem"));
+        QCOMPARE(c.links[0].mapWs.pingInterval.count(), 2000);
+        QVERIFY(c.links[1].mapWs.url.empty()); // shares the main socket
         QCOMPARE(c.links[1].ws.role, WsRole::Service);
         QCOMPARE(c.links[1].ws.deadAfter.count(), 15000);                     // default
         QCOMPARE(c.links[1].ws.maxFrameBytes, std::size_t(16 * 1024 * 1024)); // default
@@ -65,7 +72,8 @@ private slots:
         QVERIFY2(text.contains("rol"), qPrintable(text));
         QVERIFY2(text.contains("Hauler"), qPrintable(text));
         QVERIFY2(text.contains("positionRateHz"), qPrintable(text));
-        QVERIFY(errors.size() >= 5);
+        QVERIFY2(text.contains("mapUrl"), qPrintable(text));
+        QVERIFY(errors.size() >= 6);
     }
 };
 
