@@ -8,11 +8,11 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <random>
-#include <set>
 #include <thread>
 
 namespace ocu::sim {
@@ -77,7 +77,42 @@ struct Truck {
     double engineHours = 12000;
     std::vector<DiagnosticEntry> faults;
     double nextHealth = 0;
+    HaulTruckProductionStateSensorV1 sensorSent; // last HaulTruckProductionStateSensorV1 sent (on change)
 };
+
+// Per-session bookkeeping; one table per socket because session ids are per endpoint.
+struct SessionState {
+    bool gotFirst = false;
+    // Frame counts since the session opened, reported in InterfaceDiagnosticV1 (§5 row 15 [I]).
+    std::uint64_t received = 0, sent = 0, rejected = 0;
+    std::unique_ptr<boost::asio::steady_timer> diagTimer;
+};
+
+enum class Sock { Main, Map };
+
+// The member name a codec error message starts with ("MachineAutonomyModeV1.AutonomyMode: ..."), if any.
+std::optional<std::string> memberOfError(const std::string& error) {
+    std::size_t n = 0;
+    while (n < error.size() && std::isalnum(static_cast<unsigned char>(error[n])))
+        ++n;
+    if (n == 0 || error.compare(0, n, "message") == 0 || error.compare(0, n, "header") == 0)
+        return std::nullopt;
+    return error.substr(0, n);
+}
+
+// Members only the AHS (or its map service) sends (§5 "Dir"): the FMS sending one is an interface error.
+bool onlyAhsSends(const Body& b) {
+    return std::visit(
+        [](auto&& m) {
+            using T = std::decay_t<decltype(m)>;
+            return !(std::is_same_v<T, FleetDefinitionV2> || std::is_same_v<T, MachineAllStopRequestV1> ||
+                     std::is_same_v<T, MachinePositionV1> || std::is_same_v<T, MapCommandV1> ||
+                     std::is_same_v<T, InterfaceDiagnosticV1> ||
+                     std::is_same_v<T, HaulTruckAssignmentRequestV2> ||
+                     std::is_same_v<T, HaulTruckAssignmentResetV1> || std::is_same_v<T, UnknownMember>);
+        },
+        b);
+}
 
 } // namespace
 
@@ -93,9 +128,18 @@ struct SimulatedAhs::Impl : WsHandler {
     GeoFrame frame;
     std::mt19937 rng;
     std::unique_ptr<WsEndpoint> ep;
-    std::set<SessionId> sessions;
-    std::map<SessionId, bool> gotFirst;
+    std::unique_ptr<WsEndpoint> mapEp; // separate map service (Q10), null when the map shares the main socket
+    std::map<SessionId, SessionState> sessions, mapSessions;
     std::vector<std::string> fmsFirst;
+
+    // Forwards the map service's callbacks (its own session ids) to the Impl.
+    struct MapSide : WsHandler {
+        explicit MapSide(Impl& impl) : d(impl) {}
+        Impl& d;
+        void onOpen(SessionId id, const std::string& peer) override { d.onMapOpen(id, peer); }
+        void onText(SessionId id, std::string text) override { d.onFrame(Sock::Map, id, text); }
+        void onClose(SessionId id, const std::string& reason) override { d.onMapClose(id, reason); }
+    } mapSide{*this};
 
     MapModel map;
     std::int64_t changeSetMap = 18000, changeSetWay = 3100;
@@ -328,6 +372,7 @@ struct SimulatedAhs::Impl : WsHandler {
             updatePose(t);
             t.cycleId = newGuid();
             t.cycleStartMs = nowMs();
+            t.sensorSent = sensor(t); // the starting inputs: only changes are sent from here on
             trucks.push_back(std::move(t));
         }
     }
@@ -411,22 +456,34 @@ struct SimulatedAhs::Impl : WsHandler {
         return legs;
     }
 
-    void send(const Body& b, std::optional<Guid> eq = std::nullopt) {
+    static std::string encode(const Body& b, std::optional<Guid> eq) {
         Envelope env;
         env.header.timestamp = makeTimestamp(nowMs());
         env.header.equipmentId = std::move(eq);
         env.members.push_back(Member{b, nlohmann::json::object()});
-        std::string text = encodeMessage(env);
-        for (auto s : sessions)
-            ep->send(s, text);
+        return encodeMessage(env);
+    }
+    std::map<SessionId, SessionState>& table(Sock k) { return k == Sock::Main ? sessions : mapSessions; }
+    // Every frame to an FMS goes through here so the session's sent count stays right.
+    void sendText(Sock k, SessionId s, std::string text, bool binary = false) {
+        auto& t = table(k);
+        auto it = t.find(s);
+        auto& e = k == Sock::Main ? ep : mapEp;
+        if (it == t.end() || !e)
+            return;
+        if (binary ? e->sendBinary(s, std::move(text)) : e->send(s, std::move(text)))
+            ++it->second.sent;
+    }
+    // To every FMS session on the main socket.
+    void send(const Body& b, std::optional<Guid> eq = std::nullopt) {
+        std::string text = encode(b, std::move(eq));
+        for (auto& [s, st] : sessions)
+            sendText(Sock::Main, s, text);
     }
     void sendTo(SessionId s, const Body& b, std::optional<Guid> eq = std::nullopt) {
-        Envelope env;
-        env.header.timestamp = makeTimestamp(nowMs());
-        env.header.equipmentId = std::move(eq);
-        env.members.push_back(Member{b, nlohmann::json::object()});
-        ep->send(s, encodeMessage(env));
+        sendText(Sock::Main, s, encode(b, std::move(eq)));
     }
+    void sendOn(Sock k, SessionId s, const Body& b) { sendText(k, s, encode(b, std::nullopt)); }
 
     MachinePositionV1 position(const Truck& t) {
         MachinePositionV1 p;
@@ -482,14 +539,42 @@ struct SimulatedAhs::Impl : WsHandler {
             env.header.equipmentId = t.id;
             env.members.push_back(Member{MachineAutonomyModeV1{mode(t)}, nlohmann::json::object()});
             env.members.push_back(Member{position(t), nlohmann::json::object()}); // piggy-backed (§3)
-            ep->send(s, encodeMessage(env));
+            sendText(Sock::Main, s, encodeMessage(env));
             sendTo(s, MachineDispatchAvailabilityV1{"FMS", std::nullopt, std::nullopt}, t.id);
             sendTo(s, MachineDiagnosticV2{t.faults}, t.id);
             sendTo(s, prodState(t), t.id);
+            sendTo(s, t.sensorSent, t.id); // §5 row 18 [I]: current sensor inputs next to the state
         }
-        sendTo(s, connectivity);
-        sendTo(s, MapServiceV1{1});
-        sendTo(s, summary());
+        sendTo(s, connectivity); // §9 connectivity is not part of the map service: always here
+        if (!cfg.separateMapService) {
+            sendTo(s, MapServiceV1{1});
+            sendTo(s, summary());
+        }
+    }
+
+    // HaulTruckProductionStateSensorV1 (§5 row 18, Q8 [I]): the raw inputs of the production state. Loaded
+    // from the end of loading to the end of dumping (the payload is on board), body raised while dumping,
+    // park brake when parked or held at rest (all-stop, manual), in the load/dump area while loading/dumping
+    // (a truck is only inside an area for those phases here).
+    HaulTruckProductionStateSensorV1 sensor(const Truck& t) const {
+        const bool halted = (allStopOn && t.autonomous) || t.manual;
+        HaulTruckProductionStateSensorV1 v;
+        v.loaded = t.payload > 0;
+        v.bodyRaised = t.phase == Phase::Dumping;
+        v.parkBrake = t.phase == Phase::Parked || (halted && t.speed == 0);
+        v.payloadWeight = t.payload;
+        v.inLoadArea = t.phase == Phase::Loading;
+        v.inDumpArea = t.phase == Phase::Dumping;
+        return v;
+    }
+    // Sent on change only, never periodically.
+    void updateSensor(Truck& t) {
+        auto v = sensor(t);
+        if (v == t.sensorSent)
+            return;
+        t.sensorSent = v;
+        counters.add("sim.tx.sensor");
+        send(v, t.id);
     }
 
     // ------------------------------------------------------------ simulation tick
@@ -522,6 +607,7 @@ struct SimulatedAhs::Impl : WsHandler {
                 if (t.dwell <= 0)
                     leave(t);
             }
+            updateSensor(t);
             if (cfg.healthEvents) {
                 t.fuel = std::max(5.0, t.fuel - dt * 0.002);
                 t.engineHours += dt / 3600.0;
@@ -649,45 +735,161 @@ struct SimulatedAhs::Impl : WsHandler {
 
     // ------------------------------------------------------------ requests from the FMS
     void onOpen(SessionId id, const std::string& peer) override {
-        sessions.insert(id);
-        gotFirst[id] = false;
+        sessions[id];
         logInfo(kLog, "FMS connected from " + peer);
         snapshotTo(id);
+        scheduleDiagnostic(id);
     }
     void onClose(SessionId id, const std::string& reason) override {
-        sessions.erase(id);
-        gotFirst.erase(id);
+        sessions.erase(id); // destroys its diagnostic timer: the pending wait ends with operation_aborted
         logInfo(kLog, "FMS disconnected: " + reason);
     }
-    void onText(SessionId id, std::string text) override {
+    void onText(SessionId id, std::string text) override { onFrame(Sock::Main, id, text); }
+
+    // The separate map service (Q10) is a service-identification protocol: the service speaks first
+    // (MapServiceV1, then the At-Connection MapSummaryV1; §2 "Connection start", §10.6.1) and expects no
+    // FleetDefinitionV2 from the client.
+    void onMapOpen(SessionId id, const std::string& peer) {
+        mapSessions[id];
+        logInfo(kLog, "map service client connected from " + peer);
+        sendOn(Sock::Map, id, MapServiceV1{1});
+        sendOn(Sock::Map, id, summary());
+        counters.add("sim.map.sessions");
+    }
+    void onMapClose(SessionId id, const std::string& reason) {
+        mapSessions.erase(id);
+        logInfo(kLog, "map service client disconnected: " + reason);
+    }
+
+    std::string mapUrl() const {
+        return std::string(cfg.tls ? "wss://" : "ws://") + cfg.bindAddress + ":" +
+               std::to_string(mapEp ? mapEp->localPort() : cfg.mapPort) + cfg.mapPath;
+    }
+
+    // §5 row 15 [I]: periodic InterfaceDiagnosticV1 with the session's frame counts (main socket only: the
+    // map service has its own, identification-first protocol). Period 0 turns it off.
+    void scheduleDiagnostic(SessionId id) {
+        auto it = sessions.find(id);
+        if (it == sessions.end() || cfg.interfaceDiagnosticPeriod.count() <= 0)
+            return;
+        auto& tm = it->second.diagTimer;
+        if (!tm)
+            tm = std::make_unique<boost::asio::steady_timer>(io.context());
+        tm->expires_after(cfg.interfaceDiagnosticPeriod);
+        tm->async_wait([this, id](boost::system::error_code ec) {
+            if (ec)
+                return;
+            auto it = sessions.find(id);
+            if (it == sessions.end())
+                return;
+            const auto& st = it->second;
+            InterfaceDiagnosticV1 d;
+            d.measurement.push_back(
+                DiagMeasurement{"MessagesReceived", static_cast<double>(st.received), "count"});
+            d.measurement.push_back(DiagMeasurement{"MessagesSent", static_cast<double>(st.sent), "count"});
+            d.measurement.push_back(
+                DiagMeasurement{"MessagesRejected", static_cast<double>(st.rejected), "count"});
+            counters.add("sim.tx.interface_diagnostic");
+            sendOn(Sock::Main, id, d);
+            scheduleDiagnostic(id);
+        });
+    }
+
+    // One text frame from an FMS on either socket. Rejections (invalid JSON or header, a member failing
+    // validation, a member only the AHS sends) are answered with one InterfaceDiagnosticV1 of Error
+    // messages (§5 row 15 [I]: "on error"), RefMember/RefTimestamp where known.
+    void onFrame(Sock k, SessionId id, const std::string& text) {
+        auto& tab = table(k);
+        auto sit = tab.find(id);
+        if (sit == tab.end())
+            return;
+        auto& st = sit->second;
         ++framesReceived;
+        ++st.received;
+        std::vector<DiagMessage> errors;
+        auto reject = [&](const char* code, const char* counter, std::string detail,
+                          std::optional<std::string> member, std::optional<Timestamp> ts) {
+            counters.add("sim.rx.rejected");
+            counters.add(std::string("sim.rx.rejected.") + counter);
+            logWarning(kLog, "message from FMS rejected: " + detail);
+            errors.push_back(DiagMessage{"Error", code, std::move(detail), std::move(member), std::move(ts)});
+        };
         auto env = decodeMessage(text);
         if (!env) {
-            counters.add("sim.rx.rejected");
-            logWarning(kLog, "message from FMS rejected: " + env.error());
+            // Nothing of the frame is used; its Timestamp is quoted when the JSON at least parses.
+            auto doc = nlohmann::json::parse(text, nullptr, false);
+            std::optional<Timestamp> ts;
+            if (doc.is_object())
+                if (auto t = doc.find("Timestamp"); t != doc.end() && t->is_string())
+                    ts = Timestamp{t->get<std::string>(), parseTimestamp(t->get<std::string>(), true)};
+            if (doc.is_discarded())
+                reject("InvalidJson", "invalid_json", env.error(), std::nullopt, std::nullopt);
+            else
+                reject("InvalidHeader", "invalid_header", env.error(), std::nullopt, ts);
+        } else {
+            const Timestamp& ts = env->header.timestamp;
+            for (auto& e : env->errors)
+                reject("InvalidMember", "invalid_member", e, memberOfError(e), ts);
+            if (k == Sock::Main && !st.gotFirst && !env->members.empty()) {
+                st.gotFirst = true;
+                fmsFirst.push_back(std::string(memberName(env->members.front().body)));
+            }
+            for (auto& m : env->members) {
+                if (onlyAhsSends(m.body)) {
+                    std::string name(memberName(m.body));
+                    reject("WrongDirection", "wrong_direction", name + " is sent by the AHS, not by the FMS",
+                           name, ts);
+                    continue;
+                }
+                if (std::get_if<UnknownMember>(&m.body))
+                    counters.add("sim.rx.unknown_member"); // tolerated, never an error (§4.2)
+                else if (std::get_if<InterfaceDiagnosticV1>(&m.body))
+                    counters.add("sim.rx.interface_diagnostic");
+                else if (k == Sock::Map)
+                    onMapServiceMember(id, m.body, ts);
+                else
+                    onMember(id, *env, m.body, ts);
+            }
+        }
+        if (errors.empty())
             return;
-        }
-        for (auto& e : env->errors) {
-            counters.add("sim.rx.rejected");
-            logWarning(kLog, "message from FMS rejected: " + e);
-        }
-        if (!gotFirst[id] && !env->members.empty()) {
-            gotFirst[id] = true;
-            fmsFirst.push_back(std::string(memberName(env->members.front().body)));
-        }
-        for (auto& m : env->members) {
-            if (auto* r = std::get_if<MachineAllStopRequestV1>(&m.body))
-                onAllStop(*r);
-            else if (auto* c = std::get_if<MapCommandV1>(&m.body))
-                onMapCommand(id, *c);
-            else if (auto* a = std::get_if<HaulTruckAssignmentRequestV2>(&m.body))
-                onAssignment(env->header.equipmentId.value_or(""), *a);
-            else if (std::get_if<HaulTruckAssignmentResetV1>(&m.body))
-                onReset(env->header.equipmentId.value_or(""));
-            else if (std::get_if<MachinePositionV1>(&m.body))
-                counters.add("sim.rx.fms_positions");
-            else if (std::get_if<FleetDefinitionV2>(&m.body))
-                counters.add("sim.rx.fms_fleet");
+        st.rejected += errors.size();
+        InterfaceDiagnosticV1 d;
+        d.message = std::move(errors);
+        counters.add("sim.tx.interface_diagnostic.error"); // counted before it can be seen
+        sendOn(k, id, d);
+    }
+
+    void onMember(SessionId id, const Envelope& env, const Body& b, const Timestamp& ts) {
+        if (auto* r = std::get_if<MachineAllStopRequestV1>(&b))
+            onAllStop(*r);
+        else if (auto* c = std::get_if<MapCommandV1>(&b))
+            onMapCommand(Sock::Main, id, *c, ts);
+        else if (auto* a = std::get_if<HaulTruckAssignmentRequestV2>(&b))
+            onAssignment(env.header.equipmentId.value_or(""), *a);
+        else if (std::get_if<HaulTruckAssignmentResetV1>(&b))
+            onReset(env.header.equipmentId.value_or(""));
+        else if (std::get_if<MachinePositionV1>(&b))
+            counters.add("sim.rx.fms_positions");
+        else if (std::get_if<FleetDefinitionV2>(&b))
+            counters.add("sim.rx.fms_fleet");
+    }
+
+    // On the separate map service only MapCommandV1 means something; a FleetDefinitionV2 is not expected
+    // but harmless, anything else belongs on the main socket and is not acted on here.
+    void onMapServiceMember(SessionId id, const Body& b, const Timestamp& ts) {
+        if (auto* c = std::get_if<MapCommandV1>(&b)) {
+            onMapCommand(Sock::Map, id, *c, ts);
+        } else if (std::get_if<FleetDefinitionV2>(&b)) {
+            counters.add("sim.map.rx.fleet");
+        } else {
+            std::string name(memberName(b));
+            InterfaceDiagnosticV1 d;
+            d.message.push_back(DiagMessage{"Warning", "NotMapService",
+                                            name + " ignored: the map service only serves MapCommandV1", name,
+                                            ts});
+            counters.add("sim.map.rx.ignored");
+            sendOn(Sock::Map, id, d);
         }
     }
 
@@ -720,21 +922,29 @@ struct SimulatedAhs::Impl : WsHandler {
         counters.add(allStopOn ? "sim.allstop.on" : "sim.allstop.off");
     }
 
-    void onMapCommand(SessionId s, const MapCommandV1& c) {
-        if (c.scope == "/summary") {
-            sendTo(s, summary());
+    void onMapCommand(Sock k, SessionId s, const MapCommandV1& c, const Timestamp& ts) {
+        if (k == Sock::Main && cfg.separateMapService) {
+            // Q10: the map is served elsewhere; say where instead of silently ignoring the request.
+            InterfaceDiagnosticV1 d;
+            d.message.push_back(DiagMessage{"Warning", "MapServiceElsewhere",
+                                            "the map service is a separate WebSocket service at " + mapUrl(),
+                                            std::string("MapCommandV1"), ts});
+            counters.add("sim.map.elsewhere");
+            sendOn(k, s, d);
+        } else if (c.scope == "/summary") {
+            sendOn(k, s, summary());
         } else if (c.scope == "/") {
             auto chunks = mapChunks();
-            sendTo(s, summary());
+            sendOn(k, s, summary());
             for (auto& ch : chunks)
-                ep->send(s, ch); // raw XML, not wrapped in JSON (§8)
+                sendText(k, s, ch); // raw XML, not wrapped in JSON (§8)
             counters.add("sim.map.sent");
         } else {
             InterfaceDiagnosticV1 d;
             d.message.push_back(DiagMessage{"Warning", "UnknownScope",
                                             "MapCommandV1 scope '" + c.scope + "' unknown",
                                             std::string("MapCommandV1"), std::nullopt});
-            sendTo(s, d);
+            sendOn(k, s, d);
         }
     }
 
@@ -837,17 +1047,37 @@ bool SimulatedAhs::start() {
         o.tls.keyFile = d.cfg.keyFile;
         o.tls.caFile = d.cfg.clientCaFile;
     }
+    // Q10: the map service as its own WebSocket service, with the main service's TLS settings.
+    WsOptions mo = o;
+    mo.role = WsRole::Service;
+    mo.url = std::string(d.cfg.tls ? "wss://" : "ws://") + d.cfg.bindAddress + ":" +
+             std::to_string(d.cfg.mapPort) + d.cfg.mapPath;
+    mo.tls = WsTlsOptions{};
+    mo.tls.certFile = d.cfg.certFile;
+    mo.tls.keyFile = d.cfg.keyFile;
+    mo.tls.caFile = d.cfg.clientCaFile;
     d.io.start();
     auto r = d.io.call([&]() -> Result<bool> {
         d.ep = std::make_unique<WsEndpoint>(d.io.context(), o, d, m_counters);
         auto s = d.ep->start();
+        if (s && d.cfg.separateMapService) {
+            d.mapEp = std::make_unique<WsEndpoint>(d.io.context(), mo, d.mapSide, m_counters);
+            s = d.mapEp->start();
+            if (!s) {
+                s = makeError("map service: " + s.error());
+                d.ep->stop();
+            }
+        }
         if (s)
             d.schedule();
         return s;
     });
     if (!r) {
         m_error = r.error();
-        d.io.call([&] { d.ep.reset(); });
+        d.io.call([&] {
+            d.mapEp.reset();
+            d.ep.reset();
+        });
         d.io.stop();
         return false;
     }
@@ -862,9 +1092,13 @@ void SimulatedAhs::stop() {
         d.timer.cancel();
         if (d.ep)
             d.ep->stop();
-        d.sessions.clear();
+        if (d.mapEp)
+            d.mapEp->stop();
+        d.sessions.clear(); // with their diagnostic timers
+        d.mapSessions.clear();
     });
     d.io.stop();
+    d.mapEp.reset();
     d.ep.reset();
 }
 
@@ -884,6 +1118,18 @@ std::string SimulatedAhs::url() const {
            std::to_string(port()) + m_impl->cfg.path;
 }
 
+std::uint16_t SimulatedAhs::mapPort() const {
+    auto& d = *m_impl;
+    if (!d.mapEp)
+        return d.cfg.mapPort;
+    return const_cast<IoThread&>(d.io).call([&] { return d.mapEp->localPort(); });
+}
+
+std::string SimulatedAhs::mapUrl() const {
+    return std::string(m_impl->cfg.tls ? "wss://" : "ws://") + m_impl->cfg.bindAddress + ":" +
+           std::to_string(mapPort()) + m_impl->cfg.mapPath;
+}
+
 std::vector<Equipment> SimulatedAhs::fleet() const {
     return m_impl->fleetDef().equipment;
 }
@@ -896,6 +1142,7 @@ SimulatedAhsStats SimulatedAhs::stats() {
         s.framesReceived = d.framesReceived;
         s.queuedBytes = d.ep ? d.ep->queuedBytes() : 0;
         s.sessions = d.sessions.size();
+        s.mapSessions = d.mapSessions.size();
         s.allStopOn = d.allStopOn;
         for (auto& t : d.trucks)
             s.movingTrucks += t.speed > 0.05 ? 1 : 0;
@@ -910,21 +1157,26 @@ void SimulatedAhs::bumpMapChangeSet() {
         ++d->changeSetMap;
         ++d->changeSetWay;
         d->mapModifiedMs = nowMs();
-        d->send(d->summary());
+        if (!d->cfg.separateMapService) {
+            d->send(d->summary());
+            return;
+        }
+        for (auto& [s, st] : d->mapSessions)
+            d->sendOn(Sock::Map, s, d->summary());
     });
 }
 
 void SimulatedAhs::sendRaw(const std::string& text) {
     m_impl->io.post([d = m_impl.get(), text] {
-        for (auto s : d->sessions)
-            d->ep->send(s, text);
+        for (auto& [s, st] : d->sessions)
+            d->sendText(Sock::Main, s, text);
     });
 }
 
 void SimulatedAhs::sendRawBinary(const std::string& data) {
     m_impl->io.post([d = m_impl.get(), data] {
-        for (auto s : d->sessions)
-            d->ep->sendBinary(s, data);
+        for (auto& [s, st] : d->sessions)
+            d->sendText(Sock::Main, s, data, true);
     });
 }
 

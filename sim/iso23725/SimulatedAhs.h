@@ -1,13 +1,15 @@
 #pragma once
 // A simulated autonomous haulage system (AHS) speaking ISO 23725 as a WebSocket service (or client): a
 // generated open-pit map served in chunks, N haul trucks on load-haul-dump cycles over the road graph,
-// all-stop and assignments honoured. No Qt. Runs on its own io thread.
+// all-stop and assignments honoured, production-state sensors on change, interface diagnostics (periodic and
+// on rejected input), the map service on the main socket or its own. No Qt. Runs on its own io thread.
 #include "iso23725/Messages.h"
 #include "iso23725/WsTransport.h"
 
 #include "common/Counters.h"
 #include "common/GeoFrame.h"
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -38,6 +40,16 @@ struct SimulatedAhsConfig {
     std::string ahsId = "7d1f3c2a-5b8e-4c61-9a0d-2e4f6b8c1a37";
     std::chrono::milliseconds pingInterval{5000};
     std::chrono::milliseconds deadAfter{15000};
+    // InterfaceDiagnosticV1 with the session's message counts, to every FMS session on the main socket at
+    // this period (§5 row 15 [I]: periodic 60 s + on error; tests set it short). 0 = no periodic report.
+    std::chrono::milliseconds interfaceDiagnosticPeriod{60000};
+    // Q10: the map service on its own WebSocket service (mapUrl()) instead of the main socket. It speaks
+    // first (MapServiceV1, then MapSummaryV1) and serves MapCommandV1; the main socket then answers
+    // MapCommandV1 with a "MapServiceElsewhere" warning. Same TLS settings as the main service; it listens
+    // on bindAddress even in client mode (connectUrl), as the map owner hosts it.
+    bool separateMapService = false;
+    std::uint16_t mapPort = 0; // 0 = any free port (see SimulatedAhs::mapPort())
+    std::string mapPath = "/map";
 };
 
 struct SimulatedAhsStats {
@@ -45,6 +57,7 @@ struct SimulatedAhsStats {
     std::uint64_t framesReceived = 0;
     std::size_t queuedBytes = 0;
     std::size_t sessions = 0;
+    std::size_t mapSessions = 0; // sessions on the separate map service
     bool allStopOn = false;
     int movingTrucks = 0;
     std::vector<std::string> fmsFirstMessages; // first member of each FMS connection's first frame
@@ -63,6 +76,9 @@ public:
     bool running() const;
     std::uint16_t port() const;
     std::string url() const; // ws://127.0.0.1:port/iso23725 (or wss://)
+    // Separate map service (config separateMapService): its port and URL (ws://127.0.0.1:port/map or wss://).
+    std::uint16_t mapPort() const;
+    std::string mapUrl() const;
     const std::string& lastError() const { return m_error; }
 
     // The generated fleet (truck GUIDs are stable for a given seed).
@@ -71,7 +87,7 @@ public:
     Counters& counters() { return m_counters; }
 
     // Test and demo hooks (thread-safe).
-    void bumpMapChangeSet();                     // edits the map: pushes a new MapSummaryV1
+    void bumpMapChangeSet(); // edits the map: pushes a new MapSummaryV1 (to the map service's sessions)
     void sendRaw(const std::string& text);       // text frame to every connected FMS (fault injection)
     void sendRawBinary(const std::string& data); // binary frame to every connected FMS (fault injection)
     // Blocks the simulator's io thread for d (a network stall: no frames, no pongs) to exercise dead-link
