@@ -64,8 +64,12 @@ nlohmann::json consoleConfig(const ocu::SiteConfig& cfg, ocu::sim::SimulatedSite
 #ifdef OCU_HAVE_SIM_ISO23725
     if (auto* i = sim.iso(); i && i->ahs) {
         json links = json::array();
-        for (const auto& l : cfg.iso23725->links)
-            links.push_back({{"name", l.name}, {"url", l.ws.url}});
+        for (const auto& l : cfg.iso23725->links) {
+            json link = {{"name", l.name}, {"url", l.ws.url}};
+            if (!l.mapWs.url.empty())
+                link["mapUrl"] = l.mapWs.url;
+            links.push_back(link);
+        }
         out["iso23725"] = {{"links", links}};
     }
 #endif
@@ -127,7 +131,11 @@ int main(int argc, char** argv) {
                                    QStringLiteral("Write a site configuration for a console that connects to "
                                                   "these simulators (ocu --config FILE --no-sim)."),
                                    QStringLiteral("FILE"));
-    p.addOptions({config, duration, ugvs, trucks, rollers, iface, writeConfig});
+    QCommandLineOption separateMap(
+        QStringLiteral("separate-map-service"),
+        QStringLiteral("The AHS serves its ISO 23725 map service on a socket of its "
+                       "own (the written configuration gets its mapUrl)."));
+    p.addOptions({config, duration, ugvs, trucks, rollers, iface, writeConfig, separateMap});
     p.process(app);
 
     auto site = ocu::loadSite(p.value(config));
@@ -153,6 +161,8 @@ int main(int argc, char** argv) {
         !intOption(rollers, cfg.simulation.osyrisRollers, 3))
         return 2;
     cfg.simulation.enabled = true;
+    if (p.isSet(separateMap))
+        cfg.simulation.ahsSeparateMapService = true;
     if (p.isSet(iface)) {
         boost::system::error_code ec;
         boost::asio::ip::make_address_v4(p.value(iface).toStdString(), ec);
@@ -183,8 +193,9 @@ int main(int argc, char** argv) {
 #ifdef OCU_HAVE_SIM_ISO23725
     if (auto* i = sim.iso(); i && i->ahs)
         for (const auto& l : cfg.iso23725->links)
-            std::printf("  ISO 23725: AHS with %d trucks at %s\n", cfg.simulation.ahsTrucks,
-                        l.ws.url.c_str());
+            std::printf("  ISO 23725: AHS with %d trucks at %s%s%s\n", cfg.simulation.ahsTrucks,
+                        l.ws.url.c_str(), l.mapWs.url.empty() ? "" : ", map service at ",
+                        l.mapWs.url.c_str());
 #endif
 #ifdef OCU_HAVE_SIM_OSYRIS
     if (auto* o = sim.osyris())

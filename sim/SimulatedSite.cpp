@@ -86,6 +86,7 @@ std::string SimulatedSite::start(SiteConfig& config) {
         c.truckCount = s.ahsTrucks;
         c.origin = config.origin;
         c.positionRateHz = 2.0;
+        c.separateMapService = s.ahsSeparateMapService;
         c.bindAddress = s.interfaceAddress;
         auto demo = std::make_unique<IsoDemo>(startIsoDemo(c));
         if (!demo->ahs) {

@@ -31,6 +31,8 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
         cfg.simulation.jausUgvs = static_cast<int>(s->integer("jaus_ugvs", cfg.simulation.jausUgvs, 0, 50));
         cfg.simulation.ahsTrucks =
             static_cast<int>(s->integer("ahs_trucks", cfg.simulation.ahsTrucks, 0, 1000));
+        cfg.simulation.ahsSeparateMapService =
+            s->boolean("ahs_separate_map_service", cfg.simulation.ahsSeparateMapService);
         cfg.simulation.osyrisRollers =
             static_cast<int>(s->integer("osyris_rollers", cfg.simulation.osyrisRollers, 0, 3));
         cfg.simulation.osyrisSpeedUp = s->number("osyris_speed_up", cfg.simulation.osyrisSpeedUp, 1, 1000);

@@ -28,6 +28,9 @@ struct SimulationConfig {
     bool enabled = false;
     int jausUgvs = 2;
     int ahsTrucks = 6;
+    // The simulated AHS serves its map service on a socket of its own (ISO 23725 Q10) instead of the main
+    // one.
+    bool ahsSeparateMapService = false;
     int osyrisRollers = 2;
     double osyrisSpeedUp = 30.0; // paver pace multiplied for demos
     // Address the simulators listen on. 127.0.0.1 (default) keeps all traffic on the host; a LAN

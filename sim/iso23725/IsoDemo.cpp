@@ -17,6 +17,10 @@ IsoDemo startIsoDemo(SimulatedAhsConfig ahsConfig) {
     link.ws.url = ahs->url();
     link.ws.backoffMin = std::chrono::milliseconds(500);
     link.ws.backoffMax = std::chrono::milliseconds(5000);
+    if (ahsConfig.separateMapService) { // Q10: the map service on its own socket, same timing
+        link.mapWs = link.ws;
+        link.mapWs.url = ahs->mapUrl();
+    }
     demo.config.links.push_back(link);
     demo.config.fmsId = "1b9e6a40-3c2d-4f87-8e15-6a7b9c0d2e41";
     demo.config.fleet.push_back(iso23725::Equipment{"a2d4f6b8-1c3e-4a5b-9d7f-0e2c4b6a8d13", "SH01", "Shovel",

@@ -17,7 +17,7 @@ private slots:
         const QString cfg = dir.filePath("sim-site.json");
         QProcess sim;
         sim.start(OCU_SIM_BINARY, {"--duration", "40", "--ugvs", "1", "--trucks", "3", "--rollers", "1",
-                                   "--write-config", cfg});
+                                   "--separate-map-service", "--write-config", cfg});
         QVERIFY(sim.waitForStarted(10000));
         QElapsedTimer t;
         t.start();
@@ -30,6 +30,10 @@ private slots:
         const QJsonObject site = QJsonDocument::fromJson(f.readAll()).object();
         for (const char* k : {"site", "jaus", "iso23725", "osyris"})
             QVERIFY2(site.contains(k), k);
+        // The AHS's map service on its own socket (ISO 23725 Q10): the written link names it.
+        const QJsonObject link = site["iso23725"]["links"][0].toObject();
+        QVERIFY(link["mapUrl"].toString().startsWith("ws://127.0.0.1:"));
+        QVERIFY(link["mapUrl"].toString() != link["url"].toString());
 
         QProcess ocu;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -38,9 +42,10 @@ private slots:
         ocu.start(OCU_BINARY, {"--config", cfg, "--no-sim", "--headless", "--duration", "12"});
         QVERIFY(ocu.waitForStarted(10000));
         QSet<QString> protocols, ids;
+        bool mapComplete = false;
         QByteArray buf;
         t.restart();
-        while (t.elapsed() < 20000 && !(protocols.size() == 3 && ids.size() >= 6)) {
+        while (t.elapsed() < 20000 && !(protocols.size() == 3 && ids.size() >= 6 && mapComplete)) {
             ocu.waitForReadyRead(100);
             buf += ocu.readAllStandardOutput();
             int nl;
@@ -50,12 +55,15 @@ private slots:
                 if (o.value("type") == "machine") {
                     protocols.insert(o.value("protocol").toString());
                     ids.insert(o.value("id").toString());
+                } else if (o.value("type") == "event" && o.value("text").toString().startsWith("map from ")) {
+                    mapComplete = mapComplete || o.value("text").toString().contains(" complete: ");
                 }
             }
         }
         QVERIFY2(protocols.size() == 3, qPrintable(QStringList(protocols.values()).join(",") + " / " +
                                                    QString::fromUtf8(ocu.readAllStandardError())));
         QVERIFY(ids.contains("jaus:126"));
+        QVERIFY(mapComplete);             // fetched over the separate map-service socket
         QVERIFY(ids.size() >= 1 + 3 + 2); // 1 UGV, 3 trucks, a paver and a roller
         ocu.closeWriteChannel();
         ocu.waitForFinished(20000);

@@ -272,6 +272,46 @@ private slots:
         stack.stop();
     }
 
+    // Q10: the map service on its own socket (IsoDemo wires the link's mapUrl); interface diagnostics flow
+    // both ways; the production sensor arrives with the snapshot.
+    void separateMapServiceAndDiagnostics() {
+        auto cfg = simConfig();
+        cfg.separateMapService = true;
+        cfg.interfaceDiagnosticPeriod = std::chrono::milliseconds(300);
+        auto demo = startIsoDemo(cfg);
+        QVERIFY2(demo.ahs, demo.error.c_str());
+        auto& ahs = *demo.ahs;
+        QCOMPARE(demo.config.links[0].mapWs.url, ahs.mapUrl());
+        fastLink(demo.config);
+        demo.config.interfaceDiagnosticPeriod = std::chrono::milliseconds(300);
+        Recorder rec;
+        IsoStack stack(demo.config, rec);
+        QVERIFY(stack.start());
+        QVERIFY(waitFor([&] { return stack.counters().get("map.complete") == 1; }));
+        QCOMPARE(stack.mapServiceState("ahs"), LinkState::Up);
+        QVERIFY(stack.map("ahs")->summary.documentCount >= 3);
+        QCOMPARE(stack.counters().get("map_service.opened"), 1u);
+        QCOMPARE(stack.counters().get("rx.rejected.map_on_wrong_channel"), 0u);
+        QCOMPARE(ahs.counters().get("sim.map.elsewhere"), 0u); // never asked the main socket for the map
+        QVERIFY(waitFor([&] {
+            return rec.machinesWith([](auto& m) { return m.sensor.has_value(); }) == 6 &&
+                   rec.machinesWith([](auto& m) { return m.stateKnown; }) == 6;
+        }));
+        // A map edit reaches the console through the map service only.
+        ahs.bumpMapChangeSet();
+        QVERIFY(waitFor([&] { return stack.counters().get("map.complete") >= 2; }));
+        // Diagnostics both ways: the AHS's periodic ones arrive, ours reach the AHS.
+        QVERIFY(waitFor([&] { return stack.counters().get("rx.interface_diagnostic") >= 2; }));
+        QVERIFY(waitFor([&] { return stack.counters().get("tx.interface_diagnostic.periodic") >= 2; }));
+        QVERIFY(waitFor([&] { return ahs.counters().get("sim.rx.interface_diagnostic") >= 2; }));
+        QCOMPARE(ahs.counters().get("sim.rx.rejected"), 0u);
+        // A garbage frame from the AHS: the console answers with an Error diagnostic, the link stays up.
+        ahs.sendRaw("{\"Protocol\":\"ISO23725\",");
+        QVERIFY(waitFor([&] { return stack.counters().get("tx.interface_diagnostic.error") == 1; }));
+        QCOMPARE(stack.linkState("ahs"), LinkState::Up);
+        stack.stop();
+    }
+
     void refusedWhenNeverConnected() {
         IsoConfig ic;
         ic.links.push_back(IsoLinkConfig{"nowhere", {}, {}});
