@@ -100,6 +100,8 @@ QJsonObject HeadlessMonitor::machineJson(const MachineState& m, bool stale, qint
         m.controller.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(m.controller);
     o[QStringLiteral("control")] = toText(m.control);
     o[QStringLiteral("health")] = toText(m.health);
+    if (!m.workText.isEmpty())
+        o[QStringLiteral("work")] = m.workText;
     o[QStringLiteral("link")] = toText(m.link);
     o[QStringLiteral("stale")] = stale;
     o[QStringLiteral("status")] = toText(statusOf(m, stale));

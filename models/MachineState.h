@@ -50,6 +50,10 @@ struct MachineState {
     HealthLevel health = HealthLevel::Unknown;
     QString healthText;
 
+    // What the machine is doing for production (ISO 23725 haul trucks: production state, way, payload,
+    // body and brake sensors, assignment); empty when the protocol reports nothing of the kind.
+    QString workText;
+
     qint64 lastMessageMs = 0; // timestamp of the last message as the machine stamped it (0 = unknown)
 
     bool operator==(const MachineState&) const = default;

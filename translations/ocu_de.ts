@@ -371,6 +371,10 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <source>Machine %1</source>
         <translation>Maschine %1</translation>
     </message>
+    <message>
+        <source>Work: %1</source>
+        <translation>Arbeit: %1</translation>
+    </message>
 </context>
 <context>
     <name>ocu::FleetModel</name>
@@ -550,6 +554,46 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     <message>
         <source>assignment reset sent</source>
         <translation>Zuweisungs-Reset gesendet</translation>
+    </message>
+    <message>
+        <source>%1 on way %2</source>
+        <translation>%1 auf Weg %2</translation>
+    </message>
+    <message>
+        <source>payload %1 t</source>
+        <translation>Nutzlast %1 t</translation>
+    </message>
+    <message>
+        <source>loaded</source>
+        <translation>beladen</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <source>body raised</source>
+        <translation>Mulde angehoben</translation>
+    </message>
+    <message>
+        <source>park brake on</source>
+        <translation>Feststellbremse an</translation>
+    </message>
+    <message>
+        <source>assignment %1</source>
+        <translation>Auftrag %1</translation>
+    </message>
+    <message>
+        <source> (%1 at way %2)</source>
+        <translation> (%1 an Weg %2)</translation>
+    </message>
+    <message>
+        <source>last dump %1 t at way %2</source>
+        <translation>letzte Entladung %1 t an Weg %2</translation>
+    </message>
+    <message>
+        <source>last dump at way %1</source>
+        <translation>letzte Entladung an Weg %1</translation>
     </message>
 </context>
 <context>

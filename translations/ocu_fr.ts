@@ -371,6 +371,10 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>Machine %1</source>
         <translation>Machine %1</translation>
     </message>
+    <message>
+        <source>Work: %1</source>
+        <translation>Travail : %1</translation>
+    </message>
 </context>
 <context>
     <name>ocu::FleetModel</name>
@@ -550,6 +554,46 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>assignment reset sent</source>
         <translation>réinitialisation de l&apos;affectation envoyée</translation>
+    </message>
+    <message>
+        <source>%1 on way %2</source>
+        <translation>%1 sur la voie %2</translation>
+    </message>
+    <message>
+        <source>payload %1 t</source>
+        <translation>charge utile %1 t</translation>
+    </message>
+    <message>
+        <source>loaded</source>
+        <translation>chargé</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>vide</translation>
+    </message>
+    <message>
+        <source>body raised</source>
+        <translation>benne levée</translation>
+    </message>
+    <message>
+        <source>park brake on</source>
+        <translation>frein de parc serré</translation>
+    </message>
+    <message>
+        <source>assignment %1</source>
+        <translation>affectation %1</translation>
+    </message>
+    <message>
+        <source> (%1 at way %2)</source>
+        <translation> (%1 à la voie %2)</translation>
+    </message>
+    <message>
+        <source>last dump %1 t at way %2</source>
+        <translation>dernier déversement %1 t à la voie %2</translation>
+    </message>
+    <message>
+        <source>last dump at way %1</source>
+        <translation>dernier déversement à la voie %1</translation>
     </message>
 </context>
 <context>

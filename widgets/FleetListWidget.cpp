@@ -213,6 +213,8 @@ QString FleetListWidget::describeMachine(const MachineState& m) {
           << tr("Stop (reported): %1 %2").arg(toText(m.stop), m.stopText)
           << tr("Controller: %1 (%2)").arg(m.controller, toText(m.control))
           << tr("Health: %1 %2").arg(toText(m.health), m.healthText);
+    if (!m.workText.isEmpty())
+        lines << tr("Work: %1").arg(m.workText);
     return lines.join(QLatin1Char('\n'));
 }
 

@@ -195,6 +195,39 @@ static ModeCategory modeCategory(const std::string& mode) {
     return ModeCategory::Transition;
 }
 
+QString isoWorkText(const IsoMachineSnapshot& s) {
+    QStringList parts;
+    if (s.production) {
+        const auto& p = *s.production;
+        parts << (p.wayId ? IsoBridge::tr("%1 on way %2").arg(q(p.productionState)).arg(*p.wayId)
+                          : q(p.productionState));
+    }
+    if (s.payload && s.payload->payloadWeight) // null = unavailable, never shown as 0 t
+        parts << IsoBridge::tr("payload %1 t").arg(*s.payload->payloadWeight);
+    if (s.sensor) {
+        const auto& x = *s.sensor;
+        if (x.loaded)
+            parts << (*x.loaded ? IsoBridge::tr("loaded") : IsoBridge::tr("empty"));
+        if (x.bodyRaised && *x.bodyRaised)
+            parts << IsoBridge::tr("body raised");
+        if (x.parkBrake && *x.parkBrake)
+            parts << IsoBridge::tr("park brake on");
+    }
+    if (s.assignment) {
+        const auto& a = *s.assignment;
+        QString text = IsoBridge::tr("assignment %1").arg(q(a.status));
+        if (a.task && a.destinationId)
+            text += IsoBridge::tr(" (%1 at way %2)").arg(q(*a.task)).arg(*a.destinationId);
+        parts << text;
+    }
+    if (s.lastDump)
+        parts << (s.lastDump->dumpedWeight ? IsoBridge::tr("last dump %1 t at way %2")
+                                                 .arg(*s.lastDump->dumpedWeight)
+                                                 .arg(s.lastDump->wayId)
+                                           : IsoBridge::tr("last dump at way %1").arg(s.lastDump->wayId));
+    return parts.join(QStringLiteral(" · "));
+}
+
 MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop) const {
     MachineState m;
     m.id = protocolPrefix(Protocol::Iso23725) + q(s.equipmentId);
@@ -233,6 +266,7 @@ MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop
         m.width = m.width > 0 ? m.width : 2.2;
         m.height = 2.2;
     }
+    m.workText = isoWorkText(s);
     m.modeText = q(s.autonomyMode);
     m.mode = s.stateKnown ? modeCategory(s.autonomyMode) : ModeCategory::Unknown;
     if (!s.stateKnown || !s.autonomous) {

@@ -17,6 +17,10 @@
 
 namespace ocu {
 
+// One line for the operator about a haul truck's work (§12/§13 members as last reported): production state
+// and way, payload, sensor flags, assignment status, last dump. Empty when the AHS reported none of them.
+QString isoWorkText(const iso23725::IsoMachineSnapshot& m);
+
 class IsoBridge : public FleetBridge, private iso23725::IsoListener {
     Q_OBJECT
 public:
