@@ -2,6 +2,8 @@
 // the tolerance rules of the note (§9) hold and can be switched off in InferredRules.
 #include "iso23725/Messages.h"
 
+#include "IsoTestData.h"
+
 #include <QtTest>
 
 #include <fstream>
@@ -11,15 +13,6 @@ using namespace ocu::iso23725;
 using nlohmann::json;
 
 namespace {
-
-std::vector<std::string> loadExamples() {
-    std::ifstream in(OCU_ISO_TEST_DATA "/catalogue_examples.jsonl");
-    std::vector<std::string> lines;
-    for (std::string l; std::getline(in, l);)
-        if (!l.empty())
-            lines.push_back(l);
-    return lines;
-}
 
 const char* kHdr = R"("Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:15:07.412Z")";
 const char* kEq = R"("EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78")";
@@ -40,7 +33,7 @@ class TestIsoMessages : public QObject {
     Q_OBJECT
 private slots:
     void everyExampleRoundTrips() {
-        auto examples = loadExamples();
+        auto examples = loadCatalogueExamples();
         QCOMPARE(int(examples.size()), 27);
         std::set<std::string> names;
         for (auto& text : examples) {

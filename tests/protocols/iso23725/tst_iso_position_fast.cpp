@@ -4,6 +4,8 @@
 // either declines or agrees, and the public decodeMessage always equals the DOM path.
 #include "iso23725/PositionFastPath.h"
 
+#include "IsoTestData.h"
+
 #include <QtTest>
 
 #include <chrono>
@@ -33,15 +35,6 @@ const std::string kNoteExample5 =
     "  "
     "\"LatitudeAccuracy\":0.05,\"LongitudeAccuracy\":0.06,\"ElevationAccuracy\":0.11,\"HeadingAccuracy\":0.8,"
     "\"Speed\":34}}";
-
-std::vector<std::string> loadExamples() {
-    std::ifstream in(OCU_ISO_TEST_DATA "/catalogue_examples.jsonl");
-    std::vector<std::string> lines;
-    for (std::string l; std::getline(in, l);)
-        if (!l.empty())
-            lines.push_back(l);
-    return lines;
-}
 
 // ---- comparison: every Envelope field; doubles bit for bit (-0.0 vs +0.0 differ here, not under ==)
 
@@ -482,7 +475,7 @@ private slots:
     // 1b. Catalogue: the header-plus-position frames are accepted; the piggy-backed one (line 8, §3) and
     // every other message are declined; decodeMessage equals the DOM path for all 27 lines.
     void catalogueExamples() {
-        auto examples = loadExamples();
+        auto examples = loadCatalogueExamples();
         QCOMPARE(int(examples.size()), 27);
         int accepted = 0, positions = 0;
         for (auto& text : examples) {
