@@ -13,6 +13,7 @@ static constexpr const char* kLog = "ocu.iso";
 static constexpr std::int64_t kMapServiceApi = 1;
 // At most this many error entries wait for the next rate-limited diagnostic; the rest are only counted.
 static constexpr std::size_t kMaxPendingErrors = 20;
+static constexpr std::chrono::seconds kMapIdentificationWait{5};
 
 const char* toString(LinkState s) {
     switch (s) {
@@ -180,7 +181,9 @@ void FmsSession::mapOpened(const std::string& peer) {
     interruptMapTransfer("map service reconnected");
     m_counters.add("map_service.opened");
     event(IsoSeverity::Info, "map service of " + m_link.name + " up (" + peer + ")");
-    // The service speaks first (MapServiceV1, §10.6.1 [I]); the summary is asked for when it has.
+    // The service speaks first (MapServiceV1, §10.6.1 [I]); the summary is asked for when it has, or after
+    // kMapIdentificationWait from a service that does not identify itself.
+    m_mapIdentificationDeadline = m_clock.now() + kMapIdentificationWait;
 }
 
 void FmsSession::mapText(std::string_view frame) {
@@ -189,6 +192,7 @@ void FmsSession::mapText(std::string_view frame) {
 
 void FmsSession::mapClosed(const std::string& reason) {
     m_mapState = LinkState::Down;
+    m_mapIdentificationDeadline.reset();
     interruptMapTransfer("map service down");
     event(IsoSeverity::Warning, "map service of " + m_link.name + " down: " + reason);
 }
@@ -618,6 +622,7 @@ void FmsSession::onMapService(const MapServiceV1& s, bool mapChannel) {
                                         " only; this console speaks API " + std::to_string(kMapServiceApi));
     if (mapChannel != separateMapService())
         return; // identification on the other socket: nothing to ask there
+    m_mapIdentificationDeadline.reset();
     // Identified: ask where the map stands; the summary decides whether to fetch (§10.6.3).
     if (!m_fetchPending && !m_assembler.active())
         sendMapBody(MapCommandV1{"GET", "/summary"});
@@ -778,6 +783,14 @@ void FmsSession::poll() {
             m_counters.add("allstop.timeout");
             event(IsoSeverity::Error, d->alarm + " on " + m_link.name);
         }
+    }
+    if (m_mapIdentificationDeadline && now >= *m_mapIdentificationDeadline) {
+        m_mapIdentificationDeadline.reset();
+        m_counters.add("map_service.unidentified");
+        event(IsoSeverity::Warning, "map service of " + m_link.name + " did not identify itself (" +
+                                        m_cfg.rules.mapServiceMember + "); asking for its summary anyway");
+        if (!m_fetchPending && !m_assembler.active())
+            sendMapBody(MapCommandV1{"GET", "/summary"});
     }
     if (m_state != LinkState::Up)
         return;

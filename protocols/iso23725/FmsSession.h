@@ -212,6 +212,8 @@ private:
     std::shared_ptr<MapModel> m_map;
     std::optional<MapConnectivityV1> m_connectivity;
 
+    // A map service that never identifies itself is asked for its summary anyway after this deadline.
+    std::optional<TimePoint> m_mapIdentificationDeadline;
     std::optional<TimePoint> m_nextPeriodicDiagnostic;
     std::optional<TimePoint> m_lastErrorDiagnostic;
     std::vector<DiagMessage> m_pendingErrors;

@@ -411,6 +411,28 @@ private slots:
         QVERIFY(f.session->map());
         QVERIFY(!f.session->fetchMap());
     }
+
+    void mapServiceThatNeverIdentifiesIsAskedAnyway() {
+        IsoLinkConfig link{"ahs", {}, {}};
+        link.mapWs.url = "ws://127.0.0.1:2/map";
+        Fixture f(link);
+        f.session->mapOpened("127.0.0.1:2");
+        f.advance(4999ms);
+        QVERIFY(f.out.map.empty());
+        f.advance(1ms);
+        QCOMPARE(f.out.map.size(), std::size_t(1));
+        QCOMPARE(bodyOf<MapCommandV1>(f.out.map.back())->scope, std::string("/summary"));
+        QCOMPARE(f.counters.get("map_service.unidentified"), std::uint64_t(1));
+        f.advance(60s); // asked once
+        QCOMPARE(f.out.map.size(), std::size_t(1));
+        // An identified service is not nagged.
+        f.session->mapClosed("restart");
+        f.session->mapOpened("127.0.0.1:2");
+        f.session->mapText(fromAhs(MapServiceV1{1}));
+        f.advance(60s);
+        QCOMPARE(f.out.map.size(), std::size_t(2));
+        QCOMPARE(f.counters.get("map_service.unidentified"), std::uint64_t(1));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestFmsSession)
