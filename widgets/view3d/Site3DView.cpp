@@ -14,6 +14,9 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <QWheelEvent>
+
+#include <cmath>
 
 #include <functional>
 
@@ -27,6 +30,8 @@ class ImageView : public QWidget {
 public:
     std::function<QImage(QSize)> render;
     std::function<void(QPointF)> clicked;
+    std::function<void(QPointF)> dragged; // left-button drag, device pixels since the last move
+    std::function<void(double)> wheeled;  // wheel steps (+ = away from the user = zoom in)
     QString message;
 
     explicit ImageView(QWidget* parent) : QWidget(parent) {
@@ -58,7 +63,19 @@ protected:
         p.drawImage(QPointF(0, 0), m_image);
     }
     void resizeEvent(QResizeEvent*) override { m_dirty = true; }
-    void mousePressEvent(QMouseEvent* e) override { m_press = e->position(); }
+    void mousePressEvent(QMouseEvent* e) override { m_press = m_last = e->position(); }
+    void mouseMoveEvent(QMouseEvent* e) override {
+        if (!(e->buttons() & Qt::LeftButton) || !dragged)
+            return;
+        const QPointF delta = (e->position() - m_last) * devicePixelRatioF();
+        m_last = e->position();
+        dragged(delta);
+    }
+    void wheelEvent(QWheelEvent* e) override {
+        if (wheeled && e->angleDelta().y() != 0)
+            wheeled(e->angleDelta().y() / 120.0);
+        e->accept();
+    }
     void mouseReleaseEvent(QMouseEvent* e) override {
         if (e->button() == Qt::LeftButton && (e->position() - m_press).manhattanLength() <= 4 && clicked) {
             const qreal dpr = devicePixelRatioF();
@@ -70,6 +87,7 @@ private:
     QImage m_image;
     bool m_dirty = true;
     QPointF m_press;
+    QPointF m_last;
 };
 
 // Pass-count legend in the top-right corner of its parent (the GL widget or the image view).
@@ -183,6 +201,15 @@ Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Im
                 setSelectedMachine(id);
                 emit machinePicked(id);
             }
+        };
+        // Same feel as the GL widget's trackball: a quarter degree per pixel, 10 % per wheel step.
+        d->image->dragged = [this](QPointF delta) {
+            d->scene.orbit(-delta.x() * 0.25, delta.y() * 0.25);
+            scheduleRender();
+        };
+        d->image->wheeled = [this](double steps) {
+            d->scene.zoom(std::pow(1.1, steps));
+            scheduleRender();
         };
         if (!d->egl->initialize()) {
             d->status = tr("3D view unavailable: %1").arg(d->egl->errorString());

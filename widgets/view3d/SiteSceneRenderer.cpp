@@ -901,6 +901,37 @@ void SiteSceneRenderer::resetCamera() {
     d->resetCamera();
 }
 
+double SiteSceneRenderer::viewElevationDeg() const {
+    double dir[3];
+    d->renderer->GetActiveCamera()->GetDirectionOfProjection(dir);
+    return -std::asin(std::clamp(dir[2], -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
+void SiteSceneRenderer::orbit(double azimuthDeg, double elevationDeg) {
+    if (d->cameraMode == CameraMode::TopDown)
+        return;
+    vtkCamera* cam = d->renderer->GetActiveCamera();
+    cam->Azimuth(azimuthDeg);
+    // Keep the line of sight between 5 and 89 degrees below the horizon (world z up).
+    const double current = viewElevationDeg();
+    const double target = std::clamp(current + elevationDeg, 5.0, 89.0);
+    cam->Elevation(target - current);
+    cam->SetViewUp(0.0, 0.0, 1.0);
+    cam->OrthogonalizeViewUp();
+    d->renderer->ResetCameraClippingRange();
+}
+
+void SiteSceneRenderer::zoom(double factor) {
+    if (factor <= 0)
+        return;
+    vtkCamera* cam = d->renderer->GetActiveCamera();
+    if (cam->GetParallelProjection())
+        cam->SetParallelScale(cam->GetParallelScale() / factor);
+    else
+        cam->Dolly(factor);
+    d->renderer->ResetCameraClippingRange();
+}
+
 double SiteSceneRenderer::terrainHeight(double e, double n) const {
     return d->height(e, n);
 }

@@ -41,6 +41,13 @@ public:
     void setCameraMode(CameraMode mode);
     CameraMode cameraMode() const;
     void resetCamera(); // re-frames the whole site for the current mode
+    // Camera moves for a view without a VTK interactor (the headless image view), like the GL widget's
+    // trackball: orbit turns about the focal point (degrees; not in TopDown, which stays north-up), zoom > 1
+    // moves closer. Elevation stops short of the poles so the view never flips over.
+    void orbit(double azimuthDeg, double elevationDeg);
+    void zoom(double factor);
+    // Elevation of the line of sight below the horizon, degrees (90 = straight down).
+    double viewElevationDeg() const;
 
     // Terrain height at (e, n) (barycentric on the Delaunay surface, plane height otherwise).
     double terrainHeight(double e, double n) const;

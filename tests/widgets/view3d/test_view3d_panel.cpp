@@ -9,6 +9,8 @@
 #include <QToolBar>
 #include <QtTest>
 
+#include <cmath>
+
 using namespace ocu;
 using namespace ocu::testsite;
 
@@ -101,6 +103,81 @@ private slots:
         QVERIFY(moved);
         QVERIFY2(isCyan(pixelAt(shot, *moved + offset)),
                  qPrintable(describe(pixelAt(shot, *moved + offset))));
+    }
+
+    void dragOrbitsAndWheelZoomsInTheImageView() {
+        Site3DView view;
+        view.resize(640, 480);
+        view.setScene(makeSite());
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        view.grab();
+        SiteSceneRenderer& scene = view.sceneRenderer();
+        QWidget* canvas = view.viewWidget();
+        const Machine3D m1 = *scene.machine(QStringLiteral("M1"));
+        const Machine3D m2 = *scene.machine(QStringLiteral("M2"));
+        auto at = [&](const Machine3D& m) { return scene.project(m.e, m.n, m.u + m.height); };
+        auto drag = [&](QPoint from, QPoint to) {
+            QMouseEvent press(QEvent::MouseButtonPress, from, canvas->mapToGlobal(from), Qt::LeftButton,
+                              Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(canvas, &press);
+            for (int i = 1; i <= 10; ++i) {
+                const QPoint p = from + (to - from) * i / 10;
+                QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                                 Qt::NoModifier);
+                QApplication::sendEvent(canvas, &move);
+            }
+            QMouseEvent release(QEvent::MouseButtonRelease, to, canvas->mapToGlobal(to), Qt::LeftButton,
+                                Qt::NoButton, Qt::NoModifier);
+            QApplication::sendEvent(canvas, &release);
+        };
+        const auto before = at(m1);
+        QVERIFY(before);
+        QSignalSpy picked(&view, &Site3DView::machinePicked);
+        drag(QPoint(320, 240), QPoint(440, 240)); // a quarter-degree per pixel: 30 degrees of azimuth
+        QCOMPARE(picked.count(), 0);              // a drag is not a click
+        const auto after = at(m1);
+        QVERIFY(after);
+        QVERIFY2(std::hypot(after->x() - before->x(), after->y() - before->y()) > 20.0,
+                 qPrintable(QStringLiteral("M1 moved only from %1,%2 to %3,%4")
+                                .arg(before->x())
+                                .arg(before->y())
+                                .arg(after->x())
+                                .arg(after->y())));
+        // The picture follows the camera: M1 is drawn where it now projects.
+        const QImage shot = view.grab().toImage();
+        const QPointF offset(canvas->mapTo(&view, QPoint(0, 0)));
+        QVERIFY2(isMagenta(pixelAt(shot, *after + offset)),
+                 qPrintable(describe(pixelAt(shot, *after + offset))));
+
+        // Dragging far up or down stops short of the poles: the view never flips over (up stays up).
+        // (as the GL widget's VTK trackball: dragging down raises the camera)
+        drag(QPoint(320, 20), QPoint(320, 470));
+        drag(QPoint(320, 20), QPoint(320, 470));
+        QVERIFY2(scene.viewElevationDeg() > 88.0 && scene.viewElevationDeg() < 89.5,
+                 qPrintable(QString::number(scene.viewElevationDeg())));
+        drag(QPoint(320, 470), QPoint(320, 20));
+        drag(QPoint(320, 470), QPoint(320, 20));
+        QVERIFY2(scene.viewElevationDeg() > 4.5 && scene.viewElevationDeg() < 6.0,
+                 qPrintable(QString::number(scene.viewElevationDeg())));
+
+        // Wheel towards the screen zooms in: the two machines move apart on screen.
+        scene.resetCamera();
+        auto spread = [&] {
+            const auto a = at(m1), b = at(m2);
+            return std::hypot(a->x() - b->x(), a->y() - b->y());
+        };
+        const double wide = spread();
+        QWheelEvent wheel(QPointF(320, 240), canvas->mapToGlobal(QPointF(320, 240)), QPoint(), QPoint(0, 360),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(canvas, &wheel);
+        QVERIFY2(spread() > wide * 1.25, qPrintable(QStringLiteral("%1 -> %2").arg(wide).arg(spread())));
+
+        // Top-down stays north-up: a drag does not turn it.
+        view.setCameraMode(CameraMode::TopDown);
+        const auto top = at(m1);
+        drag(QPoint(320, 240), QPoint(440, 300));
+        QCOMPARE(*at(m1), *top);
     }
 
     void topDownIsNorthUpAndRenderImageHasTheRequestedSize() {
