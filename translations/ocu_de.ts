@@ -820,6 +820,89 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     </message>
 </context>
 <context>
+    <name>ocu::JoystickMappingDialog</name>
+    <message>
+        <source>Invert</source>
+        <translation>Umkehren</translation>
+    </message>
+    <message>
+        <source>Joystick mapping</source>
+        <translation>Joystick-Belegung</translation>
+    </message>
+    <message>
+        <source>Detect…</source>
+        <translation>Erkennen…</translation>
+    </message>
+    <message>
+        <source>Then push the stick fully forward</source>
+        <translation>Danach den Stick ganz nach vorn drücken</translation>
+    </message>
+    <message>
+        <source>Then push the stick fully right</source>
+        <translation>Danach den Stick ganz nach rechts drücken</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <source>Forward / reverse</source>
+        <translation>Vorwärts / rückwärts</translation>
+    </message>
+    <message>
+        <source>Turn</source>
+        <translation>Lenken</translation>
+    </message>
+    <message>
+        <source>Dead zone</source>
+        <translation>Totzone</translation>
+    </message>
+    <message>
+        <source>Move the stick to see its axes.</source>
+        <translation>Stick bewegen, um seine Achsen zu sehen.</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Achse %1</translation>
+    </message>
+    <message>
+        <source>Push the stick fully forward and hold it…</source>
+        <translation>Stick ganz nach vorn drücken und halten…</translation>
+    </message>
+    <message>
+        <source>Push the stick fully to the right and hold it…</source>
+        <translation>Stick ganz nach rechts drücken und halten…</translation>
+    </message>
+    <message>
+        <source>%1: axis %2%3 — release the stick.</source>
+        <translation>%1: Achse %2%3 – Stick loslassen.</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Vorwärts</translation>
+    </message>
+    <message>
+        <source>, inverted</source>
+        <translation>, umgekehrt</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Demand: forward %1 %, turn %2 %</source>
+        <translation>Vorgabe: vorwärts %1 %, lenken %2 %</translation>
+    </message>
+    <message>
+        <source>Forward and turn need two different axes.</source>
+        <translation>Vorwärts und Lenken brauchen zwei verschiedene Achsen.</translation>
+    </message>
+</context>
+<context>
     <name>ocu::LegendOverlay</name>
     <message>
         <source>Passes</source>
@@ -1419,6 +1502,18 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>teleop panel hidden</source>
         <translation>Fernsteuerungs-Panel ausgeblendet</translation>
+    </message>
+    <message>
+        <source>Mapping…</source>
+        <translation>Belegung…</translation>
+    </message>
+    <message>
+        <source>Choose the joystick axes, their direction and the dead zone</source>
+        <translation>Joystick-Achsen, ihre Richtung und die Totzone wählen</translation>
+    </message>
+    <message>
+        <source>joystick mapping</source>
+        <translation>Joystick-Belegung</translation>
     </message>
 </context>
 <context>

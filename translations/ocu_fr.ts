@@ -820,6 +820,89 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     </message>
 </context>
 <context>
+    <name>ocu::JoystickMappingDialog</name>
+    <message>
+        <source>Invert</source>
+        <translation>Inverser</translation>
+    </message>
+    <message>
+        <source>Joystick mapping</source>
+        <translation>Affectation du joystick</translation>
+    </message>
+    <message>
+        <source>Detect…</source>
+        <translation>Détecter…</translation>
+    </message>
+    <message>
+        <source>Then push the stick fully forward</source>
+        <translation>Puis poussez le manche à fond vers l’avant</translation>
+    </message>
+    <message>
+        <source>Then push the stick fully right</source>
+        <translation>Puis poussez le manche à fond vers la droite</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Périphérique</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucun</translation>
+    </message>
+    <message>
+        <source>Forward / reverse</source>
+        <translation>Avant / arrière</translation>
+    </message>
+    <message>
+        <source>Turn</source>
+        <translation>Virage</translation>
+    </message>
+    <message>
+        <source>Dead zone</source>
+        <translation>Zone morte</translation>
+    </message>
+    <message>
+        <source>Move the stick to see its axes.</source>
+        <translation>Bougez le manche pour voir ses axes.</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Axe %1</translation>
+    </message>
+    <message>
+        <source>Push the stick fully forward and hold it…</source>
+        <translation>Poussez le manche à fond vers l’avant et maintenez-le…</translation>
+    </message>
+    <message>
+        <source>Push the stick fully to the right and hold it…</source>
+        <translation>Poussez le manche à fond vers la droite et maintenez-le…</translation>
+    </message>
+    <message>
+        <source>%1: axis %2%3 — release the stick.</source>
+        <translation>%1 : axe %2%3 – relâchez le manche.</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Avant</translation>
+    </message>
+    <message>
+        <source>, inverted</source>
+        <translation>, inversé</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Demand: forward %1 %, turn %2 %</source>
+        <translation>Consigne : avant %1 %, virage %2 %</translation>
+    </message>
+    <message>
+        <source>Forward and turn need two different axes.</source>
+        <translation>L’avant et le virage exigent deux axes différents.</translation>
+    </message>
+</context>
+<context>
     <name>ocu::LegendOverlay</name>
     <message>
         <source>Passes</source>
@@ -1419,6 +1502,18 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
     <message>
         <source>teleop panel hidden</source>
         <translation>panneau de téléopération masqué</translation>
+    </message>
+    <message>
+        <source>Mapping…</source>
+        <translation>Affectation…</translation>
+    </message>
+    <message>
+        <source>Choose the joystick axes, their direction and the dead zone</source>
+        <translation>Choisir les axes du joystick, leur sens et la zone morte</translation>
+    </message>
+    <message>
+        <source>joystick mapping</source>
+        <translation>affectation du joystick</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"
 #include "widgets/HoldToConfirmButton.h"
+#include "widgets/teleop/JoystickMappingDialog.h"
 #include "widgets/teleop/SdlJoystickInput.h"
 #include "widgets/teleop/TeleopController.h"
 #include "widgets/teleop/VirtualStick.h"
@@ -82,7 +83,14 @@ TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDev
     limitRow->addWidget(m_limit, 1);
     limitRow->addWidget(m_limitLabel);
     settings->addRow(tr("Speed limit"), limitRow);
-    settings->addRow(tr("Joystick"), m_device);
+    m_mapButton = new QPushButton(tr("Mapping…"), this);
+    m_mapButton->setObjectName(QStringLiteral("button-joystick-mapping"));
+    m_mapButton->setToolTip(tr("Choose the joystick axes, their direction and the dead zone"));
+    connect(m_mapButton, &QPushButton::clicked, this, &TeleopPanel::openJoystickMapping);
+    auto* deviceRow = new QHBoxLayout;
+    deviceRow->addWidget(m_device, 1);
+    deviceRow->addWidget(m_mapButton);
+    settings->addRow(tr("Joystick"), deviceRow);
 
     auto* inputs = new QHBoxLayout;
     inputs->addWidget(m_stick, 1);
@@ -108,11 +116,22 @@ TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDev
     connect(m_stick, &VirtualStick::axesChanged, m_controller, &TeleopController::setStick);
     connect(m_controller, &TeleopController::command, this, &TeleopPanel::onCommand);
     connect(m_controller, &TeleopController::command, m_axes, &AxisDisplay::setMapped);
+    m_inputDevice = device;
     if (device) {
         m_controller->setDevice(device);
-        connect(device, &InputDevice::connectedChanged, this, &TeleopPanel::refresh);
-        if (auto* sdl = qobject_cast<SdlJoystickInput*>(device))
-            connect(sdl, &SdlJoystickInput::rawAxesChanged, m_axes, &AxisDisplay::setAxes);
+        // The operator's saved mapping for this device wins over the site configuration's.
+        auto applySaved = [device] {
+            if (device->supportsMapping() && device->isConnected())
+                if (auto m = loadSavedJoystickMapping(device->name()))
+                    device->setMapping(*m);
+        };
+        applySaved();
+        connect(device, &InputDevice::connectedChanged, this, [this, applySaved](bool connected) {
+            if (connected)
+                applySaved();
+            refresh();
+        });
+        connect(device, &InputDevice::rawAxesChanged, m_axes, &AxisDisplay::setAxes);
     }
     connect(bridge, &JausBridge::subsystemUpdated, this, [this](const SubsystemSnapshot& s) {
         if (s.subsystem == m_subsystem)
@@ -187,9 +206,29 @@ void TeleopPanel::emergencyStop() {
         m_bridge->stopMachine(JausBridge::machineId(m_subsystem));
 }
 
+void TeleopPanel::openJoystickMapping() {
+    if (!m_inputDevice || !m_inputDevice->supportsMapping())
+        return;
+    // Mapping means moving the stick: the device is detached from the controller while the dialog is open.
+    m_controller->setDevice(nullptr);
+    m_controller->releaseAll(tr("joystick mapping"));
+    auto* dlg = new JoystickMappingDialog(m_inputDevice, this);
+    dlg->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dlg, &QDialog::finished, this, [this, dlg](int result) {
+        if (result == QDialog::Accepted) {
+            m_inputDevice->setMapping(dlg->mapping());
+            saveJoystickMapping(m_inputDevice->name(), dlg->mapping());
+        }
+        m_controller->setDevice(m_inputDevice);
+        refresh();
+    });
+    dlg->open();
+}
+
 void TeleopPanel::refresh() {
-    InputDevice* dev = m_controller->device();
+    InputDevice* dev = m_inputDevice;
     m_device->setText(dev ? (dev->isConnected() ? dev->name() : tr("none connected")) : tr("none"));
+    m_mapButton->setEnabled(dev && dev->supportsMapping());
     auto s = m_subsystem ? m_bridge->subsystem(m_subsystem) : std::nullopt;
     if (!s) {
         m_title->setText(tr("No JAUS vehicle selected"));

@@ -40,6 +40,10 @@ public:
     // The JAUS drive command for a normalised demand, with the current mode and platform limits.
     jaus::DriveCommand toDriveCommand(DriveAxes axes) const;
     bool velocityMode() const;
+    // Opens the joystick mapping dialog (non-blocking). Nothing drives while it is open; OK applies the
+    // mapping to the device and saves it for that device name.
+    void openJoystickMapping();
+    QPushButton* joystickMappingButton() const { return m_mapButton; }
 
 protected:
     void keyPressEvent(QKeyEvent* e) override;
@@ -63,6 +67,8 @@ private:
     QLabel* m_state;
     QLabel* m_live;
     QLabel* m_device;
+    InputDevice* m_inputDevice = nullptr;
+    QPushButton* m_mapButton = nullptr;
     QComboBox* m_mode;
     QSlider* m_limit;
     QLabel* m_limitLabel;

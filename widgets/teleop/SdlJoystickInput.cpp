@@ -91,14 +91,7 @@ void SdlJoystickInput::poll() {
         m_raw = raw;
         emit rawAxesChanged(m_raw);
     }
-    auto axis = [&](int idx, bool invert) {
-        if (idx < 0 || idx >= raw.size())
-            return 0.0;
-        double v = std::clamp(raw[idx], -1.0, 1.0);
-        return applyDeadZone(invert ? -v : v, m_mapping.deadZone);
-    };
-    DriveAxes a{axis(m_mapping.forwardAxis, m_mapping.invertForward),
-                axis(m_mapping.turnAxis, m_mapping.invertTurn)};
+    const DriveAxes a = mapAxes(raw, m_mapping);
     if (!(a == m_axes)) {
         m_axes = a;
         emit axesChanged(a);

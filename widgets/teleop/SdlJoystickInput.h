@@ -9,14 +9,6 @@ class QTimer;
 
 namespace ocu {
 
-struct AxisMapping {
-    int forwardAxis = 1;       // SDL axis index (game controller: left stick Y)
-    int turnAxis = 0;          // left stick X
-    bool invertForward = true; // stick pushed away reads negative in SDL
-    bool invertTurn = false;
-    double deadZone = 0.12;
-};
-
 class SdlJoystickInput : public InputDevice {
     Q_OBJECT
 public:
@@ -32,13 +24,10 @@ public:
     DriveAxes axes() const override { return m_axes; }
     QStringList deviceNames() const;
     // Raw axis values (-1..1) of the open device, for the live axis display.
-    QVector<double> rawAxes() const { return m_raw; }
-
-    void setMapping(const AxisMapping& m) { m_mapping = m; }
-    const AxisMapping& mapping() const { return m_mapping; }
-
-signals:
-    void rawAxesChanged(const QVector<double>& raw);
+    QVector<double> rawAxes() const override { return m_raw; }
+    bool supportsMapping() const override { return true; }
+    AxisMapping mapping() const override { return m_mapping; }
+    void setMapping(const AxisMapping& m) override { m_mapping = m; }
 
 private:
     void poll();

@@ -8,13 +8,18 @@
 #include "widgets/jaus/JausSubsystemModel.h"
 #include "widgets/jaus/TeleopPanel.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
+#include "widgets/teleop/JoystickMappingDialog.h"
 #include "widgets/teleop/TeleopController.h"
 
 #include "jaus/JausStack.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTableView>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -164,6 +169,74 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(126).state().v) < 1e-3, 900);
         QVERIFY(!s.ugv(126).state().driveTimedOut);
         QTest::keyRelease(win.teleop, Qt::Key_Shift);
+    }
+
+    // The mapping dialog: nothing drives while it is open (the operator moves the stick to detect axes); OK
+    // applies the detected mapping, saves it for the device, and the vehicle drives with it afterwards.
+    void joystickMappingDialogDetectsAndNeverDrives() {
+        QStandardPaths::setTestModeEnabled(true);
+        FakeInputDevice pad(QStringLiteral("Test pad/2"));
+        { // no mapping saved for this device from an earlier run
+            QSettings settings;
+            settings.remove(QStringLiteral("teleop"));
+        }
+        Site s;
+        QWidget w;
+        auto* controlPanel = new JausControlPanel(s.bridge.get(), s.ctx.selection());
+        auto* teleopPanel = new TeleopPanel(s.bridge.get(), s.ctx.selection(), &pad);
+        auto* l = new QVBoxLayout(&w);
+        l->addWidget(controlPanel);
+        l->addWidget(teleopPanel);
+        w.show();
+        JausControlPanel& control = *controlPanel;
+        TeleopPanel& teleop = *teleopPanel;
+        QTRY_COMPARE_WITH_TIMEOUT(control.model()->rowCount(), 2, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(control.controlButton(126) && control.controlButton(126)->isEnabled(), 5000);
+        QTest::mouseClick(control.controlButton(126), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(accessOf(&control, 126), QString("CONTROL_ACCEPTED"), 5000);
+        teleop.setVehicle(126);
+        QTRY_VERIFY_WITH_TIMEOUT(teleop.controller()->isEnabled(), 3000);
+        QVERIFY(teleop.joystickMappingButton()->isEnabled());
+        pad.setRaw({0, 0, 0, 0});
+
+        QSignalSpy commands(teleop.controller(), &TeleopController::command);
+        QTest::mouseClick(teleop.joystickMappingButton(), Qt::LeftButton);
+        auto* dlg = teleop.findChild<JoystickMappingDialog*>();
+        QVERIFY(dlg);
+        QTRY_VERIFY(dlg->isVisible());
+        // Detect forward: this pad reads +1 on axis 3 when pushed forward.
+        QTest::mouseClick(dlg->findChild<QPushButton*>(QStringLiteral("button-detect-forward")),
+                          Qt::LeftButton);
+        pad.setRaw({0, 0, 0, 1.0});
+        QCOMPARE(dlg->findChild<QComboBox*>(QStringLiteral("combo-forward-axis"))->currentIndex(), 3);
+        QVERIFY(!dlg->findChild<QCheckBox*>(QStringLiteral("check-invert-forward"))->isChecked());
+        pad.setRaw({0, 0, 0, 0});
+        // Detect turn: axis 2 reads -1 when pushed right, so it is inverted.
+        QTest::mouseClick(dlg->findChild<QPushButton*>(QStringLiteral("button-detect-turn")), Qt::LeftButton);
+        pad.setRaw({0, 0, -1.0, 0});
+        QCOMPARE(dlg->findChild<QComboBox*>(QStringLiteral("combo-turn-axis"))->currentIndex(), 2);
+        QVERIFY(dlg->findChild<QCheckBox*>(QStringLiteral("check-invert-turn"))->isChecked());
+        pad.setRaw({0, 0, 0, 0});
+        QTest::qWait(300); // the controller's stream ticks meanwhile
+        for (const auto& c : commands)
+            QVERIFY2(c.at(0).value<DriveAxes>().isZero(), "the vehicle was driven while mapping");
+        dlg->accept();
+
+        const AxisMapping m = pad.mapping();
+        QCOMPARE(m.forwardAxis, 3);
+        QCOMPARE(m.turnAxis, 2);
+        QVERIFY(!m.invertForward);
+        QVERIFY(m.invertTurn);
+        const auto saved = loadSavedJoystickMapping(QStringLiteral("Test pad/2"));
+        QVERIFY(saved);
+        QCOMPARE(*saved, m);
+        // Now the stick drives with the new mapping: axis 3 forward moves the vehicle ahead.
+        const sim::UgvState start = s.ugv(126).state();
+        pad.setRaw({0, 0, 0, 1.0});
+        QTRY_VERIFY_WITH_TIMEOUT(s.forwardSince(start, 126) > 0.3, 5000);
+        pad.setRaw({0, 0, 0, 0});
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(126).state().v) < 1e-3, 2000);
+        QSettings().remove(QStringLiteral("teleop"));
     }
 
     void focusLossSendsZeros() {

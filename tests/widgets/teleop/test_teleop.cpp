@@ -1,7 +1,15 @@
+#include "widgets/teleop/JoystickMappingDialog.h"
 #include "widgets/teleop/TeleopController.h"
 #include "widgets/teleop/VirtualStick.h"
 
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
 #include <QtTest>
 
 using namespace ocu;
@@ -19,6 +27,76 @@ class TestTeleop : public QObject {
 
 private slots:
     void initTestCase() { qRegisterMetaType<DriveAxes>(); }
+
+    void mappingAndDetection() {
+        AxisMapping m;
+        m.forwardAxis = 3;
+        m.turnAxis = 0;
+        m.invertForward = true;
+        m.invertTurn = false;
+        m.deadZone = 0.2;
+        const DriveAxes a = mapAxes({0.6, 0, 0, -1.0}, m);
+        QCOMPARE(a.forward, 1.0);
+        QCOMPARE(a.turn, 0.5);                    // (0.6 - 0.2) / 0.8
+        QCOMPARE(mapAxes({0.1}, m), DriveAxes{}); // missing axis reads 0; small drift is inside the dead zone
+        // Detection: the axis that travelled most from rest, at least half its range, with its sign.
+        QVERIFY(!detectAxis({0, 0, 0}, {0.3, -0.2, 0.4}));
+        auto d = detectAxis({0, 0.1, -1.0}, {0.2, -0.8, -0.9});
+        QVERIFY(d);
+        QCOMPARE(d->index, 1);
+        QVERIFY(d->negative);
+        // A trigger resting at -1 that is pulled to +1 is detected by its travel, not its value.
+        d = detectAxis({0, -1.0}, {0.1, 1.0});
+        QCOMPARE(d->index, 1);
+        QVERIFY(!d->negative);
+    }
+
+    void mappingDialogPreviewAndDefaults() {
+        FakeInputDevice pad;
+        AxisMapping m;
+        m.forwardAxis = 2;
+        m.invertForward = false;
+        m.deadZone = 0.0;
+        pad.setMapping(m);
+        pad.setRaw({0, 0, 0.5, 0});
+        JoystickMappingDialog dlg(&pad);
+        QCOMPARE(dlg.mapping(), m);
+        QCOMPARE(dlg.findChild<QComboBox*>(QStringLiteral("combo-forward-axis"))->count(), 4);
+        QCOMPARE(dlg.findChild<QLabel*>(QStringLiteral("label-mapped-preview"))->text(),
+                 QStringLiteral("Demand: forward 50 %, turn 0 %"));
+        dlg.findChild<QSlider*>(QStringLiteral("slider-dead-zone"))->setValue(25);
+        pad.setRaw({0, 0, 0.625, 0}); // live values update the preview: (0.625 - 0.25) / 0.75 = 50 %
+        QCOMPARE(dlg.findChild<QLabel*>(QStringLiteral("label-mapped-preview"))->text(),
+                 QStringLiteral("Demand: forward 50 %, turn 0 %"));
+        QCOMPARE(dlg.mapping().deadZone, 0.25);
+        // One axis for both is refused: OK is disabled and the dialog says why.
+        auto* ok = dlg.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+        QVERIFY(ok->isEnabled());
+        dlg.findChild<QComboBox*>(QStringLiteral("combo-turn-axis"))->setCurrentIndex(2);
+        QVERIFY(!ok->isEnabled());
+        QCOMPARE(dlg.findChild<QLabel*>(QStringLiteral("label-detect-status"))->text(),
+                 QStringLiteral("Forward and turn need two different axes."));
+        dlg.setMapping(AxisMapping{});
+        QVERIFY(ok->isEnabled());
+        QCOMPARE(dlg.mapping(), AxisMapping{});
+        QCOMPARE(pad.mapping(), m); // the dialog edits a copy; the panel applies it on OK
+    }
+
+    void savedMappingRoundTrip() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().remove(QStringLiteral("teleop"));
+        QVERIFY(!loadSavedJoystickMapping(QStringLiteral("Pad A")));
+        AxisMapping m;
+        m.forwardAxis = 4;
+        m.turnAxis = 3;
+        m.invertForward = false;
+        m.invertTurn = true;
+        m.deadZone = 0.3;
+        saveJoystickMapping(QStringLiteral("Pad A"), m);
+        QCOMPARE(*loadSavedJoystickMapping(QStringLiteral("Pad A")), m);
+        QVERIFY(!loadSavedJoystickMapping(QStringLiteral("Pad B"))); // per device name
+        QSettings().remove(QStringLiteral("teleop"));
+    }
 
     void keysNeedTheDeadManKey() {
         TeleopController t;
