@@ -75,13 +75,18 @@ bool FmsSession::upOrRefuse(const char* what) {
     return true;
 }
 
-bool FmsSession::sendBody(const Body& body, std::optional<Guid> eq) {
+// One container with our header (the configured Protocol value) and one member.
+std::string FmsSession::frame(const Body& body, std::optional<Guid> eq) const {
     Envelope env;
     env.header.protocol = m_cfg.rules.protocol;
     env.header.timestamp = makeTimestamp(unixMillisNow());
     env.header.equipmentId = std::move(eq);
     env.members.push_back(Member{body, nlohmann::json::object()});
-    if (!m_out.sendMain(encodeMessage(env)))
+    return encodeMessage(env);
+}
+
+bool FmsSession::sendBody(const Body& body, std::optional<Guid> eq) {
+    if (!m_out.sendMain(frame(body, std::move(eq))))
         return false;
     ++m_messagesSent;
     m_counters.add("tx.messages");
@@ -91,11 +96,7 @@ bool FmsSession::sendBody(const Body& body, std::optional<Guid> eq) {
 bool FmsSession::sendMapBody(const Body& body) {
     if (!separateMapService())
         return sendBody(body);
-    Envelope env;
-    env.header.protocol = m_cfg.rules.protocol;
-    env.header.timestamp = makeTimestamp(unixMillisNow());
-    env.members.push_back(Member{body, nlohmann::json::object()});
-    if (!m_out.sendMap(encodeMessage(env)))
+    if (!m_out.sendMap(frame(body, std::nullopt)))
         return false;
     m_counters.add("tx.map_service");
     return true;

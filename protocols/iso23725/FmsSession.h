@@ -165,6 +165,7 @@ private:
 
     void event(IsoSeverity severity, const std::string& text);
     bool upOrRefuse(const char* what);
+    std::string frame(const Body& body, std::optional<Guid> equipmentId) const;
     bool sendBody(const Body& body, std::optional<Guid> equipmentId = std::nullopt);
     bool sendMapBody(const Body& body);
     void handleFrame(std::string_view frame, bool mapChannel);
