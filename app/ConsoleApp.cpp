@@ -1,10 +1,10 @@
-#include "ConsoleApp.h"
+#include "app/ConsoleApp.h"
 
-#include "LogRouting.h"
-#include "MainWindow.h"
-#include "Screenshot.h"
-#include "SiteLoader.h"
-#include "SiteRuntime.h"
+#include "app/LogRouting.h"
+#include "app/MainWindow.h"
+#include "app/Screenshot.h"
+#include "app/SiteLoader.h"
+#include "app/SiteRuntime.h"
 
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "widgets/view3d/Site3DView.h"

@@ -1,4 +1,4 @@
-#include "LinkIndicator.h"
+#include "app/LinkIndicator.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

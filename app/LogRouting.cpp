@@ -1,6 +1,6 @@
-#include "LogRouting.h"
+#include "app/LogRouting.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 #include <map>
 #include <memory>

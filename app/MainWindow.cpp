@@ -1,6 +1,6 @@
-#include "MainWindow.h"
+#include "app/MainWindow.h"
 
-#include "Theme.h"
+#include "app/Theme.h"
 
 #include <QAction>
 #include <QApplication>

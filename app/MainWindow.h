@@ -4,7 +4,7 @@
 #include <QMainWindow>
 #include <QMap>
 
-#include "LinkIndicator.h"
+#include "app/LinkIndicator.h"
 
 class QDockWidget;
 class QLabel;

@@ -1,6 +1,6 @@
-#include "Screenshot.h"
+#include "app/Screenshot.h"
 
-#include "MainWindow.h"
+#include "app/MainWindow.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>

@@ -1,4 +1,4 @@
-#include "Site3DFeed.h"
+#include "app/Site3DFeed.h"
 
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"

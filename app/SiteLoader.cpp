@@ -1,4 +1,4 @@
-#include "SiteLoader.h"
+#include "app/SiteLoader.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -1,5 +1,5 @@
 #pragma once
-#include "site/SiteConfig.h"
+#include "protocols/site/SiteConfig.h"
 
 #include <QString>
 

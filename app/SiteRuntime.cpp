@@ -1,19 +1,19 @@
-#include "SiteRuntime.h"
+#include "app/SiteRuntime.h"
 
-#include "LogRouting.h"
-#include "MainWindow.h"
+#include "app/LogRouting.h"
+#include "app/MainWindow.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
-#include "Site3DFeed.h"
+#include "app/Site3DFeed.h"
 #include "widgets/view3d/Site3DView.h"
 #endif
 
+#include "app/HeadlessMonitor.h"
 #include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
-#include "models/HeadlessMonitor.h"
 #include "models/OwnPosition.h"
-#include "models/StopController.h"
 #include "sim/SimulatedSite.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/FleetListWidget.h"
@@ -97,7 +97,7 @@ QString SiteRuntime::start() {
     d.ctx->fleet()->setStaleAfterMs(static_cast<qint64>(m_config.fleet.staleAfterSeconds * 1000));
     d.ctx->fleet()->setRemoveAfterMs(static_cast<qint64>(m_config.fleet.removeAfterSeconds * 1000));
     if (!m_config.fleet.auditLog.empty())
-        d.ctx->stop()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
+        d.ctx->gate()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
 
         // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down
         // and the reason is an alarm.
@@ -206,7 +206,7 @@ void SiteRuntime::populate(MainWindow& window) {
     FleetContext* ctx = d.ctx;
 
     auto* list = new FleetListWidget(ctx->fleet(), ctx->selection());
-    list->setStopController(ctx->stop());
+    list->setCommandGate(ctx->gate());
     window.setPanelWidget(Panel::Fleet, list);
 
     auto* map = new SiteMapView;
@@ -293,8 +293,8 @@ void SiteRuntime::populate(MainWindow& window) {
     connect(ctx->alarms(), &AlarmModel::unacknowledgedCountChanged, &window,
             &MainWindow::setUnacknowledgedAlarms);
     window.setUnacknowledgedAlarms(ctx->alarms()->unacknowledgedCount());
-    connect(&window, &MainWindow::stopAllRequested, ctx->stop(),
-            [ctx] { ctx->stop()->stopAll(QStringLiteral("gui")); });
+    connect(&window, &MainWindow::stopAllRequested, ctx->gate(),
+            [ctx] { ctx->gate()->stopAll(QStringLiteral("gui")); });
 
 #ifdef OCU_HAVE_JAUS_BRIDGE
     if (d.jaus) {
@@ -321,7 +321,7 @@ void SiteRuntime::populate(MainWindow& window) {
 
 int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
     Impl& d = *m_impl;
-    HeadlessMonitor* mon = d.ctx->createHeadlessMonitor();
+    HeadlessMonitor* mon = HeadlessMonitor::attach(d.ctx);
     mon->setRateLimitMs(static_cast<int>(1000.0 / m_config.fleet.monitorRateHz));
     if (!mon->startStdin() && durationSeconds <= 0) {
         std::fputs("ocu: --headless reads commands from stdin, which is not readable; give --duration\n",

@@ -1,7 +1,7 @@
 #pragma once
 // Everything that runs behind the window for one site: the built-in simulators (when enabled), the
 // protocol stacks on their worker threads, the bridges into Qt, and the models the panels show.
-#include "site/SiteConfig.h"
+#include "protocols/site/SiteConfig.h"
 
 #include <QObject>
 #include <QString>

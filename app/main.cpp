@@ -1,6 +1,6 @@
 // ocu: the console. See README.md for the two commands and docs/site-config.md for the configuration.
-#include "CommandLine.h"
-#include "ConsoleApp.h"
+#include "app/CommandLine.h"
+#include "app/ConsoleApp.h"
 
 #include <QApplication>
 #include <QByteArray>

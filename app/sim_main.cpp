@@ -1,8 +1,8 @@
 // ocu-sim: the simulated site on its own — simulated JAUS UGVs, an ISO 23725 AHS with haul trucks and an
 // OSYRIS paving train — for a second machine, for demos, or to drive another console.
-#include "SiteLoader.h"
+#include "app/SiteLoader.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 #include "sim/SimulatedSite.h"
 
 #ifdef OCU_HAVE_SIM_JAUS

@@ -1,12 +1,12 @@
 // bench_iso23725: parse+validate MachinePositionV1 (msgs/s, public decodeMessage and the DOM path alone),
 // a 100k-node / 20k-way map document (parse time), and 1,000 simulated trucks at 10 Hz over loopback ws://
 // into the IsoStack (does the OCU keep up?).
-#include "iso23725/IsoStack.h"
-#include "iso23725/MapModel.h"
-#include "iso23725/PositionFastPath.h"
+#include "protocols/iso23725/IsoStack.h"
+#include "protocols/iso23725/MapModel.h"
+#include "protocols/iso23725/PositionFastPath.h"
 #include "sim/iso23725/SimulatedAhs.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 #include <benchmark/benchmark.h>
 

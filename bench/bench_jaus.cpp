@@ -10,9 +10,9 @@
 #include <chrono>
 #include <vector>
 
-#include "common/Log.h"
-#include "jaus/JudpCodec.h"
-#include "jaus/Messages.h"
+#include "protocols/common/Log.h"
+#include "protocols/jaus/JudpCodec.h"
+#include "protocols/jaus/Messages.h"
 #include "sim/jaus/JausDemo.h"
 
 using namespace ocu;

@@ -3,12 +3,12 @@
 // map are on screen. A small harness (not Google Benchmark): it prints percentiles of N samples.
 //
 //   QT_QPA_PLATFORM=offscreen build/bench/bench_teleop [samples]
-#include "jaus/JausStack.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"
 #include "models/testing/FakeFleetBridge.h"
+#include "protocols/jaus/JausStack.h"
 #include "sim/jaus/JausDemo.h"
 #include "widgets/FleetListWidget.h"
 #include "widgets/SiteMapView.h"

@@ -62,7 +62,7 @@ public:
     // Apply to every AHS link, OSYRIS stop where supported. Never asks for confirmation.
     virtual CommandResult stopAll() = 0;
     virtual CommandResult stopMachine(const QString& id) = 0;
-    // Release a stop (JAUS ClearEmergency, ISO all-stop Remove). The StopController has already checked the
+    // Release a stop (JAUS ClearEmergency, ISO all-stop Remove). The CommandGate has already checked the
     // operator's deliberate confirmation before calling this.
     virtual CommandResult clearStop(const QString& id) = 0;
     // Protocol-specific commands: "request_control", "release_control", "drive" (JAUS) ... with arguments

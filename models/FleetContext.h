@@ -1,13 +1,11 @@
 #pragma once
 // Convenience owner of the fleet picture's shared objects, so the app (GUI or headless) wires a bridge
-// with one call: FleetModel, the one FleetSelection, AlarmModel (watching the fleet) and StopController
-// (auditing into the alarm model). addBridge() connects a bridge to all of them (and to the headless
-// monitor when one was created).
+// with one call: FleetModel, the one FleetSelection, AlarmModel (watching the fleet) and CommandGate
+// (auditing into the alarm model). addBridge() connects a bridge to all of them and announces it
+// (bridgeAdded) to front ends such as the headless monitor.
 #include <QObject>
 #include <QPointer>
 #include <QVector>
-
-class QIODevice;
 
 namespace ocu {
 
@@ -15,8 +13,7 @@ class AlarmModel;
 class FleetBridge;
 class FleetModel;
 class FleetSelection;
-class HeadlessMonitor;
-class StopController;
+class CommandGate;
 
 class FleetContext : public QObject {
     Q_OBJECT
@@ -26,24 +23,21 @@ public:
     FleetModel* fleet() const { return m_fleet; }
     FleetSelection* selection() const { return m_selection; }
     AlarmModel* alarms() const { return m_alarms; }
-    StopController* stop() const { return m_stop; }
-    HeadlessMonitor* monitor() const { return m_monitor; }
+    CommandGate* gate() const { return m_gate; }
 
-    // Connects the bridge to the fleet model, the alarm model, the stop controller and the monitor.
-    // The bridge is not owned.
+    // Connects the bridge to the fleet model, the alarm model and the command gate, then emits
+    // bridgeAdded. The bridge is not owned.
     void addBridge(FleetBridge* bridge);
     QVector<FleetBridge*> bridges() const;
 
-    // Creates the headless monitor (once); `out` = nullptr means stdout. Bridges added before and after
-    // are connected to it.
-    HeadlessMonitor* createHeadlessMonitor(QIODevice* out = nullptr);
+signals:
+    void bridgeAdded(ocu::FleetBridge* bridge);
 
 private:
     FleetModel* m_fleet;
     FleetSelection* m_selection;
     AlarmModel* m_alarms;
-    StopController* m_stop;
-    HeadlessMonitor* m_monitor = nullptr;
+    CommandGate* m_gate;
     QVector<QPointer<FleetBridge>> m_bridges;
 };
 

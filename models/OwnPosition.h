@@ -3,7 +3,7 @@
 // device through QNmeaPositionInfoSource (no plugin needed; toolchain.md §6), converted into the site frame.
 // The app forwards fixes to the ISO bridge as MachinePositionV1 when the site names this console as an
 // FMS machine.
-#include "common/GeoFrame.h"
+#include "protocols/common/GeoFrame.h"
 
 #include <QGeoPositionInfo>
 #include <QMetaType>

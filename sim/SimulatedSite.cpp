@@ -1,7 +1,7 @@
-#include "SimulatedSite.h"
+#include "sim/SimulatedSite.h"
 
-#include "common/GeoFrame.h"
-#include "common/Log.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/common/Log.h"
 
 #ifdef OCU_HAVE_SIM_JAUS
 #include "sim/jaus/JausDemo.h"

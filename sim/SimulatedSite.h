@@ -2,7 +2,7 @@
 // The built-in simulated site: simulated JAUS UGVs, a simulated ISO 23725 AHS with its haul trucks and an
 // OSYRIS paving train, all speaking the real protocols over real loopback sockets. Used by `ocu` without
 // arguments, by `ocu-sim`, and by end-to-end tests. No Qt.
-#include "site/SiteConfig.h"
+#include "protocols/site/SiteConfig.h"
 
 #include <memory>
 #include <string>

@@ -1,9 +1,9 @@
 #include "widgets/FleetListWidget.h"
 
+#include "models/CommandGate.h"
 #include "models/FleetFilterProxy.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
-#include "models/StopController.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -137,8 +137,8 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     });
 }
 
-void FleetListWidget::setStopController(StopController* stop) {
-    m_stop = stop;
+void FleetListWidget::setCommandGate(CommandGate* stop) {
+    m_gate = stop;
 }
 
 void FleetListWidget::setDensity(Density d) {
@@ -224,19 +224,19 @@ void FleetListWidget::showContextMenu(const QString& id, QPoint globalPos) {
     QMenu menu(this);
     menu.addAction(tr("Centre on map"), this, [this, id] { emit centerOnMapRequested(id); });
     QAction* stop = menu.addAction(tr("Stop"), this, [this, id] {
-        if (m_stop)
-            m_stop->stopMachine(id, QStringLiteral("gui"));
+        if (m_gate)
+            m_gate->stopMachine(id, QStringLiteral("gui"));
     });
-    stop->setEnabled(m_stop != nullptr);
+    stop->setEnabled(m_gate != nullptr);
     const QStringList selected = m_selection ? m_selection->selectedIds() : QStringList{};
     if (selected.size() > 1) {
         QAction* stopSel =
             menu.addAction(tr("Stop %1 selected").arg(selected.size()), this, [this, selected] {
                 for (const QString& s : selected)
-                    if (m_stop)
-                        m_stop->stopMachine(s, QStringLiteral("gui"));
+                    if (m_gate)
+                        m_gate->stopMachine(s, QStringLiteral("gui"));
             });
-        stopSel->setEnabled(m_stop != nullptr);
+        stopSel->setEnabled(m_gate != nullptr);
     }
     menu.addSeparator();
     menu.addAction(tr("Details…"), this, [this, id] {

@@ -15,7 +15,7 @@ namespace ocu {
 class FleetFilterProxy;
 class FleetModel;
 class FleetSelection;
-class StopController;
+class CommandGate;
 struct MachineState;
 
 class FleetListWidget : public QWidget {
@@ -25,7 +25,7 @@ public:
 
     FleetListWidget(FleetModel* fleet, FleetSelection* selection, QWidget* parent = nullptr);
 
-    void setStopController(StopController* stop);
+    void setCommandGate(CommandGate* stop);
     void setDensity(Density d);
     Density density() const { return m_density; }
 
@@ -48,7 +48,7 @@ private:
 
     QPointer<FleetModel> m_fleet;
     QPointer<FleetSelection> m_selection;
-    QPointer<StopController> m_stop;
+    QPointer<CommandGate> m_gate;
     FleetFilterProxy* m_proxy;
     QTableView* m_view;
     QLineEdit* m_filter;

@@ -7,11 +7,11 @@
 // trails (1 px opaque pens: the raster engine's fast path), footprints as precomputed polygons, and the
 // overlays. Level of detail: footprints below 4 px become 5 px squares, glyphs and labels appear only when
 // big enough, map names only when the feature is large on screen, features outside the view are culled.
-#include "common/GeoFrame.h"
 #include "models/MachineState.h"
 #include "models/OwnPosition.h"
 #include "models/PassCountLayer.h"
 #include "models/SiteMapData.h"
+#include "protocols/common/GeoFrame.h"
 
 #include <QHash>
 #include <QImage>

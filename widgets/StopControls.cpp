@@ -1,15 +1,15 @@
 #include "widgets/StopControls.h"
 
+#include "models/CommandGate.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
-#include "models/StopController.h"
 #include "widgets/HoldToConfirmButton.h"
 
 #include <QHBoxLayout>
 
 namespace ocu {
 
-QAction* createStopAllAction(StopController* stop, QObject* parent) {
+QAction* createStopAllAction(CommandGate* stop, QObject* parent) {
     auto* a = new QAction(QObject::tr("STOP ALL"), parent);
     a->setToolTip(QObject::tr("Stop every machine of every protocol (F12)"));
     a->setShortcuts({QKeySequence(Qt::Key_F12), QKeySequence(Qt::CTRL | Qt::Key_Space)});
@@ -18,7 +18,7 @@ QAction* createStopAllAction(StopController* stop, QObject* parent) {
     return a;
 }
 
-StopAllButton::StopAllButton(StopController* stop, QWidget* parent) : QPushButton(tr("STOP ALL"), parent) {
+StopAllButton::StopAllButton(CommandGate* stop, QWidget* parent) : QPushButton(tr("STOP ALL"), parent) {
     setObjectName(QStringLiteral("stopAllButton"));
     setToolTip(tr("Stop every machine of every protocol (F12)"));
     setMinimumHeight(44);
@@ -28,9 +28,9 @@ StopAllButton::StopAllButton(StopController* stop, QWidget* parent) : QPushButto
     connect(this, &QPushButton::clicked, stop, [stop] { stop->stopAll(QStringLiteral("gui")); });
 }
 
-MachineStopControls::MachineStopControls(FleetModel* fleet, FleetSelection* selection, StopController* stop,
+MachineStopControls::MachineStopControls(FleetModel* fleet, FleetSelection* selection, CommandGate* stop,
                                          QWidget* parent)
-    : QWidget(parent), m_fleet(fleet), m_selection(selection), m_stop(stop), m_state(new QLabel(this)),
+    : QWidget(parent), m_fleet(fleet), m_selection(selection), m_gate(stop), m_state(new QLabel(this)),
       m_stopButton(new QPushButton(tr("Stop"), this)),
       m_release(new HoldToConfirmButton(tr("Hold to release"), this)) {
     auto* lay = new QHBoxLayout(this);
@@ -41,14 +41,14 @@ MachineStopControls::MachineStopControls(FleetModel* fleet, FleetSelection* sele
     m_stopButton->setStyleSheet(
         QStringLiteral("QPushButton{background:#d01010;color:white;font-weight:bold}"));
     connect(m_stopButton, &QPushButton::clicked, this, [this] {
-        if (m_stop && m_selection && !m_selection->currentId().isEmpty())
-            m_stop->stopMachine(m_selection->currentId(), QStringLiteral("gui"));
+        if (m_gate && m_selection && !m_selection->currentId().isEmpty())
+            m_gate->stopMachine(m_selection->currentId(), QStringLiteral("gui"));
     });
     connect(m_release, &HoldToConfirmButton::confirmed, this, [this] {
-        if (!m_stop || !m_selection || m_selection->currentId().isEmpty())
+        if (!m_gate || !m_selection || m_selection->currentId().isEmpty())
             return;
         const QString id = m_selection->currentId();
-        m_stop->clearStop(id, m_stop->requestClearToken(id), QStringLiteral("gui"));
+        m_gate->clearStop(id, m_gate->requestClearToken(id), QStringLiteral("gui"));
     });
     connect(selection, &FleetSelection::currentMachineChanged, this, &MachineStopControls::refresh);
     connect(fleet, &FleetModel::machinesChanged, this, &MachineStopControls::refresh);

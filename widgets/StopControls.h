@@ -16,20 +16,20 @@ namespace ocu {
 class FleetModel;
 class FleetSelection;
 class HoldToConfirmButton;
-class StopController;
+class CommandGate;
 
-QAction* createStopAllAction(StopController* stop, QObject* parent);
+QAction* createStopAllAction(CommandGate* stop, QObject* parent);
 
 class StopAllButton : public QPushButton {
     Q_OBJECT
 public:
-    explicit StopAllButton(StopController* stop, QWidget* parent = nullptr);
+    explicit StopAllButton(CommandGate* stop, QWidget* parent = nullptr);
 };
 
 class MachineStopControls : public QWidget {
     Q_OBJECT
 public:
-    MachineStopControls(FleetModel* fleet, FleetSelection* selection, StopController* stop,
+    MachineStopControls(FleetModel* fleet, FleetSelection* selection, CommandGate* stop,
                         QWidget* parent = nullptr);
 
     QPushButton* stopButton() const { return m_stopButton; }
@@ -41,7 +41,7 @@ private:
 
     QPointer<FleetModel> m_fleet;
     QPointer<FleetSelection> m_selection;
-    QPointer<StopController> m_stop;
+    QPointer<CommandGate> m_gate;
     QLabel* m_state;
     QPushButton* m_stopButton;
     HoldToConfirmButton* m_release;

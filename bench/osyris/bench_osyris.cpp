@@ -1,6 +1,6 @@
 // bench_osyris: CmPos decode rate and pass-count ingest rate (issue 5 acceptance: >= 5 M/s and >= 1 M/s).
-#include "osyris/OsyrisCodec.h"
-#include "osyris/PassCountGrid.h"
+#include "protocols/osyris/OsyrisCodec.h"
+#include "protocols/osyris/PassCountGrid.h"
 
 #include <benchmark/benchmark.h>
 

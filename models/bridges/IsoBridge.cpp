@@ -1,4 +1,4 @@
-#include "IsoBridge.h"
+#include "models/bridges/IsoBridge.h"
 
 #include <QJsonObject>
 #include <QMetaObject>

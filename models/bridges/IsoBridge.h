@@ -4,9 +4,9 @@
 // every AHS link. The stop state shown is only ever what MachineAllStopV1 reported.
 #include "models/FleetBridge.h"
 
-#include "common/GeoFrame.h"
-#include "iso23725/IsoConfig.h"
-#include "iso23725/IsoStack.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/iso23725/IsoConfig.h"
+#include "protocols/iso23725/IsoStack.h"
 
 #include <QHash>
 

@@ -1,6 +1,6 @@
-#include "JausBridge.h"
+#include "models/bridges/JausBridge.h"
 
-#include "jaus/JausStack.h"
+#include "protocols/jaus/JausStack.h"
 
 #include <QDateTime>
 #include <QJsonObject>

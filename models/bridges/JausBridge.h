@@ -4,9 +4,9 @@
 // snapshot of every subsystem for the access-control, teleop and details panels.
 #include "models/FleetBridge.h"
 
-#include "common/GeoFrame.h"
-#include "jaus/JausConfig.h"
-#include "jaus/JausTypes.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/jaus/JausConfig.h"
+#include "protocols/jaus/JausTypes.h"
 
 #include <QHash>
 #include <QTimer>

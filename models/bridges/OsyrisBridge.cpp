@@ -1,4 +1,4 @@
-#include "OsyrisBridge.h"
+#include "models/bridges/OsyrisBridge.h"
 
 #include <QDateTime>
 #include <QJsonObject>
@@ -64,7 +64,7 @@ void OsyrisPassCountLayer::refreshExtent() {
 
 OsyrisBridge::OsyrisBridge(const OsyrisConfig& config, const GeoFrame& siteFrame, QObject* parent)
     : FleetBridge(Protocol::Osyris, parent), m_config(config), m_frame(siteFrame) {
-    m_station = std::make_unique<OsyrisStation>(m_config, static_cast<OsyrisListener&>(*this));
+    m_station = std::make_unique<OsyrisStack>(m_config, static_cast<OsyrisListener&>(*this));
     const EnuPoint o = m_frame.toLocal({config.originLat, config.originLon, config.originAlt});
     m_layer = std::make_unique<OsyrisPassCountLayer>(m_station->grid(), QPointF(o.e, o.n));
 }

@@ -5,9 +5,9 @@
 #include "models/FleetBridge.h"
 #include "models/PassCountLayer.h"
 
-#include "common/GeoFrame.h"
-#include "osyris/OsyrisConfig.h"
-#include "osyris/OsyrisStation.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/osyris/OsyrisConfig.h"
+#include "protocols/osyris/OsyrisStack.h"
 
 #include <atomic>
 #include <memory>
@@ -44,7 +44,7 @@ public:
 
     QString start();
     void stop();
-    osyris::OsyrisStation* station() const { return m_station.get(); }
+    osyris::OsyrisStack* station() const { return m_station.get(); }
 
     CommandResult stopAll() override;
     CommandResult stopMachine(const QString& id) override;
@@ -63,7 +63,7 @@ private:
 
     osyris::OsyrisConfig m_config;
     GeoFrame m_frame;
-    std::unique_ptr<osyris::OsyrisStation> m_station;
+    std::unique_ptr<osyris::OsyrisStack> m_station;
     std::unique_ptr<OsyrisPassCountLayer> m_layer;
     std::atomic<bool> m_passCountQueued{false};
     std::atomic<bool> m_linkUp{false};

@@ -1,4 +1,4 @@
-#include "ConfigReader.h"
+#include "protocols/common/ConfigReader.h"
 
 #include <nlohmann/json.hpp>
 

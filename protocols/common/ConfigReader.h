@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "Result.h"
+#include "protocols/common/Result.h"
 
 namespace ocu {
 

@@ -1,4 +1,4 @@
-#include "GeoFrame.h"
+#include "protocols/common/GeoFrame.h"
 
 #include <GeographicLib/LocalCartesian.hpp>
 

@@ -1,6 +1,6 @@
-#include "IoThread.h"
+#include "protocols/common/IoThread.h"
 
-#include "Log.h"
+#include "protocols/common/Log.h"
 
 #include <exception>
 #include <pthread.h>

@@ -1,4 +1,4 @@
-#include "Log.h"
+#include "protocols/common/Log.h"
 
 #include <atomic>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "Udp.h"
+#include "protocols/common/Udp.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/multicast.hpp>

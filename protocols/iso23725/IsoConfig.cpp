@@ -1,6 +1,6 @@
-#include "IsoConfig.h"
+#include "protocols/iso23725/IsoConfig.h"
 
-#include "common/ConfigReader.h"
+#include "protocols/common/ConfigReader.h"
 
 #include <cmath>
 #include <set>

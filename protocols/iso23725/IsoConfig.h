@@ -1,8 +1,8 @@
 #pragma once
 // Configuration of the ISO 23725 stack: the site configuration's `iso23725` object (docs/iso23725.md).
-#include "InferredRules.h"
-#include "Messages.h"
-#include "WsTransport.h"
+#include "protocols/iso23725/InferredRules.h"
+#include "protocols/iso23725/Messages.h"
+#include "protocols/iso23725/WsTransport.h"
 
 #include <chrono>
 #include <string>

@@ -1,9 +1,9 @@
-#include "IsoStack.h"
+#include "protocols/iso23725/IsoStack.h"
 
-#include "WsTransport.h"
+#include "protocols/iso23725/WsTransport.h"
 
-#include "common/IoThread.h"
-#include "common/Log.h"
+#include "protocols/common/IoThread.h"
+#include "protocols/common/Log.h"
 
 #include <boost/asio/steady_timer.hpp>
 
@@ -56,7 +56,7 @@ struct Link final : FmsOutbound {
 
     Link(const IsoConfig& cfg, const IsoLinkConfig& lc, IsoListener& listener, Counters& counters,
          boost::asio::io_context& io)
-        : session(std::make_unique<FmsSession>(cfg, lc, listener, counters, SteadyClock::instance(), *this)) {
+        : session(std::make_unique<FmsCore>(cfg, lc, listener, counters, SteadyClock::instance(), *this)) {
         mainHandler.link = this;
         mapHandler.link = this;
         main = std::make_unique<WsEndpoint>(io, lc.ws, mainHandler, counters);
@@ -84,7 +84,7 @@ struct Link final : FmsOutbound {
         return mapSession && map && map->send(*mapSession, std::move(text));
     }
 
-    std::unique_ptr<FmsSession> session;
+    std::unique_ptr<FmsCore> session;
     MainHandler mainHandler;
     MapHandler mapHandler;
     std::unique_ptr<WsEndpoint> main;
@@ -109,7 +109,7 @@ struct IsoStack::Impl {
     boost::asio::steady_timer positionTimer;
     boost::asio::steady_timer pollTimer;
 
-    FmsSession* session(const std::string& name, const char* what) {
+    FmsCore* session(const std::string& name, const char* what) {
         auto it = links.find(name);
         if (it == links.end()) {
             const std::string text = std::string(what) + " refused: no ISO 23725 link named '" + name + "'";

@@ -2,9 +2,9 @@
 // The FMS side of ISO 23725 (the OCU): per link a WebSocket session to an AHS, the AHS fleet and machine
 // state, fleet discrepancy checks, all-stop, assignments, the map service. Commands are posted to the stack's
 // io thread; events leave through IsoListener on that thread (listeners must not block).
-#include "FmsSession.h"
+#include "protocols/iso23725/FmsCore.h"
 
-#include "common/Counters.h"
+#include "protocols/common/Counters.h"
 
 #include <map>
 #include <memory>

@@ -2,7 +2,7 @@
 // The timing rules of an ISO 23725 WebSocket link, kept apart from the sockets so they run on a fake clock in
 // tests. Research note §2 [I] / Q1: ping every 5 s, the link is dead after 15 s without any received frame
 // (pongs count), reconnect with exponential backoff 1 -> 30 s with +-20 % jitter.
-#include "common/Clock.h"
+#include "protocols/common/Clock.h"
 
 #include <algorithm>
 #include <chrono>

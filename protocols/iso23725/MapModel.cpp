@@ -1,4 +1,4 @@
-#include "MapModel.h"
+#include "protocols/iso23725/MapModel.h"
 
 #include <pugixml.hpp>
 

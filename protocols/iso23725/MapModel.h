@@ -1,9 +1,9 @@
 #pragma once
 // ISO 23725 map (§10, research note §8): OSM 0.6 XML chunks assembled into nodes, ways, roads, lanes and
 // areas with their tags, checked against the ID rules (§10.2); MapConnectivityV1 as a directed graph (§9.1).
-#include "Messages.h"
-#include "common/GeoFrame.h"
-#include "common/Result.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/common/Result.h"
+#include "protocols/iso23725/Messages.h"
 
 #include <cstdint>
 #include <map>

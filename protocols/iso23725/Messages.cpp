@@ -1,5 +1,5 @@
-#include "Messages.h"
-#include "PositionFastPath.h"
+#include "protocols/iso23725/Messages.h"
+#include "protocols/iso23725/PositionFastPath.h"
 
 #include <algorithm>
 #include <array>

@@ -2,8 +2,8 @@
 // ISO 23725 message value types and their JSON codec (shared/research/iso23725.md §3-§6).
 // Enumerations are kept as validated strings so unknown-but-tolerated values survive a round trip.
 // Numbers that may be null are std::optional: nullopt means "unavailable" (ISO §4.2.3), never a default.
-#include "InferredRules.h"
-#include "common/Result.h"
+#include "protocols/common/Result.h"
+#include "protocols/iso23725/InferredRules.h"
 
 #include <nlohmann/json.hpp>
 

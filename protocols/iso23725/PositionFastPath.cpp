@@ -1,4 +1,4 @@
-#include "PositionFastPath.h"
+#include "protocols/iso23725/PositionFastPath.h"
 
 #include <algorithm>
 #include <array>

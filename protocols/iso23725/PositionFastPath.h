@@ -2,7 +2,7 @@
 // Fast path for the hot message, MachinePositionV1 (ISO §7.4; shared/research/iso23725.md §5 row 5: every
 // machine, 1-10 Hz). A strict hand-written scanner reads exactly the clean shape of that frame and gives the
 // same Envelope as the DOM path (nlohmann parse + decodeJson), or declines and lets the DOM path decode it.
-#include "Messages.h"
+#include "protocols/iso23725/Messages.h"
 
 #include <optional>
 #include <string_view>

@@ -1,9 +1,9 @@
 // The only translation unit with Boost.Beast (~12 s to compile): keep it that way.
-#include "WsTransport.h"
+#include "protocols/iso23725/WsTransport.h"
 
-#include "LinkTiming.h"
+#include "protocols/iso23725/LinkTiming.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/ssl.hpp>

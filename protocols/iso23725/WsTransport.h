@@ -2,8 +2,8 @@
 // WebSocket transport for ISO 23725 (research note §2): client (default) or service role, ws:// or wss://,
 // one text frame = one JSON container or one XML map chunk. Boost.Beast stays inside WsTransport.cpp.
 // Every callback runs on the io_context's thread; every method must be called on that thread.
-#include "common/Counters.h"
-#include "common/Result.h"
+#include "protocols/common/Counters.h"
+#include "protocols/common/Result.h"
 
 #include <chrono>
 #include <cstdint>

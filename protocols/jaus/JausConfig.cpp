@@ -1,4 +1,4 @@
-#include "jaus/JausConfig.h"
+#include "protocols/jaus/JausConfig.h"
 
 #include <boost/asio/ip/address_v4.hpp>
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "common/ConfigReader.h"
-#include "jaus/JudpCodec.h"
+#include "protocols/common/ConfigReader.h"
+#include "protocols/jaus/JudpCodec.h"
 
 namespace ocu::jaus {
 

@@ -1,9 +1,9 @@
 #pragma once
-// The seam between the JAUS state machines (OcuCore, the simulated UGV) and the transport.
+// The seam between the JAUS state machines (JausCore, the simulated UGV) and the transport.
 #include <string>
 
-#include "common/Bytes.h"
-#include "jaus/JudpCodec.h"
+#include "protocols/common/Bytes.h"
+#include "protocols/jaus/JudpCodec.h"
 
 namespace ocu::jaus {
 

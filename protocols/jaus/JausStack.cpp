@@ -1,4 +1,4 @@
-#include "jaus/JausStack.h"
+#include "protocols/jaus/JausStack.h"
 
 #include <boost/asio/steady_timer.hpp>
 
@@ -6,10 +6,10 @@
 #include <map>
 #include <thread>
 
-#include "common/IoThread.h"
-#include "common/Log.h"
-#include "jaus/JudpTransport.h"
-#include "jaus/OcuCore.h"
+#include "protocols/common/IoThread.h"
+#include "protocols/common/Log.h"
+#include "protocols/jaus/JausCore.h"
+#include "protocols/jaus/JudpTransport.h"
 
 namespace ocu::jaus {
 
@@ -45,7 +45,7 @@ struct JausStack::Impl : JausOutput {
     Counters counters;
     IoThread io;
     JudpTransport transport;
-    OcuCore core;
+    JausCore core;
     boost::asio::steady_timer timer;
     std::map<std::string, TimePoint> lastDecodeEvent;
     std::atomic<bool> running{false};

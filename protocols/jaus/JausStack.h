@@ -1,15 +1,15 @@
 #pragma once
-// The OCU side of JAUS: OcuCore (client services) + JudpTransport on its own io thread.
+// The OCU side of JAUS: JausCore (client services) + JudpTransport on its own io thread.
 // Command methods are thread-safe (they post to the io thread); listener callbacks run on the io thread.
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
 
-#include "common/Clock.h"
-#include "common/Counters.h"
-#include "jaus/JausConfig.h"
-#include "jaus/JausTypes.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
+#include "protocols/jaus/JausConfig.h"
+#include "protocols/jaus/JausTypes.h"
 
 namespace ocu::jaus {
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "common/Clock.h"
-#include "jaus/JudpCodec.h"
-#include "jaus/Messages.h"
+#include "protocols/common/Clock.h"
+#include "protocols/jaus/JudpCodec.h"
+#include "protocols/jaus/Messages.h"
 
 namespace ocu::jaus {
 

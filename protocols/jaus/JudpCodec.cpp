@@ -1,4 +1,4 @@
-#include "jaus/JudpCodec.h"
+#include "protocols/jaus/JudpCodec.h"
 
 #include <cstdio>
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "common/Bytes.h"
-#include "common/Clock.h"
-#include "common/Result.h"
+#include "protocols/common/Bytes.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/Result.h"
 
 namespace ocu::jaus {
 

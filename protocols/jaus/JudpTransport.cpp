@@ -1,4 +1,4 @@
-#include "jaus/JudpTransport.h"
+#include "protocols/jaus/JudpTransport.h"
 
 #include <boost/asio/ip/address_v4.hpp>
 #include <boost/asio/write.hpp>
@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 namespace ocu::jaus {
 

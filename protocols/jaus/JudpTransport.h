@@ -19,12 +19,12 @@
 #include <set>
 #include <string>
 
-#include "common/Clock.h"
-#include "common/Counters.h"
-#include "common/Udp.h"
-#include "jaus/JausConfig.h"
-#include "jaus/JausOutput.h"
-#include "jaus/JudpCodec.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
+#include "protocols/common/Udp.h"
+#include "protocols/jaus/JausConfig.h"
+#include "protocols/jaus/JausOutput.h"
+#include "protocols/jaus/JudpCodec.h"
 
 namespace ocu::jaus {
 

@@ -1,4 +1,4 @@
-#include "jaus/Messages.h"
+#include "protocols/jaus/Messages.h"
 
 #include <numbers>
 

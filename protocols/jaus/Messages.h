@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "common/Bytes.h"
-#include "common/Result.h"
-#include "jaus/JudpCodec.h"
+#include "protocols/common/Bytes.h"
+#include "protocols/common/Result.h"
+#include "protocols/jaus/JudpCodec.h"
 
 namespace ocu::jaus {
 

@@ -1,4 +1,4 @@
-#include "osyris/OsyrisCodec.h"
+#include "protocols/osyris/OsyrisCodec.h"
 
 #include <cstring>
 

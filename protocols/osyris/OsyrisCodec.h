@@ -2,8 +2,8 @@
 // OSYRIS message codec (seed 004 §6): CmHeader, CmPos, CmPosProps, CmRequest, CmMsg. Tight 1-byte packing,
 // little-endian, several messages per datagram. Decisions on the specification's ambiguities are in
 // docs/osyris.md ("Wire decisions").
-#include "common/Bytes.h"
-#include "common/Result.h"
+#include "protocols/common/Bytes.h"
+#include "protocols/common/Result.h"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
-#include "osyris/OsyrisConfig.h"
+#include "protocols/osyris/OsyrisConfig.h"
 
-#include "common/ConfigReader.h"
+#include "protocols/common/ConfigReader.h"
 
 #include <pugixml.hpp>
 

@@ -1,10 +1,10 @@
 #pragma once
 // OSYRIS station configuration: the §7 parameters plus the OCU's own (station index, SQLite file,
 // geo-referencing, pass-count grid). Keys are documented in docs/osyris.md.
-#include "osyris/OsyrisCodec.h"
-#include "osyris/PassCountGrid.h"
+#include "protocols/osyris/OsyrisCodec.h"
+#include "protocols/osyris/PassCountGrid.h"
 
-#include "common/Result.h"
+#include "protocols/common/Result.h"
 
 #include <cstdint>
 #include <map>

@@ -1,6 +1,6 @@
-#include "osyris/PassCountGrid.h"
+#include "protocols/osyris/PassCountGrid.h"
 
-#include "osyris/RibbonStore.h"
+#include "protocols/osyris/RibbonStore.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // the drum footprint is swept between consecutive counted positions of one machine's ribbon, processed
 // strictly in slot order. Counts are a sum over machines of a function of each ribbon alone, so the
 // grid depends only on the ribbons, never on the order datagrams arrived in.
-#include "osyris/OsyrisCodec.h"
+#include "protocols/osyris/OsyrisCodec.h"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,6 @@
-#include "osyris/RibbonStore.h"
+#include "protocols/osyris/RibbonStore.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 #include <sqlite3.h>
 

@@ -3,8 +3,8 @@
 // and, when a file is given, in SQLite (one file per site, WAL): rows are written inside a transaction
 // that commit() closes, so a crash loses nothing that was committed. Thread-safe (one mutex), so the GUI
 // may read while the station's io thread writes.
-#include "osyris/IntervalSet.h"
-#include "osyris/OsyrisCodec.h"
+#include "protocols/osyris/IntervalSet.h"
+#include "protocols/osyris/OsyrisCodec.h"
 
 #include <functional>
 #include <map>

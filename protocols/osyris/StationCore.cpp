@@ -1,6 +1,6 @@
-#include "osyris/StationCore.h"
+#include "protocols/osyris/StationCore.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,19 +1,19 @@
 #pragma once
 // The OSYRIS station state machine (seed 004 §4-§6), free of sockets and threads: datagrams enter through
 // receive(), time advances through tick() (once per Beat), datagrams leave through the send function.
-// OsyrisStation wraps it with Boost.Asio; tests drive it with a FakeClock and an in-memory network.
+// OsyrisStack wraps it with Boost.Asio; tests drive it with a FakeClock and an in-memory network.
 //
 // Reliability (§5): a "list of wishes" (gaps of every ribbon, requested with NAK) and a "list of assets"
 // (requests this station can answer), both priority queues with dynamic priorities. See docs/osyris.md.
-#include "osyris/IntervalSet.h"
-#include "osyris/OsyrisCodec.h"
-#include "osyris/OsyrisConfig.h"
-#include "osyris/PassCountGrid.h"
-#include "osyris/RibbonStore.h"
+#include "protocols/osyris/IntervalSet.h"
+#include "protocols/osyris/OsyrisCodec.h"
+#include "protocols/osyris/OsyrisConfig.h"
+#include "protocols/osyris/PassCountGrid.h"
+#include "protocols/osyris/RibbonStore.h"
 
-#include "common/Clock.h"
-#include "common/Counters.h"
-#include "common/GeoFrame.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
+#include "protocols/common/GeoFrame.h"
 
 #include <deque>
 #include <functional>

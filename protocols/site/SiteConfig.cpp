@@ -1,4 +1,4 @@
-#include "SiteConfig.h"
+#include "protocols/site/SiteConfig.h"
 
 #include <boost/asio/ip/address_v4.hpp>
 

@@ -2,22 +2,22 @@
 // The site configuration: one JSON file (docs/site-config.md) with the site origin, the fleet-picture
 // settings and one section per protocol. Parsing is strict: every problem is reported with the key path
 // and line, and a configuration with any error is refused as a whole.
-#include "common/ConfigReader.h"
-#include "common/GeoFrame.h"
-#include "common/Result.h"
+#include "protocols/common/ConfigReader.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/common/Result.h"
 
 #include <optional>
 #include <string>
 
 // OCU_SITE_HAVE_* are set by CMake for each protocol stack that is part of the build.
 #ifdef OCU_SITE_HAVE_JAUS
-#include "jaus/JausConfig.h"
+#include "protocols/jaus/JausConfig.h"
 #endif
 #ifdef OCU_SITE_HAVE_ISO
-#include "iso23725/IsoConfig.h"
+#include "protocols/iso23725/IsoConfig.h"
 #endif
 #ifdef OCU_SITE_HAVE_OSYRIS
-#include "osyris/OsyrisConfig.h"
+#include "protocols/osyris/OsyrisConfig.h"
 #endif
 
 namespace ocu {

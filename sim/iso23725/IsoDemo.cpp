@@ -1,4 +1,4 @@
-#include "IsoDemo.h"
+#include "sim/iso23725/IsoDemo.h"
 
 namespace ocu::sim {
 

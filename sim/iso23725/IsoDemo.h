@@ -1,7 +1,7 @@
 #pragma once
 // Starts the simulated AHS on a free loopback port and fills an IsoConfig so the OCU connects to it
 // (built-in simulated site, ocu-sim).
-#include "iso23725/IsoConfig.h"
+#include "protocols/iso23725/IsoConfig.h"
 #include "sim/iso23725/SimulatedAhs.h"
 
 #include <memory>

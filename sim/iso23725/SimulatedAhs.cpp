@@ -1,9 +1,9 @@
-#include "SimulatedAhs.h"
+#include "sim/iso23725/SimulatedAhs.h"
 
-#include "iso23725/MapModel.h"
+#include "protocols/iso23725/MapModel.h"
 
-#include "common/IoThread.h"
-#include "common/Log.h"
+#include "protocols/common/IoThread.h"
+#include "protocols/common/Log.h"
 
 #include <boost/asio/steady_timer.hpp>
 

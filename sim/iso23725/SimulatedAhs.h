@@ -3,11 +3,11 @@
 // generated open-pit map served in chunks, N haul trucks on load-haul-dump cycles over the road graph,
 // all-stop and assignments honoured, production-state sensors on change, interface diagnostics (periodic and
 // on rejected input), the map service on the main socket or its own. No Qt. Runs on its own io thread.
-#include "iso23725/Messages.h"
-#include "iso23725/WsTransport.h"
+#include "protocols/iso23725/Messages.h"
+#include "protocols/iso23725/WsTransport.h"
 
-#include "common/Counters.h"
-#include "common/GeoFrame.h"
+#include "protocols/common/Counters.h"
+#include "protocols/common/GeoFrame.h"
 
 #include <chrono>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "sim/jaus/JausDemo.h"
 
-#include "common/Udp.h"
+#include "protocols/common/Udp.h"
 
 namespace ocu::sim {
 

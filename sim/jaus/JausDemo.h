@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "jaus/JausConfig.h"
+#include "protocols/jaus/JausConfig.h"
 #include "sim/jaus/SimulatedUgv.h"
 
 namespace ocu::sim {

@@ -4,9 +4,9 @@
 
 #include <atomic>
 
-#include "common/IoThread.h"
-#include "common/Log.h"
-#include "jaus/JudpTransport.h"
+#include "protocols/common/IoThread.h"
+#include "protocols/common/Log.h"
+#include "protocols/jaus/JudpTransport.h"
 
 namespace ocu::sim {
 

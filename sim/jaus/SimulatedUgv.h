@@ -5,8 +5,8 @@
 #include <memory>
 #include <optional>
 
-#include "common/Clock.h"
-#include "common/Counters.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
 #include "sim/jaus/UgvCore.h"
 
 namespace ocu::sim {

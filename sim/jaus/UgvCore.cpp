@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 namespace ocu::sim {
 

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "common/Clock.h"
-#include "common/Counters.h"
-#include "common/GeoFrame.h"
-#include "jaus/JausConfig.h"
-#include "jaus/JausOutput.h"
-#include "jaus/Messages.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/jaus/JausConfig.h"
+#include "protocols/jaus/JausOutput.h"
+#include "protocols/jaus/Messages.h"
 
 namespace ocu::sim {
 

@@ -1,8 +1,8 @@
 #include "sim/osyris/OsyrisDemo.h"
 
-#include "common/Clock.h"
-#include "common/IoThread.h"
-#include "common/Udp.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/IoThread.h"
+#include "protocols/common/Udp.h"
 
 #include <boost/asio/steady_timer.hpp>
 
@@ -36,7 +36,7 @@ using namespace ocu::osyris;
 
 struct OsyrisDemo::Impl {
     OsyrisListener quiet; // simulated machines ignore events
-    std::vector<std::unique_ptr<OsyrisStation>> stations;
+    std::vector<std::unique_ptr<OsyrisStack>> stations;
     std::vector<std::optional<SimulatedMachine>> machines; // parallel to stations
     IoThread driver{"osyris-demo"};
     std::unique_ptr<boost::asio::steady_timer> timer;
@@ -54,7 +54,7 @@ OsyrisDemo::~OsyrisDemo() {
 std::size_t OsyrisDemo::stationCount() const {
     return m_impl->stations.size();
 }
-OsyrisStation& OsyrisDemo::station(std::size_t i) {
+OsyrisStack& OsyrisDemo::station(std::size_t i) {
     return *m_impl->stations.at(i);
 }
 
@@ -109,7 +109,7 @@ bool OsyrisDemo::start(std::string* error) {
         OsyrisConfig c = ocuConfig();
         c.stationIndex = idx;
         c.active = 7; // §7 default for machines
-        auto st = std::make_unique<OsyrisStation>(c, m_impl->quiet);
+        auto st = std::make_unique<OsyrisStack>(c, m_impl->quiet);
         auto imp = m_opts.impairment;
         imp.seed += idx;
         st->setImpairment(imp);

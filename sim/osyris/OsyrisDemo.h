@@ -1,8 +1,8 @@
 #pragma once
 // A simulated OSYRIS site on real loopback multicast: a paver, tandem rollers and a relay box, each an
-// OsyrisStation on 127.0.0.1 with a free port, driven in accelerated time. ocuConfig() gives the OCU the
+// OsyrisStack on 127.0.0.1 with a free port, driven in accelerated time. ocuConfig() gives the OCU the
 // settings to join them (used by the built-in demo site and ocu-sim).
-#include "osyris/OsyrisStation.h"
+#include "protocols/osyris/OsyrisStack.h"
 #include "sim/osyris/SimulatedRoller.h"
 
 #include <memory>
@@ -45,7 +45,7 @@ public:
     ocu::osyris::OsyrisConfig ocuConfig() const;
     const std::vector<DemoMachine>& machines() const { return m_machines; }
     std::size_t stationCount() const;
-    ocu::osyris::OsyrisStation& station(std::size_t i);
+    ocu::osyris::OsyrisStack& station(std::size_t i);
     double simTime() const;
     // Parked machines stop writing positions (stations keep running, answering and relaying).
     void setPaused(bool paused);

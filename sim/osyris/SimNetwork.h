@@ -1,8 +1,8 @@
 #pragma once
 // In-memory "radio" for OSYRIS stations driven by a FakeClock: per-link loss, duplication, reordering
 // (extra delay), latency, and range-limited links computed from the nodes' true positions.
-#include "common/Bytes.h"
-#include "common/Clock.h"
+#include "protocols/common/Bytes.h"
+#include "protocols/common/Clock.h"
 
 #include <functional>
 #include <map>

@@ -1,6 +1,6 @@
 #include "sim/osyris/SimSite.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 namespace ocu::sim::osyris {
 

@@ -2,7 +2,7 @@
 // A whole simulated OSYRIS site in one thread on a FakeClock: stations (StationCore + ribbon store +
 // pass-count grid), their machines, and the in-memory radio. Used by tests (accelerated time) and by any
 // caller that wants a reproducible site without sockets.
-#include "osyris/StationCore.h"
+#include "protocols/osyris/StationCore.h"
 #include "sim/osyris/SimNetwork.h"
 #include "sim/osyris/SimulatedRoller.h"
 

@@ -3,7 +3,7 @@
 // (+x = east, lane centre y = 0) and tandem rollers doing forward/backward passes in a window behind it,
 // with vibration switched on and off, accuracy flags and an occasional GPS shadow. Pure functions of the
 // simulated time, so runs are reproducible.
-#include "osyris/OsyrisCodec.h"
+#include "protocols/osyris/OsyrisCodec.h"
 
 #include <cstdint>
 #include <optional>

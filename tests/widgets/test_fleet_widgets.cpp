@@ -1,9 +1,9 @@
 // Fleet list, stop controls, hold-to-confirm, event log and pass-count panel, offscreen.
 #include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/FleetFilterProxy.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
-#include "models/StopController.h"
 #include "models/testing/FakeFleetBridge.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/FleetListWidget.h"
@@ -38,7 +38,7 @@ struct Rig {
     FleetModel fleet;
     FleetSelection selection{&fleet};
     AlarmModel alarms;
-    StopController stop{&alarms};
+    CommandGate stop{&alarms};
     FakeFleetBridge jaus{Protocol::Jaus}, iso{Protocol::Iso23725}, osy{Protocol::Osyris};
     Rig() {
         fleet.setRefreshIntervalMs(0);

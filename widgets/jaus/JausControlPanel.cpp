@@ -1,9 +1,9 @@
-#include "JausControlPanel.h"
+#include "widgets/jaus/JausControlPanel.h"
 
-#include "JausSubsystemModel.h"
-#include "VehicleDetailsWidget.h"
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"
+#include "models/jaus/JausSubsystemModel.h"
+#include "widgets/jaus/VehicleDetailsWidget.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>

@@ -1,4 +1,4 @@
-#include "TeleopPanel.h"
+#include "widgets/jaus/TeleopPanel.h"
 
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"

@@ -3,7 +3,7 @@
 // (W/A/S/D or arrows with the dead-man key), SDL2 joysticks; wrench effort or velocity as the platform
 // offers; a speed limit within the platform specifications; zero on release, focus loss and joystick
 // loss; a large E-STOP (Space, Esc) and clear-emergency only by holding a confirm button.
-#include "jaus/JausTypes.h"
+#include "protocols/jaus/JausTypes.h"
 #include "widgets/teleop/InputDevice.h"
 
 #include <QWidget>

@@ -1,7 +1,7 @@
-#include "VehicleDetailsWidget.h"
+#include "widgets/jaus/VehicleDetailsWidget.h"
 
-#include "JausSubsystemModel.h"
 #include "models/bridges/JausBridge.h"
+#include "models/jaus/JausSubsystemModel.h"
 
 #include <QDateTime>
 #include <QHeaderView>

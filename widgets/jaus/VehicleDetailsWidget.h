@@ -1,7 +1,7 @@
 #pragma once
 // Vehicle details (issue 7 §3): platform specifications, mode and state, health, the services tree
 // subsystem → node → component [s.n.c] → service URI and version, and the vehicle's last messages.
-#include "jaus/JausTypes.h"
+#include "protocols/jaus/JausTypes.h"
 
 #include <QWidget>
 

@@ -1,6 +1,6 @@
-#include "JoystickMappingDialog.h"
+#include "widgets/teleop/JoystickMappingDialog.h"
 
-#include "VirtualStick.h"
+#include "widgets/teleop/VirtualStick.h"
 
 #include <QCheckBox>
 #include <QComboBox>

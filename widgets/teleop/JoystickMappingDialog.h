@@ -2,7 +2,7 @@
 // The operator's joystick mapping: which raw axis drives forward and turn, their direction and the dead zone,
 // with the live raw values and the resulting demand. "Detect" asks the operator to move the stick and picks
 // the axis (and its direction) that moved. The dialog only edits a mapping; it never drives anything.
-#include "InputDevice.h"
+#include "widgets/teleop/InputDevice.h"
 
 #include <QDialog>
 

@@ -1,4 +1,4 @@
-#include "SdlJoystickInput.h"
+#include "widgets/teleop/SdlJoystickInput.h"
 
 #include <QTimer>
 

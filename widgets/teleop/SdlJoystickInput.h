@@ -1,7 +1,7 @@
 #pragma once
 // Game controllers and joysticks through SDL2: hot-plug, axis mapping, dead zone. Polled on the GUI
 // thread by a timer (SDL's joystick subsystem needs no window).
-#include "InputDevice.h"
+#include "widgets/teleop/InputDevice.h"
 
 #include <QStringList>
 

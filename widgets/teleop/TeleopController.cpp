@@ -1,4 +1,4 @@
-#include "TeleopController.h"
+#include "widgets/teleop/TeleopController.h"
 
 #include <QTimer>
 

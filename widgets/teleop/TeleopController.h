@@ -3,7 +3,7 @@
 // Safety rules (DEVELOPERS.md, AEP-4818 drive timeout): a demand is repeated every period while it lasts
 // (the vehicle stops by itself when the stream stops); on release, focus loss or device loss a zero is
 // sent at once and then repeated several periods, never relying on a single message.
-#include "InputDevice.h"
+#include "widgets/teleop/InputDevice.h"
 
 #include <QObject>
 #include <QPointer>

@@ -1,4 +1,4 @@
-#include "VirtualStick.h"
+#include "widgets/teleop/VirtualStick.h"
 
 #include <QMouseEvent>
 #include <QPainter>

@@ -1,7 +1,7 @@
 #pragma once
 // On-screen stick for mouse and touch: drag the knob; releasing it springs back to the centre and
 // drives zero.
-#include "InputDevice.h"
+#include "widgets/teleop/InputDevice.h"
 
 #include <QWidget>
 

@@ -2,7 +2,7 @@
 
 #include "widgets/view3d/SiteSceneRenderer.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 // GLEW first (it must precede any GL header); VTK uses the system GLEW on Debian.
 #include <vtk_glew.h>

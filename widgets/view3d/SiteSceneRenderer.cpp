@@ -1,6 +1,6 @@
 #include "widgets/view3d/SiteSceneRenderer.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>

@@ -1,9 +1,9 @@
-#include "common/Bytes.h"
-#include "common/Clock.h"
-#include "common/ConfigReader.h"
-#include "common/Counters.h"
-#include "common/GeoFrame.h"
-#include "common/IoThread.h"
+#include "protocols/common/Bytes.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/ConfigReader.h"
+#include "protocols/common/Counters.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/common/IoThread.h"
 
 #include <QtTest>
 

@@ -6,8 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "jaus/JudpCodec.h"
-#include "jaus/Messages.h"
+#include "protocols/jaus/JudpCodec.h"
+#include "protocols/jaus/Messages.h"
 
 using namespace ocu;
 using namespace ocu::jaus;

@@ -1,8 +1,8 @@
 // The site configuration's "jaus" section: defaults, every key, and strict rejection of bad values.
 #include <QtTest>
 
-#include "common/ConfigReader.h"
-#include "jaus/JausConfig.h"
+#include "protocols/common/ConfigReader.h"
+#include "protocols/jaus/JausConfig.h"
 
 using namespace ocu;
 using namespace ocu::jaus;

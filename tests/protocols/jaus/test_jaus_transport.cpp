@@ -5,10 +5,10 @@
 
 #include <boost/asio/io_context.hpp>
 
-#include "common/Log.h"
-#include "common/Udp.h"
-#include "jaus/JudpTransport.h"
-#include "jaus/Messages.h"
+#include "protocols/common/Log.h"
+#include "protocols/common/Udp.h"
+#include "protocols/jaus/JudpTransport.h"
+#include "protocols/jaus/Messages.h"
 
 using namespace ocu;
 using namespace ocu::jaus;

@@ -1,5 +1,5 @@
 // Codec vectors computed by hand from seed 004 §6 tables (1-byte packing, little-endian).
-#include "osyris/OsyrisCodec.h"
+#include "protocols/osyris/OsyrisCodec.h"
 
 #include <QtTest>
 

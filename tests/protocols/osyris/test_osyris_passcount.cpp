@@ -1,6 +1,6 @@
 // Pass counts on synthetic tracks with known answers; order independence.
-#include "osyris/PassCountGrid.h"
-#include "osyris/RibbonStore.h"
+#include "protocols/osyris/PassCountGrid.h"
+#include "protocols/osyris/RibbonStore.h"
 
 #include <QtTest>
 

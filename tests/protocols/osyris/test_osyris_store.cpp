@@ -1,8 +1,8 @@
 // Ribbon store: memory and SQLite modes, gaps, crash safety of committed data; OSYRIS configuration.
-#include "osyris/OsyrisConfig.h"
-#include "osyris/RibbonStore.h"
+#include "protocols/osyris/OsyrisConfig.h"
+#include "protocols/osyris/RibbonStore.h"
 
-#include "common/ConfigReader.h"
+#include "protocols/common/ConfigReader.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

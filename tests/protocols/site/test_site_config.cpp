@@ -1,4 +1,4 @@
-#include "site/SiteConfig.h"
+#include "protocols/site/SiteConfig.h"
 
 #include <QtTest>
 

@@ -1,4 +1,4 @@
-// The OCU client services (OcuCore) against the simulated UGV's services (UgvCore), connected by an
+// The OCU client services (JausCore) against the simulated UGV's services (UgvCore), connected by an
 // in-memory bus and driven by a FakeClock: access control (kept while re-requests flow, lost after the
 // timeout, pre-empted by a higher authority, refused below the default authority, never requested with
 // authority 0), discovery, events with polling fallback, management/emergency, driving, drive timeout.
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <deque>
 
-#include "jaus/OcuCore.h"
+#include "protocols/jaus/JausCore.h"
 #include "sim/jaus/UgvCore.h"
 
 using namespace ocu;
@@ -83,7 +83,7 @@ struct World {
     Recorder rec, rec2;
     std::vector<Packet> ocuSent;
     std::unique_ptr<Port> ocuPort, ocu2Port, ugvPort;
-    std::unique_ptr<OcuCore> ocu, ocu2;
+    std::unique_ptr<JausCore> ocu, ocu2;
     std::unique_ptr<UgvCore> ugv;
     bool ocuSilent = false;
 
@@ -94,7 +94,7 @@ struct World {
         cfg.driveCommandTimeoutS = driveWatchdogS;
         ocuPort = std::make_unique<Port>(bus, cfg.ownId());
         ocuPort->log = &ocuSent;
-        ocu = std::make_unique<OcuCore>(cfg, rec, *ocuPort, clock, ocuCounters);
+        ocu = std::make_unique<JausCore>(cfg, rec, *ocuPort, clock, ocuCounters);
         ugvPort = std::make_unique<Port>(bus, JausId{ucfg.subsystemId, 1, 1});
         ugv = std::make_unique<UgvCore>(ucfg, *ugvPort, clock, ugvCounters);
         bus.parties.push_back([this](const Packet& p) {
@@ -106,7 +106,7 @@ struct World {
     void addSecondOcu(std::uint8_t authority) {
         auto cfg = ocuConfig(201, authority);
         ocu2Port = std::make_unique<Port>(bus, cfg.ownId());
-        ocu2 = std::make_unique<OcuCore>(cfg, rec2, *ocu2Port, clock, ocu2Counters);
+        ocu2 = std::make_unique<JausCore>(cfg, rec2, *ocu2Port, clock, ocu2Counters);
         bus.parties.push_back([this](const Packet& p) { ocu2->handle(p.src, p.dst, p.payload); });
     }
     void step(Duration d = std::chrono::milliseconds(10)) {

@@ -2,16 +2,16 @@
 #include "models/FleetContext.h"
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"
+#include "models/jaus/JausSubsystemModel.h"
 #include "sim/jaus/JausDemo.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/jaus/JausControlPanel.h"
-#include "widgets/jaus/JausSubsystemModel.h"
 #include "widgets/jaus/TeleopPanel.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
 #include "widgets/teleop/TeleopController.h"
 
-#include "jaus/JausStack.h"
+#include "protocols/jaus/JausStack.h"
 
 #include <QCheckBox>
 #include <QComboBox>

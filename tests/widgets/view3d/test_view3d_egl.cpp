@@ -1,7 +1,7 @@
 // Headless 3D: offscreen Qt platform and no X server (DISPLAY unset by ocu_add_test). The scene is rendered
 // through the Mesa EGL surfaceless context; pixels at projected positions must show terrain, road and
 // machine.
-#include "SyntheticSite.h"
+#include "tests/widgets/view3d/SyntheticSite.h"
 #include "widgets/view3d/EglOffscreenRenderer.h"
 #include "widgets/view3d/SiteSceneRenderer.h"
 

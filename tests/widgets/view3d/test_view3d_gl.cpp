@@ -2,7 +2,7 @@
 // QOpenGLWidget. Proves: the machine's colour is at its projected pixel, a click there picks it (signal +
 // selection), mouse drags reach the VTK interactor style, the follow camera keeps a moving machine centred,
 // and a window grab() contains the 3D picture.
-#include "SyntheticSite.h"
+#include "tests/widgets/view3d/SyntheticSite.h"
 #include "widgets/view3d/EglOffscreenRenderer.h"
 #include "widgets/view3d/Site3DView.h"
 #include "widgets/view3d/SiteSceneRenderer.h"

@@ -1,6 +1,6 @@
 // The 3D panel headless: offscreen platform, DISPLAY unset. It must never create a QOpenGLWidget, and a
 // grab() of the window (what `--screenshot --view 3d` saves) must contain terrain, road and machines.
-#include "SyntheticSite.h"
+#include "tests/widgets/view3d/SyntheticSite.h"
 #include "widgets/view3d/Site3DView.h"
 #include "widgets/view3d/SiteSceneRenderer.h"
 

@@ -1,6 +1,6 @@
-#include "FmsSession.h"
+#include "protocols/iso23725/FmsCore.h"
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,12 +51,12 @@ std::optional<std::string> memberOf(const std::string& error) {
 }
 } // namespace
 
-FmsSession::FmsSession(const IsoConfig& config, IsoLinkConfig link, IsoListener& listener, Counters& counters,
-                       const Clock& clock, FmsOutbound& out)
+FmsCore::FmsCore(const IsoConfig& config, IsoLinkConfig link, IsoListener& listener, Counters& counters,
+                 const Clock& clock, FmsOutbound& out)
     : m_cfg(config), m_link(std::move(link)), m_listener(listener), m_counters(counters), m_clock(clock),
       m_out(out) {}
 
-void FmsSession::event(IsoSeverity s, const std::string& text) {
+void FmsCore::event(IsoSeverity s, const std::string& text) {
     if (s == IsoSeverity::Info)
         logInfo(kLog, text);
     else
@@ -64,7 +64,7 @@ void FmsSession::event(IsoSeverity s, const std::string& text) {
     m_listener.onEvent(s, text);
 }
 
-bool FmsSession::upOrRefuse(const char* what) {
+bool FmsCore::upOrRefuse(const char* what) {
     if (m_state != LinkState::Up) {
         // §2.1 rule 1: commands are never queued while the link is down.
         m_counters.add("cmd.refused.link_down");
@@ -76,7 +76,7 @@ bool FmsSession::upOrRefuse(const char* what) {
 }
 
 // One container with our header (the configured Protocol value) and one member.
-std::string FmsSession::frame(const Body& body, std::optional<Guid> eq) const {
+std::string FmsCore::frame(const Body& body, std::optional<Guid> eq) const {
     Envelope env;
     env.header.protocol = m_cfg.rules.protocol;
     env.header.timestamp = makeTimestamp(unixMillisNow());
@@ -85,7 +85,7 @@ std::string FmsSession::frame(const Body& body, std::optional<Guid> eq) const {
     return encodeMessage(env);
 }
 
-bool FmsSession::sendBody(const Body& body, std::optional<Guid> eq) {
+bool FmsCore::sendBody(const Body& body, std::optional<Guid> eq) {
     if (!m_out.sendMain(frame(body, std::move(eq))))
         return false;
     ++m_messagesSent;
@@ -93,7 +93,7 @@ bool FmsSession::sendBody(const Body& body, std::optional<Guid> eq) {
     return true;
 }
 
-bool FmsSession::sendMapBody(const Body& body) {
+bool FmsCore::sendMapBody(const Body& body) {
     if (!separateMapService())
         return sendBody(body);
     if (!m_out.sendMap(frame(body, std::nullopt)))
@@ -102,7 +102,7 @@ bool FmsSession::sendMapBody(const Body& body) {
     return true;
 }
 
-FleetDefinitionV2 FmsSession::ownFleet() const {
+FleetDefinitionV2 FmsCore::ownFleet() const {
     FleetDefinitionV2 f;
     f.ahsId = m_cfg.fmsId;
     for (auto& e : m_cfg.fleet)
@@ -111,7 +111,7 @@ FleetDefinitionV2 FmsSession::ownFleet() const {
     return f;
 }
 
-IsoMachineSnapshot& FmsSession::machine(const Guid& id) {
+IsoMachineSnapshot& FmsCore::machine(const Guid& id) {
     auto it = m_machines.find(id);
     if (it != m_machines.end())
         return it->second;
@@ -121,13 +121,13 @@ IsoMachineSnapshot& FmsSession::machine(const Guid& id) {
     return m;
 }
 
-std::string FmsSession::label(const IsoMachineSnapshot& m) {
+std::string FmsCore::label(const IsoMachineSnapshot& m) {
     return m.hid.empty() ? m.equipmentId : m.hid;
 }
 
 // ---------------------------------------------------------------- main channel
 
-void FmsSession::opened(const std::string& peer) {
+void FmsCore::opened(const std::string& peer) {
     m_state = LinkState::Up;
     m_gotFirstMessage = false;
     if (!separateMapService())
@@ -139,11 +139,11 @@ void FmsSession::opened(const std::string& peer) {
     m_nextPeriodicDiagnostic = m_clock.now() + m_cfg.interfaceDiagnosticPeriod;
 }
 
-void FmsSession::text(std::string_view frame) {
+void FmsCore::text(std::string_view frame) {
     handleFrame(frame, false);
 }
 
-void FmsSession::closed(const std::string& reason) {
+void FmsCore::closed(const std::string& reason) {
     m_state = LinkState::Down;
     m_ackDeadline.at.reset();
     m_statusDeadline.at.reset();
@@ -165,7 +165,7 @@ void FmsSession::closed(const std::string& reason) {
     event(IsoSeverity::Warning, "link " + m_link.name + " down: " + reason);
 }
 
-void FmsSession::connectFailed(const std::string& reason, std::chrono::milliseconds retryIn) {
+void FmsCore::connectFailed(const std::string& reason, std::chrono::milliseconds retryIn) {
     m_counters.add("link.connect_failed");
     if (m_state != LinkState::Down) {
         m_state = LinkState::Down;
@@ -177,7 +177,7 @@ void FmsSession::connectFailed(const std::string& reason, std::chrono::milliseco
 
 // ---------------------------------------------------------------- map service channel (Q10)
 
-void FmsSession::mapOpened(const std::string& peer) {
+void FmsCore::mapOpened(const std::string& peer) {
     m_mapState = LinkState::Up;
     interruptMapTransfer("map service reconnected");
     m_counters.add("map_service.opened");
@@ -187,11 +187,11 @@ void FmsSession::mapOpened(const std::string& peer) {
     m_mapIdentificationDeadline = m_clock.now() + kMapIdentificationWait;
 }
 
-void FmsSession::mapText(std::string_view frame) {
+void FmsCore::mapText(std::string_view frame) {
     handleFrame(frame, true);
 }
 
-void FmsSession::mapClosed(const std::string& reason) {
+void FmsCore::mapClosed(const std::string& reason) {
     m_mapState = LinkState::Down;
     m_mapIdentificationDeadline.reset();
     interruptMapTransfer("map service down");
@@ -200,7 +200,7 @@ void FmsSession::mapClosed(const std::string& reason) {
 
 // ---------------------------------------------------------------- incoming frames
 
-void FmsSession::handleFrame(std::string_view frame, bool mapChannel) {
+void FmsCore::handleFrame(std::string_view frame, bool mapChannel) {
     m_counters.add(mapChannel ? "rx.map_service.frames" : "rx.frames");
     ++m_framesReceived;
     const std::string& from = mapChannel ? "map service of " + m_link.name : m_link.name;
@@ -249,7 +249,7 @@ void FmsSession::handleFrame(std::string_view frame, bool mapChannel) {
     handle(*env, mapChannel);
 }
 
-void FmsSession::handle(const Envelope& env, bool mapChannel) {
+void FmsCore::handle(const Envelope& env, bool mapChannel) {
     const auto& eq = env.header.equipmentId;
     const std::int64_t hdrMs = env.header.timestamp.unixMs.value_or(unixMillisNow());
     for (auto& mem : env.members) {
@@ -326,7 +326,7 @@ void FmsSession::handle(const Envelope& env, bool mapChannel) {
     }
 }
 
-template <class T> void FmsSession::machineMember(IsoMachineSnapshot& m, const T& b, std::int64_t hdrMs) {
+template <class T> void FmsCore::machineMember(IsoMachineSnapshot& m, const T& b, std::int64_t hdrMs) {
     if constexpr (std::is_same_v<T, MachinePositionV1>) {
         if (!b.pose.latitude || !b.pose.longitude) {
             m_counters.add("rx.position_unavailable");
@@ -405,7 +405,7 @@ template <class T> void FmsSession::machineMember(IsoMachineSnapshot& m, const T
 
 // ---------------------------------------------------------------- fleet definition
 
-void FmsSession::onFleet(const FleetDefinitionV2& f) {
+void FmsCore::onFleet(const FleetDefinitionV2& f) {
     m_ahsFleet = f;
     std::set<Guid> listed;
     for (auto& e : f.equipment) {
@@ -433,7 +433,7 @@ void FmsSession::onFleet(const FleetDefinitionV2& f) {
     checkDiscrepancies();
 }
 
-void FmsSession::checkDiscrepancies() {
+void FmsCore::checkDiscrepancies() {
     std::vector<std::string> items;
     std::map<Guid, const Equipment*> ahsById;
     for (auto& e : m_ahsFleet->equipment)
@@ -483,7 +483,7 @@ void FmsSession::checkDiscrepancies() {
 
 // ---------------------------------------------------------------- all-stop (§7.6, §7.7)
 
-void FmsSession::setAllStop(const MachineAllStopV1& s) {
+void FmsCore::setAllStop(const MachineAllStopV1& s) {
     auto& a = m_allStop;
     a.state = s.modeAllStop == "On" ? AllStopState::On : AllStopState::Off;
     a.activeId = s.modeAllStopId;
@@ -500,7 +500,7 @@ void FmsSession::setAllStop(const MachineAllStopV1& s) {
     m_listener.onAllStopChanged(m_link.name, a);
 }
 
-void FmsSession::onAllStopResponse(const MachineAllStopResponseV1& b) {
+void FmsCore::onAllStopResponse(const MachineAllStopResponseV1& b) {
     m_ackDeadline.at.reset();
     std::string d = b.detail ? " (" + *b.detail + ")" : std::string();
     if (b.response == "Accepted") {
@@ -518,7 +518,7 @@ void FmsSession::onAllStopResponse(const MachineAllStopResponseV1& b) {
     }
 }
 
-bool FmsSession::allStopApply() {
+bool FmsCore::allStopApply() {
     if (!upOrRefuse("all-stop Apply"))
         return false;
     Guid id = newGuid();
@@ -532,7 +532,7 @@ bool FmsSession::allStopApply() {
     return true;
 }
 
-bool FmsSession::allStopRemove() {
+bool FmsCore::allStopRemove() {
     if (!upOrRefuse("all-stop Remove"))
         return false;
     // "Same ID used in apply must be used when removing" [OA-iso].
@@ -551,7 +551,7 @@ bool FmsSession::allStopRemove() {
 
 // ---------------------------------------------------------------- assignments (§13.3)
 
-bool FmsSession::requestAssignment(const Guid& equipmentId, std::vector<AssignmentItem> items) {
+bool FmsCore::requestAssignment(const Guid& equipmentId, std::vector<AssignmentItem> items) {
     if (!upOrRefuse("assignment request"))
         return false;
     auto it = m_machines.find(equipmentId);
@@ -583,7 +583,7 @@ bool FmsSession::requestAssignment(const Guid& equipmentId, std::vector<Assignme
     return true;
 }
 
-bool FmsSession::resetAssignment(const Guid& equipmentId) {
+bool FmsCore::resetAssignment(const Guid& equipmentId) {
     if (!upOrRefuse("assignment reset"))
         return false;
     sendBody(HaulTruckAssignmentResetV1{newGuid()}, equipmentId);
@@ -593,7 +593,7 @@ bool FmsSession::resetAssignment(const Guid& equipmentId) {
 
 // ---------------------------------------------------------------- own machines' positions (§7.4)
 
-void FmsSession::sendOwnPositions(const std::map<Guid, IsoPosition>& positions) {
+void FmsCore::sendOwnPositions(const std::map<Guid, IsoPosition>& positions) {
     if (m_state != LinkState::Up)
         return;
     const auto now = unixMillisNow();
@@ -613,7 +613,7 @@ void FmsSession::sendOwnPositions(const std::map<Guid, IsoPosition>& positions) 
 
 // ---------------------------------------------------------------- map service (§10.6)
 
-void FmsSession::onMapService(const MapServiceV1& s, bool mapChannel) {
+void FmsCore::onMapService(const MapServiceV1& s, bool mapChannel) {
     m_counters.add("rx.map_service");
     if (s.api > kMapServiceApi)
         logInfo(kLog, "map service of " + m_link.name + " offers API " + std::to_string(s.api) + "; using " +
@@ -629,7 +629,7 @@ void FmsSession::onMapService(const MapServiceV1& s, bool mapChannel) {
         sendMapBody(MapCommandV1{"GET", "/summary"});
 }
 
-bool FmsSession::fetchMap() {
+bool FmsCore::fetchMap() {
     if (separateMapService()) {
         if (m_mapState != LinkState::Up) {
             m_counters.add("cmd.refused.link_down");
@@ -645,13 +645,13 @@ bool FmsSession::fetchMap() {
     return true;
 }
 
-void FmsSession::requestMap() {
+void FmsCore::requestMap() {
     m_fetchPending = true;
     sendMapBody(MapCommandV1{"GET", "/"});
     m_counters.add("map.fetch");
 }
 
-void FmsSession::interruptMapTransfer(const std::string& why) {
+void FmsCore::interruptMapTransfer(const std::string& why) {
     if (m_assembler.active()) {
         m_assembler.reset();
         event(IsoSeverity::Warning, "map transfer from " + m_link.name + " interrupted (" + why + ")" +
@@ -660,7 +660,7 @@ void FmsSession::interruptMapTransfer(const std::string& why) {
     m_fetchPending = false;
 }
 
-void FmsSession::onSummary(const MapSummaryV1& s) {
+void FmsCore::onSummary(const MapSummaryV1& s) {
     if (m_assembler.active()) {
         if (m_fetchingSummary && m_fetchingSummary->changeSetMap == s.changeSetMap &&
             m_fetchingSummary->changeSetWay == s.changeSetWay)
@@ -687,7 +687,7 @@ void FmsSession::onSummary(const MapSummaryV1& s) {
         requestMap();
 }
 
-void FmsSession::onChunk(std::string_view xml) {
+void FmsCore::onChunk(std::string_view xml) {
     if (!m_assembler.active()) {
         m_counters.add("rx.rejected.unexpected_map_chunk");
         event(IsoSeverity::Warning,
@@ -708,7 +708,7 @@ void FmsSession::onChunk(std::string_view xml) {
         finishMap();
 }
 
-void FmsSession::finishMap() {
+void FmsCore::finishMap() {
     auto m = m_assembler.finish();
     if (!m) {
         m_counters.add("rx.rejected.map");
@@ -730,8 +730,8 @@ void FmsSession::finishMap() {
 
 // ---------------------------------------------------------------- interface diagnostic (§5 #15 [I])
 
-void FmsSession::reportError(const std::string& code, const std::string& detail,
-                             std::optional<std::string> refMember, std::optional<Timestamp> refTimestamp) {
+void FmsCore::reportError(const std::string& code, const std::string& detail,
+                          std::optional<std::string> refMember, std::optional<Timestamp> refTimestamp) {
     if (m_state != LinkState::Up)
         return;
     if (m_pendingErrors.size() >= kMaxPendingErrors) {
@@ -747,7 +747,7 @@ void FmsSession::reportError(const std::string& code, const std::string& detail,
         flushErrorDiagnostics();
 }
 
-void FmsSession::flushErrorDiagnostics() {
+void FmsCore::flushErrorDiagnostics() {
     if (m_pendingErrors.empty())
         return;
     InterfaceDiagnosticV1 d;
@@ -762,7 +762,7 @@ void FmsSession::flushErrorDiagnostics() {
         m_counters.add("tx.interface_diagnostic.error");
 }
 
-void FmsSession::sendPeriodicDiagnostic() {
+void FmsCore::sendPeriodicDiagnostic() {
     InterfaceDiagnosticV1 d;
     d.measurement = {
         {"MessagesReceived", static_cast<double>(m_framesReceived), "count"},
@@ -776,7 +776,7 @@ void FmsSession::sendPeriodicDiagnostic() {
 
 // ---------------------------------------------------------------- timers
 
-void FmsSession::poll() {
+void FmsCore::poll() {
     const auto now = m_clock.now();
     for (Deadline* d : {&m_ackDeadline, &m_statusDeadline}) {
         if (d->at && now >= *d->at) {

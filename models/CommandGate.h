@@ -16,10 +16,10 @@ namespace ocu {
 
 class AlarmModel;
 
-class StopController : public QObject {
+class CommandGate : public QObject {
     Q_OBJECT
 public:
-    explicit StopController(AlarmModel* alarms = nullptr, QObject* parent = nullptr);
+    explicit CommandGate(AlarmModel* alarms = nullptr, QObject* parent = nullptr);
 
     void addBridge(FleetBridge* bridge);
     QVector<FleetBridge*> bridges() const;

@@ -1,7 +1,7 @@
 // The site configuration's iso23725 section: every key read, defaults, and strict errors naming the key.
-#include "iso23725/IsoConfig.h"
+#include "protocols/iso23725/IsoConfig.h"
 
-#include "common/ConfigReader.h"
+#include "protocols/common/ConfigReader.h"
 
 #include <QtTest>
 
@@ -78,4 +78,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestIsoConfig)
-#include "tst_iso_config.moc"
+#include "test_iso_config.moc"

@@ -3,7 +3,7 @@
 // (rate-limited per machine, default 1 Hz; stop/link/mode/control/health/staleness changes are printed at
 // once), link changes and alarm/event entries; JSON-line commands on an input device (stdin) answered with
 // one result line each. Role and authority are enforced by the bridges, exactly as for the GUI, and every
-// command is audited by the StopController.
+// command is audited by the CommandGate.
 //
 // Output lines:
 //   {"type":"machine","id":"jaus:101","protocol":"jaus","name":..,"machine_type":..,"lat":..,"lon":..,"e":..,
@@ -35,8 +35,9 @@ namespace ocu {
 
 class AlarmModel;
 class FleetBridge;
+class FleetContext;
 class FleetModel;
-class StopController;
+class CommandGate;
 struct LinkStatus;
 struct FleetEvent;
 struct MachineState;
@@ -44,7 +45,10 @@ struct MachineState;
 class HeadlessMonitor : public QObject {
     Q_OBJECT
 public:
-    HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, StopController* stop, QObject* parent = nullptr);
+    HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, CommandGate* stop, QObject* parent = nullptr);
+    // A monitor over the context's models, connected to its bridges now and to those added later;
+    // `out` = nullptr means stdout. Owned by the context.
+    static HeadlessMonitor* attach(FleetContext* ctx, QIODevice* out = nullptr);
     ~HeadlessMonitor() override;
 
     // Output device (not owned); default stdout.
@@ -82,7 +86,7 @@ private:
 
     QPointer<FleetModel> m_fleet;
     QPointer<AlarmModel> m_alarms;
-    QPointer<StopController> m_stop;
+    QPointer<CommandGate> m_gate;
     QPointer<QIODevice> m_out;
     std::unique_ptr<QFile> m_stdout;
     int m_rateMs = 1000;

@@ -1,8 +1,8 @@
-// FmsSession on a fake clock, no sockets: the fleet definition goes first, commands are refused while down,
+// FmsCore on a fake clock, no sockets: the fleet definition goes first, commands are refused while down,
 // the all-stop acknowledgement and status timeouts raise their alarms exactly at the deadline, state comes
 // only from MachineAllStopV1, interface diagnostics are sent every period and on error (rate-limited), and a
 // separate map-service socket (Q10) carries the map exchange.
-#include "iso23725/FmsSession.h"
+#include "protocols/iso23725/FmsCore.h"
 
 #include <QtTest>
 
@@ -105,14 +105,14 @@ FleetDefinitionV2 ahsFleet() {
 
 struct Fixture {
     explicit Fixture(IsoLinkConfig link = IsoLinkConfig{"ahs", {}, {}}) : cfg(config()) {
-        session = std::make_unique<FmsSession>(cfg, std::move(link), listener, counters, clock, out);
+        session = std::make_unique<FmsCore>(cfg, std::move(link), listener, counters, clock, out);
     }
     IsoConfig cfg;
     FakeClock clock;
     Counters counters;
     Listener listener;
     Outbound out;
-    std::unique_ptr<FmsSession> session;
+    std::unique_ptr<FmsCore> session;
 
     void connect() {
         session->opened("127.0.0.1:9000");
@@ -134,7 +134,7 @@ std::string mapExample() {
 
 } // namespace
 
-class TestFmsSession : public QObject {
+class TestFmsCore : public QObject {
     Q_OBJECT
 private slots:
     void fleetDefinitionFirstWithMannedMachinesOnly() {
@@ -435,5 +435,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFmsSession)
-#include "tst_iso_fms_session.moc"
+QTEST_GUILESS_MAIN(TestFmsCore)
+#include "test_iso_fms_core.moc"

@@ -1,9 +1,10 @@
-#include "models/HeadlessMonitor.h"
+#include "app/HeadlessMonitor.h"
 
 #include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/FleetBridge.h"
+#include "models/FleetContext.h"
 #include "models/FleetModel.h"
-#include "models/StopController.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -14,8 +15,8 @@
 
 namespace ocu {
 
-HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, StopController* stop, QObject* parent)
-    : QObject(parent), m_fleet(fleet), m_alarms(alarms), m_stop(stop) {
+HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, CommandGate* stop, QObject* parent)
+    : QObject(parent), m_fleet(fleet), m_alarms(alarms), m_gate(stop) {
     m_clock.start();
     if (fleet) {
         connect(fleet, &FleetModel::machinesChanged, this, &HeadlessMonitor::onMachinesChanged);
@@ -37,6 +38,16 @@ HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, StopCont
 }
 
 HeadlessMonitor::~HeadlessMonitor() = default;
+
+HeadlessMonitor* HeadlessMonitor::attach(FleetContext* ctx, QIODevice* out) {
+    auto* mon = new HeadlessMonitor(ctx->fleet(), ctx->alarms(), ctx->gate(), ctx);
+    for (FleetBridge* b : ctx->bridges())
+        mon->addBridge(b);
+    connect(ctx, &FleetContext::bridgeAdded, mon, &HeadlessMonitor::addBridge);
+    if (out)
+        mon->setOutput(out);
+    return mon;
+}
 
 void HeadlessMonitor::setOutput(QIODevice* out) {
     m_out = out;
@@ -240,17 +251,17 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
         printAll();
         return result(cmd, true, QStringLiteral("%1 machines").arg(m_fleet ? m_fleet->rowCount() : 0));
     }
-    if (!m_stop)
+    if (!m_gate)
         return result(cmd, false, QStringLiteral("no stop controller"));
     const QString origin = QStringLiteral("headless");
     if (name == QLatin1String("stop_all")) {
-        const CommandResult r = m_stop->stopAll(origin);
+        const CommandResult r = m_gate->stopAll(origin);
         return result(cmd, r.ok, r.message);
     }
     if (name == QLatin1String("stop")) {
         if (id.isEmpty())
             return result(cmd, false, QStringLiteral("missing \"id\""));
-        const CommandResult r = m_stop->stopMachine(id, origin);
+        const CommandResult r = m_gate->stopMachine(id, origin);
         return result(cmd, r.ok, r.message);
     }
     if (name == QLatin1String("clear_stop")) {
@@ -258,18 +269,18 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
             return result(cmd, false, QStringLiteral("missing \"id\""));
         // The scripted equivalent of the GUI's deliberate hold: an explicit "confirm": true.
         if (cmd.value(QStringLiteral("confirm")).toBool(false) != true) {
-            const CommandResult r = m_stop->clearStop(id, QString(), origin); // audited refusal
+            const CommandResult r = m_gate->clearStop(id, QString(), origin); // audited refusal
             return result(cmd, false, r.message + QStringLiteral(" (add \"confirm\": true)"));
         }
-        const CommandResult r = m_stop->clearStop(id, m_stop->requestClearToken(id), origin);
+        const CommandResult r = m_gate->clearStop(id, m_gate->requestClearToken(id), origin);
         return result(cmd, r.ok, r.message);
     }
     const bool forProtocol = id.isEmpty() && cmd.contains(QStringLiteral("protocol"));
     if (name == QLatin1String("request_control") || name == QLatin1String("release_control") ||
-        name == QLatin1String("drive") || (!name.isEmpty() && (m_stop->bridgeFor(id) || forProtocol))) {
+        name == QLatin1String("drive") || (!name.isEmpty() && (m_gate->bridgeFor(id) || forProtocol))) {
         if (id.isEmpty() && !forProtocol)
             return result(cmd, false, QStringLiteral("missing \"id\""));
-        const CommandResult r = m_stop->command(name, cmd, origin);
+        const CommandResult r = m_gate->command(name, cmd, origin);
         return result(cmd, r.ok, r.message);
     }
     return result(cmd, false,

@@ -4,12 +4,12 @@
 // service, interface diagnostics. Frames come in as text and leave through FmsOutbound; every timeout is
 // measured on an ocu::Clock and checked by poll(), so the whole session runs on a FakeClock in tests.
 // Not thread-safe: IsoStack calls it on its io thread only.
-#include "IsoConfig.h"
-#include "MapModel.h"
-#include "Messages.h"
+#include "protocols/iso23725/IsoConfig.h"
+#include "protocols/iso23725/MapModel.h"
+#include "protocols/iso23725/Messages.h"
 
-#include "common/Clock.h"
-#include "common/Counters.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
 
 #include <cstdint>
 #include <functional>
@@ -113,10 +113,10 @@ public:
     virtual bool sendMap(std::string text) = 0;
 };
 
-class FmsSession {
+class FmsCore {
 public:
-    FmsSession(const IsoConfig& config, IsoLinkConfig link, IsoListener& listener, Counters& counters,
-               const Clock& clock, FmsOutbound& out);
+    FmsCore(const IsoConfig& config, IsoLinkConfig link, IsoListener& listener, Counters& counters,
+            const Clock& clock, FmsOutbound& out);
 
     const std::string& name() const { return m_link.name; }
     // Q10: the map service is served on its own socket (link.mapWs.url set) rather than on the main one.

@@ -11,10 +11,10 @@
 #include <random>
 #include <thread>
 
-#include "common/GeoFrame.h"
-#include "common/Log.h"
-#include "common/Udp.h"
-#include "jaus/JausStack.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/common/Log.h"
+#include "protocols/common/Udp.h"
+#include "protocols/jaus/JausStack.h"
 #include "sim/jaus/JausDemo.h"
 
 using namespace ocu;
@@ -341,4 +341,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestJausLoopback)
-#include "test_jaus_loopback.moc"
+#include "test_jaus_stack.moc"

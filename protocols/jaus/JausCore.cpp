@@ -1,9 +1,9 @@
-#include "jaus/OcuCore.h"
+#include "protocols/jaus/JausCore.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "common/Log.h"
+#include "protocols/common/Log.h"
 
 namespace ocu::jaus {
 
@@ -97,27 +97,27 @@ const char* toString(EventKind k) {
     return "?";
 }
 
-OcuCore::OcuCore(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock,
-                 Counters& counters)
+JausCore::JausCore(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock,
+                   Counters& counters)
     : m_cfg(std::move(config)), m_listener(listener), m_out(output), m_clock(clock), m_counters(counters),
       m_self(m_cfg.ownId()) {}
 
-void OcuCore::send(const JausId& dst, const Bytes& payload, SendOptions o) {
+void JausCore::send(const JausId& dst, const Bytes& payload, SendOptions o) {
     m_counters.add("tx.messages");
     m_out.send(dst, payload, o);
 }
 
-void OcuCore::notify(Severity s, EventKind k, std::uint16_t ss, std::string text) {
+void JausCore::notify(Severity s, EventKind k, std::uint16_t ss, std::string text) {
     if (s != Severity::Info)
         logWarning(kLog, text);
     m_listener.onEvent(JausEvent{s, k, ss, std::move(text)});
 }
 
-void OcuCore::changed(Remote& r) {
+void JausCore::changed(Remote& r) {
     m_listener.onSubsystemChanged(r.snap);
 }
 
-OcuCore::Remote& OcuCore::remote(std::uint16_t ss) {
+JausCore::Remote& JausCore::remote(std::uint16_t ss) {
     auto it = m_remotes.find(ss);
     if (it != m_remotes.end())
         return it->second;
@@ -130,39 +130,39 @@ OcuCore::Remote& OcuCore::remote(std::uint16_t ss) {
     return r;
 }
 
-OcuCore::Remote* OcuCore::find(std::uint16_t ss) {
+JausCore::Remote* JausCore::find(std::uint16_t ss) {
     auto it = m_remotes.find(ss);
     return it == m_remotes.end() ? nullptr : &it->second;
 }
 
-std::optional<SubsystemSnapshot> OcuCore::snapshot(std::uint16_t ss) const {
+std::optional<SubsystemSnapshot> JausCore::snapshot(std::uint16_t ss) const {
     auto it = m_remotes.find(ss);
     if (it == m_remotes.end())
         return std::nullopt;
     return it->second.snap;
 }
 
-std::vector<std::uint16_t> OcuCore::subsystems() const {
+std::vector<std::uint16_t> JausCore::subsystems() const {
     std::vector<std::uint16_t> out;
     for (auto& [k, v] : m_remotes)
         out.push_back(k);
     return out;
 }
 
-bool OcuCore::anyDriveActive() const {
+bool JausCore::anyDriveActive() const {
     for (auto& [k, r] : m_remotes)
         if (r.driveActive || r.stopRepeatsLeft > 0)
             return true;
     return false;
 }
 
-bool OcuCore::refuse(std::uint16_t ss, const std::string& why) {
+bool JausCore::refuse(std::uint16_t ss, const std::string& why) {
     m_counters.add("cmd.refused");
     notify(Severity::Warning, EventKind::CommandRefused, ss, why);
     return false;
 }
 
-void OcuCore::discoverNow() {
+void JausCore::discoverNow() {
     m_lastDiscovery = m_clock.now();
     // Subsystem-level identification to everyone (AEP-4818 §6.2.2.2.1.1, §9 item 6).
     send(kBroadcastAll, encode(QueryIdentification{IdQueryType::Subsystem}));
@@ -170,7 +170,7 @@ void OcuCore::discoverNow() {
 
 // ---- received messages ------------------------------------------------------------------------------------
 
-void OcuCore::handle(const JausId& src, const JausId& dst, ByteSpan payload) {
+void JausCore::handle(const JausId& src, const JausId& dst, ByteSpan payload) {
     if (src == m_self)
         return; // our own multicast looped back
     const std::uint16_t id = peekMessageId(payload);
@@ -241,7 +241,7 @@ void OcuCore::handle(const JausId& src, const JausId& dst, ByteSpan payload) {
     handleReport(r, src, id, payload);
 }
 
-void OcuCore::answerOwn(const JausId& src, std::uint16_t id, ByteSpan payload) {
+void JausCore::answerOwn(const JausId& src, std::uint16_t id, ByteSpan payload) {
     // The OCU is a JAUS subsystem too (issue 3 §2): identification, services, heartbeat.
     switch (id) {
     case msg::QueryIdentification: {
@@ -288,7 +288,7 @@ void OcuCore::answerOwn(const JausId& src, std::uint16_t id, ByteSpan payload) {
     }
 }
 
-void OcuCore::onServices(Remote& r, const JausId& src, const std::vector<NodeServices>& nodes) {
+void JausCore::onServices(Remote& r, const JausId& src, const std::vector<NodeServices>& nodes) {
     // Merge (peers send duplicates, jaus-wire.md §6.7).
     for (auto& n : nodes) {
         auto nit = std::find_if(r.snap.services.begin(), r.snap.services.end(),
@@ -349,8 +349,8 @@ void OcuCore::onServices(Remote& r, const JausId& src, const std::vector<NodeSer
     changed(r);
 }
 
-void OcuCore::subscribe(Remote& r, const JausId& target, std::uint16_t queryId, Bytes query, double rateHz,
-                        EventType type) {
+void JausCore::subscribe(Remote& r, const JausId& target, std::uint16_t queryId, Bytes query, double rateHz,
+                         EventType type) {
     Subscription s;
     s.type = type;
     s.queryId = queryId;
@@ -360,7 +360,7 @@ void OcuCore::subscribe(Remote& r, const JausId& target, std::uint16_t queryId, 
     r.subs[queryId] = std::move(s);
 }
 
-void OcuCore::handleReport(Remote& r, const JausId& src, std::uint16_t id, ByteSpan p) {
+void JausCore::handleReport(Remote& r, const JausId& src, std::uint16_t id, ByteSpan p) {
     auto reject = [&](const std::string& err) {
         m_counters.add("rx.rejected." + rejectReason(err));
         logWarning(kLog, "from " + src.toString() + ": " + err);
@@ -598,7 +598,7 @@ void OcuCore::handleReport(Remote& r, const JausId& src, std::uint16_t id, ByteS
     }
 }
 
-void OcuCore::onControlLost(Remote& r, const std::string& why) {
+void JausCore::onControlLost(Remote& r, const std::string& why) {
     r.wantControl = false;
     r.snap.controlledByUs = false;
     r.driveActive = false;
@@ -614,7 +614,7 @@ void OcuCore::onControlLost(Remote& r, const std::string& why) {
     changed(r);
 }
 
-void OcuCore::classify(Remote& r, const ReportControl& rc) {
+void JausCore::classify(Remote& r, const ReportControl& rc) {
     r.classifyLoss = false;
     r.snap.controlledByUs = false;
     r.wantControl = false;
@@ -635,7 +635,7 @@ void OcuCore::classify(Remote& r, const ReportControl& rc) {
 
 // ---- commands ---------------------------------------------------------------------------------------------
 
-bool OcuCore::requestControl(std::uint16_t ss) {
+bool JausCore::requestControl(std::uint16_t ss) {
     if (!m_cfg.mayControl())
         return refuse(ss, "the monitor role (authority 0) never requests control");
     Remote* r = find(ss);
@@ -653,7 +653,7 @@ bool OcuCore::requestControl(std::uint16_t ss) {
     return true;
 }
 
-bool OcuCore::releaseControl(std::uint16_t ss) {
+bool JausCore::releaseControl(std::uint16_t ss) {
     Remote* r = find(ss);
     if (!r || !r->snap.mobilityComponent.subsystem)
         return refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
@@ -672,13 +672,13 @@ bool OcuCore::releaseControl(std::uint16_t ss) {
     return true;
 }
 
-void OcuCore::releaseAll() {
+void JausCore::releaseAll() {
     for (auto& [ss, r] : m_remotes)
         if (r.wantControl || r.snap.controlledByUs)
             releaseControl(ss);
 }
 
-bool OcuCore::setEmergency(std::uint16_t ss, EmergencyCode code) {
+bool JausCore::setEmergency(std::uint16_t ss, EmergencyCode code) {
     // Allowed for every role, the monitor included: an E-stop must never be refused by the console.
     Remote* r = find(ss);
     if (!r)
@@ -698,7 +698,7 @@ bool OcuCore::setEmergency(std::uint16_t ss, EmergencyCode code) {
     return true;
 }
 
-bool OcuCore::clearEmergency(std::uint16_t ss) {
+bool JausCore::clearEmergency(std::uint16_t ss) {
     if (m_cfg.role == Role::Monitor)
         return refuse(ss, "the monitor role may not clear an emergency");
     Remote* r = find(ss);
@@ -711,7 +711,7 @@ bool OcuCore::clearEmergency(std::uint16_t ss) {
     return true;
 }
 
-bool OcuCore::management(std::uint16_t ss, std::uint16_t id, const char* what) {
+bool JausCore::management(std::uint16_t ss, std::uint16_t id, const char* what) {
     if (!m_cfg.mayControl())
         return refuse(ss, std::string("the monitor role may not ") + what);
     Remote* r = find(ss);
@@ -724,7 +724,7 @@ bool OcuCore::management(std::uint16_t ss, std::uint16_t id, const char* what) {
     return true;
 }
 
-bool OcuCore::startDriving(std::uint16_t ss) {
+bool JausCore::startDriving(std::uint16_t ss) {
     if (!m_cfg.mayControl())
         return refuse(ss, "the monitor role may not drive");
     Remote* r = find(ss);
@@ -749,7 +749,7 @@ bool OcuCore::startDriving(std::uint16_t ss) {
     return true;
 }
 
-bool OcuCore::setDriveCommand(std::uint16_t ss, DriveCommand c) {
+bool JausCore::setDriveCommand(std::uint16_t ss, DriveCommand c) {
     Remote* r = find(ss);
     if (!r || !r->driveActive)
         return refuse(ss, "no drive session open for subsystem " + std::to_string(ss));
@@ -778,7 +778,7 @@ bool OcuCore::setDriveCommand(std::uint16_t ss, DriveCommand c) {
     return true;
 }
 
-bool OcuCore::stopDriving(std::uint16_t ss) {
+bool JausCore::stopDriving(std::uint16_t ss) {
     Remote* r = find(ss);
     if (!r)
         return refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
@@ -795,7 +795,7 @@ bool OcuCore::stopDriving(std::uint16_t ss) {
     return true;
 }
 
-void OcuCore::sendDrive(Remote& r, bool zero) {
+void JausCore::sendDrive(Remote& r, bool zero) {
     r.lastDriveSent = m_clock.now();
     const DriveCommand c = r.drive;
     if (c.mode == DriveCommand::Mode::Velocity) {
@@ -813,7 +813,7 @@ void OcuCore::sendDrive(Remote& r, bool zero) {
     m_counters.add("tx.drive");
 }
 
-Duration OcuCore::reRequestPeriod(const Remote& r) const {
+Duration JausCore::reRequestPeriod(const Remote& r) const {
     const double timeout = r.snap.accessTimeoutS > 0 ? r.snap.accessTimeoutS : m_cfg.accessTimeoutS;
     // Re-request well inside the timeout (AEP-4818 §4.3.4): 40 % of it, i.e. at most half.
     return secondsD(timeout * 0.4);
@@ -822,7 +822,7 @@ Duration OcuCore::reRequestPeriod(const Remote& r) const {
 // ---- timers
 // -------------------------------------------------------------------------------------------------
 
-void OcuCore::tick() {
+void JausCore::tick() {
     const TimePoint now = m_clock.now();
     if (!m_started || now - m_lastDiscovery >= secondsD(m_cfg.discoveryIntervalS)) {
         m_started = true;
@@ -832,7 +832,7 @@ void OcuCore::tick() {
         tickRemote(r, now);
 }
 
-void OcuCore::tickRemote(Remote& r, TimePoint now) {
+void JausCore::tickRemote(Remote& r, TimePoint now) {
     // Liveness: any message counts; down after linkLostS (AEP-4818 §9 item 9).
     const Duration age = now - r.lastHeard;
     const Duration lost = secondsD(m_cfg.linkLostS);

@@ -1,8 +1,8 @@
 // OCU <-> simulated AHS over wss:// with a test CA made by the test (openssl command): the full exchange
 // works, a wrong CA and a wrong host name are refused (verification on by default), and mutual TLS with a
 // client certificate works.
-#include "IsoTestSupport.h"
 #include "sim/iso23725/SimulatedAhs.h"
+#include "tests/protocols/iso23725/IsoTestSupport.h"
 
 #include <QtTest>
 
@@ -201,4 +201,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestIsoEndToEndTls)
-#include "tst_iso_e2e_tls.moc"
+#include "test_iso_e2e_tls.moc"

@@ -1,6 +1,6 @@
 // ISO 23725 map model: the note's example chunk parses into roads/areas with tags; chunking, sequence and the
 // ID rules (§10.2) are enforced with messages naming chunk and rule; MapConnectivityV1 routes.
-#include "iso23725/MapModel.h"
+#include "protocols/iso23725/MapModel.h"
 
 #include <QtTest>
 
@@ -165,4 +165,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestIsoMap)
-#include "tst_iso_map.moc"
+#include "test_iso_map.moc"

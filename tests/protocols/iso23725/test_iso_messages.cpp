@@ -1,8 +1,8 @@
 // ISO 23725 codec: every catalogue example round-trips; each rejection names the member and the message;
 // the tolerance rules of the note (§9) hold and can be switched off in InferredRules.
-#include "iso23725/Messages.h"
+#include "protocols/iso23725/Messages.h"
 
-#include "IsoTestData.h"
+#include "tests/protocols/iso23725/IsoTestData.h"
 
 #include <QtTest>
 
@@ -50,7 +50,7 @@ private slots:
             QVERIFY(again.ok());
             QCOMPARE(toJson(*again), back);
         }
-        // Rows 1-13 and 15-24 of the catalogue (14 is the XML map document, tested in tst_iso_map).
+        // Rows 1-13 and 15-24 of the catalogue (14 is the XML map document, tested in test_iso_map).
         for (const char* n : {"FleetDefinitionV2",
                               "MachineAllStopRequestV1",
                               "MachineAllStopResponseV1",
@@ -276,4 +276,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestIsoMessages)
-#include "tst_iso_messages.moc"
+#include "test_iso_messages.moc"

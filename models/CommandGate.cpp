@@ -1,4 +1,4 @@
-#include "models/StopController.h"
+#include "models/CommandGate.h"
 
 #include "models/AlarmModel.h"
 
@@ -9,14 +9,14 @@
 
 namespace ocu {
 
-StopController::StopController(AlarmModel* alarms, QObject* parent) : QObject(parent), m_alarms(alarms) {}
+CommandGate::CommandGate(AlarmModel* alarms, QObject* parent) : QObject(parent), m_alarms(alarms) {}
 
-void StopController::addBridge(FleetBridge* bridge) {
+void CommandGate::addBridge(FleetBridge* bridge) {
     if (bridge && !m_bridges.contains(bridge))
         m_bridges.push_back(bridge);
 }
 
-QVector<FleetBridge*> StopController::bridges() const {
+QVector<FleetBridge*> CommandGate::bridges() const {
     QVector<FleetBridge*> out;
     for (const auto& b : m_bridges)
         if (b)
@@ -24,14 +24,14 @@ QVector<FleetBridge*> StopController::bridges() const {
     return out;
 }
 
-FleetBridge* StopController::bridgeFor(const QString& machineId) const {
+FleetBridge* CommandGate::bridgeFor(const QString& machineId) const {
     for (const auto& b : m_bridges)
         if (b && b->ownsMachine(machineId))
             return b.data();
     return nullptr;
 }
 
-CommandResult StopController::stopAll(const QString& origin) {
+CommandResult CommandGate::stopAll(const QString& origin) {
     // Every bridge gets the stop even if an earlier one refused: a partial stop beats no stop.
     QStringList failures;
     int sent = 0;
@@ -52,7 +52,7 @@ CommandResult StopController::stopAll(const QString& origin) {
     return result;
 }
 
-CommandResult StopController::stopMachine(const QString& id, const QString& origin) {
+CommandResult CommandGate::stopMachine(const QString& id, const QString& origin) {
     FleetBridge* b = bridgeFor(id);
     const CommandResult r =
         b ? b->stopMachine(id) : CommandResult::failure(QStringLiteral("unknown machine %1").arg(id));
@@ -60,7 +60,7 @@ CommandResult StopController::stopMachine(const QString& id, const QString& orig
     return r;
 }
 
-QString StopController::requestClearToken(const QString& id) {
+QString CommandGate::requestClearToken(const QString& id) {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     // Forget expired tokens.
     for (auto it = m_tokens.begin(); it != m_tokens.end();)
@@ -70,7 +70,7 @@ QString StopController::requestClearToken(const QString& id) {
     return token;
 }
 
-CommandResult StopController::clearStop(const QString& id, const QString& token, const QString& origin) {
+CommandResult CommandGate::clearStop(const QString& id, const QString& token, const QString& origin) {
     CommandResult r;
     auto it = m_tokens.find(token);
     if (token.isEmpty() || it == m_tokens.end() || it->id != id ||
@@ -85,7 +85,7 @@ CommandResult StopController::clearStop(const QString& id, const QString& token,
     return r;
 }
 
-CommandResult StopController::command(const QString& name, const QJsonObject& args, const QString& origin) {
+CommandResult CommandGate::command(const QString& name, const QJsonObject& args, const QString& origin) {
     const QString id = args.value(QStringLiteral("id")).toString();
     FleetBridge* b = bridgeFor(id);
     if (id.isEmpty() && args.contains(QStringLiteral("protocol"))) {
@@ -103,8 +103,8 @@ CommandResult StopController::command(const QString& name, const QJsonObject& ar
     return r;
 }
 
-void StopController::audit(const QString& origin, const QString& action, const QString& target,
-                           const CommandResult& result) {
+void CommandGate::audit(const QString& origin, const QString& action, const QString& target,
+                        const CommandResult& result) {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     QJsonObject o;
     o[QStringLiteral("time")] = QDateTime::fromMSecsSinceEpoch(now, Qt::UTC).toString(Qt::ISODateWithMs);

@@ -9,19 +9,19 @@
 #include <set>
 #include <string>
 
-#include "common/Clock.h"
-#include "common/Counters.h"
-#include "jaus/JausConfig.h"
-#include "jaus/JausOutput.h"
-#include "jaus/JausTypes.h"
-#include "jaus/Messages.h"
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
+#include "protocols/jaus/JausConfig.h"
+#include "protocols/jaus/JausOutput.h"
+#include "protocols/jaus/JausTypes.h"
+#include "protocols/jaus/Messages.h"
 
 namespace ocu::jaus {
 
-class OcuCore {
+class JausCore {
 public:
-    OcuCore(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock,
-            Counters& counters);
+    JausCore(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock,
+             Counters& counters);
 
     // One received (reassembled) message.
     void handle(const JausId& source, const JausId& destination, ByteSpan payload);

@@ -1,4 +1,4 @@
-#include "JausSubsystemModel.h"
+#include "models/jaus/JausSubsystemModel.h"
 
 #include <QBrush>
 #include <QColor>

@@ -1,7 +1,7 @@
-// StopController fan-out, confirmation tokens and audit; AlarmModel acknowledgement, filter and CSV export.
+// CommandGate fan-out, confirmation tokens and audit; AlarmModel acknowledgement, filter and CSV export.
 #include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/FleetModel.h"
-#include "models/StopController.h"
 #include "models/testing/FakeFleetBridge.h"
 
 #include <QBuffer>
@@ -33,7 +33,7 @@ private slots:
         FleetModel fleet;
         fleet.setRefreshIntervalMs(0);
         AlarmModel alarms;
-        StopController stop(&alarms);
+        CommandGate stop(&alarms);
         stop.setAuditLogPath(dir.filePath(QStringLiteral("audit.jsonl")));
         FakeFleetBridge jaus(Protocol::Jaus), iso(Protocol::Iso23725), osy(Protocol::Osyris);
         for (FakeFleetBridge* b : {&jaus, &iso, &osy}) {
@@ -71,7 +71,7 @@ private slots:
 
     void stopAllStillReachesOthersWhenOneRefuses() {
         AlarmModel alarms;
-        StopController stop(&alarms);
+        CommandGate stop(&alarms);
         FakeFleetBridge a(Protocol::Jaus), b(Protocol::Iso23725);
         a.refusedCommands = {QStringLiteral("stop_all")};
         stop.addBridge(&a);
@@ -86,7 +86,7 @@ private slots:
 
     void stopNeedsNoConfirmationButReleaseDoes() {
         AlarmModel alarms;
-        StopController stop(&alarms);
+        CommandGate stop(&alarms);
         FakeFleetBridge jaus(Protocol::Jaus), iso(Protocol::Iso23725);
         stop.addBridge(&jaus);
         stop.addBridge(&iso);
@@ -228,4 +228,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestStopAlarms)
-#include "test_stop_alarms.moc"
+#include "test_command_gate.moc"

@@ -1,9 +1,9 @@
 // HeadlessMonitor: machine/link/event lines, per-machine rate limit, commands and their results.
+#include "app/HeadlessMonitor.h"
 #include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
-#include "models/HeadlessMonitor.h"
-#include "models/StopController.h"
 #include "models/testing/FakeFleetBridge.h"
 
 #include <QBuffer>
@@ -36,7 +36,7 @@ MachineState machine(const QString& id, double e) {
 struct Rig {
     FleetModel fleet;
     AlarmModel alarms;
-    StopController stop{&alarms};
+    CommandGate stop{&alarms};
     HeadlessMonitor monitor{&fleet, &alarms, &stop};
     FakeFleetBridge jaus{Protocol::Jaus}, iso{Protocol::Iso23725}, osy{Protocol::Osyris};
     QBuffer out;
@@ -248,7 +248,7 @@ private slots:
         out.open(QIODevice::ReadWrite);
         FakeFleetBridge early(Protocol::Jaus), late(Protocol::Osyris);
         ctx.addBridge(&early);
-        ctx.createHeadlessMonitor(&out);
+        HeadlessMonitor::attach(&ctx, &out);
         ctx.addBridge(&late);
         ctx.addBridge(&late); // idempotent
         QCOMPARE(ctx.bridges().size(), 2);
@@ -258,7 +258,7 @@ private slots:
         QCoreApplication::processEvents();
         QCOMPARE(ctx.fleet()->rowCount(), 2);
         QCOMPARE(ctx.alarms()->unacknowledgedCount(), 1); // link loss
-        QVERIFY(ctx.stop()->stopAll().ok);
+        QVERIFY(ctx.gate()->stopAll().ok);
         QCOMPARE(early.calls().size(), 1);
         QCOMPARE(late.calls().size(), 1);
         const QByteArray text = out.data();

@@ -3,11 +3,11 @@
 // InterfaceDiagnosticV1, and the map service on its own socket (research note Q10).
 #include "sim/iso23725/SimulatedAhs.h"
 
-#include "iso23725/Messages.h"
-#include "iso23725/WsTransport.h"
+#include "protocols/iso23725/Messages.h"
+#include "protocols/iso23725/WsTransport.h"
 
-#include "common/Counters.h"
-#include "common/IoThread.h"
+#include "protocols/common/Counters.h"
+#include "protocols/common/IoThread.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -532,4 +532,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestSimAhsServices)
-#include "tst_sim_ahs_services.moc"
+#include "test_sim_ahs_services.moc"

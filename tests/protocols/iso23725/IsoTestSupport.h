@@ -1,6 +1,6 @@
 #pragma once
 // Shared helpers of the ISO 23725 end-to-end tests: a thread-safe recording listener and polling waits.
-#include "iso23725/IsoStack.h"
+#include "protocols/iso23725/IsoStack.h"
 
 #include <chrono>
 #include <functional>

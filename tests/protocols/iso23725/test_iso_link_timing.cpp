@@ -1,6 +1,6 @@
 // Link timing of the ISO 23725 WebSocket (research note §2 [I]) on a fake clock: a ping every 5 s, dead after
 // 15 s without any received frame, reconnect backoff 1 -> 30 s with +-20 % jitter, reset after a success.
-#include "iso23725/LinkTiming.h"
+#include "protocols/iso23725/LinkTiming.h"
 
 #include <QtTest>
 
@@ -77,4 +77,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestLinkTiming)
-#include "tst_iso_link_timing.moc"
+#include "test_iso_link_timing.moc"

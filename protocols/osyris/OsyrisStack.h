@@ -2,12 +2,12 @@
 // The OCU (or a simulated machine) as an OSYRIS station: StationCore on its own IoThread with a UDP socket
 // (multicast with IGMP join/leave, broadcast or unicast) and a Beat timer. Everything except the
 // constructor's arguments is thread-safe; listener callbacks run on the io thread.
-#include "osyris/OsyrisConfig.h"
-#include "osyris/PassCountGrid.h"
-#include "osyris/RibbonStore.h"
-#include "osyris/StationCore.h"
+#include "protocols/osyris/OsyrisConfig.h"
+#include "protocols/osyris/PassCountGrid.h"
+#include "protocols/osyris/RibbonStore.h"
+#include "protocols/osyris/StationCore.h"
 
-#include "common/Counters.h"
+#include "protocols/common/Counters.h"
 
 #include <cstdint>
 #include <functional>
@@ -25,12 +25,12 @@ struct RxImpairment {
     std::uint32_t seed = 1;
 };
 
-class OsyrisStation {
+class OsyrisStack {
 public:
-    OsyrisStation(OsyrisConfig cfg, OsyrisListener& listener);
-    ~OsyrisStation();
-    OsyrisStation(const OsyrisStation&) = delete;
-    OsyrisStation& operator=(const OsyrisStation&) = delete;
+    OsyrisStack(OsyrisConfig cfg, OsyrisListener& listener);
+    ~OsyrisStack();
+    OsyrisStack(const OsyrisStack&) = delete;
+    OsyrisStack& operator=(const OsyrisStack&) = delete;
 
     // Opens the ribbon store and the socket, joins the group and starts the Beat. On failure returns false
     // with the reason in *error (also reported through onEvent, on the calling thread).
@@ -65,7 +65,7 @@ private:
     void callOnIo(const std::function<void()>& f);
 };
 
-template <class F> auto OsyrisStation::withCore(F&& f) -> decltype(f(std::declval<StationCore&>())) {
+template <class F> auto OsyrisStack::withCore(F&& f) -> decltype(f(std::declval<StationCore&>())) {
     using R = decltype(f(std::declval<StationCore&>()));
     if constexpr (std::is_void_v<R>) {
         callOnIo([&] { f(*core()); });

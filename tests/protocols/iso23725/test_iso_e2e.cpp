@@ -2,10 +2,10 @@
 // fleet discrepancies, all-stop Apply/Remove with the trucks stopping, the chunked map, assignments, own
 // positions, map re-fetch on change, kill/restart of the AHS (UNKNOWN, refused commands, snapshot rebuild)
 // and malformed input.
-#include "IsoTestSupport.h"
 #include "sim/iso23725/IsoDemo.h"
+#include "tests/protocols/iso23725/IsoTestSupport.h"
 
-#include "common/Udp.h"
+#include "protocols/common/Udp.h"
 
 #include <QtTest>
 
@@ -332,4 +332,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestIsoEndToEnd)
-#include "tst_iso_e2e.moc"
+#include "test_iso_e2e.moc"

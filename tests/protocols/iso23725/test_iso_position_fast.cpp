@@ -2,9 +2,9 @@
 // research note §6 example 5, the simulator's own output) and, whenever it accepts, its Envelope equals the
 // DOM path's field for field, doubles bit for bit. Over a corpus of variants and 20,000 seeded mutations it
 // either declines or agrees, and the public decodeMessage always equals the DOM path.
-#include "iso23725/PositionFastPath.h"
+#include "protocols/iso23725/PositionFastPath.h"
 
-#include "IsoTestData.h"
+#include "tests/protocols/iso23725/IsoTestData.h"
 
 #include <QtTest>
 
@@ -659,4 +659,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestIsoPositionFast)
-#include "tst_iso_position_fast.moc"
+#include "test_iso_position_fast.moc"

@@ -1,8 +1,8 @@
-#include "osyris/OsyrisStation.h"
+#include "protocols/osyris/OsyrisStack.h"
 
-#include "common/IoThread.h"
-#include "common/Log.h"
-#include "common/Udp.h"
+#include "protocols/common/IoThread.h"
+#include "protocols/common/Log.h"
+#include "protocols/common/Udp.h"
 
 #include <boost/asio/ip/udp.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -15,7 +15,7 @@ namespace ocu::osyris {
 namespace asio = boost::asio;
 using asio::ip::udp;
 
-struct OsyrisStation::Impl {
+struct OsyrisStack::Impl {
     IoThread io{"osyris"};
     udp::socket socket{io.context()};
     asio::steady_timer beat{io.context()};
@@ -31,32 +31,32 @@ struct OsyrisStation::Impl {
     std::chrono::steady_clock::time_point nextBeat;
 };
 
-OsyrisStation::OsyrisStation(OsyrisConfig cfg, OsyrisListener& listener)
+OsyrisStack::OsyrisStack(OsyrisConfig cfg, OsyrisListener& listener)
     : m_cfg(std::move(cfg)), m_listener(listener), m_grid(m_cfg.passCount), m_impl(std::make_unique<Impl>()) {
 }
 
-OsyrisStation::~OsyrisStation() {
+OsyrisStack::~OsyrisStack() {
     stop();
 }
 
-Counters& OsyrisStation::counters() {
+Counters& OsyrisStack::counters() {
     return m_impl->core ? m_impl->core->counters() : m_fallbackCounters;
 }
-RibbonStore* OsyrisStation::store() {
+RibbonStore* OsyrisStack::store() {
     return m_impl->store.get();
 }
-StationCore* OsyrisStation::core() {
+StationCore* OsyrisStack::core() {
     return m_impl->core.get();
 }
-bool OsyrisStation::running() const {
+bool OsyrisStack::running() const {
     return m_impl->running;
 }
 
-void OsyrisStation::callOnIo(const std::function<void()>& f) {
+void OsyrisStack::callOnIo(const std::function<void()>& f) {
     m_impl->io.call([&] { f(); });
 }
 
-bool OsyrisStation::start(std::string* error) {
+bool OsyrisStack::start(std::string* error) {
     if (m_impl->running)
         return true;
     auto fail = [&](const std::string& msg) {
@@ -171,7 +171,7 @@ bool OsyrisStation::start(std::string* error) {
     return true;
 }
 
-void OsyrisStation::stop() {
+void OsyrisStack::stop() {
     if (!m_impl->running)
         return;
     m_impl->io.call([this] {
@@ -186,26 +186,26 @@ void OsyrisStation::stop() {
     m_impl->io.stop();
 }
 
-void OsyrisStation::sendText(std::string text) {
+void OsyrisStack::sendText(std::string text) {
     if (!m_impl->running)
         return;
     m_impl->io.post([this, t = std::move(text)] { m_impl->core->sendText(t); });
 }
 
-void OsyrisStation::ping(std::uint8_t idx) {
+void OsyrisStack::ping(std::uint8_t idx) {
     if (!m_impl->running)
         return;
     m_impl->io.post([this, idx] { m_impl->core->ping(idx); });
 }
 
-void OsyrisStation::publishOwnPosition(CmPos p, std::vector<PosProp> props) {
+void OsyrisStack::publishOwnPosition(CmPos p, std::vector<PosProp> props) {
     if (!m_impl->running)
         return;
     m_impl->io.post(
         [this, p, pr = std::move(props)]() mutable { m_impl->core->publishOwnPosition(p, std::move(pr)); });
 }
 
-void OsyrisStation::setImpairment(const RxImpairment& imp) {
+void OsyrisStack::setImpairment(const RxImpairment& imp) {
     auto apply = [this, imp] {
         m_impl->imp = imp;
         m_impl->rng.seed(imp.seed);

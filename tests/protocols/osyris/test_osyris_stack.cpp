@@ -2,7 +2,7 @@
 // recovery after impaired reception, restart on the same SQLite file.
 #include "sim/osyris/OsyrisDemo.h"
 
-#include "common/Udp.h"
+#include "protocols/common/Udp.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -60,7 +60,7 @@ bool waitFor(const std::function<bool()>& pred, int ms) {
 }
 
 // The OCU holds every slot each machine holds of its own ribbon.
-bool ocuComplete(OsyrisDemo& demo, OsyrisStation& ocu) {
+bool ocuComplete(OsyrisDemo& demo, OsyrisStack& ocu) {
     for (std::size_t i = 0; i < demo.stationCount(); ++i) {
         auto idx = demo.station(i).config().stationIndex;
         auto own = demo.station(i).store()->held(idx);
@@ -85,7 +85,7 @@ private slots:
         QVERIFY2(demo.start(&err), err.c_str());
         QCOMPARE(demo.machines().size(), std::size_t(5)); // paver, 3 rollers, relay
         Recorder rec;
-        OsyrisStation ocu(demo.ocuConfig(), rec);
+        OsyrisStack ocu(demo.ocuConfig(), rec);
         QVERIFY2(ocu.start(&err), err.c_str());
         QVERIFY(waitFor([&] { return rec.machineCount() >= 4; }, 10000));
         {
@@ -114,7 +114,7 @@ private slots:
         std::string err;
         QVERIFY2(demo.start(&err), err.c_str());
         Recorder rec;
-        OsyrisStation ocu(demo.ocuConfig(), rec);
+        OsyrisStack ocu(demo.ocuConfig(), rec);
         ocu.setImpairment(o.impairment);
         QVERIFY(ocu.start(&err));
         std::this_thread::sleep_for(std::chrono::seconds(6));
@@ -147,7 +147,7 @@ private slots:
         c.port = findFreeUdpPort();
         c.interfaceAddress = "192.0.2.1"; // TEST-NET: not an interface of this host
         Recorder rec;
-        OsyrisStation st(c, rec);
+        OsyrisStack st(c, rec);
         std::string err;
         QVERIFY(!st.start(&err));
         QVERIFY(QString::fromStdString(err).contains("OSYRIS socket"));
@@ -171,7 +171,7 @@ private slots:
             return c;
         };
         Recorder ra, rb;
-        OsyrisStation a(mk(1, pa, pb), ra), b(mk(2, pb, pa), rb);
+        OsyrisStack a(mk(1, pa, pb), ra), b(mk(2, pb, pa), rb);
         std::string err;
         QVERIFY2(a.start(&err), err.c_str());
         QVERIFY2(b.start(&err), err.c_str());
@@ -201,7 +201,7 @@ private slots:
         std::uint64_t had = 0;
         {
             Recorder rec;
-            OsyrisStation ocu(cfg, rec);
+            OsyrisStack ocu(cfg, rec);
             QVERIFY(ocu.start(&err));
             QVERIFY(waitFor([&] { return ocu.store()->totalCount() > 40; }, 10000));
             ocu.stop();
@@ -210,7 +210,7 @@ private slots:
         std::this_thread::sleep_for(std::chrono::milliseconds(1500));
         demo.setPaused(true);
         Recorder rec;
-        OsyrisStation ocu(cfg, rec);
+        OsyrisStack ocu(cfg, rec);
         QVERIFY(ocu.start(&err));
         QVERIFY(ocu.store()->totalCount() >= had);
         QVERIFY(waitFor([&] { return ocuComplete(demo, ocu); }, 15000));
@@ -221,4 +221,4 @@ private slots:
 };
 
 QTEST_GUILESS_MAIN(TestOsyrisLoopback)
-#include "test_osyris_loopback.moc"
+#include "test_osyris_stack.moc"
