@@ -138,20 +138,30 @@ PassCountSummary summarize(const PassCountLayer& layer, PassTarget target) {
     PassCountSummary s;
     s.histogram = QVector<qint64>(10, 0);
     qint64 below = 0, within = 0, above = 0;
-    const auto* grid = dynamic_cast<const GridPassCountLayer*>(&layer);
+    auto add = [&](int v) {
+        if (v <= 0)
+            return;
+        ++s.histogram[std::min(v, 9)];
+        if (v < target.min)
+            ++below;
+        else if (v > target.max)
+            ++above;
+        else
+            ++within;
+    };
     const int cols = layer.columns(), rows = layer.rows();
-    for (int r = 0; r < rows; ++r) {
-        for (int c = 0; c < cols; ++c) {
-            const int v = grid ? grid->data()[size_t(r) * size_t(cols) + size_t(c)] : layer.count(c, r);
-            if (v <= 0)
-                continue;
-            ++s.histogram[std::min(v, 9)];
-            if (v < target.min)
-                ++below;
-            else if (v > target.max)
-                ++above;
-            else
-                ++within;
+    if (const auto* grid = dynamic_cast<const GridPassCountLayer*>(&layer)) {
+        const std::uint16_t* d = grid->data();
+        for (size_t i = 0, n = size_t(cols) * size_t(rows); i < n; ++i)
+            add(d[i]);
+    } else {
+        // Bulk reads of bands of rows (one countsIn per band rather than a lookup per cell), bounded memory.
+        const int band = std::max(1, (1 << 20) / std::max(cols, 1));
+        std::vector<std::uint16_t> counts;
+        for (int r = 0; r < rows; r += band) {
+            layer.countsIn(QRect(0, r, cols, std::min(band, rows - r)), counts);
+            for (auto v : counts)
+                add(v);
         }
     }
     s.coveredCells = below + within + above;

@@ -28,11 +28,12 @@ public:
 
     // Counts of the cells in `cells` (clipped to the grid), row-major, one entry per cell of the clipped
     // rect.
-    // Layers with a faster bulk read (a dense array, a grid with one lock per call) override it.
+    // Layers with a faster bulk read (a dense array, tiled snapshots) override it.
     virtual QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const;
 };
 
-// A dense in-memory grid (what the OSYRIS bridge fills; 1 km² at 0.34 m is ~8.6 M cells, 17 MB).
+// A dense in-memory grid (tests, benchmarks; 1 km² at 0.34 m is ~8.6 M cells, 17 MB). The OSYRIS bridge's
+// layer is OsyrisPassCountLayer (models/bridges), which reads immutable tile snapshots.
 class GridPassCountLayer final : public PassCountLayer {
 public:
     GridPassCountLayer(QPointF origin, double cellSize, int columns, int rows);

@@ -4,7 +4,6 @@
 #include <QJsonObject>
 #include <QMetaObject>
 
-#include <climits>
 #include <cmath>
 
 namespace ocu {
@@ -15,58 +14,11 @@ static QString q(const std::string& s) {
     return QString::fromStdString(s);
 }
 
-OsyrisPassCountLayer::OsyrisPassCountLayer(const PassCountGrid& grid, QPointF worksiteOffset)
-    : m_grid(grid), m_offset(worksiteOffset) {}
-
-double OsyrisPassCountLayer::cellSize() const {
-    return m_grid.settings().cellSize;
-}
-
-QPointF OsyrisPassCountLayer::origin() const {
-    const double s = cellSize();
-    return {m_offset.x() + m_cx0 * s, m_offset.y() + m_cy0 * s};
-}
-
-int OsyrisPassCountLayer::count(int col, int row) const {
-    if (col < 0 || row < 0 || col >= m_cols || row >= m_rows)
-        return 0;
-    return m_grid.countAtCell(m_cx0 + col, m_cy0 + row);
-}
-
-QRect OsyrisPassCountLayer::countsIn(QRect cells, std::vector<std::uint16_t>& out) const {
-    const QRect clipped = cells.intersected(QRect(0, 0, m_cols, m_rows));
-    out.assign(clipped.isEmpty() ? 0 : size_t(clipped.width()) * size_t(clipped.height()), 0);
-    if (!clipped.isEmpty()) // one lock for the whole rectangle instead of one per cell
-        m_grid.countsInRect(m_cx0 + clipped.left(), m_cy0 + clipped.top(), clipped.width(), clipped.height(),
-                            out.data());
-    return clipped;
-}
-
-void OsyrisPassCountLayer::refreshExtent() {
-    const auto tiles = m_grid.snapshotTiles();
-    if (tiles.empty()) {
-        m_cols = m_rows = 0;
-    } else {
-        std::int32_t tx0 = INT_MAX, ty0 = INT_MAX, tx1 = INT_MIN, ty1 = INT_MIN;
-        for (const auto& t : tiles) {
-            tx0 = std::min(tx0, t.tx);
-            ty0 = std::min(ty0, t.ty);
-            tx1 = std::max(tx1, t.tx);
-            ty1 = std::max(ty1, t.ty);
-        }
-        m_cx0 = tx0 * kTileSize;
-        m_cy0 = ty0 * kTileSize;
-        m_cols = (tx1 - tx0 + 1) * kTileSize;
-        m_rows = (ty1 - ty0 + 1) * kTileSize;
-    }
-    ++m_revision;
-}
-
 OsyrisBridge::OsyrisBridge(const OsyrisConfig& config, const GeoFrame& siteFrame, QObject* parent)
     : FleetBridge(Protocol::Osyris, parent), m_config(config), m_frame(siteFrame) {
     m_station = std::make_unique<OsyrisStack>(m_config, static_cast<OsyrisListener&>(*this));
     const EnuPoint o = m_frame.toLocal({config.originLat, config.originLon, config.originAlt});
-    m_layer = std::make_unique<OsyrisPassCountLayer>(m_station->grid(), QPointF(o.e, o.n));
+    m_layer = std::make_unique<OsyrisPassCountLayer>(m_config.passCount.cellSize, QPointF(o.e, o.n));
 }
 
 OsyrisBridge::~OsyrisBridge() {
@@ -90,7 +42,8 @@ void OsyrisBridge::stop() {
 }
 
 osyris::PassCountSummary OsyrisBridge::passCountSummary() const {
-    return m_station->grid().summary();
+    // GUI thread: the snapshot it holds, no lock shared with the io thread.
+    return m_layer->snapshot() ? m_layer->snapshot()->summary() : osyris::PassCountSummary{};
 }
 
 // ---- io thread ----
@@ -160,15 +113,19 @@ void OsyrisBridge::onText(std::uint8_t idx, const std::string& text) {
     publishEvent(e);
 }
 
-void OsyrisBridge::onPassCountChanged(const GridRect&) {
-    // One queued refresh per burst: the grid is read on the GUI thread through its thread-safe readers.
-    if (m_passCountQueued.exchange(true))
-        return;
+bool OsyrisBridge::readyForPassCounts() {
+    return !m_passCountQueued.load();
+}
+
+void OsyrisBridge::onPassCounts(std::shared_ptr<const PassCountSnapshot> snapshot) {
+    // One snapshot in flight at a time (the core keeps a newer change pending until this one is taken),
+    // handed to the GUI thread by value: the GUI then reads it without any lock shared with the io thread.
+    m_passCountQueued = true;
     QMetaObject::invokeMethod(
         this,
-        [this] {
+        [this, snapshot = std::move(snapshot)]() mutable {
+            m_layer->setSnapshot(std::move(snapshot));
             m_passCountQueued = false;
-            m_layer->refreshExtent();
             emit passCountChanged();
         },
         Qt::QueuedConnection);

@@ -83,6 +83,7 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
     }
     o.lossWaitBeats = static_cast<int>(c.integer("lossWaitBeats", o.lossWaitBeats, 0, 1000));
     o.maxNakSlots = static_cast<int>(c.integer("maxNakSlots", o.maxNakSlots, 1, 100000));
+    o.passCountPublishMs = static_cast<int>(c.integer("passCountPublishMs", o.passCountPublishMs, 0, 60000));
     c.finish();
     return o;
 }

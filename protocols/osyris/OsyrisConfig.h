@@ -54,6 +54,8 @@ struct OsyrisConfig {
     int maxRetxPerBeat = 200; // positions re-sent per beat
     int maxDatagramsPerBeat = 16;
     int answerHoldBeats = 3; // a slot re-sent this recently is not re-sent for another NAK
+    // Pass-count snapshots for the GUI: at most one per this many ms (and per Beat), only after a change.
+    int passCountPublishMs = 100;
 };
 
 // Reads the site configuration's "osyris" object strictly (calls section.finish()).

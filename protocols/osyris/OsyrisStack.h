@@ -1,8 +1,9 @@
 #pragma once
-// The OCU (or a simulated machine) as an OSYRIS station: StationCore on its own IoThread with a UDP socket
-// (multicast with IGMP join/leave, broadcast or unicast) and a Beat timer. Everything except the
-// constructor's arguments is thread-safe; listener callbacks run on the io thread.
+// The OCU (or a simulated machine) as an OSYRIS station: owns the io thread and the Beat timer, and wires an
+// OsyrisTransport (the UDP socket) to a StationCore (the protocol) and the pass-count grid. Everything except
+// the constructor's arguments is thread-safe; listener callbacks run on the io thread.
 #include "protocols/osyris/OsyrisConfig.h"
+#include "protocols/osyris/OsyrisTransport.h"
 #include "protocols/osyris/PassCountGrid.h"
 #include "protocols/osyris/RibbonStore.h"
 #include "protocols/osyris/StationCore.h"
@@ -15,15 +16,6 @@
 #include <string>
 
 namespace ocu::osyris {
-
-// Receive-side impairment for tests and demos (loss, duplication, reordering on a real socket).
-struct RxImpairment {
-    double loss = 0;      // probability a datagram is dropped
-    double duplicate = 0; // probability it is delivered twice
-    double reorder = 0;   // probability it is held back by delayMs
-    int delayMs = 150;
-    std::uint32_t seed = 1;
-};
 
 class OsyrisStack {
 public:
@@ -48,7 +40,9 @@ public:
     Counters& counters();
     // Thread-safe (own locks); valid after start().
     RibbonStore* store();
-    PassCountGrid& grid() { return m_grid; }
+    // A snapshot of the pass counts now, taken on the io thread (blocking: tests, diagnostics). The GUI gets
+    // its snapshots through OsyrisListener::onPassCounts instead.
+    std::shared_ptr<const PassCountSnapshot> passCounts();
     std::uint16_t localPort() const { return m_localPort; }
     // Runs f(core) on the io thread and returns its result (tests, diagnostics).
     template <class F> auto withCore(F&& f) -> decltype(f(std::declval<StationCore&>()));
@@ -57,7 +51,7 @@ private:
     struct Impl;
     OsyrisConfig m_cfg;
     OsyrisListener& m_listener;
-    PassCountGrid m_grid;
+    PassCountGrid m_grid; // io thread only
     std::unique_ptr<Impl> m_impl;
     std::uint16_t m_localPort = 0;
     Counters m_fallbackCounters;

@@ -101,7 +101,6 @@ PassCountGrid::PassCountGrid(PassCountSettings s) {
 PassCountGrid::~PassCountGrid() = default;
 
 void PassCountGrid::setSettings(const PassCountSettings& s) {
-    std::lock_guard lock(m_mutex);
     m_settings = s;
     if (!(m_settings.cellSize > 0.01))
         m_settings.cellSize = 0.34;
@@ -111,6 +110,7 @@ void PassCountGrid::setSettings(const PassCountSettings& s) {
     m_lastTile = nullptr;
     m_lastTileKey = ~0ull;
     m_dirty = false;
+    m_clearedAt = m_generation; // snapshots before this one cannot be patched into the next
 }
 
 void PassCountGrid::reset() {
@@ -121,13 +121,20 @@ std::int32_t PassCountGrid::cellIndex(double v) const {
     return static_cast<std::int32_t>(std::floor(v * m_inv));
 }
 
-std::uint16_t* PassCountGrid::cell(std::int32_t cx, std::int32_t cy) {
+PassCount* PassCountGrid::cell(std::int32_t cx, std::int32_t cy) {
     std::int32_t tx = cx >> kTileBits, ty = cy >> kTileBits;
     std::uint64_t key = cellKey(tx, ty);
     if (key != m_lastTileKey || !m_lastTile) { // ~0 is also tile (-1, -1): check the pointer too
         auto& t = m_tiles[key];
-        if (!t)
-            t = std::make_unique<Tile>();
+        if (!t) {
+            t = std::make_shared<PassCountTile>();
+            t->generation = m_generation;
+        } else if (t->generation != m_generation) {
+            // Copy on write: a snapshot may hold this version; it stays as it is, the grid goes on with a
+            // copy.
+            t = std::make_shared<PassCountTile>(*t);
+            t->generation = m_generation;
+        }
         m_lastTile = t.get();
         m_lastTileKey = key;
     }
@@ -162,7 +169,7 @@ void PassCountGrid::sweep(MachineState& m, double ax, double ay, double bx, doub
                 continue;
             if (!m.counted.insert(cellKey(cx, cy)))
                 continue; // a cell is counted once per traversal
-            std::uint16_t* c = cell(cx, cy);
+            PassCount* c = cell(cx, cy);
             if (*c < 0xFFFF)
                 ++*c;
             if (!m_dirty) {
@@ -182,7 +189,6 @@ void PassCountGrid::sweep(MachineState& m, double ax, double ay, double bx, doub
 }
 
 void PassCountGrid::addPosition(std::uint8_t machine, const CmPos& p) {
-    std::lock_guard lock(m_mutex);
     auto& mp = m_machines[machine];
     if (!mp)
         mp = std::make_unique<MachineState>();
@@ -245,17 +251,20 @@ std::uint64_t PassCountGrid::advanceAll(const RibbonStore& store) {
 }
 
 std::uint32_t PassCountGrid::nextSlot(std::uint8_t machine) const {
-    std::lock_guard lock(m_mutex);
     auto it = m_machines.find(machine);
     return it == m_machines.end() ? 0 : it->second->nextSlot;
 }
 
+const PassCountTile* PassCountGrid::findTile(std::int32_t tx, std::int32_t ty) const {
+    auto it = m_tiles.find(cellKey(tx, ty));
+    return it == m_tiles.end() ? nullptr : it->second.get();
+}
+
 int PassCountGrid::countAtCell(std::int32_t cx, std::int32_t cy) const {
-    std::lock_guard lock(m_mutex);
-    auto it = m_tiles.find(cellKey(cx >> kTileBits, cy >> kTileBits));
-    if (it == m_tiles.end())
+    const PassCountTile* t = findTile(cx >> kTileBits, cy >> kTileBits);
+    if (!t)
         return 0;
-    return it->second
+    return t
         ->counts[static_cast<std::size_t>(((cy & (kTileSize - 1)) << kTileBits) | (cx & (kTileSize - 1)))];
 }
 
@@ -264,11 +273,10 @@ int PassCountGrid::countAt(double x, double y) const {
 }
 
 void PassCountGrid::countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows,
-                                 std::uint16_t* out) const {
-    std::lock_guard lock(m_mutex);
+                                 PassCount* out) const {
     std::uint64_t lastKey = 0;
     bool looked = false;
-    const Tile* tile = nullptr;
+    const PassCountTile* tile = nullptr;
     for (int r = 0; r < rows; ++r) {
         std::int32_t cy = cy0 + r;
         for (int c = 0; c < cols; ++c) {
@@ -276,8 +284,7 @@ void PassCountGrid::countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, i
             std::uint64_t key = cellKey(cx >> kTileBits, cy >> kTileBits);
             if (!looked || key != lastKey) {
                 looked = true;
-                auto it = m_tiles.find(key);
-                tile = it == m_tiles.end() ? nullptr : it->second.get();
+                tile = findTile(cx >> kTileBits, cy >> kTileBits);
                 lastKey = key;
             }
             out[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c)] =
@@ -288,17 +295,32 @@ void PassCountGrid::countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, i
     }
 }
 
+std::shared_ptr<const PassCountSnapshot> PassCountGrid::snapshot() {
+    std::vector<PassCountSnapshot::Entry> tiles;
+    tiles.reserve(m_tiles.size());
+    for (auto& [key, t] : m_tiles)
+        tiles.push_back({static_cast<std::int32_t>(std::uint32_t(key >> 32)),
+                         static_cast<std::int32_t>(std::uint32_t(key)), t});
+    std::sort(tiles.begin(), tiles.end(),
+              [](const PassCountSnapshot::Entry& a, const PassCountSnapshot::Entry& b) {
+                  return a.ty != b.ty ? a.ty < b.ty : a.tx < b.tx;
+              });
+    auto snap =
+        std::make_shared<const PassCountSnapshot>(std::move(tiles), m_settings.cellSize, m_settings.targetMin,
+                                                  m_settings.targetMax, m_generation, m_clearedAt);
+    // Every tile is now shared with the snapshot: the next write to each copies it first.
+    ++m_generation;
+    m_lastTile = nullptr;
+    m_lastTileKey = ~0ull;
+    return snap;
+}
+
 std::vector<TileSnapshot> PassCountGrid::snapshotTiles() const {
-    std::lock_guard lock(m_mutex);
     std::vector<TileSnapshot> out;
     out.reserve(m_tiles.size());
-    for (auto& [key, t] : m_tiles) {
-        TileSnapshot s;
-        s.tx = static_cast<std::int32_t>(std::uint32_t(key >> 32));
-        s.ty = static_cast<std::int32_t>(std::uint32_t(key));
-        s.counts = t->counts;
-        out.push_back(s);
-    }
+    for (auto& [key, t] : m_tiles)
+        out.push_back({static_cast<std::int32_t>(std::uint32_t(key >> 32)),
+                       static_cast<std::int32_t>(std::uint32_t(key)), t->counts});
     std::sort(out.begin(), out.end(), [](const TileSnapshot& a, const TileSnapshot& b) {
         return a.ty != b.ty ? a.ty < b.ty : a.tx < b.tx;
     });
@@ -306,37 +328,14 @@ std::vector<TileSnapshot> PassCountGrid::snapshotTiles() const {
 }
 
 PassCountSummary PassCountGrid::summary() const {
-    std::lock_guard lock(m_mutex);
-    PassCountSummary s;
-    s.targetMin = m_settings.targetMin;
-    s.targetMax = m_settings.targetMax;
-    std::size_t bins = static_cast<std::size_t>(std::max(15, m_settings.targetMax + 3)) + 1;
-    s.histogram.assign(bins, 0);
-    std::uint64_t below = 0, within = 0, above = 0;
+    std::vector<const PassCountTile*> tiles;
+    tiles.reserve(m_tiles.size());
     for (auto& [key, t] : m_tiles)
-        for (auto c : t->counts) {
-            if (!c)
-                continue;
-            ++s.coveredCells;
-            ++s.histogram[std::min<std::size_t>(c, bins - 1)];
-            if (c < m_settings.targetMin)
-                ++below;
-            else if (c > m_settings.targetMax)
-                ++above;
-            else
-                ++within;
-        }
-    s.coveredAreaM2 = double(s.coveredCells) * m_settings.cellSize * m_settings.cellSize;
-    if (s.coveredCells) {
-        s.percentBelow = 100.0 * double(below) / double(s.coveredCells);
-        s.percentWithin = 100.0 * double(within) / double(s.coveredCells);
-        s.percentAbove = 100.0 * double(above) / double(s.coveredCells);
-    }
-    return s;
+        tiles.push_back(t.get());
+    return summarizeTiles(tiles, m_settings.cellSize, m_settings.targetMin, m_settings.targetMax);
 }
 
 std::optional<GridRect> PassCountGrid::takeDirty() {
-    std::lock_guard lock(m_mutex);
     if (!m_dirty)
         return std::nullopt;
     m_dirty = false;

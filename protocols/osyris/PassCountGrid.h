@@ -3,13 +3,17 @@
 // the drum footprint is swept between consecutive counted positions of one machine's ribbon, processed
 // strictly in slot order. Counts are a sum over machines of a function of each ribbon alone, so the
 // grid depends only on the ribbons, never on the order datagrams arrived in.
+//
+// Not thread-safe: the grid belongs to one thread (the station's io thread). Other threads read immutable
+// snapshots (snapshot(), PassCountSnapshot.h): the tiles are copy-on-write, so the grid copies a tile before
+// it changes one a snapshot holds, and a snapshot never changes under its reader.
 #include "protocols/osyris/OsyrisCodec.h"
+#include "protocols/osyris/PassCountSnapshot.h"
 
 #include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <set>
 #include <unordered_map>
@@ -34,29 +38,8 @@ struct PassCountSettings {
     bool operator==(const PassCountSettings&) const = default;
 };
 
-struct PassCountSummary {
-    std::uint64_t coveredCells = 0;
-    double coveredAreaM2 = 0;
-    double percentBelow = 0;
-    double percentWithin = 0;
-    double percentAbove = 0;
-    std::vector<std::uint64_t>
-        histogram; // [n] = cells with exactly n passes (n >= 1); last bin = "n or more"
-    int targetMin = 3;
-    int targetMax = 5;
-};
-
 struct GridRect { // in metres, local ENU
     double xMin = 0, yMin = 0, xMax = 0, yMax = 0;
-};
-
-constexpr int kTileBits = 5;
-constexpr int kTileSize = 1 << kTileBits; // 32 x 32 cells per tile
-
-struct TileSnapshot {
-    std::int32_t tx = 0, ty = 0; // tile index; cell (cx, cy) = (tx*32 + i, ty*32 + j)
-    std::array<std::uint16_t, kTileSize * kTileSize> counts{}; // [j*32 + i]
-    bool operator==(const TileSnapshot&) const = default;
 };
 
 class PassCountGrid {
@@ -76,31 +59,36 @@ public:
     std::uint64_t advanceAll(const RibbonStore& store);
     std::uint32_t nextSlot(std::uint8_t machine) const;
 
-    // Thread-safe readers (for the GUI).
+    // Immutable picture of the counts now, sharing every tile with the grid until the grid writes it (then
+    // the grid writes a copy). Cost: one pointer per tile; the first later write to each tile copies it.
+    std::shared_ptr<const PassCountSnapshot> snapshot();
+
+    // Readers on the grid's own thread (tests, the simulated site); other threads read a snapshot().
     int countAt(double x, double y) const;
     int countAtCell(std::int32_t cx, std::int32_t cy) const;
     // Counts of the cells [cx0, cx0+cols) x [cy0, cy0+rows) into out[row*cols + col].
-    void countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows, std::uint16_t* out) const;
-    std::vector<TileSnapshot> snapshotTiles() const; // sorted by (ty, tx)
+    void countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows, PassCount* out) const;
+    std::vector<TileSnapshot> snapshotTiles() const; // values, sorted by (ty, tx)
     PassCountSummary summary() const;
     std::int32_t cellIndex(double v) const;
     // Bounding box of cells changed since the last call, if any.
     std::optional<GridRect> takeDirty();
 
 private:
-    struct Tile {
-        std::array<std::uint16_t, kTileSize * kTileSize> counts{};
-    };
     struct MachineState;
     void sweep(MachineState& m, double ax, double ay, double bx, double by, double width);
-    std::uint16_t* cell(std::int32_t cx, std::int32_t cy);
+    PassCount* cell(std::int32_t cx, std::int32_t cy);
+    const PassCountTile* findTile(std::int32_t tx, std::int32_t ty) const;
 
     PassCountSettings m_settings;
     double m_inv = 1.0 / 0.34;
-    mutable std::mutex m_mutex;
-    std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> m_tiles;
+    std::unordered_map<std::uint64_t, std::shared_ptr<PassCountTile>> m_tiles;
     std::uint64_t m_lastTileKey = ~0ull;
-    Tile* m_lastTile = nullptr;
+    PassCountTile* m_lastTile = nullptr; // writable: its generation is the current one
+    // Tiles written now get m_generation; snapshot() takes sequence m_generation and starts the next one, so
+    // a tile of an older generation may be held by a snapshot and is copied before it is written.
+    std::uint64_t m_generation = 1;
+    std::uint64_t m_clearedAt = 1;
     std::map<std::uint8_t, std::unique_ptr<MachineState>> m_machines;
     bool m_dirty = false;
     std::int32_t m_dx0 = 0, m_dy0 = 0, m_dx1 = 0, m_dy1 = 0;

@@ -1,7 +1,9 @@
 #pragma once
 // The OSYRIS station state machine (seed 004 §4-§6), free of sockets and threads: datagrams enter through
 // receive(), time advances through tick() (once per Beat), datagrams leave through the send function.
-// OsyrisStack wraps it with Boost.Asio; tests drive it with a FakeClock and an in-memory network.
+// OsyrisStack runs it on an io thread with an OsyrisTransport; tests drive it with a FakeClock and an
+// in-memory network. StationCore.cpp holds the station's life (start, receive, send, Beat, pass counts);
+// StationRepair.cpp the §5 repair engine (list of wishes, list of assets).
 //
 // Reliability (§5): a "list of wishes" (gaps of every ribbon, requested with NAK) and a "list of assets"
 // (requests this station can answer), both priority queues with dynamic priorities. See docs/osyris.md.
@@ -18,6 +20,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <random>
 #include <set>
@@ -54,6 +57,12 @@ struct OsyrisListener {
     virtual void onStationAlive(std::uint8_t /*idx*/, std::optional<SlotRange> /*range*/) {}
     virtual void onText(std::uint8_t /*idx*/, const std::string& /*text*/) {}
     virtual void onPassCountChanged(const GridRect& /*dirty*/) {}
+    // Pass counts for other threads: after the grid changed, at most every passCountPublishMs, the core
+    // offers an immutable snapshot (copy-on-write tiles), but only while the listener is ready for one, i.e.
+    // has taken over the previous one; otherwise it asks again on the next Beat. Not ready by default, so
+    // stations nobody reads from build no snapshots.
+    virtual bool readyForPassCounts() { return false; }
+    virtual void onPassCounts(std::shared_ptr<const PassCountSnapshot> /*snapshot*/) {}
     virtual void onEvent(Severity /*severity*/, const std::string& /*text*/) {}
     virtual void onPong(std::uint8_t /*idx*/, double /*rttMs*/, float /*x*/, float /*y*/) {}
 };
@@ -85,10 +94,16 @@ public:
     std::optional<std::uint32_t> knownMax(std::uint8_t owner) const;
     std::uint64_t missingCount() const; // slots known to exist but not held
     std::set<std::uint8_t> heardStations() const;
-    // Advances the grid over every ribbon now (normally done in tick()).
+    // Advances the grid over every ribbon now (normally done in tick()) and publishes the pass counts when
+    // due.
     void updateGrid();
 
 private:
+    static constexpr int kPrioOwner = 3;   // our own ribbon
+    static constexpr int kPrioAll = 2;     // we hold every requested slot
+    static constexpr int kPrioPartial = 1; // we hold some
+    static constexpr int kPrioBoost = 4;   // nobody answered an overheard NCF
+
     struct Hold {
         std::uint32_t from, to;
         TimePoint until;
@@ -138,6 +153,7 @@ private:
     std::optional<CmPos> ownPosition() const;
     std::string nameOf(std::uint8_t owner) const;
     std::string typeOf(std::uint8_t owner) const;
+    void publishPassCounts(TimePoint now);
     void event(Severity s, const std::string& text);
     void reject(const std::string& reason, const std::string& text);
 
@@ -167,6 +183,8 @@ private:
     bool m_receivedPositions = false;
     std::uint32_t m_nextOwnSlot = 0;
     std::set<std::uint8_t> m_gridDirty;
+    bool m_passCountsUnpublished = false;
+    TimePoint m_nextPassCountPublish{};
     std::map<std::string, std::uint64_t> m_rejectLogged;
     // Slots this station re-sent recently, per ribbon: a NAK that crossed our answer on the air is not
     // answered twice (the requester asks again after TTL if the answer was lost).

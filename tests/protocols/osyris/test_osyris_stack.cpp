@@ -93,7 +93,7 @@ private slots:
             QVERIFY(!rec.names.empty() && rec.names.count("Roller 1"));
             QVERIFY(rec.types.count("roller") && rec.types.count("paver"));
         }
-        QVERIFY2(waitFor([&] { return ocu.grid().summary().coveredCells > 50; }, 15000),
+        QVERIFY2(waitFor([&] { return ocu.passCounts()->summary().coveredCells > 50; }, 15000),
                  "a pass-count patch appears");
         QVERIFY(rec.passChanges > 0);
         ocu.ping(1);
