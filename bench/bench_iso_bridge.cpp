@@ -1,10 +1,11 @@
-// bench_iso_bridge: the ISO 23725 positions path end to end on the consoles's side (issue 12 point 4):
+// bench_iso_bridge: the ISO 23725 positions path end to end on the console's side (issue 12 point 4):
 // 1,000 simulated trucks at 10 Hz over loopback ws:// -> IsoStack io thread (decode, FmsCore) -> IsoBridge
 // -> the bridge's coalescer -> FleetModel on the GUI thread. Reports, per position received:
 //  * io_cpu_us_per_pos: CPU time of the stack's io thread ("iso23725"), all of it (WebSocket, decode, core,
 //    bridge) divided by the positions the simulator sent in the window;
 //  * gui_cpu_us_per_pos / gui_busy_pct: the GUI thread's share (coalescer drains, FleetModel upserts);
-//  * values_pushed_per_pos: machine values handed to the coalescer per position (each is one lock today);
+//  * values_pushed_per_pos: machine values handed to the coalescer per position;
+//  * locks_per_pos: the coalescer's hand-overs (one lock each) per position;
 //  * latency_mean_ms / latency_max_ms: from the position's arrival in FmsCore (MachineState::lastDataMs) to
 //    its delivery on the GUI thread (machinesUpdated).
 #include "models/FleetModel.h"
@@ -131,6 +132,7 @@ static void BM_IsoPositionsIntoFleetModel(benchmark::State& state) {
         state.counters["gui_cpu_us_per_pos"] = 1e6 * guiCpu / positions;
         state.counters["gui_busy_pct"] = 100.0 * guiCpu / elapsed;
         state.counters["values_pushed_per_pos"] = double(st1.pushed - st0.pushed) / positions;
+        state.counters["locks_per_pos"] = double(st1.handovers - st0.handovers) / positions;
         state.counters["drains_per_s"] = double(st1.drains - st0.drains) / elapsed;
         state.counters["latency_mean_ms"] = latencyCount ? latencySum / double(latencyCount) : -1;
         state.counters["latency_max_ms"] = latencyMax;

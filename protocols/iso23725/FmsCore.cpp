@@ -1,4 +1,5 @@
 #include "protocols/iso23725/FmsCore.h"
+#include "protocols/iso23725/FleetDiscrepancies.h"
 
 #include "protocols/common/Log.h"
 
@@ -163,6 +164,8 @@ void FmsCore::closed(const std::string& reason) {
         m.stateKnown = false;
         m_listener.onMachineChanged(m);
     }
+    m_positionBatch.clear(); // those snapshots just went out whole
+    m_positionQueued.clear();
     // Reported last, so a listener that sees DOWN already sees UNKNOWN all-stop and machine state.
     m_listener.onLinkState(m_link.name, LinkState::Down, reason);
     event(IsoSeverity::Warning, "link " + m_link.name + " down: " + reason);
@@ -295,7 +298,18 @@ void FmsCore::handle(const Envelope& env, bool mapChannel) {
                                                         m_link.name + " for machine " + *eq +
                                                         " not in its fleet definition");
                     }
-                    machineMember(m, b, hdrMs);
+                    if constexpr (std::is_same_v<T, MachinePositionV1>) {
+                        // The hot member (every machine, 1-10 Hz): a machine whose state is known only moves,
+                        // and its new position waits for the next batch (flushPositions).
+                        const bool moved = applyPosition(m, b);
+                        if (m.stateKnown) {
+                            if (moved)
+                                queuePosition(m);
+                            return;
+                        }
+                    } else {
+                        machineMember(m, b, hdrMs);
+                    }
                     m.stateKnown = true;
                     m_listener.onMachineChanged(m);
                 }
@@ -304,32 +318,56 @@ void FmsCore::handle(const Envelope& env, bool mapChannel) {
     }
 }
 
+// ---------------------------------------------------------------- positions (§7.4)
+
+bool FmsCore::applyPosition(IsoMachineSnapshot& m, const MachinePositionV1& b) {
+    if (!b.pose.latitude || !b.pose.longitude) {
+        m_counters.add("rx.position_unavailable");
+        return false;
+    }
+    if (m.position && m.position->measuredUnixMs && b.timestamp.unixMs &&
+        *b.timestamp.unixMs < *m.position->measuredUnixMs) {
+        m_counters.add("rx.late_position"); // latest state wins (§2.1 rule 2)
+        return false;
+    }
+    IsoPosition p;
+    p.latitude = *b.pose.latitude;
+    p.longitude = *b.pose.longitude;
+    p.elevation = b.pose.elevation;
+    if (b.pose.heading)
+        p.heading = static_cast<double>(*b.pose.heading);
+    if (b.pose.speed)
+        p.speedKmh = static_cast<double>(*b.pose.speed);
+    if (b.pose.latitudeAccuracy && b.pose.longitudeAccuracy)
+        p.horizontalAccuracy = std::max(*b.pose.latitudeAccuracy, *b.pose.longitudeAccuracy);
+    p.measuredUnixMs = b.timestamp.unixMs;
+    p.receivedUnixMs = unixMillisNow();
+    m.position = p;
+    m_counters.add("rx.positions");
+    return true;
+}
+
+void FmsCore::queuePosition(const IsoMachineSnapshot& m) {
+    if (m_positionQueued.insert(&m).second)
+        m_positionBatch.push_back(&m);
+}
+
+void FmsCore::dropQueuedPosition(const IsoMachineSnapshot& m) {
+    if (m_positionQueued.erase(&m))
+        m_positionBatch.erase(std::find(m_positionBatch.begin(), m_positionBatch.end(), &m));
+}
+
+void FmsCore::flushPositions() {
+    if (m_positionBatch.empty())
+        return;
+    m_counters.add("rx.position_batches");
+    m_listener.onMachinePositions(m_link.name, m_positionBatch);
+    m_positionBatch.clear();
+    m_positionQueued.clear();
+}
+
 template <class T> void FmsCore::machineMember(IsoMachineSnapshot& m, const T& b, std::int64_t hdrMs) {
-    if constexpr (std::is_same_v<T, MachinePositionV1>) {
-        if (!b.pose.latitude || !b.pose.longitude) {
-            m_counters.add("rx.position_unavailable");
-            return;
-        }
-        if (m.position && m.position->measuredUnixMs && b.timestamp.unixMs &&
-            *b.timestamp.unixMs < *m.position->measuredUnixMs) {
-            m_counters.add("rx.late_position"); // latest state wins (§2.1 rule 2)
-            return;
-        }
-        IsoPosition p;
-        p.latitude = *b.pose.latitude;
-        p.longitude = *b.pose.longitude;
-        p.elevation = b.pose.elevation;
-        if (b.pose.heading)
-            p.heading = static_cast<double>(*b.pose.heading);
-        if (b.pose.speed)
-            p.speedKmh = static_cast<double>(*b.pose.speed);
-        if (b.pose.latitudeAccuracy && b.pose.longitudeAccuracy)
-            p.horizontalAccuracy = std::max(*b.pose.latitudeAccuracy, *b.pose.longitudeAccuracy);
-        p.measuredUnixMs = b.timestamp.unixMs;
-        p.receivedUnixMs = unixMillisNow();
-        m.position = p;
-        m_counters.add("rx.positions");
-    } else if constexpr (std::is_same_v<T, MachineAutonomyModeV1>) {
+    if constexpr (std::is_same_v<T, MachineAutonomyModeV1>) {
         m.autonomyMode = b.autonomyMode;
     } else if constexpr (std::is_same_v<T, MachineDispatchAvailabilityV1>) {
         if (m.dispatchingCustodian == "AHS" && b.dispatchingCustodian == "FMS")
@@ -402,6 +440,7 @@ void FmsCore::onFleet(const FleetDefinitionV2& f) {
     // No delete command exists: absence from a re-sent list removes the machine [ISO-seed].
     for (auto it = m_machines.begin(); it != m_machines.end();) {
         if (!listed.count(it->first)) {
+            dropQueuedPosition(it->second);
             m_listener.onMachineRemoved(m_link.name, it->first);
             it = m_machines.erase(it);
         } else {
@@ -412,47 +451,7 @@ void FmsCore::onFleet(const FleetDefinitionV2& f) {
 }
 
 void FmsCore::checkDiscrepancies() {
-    std::vector<std::string> items;
-    std::map<Guid, const Equipment*> ahsById;
-    for (auto& e : m_ahsFleet->equipment)
-        ahsById[e.equipmentId] = &e;
-    auto dimDiff = [&](const std::optional<double>& a, const std::optional<double>& b) {
-        return a.has_value() != b.has_value() || (a && std::fabs(*a - *b) > m_cfg.dimensionTolerance);
-    };
-    auto fmt = [](const std::optional<double>& v) {
-        if (!v)
-            return std::string("null");
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.2f", *v);
-        return std::string(buf);
-    };
-    for (auto& mine : m_cfg.fleet) {
-        auto it = ahsById.find(mine.equipmentId);
-        if (it == ahsById.end()) {
-            if (mine.autonomous)
-                items.push_back("machine " + mine.hid + " (" + mine.equipmentId +
-                                ") is missing from the AHS fleet definition");
-            continue;
-        }
-        const Equipment& a = *it->second;
-        const std::string who = "machine " + mine.equipmentId + ": ";
-        if (!mine.autonomous)
-            items.push_back(who + "listed by both the FMS (manned) and the AHS");
-        if (a.hid != mine.hid)
-            items.push_back(who + "HID '" + a.hid + "' at the AHS, '" + mine.hid + "' at the FMS");
-        if (a.type != mine.type)
-            items.push_back(who + "type " + a.type + " at the AHS, " + mine.type + " at the FMS");
-        if (dimDiff(a.length, mine.length) || dimDiff(a.width, mine.width))
-            items.push_back(who + "dimensions " + fmt(a.length) + " x " + fmt(a.width) + " m at the AHS, " +
-                            fmt(mine.length) + " x " + fmt(mine.width) + " m at the FMS");
-    }
-    std::set<Guid> mineIds;
-    for (auto& e : m_cfg.fleet)
-        mineIds.insert(e.equipmentId);
-    for (auto& a : m_ahsFleet->equipment)
-        if (!mineIds.count(a.equipmentId))
-            items.push_back("machine " + a.hid + " (" + a.equipmentId + ", " + a.type +
-                            ") of the AHS is not in the FMS fleet");
+    const auto items = fleetDiscrepancies(*m_ahsFleet, m_cfg.fleet, m_cfg.dimensionTolerance);
     m_counters.add("fleet.discrepancies", items.size());
     m_listener.onFleetDiscrepancies(m_link.name, items);
     for (auto& i : items)

@@ -21,6 +21,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 namespace ocu::iso23725 {
@@ -67,6 +68,11 @@ public:
     // MachinePositionV1 of the FMS's own (manned) machines; nothing while the link is down.
     void sendOwnPositions(const std::map<Guid, IsoPosition>& positions);
 
+    // Positions received since the last call, one IsoListener::onMachinePositions batch (latest per machine).
+    // The owner calls it shortly after frames arrive (IsoStack: within kPositionBatchInterval).
+    void flushPositions();
+    bool positionsPending() const { return !m_positionBatch.empty(); }
+
     // Timeouts and periodic sending due at clock.now(): all-stop acknowledgement and status confirmation,
     // the periodic interface diagnostic, the flush of rate-limited error diagnostics.
     void poll();
@@ -92,6 +98,10 @@ private:
     void handleFrame(std::string_view frame, bool mapChannel);
     void handle(const Envelope& env, bool mapChannel);
     template <class T> void machineMember(IsoMachineSnapshot& m, const T& body, std::int64_t headerMs);
+    bool applyPosition(IsoMachineSnapshot& m,
+                       const MachinePositionV1& position); // false: unavailable or late
+    void queuePosition(const IsoMachineSnapshot& m);
+    void dropQueuedPosition(const IsoMachineSnapshot& m);
     IsoMachineSnapshot& machine(const Guid& id);
     static std::string label(const IsoMachineSnapshot& m);
     FleetDefinitionV2 ownFleet() const;
@@ -122,6 +132,10 @@ private:
     Deadline m_statusDeadline;
 
     MapServiceClient m_mapService;
+    // Machines (snapshots in m_machines) whose position changed since the last flushPositions, in arrival
+    // order.
+    std::vector<const IsoMachineSnapshot*> m_positionBatch;
+    std::unordered_set<const IsoMachineSnapshot*> m_positionQueued;
 
     std::optional<TimePoint> m_nextPeriodicDiagnostic;
     std::optional<TimePoint> m_lastErrorDiagnostic;

@@ -76,6 +76,15 @@ public:
         (void)link, (void)state, (void)reason;
     }
     virtual void onMachineChanged(const IsoMachineSnapshot& machine) { (void)machine; }
+    // Machines that only moved (a new MachinePositionV1, nothing else changed), latest position each, in one
+    // batch some milliseconds after they arrived: a listener on the hot path reads just the positions (the
+    // snapshots are valid during the call only). By default each is an onMachineChanged.
+    virtual void onMachinePositions(const std::string& link,
+                                    const std::vector<const IsoMachineSnapshot*>& machines) {
+        (void)link;
+        for (const IsoMachineSnapshot* m : machines)
+            onMachineChanged(*m);
+    }
     virtual void onMachineRemoved(const std::string& link, const Guid& equipmentId) {
         (void)link, (void)equipmentId;
     }
