@@ -23,6 +23,16 @@ void FleetBridge::publishMachine(const MachineState& state) {
     m_machines.push(state.id, state);
 }
 
+void FleetBridge::publishMachines(std::vector<MachineState>&& states) {
+    TelemetryCoalescer<QString, std::optional<MachineState>>::Batch batch;
+    batch.reserve(states.size());
+    for (auto& m : states) {
+        QString id = m.id;
+        batch.emplace_back(std::move(id), std::move(m));
+    }
+    m_machines.push(std::move(batch));
+}
+
 void FleetBridge::publishRemoval(const QString& id) {
     m_machines.push(id, std::nullopt);
 }

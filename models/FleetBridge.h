@@ -22,6 +22,7 @@
 #include <QStringList>
 #include <QVector>
 #include <optional>
+#include <vector>
 
 namespace ocu {
 
@@ -53,6 +54,8 @@ public:
 
     // ---- thread-safe, called from the stack's io thread ----
     void publishMachine(const MachineState& state);
+    // Several machines in one hand-over (one lock for the batch), e.g. a burst of positions.
+    void publishMachines(std::vector<MachineState>&& states);
     void publishRemoval(const QString& id);
     void publishLink(const LinkStatus& status);
     void publishEvent(const FleetEvent& event);

@@ -26,6 +26,7 @@ public:
         quint64 pushed = 0;    // values accepted
         quint64 delivered = 0; // values handed to the sink (pushed - delivered - pending = overwritten)
         quint64 drains = 0;    // sink calls
+        quint64 handovers = 0; // producer calls (push or a batch push), one lock each
     };
 
     // `context` decides the draining thread (its thread affinity); the sink runs there.
@@ -46,18 +47,24 @@ public:
         bool schedule = false;
         {
             std::lock_guard lock(m_state->mutex);
-            auto it = m_state->index.find(key);
-            if (it != m_state->index.end()) {
-                m_state->pending[size_t(*it)].second = std::move(value);
-            } else {
-                m_state->index.insert(key, int(m_state->pending.size()));
-                m_state->pending.emplace_back(key, std::move(value));
-            }
-            ++m_state->stats.pushed;
-            if (!m_state->scheduled) {
-                m_state->scheduled = true;
-                schedule = true;
-            }
+            put(key, std::move(value));
+            ++m_state->stats.handovers;
+            schedule = markScheduled();
+        }
+        if (schedule)
+            scheduleDrain(m_state);
+    }
+    // Any thread: many values in one hand-over (one lock), in order; the latest value per key still wins.
+    void push(Batch&& values) {
+        if (values.empty())
+            return;
+        bool schedule = false;
+        {
+            std::lock_guard lock(m_state->mutex);
+            for (auto& [key, value] : values)
+                put(key, std::move(value));
+            ++m_state->stats.handovers;
+            schedule = markScheduled();
         }
         if (schedule)
             scheduleDrain(m_state);
@@ -85,6 +92,24 @@ private:
         bool scheduled = false;
         Stats stats;
     };
+
+    // With the lock held.
+    void put(const Key& key, Value&& value) {
+        auto it = m_state->index.find(key);
+        if (it != m_state->index.end()) {
+            m_state->pending[size_t(*it)].second = std::move(value);
+        } else {
+            m_state->index.insert(key, int(m_state->pending.size()));
+            m_state->pending.emplace_back(key, std::move(value));
+        }
+        ++m_state->stats.pushed;
+    }
+    bool markScheduled() {
+        if (m_state->scheduled)
+            return false;
+        m_state->scheduled = true;
+        return true;
+    }
 
     static void scheduleDrain(const std::shared_ptr<State>& state) {
         QObject* ctx = state->context.data();

@@ -68,37 +68,75 @@ void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, 
         publishEvent(makeEvent(EventSeverity::Warning, ocu::EventKind::LinkLoss, {},
                                tr("ISO 23725 link %1 down: %2").arg(q(link), q(reason)),
                                QStringLiteral("iso23725")));
-        for (auto& [key, snap] : m_snapshots) {
-            if (snap.link != link)
+        std::vector<MachineState> rows;
+        for (auto& [key, io] : m_machinesIo) {
+            if (io.snapshot.link != link)
                 continue;
-            snap.stateKnown = false;
-            publishMachine(toMachine(snap, AllStopState::Unknown));
+            io.snapshot.stateKnown = false;
+            io.row = toMachine(io.snapshot, AllStopState::Unknown);
+            rows.push_back(io.row);
         }
+        publishMachines(std::move(rows));
     }
 }
 
+const std::string& IsoBridge::keyOf(const std::string& link, const Guid& equipmentId) {
+    m_key.assign(link);
+    m_key += '/';
+    m_key += equipmentId;
+    return m_key;
+}
+
+// A full change (anything but a mere position): the slow path, which derives the whole row.
 void IsoBridge::onMachineChanged(const IsoMachineSnapshot& machine) {
-    const std::string key = machine.link + "/" + machine.equipmentId;
-    m_snapshots[key] = machine;
-    MachineState m = toMachine(machine, m_allStopIo.count(machine.link) ? m_allStopIo[machine.link]
-                                                                        : AllStopState::Unknown);
-    {
+    auto [it, added] = m_machinesIo.try_emplace(keyOf(machine.link, machine.equipmentId));
+    IoMachine& io = it->second;
+    io.snapshot = machine;
+    io.row = toMachine(machine,
+                       m_allStopIo.count(machine.link) ? m_allStopIo[machine.link] : AllStopState::Unknown);
+    if (added) {
         std::lock_guard lock(m_machineLinksMutex);
-        m_machineLinks.insert(m.id, q(machine.link));
+        m_machineLinks.insert(io.row.id, q(machine.link));
     }
-    publishMachine(m);
+    publishMachine(io.row);
+}
+
+// The hot path (every machine, 1-10 Hz): only the position fields of the rows change, and the batch goes to
+// the GUI thread in one hand-over.
+void IsoBridge::onMachinePositions(const std::string& link,
+                                   const std::vector<const IsoMachineSnapshot*>& machines) {
+    std::vector<MachineState> rows;
+    rows.reserve(machines.size());
+    for (const IsoMachineSnapshot* m : machines) {
+        auto it = m_machinesIo.find(keyOf(link, m->equipmentId));
+        if (it == m_machinesIo.end()) { // never seen whole (not expected from FmsCore): take it whole
+            onMachineChanged(*m);
+            continue;
+        }
+        if (!m->position)
+            continue;
+        it->second.snapshot.position = m->position;
+        setPosition(it->second.row, *m->position);
+        rows.push_back(it->second.row);
+    }
+    if (!rows.empty())
+        publishMachines(std::move(rows));
 }
 
 void IsoBridge::onMachineRemoved(const std::string& link, const Guid& equipmentId) {
-    m_snapshots.erase(link + "/" + equipmentId);
+    m_machinesIo.erase(keyOf(link, equipmentId));
     publishRemoval(protocolPrefix(Protocol::Iso23725) + q(equipmentId));
 }
 
 void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& status) {
     m_allStopIo[link] = status.state;
-    for (const auto& [key, snap] : m_snapshots)
-        if (snap.link == link)
-            publishMachine(toMachine(snap, status.state));
+    std::vector<MachineState> rows;
+    for (auto& [key, io] : m_machinesIo)
+        if (io.snapshot.link == link) {
+            io.row = toMachine(io.snapshot, status.state);
+            rows.push_back(io.row);
+        }
+    publishMachines(std::move(rows));
     const QString l = q(link);
     const int st = static_cast<int>(status.state);
     QMetaObject::invokeMethod(
@@ -235,21 +273,8 @@ MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop
     m.name = s.hid.empty() ? q(s.equipmentId).left(8) : q(s.hid);
     m.type = q(s.type);
     m.link = s.stateKnown ? ocu::LinkState::Up : ocu::LinkState::Unknown;
-    if (s.position) {
-        const auto& p = *s.position;
-        const EnuPoint e =
-            m_frame.toLocal({p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)});
-        m.hasPosition = true;
-        m.e = e.e;
-        m.n = e.n;
-        m.u = e.u;
-        m.lat = p.latitude;
-        m.lon = p.longitude;
-        m.headingDeg = p.heading.value_or(0);
-        m.speed = p.speedKmh.value_or(0) / 3.6;
-        m.lastDataMs = p.receivedUnixMs;
-        m.lastMessageMs = p.measuredUnixMs.value_or(0);
-    }
+    if (s.position)
+        setPosition(m, *s.position);
     m.length = s.length.value_or(0);
     m.width = s.width.value_or(0);
     const QString type = m.type.toLower();
@@ -294,6 +319,20 @@ MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop
                         tr("fuel %1 %").arg(*s.health->fuelLevel);
     }
     return m;
+}
+
+void IsoBridge::setPosition(MachineState& m, const IsoPosition& p) const {
+    const EnuPoint e = m_frame.toLocal({p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)});
+    m.hasPosition = true;
+    m.e = e.e;
+    m.n = e.n;
+    m.u = e.u;
+    m.lat = p.latitude;
+    m.lon = p.longitude;
+    m.headingDeg = p.heading.value_or(0);
+    m.speed = p.speedKmh.value_or(0) / 3.6;
+    m.lastDataMs = p.receivedUnixMs;
+    m.lastMessageMs = p.measuredUnixMs.value_or(0);
 }
 
 // ---- GUI thread: commands ----

@@ -48,6 +48,8 @@ signals:
 private:
     void onLinkState(const std::string& link, iso23725::LinkState state, const std::string& reason) override;
     void onMachineChanged(const iso23725::IsoMachineSnapshot& machine) override;
+    void onMachinePositions(const std::string& link,
+                            const std::vector<const iso23725::IsoMachineSnapshot*>& machines) override;
     void onMachineRemoved(const std::string& link, const iso23725::Guid& equipmentId) override;
     void onAllStopChanged(const std::string& link, const iso23725::AllStopStatus& status) override;
     void onMapProgress(const std::string& link, const iso23725::MapProgress& progress) override;
@@ -56,13 +58,23 @@ private:
     void onEvent(iso23725::IsoSeverity severity, const std::string& text) override;
 
     MachineState toMachine(const iso23725::IsoMachineSnapshot& m, iso23725::AllStopState stop) const;
+    void setPosition(MachineState& row, const iso23725::IsoPosition& p) const;
+    const std::string& keyOf(const std::string& link, const iso23725::Guid& equipmentId);
     QString linkOf(const QString& machineId) const;
 
     iso23725::IsoConfig m_config;
     GeoFrame m_frame;
     std::unique_ptr<iso23725::IsoStack> m_stack;
-    // io thread only: latest snapshots and all-stop per link, to re-derive rows when the all-stop changes.
-    std::map<std::string, iso23725::IsoMachineSnapshot> m_snapshots;
+    // io thread only, per machine ("link/equipmentId"): the snapshot of its last full change (to re-derive
+    // the row when the all-stop or the link changes) and the row last published. A position patches both (the
+    // snapshot's position, the row's position fields): no snapshot copy, and one hand-over per batch.
+    struct IoMachine {
+        iso23725::IsoMachineSnapshot snapshot;
+        MachineState row;
+    };
+    std::map<std::string, IoMachine> m_machinesIo;
+    std::string m_key; // reused by keyOf()
+    // io thread only: all-stop per link.
     std::map<std::string, iso23725::AllStopState> m_allStopIo;
     std::set<std::string> m_everUp;
     // GUI thread

@@ -1,4 +1,5 @@
 #include "protocols/iso23725/FmsCore.h"
+#include "protocols/iso23725/FleetDiscrepancies.h"
 
 #include "protocols/common/Log.h"
 
@@ -9,11 +10,8 @@
 namespace ocu::iso23725 {
 
 static constexpr const char* kLog = "ocu.iso";
-// The API version of the map service this console speaks (§10.6.1 [I]).
-static constexpr std::int64_t kMapServiceApi = 1;
 // At most this many error entries wait for the next rate-limited diagnostic; the rest are only counted.
 static constexpr std::size_t kMaxPendingErrors = 20;
-static constexpr std::chrono::seconds kMapIdentificationWait{5};
 
 const char* toString(LinkState s) {
     switch (s) {
@@ -54,7 +52,15 @@ std::optional<std::string> memberOf(const std::string& error) {
 FmsCore::FmsCore(const IsoConfig& config, IsoLinkConfig link, IsoListener& listener, Counters& counters,
                  const Clock& clock, FmsOutbound& out)
     : m_cfg(config), m_link(std::move(link)), m_listener(listener), m_counters(counters), m_clock(clock),
-      m_out(out) {}
+      m_out(out), m_mapService(m_link.name, !m_link.mapWs.url.empty(), m_cfg.rules.mapServiceMember, listener,
+                               counters, clock,
+                               {[this](const Body& body) { return sendMapBody(body); },
+                                [this](IsoSeverity s, const std::string& text) { event(s, text); },
+                                [this](const std::string& error, bool frameRejected) {
+                                    if (frameRejected)
+                                        ++m_framesRejected;
+                                    reportError("MapRejected", error, std::nullopt, std::nullopt);
+                                }}) {}
 
 void FmsCore::event(IsoSeverity s, const std::string& text) {
     if (s == IsoSeverity::Info)
@@ -130,8 +136,7 @@ std::string FmsCore::label(const IsoMachineSnapshot& m) {
 void FmsCore::opened(const std::string& peer) {
     m_state = LinkState::Up;
     m_gotFirstMessage = false;
-    if (!separateMapService())
-        interruptMapTransfer("reconnected");
+    m_mapService.linkOpened();
     m_listener.onLinkState(m_link.name, LinkState::Up, "connected to " + peer);
     event(IsoSeverity::Info, "link " + m_link.name + " up (" + peer + ")");
     // [ISO-seed]: FleetDefinitionV2 is the first message sent by both actors upon connection.
@@ -149,8 +154,7 @@ void FmsCore::closed(const std::string& reason) {
     m_statusDeadline.at.reset();
     m_nextPeriodicDiagnostic.reset();
     m_pendingErrors.clear();
-    if (!separateMapService())
-        interruptMapTransfer("link down");
+    m_mapService.linkClosed();
     // §2.1 rule 5 / §7.7: all-stop and machine state are UNKNOWN while disconnected.
     m_allStop.state = AllStopState::Unknown;
     m_allStop.activeId.reset();
@@ -160,6 +164,8 @@ void FmsCore::closed(const std::string& reason) {
         m.stateKnown = false;
         m_listener.onMachineChanged(m);
     }
+    m_positionBatch.clear(); // those snapshots just went out whole
+    m_positionQueued.clear();
     // Reported last, so a listener that sees DOWN already sees UNKNOWN all-stop and machine state.
     m_listener.onLinkState(m_link.name, LinkState::Down, reason);
     event(IsoSeverity::Warning, "link " + m_link.name + " down: " + reason);
@@ -178,13 +184,7 @@ void FmsCore::connectFailed(const std::string& reason, std::chrono::milliseconds
 // ---------------------------------------------------------------- map service channel (Q10)
 
 void FmsCore::mapOpened(const std::string& peer) {
-    m_mapState = LinkState::Up;
-    interruptMapTransfer("map service reconnected");
-    m_counters.add("map_service.opened");
-    event(IsoSeverity::Info, "map service of " + m_link.name + " up (" + peer + ")");
-    // The service speaks first (MapServiceV1, §10.6.1 [I]); the summary is asked for when it has, or after
-    // kMapIdentificationWait from a service that does not identify itself.
-    m_mapIdentificationDeadline = m_clock.now() + kMapIdentificationWait;
+    m_mapService.channelOpened(peer);
 }
 
 void FmsCore::mapText(std::string_view frame) {
@@ -192,10 +192,7 @@ void FmsCore::mapText(std::string_view frame) {
 }
 
 void FmsCore::mapClosed(const std::string& reason) {
-    m_mapState = LinkState::Down;
-    m_mapIdentificationDeadline.reset();
-    interruptMapTransfer("map service down");
-    event(IsoSeverity::Warning, "map service of " + m_link.name + " down: " + reason);
+    m_mapService.channelClosed(reason);
 }
 
 // ---------------------------------------------------------------- incoming frames
@@ -206,13 +203,7 @@ void FmsCore::handleFrame(std::string_view frame, bool mapChannel) {
     const std::string& from = mapChannel ? "map service of " + m_link.name : m_link.name;
     std::size_t i = frame.find_first_not_of(" \t\r\n");
     if (i != std::string_view::npos && frame[i] == '<') {
-        if (mapChannel != separateMapService()) {
-            m_counters.add("rx.rejected.map_on_wrong_channel");
-            event(IsoSeverity::Warning, "map chunk on the main socket of " + m_link.name +
-                                            " ignored: the map service has its own URL");
-            return;
-        }
-        onChunk(frame);
+        m_mapService.chunk(frame, mapChannel); // raw XML: a map document (§8)
         return;
     }
     auto env = decodeMessage(frame, m_cfg.rules);
@@ -272,21 +263,11 @@ void FmsCore::handle(const Envelope& env, bool mapChannel) {
                 } else if constexpr (std::is_same_v<T, MachineAllStopResponseV1>) {
                     onAllStopResponse(b);
                 } else if constexpr (std::is_same_v<T, MapServiceV1>) {
-                    onMapService(b, mapChannel);
+                    m_mapService.service(b, mapChannel);
                 } else if constexpr (std::is_same_v<T, MapSummaryV1>) {
-                    if (mapChannel != separateMapService()) {
-                        m_counters.add("rx.rejected.map_on_wrong_channel");
-                        return;
-                    }
-                    onSummary(b);
+                    m_mapService.summary(b, mapChannel);
                 } else if constexpr (std::is_same_v<T, MapConnectivityV1>) {
-                    m_connectivity = b;
-                    if (m_map) {
-                        auto m = std::make_shared<MapModel>(*m_map);
-                        m->connectivity.assign(b);
-                        m_map = m;
-                        m_listener.onMapChanged(m_link.name, *m);
-                    }
+                    m_mapService.connectivity(b);
                 } else if constexpr (std::is_same_v<T, InterfaceDiagnosticV1>) {
                     for (auto& m : b.message)
                         event(m.severity == "Error"     ? IsoSeverity::Error
@@ -317,7 +298,18 @@ void FmsCore::handle(const Envelope& env, bool mapChannel) {
                                                         m_link.name + " for machine " + *eq +
                                                         " not in its fleet definition");
                     }
-                    machineMember(m, b, hdrMs);
+                    if constexpr (std::is_same_v<T, MachinePositionV1>) {
+                        // The hot member (every machine, 1-10 Hz): a machine whose state is known only moves,
+                        // and its new position waits for the next batch (flushPositions).
+                        const bool moved = applyPosition(m, b);
+                        if (m.stateKnown) {
+                            if (moved)
+                                queuePosition(m);
+                            return;
+                        }
+                    } else {
+                        machineMember(m, b, hdrMs);
+                    }
                     m.stateKnown = true;
                     m_listener.onMachineChanged(m);
                 }
@@ -326,32 +318,56 @@ void FmsCore::handle(const Envelope& env, bool mapChannel) {
     }
 }
 
+// ---------------------------------------------------------------- positions (§7.4)
+
+bool FmsCore::applyPosition(IsoMachineSnapshot& m, const MachinePositionV1& b) {
+    if (!b.pose.latitude || !b.pose.longitude) {
+        m_counters.add("rx.position_unavailable");
+        return false;
+    }
+    if (m.position && m.position->measuredUnixMs && b.timestamp.unixMs &&
+        *b.timestamp.unixMs < *m.position->measuredUnixMs) {
+        m_counters.add("rx.late_position"); // latest state wins (§2.1 rule 2)
+        return false;
+    }
+    IsoPosition p;
+    p.latitude = *b.pose.latitude;
+    p.longitude = *b.pose.longitude;
+    p.elevation = b.pose.elevation;
+    if (b.pose.heading)
+        p.heading = static_cast<double>(*b.pose.heading);
+    if (b.pose.speed)
+        p.speedKmh = static_cast<double>(*b.pose.speed);
+    if (b.pose.latitudeAccuracy && b.pose.longitudeAccuracy)
+        p.horizontalAccuracy = std::max(*b.pose.latitudeAccuracy, *b.pose.longitudeAccuracy);
+    p.measuredUnixMs = b.timestamp.unixMs;
+    p.receivedUnixMs = unixMillisNow();
+    m.position = p;
+    m_counters.add("rx.positions");
+    return true;
+}
+
+void FmsCore::queuePosition(const IsoMachineSnapshot& m) {
+    if (m_positionQueued.insert(&m).second)
+        m_positionBatch.push_back(&m);
+}
+
+void FmsCore::dropQueuedPosition(const IsoMachineSnapshot& m) {
+    if (m_positionQueued.erase(&m))
+        m_positionBatch.erase(std::find(m_positionBatch.begin(), m_positionBatch.end(), &m));
+}
+
+void FmsCore::flushPositions() {
+    if (m_positionBatch.empty())
+        return;
+    m_counters.add("rx.position_batches");
+    m_listener.onMachinePositions(m_link.name, m_positionBatch);
+    m_positionBatch.clear();
+    m_positionQueued.clear();
+}
+
 template <class T> void FmsCore::machineMember(IsoMachineSnapshot& m, const T& b, std::int64_t hdrMs) {
-    if constexpr (std::is_same_v<T, MachinePositionV1>) {
-        if (!b.pose.latitude || !b.pose.longitude) {
-            m_counters.add("rx.position_unavailable");
-            return;
-        }
-        if (m.position && m.position->measuredUnixMs && b.timestamp.unixMs &&
-            *b.timestamp.unixMs < *m.position->measuredUnixMs) {
-            m_counters.add("rx.late_position"); // latest state wins (§2.1 rule 2)
-            return;
-        }
-        IsoPosition p;
-        p.latitude = *b.pose.latitude;
-        p.longitude = *b.pose.longitude;
-        p.elevation = b.pose.elevation;
-        if (b.pose.heading)
-            p.heading = static_cast<double>(*b.pose.heading);
-        if (b.pose.speed)
-            p.speedKmh = static_cast<double>(*b.pose.speed);
-        if (b.pose.latitudeAccuracy && b.pose.longitudeAccuracy)
-            p.horizontalAccuracy = std::max(*b.pose.latitudeAccuracy, *b.pose.longitudeAccuracy);
-        p.measuredUnixMs = b.timestamp.unixMs;
-        p.receivedUnixMs = unixMillisNow();
-        m.position = p;
-        m_counters.add("rx.positions");
-    } else if constexpr (std::is_same_v<T, MachineAutonomyModeV1>) {
+    if constexpr (std::is_same_v<T, MachineAutonomyModeV1>) {
         m.autonomyMode = b.autonomyMode;
     } else if constexpr (std::is_same_v<T, MachineDispatchAvailabilityV1>) {
         if (m.dispatchingCustodian == "AHS" && b.dispatchingCustodian == "FMS")
@@ -424,6 +440,7 @@ void FmsCore::onFleet(const FleetDefinitionV2& f) {
     // No delete command exists: absence from a re-sent list removes the machine [ISO-seed].
     for (auto it = m_machines.begin(); it != m_machines.end();) {
         if (!listed.count(it->first)) {
+            dropQueuedPosition(it->second);
             m_listener.onMachineRemoved(m_link.name, it->first);
             it = m_machines.erase(it);
         } else {
@@ -434,47 +451,7 @@ void FmsCore::onFleet(const FleetDefinitionV2& f) {
 }
 
 void FmsCore::checkDiscrepancies() {
-    std::vector<std::string> items;
-    std::map<Guid, const Equipment*> ahsById;
-    for (auto& e : m_ahsFleet->equipment)
-        ahsById[e.equipmentId] = &e;
-    auto dimDiff = [&](const std::optional<double>& a, const std::optional<double>& b) {
-        return a.has_value() != b.has_value() || (a && std::fabs(*a - *b) > m_cfg.dimensionTolerance);
-    };
-    auto fmt = [](const std::optional<double>& v) {
-        if (!v)
-            return std::string("null");
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.2f", *v);
-        return std::string(buf);
-    };
-    for (auto& mine : m_cfg.fleet) {
-        auto it = ahsById.find(mine.equipmentId);
-        if (it == ahsById.end()) {
-            if (mine.autonomous)
-                items.push_back("machine " + mine.hid + " (" + mine.equipmentId +
-                                ") is missing from the AHS fleet definition");
-            continue;
-        }
-        const Equipment& a = *it->second;
-        const std::string who = "machine " + mine.equipmentId + ": ";
-        if (!mine.autonomous)
-            items.push_back(who + "listed by both the FMS (manned) and the AHS");
-        if (a.hid != mine.hid)
-            items.push_back(who + "HID '" + a.hid + "' at the AHS, '" + mine.hid + "' at the FMS");
-        if (a.type != mine.type)
-            items.push_back(who + "type " + a.type + " at the AHS, " + mine.type + " at the FMS");
-        if (dimDiff(a.length, mine.length) || dimDiff(a.width, mine.width))
-            items.push_back(who + "dimensions " + fmt(a.length) + " x " + fmt(a.width) + " m at the AHS, " +
-                            fmt(mine.length) + " x " + fmt(mine.width) + " m at the FMS");
-    }
-    std::set<Guid> mineIds;
-    for (auto& e : m_cfg.fleet)
-        mineIds.insert(e.equipmentId);
-    for (auto& a : m_ahsFleet->equipment)
-        if (!mineIds.count(a.equipmentId))
-            items.push_back("machine " + a.hid + " (" + a.equipmentId + ", " + a.type +
-                            ") of the AHS is not in the FMS fleet");
+    const auto items = fleetDiscrepancies(*m_ahsFleet, m_cfg.fleet, m_cfg.dimensionTolerance);
     m_counters.add("fleet.discrepancies", items.size());
     m_listener.onFleetDiscrepancies(m_link.name, items);
     for (auto& i : items)
@@ -611,121 +588,12 @@ void FmsCore::sendOwnPositions(const std::map<Guid, IsoPosition>& positions) {
     }
 }
 
-// ---------------------------------------------------------------- map service (§10.6)
-
-void FmsCore::onMapService(const MapServiceV1& s, bool mapChannel) {
-    m_counters.add("rx.map_service");
-    if (s.api > kMapServiceApi)
-        logInfo(kLog, "map service of " + m_link.name + " offers API " + std::to_string(s.api) + "; using " +
-                          std::to_string(kMapServiceApi));
-    if (s.api < kMapServiceApi)
-        event(IsoSeverity::Warning, "map service of " + m_link.name + " offers API " + std::to_string(s.api) +
-                                        " only; this console speaks API " + std::to_string(kMapServiceApi));
-    if (mapChannel != separateMapService())
-        return; // identification on the other socket: nothing to ask there
-    m_mapIdentificationDeadline.reset();
-    // Identified: ask where the map stands; the summary decides whether to fetch (§10.6.3).
-    if (!m_fetchPending && !m_assembler.active())
-        sendMapBody(MapCommandV1{"GET", "/summary"});
-}
+// ---------------------------------------------------------------- map service (§10.6, MapServiceClient)
 
 bool FmsCore::fetchMap() {
-    if (separateMapService()) {
-        if (m_mapState != LinkState::Up) {
-            m_counters.add("cmd.refused.link_down");
-            event(IsoSeverity::Warning, "map fetch refused: the map service of '" + m_link.name + "' is " +
-                                            toString(m_mapState) + " (commands are not queued)");
-            return false;
-        }
-    } else if (!upOrRefuse("map fetch")) {
+    if (!separateMapService() && !upOrRefuse("map fetch"))
         return false;
-    }
-    m_assembler.reset();
-    requestMap();
-    return true;
-}
-
-void FmsCore::requestMap() {
-    m_fetchPending = true;
-    sendMapBody(MapCommandV1{"GET", "/"});
-    m_counters.add("map.fetch");
-}
-
-void FmsCore::interruptMapTransfer(const std::string& why) {
-    if (m_assembler.active()) {
-        m_assembler.reset();
-        event(IsoSeverity::Warning, "map transfer from " + m_link.name + " interrupted (" + why + ")" +
-                                        (m_map ? ", previous map kept" : std::string()));
-    }
-    m_fetchPending = false;
-}
-
-void FmsCore::onSummary(const MapSummaryV1& s) {
-    if (m_assembler.active()) {
-        if (m_fetchingSummary && m_fetchingSummary->changeSetMap == s.changeSetMap &&
-            m_fetchingSummary->changeSetWay == s.changeSetWay)
-            return; // the same map being transferred
-        event(IsoSeverity::Warning, "map changed during transfer on " + m_link.name + ": fetching again");
-        m_assembler.reset();
-        if (!m_fetchPending) {
-            requestMap();
-            return;
-        }
-    }
-    if (m_fetchPending) {
-        m_fetchPending = false;
-        m_fetchingSummary = s;
-        m_assembler.begin(s);
-        m_listener.onMapProgress(m_link.name, m_assembler.progress());
-        if (s.documentCount == 0)
-            finishMap();
-        return;
-    }
-    // Re-fetch when the change sets moved (§8 exchange).
-    if (!m_map || m_map->summary.changeSetMap != s.changeSetMap ||
-        m_map->summary.changeSetWay != s.changeSetWay)
-        requestMap();
-}
-
-void FmsCore::onChunk(std::string_view xml) {
-    if (!m_assembler.active()) {
-        m_counters.add("rx.rejected.unexpected_map_chunk");
-        event(IsoSeverity::Warning,
-              "map chunk from " + m_link.name + " without a pending map request ignored");
-        return;
-    }
-    auto p = m_assembler.addChunk(xml);
-    if (!p) {
-        m_counters.add("rx.rejected.map");
-        ++m_framesRejected;
-        event(IsoSeverity::Error, "map from " + m_link.name + " rejected: " + p.error() +
-                                      (m_map ? " (previous map kept)" : std::string()));
-        reportError("MapRejected", p.error(), std::nullopt, std::nullopt);
-        return;
-    }
-    m_listener.onMapProgress(m_link.name, *p);
-    if (p->complete())
-        finishMap();
-}
-
-void FmsCore::finishMap() {
-    auto m = m_assembler.finish();
-    if (!m) {
-        m_counters.add("rx.rejected.map");
-        event(IsoSeverity::Error, "map from " + m_link.name + " rejected: " + m.error());
-        reportError("MapRejected", m.error(), std::nullopt, std::nullopt);
-        return;
-    }
-    auto model = std::make_shared<MapModel>(std::move(*m));
-    if (m_connectivity)
-        model->connectivity.assign(*m_connectivity);
-    for (auto& w : model->warnings)
-        event(IsoSeverity::Warning, "map from " + m_link.name + ": " + w);
-    m_map = model;
-    m_counters.add("map.complete");
-    event(IsoSeverity::Info, "map from " + m_link.name + " complete: " + std::to_string(model->nodes.size()) +
-                                 " nodes, " + std::to_string(model->ways.size()) + " ways");
-    m_listener.onMapChanged(m_link.name, *model);
+    return m_mapService.fetch();
 }
 
 // ---------------------------------------------------------------- interface diagnostic (§5 #15 [I])
@@ -785,14 +653,7 @@ void FmsCore::poll() {
             event(IsoSeverity::Error, d->alarm + " on " + m_link.name);
         }
     }
-    if (m_mapIdentificationDeadline && now >= *m_mapIdentificationDeadline) {
-        m_mapIdentificationDeadline.reset();
-        m_counters.add("map_service.unidentified");
-        event(IsoSeverity::Warning, "map service of " + m_link.name + " did not identify itself (" +
-                                        m_cfg.rules.mapServiceMember + "); asking for its summary anyway");
-        if (!m_fetchPending && !m_assembler.active())
-            sendMapBody(MapCommandV1{"GET", "/summary"});
-    }
+    m_mapService.poll();
     if (m_state != LinkState::Up)
         return;
     if (!m_pendingErrors.empty() && m_lastErrorDiagnostic &&

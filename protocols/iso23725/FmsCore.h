@@ -5,7 +5,9 @@
 // measured on an ocu::Clock and checked by poll(), so the whole session runs on a FakeClock in tests.
 // Not thread-safe: IsoStack calls it on its io thread only.
 #include "protocols/iso23725/IsoConfig.h"
+#include "protocols/iso23725/IsoListener.h"
 #include "protocols/iso23725/MapModel.h"
+#include "protocols/iso23725/MapServiceClient.h"
 #include "protocols/iso23725/Messages.h"
 
 #include "protocols/common/Clock.h"
@@ -19,90 +21,10 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 namespace ocu::iso23725 {
-
-enum class LinkState { Unknown, Up, Down };
-const char* toString(LinkState s);
-
-enum class IsoSeverity { Info, Warning, Error };
-
-struct IsoPosition {
-    double latitude = 0;
-    double longitude = 0;
-    std::optional<double> elevation; // WGS84 (Q3: datum kept as received)
-    std::optional<double> heading;   // degrees, compass
-    std::optional<double> speedKmh;
-    std::optional<double> horizontalAccuracy;
-    std::optional<std::int64_t> measuredUnixMs; // MachinePositionV1.Timestamp
-    std::int64_t receivedUnixMs = 0;
-};
-
-// Everything the console knows about one machine of one link.
-struct IsoMachineSnapshot {
-    std::string link;
-    Guid equipmentId;
-    std::string hid;
-    std::string type;
-    std::string oem;
-    std::string model;
-    bool autonomous = false;
-    std::optional<double> length;
-    std::optional<double> width;
-    bool inAhsFleet = false; // listed in the AHS FleetDefinitionV2
-    bool stateKnown = false; // false while the link is down and until the snapshot after reconnect (§2.1)
-    std::optional<IsoPosition> position;
-    std::string autonomyMode;         // "" = unknown
-    std::string dispatchingCustodian; // "" = unknown
-    std::optional<BasicMachineHealthV2> health;
-    std::optional<std::vector<DiagnosticEntry>> diagnostics; // full active list; nullopt = not reported yet
-    std::optional<HaulTruckProductionStateV2> production;
-    std::int64_t productionUnixMs = 0;
-    std::optional<HaulTruckPayloadV1> payload;
-    std::int64_t payloadUnixMs = 0;
-    std::optional<HaulTruckProductionStateSensorV1> sensor;
-    std::optional<HaulTruckDumpV1> lastDump;
-    std::optional<HaulTruckProductionCycleV1> lastCycle;
-    std::optional<HaulTruckAssignmentV1> assignment;         // AHS-reported status
-    std::vector<AssignmentItem> requestedAssignments;        // last request sent by this FMS
-    std::vector<AssignmentResponseItem> assignmentResponses; // last response received
-};
-
-enum class AllStopState { Unknown, Off, On };
-const char* toString(AllStopState s);
-
-struct AllStopStatus {
-    AllStopState state = AllStopState::Unknown; // only from MachineAllStopV1 (never from the response)
-    std::optional<Guid> activeId;               // ModeAllStopId reported by the AHS
-    bool external = false;                      // On with an id this console did not issue
-    std::optional<Guid> pendingId;              // our last Apply/Remove awaiting status
-    bool supported = true;                      // false after "not supported" rejection
-};
-
-class IsoListener {
-public:
-    virtual ~IsoListener() = default;
-    virtual void onLinkState(const std::string& link, LinkState state, const std::string& reason) {
-        (void)link, (void)state, (void)reason;
-    }
-    virtual void onMachineChanged(const IsoMachineSnapshot& machine) { (void)machine; }
-    virtual void onMachineRemoved(const std::string& link, const Guid& equipmentId) {
-        (void)link, (void)equipmentId;
-    }
-    virtual void onAllStopChanged(const std::string& link, const AllStopStatus& status) {
-        (void)link, (void)status;
-    }
-    virtual void onMapProgress(const std::string& link, const MapProgress& progress) {
-        (void)link, (void)progress;
-    }
-    virtual void onMapChanged(const std::string& link, const MapModel& map) { (void)link, (void)map; }
-    // Fleet discrepancies (AHS list vs configured FMS fleet); empty list = consistent.
-    virtual void onFleetDiscrepancies(const std::string& link, const std::vector<std::string>& items) {
-        (void)link, (void)items;
-    }
-    virtual void onEvent(IsoSeverity severity, const std::string& text) { (void)severity, (void)text; }
-};
 
 // Where the session's frames go. Each returns false when that channel has no open session.
 class FmsOutbound {
@@ -132,7 +54,7 @@ public:
     void mapOpened(const std::string& peer);
     void mapText(std::string_view frame);
     void mapClosed(const std::string& reason);
-    LinkState mapChannelState() const { return m_mapState; }
+    LinkState mapChannelState() const { return m_mapService.channelState(); }
 
     // ---- commands: false (with an operator event) when refused; never queued while down (§2.1 rule 1) ----
     bool allStopApply();
@@ -146,6 +68,11 @@ public:
     // MachinePositionV1 of the FMS's own (manned) machines; nothing while the link is down.
     void sendOwnPositions(const std::map<Guid, IsoPosition>& positions);
 
+    // Positions received since the last call, one IsoListener::onMachinePositions batch (latest per machine).
+    // The owner calls it shortly after frames arrive (IsoStack: within kPositionBatchInterval).
+    void flushPositions();
+    bool positionsPending() const { return !m_positionBatch.empty(); }
+
     // Timeouts and periodic sending due at clock.now(): all-stop acknowledgement and status confirmation,
     // the periodic interface diagnostic, the flush of rate-limited error diagnostics.
     void poll();
@@ -154,7 +81,7 @@ public:
     LinkState state() const { return m_state; }
     const AllStopStatus& allStop() const { return m_allStop; }
     const std::map<Guid, IsoMachineSnapshot>& machines() const { return m_machines; }
-    std::shared_ptr<const MapModel> map() const { return m_map; }
+    std::shared_ptr<const MapModel> map() const { return m_mapService.map(); }
     const std::optional<FleetDefinitionV2>& ahsFleet() const { return m_ahsFleet; }
 
 private:
@@ -171,6 +98,10 @@ private:
     void handleFrame(std::string_view frame, bool mapChannel);
     void handle(const Envelope& env, bool mapChannel);
     template <class T> void machineMember(IsoMachineSnapshot& m, const T& body, std::int64_t headerMs);
+    bool applyPosition(IsoMachineSnapshot& m,
+                       const MachinePositionV1& position); // false: unavailable or late
+    void queuePosition(const IsoMachineSnapshot& m);
+    void dropQueuedPosition(const IsoMachineSnapshot& m);
     IsoMachineSnapshot& machine(const Guid& id);
     static std::string label(const IsoMachineSnapshot& m);
     FleetDefinitionV2 ownFleet() const;
@@ -178,12 +109,6 @@ private:
     void checkDiscrepancies();
     void setAllStop(const MachineAllStopV1& status);
     void onAllStopResponse(const MachineAllStopResponseV1& response);
-    void onMapService(const MapServiceV1& service, bool mapChannel);
-    void onSummary(const MapSummaryV1& summary);
-    void onChunk(std::string_view xml);
-    void requestMap();
-    void finishMap();
-    void interruptMapTransfer(const std::string& why);
     // Interface diagnostic (§5 #15 [I], Q7): "periodic (60 s) + on error".
     void reportError(const std::string& code, const std::string& detail, std::optional<std::string> refMember,
                      std::optional<Timestamp> refTimestamp);
@@ -198,7 +123,6 @@ private:
     FmsOutbound& m_out;
 
     LinkState m_state = LinkState::Unknown;
-    LinkState m_mapState = LinkState::Unknown;
     bool m_gotFirstMessage = false;
     std::optional<FleetDefinitionV2> m_ahsFleet;
     std::map<Guid, IsoMachineSnapshot> m_machines;
@@ -207,14 +131,12 @@ private:
     Deadline m_ackDeadline;
     Deadline m_statusDeadline;
 
-    MapAssembler m_assembler;
-    bool m_fetchPending = false;
-    std::optional<MapSummaryV1> m_fetchingSummary;
-    std::shared_ptr<MapModel> m_map;
-    std::optional<MapConnectivityV1> m_connectivity;
+    MapServiceClient m_mapService;
+    // Machines (snapshots in m_machines) whose position changed since the last flushPositions, in arrival
+    // order.
+    std::vector<const IsoMachineSnapshot*> m_positionBatch;
+    std::unordered_set<const IsoMachineSnapshot*> m_positionQueued;
 
-    // A map service that never identifies itself is asked for its summary anyway after this deadline.
-    std::optional<TimePoint> m_mapIdentificationDeadline;
     std::optional<TimePoint> m_nextPeriodicDiagnostic;
     std::optional<TimePoint> m_lastErrorDiagnostic;
     std::vector<DiagMessage> m_pendingErrors;

@@ -8,14 +8,37 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <cmath>
+#include <functional>
 
 namespace ocu::iso23725 {
 
 static constexpr const char* kLog = "ocu.iso";
 // How often the sessions' deadlines are checked: the resolution of the all-stop and diagnostic timers.
 static constexpr std::chrono::milliseconds kPollInterval{100};
+// Positions reach the listener in batches (FmsCore::flushPositions), at most this long after they arrived:
+// the console's bridge hands them to the GUI thread once per batch instead of once per message.
+static constexpr std::chrono::milliseconds kPositionBatchInterval{5};
 
 namespace {
+
+// Arms one timer when positions are waiting and flushes every link's batch when it fires.
+struct PositionFlush {
+    explicit PositionFlush(boost::asio::io_context& io) : timer(io) {}
+    void arm() {
+        if (armed)
+            return;
+        armed = true;
+        timer.expires_after(kPositionBatchInterval);
+        timer.async_wait([this](boost::system::error_code ec) {
+            armed = false;
+            if (!ec)
+                flushAll();
+        });
+    }
+    boost::asio::steady_timer timer;
+    bool armed = false;
+    std::function<void()> flushAll;
+};
 
 // One link: the FMS session (all behaviour) and the sockets it talks through.
 struct Link final : FmsOutbound {
@@ -23,8 +46,11 @@ struct Link final : FmsOutbound {
         Link* link = nullptr;
         void onOpen(SessionId id, const std::string& peer) override { link->mainOpened(id, peer); }
         void onText(SessionId id, std::string text) override {
-            if (link->mainSession == id)
-                link->session->text(text);
+            if (link->mainSession != id)
+                return;
+            link->session->text(text);
+            if (link->session->positionsPending())
+                link->positionFlush.arm();
         }
         void onClose(SessionId id, const std::string& reason) override {
             if (link->mainSession != id)
@@ -55,8 +81,9 @@ struct Link final : FmsOutbound {
     };
 
     Link(const IsoConfig& cfg, const IsoLinkConfig& lc, IsoListener& listener, Counters& counters,
-         boost::asio::io_context& io)
-        : session(std::make_unique<FmsCore>(cfg, lc, listener, counters, SteadyClock::instance(), *this)) {
+         boost::asio::io_context& io, PositionFlush& flush)
+        : session(std::make_unique<FmsCore>(cfg, lc, listener, counters, SteadyClock::instance(), *this)),
+          positionFlush(flush) {
         mainHandler.link = this;
         mapHandler.link = this;
         main = std::make_unique<WsEndpoint>(io, lc.ws, mainHandler, counters);
@@ -85,6 +112,7 @@ struct Link final : FmsOutbound {
     }
 
     std::unique_ptr<FmsCore> session;
+    PositionFlush& positionFlush;
     MainHandler mainHandler;
     MapHandler mapHandler;
     std::unique_ptr<WsEndpoint> main;
@@ -98,7 +126,12 @@ struct Link final : FmsOutbound {
 struct IsoStack::Impl {
     Impl(IsoConfig c, IsoListener& l, Counters& counters)
         : cfg(std::move(c)), listener(l), counters(counters), io("iso23725"), positionTimer(io.context()),
-          pollTimer(io.context()) {}
+          pollTimer(io.context()), positionFlush(io.context()) {
+        positionFlush.flushAll = [this] {
+            for (auto& [name, l] : links)
+                l->session->flushPositions();
+        };
+    }
 
     IsoConfig cfg;
     IsoListener& listener;
@@ -108,6 +141,7 @@ struct IsoStack::Impl {
     std::map<Guid, IsoPosition> ownPositions;
     boost::asio::steady_timer positionTimer;
     boost::asio::steady_timer pollTimer;
+    PositionFlush positionFlush;
 
     FmsCore* session(const std::string& name, const char* what) {
         auto it = links.find(name);
@@ -163,7 +197,8 @@ bool IsoStack::start() {
     return d.io.call([&] {
         bool ok = true;
         for (auto& lc : d.cfg.links) {
-            auto l = std::make_unique<Link>(d.cfg, lc, d.listener, d.counters, d.io.context());
+            auto l =
+                std::make_unique<Link>(d.cfg, lc, d.listener, d.counters, d.io.context(), d.positionFlush);
             auto r = l->main->start();
             if (r && l->map)
                 if (auto rm = l->map->start(); !rm)
@@ -190,6 +225,7 @@ void IsoStack::stop() {
     d.io.call([&] {
         d.positionTimer.cancel();
         d.pollTimer.cancel();
+        d.positionFlush.timer.cancel();
         for (auto& [n, l] : d.links) {
             l->main->stop();
             if (l->map)

@@ -1,7 +1,8 @@
 #pragma once
 // The FMS side of ISO 23725 (the OCU): per link a WebSocket session to an AHS, the AHS fleet and machine
 // state, fleet discrepancy checks, all-stop, assignments, the map service. Commands are posted to the stack's
-// io thread; events leave through IsoListener on that thread (listeners must not block).
+// io thread; events leave through IsoListener on that thread (listeners must not block). Positions leave in
+// batches (IsoListener::onMachinePositions) at most 5 ms after they arrived.
 #include "protocols/iso23725/FmsCore.h"
 
 #include "protocols/common/Counters.h"

@@ -1,0 +1,397 @@
+#include "sim/iso23725/HaulFleet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ocu::sim {
+
+using namespace ocu::iso23725;
+
+namespace {
+
+constexpr double kLoadingSeconds = 30;
+constexpr double kDumpingSeconds = 15;
+constexpr double kParkedSeconds = 60;
+constexpr double kHealthPeriodSeconds = 30;
+constexpr double kBrakeDecel = 2.0;   // m/s², ordinary stop
+constexpr double kAllStopDecel = 3.0; // m/s², all-stop
+constexpr double kLoadedSpeed = 0.75; // of the cruise speed
+
+// Stable GUIDs from a seed and an index (v4 layout): kind 1 = trucks, 2 = shovels.
+Guid stableGuid(std::uint32_t seed, std::uint32_t kind, std::uint32_t index) {
+    std::mt19937_64 r((static_cast<std::uint64_t>(seed) << 32) ^ (static_cast<std::uint64_t>(kind) << 20) ^
+                      index);
+    std::uint64_t a = r(), b = r();
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%08x-%04x-4%03x-%04x-%012llx", unsigned(a >> 32),
+                  unsigned((a >> 16) & 0xffff), unsigned(a & 0xfff), unsigned(0x8000 | ((b >> 48) & 0x3fff)),
+                  static_cast<unsigned long long>(b & 0xffffffffffffULL));
+    return buf;
+}
+
+} // namespace
+
+HaulFleet::HaulFleet(const PitMap& map, HaulFleetConfig config, Counters& counters, Emit emit, UnixClock now)
+    : m_map(map), m_cfg(config), m_counters(counters), m_emit(std::move(emit)), m_now(std::move(now)),
+      m_frame(map.map.origin), m_rng(config.seed) {
+    std::uniform_real_distribution<double> u(0, 1);
+    const int shovels = static_cast<int>(m_map.loadAreas.size());
+    const int dumps = static_cast<int>(m_map.dumpAreas.size());
+    for (int i = 0; i < m_cfg.truckCount; ++i) {
+        HaulTruck t;
+        t.id = stableGuid(m_cfg.seed, 1, static_cast<std::uint32_t>(i));
+        char hid[16];
+        std::snprintf(hid, sizeof hid, "HT%03d", 101 + i);
+        t.hid = hid;
+        t.shovel = i % shovels;
+        t.dump = i % dumps;
+        t.cruise = 9.0 + 3.0 * u(m_rng);
+        t.fuel = 40 + 60 * u(m_rng);
+        t.nextHealth = 5 + 25 * u(m_rng);
+        // Spread the fleet over the cycle so the site looks busy from the start.
+        int start = static_cast<int>(u(m_rng) * 3);
+        if (start == 0) {
+            t.payload = 0;
+            startRoute(t,
+                       {{m_map.dumpRoads[t.dump], true},
+                        {m_map.rampDown, false},
+                        {m_map.loadRoads[t.shovel], false}},
+                       HaulPhase::ToLoad);
+        } else if (start == 1) {
+            t.payload = 220 + static_cast<int>(u(m_rng) * 80);
+            startRoute(
+                t,
+                {{m_map.loadRoads[t.shovel], true}, {m_map.rampUp, false}, {m_map.dumpRoads[t.dump], false}},
+                HaulPhase::ToDump);
+        } else {
+            startRoute(t,
+                       {{m_map.parkRoad, true}, {m_map.rampDown, false}, {m_map.loadRoads[t.shovel], false}},
+                       HaulPhase::ToLoad);
+        }
+        t.motion.placeAt(u(m_rng) * t.motion.route().length() * 0.9);
+        t.cycleId = newGuid();
+        t.cycleStartMs = m_now();
+        t.sensorSent = sensor(t); // the starting inputs: only changes are sent from here on
+        m_trucks.push_back(std::move(t));
+    }
+}
+
+HaulTruck* HaulFleet::truck(const Guid& id) {
+    for (auto& t : m_trucks)
+        if (t.id == id)
+            return &t;
+    return nullptr;
+}
+
+std::vector<Equipment> HaulFleet::equipment() const {
+    std::vector<Equipment> out;
+    for (auto& t : m_trucks)
+        out.push_back(Equipment{t.id, t.hid, "HaulTruck", "Komatsu", "930E", true, 15.6, 9.1});
+    return out;
+}
+
+std::string HaulFleet::autonomyMode(const HaulTruck& t) const {
+    if (t.manual)
+        return "Manual";
+    return m_allStopOn ? "AllStop" : "Autonomous";
+}
+
+HaulTruckProductionStateV2 HaulFleet::productionState(const HaulTruck& t) const {
+    HaulTruckProductionStateV2 p;
+    if (!t.assignments.empty())
+        p.assignmentId = t.assignments.front().assignmentId;
+    p.wayId = t.motion.wayId();
+    p.autonomyMode = autonomyMode(t);
+    p.productionState = t.productionState;
+    return p;
+}
+
+MachinePositionV1 HaulFleet::position(const HaulTruck& t) const {
+    MachinePositionV1 p;
+    p.timestamp = makeTimestamp(m_now());
+    auto g = m_frame.toGeodetic(t.motion.position());
+    p.pose.latitude = std::round(g.lat * 1e7) / 1e7;
+    p.pose.longitude = std::round(g.lon * 1e7) / 1e7;
+    p.pose.elevation = std::round(g.alt * 100) / 100;
+    p.pose.heading = static_cast<std::int64_t>(std::lround(t.motion.headingDeg())) % 360;
+    p.pose.speed = std::lround(t.motion.speed() * 3.6);
+    p.pose.latitudeAccuracy = 0.05;
+    p.pose.longitudeAccuracy = 0.05;
+    p.pose.elevationAccuracy = 0.1;
+    p.pose.headingAccuracy = 0.5;
+    return p;
+}
+
+// ---------------------------------------------------------------- haul cycle
+
+void HaulFleet::startRoute(HaulTruck& t, const std::vector<RouteLeg>& legs, HaulPhase phase) {
+    t.motion.setRoute(m_map.route(legs));
+    t.phase = phase;
+    t.productionState = phase == HaulPhase::ToDump ? "Hauling" : "Driving";
+}
+
+// From the area the truck is in (load i, dump j or park) to the target area.
+std::vector<RouteLeg> HaulFleet::legsTo(const HaulTruck& t, std::int64_t area) const {
+    std::vector<RouteLeg> legs;
+    const bool atLoad = t.phase == HaulPhase::Loading;
+    const bool atPark = t.phase == HaulPhase::Parked;
+    if (atLoad) {
+        legs.push_back({m_map.loadRoads[t.shovel], true});
+        legs.push_back({m_map.rampUp, false});
+    } else if (atPark) {
+        legs.push_back({m_map.parkRoad, true});
+    } else {
+        legs.push_back({m_map.dumpRoads[t.dump], true});
+    }
+    const int li = m_map.loadIndex(area), di = m_map.dumpIndex(area);
+    if (li >= 0) {
+        if (atLoad && li == t.shovel)
+            return {}; // already there
+        legs.push_back({m_map.rampDown, false});
+        legs.push_back({m_map.loadRoads[li], false});
+    } else if (di >= 0) {
+        legs.push_back({m_map.dumpRoads[di], false});
+    } else {
+        legs.push_back({m_map.parkRoad, false});
+    }
+    return legs;
+}
+
+void HaulFleet::tick(double dt) {
+    m_simTime += dt;
+    for (auto& t : m_trucks) {
+        const bool halted = (m_allStopOn && t.autonomous) || t.manual;
+        if (t.phase == HaulPhase::ToLoad || t.phase == HaulPhase::ToDump || t.phase == HaulPhase::ToPark) {
+            const double cruise = halted ? 0.0 : t.cruise * (t.payload > 0 ? kLoadedSpeed : 1.0);
+            t.motion.drive(dt, cruise, m_allStopOn ? kAllStopDecel : kBrakeDecel);
+            if (halted && t.motion.speed() == 0 && m_allStopOn)
+                setProduction(t, "Stopped");
+            else if (!halted && t.productionState == "Stopped")
+                setProduction(t, t.phase == HaulPhase::ToDump ? "Hauling" : "Driving");
+            if (t.motion.arrived()) {
+                t.motion.halt();
+                arrive(t);
+            }
+        } else if (!halted) {
+            t.dwell -= dt;
+            if (t.dwell <= 0)
+                leave(t);
+        }
+        updateSensor(t);
+        if (m_cfg.healthEvents) {
+            t.fuel = std::max(5.0, t.fuel - dt * 0.002);
+            t.engineHours += dt / 3600.0;
+            if (m_simTime >= t.nextHealth)
+                reportHealth(t);
+        }
+    }
+}
+
+void HaulFleet::arrive(HaulTruck& t) {
+    if (t.phase == HaulPhase::ToLoad) {
+        t.phase = HaulPhase::Loading;
+        t.dwell = kLoadingSeconds;
+        setProduction(t, "Loading");
+    } else if (t.phase == HaulPhase::ToDump) {
+        t.phase = HaulPhase::Dumping;
+        t.dwell = kDumpingSeconds;
+        setProduction(t, "Dumping");
+    } else {
+        t.phase = HaulPhase::Parked;
+        t.dwell = kParkedSeconds;
+        setProduction(t, "Parked");
+    }
+}
+
+std::int64_t HaulFleet::areaOf(const HaulTruck& t) const {
+    if (t.phase == HaulPhase::Loading)
+        return m_map.loadAreas[t.shovel];
+    if (t.phase == HaulPhase::Dumping)
+        return m_map.dumpAreas[t.dump];
+    return m_map.parkArea;
+}
+
+void HaulFleet::leave(HaulTruck& t) {
+    std::uniform_real_distribution<double> u(0, 1);
+    if (t.phase == HaulPhase::Loading) {
+        t.payload = 220 + static_cast<int>(u(m_rng) * 80);
+        HaulTruckPayloadV1 p;
+        p.payloadWeight = t.payload;
+        p.accuracy = 4.5;
+        p.payloadSourceId = stableGuid(m_cfg.seed, 2, static_cast<std::uint32_t>(t.shovel));
+        m_emit(p, t.id);
+    } else if (t.phase == HaulPhase::Dumping) {
+        HaulTruckDumpV1 d;
+        if (!t.assignments.empty())
+            d.assignmentId = t.assignments.front().assignmentId;
+        d.wayId = m_map.dumpAreas[t.dump];
+        d.dumpedWeight = t.payload;
+        m_emit(d, t.id);
+        HaulTruckProductionCycleV1 c;
+        c.cycleId = t.cycleId;
+        c.loadWayId = m_map.loadAreas[t.shovel];
+        c.dumpWayId = m_map.dumpAreas[t.dump];
+        c.loaderEquipmentId = stableGuid(m_cfg.seed, 2, static_cast<std::uint32_t>(t.shovel));
+        c.payloadWeight = t.payload;
+        const std::int64_t now = m_now();
+        c.stateTimes.push_back(StateTime{"Hauling", makeTimestamp(t.cycleStartMs),
+                                         static_cast<double>((now - t.cycleStartMs) / 1000)});
+        m_emit(c, t.id);
+        t.cycleId = newGuid();
+        t.cycleStartMs = m_now();
+        t.payload = 0;
+    }
+    // An assignment whose destination is reached is completed.
+    if (!t.assignments.empty() && t.assignments.front().destinationId == areaOf(t) &&
+        t.phase != HaulPhase::Parked) {
+        const auto& done = t.assignments.front();
+        m_emit(HaulTruckAssignmentV1{done.assignmentId, "Completed", done.task, done.destinationId}, t.id);
+        t.assignments.erase(t.assignments.begin());
+        if (!t.assignments.empty()) {
+            const auto& next = t.assignments.front();
+            m_emit(HaulTruckAssignmentV1{next.assignmentId, "Active", next.task, next.destinationId}, t.id);
+        }
+    }
+    std::int64_t dest;
+    if (!t.assignments.empty())
+        dest = t.assignments.front().destinationId;
+    else if (t.phase == HaulPhase::Loading)
+        dest = m_map.dumpAreas[t.dump];
+    else
+        dest = m_map.loadAreas[t.shovel];
+    auto legs = legsTo(t, dest);
+    const int li = m_map.loadIndex(dest), di = m_map.dumpIndex(dest);
+    HaulPhase next = HaulPhase::ToPark;
+    if (li >= 0) {
+        next = HaulPhase::ToLoad;
+        t.shovel = li;
+    } else if (di >= 0) {
+        next = HaulPhase::ToDump;
+        t.dump = di;
+    }
+    if (legs.empty()) { // already there: load again
+        t.dwell = kLoadingSeconds;
+        return;
+    }
+    startRoute(t, legs, next);
+    t.motion.placeAt(0);
+    m_emit(productionState(t), t.id);
+}
+
+void HaulFleet::setProduction(HaulTruck& t, const std::string& state) {
+    if (t.productionState == state)
+        return;
+    t.productionState = state;
+    m_emit(productionState(t), t.id);
+}
+
+// HaulTruckProductionStateSensorV1 (§5 row 18, Q8 [I]): the raw inputs of the production state. Loaded from
+// the end of loading to the end of dumping (the payload is on board), body raised while dumping, park brake
+// when parked or held at rest (all-stop, manual), in the load/dump area while loading/dumping (a truck is
+// only inside an area for those phases here).
+HaulTruckProductionStateSensorV1 HaulFleet::sensor(const HaulTruck& t) const {
+    const bool halted = (m_allStopOn && t.autonomous) || t.manual;
+    HaulTruckProductionStateSensorV1 v;
+    v.loaded = t.payload > 0;
+    v.bodyRaised = t.phase == HaulPhase::Dumping;
+    v.parkBrake = t.phase == HaulPhase::Parked || (halted && t.motion.speed() == 0);
+    v.payloadWeight = t.payload;
+    v.inLoadArea = t.phase == HaulPhase::Loading;
+    v.inDumpArea = t.phase == HaulPhase::Dumping;
+    return v;
+}
+
+// Sent on change only, never periodically.
+void HaulFleet::updateSensor(HaulTruck& t) {
+    auto v = sensor(t);
+    if (v == t.sensorSent)
+        return;
+    t.sensorSent = v;
+    m_counters.add("sim.tx.sensor");
+    m_emit(v, t.id);
+}
+
+void HaulFleet::reportHealth(HaulTruck& t) {
+    std::uniform_real_distribution<double> u(0, 1);
+    t.nextHealth = m_simTime + kHealthPeriodSeconds;
+    BasicMachineHealthV2 h;
+    h.fuelLevel = std::lround(t.fuel);
+    h.totalEngineHour = std::round(t.engineHours * 10) / 10;
+    h.totalMachineHour = std::round(t.engineHours * 10.5) / 10;
+    h.tire.emplace();
+    for (const char* p : {"1.7", "1.9", "2.6", "2.7", "2.9", "2.10"})
+        h.tire->push_back(
+            Tire{p, 700 + static_cast<int>(u(m_rng) * 30), 55 + static_cast<int>(u(m_rng) * 12)});
+    m_emit(h, t.id);
+    // Occasional diagnostics: raise or clear a fault (full list each time, §8.4).
+    if (u(m_rng) < 0.15) {
+        if (t.faults.empty())
+            t.faults.push_back(DiagnosticEntry{555, 2110});
+        else
+            t.faults.clear();
+        m_emit(MachineDiagnosticV2{t.faults}, t.id);
+    }
+}
+
+// ---------------------------------------------------------------- commands
+
+void HaulFleet::setAllStop(bool on) {
+    m_allStopOn = on;
+    for (auto& t : m_trucks)
+        if (t.autonomous && !t.manual)
+            m_emit(MachineAutonomyModeV1{autonomyMode(t)}, t.id);
+}
+
+void HaulFleet::setManual(int index, bool manual) {
+    if (index < 0 || index >= static_cast<int>(m_trucks.size()))
+        return;
+    auto& t = m_trucks[static_cast<std::size_t>(index)];
+    t.manual = manual;
+    m_emit(MachineAutonomyModeV1{autonomyMode(t)}, t.id);
+}
+
+void HaulFleet::assign(const Guid& equipmentId, const HaulTruckAssignmentRequestV2& request) {
+    HaulTruck* t = truck(equipmentId);
+    HaulTruckAssignmentResponseV1 resp;
+    std::vector<AssignmentItem> accepted;
+    for (auto& a : request.items) {
+        std::string why;
+        if (!t)
+            why = "unknown machine";
+        else if (a.task == "Load" && m_map.loadIndex(a.destinationId) < 0)
+            why = "destination " + std::to_string(a.destinationId) + " is not a load area";
+        else if (a.task == "Offload" && m_map.dumpIndex(a.destinationId) < 0)
+            why = "destination " + std::to_string(a.destinationId) + " is not a dump area";
+        else if (a.task == "Park" && a.destinationId != m_map.parkArea)
+            why = "destination " + std::to_string(a.destinationId) + " is not a park area";
+        else if (a.task == "Fuel" || a.task == "Wait")
+            why = "task " + a.task + " not supported by this AHS";
+        if (why.empty())
+            accepted.push_back(a);
+        resp.items.push_back(
+            AssignmentResponseItem{a.assignmentId, why.empty() ? "Accepted" : "Rejected",
+                                   why.empty() ? std::nullopt : std::optional<std::string>(why)});
+    }
+    m_emit(resp, equipmentId);
+    if (t && !accepted.empty()) {
+        t->assignments = accepted;
+        const auto& first = accepted.front();
+        m_emit(HaulTruckAssignmentV1{first.assignmentId, "Active", first.task, first.destinationId}, t->id);
+        if (t->phase == HaulPhase::Parked)
+            t->dwell = 0;
+    }
+}
+
+void HaulFleet::resetAssignments(const Guid& equipmentId) {
+    HaulTruck* t = truck(equipmentId);
+    if (!t)
+        return;
+    if (!t->assignments.empty()) {
+        const auto& a = t->assignments.front();
+        m_emit(HaulTruckAssignmentV1{a.assignmentId, "Cancelled", a.task, a.destinationId}, t->id);
+    }
+    t->assignments.clear();
+}
+
+} // namespace ocu::sim

@@ -1,0 +1,115 @@
+#pragma once
+// The simulated AHS's haul trucks on the pit map: load-haul-dump cycles (drive to a shovel, load, haul to a
+// dump or the crusher, dump, drive back), FMS assignments choosing the next destination, all-stop and manual
+// mode holding trucks, the production state and its sensor inputs (sent on change), payloads, dumps and
+// production cycles, periodic health with occasional diagnostics. Advanced by tick(dt) in simulated seconds;
+// what the trucks report leaves through an emit callback as ISO 23725 members, never through a socket, so
+// the fleet runs in tests on a fake clock.
+#include "sim/iso23725/PitMapGenerator.h"
+#include "sim/iso23725/TruckKinematics.h"
+
+#include "protocols/iso23725/Messages.h"
+
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
+#include "protocols/common/GeoFrame.h"
+
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace ocu::sim {
+
+struct HaulFleetConfig {
+    int truckCount = 6;
+    std::uint32_t seed = 1;   // truck GUIDs, speeds and the random events follow from it
+    bool healthEvents = true; // periodic health, occasional diagnostics
+};
+
+enum class HaulPhase { Parked, ToLoad, Loading, ToDump, Dumping, ToPark };
+
+struct HaulTruck {
+    iso23725::Guid id;
+    std::string hid;
+    bool autonomous = true;
+    bool manual = false;
+    TruckMotion motion;
+    double cruise = 11.0; // m/s empty; 75 % of it loaded
+    HaulPhase phase = HaulPhase::Parked;
+    double dwell = 0; // s left loading, dumping or parked
+    int shovel = 0;   // index into PitMap::loadAreas
+    int dump = 0;     // index into PitMap::dumpAreas (the last is the crusher)
+    int payload = 0;  // t on board
+    std::string productionState = "Parked";
+    std::vector<iso23725::AssignmentItem> assignments; // queue (first = current)
+    iso23725::Guid cycleId;
+    std::int64_t cycleStartMs = 0;
+    double fuel = 80;
+    double engineHours = 12000;
+    std::vector<iso23725::DiagnosticEntry> faults;
+    double nextHealth = 0;                                 // simulated time of the next health report
+    iso23725::HaulTruckProductionStateSensorV1 sensorSent; // last sensor inputs sent (on change)
+};
+
+class HaulFleet {
+public:
+    // One member about one truck (or, for assignment responses, the machine the request named).
+    using Emit = std::function<void(const iso23725::Body& member, const iso23725::Guid& equipmentId)>;
+    // Wall-clock time for timestamps on the wire and cycle durations (ms since the Unix epoch).
+    using UnixClock = std::function<std::int64_t()>;
+
+    // The map must outlive the fleet. Trucks start spread over their cycles so a site looks busy at once.
+    HaulFleet(const PitMap& map, HaulFleetConfig config, Counters& counters, Emit emit,
+              UnixClock now = unixMillisNow);
+
+    // Advances every truck by dt simulated seconds (drive, arrive, load/dump, leave; health when due).
+    void tick(double dt);
+
+    // ---- what the AHS is asked to do ----
+    // All-stop on/off (§7.6): autonomous trucks brake to a stop and stay; emits their new autonomy mode.
+    void setAllStop(bool on);
+    bool allStopOn() const { return m_allStopOn; }
+    // A truck switched to manual (held by its driver) or back; emits its autonomy mode.
+    void setManual(int index, bool manual);
+    // HaulTruckAssignmentRequestV2 (§13.3): emits the response (per item Accepted or Rejected with the
+    // reason) and, when any item was accepted, the first as Active; the accepted items replace the truck's
+    // queue.
+    void assign(const iso23725::Guid& equipmentId, const iso23725::HaulTruckAssignmentRequestV2& request);
+    // HaulTruckAssignmentResetV1: the current assignment is Cancelled and the queue emptied.
+    void resetAssignments(const iso23725::Guid& equipmentId);
+
+    // ---- what the trucks report ----
+    const std::vector<HaulTruck>& trucks() const { return m_trucks; }
+    HaulTruck* truck(const iso23725::Guid& id);
+    std::vector<iso23725::Equipment> equipment() const; // for FleetDefinitionV2
+    std::string autonomyMode(const HaulTruck& t) const;
+    iso23725::HaulTruckProductionStateV2 productionState(const HaulTruck& t) const;
+    iso23725::MachinePositionV1 position(const HaulTruck& t) const;
+    double simulatedSeconds() const { return m_simTime; }
+
+private:
+    void startRoute(HaulTruck& t, const std::vector<RouteLeg>& legs, HaulPhase phase);
+    std::vector<RouteLeg> legsTo(const HaulTruck& t, std::int64_t area) const;
+    void arrive(HaulTruck& t);
+    void leave(HaulTruck& t);
+    std::int64_t areaOf(const HaulTruck& t) const;
+    void setProduction(HaulTruck& t, const std::string& state);
+    iso23725::HaulTruckProductionStateSensorV1 sensor(const HaulTruck& t) const;
+    void updateSensor(HaulTruck& t);
+    void reportHealth(HaulTruck& t);
+
+    const PitMap& m_map;
+    HaulFleetConfig m_cfg;
+    Counters& m_counters;
+    Emit m_emit;
+    UnixClock m_now;
+    GeoFrame m_frame;
+    std::mt19937 m_rng;
+    std::vector<HaulTruck> m_trucks;
+    bool m_allStopOn = false;
+    double m_simTime = 0;
+};
+
+} // namespace ocu::sim

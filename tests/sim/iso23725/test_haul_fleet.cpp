@@ -1,0 +1,361 @@
+// The simulated AHS's haul fleet on its own, on a fake clock and without sockets: trucks run load-haul-dump
+// cycles over the generated pit (only over connected ways, reporting payloads, dumps, cycles and production
+// states in order), all-stop and manual mode hold them, assignments are checked against the map, and what
+// they report is deterministic for a seed.
+#include "sim/iso23725/HaulFleet.h"
+#include "sim/iso23725/PitMapGenerator.h"
+
+#include "protocols/iso23725/MapModel.h"
+
+#include "protocols/common/Clock.h"
+
+#include <QtTest>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+
+using namespace ocu;
+using namespace ocu::iso23725;
+using namespace ocu::sim;
+using namespace std::chrono_literals;
+
+namespace {
+
+constexpr std::int64_t kEpochMs = 1'741'918'507'000;
+
+struct Emitted {
+    Body body;
+    Guid equipmentId;
+};
+
+// A fleet on a generated pit, driven by tick() with a fake clock advanced by the same simulated time.
+struct Site {
+    explicit Site(int trucks = 6, std::uint32_t seed = 1, bool health = true)
+        : pit(generatePitMap({2, 2, {}}, kEpochMs)),
+          fleet(
+              pit, {trucks, seed, health}, counters,
+              [this](const Body& b, const Guid& eq) {
+                  out.push_back({b, eq});
+              },
+              [this] {
+                  return kEpochMs +
+                         std::chrono::duration_cast<std::chrono::milliseconds>(clock.now() - start).count();
+              }) {}
+
+    void run(double seconds, double dt = 0.5) {
+        for (double t = 0; t < seconds; t += dt) {
+            clock.advance(std::chrono::duration_cast<Duration>(std::chrono::duration<double>(dt)));
+            fleet.tick(dt);
+        }
+    }
+    template <class T> std::vector<std::pair<T, Guid>> emitted() const {
+        std::vector<std::pair<T, Guid>> v;
+        for (const auto& e : out)
+            if (auto* b = std::get_if<T>(&e.body))
+                v.emplace_back(*b, e.equipmentId);
+        return v;
+    }
+    template <class T> std::vector<T> emittedFor(const Guid& id) const {
+        std::vector<T> v;
+        for (const auto& [b, eq] : emitted<T>())
+            if (eq == id)
+                v.push_back(b);
+        return v;
+    }
+
+    FakeClock clock;
+    TimePoint start = clock.now();
+    Counters counters;
+    std::vector<Emitted> out;
+    PitMap pit;
+    HaulFleet fleet;
+};
+
+bool connected(const ConnectivityGraph& g, std::int64_t from, std::int64_t to) {
+    auto next = g.successors(from);
+    return std::find(next.begin(), next.end(), to) != next.end();
+}
+
+} // namespace
+
+class TestHaulFleet : public QObject {
+    Q_OBJECT
+private slots:
+    void trucksAreNamedAndSpreadOverTheirCycles() {
+        Site s(12);
+        QCOMPARE(s.fleet.trucks().size(), std::size_t(12));
+        const auto eq = s.fleet.equipment();
+        QCOMPARE(eq.front().hid, std::string("HT101"));
+        QCOMPARE(eq.back().hid, std::string("HT112"));
+        std::set<Guid> ids;
+        for (const auto& e : eq) {
+            QVERIFY(isGuid(e.equipmentId));
+            QCOMPARE(e.type, std::string("HaulTruck"));
+            QVERIFY(e.autonomous);
+            ids.insert(e.equipmentId);
+        }
+        QCOMPARE(ids.size(), std::size_t(12));
+        // The same seed gives the same GUIDs (a restarted simulator is the same fleet), another seed others.
+        Site again(12), other(12, 2);
+        QCOMPARE(again.fleet.equipment().front().equipmentId, eq.front().equipmentId);
+        QVERIFY(other.fleet.equipment().front().equipmentId != eq.front().equipmentId);
+        // Trucks start on their way somewhere (not all at the start of the same route).
+        std::set<double> distances;
+        for (const auto& t : s.fleet.trucks()) {
+            QVERIFY(t.phase == HaulPhase::ToLoad || t.phase == HaulPhase::ToDump);
+            QVERIFY(!t.motion.route().empty());
+            distances.insert(t.motion.distance());
+        }
+        QVERIFY(distances.size() > 6);
+        QVERIFY(s.out.empty()); // nothing reported before the first tick
+    }
+
+    // Two hours of simulated haulage: every truck completes cycles; each cycle is a payload, then a dump of
+    // that payload at a dump area, then the production cycle naming the shovel's load area and that dump;
+    // trucks only ever drive over ways the connectivity connects; speeds stay within the trucks' cruise.
+    void cyclesOverConnectedWays() {
+        Site s(6, 3, false);
+        ConnectivityGraph g;
+        g.assign(s.pit.connectivity);
+        double maxSpeed = 0;
+        for (int step = 0; step < 2 * 3600 * 2; ++step) {
+            s.run(0.5);
+            for (const auto& t : s.fleet.trucks()) {
+                maxSpeed = std::max(maxSpeed, t.motion.speed());
+                const auto& ways = t.motion.route().legWays();
+                for (std::size_t i = 0; i + 1 < ways.size(); ++i)
+                    QVERIFY2(connected(g, ways[i], ways[i + 1]),
+                             qPrintable(QStringLiteral("%1 -> %2").arg(ways[i]).arg(ways[i + 1])));
+            }
+        }
+        QVERIFY(maxSpeed <= 12.0);
+        QVERIFY(maxSpeed > 8.0);
+        for (const auto& t : s.fleet.trucks()) {
+            const auto payloads = s.emittedFor<HaulTruckPayloadV1>(t.id);
+            const auto dumps = s.emittedFor<HaulTruckDumpV1>(t.id);
+            const auto cycles = s.emittedFor<HaulTruckProductionCycleV1>(t.id);
+            QVERIFY2(cycles.size() >= 3, qPrintable(QString::fromStdString(t.hid)));
+            QCOMPARE(dumps.size(), cycles.size());
+            QVERIFY(payloads.size() + 1 >= cycles.size()); // a truck may start loaded, hauling
+            for (std::size_t i = 0; i < cycles.size(); ++i) {
+                QCOMPARE(cycles[i].payloadWeight, dumps[i].dumpedWeight);
+                QCOMPARE(cycles[i].dumpWayId, dumps[i].wayId);
+                QVERIFY(s.pit.dumpIndex(dumps[i].wayId) >= 0);
+                QVERIFY(s.pit.loadIndex(cycles[i].loadWayId) >= 0);
+                QVERIFY(*dumps[i].dumpedWeight >= 220 && *dumps[i].dumpedWeight < 300);
+            }
+        }
+    }
+
+    // The production states a truck reports follow the cycle: driving empty to a shovel, loading, hauling,
+    // dumping, and round again; each state is reported once, when it changes.
+    void productionStatesFollowTheCycle() {
+        Site s(4, 5, false);
+        s.run(3600);
+        const std::map<std::string, std::set<std::string>> next = {{"Driving", {"Loading"}},
+                                                                   {"Loading", {"Hauling"}},
+                                                                   {"Hauling", {"Dumping"}},
+                                                                   {"Dumping", {"Driving"}}};
+        for (const auto& t : s.fleet.trucks()) {
+            const auto states = s.emittedFor<HaulTruckProductionStateV2>(t.id);
+            QVERIFY(states.size() >= 8);
+            for (std::size_t i = 0; i + 1 < states.size(); ++i) {
+                const auto& a = states[i].productionState;
+                const auto& b = states[i + 1].productionState;
+                QVERIFY2(next.at(a).count(b), qPrintable(QString::fromStdString(a + " -> " + b)));
+                QCOMPARE(states[i].autonomyMode, std::string("Autonomous"));
+            }
+        }
+    }
+
+    // The cycle's duration is measured on the clock the fleet was given (here the fake one).
+    void cycleTimesUseTheGivenClock() {
+        Site s(3, 1, false);
+        s.run(3600);
+        for (const auto& t : s.fleet.trucks()) {
+            const auto cycles = s.emittedFor<HaulTruckProductionCycleV1>(t.id);
+            QVERIFY(cycles.size() >= 2);
+            // From the second cycle on, a cycle starts where the previous one ended.
+            for (std::size_t i = 1; i < cycles.size(); ++i) {
+                const auto& prev = cycles[i - 1].stateTimes.front();
+                const auto& cur = cycles[i].stateTimes.front();
+                const std::int64_t prevEnd = *prev.start.unixMs + std::int64_t(*prev.duration * 1000);
+                QVERIFY(std::llabs(*cur.start.unixMs - prevEnd) <= 1000);
+                QVERIFY(*cur.duration > 60); // loading 30 s, dumping 15 s and two drives
+                QVERIFY(*cur.start.unixMs >= kEpochMs && *cur.start.unixMs < kEpochMs + 3'600'000);
+            }
+        }
+    }
+
+    // All-stop: every autonomous truck reports AllStop, brakes (at most 3 m/s²) to a standstill it holds,
+    // reports Stopped and its park brake; released, they drive on.
+    void allStopHoldsTheFleet() {
+        Site s(6, 1, false);
+        s.run(60);
+        std::vector<double> before;
+        for (const auto& t : s.fleet.trucks())
+            before.push_back(t.motion.speed());
+        s.out.clear();
+        s.fleet.setAllStop(true);
+        QVERIFY(s.fleet.allStopOn());
+        const auto modes = s.emitted<MachineAutonomyModeV1>();
+        QCOMPARE(modes.size(), s.fleet.trucks().size());
+        for (const auto& [m, eq] : modes)
+            QCOMPARE(m.autonomyMode, std::string("AllStop"));
+        s.run(0.5);
+        for (std::size_t i = 0; i < before.size(); ++i)
+            QVERIFY(s.fleet.trucks()[i].motion.speed() >= before[i] - 3.0 * 0.5 - 1e-9);
+        s.run(5);
+        std::vector<double> held;
+        for (const auto& t : s.fleet.trucks()) {
+            QCOMPARE(t.motion.speed(), 0.0);
+            QVERIFY(*t.sensorSent.parkBrake);
+            held.push_back(t.motion.distance());
+            if (t.phase == HaulPhase::ToLoad || t.phase == HaulPhase::ToDump)
+                QCOMPARE(t.productionState, std::string("Stopped"));
+        }
+        s.run(120); // loading and dumping pause too
+        for (std::size_t i = 0; i < held.size(); ++i)
+            QCOMPARE(s.fleet.trucks()[i].motion.distance(), held[i]);
+        s.fleet.setAllStop(false);
+        s.run(10);
+        int moving = 0;
+        for (const auto& t : s.fleet.trucks()) {
+            moving += t.motion.speed() > 0 ? 1 : 0;
+            QVERIFY(t.productionState != "Stopped");
+        }
+        QVERIFY(moving > 0);
+    }
+
+    // A truck in manual is held by its driver; the rest of the fleet drives on.
+    void manualTruckIsHeld() {
+        Site s(4, 1, false);
+        s.run(30);
+        s.out.clear();
+        s.fleet.setManual(1, true);
+        const auto modes = s.emitted<MachineAutonomyModeV1>();
+        QCOMPARE(modes.size(), std::size_t(1));
+        QCOMPARE(modes.front().first.autonomyMode, std::string("Manual"));
+        QCOMPARE(modes.front().second, s.fleet.trucks()[1].id);
+        s.run(20);
+        QCOMPARE(s.fleet.trucks()[1].motion.speed(), 0.0);
+        QCOMPARE(s.fleet.autonomyMode(s.fleet.trucks()[1]), std::string("Manual"));
+        QVERIFY(s.fleet.trucks()[0].motion.speed() > 0 || s.fleet.trucks()[2].motion.speed() > 0);
+        s.fleet.setManual(1, false);
+        s.run(10);
+        QCOMPARE(s.fleet.autonomyMode(s.fleet.trucks()[1]), std::string("Autonomous"));
+        s.fleet.setManual(99, true); // no such truck: nothing happens
+    }
+
+    // Assignments (§13.3) are checked against the map; accepted ones become the truck's queue (the first
+    // Active), are completed at their destination, and a reset cancels the current one.
+    void assignmentsAreCheckedCompletedAndCancelled() {
+        Site s(2, 1, false);
+        const Guid id = s.fleet.trucks()[0].id;
+        HaulTruckAssignmentRequestV2 req;
+        req.items.push_back({"a-load", "Load", s.pit.loadAreas[1], {}, {}, {}});
+        req.items.push_back({"a-dump", "Offload", s.pit.dumpAreas.back(), {}, {}, {}}); // the crusher
+        req.items.push_back({"a-bad", "Load", s.pit.dumpAreas[0], {}, {}, {}});
+        req.items.push_back({"a-fuel", "Fuel", s.pit.parkArea, {}, {}, {}});
+        s.fleet.assign(id, req);
+        const auto resp = s.emitted<HaulTruckAssignmentResponseV1>();
+        QCOMPARE(resp.size(), std::size_t(1));
+        QCOMPARE(resp[0].second, id);
+        const auto& items = resp[0].first.items;
+        QCOMPARE(items.size(), std::size_t(4));
+        QCOMPARE(items[0].response, std::string("Accepted"));
+        QCOMPARE(items[1].response, std::string("Accepted"));
+        QCOMPARE(items[2].response, std::string("Rejected"));
+        QVERIFY(items[2].detail->find("not a load area") != std::string::npos);
+        QCOMPARE(items[3].response, std::string("Rejected"));
+        QVERIFY(items[3].detail->find("not supported") != std::string::npos);
+        auto status = s.emittedFor<HaulTruckAssignmentV1>(id);
+        QCOMPARE(status.size(), std::size_t(1));
+        QCOMPARE(status[0].status, std::string("Active"));
+        QCOMPARE(status[0].assignmentId, std::optional<Guid>("a-load"));
+        QCOMPARE(s.fleet.trucks()[0].assignments.size(), std::size_t(2));
+
+        // Drive until both are done: loaded at shovel 2, dumped at the crusher.
+        s.run(2 * 3600);
+        status = s.emittedFor<HaulTruckAssignmentV1>(id);
+        QVERIFY(status.size() >= 4);
+        QCOMPARE(status[1].status, std::string("Completed"));
+        QCOMPARE(status[1].assignmentId, std::optional<Guid>("a-load"));
+        QCOMPARE(status[2].status, std::string("Active"));
+        QCOMPARE(status[2].assignmentId, std::optional<Guid>("a-dump"));
+        QCOMPARE(status[3].status, std::string("Completed"));
+        const auto dumps = s.emittedFor<HaulTruckDumpV1>(id);
+        bool atCrusher = false;
+        for (const auto& d : dumps)
+            atCrusher = atCrusher || (d.assignmentId == std::optional<Guid>("a-dump") &&
+                                      d.wayId == s.pit.dumpAreas.back());
+        QVERIFY(atCrusher);
+
+        // Unknown machines are refused; a reset cancels the current assignment.
+        s.out.clear();
+        s.fleet.assign("00000000-0000-4000-8000-000000000000", req);
+        QCOMPARE(s.emitted<HaulTruckAssignmentResponseV1>()[0].first.items[0].detail,
+                 std::optional<std::string>("unknown machine"));
+        HaulTruckAssignmentRequestV2 park;
+        park.items.push_back({"a-park", "Park", s.pit.parkArea, {}, {}, {}});
+        s.fleet.assign(id, park);
+        s.fleet.resetAssignments(id);
+        status = s.emittedFor<HaulTruckAssignmentV1>(id);
+        QCOMPARE(status.back().status, std::string("Cancelled"));
+        QCOMPARE(status.back().assignmentId, std::optional<Guid>("a-park"));
+        QVERIFY(s.fleet.trucks()[0].assignments.empty());
+    }
+
+    // The sensor inputs are sent when they change, never repeated; health comes every 30 s per truck.
+    void sensorOnChangeHealthPeriodic() {
+        Site s(3, 4, true);
+        s.run(600);
+        for (const auto& t : s.fleet.trucks()) {
+            const auto sensors = s.emittedFor<HaulTruckProductionStateSensorV1>(t.id);
+            QVERIFY(!sensors.empty());
+            for (std::size_t i = 0; i + 1 < sensors.size(); ++i)
+                QVERIFY(!(sensors[i] == sensors[i + 1]));
+            QVERIFY(sensors.back() == t.sensorSent);
+            const auto health = s.emittedFor<BasicMachineHealthV2>(t.id);
+            QVERIFY(health.size() >= 19 && health.size() <= 21); // 600 s / 30 s
+            QCOMPARE(health.back().tire->size(), std::size_t(6));
+        }
+        QCOMPARE(s.counters.get("sim.tx.sensor"),
+                 std::uint64_t(s.emitted<HaulTruckProductionStateSensorV1>().size()));
+    }
+
+    // The same seed and steps give the same fleet, message for message.
+    void deterministicForASeed() {
+        Site a(5, 9), b(5, 9);
+        a.run(900);
+        b.run(900);
+        QCOMPARE(a.out.size(), b.out.size());
+        for (std::size_t i = 0; i < a.out.size(); ++i) {
+            QCOMPARE(a.out[i].equipmentId, b.out[i].equipmentId);
+            QCOMPARE(a.out[i].body.index(), b.out[i].body.index());
+        }
+        for (std::size_t i = 0; i < a.fleet.trucks().size(); ++i) {
+            QCOMPARE(a.fleet.trucks()[i].motion.distance(), b.fleet.trucks()[i].motion.distance());
+            QCOMPARE(a.fleet.trucks()[i].productionState, b.fleet.trucks()[i].productionState);
+        }
+    }
+
+    // The position report is the truck's pose on the globe, rounded as on the wire.
+    void positionReport() {
+        Site s(1);
+        s.run(20);
+        const auto& t = s.fleet.trucks()[0];
+        const MachinePositionV1 p = s.fleet.position(t);
+        const EnuPoint back =
+            GeoFrame(s.pit.map.origin).toLocal({*p.pose.latitude, *p.pose.longitude, *p.pose.elevation});
+        QVERIFY(std::hypot(back.e - t.motion.position().e, back.n - t.motion.position().n) < 0.03);
+        QCOMPARE(*p.pose.speed, std::int64_t(std::lround(t.motion.speed() * 3.6)));
+        QVERIFY(*p.pose.heading >= 0 && *p.pose.heading < 360);
+        QCOMPARE(*p.timestamp.unixMs, kEpochMs + 20'000);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestHaulFleet)
+#include "test_haul_fleet.moc"
