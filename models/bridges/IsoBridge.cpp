@@ -42,6 +42,11 @@ QStringList IsoBridge::linkNames() const {
     return out;
 }
 
+void IsoBridge::setOwnPosition(const QString& equipmentId, double lat, double lon, double altitude,
+                               double headingDeg, double speedKmh) {
+    m_stack->setOwnPosition(equipmentId.toStdString(), lat, lon, altitude, headingDeg, speedKmh);
+}
+
 AllStopState IsoBridge::allStopState(const QString& link) const {
     return static_cast<AllStopState>(m_allStop.value(link, static_cast<int>(AllStopState::Unknown)));
 }

@@ -29,8 +29,11 @@ public:
 
     QString start();
     void stop();
-    iso23725::IsoStack* stack() const { return m_stack.get(); }
     QStringList linkNames() const;
+    // Position of one of the FMS's own (manned) machines (MachinePositionV1 to every AHS link, at the links'
+    // position rate); GUI thread, posted to the stack.
+    void setOwnPosition(const QString& equipmentId, double lat, double lon, double altitude,
+                        double headingDeg, double speedKmh);
 
     CommandResult stopAll() override;
     CommandResult stopMachine(const QString& id) override;

@@ -44,7 +44,6 @@ public:
 
     QString start();
     void stop();
-    osyris::OsyrisStack* station() const { return m_station.get(); }
 
     CommandResult stopAll() override;
     CommandResult stopMachine(const QString& id) override;
