@@ -60,6 +60,8 @@ private:
 
     MachineState toMachine(const iso23725::IsoMachineSnapshot& m, iso23725::AllStopState stop) const;
     QString linkOf(const QString& machineId) const;
+    // GUI thread: why `what` cannot go to the AHS on `link` now (its link is not up), or an empty string.
+    QString linkRefusal(const QString& link, const QString& what) const;
 
     iso23725::IsoConfig m_config;
     GeoFrame m_frame;

@@ -378,17 +378,37 @@ CommandResult JausBridge::refuseIfMonitor(const QString& what) const {
     return CommandResult::success();
 }
 
+CommandResult JausBridge::refuseIfUnreachable(quint16 subsystem, const QString& what) const {
+    auto it = m_latest.find(subsystem);
+    if (it == m_latest.end())
+        return CommandResult::failure(tr("%1 refused: %2 has not been heard on the JAUS link; nothing sent")
+                                          .arg(what, machineId(subsystem)));
+    if (it->link == JausLink::Down)
+        return CommandResult::failure(
+            tr("%1 refused: the link to %2 is down; nothing sent").arg(what, machineId(subsystem)));
+    return CommandResult::success();
+}
+
 CommandResult JausBridge::stopAll() {
     if (auto r = refuseIfMonitor(tr("emergency stop")); !r.ok)
         return r;
     int n = 0;
+    QStringList unreachable;
     for (const auto& s : std::as_const(m_latest)) {
-        if (s.controlledByUs) {
-            m_stack->setEmergency(s.subsystem);
-            ++n;
+        if (!s.controlledByUs)
+            continue;
+        if (s.link == JausLink::Down) {
+            unreachable << machineId(s.subsystem);
+            continue;
         }
+        m_stack->setEmergency(s.subsystem);
+        ++n;
     }
-    return CommandResult::success(tr("SetEmergency sent to %n vehicle(s) this console controls", "", n));
+    const QString sent = tr("SetEmergency sent to %n vehicle(s) this console controls", "", n);
+    if (!unreachable.isEmpty())
+        return CommandResult::failure(
+            tr("%1; not sent to %2: link down").arg(sent, unreachable.join(QStringLiteral(", "))));
+    return CommandResult::success(sent);
 }
 
 CommandResult JausBridge::stopMachine(const QString& id) {
@@ -396,6 +416,8 @@ CommandResult JausBridge::stopMachine(const QString& id) {
     if (!sub)
         return CommandResult::failure(tr("not a JAUS machine: %1").arg(id));
     if (auto r = refuseIfMonitor(tr("emergency stop")); !r.ok)
+        return r;
+    if (auto r = refuseIfUnreachable(*sub, tr("emergency stop")); !r.ok)
         return r;
     m_stack->setEmergency(*sub);
     return CommandResult::success(tr("SetEmergency sent to %1").arg(id));
@@ -407,6 +429,8 @@ CommandResult JausBridge::clearStop(const QString& id) {
         return CommandResult::failure(tr("not a JAUS machine: %1").arg(id));
     if (auto r = refuseIfMonitor(tr("clear emergency")); !r.ok)
         return r;
+    if (auto r = refuseIfUnreachable(*sub, tr("clear emergency")); !r.ok)
+        return r;
     m_stack->clearEmergency(*sub);
     return CommandResult::success(tr("ClearEmergency sent to %1").arg(id));
 }
@@ -415,6 +439,8 @@ CommandResult JausBridge::drive(quint16 subsystem, const JausDrive& demand) {
     if (auto r = refuseIfMonitor(tr("drive")); !r.ok)
         return r;
     auto s = this->subsystem(subsystem);
+    if (s && s->link == JausLink::Down)
+        return refuseIfUnreachable(subsystem, tr("drive"));
     if (!s || !s->controlledByUs)
         return CommandResult::failure(
             tr("drive refused: this console does not control %1").arg(machineId(subsystem)));
@@ -448,12 +474,22 @@ CommandResult JausBridge::command(const QString& name, const QJsonObject& args) 
     if (!sub)
         return CommandResult::failure(
             tr("%1: \"id\" must name a JAUS machine such as \"jaus:101\"").arg(name));
+    // Releasing is never refused for a down link: it also drops the wish for control, so the console does not
+    // take control back when the vehicle is heard again.
     if (name == QLatin1String("release_control")) {
         m_stack->releaseControl(*sub);
         return CommandResult::success(tr("ReleaseControl sent to %1").arg(machineId(*sub)));
     }
     if (auto r = refuseIfMonitor(name); !r.ok)
         return r;
+    if (name == QLatin1String("drive_stop"))
+        return stopDriving(*sub);
+    static const QStringList kOverTheLink{QStringLiteral("request_control"), QStringLiteral("resume"),
+                                          QStringLiteral("standby"), QStringLiteral("shutdown"),
+                                          QStringLiteral("reset")};
+    if (kOverTheLink.contains(name))
+        if (auto r = refuseIfUnreachable(*sub, name); !r.ok)
+            return r;
     if (name == QLatin1String("request_control")) {
         m_stack->requestControl(*sub);
         return CommandResult::success(
@@ -475,8 +511,6 @@ CommandResult JausBridge::command(const QString& name, const QJsonObject& args) 
         m_stack->reset(*sub);
         return CommandResult::success(tr("Reset sent"));
     }
-    if (name == QLatin1String("drive_stop"))
-        return stopDriving(*sub);
     if (name == QLatin1String("drive")) {
         JausDrive c;
         const QString mode = args.value(QStringLiteral("mode")).toString(QStringLiteral("velocity"));

@@ -51,6 +51,8 @@ private:
     void onEvent(const jaus::JausEvent& event) override;
     MachineState toMachine(const jaus::SubsystemSnapshot& s) const;
     CommandResult refuseIfMonitor(const QString& what) const;
+    // GUI thread: a refusal when the subsystem was never heard or its link is down (nothing is posted then).
+    CommandResult refuseIfUnreachable(quint16 subsystem, const QString& what) const;
 
     jaus::JausConfig m_config;
     GeoFrame m_frame;
