@@ -276,8 +276,7 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
         return result(cmd, r.ok, r.message);
     }
     const bool forProtocol = id.isEmpty() && cmd.contains(QStringLiteral("protocol"));
-    if (name == QLatin1String("request_control") || name == QLatin1String("release_control") ||
-        name == QLatin1String("drive") || (!name.isEmpty() && (m_gate->bridgeFor(id) || forProtocol))) {
+    if (m_protocolCommands.contains(name) || (!name.isEmpty() && (m_gate->bridgeFor(id) || forProtocol))) {
         if (id.isEmpty() && !forProtocol)
             return result(cmd, false, QStringLiteral("missing \"id\""));
         const CommandResult r = m_gate->command(name, cmd, origin);
@@ -300,6 +299,11 @@ void HeadlessMonitor::consumeInput(const QByteArray& chunk) {
         m_inBuf.clear();
         result({}, false, QStringLiteral("input line too long (over 1 MiB), dropped"));
     }
+}
+
+void HeadlessMonitor::addProtocolCommands(const QStringList& names) {
+    for (const QString& n : names)
+        m_protocolCommands.insert(n);
 }
 
 bool HeadlessMonitor::startStdin() {

@@ -24,6 +24,7 @@
 #include <QObject>
 #include <QPointer>
 #include <QSet>
+#include <QStringList>
 #include <QTimer>
 #include <memory>
 
@@ -57,6 +58,9 @@ public:
     void setRateLimitMs(int ms);
     int rateLimitMs() const { return m_rateMs; }
     void addBridge(FleetBridge* bridge);
+    // Commands a protocol module adds (e.g. JAUS request_control): routed to the bridge of the machine named
+    // by "id" (or of the "protocol"), and answered with "missing \"id\"" when both are absent.
+    void addProtocolCommands(const QStringList& names);
 
     // Read commands from stdin (QSocketNotifier on fd 0); inputFinished() at end of input.
     bool startStdin();
@@ -99,6 +103,7 @@ private:
     QHash<QString, Printed> m_printed;
     QSet<QString> m_pending;
     QHash<QString, QString> m_linkSig;
+    QSet<QString> m_protocolCommands;
     QByteArray m_inBuf;
     QSocketNotifier* m_stdinNotifier = nullptr;
 };

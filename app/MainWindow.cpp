@@ -193,15 +193,20 @@ void MainWindow::createMenus() {
 }
 
 void MainWindow::createStatusBar() {
-    for (const QString& p : {QStringLiteral("JAUS"), QStringLiteral("ISO 23725"), QStringLiteral("OSYRIS")}) {
-        auto* ind = new LinkIndicator(p, this);
-        m_links.insert(p, ind);
-        statusBar()->addPermanentWidget(ind);
-    }
     m_alarmLabel = new QLabel(this);
     m_alarmLabel->setObjectName(QStringLiteral("label-alarms"));
     statusBar()->addPermanentWidget(m_alarmLabel);
     setUnacknowledgedAlarms(0);
+}
+
+LinkIndicator* MainWindow::addLinkIndicator(const QString& protocol) {
+    if (LinkIndicator* existing = m_links.value(protocol))
+        return existing;
+    auto* ind = new LinkIndicator(protocol, this);
+    // Left of the alarm label, after the indicators added before.
+    statusBar()->insertPermanentWidget(static_cast<int>(m_links.size()), ind);
+    m_links.insert(protocol, ind);
+    return ind;
 }
 
 void MainWindow::setUnacknowledgedAlarms(int count) {

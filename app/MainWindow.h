@@ -31,6 +31,8 @@ public:
 
     QAction* stopAllAction() const { return m_stopAll; }
     QToolButton* stopAllButton() const { return m_stopAllButton; }
+    // One indicator per protocol link, added by the runtime for each protocol module (left to right).
+    LinkIndicator* addLinkIndicator(const QString& protocol);
     LinkIndicator* linkIndicator(const QString& protocol) const { return m_links.value(protocol); }
     void setUnacknowledgedAlarms(int count);
     int unacknowledgedAlarms() const { return m_unacked; }

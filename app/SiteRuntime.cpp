@@ -2,6 +2,7 @@
 
 #include "app/LogRouting.h"
 #include "app/MainWindow.h"
+#include "app/ProtocolModule.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "app/Site3DFeed.h"
 #include "widgets/view3d/Site3DView.h"
@@ -21,22 +22,10 @@
 #include "widgets/SiteMapView.h"
 #include "widgets/StopControls.h"
 
-#ifdef OCU_HAVE_JAUS_BRIDGE
-#include "models/bridges/JausBridge.h"
-#include "widgets/jaus/JausControlPanel.h"
-#include "widgets/jaus/TeleopPanel.h"
-#include "widgets/teleop/SdlJoystickInput.h"
-#endif
-#ifdef OCU_HAVE_ISO_BRIDGE
-#include "models/bridges/IsoBridge.h"
-#endif
-#ifdef OCU_HAVE_OSYRIS_BRIDGE
-#include "models/bridges/OsyrisBridge.h"
-#endif
-
 #include <QApplication>
 #include <QDateTime>
 #include <QLabel>
+#include <QSet>
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -48,31 +37,36 @@ struct SiteRuntime::Impl {
     std::unique_ptr<sim::SimulatedSite> sim;
     FleetContext* ctx = nullptr;
     OwnPosition* own = nullptr;
-#ifdef OCU_HAVE_JAUS_BRIDGE
-    JausBridge* jaus = nullptr;
-#endif
-#ifdef OCU_HAVE_ISO_BRIDGE
-    IsoBridge* iso = nullptr;
-#endif
-#ifdef OCU_HAVE_OSYRIS_BRIDGE
-    OsyrisBridge* osyris = nullptr;
-#endif
+    std::vector<std::unique_ptr<ProtocolModule>> modules = makeProtocolModules();
     QStringList startProblems;
     bool stopped = false;
 
+    // The site map: what the bridges offer (today the ISO 23725 AHS map), in module order.
     SiteMapData mergedMap() const {
         SiteMapData out;
-#ifdef OCU_HAVE_ISO_BRIDGE
-        if (iso)
-            out = iso->siteMap();
-#endif
+        bool first = true;
+        for (const auto& m : modules) {
+            FleetBridge* b = m->bridge();
+            if (!b)
+                continue;
+            SiteMapData map = b->siteMap();
+            if (map.features.isEmpty() && map.revision == 0)
+                continue;
+            if (first) {
+                out = std::move(map);
+                first = false;
+            } else {
+                out.features += map.features;
+                out.revision += map.revision;
+            }
+        }
         return out;
     }
+    // The pass-count layer: the first bridge that offers one (today the OSYRIS station's).
     const PassCountLayer* passLayer() const {
-#ifdef OCU_HAVE_OSYRIS_BRIDGE
-        if (osyris)
-            return osyris->passCountLayer();
-#endif
+        for (const auto& m : modules)
+            if (FleetBridge* b = m->bridge(); b && b->passCountLayer())
+                return b->passCountLayer();
         return nullptr;
     }
 };
@@ -99,35 +93,13 @@ QString SiteRuntime::start() {
     if (!m_config.fleet.auditLog.empty())
         d.ctx->gate()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
 
-        // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down
-        // and the reason is an alarm.
-#ifdef OCU_HAVE_JAUS_BRIDGE
-    if (m_config.jaus) {
-        d.jaus = new JausBridge(*m_config.jaus, d.frame, this);
-        d.ctx->addBridge(d.jaus);
-        const QString e = d.jaus->start();
+    // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down and the
+    // reason is an alarm.
+    for (const auto& m : d.modules) {
+        const QString e = m->start({m_config, d.frame, d.ctx, this});
         if (!e.isEmpty())
             d.startProblems << e;
     }
-#endif
-#ifdef OCU_HAVE_ISO_BRIDGE
-    if (m_config.iso23725) {
-        d.iso = new IsoBridge(*m_config.iso23725, d.frame, this);
-        d.ctx->addBridge(d.iso);
-        const QString e = d.iso->start();
-        if (!e.isEmpty())
-            d.startProblems << e;
-    }
-#endif
-#ifdef OCU_HAVE_OSYRIS_BRIDGE
-    if (m_config.osyris) {
-        d.osyris = new OsyrisBridge(*m_config.osyris, d.frame, this);
-        d.ctx->addBridge(d.osyris);
-        const QString e = d.osyris->start();
-        if (!e.isEmpty())
-            d.startProblems << e;
-    }
-#endif
     d.own = new OwnPosition(d.frame, this);
     const auto& op = m_config.ownPosition;
     if (op.source == "system")
@@ -140,16 +112,8 @@ QString SiteRuntime::start() {
         m_impl->ctx->alarms()->add(makeEvent(EventSeverity::Warning, EventKind::Info, {},
                                              tr("Own position: %1").arg(msg), QStringLiteral("gui")));
     });
-#ifdef OCU_HAVE_ISO_BRIDGE
-    if (d.iso && !op.fmsMachineId.empty()) {
-        const std::string machine = op.fmsMachineId;
-        connect(d.own, &OwnPosition::fixChanged, this, [this, machine](const OwnFix& f) {
-            if (f.valid)
-                m_impl->iso->stack()->setOwnPosition(machine, f.lat, f.lon, f.alt, f.headingDeg,
-                                                     f.speed * 3.6);
-        });
-    }
-#endif
+    for (const auto& m : d.modules)
+        m->attachOwnPosition(d.own, m_config);
     for (const QString& p : std::as_const(d.startProblems)) {
         qCWarning(lcApp).noquote() << p;
         d.ctx->alarms()->add(
@@ -164,18 +128,8 @@ void SiteRuntime::stop() {
         return;
     d.stopped = true;
     // Stacks first (JAUS releases control after zero drive commands), then the simulators.
-#ifdef OCU_HAVE_JAUS_BRIDGE
-    if (d.jaus)
-        d.jaus->stop();
-#endif
-#ifdef OCU_HAVE_ISO_BRIDGE
-    if (d.iso)
-        d.iso->stop();
-#endif
-#ifdef OCU_HAVE_OSYRIS_BRIDGE
-    if (d.osyris)
-        d.osyris->stop();
-#endif
+    for (const auto& m : d.modules)
+        m->stop();
     if (d.sim)
         d.sim->stop();
 }
@@ -204,6 +158,10 @@ static LinkIndicator::State indicatorState(LinkState s) {
 void SiteRuntime::populate(MainWindow& window) {
     Impl& d = *m_impl;
     FleetContext* ctx = d.ctx;
+
+    // One link indicator per protocol of this build, in module order.
+    for (const auto& m : d.modules)
+        window.addLinkIndicator(m->displayName());
 
     auto* list = new FleetListWidget(ctx->fleet(), ctx->selection());
     list->setCommandGate(ctx->gate());
@@ -244,7 +202,10 @@ void SiteRuntime::populate(MainWindow& window) {
     });
 #endif
 
-    for (FleetBridge* b : ctx->bridges()) {
+    for (const auto& module : d.modules) {
+        FleetBridge* b = module->bridge();
+        if (!b)
+            continue;
         connect(b, &FleetBridge::siteMapChanged, map, [this, map, feed] {
             const SiteMapData m = m_impl->mergedMap();
             map->setSiteMap(m);
@@ -260,31 +221,26 @@ void SiteRuntime::populate(MainWindow& window) {
             static_cast<Site3DFeed*>(feed)->passCountChanged();
 #endif
         });
-        connect(b, &FleetBridge::linkChanged, &window, [&window](const LinkStatus& s) {
-            const QString proto = s.link.section(QLatin1Char(':'), 0, 0);
-            const QString name = proto == QLatin1String("jaus")       ? QStringLiteral("JAUS")
-                                 : proto == QLatin1String("iso23725") ? QStringLiteral("ISO 23725")
-                                                                      : QStringLiteral("OSYRIS");
-            if (LinkIndicator* ind = window.linkIndicator(name)) {
-                ind->setState(indicatorState(s.state),
-                              s.link + (s.detail.isEmpty() ? QString() : ": " + s.detail));
-                if (s.dataAgeMs >= 0)
-                    ind->setDataAgeMs(s.dataAgeMs);
-            }
+        LinkIndicator* ind = window.linkIndicator(module->displayName());
+        connect(b, &FleetBridge::linkChanged, ind, [ind](const LinkStatus& s) {
+            ind->setState(indicatorState(s.state),
+                          s.link + (s.detail.isEmpty() ? QString() : ": " + s.detail));
+            if (s.dataAgeMs >= 0)
+                ind->setDataAgeMs(s.dataAgeMs);
         });
     }
     // Data age per protocol from the newest machine data, refreshed every second.
     auto* ages = new QTimer(&window);
-    connect(ages, &QTimer::timeout, &window, [ctx, &window] {
+    QHash<Protocol, LinkIndicator*> indicators;
+    for (const auto& m : d.modules)
+        indicators.insert(m->protocol(), window.linkIndicator(m->displayName()));
+    connect(ages, &QTimer::timeout, &window, [ctx, indicators] {
         QHash<Protocol, qint64> newest;
         for (const MachineState& m : ctx->fleet()->machinesSnapshot())
             newest[m.protocol] = std::max(newest.value(m.protocol, 0), m.lastDataMs);
         const qint64 now = QDateTime::currentMSecsSinceEpoch();
-        const QHash<Protocol, QString> names{{Protocol::Jaus, QStringLiteral("JAUS")},
-                                             {Protocol::Iso23725, QStringLiteral("ISO 23725")},
-                                             {Protocol::Osyris, QStringLiteral("OSYRIS")}};
         for (auto it = newest.begin(); it != newest.end(); ++it)
-            if (LinkIndicator* ind = window.linkIndicator(names.value(it.key())); ind && it.value() > 0)
+            if (LinkIndicator* ind = indicators.value(it.key()); ind && it.value() > 0)
                 ind->setDataAgeMs(std::max<qint64>(0, now - it.value()));
     });
     ages->start(1000);
@@ -296,25 +252,22 @@ void SiteRuntime::populate(MainWindow& window) {
     connect(&window, &MainWindow::stopAllRequested, ctx->gate(),
             [ctx] { ctx->gate()->stopAll(QStringLiteral("gui")); });
 
-#ifdef OCU_HAVE_JAUS_BRIDGE
-    if (d.jaus) {
-        window.setPanelWidget(Panel::JausControl, new JausControlPanel(d.jaus, ctx->selection()));
-        auto* joystick = new SdlJoystickInput(&window);
-        AxisMapping mapping;
-        mapping.forwardAxis = m_config.teleop.forwardAxis;
-        mapping.turnAxis = m_config.teleop.turnAxis;
-        mapping.invertForward = m_config.teleop.invertForward;
-        mapping.invertTurn = m_config.teleop.invertTurn;
-        mapping.deadZone = m_config.teleop.deadZone;
-        joystick->setMapping(mapping);
-        window.setPanelWidget(Panel::Teleop, new TeleopPanel(d.jaus, ctx->selection(), joystick));
-    } else
-#endif
-    {
-        const QString why = tr("No JAUS section in the site configuration: no JAUS vehicles on this site.");
-        window.setPanelWidget(Panel::JausControl, notice(why));
-        window.setPanelWidget(Panel::Teleop, notice(why));
+    // The protocols' own panels; a panel no module of this build fills says so.
+    QSet<Panel> filled{Panel::Fleet, Panel::SiteMap, Panel::Site3D, Panel::PassCounts, Panel::EventLog};
+    for (const auto& m : d.modules) {
+        if (m->bridge())
+            m->populate({window, ctx, m_config});
+        else
+            for (Panel p : m->panels())
+                window.setPanelWidget(p, notice(m->notConfiguredText()));
+        for (Panel p : m->panels())
+            filled.insert(p);
     }
+    for (Panel p : MainWindow::panels())
+        if (!filled.contains(p))
+            window.setPanelWidget(
+                p,
+                notice(tr("This build has no protocol module for the %1 panel.").arg(window.panelTitle(p))));
     for (const QString& p : std::as_const(d.startProblems))
         window.statusBar()->showMessage(p, 15000);
 }
@@ -322,6 +275,8 @@ void SiteRuntime::populate(MainWindow& window) {
 int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
     Impl& d = *m_impl;
     HeadlessMonitor* mon = HeadlessMonitor::attach(d.ctx);
+    for (const auto& m : d.modules)
+        mon->addProtocolCommands(m->headlessCommands());
     mon->setRateLimitMs(static_cast<int>(1000.0 / m_config.fleet.monitorRateHz));
     if (!mon->startStdin() && durationSeconds <= 0) {
         std::fputs("ocu: --headless reads commands from stdin, which is not readable; give --duration\n",

@@ -5,16 +5,6 @@
 #include "protocols/common/Log.h"
 #include "sim/SimulatedSite.h"
 
-#ifdef OCU_HAVE_SIM_JAUS
-#include "sim/jaus/JausDemo.h"
-#endif
-#ifdef OCU_HAVE_SIM_ISO23725
-#include "sim/iso23725/IsoDemo.h"
-#endif
-#ifdef OCU_HAVE_SIM_OSYRIS
-#include "sim/osyris/OsyrisDemo.h"
-#endif
-
 #include <boost/asio/ip/address_v4.hpp>
 #include <nlohmann/json.hpp>
 
@@ -35,63 +25,15 @@ void onSignal(int) {
 
 // The site configuration a console on any host needs to reach these simulators (keys as in
 // docs/site-config.md and the protocol documents).
-nlohmann::json consoleConfig(const ocu::SiteConfig& cfg, ocu::sim::SimulatedSite& sim) {
+nlohmann::json consoleConfig(const ocu::SiteConfig& cfg, const ocu::sim::SimulatedSite& sim) {
     using nlohmann::json;
-    const std::string iface = cfg.simulation.interfaceAddress;
     json out;
     out["site"] = {
         {"name", cfg.name + " (ocu-sim)"},
         {"origin",
          {{"latitude", cfg.origin.lat}, {"longitude", cfg.origin.lon}, {"altitude", cfg.origin.alt}}}};
-#ifdef OCU_HAVE_SIM_JAUS
-    if (auto* j = sim.jaus()) {
-        json statics = json::array();
-        for (auto& u : j->ugvs())
-            statics.push_back(
-                {{"subsystem", u->config().subsystemId}, {"address", iface}, {"port", u->localPort()}});
-        out["jaus"] = {{"subsystem_id", 200},
-                       {"call_sign", "OCU"},
-                       {"role", "primary_operator"},
-                       {"authority", 205},
-                       {"port", 0},
-                       {"multicast_group", cfg.jaus->transport.multicastGroup},
-                       {"multicast_port", j->multicastPort()},
-                       {"multicast_ttl", iface == "127.0.0.1" ? 0 : 1},
-                       {"interface_address", iface == "127.0.0.1" ? "127.0.0.1" : "0.0.0.0"},
-                       {"static_endpoints", statics}};
-    }
-#endif
-#ifdef OCU_HAVE_SIM_ISO23725
-    if (auto* i = sim.iso(); i && i->ahs) {
-        json links = json::array();
-        for (const auto& l : cfg.iso23725->links) {
-            json link = {{"name", l.name}, {"url", l.ws.url}};
-            if (!l.mapWs.url.empty())
-                link["mapUrl"] = l.mapWs.url;
-            links.push_back(link);
-        }
-        out["iso23725"] = {{"links", links}};
-    }
-#endif
-#ifdef OCU_HAVE_SIM_OSYRIS
-    if (sim.osyris()) {
-        const auto& o = *cfg.osyris;
-        json machines = json::array();
-        for (const auto& [idx, name] : o.machineNames) {
-            auto t = o.machineTypes.find(idx);
-            machines.push_back(
-                {{"idx", idx}, {"name", name}, {"type", t == o.machineTypes.end() ? "" : t->second}});
-        }
-        out["osyris"] = {{"group", o.group},
-                         {"port", o.port},
-                         {"interface", iface == "127.0.0.1" ? "127.0.0.1" : "0.0.0.0"},
-                         {"multicastTtl", o.multicastTtl},
-                         {"originLat", o.originLat},
-                         {"originLon", o.originLon},
-                         {"originAlt", o.originAlt},
-                         {"machines", machines}};
-    }
-#endif
+    for (const auto& m : sim.modules())
+        m->writeConsoleConfig(cfg, out);
     return out;
 }
 } // namespace
@@ -181,27 +123,9 @@ int main(int argc, char** argv) {
 
     std::printf("ocu-sim: simulated site \"%s\" around %.6f, %.6f\n", cfg.name.c_str(), cfg.origin.lat,
                 cfg.origin.lon);
-#ifdef OCU_HAVE_SIM_JAUS
-    if (auto* j = sim.jaus()) {
-        std::printf("  JAUS: %zu UGVs, multicast %s:%u on 127.0.0.1\n", j->ugvs().size(),
-                    cfg.jaus->transport.multicastGroup.c_str(), j->multicastPort());
-        for (auto& u : j->ugvs())
-            std::printf("    %s subsystem %u, unicast 127.0.0.1:%u\n", u->config().callSign.c_str(),
-                        u->config().subsystemId, u->localPort());
-    }
-#endif
-#ifdef OCU_HAVE_SIM_ISO23725
-    if (auto* i = sim.iso(); i && i->ahs)
-        for (const auto& l : cfg.iso23725->links)
-            std::printf("  ISO 23725: AHS with %d trucks at %s%s%s\n", cfg.simulation.ahsTrucks,
-                        l.ws.url.c_str(), l.mapWs.url.empty() ? "" : ", map service at ",
-                        l.mapWs.url.c_str());
-#endif
-#ifdef OCU_HAVE_SIM_OSYRIS
-    if (auto* o = sim.osyris())
-        std::printf("  OSYRIS: %zu stations on %s:%u (interface %s)\n", o->stationCount(),
-                    cfg.osyris->group.c_str(), cfg.osyris->port, cfg.osyris->interfaceAddress.c_str());
-#endif
+    for (const auto& m : sim.modules())
+        for (const std::string& line : m->describe(cfg))
+            std::printf("  %s\n", line.c_str());
     std::fflush(stdout);
     if (p.isSet(writeConfig)) {
         const std::string text = consoleConfig(cfg, sim).dump(2) + "\n";

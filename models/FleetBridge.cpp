@@ -64,6 +64,13 @@ QVector<LinkStatus> FleetBridge::links() const {
     return out;
 }
 
+std::optional<LinkStatus> FleetBridge::linkStatus(const QString& link) const {
+    auto it = m_linkState.find(link);
+    if (it == m_linkState.end())
+        return std::nullopt;
+    return *it;
+}
+
 void FleetBridge::flushPending() {
     m_links.drainNow();
     m_machines.drainNow();

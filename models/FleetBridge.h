@@ -10,7 +10,9 @@
 // A concrete bridge implements the four command methods, maps its stack's vocabulary into MachineState
 // (id = protocolPrefix(protocol) + native id) and calls publishMachine/publishRemoval/publishLink/
 // publishEvent from its stack listener. Role and authority checks happen in the concrete bridge; a refused
-// command returns CommandResult::failure("reason").
+// command returns CommandResult::failure("reason"). A command for a target whose link the bridge last saw
+// down (or never saw up) is refused the same way, and nothing is posted: the stack neither sends it nor keeps
+// it for later.
 #include "models/FleetEvent.h"
 #include "models/MachineState.h"
 #include "models/SiteMapData.h"
@@ -79,9 +81,11 @@ public:
 
     // GUI thread: the latest link states, and a way to deliver pending coalesced data synchronously.
     QVector<LinkStatus> links() const;
+    std::optional<LinkStatus> linkStatus(const QString& link) const;
     void flushPending();
     // Backlog and counters of the machine coalescer (benchmarks, diagnostics; any thread).
     size_t pendingMachineUpdates() const { return m_machines.pending(); }
+    size_t pendingLinkUpdates() const { return m_links.pending(); }
     TelemetryCoalescer<QString, std::optional<MachineState>>::Stats machineStats() const {
         return m_machines.stats();
     }

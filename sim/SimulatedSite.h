@@ -1,19 +1,16 @@
 #pragma once
 // The built-in simulated site: simulated JAUS UGVs, a simulated ISO 23725 AHS with its haul trucks and an
 // OSYRIS paving train, all speaking the real protocols over real loopback sockets. Used by `ocu` without
-// arguments, by `ocu-sim`, and by end-to-end tests. No Qt.
+// arguments, by `ocu-sim`, and by end-to-end tests. It starts the simulator module of every protocol of the
+// build (sim/SimModule.h). No Qt.
 #include "protocols/site/SiteConfig.h"
+#include "sim/SimModule.h"
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ocu::sim {
-
-class JausDemo;
-struct IsoDemo;
-namespace osyris {
-class OsyrisDemo;
-}
 
 class SimulatedSite {
 public:
@@ -28,17 +25,15 @@ public:
     std::string start(SiteConfig& config);
     void stop();
 
-    JausDemo* jaus() const;
-    IsoDemo* iso() const;
-    osyris::OsyrisDemo* osyris() const;
+    // One module per protocol of this build, in start order.
+    const std::vector<std::unique_ptr<SimModule>>& modules() const { return m_modules; }
 
     // Where each part of the site sits relative to the site origin (metres east, north).
     static constexpr double kUgvAreaE = 180, kUgvAreaN = 120;
     static constexpr double kRoadAreaE = -260, kRoadAreaN = -180;
 
 private:
-    struct Impl;
-    std::unique_ptr<Impl> m_impl;
+    std::vector<std::unique_ptr<SimModule>> m_modules;
 };
 
 } // namespace ocu::sim

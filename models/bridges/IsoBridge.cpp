@@ -42,6 +42,11 @@ QStringList IsoBridge::linkNames() const {
     return out;
 }
 
+void IsoBridge::setOwnPosition(const QString& equipmentId, double lat, double lon, double altitude,
+                               double headingDeg, double speedKmh) {
+    m_stack->setOwnPosition(equipmentId.toStdString(), lat, lon, altitude, headingDeg, speedKmh);
+}
+
 AllStopState IsoBridge::allStopState(const QString& link) const {
     return static_cast<AllStopState>(m_allStop.value(link, static_cast<int>(AllStopState::Unknown)));
 }
@@ -342,22 +347,42 @@ QString IsoBridge::linkOf(const QString& machineId) const {
     return m_machineLinks.value(machineId);
 }
 
+QString IsoBridge::linkRefusal(const QString& link, const QString& what) const {
+    const auto st = linkStatus(QStringLiteral("iso23725:") + link);
+    if (st && st->state == ocu::LinkState::Up)
+        return {};
+    const QString why = st && !st->detail.isEmpty() ? QStringLiteral(" (%1)").arg(st->detail) : QString();
+    return st && st->state == ocu::LinkState::Down
+               ? tr("%1 refused: ISO 23725 link %2 is down%3; nothing sent").arg(what, link, why)
+               : tr("%1 refused: ISO 23725 link %2 is not connected%3; nothing sent").arg(what, link, why);
+}
+
 CommandResult IsoBridge::stopAll() {
-    QStringList done;
+    QStringList done, refused;
     for (const auto& l : m_config.links) {
+        if (const QString why = linkRefusal(q(l.name), tr("all-stop Apply")); !why.isEmpty()) {
+            refused << why;
+            continue;
+        }
         m_stack->allStopApply(l.name);
         done << q(l.name);
     }
-    if (done.isEmpty())
+    if (done.isEmpty() && refused.isEmpty())
         return CommandResult::failure(tr("no ISO 23725 link configured"));
-    return CommandResult::success(tr("all-stop Apply sent on %1 (state shown as the AHS reports it)")
-                                      .arg(done.join(QStringLiteral(", "))));
+    const QString sent = tr("all-stop Apply sent on %1 (state shown as the AHS reports it)")
+                             .arg(done.join(QStringLiteral(", ")));
+    if (!refused.isEmpty())
+        return CommandResult::failure(
+            ((done.isEmpty() ? QStringList() : QStringList{sent}) + refused).join(QStringLiteral("; ")));
+    return CommandResult::success(sent);
 }
 
 CommandResult IsoBridge::stopMachine(const QString& id) {
     const QString link = linkOf(id);
     if (link.isEmpty())
         return CommandResult::failure(tr("unknown ISO 23725 machine: %1").arg(id));
+    if (const QString why = linkRefusal(link, tr("all-stop Apply")); !why.isEmpty())
+        return CommandResult::failure(why);
     // ISO 23725 stops autonomous machines per AHS (all-stop); there is no single-machine stop message.
     m_stack->allStopApply(link.toStdString());
     return CommandResult::success(
@@ -368,6 +393,8 @@ CommandResult IsoBridge::clearStop(const QString& id) {
     const QString link = linkOf(id);
     if (link.isEmpty())
         return CommandResult::failure(tr("unknown ISO 23725 machine: %1").arg(id));
+    if (const QString why = linkRefusal(link, tr("all-stop Remove")); !why.isEmpty())
+        return CommandResult::failure(why);
     m_stack->allStopRemove(link.toStdString());
     return CommandResult::success(tr("all-stop Remove sent to AHS %1").arg(link));
 }
@@ -380,6 +407,11 @@ CommandResult IsoBridge::command(const QString& name, const QJsonObject& args) {
         link = q(m_config.links.front().name);
     if (!linkNames().contains(link))
         return CommandResult::failure(tr("%1: unknown ISO 23725 link \"%2\"").arg(name, link));
+    static const QStringList kOverTheLink{QStringLiteral("all_stop_apply"), QStringLiteral("all_stop_remove"),
+                                          QStringLiteral("fetch_map"), QStringLiteral("reset_assignment")};
+    if (kOverTheLink.contains(name))
+        if (const QString why = linkRefusal(link, name); !why.isEmpty())
+            return CommandResult::failure(why);
     if (name == QLatin1String("all_stop_apply")) {
         m_stack->allStopApply(link.toStdString());
         return CommandResult::success(tr("all-stop Apply sent to %1").arg(link));

@@ -29,8 +29,11 @@ public:
 
     QString start();
     void stop();
-    iso23725::IsoStack* stack() const { return m_stack.get(); }
     QStringList linkNames() const;
+    // Position of one of the FMS's own (manned) machines (MachinePositionV1 to every AHS link, at the links'
+    // position rate); GUI thread, posted to the stack.
+    void setOwnPosition(const QString& equipmentId, double lat, double lon, double altitude,
+                        double headingDeg, double speedKmh);
 
     CommandResult stopAll() override;
     CommandResult stopMachine(const QString& id) override;
@@ -61,6 +64,8 @@ private:
     void setPosition(MachineState& row, const iso23725::IsoPosition& p) const;
     const std::string& keyOf(const std::string& link, const iso23725::Guid& equipmentId);
     QString linkOf(const QString& machineId) const;
+    // GUI thread: why `what` cannot go to the AHS on `link` now (its link is not up), or an empty string.
+    QString linkRefusal(const QString& link, const QString& what) const;
 
     iso23725::IsoConfig m_config;
     GeoFrame m_frame;

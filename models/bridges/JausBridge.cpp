@@ -12,16 +12,143 @@ namespace ocu {
 
 using namespace jaus;
 
+namespace {
+
+JausAddress toAddress(const JausId& id) {
+    return {id.subsystem, id.node, id.component};
+}
+
+JausAccess toAccess(AccessState a) {
+    switch (a) {
+    case AccessState::NotAvailable:
+        return JausAccess::NotAvailable;
+    case AccessState::NotControlled:
+        return JausAccess::NotControlled;
+    case AccessState::Monitoring:
+        return JausAccess::Monitoring;
+    case AccessState::ControlAccepted:
+        return JausAccess::ControlAccepted;
+    case AccessState::ControlReleased:
+        return JausAccess::ControlReleased;
+    case AccessState::Timeout:
+        return JausAccess::Timeout;
+    case AccessState::InsufficientAuthority:
+        return JausAccess::InsufficientAuthority;
+    case AccessState::Preempted:
+        return JausAccess::Preempted;
+    }
+    return JausAccess::NotAvailable;
+}
+
+JausManagement toManagement(ManagementState m) {
+    switch (m) {
+    case ManagementState::Init:
+        return JausManagement::Init;
+    case ManagementState::Ready:
+        return JausManagement::Ready;
+    case ManagementState::Standby:
+        return JausManagement::Standby;
+    case ManagementState::Shutdown:
+        return JausManagement::Shutdown;
+    case ManagementState::Failure:
+        return JausManagement::Failure;
+    case ManagementState::Emergency:
+        return JausManagement::Emergency;
+    }
+    return JausManagement::Failure;
+}
+
+template <class T, class F>
+auto mapOptional(const std::optional<T>& v, F&& f) -> std::optional<decltype(f(*v))> {
+    if (!v)
+        return std::nullopt;
+    return f(*v);
+}
+
+// The panels' view of a subsystem (GUI thread, only for the snapshots the coalescer delivers).
+JausVehicle toVehicle(const SubsystemSnapshot& s) {
+    JausVehicle v;
+    v.subsystem = s.subsystem;
+    v.callSign = QString::fromStdString(s.callSign);
+    v.endpoint = QString::fromStdString(s.endpoint);
+    v.link = s.link == jaus::LinkState::Up         ? JausLink::Up
+             : s.link == jaus::LinkState::Degraded ? JausLink::Degraded
+                                                   : JausLink::Down;
+    v.linkText = QString::fromUtf8(jaus::toString(s.link));
+    v.lastMessageUnixMs = s.lastMessageUnixMs;
+    v.access = toAccess(s.access);
+    v.controller = toAddress(s.controller);
+    v.controllerAuthority = s.controllerAuthority;
+    v.controlledByUs = s.controlledByUs;
+    v.accessTimeoutS = s.accessTimeoutS;
+    if (s.management) {
+        v.management = toManagement(*s.management);
+        v.managementText = QString::fromUtf8(jaus::toString(*s.management));
+    }
+    v.emergency = s.emergency;
+    v.driving = s.driving;
+    v.globalPose = mapOptional(s.globalPose, [](const GlobalPose& p) {
+        return JausGlobalPose{p.lat, p.lon, p.alt, p.yaw};
+    });
+    v.localPose = mapOptional(s.localPose, [](const LocalPose& p) { return JausLocalPose{p.x, p.y, p.yaw}; });
+    v.velocity = mapOptional(s.velocity, [](const VelocityState& p) {
+        return JausVelocity{p.vx, p.vy, p.yawRate};
+    });
+    v.platform = mapOptional(s.platform, [](const PlatformSpecifications& p) {
+        return JausPlatform{QString::fromStdString(p.name),
+                            p.steeringType,
+                            p.front,
+                            p.back,
+                            p.left,
+                            p.right,
+                            p.top,
+                            p.bottom,
+                            p.maxForwardSpeed,
+                            p.maxReverseSpeed,
+                            p.maxRotationalSpeed};
+    });
+    v.health = mapOptional(s.health, [](const HealthSummary& h) {
+        JausHealth out;
+        out.severity = h.severity;
+        for (auto [node, severity] : h.nodes)
+            out.nodes.push_back({node, severity});
+        return out;
+    });
+    v.mobilityComponent = toAddress(s.mobilityComponent);
+    for (const NodeInfo& n : s.services) {
+        JausNodeServices node{n.node, {}};
+        for (const ComponentInfo& c : n.components) {
+            JausComponentServices comp{c.component, {}};
+            for (const ServiceRecord& r : c.services)
+                comp.services.push_back({QString::fromStdString(r.uri), r.major, r.minor});
+            node.components.push_back(comp);
+        }
+        v.services.push_back(node);
+    }
+    return v;
+}
+
+JausVehicleEvent toVehicleEvent(const JausEvent& e) {
+    JausVehicleEvent v;
+    v.severity = e.severity == Severity::Error     ? JausEventSeverity::Error
+                 : e.severity == Severity::Warning ? JausEventSeverity::Warning
+                                                   : JausEventSeverity::Info;
+    v.kindText = QString::fromUtf8(jaus::toString(e.kind));
+    v.subsystem = e.subsystem;
+    v.text = QString::fromStdString(e.text);
+    return v;
+}
+
+} // namespace
+
 JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject* parent)
-    : FleetBridge(Protocol::Jaus, parent), m_config(config), m_frame(frame),
-      m_snapshots(this, [this](auto&& batch) {
+    : JausVehicleBridge(parent), m_config(config), m_frame(frame), m_snapshots(this, [this](auto&& batch) {
           for (auto& [id, snap] : batch) {
-              m_latest.insert(id, snap);
-              emit subsystemUpdated(snap);
+              const JausVehicle v = toVehicle(snap);
+              m_latest.insert(id, v);
+              emit subsystemUpdated(v);
           }
       }) {
-    qRegisterMetaType<SubsystemSnapshot>();
-    qRegisterMetaType<JausEvent>();
     m_stack = std::make_unique<JausStack>(m_config, static_cast<JausListener&>(*this));
 }
 
@@ -45,28 +172,24 @@ void JausBridge::stop() {
         m_stack->stop(); // releases control after zero drive commands
 }
 
-QString JausBridge::machineId(std::uint16_t subsystem) {
-    return protocolPrefix(Protocol::Jaus) + QString::number(subsystem);
+JausConsoleIdentity JausBridge::identity() const {
+    JausConsoleIdentity id;
+    id.callSign = QString::fromStdString(m_config.callSign);
+    id.subsystemId = m_config.subsystemId;
+    id.authority = m_config.authority;
+    id.mayControl = m_config.mayControl();
+    id.driveRateHz = m_config.driveRateHz;
+    id.ownId = toAddress(m_config.ownId());
+    return id;
 }
 
-std::optional<std::uint16_t> JausBridge::subsystemOf(const QString& machineId) {
-    const QString prefix = protocolPrefix(Protocol::Jaus);
-    if (!machineId.startsWith(prefix))
-        return std::nullopt;
-    bool ok = false;
-    const uint v = machineId.mid(prefix.size()).toUInt(&ok);
-    if (!ok || v == 0 || v > 65534)
-        return std::nullopt;
-    return static_cast<std::uint16_t>(v);
-}
-
-QList<std::uint16_t> JausBridge::subsystems() const {
+QList<quint16> JausBridge::subsystems() const {
     auto keys = m_latest.keys();
     std::sort(keys.begin(), keys.end());
     return keys;
 }
 
-std::optional<SubsystemSnapshot> JausBridge::subsystem(std::uint16_t id) const {
+std::optional<JausVehicle> JausBridge::subsystem(quint16 id) const {
     auto it = m_latest.find(id);
     if (it == m_latest.end())
         return std::nullopt;
@@ -131,7 +254,7 @@ void JausBridge::onEvent(const JausEvent& event) {
     e.requiresAck = e.severity >= EventSeverity::Warning;
     publishEvent(e);
     QMetaObject::invokeMethod(
-        this, [this, event] { emit jausEvent(event); }, Qt::QueuedConnection);
+        this, [this, ev = toVehicleEvent(event)] { emit jausEvent(ev); }, Qt::QueuedConnection);
 }
 
 MachineState JausBridge::toMachine(const SubsystemSnapshot& s) const {
@@ -255,17 +378,37 @@ CommandResult JausBridge::refuseIfMonitor(const QString& what) const {
     return CommandResult::success();
 }
 
+CommandResult JausBridge::refuseIfUnreachable(quint16 subsystem, const QString& what) const {
+    auto it = m_latest.find(subsystem);
+    if (it == m_latest.end())
+        return CommandResult::failure(tr("%1 refused: %2 has not been heard on the JAUS link; nothing sent")
+                                          .arg(what, machineId(subsystem)));
+    if (it->link == JausLink::Down)
+        return CommandResult::failure(
+            tr("%1 refused: the link to %2 is down; nothing sent").arg(what, machineId(subsystem)));
+    return CommandResult::success();
+}
+
 CommandResult JausBridge::stopAll() {
     if (auto r = refuseIfMonitor(tr("emergency stop")); !r.ok)
         return r;
     int n = 0;
+    QStringList unreachable;
     for (const auto& s : std::as_const(m_latest)) {
-        if (s.controlledByUs) {
-            m_stack->setEmergency(s.subsystem);
-            ++n;
+        if (!s.controlledByUs)
+            continue;
+        if (s.link == JausLink::Down) {
+            unreachable << machineId(s.subsystem);
+            continue;
         }
+        m_stack->setEmergency(s.subsystem);
+        ++n;
     }
-    return CommandResult::success(tr("SetEmergency sent to %n vehicle(s) this console controls", "", n));
+    const QString sent = tr("SetEmergency sent to %n vehicle(s) this console controls", "", n);
+    if (!unreachable.isEmpty())
+        return CommandResult::failure(
+            tr("%1; not sent to %2: link down").arg(sent, unreachable.join(QStringLiteral(", "))));
+    return CommandResult::success(sent);
 }
 
 CommandResult JausBridge::stopMachine(const QString& id) {
@@ -273,6 +416,8 @@ CommandResult JausBridge::stopMachine(const QString& id) {
     if (!sub)
         return CommandResult::failure(tr("not a JAUS machine: %1").arg(id));
     if (auto r = refuseIfMonitor(tr("emergency stop")); !r.ok)
+        return r;
+    if (auto r = refuseIfUnreachable(*sub, tr("emergency stop")); !r.ok)
         return r;
     m_stack->setEmergency(*sub);
     return CommandResult::success(tr("SetEmergency sent to %1").arg(id));
@@ -284,24 +429,34 @@ CommandResult JausBridge::clearStop(const QString& id) {
         return CommandResult::failure(tr("not a JAUS machine: %1").arg(id));
     if (auto r = refuseIfMonitor(tr("clear emergency")); !r.ok)
         return r;
+    if (auto r = refuseIfUnreachable(*sub, tr("clear emergency")); !r.ok)
+        return r;
     m_stack->clearEmergency(*sub);
     return CommandResult::success(tr("ClearEmergency sent to %1").arg(id));
 }
 
-CommandResult JausBridge::drive(std::uint16_t subsystem, const DriveCommand& command) {
+CommandResult JausBridge::drive(quint16 subsystem, const JausDrive& demand) {
     if (auto r = refuseIfMonitor(tr("drive")); !r.ok)
         return r;
     auto s = this->subsystem(subsystem);
+    if (s && s->link == JausLink::Down)
+        return refuseIfUnreachable(subsystem, tr("drive"));
     if (!s || !s->controlledByUs)
         return CommandResult::failure(
             tr("drive refused: this console does not control %1").arg(machineId(subsystem)));
     if (!s->driving)
         m_stack->startDriving(subsystem);
+    DriveCommand command;
+    command.mode =
+        demand.mode == JausDrive::Mode::Wrench ? DriveCommand::Mode::Wrench : DriveCommand::Mode::Velocity;
+    command.linear = demand.linear;
+    command.angular = demand.angular;
+    command.brake = demand.brake;
     m_stack->setDriveCommand(subsystem, command);
     return CommandResult::success(tr("drive command sent"));
 }
 
-CommandResult JausBridge::stopDriving(std::uint16_t subsystem) {
+CommandResult JausBridge::stopDriving(quint16 subsystem) {
     m_stack->stopDriving(subsystem); // zeros, several times
     if (QTimer* t = m_driveTimers.take(subsystem)) {
         t->stop();
@@ -319,12 +474,22 @@ CommandResult JausBridge::command(const QString& name, const QJsonObject& args) 
     if (!sub)
         return CommandResult::failure(
             tr("%1: \"id\" must name a JAUS machine such as \"jaus:101\"").arg(name));
+    // Releasing is never refused for a down link: it also drops the wish for control, so the console does not
+    // take control back when the vehicle is heard again.
     if (name == QLatin1String("release_control")) {
         m_stack->releaseControl(*sub);
         return CommandResult::success(tr("ReleaseControl sent to %1").arg(machineId(*sub)));
     }
     if (auto r = refuseIfMonitor(name); !r.ok)
         return r;
+    if (name == QLatin1String("drive_stop"))
+        return stopDriving(*sub);
+    static const QStringList kOverTheLink{QStringLiteral("request_control"), QStringLiteral("resume"),
+                                          QStringLiteral("standby"), QStringLiteral("shutdown"),
+                                          QStringLiteral("reset")};
+    if (kOverTheLink.contains(name))
+        if (auto r = refuseIfUnreachable(*sub, name); !r.ok)
+            return r;
     if (name == QLatin1String("request_control")) {
         m_stack->requestControl(*sub);
         return CommandResult::success(
@@ -346,20 +511,18 @@ CommandResult JausBridge::command(const QString& name, const QJsonObject& args) 
         m_stack->reset(*sub);
         return CommandResult::success(tr("Reset sent"));
     }
-    if (name == QLatin1String("drive_stop"))
-        return stopDriving(*sub);
     if (name == QLatin1String("drive")) {
-        DriveCommand c;
+        JausDrive c;
         const QString mode = args.value(QStringLiteral("mode")).toString(QStringLiteral("velocity"));
         if (mode != QLatin1String("velocity") && mode != QLatin1String("effort"))
             return CommandResult::failure(tr("drive: \"mode\" must be \"velocity\" or \"effort\""));
-        c.mode = mode == QLatin1String("effort") ? DriveCommand::Mode::Wrench : DriveCommand::Mode::Velocity;
+        c.mode = mode == QLatin1String("effort") ? JausDrive::Mode::Wrench : JausDrive::Mode::Velocity;
         c.linear = args.value(QStringLiteral("linear")).toDouble(0);
         c.angular = args.value(QStringLiteral("angular")).toDouble(0);
         const double duration = args.value(QStringLiteral("duration")).toDouble(1.0);
         if (!(duration > 0 && duration <= 60))
             return CommandResult::failure(tr("drive: \"duration\" must be between 0 and 60 seconds"));
-        if (c.mode == DriveCommand::Mode::Wrench && (std::abs(c.linear) > 100 || std::abs(c.angular) > 100))
+        if (c.mode == JausDrive::Mode::Wrench && (std::abs(c.linear) > 100 || std::abs(c.angular) > 100))
             return CommandResult::failure(tr("drive: effort must be within ±100 %"));
         auto r = drive(*sub, c);
         if (!r.ok)

@@ -32,11 +32,13 @@ QString OsyrisBridge::start() {
         publishLink({link, ocu::LinkState::Down, -1, q(error)});
         return tr("OSYRIS: %1").arg(q(error));
     }
+    m_running = true;
     publishLink({link, ocu::LinkState::Degraded, -1, tr("joined, waiting for stations")});
     return {};
 }
 
 void OsyrisBridge::stop() {
+    m_running = false;
     if (m_station)
         m_station->stop();
 }
@@ -49,6 +51,7 @@ osyris::PassCountSummary OsyrisBridge::passCountSummary() const {
 // ---- io thread ----
 
 void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
+    m_heard = true;
     MachineState m;
     m.id = protocolPrefix(Protocol::Osyris) + QString::number(s.idx);
     m.protocol = Protocol::Osyris;
@@ -98,6 +101,7 @@ void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
 
 void OsyrisBridge::onStationAlive(std::uint8_t idx, std::optional<SlotRange>) {
     (void)idx;
+    m_heard = true;
     if (m_linkUp.exchange(true))
         return; // published once; positions keep the data age fresh
     publishLink({QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port), ocu::LinkState::Up,
@@ -140,7 +144,20 @@ void OsyrisBridge::onEvent(Severity severity, const std::string& text) {
 
 // ---- GUI thread ----
 
+QString OsyrisBridge::linkRefusal(const QString& what) const {
+    // A message sent while nobody listens would wait in the station's store for late joiners.
+    if (!m_running)
+        return tr("%1 refused: the OSYRIS station is not running; nothing sent").arg(what);
+    if (!m_heard)
+        return tr("%1 refused: no OSYRIS station heard on %2:%3 yet; nothing sent")
+            .arg(what, q(m_config.group))
+            .arg(m_config.port);
+    return {};
+}
+
 CommandResult OsyrisBridge::stopAll() {
+    if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty())
+        return CommandResult::failure(why);
     // OSYRIS has no stop command (manned machines); the stop reaches every driver's display as a message.
     m_station->sendText("STOP ALL issued by the operator control unit");
     return CommandResult::success(
@@ -150,6 +167,8 @@ CommandResult OsyrisBridge::stopAll() {
 CommandResult OsyrisBridge::stopMachine(const QString& id) {
     if (!id.startsWith(protocolPrefix(Protocol::Osyris)))
         return CommandResult::failure(tr("not an OSYRIS machine: %1").arg(id));
+    if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty())
+        return CommandResult::failure(why);
     m_station->sendText("STOP " + id.mid(protocolPrefix(Protocol::Osyris).size()).toStdString() +
                         ": stop requested by the operator control unit");
     return CommandResult::success(tr("OSYRIS has no remote stop: STOP message sent to the machine displays"));
@@ -164,6 +183,8 @@ CommandResult OsyrisBridge::command(const QString& name, const QJsonObject& args
         const QString text = args.value(QStringLiteral("text")).toString();
         if (text.isEmpty() || text.toUtf8().size() > 80)
             return CommandResult::failure(tr("send_text: \"text\" must be 1 to 80 bytes (CmMsg)"));
+        if (const QString why = linkRefusal(name); !why.isEmpty())
+            return CommandResult::failure(why);
         m_station->sendText(text.toStdString());
         return CommandResult::success(tr("message sent to every station"));
     }
@@ -171,6 +192,8 @@ CommandResult OsyrisBridge::command(const QString& name, const QJsonObject& args
         const int idx = args.value(QStringLiteral("idx")).toInt(-1);
         if (idx < 0 || idx > 253)
             return CommandResult::failure(tr("ping: \"idx\" must be a station index 0-253"));
+        if (const QString why = linkRefusal(name); !why.isEmpty())
+            return CommandResult::failure(why);
         m_station->ping(static_cast<std::uint8_t>(idx));
         return CommandResult::success(tr("PING sent to station %1").arg(idx));
     }

@@ -23,7 +23,6 @@ public:
 
     QString start();
     void stop();
-    osyris::OsyrisStack* station() const { return m_station.get(); }
 
     CommandResult stopAll() override;
     CommandResult stopMachine(const QString& id) override;
@@ -47,6 +46,10 @@ private:
     std::unique_ptr<OsyrisPassCountLayer> m_layer;
     std::atomic<bool> m_passCountQueued{false};
     std::atomic<bool> m_linkUp{false};
+    std::atomic<bool> m_heard{false}; // a station (position or alive) was heard
+    std::atomic<bool> m_running{false};
+    // Why a message cannot go out now (no station heard, station not running), or an empty string.
+    QString linkRefusal(const QString& what) const;
 };
 
 } // namespace ocu

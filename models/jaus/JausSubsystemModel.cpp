@@ -3,17 +3,16 @@
 #include <QBrush>
 #include <QColor>
 #include <QDateTime>
+#include <QTimer>
 
 namespace ocu {
 
-using namespace jaus;
-
-JausSubsystemModel::JausSubsystemModel(JausBridge* bridge, QObject* parent)
-    : QAbstractTableModel(parent), m_bridge(bridge) {
+JausSubsystemModel::JausSubsystemModel(JausVehicleBridge* bridge, QObject* parent)
+    : QAbstractTableModel(parent), m_bridge(bridge), m_ownId(bridge->identity().ownId) {
     for (std::uint16_t id : bridge->subsystems())
         if (auto s = bridge->subsystem(id))
             m_rows.push_back(*s);
-    connect(bridge, &JausBridge::subsystemUpdated, this, &JausSubsystemModel::onSnapshot);
+    connect(bridge, &JausVehicleBridge::subsystemUpdated, this, &JausSubsystemModel::onVehicle);
     // Data ages change with time even without messages.
     auto* t = new QTimer(this);
     connect(t, &QTimer::timeout, this, [this] {
@@ -34,7 +33,7 @@ std::uint16_t JausSubsystemModel::subsystemAt(int row) const {
     return row >= 0 && row < m_rows.size() ? m_rows[row].subsystem : 0;
 }
 
-const SubsystemSnapshot* JausSubsystemModel::snapshotAt(int row) const {
+const JausVehicle* JausSubsystemModel::vehicleAt(int row) const {
     return row >= 0 && row < m_rows.size() ? &m_rows[row] : nullptr;
 }
 
@@ -45,7 +44,7 @@ int JausSubsystemModel::rowOf(std::uint16_t subsystem) const {
     return -1;
 }
 
-void JausSubsystemModel::onSnapshot(const SubsystemSnapshot& s) {
+void JausSubsystemModel::onVehicle(const JausVehicle& s) {
     const int row = rowOf(s.subsystem);
     if (row >= 0) {
         m_rows[row] = s;
@@ -60,40 +59,40 @@ void JausSubsystemModel::onSnapshot(const SubsystemSnapshot& s) {
     endInsertRows();
 }
 
-QString JausSubsystemModel::accessText(AccessState s) {
+QString JausSubsystemModel::accessText(JausAccess s) {
     // The vocabulary operators know from the FKIE IOP panels.
     switch (s) {
-    case AccessState::NotAvailable:
+    case JausAccess::NotAvailable:
         return QStringLiteral("NOT_AVAILABLE");
-    case AccessState::NotControlled:
+    case JausAccess::NotControlled:
         return QStringLiteral("NOT_CONTROLLED");
-    case AccessState::Monitoring:
+    case JausAccess::Monitoring:
         return QStringLiteral("MONITORING");
-    case AccessState::ControlAccepted:
+    case JausAccess::ControlAccepted:
         return QStringLiteral("CONTROL_ACCEPTED");
-    case AccessState::ControlReleased:
+    case JausAccess::ControlReleased:
         return QStringLiteral("CONTROL_RELEASED");
-    case AccessState::Timeout:
+    case JausAccess::Timeout:
         return QStringLiteral("TIMEOUT");
-    case AccessState::InsufficientAuthority:
+    case JausAccess::InsufficientAuthority:
         return QStringLiteral("INSUFFICIENT_AUTHORITY");
-    case AccessState::Preempted:
+    case JausAccess::Preempted:
         return QStringLiteral("PREEMPTED");
     }
     return {};
 }
 
-JausSubsystemModel::RowColour JausSubsystemModel::rowColour(const SubsystemSnapshot& s) const {
+JausSubsystemModel::RowColour JausSubsystemModel::rowColour(const JausVehicle& s) const {
     if (s.controlledByUs) {
         // Standby and Ready are normal while controlled; anything else needs the operator's attention.
-        const bool normalState = !s.management || *s.management == ManagementState::Ready ||
-                                 *s.management == ManagementState::Standby;
-        const bool warn = s.emergency || s.link != jaus::LinkState::Up ||
-                          (s.health && s.health->severity >= 2) || !normalState;
+        const bool normalState = !s.management || *s.management == JausManagement::Ready ||
+                                 *s.management == JausManagement::Standby;
+        const bool warn =
+            s.emergency || s.link != JausLink::Up || (s.health && s.health->severity >= 2) || !normalState;
         return warn ? RowColour::OursWarning : RowColour::OursOk;
     }
     // Our own ID in a report after we released is a stale report, not another console.
-    if (s.controller.subsystem != 0 && !(s.controller == m_bridge->config().ownId()))
+    if (s.controller.subsystem != 0 && !(s.controller == m_ownId))
         return RowColour::Other;
     return RowColour::None;
 }
@@ -101,7 +100,7 @@ JausSubsystemModel::RowColour JausSubsystemModel::rowColour(const SubsystemSnaps
 QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= m_rows.size())
         return {};
-    const SubsystemSnapshot& s = m_rows[index.row()];
+    const JausVehicle& s = m_rows[index.row()];
     if (role == SubsystemRole)
         return s.subsystem;
     if (role == AccessStateRole)
@@ -127,10 +126,10 @@ QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
     switch (index.column()) {
     case Vehicle:
         return QStringLiteral("%1 [%2]")
-            .arg(s.callSign.empty() ? tr("unnamed") : QString::fromStdString(s.callSign))
+            .arg(s.callSign.isEmpty() ? tr("unnamed") : s.callSign)
             .arg(s.subsystem);
     case Link: {
-        const QString state = QString::fromUtf8(jaus::toString(s.link));
+        const QString state = s.linkText;
         if (s.lastMessageUnixMs <= 0)
             return state;
         const qint64 age = std::max<qint64>(0, QDateTime::currentMSecsSinceEpoch() - s.lastMessageUnixMs);
@@ -141,7 +140,7 @@ QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
     case Controller:
         if (s.controlledByUs)
             return tr("this console (%1)").arg(s.controllerAuthority);
-        if (s.controller.subsystem != 0 && !(s.controller == m_bridge->config().ownId()))
+        if (s.controller.subsystem != 0 && !(s.controller == m_ownId))
             return tr("%1.%2.%3 (%4)")
                 .arg(s.controller.subsystem)
                 .arg(s.controller.node)
@@ -149,7 +148,7 @@ QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
                 .arg(s.controllerAuthority);
         return tr("nobody");
     case Management: {
-        QString t = s.management ? QString::fromUtf8(jaus::toString(*s.management)) : tr("unknown");
+        QString t = s.management ? s.managementText : tr("unknown");
         if (s.emergency)
             t += tr(" · EMERGENCY");
         return t;

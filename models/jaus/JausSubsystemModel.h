@@ -1,6 +1,6 @@
 #pragma once
-// One row per discovered JAUS subsystem, fed by the JausBridge (GUI thread).
-#include "models/bridges/JausBridge.h"
+// One row per discovered JAUS subsystem, fed by the JAUS bridge's vehicle views (GUI thread).
+#include "models/jaus/JausVehicleBridge.h"
 
 #include <QAbstractTableModel>
 #include <QElapsedTimer>
@@ -15,7 +15,7 @@ public:
     // Row colours (anchors-features.md §2.1, FKIE access-control panel).
     enum class RowColour { None, OursOk, OursWarning, Other };
 
-    explicit JausSubsystemModel(JausBridge* bridge, QObject* parent = nullptr);
+    explicit JausSubsystemModel(JausVehicleBridge* bridge, QObject* parent = nullptr);
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -24,14 +24,15 @@ public:
 
     std::uint16_t subsystemAt(int row) const;
     int rowOf(std::uint16_t subsystem) const;
-    const jaus::SubsystemSnapshot* snapshotAt(int row) const;
-    static QString accessText(jaus::AccessState s);
-    RowColour rowColour(const jaus::SubsystemSnapshot& s) const;
+    const JausVehicle* vehicleAt(int row) const;
+    static QString accessText(JausAccess s);
+    RowColour rowColour(const JausVehicle& s) const;
 
 private:
-    void onSnapshot(const jaus::SubsystemSnapshot& s);
-    JausBridge* m_bridge;
-    QVector<jaus::SubsystemSnapshot> m_rows;
+    void onVehicle(const JausVehicle& s);
+    JausVehicleBridge* m_bridge;
+    JausAddress m_ownId; // this console's component: our own ID in a report is not another controller
+    QVector<JausVehicle> m_rows;
 };
 
 } // namespace ocu

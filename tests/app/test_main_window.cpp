@@ -99,8 +99,13 @@ private slots:
     }
     void linkIndicatorsAndAlarms() {
         MainWindow w;
-        for (const char* p : {"JAUS", "ISO 23725", "OSYRIS"})
-            QVERIFY(w.linkIndicator(p));
+        // The runtime adds one indicator per protocol module.
+        QVERIFY(!w.linkIndicator("JAUS"));
+        for (const char* p : {"JAUS", "ISO 23725", "OSYRIS"}) {
+            LinkIndicator* added = w.addLinkIndicator(p);
+            QVERIFY(added);
+            QCOMPARE(w.linkIndicator(p), added);
+        }
         LinkIndicator* j = w.linkIndicator("JAUS");
         j->setState(LinkIndicator::State::Up);
         j->setDataAgeMs(1500);

@@ -1,7 +1,6 @@
 #include "widgets/jaus/JausControlPanel.h"
 
 #include "models/FleetSelection.h"
-#include "models/bridges/JausBridge.h"
 #include "models/jaus/JausSubsystemModel.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
 
@@ -16,26 +15,24 @@
 
 namespace ocu {
 
-using namespace jaus;
-
-JausControlPanel::JausControlPanel(JausBridge* bridge, FleetSelection* selection, QWidget* parent)
+JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, FleetSelection* selection, QWidget* parent)
     : QWidget(parent), m_bridge(bridge), m_selection(selection),
       m_model(new JausSubsystemModel(bridge, this)), m_table(new QTableView(this)),
       m_details(new VehicleDetailsWidget(bridge, this)), m_roleLabel(new QLabel(this)),
       m_releaseAll(new QPushButton(tr("Release all"), this)) {
     setObjectName(QStringLiteral("jaus-control-panel"));
     auto* top = new QHBoxLayout;
-    const auto& cfg = bridge->config();
-    m_roleLabel->setText(cfg.mayControl() ? tr("This console: %1 [%2] · authority %3")
-                                                .arg(QString::fromStdString(cfg.callSign))
-                                                .arg(cfg.subsystemId)
-                                                .arg(cfg.authority)
-                                          : tr("This console: %1 [%2] · MONITOR role: commands are disabled")
-                                                .arg(QString::fromStdString(cfg.callSign))
-                                                .arg(cfg.subsystemId));
+    const JausConsoleIdentity me = bridge->identity();
+    m_roleLabel->setText(me.mayControl ? tr("This console: %1 [%2] · authority %3")
+                                             .arg(me.callSign)
+                                             .arg(me.subsystemId)
+                                             .arg(me.authority)
+                                       : tr("This console: %1 [%2] · MONITOR role: commands are disabled")
+                                             .arg(me.callSign)
+                                             .arg(me.subsystemId));
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
-    m_releaseAll->setEnabled(cfg.mayControl());
+    m_releaseAll->setEnabled(me.mayControl);
     connect(m_releaseAll, &QPushButton::clicked, this,
             [this] { m_bridge->command(QStringLiteral("release_all"), {}); });
     top->addWidget(m_releaseAll);
@@ -69,11 +66,11 @@ JausControlPanel::JausControlPanel(JausBridge* bridge, FleetSelection* selection
                 const std::uint16_t sub = m_model->subsystemAt(current.row());
                 m_details->showSubsystem(sub);
                 if (m_selection && sub)
-                    m_selection->setCurrent(JausBridge::machineId(sub));
+                    m_selection->setCurrent(JausVehicleBridge::machineId(sub));
             });
     if (m_selection)
         connect(m_selection, &FleetSelection::currentMachineChanged, this, [this](const QString& id) {
-            if (auto sub = JausBridge::subsystemOf(id))
+            if (auto sub = JausVehicleBridge::subsystemOf(id))
                 selectSubsystem(*sub);
         });
 }
@@ -125,16 +122,16 @@ void JausControlPanel::installRowButtons(int first, int last) {
         connect(monitor, &QPushButton::clicked, this, [this, sub] {
             selectSubsystem(sub);
             if (m_selection)
-                m_selection->setCurrent(JausBridge::machineId(sub));
+                m_selection->setCurrent(JausVehicleBridge::machineId(sub));
         });
         connect(control, &QPushButton::clicked, this, [this, sub] {
             selectSubsystem(sub);
             m_bridge->command(QStringLiteral("request_control"),
-                              {{QStringLiteral("id"), JausBridge::machineId(sub)}});
+                              {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
         });
         connect(release, &QPushButton::clicked, this, [this, sub] {
             m_bridge->command(QStringLiteral("release_control"),
-                              {{QStringLiteral("id"), JausBridge::machineId(sub)}});
+                              {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
         });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
         // Index widgets do not take part in ResizeToContents: size the column for the buttons.
@@ -153,13 +150,13 @@ void JausControlPanel::installRowButtons(int first, int last) {
 void JausControlPanel::refreshButtons() {
     const bool may = m_bridge->mayCommand();
     for (int row = 0; row < m_model->rowCount(); ++row) {
-        const SubsystemSnapshot* s = m_model->snapshotAt(row);
+        const JausVehicle* s = m_model->vehicleAt(row);
         QWidget* cell = m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions));
         if (!s || !cell)
             continue;
         // Control can be requested once the vehicle's mobility component (its access-control service) is
         // known.
-        const bool up = s->link != jaus::LinkState::Down && s->mobilityComponent.subsystem != 0;
+        const bool up = s->link != JausLink::Down && s->mobilityComponent.subsystem != 0;
         if (auto* b = findButton(cell, "control"))
             b->setEnabled(may && up && !s->controlledByUs);
         if (auto* b = findButton(cell, "release"))

@@ -10,7 +10,7 @@ class QLabel;
 
 namespace ocu {
 
-class JausBridge;
+class JausVehicleBridge;
 class JausSubsystemModel;
 class VehicleDetailsWidget;
 class FleetSelection;
@@ -18,7 +18,7 @@ class FleetSelection;
 class JausControlPanel : public QWidget {
     Q_OBJECT
 public:
-    JausControlPanel(JausBridge* bridge, FleetSelection* selection, QWidget* parent = nullptr);
+    JausControlPanel(JausVehicleBridge* bridge, FleetSelection* selection, QWidget* parent = nullptr);
 
     JausSubsystemModel* model() const { return m_model; }
     QTableView* table() const { return m_table; }
@@ -33,7 +33,7 @@ private:
     void refreshButtons();
     void selectSubsystem(std::uint16_t subsystem);
 
-    JausBridge* m_bridge;
+    JausVehicleBridge* m_bridge;
     FleetSelection* m_selection;
     JausSubsystemModel* m_model;
     QTableView* m_table;

@@ -1,7 +1,7 @@
 #include "widgets/jaus/TeleopPanel.h"
 
 #include "models/FleetSelection.h"
-#include "models/bridges/JausBridge.h"
+#include "models/jaus/JausVehicleBridge.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
 #include "widgets/teleop/SdlJoystickInput.h"
@@ -24,9 +24,8 @@
 
 namespace ocu {
 
-using namespace jaus;
-
-TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDevice* device, QWidget* parent)
+TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, FleetSelection* selection, InputDevice* device,
+                         QWidget* parent)
     : QWidget(parent), m_bridge(bridge), m_selection(selection), m_controller(new TeleopController(this)),
       m_stick(new VirtualStick(this)), m_axes(new AxisDisplay(this)), m_title(new QLabel(this)),
       m_state(new QLabel(this)), m_live(new QLabel(this)), m_device(new QLabel(this)),
@@ -35,7 +34,7 @@ TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDev
       m_clear(new HoldToConfirmButton(tr("Hold to clear emergency"), this)) {
     setObjectName(QStringLiteral("teleop-panel"));
     setFocusPolicy(Qt::StrongFocus);
-    m_controller->setRateHz(bridge->config().driveRateHz);
+    m_controller->setRateHz(bridge->identity().driveRateHz);
 
     QFont big = m_title->font();
     big.setPointSizeF(big.pointSizeF() * 1.3);
@@ -62,7 +61,7 @@ TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDev
     m_clear->setHoldDurationMs(1500);
     connect(m_clear, &HoldToConfirmButton::confirmed, this, [this] {
         if (m_subsystem)
-            m_bridge->clearStop(JausBridge::machineId(m_subsystem));
+            m_bridge->clearStop(JausVehicleBridge::machineId(m_subsystem));
     });
 
     m_mode->setObjectName(QStringLiteral("combo-drive-mode"));
@@ -133,13 +132,13 @@ TeleopPanel::TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDev
         });
         connect(device, &InputDevice::rawAxesChanged, m_axes, &AxisDisplay::setAxes);
     }
-    connect(bridge, &JausBridge::subsystemUpdated, this, [this](const SubsystemSnapshot& s) {
+    connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& s) {
         if (s.subsystem == m_subsystem)
             refresh();
     });
     if (selection)
         connect(selection, &FleetSelection::currentMachineChanged, this, [this](const QString& id) {
-            if (auto sub = JausBridge::subsystemOf(id))
+            if (auto sub = JausVehicleBridge::subsystemOf(id))
                 setVehicle(*sub);
         });
     // Window focus loss (another application, a dialog): stop driving at once.
@@ -171,10 +170,10 @@ bool TeleopPanel::velocityMode() const {
     return m_mode->currentData().toString() == QLatin1String("velocity");
 }
 
-DriveCommand TeleopPanel::toDriveCommand(DriveAxes a) const {
-    DriveCommand c;
+JausDrive TeleopPanel::toDriveCommand(DriveAxes a) const {
+    JausDrive c;
     if (velocityMode()) {
-        c.mode = DriveCommand::Mode::Velocity;
+        c.mode = JausDrive::Mode::Velocity;
         double fwd = 1.0, rev = 1.0, rot = 1.0; // conservative defaults until the platform reports its limits
         if (auto s = m_bridge->subsystem(m_subsystem); s && s->platform) {
             fwd = s->platform->maxForwardSpeed.value_or(fwd);
@@ -184,7 +183,7 @@ DriveCommand TeleopPanel::toDriveCommand(DriveAxes a) const {
         c.linear = a.forward >= 0 ? a.forward * fwd : a.forward * rev;
         c.angular = a.turn * rot;
     } else {
-        c.mode = DriveCommand::Mode::Wrench;
+        c.mode = JausDrive::Mode::Wrench;
         c.linear = a.forward * 100.0;
         c.angular = a.turn * 100.0;
     }
@@ -203,7 +202,7 @@ void TeleopPanel::onCommand(DriveAxes axes) {
 void TeleopPanel::emergencyStop() {
     m_controller->releaseAll(tr("emergency stop"));
     if (m_subsystem)
-        m_bridge->stopMachine(JausBridge::machineId(m_subsystem));
+        m_bridge->stopMachine(JausVehicleBridge::machineId(m_subsystem));
 }
 
 void TeleopPanel::openJoystickMapping() {
@@ -240,10 +239,10 @@ void TeleopPanel::refresh() {
         m_clear->setEnabled(false);
         return;
     }
-    m_title->setText(tr("%1 [%2]").arg(QString::fromStdString(s->callSign)).arg(s->subsystem));
+    m_title->setText(tr("%1 [%2]").arg(s->callSign).arg(s->subsystem));
     const bool may = m_bridge->mayCommand();
     const bool ours = s->controlledByUs;
-    const bool up = s->link == jaus::LinkState::Up;
+    const bool up = s->link == JausLink::Up;
     m_controller->setEnabled(may && ours && up && !s->emergency);
     m_estop->setEnabled(may);
     m_clear->setEnabled(may && s->emergency);
@@ -257,9 +256,9 @@ void TeleopPanel::refresh() {
     if (s->emergency)
         state << tr("EMERGENCY — hold the clear button to release");
     if (!up)
-        state << tr("link %1").arg(QString::fromUtf8(jaus::toString(s->link)));
+        state << tr("link %1").arg(s->linkText);
     if (s->management)
-        state << tr("state %1").arg(QString::fromUtf8(jaus::toString(*s->management)));
+        state << tr("state %1").arg(s->managementText);
     state << (s->driving ? tr("drive session open")
                          : tr("drive session closed (vehicle stops after its 1 s drive timeout)"));
     m_state->setText(state.join(QStringLiteral(" · ")));

@@ -3,7 +3,7 @@
 // (W/A/S/D or arrows with the dead-man key), SDL2 joysticks; wrench effort or velocity as the platform
 // offers; a speed limit within the platform specifications; zero on release, focus loss and joystick
 // loss; a large E-STOP (Space, Esc) and clear-emergency only by holding a confirm button.
-#include "protocols/jaus/JausTypes.h"
+#include "models/jaus/JausVehicle.h"
 #include "widgets/teleop/InputDevice.h"
 
 #include <QWidget>
@@ -15,7 +15,7 @@ class QPushButton;
 
 namespace ocu {
 
-class JausBridge;
+class JausVehicleBridge;
 class FleetSelection;
 class TeleopController;
 class VirtualStick;
@@ -27,7 +27,7 @@ class TeleopPanel : public QWidget {
     Q_OBJECT
 public:
     // device: the joystick source (SDL2 in the app, a fake in tests); may be null.
-    TeleopPanel(JausBridge* bridge, FleetSelection* selection, InputDevice* device,
+    TeleopPanel(JausVehicleBridge* bridge, FleetSelection* selection, InputDevice* device,
                 QWidget* parent = nullptr);
     ~TeleopPanel() override;
 
@@ -38,7 +38,7 @@ public:
     QPushButton* emergencyButton() const { return m_estop; }
     HoldToConfirmButton* clearEmergencyButton() const { return m_clear; }
     // The JAUS drive command for a normalised demand, with the current mode and platform limits.
-    jaus::DriveCommand toDriveCommand(DriveAxes axes) const;
+    JausDrive toDriveCommand(DriveAxes axes) const;
     bool velocityMode() const;
     // Opens the joystick mapping dialog (non-blocking). Nothing drives while it is open; OK applies the
     // mapping to the device and saves it for that device name.
@@ -57,7 +57,7 @@ private:
     void emergencyStop();
     void onCommand(DriveAxes axes);
 
-    JausBridge* m_bridge;
+    JausVehicleBridge* m_bridge;
     FleetSelection* m_selection;
     std::uint16_t m_subsystem = 0;
     TeleopController* m_controller;

@@ -1,7 +1,7 @@
 #include "widgets/jaus/VehicleDetailsWidget.h"
 
-#include "models/bridges/JausBridge.h"
 #include "models/jaus/JausSubsystemModel.h"
+#include "models/jaus/JausVehicleBridge.h"
 
 #include <QDateTime>
 #include <QHeaderView>
@@ -14,9 +14,7 @@
 
 namespace ocu {
 
-using namespace jaus;
-
-VehicleDetailsWidget::VehicleDetailsWidget(JausBridge* bridge, QWidget* parent)
+VehicleDetailsWidget::VehicleDetailsWidget(JausVehicleBridge* bridge, QWidget* parent)
     : QWidget(parent), m_bridge(bridge), m_tree(new QTreeWidget(this)), m_messages(new QListWidget(this)) {
     auto* l = new QVBoxLayout(this);
     l->setContentsMargins(0, 0, 0, 0);
@@ -31,17 +29,16 @@ VehicleDetailsWidget::VehicleDetailsWidget(JausBridge* bridge, QWidget* parent)
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);
     l->addWidget(split);
-    connect(bridge, &JausBridge::subsystemUpdated, this, [this](const SubsystemSnapshot& s) {
+    connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& s) {
         if (s.subsystem == m_subsystem)
             rebuild(s);
     });
-    connect(bridge, &JausBridge::jausEvent, this, [this](const JausEvent& e) {
+    connect(bridge, &JausVehicleBridge::jausEvent, this, [this](const JausVehicleEvent& e) {
         if (e.subsystem != m_subsystem || m_subsystem == 0)
             return;
         m_messages->insertItem(0, QStringLiteral("%1  %2  %3")
                                       .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")),
-                                           QString::fromUtf8(jaus::toString(e.kind)),
-                                           QString::fromStdString(e.text)));
+                                           e.kindText, e.text));
         while (m_messages->count() > 200)
             delete m_messages->takeItem(m_messages->count() - 1);
     });
@@ -60,7 +57,7 @@ static QString num(const std::optional<double>& v, int prec, const QString& unit
     return v ? QStringLiteral("%1 %2").arg(*v, 0, 'f', prec).arg(unit) : QStringLiteral("—");
 }
 
-void VehicleDetailsWidget::rebuild(const SubsystemSnapshot& s) {
+void VehicleDetailsWidget::rebuild(const JausVehicle& s) {
     // Keep the user's expansion state across the frequent updates.
     QSet<QString> collapsed;
     for (int i = 0; i < m_tree->topLevelItemCount(); ++i)
@@ -76,15 +73,14 @@ void VehicleDetailsWidget::rebuild(const SubsystemSnapshot& s) {
         return new QTreeWidgetItem(parent, {k, v});
     };
     auto* ident = section(tr("Identification"));
-    row(ident, tr("Call sign"), QString::fromStdString(s.callSign));
+    row(ident, tr("Call sign"), s.callSign);
     row(ident, tr("Subsystem ID"), QString::number(s.subsystem));
-    row(ident, tr("Endpoint"), QString::fromStdString(s.endpoint));
-    row(ident, tr("Link"), QString::fromUtf8(jaus::toString(s.link)));
+    row(ident, tr("Endpoint"), s.endpoint);
+    row(ident, tr("Link"), s.linkText);
 
     auto* state = section(tr("State"));
     row(state, tr("Access"), JausSubsystemModel::accessText(s.access));
-    row(state, tr("Management"),
-        s.management ? QString::fromUtf8(jaus::toString(*s.management)) : tr("unknown"));
+    row(state, tr("Management"), s.management ? s.managementText : tr("unknown"));
     row(state, tr("Emergency"), s.emergency ? tr("YES") : tr("no"));
     row(state, tr("Drive session"), s.driving ? tr("open") : tr("closed"));
     row(state, tr("Access timeout"), s.accessTimeoutS ? tr("%1 s").arg(s.accessTimeoutS) : tr("unknown"));
@@ -92,7 +88,7 @@ void VehicleDetailsWidget::rebuild(const SubsystemSnapshot& s) {
     auto* platform = section(tr("Platform"));
     if (s.platform) {
         const auto& p = *s.platform;
-        row(platform, tr("Name"), QString::fromStdString(p.name));
+        row(platform, tr("Name"), p.name);
         row(platform, tr("Steering"), p.steeringType == 1 ? tr("Ackermann") : tr("skid steer"));
         if (p.front && p.back)
             row(platform, tr("Length"), QStringLiteral("%1 m").arg(*p.front + *p.back, 0, 'f', 2));
@@ -134,17 +130,17 @@ void VehicleDetailsWidget::rebuild(const SubsystemSnapshot& s) {
     }
 
     auto* services = section(tr("Services"));
-    auto* sub = row(services, tr("Subsystem %1").arg(s.subsystem), QString::fromStdString(s.callSign));
+    auto* sub = row(services, tr("Subsystem %1").arg(s.subsystem), s.callSign);
     sub->setExpanded(true);
-    for (const NodeInfo& n : s.services) {
+    for (const JausNodeServices& n : s.services) {
         auto* node = row(sub, tr("Node %1").arg(n.node), QString());
         node->setExpanded(true);
-        for (const ComponentInfo& c : n.components) {
+        for (const JausComponentServices& c : n.components) {
             auto* comp = row(node, QStringLiteral("[%1.%2.%3]").arg(s.subsystem).arg(n.node).arg(c.component),
                              QString());
             comp->setExpanded(true);
-            for (const ServiceRecord& r : c.services)
-                row(comp, QString::fromStdString(r.uri), QStringLiteral("v%1.%2").arg(r.major).arg(r.minor));
+            for (const JausService& r : c.services)
+                row(comp, r.uri, QStringLiteral("v%1.%2").arg(r.major).arg(r.minor));
         }
     }
 }

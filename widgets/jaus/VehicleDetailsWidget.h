@@ -1,7 +1,7 @@
 #pragma once
 // Vehicle details (issue 7 §3): platform specifications, mode and state, health, the services tree
 // subsystem → node → component [s.n.c] → service URI and version, and the vehicle's last messages.
-#include "protocols/jaus/JausTypes.h"
+#include "models/jaus/JausVehicle.h"
 
 #include <QWidget>
 
@@ -10,20 +10,20 @@ class QListWidget;
 
 namespace ocu {
 
-class JausBridge;
+class JausVehicleBridge;
 
 class VehicleDetailsWidget : public QWidget {
     Q_OBJECT
 public:
-    explicit VehicleDetailsWidget(JausBridge* bridge, QWidget* parent = nullptr);
+    explicit VehicleDetailsWidget(JausVehicleBridge* bridge, QWidget* parent = nullptr);
     void showSubsystem(std::uint16_t subsystem);
     std::uint16_t subsystem() const { return m_subsystem; }
     QTreeWidget* tree() const { return m_tree; }
     QListWidget* messages() const { return m_messages; }
 
 private:
-    void rebuild(const jaus::SubsystemSnapshot& s);
-    JausBridge* m_bridge;
+    void rebuild(const JausVehicle& s);
+    JausVehicleBridge* m_bridge;
     std::uint16_t m_subsystem = 0;
     QTreeWidget* m_tree;
     QListWidget* m_messages;

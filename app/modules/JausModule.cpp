@@ -1,0 +1,70 @@
+// The JAUS module of the console: the JausBridge over the JAUS stack, the access-control and teleop panels
+// (with the SDL2 joystick mapped as the site configuration says), the "JAUS" link indicator and the headless
+// commands request_control, release_control and drive.
+#include "app/ProtocolModule.h"
+
+#include "models/FleetContext.h"
+#include "models/bridges/JausBridge.h"
+#include "widgets/jaus/JausControlPanel.h"
+#include "widgets/jaus/TeleopPanel.h"
+#include "widgets/teleop/SdlJoystickInput.h"
+
+#include <QCoreApplication>
+
+namespace ocu {
+
+namespace {
+
+class JausModule final : public ProtocolModule {
+public:
+    QString displayName() const override { return QStringLiteral("JAUS"); }
+    Protocol protocol() const override { return Protocol::Jaus; }
+
+    QString start(const ModuleStart& s) override {
+        if (!s.config.jaus)
+            return {};
+        m_bridge = new JausBridge(*s.config.jaus, s.frame, s.owner);
+        s.fleet->addBridge(m_bridge);
+        return m_bridge->start();
+    }
+    void stop() override {
+        if (m_bridge)
+            m_bridge->stop(); // releases control after zero drive commands
+    }
+    FleetBridge* bridge() const override { return m_bridge; }
+
+    QList<Panel> panels() const override { return {Panel::JausControl, Panel::Teleop}; }
+    void populate(const ModulePanels& ui) override {
+        ui.window.setPanelWidget(Panel::JausControl, new JausControlPanel(m_bridge, ui.fleet->selection()));
+        auto* joystick = new SdlJoystickInput(&ui.window);
+        const TeleopInputConfig& t = ui.config.teleop;
+        AxisMapping mapping;
+        mapping.forwardAxis = t.forwardAxis;
+        mapping.turnAxis = t.turnAxis;
+        mapping.invertForward = t.invertForward;
+        mapping.invertTurn = t.invertTurn;
+        mapping.deadZone = t.deadZone;
+        joystick->setMapping(mapping);
+        ui.window.setPanelWidget(Panel::Teleop, new TeleopPanel(m_bridge, ui.fleet->selection(), joystick));
+    }
+    QString notConfiguredText() const override {
+        return QCoreApplication::translate(
+            "ocu::SiteRuntime", "No JAUS section in the site configuration: no JAUS vehicles on this site.");
+    }
+
+    QStringList headlessCommands() const override {
+        return {QStringLiteral("request_control"), QStringLiteral("release_control"),
+                QStringLiteral("drive")};
+    }
+
+private:
+    JausBridge* m_bridge = nullptr;
+};
+
+} // namespace
+
+std::unique_ptr<ProtocolModule> makeJausModule() {
+    return std::make_unique<JausModule>();
+}
+
+} // namespace ocu

@@ -1,0 +1,44 @@
+#pragma once
+// What the JAUS panels (widgets/jaus) see of the JAUS link: the Qt-typed vehicle views, their events, this
+// console's identity and the teleop drive stream, on top of the fleet bridge's commands. The concrete
+// JausBridge (models/bridges) implements it over the JAUS stack; the panels include only this header.
+//
+// Threading as for every FleetBridge: the object lives on the GUI thread; its signals are emitted there.
+#include "models/FleetBridge.h"
+#include "models/jaus/JausVehicle.h"
+
+#include <QList>
+
+#include <optional>
+
+namespace ocu {
+
+class JausVehicleBridge : public FleetBridge {
+    Q_OBJECT
+public:
+    explicit JausVehicleBridge(QObject* parent = nullptr);
+    ~JausVehicleBridge() override;
+
+    // "jaus:<subsystem>" and back (nullopt for anything else).
+    static QString machineId(quint16 subsystem);
+    static std::optional<quint16> subsystemOf(const QString& machineId);
+
+    virtual JausConsoleIdentity identity() const = 0;
+    bool mayCommand() const { return identity().mayControl; }
+
+    // GUI thread: the latest view of every vehicle heard of, in subsystem order.
+    virtual QList<quint16> subsystems() const = 0;
+    virtual std::optional<JausVehicle> subsystem(quint16 id) const = 0;
+
+    // Drive stream for teleop (GUI thread): opens the session on first use; refused unless this console
+    // controls the vehicle.
+    virtual CommandResult drive(quint16 subsystem, const JausDrive& command) = 0;
+    // Closes the session with zero demands, several times.
+    virtual CommandResult stopDriving(quint16 subsystem) = 0;
+
+signals:
+    void subsystemUpdated(const ocu::JausVehicle& vehicle);
+    void jausEvent(const ocu::JausVehicleEvent& event);
+};
+
+} // namespace ocu

@@ -1,0 +1,80 @@
+// The ISO 23725 simulator of the simulated site: an AHS with its haul trucks on a generated open pit around
+// the site origin, serving the FMS over WebSocket (and its map service on a socket of its own when asked).
+#include "sim/SimModule.h"
+
+#include "sim/iso23725/IsoDemo.h"
+
+#include <nlohmann/json.hpp>
+
+namespace ocu::sim {
+
+namespace {
+
+class IsoSimModule final : public SimModule {
+public:
+    std::string displayName() const override { return "ISO 23725"; }
+
+    std::string start(SiteConfig& config, const GeoFrame&) override {
+        const auto& s = config.simulation;
+        if (s.ahsTrucks <= 0)
+            return {};
+        SimulatedAhsConfig c;
+        c.truckCount = s.ahsTrucks;
+        c.origin = config.origin;
+        c.positionRateHz = 2.0;
+        c.separateMapService = s.ahsSeparateMapService;
+        c.bindAddress = s.interfaceAddress;
+        auto demo = std::make_unique<IsoDemo>(startIsoDemo(c));
+        if (!demo->ahs)
+            return "simulated AHS: " + demo->error;
+        // The demo's link and FMS fleet go into the site's section; other keys of a given section stay.
+        if (config.iso23725)
+            config.iso23725->links = demo->config.links;
+        else
+            config.iso23725 = demo->config;
+        m_demo = std::move(demo);
+        return {};
+    }
+    void stop() override {
+        if (m_demo && m_demo->ahs)
+            m_demo->ahs->stop();
+        m_demo.reset();
+    }
+    bool running() const override { return m_demo && m_demo->ahs; }
+
+    std::vector<std::string> describe(const SiteConfig& config) const override {
+        std::vector<std::string> lines;
+        if (!running())
+            return lines;
+        for (const auto& l : config.iso23725->links)
+            lines.push_back("ISO 23725: AHS with " + std::to_string(config.simulation.ahsTrucks) +
+                            " trucks at " + l.ws.url + (l.mapWs.url.empty() ? "" : ", map service at ") +
+                            l.mapWs.url);
+        return lines;
+    }
+
+    void writeConsoleConfig(const SiteConfig& config, nlohmann::json& out) const override {
+        using nlohmann::json;
+        if (!running())
+            return;
+        json links = json::array();
+        for (const auto& l : config.iso23725->links) {
+            json link = {{"name", l.name}, {"url", l.ws.url}};
+            if (!l.mapWs.url.empty())
+                link["mapUrl"] = l.mapWs.url;
+            links.push_back(link);
+        }
+        out["iso23725"] = {{"links", links}};
+    }
+
+private:
+    std::unique_ptr<IsoDemo> m_demo;
+};
+
+} // namespace
+
+std::unique_ptr<SimModule> makeIsoSimModule() {
+    return std::make_unique<IsoSimModule>();
+}
+
+} // namespace ocu::sim

@@ -1,0 +1,91 @@
+// The OSYRIS simulators of the simulated site: a paver and its rollers compacting a road near the site's road
+// area, one station each on a multicast group, with the OCU's station index and machine names for the
+// console.
+#include "sim/SimModule.h"
+
+#include "sim/SimulatedSite.h"
+#include "sim/osyris/OsyrisDemo.h"
+
+#include <nlohmann/json.hpp>
+
+namespace ocu::sim {
+
+namespace {
+
+class OsyrisSimModule final : public SimModule {
+public:
+    std::string displayName() const override { return "OSYRIS"; }
+
+    std::string start(SiteConfig& config, const GeoFrame& site) override {
+        const auto& s = config.simulation;
+        if (s.osyrisRollers <= 0)
+            return {};
+        osyris::OsyrisDemoOptions o;
+        o.rollers = s.osyrisRollers;
+        o.speedUp = s.osyrisSpeedUp;
+        o.interfaceAddress = s.interfaceAddress;
+        auto demo = std::make_unique<osyris::OsyrisDemo>(o);
+        std::string err;
+        if (!demo->start(&err))
+            return "simulated OSYRIS site: " + err;
+        auto c = demo->ocuConfig();
+        const GeoPoint road = site.toGeodetic({SimulatedSite::kRoadAreaE, SimulatedSite::kRoadAreaN, 0});
+        c.originLat = road.lat;
+        c.originLon = road.lon;
+        c.originAlt = road.alt;
+        if (config.osyris) {
+            c.sqlitePath = config.osyris->sqlitePath;
+            c.passCount = config.osyris->passCount;
+        }
+        config.osyris = c;
+        m_demo = std::move(demo);
+        return {};
+    }
+    void stop() override {
+        if (m_demo)
+            m_demo->stop();
+        m_demo.reset();
+    }
+    bool running() const override { return m_demo != nullptr; }
+
+    std::vector<std::string> describe(const SiteConfig& config) const override {
+        if (!m_demo)
+            return {};
+        return {"OSYRIS: " + std::to_string(m_demo->stationCount()) + " stations on " + config.osyris->group +
+                ":" + std::to_string(config.osyris->port) + " (interface " + config.osyris->interfaceAddress +
+                ")"};
+    }
+
+    void writeConsoleConfig(const SiteConfig& config, nlohmann::json& out) const override {
+        using nlohmann::json;
+        if (!m_demo)
+            return;
+        const std::string iface = config.simulation.interfaceAddress;
+        const auto& o = *config.osyris;
+        json machines = json::array();
+        for (const auto& [idx, name] : o.machineNames) {
+            auto t = o.machineTypes.find(idx);
+            machines.push_back(
+                {{"idx", idx}, {"name", name}, {"type", t == o.machineTypes.end() ? "" : t->second}});
+        }
+        out["osyris"] = {{"group", o.group},
+                         {"port", o.port},
+                         {"interface", iface == "127.0.0.1" ? "127.0.0.1" : "0.0.0.0"},
+                         {"multicastTtl", o.multicastTtl},
+                         {"originLat", o.originLat},
+                         {"originLon", o.originLon},
+                         {"originAlt", o.originAlt},
+                         {"machines", machines}};
+    }
+
+private:
+    std::unique_ptr<osyris::OsyrisDemo> m_demo;
+};
+
+} // namespace
+
+std::unique_ptr<SimModule> makeOsyrisSimModule() {
+    return std::make_unique<OsyrisSimModule>();
+}
+
+} // namespace ocu::sim

@@ -1,0 +1,170 @@
+// The ISO 23725 bridge between the FMS stack's io thread and the GUI thread, against the simulated AHS on
+// loopback (no trucks of its own: the test sends the positions): queued delivery (signals emitted on the
+// bridge's thread; a receiver on another thread runs on its own), coalescing (a burst of positions for one
+// machine while the GUI thread is busy becomes one signal carrying the latest position), and commands while
+// the link is down (refused with the reason; nothing reaches the AHS, then or when the link is back).
+#include "models/bridges/IsoBridge.h"
+#include "sim/iso23725/SimulatedAhs.h"
+#include "tests/models/bridges/BridgeThreadSupport.h"
+
+#include <QDateTime>
+#include <QtTest>
+
+using namespace ocu;
+using bridgetest::waitBusy;
+
+namespace {
+
+const std::string kMachineA = "0b3c1d2e-4f50-4a61-8b72-9c83d4e5f601";
+const std::string kMachineB = "0b3c1d2e-4f50-4a61-8b72-9c83d4e5f602";
+
+sim::SimulatedAhsConfig quietAhs() {
+    sim::SimulatedAhsConfig c;
+    c.truckCount = 0; // the only machine data are the test's
+    c.healthEvents = false;
+    return c;
+}
+
+iso23725::IsoConfig consoleConfig(const std::string& url) {
+    iso23725::IsoConfig c;
+    c.links.push_back(iso23725::IsoLinkConfig{"ahs", {}, {}});
+    c.links[0].ws.url = url;
+    c.links[0].ws.backoffMin = std::chrono::milliseconds(100);
+    c.links[0].ws.backoffMax = std::chrono::milliseconds(400);
+    c.links[0].ws.pingInterval = std::chrono::milliseconds(500);
+    c.links[0].ws.deadAfter = std::chrono::milliseconds(3000);
+    return c;
+}
+
+// MachinePositionV1 from the AHS (catalogue example shape); `seq` orders the timestamps.
+std::string position(const std::string& equipment, double lat, double lon, int seq) {
+    static const QDateTime t0 = QDateTime::currentDateTimeUtc();
+    const std::string ts = t0.addMSecs(seq).toString(Qt::ISODateWithMs).toStdString();
+    char body[512];
+    std::snprintf(
+        body, sizeof body,
+        R"({"Protocol":"ISO23725","Version":1,"Timestamp":"%s","EquipmentId":"%s",)"
+        R"("MachinePositionV1":{"Timestamp":"%s","Heading":87,"Latitude":%.7f,"Longitude":%.7f,)"
+        R"("Elevation":500.0,"LatitudeAccuracy":0.05,"LongitudeAccuracy":0.06,"ElevationAccuracy":0.11,)"
+        R"("HeadingAccuracy":0.8,"Speed":20}})",
+        ts.c_str(), equipment.c_str(), ts.c_str(), lat, lon);
+    return body;
+}
+
+QString idOf(const std::string& equipment) {
+    return QStringLiteral("iso23725:") + QString::fromStdString(equipment);
+}
+
+bool linkIs(const IsoBridge& b, LinkState s) {
+    const auto l = b.linkStatus(QStringLiteral("iso23725:ahs"));
+    return l && l->state == s;
+}
+
+} // namespace
+
+class TestIsoBridgeThreads : public QObject {
+    Q_OBJECT
+private slots:
+    void queuedDeliveryAndCoalescing() {
+        sim::SimulatedAhs ahs(quietAhs());
+        QVERIFY(ahs.start());
+        const GeoPoint origin = quietAhs().origin;
+        IsoBridge bridge(consoleConfig(ahs.url()), GeoFrame(origin));
+        bridgetest::Deliveries seen(&bridge);
+        bridgetest::ProbeThread worker(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(linkIs(bridge, LinkState::Up), 20000);
+        int seq = 0;
+        ahs.sendRaw(position(kMachineA, origin.lat, origin.lon, ++seq));
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(idOf(kMachineA)).has_value(), 20000);
+
+        // Queued delivery: the positions arrive on the stack's io thread, the signals are emitted on the
+        // bridge's (this GUI) thread, and a receiver living on another thread is called on that thread.
+        QCOMPARE(bridge.thread(), QThread::currentThread());
+        QVERIFY(seen.allOn(bridge.thread()));
+        QTRY_VERIFY_WITH_TIMEOUT(worker.probe().calls > 0, 20000);
+        QCOMPARE(worker.probe().ranOn.load(), worker.thread());
+
+        // Coalescing: while the GUI thread is busy, 50 positions of machine A arrive, then one of machine B.
+        // They come in order on one WebSocket, so when B is pending every position of A has been handled.
+        QTest::qWait(200);
+        QCoreApplication::processEvents();
+        seen.clear();
+        const auto before = bridge.machineStats();
+        const int n = 50;
+        double lastLat = 0;
+        for (int i = 1; i <= n; ++i) {
+            lastLat = origin.lat + i * 1e-5;
+            ahs.sendRaw(position(kMachineA, lastLat, origin.lon, ++seq));
+        }
+        ahs.sendRaw(position(kMachineB, origin.lat, origin.lon + 1e-4, ++seq));
+        QVERIFY(waitBusy([&] { return bridge.pendingMachineUpdates() == 2; }));
+        const auto burst = bridge.machineStats();
+        QCOMPARE(burst.drains, before.drains); // nothing was delivered while the GUI thread was busy
+        QCOMPARE(seen.count(), 0);
+        QVERIFY2(burst.pushed - before.pushed >= quint64(n + 1),
+                 qPrintable(QString::number(burst.pushed - before.pushed)));
+
+        QCoreApplication::processEvents();
+        QCOMPARE(seen.count(), 1); // one signal for the whole burst
+        QCOMPARE(seen.batches[0].size(), 2);
+        const auto a = seen.latest(idOf(kMachineA));
+        QVERIFY(a.has_value());
+        QVERIFY2(std::abs(a->lat - lastLat) < 1e-9,
+                 qPrintable(QString::number(a->lat, 'f', 7))); // latest wins
+        QVERIFY(seen.latest(idOf(kMachineB)).has_value());
+        QCOMPARE(bridge.machineStats().drains, before.drains + 1);
+        QVERIFY(seen.allOn(bridge.thread()));
+        bridge.stop();
+        ahs.stop();
+    }
+
+    void commandsWhileTheLinkIsDownAreRefused() {
+        auto first = std::make_unique<sim::SimulatedAhs>(quietAhs());
+        QVERIFY(first->start());
+        const std::uint16_t port = first->port();
+        const GeoPoint origin = quietAhs().origin;
+        IsoBridge bridge(consoleConfig(first->url()), GeoFrame(origin));
+        bridgetest::Deliveries seen(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(linkIs(bridge, LinkState::Up), 20000);
+        first->sendRaw(position(kMachineA, origin.lat, origin.lon, 1));
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(idOf(kMachineA)).has_value(), 20000);
+
+        // The AHS goes away: the link is down.
+        first->stop();
+        first.reset();
+        QTRY_VERIFY_WITH_TIMEOUT(linkIs(bridge, LinkState::Down), 20000);
+        const QList<CommandResult> refused{
+            bridge.stopAll(), bridge.stopMachine(idOf(kMachineA)), bridge.clearStop(idOf(kMachineA)),
+            bridge.command(QStringLiteral("all_stop_apply"),
+                           {{QStringLiteral("link"), QStringLiteral("ahs")}}),
+            bridge.command(QStringLiteral("fetch_map"), {{QStringLiteral("link"), QStringLiteral("ahs")}})};
+        for (const CommandResult& r : refused) {
+            QVERIFY2(!r.ok, qPrintable(r.message));
+            QVERIFY2(r.message.contains(QStringLiteral("ISO 23725 link ahs is down")) &&
+                         r.message.contains(QStringLiteral("nothing sent")),
+                     qPrintable(r.message));
+        }
+
+        // The AHS is back on the same port: the link comes up again and nothing refused reaches it.
+        auto cfg = quietAhs();
+        cfg.port = port;
+        sim::SimulatedAhs second(cfg);
+        QVERIFY(second.start());
+        QTRY_VERIFY_WITH_TIMEOUT(linkIs(bridge, LinkState::Up), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(second.stats().sessions == 1, 20000);
+        QTest::qWait(1000);
+        QVERIFY(!second.stats().allStopOn);
+
+        // With the link up the same stop goes out.
+        const CommandResult stop = bridge.stopAll();
+        QVERIFY2(stop.ok, qPrintable(stop.message));
+        QTRY_VERIFY_WITH_TIMEOUT(second.stats().allStopOn, 10000);
+        bridge.stop();
+        second.stop();
+    }
+};
+
+QTEST_GUILESS_MAIN(TestIsoBridgeThreads)
+#include "test_iso_bridge_threads.moc"

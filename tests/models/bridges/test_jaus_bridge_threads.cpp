@@ -1,0 +1,174 @@
+// The JAUS bridge between the stack's io thread and the GUI thread, against a simulated UGV on loopback:
+// queued delivery (signals emitted on the bridge's thread; a receiver on another thread runs on its own),
+// coalescing (a burst of reports for one vehicle while the GUI thread is busy becomes one signal carrying the
+// latest state), and commands while the vehicle's link is down (refused with the reason; nothing reaches the
+// vehicle, then or when it is heard again).
+#include "models/bridges/JausBridge.h"
+#include "protocols/jaus/Messages.h"
+#include "sim/jaus/JausDemo.h"
+#include "tests/models/bridges/BridgeThreadSupport.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+#include <mutex>
+
+using namespace ocu;
+using bridgetest::waitBusy;
+
+namespace {
+
+const QString kVehicle = QStringLiteral("jaus:126");
+
+sim::JausDemoOptions oneUgv() {
+    sim::JausDemoOptions o;
+    o.count = 1;
+    o.alternateKinematics = false;
+    return o;
+}
+
+jaus::JausConfig consoleConfig(const sim::JausDemo& demo, double linkLostS) {
+    jaus::JausConfig c;
+    c.subsystemId = 200;
+    c.callSign = "OCU-TEST";
+    c.role = jaus::Role::PrimaryOperator;
+    c.authority = 205;
+    c.linkLostS = linkLostS;
+    demo.configure(c);
+    return c;
+}
+
+// Message IDs the simulated UGV receives (its io thread).
+struct Received {
+    std::mutex mutex;
+    QVector<quint16> ids;
+    void tap(sim::SimulatedUgv& ugv) {
+        ugv.setMessageTap([this](ByteSpan p) {
+            if (p.size() < 2)
+                return;
+            std::lock_guard lock(mutex);
+            ids.push_back(static_cast<quint16>(p[0] | (p[1] << 8)));
+        });
+    }
+    int count(quint16 id) {
+        std::lock_guard lock(mutex);
+        return int(ids.count(id));
+    }
+};
+
+} // namespace
+
+class TestJausBridgeThreads : public QObject {
+    Q_OBJECT
+private slots:
+    void queuedDeliveryAndCoalescing() {
+        sim::JausDemo demo(oneUgv());
+        JausBridge bridge(consoleConfig(demo, 60), GeoFrame(oneUgv().origin));
+        bridgetest::Deliveries seen(&bridge);
+        bridgetest::ProbeThread worker(&bridge);
+        QSignalSpy views(&bridge, &JausVehicleBridge::subsystemUpdated);
+        QVERIFY(bridge.start().isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(kVehicle) && seen.latest(kVehicle)->link == LinkState::Up,
+                                 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.linkStatus(QStringLiteral("jaus")) &&
+                                     bridge.linkStatus(QStringLiteral("jaus"))->state == LinkState::Up,
+                                 20000);
+
+        // Queued delivery: the reports arrive on the stack's io thread, the signals are emitted on the
+        // bridge's (this GUI) thread, and a receiver living on another thread is called on that thread.
+        QCOMPARE(bridge.thread(), QThread::currentThread());
+        QVERIFY(seen.allOn(bridge.thread()));
+        QTRY_VERIFY_WITH_TIMEOUT(worker.probe().calls > 0, 20000);
+        QCOMPARE(worker.probe().ranOn.load(), worker.thread());
+
+        // Coalescing: the GUI thread is busy while the vehicle keeps reporting (pose, velocity, heartbeats).
+        QCoreApplication::processEvents();
+        seen.clear();
+        views.clear();
+        const auto before = bridge.machineStats();
+        QVERIFY(waitBusy([&] { return bridge.machineStats().pushed >= before.pushed + 20; }));
+        // Then the vehicle falls silent (it still hears us). After 2.5 missed heartbeats the stack reports
+        // its link degraded; the bridge publishes the JAUS link as no longer up right after that last change
+        // of the vehicle, and nothing changes after it (the link is declared lost only after 60 s).
+        demo.ugvs().front()->setPacketLoss(1.0);
+        QVERIFY(waitBusy([&] { return bridge.pendingLinkUpdates() > 0; }));
+        const auto burst = bridge.machineStats();
+        QCOMPARE(burst.drains, before.drains); // nothing was delivered while the GUI thread was busy
+        QCOMPARE(seen.count(), 0);
+        QCOMPARE(bridge.pendingMachineUpdates(), size_t(1)); // one vehicle: one pending value
+        qInfo("%llu updates of %s while the GUI thread was busy", qulonglong(burst.pushed - before.pushed),
+              qPrintable(kVehicle));
+
+        QCoreApplication::processEvents();
+        QCOMPARE(seen.count(), 1); // one signal for the whole burst
+        QCOMPARE(seen.batches[0].size(), 1);
+        QCOMPARE(seen.batches[0][0].id, kVehicle);
+        QCOMPARE(seen.batches[0][0].link,
+                 LinkState::Degraded); // the latest state, not the first of the burst
+        QCOMPARE(bridge.machineStats().drains, before.drains + 1);
+        QVERIFY(seen.allOn(bridge.thread()));
+        // The panels' vehicle view is coalesced the same way.
+        QCOMPARE(views.count(), 1);
+        QCOMPARE(views[0][0].value<JausVehicle>().link, JausLink::Degraded);
+        QCOMPARE(bridge.subsystem(126)->link, JausLink::Degraded);
+        bridge.stop();
+    }
+
+    void commandsWhileTheLinkIsDownAreRefused() {
+        Received received;
+        sim::JausDemo demo(oneUgv());
+        auto& ugv = *demo.ugvs().front();
+        received.tap(ugv);
+        JausBridge bridge(consoleConfig(demo, 1.5), GeoFrame(oneUgv().origin));
+        QVERIFY(bridge.start().isEmpty());
+        auto vehicle = [&] { return bridge.subsystem(126).value_or(JausVehicle{}); };
+        QTRY_VERIFY_WITH_TIMEOUT(vehicle().link == JausLink::Up && vehicle().mobilityComponent.subsystem != 0,
+                                 20000);
+        // Control first, so that the refusals below are about the link and not about access.
+        QVERIFY(bridge.command(QStringLiteral("request_control"), {{QStringLiteral("id"), kVehicle}}).ok);
+        QTRY_VERIFY_WITH_TIMEOUT(vehicle().controlledByUs, 10000);
+
+        // The vehicle falls silent (it still hears us): after 1.5 s its link is down.
+        ugv.setPacketLoss(1.0);
+        QTRY_COMPARE_WITH_TIMEOUT(vehicle().link, JausLink::Down, 20000);
+        const QList<CommandResult> refused{
+            bridge.stopMachine(kVehicle),
+            bridge.clearStop(kVehicle),
+            bridge.command(QStringLiteral("request_control"), {{QStringLiteral("id"), kVehicle}}),
+            bridge.command(QStringLiteral("resume"), {{QStringLiteral("id"), kVehicle}}),
+            bridge.command(QStringLiteral("drive"),
+                           {{QStringLiteral("id"), kVehicle}, {QStringLiteral("linear"), 0.5}}),
+            bridge.drive(126, JausDrive{JausDrive::Mode::Velocity, 0.5, 0, 0})};
+        for (const CommandResult& r : refused) {
+            QVERIFY2(!r.ok, qPrintable(r.message));
+            QVERIFY2(r.message.contains(QStringLiteral("the link to jaus:126 is down; nothing sent")),
+                     qPrintable(r.message));
+        }
+        const CommandResult all = bridge.stopAll();
+        QVERIFY(!all.ok);
+        QVERIFY2(all.message.contains(QStringLiteral("not sent to jaus:126: link down")),
+                 qPrintable(all.message));
+
+        // Nothing went out: not while the link was down, and not when the vehicle is heard again.
+        QTest::qWait(1000);
+        ugv.setPacketLoss(0);
+        QTRY_COMPARE_WITH_TIMEOUT(vehicle().link, JausLink::Up, 20000);
+        QTest::qWait(1000);
+        for (quint16 id : {jaus::msg::SetEmergency, jaus::msg::ClearEmergency, jaus::msg::Resume,
+                           jaus::msg::SetVelocityCommand, jaus::msg::SetWrenchEffort})
+            QVERIFY2(received.count(id) == 0,
+                     qPrintable(QStringLiteral("message 0x%1 reached the vehicle").arg(id, 4, 16)));
+        QVERIFY(ugv.state().management != jaus::ManagementState::Emergency);
+
+        // With the link up the same stop goes out.
+        const CommandResult stop = bridge.stopMachine(kVehicle);
+        QVERIFY2(stop.ok, qPrintable(stop.message));
+        QTRY_VERIFY_WITH_TIMEOUT(received.count(jaus::msg::SetEmergency) > 0, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(ugv.state().management, jaus::ManagementState::Emergency, 10000);
+        bridge.stop();
+        ugv.setMessageTap({});
+    }
+};
+
+QTEST_GUILESS_MAIN(TestJausBridgeThreads)
+#include "test_jaus_bridge_threads.moc"
