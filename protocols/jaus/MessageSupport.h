@@ -2,8 +2,12 @@
 // Building blocks of the JAUS message codecs (protocols/jaus/Messages*.cpp): the message ID frame, strings,
 // blobs, presence vectors and scaled integers. Internal to those files; everything else uses Messages.h.
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "protocols/common/Bytes.h"
 #include "protocols/common/Result.h"
@@ -61,42 +65,73 @@ inline Bytes getBlob32(ByteReader& r) {
     return Bytes(b.begin(), b.end());
 }
 
-// Presence-vector helpers: each optional field is one bit, in declaration order.
-struct PvWriter {
-    std::uint32_t pv = 0;
-    int bit = 0;
-    template <class T> void mark(const std::optional<T>& v) {
-        if (v)
-            pv |= 1u << bit;
-        ++bit;
-    }
+// ---- Field tables ----------------------------------------------------------------------------------------
+// A message's optional scaled fields as data: member, wire width and JSIDL range uN[lo,hi]. Field i of a
+// table owns presence-vector bit (first + i), and present fields follow each other on the wire in table order
+// (jaus-wire.md §3). The tables are constexpr and walked by fold expressions, so each field compiles to the
+// same straight-line code as a hand-written codec (constant ranges, no loop, no division).
+template <class T> struct ScaledField {
+    std::optional<double> T::*member;
+    int bytes; // 1, 2 or 4: u8, u16 or u32 on the wire
+    double lo, hi;
 };
 
-inline void putU32s(ByteWriter& w, const std::optional<double>& v, double lo, double hi) {
-    if (v)
-        w.u32(scaleToInt<std::uint32_t>(*v, lo, hi));
+template <int Bytes>
+using WireUInt = std::conditional_t<Bytes == 4, std::uint32_t,
+                                    std::conditional_t<Bytes == 2, std::uint16_t, std::uint8_t>>;
+
+template <class U> void putUInt(ByteWriter& w, U v) {
+    if constexpr (sizeof(U) == 4)
+        w.u32(v);
+    else if constexpr (sizeof(U) == 2)
+        w.u16(v);
+    else
+        w.u8(v);
 }
-inline void putU16s(ByteWriter& w, const std::optional<double>& v, double lo, double hi) {
-    if (v)
-        w.u16(scaleToInt<std::uint16_t>(*v, lo, hi));
+template <class U> U getUInt(ByteReader& r) {
+    if constexpr (sizeof(U) == 4)
+        return r.u32();
+    else if constexpr (sizeof(U) == 2)
+        return r.u16();
+    else
+        return r.u8();
 }
-inline void putU8s(ByteWriter& w, const std::optional<double>& v, double lo, double hi) {
-    if (v)
-        w.u8(scaleToInt<std::uint8_t>(*v, lo, hi));
+
+// Presence-vector bits of the table's fields that m carries, bit 0 = Table[0].
+template <const auto& Table, class T> std::uint32_t presenceOf(const T& m) {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return ((std::uint32_t((m.*(Table[I].member)).has_value()) << I) | ... | 0u);
+    }
+    (std::make_index_sequence<Table.size()>{});
 }
-inline void getU32s(ByteReader& r, std::uint32_t pv, int bit, std::optional<double>& v, double lo,
-                    double hi) {
-    if (pv & (1u << bit))
-        v = intToScale<std::uint32_t>(r.u32(), lo, hi);
+
+template <const auto& Table, std::size_t I, class T> void putField(ByteWriter& w, const T& m) {
+    constexpr ScaledField<T> f = Table[I];
+    using U = WireUInt<f.bytes>;
+    if (const auto& v = m.*(f.member))
+        putUInt<U>(w, scaleToInt<U>(*v, f.lo, f.hi));
 }
-inline void getU16s(ByteReader& r, std::uint32_t pv, int bit, std::optional<double>& v, double lo,
-                    double hi) {
-    if (pv & (1u << bit))
-        v = intToScale<std::uint16_t>(r.u16(), lo, hi);
+template <const auto& Table, std::size_t I, class T>
+void getField(ByteReader& r, std::uint32_t pv, int first, T& m) {
+    constexpr ScaledField<T> f = Table[I];
+    using U = WireUInt<f.bytes>;
+    if (pv & (1u << (first + int(I))))
+        m.*(f.member) = intToScale<U>(getUInt<U>(r), f.lo, f.hi);
 }
-inline void getU8s(ByteReader& r, std::uint32_t pv, int bit, std::optional<double>& v, double lo, double hi) {
-    if (pv & (1u << bit))
-        v = intToScale<std::uint8_t>(r.u8(), lo, hi);
+
+// Writes the fields m carries, in table order.
+template <const auto& Table, class T> void putFields(ByteWriter& w, const T& m) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (putField<Table, I>(w, m), ...);
+    }
+    (std::make_index_sequence<Table.size()>{});
+}
+// Reads the fields whose bits (first, first + 1, ...) are set in pv.
+template <const auto& Table, class T> void getFields(ByteReader& r, std::uint32_t pv, int first, T& m) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (getField<Table, I>(r, pv, first, m), ...);
+    }
+    (std::make_index_sequence<Table.size()>{});
 }
 
 } // namespace ocu::jaus::codec

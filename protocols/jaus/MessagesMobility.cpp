@@ -1,6 +1,7 @@
 // Mobility messages (AS6009): wrench effort, velocity command, global/local pose, velocity state.
 #include "protocols/jaus/Messages.h"
 
+#include <array>
 #include <numbers>
 
 #include "protocols/jaus/MessageSupport.h"
@@ -13,26 +14,91 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-} // namespace
+// Field tables (JSIDL layouts, jaus-wire.md §3 and §5): presence-vector bits in table order.
+constexpr std::array<ScaledField<WrenchEffort>, 12> kWrenchFields{{
+    {&WrenchEffort::propLinX, 2, -100, 100},
+    {&WrenchEffort::propLinY, 2, -100, 100},
+    {&WrenchEffort::propLinZ, 2, -100, 100},
+    {&WrenchEffort::propRotX, 2, -100, 100},
+    {&WrenchEffort::propRotY, 2, -100, 100},
+    {&WrenchEffort::propRotZ, 2, -100, 100},
+    {&WrenchEffort::resLinX, 1, 0, 100},
+    {&WrenchEffort::resLinY, 1, 0, 100},
+    {&WrenchEffort::resLinZ, 1, 0, 100},
+    {&WrenchEffort::resRotX, 1, 0, 100},
+    {&WrenchEffort::resRotY, 1, 0, 100},
+    {&WrenchEffort::resRotZ, 1, 0, 100},
+}};
+constexpr std::array<ScaledField<VelocityCommand>, 6> kVelocityCommandFields{{
+    {&VelocityCommand::vx, 4, -327.68, 327.67},
+    {&VelocityCommand::vy, 4, -327.68, 327.67},
+    {&VelocityCommand::vz, 4, -327.68, 327.67},
+    {&VelocityCommand::rollRate, 2, -32.768, 32.767},
+    {&VelocityCommand::pitchRate, 2, -32.768, 32.767},
+    {&VelocityCommand::yawRate, 2, -32.768, 32.767},
+}};
+constexpr std::array<ScaledField<GlobalPose>, 8> kGlobalPoseFields{{
+    {&GlobalPose::lat, 4, -90, 90},
+    {&GlobalPose::lon, 4, -180, 180},
+    {&GlobalPose::alt, 4, -10000, 35000},
+    {&GlobalPose::positionRms, 4, 0, 100},
+    {&GlobalPose::roll, 2, -kPi, kPi},
+    {&GlobalPose::pitch, 2, -kPi, kPi},
+    {&GlobalPose::yaw, 2, -kPi, kPi},
+    {&GlobalPose::attitudeRms, 2, 0, kPi},
+}};
+constexpr std::array<ScaledField<LocalPose>, 8> kLocalPoseFields{{
+    {&LocalPose::x, 4, -100000, 100000},
+    {&LocalPose::y, 4, -100000, 100000},
+    {&LocalPose::z, 4, -100000, 100000},
+    {&LocalPose::positionRms, 4, 0, 100},
+    {&LocalPose::roll, 2, -kPi, kPi},
+    {&LocalPose::pitch, 2, -kPi, kPi},
+    {&LocalPose::yaw, 2, -kPi, kPi},
+    {&LocalPose::attitudeRms, 2, 0, kPi},
+}};
+constexpr std::array<ScaledField<VelocityState>, 8> kVelocityStateFields{{
+    {&VelocityState::vx, 4, -327.68, 327.67},
+    {&VelocityState::vy, 4, -327.68, 327.67},
+    {&VelocityState::vz, 4, -327.68, 327.67},
+    {&VelocityState::velocityRms, 4, 0, 100},
+    {&VelocityState::rollRate, 2, -32.768, 32.767},
+    {&VelocityState::pitchRate, 2, -32.768, 32.767},
+    {&VelocityState::yawRate, 2, -32.768, 32.767},
+    {&VelocityState::rateRms, 2, 0, kPi},
+}};
 
-// ---- mobility ----
-Bytes encodeWrench(std::uint16_t id, const WrenchEffort& m) {
-    PvWriter pv;
-    const std::optional<double>* prop[] = {&m.propLinX, &m.propLinY, &m.propLinZ,
-                                           &m.propRotX, &m.propRotY, &m.propRotZ};
-    const std::optional<double>* res[] = {&m.resLinX, &m.resLinY, &m.resLinZ,
-                                          &m.resRotX, &m.resRotY, &m.resRotZ};
-    for (auto* f : prop)
-        pv.mark(*f);
-    for (auto* f : res)
-        pv.mark(*f);
+// Pose and velocity-state reports share one shape: PV u16, the table's fields, then a raw u32 timestamp on
+// the bit after them.
+template <const auto& Fields, class T> Bytes encodeStamped(std::uint16_t id, const T& m) {
+    constexpr std::uint32_t stampBit = 1u << Fields.size();
     Bytes out;
     auto w = start(out, id);
-    w.u16(std::uint16_t(pv.pv));
-    for (auto* f : prop)
-        putU16s(w, *f, -100, 100);
-    for (auto* f : res)
-        putU8s(w, *f, 0, 100);
+    w.u16(std::uint16_t(presenceOf<Fields>(m) | (m.timestamp ? stampBit : 0u)));
+    putFields<Fields>(w, m);
+    if (m.timestamp)
+        w.u32(*m.timestamp);
+    return out;
+}
+template <const auto& Fields, class T> Result<T> decodeStamped(ByteSpan p, std::uint16_t id) {
+    auto r = open(p, id);
+    if (!r)
+        return makeError(r.error());
+    T m;
+    const std::uint32_t pv = r->u16();
+    getFields<Fields>(*r, pv, 0, m);
+    if (pv & (1u << Fields.size()))
+        m.timestamp = r->u32();
+    return finish(*r, m, id);
+}
+
+} // namespace
+
+Bytes encodeWrench(std::uint16_t id, const WrenchEffort& m) {
+    Bytes out;
+    auto w = start(out, id);
+    w.u16(std::uint16_t(presenceOf<kWrenchFields>(m)));
+    putFields<kWrenchFields>(w, m);
     return out;
 }
 Result<WrenchEffort> decodeWrench(ByteSpan p, std::uint16_t id) {
@@ -40,35 +106,17 @@ Result<WrenchEffort> decodeWrench(ByteSpan p, std::uint16_t id) {
     if (!r)
         return makeError(r.error());
     WrenchEffort m;
-    std::optional<double>* prop[] = {&m.propLinX, &m.propLinY, &m.propLinZ,
-                                     &m.propRotX, &m.propRotY, &m.propRotZ};
-    std::optional<double>* res[] = {&m.resLinX, &m.resLinY, &m.resLinZ, &m.resRotX, &m.resRotY, &m.resRotZ};
     const std::uint32_t pv = r->u16();
-    for (int i = 0; i < 6; ++i)
-        getU16s(*r, pv, i, *prop[i], -100, 100);
-    for (int i = 0; i < 6; ++i)
-        getU8s(*r, pv, 6 + i, *res[i], 0, 100);
+    getFields<kWrenchFields>(*r, pv, 0, m);
     return finish(*r, m, id);
 }
 
 Bytes encodeVelocityCommand(std::uint16_t id, const VelocityCommand& m) {
-    PvWriter pv;
-    pv.mark(m.vx);
-    pv.mark(m.vy);
-    pv.mark(m.vz);
-    pv.mark(m.rollRate);
-    pv.mark(m.pitchRate);
-    pv.mark(m.yawRate);
     Bytes out;
     auto w = start(out, id);
-    w.u8(std::uint8_t(pv.pv));
+    w.u8(std::uint8_t(presenceOf<kVelocityCommandFields>(m)));
     w.u8(m.commandType);
-    putU32s(w, m.vx, -327.68, 327.67);
-    putU32s(w, m.vy, -327.68, 327.67);
-    putU32s(w, m.vz, -327.68, 327.67);
-    putU16s(w, m.rollRate, -32.768, 32.767);
-    putU16s(w, m.pitchRate, -32.768, 32.767);
-    putU16s(w, m.yawRate, -32.768, 32.767);
+    putFields<kVelocityCommandFields>(w, m);
     return out;
 }
 Result<VelocityCommand> decodeVelocityCommand(ByteSpan p, std::uint16_t id) {
@@ -78,14 +126,10 @@ Result<VelocityCommand> decodeVelocityCommand(ByteSpan p, std::uint16_t id) {
     VelocityCommand m;
     const std::uint32_t pv = r->u8();
     m.commandType = r->u8();
-    getU32s(*r, pv, 0, m.vx, -327.68, 327.67);
-    getU32s(*r, pv, 1, m.vy, -327.68, 327.67);
-    getU32s(*r, pv, 2, m.vz, -327.68, 327.67);
-    getU16s(*r, pv, 3, m.rollRate, -32.768, 32.767);
-    getU16s(*r, pv, 4, m.pitchRate, -32.768, 32.767);
-    getU16s(*r, pv, 5, m.yawRate, -32.768, 32.767);
+    getFields<kVelocityCommandFields>(*r, pv, 0, m);
     return finish(*r, m, id);
 }
+
 Bytes encodeQueryPv16(std::uint16_t id, std::uint16_t presence) {
     return encodeU16(id, presence);
 }
@@ -101,136 +145,22 @@ Bytes encodeQueryVelocityCommand(std::uint8_t presence, std::uint8_t commandType
 }
 
 Bytes encode(const GlobalPose& m, std::uint16_t id) {
-    PvWriter pv;
-    pv.mark(m.lat);
-    pv.mark(m.lon);
-    pv.mark(m.alt);
-    pv.mark(m.positionRms);
-    pv.mark(m.roll);
-    pv.mark(m.pitch);
-    pv.mark(m.yaw);
-    pv.mark(m.attitudeRms);
-    pv.mark(m.timestamp);
-    Bytes out;
-    auto w = start(out, id);
-    w.u16(std::uint16_t(pv.pv));
-    putU32s(w, m.lat, -90, 90);
-    putU32s(w, m.lon, -180, 180);
-    putU32s(w, m.alt, -10000, 35000);
-    putU32s(w, m.positionRms, 0, 100);
-    putU16s(w, m.roll, -kPi, kPi);
-    putU16s(w, m.pitch, -kPi, kPi);
-    putU16s(w, m.yaw, -kPi, kPi);
-    putU16s(w, m.attitudeRms, 0, kPi);
-    if (m.timestamp)
-        w.u32(*m.timestamp);
-    return out;
+    return encodeStamped<kGlobalPoseFields>(id, m);
 }
 Result<GlobalPose> decodeGlobalPose(ByteSpan p, std::uint16_t id) {
-    auto r = open(p, id);
-    if (!r)
-        return makeError(r.error());
-    GlobalPose m;
-    const std::uint32_t pv = r->u16();
-    getU32s(*r, pv, 0, m.lat, -90, 90);
-    getU32s(*r, pv, 1, m.lon, -180, 180);
-    getU32s(*r, pv, 2, m.alt, -10000, 35000);
-    getU32s(*r, pv, 3, m.positionRms, 0, 100);
-    getU16s(*r, pv, 4, m.roll, -kPi, kPi);
-    getU16s(*r, pv, 5, m.pitch, -kPi, kPi);
-    getU16s(*r, pv, 6, m.yaw, -kPi, kPi);
-    getU16s(*r, pv, 7, m.attitudeRms, 0, kPi);
-    if (pv & (1u << 8))
-        m.timestamp = r->u32();
-    return finish(*r, m, id);
+    return decodeStamped<kGlobalPoseFields, GlobalPose>(p, id);
 }
 Bytes encode(const LocalPose& m, std::uint16_t id) {
-    PvWriter pv;
-    pv.mark(m.x);
-    pv.mark(m.y);
-    pv.mark(m.z);
-    pv.mark(m.positionRms);
-    pv.mark(m.roll);
-    pv.mark(m.pitch);
-    pv.mark(m.yaw);
-    pv.mark(m.attitudeRms);
-    pv.mark(m.timestamp);
-    Bytes out;
-    auto w = start(out, id);
-    w.u16(std::uint16_t(pv.pv));
-    putU32s(w, m.x, -100000, 100000);
-    putU32s(w, m.y, -100000, 100000);
-    putU32s(w, m.z, -100000, 100000);
-    putU32s(w, m.positionRms, 0, 100);
-    putU16s(w, m.roll, -kPi, kPi);
-    putU16s(w, m.pitch, -kPi, kPi);
-    putU16s(w, m.yaw, -kPi, kPi);
-    putU16s(w, m.attitudeRms, 0, kPi);
-    if (m.timestamp)
-        w.u32(*m.timestamp);
-    return out;
+    return encodeStamped<kLocalPoseFields>(id, m);
 }
 Result<LocalPose> decodeLocalPose(ByteSpan p, std::uint16_t id) {
-    auto r = open(p, id);
-    if (!r)
-        return makeError(r.error());
-    LocalPose m;
-    const std::uint32_t pv = r->u16();
-    getU32s(*r, pv, 0, m.x, -100000, 100000);
-    getU32s(*r, pv, 1, m.y, -100000, 100000);
-    getU32s(*r, pv, 2, m.z, -100000, 100000);
-    getU32s(*r, pv, 3, m.positionRms, 0, 100);
-    getU16s(*r, pv, 4, m.roll, -kPi, kPi);
-    getU16s(*r, pv, 5, m.pitch, -kPi, kPi);
-    getU16s(*r, pv, 6, m.yaw, -kPi, kPi);
-    getU16s(*r, pv, 7, m.attitudeRms, 0, kPi);
-    if (pv & (1u << 8))
-        m.timestamp = r->u32();
-    return finish(*r, m, id);
+    return decodeStamped<kLocalPoseFields, LocalPose>(p, id);
 }
 Bytes encode(const VelocityState& m) {
-    PvWriter pv;
-    pv.mark(m.vx);
-    pv.mark(m.vy);
-    pv.mark(m.vz);
-    pv.mark(m.velocityRms);
-    pv.mark(m.rollRate);
-    pv.mark(m.pitchRate);
-    pv.mark(m.yawRate);
-    pv.mark(m.rateRms);
-    pv.mark(m.timestamp);
-    Bytes out;
-    auto w = start(out, msg::ReportVelocityState);
-    w.u16(std::uint16_t(pv.pv));
-    putU32s(w, m.vx, -327.68, 327.67);
-    putU32s(w, m.vy, -327.68, 327.67);
-    putU32s(w, m.vz, -327.68, 327.67);
-    putU32s(w, m.velocityRms, 0, 100);
-    putU16s(w, m.rollRate, -32.768, 32.767);
-    putU16s(w, m.pitchRate, -32.768, 32.767);
-    putU16s(w, m.yawRate, -32.768, 32.767);
-    putU16s(w, m.rateRms, 0, kPi);
-    if (m.timestamp)
-        w.u32(*m.timestamp);
-    return out;
+    return encodeStamped<kVelocityStateFields>(msg::ReportVelocityState, m);
 }
 Result<VelocityState> decodeVelocityState(ByteSpan p) {
-    auto r = open(p, msg::ReportVelocityState);
-    if (!r)
-        return makeError(r.error());
-    VelocityState m;
-    const std::uint32_t pv = r->u16();
-    getU32s(*r, pv, 0, m.vx, -327.68, 327.67);
-    getU32s(*r, pv, 1, m.vy, -327.68, 327.67);
-    getU32s(*r, pv, 2, m.vz, -327.68, 327.67);
-    getU32s(*r, pv, 3, m.velocityRms, 0, 100);
-    getU16s(*r, pv, 4, m.rollRate, -32.768, 32.767);
-    getU16s(*r, pv, 5, m.pitchRate, -32.768, 32.767);
-    getU16s(*r, pv, 6, m.yawRate, -32.768, 32.767);
-    getU16s(*r, pv, 7, m.rateRms, 0, kPi);
-    if (pv & (1u << 8))
-        m.timestamp = r->u32();
-    return finish(*r, m, msg::ReportVelocityState);
+    return decodeStamped<kVelocityStateFields, VelocityState>(p, msg::ReportVelocityState);
 }
 
 } // namespace ocu::jaus

@@ -1,6 +1,7 @@
 // Platform messages: platform specifications (AS6009) and the IOP health summary (AEP-4818).
 #include "protocols/jaus/Messages.h"
 
+#include <array>
 #include <numbers>
 
 #include "protocols/jaus/MessageSupport.h"
@@ -13,54 +14,61 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+using Specs = PlatformSpecifications;
+// Field tables (JSIDL ReportPlatformSpecifications, jaus-wire.md §5): each record has its own presence
+// vector.
+constexpr std::array<ScaledField<Specs>, 2> kSkidSteerFields{{
+    {&Specs::trackSeparation, 2, 0, 30},
+    {&Specs::driveWheelRadius, 2, 0, 10},
+}};
+constexpr std::array<ScaledField<Specs>, 4> kAckermannFields{{
+    {&Specs::steeringAngleRange, 2, -kPi / 2, kPi / 2},
+    {&Specs::minTurnRadius, 2, 0, 25},
+    {&Specs::wheelSeparation, 2, 0, 30},
+    {&Specs::ackDriveWheelRadius, 2, 0, 10},
+}};
+constexpr std::array<ScaledField<Specs>, 7> kLimitFields{{
+    {&Specs::maxForwardSpeed, 2, 0, 90},
+    {&Specs::maxReverseSpeed, 2, 0, 90},
+    {&Specs::maxRotationalSpeed, 2, 0, 6.28},
+    {&Specs::maxForwardAccel, 1, 0, 40},
+    {&Specs::maxReverseAccel, 1, 0, 40},
+    {&Specs::maxForwardDecel, 1, 0, 40},
+    {&Specs::maxReverseDecel, 1, 0, 40},
+}};
+// After the name (str8), which sits between this record's presence vector and its fields.
+constexpr std::array<ScaledField<Specs>, 6> kDimensionFields{{
+    {&Specs::front, 2, 0, 30},
+    {&Specs::back, 2, 0, 30},
+    {&Specs::right, 2, 0, 30},
+    {&Specs::left, 2, 0, 30},
+    {&Specs::bottom, 2, 0, 30},
+    {&Specs::top, 2, 0, 30},
+}};
+
+template <const auto& Fields> void putRecordU8(ByteWriter& w, const Specs& m) {
+    w.u8(std::uint8_t(presenceOf<Fields>(m)));
+    putFields<Fields>(w, m);
+}
+template <const auto& Fields> void getRecordU8(ByteReader& r, Specs& m) {
+    const std::uint32_t pv = r.u8();
+    getFields<Fields>(r, pv, 0, m);
+}
+
 } // namespace
 
 Bytes encode(const PlatformSpecifications& m) {
     Bytes out;
     auto w = start(out, msg::ReportPlatformSpecifications);
     w.u8(m.steeringType);
-    if (m.steeringType == 0) {
-        PvWriter pv;
-        pv.mark(m.trackSeparation);
-        pv.mark(m.driveWheelRadius);
-        w.u8(std::uint8_t(pv.pv));
-        putU16s(w, m.trackSeparation, 0, 30);
-        putU16s(w, m.driveWheelRadius, 0, 10);
-    } else {
-        PvWriter pv;
-        pv.mark(m.steeringAngleRange);
-        pv.mark(m.minTurnRadius);
-        pv.mark(m.wheelSeparation);
-        pv.mark(m.ackDriveWheelRadius);
-        w.u8(std::uint8_t(pv.pv));
-        putU16s(w, m.steeringAngleRange, -kPi / 2, kPi / 2);
-        putU16s(w, m.minTurnRadius, 0, 25);
-        putU16s(w, m.wheelSeparation, 0, 30);
-        putU16s(w, m.ackDriveWheelRadius, 0, 10);
-    }
-    PvWriter iv;
-    iv.mark(m.maxForwardSpeed);
-    iv.mark(m.maxReverseSpeed);
-    iv.mark(m.maxRotationalSpeed);
-    iv.mark(m.maxForwardAccel);
-    iv.mark(m.maxReverseAccel);
-    iv.mark(m.maxForwardDecel);
-    iv.mark(m.maxReverseDecel);
-    w.u8(std::uint8_t(iv.pv));
-    putU16s(w, m.maxForwardSpeed, 0, 90);
-    putU16s(w, m.maxReverseSpeed, 0, 90);
-    putU16s(w, m.maxRotationalSpeed, 0, 6.28);
-    putU8s(w, m.maxForwardAccel, 0, 40);
-    putU8s(w, m.maxReverseAccel, 0, 40);
-    putU8s(w, m.maxForwardDecel, 0, 40);
-    putU8s(w, m.maxReverseDecel, 0, 40);
-    PvWriter sv;
-    for (auto* f : {&m.front, &m.back, &m.right, &m.left, &m.bottom, &m.top})
-        sv.mark(*f);
-    w.u16(std::uint16_t(sv.pv));
+    if (m.steeringType == 0)
+        putRecordU8<kSkidSteerFields>(w, m);
+    else
+        putRecordU8<kAckermannFields>(w, m);
+    putRecordU8<kLimitFields>(w, m);
+    w.u16(std::uint16_t(presenceOf<kDimensionFields>(m)));
     putString8(w, m.name);
-    for (auto* f : {&m.front, &m.back, &m.right, &m.left, &m.bottom, &m.top})
-        putU16s(w, *f, 0, 30);
+    putFields<kDimensionFields>(w, m);
     return out;
 }
 Result<PlatformSpecifications> decodePlatformSpecifications(ByteSpan p) {
@@ -69,32 +77,16 @@ Result<PlatformSpecifications> decodePlatformSpecifications(ByteSpan p) {
         return makeError(r.error());
     PlatformSpecifications m;
     m.steeringType = r->u8();
-    if (m.steeringType == 0) {
-        const std::uint32_t pv = r->u8();
-        getU16s(*r, pv, 0, m.trackSeparation, 0, 30);
-        getU16s(*r, pv, 1, m.driveWheelRadius, 0, 10);
-    } else if (m.steeringType == 1) {
-        const std::uint32_t pv = r->u8();
-        getU16s(*r, pv, 0, m.steeringAngleRange, -kPi / 2, kPi / 2);
-        getU16s(*r, pv, 1, m.minTurnRadius, 0, 25);
-        getU16s(*r, pv, 2, m.wheelSeparation, 0, 30);
-        getU16s(*r, pv, 3, m.ackDriveWheelRadius, 0, 10);
-    } else {
+    if (m.steeringType == 0)
+        getRecordU8<kSkidSteerFields>(*r, m);
+    else if (m.steeringType == 1)
+        getRecordU8<kAckermannFields>(*r, m);
+    else
         return makeError("value: ReportPlatformSpecifications variant " + std::to_string(m.steeringType));
-    }
-    const std::uint32_t iv = r->u8();
-    getU16s(*r, iv, 0, m.maxForwardSpeed, 0, 90);
-    getU16s(*r, iv, 1, m.maxReverseSpeed, 0, 90);
-    getU16s(*r, iv, 2, m.maxRotationalSpeed, 0, 6.28);
-    getU8s(*r, iv, 3, m.maxForwardAccel, 0, 40);
-    getU8s(*r, iv, 4, m.maxReverseAccel, 0, 40);
-    getU8s(*r, iv, 5, m.maxForwardDecel, 0, 40);
-    getU8s(*r, iv, 6, m.maxReverseDecel, 0, 40);
+    getRecordU8<kLimitFields>(*r, m);
     const std::uint32_t sv = r->u16();
     m.name = getString8(*r);
-    std::optional<double>* dims[] = {&m.front, &m.back, &m.right, &m.left, &m.bottom, &m.top};
-    for (int i = 0; i < 6; ++i)
-        getU16s(*r, sv, i, *dims[i], 0, 30);
+    getFields<kDimensionFields>(*r, sv, 0, m);
     // Remaining spec fields (centre of gravity, weight, angles) are not used by the console: skipped.
     return finish(*r, m, msg::ReportPlatformSpecifications);
 }
