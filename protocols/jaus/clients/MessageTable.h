@@ -30,8 +30,6 @@ public:
     // A message from a vehicle; returns false when no client handles the ID.
     bool dispatch(RemoteSubsystem& remote, const JausId& source, std::uint16_t id, ByteSpan payload) const;
 
-    bool handlesVehicleMessage(std::uint16_t id) const { return m_vehicle.count(id) != 0; }
-
 private:
     std::unordered_map<std::uint16_t, RequestHandler> m_requests;
     std::unordered_map<std::uint16_t, VehicleHandler> m_vehicle;
