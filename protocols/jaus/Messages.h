@@ -3,6 +3,9 @@
 // Layouts follow the public JSIDL (jaus-wire.md §3): little-endian, presence vectors first, scaled integers.
 // Decoders accept whatever presence vector arrives (peers ignore the query's PV, jaus-wire.md §6.3) and
 // ignore trailing bytes; they fail only when a field that must be present is missing.
+// Codecs by family: MessagesCore.cpp (names, management, access control), MessagesDiscovery.cpp,
+// MessagesEvents.cpp, MessagesMobility.cpp (drive commands, pose, velocity state), MessagesPlatform.cpp
+// (platform specifications, health summary); shared building blocks in MessageSupport.h.
 #include <cstdint>
 #include <optional>
 #include <string>

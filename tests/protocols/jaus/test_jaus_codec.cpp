@@ -368,6 +368,124 @@ private slots:
         auto da = decodePlatformSpecifications(encode(ack));
         QVERIFY(da.ok() && std::abs(*da->minTurnRadius - 4) < 0.001 && std::abs(*da->front - 1.2) < 0.001);
     }
+    // The table-driven codecs (field tables with presence-vector bits, MessagesMobility.cpp and
+    // MessagesPlatform.cpp) against vectors produced by the hand-written codecs they replaced: every optional
+    // field present, every wire width, both platform variants, both directions.
+    void fieldTablesKeepTheLayout() {
+        GlobalPose g;
+        g.lat = 48.137154;
+        g.lon = 11.576124;
+        g.alt = 520.25;
+        g.positionRms = 1.5;
+        g.roll = -0.1;
+        g.pitch = 0.2;
+        g.yaw = -2.5;
+        g.attitudeRms = 0.05;
+        g.timestamp = 0x12345678;
+        const Bytes gv = hex("0244ff01f13376c47a5e3b887b39d93b3d0ad703ec7b2688241a130478563412");
+        QCOMPARE(toHex(encode(g)), toHex(gv));
+        auto dg = decodeGlobalPose(gv);
+        QVERIFY(dg.ok() && std::abs(*dg->alt - 520.25) < 0.01 && std::abs(*dg->yaw + 2.5) < 1e-3 &&
+                dg->timestamp == 0x12345678u);
+        QCOMPARE(toHex(encode(*dg)), toHex(gv));
+
+        LocalPose l;
+        l.x = 12.5;
+        l.y = -7.25;
+        l.z = 0.5;
+        l.positionRms = 0.1;
+        l.roll = 0.01;
+        l.pitch = -0.02;
+        l.yaw = 3.0;
+        l.attitudeRms = 0.3;
+        l.timestamp = 42;
+        const Bytes lv = hex("0344ff0193180480d39ffd7ff12900803789410068802f7f3afa72182a000000");
+        QCOMPARE(toHex(encode(l)), toHex(lv));
+        QCOMPARE(toHex(encode(*decodeLocalPose(lv))), toHex(lv));
+        LocalPose sparse; // bits 1 and 6 only: the fields in between are absent on the wire
+        sparse.y = -99999.0;
+        sparse.yaw = -3.0;
+        const Bytes sv = hex("03444200e3530000c505");
+        QCOMPARE(toHex(encode(sparse)), toHex(sv));
+        auto ds = decodeLocalPose(sv);
+        QVERIFY(ds.ok() && !ds->x && !ds->pitch && !ds->timestamp && std::abs(*ds->y + 99999.0) < 0.01);
+
+        VelocityState v;
+        v.vx = 1.25;
+        v.vy = -0.5;
+        v.vz = 0.01;
+        v.velocityRms = 0.2;
+        v.rollRate = 0.1;
+        v.pitchRate = -0.1;
+        v.yawRate = -0.75;
+        v.rateRms = 0.01;
+        v.timestamp = 7;
+        const Bytes vv = hex("0444ff017d807d80ce7fce7f018001806f12830064809c7f127dd10007000000");
+        QCOMPARE(toHex(encode(v)), toHex(vv));
+        QCOMPARE(toHex(encode(*decodeVelocityState(vv))), toHex(vv));
+
+        WrenchEffort w;
+        w.propLinX = 50;
+        w.propLinY = -10;
+        w.propLinZ = 1;
+        w.propRotX = -1;
+        w.propRotY = 2;
+        w.propRotZ = -25;
+        w.resLinX = 30;
+        w.resLinY = 1;
+        w.resLinZ = 2;
+        w.resRotX = 3;
+        w.resRotY = 4;
+        w.resRotZ = 100;
+        const Bytes wv = hex("0544ff0fffbf33734781b87e8f8200604d0305080aff");
+        QCOMPARE(toHex(encodeWrench(msg::ReportWrenchEffort, w)), toHex(wv));
+        auto dw = decodeWrench(wv, msg::ReportWrenchEffort);
+        QVERIFY(dw.ok() && std::abs(*dw->resRotZ - 100) < 1e-9 && std::abs(*dw->propRotZ + 25) < 0.01);
+        QCOMPARE(toHex(encodeWrench(msg::ReportWrenchEffort, *dw)), toHex(wv));
+
+        VelocityCommand c;
+        c.commandType = 1;
+        c.vx = 2.5;
+        c.vy = -0.1;
+        c.vz = 0.0;
+        c.rollRate = 0.2;
+        c.pitchRate = -0.3;
+        c.yawRate = 1.0;
+        const Bytes cv = hex("15043f01fa80fa80f67ff67f00800080c880d47ee883");
+        QCOMPARE(toHex(encodeVelocityCommand(msg::SetVelocityCommand, c)), toHex(cv));
+        auto dc = decodeVelocityCommand(cv);
+        QVERIFY(dc.ok() && dc->commandType == 1 && std::abs(*dc->yawRate - 1.0) < 1e-3);
+        QCOMPARE(toHex(encodeVelocityCommand(msg::SetVelocityCommand, *dc)), toHex(cv));
+
+        PlatformSpecifications a;
+        a.steeringType = 1;
+        a.steeringAngleRange = 0.6;
+        a.minTurnRadius = 3.5;
+        a.wheelSeparation = 1.6;
+        a.ackDriveWheelRadius = 0.35;
+        a.maxForwardSpeed = 8;
+        a.maxReverseSpeed = 2;
+        a.maxRotationalSpeed = 0.8;
+        a.maxForwardAccel = 2;
+        a.maxReverseAccel = 1;
+        a.maxForwardDecel = 4;
+        a.maxReverseDecel = 3;
+        a.name = "Ackermann test";
+        a.front = 2.1;
+        a.back = 1.9;
+        a.right = 0.9;
+        a.left = 0.95;
+        a.bottom = 0.1;
+        a.top = 1.8;
+        const Bytes av =
+            hex("0245010fe4b0d723a70df6087fc116b0059c200d061a133f000e41636b65726d616e6e2074657374eb"
+                "113710ae071b08da005c0f");
+        QCOMPARE(toHex(encode(a)), toHex(av));
+        auto da = decodePlatformSpecifications(av);
+        QVERIFY(da.ok() && da->name == "Ackermann test" && std::abs(*da->minTurnRadius - 3.5) < 1e-3 &&
+                !da->trackSeparation && std::abs(*da->top - 1.8) < 1e-3);
+        QCOMPARE(toHex(encode(*da)), toHex(av));
+    }
     void toleratesPeerQuirks() {
         // JTS truncates scaled values: 0 % as 0x7FFF must decode within one step of zero.
         Bytes trunc = hex("05042100ff7fff7f");

@@ -1,0 +1,236 @@
+#include "protocols/jaus/clients/AccessControlClient.h"
+
+#include "protocols/common/Log.h"
+#include "protocols/jaus/clients/DriveClient.h"
+
+namespace ocu::jaus {
+
+void AccessControlClient::registerMessages(MessageTable& table) {
+    table.onVehicleMessage(msg::ConfirmControl, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+        onConfirm(r, src, p);
+    });
+    table.onVehicleMessage(msg::RejectControl, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+        onReject(r, src, p);
+    });
+    table.onVehicleMessage(msg::ReportControl, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+        onReport(r, src, p);
+    });
+    table.onVehicleMessage(msg::ReportTimeout, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+        auto m = decodeU8(p, msg::ReportTimeout);
+        if (!m)
+            return m_ctx.rejected(src, m.error());
+        r.snap.accessTimeoutS = *m;
+        m_ctx.changed(r);
+    });
+    // Known and deliberately unused: the console shows the controller's authority from ReportControl.
+    table.onVehicleMessage(msg::ReportAuthority, [](RemoteSubsystem&, const JausId&, ByteSpan) {});
+}
+
+bool AccessControlClient::wantsControl(std::uint16_t ss) const {
+    auto it = m_state.find(ss);
+    return it != m_state.end() && it->second.wantControl;
+}
+
+double AccessControlClient::timeoutS(const RemoteSubsystem& r) const {
+    return r.snap.accessTimeoutS > 0 ? r.snap.accessTimeoutS : m_ctx.config().accessTimeoutS;
+}
+
+// ---- commands
+// ----------------------------------------------------------------------------------------------
+
+bool AccessControlClient::requestControl(std::uint16_t ss) {
+    const JausConfig& cfg = m_ctx.config();
+    if (!cfg.mayControl())
+        return m_ctx.refuse(ss, "the monitor role (authority 0) never requests control");
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!r || !r->mobility().subsystem)
+        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " has no known mobility component yet");
+    State& s = m_state[ss];
+    s.wantControl = true;
+    s.releasing = false;
+    s.classifyLoss = false;
+    s.lastRequest = m_ctx.now();
+    m_ctx.send(r->mobility(), encodeU8(msg::RequestControl, cfg.authority));
+    if (!s.timeoutQueried) {
+        s.timeoutQueried = true;
+        m_ctx.send(r->mobility(), encodeEmpty(msg::QueryTimeout));
+    }
+    return true;
+}
+
+bool AccessControlClient::releaseControl(std::uint16_t ss) {
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!r || !r->mobility().subsystem)
+        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+    m_drive.beforeRelease(*r);
+    State& s = m_state[ss];
+    s.wantControl = false;
+    s.releasing = r->snap.controlledByUs;
+    if (!s.releasing && r->snap.access == AccessState::ControlAccepted)
+        r->snap.access = AccessState::ControlReleased;
+    m_ctx.send(r->mobility(), encodeEmpty(msg::ReleaseControl));
+    return true;
+}
+
+void AccessControlClient::releaseAll() {
+    for (auto& [ss, r] : m_ctx.remotes())
+        if (wantsControl(ss) || r.snap.controlledByUs)
+            releaseControl(ss);
+}
+
+// ---- received
+// ----------------------------------------------------------------------------------------------
+
+void AccessControlClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+    auto m = decodeU8(p, msg::ConfirmControl);
+    if (!m)
+        return m_ctx.rejected(src, m.error());
+    State& s = m_state[r.id()];
+    const std::uint8_t authority = m_ctx.config().authority;
+    s.lastConfirm = m_ctx.now();
+    if (*m == std::uint8_t(ConfirmControlCode::Accepted)) {
+        if (!s.wantControl) {
+            // A late accept after we gave up: hand it back.
+            m_ctx.send(src, encodeEmpty(msg::ReleaseControl));
+            return;
+        }
+        r.snap.controller = m_ctx.self();
+        r.snap.controllerAuthority = authority;
+        if (!r.snap.controlledByUs) {
+            r.snap.controlledByUs = true;
+            r.snap.access = AccessState::ControlAccepted;
+            m_ctx.notify(Severity::Info, EventKind::ControlAccepted, r.id(),
+                         "control of " + r.snap.callSign + " accepted (authority " +
+                             std::to_string(authority) + ")");
+            m_ctx.changed(r);
+        }
+        return;
+    }
+    const bool had = r.snap.controlledByUs;
+    s.wantControl = false;
+    r.snap.controlledByUs = false;
+    m_drive.endSession(r, false);
+    r.snap.access = *m == std::uint8_t(ConfirmControlCode::NotAvailable) ? AccessState::NotAvailable
+                                                                         : AccessState::InsufficientAuthority;
+    const std::string why = *m == 1 ? "not available" : "insufficient authority";
+    if (had) {
+        r.snap.access = AccessState::Preempted;
+        m_ctx.notify(Severity::Warning, EventKind::ControlPreempted, r.id(),
+                     "control of " + r.snap.callSign + " lost: re-request refused (" + why + ")");
+    } else {
+        m_ctx.notify(Severity::Warning, EventKind::ControlRejected, r.id(),
+                     "control of " + r.snap.callSign + " refused: " + why);
+    }
+    m_ctx.send(src, encodeEmpty(msg::QueryControl));
+    m_ctx.changed(r);
+}
+
+void AccessControlClient::onReject(RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+    auto m = decodeU8(p, msg::RejectControl);
+    if (!m)
+        return m_ctx.rejected(src, m.error());
+    State& s = m_state[r.id()];
+    if (s.releasing) {
+        s.releasing = false;
+        r.snap.controlledByUs = false;
+        r.snap.access = AccessState::ControlReleased;
+        m_ctx.notify(Severity::Info, EventKind::ControlReleased, r.id(),
+                     "control of " + r.snap.callSign + " released");
+        m_ctx.changed(r);
+        return;
+    }
+    if (r.snap.controlledByUs || s.wantControl)
+        onControlLost(r, s, *m == 0 ? "released by the platform" : "control not available");
+}
+
+void AccessControlClient::onReport(RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+    auto m = decodeReportControl(p);
+    if (!m)
+        return m_ctx.rejected(src, m.error());
+    State& s = m_state[r.id()];
+    r.snap.controller = m->controller;
+    r.snap.controllerAuthority = m->authority;
+    const bool ours = m->controller == m_ctx.self();
+    if (s.classifyLoss) {
+        classify(r, s, *m);
+    } else if (r.snap.controlledByUs && !ours && m->controller.subsystem != 0 &&
+               m_ctx.now() - s.lastConfirm > std::chrono::milliseconds(500)) {
+        // Someone else holds control although we think we do (a missed RejectControl).
+        s.classifyLoss = true;
+        classify(r, s, *m);
+    } else if (!r.snap.controlledByUs && !s.wantControl &&
+               (r.snap.access == AccessState::Monitoring || r.snap.access == AccessState::NotControlled)) {
+        r.snap.access = m->controller.subsystem == 0 ? AccessState::NotControlled : AccessState::Monitoring;
+    }
+    m_ctx.changed(r);
+}
+
+void AccessControlClient::onControlLost(RemoteSubsystem& r, State& s, const std::string& why) {
+    s.wantControl = false;
+    r.snap.controlledByUs = false;
+    m_drive.endSession(r, true);
+    // Find out who holds control now to tell pre-emption from a timeout (AEP-4818 §9 item 14).
+    s.classifyLoss = true;
+    s.classifyDeadline = m_ctx.now() + std::chrono::seconds(1);
+    r.snap.access = AccessState::ControlReleased;
+    if (r.mobility().subsystem)
+        m_ctx.send(r.mobility(), encodeEmpty(msg::QueryControl));
+    logInfo("ocu.jaus", "control of " + r.snap.callSign + " ended: " + why);
+    m_ctx.changed(r);
+}
+
+void AccessControlClient::classify(RemoteSubsystem& r, State& s, const ReportControl& rc) {
+    s.classifyLoss = false;
+    r.snap.controlledByUs = false;
+    s.wantControl = false;
+    m_drive.endSession(r, false);
+    if (rc.controller.subsystem != 0 && !(rc.controller == m_ctx.self()) &&
+        rc.authority > m_ctx.config().authority) {
+        r.snap.access = AccessState::Preempted;
+        m_ctx.notify(Severity::Warning, EventKind::ControlPreempted, r.id(),
+                     "control of " + r.snap.callSign + " pre-empted by " + rc.controller.toString() +
+                         " (authority " + std::to_string(rc.authority) + ")");
+    } else {
+        r.snap.access = AccessState::Timeout;
+        m_ctx.notify(Severity::Warning, EventKind::ControlLost, r.id(),
+                     "control of " + r.snap.callSign + " lost");
+    }
+    m_ctx.changed(r);
+}
+
+// ---- timers
+// ------------------------------------------------------------------------------------------------
+
+void AccessControlClient::tick(RemoteSubsystem& r, TimePoint now) {
+    const JausId mob = r.mobility();
+    State& s = m_state[r.id()];
+    // Who controls the vehicle, at the status rate (AEP-4818 §9 item 13).
+    if (mob.subsystem && r.reachable() && now - s.lastControlPoll >= periodOf(m_ctx.config().statusPollHz)) {
+        s.lastControlPoll = now;
+        m_ctx.send(mob, encodeEmpty(msg::QueryControl));
+    }
+    // Keep re-requesting inside the timeout; notice silence.
+    if (s.wantControl && mob.subsystem) {
+        const double timeout = timeoutS(r);
+        // Re-request well inside the timeout (AEP-4818 §4.3.4): 40 % of it, i.e. at most half.
+        const Duration period = r.snap.controlledByUs ? secondsD(timeout * 0.4) : std::chrono::seconds(1);
+        if (now - s.lastRequest >= period) {
+            s.lastRequest = now;
+            m_ctx.send(mob, encodeU8(msg::RequestControl, m_ctx.config().authority));
+        }
+        if (r.snap.controlledByUs && now - s.lastConfirm > secondsD(timeout)) {
+            s.wantControl = false;
+            r.snap.controlledByUs = false;
+            m_drive.endSession(r, false);
+            r.snap.access = AccessState::Timeout;
+            m_ctx.notify(Severity::Warning, EventKind::ControlLost, r.id(),
+                         "control of " + r.snap.callSign +
+                             " lost: no confirmation within the access-control timeout");
+            m_ctx.changed(r);
+        }
+    }
+    if (s.classifyLoss && now > s.classifyDeadline)
+        classify(r, s, ReportControl{});
+}
+
+} // namespace ocu::jaus

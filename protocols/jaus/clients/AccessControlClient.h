@@ -1,0 +1,57 @@
+#pragma once
+// Access control (AS5710A AccessControl, AEP-4818 §4.3): RequestControl with the configured authority to the
+// Core Mobility Component, QueryTimeout once, re-requests every 40 % of the access timeout, QueryControl at
+// status_poll_hz. Tells apart: accepted, refused (NOT_AVAILABLE / INSUFFICIENT_AUTHORITY, no retry),
+// released, pre-empted by a higher authority and lost by timeout (AEP-4818 §9 items 10-16). The monitor role
+// (authority 0) never requests control.
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "protocols/jaus/Messages.h"
+#include "protocols/jaus/clients/ClientService.h"
+
+namespace ocu::jaus {
+
+class DriveClient;
+
+class AccessControlClient : public ClientService {
+public:
+    // Losing or releasing control ends the drive session (zero commands before a release).
+    AccessControlClient(ClientContext& context, DriveClient& drive)
+        : ClientService(context), m_drive(drive) {}
+
+    void registerMessages(MessageTable& table) override;
+    void tick(RemoteSubsystem& remote, TimePoint now) override;
+    void forget(std::uint16_t subsystem) override { m_state.erase(subsystem); }
+
+    // Commands; each returns false and emits CommandRefused when not allowed.
+    bool requestControl(std::uint16_t subsystem);
+    bool releaseControl(std::uint16_t subsystem);
+    // Every subsystem we control or asked for (stop() of the stack).
+    void releaseAll();
+    // True between requestControl and its refusal, loss or release.
+    bool wantsControl(std::uint16_t subsystem) const;
+
+private:
+    struct State {
+        bool wantControl = false;
+        bool releasing = false;    // ReleaseControl sent while in control: RejectControl(0) is the answer
+        bool classifyLoss = false; // control ended: the next ReportControl says pre-empted or timed out
+        TimePoint classifyDeadline{};
+        TimePoint lastRequest{}, lastConfirm{}, lastControlPoll{};
+        bool timeoutQueried = false;
+    };
+
+    void onConfirm(RemoteSubsystem& remote, const JausId& source, ByteSpan payload);
+    void onReject(RemoteSubsystem& remote, const JausId& source, ByteSpan payload);
+    void onReport(RemoteSubsystem& remote, const JausId& source, ByteSpan payload);
+    void onControlLost(RemoteSubsystem& remote, State& state, const std::string& why);
+    void classify(RemoteSubsystem& remote, State& state, const ReportControl& report);
+    double timeoutS(const RemoteSubsystem& remote) const;
+
+    DriveClient& m_drive;
+    std::map<std::uint16_t, State> m_state;
+};
+
+} // namespace ocu::jaus

@@ -1,0 +1,72 @@
+#include "protocols/jaus/clients/ClientContext.h"
+
+#include <algorithm>
+
+#include "protocols/common/Log.h"
+
+namespace ocu::jaus {
+
+namespace {
+constexpr const char* kLog = "ocu.jaus";
+}
+
+Duration secondsD(double s) {
+    return std::chrono::duration_cast<Duration>(std::chrono::duration<double>(s));
+}
+Duration periodOf(double hz) {
+    return secondsD(1.0 / std::max(hz, 0.01));
+}
+
+ClientContext::ClientContext(JausConfig config, JausListener& listener, JausOutput& output,
+                             const Clock& clock, Counters& counters)
+    : m_cfg(std::move(config)), m_listener(listener), m_out(output), m_clock(clock), m_counters(counters),
+      m_self(m_cfg.ownId()) {}
+
+void ClientContext::send(const JausId& dst, const Bytes& payload, SendOptions o) {
+    m_counters.add("tx.messages");
+    m_out.send(dst, payload, o);
+}
+
+void ClientContext::notify(Severity s, EventKind k, std::uint16_t ss, std::string text) {
+    if (s != Severity::Info)
+        logWarning(kLog, text);
+    m_listener.onEvent(JausEvent{s, k, ss, std::move(text)});
+}
+
+void ClientContext::changed(const RemoteSubsystem& r) {
+    m_listener.onSubsystemChanged(r.snap);
+}
+
+bool ClientContext::refuse(std::uint16_t ss, const std::string& why) {
+    m_counters.add("cmd.refused");
+    notify(Severity::Warning, EventKind::CommandRefused, ss, why);
+    return false;
+}
+
+void ClientContext::rejected(const JausId& src, const std::string& error) {
+    m_counters.add("rx.rejected." + rejectReason(error));
+    logWarning(kLog, "from " + src.toString() + ": " + error);
+}
+
+RemoteSubsystem* ClientContext::find(std::uint16_t ss) {
+    auto it = m_remotes.find(ss);
+    return it == m_remotes.end() ? nullptr : &it->second;
+}
+const RemoteSubsystem* ClientContext::find(std::uint16_t ss) const {
+    auto it = m_remotes.find(ss);
+    return it == m_remotes.end() ? nullptr : &it->second;
+}
+
+RemoteSubsystem& ClientContext::remote(std::uint16_t ss) {
+    auto it = m_remotes.find(ss);
+    if (it != m_remotes.end())
+        return it->second;
+    RemoteSubsystem& r = m_remotes[ss];
+    r.snap.subsystem = ss;
+    r.snap.access = AccessState::Monitoring;
+    r.snap.link = LinkState::Up;
+    r.components.platformManager = JausId{ss, 1, 1};
+    return r;
+}
+
+} // namespace ocu::jaus

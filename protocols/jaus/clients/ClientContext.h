@@ -1,0 +1,80 @@
+#pragma once
+// What the JAUS client services of one console share: the configuration, the clock, the way out to the
+// transport, the listener, the counters and the record of every remote subsystem. JausCore owns one; each
+// client (clients/*Client.h) holds a reference. No sockets and no threads here.
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "protocols/common/Clock.h"
+#include "protocols/common/Counters.h"
+#include "protocols/jaus/JausConfig.h"
+#include "protocols/jaus/JausOutput.h"
+#include "protocols/jaus/JausTypes.h"
+
+namespace ocu::jaus {
+
+// Who offers what on one remote subsystem, learnt by the DiscoveryClient (ReportIdentification,
+// ReportServices); the other clients read it to address their queries and commands. The Core Mobility
+// Component lives in the snapshot (SubsystemSnapshot::mobilityComponent) because the console shows it.
+struct ComponentTable {
+    bool known = false;     // a ReportServices arrived: events, polls and commands may start
+    JausId platformManager; // identification, services, heartbeat
+    JausId globalPoseSensor, localPoseSensor, velocitySensor, healthMonitor, platformSpecs;
+};
+
+// One remote subsystem (a vehicle) as the console knows it. Each client writes only its own fields of the
+// snapshot; its private state it keeps itself, keyed by subsystem ID.
+struct RemoteSubsystem {
+    SubsystemSnapshot snap;
+    ComponentTable components;
+
+    std::uint16_t id() const { return snap.subsystem; }
+    const JausId& mobility() const { return snap.mobilityComponent; }
+    bool reachable() const { return snap.link != LinkState::Down; }
+};
+
+class ClientContext {
+public:
+    ClientContext(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock,
+                  Counters& counters);
+
+    const JausConfig& config() const { return m_cfg; }
+    const JausId& self() const { return m_self; }
+    TimePoint now() const { return m_clock.now(); }
+    Counters& counters() { return m_counters; }
+
+    void send(const JausId& destination, const Bytes& payload, SendOptions options = {});
+    std::string endpointOf(const JausId& id) const { return m_out.endpointOf(id); }
+    // An event for the operator; warnings and errors are logged too.
+    void notify(Severity severity, EventKind kind, std::uint16_t subsystem, std::string text);
+    // The subsystem's snapshot changed: hand it to the listener.
+    void changed(const RemoteSubsystem& remote);
+    // A command the console does not send: counter, CommandRefused event; returns false.
+    bool refuse(std::uint16_t subsystem, const std::string& why);
+    // A message that did not decode: counter rx.rejected.<reason> and a log line.
+    void rejected(const JausId& source, const std::string& error);
+
+    RemoteSubsystem* find(std::uint16_t subsystem);
+    const RemoteSubsystem* find(std::uint16_t subsystem) const;
+    // The record of a subsystem, created on first contact (link up, monitoring, platform manager ss.1.1).
+    RemoteSubsystem& remote(std::uint16_t subsystem);
+    void erase(std::uint16_t subsystem) { m_remotes.erase(subsystem); }
+    std::map<std::uint16_t, RemoteSubsystem>& remotes() { return m_remotes; }
+    const std::map<std::uint16_t, RemoteSubsystem>& remotes() const { return m_remotes; }
+
+private:
+    JausConfig m_cfg;
+    JausListener& m_listener;
+    JausOutput& m_out;
+    const Clock& m_clock;
+    Counters& m_counters;
+    JausId m_self;
+    std::map<std::uint16_t, RemoteSubsystem> m_remotes;
+};
+
+// Clock helpers shared by the clients.
+Duration secondsD(double s);
+Duration periodOf(double hz); // 1 / hz, at most 100 s
+
+} // namespace ocu::jaus

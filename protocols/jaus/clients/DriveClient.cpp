@@ -1,0 +1,160 @@
+#include "protocols/jaus/clients/DriveClient.h"
+
+#include <algorithm>
+
+#include "protocols/jaus/Messages.h"
+
+namespace ocu::jaus {
+
+bool DriveClient::startDriving(std::uint16_t ss) {
+    if (!m_ctx.config().mayControl())
+        return m_ctx.refuse(ss, "the monitor role may not drive");
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!r || !r->snap.controlledByUs)
+        return m_ctx.refuse(ss, "driving needs control of subsystem " + std::to_string(ss));
+    if (r->snap.emergency)
+        return m_ctx.refuse(ss, r->snap.callSign + " is in EMERGENCY");
+    // Drivers obey only in READY (AEP-4818 §4.2.2, §9 item 18).
+    if (r->snap.management != ManagementState::Ready) {
+        m_ctx.send(r->mobility(), encodeEmpty(msg::Resume));
+        m_ctx.send(r->mobility(), encodeEmpty(msg::QueryStatus));
+    }
+    State& s = m_state[ss];
+    s.active = true;
+    s.stopRepeatsLeft = 0;
+    s.drive = DriveCommand{};
+    s.drive.mode = m_ctx.config().velocityDrive ? DriveCommand::Mode::Velocity : DriveCommand::Mode::Wrench;
+    r->snap.driving = true;
+    s.lastSent = TimePoint{};
+    s.lastUpdate = m_ctx.now();
+    s.stale = false;
+    m_ctx.changed(*r);
+    return true;
+}
+
+bool DriveClient::setDriveCommand(std::uint16_t ss, DriveCommand c) {
+    RemoteSubsystem* r = m_ctx.find(ss);
+    auto it = m_state.find(ss);
+    if (!r || it == m_state.end() || !it->second.active)
+        return m_ctx.refuse(ss, "no drive session open for subsystem " + std::to_string(ss));
+    State& s = it->second;
+    // Clamp to the platform specifications (AEP-4818 §7.2, §9 item 24).
+    if (c.mode == DriveCommand::Mode::Wrench) {
+        c.linear = std::clamp(c.linear, -100.0, 100.0);
+        c.angular = std::clamp(c.angular, -100.0, 100.0);
+        c.brake = std::clamp(c.brake, 0.0, 100.0);
+    } else if (r->snap.platform) {
+        auto& p = *r->snap.platform;
+        if (p.maxForwardSpeed)
+            c.linear = std::min(c.linear, *p.maxForwardSpeed);
+        if (p.maxReverseSpeed)
+            c.linear = std::max(c.linear, -*p.maxReverseSpeed);
+        if (p.maxRotationalSpeed)
+            c.angular = std::clamp(c.angular, -*p.maxRotationalSpeed, *p.maxRotationalSpeed);
+    }
+    const bool changed = c.mode != s.drive.mode || c.linear != s.drive.linear ||
+                         c.angular != s.drive.angular || c.brake != s.drive.brake || s.stale;
+    s.drive = c;
+    s.lastUpdate = m_ctx.now();
+    s.stale = false;
+    // A new demand goes out at once (teleop latency); the periodic stream repeats it.
+    if (changed && r->mobility().subsystem)
+        send(*r, s, false);
+    return true;
+}
+
+bool DriveClient::stopDriving(std::uint16_t ss) {
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!r)
+        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+    return stop(*r, m_state[ss]);
+}
+
+bool DriveClient::stop(RemoteSubsystem& r, State& s) {
+    s.active = false;
+    // Several zero commands, never a single message (AEP-4818 §9 item 21).
+    s.stopRepeatsLeft = r.snap.controlledByUs ? m_ctx.config().stopRepeats : 0;
+    s.drive.linear = s.drive.angular = 0;
+    if (s.stopRepeatsLeft > 0) {
+        send(r, s, true);
+        --s.stopRepeatsLeft;
+    }
+    r.snap.driving = s.stopRepeatsLeft > 0;
+    m_ctx.changed(r);
+    return true;
+}
+
+void DriveClient::endSession(RemoteSubsystem& r, bool dropZeroTail) {
+    State& s = m_state[r.id()];
+    s.active = false;
+    if (dropZeroTail)
+        s.stopRepeatsLeft = 0;
+    r.snap.driving = false;
+}
+
+void DriveClient::beforeRelease(RemoteSubsystem& r) {
+    State& s = m_state[r.id()];
+    if (s.active)
+        stop(r, s);
+    // Zero drive commands go out before the release in the same tick order.
+    for (int i = 0; i < 2 && r.snap.controlledByUs; ++i)
+        send(r, s, true);
+    s.stopRepeatsLeft = 0;
+    r.snap.driving = false;
+}
+
+bool DriveClient::anyActive() const {
+    for (auto& [ss, s] : m_state)
+        if (s.active || s.stopRepeatsLeft > 0)
+            return true;
+    return false;
+}
+
+void DriveClient::send(RemoteSubsystem& r, State& s, bool zero) {
+    s.lastSent = m_ctx.now();
+    const DriveCommand c = s.drive;
+    if (c.mode == DriveCommand::Mode::Velocity) {
+        VelocityCommand v;
+        v.vx = zero ? 0.0 : c.linear;
+        v.yawRate = zero ? 0.0 : c.angular;
+        m_ctx.send(r.mobility(), encodeVelocityCommand(msg::SetVelocityCommand, v));
+    } else {
+        WrenchEffort w;
+        w.propLinX = zero ? 0.0 : c.linear;
+        w.propRotZ = zero ? 0.0 : c.angular;
+        w.resLinX = zero ? 0.0 : c.brake;
+        m_ctx.send(r.mobility(), encodeWrench(msg::SetWrenchEffort, w));
+    }
+    m_ctx.counters().add("tx.drive");
+}
+
+void DriveClient::tick(RemoteSubsystem& r, TimePoint now) {
+    auto it = m_state.find(r.id());
+    if (it == m_state.end())
+        return;
+    State& s = it->second;
+    const JausConfig& cfg = m_ctx.config();
+    // Drive command watchdog: the stream carries the console's demand only while the console refreshes it.
+    if (s.active && !s.stale && cfg.driveCommandTimeoutS > 0 &&
+        now - s.lastUpdate > secondsD(cfg.driveCommandTimeoutS) &&
+        (s.drive.linear != 0 || s.drive.angular != 0)) {
+        s.stale = true;
+        s.drive.linear = s.drive.angular = 0;
+        m_ctx.notify(Severity::Warning, EventKind::CommandRefused, r.id(),
+                     "drive demand for " + r.snap.callSign + " not refreshed within " +
+                         std::to_string(cfg.driveCommandTimeoutS) + " s: streaming zero");
+    }
+    if ((s.active || s.stopRepeatsLeft > 0) && now - s.lastSent >= periodOf(cfg.driveRateHz)) {
+        if (s.active) {
+            send(r, s, false);
+        } else {
+            send(r, s, true);
+            if (--s.stopRepeatsLeft == 0) {
+                r.snap.driving = false;
+                m_ctx.changed(r);
+            }
+        }
+    }
+}
+
+} // namespace ocu::jaus

@@ -1,0 +1,107 @@
+#include "protocols/jaus/clients/ManagementClient.h"
+
+#include "protocols/jaus/clients/DriveClient.h"
+#include "protocols/jaus/clients/EventsClient.h"
+
+namespace ocu::jaus {
+
+void ManagementClient::registerMessages(MessageTable& table) {
+    table.onVehicleMessage(msg::ReportStatus, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+        onStatus(r, src, p);
+    });
+}
+
+void ManagementClient::onServicesKnown(RemoteSubsystem& r) {
+    // Management state on change: an emergency shows at once, not at the next poll.
+    if (r.mobility().subsystem)
+        m_events.subscribe(r, r.mobility(), encodeEmpty(msg::QueryStatus), m_ctx.config().statusPollHz,
+                           EventType::EveryChange);
+}
+
+bool ManagementClient::command(std::uint16_t ss, std::uint16_t id, const char* what) {
+    if (!m_ctx.config().mayControl())
+        return m_ctx.refuse(ss, std::string("the monitor role may not ") + what);
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!r || !r->mobility().subsystem)
+        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+    if (!r->snap.controlledByUs)
+        return m_ctx.refuse(ss, std::string(what) + " needs control of " + r->snap.callSign);
+    m_ctx.send(r->mobility(), encodeEmpty(id));
+    m_ctx.send(r->mobility(), encodeEmpty(msg::QueryStatus));
+    return true;
+}
+
+void ManagementClient::sendEmergency(const JausId& target, EmergencyCode code) {
+    // SetEmergency goes to the Core Mobility Component at safety-critical priority (AEP-4818 §4.5.2.1.1).
+    m_ctx.send(target, encodeU16(msg::SetEmergency, std::uint16_t(code)),
+               SendOptions{Priority::Safety, false});
+    m_ctx.send(target, encodeEmpty(msg::QueryStatus));
+}
+
+bool ManagementClient::setEmergency(std::uint16_t ss, EmergencyCode code) {
+    // Allowed for every role, the monitor included: an E-stop must never be refused by the console.
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!r)
+        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+    const JausId target = r->mobility().subsystem ? r->mobility() : JausId{ss, 0xFF, 0xFF};
+    State& s = m_state[ss];
+    s.emergencyCode = code;
+    m_drive.endSession(*r, true);
+    // Repeated until ReportStatus shows EMERGENCY (see tick).
+    sendEmergency(target, code);
+    s.emergencyRetries = 5;
+    s.lastEmergencySent = m_ctx.now();
+    return true;
+}
+
+bool ManagementClient::clearEmergency(std::uint16_t ss) {
+    if (m_ctx.config().role == Role::Monitor)
+        return m_ctx.refuse(ss, "the monitor role may not clear an emergency");
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!r || !r->mobility().subsystem)
+        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+    State& s = m_state[ss];
+    s.emergencyRetries = 0;
+    m_ctx.send(r->mobility(), encodeU16(msg::ClearEmergency, std::uint16_t(s.emergencyCode)),
+               SendOptions{Priority::Safety, false});
+    m_ctx.send(r->mobility(), encodeEmpty(msg::QueryStatus));
+    return true;
+}
+
+void ManagementClient::onStatus(RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+    auto m = decodeReportStatus(p);
+    if (!m)
+        return m_ctx.rejected(src, m.error());
+    const auto old = r.snap.management;
+    r.snap.management = m->status;
+    const bool emergency = m->status == ManagementState::Emergency;
+    if (emergency && !r.snap.emergency)
+        m_ctx.notify(Severity::Error, EventKind::Emergency, r.id(), r.snap.callSign + " is in EMERGENCY");
+    if (!emergency && r.snap.emergency)
+        m_ctx.notify(Severity::Info, EventKind::EmergencyCleared, r.id(),
+                     r.snap.callSign + " left EMERGENCY");
+    r.snap.emergency = emergency;
+    if (emergency)
+        m_state[r.id()].emergencyRetries = 0;
+    if (old != m->status)
+        m_ctx.notify(m->status == ManagementState::Failure ? Severity::Error : Severity::Info,
+                     EventKind::ManagementChanged, r.id(),
+                     r.snap.callSign + " management " + toString(m->status));
+    m_ctx.changed(r);
+}
+
+void ManagementClient::tick(RemoteSubsystem& r, TimePoint now) {
+    const JausId mob = r.mobility();
+    State& s = m_state[r.id()];
+    if (mob.subsystem && r.reachable() && now - s.lastStatusPoll >= periodOf(m_ctx.config().statusPollHz)) {
+        s.lastStatusPoll = now;
+        m_ctx.send(mob, encodeEmpty(msg::QueryStatus));
+    }
+    if (s.emergencyRetries > 0 && now - s.lastEmergencySent >= std::chrono::milliseconds(200)) {
+        --s.emergencyRetries;
+        s.lastEmergencySent = now;
+        sendEmergency(mob.subsystem ? mob : JausId{r.id(), 0xFF, 0xFF}, s.emergencyCode);
+    }
+}
+
+} // namespace ocu::jaus

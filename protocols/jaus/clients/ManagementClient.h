@@ -1,0 +1,50 @@
+#pragma once
+// Management (AS5710A Management, AEP-4818 §4.2 and §4.5): the vehicle's management state (on-change event
+// on QueryStatus, polled at status_poll_hz too), Resume / Standby / Shutdown / Reset (need our control), and
+// the emergency stop: SetEmergency at safety priority, repeated every 200 ms (up to 5 times) until
+// ReportStatus shows EMERGENCY, allowed for every role; ClearEmergency with the same code, not for the
+// monitor.
+#include <cstdint>
+#include <map>
+
+#include "protocols/jaus/Messages.h"
+#include "protocols/jaus/clients/ClientService.h"
+
+namespace ocu::jaus {
+
+class DriveClient;
+class EventsClient;
+
+class ManagementClient : public ClientService {
+public:
+    // An emergency ends the drive session.
+    ManagementClient(ClientContext& context, EventsClient& events, DriveClient& drive)
+        : ClientService(context), m_events(events), m_drive(drive) {}
+
+    void registerMessages(MessageTable& table) override;
+    void onServicesKnown(RemoteSubsystem& remote) override;
+    void tick(RemoteSubsystem& remote, TimePoint now) override;
+    void forget(std::uint16_t subsystem) override { m_state.erase(subsystem); }
+
+    // Commands; each returns false and emits CommandRefused when not allowed.
+    // id: msg::Resume, Standby, Shutdown or Reset; what names it in the refusal.
+    bool command(std::uint16_t subsystem, std::uint16_t id, const char* what);
+    bool setEmergency(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety);
+    bool clearEmergency(std::uint16_t subsystem);
+
+private:
+    struct State {
+        int emergencyRetries = 0;
+        TimePoint lastEmergencySent{};
+        EmergencyCode emergencyCode = EmergencyCode::Safety;
+        TimePoint lastStatusPoll{};
+    };
+    void onStatus(RemoteSubsystem& remote, const JausId& source, ByteSpan payload);
+    void sendEmergency(const JausId& target, EmergencyCode code);
+
+    EventsClient& m_events;
+    DriveClient& m_drive;
+    std::map<std::uint16_t, State> m_state;
+};
+
+} // namespace ocu::jaus
