@@ -624,6 +624,7 @@ void UgvCore::physics(TimePoint now) {
         now - m_lastDrive > secondsD(m_cfg.driveTimeoutS)) {
         m_s.driveTimedOut = true;
         m_recoveryStart = TimePoint{};
+        m_counters.add("drive.timeouts"); // stays counted after recovery (tests tell a stop from a timeout)
         logWarning(kLog, m_cfg.callSign + ": drive timeout");
     }
     const bool mayMove = m_s.management == ManagementState::Ready && m_s.controller.subsystem != 0 &&

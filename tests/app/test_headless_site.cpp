@@ -90,7 +90,7 @@ private slots:
     }
     void clearStopNeedsConfirmation() {
         send(R"({"cmd":"clear_stop","id":"jaus:126","req":10})");
-        QVERIFY(waitFor([&] { return !result(10).isEmpty(); }, 3000));
+        QVERIFY(waitFor([&] { return !result(10).isEmpty(); }, 20000));
         QCOMPARE(result(10).value("ok").toBool(), false);
     }
     void stopAllStopsEveryMachineWithinTwoSeconds() {
@@ -103,7 +103,7 @@ private slots:
                 return m.value("jaus:126").value("control") == "me" &&
                        m.value("jaus:127").value("control") == "me";
             },
-            8000));
+            20000));
         // ISO 23725 machines must be known (not UNKNOWN) before the stop, so the change is visible.
         QVERIFY(waitFor(
             [&] {
@@ -112,7 +112,7 @@ private slots:
                         return false;
                 return true;
             },
-            8000));
+            20000));
         const int before = m_lines.size();
         QElapsedTimer t;
         t.start();

@@ -16,22 +16,23 @@ private slots:
         QTemporaryDir dir;
         const QString cfg = dir.filePath("sim-site.json");
         QProcess sim;
-        sim.start(OCU_SIM_BINARY, {"--duration", "40", "--ugvs", "1", "--trucks", "3", "--rollers", "1",
+        sim.start(OCU_SIM_BINARY, {"--duration", "100", "--ugvs", "1", "--trucks", "3", "--rollers", "1",
                                    "--separate-map-service", "--write-config", cfg});
         QVERIFY(sim.waitForStarted(10000));
-        QElapsedTimer t;
-        t.start();
-        while (!QFile::exists(cfg) && t.elapsed() < 20000)
-            QTest::qWait(100);
-        QTest::qWait(300);
-        QVERIFY2(QFile::exists(cfg), sim.readAllStandardError().constData());
-        QFile f(cfg);
-        QVERIFY(f.open(QIODevice::ReadOnly));
-        const QJsonObject site = QJsonDocument::fromJson(f.readAll()).object();
-        for (const char* k : {"site", "jaus", "iso23725", "osyris"})
-            QVERIFY2(site.contains(k), k);
+        // The file appears before its text is complete: wait until it parses as the whole configuration.
+        QJsonObject site;
+        auto written = [&] {
+            QFile f(cfg);
+            if (!f.open(QIODevice::ReadOnly))
+                return false;
+            QJsonParseError err{};
+            site = QJsonDocument::fromJson(f.readAll(), &err).object();
+            return err.error == QJsonParseError::NoError && site.contains("site") && site.contains("jaus") &&
+                   site.contains("iso23725") && site.contains("osyris");
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(written(), sim.readAllStandardError().constData(), 30000);
         // The AHS's map service on its own socket (ISO 23725 Q10): the written link names it.
-        const QJsonObject link = site["iso23725"]["links"][0].toObject();
+        const QJsonObject link = std::as_const(site)["iso23725"]["links"][0].toObject();
         QVERIFY(link["mapUrl"].toString().startsWith("ws://127.0.0.1:"));
         QVERIFY(link["mapUrl"].toString() != link["url"].toString());
 
@@ -39,13 +40,16 @@ private slots:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.remove("DISPLAY");
         ocu.setProcessEnvironment(env);
-        ocu.start(OCU_BINARY, {"--config", cfg, "--no-sim", "--headless", "--duration", "12"});
+        // No --duration: the console runs until its stdin ends (closed below), then exits 0.
+        ocu.start(OCU_BINARY, {"--config", cfg, "--no-sim", "--headless"});
         QVERIFY(ocu.waitForStarted(10000));
         QSet<QString> protocols, ids;
         bool mapComplete = false;
         QByteArray buf;
-        t.restart();
-        while (t.elapsed() < 20000 && !(protocols.size() == 3 && ids.size() >= 6 && mapComplete)) {
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < 60000 && !(protocols.size() == 3 && ids.size() >= 6 && mapComplete) &&
+               ocu.state() == QProcess::Running) {
             ocu.waitForReadyRead(100);
             buf += ocu.readAllStandardOutput();
             int nl;
@@ -66,7 +70,9 @@ private slots:
         QVERIFY(mapComplete);             // fetched over the separate map-service socket
         QVERIFY(ids.size() >= 1 + 3 + 2); // 1 UGV, 3 trucks, a paver and a roller
         ocu.closeWriteChannel();
-        ocu.waitForFinished(20000);
+        QVERIFY(ocu.waitForFinished(20000));
+        QCOMPARE(ocu.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(ocu.exitCode(), 0);
         sim.terminate(); // SIGTERM: ocu-sim stops its simulators and exits 0
         QVERIFY(sim.waitForFinished(10000));
         QCOMPARE(sim.exitStatus(), QProcess::NormalExit);

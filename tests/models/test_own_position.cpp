@@ -54,8 +54,8 @@ private slots:
         OwnPosition pos(GeoFrame({48.0, 11.0, 500.0}));
         QSignalSpy spy(&pos, &OwnPosition::fixChanged);
         QVERIFY(pos.startNmeaFile(path, true));
-        QTRY_VERIFY_WITH_TIMEOUT(spy.count() >= 1, 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(pos.fix().n > 100.0, 5000); // 0.06' = 0.001° north ≈ 111 m
+        QTRY_VERIFY_WITH_TIMEOUT(spy.count() >= 1, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(pos.fix().n > 100.0, 20000); // 0.06' = 0.001° north ≈ 111 m
         QVERIFY(std::abs(pos.fix().e) < 1.0);
         QVERIFY(!pos.startNmeaFile(dir.filePath(QStringLiteral("missing.nmea"))));
     }

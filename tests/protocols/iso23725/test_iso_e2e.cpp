@@ -98,7 +98,7 @@ private slots:
         QVERIFY(std::abs(map->origin.lat - (-23.36)) < 0.01);
 
         // All-stop Apply: status On (only from MachineAllStopV1), and every truck comes to rest.
-        QCOMPARE(rec.allStop(), AllStopState::Off);
+        QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::Off; })); // the AHS's status first
         stack.allStopApply("ahs");
         QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::On; }));
         auto st = stack.allStop("ahs");
@@ -133,7 +133,7 @@ private slots:
                        m.assignment->status == "Active";
             }) == 1;
         }));
-        QVERIFY(rec.hasEvent("Accepted"));
+        QVERIFY(waitFor([&] { return rec.hasEvent("Accepted"); })); // the response is its own message
         stack.requestAssignment("ahs", fleet[1].equipmentId,
                                 {AssignmentItem{"", "Offload", loadArea, {}, {}, {}}});
         QVERIFY(waitFor([&] { return rec.hasEvent("is not a dump area"); }));
@@ -152,7 +152,8 @@ private slots:
         // Map edited at the AHS: new summary, re-fetched.
         ahs.bumpMapChangeSet();
         QVERIFY(waitFor([&] { return stack.counters().get("map.complete") >= 2; }));
-        QCOMPARE(stack.map("ahs")->summary.changeSetMap, map->summary.changeSetMap + 1);
+        QVERIFY(
+            waitFor([&] { return stack.map("ahs")->summary.changeSetMap == map->summary.changeSetMap + 1; }));
         QCOMPARE(ahs.counters().get("sim.rx.rejected"), 0u);
         stack.stop();
     }
@@ -219,8 +220,11 @@ private slots:
             R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:17:42.210Z","EquipmentId":")" +
             truck + R"(","MachineAutonomyModeV1":{"AutonomyMode":5}})");
         QVERIFY(waitFor([&] { return stack.counters().get("rx.rejected.invalid_member") == 1; }));
-        QVERIFY(
-            rec.hasEvent("MachineAutonomyModeV1.AutonomyMode: expected an enumeration string, got number"));
+        // Counted first, then reported (io thread): wait for the event too.
+        QVERIFY(waitFor([&] {
+            return rec.hasEvent(
+                "MachineAutonomyModeV1.AutonomyMode: expected an enumeration string, got number");
+        }));
         ahs.sendRaw(
             R"({"Protocol":"Vendor-X","Version":1,"Timestamp":"2025-03-14T02:17:42.210Z","FooV9":{"a":1}})");
         QVERIFY(waitFor([&] { return stack.counters().get("rx.unknown_member") == 1; }));
@@ -236,12 +240,10 @@ private slots:
         // re-established.
         ahs.sendRaw(std::string(20u * 1024u * 1024u, ' '));
         QVERIFY(waitFor([&] { return stack.counters().get("rx.rejected.too_big") == 1; },
-                        std::chrono::seconds(20)));
-        QVERIFY(waitFor(
-            [&] {
-                return stack.counters().get("ws.sessions.opened") == 2 && rec.link("ahs") == LinkState::Up;
-            },
-            std::chrono::seconds(15)));
+                        std::chrono::seconds(40)));
+        QVERIFY(waitFor([&] {
+            return stack.counters().get("ws.sessions.opened") == 2 && rec.link("ahs") == LinkState::Up;
+        }));
         QVERIFY(waitFor([&] { return rec.machinesWith([](auto& m) { return m.stateKnown; }) == 6; }));
         stack.stop();
     }

@@ -47,7 +47,8 @@ TransportSettings loopback(std::uint16_t mcPort) {
     return t;
 }
 
-template <class Pred> bool runUntil(boost::asio::io_context& io, Pred p, int ms = 2000) {
+// Runs the io_context until p holds; generous, it returns as soon as p holds.
+template <class Pred> bool runUntil(boost::asio::io_context& io, Pred p, int ms = 10000) {
     for (int i = 0; i < ms / 10; ++i) {
         if (p())
             return true;

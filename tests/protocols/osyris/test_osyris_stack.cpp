@@ -50,7 +50,10 @@ struct Recorder : OsyrisListener {
     }
 };
 
-bool waitFor(const std::function<bool()>& pred, int ms) {
+// Generous: on an idle machine every condition below holds within a fraction of this.
+constexpr int kWaitMs = 30000;
+
+bool waitFor(const std::function<bool()>& pred, int ms = kWaitMs) {
     for (int i = 0; i < ms / 20; ++i) {
         if (pred())
             return true;
@@ -72,6 +75,14 @@ bool ocuComplete(OsyrisDemo& demo, OsyrisStack& ocu) {
     return true;
 }
 
+// Positions held by the simulated stations, all ribbons together.
+std::uint64_t siteCount(OsyrisDemo& demo) {
+    std::uint64_t n = 0;
+    for (std::size_t i = 0; i < demo.stationCount(); ++i)
+        n += demo.station(i).store()->totalCount();
+    return n;
+}
+
 } // namespace
 
 class TestOsyrisLoopback : public QObject {
@@ -87,20 +98,20 @@ private slots:
         Recorder rec;
         OsyrisStack ocu(demo.ocuConfig(), rec);
         QVERIFY2(ocu.start(&err), err.c_str());
-        QVERIFY(waitFor([&] { return rec.machineCount() >= 4; }, 10000));
+        QVERIFY(waitFor([&] { return rec.machineCount() >= 4; }));
         {
             std::lock_guard l(rec.m);
             QVERIFY(!rec.names.empty() && rec.names.count("Roller 1"));
             QVERIFY(rec.types.count("roller") && rec.types.count("paver"));
         }
-        QVERIFY2(waitFor([&] { return ocu.passCounts()->summary().coveredCells > 50; }, 15000),
+        QVERIFY2(waitFor([&] { return ocu.passCounts()->summary().coveredCells > 50; }),
                  "a pass-count patch appears");
-        QVERIFY(rec.passChanges > 0);
+        QVERIFY(waitFor([&] { return rec.passChanges > 0; })); // the listener hears of it (io thread)
         ocu.ping(1);
-        QVERIFY(waitFor([&] { return rec.pongs > 0; }, 5000));
+        QVERIFY(waitFor([&] { return rec.pongs > 0; }));
         ocu.sendText("OCU online");
-        QVERIFY(waitFor([&] { return ocu.counters().get("tx.msg") == 1; }, 2000));
-        QVERIFY(waitFor([&] { return rec.aliveCount() >= 5; }, 6000));
+        QVERIFY(waitFor([&] { return ocu.counters().get("tx.msg") == 1; }));
+        QVERIFY(waitFor([&] { return rec.aliveCount() >= 5; }));
         ocu.stop();
         demo.stop();
     }
@@ -117,17 +128,28 @@ private slots:
         OsyrisStack ocu(demo.ocuConfig(), rec);
         ocu.setImpairment(o.impairment);
         QVERIFY(ocu.start(&err));
-        std::this_thread::sleep_for(std::chrono::seconds(6));
+        // Impaired until the OCU and the stations have lost (and seen duplicated) enough datagrams to have
+        // gaps in every ribbon worth recovering; a fixed time would prove less on a slow machine.
+        auto lostSoFar = [&] {
+            std::uint64_t lost = ocu.counters().get("rx.impaired.lost");
+            for (std::size_t i = 0; i < demo.stationCount(); ++i)
+                lost += demo.station(i).counters().get("rx.impaired.lost");
+            return lost;
+        };
+        QVERIFY(waitFor([&] {
+            return lostSoFar() > 150 && ocu.counters().get("rx.impaired.duplicated") > 0 &&
+                   ocu.counters().get("rx.impaired.lost") > 20;
+        }));
         demo.setImpairment({});
         ocu.setImpairment({});
         demo.setPaused(true);
-        QVERIFY2(waitFor([&] { return ocuComplete(demo, ocu); }, 20000), "the OCU recovers every slot");
+        QVERIFY2(waitFor([&] { return ocuComplete(demo, ocu); }), "the OCU recovers every slot");
         for (std::size_t i = 0; i < demo.stationCount(); ++i)
             for (std::size_t j = 0; j < demo.stationCount(); ++j) {
                 auto idx = demo.station(j).config().stationIndex;
                 auto own = demo.station(j).store()->held(idx);
-                QVERIFY(waitFor([&] { return demo.station(i).store()->held(idx).containsAll(0, own.max()); },
-                                10000));
+                QVERIFY(
+                    waitFor([&] { return demo.station(i).store()->held(idx).containsAll(0, own.max()); }));
             }
         std::uint64_t lost = ocu.counters().get("rx.impaired.lost"), retx = ocu.counters().get("tx.retx");
         for (std::size_t i = 0; i < demo.stationCount(); ++i) {
@@ -181,8 +203,8 @@ private slots:
             p.flags = kPosValid | kPosAccuracyHigh | kPosForward;
             a.publishOwnPosition(p);
         }
-        QVERIFY(waitFor([&] { return b.store()->count(1) == 20; }, 5000));
-        QVERIFY(rb.machineCount() == 1);
+        QVERIFY(waitFor([&] { return b.store()->count(1) == 20; }));
+        QVERIFY(waitFor([&] { return rb.machineCount() == 1; }));
         a.stop();
         b.stop();
     }
@@ -203,17 +225,19 @@ private slots:
             Recorder rec;
             OsyrisStack ocu(cfg, rec);
             QVERIFY(ocu.start(&err));
-            QVERIFY(waitFor([&] { return ocu.store()->totalCount() > 40; }, 10000));
+            QVERIFY(waitFor([&] { return ocu.store()->totalCount() > 40; }));
             ocu.stop();
             had = ocu.store()->totalCount();
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        // The site goes on without the OCU: a gap of at least 20 positions to fetch after the restart.
+        const std::uint64_t atStop = siteCount(demo);
+        QVERIFY(waitFor([&] { return siteCount(demo) >= atStop + 20; }));
         demo.setPaused(true);
         Recorder rec;
         OsyrisStack ocu(cfg, rec);
         QVERIFY(ocu.start(&err));
         QVERIFY(ocu.store()->totalCount() >= had);
-        QVERIFY(waitFor([&] { return ocuComplete(demo, ocu); }, 15000));
+        QVERIFY(waitFor([&] { return ocuComplete(demo, ocu); }));
         QCOMPARE(ocu.counters().get("tx.all"), std::uint64_t(0)); // only the gap is asked for
         ocu.stop();
         demo.stop();

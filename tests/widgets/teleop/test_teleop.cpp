@@ -10,12 +10,23 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QTimer>
 #include <QtTest>
 
 using namespace ocu;
 
 class TestTeleop : public QObject {
     Q_OBJECT
+
+    // The controller's stream timer: waits count its periods, not wall time, so a loaded machine that
+    // delivers fewer ticks per second cannot make an assertion pass or fail by accident.
+    static QTimer* streamTimer(TeleopController& t) { return t.findChild<QTimer*>(); }
+    static bool waitPeriods(TeleopController& t, int periods) {
+        QSignalSpy ticks(streamTimer(t), &QTimer::timeout);
+        for (int guard = 0; ticks.count() < periods && guard < 100; ++guard)
+            ticks.wait(200);
+        return ticks.count() >= periods;
+    }
 
     static DriveAxes axesAt(const QSignalSpy& spy, int i) { return spy.at(i).at(0).value<DriveAxes>(); }
     static int countZeros(const QSignalSpy& spy, int from = 0) {
@@ -103,7 +114,7 @@ private slots:
         t.setEnabled(true);
         QSignalSpy spy(&t, &TeleopController::command);
         QVERIFY(t.handleKey(Qt::Key_W, true));
-        QTest::qWait(150);
+        QVERIFY(waitPeriods(t, 3));
         QCOMPARE(spy.count(), 0);
         QVERIFY(t.handleKey(Qt::Key_Shift, true));
         QCOMPARE(spy.count(), 1);                      // at once, not at the next period
@@ -120,7 +131,7 @@ private slots:
         t.handleKey(Qt::Key_Shift, true);
         t.handleKey(Qt::Key_Up, true);
         t.handleKey(Qt::Key_Right, true); // +X forward, positive rotation = right turn
-        QTest::qWait(300);
+        QVERIFY(waitPeriods(t, 4));       // the demand is repeated every period
         QVERIFY2(spy.count() >= 4, qPrintable(QString::number(spy.count())));
         QCOMPARE(axesAt(spy, spy.count() - 1), (DriveAxes{1.0, 1.0}));
         QCOMPARE(countZeros(spy), 0);
@@ -129,11 +140,11 @@ private slots:
         t.handleKey(Qt::Key_Right, false);
         QCOMPARE(axesAt(spy, spy.count() - 1), (DriveAxes{})); // zero sent on release at once
         QCOMPARE(stopped.count(), 1);
-        QTest::qWait(500); // 10 periods: the zero is repeated, then the stream goes quiet
+        QVERIFY(waitPeriods(t, 10)); // the zero is repeated, then the stream goes quiet
         const int zeros = countZeros(spy, before);
         QCOMPARE(zeros, 1 + TeleopController::kZeroRepeats);
         const int after = spy.count();
-        QTest::qWait(150);
+        QVERIFY(waitPeriods(t, 3));
         QCOMPARE(spy.count(), after);
     }
     void releasingDeadManStops() {
@@ -158,7 +169,7 @@ private slots:
         QVERIFY(axesAt(spy, spy.count() - 1).isZero());
         QCOMPARE(stopped.at(0).at(0).toString(), QString("focus lost"));
         // Keys held before the focus loss do not resume driving.
-        QTest::qWait(120);
+        QVERIFY(waitPeriods(t, 3));
         QVERIFY(axesAt(spy, spy.count() - 1).isZero());
         QVERIFY(!t.isDriving());
     }
@@ -172,14 +183,14 @@ private slots:
         QSignalSpy stopped(&t, &TeleopController::stopped);
         dev.setAxes({1.0, -0.5});
         QCOMPARE(axesAt(spy, 0), (DriveAxes{0.8, -0.4}));
-        QTest::qWait(120);
+        QVERIFY(waitPeriods(t, 2));
         QVERIFY(t.isDriving());
         QCOMPARE(t.activeSource(), TeleopController::Source::Device);
         dev.unplug();
         QVERIFY(axesAt(spy, spy.count() - 1).isZero());
         QCOMPARE(stopped.count(), 1);
         QCOMPARE(stopped.at(0).at(0).toString(), QString("joystick unplugged"));
-        QTest::qWait(120);
+        QVERIFY(waitPeriods(t, 3));
         QVERIFY(axesAt(spy, spy.count() - 1).isZero());
     }
     void disablingStops() {

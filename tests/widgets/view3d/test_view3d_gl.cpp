@@ -50,10 +50,10 @@ private slots:
         m_view->resize(800, 600);
         m_view->setScene(makeSite());
         m_view->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
+        QVERIFY(QTest::qWaitForWindowExposed(m_view.get(), 30000)); // an X server round trip
         QCOMPARE(m_view->backend(), Site3DView::Backend::OpenGLWidget);
         QVERIFY(gl() != nullptr);
-        QTRY_VERIFY(gl()->isInitialized());
+        QTRY_VERIFY_WITH_TIMEOUT(gl()->isInitialized(), 30000);
     }
     void cleanup() { m_view.reset(); }
 
@@ -146,9 +146,9 @@ private slots:
                                &QOpenGLContext::aboutToBeDestroyed);
         layout->addWidget(view);
         other.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&other));
+        QVERIFY(QTest::qWaitForWindowExposed(&other, 30000));
         auto* glw = qobject_cast<VtkOpenGLWidget*>(view->viewWidget());
-        QTRY_VERIFY(glw->isInitialized());
+        QTRY_VERIFY_WITH_TIMEOUT(glw->isInitialized(), 30000);
         const QImage img = glw->grabFramebuffer();
         QCOMPARE(contextGone.count(), 1); // the old context really went away
         SiteSceneRenderer& scene = view->sceneRenderer();
