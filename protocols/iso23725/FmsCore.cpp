@@ -74,6 +74,7 @@ bool FmsCore::upOrRefuse(const char* what) {
     if (m_state != LinkState::Up) {
         // §2.1 rule 1: commands are never queued while the link is down.
         m_counters.add("cmd.refused.link_down");
+        m_lastRefusal = "link " + m_link.name + " is " + toString(m_state);
         event(IsoSeverity::Warning, std::string(what) + " refused: link '" + m_link.name + "' is " +
                                         toString(m_state) + " (commands are not queued)");
         return false;
@@ -515,6 +516,7 @@ bool FmsCore::allStopRemove() {
     // "Same ID used in apply must be used when removing" [OA-iso].
     std::optional<Guid> id = m_allStop.activeId ? m_allStop.activeId : m_allStop.pendingId;
     if (!id) {
+        m_lastRefusal = "no active all-stop id on link " + m_link.name;
         event(IsoSeverity::Warning, "all-stop Remove refused on " + m_link.name + ": no active all-stop id");
         return false;
     }

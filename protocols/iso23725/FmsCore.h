@@ -80,6 +80,8 @@ public:
     // ---- state ----
     LinkState state() const { return m_state; }
     const AllStopStatus& allStop() const { return m_allStop; }
+    // The reason of the latest refused command (a command outcome's reason).
+    const std::string& lastRefusal() const { return m_lastRefusal; }
     const std::map<Guid, IsoMachineSnapshot>& machines() const { return m_machines; }
     std::shared_ptr<const MapModel> map() const { return m_mapService.map(); }
     const std::optional<FleetDefinitionV2>& ahsFleet() const { return m_ahsFleet; }
@@ -127,6 +129,7 @@ private:
     std::optional<FleetDefinitionV2> m_ahsFleet;
     std::map<Guid, IsoMachineSnapshot> m_machines;
     AllStopStatus m_allStop;
+    std::string m_lastRefusal;
     std::set<Guid> m_issuedIds;
     Deadline m_ackDeadline;
     Deadline m_statusDeadline;

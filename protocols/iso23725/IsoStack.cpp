@@ -250,6 +250,28 @@ void IsoStack::allStopRemove(const std::string& link) {
     });
 }
 
+void IsoStack::allStopApply(const std::string& link, OutcomeCallback done) {
+    m_impl->io.post([d = m_impl.get(), link, done = std::move(done)] {
+        TargetOutcome o{linkTarget(link), false, "no ISO 23725 link named " + link};
+        if (auto* s = d->session(link, "all-stop Apply")) {
+            o.sent = s->allStopApply();
+            o.reason = o.sent ? std::string() : s->lastRefusal();
+        }
+        done({std::move(o)});
+    });
+}
+
+void IsoStack::allStopRemove(const std::string& link, OutcomeCallback done) {
+    m_impl->io.post([d = m_impl.get(), link, done = std::move(done)] {
+        TargetOutcome o{linkTarget(link), false, "no ISO 23725 link named " + link};
+        if (auto* s = d->session(link, "all-stop Remove")) {
+            o.sent = s->allStopRemove();
+            o.reason = o.sent ? std::string() : s->lastRefusal();
+        }
+        done({std::move(o)});
+    });
+}
+
 void IsoStack::requestAssignment(const std::string& link, const Guid& equipmentId,
                                  std::vector<AssignmentItem> items) {
     m_impl->io.post([d = m_impl.get(), link, equipmentId, items = std::move(items)]() mutable {

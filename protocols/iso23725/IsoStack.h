@@ -5,6 +5,7 @@
 // batches (IsoListener::onMachinePositions) at most 5 ms after they arrived.
 #include "protocols/iso23725/FmsCore.h"
 
+#include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 
 #include <map>
@@ -30,6 +31,11 @@ public:
     void allStopApply(const std::string& link);
     // Removes with the id of the active stop (ours or, after operator confirmation, an external one).
     void allStopRemove(const std::string& link);
+    // The same with their outcome (issue 13 §1): `done` runs once on the io thread with one TargetOutcome for
+    // the link (target linkTarget(link)); never when the stack is not running.
+    void allStopApply(const std::string& link, OutcomeCallback done);
+    void allStopRemove(const std::string& link, OutcomeCallback done);
+    static std::string linkTarget(const std::string& link) { return "iso23725 link " + link; }
     // Sends HaulTruckAssignmentRequestV2 (first = current, then future); empty AssignmentIds are generated.
     void requestAssignment(const std::string& link, const Guid& equipmentId,
                            std::vector<AssignmentItem> items);

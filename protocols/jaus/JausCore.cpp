@@ -88,4 +88,15 @@ void JausCore::tick() {
     }
 }
 
+std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code) {
+    std::vector<TargetOutcome> out;
+    for (std::uint16_t ss : subsystems())
+        out.push_back(outcome(ss, setEmergency(ss, code)));
+    return out;
+}
+
+TargetOutcome JausCore::outcome(std::uint16_t subsystem, bool sent) const {
+    return TargetOutcome{targetId(subsystem), sent, sent ? std::string() : m_ctx.lastRefusal()};
+}
+
 } // namespace ocu::jaus

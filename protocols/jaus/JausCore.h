@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "protocols/common/Clock.h"
+#include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausOutput.h"
@@ -59,6 +60,13 @@ public:
         return m_drive.setDriveCommand(subsystem, command);
     }
     bool stopDriving(std::uint16_t subsystem) { return m_drive.stopDriving(subsystem); }
+    // STOP ALL (issue 13 §2): SetEmergency to every discovered subsystem, whether this console controls it
+    // or not; one outcome per subsystem.
+    std::vector<TargetOutcome> setEmergencyAll(EmergencyCode code = EmergencyCode::Safety);
+    // The outcome of a command just run for one subsystem: sent, or not sent with the refusal's reason.
+    TargetOutcome outcome(std::uint16_t subsystem, bool sent) const;
+    static std::string targetId(std::uint16_t subsystem) { return "jaus:" + std::to_string(subsystem); }
+
     // Starts discovery now (also done on the first tick).
     void discoverNow() { m_discovery.discoverNow(); }
 

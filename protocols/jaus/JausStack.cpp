@@ -158,6 +158,29 @@ void JausStack::discoverNow() {
     OCU_JAUS_POST((d->core.discoverNow(), 0));
 }
 
+#define OCU_JAUS_OUTCOME(ss, expr)                                                                           \
+    do {                                                                                                     \
+        Impl* d = m_impl.get();                                                                              \
+        d->post([=, done = std::move(done)] { done({d->core.outcome(ss, (expr))}); });                       \
+    } while (0)
+
+void JausStack::requestControl(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.requestControl(ss));
+}
+void JausStack::releaseControl(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.releaseControl(ss));
+}
+void JausStack::setEmergency(std::uint16_t ss, EmergencyCode code, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.setEmergency(ss, code));
+}
+void JausStack::clearEmergency(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.clearEmergency(ss));
+}
+void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
+    Impl* d = m_impl.get();
+    d->post([=, done = std::move(done)] { done(d->core.setEmergencyAll(code)); });
+}
+
 #undef OCU_JAUS_POST
 
 void JausStack::setTransmitFaults(double loss, int delayMs) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "protocols/common/Clock.h"
+#include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausTypes.h"
@@ -39,6 +40,16 @@ public:
     void setDriveCommand(std::uint16_t subsystem, DriveCommand command);
     void stopDriving(std::uint16_t subsystem);
     void discoverNow();
+
+    // The same commands with their outcome (issue 13 §1): `done` runs once on the io thread with one
+    // TargetOutcome per subsystem addressed (sent, or the reason it was refused). If the stack is not
+    // running, `done` never runs: the caller's deadline decides.
+    void requestControl(std::uint16_t subsystem, OutcomeCallback done);
+    void releaseControl(std::uint16_t subsystem, OutcomeCallback done);
+    void setEmergency(std::uint16_t subsystem, EmergencyCode code, OutcomeCallback done);
+    void clearEmergency(std::uint16_t subsystem, OutcomeCallback done);
+    // STOP ALL: SetEmergency to every discovered subsystem (controlled by this console or not).
+    void setEmergencyAll(EmergencyCode code, OutcomeCallback done);
 
     // Fault injection on what the OCU sends (e.g. loss = 1: the OCU falls silent). Tests and ocu-sim drills.
     void setTransmitFaults(double loss, int delayMs = 0);

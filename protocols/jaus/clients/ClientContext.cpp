@@ -39,6 +39,7 @@ void ClientContext::changed(const RemoteSubsystem& r) {
 
 bool ClientContext::refuse(std::uint16_t ss, const std::string& why) {
     m_counters.add("cmd.refused");
+    m_lastRefusal = why;
     notify(Severity::Warning, EventKind::CommandRefused, ss, why);
     return false;
 }

@@ -52,6 +52,8 @@ public:
     void changed(const RemoteSubsystem& remote);
     // A command the console does not send: counter, CommandRefused event; returns false.
     bool refuse(std::uint16_t subsystem, const std::string& why);
+    // The reason given by the latest refuse() (the command outcome's reason).
+    const std::string& lastRefusal() const { return m_lastRefusal; }
     // A message that did not decode: counter rx.rejected.<reason> and a log line.
     void rejected(const JausId& source, const std::string& error);
 
@@ -69,6 +71,7 @@ private:
     JausOutput& m_out;
     const Clock& m_clock;
     Counters& m_counters;
+    std::string m_lastRefusal;
     JausId m_self;
     std::map<std::uint16_t, RemoteSubsystem> m_remotes;
 };
