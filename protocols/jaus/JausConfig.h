@@ -62,6 +62,11 @@ struct JausConfig {
 
     JausId ownId() const { return JausId{subsystemId, nodeId, componentId}; }
     bool mayControl() const { return role != Role::Monitor && authority > 0; }
+    // The stop rule, decided here only (issue 13 §2; the bridge, panels and headless ask it): every role may
+    // set an emergency (the Management service accepts SetEmergency from any client, AS6009 Management),
+    // only roles with command rights may clear one.
+    bool mayStop() const { return true; }
+    bool mayClearStop() const { return mayControl(); }
 };
 
 // Reads the "jaus" object strictly; errors go to the ConfigErrors of the section. Calls section.finish().

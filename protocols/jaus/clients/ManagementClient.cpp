@@ -55,8 +55,8 @@ bool ManagementClient::setEmergency(std::uint16_t ss, EmergencyCode code) {
 }
 
 bool ManagementClient::clearEmergency(std::uint16_t ss) {
-    if (m_ctx.config().role == Role::Monitor)
-        return m_ctx.refuse(ss, "the monitor role may not clear an emergency");
+    if (!m_ctx.config().mayClearStop())
+        return m_ctx.refuse(ss, "this console's role may not clear an emergency (monitor or authority 0)");
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r || !r->mobility().subsystem)
         return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
