@@ -338,10 +338,67 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
     if (isNew && (newest || !rs.reported || p.slot > rs.lastReported)) {
         rs.reported = true;
         rs.lastReported = p.slot;
-        if (m_listener)
-            m_listener->onMachinePosition(
-                makeSnapshot(owner, p, m_geo ? &m_frame : nullptr, nameOf(owner), typeOf(owner)));
+        // Implausible positions stay in the ribbon (the slot is complete for everyone's repair) but reach
+        // neither the grid (PassCountGrid applies the same limits) nor a model (issue 14 §2).
+        const PositionFault fault = checkPosition(p, m_cfg.passCount.plausibility);
+        if (fault != PositionFault::None)
+            implausible(owner, p, fault, now);
+        if (m_listener) {
+            if (fault == PositionFault::None) {
+                m_listener->onMachinePosition(
+                    makeSnapshot(owner, p, m_geo ? &m_frame : nullptr, nameOf(owner), typeOf(owner)));
+            } else {
+                MachineSnapshot bad;
+                bad.idx = owner;
+                bad.name = nameOf(owner);
+                bad.type = typeOf(owner);
+                bad.slot = p.slot;
+                bad.flags = p.flags;
+                bad.timestampMs = p.time ? fileTimeToUnixMillis(p.time) : 0;
+                bad.implausible = std::string("implausible position ignored (") + toString(fault) + ")";
+                m_listener->onMachinePosition(bad);
+            }
+        }
+    } else if (isNew) {
+        if (const PositionFault fault = checkPosition(p, m_cfg.passCount.plausibility);
+            fault != PositionFault::None)
+            implausible(owner, p, fault, now);
     }
+}
+
+void StationCore::implausible(std::uint8_t owner, const CmPos& p, PositionFault fault, TimePoint now) {
+    m_counters.add(std::string("rx.implausible.") + toString(fault));
+    // Bounded: at most 254 owners x 4 causes.
+    auto [it, first] = m_implausibleEventAt.try_emplace({owner, fault}, now);
+    if (!first && now - it->second < kImplausibleEventGap)
+        return;
+    it->second = now;
+    const auto& l = m_cfg.passCount.plausibility;
+    std::string what;
+    switch (fault) {
+    case PositionFault::NonFinite:
+        what = "a coordinate, speed or width is not a finite number";
+        break;
+    case PositionFault::OutsideExtent:
+        what = "x/y/z beyond " + std::to_string(static_cast<long long>(l.extentM)) +
+               " m from the worksite origin";
+        break;
+    case PositionFault::DrumWidth:
+        what = "drum width " + std::to_string(p.dx) + " m outside " + std::to_string(l.minWidthM) + "-" +
+               std::to_string(l.maxWidthM) + " m";
+        break;
+    case PositionFault::Speed:
+        what = "speed " + std::to_string(p.speed) + " m/s above " + std::to_string(l.maxSpeedMps) + " m/s";
+        break;
+    case PositionFault::None:
+        return;
+    }
+    const std::string name = nameOf(owner);
+    event(Severity::Warning, "OSYRIS station " + std::to_string(owner) +
+                                 (name.empty() ? "" : " (" + name + ")") + ": position of slot " +
+                                 std::to_string(p.slot) + " ignored: " + what +
+                                 " (counted in rx.implausible." + toString(fault) +
+                                 "; one warning per machine and cause every 30 s)");
 }
 
 void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint now) {

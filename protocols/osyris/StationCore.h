@@ -47,6 +47,9 @@ struct MachineSnapshot {
     int accuracy = 0;             // 0 none, 1 low, 2 medium, 3 high
     std::int64_t timestampMs = 0; // Unix ms from the FILETIME
     std::uint32_t slot = 0;
+    // Set when the position broke a plausibility rule (issue 14 §2): the reason for the operator; position,
+    // speed and width are then not filled in (the machine keeps its last good position in the models).
+    std::string implausible;
 };
 
 // Callbacks run on the station's io thread (or the test's thread); they must not block.
@@ -155,6 +158,9 @@ private:
     std::string typeOf(std::uint8_t owner) const;
     void publishPassCounts(TimePoint now);
     void event(Severity s, const std::string& text);
+    // Counts an implausible position and raises at most one event per machine and cause per
+    // kImplausibleEventGap.
+    void implausible(std::uint8_t owner, const CmPos& p, PositionFault fault, TimePoint now);
     void reject(const std::string& reason, const std::string& text);
 
     OsyrisConfig m_cfg;
@@ -169,6 +175,8 @@ private:
     bool m_geo = false;
 
     std::map<std::uint8_t, RibbonState> m_ribbons;
+    static constexpr Duration kImplausibleEventGap = std::chrono::seconds(30);
+    std::map<std::pair<std::uint8_t, PositionFault>, TimePoint> m_implausibleEventAt;
     std::vector<Asset> m_assets;
     std::vector<Suppressed> m_suppressed;
     std::map<std::uint8_t, TimePoint> m_lastHeard;
