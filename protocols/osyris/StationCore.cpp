@@ -301,6 +301,8 @@ void StationCore::noteKnown(std::uint8_t owner, std::uint32_t from, std::uint32_
 void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::vector<PosProp>* props,
                                  TimePoint now) {
     std::uint8_t owner = h.whose;
+    if (h.who == owner)
+        m_ownerShown[owner] = std::max(m_ownerShown[owner], p.slot);
     PositionRecord rec{p, props ? *props : std::vector<PosProp>{}};
     bool isNew = m_store.put(owner, rec);
     if (!isNew && props)
@@ -546,8 +548,25 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         m_counters.add("rx.alive");
         std::uint8_t owner = h.whose;
         bool hasRange = r.from <= r.to && r.to != kSlotLast;
-        if (owner < kIdxNobody && hasRange)
-            noteKnown(owner, r.from, r.to);
+        if (owner < kIdxNobody && hasRange) {
+            // Phantom ranges (issue 14 §4): too wide to be a machine's ribbon, or (from a third station) far
+            // beyond anything the owner itself showed. Ignored with a counter; NAKing them cost endless
+            // datagrams.
+            auto shown = m_ownerShown.find(owner);
+            const bool tooWide = r.to - r.from >= kMaxAnnouncedSpan;
+            const bool tooFarAhead = who != owner && shown != m_ownerShown.end() &&
+                                     std::uint64_t(r.to) > std::uint64_t(shown->second) + kMaxAnnouncedAhead;
+            if (tooWide || tooFarAhead) {
+                reject(tooWide ? "alive_range_too_wide" : "alive_range_ahead",
+                       "ALIVE from " + std::to_string(who) + " announces slots " + std::to_string(r.from) +
+                           "-" + std::to_string(r.to) + " of station " + std::to_string(owner));
+                hasRange = false;
+            } else {
+                if (who == owner)
+                    m_ownerShown[owner] = std::max(m_ownerShown[owner], r.to);
+                noteKnown(owner, r.from, r.to);
+            }
+        }
         if (owner == who && m_listener)
             m_listener->onStationAlive(who, hasRange ? std::optional<SlotRange>(SlotRange{r.from, r.to})
                                                      : std::nullopt);

@@ -177,6 +177,13 @@ private:
     std::map<std::uint8_t, RibbonState> m_ribbons;
     static constexpr Duration kImplausibleEventGap = std::chrono::seconds(30);
     std::map<std::pair<std::uint8_t, PositionFault>, TimePoint> m_implausibleEventAt;
+    std::uint8_t m_nakTurn = 0xFF; // the ribbon whose gaps were asked for first on the last Beat (fairness)
+    // ALIVE ranges wider than this are not believed (issue 14 §4): 2^22 slots are 116 h of a machine at 10
+    // Hz.
+    static constexpr std::uint32_t kMaxAnnouncedSpan = 1u << 22;
+    // A third station may announce another's ribbon at most this far beyond what that owner itself showed.
+    static constexpr std::uint32_t kMaxAnnouncedAhead = 1u << 16;
+    std::map<std::uint8_t, std::uint32_t> m_ownerShown; // highest slot each owner sent or announced itself
     std::vector<Asset> m_assets;
     std::vector<Suppressed> m_suppressed;
     std::map<std::uint8_t, TimePoint> m_lastHeard;

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 
 using namespace ocu;
 using namespace ocu::osyris;
@@ -138,6 +139,59 @@ private slots:
         clock.advance(seconds(31)); // the rate limit is per 30 s: a new warning after that
         receive(pos(6, 6, 1, 1e6f));
         QCOMPARE(int(rec.warnings.size()), 3);
+    }
+
+    void phantomRangesNeitherWinNorStarveTheRealRibbons() {
+        // Issue 14 §4: one ALIVE announcing slots 0..0xFFFFFFFE made the console NAK that phantom gap for
+        // ever and, after ~12 s, no real roller's gap was asked for again. Two real rollers with a gap each,
+        // a phantom station with an absurd range and another with a wide but believable one.
+        FakeClock clock;
+        auto store = RibbonStore::inMemory();
+        OsyrisConfig cfg;
+        cfg.stationIndex = 200;
+        cfg.beatMs = 100;
+        cfg.maxNaksPerBeat = 1; // the scarcest budget: fairness must still reach every ribbon
+        std::map<std::uint8_t, int> naks;
+        StationCore core(cfg, clock, *store, nullptr, nullptr, [&](const Bytes& d) {
+            for (const auto& m : decodeDatagram(d).messages)
+                if (auto* r = std::get_if<CmRequest>(&m.body); r && r->type == RequestType::Nak)
+                    ++naks[m.header.whose];
+        });
+        core.start();
+        auto receive = [&](std::uint8_t who, std::uint8_t whose, const CmPos* p, const CmRequest* r) {
+            Bytes b;
+            if (p)
+                encodePos(b, who, whose, *p);
+            if (r)
+                encodeRequest(b, who, whose, *r);
+            core.receive(b);
+        };
+        for (std::uint8_t owner : {1, 2})
+            for (std::uint32_t s : {0u, 1u, 2u, 40u, 41u}) { // slots 3..39 missing
+                const CmPos p = pos(s, float(s), float(owner));
+                receive(owner, owner, &p, nullptr);
+            }
+        const CmRequest absurd{RequestType::Alive, 0, 0xFFFFFFFEu, 0, 0};
+        receive(9, 9, nullptr, &absurd);
+        QCOMPARE(core.counters().get("rx.rejected.alive_range_too_wide"), std::uint64_t(1));
+        const CmRequest wide{RequestType::Alive, 0, (1u << 22) - 2, 0, 0};
+        receive(8, 8, nullptr, &wide);
+        const CmRequest ahead{RequestType::Alive, 0, 3'000'000u, 0, 0}; // a third station about roller 1
+        receive(8, 1, nullptr, &ahead);
+        QCOMPARE(core.counters().get("rx.rejected.alive_range_ahead"), std::uint64_t(1));
+        for (int beat = 0; beat < 40; ++beat) {
+            clock.advance(milliseconds(100));
+            core.tick();
+        }
+        // Unanswered, a gap is asked for again after ttlBeats (20): twice in 40 Beats is every chance it had;
+        // sorted newest first across ribbons (the old order) the wide phantom took all 40 and the rollers
+        // none.
+        QVERIFY2(naks[1] >= 2 && naks[2] >= 2,
+                 qPrintable(QString("roller 1: %1, roller 2: %2, wide phantom: %3")
+                                .arg(naks[1])
+                                .arg(naks[2])
+                                .arg(naks[8])));
+        QCOMPARE(naks.count(9), std::size_t(0)); // the absurd range is never asked for
     }
 
     void limitsComeFromTheConfiguration() {
