@@ -368,6 +368,21 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
     }
 }
 
+bool StationCore::answerAllowed(std::uint8_t requester, std::uint8_t whose, RequestType type, TimePoint now) {
+    // Amplification bound (issue 14 §4): one answer per requester, addressed ribbon and type per Beat. 50
+    // ALLs in one datagram made the console send 206 messages; now one requester's datagram costs at most one
+    // ALL answer for all ribbons (newest position + ALIVE per ribbon held) plus one per ribbon addressed
+    // singly, i.e. at most 4 messages per ribbon held, and one PONG. Bounded table: 255 x 256 x 2 entries at
+    // most.
+    auto [it, first] = m_answeredAt.try_emplace({requester, whose, type}, now);
+    if (!first && now - it->second < beats(1)) {
+        m_counters.add(type == RequestType::All ? "rx.limited.all" : "rx.limited.ping");
+        return false;
+    }
+    it->second = now;
+    return true;
+}
+
 void StationCore::implausible(std::uint8_t owner, const CmPos& p, PositionFault fault, TimePoint now) {
     m_counters.add(std::string("rx.implausible.") + toString(fault));
     // Bounded: at most 254 owners x 4 causes.
@@ -490,6 +505,8 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         m_counters.add("rx.all");
         if (!(m_cfg.active & kActiveAnswerRequests))
             return;
+        if (!answerAllowed(who, h.whose, RequestType::All, now))
+            return;
         for (auto owner : m_store.machines()) {
             if (h.whose != kIdxAll && h.whose != owner)
                 continue;
@@ -522,6 +539,8 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
     case RequestType::Ping: {
         m_counters.add("rx.ping");
         if (h.whose != idx() && h.whose != kIdxAll)
+            return;
+        if (!answerAllowed(who, h.whose, RequestType::Ping, now))
             return;
         auto own = ownPosition();
         enqueueRequest(who, {RequestType::Pong, 0, 0, own ? own->x : 0.f, own ? own->y : 0.f});

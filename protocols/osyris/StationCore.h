@@ -25,6 +25,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace ocu::osyris {
@@ -177,6 +178,8 @@ private:
     std::map<std::uint8_t, RibbonState> m_ribbons;
     static constexpr Duration kImplausibleEventGap = std::chrono::seconds(30);
     std::map<std::pair<std::uint8_t, PositionFault>, TimePoint> m_implausibleEventAt;
+    bool answerAllowed(std::uint8_t requester, std::uint8_t whose, RequestType type, TimePoint now);
+    std::map<std::tuple<std::uint8_t, std::uint8_t, RequestType>, TimePoint> m_answeredAt;
     std::uint8_t m_nakTurn = 0xFF; // the ribbon whose gaps were asked for first on the last Beat (fairness)
     // ALIVE ranges wider than this are not believed (issue 14 §4): 2^22 slots are 116 h of a machine at 10
     // Hz.

@@ -194,6 +194,41 @@ private slots:
         QCOMPARE(naks.count(9), std::size_t(0)); // the absurd range is never asked for
     }
 
+    void oneDatagramCostsABoundedAnswer() {
+        // Issue 14 §4: one 1,250-byte datagram of 50 ALL requests made the console send 206 messages.
+        FakeClock clock;
+        auto store = RibbonStore::inMemory();
+        OsyrisConfig cfg;
+        cfg.stationIndex = 200;
+        StationCore core(cfg, clock, *store, nullptr, nullptr, [](const Bytes&) {});
+        core.start();
+        for (std::uint8_t owner : {1, 2}) {
+            Bytes b;
+            encodePos(b, owner, owner, pos(0, 1, float(owner)));
+            core.receive(b);
+        }
+        const auto newest0 = core.counters().get("tx.retx.newest");
+        const auto pong0 = core.counters().get("tx.pong");
+        Bytes flood;
+        for (int i = 0; i < 25; ++i) { // 50 requests, about 1,250 bytes
+            encodeRequest(flood, 9, kIdxAll, {RequestType::All, 0, kSlotLast, 0, 0});
+            encodeRequest(flood, 9, kIdxAll, {RequestType::Ping, 0, 0, 1, 1});
+        }
+        QVERIFY(flood.size() <= 1400);
+        core.receive(flood);
+        QCOMPARE(core.counters().get("tx.retx.newest") - newest0, std::uint64_t(2)); // one per ribbon held
+        QCOMPARE(core.counters().get("tx.pong") - pong0, std::uint64_t(1));
+        QCOMPARE(core.counters().get("rx.limited.all"), std::uint64_t(24));
+        QCOMPARE(core.counters().get("rx.limited.ping"), std::uint64_t(24));
+        // A Beat later the same requester is answered again (a late joiner whose first ALL was lost).
+        clock.advance(milliseconds(cfg.beatMs));
+        core.tick();
+        Bytes again;
+        encodeRequest(again, 9, kIdxAll, {RequestType::All, 0, kSlotLast, 0, 0});
+        core.receive(again);
+        QCOMPARE(core.counters().get("tx.retx.newest") - newest0, std::uint64_t(4));
+    }
+
     void limitsComeFromTheConfiguration() {
         OsyrisConfig cfg;
         cfg.passCount.plausibility.maxWidthM = 13; // a wide paver screed
