@@ -52,6 +52,26 @@ osyris::PassCountSummary OsyrisBridge::passCountSummary() const {
 
 void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
     m_heard = true;
+    if (!s.implausible.empty()) {
+        // The station's plausibility gate refused this position (issue 14 §2): keep what was good, say why.
+        auto it = m_lastGoodIo.find(s.idx);
+        MachineState m;
+        if (it != m_lastGoodIo.end()) {
+            m = it->second;
+        } else {
+            m.id = protocolPrefix(Protocol::Osyris) + QString::number(s.idx);
+            m.protocol = Protocol::Osyris;
+            m.name = s.name.empty() ? tr("Machine %1").arg(s.idx) : q(s.name);
+            m.type = QStringLiteral("roller");
+            m.hasPosition = false;
+        }
+        m.link = ocu::LinkState::Up;
+        m.lastDataMs = QDateTime::currentMSecsSinceEpoch();
+        m.health = HealthLevel::Warning;
+        m.healthText = tr("implausible position ignored (slot %1): %2").arg(s.slot).arg(q(s.implausible));
+        publishMachine(m);
+        return;
+    }
     MachineState m;
     m.id = protocolPrefix(Protocol::Osyris) + QString::number(s.idx);
     m.protocol = Protocol::Osyris;
@@ -96,6 +116,7 @@ void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
         m.health = HealthLevel::Ok;
         m.healthText = s.accuracy >= 3 ? tr("high accuracy") : tr("medium accuracy");
     }
+    m_lastGoodIo[s.idx] = m;
     publishMachine(m);
 }
 

@@ -11,6 +11,7 @@
 #include "protocols/osyris/OsyrisStack.h"
 
 #include <atomic>
+#include <map>
 #include <memory>
 
 namespace ocu {
@@ -46,7 +47,8 @@ private:
     std::unique_ptr<OsyrisPassCountLayer> m_layer;
     std::atomic<bool> m_passCountQueued{false};
     std::atomic<bool> m_linkUp{false};
-    std::atomic<bool> m_heard{false}; // a station (position or alive) was heard
+    std::atomic<bool> m_heard{false};                  // a station (position or alive) was heard
+    std::map<std::uint8_t, MachineState> m_lastGoodIo; // io thread only: the last plausible state per machine
     std::atomic<bool> m_running{false};
     // Why a message cannot go out now (no station heard, station not running), or an empty string.
     QString linkRefusal(const QString& what) const;

@@ -68,6 +68,14 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
                             : dir == "backward" ? DirectionFilter::Backward
                                                 : DirectionFilter::Any;
     o.passCount.minMove = c.number("minMove", 0.25, 0, 10);
+    // Plausibility gate (issue 14 §2): positions outside these never reach the grid or the models.
+    auto& pl = o.passCount.plausibility;
+    pl.extentM = c.number("plausibleExtentM", pl.extentM, 10, 1e6);
+    pl.minWidthM = c.number("plausibleWidthMinM", pl.minWidthM, 0.05, 50);
+    pl.maxWidthM = c.number("plausibleWidthMaxM", pl.maxWidthM, 0.05, 50);
+    if (pl.minWidthM > pl.maxWidthM)
+        c.error("plausibleWidthMinM", "must not exceed plausibleWidthMaxM");
+    pl.maxSpeedMps = c.number("plausibleSpeedMaxMps", pl.maxSpeedMps, 0.1, 1000);
     for (auto& m : c.objectList("machines")) {
         auto i = m.integer("idx", -1, 0, 253);
         auto name = m.string("name", "");

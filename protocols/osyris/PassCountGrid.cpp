@@ -118,7 +118,8 @@ void PassCountGrid::reset() {
 }
 
 std::int32_t PassCountGrid::cellIndex(double v) const {
-    return static_cast<std::int32_t>(std::floor(v * m_inv));
+    // Clamped: a cast of a double beyond int32 is undefined (reader queries may ask anywhere).
+    return static_cast<std::int32_t>(std::clamp(std::floor(v * m_inv), -1073741824.0, 1073741823.0));
 }
 
 PassCount* PassCountGrid::cell(std::int32_t cx, std::int32_t cy) {
@@ -155,6 +156,10 @@ void PassCountGrid::sweep(MachineState& m, double ax, double ay, double bx, doub
                  cx1 = cellIndex(*std::max_element(xs, xs + 4));
     std::int32_t cy0 = cellIndex(*std::min_element(ys, ys + 4)),
                  cy1 = cellIndex(*std::max_element(ys, ys + 4));
+    if ((std::int64_t(cx1) - cx0 + 1) * (std::int64_t(cy1) - cy0 + 1) > kMaxSweepCells) {
+        ++m_oversized;
+        return;
+    }
     bool any = false;
     for (std::int32_t cy = cy0; cy <= cy1; ++cy) {
         double py = (cy + 0.5) * cs - ay;
@@ -194,7 +199,10 @@ void PassCountGrid::addPosition(std::uint8_t machine, const CmPos& p) {
         mp = std::make_unique<MachineState>();
     MachineState& m = *mp;
     m.nextSlot = p.slot + 1;
-    if (!usable(p)) {
+    const bool plausible = checkPosition(p, m_settings.plausibility) == PositionFault::None;
+    if (!plausible)
+        ++m_implausible;
+    if (!plausible || !usable(p)) {
         m.hasAnchor = false; // no footprint is swept across an invalid stretch
         m.key = -1;
         return;
@@ -226,7 +234,7 @@ void PassCountGrid::addPosition(std::uint8_t machine, const CmPos& p) {
         (s.direction == DirectionFilter::Any || (s.direction == DirectionFilter::Forward && k == 1) ||
          (s.direction == DirectionFilter::Backward && k == 2));
     if (count) {
-        double w = (p.dx > 0.05 && std::isfinite(p.dx)) ? p.dx : s.defaultWidth;
+        double w = p.dx > kNoExtentBelowM ? p.dx : s.defaultWidth;
         sweep(m, m.ax, m.ay, p.x, p.y, w);
     }
     m.ax = p.x;

@@ -9,6 +9,7 @@
 // it changes one a snapshot holds, and a snapshot never changes under its reader.
 #include "protocols/osyris/OsyrisCodec.h"
 #include "protocols/osyris/PassCountSnapshot.h"
+#include "protocols/osyris/Plausibility.h"
 
 #include <array>
 #include <cstdint>
@@ -35,6 +36,7 @@ struct PassCountSettings {
     double defaultWidth = 2.0;       // m when a position carries no extent
     int targetMin = 3;
     int targetMax = 5;
+    PlausibilityLimits plausibility; // implausible positions break the traversal and count nothing
     bool operator==(const PassCountSettings&) const = default;
 };
 
@@ -74,6 +76,15 @@ public:
     // Bounding box of cells changed since the last call, if any.
     std::optional<GridRect> takeDirty();
 
+    // Bounded work (issue 14 §3): one position sweeps at most this many cells of its bounding box. With the
+    // plausibility limits (width <= 6 m, step <= maxJump) a sweep touches at most ((10+6)/0.34)^2 ~ 2,200
+    // cells; the cap only guards odd settings (a tiny cell size with a long maxJump): such a step is not
+    // counted.
+    static constexpr std::int64_t kMaxSweepCells = 1 << 16;
+    // Positions the grid refused (implausible ones by fault, sweeps over kMaxSweepCells): for counters/tests.
+    std::uint64_t implausiblePositions() const { return m_implausible; }
+    std::uint64_t oversizedSweeps() const { return m_oversized; }
+
 private:
     struct MachineState;
     void sweep(MachineState& m, double ax, double ay, double bx, double by, double width);
@@ -91,6 +102,8 @@ private:
     std::uint64_t m_clearedAt = 1;
     std::map<std::uint8_t, std::unique_ptr<MachineState>> m_machines;
     bool m_dirty = false;
+    std::uint64_t m_implausible = 0;
+    std::uint64_t m_oversized = 0;
     std::int32_t m_dx0 = 0, m_dy0 = 0, m_dx1 = 0, m_dy1 = 0;
 };
 

@@ -301,6 +301,8 @@ void StationCore::noteKnown(std::uint8_t owner, std::uint32_t from, std::uint32_
 void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::vector<PosProp>* props,
                                  TimePoint now) {
     std::uint8_t owner = h.whose;
+    if (h.who == owner)
+        m_ownerShown[owner] = std::max(m_ownerShown[owner], p.slot);
     PositionRecord rec{p, props ? *props : std::vector<PosProp>{}};
     bool isNew = m_store.put(owner, rec);
     if (!isNew && props)
@@ -338,10 +340,82 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
     if (isNew && (newest || !rs.reported || p.slot > rs.lastReported)) {
         rs.reported = true;
         rs.lastReported = p.slot;
-        if (m_listener)
-            m_listener->onMachinePosition(
-                makeSnapshot(owner, p, m_geo ? &m_frame : nullptr, nameOf(owner), typeOf(owner)));
+        // Implausible positions stay in the ribbon (the slot is complete for everyone's repair) but reach
+        // neither the grid (PassCountGrid applies the same limits) nor a model (issue 14 §2).
+        const PositionFault fault = checkPosition(p, m_cfg.passCount.plausibility);
+        if (fault != PositionFault::None)
+            implausible(owner, p, fault, now);
+        if (m_listener) {
+            if (fault == PositionFault::None) {
+                m_listener->onMachinePosition(
+                    makeSnapshot(owner, p, m_geo ? &m_frame : nullptr, nameOf(owner), typeOf(owner)));
+            } else {
+                MachineSnapshot bad;
+                bad.idx = owner;
+                bad.name = nameOf(owner);
+                bad.type = typeOf(owner);
+                bad.slot = p.slot;
+                bad.flags = p.flags;
+                bad.timestampMs = p.time ? fileTimeToUnixMillis(p.time) : 0;
+                bad.implausible = std::string("implausible position ignored (") + toString(fault) + ")";
+                m_listener->onMachinePosition(bad);
+            }
+        }
+    } else if (isNew) {
+        if (const PositionFault fault = checkPosition(p, m_cfg.passCount.plausibility);
+            fault != PositionFault::None)
+            implausible(owner, p, fault, now);
     }
+}
+
+bool StationCore::answerAllowed(std::uint8_t requester, std::uint8_t whose, RequestType type, TimePoint now) {
+    // Amplification bound (issue 14 §4): one answer per requester, addressed ribbon and type per Beat. 50
+    // ALLs in one datagram made the console send 206 messages; now one requester's datagram costs at most one
+    // ALL answer for all ribbons (newest position + ALIVE per ribbon held) plus one per ribbon addressed
+    // singly, i.e. at most 4 messages per ribbon held, and one PONG. Bounded table: 255 x 256 x 2 entries at
+    // most.
+    auto [it, first] = m_answeredAt.try_emplace({requester, whose, type}, now);
+    if (!first && now - it->second < beats(1)) {
+        m_counters.add(type == RequestType::All ? "rx.limited.all" : "rx.limited.ping");
+        return false;
+    }
+    it->second = now;
+    return true;
+}
+
+void StationCore::implausible(std::uint8_t owner, const CmPos& p, PositionFault fault, TimePoint now) {
+    m_counters.add(std::string("rx.implausible.") + toString(fault));
+    // Bounded: at most 254 owners x 4 causes.
+    auto [it, first] = m_implausibleEventAt.try_emplace({owner, fault}, now);
+    if (!first && now - it->second < kImplausibleEventGap)
+        return;
+    it->second = now;
+    const auto& l = m_cfg.passCount.plausibility;
+    std::string what;
+    switch (fault) {
+    case PositionFault::NonFinite:
+        what = "a coordinate, speed or width is not a finite number";
+        break;
+    case PositionFault::OutsideExtent:
+        what = "x/y/z beyond " + std::to_string(static_cast<long long>(l.extentM)) +
+               " m from the worksite origin";
+        break;
+    case PositionFault::DrumWidth:
+        what = "drum width " + std::to_string(p.dx) + " m outside " + std::to_string(l.minWidthM) + "-" +
+               std::to_string(l.maxWidthM) + " m";
+        break;
+    case PositionFault::Speed:
+        what = "speed " + std::to_string(p.speed) + " m/s above " + std::to_string(l.maxSpeedMps) + " m/s";
+        break;
+    case PositionFault::None:
+        return;
+    }
+    const std::string name = nameOf(owner);
+    event(Severity::Warning, "OSYRIS station " + std::to_string(owner) +
+                                 (name.empty() ? "" : " (" + name + ")") + ": position of slot " +
+                                 std::to_string(p.slot) + " ignored: " + what +
+                                 " (counted in rx.implausible." + toString(fault) +
+                                 "; one warning per machine and cause every 30 s)");
 }
 
 void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint now) {
@@ -431,6 +505,8 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         m_counters.add("rx.all");
         if (!(m_cfg.active & kActiveAnswerRequests))
             return;
+        if (!answerAllowed(who, h.whose, RequestType::All, now))
+            return;
         for (auto owner : m_store.machines()) {
             if (h.whose != kIdxAll && h.whose != owner)
                 continue;
@@ -464,6 +540,8 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         m_counters.add("rx.ping");
         if (h.whose != idx() && h.whose != kIdxAll)
             return;
+        if (!answerAllowed(who, h.whose, RequestType::Ping, now))
+            return;
         auto own = ownPosition();
         enqueueRequest(who, {RequestType::Pong, 0, 0, own ? own->x : 0.f, own ? own->y : 0.f});
         m_counters.add("tx.pong");
@@ -489,8 +567,25 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         m_counters.add("rx.alive");
         std::uint8_t owner = h.whose;
         bool hasRange = r.from <= r.to && r.to != kSlotLast;
-        if (owner < kIdxNobody && hasRange)
-            noteKnown(owner, r.from, r.to);
+        if (owner < kIdxNobody && hasRange) {
+            // Phantom ranges (issue 14 §4): too wide to be a machine's ribbon, or (from a third station) far
+            // beyond anything the owner itself showed. Ignored with a counter; NAKing them cost endless
+            // datagrams.
+            auto shown = m_ownerShown.find(owner);
+            const bool tooWide = r.to - r.from >= kMaxAnnouncedSpan;
+            const bool tooFarAhead = who != owner && shown != m_ownerShown.end() &&
+                                     std::uint64_t(r.to) > std::uint64_t(shown->second) + kMaxAnnouncedAhead;
+            if (tooWide || tooFarAhead) {
+                reject(tooWide ? "alive_range_too_wide" : "alive_range_ahead",
+                       "ALIVE from " + std::to_string(who) + " announces slots " + std::to_string(r.from) +
+                           "-" + std::to_string(r.to) + " of station " + std::to_string(owner));
+                hasRange = false;
+            } else {
+                if (who == owner)
+                    m_ownerShown[owner] = std::max(m_ownerShown[owner], r.to);
+                noteKnown(owner, r.from, r.to);
+            }
+        }
         if (owner == who && m_listener)
             m_listener->onStationAlive(who, hasRange ? std::optional<SlotRange>(SlotRange{r.from, r.to})
                                                      : std::nullopt);

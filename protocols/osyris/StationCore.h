@@ -25,6 +25,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace ocu::osyris {
@@ -47,6 +48,9 @@ struct MachineSnapshot {
     int accuracy = 0;             // 0 none, 1 low, 2 medium, 3 high
     std::int64_t timestampMs = 0; // Unix ms from the FILETIME
     std::uint32_t slot = 0;
+    // Set when the position broke a plausibility rule (issue 14 §2): the reason for the operator; position,
+    // speed and width are then not filled in (the machine keeps its last good position in the models).
+    std::string implausible;
 };
 
 // Callbacks run on the station's io thread (or the test's thread); they must not block.
@@ -155,6 +159,9 @@ private:
     std::string typeOf(std::uint8_t owner) const;
     void publishPassCounts(TimePoint now);
     void event(Severity s, const std::string& text);
+    // Counts an implausible position and raises at most one event per machine and cause per
+    // kImplausibleEventGap.
+    void implausible(std::uint8_t owner, const CmPos& p, PositionFault fault, TimePoint now);
     void reject(const std::string& reason, const std::string& text);
 
     OsyrisConfig m_cfg;
@@ -169,6 +176,17 @@ private:
     bool m_geo = false;
 
     std::map<std::uint8_t, RibbonState> m_ribbons;
+    static constexpr Duration kImplausibleEventGap = std::chrono::seconds(30);
+    std::map<std::pair<std::uint8_t, PositionFault>, TimePoint> m_implausibleEventAt;
+    bool answerAllowed(std::uint8_t requester, std::uint8_t whose, RequestType type, TimePoint now);
+    std::map<std::tuple<std::uint8_t, std::uint8_t, RequestType>, TimePoint> m_answeredAt;
+    std::uint8_t m_nakTurn = 0xFF; // the ribbon whose gaps were asked for first on the last Beat (fairness)
+    // ALIVE ranges wider than this are not believed (issue 14 §4): 2^22 slots are 116 h of a machine at 10
+    // Hz.
+    static constexpr std::uint32_t kMaxAnnouncedSpan = 1u << 22;
+    // A third station may announce another's ribbon at most this far beyond what that owner itself showed.
+    static constexpr std::uint32_t kMaxAnnouncedAhead = 1u << 16;
+    std::map<std::uint8_t, std::uint32_t> m_ownerShown; // highest slot each owner sent or announced itself
     std::vector<Asset> m_assets;
     std::vector<Suppressed> m_suppressed;
     std::map<std::uint8_t, TimePoint> m_lastHeard;

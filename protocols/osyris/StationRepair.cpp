@@ -3,6 +3,7 @@
 #include "protocols/osyris/StationCore.h"
 
 #include <algorithm>
+#include <map>
 
 namespace ocu::osyris {
 
@@ -85,14 +86,37 @@ void StationCore::processWishes(TimePoint now) {
             if (h.until <= now)
                 cands.push_back({owner, h.from, h.to});
     }
-    // Newest and longest misses first (§4).
+    // Newest and longest misses first within a ribbon (§4).
     std::sort(cands.begin(), cands.end(), [](const Cand& a, const Cand& b) {
         if (a.to != b.to)
             return a.to > b.to;
         return (a.to - a.from) > (b.to - b.from);
     });
+    // Fair between ribbons (issue 14 §4): one candidate of each ribbon per round, the ribbons in turn from a
+    // start that moves on every Beat. Sorting all ribbons newest first let one station announcing slots up to
+    // 0xFFFFFFFE take every NAK of every Beat, and the real rollers' gaps were never asked for again.
+    std::map<std::uint8_t, std::vector<Cand>> perOwner;
+    for (const auto& c : cands)
+        perOwner[c.owner].push_back(c);
+    std::vector<Cand> order;
+    order.reserve(cands.size());
+    if (!perOwner.empty()) {
+        auto start = perOwner.upper_bound(m_nakTurn);
+        if (start == perOwner.end())
+            start = perOwner.begin();
+        m_nakTurn = start->first;
+        for (std::size_t round = 0; order.size() < cands.size(); ++round) {
+            auto it = start;
+            do {
+                if (round < it->second.size())
+                    order.push_back(it->second[round]);
+                if (++it == perOwner.end())
+                    it = perOwner.begin();
+            } while (it != start);
+        }
+    }
     int issued = 0;
-    for (auto& c : cands) {
+    for (auto& c : order) {
         if (issued >= m_cfg.maxNaksPerBeat)
             break;
         std::uint32_t n = static_cast<std::uint32_t>(m_cfg.maxNakSlots);

@@ -157,6 +157,40 @@ private slots:
         bridge.stop();
         station.stop();
     }
+
+    void implausiblePositionKeepsTheLastGoodOneAndWarns() {
+        // Issue 14 §2: one CmPos with a drum of 10^6 m must neither move the machine nor hang the io thread.
+        sim::osyris::OsyrisDemo demo(oneRoller());
+        std::string err;
+        QVERIFY2(demo.start(&err), err.c_str());
+        demo.setPaused(true);
+        auto& roller = demo.station(0);
+        const QString id = QStringLiteral("osyris:%1").arg(roller.config().stationIndex);
+        OsyrisBridge bridge(consoleConfig(demo.ocuConfig()), GeoFrame(kOrigin));
+        QList<FleetEvent> events;
+        connect(&bridge, &FleetBridge::eventRaised, this, [&](const FleetEvent& e) { events << e; });
+        bridgetest::Deliveries seen(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        roller.publishOwnPosition(at(4, 5));
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(id).has_value() && seen.latest(id)->hasPosition, 20000);
+        osyris::CmPos huge = at(6, 5);
+        huge.dx = 1e6f;
+        roller.publishOwnPosition(huge);
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(id)->healthText.contains(QStringLiteral("implausible")), 20000);
+        const MachineState m = *seen.latest(id);
+        QCOMPARE(m.health, HealthLevel::Warning);
+        QVERIFY2(std::abs(m.e - 4) < 0.01 && std::abs(m.n - 5) < 0.01, qPrintable(QString::number(m.e)));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            std::any_of(events.begin(), events.end(),
+                        [](const FleetEvent& e) { return e.text.contains(QStringLiteral("drum width")); }),
+            20000);
+        // The station still turns: a good position after it is shown.
+        roller.publishOwnPosition(at(7, 5));
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(seen.latest(id)->e - 7) < 0.01, 20000);
+        QCOMPARE(seen.latest(id)->health, HealthLevel::Ok);
+        bridge.stop();
+        demo.stop();
+    }
 };
 
 QTEST_GUILESS_MAIN(TestOsyrisBridgeThreads)
