@@ -86,6 +86,7 @@ bool AccessControlClient::releaseControl(std::uint16_t ss) {
         r->snap.access = AccessState::ControlReleased;
     s.rejectPending = false;
     s.releaseDeadline = m_ctx.now() + secondsD(timeoutS(*r));
+    s.lastReleaseSent = m_ctx.now();
     if (!m_ctx.send(r->controlTarget(), encodeEmpty(msg::ReleaseControl)))
         return m_ctx.sendFailed(ss, "ReleaseControl");
     return true;
@@ -192,8 +193,9 @@ void AccessControlClient::onReport(RemoteSubsystem& r, const JausId& src, ByteSp
             r.snap.access = AccessState::ControlAccepted;
             m_ctx.notify(Severity::Info, EventKind::ControlAccepted, r.id(),
                          "control of " + r.snap.callSign + " accepted (reported by the vehicle)");
-        } else if (s.releasing) {
-            dropSelfAsController(r, m_ctx.self()); // our release is on its way
+        } else if (s.releasing || m_ctx.now() - s.lastReleaseSent < std::chrono::seconds(2)) {
+            // Our release is on its way, or this report left the vehicle before it arrived.
+            dropSelfAsController(r, m_ctx.self());
         } else {
             // We hold control we do not want (a late accept, a lost release): say so and hand it back.
             r.snap.controlledByUs = true;

@@ -46,7 +46,7 @@ private:
         bool rejectPending = false;
         TimePoint rejectDeadline{};
         std::uint8_t rejectCode = 0;
-        TimePoint releaseDeadline{};
+        TimePoint releaseDeadline{}, lastReleaseSent{};
     };
 
     void onConfirm(RemoteSubsystem& remote, const JausId& source, ByteSpan payload);

@@ -243,6 +243,11 @@ private slots:
         rig.fromVehicle(encodeU8(msg::RejectControl, 0)); // CONTROL_RELEASED
         QVERIFY(!rig.core.snapshot(126)->controlledByUs);
         QVERIFY(!(rig.core.snapshot(126)->controller == rig.core.config().ownId()));
+        // A ReportControl naming us that left the vehicle before our release arrived: stale, not "in
+        // control".
+        rig.fromVehicle(encode(ReportControl{rig.core.config().ownId(), 205}));
+        QVERIFY(!rig.core.snapshot(126)->controlledByUs);
+        QCOMPARE(rig.out.count(msg::ReleaseControl), 1);
         // A peer that answers a release with nothing: released when its access timeout has passed.
         QVERIFY(rig.core.requestControl(126));
         rig.fromVehicle(encodeU8(msg::ConfirmControl, 0));

@@ -235,6 +235,24 @@ private slots:
         QVERIFY(!(low.snap()->controller == low.stack.config().ownId()));
     }
 
+    // §7: a vehicle answering late (every reply 600 ms after the request): discovered, controlled and stopped
+    // all the same, and control holds through re-requests answered late.
+    void lateAnswersStillWork() {
+        VehicleOptions o;
+        o.replyDelayMs = 600;
+        ForeignJausVehicle v(o);
+        Console ocu(200, Role::PrimaryOperator, 205, v.port());
+        QVERIFY(waitFor([&] { return ocu.discovered(); }));
+        ocu.stack.requestControl(126);
+        QVERIFY(waitFor([&] { return ocu.snap()->controlledByUs; }));
+        ocu.stack.setEmergency(126);
+        QVERIFY(waitFor([&] { return ocu.snap()->emergency; }));
+        QVERIFY(waitFor([&] { return v.receivedFrom(msg::RequestControl, ocu.id()) >= 3; }));
+        QVERIFY(ocu.snap()->controlledByUs);
+        QCOMPARE(v.controller(), ocu.id());
+        QCOMPARE(v.malformed(), 0);
+    }
+
     // §5: a link lost while the vehicle was away is restored by the 1 Hz unicast probe, not by the 30 s
     // discovery broadcast (main: polling stopped while down, the vehicle was never asked again).
     void linkRestoredByProbeAfterOutage() {
