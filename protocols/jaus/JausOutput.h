@@ -22,6 +22,12 @@ public:
         (void)source;
         send(destination, payload, options);
     }
+    // The same, saying whether the message was handed to a socket: empty when it was, else why not (issue 13
+    // §1: a command counts as sent only then). The default cannot tell and reports success.
+    virtual std::string sendOrWhy(const JausId& destination, const Bytes& payload, SendOptions options) {
+        send(destination, payload, options);
+        return {};
+    }
     // "ip:port" last learned for a JAUS ID (for the console), empty when unknown.
     virtual std::string endpointOf(const JausId&) const { return {}; }
 };

@@ -22,6 +22,9 @@ struct JausStack::Impl : JausOutput {
     void send(const JausId& dst, const Bytes& payload, SendOptions o) override {
         transport.send(cfg.ownId(), dst, payload, o);
     }
+    std::string sendOrWhy(const JausId& dst, const Bytes& payload, SendOptions o) override {
+        return transport.send(cfg.ownId(), dst, payload, o);
+    }
     std::string endpointOf(const JausId& id) const override { return transport.endpointOf(id); }
 
     void scheduleTick() {

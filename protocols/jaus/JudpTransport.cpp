@@ -1,10 +1,14 @@
 #include "protocols/jaus/JudpTransport.h"
 
 #include <boost/asio/ip/address_v4.hpp>
+#include <boost/asio/ip/multicast.hpp>
 #include <boost/asio/write.hpp>
 #include <boost/system/system_error.hpp>
 
 #include <stdexcept>
+
+#include <netinet/in.h>
+#include <sys/socket.h>
 
 #include "protocols/common/Log.h"
 
@@ -48,6 +52,26 @@ void JudpTransport::setHandlers(MessageHandler onMessage, ErrorHandler onError) 
     m_onError = std::move(onError);
 }
 
+namespace {
+
+bool addressInUse(const boost::system::system_error& e) {
+    return e.code() == asio::error::address_in_use;
+}
+
+// Linux: a socket bound to a wildcard address receives the datagrams of every multicast group joined by any
+// socket of the host on its port unless IP_MULTICAST_ALL is off; the unicast socket wants none of them
+// (the group socket has them).
+void multicastAllOff(udp::socket& s) {
+#ifdef IP_MULTICAST_ALL
+    int off = 0;
+    ::setsockopt(s.native_handle(), IPPROTO_IP, IP_MULTICAST_ALL, &off, sizeof off);
+#else
+    (void)s;
+#endif
+}
+
+} // namespace
+
 void JudpTransport::open() {
     try {
         m_unicast = std::make_unique<Receiver>(m_io);
@@ -57,22 +81,55 @@ void JudpTransport::open() {
         u.interfaceAddress = m_cfg.interfaceAddress;
         u.multicastTtl = m_cfg.multicastTtl;
         u.broadcast = !m_cfg.multicast;
-        // One socket when unicast and multicast share the port (the usual 3794 set-up, like JTS).
-        const bool shared = m_cfg.multicast && m_cfg.port != 0 && m_cfg.port == m_cfg.multicastPort;
-        if (shared)
-            u.multicastGroup = m_cfg.multicastGroup;
+        if (m_cfg.multicast) {
+            // Sharing a host (issue 13 §6): the unicast port is ours alone, so replies meant for us never go
+            // to another console or a node manager on the same port (bound without SO_REUSEADDR, which Linux
+            // checks at bind time); once bound it allows sharing, so group sockets (ours, other consoles',
+            // a node manager's) may use the same port. Held by another process: an ephemeral port instead
+            // (peers learn it from our datagrams, AEP-4818 §4.7.2).
+            u.reuseAddress = false;
+            try {
+                openUdpSocket(m_unicast->socket, u);
+            } catch (const boost::system::system_error& e) {
+                if (u.port == 0 || !addressInUse(e))
+                    throw;
+                boost::system::error_code ec;
+                m_unicast->socket.close(ec);
+                logWarning(m_log, "UDP port " + std::to_string(u.port) +
+                                      " is held by another process (a JAUS node manager or another console):"
+                                      " using an ephemeral unicast port; peers reply to it");
+                m_counters.add("transport.port_in_use");
+                u.port = 0;
+                openUdpSocket(m_unicast->socket, u);
+            }
+            m_unicast->socket.set_option(asio::socket_base::reuse_address(true));
+            m_unicast->socket.set_option(asio::ip::multicast::hops(m_cfg.multicastTtl));
+            multicastAllOff(m_unicast->socket);
+        } else {
+            openUdpSocket(m_unicast->socket, u); // UDP broadcast mode: broadcasts arrive on this socket
+        }
         m_unicast->options = u;
-        openUdpSocket(m_unicast->socket, u);
-        if (m_cfg.multicast && !shared) {
+        if (m_cfg.multicast) {
+            // The group socket: bound to the group address (not INADDR_ANY) with SO_REUSEADDR, so it shares
+            // the port with other JAUS nodes and never receives unicast datagrams meant for another process
+            // (Linux delivers a unicast datagram only to sockets bound to its destination or the wildcard).
             m_multicast = std::make_unique<Receiver>(m_io);
             UdpOptions mo;
-            mo.bindAddress = "0.0.0.0";
+            mo.bindAddress = m_cfg.multicastGroup;
             mo.port = m_cfg.multicastPort;
             mo.multicastGroup = m_cfg.multicastGroup;
             mo.interfaceAddress = m_cfg.interfaceAddress;
             mo.multicastTtl = m_cfg.multicastTtl;
+            try {
+                openUdpSocket(m_multicast->socket, mo);
+            } catch (const boost::system::system_error&) {
+                // Systems that cannot bind a group address: the wildcard, still shared.
+                boost::system::error_code ec;
+                m_multicast->socket.close(ec);
+                mo.bindAddress = "0.0.0.0";
+                openUdpSocket(m_multicast->socket, mo);
+            }
             m_multicast->options = mo;
-            openUdpSocket(m_multicast->socket, mo);
         }
     } catch (const boost::system::system_error& e) {
         close();
@@ -314,8 +371,9 @@ JudpTransport::TcpPtr JudpTransport::tcpRoute(const JausId& dst) {
     }
     for (std::size_t i = 0; i < m_cfg.staticEndpoints.size(); ++i) {
         const auto& s = m_cfg.staticEndpoints[i];
-        if (!s.tcp || s.id.subsystem != dst.subsystem || (s.id.node != 0xFF && s.id.node != dst.node) ||
-            (s.id.component != 0xFF && s.id.component != dst.component))
+        if (!s.tcp || s.id.subsystem != dst.subsystem ||
+            (s.id.node != 0xFF && dst.node != 0xFF && s.id.node != dst.node) ||
+            (s.id.component != 0xFF && dst.component != 0xFF && s.id.component != dst.component))
             continue;
         if (auto it = m_tcpClients.find(i); it != m_tcpClients.end())
             return it->second;
@@ -365,6 +423,21 @@ std::optional<JudpTransport::Endpoint> JudpTransport::resolve(const JausId& dst)
     return std::nullopt;
 }
 
+std::vector<JudpTransport::Endpoint> JudpTransport::staticUdpEndpoints(const JausId& dst) const {
+    std::vector<Endpoint> out;
+    for (auto& s : m_cfg.staticEndpoints) {
+        if (s.tcp || s.id.subsystem != dst.subsystem)
+            continue;
+        if (dst.node != 0xFF && s.id.node != 0xFF && s.id.node != dst.node)
+            continue;
+        boost::system::error_code ec;
+        auto a = asio::ip::make_address_v4(s.address, ec);
+        if (!ec)
+            out.emplace_back(a, s.port);
+    }
+    return out;
+}
+
 JudpTransport::Endpoint JudpTransport::broadcastEndpoint() const {
     boost::system::error_code ec;
     if (m_cfg.multicast)
@@ -382,15 +455,16 @@ std::string JudpTransport::endpointOf(const JausId& id) const {
     return ep->address().to_string() + ":" + std::to_string(ep->port());
 }
 
-void JudpTransport::send(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions o) {
+std::string JudpTransport::send(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions o) {
     if (!m_open)
-        return;
+        return "the JAUS transport is closed";
     JudpHeader h;
     h.priority = o.priority;
     h.ackNak = o.ackRequest ? AckNak::Request : AckNak::None;
     h.source = src;
     h.destination = dst;
-    if (!dst.isBroadcast()) {
+    // A destination within one subsystem (ss.255.255) may be reached through its static endpoint.
+    if (!dst.isBroadcast() || dst.subsystem != 0xFFFF) {
         if (auto c = tcpRoute(dst)) {
             std::uint16_t& tseq = m_sequence[src.value()];
             h.sequence = tseq;
@@ -402,10 +476,27 @@ void JudpTransport::send(const JausId& src, const JausId& dst, const Bytes& payl
                 c->versionSent = true;
             }
             m_counters.add("tx.jtcp.messages");
-            return;
+            return {};
         }
     }
     Endpoint to;
+    if (dst.isBroadcast() && dst.subsystem != 0xFFFF) {
+        // Static endpoints of that subsystem get it unicast (AEP-4818 §4.7.1), not the group.
+        if (auto eps = staticUdpEndpoints(dst); !eps.empty()) {
+            h.broadcast = BroadcastFlag::Local;
+            h.ackNak = AckNak::None;
+            std::uint16_t& seq = m_sequence[src.value()];
+            h.sequence = seq;
+            auto frags = fragmentPayload(h, payload, m_cfg.maxFragmentPayload);
+            if (frags.size() > 1)
+                return "a broadcast may not be fragmented";
+            seq = std::uint16_t(seq + 1);
+            m_lastSendError.clear();
+            for (auto& ep : eps)
+                transmit(encodeDatagram(frags[0].header, frags[0].payload), ep);
+            return m_lastSendError;
+        }
+    }
     if (dst.isBroadcast()) {
         h.broadcast = dst.subsystem == 0xFFFF ? BroadcastFlag::Global : BroadcastFlag::Local;
         h.ackNak = AckNak::None; // no ACKs for wildcard destinations (JTS JuniorMgr::sendto)
@@ -425,11 +516,13 @@ void JudpTransport::send(const JausId& src, const JausId& dst, const Bytes& payl
     if (frags.size() > 1 && h.broadcast != BroadcastFlag::None) {
         m_counters.add("tx.refused.broadcast_too_large");
         logWarning(m_log, "refusing to broadcast a message larger than one fragment");
-        return;
+        return "a broadcast may not be fragmented";
     }
     seq = std::uint16_t(seq + frags.size());
+    m_lastSendError.clear();
     for (auto& f : frags)
         transmit(encodeDatagram(f.header, f.payload), to);
+    return m_lastSendError;
 }
 
 void JudpTransport::transmit(Bytes datagram, const Endpoint& to) {
@@ -462,15 +555,18 @@ void JudpTransport::transmit(Bytes datagram, const Endpoint& to) {
     out(std::move(datagram), to);
 }
 
-void JudpTransport::rawSend(const Bytes& datagram, const Endpoint& to) {
+bool JudpTransport::rawSend(const Bytes& datagram, const Endpoint& to) {
     boost::system::error_code ec;
     m_unicast->socket.send_to(asio::buffer(datagram), to, 0, ec);
     if (ec) {
         m_counters.add("tx.errors");
-        logDebug(m_log, "send_to " + to.address().to_string() + ": " + ec.message());
-    } else {
-        m_counters.add("tx.datagrams");
+        m_lastSendError = "send to " + to.address().to_string() + ":" + std::to_string(to.port()) +
+                          " failed: " + ec.message();
+        logDebug(m_log, m_lastSendError);
+        return false;
     }
+    m_counters.add("tx.datagrams");
+    return true;
 }
 
 } // namespace ocu::jaus

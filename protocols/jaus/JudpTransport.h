@@ -18,6 +18,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "protocols/common/Clock.h"
 #include "protocols/common/Counters.h"
@@ -53,7 +54,8 @@ public:
     // Which destination IDs are ours (for ACK answering).
     void setLocalIds(std::function<bool(const JausId&)> isLocal) { m_isLocal = std::move(isLocal); }
 
-    void send(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions options);
+    // Returns empty when the message was handed to a socket (or queued on a JTCP connection), else why not.
+    std::string send(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions options);
     std::string endpointOf(const JausId& id) const;
     std::uint16_t localPort() const;
     std::uint16_t localTcpPort() const; // JTCP server port, 0 when not listening
@@ -71,8 +73,10 @@ private:
     void onDatagram(ByteSpan data, const Endpoint& from);
     std::optional<Endpoint> resolve(const JausId& dst) const;
     Endpoint broadcastEndpoint() const;
+    std::vector<Endpoint>
+    staticUdpEndpoints(const JausId& dst) const; // UDP static entries of dst's subsystem
     void transmit(Bytes datagram, const Endpoint& to);
-    void rawSend(const Bytes& datagram, const Endpoint& to);
+    bool rawSend(const Bytes& datagram, const Endpoint& to);
     void deliver(JudpMessage m, TimePoint now, const std::function<void(const std::string&)>& reject);
     // JTCP (AS5669A; AEP-4818 §4.7.1: static address list, port 3794)
     void startAccept();
@@ -100,6 +104,7 @@ private:
     std::optional<std::pair<Bytes, Endpoint>> m_held; // reorder fault
     std::map<std::string, TimePoint> m_lastLog;
     bool m_open = false;
+    std::string m_lastSendError; // of the send() in progress (synchronous UDP sends)
     std::unique_ptr<boost::asio::ip::tcp::acceptor> m_acceptor;
     std::set<TcpPtr> m_conns;
     std::map<std::uint32_t, std::weak_ptr<TcpConn>> m_tcpRoutes; // learned from JTCP traffic

@@ -5,6 +5,20 @@
 
 namespace ocu::jaus {
 
+namespace {
+// Our own ID in the snapshot's controller field only while we hold control: otherwise the console would
+// show itself as "another" controller (issue 13 §4). Unknown until the vehicle reports who it is.
+void dropSelfAsController(RemoteSubsystem& r, const JausId& self) {
+    if (!r.snap.controlledByUs && r.snap.controller == self) {
+        r.snap.controller = JausId{};
+        r.snap.controllerAuthority = 0;
+    }
+}
+// How long a RejectControl to an outstanding request waits for a ConfirmControl(accepted) to the same
+// request before it counts (issue 13 §4: stacks that answer a pre-empting request with both).
+constexpr auto kRejectGrace = std::chrono::milliseconds(1500);
+} // namespace
+
 void AccessControlClient::registerMessages(MessageTable& table) {
     table.onVehicleMessage(msg::ConfirmControl, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
         onConfirm(r, src, p);
@@ -43,32 +57,38 @@ bool AccessControlClient::requestControl(std::uint16_t ss) {
     if (!cfg.mayControl())
         return m_ctx.refuse(ss, "the monitor role (authority 0) never requests control");
     RemoteSubsystem* r = m_ctx.find(ss);
-    if (!r || !r->mobility().subsystem)
-        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " has no known mobility component yet");
+    if (!r || !r->controlTarget().subsystem)
+        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "AccessControl"));
+    if (!m_ctx.send(r->controlTarget(), encodeU8(msg::RequestControl, cfg.authority)))
+        return m_ctx.sendFailed(ss, "RequestControl");
     State& s = m_state[ss];
     s.wantControl = true;
     s.releasing = false;
     s.classifyLoss = false;
+    s.rejectPending = false;
     s.lastRequest = m_ctx.now();
-    m_ctx.send(r->mobility(), encodeU8(msg::RequestControl, cfg.authority));
     if (!s.timeoutQueried) {
         s.timeoutQueried = true;
-        m_ctx.send(r->mobility(), encodeEmpty(msg::QueryTimeout));
+        m_ctx.send(r->controlTarget(), encodeEmpty(msg::QueryTimeout));
     }
     return true;
 }
 
 bool AccessControlClient::releaseControl(std::uint16_t ss) {
     RemoteSubsystem* r = m_ctx.find(ss);
-    if (!r || !r->mobility().subsystem)
-        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+    if (!r || !r->controlTarget().subsystem)
+        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "AccessControl"));
     m_drive.beforeRelease(*r);
     State& s = m_state[ss];
     s.wantControl = false;
     s.releasing = r->snap.controlledByUs;
     if (!s.releasing && r->snap.access == AccessState::ControlAccepted)
         r->snap.access = AccessState::ControlReleased;
-    m_ctx.send(r->mobility(), encodeEmpty(msg::ReleaseControl));
+    s.rejectPending = false;
+    s.releaseDeadline = m_ctx.now() + secondsD(timeoutS(*r));
+    s.lastReleaseSent = m_ctx.now();
+    if (!m_ctx.send(r->controlTarget(), encodeEmpty(msg::ReleaseControl)))
+        return m_ctx.sendFailed(ss, "ReleaseControl");
     return true;
 }
 
@@ -89,6 +109,7 @@ void AccessControlClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteS
     const std::uint8_t authority = m_ctx.config().authority;
     s.lastConfirm = m_ctx.now();
     if (*m == std::uint8_t(ConfirmControlCode::Accepted)) {
+        s.rejectPending = false; // Reject-then-Confirm to the same request: accepted
         if (!s.wantControl) {
             // A late accept after we gave up: hand it back.
             m_ctx.send(src, encodeEmpty(msg::ReleaseControl));
@@ -108,7 +129,9 @@ void AccessControlClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteS
     }
     const bool had = r.snap.controlledByUs;
     s.wantControl = false;
+    s.rejectPending = false;
     r.snap.controlledByUs = false;
+    dropSelfAsController(r, m_ctx.self());
     m_drive.endSession(r, false);
     r.snap.access = *m == std::uint8_t(ConfirmControlCode::NotAvailable) ? AccessState::NotAvailable
                                                                          : AccessState::InsufficientAuthority;
@@ -133,13 +156,23 @@ void AccessControlClient::onReject(RemoteSubsystem& r, const JausId& src, ByteSp
     if (s.releasing) {
         s.releasing = false;
         r.snap.controlledByUs = false;
+        dropSelfAsController(r, m_ctx.self());
         r.snap.access = AccessState::ControlReleased;
         m_ctx.notify(Severity::Info, EventKind::ControlReleased, r.id(),
                      "control of " + r.snap.callSign + " released");
         m_ctx.changed(r);
         return;
     }
-    if (r.snap.controlledByUs || s.wantControl)
+    if (!r.snap.controlledByUs && s.wantControl) {
+        // Not final yet: a ConfirmControl(accepted) to the same request may follow (see kRejectGrace).
+        if (!s.rejectPending) {
+            s.rejectPending = true;
+            s.rejectDeadline = m_ctx.now() + kRejectGrace;
+            s.rejectCode = *m;
+        }
+        return;
+    }
+    if (r.snap.controlledByUs)
         onControlLost(r, s, *m == 0 ? "released by the platform" : "control not available");
 }
 
@@ -151,6 +184,29 @@ void AccessControlClient::onReport(RemoteSubsystem& r, const JausId& src, ByteSp
     r.snap.controller = m->controller;
     r.snap.controllerAuthority = m->authority;
     const bool ours = m->controller == m_ctx.self();
+    if (ours && !r.snap.controlledByUs) {
+        if (s.wantControl) {
+            // The vehicle lists us as its controller: accepted, whatever answers were lost on the way.
+            s.rejectPending = false;
+            s.lastConfirm = m_ctx.now();
+            r.snap.controlledByUs = true;
+            r.snap.access = AccessState::ControlAccepted;
+            m_ctx.notify(Severity::Info, EventKind::ControlAccepted, r.id(),
+                         "control of " + r.snap.callSign + " accepted (reported by the vehicle)");
+        } else if (s.releasing || m_ctx.now() - s.lastReleaseSent < std::chrono::seconds(2)) {
+            // Our release is on its way, or this report left the vehicle before it arrived.
+            dropSelfAsController(r, m_ctx.self());
+        } else {
+            // We hold control we do not want (a late accept, a lost release): say so and hand it back.
+            r.snap.controlledByUs = true;
+            r.snap.access = AccessState::ControlAccepted;
+            s.releasing = true;
+            s.releaseDeadline = m_ctx.now() + secondsD(timeoutS(r));
+            m_ctx.send(src, encodeEmpty(msg::ReleaseControl));
+        }
+        m_ctx.changed(r);
+        return;
+    }
     if (s.classifyLoss) {
         classify(r, s, *m);
     } else if (r.snap.controlledByUs && !ours && m->controller.subsystem != 0 &&
@@ -167,14 +223,16 @@ void AccessControlClient::onReport(RemoteSubsystem& r, const JausId& src, ByteSp
 
 void AccessControlClient::onControlLost(RemoteSubsystem& r, State& s, const std::string& why) {
     s.wantControl = false;
+    s.rejectPending = false;
     r.snap.controlledByUs = false;
+    dropSelfAsController(r, m_ctx.self());
     m_drive.endSession(r, true);
     // Find out who holds control now to tell pre-emption from a timeout (AEP-4818 §9 item 14).
     s.classifyLoss = true;
     s.classifyDeadline = m_ctx.now() + std::chrono::seconds(1);
     r.snap.access = AccessState::ControlReleased;
-    if (r.mobility().subsystem)
-        m_ctx.send(r.mobility(), encodeEmpty(msg::QueryControl));
+    if (r.controlTarget().subsystem)
+        m_ctx.send(r.controlTarget(), encodeEmpty(msg::QueryControl));
     logInfo("ocu.jaus", "control of " + r.snap.callSign + " ended: " + why);
     m_ctx.changed(r);
 }
@@ -183,6 +241,7 @@ void AccessControlClient::classify(RemoteSubsystem& r, State& s, const ReportCon
     s.classifyLoss = false;
     r.snap.controlledByUs = false;
     s.wantControl = false;
+    dropSelfAsController(r, m_ctx.self());
     m_drive.endSession(r, false);
     if (rc.controller.subsystem != 0 && !(rc.controller == m_ctx.self()) &&
         rc.authority > m_ctx.config().authority) {
@@ -202,7 +261,7 @@ void AccessControlClient::classify(RemoteSubsystem& r, State& s, const ReportCon
 // ------------------------------------------------------------------------------------------------
 
 void AccessControlClient::tick(RemoteSubsystem& r, TimePoint now) {
-    const JausId mob = r.mobility();
+    const JausId mob = r.controlTarget();
     State& s = m_state[r.id()];
     // Who controls the vehicle, at the status rate (AEP-4818 §9 item 13).
     if (mob.subsystem && r.reachable() && now - s.lastControlPoll >= periodOf(m_ctx.config().statusPollHz)) {
@@ -221,6 +280,7 @@ void AccessControlClient::tick(RemoteSubsystem& r, TimePoint now) {
         if (r.snap.controlledByUs && now - s.lastConfirm > secondsD(timeout)) {
             s.wantControl = false;
             r.snap.controlledByUs = false;
+            dropSelfAsController(r, m_ctx.self());
             m_drive.endSession(r, false);
             r.snap.access = AccessState::Timeout;
             m_ctx.notify(Severity::Warning, EventKind::ControlLost, r.id(),
@@ -231,6 +291,28 @@ void AccessControlClient::tick(RemoteSubsystem& r, TimePoint now) {
     }
     if (s.classifyLoss && now > s.classifyDeadline)
         classify(r, s, ReportControl{});
+    if (s.rejectPending && now > s.rejectDeadline) {
+        s.rejectPending = false;
+        s.wantControl = false;
+        r.snap.access = s.rejectCode == std::uint8_t(RejectControlCode::Released)
+                            ? AccessState::ControlReleased
+                            : AccessState::NotAvailable;
+        m_ctx.notify(Severity::Warning, EventKind::ControlRejected, r.id(),
+                     "control of " + r.snap.callSign + " refused: RejectControl (" +
+                         (s.rejectCode == 0 ? "control released" : "not available") + ")");
+        m_ctx.changed(r);
+    }
+    // A release the vehicle never answered (no RejectControl, no QueryControl): it has dropped us by its own
+    // access timeout, since we stopped re-requesting (AS5710A AccessControl timeout).
+    if (s.releasing && now > s.releaseDeadline) {
+        s.releasing = false;
+        r.snap.controlledByUs = false;
+        dropSelfAsController(r, m_ctx.self());
+        r.snap.access = AccessState::ControlReleased;
+        m_ctx.notify(Severity::Info, EventKind::ControlReleased, r.id(),
+                     "control of " + r.snap.callSign + " released (access timeout passed)");
+        m_ctx.changed(r);
+    }
 }
 
 } // namespace ocu::jaus

@@ -41,6 +41,12 @@ private:
         TimePoint classifyDeadline{};
         TimePoint lastRequest{}, lastConfirm{}, lastControlPoll{};
         bool timeoutQueried = false;
+        // A RejectControl while our request is outstanding: some stacks answer a pre-empting request with
+        // RejectControl and then ConfirmControl(accepted); the reject counts only if no accept follows.
+        bool rejectPending = false;
+        TimePoint rejectDeadline{};
+        std::uint8_t rejectCode = 0;
+        TimePoint releaseDeadline{}, lastReleaseSent{};
     };
 
     void onConfirm(RemoteSubsystem& remote, const JausId& source, ByteSpan payload);

@@ -22,9 +22,13 @@ ClientContext::ClientContext(JausConfig config, JausListener& listener, JausOutp
     : m_cfg(std::move(config)), m_listener(listener), m_out(output), m_clock(clock), m_counters(counters),
       m_self(m_cfg.ownId()) {}
 
-void ClientContext::send(const JausId& dst, const Bytes& payload, SendOptions o) {
+bool ClientContext::send(const JausId& dst, const Bytes& payload, SendOptions o) {
     m_counters.add("tx.messages");
-    m_out.send(dst, payload, o);
+    m_lastSendError = m_out.sendOrWhy(dst, payload, o);
+    if (m_lastSendError.empty())
+        return true;
+    m_counters.add("tx.failed");
+    return false;
 }
 
 void ClientContext::notify(Severity s, EventKind k, std::uint16_t ss, std::string text) {
@@ -42,6 +46,21 @@ bool ClientContext::refuse(std::uint16_t ss, const std::string& why) {
     m_lastRefusal = why;
     notify(Severity::Warning, EventKind::CommandRefused, ss, why);
     return false;
+}
+
+std::string ClientContext::noTarget(std::uint16_t ss, const char* service) const {
+    const RemoteSubsystem* r = find(ss);
+    const std::string name = "subsystem " + std::to_string(ss);
+    if (!r)
+        return name + " has not been discovered (no message from it yet)";
+    if (!r->components.known)
+        return name + " (" + r->snap.callSign + ") has not reported its services yet (no ReportServices)";
+    return "no component of " + name + " offers " + service + " (directly or by inheritance)";
+}
+
+bool ClientContext::sendFailed(std::uint16_t ss, const char* what) {
+    return refuse(ss, std::string(what) + " for subsystem " + std::to_string(ss) +
+                          " was not sent: " + m_lastSendError);
 }
 
 void ClientContext::rejected(const JausId& src, const std::string& error) {

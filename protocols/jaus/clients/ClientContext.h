@@ -21,6 +21,9 @@ struct ComponentTable {
     bool known = false;     // a ReportServices arrived: events, polls and commands may start
     JausId platformManager; // identification, services, heartbeat
     JausId globalPoseSensor, localPoseSensor, velocitySensor, healthMonitor, platformSpecs;
+    // The components offering AccessControl and Management directly or by inheritance (ServiceInheritance.h,
+    // issue 13 §3); zero when the subsystem has none.
+    JausId accessControl, management;
 };
 
 // One remote subsystem (a vehicle) as the console knows it. Each client writes only its own fields of the
@@ -31,6 +34,14 @@ struct RemoteSubsystem {
 
     std::uint16_t id() const { return snap.subsystem; }
     const JausId& mobility() const { return snap.mobilityComponent; }
+    // Where RequestControl / ReleaseControl / QueryControl go: the driver (teleop needs control of it),
+    // else the component that offers AccessControl (by inheritance too). Zero when none is known.
+    JausId controlTarget() const { return mobility().subsystem ? mobility() : components.accessControl; }
+    // Where SetEmergency / ClearEmergency / QueryStatus / Resume... go: the component that offers Management
+    // (the driver when it does). Zero when none is known.
+    JausId managementTarget() const {
+        return components.management.subsystem ? components.management : mobility();
+    }
     bool reachable() const { return snap.link != LinkState::Down; }
 };
 
@@ -44,7 +55,9 @@ public:
     TimePoint now() const { return m_clock.now(); }
     Counters& counters() { return m_counters; }
 
-    void send(const JausId& destination, const Bytes& payload, SendOptions options = {});
+    // True when the message was handed to a socket; otherwise lastSendError() says why.
+    bool send(const JausId& destination, const Bytes& payload, SendOptions options = {});
+    const std::string& lastSendError() const { return m_lastSendError; }
     std::string endpointOf(const JausId& id) const { return m_out.endpointOf(id); }
     // An event for the operator; warnings and errors are logged too.
     void notify(Severity severity, EventKind kind, std::uint16_t subsystem, std::string text);
@@ -52,6 +65,11 @@ public:
     void changed(const RemoteSubsystem& remote);
     // A command the console does not send: counter, CommandRefused event; returns false.
     bool refuse(std::uint16_t subsystem, const std::string& why);
+    // Why a command for a subsystem has no component to go to, in words an operator can act on: not
+    // discovered, services not reported yet, or no component offering `service` (directly or by inheritance).
+    std::string noTarget(std::uint16_t subsystem, const char* service) const;
+    // A command whose message could not be handed to a socket: refuse() with the transport's reason.
+    bool sendFailed(std::uint16_t subsystem, const char* what);
     // The reason given by the latest refuse() (the command outcome's reason).
     const std::string& lastRefusal() const { return m_lastRefusal; }
     // A message that did not decode: counter rx.rejected.<reason> and a log line.
@@ -72,6 +90,7 @@ private:
     const Clock& m_clock;
     Counters& m_counters;
     std::string m_lastRefusal;
+    std::string m_lastSendError;
     JausId m_self;
     std::map<std::uint16_t, RemoteSubsystem> m_remotes;
 };

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <string_view>
 
+#include "protocols/jaus/ServiceInheritance.h"
+
 namespace ocu::jaus {
 
 namespace {
 
-bool hasService(const ComponentServices& c, std::string_view name) {
+// By the last URI segment, whatever the namespace (peers disagree on it, e.g. HealthMonitor).
+bool hasService(const ComponentInfo& c, std::string_view name) {
     for (auto& s : c.services) {
         auto pos = s.uri.rfind(':');
         if (pos != std::string::npos && std::string_view(s.uri).substr(pos + 1) == name)
@@ -88,6 +91,11 @@ void DiscoveryClient::discoverNow() {
     m_lastBroadcast = m_ctx.now();
     // Subsystem-level identification to everyone (AEP-4818 §6.2.2.2.1.1, §9 item 6).
     m_ctx.send(kBroadcastAll, encode(QueryIdentification{IdQueryType::Subsystem}));
+    // And unicast to every static endpoint (AEP-4818 §4.7.1 static address list): with multicast filtered
+    // or unavailable these vehicles are still discovered (issue 13 §5). The transport sends a destination
+    // ss.255.255 (or ss.n.255) that matches a static endpoint to that endpoint's address only.
+    for (const StaticEndpoint& se : m_ctx.config().transport.staticEndpoints)
+        m_ctx.send(se.id, encode(QueryIdentification{IdQueryType::Subsystem}));
 }
 
 void DiscoveryClient::tickBroadcast(TimePoint now) {
@@ -136,7 +144,7 @@ void DiscoveryClient::onIdentification(RemoteSubsystem& r, const JausId& src, By
     m_ctx.changed(r);
 }
 
-void DiscoveryClient::onServices(RemoteSubsystem& r, const JausId& src,
+void DiscoveryClient::onServices(RemoteSubsystem& r, const JausId& /*source*/,
                                  const std::vector<NodeServices>& nodes) {
     ComponentTable& table = r.components;
     // Merge (peers send duplicates, jaus-wire.md §6.7).
@@ -161,29 +169,54 @@ void DiscoveryClient::onServices(RemoteSubsystem& r, const JausId& src,
                 if (!dup)
                     cit->services.push_back(s);
             }
-            const JausId id{src.subsystem, n.node, c.component};
-            if (hasService(c, "PrimitiveDriver") || hasService(c, "VelocityStateDriver"))
-                r.snap.mobilityComponent = id;
-            if (hasService(c, "GlobalPoseSensor"))
-                table.globalPoseSensor = id;
-            if (hasService(c, "LocalPoseSensor"))
-                table.localPoseSensor = id;
-            if (hasService(c, "VelocityStateSensor"))
-                table.velocitySensor = id;
-            if (hasService(c, "HealthMonitor"))
-                table.healthMonitor = id;
-            if (hasService(c, "PlatformSpecifications"))
-                table.platformSpecs = id;
-            if (hasService(c, "Liveness") && n.node == 1 && table.platformManager.subsystem == 0)
-                table.platformManager = id;
         }
     }
+    assignRoles(r);
     if (!table.known) {
         table.known = true;
         if (m_onServicesKnown)
             m_onServicesKnown(r);
     }
     m_ctx.changed(r);
+}
+
+void DiscoveryClient::assignRoles(RemoteSubsystem& r) {
+    // Recomputed from the merged service lists: who offers what, directly or by inheritance (issue 13 §3).
+    ComponentTable& t = r.components;
+    const std::uint16_t ss = r.id();
+    JausId driver, management, access;
+    for (const NodeInfo& n : r.snap.services) {
+        for (const ComponentInfo& c : n.components) {
+            const JausId id{ss, n.node, c.component};
+            if (!driver.subsystem &&
+                (offers(c.services, service::PrimitiveDriver) ||
+                 offers(c.services, service::VelocityStateDriver) || hasService(c, "PrimitiveDriver") ||
+                 hasService(c, "VelocityStateDriver")))
+                driver = id;
+            if (!management.subsystem && offers(c.services, service::Management))
+                management = id;
+            if (!access.subsystem && offers(c.services, service::AccessControl))
+                access = id;
+            if (offers(c.services, service::GlobalPoseSensor) || hasService(c, "GlobalPoseSensor"))
+                t.globalPoseSensor = id;
+            if (offers(c.services, service::LocalPoseSensor) || hasService(c, "LocalPoseSensor"))
+                t.localPoseSensor = id;
+            if (offers(c.services, service::VelocityStateSensor) || hasService(c, "VelocityStateSensor"))
+                t.velocitySensor = id;
+            if (hasService(c, "HealthMonitor"))
+                t.healthMonitor = id;
+            if (hasService(c, "PlatformSpecifications"))
+                t.platformSpecs = id;
+            if (hasService(c, "Liveness") && n.node == 1 && t.platformManager.subsystem == 0)
+                t.platformManager = id;
+        }
+    }
+    if (driver.subsystem)
+        r.snap.mobilityComponent = driver;
+    // Prefer the driver for management and access control: one component holds the whole vehicle's state
+    // (a PrimitiveDriver inherits Management, AS6009), so control of it is what teleop needs.
+    t.management = driver.subsystem ? driver : management;
+    t.accessControl = driver.subsystem ? driver : management.subsystem ? management : access;
 }
 
 void DiscoveryClient::tick(RemoteSubsystem& r, TimePoint now) {

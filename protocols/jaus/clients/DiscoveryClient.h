@@ -45,6 +45,7 @@ private:
     void onIdentification(RemoteSubsystem& remote, const JausId& source, ByteSpan payload);
     void onServices(RemoteSubsystem& remote, const JausId& source, const std::vector<NodeServices>& nodes);
     void identify(const JausId& target, State& state, TimePoint now);
+    void assignRoles(RemoteSubsystem& remote);
     bool answerIdentification(const JausId& source, ByteSpan payload);
     bool answerServices(const JausId& source, std::uint16_t id);
 

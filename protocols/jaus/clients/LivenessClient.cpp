@@ -44,6 +44,17 @@ void LivenessClient::tick(RemoteSubsystem& r, TimePoint now) {
     const LinkState link = age > lost       ? LinkState::Down
                            : age > degraded ? LinkState::Degraded
                                             : LinkState::Up;
+    // A subsystem whose link is down is probed at 1 Hz at its last address (the transport remembers it), so
+    // the link is back within about a second of the peer's return, not at the next discovery broadcast
+    // (issue 13 §5). QueryIdentification: every JAUS component answers it (AS5710A Discovery).
+    if (link == LinkState::Down) {
+        TimePoint& probe = m_lastProbe[r.id()];
+        if (now - probe >= std::chrono::seconds(1)) {
+            probe = now;
+            m_ctx.counters().add("tx.link_probe");
+            m_ctx.send(r.components.platformManager, encode(QueryIdentification{IdQueryType::Subsystem}));
+        }
+    }
     if (link == r.snap.link)
         return;
     r.snap.link = link;

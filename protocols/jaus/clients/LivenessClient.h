@@ -22,7 +22,10 @@ public:
     void onServicesKnown(RemoteSubsystem& remote) override;
     // Up / degraded / down from the time since the last message; runs before discovery each tick.
     void tick(RemoteSubsystem& remote, TimePoint now) override;
-    void forget(std::uint16_t subsystem) override { m_lastHeard.erase(subsystem); }
+    void forget(std::uint16_t subsystem) override {
+        m_lastHeard.erase(subsystem);
+        m_lastProbe.erase(subsystem);
+    }
 
     // Any message from the subsystem (firstContact: its record was just created). Returns true when the link
     // was down and is back: JausCore then tells every client (onLinkRestored).
@@ -31,6 +34,7 @@ public:
 private:
     EventsClient& m_events;
     std::map<std::uint16_t, TimePoint> m_lastHeard;
+    std::map<std::uint16_t, TimePoint> m_lastProbe; // link-down probes
 };
 
 } // namespace ocu::jaus

@@ -13,58 +13,74 @@ void ManagementClient::registerMessages(MessageTable& table) {
 
 void ManagementClient::onServicesKnown(RemoteSubsystem& r) {
     // Management state on change: an emergency shows at once, not at the next poll.
-    if (r.mobility().subsystem)
-        m_events.subscribe(r, r.mobility(), encodeEmpty(msg::QueryStatus), m_ctx.config().statusPollHz,
-                           EventType::EveryChange);
+    if (r.managementTarget().subsystem)
+        m_events.subscribe(r, r.managementTarget(), encodeEmpty(msg::QueryStatus),
+                           m_ctx.config().statusPollHz, EventType::EveryChange);
 }
 
 bool ManagementClient::command(std::uint16_t ss, std::uint16_t id, const char* what) {
     if (!m_ctx.config().mayControl())
         return m_ctx.refuse(ss, std::string("the monitor role may not ") + what);
     RemoteSubsystem* r = m_ctx.find(ss);
-    if (!r || !r->mobility().subsystem)
-        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+    if (!r || !r->managementTarget().subsystem)
+        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
     if (!r->snap.controlledByUs)
-        return m_ctx.refuse(ss, std::string(what) + " needs control of " + r->snap.callSign);
-    m_ctx.send(r->mobility(), encodeEmpty(id));
-    m_ctx.send(r->mobility(), encodeEmpty(msg::QueryStatus));
+        return m_ctx.refuse(ss, std::string(what) + " needs control of " + r->snap.callSign +
+                                    " (request control first)");
+    if (!m_ctx.send(r->managementTarget(), encodeEmpty(id)))
+        return m_ctx.sendFailed(ss, what);
+    m_ctx.send(r->managementTarget(), encodeEmpty(msg::QueryStatus));
     return true;
 }
 
-void ManagementClient::sendEmergency(const JausId& target, EmergencyCode code) {
-    // SetEmergency goes to the Core Mobility Component at safety-critical priority (AEP-4818 §4.5.2.1.1).
-    m_ctx.send(target, encodeU16(msg::SetEmergency, std::uint16_t(code)),
-               SendOptions{Priority::Safety, false});
+bool ManagementClient::sendEmergency(const JausId& target, EmergencyCode code) {
+    // SetEmergency goes to the component offering Management at safety-critical priority (AEP-4818
+    // §4.5.2.1.1).
+    const bool sent = m_ctx.send(target, encodeU16(msg::SetEmergency, std::uint16_t(code)),
+                                 SendOptions{Priority::Safety, false});
     m_ctx.send(target, encodeEmpty(msg::QueryStatus));
+    return sent;
 }
 
 bool ManagementClient::setEmergency(std::uint16_t ss, EmergencyCode code) {
     // Allowed for every role, the monitor included: an E-stop must never be refused by the console.
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r)
-        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
-    const JausId target = r->mobility().subsystem ? r->mobility() : JausId{ss, 0xFF, 0xFF};
+        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
+    // Services not reported yet: the stop still goes out, to every component of the subsystem (ss.255.255),
+    // because a stop must reach the vehicle if anything can. Services known and none offers Management
+    // (directly or by inheritance): nobody there would obey, so the outcome says so instead of "sent".
+    JausId target = r->managementTarget();
+    if (!target.subsystem) {
+        if (r->components.known)
+            return m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
+        target = JausId{ss, 0xFF, 0xFF};
+    }
     State& s = m_state[ss];
     s.emergencyCode = code;
     m_drive.endSession(*r, true);
     // Repeated until ReportStatus shows EMERGENCY (see tick).
-    sendEmergency(target, code);
     s.emergencyRetries = 5;
     s.lastEmergencySent = m_ctx.now();
+    if (!sendEmergency(target, code))
+        return m_ctx.sendFailed(ss, "SetEmergency");
     return true;
 }
 
 bool ManagementClient::clearEmergency(std::uint16_t ss) {
     if (!m_ctx.config().mayClearStop())
-        return m_ctx.refuse(ss, "this console's role may not clear an emergency (monitor or authority 0)");
+        return m_ctx.refuse(ss,
+                            "this console's role (monitor, authority 0) may stop but not clear an emergency;"
+                            " clear it from a console with command rights");
     RemoteSubsystem* r = m_ctx.find(ss);
-    if (!r || !r->mobility().subsystem)
-        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+    if (!r || !r->managementTarget().subsystem)
+        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
     State& s = m_state[ss];
     s.emergencyRetries = 0;
-    m_ctx.send(r->mobility(), encodeU16(msg::ClearEmergency, std::uint16_t(s.emergencyCode)),
-               SendOptions{Priority::Safety, false});
-    m_ctx.send(r->mobility(), encodeEmpty(msg::QueryStatus));
+    if (!m_ctx.send(r->managementTarget(), encodeU16(msg::ClearEmergency, std::uint16_t(s.emergencyCode)),
+                    SendOptions{Priority::Safety, false}))
+        return m_ctx.sendFailed(ss, "ClearEmergency");
+    m_ctx.send(r->managementTarget(), encodeEmpty(msg::QueryStatus));
     return true;
 }
 
@@ -91,7 +107,7 @@ void ManagementClient::onStatus(RemoteSubsystem& r, const JausId& src, ByteSpan 
 }
 
 void ManagementClient::tick(RemoteSubsystem& r, TimePoint now) {
-    const JausId mob = r.mobility();
+    const JausId mob = r.managementTarget();
     State& s = m_state[r.id()];
     if (mob.subsystem && r.reachable() && now - s.lastStatusPoll >= periodOf(m_ctx.config().statusPollHz)) {
         s.lastStatusPoll = now;

@@ -40,7 +40,7 @@ private:
         TimePoint lastStatusPoll{};
     };
     void onStatus(RemoteSubsystem& remote, const JausId& source, ByteSpan payload);
-    void sendEmergency(const JausId& target, EmergencyCode code);
+    bool sendEmergency(const JausId& target, EmergencyCode code);
 
     EventsClient& m_events;
     DriveClient& m_drive;

@@ -1,0 +1,387 @@
+#include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/udp.hpp>
+#include <boost/asio/post.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+namespace foreign {
+
+namespace asio = boost::asio;
+using asio::ip::udp;
+using Buf = std::vector<std::uint8_t>;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+// Message IDs (AS5710A core, jaus-wire.md §3.1).
+enum : std::uint16_t {
+    SetEmergency = 0x0006,
+    ClearEmergency = 0x0007,
+    Standby = 0x0003,
+    Resume = 0x0004,
+    RequestControl = 0x000D,
+    ReleaseControl = 0x000E,
+    ConfirmControl = 0x000F,
+    RejectControl = 0x0010,
+    QueryStatus = 0x2002,
+    QueryTimeout = 0x2003,
+    QueryControl = 0x200D,
+    QueryIdentification = 0x2B00,
+    QueryServices = 0x2B03,
+    ReportStatus = 0x4002,
+    ReportTimeout = 0x4003,
+    ReportControl = 0x400D,
+    ReportIdentification = 0x4B00,
+    ReportServices = 0x4B03,
+};
+
+void put8(Buf& b, std::uint8_t v) {
+    b.push_back(v);
+}
+void put16(Buf& b, std::uint16_t v) {
+    b.push_back(std::uint8_t(v));
+    b.push_back(std::uint8_t(v >> 8));
+}
+void put32(Buf& b, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i)
+        b.push_back(std::uint8_t(v >> (8 * i)));
+}
+void putStr8(Buf& b, const std::string& s) {
+    put8(b, std::uint8_t(s.size()));
+    b.insert(b.end(), s.begin(), s.end());
+}
+std::uint16_t get16(const std::uint8_t* p) {
+    return std::uint16_t(p[0] | p[1] << 8);
+}
+std::uint32_t get32(const std::uint8_t* p) {
+    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
+           std::uint32_t(p[3]) << 24;
+}
+
+// One AS5669A general-transport-header message (no header compression, single fragment).
+struct Message {
+    std::uint8_t props = 0; // priority bits 0-1, broadcast 2-3, ACK/NAK 4-5, data flags 6-7
+    std::uint32_t destination = 0, source = 0;
+    Buf payload; // message ID + body
+    std::uint16_t sequence = 0;
+};
+
+// Datagram = version 0x02, then messages of [type u8][size u16 = 14 + payload][props][dst u32][src u32]
+// [payload][seq u16], all little-endian (jaus-wire.md §2.1). False when the bytes break that layout.
+bool parse(const std::uint8_t* d, std::size_t n, std::vector<Message>& out) {
+    if (n < 1 || d[0] != 0x02)
+        return false;
+    std::size_t i = 1;
+    while (i < n) {
+        if (n - i < 3 || d[i] != 0) // type 0 = normal, no header compression
+            return false;
+        const std::size_t size = get16(d + i + 1);
+        if (size < 14 || i + size > n)
+            return false;
+        Message m;
+        m.props = d[i + 3];
+        m.destination = get32(d + i + 4);
+        m.source = get32(d + i + 8);
+        m.payload.assign(d + i + 12, d + i + size - 2);
+        m.sequence = get16(d + i + size - 2);
+        if ((m.props >> 6) != 0) // fragments: a console never needs them for what we answer
+            return false;
+        out.push_back(std::move(m));
+        i += size;
+    }
+    return true;
+}
+
+Buf frame(std::uint8_t props, std::uint32_t dst, std::uint32_t src, const Buf& payload, std::uint16_t seq) {
+    Buf b;
+    put8(b, 0x02);
+    put8(b, 0);
+    put16(b, std::uint16_t(14 + payload.size()));
+    put8(b, props);
+    put32(b, dst);
+    put32(b, src);
+    b.insert(b.end(), payload.begin(), payload.end());
+    put16(b, seq);
+    return b;
+}
+
+Buf withId(std::uint16_t id) {
+    Buf b;
+    put16(b, id);
+    return b;
+}
+
+} // namespace
+
+struct ForeignJausVehicle::Impl {
+    explicit Impl(VehicleOptions o) : opt(std::move(o)), socket(io), timer(io) {
+        socket.open(udp::v4());
+        socket.bind(udp::endpoint(asio::ip::make_address_v4("127.0.0.1"), opt.port));
+        self = id(opt.subsystem, opt.node, opt.component);
+        receive();
+        tick();
+        thread = std::thread([this] { io.run(); });
+    }
+    ~Impl() {
+        io.stop();
+        if (thread.joinable())
+            thread.join();
+    }
+
+    bool forUs(std::uint32_t dst) const {
+        const std::uint16_t ss = std::uint16_t(dst >> 16);
+        const std::uint8_t node = std::uint8_t(dst >> 8), comp = std::uint8_t(dst);
+        return (ss == 0xFFFF || ss == opt.subsystem) && (node == 0xFF || node == opt.node) &&
+               (comp == 0xFF || comp == opt.component);
+    }
+
+    void receive() {
+        socket.async_receive_from(asio::buffer(buffer), from,
+                                  [this](boost::system::error_code ec, std::size_t n) {
+                                      if (ec == asio::error::operation_aborted)
+                                          return;
+                                      if (!ec && !offline)
+                                          onDatagram(n);
+                                      receive();
+                                  });
+    }
+
+    void onDatagram(std::size_t n) {
+        std::vector<Message> msgs;
+        std::lock_guard lock(mutex);
+        if (!parse(buffer.data(), n, msgs)) {
+            ++malformed;
+            return;
+        }
+        for (Message& m : msgs) {
+            if (!forUs(m.destination))
+                continue;
+            endpoints[m.source] = from;
+            if (((m.props >> 4) & 3) == 1 && m.destination == self) // ACK requested: ACK it (same seq)
+                send(from, frame(std::uint8_t(0x30 | (m.props & 3)), m.source, self, {}, m.sequence), false);
+            if (m.payload.size() < 2)
+                continue;
+            const std::uint16_t mid = get16(m.payload.data());
+            ++counts[mid];
+            ++countsFrom[{mid, m.source}];
+            handle(mid, m.source, m.payload.data() + 2, m.payload.size() - 2);
+        }
+    }
+
+    void reply(std::uint32_t to, const Buf& payload) {
+        auto it = endpoints.find(to);
+        if (it == endpoints.end())
+            return;
+        send(it->second, frame(0x01, to, self, payload, seq++), true);
+    }
+
+    void send(const udp::endpoint& to, Buf datagram, bool delayed) {
+        if (offline)
+            return;
+        if (!delayed || opt.replyDelayMs <= 0) {
+            boost::system::error_code ec;
+            socket.send_to(asio::buffer(datagram), to, 0, ec);
+            return;
+        }
+        auto t = std::make_shared<asio::steady_timer>(io, std::chrono::milliseconds(opt.replyDelayMs));
+        t->async_wait([this, t, to, d = std::move(datagram)](boost::system::error_code ec) {
+            if (ec || offline)
+                return;
+            socket.send_to(asio::buffer(d), to, 0, ec);
+        });
+    }
+
+    void handle(std::uint16_t mid, std::uint32_t src, const std::uint8_t* body, std::size_t len) {
+        switch (mid) {
+        case QueryIdentification: {
+            if (len < 1)
+                return;
+            Buf b = withId(ReportIdentification);
+            put8(b, body[0]);
+            put16(b, body[0] == 2 ? 10001 : body[0] == 3 ? 40001 : 60001); // VEHICLE, NODE, COMPONENT
+            putStr8(b, opt.callSign);
+            return reply(src, b);
+        }
+        case QueryServices: {
+            Buf b = withId(ReportServices);
+            put8(b, 1); // nodes
+            put8(b, opt.node);
+            put8(b, 1); // components
+            put8(b, opt.component);
+            put8(b, 0); // instance
+            put8(b, std::uint8_t(opt.services.size()));
+            for (auto& uri : opt.services) {
+                putStr8(b, uri);
+                put8(b, 1);
+                put8(b, 1);
+            }
+            return reply(src, b);
+        }
+        case RequestControl: {
+            if (!opt.accessControl || len < 1)
+                return;
+            const std::uint8_t authority = body[0];
+            auto confirm = [&](std::uint8_t code) {
+                Buf b = withId(ConfirmControl);
+                put8(b, code);
+                reply(src, b);
+            };
+            if (controller == 0 || controller == src) {
+                controller = src;
+                controllerAuthority = authority;
+                lastRequest = Clock::now();
+                return confirm(0);
+            }
+            if (authority > controllerAuthority) { // pre-emption (AS5710A AccessControl)
+                const std::uint32_t old = controller;
+                controller = src;
+                controllerAuthority = authority;
+                lastRequest = Clock::now();
+                if (opt.tellOldController)
+                    rejectTo(old, 0);
+                if (opt.rejectThenConfirm)
+                    rejectTo(src, 0);
+                return confirm(0);
+            }
+            return confirm(2); // INSUFFICIENT_AUTHORITY
+        }
+        case ReleaseControl:
+            if (opt.accessControl && src == controller) {
+                controller = 0;
+                controllerAuthority = 0;
+                rejectTo(src, 0); // CONTROL_RELEASED
+            }
+            return;
+        case QueryControl:
+            if (opt.accessControl && opt.answerQueryControl) {
+                Buf b = withId(ReportControl);
+                put16(b, std::uint16_t(controller >> 16));
+                put8(b, std::uint8_t(controller >> 8));
+                put8(b, std::uint8_t(controller));
+                put8(b, controllerAuthority);
+                reply(src, b);
+            }
+            return;
+        case QueryTimeout:
+            if (opt.accessControl && opt.answerQueryTimeout) {
+                Buf b = withId(ReportTimeout);
+                put8(b, opt.accessTimeoutS);
+                reply(src, b);
+            }
+            return;
+        case SetEmergency: // from any client (AS5710A Management)
+            if (opt.management && len >= 2 && status != 5) {
+                beforeEmergency = status;
+                status = 5;
+            }
+            return;
+        case ClearEmergency:
+            if (opt.management && len >= 2 && status == 5)
+                status = beforeEmergency;
+            return;
+        case Resume:
+        case Standby:
+            if (opt.management && src == controller && status != 5)
+                status = mid == Resume ? 1 : 2;
+            return;
+        case QueryStatus:
+            if (opt.management) {
+                Buf b = withId(ReportStatus);
+                put8(b, status);
+                put32(b, 0);
+                reply(src, b);
+            }
+            return;
+        default:
+            return; // CreateEvent, QueryHeartbeatPulse ...: not offered, not answered
+        }
+    }
+
+    void rejectTo(std::uint32_t to, std::uint8_t code) {
+        Buf b = withId(RejectControl);
+        put8(b, code);
+        reply(to, b);
+    }
+
+    void tick() {
+        timer.expires_after(std::chrono::milliseconds(50));
+        timer.async_wait([this](boost::system::error_code ec) {
+            if (ec)
+                return;
+            {
+                std::lock_guard lock(mutex);
+                if (controller != 0 &&
+                    Clock::now() - lastRequest > std::chrono::seconds(opt.accessTimeoutS)) {
+                    if (opt.tellOldController)
+                        rejectTo(controller, 0);
+                    controller = 0;
+                    controllerAuthority = 0;
+                }
+            }
+            tick();
+        });
+    }
+
+    VehicleOptions opt;
+    asio::io_context io;
+    udp::socket socket;
+    asio::steady_timer timer;
+    std::thread thread;
+    std::array<std::uint8_t, 65536> buffer{};
+    udp::endpoint from;
+    std::uint32_t self = 0;
+    std::atomic<bool> offline{false};
+
+    mutable std::mutex mutex; // everything below
+    std::map<std::uint32_t, udp::endpoint> endpoints;
+    std::map<std::uint16_t, int> counts;
+    std::map<std::pair<std::uint16_t, std::uint32_t>, int> countsFrom;
+    int malformed = 0;
+    std::uint16_t seq = 0;
+    std::uint32_t controller = 0;
+    std::uint8_t controllerAuthority = 0;
+    Clock::time_point lastRequest{};
+    std::uint8_t status = 2; // STANDBY
+    std::uint8_t beforeEmergency = 2;
+};
+
+ForeignJausVehicle::ForeignJausVehicle(VehicleOptions options)
+    : m_impl(std::make_unique<Impl>(std::move(options))) {}
+ForeignJausVehicle::~ForeignJausVehicle() = default;
+
+std::uint16_t ForeignJausVehicle::port() const {
+    return m_impl->socket.local_endpoint().port();
+}
+void ForeignJausVehicle::setOffline(bool offline) {
+    m_impl->offline = offline;
+}
+std::uint32_t ForeignJausVehicle::controller() const {
+    std::lock_guard lock(m_impl->mutex);
+    return m_impl->controller;
+}
+std::uint8_t ForeignJausVehicle::status() const {
+    std::lock_guard lock(m_impl->mutex);
+    return m_impl->status;
+}
+int ForeignJausVehicle::received(std::uint16_t mid) const {
+    std::lock_guard lock(m_impl->mutex);
+    auto it = m_impl->counts.find(mid);
+    return it == m_impl->counts.end() ? 0 : it->second;
+}
+int ForeignJausVehicle::receivedFrom(std::uint16_t mid, std::uint32_t src) const {
+    std::lock_guard lock(m_impl->mutex);
+    auto it = m_impl->countsFrom.find({mid, src});
+    return it == m_impl->countsFrom.end() ? 0 : it->second;
+}
+int ForeignJausVehicle::malformed() const {
+    std::lock_guard lock(m_impl->mutex);
+    return m_impl->malformed;
+}
+
+} // namespace foreign

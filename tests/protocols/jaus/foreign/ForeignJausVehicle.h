@@ -1,0 +1,75 @@
+#pragma once
+// A foreign JAUS vehicle for the OCU's end-to-end tests (issue 13 §7): a minimal, independent JUDP peer
+// written from the JSS texts (AS5669A JUDP framing, AS5710A core services, AS6009 mobility service names)
+// and the IOP notes (shared/research/jaus-wire.md §2-3, jaus-services-extra.md §5). It shares no code with
+// sim/jaus or protocols/jaus (its own tiny encoder and decoder, Boost.Asio only), so it checks our bytes
+// rather than agreeing with them by construction.
+//
+// One component (by default 126.1.1) hosts every service, and it behaves the way public stacks often do,
+// by configuration: only derived services listed in ReportServices, no events (CreateEvent unanswered),
+// no heartbeat, no answer to QueryControl or QueryTimeout, a pre-empting RequestControl answered with
+// RejectControl then ConfirmControl(accepted) to the same requester, the old controller never told it
+// lost control, answers delayed. It listens on 127.0.0.1 unicast only (no multicast): consoles find it
+// through their static endpoint list.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace foreign {
+
+struct VehicleOptions {
+    std::uint16_t subsystem = 126;
+    std::uint8_t node = 1;
+    std::uint8_t component = 1;
+    std::string callSign = "FOREIGN-126";
+    // ReportServices lists exactly these (URI, version 1.1): by default only derived services.
+    std::vector<std::string> services = {"urn:jaus:jss:mobility:LocalPoseSensor",
+                                         "urn:jaus:jss:mobility:LocalWaypointListDriver"};
+    // Whether this component implements Management (SetEmergency, ClearEmergency, QueryStatus). True for
+    // any service deriving from core:Management (LocalWaypointListDriver -> ListManager -> Management).
+    bool management = true;
+    // Whether it implements AccessControl (RequestControl ...): LocalPoseSensor derives from it.
+    bool accessControl = true;
+    bool answerQueryControl = false;
+    bool answerQueryTimeout = false;
+    // A pre-empting RequestControl: RejectControl(0) to the requester, then ConfirmControl(0).
+    bool rejectThenConfirm = true;
+    // Whether the pre-empted (or timed-out) controller gets RejectControl(CONTROL_RELEASED).
+    bool tellOldController = false;
+    int replyDelayMs = 0;
+    std::uint8_t accessTimeoutS = 3; // control lapses without a re-request within this time
+    std::uint16_t port = 0;          // 127.0.0.1 unicast port; 0 = ephemeral
+};
+
+class ForeignJausVehicle {
+public:
+    explicit ForeignJausVehicle(VehicleOptions options);
+    ~ForeignJausVehicle();
+    ForeignJausVehicle(const ForeignJausVehicle&) = delete;
+    ForeignJausVehicle& operator=(const ForeignJausVehicle&) = delete;
+
+    std::uint16_t port() const;
+    // Offline: everything received is dropped and nothing is sent (a vehicle out of radio range).
+    void setOffline(bool offline);
+
+    // Observed state (thread-safe).
+    std::uint32_t controller() const; // JAUS ID as u32 (ss<<16 | node<<8 | comp); 0 when uncontrolled
+    std::uint8_t status() const;      // ReportStatus code: 1 READY, 2 STANDBY, 5 EMERGENCY
+    int received(std::uint16_t messageId) const;
+    int receivedFrom(std::uint16_t messageId, std::uint32_t source) const;
+    // Datagrams received that did not parse as AS5669A JUDP (must stay 0: our bytes are checked here).
+    int malformed() const;
+
+    static std::uint32_t id(std::uint16_t ss, std::uint8_t node, std::uint8_t comp) {
+        return std::uint32_t(ss) << 16 | std::uint32_t(node) << 8 | comp;
+    }
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace foreign
