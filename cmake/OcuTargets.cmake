@@ -43,6 +43,13 @@ endfunction()
 # ocu_add_bench(NAME n SOURCES s... [LIBS l...]): a Google Benchmark (or harness) executable under bench/.
 function(ocu_add_bench)
   cmake_parse_arguments(B "" "NAME" "SOURCES;LIBS" ${ARGN})
+  # A build that leaves a protocol out (OCU_SKIP_DIRS) leaves out its benchmarks too.
+  foreach(l IN LISTS B_LIBS)
+    if(l MATCHES "^ocu_" AND NOT TARGET ${l})
+      message(STATUS "${B_NAME} left out: ${l} is not part of this build")
+      return()
+    endif()
+  endforeach()
   add_executable(${B_NAME} ${B_SOURCES})
   target_link_libraries(${B_NAME} PRIVATE benchmark::benchmark ${B_LIBS})
   ocu_set_warnings(${B_NAME})
