@@ -14,12 +14,85 @@
 #include <QLabel>
 #include <QLocale>
 #include <QMessageBox>
+#include <QSocketNotifier>
 #include <QTimer>
 #include <QTranslator>
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 namespace ocu {
+
+namespace {
+
+constexpr int kQuitSignals[] = {SIGINT, SIGTERM, SIGHUP};
+int g_signalPipe[2] = {-1, -1};
+volatile std::sig_atomic_t g_quitSignal = 0;
+
+// Async-signal-safe only: write(2) and sigaction(2) (POSIX.1-2017 §2.4.3).
+extern "C" void onQuitSignal(int sig) {
+    const int savedErrno = errno;
+    g_quitSignal = sig;
+    const unsigned char b = static_cast<unsigned char>(sig);
+    if (g_signalPipe[1] >= 0) {
+        [[maybe_unused]] const ssize_t n = ::write(g_signalPipe[1], &b, 1);
+    }
+    // A second signal while the console shuts down ends it at once.
+    struct sigaction dfl {};
+    dfl.sa_handler = SIG_DFL;
+    sigemptyset(&dfl.sa_mask);
+    for (int s : kQuitSignals)
+        ::sigaction(s, &dfl, nullptr);
+    errno = savedErrno;
+}
+
+} // namespace
+
+void installQuitSignalHandlers() {
+    if (g_signalPipe[0] >= 0)
+        return;
+    if (::pipe2(g_signalPipe, O_NONBLOCK | O_CLOEXEC) != 0) {
+        g_signalPipe[0] = g_signalPipe[1] = -1;
+        std::perror("ocu: signal pipe");
+        return;
+    }
+    struct sigaction sa {};
+    sa.sa_handler = onQuitSignal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    for (int s : kQuitSignals)
+        ::sigaction(s, &sa, nullptr);
+}
+
+void watchQuitSignals() {
+    if (g_signalPipe[0] < 0 || !QCoreApplication::instance())
+        return;
+    auto* n = new QSocketNotifier(g_signalPipe[0], QSocketNotifier::Read, QCoreApplication::instance());
+    QObject::connect(n, &QSocketNotifier::activated, n, [] {
+        unsigned char b = 0;
+        while (::read(g_signalPipe[0], &b, 1) > 0) {
+        }
+        std::fprintf(stderr, "ocu: SIG%s received, shutting down\n", sigabbrev_np(g_quitSignal));
+        // exit(0), not quit(): every event loop ends (also a modal dialog's) and no window may refuse to
+        // close; runConsole then stops the stacks as after closing the window.
+        QCoreApplication::exit(0);
+    });
+}
+
+int quitSignal() {
+    return g_quitSignal;
+}
+
+int execUnlessQuitting(QApplication& app) {
+    // A signal after this test leaves its byte in the pipe: the notifier fires inside exec().
+    if (g_quitSignal != 0)
+        return 0;
+    return app.exec();
+}
 
 void prepareSurfaceFormat() {
 #ifdef OCU_HAVE_OCU_VIEW3D
@@ -114,11 +187,11 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
             }
             app.quit();
         });
-        app.exec();
+        execUnlessQuitting(app);
         runtime.stop();
         return exitCode;
     }
-    exitCode = app.exec();
+    exitCode = execUnlessQuitting(app);
     runtime.stop();
     return exitCode;
 }

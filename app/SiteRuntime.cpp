@@ -1,5 +1,6 @@
 #include "app/SiteRuntime.h"
 
+#include "app/ConsoleApp.h"
 #include "app/LogRouting.h"
 #include "app/MainWindow.h"
 #include "app/ProtocolModule.h"
@@ -287,7 +288,7 @@ int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
         QTimer::singleShot(static_cast<int>(durationSeconds * 1000), &app, &QApplication::quit);
     else
         connect(mon, &HeadlessMonitor::inputFinished, &app, &QApplication::quit);
-    const int rc = app.exec();
+    const int rc = execUnlessQuitting(app); // SIGINT/SIGTERM quit as end of input does
     stop();
     return rc;
 }

@@ -8,6 +8,8 @@
 #include <cstdio>
 
 int main(int argc, char** argv) {
+    // First, before any thread or library (SDL) installs its own: SIGINT/SIGTERM/SIGHUP quit cleanly.
+    ocu::installQuitSignalHandlers();
     // --headless, --help and --version need no display at all, nor does --screenshot when there is none;
     // decide the platform before QApplication exists.
     const bool haveDisplay =
@@ -32,6 +34,7 @@ int main(int argc, char** argv) {
     QGuiApplication::setHighDpiScaleFactorRoundingPolicy(Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     ocu::prepareSurfaceFormat();
     QApplication app(argc, argv);
+    ocu::watchQuitSignals();
     QApplication::setOrganizationName(QStringLiteral("OCU"));
     QApplication::setApplicationName(QStringLiteral("ocu"));
     QApplication::setApplicationVersion(QStringLiteral(OCU_VERSION));

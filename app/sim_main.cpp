@@ -77,7 +77,10 @@ int main(int argc, char** argv) {
         QStringLiteral("separate-map-service"),
         QStringLiteral("The AHS serves its ISO 23725 map service on a socket of its "
                        "own (the written configuration gets its mapUrl)."));
-    p.addOptions({config, duration, ugvs, trucks, rollers, iface, writeConfig, separateMap});
+    QCommandLineOption truckRate(QStringLiteral("truck-rate"),
+                                 QStringLiteral("Positions per second of each simulated haul truck (1-10)."),
+                                 QStringLiteral("hz"));
+    p.addOptions({config, duration, ugvs, trucks, rollers, iface, writeConfig, separateMap, truckRate});
     p.process(app);
 
     auto site = ocu::loadSite(p.value(config));
@@ -102,6 +105,15 @@ int main(int argc, char** argv) {
     if (!intOption(ugvs, cfg.simulation.jausUgvs, 50) || !intOption(trucks, cfg.simulation.ahsTrucks, 1000) ||
         !intOption(rollers, cfg.simulation.osyrisRollers, 3))
         return 2;
+    if (p.isSet(truckRate)) {
+        bool ok = false;
+        const double hz = p.value(truckRate).toDouble(&ok);
+        if (!ok || hz < 1.0 || hz > 10.0) {
+            std::fprintf(stderr, "ocu-sim: --truck-rate must be a number 1..10\n");
+            return 2;
+        }
+        cfg.simulation.ahsPositionRateHz = hz;
+    }
     cfg.simulation.enabled = true;
     if (p.isSet(separateMap))
         cfg.simulation.ahsSeparateMapService = true;

@@ -9,6 +9,9 @@
 
 #include <cmath>
 #include <functional>
+#include <future>
+#include <memory>
+#include <vector>
 
 namespace ocu::iso23725 {
 
@@ -222,16 +225,33 @@ void IsoStack::stop() {
     auto& d = *m_impl;
     if (!d.io.running())
         return;
+    // Every WebSocket gets a close frame with 1001 "going away" (RFC 6455 §7.4.1) instead of a dropped TCP
+    // connection (the peer would see 1006); the peer has kCloseGrace to answer, then the sockets are dropped.
+    constexpr auto kCloseGrace = std::chrono::milliseconds(500);
+    auto closed = std::make_shared<std::promise<void>>();
+    auto finished = closed->get_future();
     d.io.call([&] {
         d.positionTimer.cancel();
         d.pollTimer.cancel();
         d.positionFlush.timer.cancel();
+        std::vector<WsEndpoint*> endpoints;
         for (auto& [n, l] : d.links) {
-            l->main->stop();
+            endpoints.push_back(l->main.get());
             if (l->map)
-                l->map->stop();
+                endpoints.push_back(l->map.get());
         }
+        if (endpoints.empty()) {
+            closed->set_value();
+            return;
+        }
+        auto left = std::make_shared<std::size_t>(endpoints.size());
+        for (WsEndpoint* e : endpoints)
+            e->shutdown(kCloseGrace, [left, closed] {
+                if (--*left == 0)
+                    closed->set_value();
+            });
     });
+    finished.wait_for(kCloseGrace + std::chrono::milliseconds(200));
     d.io.stop();
     d.links.clear();
 }

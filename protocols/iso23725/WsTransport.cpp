@@ -84,6 +84,8 @@ public:
     virtual ~SessionBase() = default;
     virtual void send(std::string text, bool binary = false) = 0;
     virtual void close(const std::string& reason) = 0;
+    // Close frame with 1001, then teardown when the handshake ends or after `grace`; done() once.
+    virtual void goAway(std::chrono::milliseconds grace, std::function<void()> done) = 0;
     virtual std::size_t queuedBytes() const = 0;
 };
 
@@ -167,6 +169,24 @@ public:
     }
 
     void close(const std::string& reason) override { fail(reason); }
+    void goAway(std::chrono::milliseconds grace, std::function<void()> done) override {
+        if (m_closing) {
+            if (done)
+                done();
+            return;
+        }
+        m_closing = true; // no new writes; a write in progress finishes before Beast sends the close frame
+        m_goAwayDone = std::move(done);
+        auto self = this->shared_from_this();
+        m_timer.cancel();
+        m_timer.expires_after(grace);
+        m_timer.async_wait([self](error_code ec) {
+            if (ec != asio::error::operation_aborted)
+                self->teardown("close handshake timed out");
+        });
+        m_ws->async_close(websocket::close_reason(websocket::close_code::going_away, "FMS shutting down"),
+                          [self](error_code ec) { self->teardown(ec ? ec.message() : "closed (1001)"); });
+    }
     std::size_t queuedBytes() const override { return m_queuedBytes; }
 
 private:
@@ -192,6 +212,7 @@ private:
                 logWarning(kLog, msg);
                 fail(msg);
             } else if (ec == websocket::error::closed) {
+                m_ep->counters.add("ws.rx.close." + std::to_string(m_ws->reason().code));
                 fail("closed by peer (" + std::to_string(m_ws->reason().code) + ")");
             } else {
                 fail(ec.message());
@@ -277,6 +298,19 @@ private:
         });
     }
 
+    void teardown(const std::string& reason) {
+        if (m_tornDown)
+            return;
+        m_tornDown = true;
+        m_timer.cancel();
+        error_code ignored;
+        beast::get_lowest_layer(*m_ws).socket().shutdown(tcp::socket::shutdown_both, ignored);
+        beast::get_lowest_layer(*m_ws).close();
+        m_ep->closed(m_id, reason);
+        if (auto done = std::move(m_goAwayDone))
+            done();
+    }
+
     void fail(const std::string& reason) {
         if (m_closing)
             return;
@@ -297,6 +331,8 @@ private:
     std::size_t m_queuedBytes = 0;
     bool m_writing = false;
     bool m_closing = false;
+    bool m_tornDown = false;
+    std::function<void()> m_goAwayDone;
     KeepAlive m_keepAlive;
 };
 
@@ -574,6 +610,34 @@ void WsEndpoint::stop() {
     for (auto& [id, s] : sessions)
         s->close("stopped");
     d.sessions.clear();
+}
+
+void WsEndpoint::shutdown(std::chrono::milliseconds grace, std::function<void()> done) {
+    auto& d = *m_impl;
+    if (d.stopped) {
+        if (done)
+            done();
+        return;
+    }
+    d.stopped = true;
+    d.reconnectTimer.cancel();
+    error_code ignored;
+    d.acceptor.close(ignored);
+    auto sessions = std::move(d.sessions);
+    d.sessions.clear();
+    d.handler = nullptr;
+    if (sessions.empty()) {
+        if (done)
+            done();
+        return;
+    }
+    auto left = std::make_shared<std::size_t>(sessions.size());
+    auto all = std::make_shared<std::function<void()>>(std::move(done));
+    for (auto& [id, s] : sessions)
+        s->goAway(grace, [left, all] {
+            if (--*left == 0 && *all)
+                (*all)();
+        });
 }
 
 bool WsEndpoint::send(SessionId id, std::string text) {

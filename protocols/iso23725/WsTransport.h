@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -67,8 +68,8 @@ public:
 
 class WsEndpoint {
 public:
-    // counters: "ws.rx.frames", "ws.tx.frames", "rx.rejected.binary", "rx.rejected.too_big",
-    // "ws.connect.failed", "ws.dead" ... are added there.
+    // counters: "ws.rx.frames", "ws.tx.frames", "ws.rx.close.<code>" (close frames received, by code),
+    // "rx.rejected.binary", "rx.rejected.too_big", "ws.connect.failed", "ws.dead" ... are added there.
     WsEndpoint(boost::asio::io_context& io, WsOptions options, WsHandler& handler, Counters& counters);
     ~WsEndpoint();
     WsEndpoint(const WsEndpoint&) = delete;
@@ -77,8 +78,14 @@ public:
     // Client: starts connecting (and reconnecting); service: binds and listens. Error for a bad URL, TLS
     // files or an address in use.
     Result<bool> start();
-    // Closes every session and stops reconnecting; no callback after this returns.
+    // Closes every session and stops reconnecting; no callback after this returns. Drops the TCP connections
+    // at once (the peer sees 1006): use shutdown() when the io thread can run a little longer.
     void stop();
+    // Orderly end (RFC 6455 §7.1.2, close code 1001 "going away" per §7.4.1): stops reconnecting, sends a
+    // close frame on every open session, and calls done() on the io thread once every session has finished
+    // its closing handshake or `grace` has passed (then the connection is dropped). No WsHandler callback
+    // after this returns; done() runs exactly once.
+    void shutdown(std::chrono::milliseconds grace, std::function<void()> done);
     // Queues one text frame; false when the session is not open.
     bool send(SessionId id, std::string text);
     // Binary frame (never used by ISO 23725 itself: for fault-injection tests of the peer's tolerance).

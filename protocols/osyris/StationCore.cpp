@@ -122,6 +122,12 @@ void StationCore::sendText(const std::string& text, std::uint8_t to) {
     Bytes b;
     encodeMsg(b, idx(), to, text, m_cfg.checksum);
     enqueue(std::move(b), true);
+    // Sent now, not at the next Beat: the operator's texts carry the console's STOP, and the specification
+    // binds no message kind but Alive to the timer (OSYRIS communication spec §6: text messages are sent "for
+    // operator communication", Alive "periodically"; concatenating messages into one datagram is
+    // "recommended, but not required"). The Beat stays the pacing of the queue's periodic flush (§7 Beat);
+    // what is queued now leaves with the text, in order.
+    flush(m_clock.now(), true);
     m_counters.add("tx.msg");
 }
 

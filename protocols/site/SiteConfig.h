@@ -28,6 +28,8 @@ struct SimulationConfig {
     bool enabled = false;
     int jausUgvs = 2;
     int ahsTrucks = 6;
+    double ahsPositionRateHz =
+        2.0; // truck positions per second (1-10, ISO 23725 §5 row 3); ocu-sim --truck-rate
     // The simulated AHS serves its map service on a socket of its own (ISO 23725 Q10) instead of the main
     // one.
     bool ahsSeparateMapService = false;

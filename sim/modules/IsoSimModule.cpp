@@ -21,7 +21,7 @@ public:
         SimulatedAhsConfig c;
         c.truckCount = s.ahsTrucks;
         c.origin = config.origin;
-        c.positionRateHz = 2.0;
+        c.positionRateHz = s.ahsPositionRateHz;
         c.separateMapService = s.ahsSeparateMapService;
         c.bindAddress = s.interfaceAddress;
         auto demo = std::make_unique<IsoDemo>(startIsoDemo(c));

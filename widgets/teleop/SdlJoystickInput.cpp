@@ -8,6 +8,10 @@ namespace ocu {
 
 SdlJoystickInput::SdlJoystickInput(QObject* parent) : InputDevice(parent) {
     SDL_SetHint(SDL_HINT_JOYSTICK_ALLOW_BACKGROUND_EVENTS, "1");
+    // The joystick subsystem starts SDL's event subsystem, which would install SIGINT/SIGTERM handlers that
+    // only queue an SDL_QUIT nobody reads: the console would ignore kill and Ctrl+C. The application owns the
+    // signals (app/ConsoleApp.cpp, installQuitSignalHandlers).
+    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
     SDL_SetMainReady();
     if (SDL_InitSubSystem(SDL_INIT_JOYSTICK) != 0) {
         m_error = QString::fromUtf8(SDL_GetError());

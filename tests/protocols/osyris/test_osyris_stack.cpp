@@ -2,6 +2,11 @@
 // recovery after impaired reception, restart on the same SQLite file.
 #include "sim/osyris/OsyrisDemo.h"
 
+#include "protocols/osyris/OsyrisCodec.h"
+#include "protocols/osyris/RibbonStore.h"
+#include "protocols/osyris/StationCore.h"
+
+#include "protocols/common/Clock.h"
 #include "protocols/common/Udp.h"
 
 #include <QTemporaryDir>
@@ -88,6 +93,36 @@ std::uint64_t siteCount(OsyrisDemo& demo) {
 class TestOsyrisLoopback : public QObject {
     Q_OBJECT
 private slots:
+    // Issue 13 §10: the operator's text (the console's STOP) leaves at once, not at the station's next Beat
+    // (OSYRIS spec §6 binds only Alive to the timer; concatenation is recommended, not required).
+    void textLeavesAtOnceNotAtTheBeat() {
+        FakeClock clock;
+        auto store = RibbonStore::inMemory();
+        OsyrisConfig cfg;
+        cfg.stationIndex = 4;
+        cfg.beatMs = 100;
+        std::vector<Bytes> sent;
+        StationCore core(cfg, clock, *store, nullptr, nullptr, [&](const Bytes& d) { sent.push_back(d); });
+        core.start();
+        clock.advance(std::chrono::milliseconds(100));
+        core.tick(); // the start's requests and Alive leave on the first Beat
+        sent.clear();
+        clock.advance(std::chrono::milliseconds(30)); // between two Beats
+        core.sendText("STOP ALL issued by the operator control unit");
+        QCOMPARE(sent.size(), std::size_t(1)); // no tick() in between
+        const auto dec = decodeDatagram(sent[0], cfg.checksum);
+        bool found = false;
+        for (const auto& m : dec.messages)
+            if (const auto* t = std::get_if<CmMsg>(&m.body))
+                found = found || t->text == "STOP ALL issued by the operator control unit";
+        QVERIFY(found);
+        clock.advance(std::chrono::milliseconds(70));
+        core.tick();
+        for (std::size_t i = 1; i < sent.size(); ++i) // sent once: the Beat does not repeat it
+            for (const auto& m : decodeDatagram(sent[i], cfg.checksum).messages)
+                QVERIFY(!std::holds_alternative<CmMsg>(m.body));
+    }
+
     void demoSiteAndOcuJoin() {
         OsyrisDemoOptions o;
         o.speedUp = 20;
