@@ -132,7 +132,7 @@ private slots:
     void stopConfirmationLatencyAndAlarm() {
         AlarmModel alarms;
         CommandGate stop(&alarms);
-        stop.setConfirmTimeoutMs(300);
+        stop.setConfirmTimeoutMs(2000);
         FakeFleetBridge jaus(Protocol::Jaus), iso(Protocol::Iso23725);
         for (FakeFleetBridge* b : {&jaus, &iso}) {
             stop.addBridge(b);

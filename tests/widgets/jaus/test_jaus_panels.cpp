@@ -309,6 +309,11 @@ private slots:
         QVERIFY2(audits.filter(QRegularExpression(QStringLiteral("^clear_stop by teleop: sent to jaus:126")))
                          .size() == 1,
                  qPrintable(audits.join(QLatin1Char('\n'))));
+        // Control requests from the JAUS panel are audited too.
+        QVERIFY2(
+            !audits.filter(QRegularExpression(QStringLiteral("^request_control by gui: sent to jaus:126")))
+                 .isEmpty(),
+            qPrintable(audits.join(QLatin1Char('\n'))));
     }
 
     void preemptedByHigherAuthorityTurnsGrey() {
