@@ -2,9 +2,11 @@
 
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
+
 #include "models/FleetBridge.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
+#include <QJsonArray>
 
 #include <QDateTime>
 #include <QFile>
@@ -213,6 +215,13 @@ void HeadlessMonitor::onEvent(const FleetEvent& e) {
 }
 
 QByteArray HeadlessMonitor::result(const QJsonObject& cmd, bool ok, const QString& message) {
+    CommandResult r;
+    r.ok = ok;
+    r.message = message;
+    return result(cmd, r, false);
+}
+
+QByteArray HeadlessMonitor::result(const QJsonObject& cmd, const CommandResult& r, bool withTargets) {
     QJsonObject o;
     o[QStringLiteral("type")] = QStringLiteral("result");
     QString name = cmd.value(QStringLiteral("cmd")).toString();
@@ -223,12 +232,60 @@ QByteArray HeadlessMonitor::result(const QJsonObject& cmd, bool ok, const QStrin
         o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
     if (cmd.contains(QStringLiteral("id")))
         o[QStringLiteral("id")] = cmd.value(QStringLiteral("id"));
-    o[QStringLiteral("ok")] = ok;
-    o[QStringLiteral("message")] = message;
+    o[QStringLiteral("ok")] = r.ok;
+    if (withTargets) {
+        // What went on the wire, per target (issue 13 §1).
+        QJsonArray targets;
+        for (const CommandTarget& t : r.targets) {
+            QJsonObject j;
+            j[QStringLiteral("id")] = t.id;
+            j[QStringLiteral("sent")] = t.sent;
+            if (!t.sent)
+                j[QStringLiteral("reason")] = t.reason;
+            targets.append(j);
+        }
+        o[QStringLiteral("targets")] = targets;
+    }
+    o[QStringLiteral("message")] = r.message;
     writeLine(o);
     QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
     emit commandHandled(line);
     return line;
+}
+
+QByteArray HeadlessMonitor::viaGate(const QJsonObject& cmd,
+                                    const std::function<void(CommandGate::ResultHandler)>& issue,
+                                    const QString& suffix) {
+    // The gate answers when every stack reported its outcome (or its deadline passed): the result line is
+    // written then. When every bridge decided at once, the line is also returned here.
+    struct Call {
+        bool inCall = true;
+        QByteArray line;
+    };
+    auto call = std::make_shared<Call>();
+    ++m_pendingResults;
+    QPointer<HeadlessMonitor> self(this);
+    issue([self, call, cmd, suffix](const CommandResult& r) {
+        if (!self)
+            return;
+        CommandResult shown = r;
+        if (!r.ok && !suffix.isEmpty())
+            shown.message += suffix;
+        const QByteArray line = self->result(cmd, shown, true);
+        if (call->inCall)
+            call->line = line;
+        --self->m_pendingResults;
+        self->maybeFinishInput();
+    });
+    call->inCall = false;
+    return call->line;
+}
+
+void HeadlessMonitor::maybeFinishInput() {
+    if (m_inputEnded && m_pendingResults == 0 && !m_finishedSignalled) {
+        m_finishedSignalled = true;
+        emit inputFinished();
+    }
 }
 
 QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
@@ -254,33 +311,34 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
     if (!m_gate)
         return result(cmd, false, QStringLiteral("no stop controller"));
     const QString origin = QStringLiteral("headless");
-    if (name == QLatin1String("stop_all")) {
-        const CommandResult r = m_gate->stopAll(origin);
-        return result(cmd, r.ok, r.message);
-    }
+    CommandGate* gate = m_gate;
+    if (name == QLatin1String("stop_all"))
+        return viaGate(cmd, [&](CommandGate::ResultHandler h) { gate->stopAll(origin, std::move(h)); });
     if (name == QLatin1String("stop")) {
         if (id.isEmpty())
             return result(cmd, false, QStringLiteral("missing \"id\""));
-        const CommandResult r = m_gate->stopMachine(id, origin);
-        return result(cmd, r.ok, r.message);
+        return viaGate(cmd,
+                       [&](CommandGate::ResultHandler h) { gate->stopMachine(id, origin, std::move(h)); });
     }
     if (name == QLatin1String("clear_stop")) {
         if (id.isEmpty())
             return result(cmd, false, QStringLiteral("missing \"id\""));
         // The scripted equivalent of the GUI's deliberate hold: an explicit "confirm": true.
-        if (cmd.value(QStringLiteral("confirm")).toBool(false) != true) {
-            const CommandResult r = m_gate->clearStop(id, QString(), origin); // audited refusal
-            return result(cmd, false, r.message + QStringLiteral(" (add \"confirm\": true)"));
-        }
-        const CommandResult r = m_gate->clearStop(id, m_gate->requestClearToken(id), origin);
-        return result(cmd, r.ok, r.message);
+        if (cmd.value(QStringLiteral("confirm")).toBool(false) != true)
+            return viaGate(
+                cmd,
+                [&](CommandGate::ResultHandler h) { gate->clearStop(id, QString(), origin, std::move(h)); },
+                QStringLiteral(" (add \"confirm\": true)")); // audited refusal
+        return viaGate(cmd, [&](CommandGate::ResultHandler h) {
+            gate->clearStop(id, gate->requestClearToken(id), origin, std::move(h));
+        });
     }
     const bool forProtocol = id.isEmpty() && cmd.contains(QStringLiteral("protocol"));
     if (m_protocolCommands.contains(name) || (!name.isEmpty() && (m_gate->bridgeFor(id) || forProtocol))) {
         if (id.isEmpty() && !forProtocol)
             return result(cmd, false, QStringLiteral("missing \"id\""));
-        const CommandResult r = m_gate->command(name, cmd, origin);
-        return result(cmd, r.ok, r.message);
+        return viaGate(cmd,
+                       [&](CommandGate::ResultHandler h) { gate->command(name, cmd, origin, std::move(h)); });
     }
     return result(cmd, false,
                   name.isEmpty() ? QStringLiteral("missing \"cmd\"")
@@ -317,7 +375,8 @@ bool HeadlessMonitor::startStdin() {
             m_stdinNotifier->setEnabled(false);
             if (!m_inBuf.isEmpty())
                 consumeInput("\n");
-            emit inputFinished();
+            m_inputEnded = true;
+            maybeFinishInput();
             return;
         }
         consumeInput(QByteArray(buf, int(n)));
@@ -331,7 +390,8 @@ void HeadlessMonitor::setInput(QIODevice* in) {
         consumeInput(in->readAll());
         if (!m_inBuf.isEmpty())
             consumeInput("\n");
-        emit inputFinished();
+        m_inputEnded = true;
+        maybeFinishInput();
     });
 }
 

@@ -12,11 +12,17 @@
 //   {"type":"machine_removed","id":..}
 //   {"type":"link","protocol":..,"link":..,"state":..,"age_ms":..,"detail":..}
 //   {"type":"event","time":..,"severity":..,"kind":..,"machine":..,"source":..,"text":..}
-//   {"type":"result","cmd":..,"req":<echoed>,"ok":true|false,"message":..}
+//   {"type":"result","cmd":..,"req":<echoed>,"ok":true|false,"targets":[{"id":"jaus:126","sent":true},
+//    {"id":"iso23725 link ahs","sent":false,"reason":"link ahs is down"}],"message":..}
+//   Commands that reach the command gate carry "targets" (what went on the wire, per machine or link) and are
+//   answered when final: once every stack reported, or after the gate's deadline ("stack did not answer").
+//   "ok" only when there was a target and every target was sent.
 // Commands ("cmd" or "command" key; optional "req" is echoed):
 //   {"cmd":"stop_all"}  {"cmd":"stop","id":..}  {"cmd":"clear_stop","id":..,"confirm":true}
 //   {"cmd":"request_control","id":..}  {"cmd":"release_control","id":..}
 //   {"cmd":"drive","id":..,"mode":"velocity|effort","linear":..,"angular":..,"duration":..}  {"cmd":"list"}
+#include "models/CommandGate.h"
+
 #include <QByteArray>
 #include <QElapsedTimer>
 #include <QHash>
@@ -26,6 +32,7 @@
 #include <QSet>
 #include <QStringList>
 #include <QTimer>
+#include <functional>
 #include <memory>
 
 class QIODevice;
@@ -38,7 +45,6 @@ class AlarmModel;
 class FleetBridge;
 class FleetContext;
 class FleetModel;
-class CommandGate;
 struct LinkStatus;
 struct FleetEvent;
 struct MachineState;
@@ -67,13 +73,17 @@ public:
     // Read commands from any device (not owned): readyRead + readChannelFinished.
     void setInput(QIODevice* in);
 
-    // Executes one JSON command line and returns (and writes) the result line.
+    // Executes one JSON command line. The result line is written (and commandHandled emitted) when final; it
+    // is also returned when it was final at once (otherwise an empty array).
     QByteArray handleLine(const QByteArray& line);
+    // Gate commands whose result line is not written yet.
+    int pendingResults() const { return m_pendingResults; }
 
     // Prints one line for every machine now.
     void printAll();
 
 signals:
+    // End of input, once every result line of it was written.
     void inputFinished();
     void commandHandled(const QByteArray& resultLine);
 
@@ -87,6 +97,10 @@ private:
     void consumeInput(const QByteArray& chunk);
     QJsonObject machineJson(const MachineState& m, bool stale, qint64 ageMs) const;
     QByteArray result(const QJsonObject& cmd, bool ok, const QString& message);
+    QByteArray result(const QJsonObject& cmd, const CommandResult& r, bool withTargets);
+    QByteArray viaGate(const QJsonObject& cmd, const std::function<void(CommandGate::ResultHandler)>& issue,
+                       const QString& suffix = {});
+    void maybeFinishInput();
 
     QPointer<FleetModel> m_fleet;
     QPointer<AlarmModel> m_alarms;
@@ -106,6 +120,9 @@ private:
     QSet<QString> m_protocolCommands;
     QByteArray m_inBuf;
     QSocketNotifier* m_stdinNotifier = nullptr;
+    int m_pendingResults = 0;
+    bool m_inputEnded = false;
+    bool m_finishedSignalled = false;
 };
 
 } // namespace ocu

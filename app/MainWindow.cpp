@@ -7,9 +7,12 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFrame>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -123,10 +126,10 @@ void MainWindow::createToolBar() {
     m_stopAll->setObjectName(QStringLiteral("action-stop-all"));
     m_stopAll->setShortcuts({QKeySequence(Qt::Key_F12), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Space)});
     m_stopAll->setShortcutContext(Qt::ApplicationShortcut); // also from floating panels
-    m_stopAll->setToolTip(
-        tr("Stop every machine this console may stop: JAUS emergency stop to the vehicles "
-           "it controls and ISO 23725 all-stop to every AHS link (F12 or Ctrl+Shift+Space). "
-           "Stopping never asks for confirmation."));
+    m_stopAll->setToolTip(tr(
+        "Stop every machine this console can reach: JAUS emergency stop to every discovered vehicle, "
+        "ISO 23725 all-stop to every AHS link and the OSYRIS stop message (F12 or Ctrl+Shift+Space). "
+        "Stopping never asks for confirmation; a stop that does not reach everything shows a red banner."));
     connect(m_stopAll, &QAction::triggered, this, &MainWindow::stopAllRequested);
     tb->addAction(m_stopAll);
     m_stopAllButton = qobject_cast<QToolButton*>(tb->widgetForAction(m_stopAll));
@@ -141,6 +144,49 @@ void MainWindow::createToolBar() {
             "QToolButton:focus { border:3px solid #ffd400; }"));
     }
     tb->addSeparator();
+
+    // The failed-stop banner: a full-width red bar under the safety toolbar, shown only while a stop did not
+    // reach every target (issue 13 §1). Not movable, not closable except by its own Dismiss button.
+    addToolBarBreak(Qt::TopToolBarArea);
+    m_bannerBar = new QToolBar(tr("Stop failure"), this);
+    m_bannerBar->setObjectName(QStringLiteral("toolbar-stop-banner"));
+    m_bannerBar->setMovable(false);
+    m_bannerBar->setFloatable(false);
+    m_bannerBar->toggleViewAction()->setVisible(false);
+    m_bannerBar->setContextMenuPolicy(Qt::PreventContextMenu);
+    auto* banner = new QFrame(m_bannerBar);
+    banner->setObjectName(QStringLiteral("stop-banner"));
+    banner->setStyleSheet(
+        QStringLiteral("#stop-banner { background:#b00000; border:2px solid #5c0000; }"
+                       "#stop-banner QLabel { color:white; font-weight:bold; font-size:15px; }"));
+    auto* row = new QHBoxLayout(banner);
+    row->setContentsMargins(10, 6, 10, 6);
+    m_bannerLabel = new QLabel(banner);
+    m_bannerLabel->setObjectName(QStringLiteral("label-stop-banner"));
+    m_bannerLabel->setWordWrap(true);
+    m_bannerLabel->setTextFormat(Qt::PlainText);
+    m_bannerLabel->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    row->addWidget(m_bannerLabel, 1);
+    auto* dismiss = new QPushButton(tr("Dismiss"), banner);
+    dismiss->setObjectName(QStringLiteral("button-dismiss-stop-banner"));
+    dismiss->setToolTip(tr("Hide this warning. It does not change what the machines do."));
+    connect(dismiss, &QPushButton::clicked, this, &MainWindow::clearStopBanner);
+    row->addWidget(dismiss);
+    m_bannerBar->addWidget(banner);
+    addToolBar(Qt::TopToolBarArea, m_bannerBar);
+    m_bannerBar->hide();
+}
+
+void MainWindow::showStopBanner(const QString& text) {
+    m_bannerText = text;
+    m_bannerLabel->setText(text);
+    m_bannerBar->show();
+}
+
+void MainWindow::clearStopBanner() {
+    m_bannerText.clear();
+    m_bannerLabel->clear();
+    m_bannerBar->hide();
 }
 
 void MainWindow::createMenus() {
@@ -257,6 +303,7 @@ void MainWindow::resetLayout() {
         applyDefaultLayout();
     m_docks[Panel::SiteMap]->raise();
     m_docks[Panel::JausControl]->raise();
+    m_bannerBar->setVisible(!m_bannerText.isEmpty()); // a saved layout never hides a failed stop
 }
 
 void MainWindow::saveLayout() const {
@@ -274,7 +321,9 @@ bool MainWindow::restoreLayout() {
     if (geometry.isEmpty() || state.isEmpty())
         return false;
     restoreGeometry(geometry);
-    return restoreState(state, kLayoutVersion);
+    const bool ok = restoreState(state, kLayoutVersion);
+    m_bannerBar->setVisible(!m_bannerText.isEmpty()); // a saved layout never hides a failed stop
+    return ok;
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

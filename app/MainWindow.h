@@ -8,6 +8,7 @@
 
 class QDockWidget;
 class QLabel;
+class QToolBar;
 class QToolButton;
 
 namespace ocu {
@@ -35,6 +36,13 @@ public:
     LinkIndicator* addLinkIndicator(const QString& protocol);
     LinkIndicator* linkIndicator(const QString& protocol) const { return m_links.value(protocol); }
     void setUnacknowledgedAlarms(int count);
+
+    // The red banner naming what a stop did not reach; stays until dismissed or cleared (a later full stop).
+    void showStopBanner(const QString& text);
+    void clearStopBanner();
+    bool stopBannerVisible() const { return !m_bannerText.isEmpty(); }
+    QString stopBannerText() const { return m_bannerText; }
+    QToolBar* stopBannerBar() const { return m_bannerBar; }
     int unacknowledgedAlarms() const { return m_unacked; }
 
     void setNightMode(bool night);
@@ -66,6 +74,9 @@ private:
     QToolButton* m_stopAllButton = nullptr;
     QAction* m_nightAction = nullptr;
     QLabel* m_alarmLabel = nullptr;
+    QToolBar* m_bannerBar = nullptr;
+    QLabel* m_bannerLabel = nullptr;
+    QString m_bannerText;
     QByteArray m_defaultState;
     int m_unacked = 0;
     bool m_night = false;

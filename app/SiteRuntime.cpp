@@ -21,13 +21,14 @@
 #include "widgets/FleetListWidget.h"
 #include "widgets/PassCountPanel.h"
 #include "widgets/SiteMapView.h"
-#include "widgets/StopControls.h"
 
 #include <QApplication>
 #include <QDateTime>
 #include <QLabel>
+#include <QPointer>
 #include <QSet>
 #include <QStatusBar>
+#include <QTime>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -93,6 +94,7 @@ QString SiteRuntime::start() {
     d.ctx->fleet()->setRemoveAfterMs(static_cast<qint64>(m_config.fleet.removeAfterSeconds * 1000));
     if (!m_config.fleet.auditLog.empty())
         d.ctx->gate()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
+    d.ctx->gate()->setConfirmTimeoutMs(int(m_config.fleet.stopConfirmTimeoutSeconds * 1000));
 
     // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down and the
     // reason is an alarm.
@@ -252,6 +254,30 @@ void SiteRuntime::populate(MainWindow& window) {
     window.setUnacknowledgedAlarms(ctx->alarms()->unacknowledgedCount());
     connect(&window, &MainWindow::stopAllRequested, ctx->gate(),
             [ctx] { ctx->gate()->stopAll(QStringLiteral("gui")); });
+    // A stop that did not reach every target, or that a machine did not confirm, is shown loudly until the
+    // operator dismisses it or a later STOP ALL reaches everything (issue 13 §1).
+    QPointer<MainWindow> win(&window);
+    connect(ctx->gate(), &CommandGate::stopFinished, &window, [win](const CommandResult& r, const QString&) {
+        if (!win)
+            return;
+        if (r.ok) {
+            if (r.action == QLatin1String("stop_all"))
+                win->clearStopBanner();
+            return;
+        }
+        const QString when = QTime::currentTime().toString(QStringLiteral("HH:mm:ss"));
+        const QString what = r.notSent().isEmpty() ? r.message : r.notSent().join(QStringLiteral("; "));
+        win->showStopBanner(r.action == QLatin1String("stop_all")
+                                ? MainWindow::tr("%1 STOP ALL did NOT reach: %2").arg(when, what)
+                                : MainWindow::tr("%1 STOP did NOT reach: %2").arg(when, what));
+    });
+    connect(ctx->gate(), &CommandGate::stopUnconfirmed, &window, [win](const QString&, const QString& text) {
+        if (!win)
+            return;
+        const QString line = QTime::currentTime().toString(QStringLiteral("HH:mm:ss ")) + text;
+        win->showStopBanner(win->stopBannerVisible() ? win->stopBannerText() + QLatin1Char('\n') + line
+                                                     : line);
+    });
 
     // The protocols' own panels; a panel no module of this build fills says so.
     QSet<Panel> filled{Panel::Fleet, Panel::SiteMap, Panel::Site3D, Panel::PassCounts, Panel::EventLog};

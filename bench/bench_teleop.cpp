@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     auto* map = new SiteMapView;
     map->setFleet(ctx.fleet(), ctx.selection());
     FakeInputDevice joystick;
-    auto* teleop = new TeleopPanel(&jaus, ctx.selection(), &joystick);
+    auto* teleop = new TeleopPanel(&jaus, ctx.gate(), ctx.selection(), &joystick);
     teleop->findChild<QComboBox*>(QStringLiteral("combo-drive-mode"))->setCurrentIndex(1); // wrench effort
     auto* lay = new QHBoxLayout(&window);
     lay->addWidget(list);
@@ -115,7 +115,8 @@ int main(int argc, char** argv) {
     if (!waitUntil([&] { return jaus.subsystem(ugv) && jaus.subsystem(ugv)->mobilityComponent.subsystem; },
                    10000))
         return 2;
-    jaus.command(QStringLiteral("request_control"), {{QStringLiteral("id"), JausBridge::machineId(ugv)}});
+    jaus.command(QStringLiteral("request_control"), {{QStringLiteral("id"), JausBridge::machineId(ugv)}},
+                 [](std::vector<TargetOutcome>) {});
     if (!waitUntil([&] { return jaus.subsystem(ugv)->controlledByUs; }, 5000))
         return 3;
     ctx.selection()->setCurrent(JausBridge::machineId(ugv));

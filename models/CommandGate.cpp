@@ -4,16 +4,53 @@
 
 #include <QDateTime>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
+#include <QThread>
 #include <QUuid>
+
+#include <algorithm>
+#include <mutex>
+#include <optional>
 
 namespace ocu {
 
-CommandGate::CommandGate(AlarmModel* alarms, QObject* parent) : QObject(parent), m_alarms(alarms) {}
+// The gate's liveness for outcome callbacks that run on io threads: a callback holds the mutex while it
+// posts to the gate, and the gate's destructor marks it dead under the same mutex.
+struct GateLife {
+    std::mutex mutex;
+    CommandGate* gate = nullptr;
+};
+
+struct CommandGate::Pending {
+    QString action;
+    QString target; // the machine (or empty for STOP ALL)
+    QString origin;
+    QVector<QPointer<FleetBridge>> bridges;
+    std::vector<std::optional<std::vector<TargetOutcome>>> outcomes; // per bridge; nullopt = not answered
+    int answered = 0;
+    bool issuing = true;
+    QTimer* deadline = nullptr;
+    ResultHandler onFinal;
+    QElapsedTimer since; // when the command was issued (confirmation latency)
+};
+
+CommandGate::CommandGate(AlarmModel* alarms, QObject* parent) : QObject(parent), m_alarms(alarms) {
+    qRegisterMetaType<ocu::CommandResult>();
+    m_life = std::make_shared<GateLife>();
+    m_life->gate = this;
+}
+
+CommandGate::~CommandGate() {
+    std::lock_guard lock(m_life->mutex);
+    m_life->gate = nullptr;
+}
 
 void CommandGate::addBridge(FleetBridge* bridge) {
-    if (bridge && !m_bridges.contains(bridge))
-        m_bridges.push_back(bridge);
+    if (!bridge || m_bridges.contains(bridge))
+        return;
+    m_bridges.push_back(bridge);
+    connect(bridge, &FleetBridge::stopReported, this, &CommandGate::onStopReported);
 }
 
 QVector<FleetBridge*> CommandGate::bridges() const {
@@ -31,33 +68,123 @@ FleetBridge* CommandGate::bridgeFor(const QString& machineId) const {
     return nullptr;
 }
 
-CommandResult CommandGate::stopAll(const QString& origin) {
-    // Every bridge gets the stop even if an earlier one refused: a partial stop beats no stop.
-    QStringList failures;
-    int sent = 0;
-    for (FleetBridge* b : bridges()) {
-        const CommandResult r = b->stopAll();
-        if (r.ok)
-            ++sent;
-        else
-            failures.push_back(toText(b->protocol()) + QStringLiteral(": ") + r.message);
+void CommandGate::dispatch(const QString& action, const QString& target, const QString& origin,
+                           const QVector<FleetBridge*>& to,
+                           const std::function<void(FleetBridge*, OutcomeCallback)>& fn,
+                           ResultHandler onFinal) {
+    const quint64 id = m_nextId++;
+    auto p = std::make_shared<Pending>();
+    p->action = action;
+    p->target = target;
+    p->origin = origin;
+    p->onFinal = std::move(onFinal);
+    p->since.start();
+    for (FleetBridge* b : to)
+        p->bridges.push_back(b);
+    p->outcomes.resize(size_t(to.size()));
+    m_pending.insert(id, p);
+    p->deadline = new QTimer(this);
+    p->deadline->setSingleShot(true);
+    connect(p->deadline, &QTimer::timeout, this, [this, id] { finish(id); });
+    p->deadline->start(m_answerDeadlineMs);
+
+    std::weak_ptr<GateLife> life = m_life;
+    QThread* guiThread = thread();
+    for (int i = 0; i < to.size(); ++i) {
+        // Runs once, on the GUI thread (a bridge's own refusal) or on a stack's io thread.
+        OutcomeCallback done = [this, life, guiThread, id, i](std::vector<TargetOutcome> outcomes) {
+            auto apply = [this, id, i](std::vector<TargetOutcome> o) {
+                auto it = m_pending.find(id);
+                if (it == m_pending.end())
+                    return; // too late: the deadline already called this bridge's part not sent
+                Pending& pend = **it;
+                if (pend.outcomes[size_t(i)])
+                    return; // a second call: the first one counts
+                // Watch each sent stop target from now on: its machine's report may come before the other
+                // bridges answered.
+                if (pend.action == QLatin1String("stop_all") || pend.action == QLatin1String("stop")) {
+                    QVector<CommandTarget> t;
+                    for (const TargetOutcome& x : o)
+                        t.push_back(toCommandTarget(x));
+                    watchStops(t, pend.since);
+                }
+                pend.outcomes[size_t(i)] = std::move(o);
+                if (++pend.answered == int(pend.outcomes.size()) && !pend.issuing)
+                    finish(id);
+            };
+            if (QThread::currentThread() == guiThread) {
+                apply(std::move(outcomes));
+                return;
+            }
+            auto l = life.lock();
+            if (!l)
+                return;
+            std::lock_guard lock(l->mutex);
+            if (!l->gate)
+                return;
+            QMetaObject::invokeMethod(
+                l->gate, [apply, o = std::move(outcomes)]() mutable { apply(std::move(o)); },
+                Qt::QueuedConnection);
+        };
+        fn(to[i], std::move(done));
     }
-    CommandResult result =
-        failures.isEmpty() ? CommandResult::success(QStringLiteral("stop sent on %1 protocol(s)").arg(sent))
-                           : CommandResult::failure(failures.join(QStringLiteral("; ")));
-    if (bridges().isEmpty())
-        result = CommandResult::failure(QStringLiteral("no protocol bridge registered"));
-    audit(origin, QStringLiteral("stop_all"), QString(), result);
-    emit stopAllIssued(result);
-    return result;
+    p->issuing = false;
+    if (p->answered == int(p->outcomes.size()))
+        finish(id);
 }
 
-CommandResult CommandGate::stopMachine(const QString& id, const QString& origin) {
+void CommandGate::finish(quint64 id) {
+    auto p = m_pending.take(id);
+    if (!p)
+        return;
+    p->deadline->stop();
+    p->deadline->deleteLater();
+    QVector<CommandTarget> targets;
+    for (size_t i = 0; i < p->outcomes.size(); ++i) {
+        if (p->outcomes[i]) {
+            for (const TargetOutcome& o : *p->outcomes[i])
+                targets.push_back(toCommandTarget(o));
+        } else {
+            const FleetBridge* b = p->bridges[int(i)];
+            targets.push_back({b ? toText(b->protocol()) : tr("protocol stack"), false,
+                               tr("stack did not answer within %1 ms").arg(m_answerDeadlineMs)});
+        }
+    }
+    finishNow(p->action, p->target, p->origin,
+              CommandResult::fromTargets(targets, tr("no protocol bridge registered: nothing sent")),
+              p->onFinal);
+}
+
+void CommandGate::finishNow(const QString& action, const QString& target, const QString& origin,
+                            CommandResult r, const ResultHandler& onFinal) {
+    r.action = action;
+    audit(origin, action, target, r);
+    const bool isStop = action == QLatin1String("stop_all") || action == QLatin1String("stop");
+    if (onFinal)
+        onFinal(r);
+    emit commandFinished(r, origin);
+    if (isStop)
+        emit stopFinished(r, origin);
+}
+
+void CommandGate::stopAll(const QString& origin, ResultHandler onFinal) {
+    // Every bridge gets the stop even if an earlier one refused: a partial stop beats no stop.
+    dispatch(
+        QStringLiteral("stop_all"), QString(), origin, bridges(),
+        [](FleetBridge* b, OutcomeCallback done) { b->stopAll(std::move(done)); }, std::move(onFinal));
+}
+
+void CommandGate::stopMachine(const QString& id, const QString& origin, ResultHandler onFinal) {
     FleetBridge* b = bridgeFor(id);
-    const CommandResult r =
-        b ? b->stopMachine(id) : CommandResult::failure(QStringLiteral("unknown machine %1").arg(id));
-    audit(origin, QStringLiteral("stop"), id, r);
-    return r;
+    if (!b) {
+        finishNow(QStringLiteral("stop"), id, origin,
+                  CommandResult::fromTargets({{id, false, tr("unknown machine %1").arg(id)}}), onFinal);
+        return;
+    }
+    dispatch(
+        QStringLiteral("stop"), id, origin, {b},
+        [id](FleetBridge* br, OutcomeCallback done) { br->stopMachine(id, std::move(done)); },
+        std::move(onFinal));
 }
 
 QString CommandGate::requestClearToken(const QString& id) {
@@ -70,22 +197,31 @@ QString CommandGate::requestClearToken(const QString& id) {
     return token;
 }
 
-CommandResult CommandGate::clearStop(const QString& id, const QString& token, const QString& origin) {
-    CommandResult r;
+void CommandGate::clearStop(const QString& id, const QString& token, const QString& origin,
+                            ResultHandler onFinal) {
     auto it = m_tokens.find(token);
     if (token.isEmpty() || it == m_tokens.end() || it->id != id ||
         it->expiresMs < QDateTime::currentMSecsSinceEpoch()) {
-        r = CommandResult::failure(QStringLiteral("release needs a deliberate confirmation"));
-    } else {
-        m_tokens.erase(it); // single use
-        FleetBridge* b = bridgeFor(id);
-        r = b ? b->clearStop(id) : CommandResult::failure(QStringLiteral("unknown machine %1").arg(id));
+        finishNow(QStringLiteral("clear_stop"), id, origin,
+                  CommandResult::fromTargets({{id, false, tr("release needs a deliberate confirmation")}}),
+                  onFinal);
+        return;
     }
-    audit(origin, QStringLiteral("clear_stop"), id, r);
-    return r;
+    m_tokens.erase(it); // single use
+    FleetBridge* b = bridgeFor(id);
+    if (!b) {
+        finishNow(QStringLiteral("clear_stop"), id, origin,
+                  CommandResult::fromTargets({{id, false, tr("unknown machine %1").arg(id)}}), onFinal);
+        return;
+    }
+    dispatch(
+        QStringLiteral("clear_stop"), id, origin, {b},
+        [id](FleetBridge* br, OutcomeCallback done) { br->clearStop(id, std::move(done)); },
+        std::move(onFinal));
 }
 
-CommandResult CommandGate::command(const QString& name, const QJsonObject& args, const QString& origin) {
+void CommandGate::command(const QString& name, const QJsonObject& args, const QString& origin,
+                          ResultHandler onFinal) {
     const QString id = args.value(QStringLiteral("id")).toString();
     FleetBridge* b = bridgeFor(id);
     if (id.isEmpty() && args.contains(QStringLiteral("protocol"))) {
@@ -95,12 +231,90 @@ CommandResult CommandGate::command(const QString& name, const QJsonObject& args,
             if (candidate->protocol() == p)
                 b = candidate;
     }
-    const CommandResult r =
-        b ? b->command(name, args)
-          : CommandResult::failure(id.isEmpty() ? QStringLiteral("missing \"id\" (or \"protocol\")")
-                                                : QStringLiteral("unknown machine %1").arg(id));
-    audit(origin, name, id, r);
-    return r;
+    if (!b) {
+        CommandResult r =
+            id.isEmpty()
+                ? CommandResult::fromTargets({}, tr("missing \"id\" (or \"protocol\"): nothing sent"))
+                : CommandResult::fromTargets({{id, false, tr("unknown machine %1").arg(id)}});
+        finishNow(name, id, origin, r, onFinal);
+        return;
+    }
+    dispatch(
+        name, id, origin, {b},
+        [name, args](FleetBridge* br, OutcomeCallback done) { br->command(name, args, std::move(done)); },
+        std::move(onFinal));
+}
+
+QStringList CommandGate::awaitingConfirmation() const {
+    return m_watches.keys();
+}
+
+void CommandGate::watchStops(const QVector<CommandTarget>& targets, const QElapsedTimer& since) {
+    QStringList noStopState;
+    for (const CommandTarget& t : targets) {
+        if (!t.sent)
+            continue;
+        FleetBridge* b = nullptr;
+        for (FleetBridge* candidate : bridges())
+            if (candidate->ownsMachine(t.id) || t.id.startsWith(toText(candidate->protocol())))
+                b = candidate;
+        if (b && !b->reportsStopState()) {
+            noStopState << t.id;
+            continue;
+        }
+        if (b && b->reportsStopped(t.id)) {
+            emit stopConfirmed(t.id, tr("%1 already reports being stopped").arg(t.id), 0);
+            if (m_alarms)
+                m_alarms->add(makeEvent(EventSeverity::Info, EventKind::Audit, t.id,
+                                        tr("%1 already reports being stopped").arg(t.id),
+                                        QStringLiteral("gate")));
+            continue;
+        }
+        Watch& w = m_watches[t.id];
+        w.since = since;
+        if (!w.timer) {
+            w.timer = new QTimer(this);
+            w.timer->setSingleShot(true);
+            const QString target = t.id;
+            connect(w.timer, &QTimer::timeout, this, [this, target] {
+                auto it = m_watches.find(target);
+                if (it == m_watches.end())
+                    return;
+                it->timer->deleteLater();
+                m_watches.erase(it);
+                const QString text =
+                    tr("%1 has not reported being stopped %2 ms after the stop command was sent")
+                        .arg(target)
+                        .arg(m_confirmTimeoutMs);
+                if (m_alarms)
+                    m_alarms->add(makeEvent(EventSeverity::Alarm, EventKind::Timeout, target, text,
+                                            QStringLiteral("gate")));
+                emit stopUnconfirmed(target, text);
+            });
+        }
+        w.timer->start(std::max<qint64>(0, m_confirmTimeoutMs - since.elapsed()));
+    }
+    if (!noStopState.isEmpty() && m_alarms)
+        m_alarms->add(
+            makeEvent(EventSeverity::Info, EventKind::Audit, {},
+                      tr("%1: OSYRIS carries no stop state, so no machine can confirm the stop; the "
+                         "STOP text went to the drivers' displays")
+                          .arg(noStopState.join(QStringLiteral(", "))),
+                      QStringLiteral("gate")));
+}
+
+void CommandGate::onStopReported(const QString& target, const QString& text) {
+    auto it = m_watches.find(target);
+    if (it == m_watches.end())
+        return;
+    const qint64 ms = it->since.elapsed();
+    it->timer->stop();
+    it->timer->deleteLater();
+    m_watches.erase(it);
+    const QString line = tr("%1 %2 ms after the command").arg(text).arg(ms);
+    if (m_alarms)
+        m_alarms->add(makeEvent(EventSeverity::Info, EventKind::Audit, target, line, QStringLiteral("gate")));
+    emit stopConfirmed(target, line, ms);
 }
 
 void CommandGate::audit(const QString& origin, const QString& action, const QString& target,
@@ -113,11 +327,21 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
     if (!target.isEmpty())
         o[QStringLiteral("target")] = target;
     o[QStringLiteral("ok")] = result.ok;
+    QJsonArray targets;
+    for (const CommandTarget& t : result.targets) {
+        QJsonObject j;
+        j[QStringLiteral("id")] = t.id;
+        j[QStringLiteral("sent")] = t.sent;
+        if (!t.sent)
+            j[QStringLiteral("reason")] = t.reason;
+        targets.append(j);
+    }
+    o[QStringLiteral("targets")] = targets;
     o[QStringLiteral("message")] = result.message;
     const QString line = QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact));
 
     if (m_alarms) {
-        // A refused stop is an alarm the operator must see; accepted actions are logged as info.
+        // A command that did not reach every target is an alarm the operator must see; the rest is info.
         FleetEvent ev =
             makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit, target,
                       QStringLiteral("%1 by %2: %3").arg(action, origin, result.message), origin);

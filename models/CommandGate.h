@@ -1,25 +1,45 @@
 #pragma once
-// STOP ALL, per-machine stop and stop release across every registered bridge (issue 6 §6).
-// Stopping never asks; releasing needs a confirmation token obtained from requestClearToken() (the GUI's
-// hold-to-confirm button, or the headless "confirm": true), valid once, for one machine, for a short time.
-// Every action is audited: an AlarmModel entry (kind Audit) and, when configured, one JSON line appended
-// to the audit log file. The stop state shown everywhere is what the machines report, not what we asked.
+// The one gate every operator command passes (issue 6 §6, issue 13 §1/§9): STOP ALL, per-machine stop, stop
+// release and the protocol commands of every panel and of the headless monitor.
+//
+// Commands are asynchronous: the gate hands the command to the bridges, collects their per-target outcomes
+// (TargetOutcome, reported by the stacks on their io threads and handed over to the GUI thread here) and,
+// once every bridge answered or the answer deadline passed (a bridge that did not answer: its part "not
+// sent", reason "stack did not answer"), emits the final CommandResult: ok only when there was a target and
+// every target was sent. The result is audited with the same truth: an AlarmModel entry (kind Audit) and,
+// when configured, one JSON line appended to the audit log file.
+//
+// Releasing needs a confirmation token obtained from requestClearToken() (the GUI's hold-to-confirm button,
+// or the headless "confirm": true), valid once, for one machine, for a short time. Stopping never asks.
+//
+// Confirmation comes from the machines' own reports: after a stop, each sent target is watched until its
+// bridge reports it stopped (FleetBridge::stopReported); the latency is logged as an event, and no report
+// within the confirmation time raises an alarm. Protocols without a stop state (OSYRIS) are said to be so.
 #include "models/FleetBridge.h"
 
+#include <QElapsedTimer>
 #include <QHash>
 #include <QJsonObject>
 #include <QObject>
 #include <QPointer>
+#include <QTimer>
 #include <QVector>
+
+#include <functional>
+#include <memory>
 
 namespace ocu {
 
 class AlarmModel;
+struct GateLife;
 
 class CommandGate : public QObject {
     Q_OBJECT
 public:
+    using ResultHandler = std::function<void(const CommandResult&)>;
+
     explicit CommandGate(AlarmModel* alarms = nullptr, QObject* parent = nullptr);
+    ~CommandGate() override;
 
     void addBridge(FleetBridge* bridge);
     QVector<FleetBridge*> bridges() const;
@@ -29,27 +49,56 @@ public:
     void setAuditLogPath(const QString& path) { m_auditPath = path; }
     QString auditLogPath() const { return m_auditPath; }
     void setTokenLifetimeMs(qint64 ms) { m_tokenLifetimeMs = ms; }
+    // How long the gate waits for the stacks' outcomes before it calls the missing ones not sent.
+    void setAnswerDeadlineMs(int ms) { m_answerDeadlineMs = ms; }
+    // How long a sent stop may wait for the machine's report before the gate raises an alarm.
+    void setConfirmTimeoutMs(int ms) { m_confirmTimeoutMs = ms; }
+    int confirmTimeoutMs() const { return m_confirmTimeoutMs; }
 
-    // Fans out to every bridge; ok when every bridge accepted. `origin` is "gui", "headless", "shortcut"...
-    CommandResult stopAll(const QString& origin = QStringLiteral("gui"));
-    CommandResult stopMachine(const QString& id, const QString& origin = QStringLiteral("gui"));
+    // `origin` is "gui", "headless", "shortcut", "teleop"...; `onFinal` (optional) runs with the final result
+    // on the GUI thread, before commandFinished is emitted. It may run before the call returns (every bridge
+    // decided at once).
+    void stopAll(const QString& origin = QStringLiteral("gui"), ResultHandler onFinal = {});
+    void stopMachine(const QString& id, const QString& origin = QStringLiteral("gui"),
+                     ResultHandler onFinal = {});
 
     // Release: first obtain a token (after the operator's deliberate confirmation), then clear.
     QString requestClearToken(const QString& id);
-    CommandResult clearStop(const QString& id, const QString& token,
-                            const QString& origin = QStringLiteral("gui"));
+    void clearStop(const QString& id, const QString& token, const QString& origin = QStringLiteral("gui"),
+                   ResultHandler onFinal = {});
 
     // Protocol-specific commands routed to the bridge owning args["id"] (request_control, release_control,
     // drive, ...), or, without an id, to the bridge of args["protocol"] (e.g. {"protocol":"jaus"} for
-    // release_all); audited like the rest.
-    CommandResult command(const QString& name, const QJsonObject& args,
-                          const QString& origin = QStringLiteral("gui"));
+    // release_all).
+    void command(const QString& name, const QJsonObject& args, const QString& origin = QStringLiteral("gui"),
+                 ResultHandler onFinal = {});
+
+    // Commands whose final result is not in yet.
+    int pendingCommands() const { return int(m_pending.size()); }
+    // Stops sent and not yet confirmed by the machines (target ids).
+    QStringList awaitingConfirmation() const;
 
 signals:
-    void stopAllIssued(const ocu::CommandResult& result);
+    // Every final result (any command, any origin).
+    void commandFinished(const ocu::CommandResult& result, const QString& origin);
+    // The final result of a STOP ALL or of a per-machine stop.
+    void stopFinished(const ocu::CommandResult& result, const QString& origin);
+    // A stop target's report arrived (latency in ms from the command) or did not arrive in time.
+    void stopConfirmed(const QString& target, const QString& text, qint64 latencyMs);
+    void stopUnconfirmed(const QString& target, const QString& text);
     void audited(const QString& jsonLine);
 
 private:
+    struct Pending;
+    // Issues `fn(bridge, done)` to each bridge and finalises when all answered or at the deadline.
+    void dispatch(const QString& action, const QString& target, const QString& origin,
+                  const QVector<FleetBridge*>& to,
+                  const std::function<void(FleetBridge*, OutcomeCallback)>& fn, ResultHandler onFinal);
+    void finish(quint64 id);
+    void finishNow(const QString& action, const QString& target, const QString& origin, CommandResult r,
+                   const ResultHandler& onFinal);
+    void watchStops(const QVector<CommandTarget>& targets, const QElapsedTimer& since);
+    void onStopReported(const QString& target, const QString& text);
     void audit(const QString& origin, const QString& action, const QString& target,
                const CommandResult& result);
 
@@ -57,11 +106,23 @@ private:
     QPointer<AlarmModel> m_alarms;
     QString m_auditPath;
     qint64 m_tokenLifetimeMs = 10000;
+    int m_answerDeadlineMs = 1000;
+    int m_confirmTimeoutMs = 3000;
     struct Token {
         QString id;
         qint64 expiresMs = 0;
     };
     QHash<QString, Token> m_tokens;
+    quint64 m_nextId = 1;
+    QHash<quint64, std::shared_ptr<Pending>> m_pending;
+    struct Watch {
+        QElapsedTimer since;
+        QTimer* timer = nullptr;
+    };
+    QHash<QString, Watch> m_watches; // stop target -> waiting for its report
+    std::shared_ptr<GateLife> m_life;
 };
 
 } // namespace ocu
+
+Q_DECLARE_METATYPE(ocu::CommandResult)

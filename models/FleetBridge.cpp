@@ -1,5 +1,6 @@
 #include "models/FleetBridge.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 
 namespace ocu {
@@ -51,9 +52,55 @@ void FleetBridge::publishEvent(const FleetEvent& event) {
         this, [this, ev] { emit eventRaised(ev); }, Qt::QueuedConnection);
 }
 
-CommandResult FleetBridge::command(const QString& name, const QJsonObject&) {
-    return CommandResult::failure(
-        QStringLiteral("command '%1' not supported by %2").arg(name, toText(m_protocol)));
+CommandResult CommandResult::fromTargets(QVector<CommandTarget> targets, const QString& whenEmpty) {
+    CommandResult r;
+    r.targets = std::move(targets);
+    if (r.targets.isEmpty()) {
+        r.ok = false;
+        r.message = whenEmpty.isEmpty()
+                        ? QCoreApplication::translate("CommandResult", "no target: nothing sent")
+                        : whenEmpty;
+        return r;
+    }
+    QStringList sent;
+    for (const CommandTarget& t : std::as_const(r.targets))
+        if (t.sent)
+            sent << t.id;
+    const QStringList failed = r.notSent();
+    r.ok = failed.isEmpty();
+    if (r.ok)
+        r.message =
+            QCoreApplication::translate("CommandResult", "sent to %1").arg(sent.join(QStringLiteral(", ")));
+    else if (sent.isEmpty())
+        r.message = QCoreApplication::translate("CommandResult", "NOT sent: %1")
+                        .arg(failed.join(QStringLiteral("; ")));
+    else
+        r.message = QCoreApplication::translate("CommandResult", "sent to %1; NOT sent: %2")
+                        .arg(sent.join(QStringLiteral(", ")), failed.join(QStringLiteral("; ")));
+    return r;
+}
+
+QStringList CommandResult::notSent() const {
+    QStringList out;
+    for (const CommandTarget& t : targets)
+        if (!t.sent)
+            out << (t.reason.isEmpty() ? t.id : QStringLiteral("%1: %2").arg(t.id, t.reason));
+    return out;
+}
+
+CommandTarget toCommandTarget(const TargetOutcome& o) {
+    return {QString::fromStdString(o.target), o.sent, QString::fromStdString(o.reason)};
+}
+
+TargetOutcome refusal(const QString& target, const QString& reason) {
+    return TargetOutcome{target.toStdString(), false, reason.toStdString()};
+}
+
+void FleetBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
+    QString target = args.value(QStringLiteral("id")).toString();
+    if (target.isEmpty())
+        target = toText(m_protocol);
+    done({refusal(target, tr("command '%1' not supported by %2").arg(name, toText(m_protocol)))});
 }
 
 QVector<LinkStatus> FleetBridge::links() const {

@@ -9,14 +9,17 @@
 //
 // A concrete bridge implements the four command methods, maps its stack's vocabulary into MachineState
 // (id = protocolPrefix(protocol) + native id) and calls publishMachine/publishRemoval/publishLink/
-// publishEvent from its stack listener. Role and authority checks happen in the concrete bridge; a refused
-// command returns CommandResult::failure("reason"). A command for a target whose link the bridge last saw
-// down (or never saw up) is refused the same way, and nothing is posted: the stack neither sends it nor keeps
-// it for later.
+// publishEvent from its stack listener. Commands report what went on the wire (issue 13 §1): `done` runs
+// exactly once with one TargetOutcome per target (a machine or a link), sent or refused with the reason -
+// on the GUI thread when the bridge refuses by itself (role, unknown machine, link down: nothing is posted,
+// the stack neither sends it nor keeps it for later), on the stack's io thread when the stack decides. Only
+// the CommandGate calls them; it hands the outcomes over to the GUI thread.
 #include "models/FleetEvent.h"
 #include "models/MachineState.h"
 #include "models/SiteMapData.h"
 #include "models/TelemetryCoalescer.h"
+
+#include "protocols/common/CommandOutcome.h"
 
 #include <QHash>
 #include <QJsonObject>
@@ -30,12 +33,29 @@ namespace ocu {
 
 class PassCountLayer;
 
+// One target of a command as the GUI thread sees it (TargetOutcome in Qt types).
+struct CommandTarget {
+    QString id; // "jaus:126", "iso23725 link ahs", "osyris group 239.255.0.1:5000", ...
+    bool sent = false;
+    QString reason; // why not sent; empty when sent
+};
+
+// The final result of one operator command: ok only when there was at least one target and every target
+// was sent; `message` summarises for people (and carries the refusal when there is no target at all).
 struct CommandResult {
     bool ok = false;
     QString message;
-    static CommandResult success(const QString& msg = QStringLiteral("sent")) { return {true, msg}; }
-    static CommandResult failure(const QString& msg) { return {false, msg}; }
+    QVector<CommandTarget> targets;
+    QString action; // "stop_all", "stop", "clear_stop" or the command name (set by the CommandGate)
+    static CommandResult success(const QString& msg = QStringLiteral("sent")) { return {true, msg, {}, {}}; }
+    static CommandResult failure(const QString& msg) { return {false, msg, {}, {}}; }
+    // ok = every target sent (and at least one); message = what was sent and what was not.
+    static CommandResult fromTargets(QVector<CommandTarget> targets, const QString& whenEmpty = {});
+    QStringList notSent() const; // "target: reason" for every target not sent
 };
+
+CommandTarget toCommandTarget(const TargetOutcome& o);
+TargetOutcome refusal(const QString& target, const QString& reason);
 
 struct LinkStatus {
     QString link; // e.g. "jaus", "iso23725:ahs-1", "osyris:239.255.0.1"
@@ -62,18 +82,23 @@ public:
     void publishLink(const LinkStatus& status);
     void publishEvent(const FleetEvent& event);
 
-    // ---- GUI thread: commands (asynchronous; the outcome shows in what the machines report) ----
-    // STOP ALL for this protocol: JAUS SetEmergency to every UGV this console controls, ISO 23725 all-stop
-    // Apply to every AHS link, OSYRIS stop where supported. Never asks for confirmation.
-    virtual CommandResult stopAll() = 0;
-    virtual CommandResult stopMachine(const QString& id) = 0;
+    // ---- GUI thread: commands (asynchronous; `done` as described above) ----
+    // STOP ALL for this protocol: JAUS SetEmergency to every discovered UGV, ISO 23725 all-stop Apply on
+    // every AHS link, the OSYRIS stop text to the group. Never asks for confirmation.
+    virtual void stopAll(OutcomeCallback done) = 0;
+    virtual void stopMachine(const QString& id, OutcomeCallback done) = 0;
     // Release a stop (JAUS ClearEmergency, ISO all-stop Remove). The CommandGate has already checked the
     // operator's deliberate confirmation before calling this.
-    virtual CommandResult clearStop(const QString& id) = 0;
+    virtual void clearStop(const QString& id, OutcomeCallback done) = 0;
     // Protocol-specific commands: "request_control", "release_control", "drive" (JAUS) ... with arguments
     // such as {"id": "jaus:101", "linear": 0.5, "angular": 0.1, "duration": 2.0, "mode": "velocity"}.
-    // Default: unsupported.
-    virtual CommandResult command(const QString& name, const QJsonObject& args);
+    // Default: unsupported (one refused target named after the command).
+    virtual void command(const QString& name, const QJsonObject& args, OutcomeCallback done);
+
+    // Stop confirmation (GUI thread): false when the protocol carries no stop state at all (OSYRIS), so a
+    // stop can never be confirmed by the machines; true when the target reports being stopped now.
+    virtual bool reportsStopState() const { return true; }
+    virtual bool reportsStopped(const QString& /*target*/) const { return false; }
 
     // Optional data layers.
     virtual const PassCountLayer* passCountLayer() const { return nullptr; }
@@ -98,6 +123,9 @@ signals:
     // Emitted by concrete bridges (GUI thread) when their map or pass-count data change.
     void siteMapChanged();
     void passCountChanged();
+    // A stop target (as named in TargetOutcome) reports being stopped: the machine's own report (JAUS
+    // emergency state, ISO 23725 MachineAllStop on). `text` says so for people ("UGV-126 reports EMERGENCY").
+    void stopReported(const QString& target, const QString& text);
 
 private:
     void deliverMachines(std::vector<std::pair<QString, std::optional<MachineState>>>&& batch);

@@ -35,7 +35,8 @@ public:
 
     QList<Panel> panels() const override { return {Panel::JausControl, Panel::Teleop}; }
     void populate(const ModulePanels& ui) override {
-        ui.window.setPanelWidget(Panel::JausControl, new JausControlPanel(m_bridge, ui.fleet->selection()));
+        ui.window.setPanelWidget(Panel::JausControl,
+                                 new JausControlPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection()));
         auto* joystick = new SdlJoystickInput(&ui.window);
         const TeleopInputConfig& t = ui.config.teleop;
         AxisMapping mapping;
@@ -45,7 +46,8 @@ public:
         mapping.invertTurn = t.invertTurn;
         mapping.deadZone = t.deadZone;
         joystick->setMapping(mapping);
-        ui.window.setPanelWidget(Panel::Teleop, new TeleopPanel(m_bridge, ui.fleet->selection(), joystick));
+        ui.window.setPanelWidget(
+            Panel::Teleop, new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick));
     }
     QString notConfiguredText() const override {
         return QCoreApplication::translate(

@@ -4,6 +4,7 @@
 #include <QMetaObject>
 
 #include <cmath>
+#include <mutex>
 
 namespace ocu {
 
@@ -25,12 +26,15 @@ IsoBridge::~IsoBridge() {
 QString IsoBridge::start() {
     for (const auto& l : m_config.links)
         publishLink({QStringLiteral("iso23725:") + q(l.name), ocu::LinkState::Unknown, -1, tr("connecting")});
-    if (!m_stack->start())
+    const bool ok = m_stack->start();
+    m_running = true; // the io thread runs even when a link could not start
+    if (!ok)
         return tr("ISO 23725: a link could not start (see the event log)");
     return {};
 }
 
 void IsoBridge::stop() {
+    m_running = false;
     if (m_stack)
         m_stack->stop();
 }
@@ -145,7 +149,14 @@ void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& s
     const QString l = q(link);
     const int st = static_cast<int>(status.state);
     QMetaObject::invokeMethod(
-        this, [this, l, st] { m_allStop.insert(l, st); }, Qt::QueuedConnection);
+        this,
+        [this, l, st] {
+            m_allStop.insert(l, st);
+            if (static_cast<AllStopState>(st) == AllStopState::On) // MachineAllStopV1 from the AHS
+                emit stopReported(q(IsoStack::linkTarget(l.toStdString())),
+                                  tr("AHS %1 reports all-stop active").arg(l));
+        },
+        Qt::QueuedConnection);
     publishEvent(makeEvent(status.state == AllStopState::On ? EventSeverity::Alarm : EventSeverity::Info,
                            ocu::EventKind::Info, {},
                            tr("AHS %1 reports all-stop %2%3")
@@ -357,82 +368,124 @@ QString IsoBridge::linkRefusal(const QString& link, const QString& what) const {
                : tr("%1 refused: ISO 23725 link %2 is not connected%3; nothing sent").arg(what, link, why);
 }
 
-CommandResult IsoBridge::stopAll() {
-    QStringList done, refused;
-    for (const auto& l : m_config.links) {
-        if (const QString why = linkRefusal(q(l.name), tr("all-stop Apply")); !why.isEmpty()) {
-            refused << why;
-            continue;
+namespace {
+// Collects the outcomes of several stack calls into one `done` (any thread; the last one calls it).
+struct Collect {
+    std::mutex mutex;
+    std::vector<TargetOutcome> out;
+    int missing = 0;
+    OutcomeCallback done;
+    void add(std::vector<TargetOutcome> o) {
+        std::unique_lock lock(mutex);
+        out.insert(out.end(), std::make_move_iterator(o.begin()), std::make_move_iterator(o.end()));
+        if (--missing == 0) {
+            auto all = std::move(out);
+            lock.unlock();
+            done(std::move(all));
         }
-        m_stack->allStopApply(l.name);
-        done << q(l.name);
     }
-    if (done.isEmpty() && refused.isEmpty())
-        return CommandResult::failure(tr("no ISO 23725 link configured"));
-    const QString sent = tr("all-stop Apply sent on %1 (state shown as the AHS reports it)")
-                             .arg(done.join(QStringLiteral(", ")));
-    if (!refused.isEmpty())
-        return CommandResult::failure(
-            ((done.isEmpty() ? QStringList() : QStringList{sent}) + refused).join(QStringLiteral("; ")));
-    return CommandResult::success(sent);
+};
+} // namespace
+
+void IsoBridge::applyOrRefuse(const QString& link, bool apply, OutcomeCallback done) {
+    const std::string target = IsoStack::linkTarget(link.toStdString());
+    if (const QString why = linkRefusal(link, apply ? tr("all-stop Apply") : tr("all-stop Remove"));
+        !why.isEmpty()) {
+        done({TargetOutcome{target, false, why.toStdString()}});
+        return;
+    }
+    if (!m_running) {
+        done({TargetOutcome{target, false,
+                            tr("the ISO 23725 stack is not running; nothing sent").toStdString()}});
+        return;
+    }
+    if (apply)
+        m_stack->allStopApply(link.toStdString(), std::move(done));
+    else
+        m_stack->allStopRemove(link.toStdString(), std::move(done));
 }
 
-CommandResult IsoBridge::stopMachine(const QString& id) {
+void IsoBridge::stopAll(OutcomeCallback done) {
+    // All-stop Apply on every AHS link: a link that is down is a target not sent, with the reason.
+    if (m_config.links.empty()) {
+        done({refusal(QStringLiteral("iso23725"), tr("no ISO 23725 link configured"))});
+        return;
+    }
+    auto c = std::make_shared<Collect>();
+    c->missing = int(m_config.links.size());
+    c->done = std::move(done);
+    for (const auto& l : m_config.links)
+        applyOrRefuse(q(l.name), true, [c](std::vector<TargetOutcome> o) { c->add(std::move(o)); });
+}
+
+void IsoBridge::stopMachine(const QString& id, OutcomeCallback done) {
     const QString link = linkOf(id);
-    if (link.isEmpty())
-        return CommandResult::failure(tr("unknown ISO 23725 machine: %1").arg(id));
-    if (const QString why = linkRefusal(link, tr("all-stop Apply")); !why.isEmpty())
-        return CommandResult::failure(why);
-    // ISO 23725 stops autonomous machines per AHS (all-stop); there is no single-machine stop message.
-    m_stack->allStopApply(link.toStdString());
-    return CommandResult::success(
-        tr("all-stop Apply sent to AHS %1 (ISO 23725 stops per AHS, not per machine)").arg(link));
+    if (link.isEmpty()) {
+        done({refusal(id, tr("unknown ISO 23725 machine"))});
+        return;
+    }
+    // ISO 23725 stops autonomous machines per AHS (all-stop); there is no single-machine stop message, so the
+    // target is the AHS link.
+    applyOrRefuse(link, true, std::move(done));
 }
 
-CommandResult IsoBridge::clearStop(const QString& id) {
+void IsoBridge::clearStop(const QString& id, OutcomeCallback done) {
     const QString link = linkOf(id);
-    if (link.isEmpty())
-        return CommandResult::failure(tr("unknown ISO 23725 machine: %1").arg(id));
-    if (const QString why = linkRefusal(link, tr("all-stop Remove")); !why.isEmpty())
-        return CommandResult::failure(why);
-    m_stack->allStopRemove(link.toStdString());
-    return CommandResult::success(tr("all-stop Remove sent to AHS %1").arg(link));
+    if (link.isEmpty()) {
+        done({refusal(id, tr("unknown ISO 23725 machine"))});
+        return;
+    }
+    applyOrRefuse(link, false, std::move(done));
 }
 
-CommandResult IsoBridge::command(const QString& name, const QJsonObject& args) {
+bool IsoBridge::reportsStopped(const QString& target) const {
+    for (const auto& l : m_config.links)
+        if (q(IsoStack::linkTarget(l.name)) == target)
+            return allStopState(q(l.name)) == AllStopState::On;
+    return false;
+}
+
+void IsoBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
     QString link = args.value(QStringLiteral("link")).toString();
     if (link.isEmpty() && args.contains(QStringLiteral("id")))
         link = linkOf(args.value(QStringLiteral("id")).toString());
     if (link.isEmpty() && m_config.links.size() == 1)
         link = q(m_config.links.front().name);
-    if (!linkNames().contains(link))
-        return CommandResult::failure(tr("%1: unknown ISO 23725 link \"%2\"").arg(name, link));
-    static const QStringList kOverTheLink{QStringLiteral("all_stop_apply"), QStringLiteral("all_stop_remove"),
-                                          QStringLiteral("fetch_map"), QStringLiteral("reset_assignment")};
+    if (!linkNames().contains(link)) {
+        done({refusal(link.isEmpty() ? QStringLiteral("iso23725") : link,
+                      tr("%1: unknown ISO 23725 link \"%2\"").arg(name, link))});
+        return;
+    }
+    if (name == QLatin1String("all_stop_apply") || name == QLatin1String("all_stop_remove")) {
+        applyOrRefuse(link, name == QLatin1String("all_stop_apply"), std::move(done));
+        return;
+    }
+    const QString target = q(IsoStack::linkTarget(link.toStdString()));
+    static const QStringList kOverTheLink{QStringLiteral("fetch_map"), QStringLiteral("reset_assignment")};
     if (kOverTheLink.contains(name))
-        if (const QString why = linkRefusal(link, name); !why.isEmpty())
-            return CommandResult::failure(why);
-    if (name == QLatin1String("all_stop_apply")) {
-        m_stack->allStopApply(link.toStdString());
-        return CommandResult::success(tr("all-stop Apply sent to %1").arg(link));
-    }
-    if (name == QLatin1String("all_stop_remove")) {
-        m_stack->allStopRemove(link.toStdString());
-        return CommandResult::success(tr("all-stop Remove sent to %1").arg(link));
-    }
+        if (const QString why = linkRefusal(link, name); !why.isEmpty()) {
+            done({refusal(target, why)});
+            return;
+        }
+    // Requests without an outcome from the stack: handed to it after the link check; their answers (the map,
+    // the assignment) show the effect.
     if (name == QLatin1String("fetch_map")) {
         m_stack->fetchMap(link.toStdString());
-        return CommandResult::success(tr("map requested from %1").arg(link));
+        done({TargetOutcome{target.toStdString(), true, {}}});
+        return;
     }
     if (name == QLatin1String("reset_assignment")) {
         const QString id = args.value(QStringLiteral("id")).toString();
         const QString prefix = protocolPrefix(Protocol::Iso23725);
-        if (!id.startsWith(prefix))
-            return CommandResult::failure(tr("reset_assignment: \"id\" must name an ISO 23725 machine"));
+        if (!id.startsWith(prefix)) {
+            done({refusal(target, tr("reset_assignment: \"id\" must name an ISO 23725 machine"))});
+            return;
+        }
         m_stack->resetAssignment(link.toStdString(), id.mid(prefix.size()).toStdString());
-        return CommandResult::success(tr("assignment reset sent"));
+        done({TargetOutcome{id.toStdString(), true, {}}});
+        return;
     }
-    return FleetBridge::command(name, args);
+    FleetBridge::command(name, args, std::move(done));
 }
 
 } // namespace ocu

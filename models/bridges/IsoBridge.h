@@ -35,11 +35,12 @@ public:
     void setOwnPosition(const QString& equipmentId, double lat, double lon, double altitude,
                         double headingDeg, double speedKmh);
 
-    CommandResult stopAll() override;
-    CommandResult stopMachine(const QString& id) override;
-    CommandResult clearStop(const QString& id) override;
+    void stopAll(OutcomeCallback done) override;
+    void stopMachine(const QString& id, OutcomeCallback done) override;
+    void clearStop(const QString& id, OutcomeCallback done) override;
     // all_stop_apply / all_stop_remove {"link"}, fetch_map {"link"}, reset_assignment {"id"}.
-    CommandResult command(const QString& name, const QJsonObject& args) override;
+    void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
+    bool reportsStopped(const QString& target) const override;
     SiteMapData siteMap() const override { return m_map; }
 
     // GUI thread: the all-stop status per link as the AHS reported it.
@@ -66,6 +67,9 @@ private:
     QString linkOf(const QString& machineId) const;
     // GUI thread: why `what` cannot go to the AHS on `link` now (its link is not up), or an empty string.
     QString linkRefusal(const QString& link, const QString& what) const;
+    // All-stop Apply/Remove on one link with its outcome (target IsoStack::linkTarget(link)).
+    void applyOrRefuse(const QString& link, bool apply, OutcomeCallback done);
+    bool m_running = false;
 
     iso23725::IsoConfig m_config;
     GeoFrame m_frame;

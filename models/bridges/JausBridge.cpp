@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 namespace ocu {
 
@@ -145,8 +146,13 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
     : JausVehicleBridge(parent), m_config(config), m_frame(frame), m_snapshots(this, [this](auto&& batch) {
           for (auto& [id, snap] : batch) {
               const JausVehicle v = toVehicle(snap);
+              const bool wasStopped = m_latest.contains(id) && m_latest.value(id).emergency;
               m_latest.insert(id, v);
               emit subsystemUpdated(v);
+              if (v.emergency && !wasStopped) // the vehicle's own report (ReportStatus: Emergency)
+                  emit stopReported(
+                      machineId(id),
+                      tr("%1 reports EMERGENCY").arg(v.callSign.isEmpty() ? machineId(id) : v.callSign));
           }
       }) {
     m_stack = std::make_unique<JausStack>(m_config, static_cast<JausListener&>(*this));
@@ -178,6 +184,8 @@ JausConsoleIdentity JausBridge::identity() const {
     id.subsystemId = m_config.subsystemId;
     id.authority = m_config.authority;
     id.mayControl = m_config.mayControl();
+    id.mayStop = m_config.mayStop();
+    id.mayClearStop = m_config.mayClearStop();
     id.driveRateHz = m_config.driveRateHz;
     id.ownId = toAddress(m_config.ownId());
     return id;
@@ -389,50 +397,71 @@ CommandResult JausBridge::refuseIfUnreachable(quint16 subsystem, const QString& 
     return CommandResult::success();
 }
 
-CommandResult JausBridge::stopAll() {
-    if (auto r = refuseIfMonitor(tr("emergency stop")); !r.ok)
-        return r;
-    int n = 0;
-    QStringList unreachable;
-    for (const auto& s : std::as_const(m_latest)) {
-        if (!s.controlledByUs)
-            continue;
-        if (s.link == JausLink::Down) {
-            unreachable << machineId(s.subsystem);
-            continue;
-        }
-        m_stack->setEmergency(s.subsystem);
-        ++n;
+bool JausBridge::refuseIfNotRunning(const QString& target, OutcomeCallback& done) const {
+    if (m_stack->running())
+        return false;
+    done({refusal(target, tr("the JAUS stack is not running; nothing sent"))});
+    return true;
+}
+
+void JausBridge::stopAll(OutcomeCallback done) {
+    if (!m_config.mayStop()) { // the one stop rule (JausConfig): every role may stop today
+        done({refusal(QStringLiteral("jaus"), tr("emergency stop refused by this console's JAUS role"))});
+        return;
     }
-    const QString sent = tr("SetEmergency sent to %n vehicle(s) this console controls", "", n);
-    if (!unreachable.isEmpty())
-        return CommandResult::failure(
-            tr("%1; not sent to %2: link down").arg(sent, unreachable.join(QStringLiteral(", "))));
-    return CommandResult::success(sent);
+    if (refuseIfNotRunning(QStringLiteral("jaus"), done))
+        return;
+    // SetEmergency to every discovered subsystem, controlled by this console or not: the Management service
+    // accepts it from any client. No vehicle discovered: say that nothing went out on JAUS.
+    m_stack->setEmergencyAll(EmergencyCode::Safety, [done = std::move(done)](std::vector<TargetOutcome> out) {
+        if (out.empty())
+            out.push_back(TargetOutcome{"jaus", false, "no JAUS vehicle discovered: no SetEmergency sent"});
+        done(std::move(out));
+    });
 }
 
-CommandResult JausBridge::stopMachine(const QString& id) {
+void JausBridge::stopMachine(const QString& id, OutcomeCallback done) {
     auto sub = subsystemOf(id);
-    if (!sub)
-        return CommandResult::failure(tr("not a JAUS machine: %1").arg(id));
-    if (auto r = refuseIfMonitor(tr("emergency stop")); !r.ok)
-        return r;
-    if (auto r = refuseIfUnreachable(*sub, tr("emergency stop")); !r.ok)
-        return r;
-    m_stack->setEmergency(*sub);
-    return CommandResult::success(tr("SetEmergency sent to %1").arg(id));
+    if (!sub) {
+        done({refusal(id, tr("not a JAUS machine"))});
+        return;
+    }
+    if (!m_config.mayStop()) {
+        done({refusal(id, tr("emergency stop refused by this console's JAUS role"))});
+        return;
+    }
+    if (auto r = refuseIfUnreachable(*sub, tr("emergency stop")); !r.ok) {
+        done({refusal(id, r.message)});
+        return;
+    }
+    if (refuseIfNotRunning(id, done))
+        return;
+    m_stack->setEmergency(*sub, EmergencyCode::Safety, std::move(done));
 }
 
-CommandResult JausBridge::clearStop(const QString& id) {
+void JausBridge::clearStop(const QString& id, OutcomeCallback done) {
     auto sub = subsystemOf(id);
-    if (!sub)
-        return CommandResult::failure(tr("not a JAUS machine: %1").arg(id));
-    if (auto r = refuseIfMonitor(tr("clear emergency")); !r.ok)
-        return r;
-    if (auto r = refuseIfUnreachable(*sub, tr("clear emergency")); !r.ok)
-        return r;
-    m_stack->clearEmergency(*sub);
-    return CommandResult::success(tr("ClearEmergency sent to %1").arg(id));
+    if (!sub) {
+        done({refusal(id, tr("not a JAUS machine"))});
+        return;
+    }
+    if (!m_config.mayClearStop()) { // only roles with command rights may clear (JausConfig)
+        done({refusal(id, tr("clear emergency refused: this console's JAUS role has no command rights"))});
+        return;
+    }
+    if (auto r = refuseIfUnreachable(*sub, tr("clear emergency")); !r.ok) {
+        done({refusal(id, r.message)});
+        return;
+    }
+    if (refuseIfNotRunning(id, done))
+        return;
+    m_stack->clearEmergency(*sub, std::move(done));
+}
+
+bool JausBridge::reportsStopped(const QString& target) const {
+    auto sub = subsystemOf(target);
+    auto it = sub ? m_latest.find(*sub) : m_latest.end();
+    return it != m_latest.end() && it->emergency;
 }
 
 CommandResult JausBridge::drive(quint16 subsystem, const JausDrive& demand) {
@@ -465,68 +494,112 @@ CommandResult JausBridge::stopDriving(quint16 subsystem) {
     return CommandResult::success(tr("drive stopped"));
 }
 
-CommandResult JausBridge::command(const QString& name, const QJsonObject& args) {
+void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
     if (name == QLatin1String("release_all")) {
+        if (refuseIfNotRunning(QStringLiteral("jaus"), done))
+            return;
+        // One target per subsystem this console controls; releaseAll also drops pending wishes for control.
+        QList<quint16> controlled;
+        for (const auto& v : std::as_const(m_latest))
+            if (v.controlledByUs)
+                controlled << v.subsystem;
+        if (controlled.isEmpty()) {
+            m_stack->releaseAll();
+            done({refusal(QStringLiteral("jaus"),
+                          tr("this console controls no JAUS vehicle: nothing to release"))});
+            return;
+        }
+        struct Collect {
+            std::mutex mutex;
+            std::vector<TargetOutcome> out;
+            int missing = 0;
+            OutcomeCallback done;
+        };
+        auto c = std::make_shared<Collect>();
+        c->missing = int(controlled.size());
+        c->done = std::move(done);
+        for (quint16 ss : controlled)
+            m_stack->releaseControl(ss, [c](std::vector<TargetOutcome> o) {
+                std::unique_lock lock(c->mutex);
+                c->out.insert(c->out.end(), o.begin(), o.end());
+                if (--c->missing == 0) {
+                    auto out = std::move(c->out);
+                    lock.unlock();
+                    c->done(std::move(out));
+                }
+            });
         m_stack->releaseAll();
-        return CommandResult::success(tr("control released on every subsystem"));
+        return;
     }
-    auto sub = subsystemOf(args.value(QStringLiteral("id")).toString());
-    if (!sub)
-        return CommandResult::failure(
-            tr("%1: \"id\" must name a JAUS machine such as \"jaus:101\"").arg(name));
+    const QString id = args.value(QStringLiteral("id")).toString();
+    auto sub = subsystemOf(id);
+    if (!sub) {
+        done({refusal(id.isEmpty() ? QStringLiteral("jaus") : id,
+                      tr("%1: \"id\" must name a JAUS machine such as \"jaus:101\"").arg(name))});
+        return;
+    }
+    auto refuse = [&](const QString& why) { done({refusal(id, why)}); };
     // Releasing is never refused for a down link: it also drops the wish for control, so the console does not
     // take control back when the vehicle is heard again.
     if (name == QLatin1String("release_control")) {
-        m_stack->releaseControl(*sub);
-        return CommandResult::success(tr("ReleaseControl sent to %1").arg(machineId(*sub)));
+        if (!refuseIfNotRunning(id, done))
+            m_stack->releaseControl(*sub, std::move(done));
+        return;
     }
     if (auto r = refuseIfMonitor(name); !r.ok)
-        return r;
-    if (name == QLatin1String("drive_stop"))
-        return stopDriving(*sub);
+        return refuse(r.message);
+    if (name == QLatin1String("drive_stop")) {
+        stopDriving(*sub);
+        done({TargetOutcome{id.toStdString(), true, {}}});
+        return;
+    }
     static const QStringList kOverTheLink{QStringLiteral("request_control"), QStringLiteral("resume"),
                                           QStringLiteral("standby"), QStringLiteral("shutdown"),
                                           QStringLiteral("reset")};
     if (kOverTheLink.contains(name))
         if (auto r = refuseIfUnreachable(*sub, name); !r.ok)
-            return r;
+            return refuse(r.message);
+    if (refuseIfNotRunning(id, done))
+        return;
     if (name == QLatin1String("request_control")) {
-        m_stack->requestControl(*sub);
-        return CommandResult::success(
-            tr("RequestControl sent to %1 with authority %2").arg(machineId(*sub)).arg(m_config.authority));
+        m_stack->requestControl(*sub, std::move(done));
+        return;
     }
+    // Management commands without an outcome from the stack: handed to the stack after the checks above
+    // (subsystem heard, link up, command rights); the vehicle's management state shows the effect.
+    const TargetOutcome posted{id.toStdString(), true, {}};
     if (name == QLatin1String("resume")) {
         m_stack->resume(*sub);
-        return CommandResult::success(tr("Resume sent"));
+        return done({posted});
     }
     if (name == QLatin1String("standby")) {
         m_stack->standby(*sub);
-        return CommandResult::success(tr("Standby sent"));
+        return done({posted});
     }
     if (name == QLatin1String("shutdown")) {
         m_stack->shutdown(*sub);
-        return CommandResult::success(tr("Shutdown sent"));
+        return done({posted});
     }
     if (name == QLatin1String("reset")) {
         m_stack->reset(*sub);
-        return CommandResult::success(tr("Reset sent"));
+        return done({posted});
     }
     if (name == QLatin1String("drive")) {
         JausDrive c;
         const QString mode = args.value(QStringLiteral("mode")).toString(QStringLiteral("velocity"));
         if (mode != QLatin1String("velocity") && mode != QLatin1String("effort"))
-            return CommandResult::failure(tr("drive: \"mode\" must be \"velocity\" or \"effort\""));
+            return refuse(tr("drive: \"mode\" must be \"velocity\" or \"effort\""));
         c.mode = mode == QLatin1String("effort") ? JausDrive::Mode::Wrench : JausDrive::Mode::Velocity;
         c.linear = args.value(QStringLiteral("linear")).toDouble(0);
         c.angular = args.value(QStringLiteral("angular")).toDouble(0);
         const double duration = args.value(QStringLiteral("duration")).toDouble(1.0);
         if (!(duration > 0 && duration <= 60))
-            return CommandResult::failure(tr("drive: \"duration\" must be between 0 and 60 seconds"));
+            return refuse(tr("drive: \"duration\" must be between 0 and 60 seconds"));
         if (c.mode == JausDrive::Mode::Wrench && (std::abs(c.linear) > 100 || std::abs(c.angular) > 100))
-            return CommandResult::failure(tr("drive: effort must be within ±100 %"));
+            return refuse(tr("drive: effort must be within ±100 %"));
         auto r = drive(*sub, c);
         if (!r.ok)
-            return r;
+            return refuse(r.message);
         // The demand is refreshed at the drive rate for the duration (the stack zeroes a stale demand),
         // then the session stops with zeros.
         QTimer*& t = m_driveTimers[*sub];
@@ -542,9 +615,9 @@ CommandResult JausBridge::command(const QString& name, const QJsonObject& args) 
                 stopDriving(s);
         });
         t->start(static_cast<int>(1000.0 / std::max(1.0, m_config.driveRateHz)));
-        return CommandResult::success(tr("driving %1 for %2 s").arg(machineId(*sub)).arg(duration));
+        return done({posted});
     }
-    return FleetBridge::command(name, args);
+    FleetBridge::command(name, args, std::move(done));
 }
 
 } // namespace ocu

@@ -37,11 +37,12 @@ public:
     QList<quint16> subsystems() const override;
     std::optional<JausVehicle> subsystem(quint16 id) const override;
 
-    CommandResult stopAll() override;
-    CommandResult stopMachine(const QString& id) override;
-    CommandResult clearStop(const QString& id) override;
+    void stopAll(OutcomeCallback done) override;
+    void stopMachine(const QString& id, OutcomeCallback done) override;
+    void clearStop(const QString& id, OutcomeCallback done) override;
     // request_control, release_control, release_all, drive, drive_stop, resume, standby, shutdown, reset.
-    CommandResult command(const QString& name, const QJsonObject& args) override;
+    void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
+    bool reportsStopped(const QString& target) const override;
 
     CommandResult drive(quint16 subsystem, const JausDrive& command) override;
     CommandResult stopDriving(quint16 subsystem) override;
@@ -53,6 +54,8 @@ private:
     CommandResult refuseIfMonitor(const QString& what) const;
     // GUI thread: a refusal when the subsystem was never heard or its link is down (nothing is posted then).
     CommandResult refuseIfUnreachable(quint16 subsystem, const QString& what) const;
+    // True (and `done` called with the refusal) when the stack is not running: it would never answer.
+    bool refuseIfNotRunning(const QString& target, OutcomeCallback& done) const;
 
     jaus::JausConfig m_config;
     GeoFrame m_frame;

@@ -176,49 +176,57 @@ QString OsyrisBridge::linkRefusal(const QString& what) const {
     return {};
 }
 
-CommandResult OsyrisBridge::stopAll() {
-    if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty())
-        return CommandResult::failure(why);
-    // OSYRIS has no stop command (manned machines); the stop reaches every driver's display as a message.
-    m_station->sendText("STOP ALL issued by the operator control unit");
-    return CommandResult::success(
-        tr("OSYRIS has no remote stop: STOP message sent to every machine's display"));
+void OsyrisBridge::stopAll(OutcomeCallback done) {
+    const QString target = q(m_station->groupTarget());
+    if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty()) {
+        done({refusal(target, why)});
+        return;
+    }
+    // OSYRIS has no stop command (manned machines); the stop reaches every driver's display as a message,
+    // sent at once as its own datagram.
+    m_station->sendText("STOP ALL issued by the operator control unit", std::move(done));
 }
 
-CommandResult OsyrisBridge::stopMachine(const QString& id) {
-    if (!id.startsWith(protocolPrefix(Protocol::Osyris)))
-        return CommandResult::failure(tr("not an OSYRIS machine: %1").arg(id));
-    if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty())
-        return CommandResult::failure(why);
+void OsyrisBridge::stopMachine(const QString& id, OutcomeCallback done) {
+    if (!id.startsWith(protocolPrefix(Protocol::Osyris))) {
+        done({refusal(id, tr("not an OSYRIS machine"))});
+        return;
+    }
+    if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty()) {
+        done({refusal(id, why)});
+        return;
+    }
     m_station->sendText("STOP " + id.mid(protocolPrefix(Protocol::Osyris).size()).toStdString() +
-                        ": stop requested by the operator control unit");
-    return CommandResult::success(tr("OSYRIS has no remote stop: STOP message sent to the machine displays"));
+                            ": stop requested by the operator control unit",
+                        std::move(done));
 }
 
-CommandResult OsyrisBridge::clearStop(const QString& id) {
-    return CommandResult::failure(tr("%1: OSYRIS machines carry no stop state to clear").arg(id));
+void OsyrisBridge::clearStop(const QString& id, OutcomeCallback done) {
+    done({refusal(id, tr("OSYRIS machines carry no stop state to clear"))});
 }
 
-CommandResult OsyrisBridge::command(const QString& name, const QJsonObject& args) {
+void OsyrisBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
+    const QString target = q(m_station->groupTarget());
     if (name == QLatin1String("send_text")) {
         const QString text = args.value(QStringLiteral("text")).toString();
         if (text.isEmpty() || text.toUtf8().size() > 80)
-            return CommandResult::failure(tr("send_text: \"text\" must be 1 to 80 bytes (CmMsg)"));
+            return done({refusal(target, tr("send_text: \"text\" must be 1 to 80 bytes (CmMsg)"))});
         if (const QString why = linkRefusal(name); !why.isEmpty())
-            return CommandResult::failure(why);
-        m_station->sendText(text.toStdString());
-        return CommandResult::success(tr("message sent to every station"));
+            return done({refusal(target, why)});
+        m_station->sendText(text.toStdString(), std::move(done));
+        return;
     }
     if (name == QLatin1String("ping")) {
         const int idx = args.value(QStringLiteral("idx")).toInt(-1);
         if (idx < 0 || idx > 253)
-            return CommandResult::failure(tr("ping: \"idx\" must be a station index 0-253"));
+            return done({refusal(target, tr("ping: \"idx\" must be a station index 0-253"))});
         if (const QString why = linkRefusal(name); !why.isEmpty())
-            return CommandResult::failure(why);
+            return done({refusal(target, why)});
+        // Queued for the next Beat; the PONG (an event with the round trip) shows the effect.
         m_station->ping(static_cast<std::uint8_t>(idx));
-        return CommandResult::success(tr("PING sent to station %1").arg(idx));
+        return done({TargetOutcome{"osyris:" + std::to_string(idx), true, {}}});
     }
-    return FleetBridge::command(name, args);
+    FleetBridge::command(name, args, std::move(done));
 }
 
 } // namespace ocu

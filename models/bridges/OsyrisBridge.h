@@ -25,11 +25,13 @@ public:
     QString start();
     void stop();
 
-    CommandResult stopAll() override;
-    CommandResult stopMachine(const QString& id) override;
-    CommandResult clearStop(const QString& id) override;
+    void stopAll(OutcomeCallback done) override;
+    void stopMachine(const QString& id, OutcomeCallback done) override;
+    void clearStop(const QString& id, OutcomeCallback done) override;
     // send_text {"text"}, ping {"idx"}.
-    CommandResult command(const QString& name, const QJsonObject& args) override;
+    void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
+    // OSYRIS carries no stop state: a stop can never be confirmed by the machines.
+    bool reportsStopState() const override { return false; }
     const PassCountLayer* passCountLayer() const override { return m_layer.get(); }
     osyris::PassCountSummary passCountSummary() const;
 

@@ -123,6 +123,10 @@ struct JausConsoleIdentity {
     quint16 subsystemId = 0;
     int authority = 0;
     bool mayControl = false; // false for the MONITOR role
+    // The stop rule, as the JAUS core decides it (JausConfig::mayStop/mayClearStop): any role may stop, only
+    // roles with command rights may clear.
+    bool mayStop = true;
+    bool mayClearStop = false;
     double driveRateHz = 20; // drive stream while a session is open
     JausAddress ownId;       // this console's component
 };

@@ -39,43 +39,59 @@ void FakeFleetBridge::setStop(const QString& id, StopState s) {
         m = *it;
     }
     publishMachine(m);
+    if (s == StopState::Stopped)
+        QMetaObject::invokeMethod(
+            this, [this, id] { emit stopReported(id, QStringLiteral("%1 reports stopped").arg(id)); },
+            Qt::QueuedConnection);
 }
 
-CommandResult FakeFleetBridge::stopAll() {
+void FakeFleetBridge::answer(OutcomeCallback done, std::vector<TargetOutcome> out) {
+    if (silent)
+        return; // a stack that never answers: the gate's deadline decides
+    done(std::move(out));
+}
+
+void FakeFleetBridge::stopAll(OutcomeCallback done) {
     record(QStringLiteral("stop_all"), {});
     if (refusedCommands.contains(QStringLiteral("stop_all")))
-        return CommandResult::failure(QStringLiteral("refused"));
+        return answer(std::move(done), {refusal(toText(protocol()), QStringLiteral("refused"))});
     QStringList ids;
     {
         std::lock_guard lock(m_mutex);
         ids = m_machines.keys();
     }
-    for (const QString& id : ids)
+    ids.sort();
+    std::vector<TargetOutcome> out;
+    for (const QString& id : ids) {
         setStop(id, StopState::Stopped);
-    return CommandResult::success(QStringLiteral("stop sent to %1 machines").arg(ids.size()));
+        out.push_back({id.toStdString(), true, {}});
+    }
+    answer(std::move(done), std::move(out));
 }
 
-CommandResult FakeFleetBridge::stopMachine(const QString& id) {
+void FakeFleetBridge::stopMachine(const QString& id, OutcomeCallback done) {
     record(QStringLiteral("stop"), id);
     if (refusedCommands.contains(QStringLiteral("stop")))
-        return CommandResult::failure(QStringLiteral("refused"));
+        return answer(std::move(done), {refusal(id, QStringLiteral("refused"))});
     setStop(id, StopState::Stopped);
-    return CommandResult::success();
+    answer(std::move(done), {TargetOutcome{id.toStdString(), true, {}}});
 }
 
-CommandResult FakeFleetBridge::clearStop(const QString& id) {
+void FakeFleetBridge::clearStop(const QString& id, OutcomeCallback done) {
     record(QStringLiteral("clear_stop"), id);
     if (refusedCommands.contains(QStringLiteral("clear_stop")))
-        return CommandResult::failure(QStringLiteral("refused"));
+        return answer(std::move(done), {refusal(id, QStringLiteral("refused"))});
     setStop(id, StopState::None);
-    return CommandResult::success();
+    answer(std::move(done), {TargetOutcome{id.toStdString(), true, {}}});
 }
 
-CommandResult FakeFleetBridge::command(const QString& name, const QJsonObject& args) {
-    record(name, args.value(QStringLiteral("id")).toString(), args);
+void FakeFleetBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
+    const QString id = args.value(QStringLiteral("id")).toString();
+    record(name, id, args);
+    const QString target = id.isEmpty() ? toText(protocol()) : id;
     if (refusedCommands.contains(name))
-        return CommandResult::failure(QStringLiteral("insufficient authority"));
-    return CommandResult::success();
+        return answer(std::move(done), {refusal(target, QStringLiteral("insufficient authority"))});
+    answer(std::move(done), {TargetOutcome{target.toStdString(), true, {}}});
 }
 
 QVector<FakeFleetBridge::Call> FakeFleetBridge::calls() const {

@@ -26,15 +26,18 @@ public:
     void setMachine(const MachineState& m);
     void removeMachine(const QString& id);
 
-    CommandResult stopAll() override;
-    CommandResult stopMachine(const QString& id) override;
-    CommandResult clearStop(const QString& id) override;
-    CommandResult command(const QString& name, const QJsonObject& args) override;
+    // Answers at once (on the calling thread) with one target per machine (stop_all) or the machine named.
+    void stopAll(OutcomeCallback done) override;
+    void stopMachine(const QString& id, OutcomeCallback done) override;
+    void clearStop(const QString& id, OutcomeCallback done) override;
+    void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
 
     QVector<Call> calls() const;
     void clearCalls();
 
     bool simulateMachines = true;
+    // Never answer (a stack that hangs): the CommandGate's deadline must decide.
+    bool silent = false;
     // Commands named here are refused (to test role/authority enforcement paths).
     QStringList refusedCommands;
     // Optional pass-count layer / site map exposed through the base interface.
@@ -44,6 +47,7 @@ public:
     SiteMapData siteMap() const override { return map; }
 
 private:
+    void answer(OutcomeCallback done, std::vector<TargetOutcome> out);
     void record(const QString& name, const QString& id, const QJsonObject& args = {});
     void setStop(const QString& id, StopState s);
 

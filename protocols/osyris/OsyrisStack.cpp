@@ -17,6 +17,7 @@ struct OsyrisStack::Impl {
     std::unique_ptr<OsyrisTransport> transport; // after core: it counts into the core's counters
     RxImpairment imp;
     bool running = false;
+    bool lastSendOk = false; // io thread: the last datagram went to every destination
     std::chrono::steady_clock::time_point nextBeat;
     int beatMs = 100;
 
@@ -83,7 +84,7 @@ bool OsyrisStack::start(std::string* error) {
     Impl* impl = m_impl.get();
     m_impl->core = std::make_unique<StationCore>(
         m_cfg, SteadyClock::instance(), *m_impl->store, &m_grid, &m_listener,
-        [impl](const Bytes& d) { impl->transport->send(d); },
+        [impl](const Bytes& d) { impl->lastSendOk = impl->transport->send(d); },
         static_cast<std::uint32_t>(m_cfg.stationIndex) * 7919u + 17u);
     m_impl->transport = std::make_unique<OsyrisTransport>(m_impl->io.context(), m_impl->core->counters());
     m_impl->transport->setImpairment(m_impl->imp);
@@ -124,6 +125,24 @@ void OsyrisStack::sendText(std::string text) {
     if (!m_impl->running)
         return;
     m_impl->io.post([this, t = std::move(text)] { m_impl->core->sendText(t); });
+}
+
+void OsyrisStack::sendText(std::string text, OutcomeCallback done) {
+    if (!m_impl->running) {
+        done({TargetOutcome{groupTarget(), false, "the OSYRIS station is not running"}});
+        return;
+    }
+    m_impl->io.post([this, t = std::move(text), done = std::move(done)] {
+        TargetOutcome o{groupTarget(), false, "the OSYRIS station is not running"};
+        if (m_impl->running && m_impl->transport) {
+            m_impl->lastSendOk = false;
+            m_impl->core->sendTextNow(t);
+            o.sent = m_impl->lastSendOk;
+            if (!o.sent)
+                o.reason = "socket error: " + m_impl->transport->lastError();
+        }
+        done({std::move(o)});
+    });
 }
 
 void OsyrisStack::ping(std::uint8_t idx) {

@@ -8,6 +8,7 @@
 #include "protocols/osyris/RibbonStore.h"
 #include "protocols/osyris/StationCore.h"
 
+#include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 
 #include <cstdint>
@@ -31,6 +32,14 @@ public:
     bool running() const;
 
     void sendText(std::string text);
+    // The text as its own datagram at once (not with the next Beat), with its outcome (issue 13 §1): `done`
+    // runs once with one TargetOutcome for the group (target groupTarget()): sent when the socket took the
+    // datagram for every destination, otherwise the reason. On the io thread; on the calling thread when the
+    // station is not running.
+    void sendText(std::string text, OutcomeCallback done);
+    std::string groupTarget() const {
+        return "osyris group " + m_cfg.group + ":" + std::to_string(m_cfg.port);
+    }
     void ping(std::uint8_t idx);
     // For stations that are machines (simulated rollers): write a position into the own ribbon.
     void publishOwnPosition(CmPos p, std::vector<PosProp> props = {});

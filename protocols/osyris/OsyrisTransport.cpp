@@ -120,15 +120,20 @@ void OsyrisTransport::startReceive(DatagramHandler onDatagram) {
         m_impl->receiveNext();
 }
 
-void OsyrisTransport::send(const Bytes& datagram) {
+bool OsyrisTransport::send(const Bytes& datagram) {
     if (!m_impl->open)
-        return;
+        return false;
+    bool ok = !m_impl->destinations.empty();
     for (const auto& ep : m_impl->destinations) {
         boost::system::error_code ec;
         m_impl->socket.send_to(asio::buffer(datagram), ep, 0, ec);
-        if (ec)
+        if (ec) {
             m_impl->counters.add("tx.error");
+            m_lastError = ec.message();
+            ok = false;
+        }
     }
+    return ok;
 }
 
 void OsyrisTransport::close() {

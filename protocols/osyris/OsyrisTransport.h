@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 
 namespace boost::asio {
 class io_context;
@@ -44,7 +45,10 @@ public:
     // Starts the receive loop; every datagram (after the impairment) goes to onDatagram on the io thread.
     void startReceive(DatagramHandler onDatagram);
     // Sends to every destination; failures count as tx.error.
-    void send(const Bytes& datagram);
+    // True when every destination took the datagram (it is on the wire), false on a socket error or closed.
+    bool send(const Bytes& datagram);
+    // Why the last failed send failed (socket error text).
+    const std::string& lastError() const { return m_lastError; }
     // IGMP leave and close; impaired datagrams still held back are dropped.
     void close();
     bool isOpen() const;
@@ -54,6 +58,7 @@ public:
 private:
     struct Impl;
     std::unique_ptr<Impl> m_impl;
+    std::string m_lastError;
 };
 
 } // namespace ocu::osyris

@@ -131,6 +131,16 @@ void StationCore::sendText(const std::string& text, std::uint8_t to) {
     m_counters.add("tx.msg");
 }
 
+Bytes StationCore::sendTextNow(const std::string& text, std::uint8_t to) {
+    Bytes b;
+    encodeMsg(b, idx(), to, text, m_cfg.checksum);
+    m_counters.add("tx.msg");
+    m_counters.add("tx.datagrams");
+    m_counters.add("tx.bytes", b.size());
+    m_send(b);
+    return b;
+}
+
 void StationCore::ping(std::uint8_t target) {
     auto own = ownPosition();
     m_pings[target] = m_clock.now();

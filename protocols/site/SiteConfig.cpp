@@ -49,6 +49,8 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
             f->number("remove_after_s", cfg.fleet.removeAfterSeconds, 1, 86400 * 7);
         cfg.fleet.monitorRateHz = f->number("monitor_rate_hz", cfg.fleet.monitorRateHz, 0.01, 100);
         cfg.fleet.auditLog = f->string("audit_log", cfg.fleet.auditLog);
+        cfg.fleet.stopConfirmTimeoutSeconds =
+            f->number("stop_confirm_timeout_s", cfg.fleet.stopConfirmTimeoutSeconds, 0.1, 600);
         if (cfg.fleet.removeAfterSeconds < cfg.fleet.staleAfterSeconds)
             f->error("remove_after_s", "must not be shorter than stale_after_s");
         f->finish();

@@ -45,6 +45,9 @@ struct FleetConfig {
     double removeAfterSeconds = 600.0; // dropped from the list after this
     double monitorRateHz = 1.0;        // headless monitor: lines per machine per second
     std::string auditLog;              // append-only audit file; empty = none
+    // A stop not confirmed by the machine's own report (JAUS emergency, ISO 23725 all-stop) within this
+    // time raises an alarm (issue 13 §1).
+    double stopConfirmTimeoutSeconds = 3.0;
 };
 
 struct OwnPositionConfig {

@@ -4,6 +4,7 @@
 #include "models/CommandGate.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
+#include "models/testing/CommandWait.h"
 #include "models/testing/FakeFleetBridge.h"
 
 #include <QBuffer>
@@ -159,6 +160,11 @@ private slots:
         QCOMPARE(r.value(QStringLiteral("type")).toString(), QStringLiteral("result"));
         QCOMPARE(r.value(QStringLiteral("ok")).toBool(), true);
         QCOMPARE(r.value(QStringLiteral("req")).toInt(), 17);
+        // One target per machine the fakes stopped, each sent.
+        const QJsonArray targets = r.value(QStringLiteral("targets")).toArray();
+        QCOMPARE(targets.size(), 3);
+        for (const auto& t : targets)
+            QVERIFY(t.toObject().value(QStringLiteral("sent")).toBool());
         for (FakeFleetBridge* b : {&rig.jaus, &rig.iso, &rig.osy})
             QCOMPARE(b->calls().size(), 1);
         QCoreApplication::processEvents();
@@ -209,7 +215,15 @@ private slots:
         r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"request_control","id":"jaus:101"})"))
                 .object();
         QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
-        QCOMPARE(r.value(QStringLiteral("message")).toString(), QStringLiteral("insufficient authority"));
+        QVERIFY(
+            r.value(QStringLiteral("message")).toString().contains(QStringLiteral("insufficient authority")));
+        QCOMPARE(r.value(QStringLiteral("targets"))
+                     .toArray()
+                     .first()
+                     .toObject()
+                     .value(QStringLiteral("reason"))
+                     .toString(),
+                 QStringLiteral("insufficient authority"));
 
         r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"request_control","id":"nope:1"})"))
                 .object();
@@ -258,7 +272,7 @@ private slots:
         QCoreApplication::processEvents();
         QCOMPARE(ctx.fleet()->rowCount(), 2);
         QCOMPARE(ctx.alarms()->unacknowledgedCount(), 1); // link loss
-        QVERIFY(ctx.gate()->stopAll().ok);
+        QVERIFY(ocu::testing::gateResult([&](auto h) { ctx.gate()->stopAll(QStringLiteral("gui"), h); }).ok);
         QCOMPARE(early.calls().size(), 1);
         QCOMPARE(late.calls().size(), 1);
         const QByteArray text = out.data();

@@ -1,11 +1,36 @@
 // `ocu --headless` on the built-in simulated site (issue 6 acceptance): machines of all three protocols
 // are printed, and a stop_all line on stdin leads to the simulated machines reporting their stop within 2 s.
 #include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace {
+// A port nobody listens on, at or above `min` (bound once to pick it, then released).
+int freePort(int type, int min = 1024) {
+    for (int port = min + int(::getpid() % 5000);; ++port) {
+        const int fd = ::socket(AF_INET, type, 0);
+        sockaddr_in a{};
+        a.sin_family = AF_INET;
+        a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        a.sin_port = htons(std::uint16_t(port));
+        const bool ok = ::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
+        ::close(fd);
+        if (ok)
+            return port;
+    }
+}
+} // namespace
 
 class TestHeadlessSite : public QObject {
     Q_OBJECT
@@ -94,14 +119,12 @@ private slots:
         QCOMPARE(result(10).value("ok").toBool(), false);
     }
     void stopAllStopsEveryMachineWithinTwoSeconds() {
-        // JAUS emergency stops go to the vehicles this console controls: take control of both first.
-        send(R"({"cmd":"request_control","id":"jaus:126","req":1})");
-        send(R"({"cmd":"request_control","id":"jaus:127","req":2})");
+        // Issue 13 §2: STOP ALL reaches every discovered JAUS vehicle, controlled by this console or not, so
+        // no control is taken here. Both vehicles must be known first.
         QVERIFY(waitFor(
             [&] {
                 const auto m = machines();
-                return m.value("jaus:126").value("control") == "me" &&
-                       m.value("jaus:127").value("control") == "me";
+                return m.value("jaus:126").value("link") == "up" && m.value("jaus:127").value("link") == "up";
             },
             20000));
         // ISO 23725 machines must be known (not UNKNOWN) before the stop, so the change is visible.
@@ -132,7 +155,111 @@ private slots:
         QVERIFY2(waitFor([&] { return std::all_of(targets.begin(), targets.end(), stoppedAfter); }, 2000),
                  qPrintable(QString("not stopped after %1 ms").arg(t.elapsed())));
         qInfo("every JAUS and ISO 23725 machine reported its stop %lld ms after stop_all", t.elapsed());
-        QVERIFY(result(3).value("ok").toBool());
+        QVERIFY(waitFor([&] { return !result(3).isEmpty(); }, 20000));
+        const QJsonObject r = result(3);
+        QVERIFY2(r.value("ok").toBool(), QJsonDocument(r).toJson().constData());
+        // The result names what went on the wire: both UGVs, the AHS link and the OSYRIS group, all sent.
+        QSet<QString> ids;
+        for (const auto& v : r.value("targets").toArray()) {
+            QVERIFY(v.toObject().value("sent").toBool());
+            ids.insert(v.toObject().value("id").toString());
+        }
+        QVERIFY2(ids.contains("jaus:126") && ids.contains("jaus:127"), QJsonDocument(r).toJson().constData());
+        QVERIFY2(std::any_of(ids.begin(), ids.end(),
+                             [](const QString& i) { return i.startsWith("iso23725 link "); }),
+                 QJsonDocument(r).toJson().constData());
+        QVERIFY2(std::any_of(ids.begin(), ids.end(),
+                             [](const QString& i) { return i.startsWith("osyris group "); }),
+                 QJsonDocument(r).toJson().constData());
+        // Confirmation from the vehicles' own reports, with its latency.
+        QVERIFY(waitFor(
+            [&] {
+                int n = 0;
+                for (const auto& o : m_lines)
+                    n += o.value("type") == "event" &&
+                         o.value("text").toString().contains("reports EMERGENCY") &&
+                         o.value("text").toString().contains("ms after the command");
+                return n >= 2;
+            },
+            20000));
+    }
+    // Issue 13 acceptance: every link down -> "ok": false, one target per link, a reason each.
+    void stopAllWithEveryLinkDownSaysSoPerTarget() {
+        QTemporaryDir dir;
+        const int jausPort = freePort(SOCK_DGRAM, 40000), osyPort = freePort(SOCK_DGRAM, 50000),
+                  ahsPort = freePort(SOCK_STREAM, 40000);
+        const QString cfg = dir.filePath("down.json");
+        QFile f(cfg);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        const QJsonObject origin{{"latitude", -23.3601}, {"longitude", 119.7310}, {"altitude", 550}};
+        const QJsonObject config{
+            {"site", QJsonObject{{"name", "down"}, {"origin", origin}}},
+            {"fleet", QJsonObject{{"audit_log", dir.filePath("audit.jsonl")}}},
+            {"jaus", QJsonObject{{"subsystem_id", 150},
+                                 {"call_sign", "OCU-DOWN"},
+                                 {"role", "primary_operator"},
+                                 {"authority", 205},
+                                 {"port", 0},
+                                 {"multicast_port", jausPort},
+                                 {"multicast_group", "239.255.42.99"},
+                                 {"interface_address", "127.0.0.1"}}},
+            {"iso23725",
+             QJsonObject{{"links", QJsonArray{QJsonObject{
+                                       {"name", "ahs"},
+                                       {"url", QString("ws://127.0.0.1:%1/iso23725").arg(ahsPort)}}}}}},
+            {"osyris", QJsonObject{{"group", "239.255.42.98"},
+                                   {"port", osyPort},
+                                   {"interface", "127.0.0.1"},
+                                   {"sqliteFile", dir.filePath("osyris.sqlite")},
+                                   {"originLat", -23.3601},
+                                   {"originLon", 119.7310}}}};
+        f.write(QJsonDocument(config).toJson());
+        f.close();
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY");
+        p.setProcessEnvironment(env);
+        p.start(OCU_BINARY, {"--config", cfg, "--no-sim", "--headless", "--duration", "60"});
+        QVERIFY(p.waitForStarted(10000));
+        p.write(R"({"cmd":"stop_all","req":99})"
+                "\n");
+        QJsonObject r;
+        QByteArray buf;
+        QElapsedTimer t;
+        t.start();
+        while (r.isEmpty() && t.elapsed() < 30000 && p.state() == QProcess::Running) {
+            p.waitForReadyRead(100);
+            buf += p.readAllStandardOutput();
+            int nl;
+            while ((nl = buf.indexOf('\n')) >= 0) {
+                const QJsonObject o = QJsonDocument::fromJson(buf.left(nl)).object();
+                buf.remove(0, nl + 1);
+                if (o.value("type") == "result" && o.value("req").toInt() == 99)
+                    r = o;
+            }
+        }
+        p.terminate();
+        p.waitForFinished(10000);
+        QVERIFY2(!r.isEmpty(), p.readAllStandardError().constData());
+        const QByteArray text = QJsonDocument(r).toJson();
+        QCOMPARE(r.value("ok").toBool(), false);
+        QStringList ids;
+        for (const auto& v : r.value("targets").toArray()) {
+            const QJsonObject o = v.toObject();
+            QVERIFY2(!o.value("sent").toBool(), text.constData());
+            QVERIFY2(!o.value("reason").toString().isEmpty(), text.constData());
+            ids << o.value("id").toString();
+        }
+        ids.sort();
+        QCOMPARE(ids, QStringList({"iso23725 link ahs", "jaus",
+                                   QString("osyris group 239.255.42.98:%1").arg(osyPort)}));
+        // The audit log records the same truth.
+        QFile audit(dir.filePath("audit.jsonl"));
+        QVERIFY(audit.open(QIODevice::ReadOnly));
+        const QJsonObject a = QJsonDocument::fromJson(audit.readAll().trimmed().split('\n').last()).object();
+        QCOMPARE(a.value("action").toString(), QString("stop_all"));
+        QCOMPARE(a.value("ok").toBool(), false);
+        QCOMPARE(a.value("targets").toArray().size(), 3);
     }
     void cleanupTestCase() {
         m_p.closeWriteChannel();

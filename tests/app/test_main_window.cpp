@@ -1,15 +1,34 @@
 #include "app/MainWindow.h"
+#include "app/SiteLoader.h"
+#include "app/SiteRuntime.h"
+#include "models/CommandGate.h"
+#include "models/FleetModel.h"
+#include "protocols/osyris/OsyrisStack.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QToolBar>
 #include <QToolButton>
 #include <QtTest>
 
+#include <atomic>
+
 using namespace ocu;
+
+namespace {
+// An OSYRIS station of the test on the console's group: counts the STOP texts that reach the wire.
+struct StopTexts : osyris::OsyrisListener {
+    std::atomic<int> stops{0};
+    void onText(std::uint8_t, const std::string& text) override {
+        if (text.find("STOP ALL") != std::string::npos)
+            ++stops;
+    }
+};
+} // namespace
 
 class TestMainWindow : public QObject {
     Q_OBJECT
@@ -19,6 +38,138 @@ private slots:
         QCoreApplication::setOrganizationName("OCU-test");
         QCoreApplication::setApplicationName("test_main_window");
     }
+    // Issue 13 §9: the real window's STOP ALL, clicked and by its shortcut, puts the stop on the wire of all
+    // three protocols. JAUS and ISO 23725: the simulated machines report the stop (which they only do after
+    // receiving SetEmergency / all-stop Apply); OSYRIS: a station of the test receives the STOP text.
+    void stopAllButtonAndShortcutReachTheWire() {
+        auto site = loadSite({});
+        QVERIFY(site.ok());
+        SiteConfig cfg = std::move(site.value());
+        cfg.simulation.ahsTrucks = 2;
+        SiteRuntime runtime(cfg);
+        QVERIFY(runtime.start().isEmpty());
+        MainWindow window;
+        runtime.populate(window);
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        auto* fleet = runtime.findChild<FleetModel*>();
+        auto* gate = runtime.findChild<CommandGate*>();
+        QVERIFY(fleet && gate);
+        QVERIFY(runtime.config().osyris);
+
+        StopTexts texts;
+        osyris::OsyrisConfig listen = *runtime.config().osyris;
+        listen.stationIndex = 201;
+        listen.sqlitePath.clear();
+        osyris::OsyrisStack station(listen, texts);
+        std::string err;
+        QVERIFY2(station.start(&err), err.c_str());
+
+        auto machinesOf = [&](Protocol p) {
+            QStringList ids;
+            for (const auto& m : fleet->machinesSnapshot())
+                if (m.protocol == p && m.link == LinkState::Up)
+                    ids << m.id;
+            return ids;
+        };
+        auto allStopped = [&](Protocol p) {
+            const auto all = fleet->machinesSnapshot();
+            int n = 0;
+            for (const auto& m : all)
+                if (m.protocol == p) {
+                    if (m.stop != StopState::Stopped)
+                        return false;
+                    ++n;
+                }
+            return n > 0;
+        };
+        // Every machine known and running, the OSYRIS station heard (otherwise the stop text is refused).
+        QTRY_VERIFY_WITH_TIMEOUT(machinesOf(Protocol::Jaus).size() >= 2 &&
+                                     machinesOf(Protocol::Iso23725).size() >= 2 &&
+                                     machinesOf(Protocol::Osyris).size() >= 2,
+                                 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(!allStopped(Protocol::Iso23725) && !allStopped(Protocol::Jaus), 30000);
+
+        QSignalSpy finished(gate, &CommandGate::stopFinished);
+        QTest::mouseClick(window.stopAllButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 20000);
+        const auto first = finished.first().at(0).value<CommandResult>();
+        QVERIFY2(first.ok, qPrintable(first.message));
+        QTRY_VERIFY_WITH_TIMEOUT(allStopped(Protocol::Jaus), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(allStopped(Protocol::Iso23725), 20000);
+        QTRY_COMPARE_WITH_TIMEOUT(texts.stops.load(), 1, 20000);
+        QVERIFY(!window.stopBannerVisible());
+
+        // Release everything (deliberately, with tokens), wait until the machines report running again.
+        for (const QString& id : machinesOf(Protocol::Jaus) + machinesOf(Protocol::Iso23725).mid(0, 1))
+            gate->clearStop(id, gate->requestClearToken(id), QStringLiteral("test"));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (const auto& m : fleet->machinesSnapshot())
+                    if (m.protocol != Protocol::Osyris && m.stop == StopState::Stopped)
+                        return false;
+                return true;
+            }(),
+            30000);
+
+        // The keyboard shortcut (F12) does the same.
+        finished.clear();
+        QTest::keyClick(&window, Qt::Key_F12);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 20000);
+        QVERIFY(finished.first().at(0).value<CommandResult>().ok);
+        QTRY_VERIFY_WITH_TIMEOUT(allStopped(Protocol::Jaus), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(allStopped(Protocol::Iso23725), 20000);
+        QTRY_COMPARE_WITH_TIMEOUT(texts.stops.load(), 2, 20000);
+        station.stop();
+
+        // Issue 13 §1: with the stacks gone nothing can be sent; the window says so loudly, naming each
+        // target.
+        runtime.stop();
+        finished.clear();
+        QTest::mouseClick(window.stopAllButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 20000);
+        QVERIFY(!finished.first().at(0).value<CommandResult>().ok);
+        QTRY_VERIFY_WITH_TIMEOUT(window.stopBannerVisible(), 20000);
+        QVERIFY(window.stopBannerBar()->isVisible());
+        for (const char* what : {"jaus", "iso23725 link", "osyris group"})
+            QVERIFY2(window.stopBannerText().contains(QLatin1String(what)),
+                     qPrintable(window.stopBannerText()));
+        // Screenshots for people (OCU_SCREENSHOT_DIR): the failed-stop banner at two window sizes.
+        const QString shots = qEnvironmentVariable("OCU_SCREENSHOT_DIR");
+        if (!shots.isEmpty())
+            for (QSize size : {QSize(1366, 768), QSize(1920, 1080)}) {
+                window.resize(size);
+                QTest::qWait(300);
+                window.grab().save(QStringLiteral("%1/stop-banner-%2x%3.png")
+                                       .arg(shots)
+                                       .arg(size.width())
+                                       .arg(size.height()));
+            }
+    }
+
+    // Issue 13 §1: a stop that does not reach everything is shown in a red banner naming what was missed,
+    // which stays until dismissed or a later full STOP ALL.
+    void failedStopShowsBannerUntilDismissedOrFullSuccess() {
+        MainWindow window;
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(!window.stopBannerVisible());
+        QVERIFY(!window.stopBannerBar()->isVisible());
+        window.showStopBanner(QStringLiteral("STOP ALL did NOT reach: iso23725 link ahs: link ahs is down"));
+        QVERIFY(window.stopBannerBar()->isVisible());
+        auto* label = window.findChild<QLabel*>(QStringLiteral("label-stop-banner"));
+        QVERIFY(label && label->text().contains(QStringLiteral("iso23725 link ahs")));
+        window.resetLayout(); // a layout change never hides it
+        QVERIFY(window.stopBannerBar()->isVisible());
+        auto* dismiss = window.findChild<QPushButton*>(QStringLiteral("button-dismiss-stop-banner"));
+        QVERIFY(dismiss);
+        QTest::mouseClick(dismiss, Qt::LeftButton);
+        QVERIFY(!window.stopBannerVisible());
+        QVERIFY(!window.stopBannerBar()->isVisible());
+    }
+
     void everyPanelIsADock() {
         MainWindow w;
         QCOMPARE(MainWindow::panels().size(), 7);

@@ -2,10 +2,12 @@
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/FleetModel.h"
+#include "models/testing/CommandWait.h"
 #include "models/testing/FakeFleetBridge.h"
 
 #include <QBuffer>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSignalSpy>
@@ -13,6 +15,7 @@
 #include <QTest>
 
 using namespace ocu;
+using ocu::testing::gateResult;
 
 namespace {
 MachineState machine(const QString& id) {
@@ -45,7 +48,7 @@ private slots:
         QCoreApplication::processEvents();
         QCOMPARE(fleet.rowCount(), 3);
 
-        const CommandResult r = stop.stopAll(QStringLiteral("test"));
+        const CommandResult r = gateResult([&](auto h) { stop.stopAll(QStringLiteral("test"), h); });
         QVERIFY(r.ok);
         for (FakeFleetBridge* b : {&jaus, &iso, &osy}) {
             QCOMPARE(b->calls().size(), 1);
@@ -56,9 +59,13 @@ private slots:
         QCOMPARE(fleet.machine(QStringLiteral("osyris:1"))->stop, StopState::Stopped);
         QCOMPARE(fleet.machine(QStringLiteral("jaus:1"))->stop, StopState::None); // not what we asked
 
+        // One target per machine, each sent.
+        QCOMPARE(r.targets.size(), 3);
+        for (const CommandTarget& t : r.targets)
+            QVERIFY(t.sent);
         // Audited: an event-log entry and one JSON line in the audit file.
-        QCOMPARE(alarms.rowCount(), 1);
         QCOMPARE(alarms.eventAt(0).kind, EventKind::Audit);
+        QVERIFY(alarms.eventAt(0).text.startsWith(QStringLiteral("stop_all by test")));
         QFile f(stop.auditLogPath());
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
@@ -67,6 +74,7 @@ private slots:
         QCOMPARE(o.value(QStringLiteral("action")).toString(), QStringLiteral("stop_all"));
         QCOMPARE(o.value(QStringLiteral("origin")).toString(), QStringLiteral("test"));
         QCOMPARE(o.value(QStringLiteral("ok")).toBool(), true);
+        QCOMPARE(o.value(QStringLiteral("targets")).toArray().size(), 3);
     }
 
     void stopAllStillReachesOthersWhenOneRefuses() {
@@ -76,12 +84,79 @@ private slots:
         a.refusedCommands = {QStringLiteral("stop_all")};
         stop.addBridge(&a);
         stop.addBridge(&b);
-        const CommandResult r = stop.stopAll();
+        const CommandResult r = gateResult([&](auto h) { stop.stopAll(QStringLiteral("gui"), h); });
         QVERIFY(!r.ok);
         QVERIFY(r.message.contains(QStringLiteral("jaus")));
         QCOMPARE(b.calls().size(), 1);
         // A refused stop is an alarm that needs acknowledgement.
-        QCOMPARE(alarms.unacknowledgedCount(), 1);
+        QVERIFY(alarms.unacknowledgedCount() >= 1);
+    }
+
+    // Issue 13 §1: a stack that never answers is a target not sent once the deadline passed, never a success.
+    void silentStackIsNotSentAfterTheDeadline() {
+        AlarmModel alarms;
+        CommandGate stop(&alarms);
+        stop.setAnswerDeadlineMs(200);
+        FakeFleetBridge a(Protocol::Jaus), b(Protocol::Iso23725);
+        a.silent = true;
+        b.setMachine(machine(QStringLiteral("iso23725:1")));
+        stop.addBridge(&a);
+        stop.addBridge(&b);
+        QCoreApplication::processEvents();
+        QSignalSpy finished(&stop, &CommandGate::stopFinished);
+        const CommandResult r = gateResult([&](auto h) { stop.stopAll(QStringLiteral("gui"), h); });
+        QVERIFY(!r.ok);
+        QCOMPARE(r.targets.size(), 2);
+        QCOMPARE(r.targets[0].id, QStringLiteral("jaus"));
+        QVERIFY(!r.targets[0].sent);
+        QVERIFY(r.targets[0].reason.contains(QStringLiteral("did not answer")));
+        QVERIFY(r.targets[1].sent);
+        QCOMPARE(finished.count(), 1);
+        QCOMPARE(stop.pendingCommands(), 0);
+    }
+
+    // No target at all is not a success either (nothing went on the wire).
+    void noTargetIsNotOk() {
+        CommandGate stop;
+        FakeFleetBridge a(Protocol::Jaus); // no machines: its STOP ALL addresses nobody
+        stop.addBridge(&a);
+        const CommandResult r = gateResult([&](auto h) { stop.stopAll(QStringLiteral("gui"), h); });
+        QVERIFY(!r.ok);
+        QVERIFY(r.targets.isEmpty());
+        QVERIFY(!r.message.isEmpty());
+        CommandGate empty;
+        QVERIFY(!gateResult([&](auto h) { empty.stopAll(QStringLiteral("gui"), h); }).ok);
+    }
+
+    // Confirmation comes from the machines' reports: logged with its latency; none in time raises an alarm.
+    void stopConfirmationLatencyAndAlarm() {
+        AlarmModel alarms;
+        CommandGate stop(&alarms);
+        stop.setConfirmTimeoutMs(2000);
+        FakeFleetBridge jaus(Protocol::Jaus), iso(Protocol::Iso23725);
+        for (FakeFleetBridge* b : {&jaus, &iso}) {
+            stop.addBridge(b);
+            b->setMachine(machine(protocolPrefix(b->protocol()) + QStringLiteral("1")));
+        }
+        jaus.simulateMachines = false; // never reports stopped
+        QCoreApplication::processEvents();
+        QSignalSpy confirmed(&stop, &CommandGate::stopConfirmed);
+        QSignalSpy unconfirmed(&stop, &CommandGate::stopUnconfirmed);
+        // The ISO fake reports its stop only later (queued), so it is watched, then confirmed.
+        const CommandResult r = gateResult([&](auto h) { stop.stopAll(QStringLiteral("gui"), h); });
+        QVERIFY(r.ok);
+        QTRY_COMPARE_WITH_TIMEOUT(unconfirmed.count(), 1, 20000);
+        QCOMPARE(unconfirmed.first().at(0).toString(), QStringLiteral("jaus:1"));
+        QVERIFY(confirmed.count() >= 1);
+        QCOMPARE(confirmed.first().at(0).toString(), QStringLiteral("iso23725:1"));
+        QVERIFY(confirmed.first().at(1).toString().contains(QStringLiteral("ms after the command")));
+        bool alarm = false;
+        for (int i = 0; i < alarms.rowCount(); ++i)
+            alarm = alarm || (alarms.eventAt(i).kind == EventKind::Timeout &&
+                              alarms.eventAt(i).machineId == QStringLiteral("jaus:1") &&
+                              alarms.eventAt(i).severity == EventSeverity::Alarm);
+        QVERIFY(alarm);
+        QVERIFY(stop.awaitingConfirmation().isEmpty());
     }
 
     void stopNeedsNoConfirmationButReleaseDoes() {
@@ -90,30 +165,45 @@ private slots:
         FakeFleetBridge jaus(Protocol::Jaus), iso(Protocol::Iso23725);
         stop.addBridge(&jaus);
         stop.addBridge(&iso);
-        QVERIFY(stop.stopMachine(QStringLiteral("iso23725:T1")).ok);
+        QVERIFY(gateResult([&](auto h) {
+                    stop.stopMachine(QStringLiteral("iso23725:T1"), QStringLiteral("gui"), h);
+                }).ok);
         QCOMPARE(iso.calls().size(), 1);
         QCOMPARE(iso.calls()[0].name, QStringLiteral("stop"));
         QCOMPARE(jaus.calls().size(), 0);
 
         // No token, wrong token, token for another machine: refused, bridge untouched.
-        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), QString()).ok);
-        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), QStringLiteral("bogus")).ok);
+        QVERIFY(!gateResult([&](auto h) {
+                     stop.clearStop(QStringLiteral("iso23725:T1"), QString(), QStringLiteral("gui"), h);
+                 }).ok);
+        QVERIFY(!gateResult([&](auto h) {
+                     stop.clearStop(QStringLiteral("iso23725:T1"), QStringLiteral("bogus"),
+                                    QStringLiteral("gui"), h);
+                 }).ok);
         const QString other = stop.requestClearToken(QStringLiteral("iso23725:T9"));
-        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), other).ok);
+        QVERIFY(!gateResult([&](auto h) {
+                     stop.clearStop(QStringLiteral("iso23725:T1"), other, QStringLiteral("gui"), h);
+                 }).ok);
         QCOMPARE(iso.calls().size(), 1);
 
         const QString token = stop.requestClearToken(QStringLiteral("iso23725:T1"));
-        QVERIFY(stop.clearStop(QStringLiteral("iso23725:T1"), token).ok);
+        QVERIFY(gateResult([&](auto h) {
+                    stop.clearStop(QStringLiteral("iso23725:T1"), token, QStringLiteral("gui"), h);
+                }).ok);
         QCOMPARE(iso.calls().size(), 2);
         QCOMPARE(iso.calls()[1].name, QStringLiteral("clear_stop"));
         // Single use.
-        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), token).ok);
+        QVERIFY(!gateResult([&](auto h) {
+                     stop.clearStop(QStringLiteral("iso23725:T1"), token, QStringLiteral("gui"), h);
+                 }).ok);
         QCOMPARE(iso.calls().size(), 2);
 
         // Expired token.
         stop.setTokenLifetimeMs(-1);
         const QString expired = stop.requestClearToken(QStringLiteral("iso23725:T1"));
-        QVERIFY(!stop.clearStop(QStringLiteral("iso23725:T1"), expired).ok);
+        QVERIFY(!gateResult([&](auto h) {
+                     stop.clearStop(QStringLiteral("iso23725:T1"), expired, QStringLiteral("gui"), h);
+                 }).ok);
         QCOMPARE(iso.calls().size(), 2);
     }
 

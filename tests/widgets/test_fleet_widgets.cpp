@@ -1,4 +1,4 @@
-// Fleet list, stop controls, hold-to-confirm, event log and pass-count panel, offscreen.
+// Fleet list, hold-to-confirm, event log and pass-count panel, offscreen.
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/FleetFilterProxy.h"
@@ -9,7 +9,6 @@
 #include "widgets/FleetListWidget.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/PassCountPanel.h"
-#include "widgets/StopControls.h"
 
 #include <QFile>
 #include <QHeaderView>
@@ -56,73 +55,6 @@ struct Rig {
 class TestFleetWidgets : public QObject {
     Q_OBJECT
 private slots:
-    void stopAllButtonAndShortcutReachEveryStackWithoutAsking() {
-        Rig rig;
-        QWidget window;
-        auto* button = new StopAllButton(&rig.stop, &window);
-        QAction* action = createStopAllAction(&rig.stop, &window);
-        window.addAction(action);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QTest::mouseClick(button, Qt::LeftButton);
-        for (FakeFleetBridge* b : {&rig.jaus, &rig.iso, &rig.osy}) {
-            QCOMPARE(b->calls().size(), 1);
-            QCOMPARE(b->calls()[0].name, QStringLiteral("stop_all"));
-        }
-        // No modal dialog was opened (stopping never asks).
-        QVERIFY(QApplication::activeModalWidget() == nullptr);
-        // The shown state is what the machines report (the fake ones report their stop).
-        QCoreApplication::processEvents();
-        QCOMPARE(rig.fleet.machine(QStringLiteral("iso23725:1"))->stop, StopState::Stopped);
-        // The shortcut action does the same.
-        QVERIFY(action->shortcuts().contains(QKeySequence(Qt::Key_F12)));
-        action->trigger();
-        QCOMPARE(rig.osy.calls().size(), 2);
-        // Audited twice.
-        int audits = 0;
-        for (int i = 0; i < rig.alarms.rowCount(); ++i)
-            audits += rig.alarms.eventAt(i).kind == EventKind::Audit ? 1 : 0;
-        QCOMPARE(audits, 2);
-    }
-
-    void releaseNeedsAHoldStopDoesNot() {
-        Rig rig;
-        MachineStopControls controls(&rig.fleet, &rig.selection, &rig.stop);
-        controls.releaseButton()->setHoldDurationMs(1000);
-        controls.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&controls));
-        rig.selection.setCurrent(QStringLiteral("jaus:1"));
-        QVERIFY(controls.stopButton()->isEnabled());
-
-        // One click stops.
-        QTest::mouseClick(controls.stopButton(), Qt::LeftButton);
-        QCOMPARE(rig.jaus.calls().size(), 1);
-        QCOMPARE(rig.jaus.calls()[0].name, QStringLiteral("stop"));
-        QCoreApplication::processEvents();
-        QVERIFY(controls.stateLabel()->text().contains(QStringLiteral("STOPPED")));
-
-        // A click (or a short press) on release does nothing but cancel.
-        QSignalSpy cancelled(controls.releaseButton(), &HoldToConfirmButton::cancelled);
-        QTest::mouseClick(controls.releaseButton(), Qt::LeftButton);
-        QCOMPARE(cancelled.count(), 1);
-        QTest::mousePress(controls.releaseButton(), Qt::LeftButton);
-        QTest::qWait(100);
-        QTest::mouseRelease(controls.releaseButton(), Qt::LeftButton);
-        QCOMPARE(cancelled.count(), 2);
-        QCOMPARE(rig.jaus.calls().size(), 1);
-
-        // Holding for the full duration releases.
-        QSignalSpy confirmed(controls.releaseButton(), &HoldToConfirmButton::confirmed);
-        QTest::mousePress(controls.releaseButton(), Qt::LeftButton);
-        QTRY_COMPARE_WITH_TIMEOUT(confirmed.count(), 1, 5000);
-        QTest::mouseRelease(controls.releaseButton(), Qt::LeftButton);
-        QCOMPARE(rig.jaus.calls().size(), 2);
-        QCOMPARE(rig.jaus.calls()[1].name, QStringLiteral("clear_stop"));
-        QCOMPARE(cancelled.count(), 2); // the release after confirmation is not a cancel
-        QCoreApplication::processEvents();
-        QVERIFY(controls.stateLabel()->text().contains(QStringLiteral("running")));
-    }
-
     void fleetListDensityFilterAndColours() {
         Rig rig;
         MachineState stopped = machine(QStringLiteral("osyris:7"));

@@ -1,5 +1,7 @@
 #include "widgets/jaus/JausControlPanel.h"
 
+#include "models/CommandGate.h"
+
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
@@ -15,8 +17,9 @@
 
 namespace ocu {
 
-JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, FleetSelection* selection, QWidget* parent)
-    : QWidget(parent), m_bridge(bridge), m_selection(selection),
+JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSelection* selection,
+                                   QWidget* parent)
+    : QWidget(parent), m_bridge(bridge), m_gate(gate), m_selection(selection),
       m_model(new JausSubsystemModel(bridge, this)), m_table(new QTableView(this)),
       m_details(new VehicleDetailsWidget(bridge, this)), m_roleLabel(new QLabel(this)),
       m_releaseAll(new QPushButton(tr("Release all"), this)) {
@@ -33,8 +36,9 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, FleetSelection* se
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
     m_releaseAll->setEnabled(me.mayControl);
-    connect(m_releaseAll, &QPushButton::clicked, this,
-            [this] { m_bridge->command(QStringLiteral("release_all"), {}); });
+    connect(m_releaseAll, &QPushButton::clicked, this, [this] {
+        send(QStringLiteral("release_all"), {{QStringLiteral("protocol"), QStringLiteral("jaus")}});
+    });
     top->addWidget(m_releaseAll);
 
     m_table->setModel(m_model);
@@ -126,12 +130,12 @@ void JausControlPanel::installRowButtons(int first, int last) {
         });
         connect(control, &QPushButton::clicked, this, [this, sub] {
             selectSubsystem(sub);
-            m_bridge->command(QStringLiteral("request_control"),
-                              {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
+            send(QStringLiteral("request_control"),
+                 {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
         });
         connect(release, &QPushButton::clicked, this, [this, sub] {
-            m_bridge->command(QStringLiteral("release_control"),
-                              {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
+            send(QStringLiteral("release_control"),
+                 {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
         });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
         // Index widgets do not take part in ResizeToContents: size the column for the buttons.
@@ -162,6 +166,12 @@ void JausControlPanel::refreshButtons() {
         if (auto* b = findButton(cell, "release"))
             b->setEnabled(may && s->controlledByUs);
     }
+}
+
+void JausControlPanel::send(const QString& name, const QJsonObject& args) {
+    // Through the command gate: audited, and its result (targets sent or not) lands in the event log.
+    if (m_gate)
+        m_gate->command(name, args, QStringLiteral("gui"));
 }
 
 } // namespace ocu

@@ -2,6 +2,8 @@
 // Access-control panel (issue 7 §1): one row per discovered subsystem with monitor / control / release,
 // who controls it, the access state in words and the row colours of the FKIE IOP panels; below it the
 // details of the selected vehicle.
+#include <QJsonObject>
+#include <QPointer>
 #include <QWidget>
 
 class QTableView;
@@ -11,6 +13,7 @@ class QLabel;
 namespace ocu {
 
 class JausVehicleBridge;
+class CommandGate;
 class JausSubsystemModel;
 class VehicleDetailsWidget;
 class FleetSelection;
@@ -18,7 +21,9 @@ class FleetSelection;
 class JausControlPanel : public QWidget {
     Q_OBJECT
 public:
-    JausControlPanel(JausVehicleBridge* bridge, FleetSelection* selection, QWidget* parent = nullptr);
+    // Control request/release go through the command gate (audited).
+    JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSelection* selection,
+                     QWidget* parent = nullptr);
 
     JausSubsystemModel* model() const { return m_model; }
     QTableView* table() const { return m_table; }
@@ -33,7 +38,9 @@ private:
     void refreshButtons();
     void selectSubsystem(std::uint16_t subsystem);
 
+    void send(const QString& name, const QJsonObject& args);
     JausVehicleBridge* m_bridge;
+    QPointer<CommandGate> m_gate;
     FleetSelection* m_selection;
     JausSubsystemModel* m_model;
     QTableView* m_table;

@@ -1,5 +1,6 @@
 #include "widgets/jaus/TeleopPanel.h"
 
+#include "models/CommandGate.h"
 #include "models/FleetSelection.h"
 #include "models/jaus/JausVehicleBridge.h"
 #include "widgets/HoldToConfirmButton.h"
@@ -24,12 +25,13 @@
 
 namespace ocu {
 
-TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, FleetSelection* selection, InputDevice* device,
-                         QWidget* parent)
-    : QWidget(parent), m_bridge(bridge), m_selection(selection), m_controller(new TeleopController(this)),
-      m_stick(new VirtualStick(this)), m_axes(new AxisDisplay(this)), m_title(new QLabel(this)),
-      m_state(new QLabel(this)), m_live(new QLabel(this)), m_device(new QLabel(this)),
-      m_mode(new QComboBox(this)), m_limit(new QSlider(Qt::Horizontal, this)), m_limitLabel(new QLabel(this)),
+TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSelection* selection,
+                         InputDevice* device, QWidget* parent)
+    : QWidget(parent), m_bridge(bridge), m_gate(gate), m_selection(selection),
+      m_controller(new TeleopController(this)), m_stick(new VirtualStick(this)),
+      m_axes(new AxisDisplay(this)), m_title(new QLabel(this)), m_state(new QLabel(this)),
+      m_live(new QLabel(this)), m_device(new QLabel(this)), m_mode(new QComboBox(this)),
+      m_limit(new QSlider(Qt::Horizontal, this)), m_limitLabel(new QLabel(this)),
       m_estop(new QPushButton(tr("E-STOP"), this)),
       m_clear(new HoldToConfirmButton(tr("Hold to clear emergency"), this)) {
     setObjectName(QStringLiteral("teleop-panel"));
@@ -60,8 +62,11 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, FleetSelection* selection, I
     m_clear->setObjectName(QStringLiteral("button-clear-emergency"));
     m_clear->setHoldDurationMs(1500);
     connect(m_clear, &HoldToConfirmButton::confirmed, this, [this] {
-        if (m_subsystem)
-            m_bridge->clearStop(JausVehicleBridge::machineId(m_subsystem));
+        // The hold is the deliberate confirmation: it buys the gate's one-time token, and the gate audits.
+        if (m_subsystem && m_gate) {
+            const QString id = JausVehicleBridge::machineId(m_subsystem);
+            m_gate->clearStop(id, m_gate->requestClearToken(id), QStringLiteral("teleop"));
+        }
     });
 
     m_mode->setObjectName(QStringLiteral("combo-drive-mode"));
@@ -201,8 +206,8 @@ void TeleopPanel::onCommand(DriveAxes axes) {
 
 void TeleopPanel::emergencyStop() {
     m_controller->releaseAll(tr("emergency stop"));
-    if (m_subsystem)
-        m_bridge->stopMachine(JausVehicleBridge::machineId(m_subsystem));
+    if (m_subsystem && m_gate)
+        m_gate->stopMachine(JausVehicleBridge::machineId(m_subsystem), QStringLiteral("teleop"));
 }
 
 void TeleopPanel::openJoystickMapping() {
@@ -240,12 +245,13 @@ void TeleopPanel::refresh() {
         return;
     }
     m_title->setText(tr("%1 [%2]").arg(s->callSign).arg(s->subsystem));
-    const bool may = m_bridge->mayCommand();
+    const JausConsoleIdentity me = m_bridge->identity();
+    const bool may = me.mayControl;
     const bool ours = s->controlledByUs;
     const bool up = s->link == JausLink::Up;
     m_controller->setEnabled(may && ours && up && !s->emergency);
-    m_estop->setEnabled(may);
-    m_clear->setEnabled(may && s->emergency);
+    m_estop->setEnabled(me.mayStop);                      // any role may stop (the JAUS stop rule)
+    m_clear->setEnabled(me.mayClearStop && s->emergency); // only roles with command rights may clear
     QStringList state;
     if (!may)
         state << tr("MONITOR role: driving disabled");

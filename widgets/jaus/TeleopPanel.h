@@ -6,6 +6,7 @@
 #include "models/jaus/JausVehicle.h"
 #include "widgets/teleop/InputDevice.h"
 
+#include <QPointer>
 #include <QWidget>
 
 class QLabel;
@@ -16,6 +17,7 @@ class QPushButton;
 namespace ocu {
 
 class JausVehicleBridge;
+class CommandGate;
 class FleetSelection;
 class TeleopController;
 class VirtualStick;
@@ -27,7 +29,8 @@ class TeleopPanel : public QWidget {
     Q_OBJECT
 public:
     // device: the joystick source (SDL2 in the app, a fake in tests); may be null.
-    TeleopPanel(JausVehicleBridge* bridge, FleetSelection* selection, InputDevice* device,
+    // Stop and clear go through the command gate (audited; clear with its confirmation token).
+    TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSelection* selection, InputDevice* device,
                 QWidget* parent = nullptr);
     ~TeleopPanel() override;
 
@@ -58,6 +61,7 @@ private:
     void onCommand(DriveAxes axes);
 
     JausVehicleBridge* m_bridge;
+    QPointer<CommandGate> m_gate;
     FleetSelection* m_selection;
     std::uint16_t m_subsystem = 0;
     TeleopController* m_controller;

@@ -5,6 +5,7 @@
 // that follow keep the stop shown.
 #include "models/FleetModel.h"
 #include "models/bridges/IsoBridge.h"
+#include "models/testing/CommandWait.h"
 #include "sim/iso23725/IsoDemo.h"
 
 #include "protocols/common/GeoFrame.h"
@@ -107,7 +108,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(s.rowsWith([](const MachineState& m) { return m.hasPosition; }), kTrucks,
                                   20000);
         QTRY_VERIFY_WITH_TIMEOUT(s.rowsWith([](const MachineState& m) { return m.speed > 1.0; }) > 0, 10000);
-        QVERIFY(s.bridge->stopAll().ok);
+        QVERIFY(ocu::testing::bridgeResult([&](auto d) { s.bridge->stopAll(d); }).ok);
         QTRY_COMPARE_WITH_TIMEOUT(
             s.rowsWith([](const MachineState& m) { return m.stop == StopState::Stopped; }), kTrucks, 10000);
         // Trucks brake at up to 3 m/s² from at most 12 m/s: standing within seconds, reported by positions.

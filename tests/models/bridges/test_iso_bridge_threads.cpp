@@ -4,6 +4,7 @@
 // machine while the GUI thread is busy becomes one signal carrying the latest position), and commands while
 // the link is down (refused with the reason; nothing reaches the AHS, then or when the link is back).
 #include "models/bridges/IsoBridge.h"
+#include "models/testing/CommandWait.h"
 #include "sim/iso23725/SimulatedAhs.h"
 #include "tests/models/bridges/BridgeThreadSupport.h"
 
@@ -138,10 +139,17 @@ private slots:
         first.reset();
         QTRY_VERIFY_WITH_TIMEOUT(linkIs(bridge, LinkState::Down), 20000);
         const QList<CommandResult> refused{
-            bridge.stopAll(), bridge.stopMachine(idOf(kMachineA)), bridge.clearStop(idOf(kMachineA)),
-            bridge.command(QStringLiteral("all_stop_apply"),
-                           {{QStringLiteral("link"), QStringLiteral("ahs")}}),
-            bridge.command(QStringLiteral("fetch_map"), {{QStringLiteral("link"), QStringLiteral("ahs")}})};
+            ocu::testing::bridgeResult([&](auto d) { bridge.stopAll(d); }),
+            ocu::testing::bridgeResult([&](auto d) { bridge.stopMachine(idOf(kMachineA), d); }),
+            ocu::testing::bridgeResult([&](auto d) { bridge.clearStop(idOf(kMachineA), d); }),
+            ocu::testing::bridgeResult([&](auto d) {
+                bridge.command(QStringLiteral("all_stop_apply"),
+                               {{QStringLiteral("link"), QStringLiteral("ahs")}}, d);
+            }),
+            ocu::testing::bridgeResult([&](auto d) {
+                bridge.command(QStringLiteral("fetch_map"), {{QStringLiteral("link"), QStringLiteral("ahs")}},
+                               d);
+            })};
         for (const CommandResult& r : refused) {
             QVERIFY2(!r.ok, qPrintable(r.message));
             QVERIFY2(r.message.contains(QStringLiteral("ISO 23725 link ahs is down")) &&
@@ -160,7 +168,7 @@ private slots:
         QVERIFY(!second.stats().allStopOn);
 
         // With the link up the same stop goes out.
-        const CommandResult stop = bridge.stopAll();
+        const CommandResult stop = ocu::testing::bridgeResult([&](auto d) { bridge.stopAll(d); });
         QVERIFY2(stop.ok, qPrintable(stop.message));
         QTRY_VERIFY_WITH_TIMEOUT(second.stats().allStopOn, 10000);
         bridge.stop();

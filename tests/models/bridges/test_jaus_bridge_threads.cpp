@@ -4,6 +4,7 @@
 // latest state), and commands while the vehicle's link is down (refused with the reason; nothing reaches the
 // vehicle, then or when it is heard again).
 #include "models/bridges/JausBridge.h"
+#include "models/testing/CommandWait.h"
 #include "protocols/jaus/Messages.h"
 #include "sim/jaus/JausDemo.h"
 #include "tests/models/bridges/BridgeThreadSupport.h"
@@ -125,30 +126,33 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(vehicle().link == JausLink::Up && vehicle().mobilityComponent.subsystem != 0,
                                  20000);
         // Control first, so that the refusals below are about the link and not about access.
-        QVERIFY(bridge.command(QStringLiteral("request_control"), {{QStringLiteral("id"), kVehicle}}).ok);
+        QVERIFY(ocu::testing::bridgeResult([&](auto d) {
+                    bridge.command(QStringLiteral("request_control"), {{QStringLiteral("id"), kVehicle}}, d);
+                }).ok);
         QTRY_VERIFY_WITH_TIMEOUT(vehicle().controlledByUs, 10000);
 
         // The vehicle falls silent (it still hears us): after 1.5 s its link is down.
         ugv.setPacketLoss(1.0);
         QTRY_COMPARE_WITH_TIMEOUT(vehicle().link, JausLink::Down, 20000);
         const QList<CommandResult> refused{
-            bridge.stopMachine(kVehicle),
-            bridge.clearStop(kVehicle),
-            bridge.command(QStringLiteral("request_control"), {{QStringLiteral("id"), kVehicle}}),
-            bridge.command(QStringLiteral("resume"), {{QStringLiteral("id"), kVehicle}}),
-            bridge.command(QStringLiteral("drive"),
-                           {{QStringLiteral("id"), kVehicle}, {QStringLiteral("linear"), 0.5}}),
+            ocu::testing::bridgeResult([&](auto d) { bridge.stopMachine(kVehicle, d); }),
+            ocu::testing::bridgeResult([&](auto d) { bridge.clearStop(kVehicle, d); }),
+            ocu::testing::bridgeResult([&](auto d) {
+                bridge.command(QStringLiteral("request_control"), {{QStringLiteral("id"), kVehicle}}, d);
+            }),
+            ocu::testing::bridgeResult([&](auto d) {
+                bridge.command(QStringLiteral("resume"), {{QStringLiteral("id"), kVehicle}}, d);
+            }),
+            ocu::testing::bridgeResult([&](auto d) {
+                bridge.command(QStringLiteral("drive"),
+                               {{QStringLiteral("id"), kVehicle}, {QStringLiteral("linear"), 0.5}}, d);
+            }),
             bridge.drive(126, JausDrive{JausDrive::Mode::Velocity, 0.5, 0, 0})};
         for (const CommandResult& r : refused) {
             QVERIFY2(!r.ok, qPrintable(r.message));
             QVERIFY2(r.message.contains(QStringLiteral("the link to jaus:126 is down; nothing sent")),
                      qPrintable(r.message));
         }
-        const CommandResult all = bridge.stopAll();
-        QVERIFY(!all.ok);
-        QVERIFY2(all.message.contains(QStringLiteral("not sent to jaus:126: link down")),
-                 qPrintable(all.message));
-
         // Nothing went out: not while the link was down, and not when the vehicle is heard again.
         QTest::qWait(1000);
         ugv.setPacketLoss(0);
@@ -161,10 +165,22 @@ private slots:
         QVERIFY(ugv.state().management != jaus::ManagementState::Emergency);
 
         // With the link up the same stop goes out.
-        const CommandResult stop = bridge.stopMachine(kVehicle);
+        const CommandResult stop =
+            ocu::testing::bridgeResult([&](auto d) { bridge.stopMachine(kVehicle, d); });
         QVERIFY2(stop.ok, qPrintable(stop.message));
         QTRY_VERIFY_WITH_TIMEOUT(received.count(jaus::msg::SetEmergency) > 0, 10000);
         QTRY_COMPARE_WITH_TIMEOUT(ugv.state().management, jaus::ManagementState::Emergency, 10000);
+
+        // STOP ALL addresses every discovered vehicle, even one whose link is down (it may still hear us):
+        // the result says it went on the wire, per vehicle.
+        ugv.setPacketLoss(1.0);
+        QTRY_COMPARE_WITH_TIMEOUT(vehicle().link, JausLink::Down, 20000);
+        const int before = received.count(jaus::msg::SetEmergency);
+        const CommandResult all = ocu::testing::bridgeResult([&](auto d) { bridge.stopAll(d); });
+        QCOMPARE(all.targets.size(), 1);
+        QCOMPARE(all.targets[0].id, QStringLiteral("jaus:126"));
+        QVERIFY2(all.targets[0].sent, qPrintable(all.message));
+        QTRY_VERIFY_WITH_TIMEOUT(received.count(jaus::msg::SetEmergency) > before, 10000);
         bridge.stop();
         ugv.setMessageTap({});
     }

@@ -4,6 +4,7 @@
 // machine while the GUI thread is busy becomes one signal carrying the latest position), and commands while
 // no station is heard (refused with the reason; nothing reaches a station that joins later).
 #include "models/bridges/OsyrisBridge.h"
+#include "models/testing/CommandWait.h"
 #include "protocols/common/Udp.h"
 #include "protocols/osyris/OsyrisCodec.h"
 #include "sim/osyris/OsyrisDemo.h"
@@ -124,9 +125,15 @@ private slots:
         QVERIFY(bridge.start().isEmpty());
         // Joined, nobody heard: a message now would wait in the station's store for whoever joins later.
         const QList<CommandResult> refused{
-            bridge.stopAll(), bridge.stopMachine(QStringLiteral("osyris:1")),
-            bridge.command(QStringLiteral("send_text"), {{QStringLiteral("text"), QStringLiteral("hello")}}),
-            bridge.command(QStringLiteral("ping"), {{QStringLiteral("idx"), 1}})};
+            ocu::testing::bridgeResult([&](auto d) { bridge.stopAll(d); }),
+            ocu::testing::bridgeResult([&](auto d) { bridge.stopMachine(QStringLiteral("osyris:1"), d); }),
+            ocu::testing::bridgeResult([&](auto d) {
+                bridge.command(QStringLiteral("send_text"),
+                               {{QStringLiteral("text"), QStringLiteral("hello")}}, d);
+            }),
+            ocu::testing::bridgeResult([&](auto d) {
+                bridge.command(QStringLiteral("ping"), {{QStringLiteral("idx"), 1}}, d);
+            })};
         for (const CommandResult& r : refused) {
             QVERIFY2(!r.ok, qPrintable(r.message));
             QVERIFY2(r.message.contains(QStringLiteral("no OSYRIS station heard")) &&
@@ -151,8 +158,11 @@ private slots:
         QCOMPARE(texts.count(), 0);
 
         // With a station heard the same stop goes out.
-        const CommandResult stop = bridge.stopAll();
+        const CommandResult stop = ocu::testing::bridgeResult([&](auto d) { bridge.stopAll(d); });
         QVERIFY2(stop.ok, qPrintable(stop.message));
+        QCOMPARE(stop.targets.size(), 1);
+        QCOMPARE(stop.targets[0].id,
+                 QStringLiteral("osyris group %1:%2").arg(QString::fromStdString(cfg.group)).arg(cfg.port));
         QTRY_COMPARE_WITH_TIMEOUT(texts.count(), 1, 10000);
         bridge.stop();
         station.stop();

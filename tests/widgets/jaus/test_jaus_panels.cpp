@@ -1,8 +1,10 @@
 // The JAUS access-control and teleop panels against two simulated UGVs on loopback (issue 7).
+#include "models/AlarmModel.h"
 #include "models/FleetContext.h"
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"
 #include "models/jaus/JausSubsystemModel.h"
+#include "models/testing/CommandWait.h"
 #include "sim/jaus/JausDemo.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/jaus/JausControlPanel.h"
@@ -17,6 +19,7 @@
 #include <QComboBox>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -67,8 +70,9 @@ struct Site {
 // A window with the two panels side by side and a line edit to move the focus to.
 struct Window {
     explicit Window(Site& s)
-        : control(new JausControlPanel(s.bridge.get(), s.ctx.selection())),
-          teleop(new TeleopPanel(s.bridge.get(), s.ctx.selection(), nullptr)), other(new QLineEdit) {
+        : control(new JausControlPanel(s.bridge.get(), s.ctx.gate(), s.ctx.selection())),
+          teleop(new TeleopPanel(s.bridge.get(), s.ctx.gate(), s.ctx.selection(), nullptr)),
+          other(new QLineEdit) {
         auto* l = new QVBoxLayout(&w);
         l->addWidget(control);
         l->addWidget(teleop);
@@ -187,8 +191,8 @@ private slots:
         }
         Site s;
         QWidget w;
-        auto* controlPanel = new JausControlPanel(s.bridge.get(), s.ctx.selection());
-        auto* teleopPanel = new TeleopPanel(s.bridge.get(), s.ctx.selection(), &pad);
+        auto* controlPanel = new JausControlPanel(s.bridge.get(), s.ctx.gate(), s.ctx.selection());
+        auto* teleopPanel = new TeleopPanel(s.bridge.get(), s.ctx.gate(), s.ctx.selection(), &pad);
         auto* l = new QVBoxLayout(&w);
         l->addWidget(controlPanel);
         l->addWidget(teleopPanel);
@@ -287,6 +291,29 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(win.teleop->clearEmergencyButton()->isEnabled(), 10000);
         QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::OursWarning,
                                   10000);
+        // Issue 13 §9: the hold clears through the command gate, with its token, and both are audited.
+        win.teleop->clearEmergencyButton()->setHoldDurationMs(100);
+        QSignalSpy confirmed(win.teleop->clearEmergencyButton(), &HoldToConfirmButton::confirmed);
+        QTest::mousePress(win.teleop->clearEmergencyButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(confirmed.count(), 1, 10000);
+        QTest::mouseRelease(win.teleop->clearEmergencyButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(126).state().management != ManagementState::Emergency, 10000);
+        QStringList audits;
+        for (int i = 0; i < s.ctx.alarms()->rowCount(); ++i)
+            if (s.ctx.alarms()->eventAt(i).kind == ocu::EventKind::Audit)
+                audits << s.ctx.alarms()->eventAt(i).text;
+        QVERIFY2(
+            audits.filter(QRegularExpression(QStringLiteral("^stop by teleop: sent to jaus:126"))).size() ==
+                1,
+            qPrintable(audits.join(QLatin1Char('\n'))));
+        QVERIFY2(audits.filter(QRegularExpression(QStringLiteral("^clear_stop by teleop: sent to jaus:126")))
+                         .size() == 1,
+                 qPrintable(audits.join(QLatin1Char('\n'))));
+        // Control requests from the JAUS panel are audited too.
+        QVERIFY2(
+            !audits.filter(QRegularExpression(QStringLiteral("^request_control by gui: sent to jaus:126")))
+                 .isEmpty(),
+            qPrintable(audits.join(QLatin1Char('\n'))));
     }
 
     void preemptedByHigherAuthorityTurnsGrey() {
@@ -326,11 +353,29 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
         QVERIFY(win.control->controlButton(126));
         QVERIFY(!win.control->controlButton(126)->isEnabled());
-        const auto r = s.bridge->command("request_control", {{"id", "jaus:126"}});
+        const auto r = ocu::testing::bridgeResult([&](auto d) {
+            s.bridge->command("request_control", {{"id", "jaus:126"}}, d);
+        });
         QVERIFY(!r.ok);
         QVERIFY(r.message.contains("MONITOR"));
         QTest::qWait(500);
         QCOMPARE(s.ugv(126).state().controller.subsystem, std::uint16_t(0));
+        // Issue 13 §2: the monitor role may stop (SetEmergency on the wire) but not clear.
+        win.teleop->setVehicle(126);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->emergencyButton()->isEnabled(), 10000);
+        QTest::mouseClick(win.teleop->emergencyButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(s.ugv(126).state().management, ManagementState::Emergency, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(s.bridge->subsystem(126)->emergency, 10000);
+        QVERIFY(!win.teleop->clearEmergencyButton()->isEnabled());
+        const CommandResult clear = ocu::testing::gateResult([&](auto h) {
+            s.ctx.gate()->clearStop(QStringLiteral("jaus:126"),
+                                    s.ctx.gate()->requestClearToken(QStringLiteral("jaus:126")),
+                                    QStringLiteral("test"), h);
+        });
+        QVERIFY(!clear.ok);
+        QVERIFY2(clear.message.contains(QStringLiteral("no command rights")), qPrintable(clear.message));
+        QTest::qWait(500);
+        QCOMPARE(s.ugv(126).state().management, ManagementState::Emergency);
     }
 };
 
