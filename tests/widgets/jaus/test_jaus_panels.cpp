@@ -298,22 +298,25 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(confirmed.count(), 1, 10000);
         QTest::mouseRelease(win.teleop->clearEmergencyButton(), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(s.ugv(126).state().management != ManagementState::Emergency, 10000);
-        QStringList audits;
-        for (int i = 0; i < s.ctx.alarms()->rowCount(); ++i)
-            if (s.ctx.alarms()->eventAt(i).kind == ocu::EventKind::Audit)
-                audits << s.ctx.alarms()->eventAt(i).text;
-        QVERIFY2(
-            audits.filter(QRegularExpression(QStringLiteral("^stop by teleop: sent to jaus:126"))).size() ==
-                1,
-            qPrintable(audits.join(QLatin1Char('\n'))));
-        QVERIFY2(audits.filter(QRegularExpression(QStringLiteral("^clear_stop by teleop: sent to jaus:126")))
-                         .size() == 1,
-                 qPrintable(audits.join(QLatin1Char('\n'))));
+        // The audit line is written when the gate's result is final (the stack's outcome reaches the GUI
+        // thread), which may come after the vehicle already reports the change: wait for it.
+        auto audits = [&] {
+            QStringList out;
+            for (int i = 0; i < s.ctx.alarms()->rowCount(); ++i)
+                if (s.ctx.alarms()->eventAt(i).kind == ocu::EventKind::Audit)
+                    out << s.ctx.alarms()->eventAt(i).text;
+            return out;
+        };
+        auto count = [&](const char* pattern) {
+            return audits().filter(QRegularExpression(QString::fromLatin1(pattern))).size();
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(count("^clear_stop by teleop: sent to jaus:126") == 1,
+                                  qPrintable(audits().join(QLatin1Char('\n'))), 10000);
+        QTRY_VERIFY2_WITH_TIMEOUT(count("^stop by teleop: sent to jaus:126") == 1,
+                                  qPrintable(audits().join(QLatin1Char('\n'))), 10000);
         // Control requests from the JAUS panel are audited too.
-        QVERIFY2(
-            !audits.filter(QRegularExpression(QStringLiteral("^request_control by gui: sent to jaus:126")))
-                 .isEmpty(),
-            qPrintable(audits.join(QLatin1Char('\n'))));
+        QTRY_VERIFY2_WITH_TIMEOUT(count("^request_control by gui: sent to jaus:126") >= 1,
+                                  qPrintable(audits().join(QLatin1Char('\n'))), 10000);
     }
 
     void preemptedByHigherAuthorityTurnsGrey() {
