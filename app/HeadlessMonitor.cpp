@@ -235,16 +235,7 @@ QByteArray HeadlessMonitor::result(const QJsonObject& cmd, const CommandResult& 
     o[QStringLiteral("ok")] = r.ok;
     if (withTargets) {
         // What went on the wire, per target (issue 13 §1).
-        QJsonArray targets;
-        for (const CommandTarget& t : r.targets) {
-            QJsonObject j;
-            j[QStringLiteral("id")] = t.id;
-            j[QStringLiteral("sent")] = t.sent;
-            if (!t.sent)
-                j[QStringLiteral("reason")] = t.reason;
-            targets.append(j);
-        }
-        o[QStringLiteral("targets")] = targets;
+        o[QStringLiteral("targets")] = targetsToJson(r.targets);
     }
     o[QStringLiteral("message")] = r.message;
     writeLine(o);

@@ -327,16 +327,7 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
     if (!target.isEmpty())
         o[QStringLiteral("target")] = target;
     o[QStringLiteral("ok")] = result.ok;
-    QJsonArray targets;
-    for (const CommandTarget& t : result.targets) {
-        QJsonObject j;
-        j[QStringLiteral("id")] = t.id;
-        j[QStringLiteral("sent")] = t.sent;
-        if (!t.sent)
-            j[QStringLiteral("reason")] = t.reason;
-        targets.append(j);
-    }
-    o[QStringLiteral("targets")] = targets;
+    o[QStringLiteral("targets")] = targetsToJson(result.targets);
     o[QStringLiteral("message")] = result.message;
     const QString line = QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact));
 

@@ -5,6 +5,19 @@
 
 namespace ocu {
 
+QJsonArray targetsToJson(const QVector<CommandTarget>& targets) {
+    QJsonArray out;
+    for (const CommandTarget& t : targets) {
+        QJsonObject j;
+        j[QStringLiteral("id")] = t.id;
+        j[QStringLiteral("sent")] = t.sent;
+        if (!t.sent)
+            j[QStringLiteral("reason")] = t.reason;
+        out.append(j);
+    }
+    return out;
+}
+
 FleetBridge::FleetBridge(Protocol protocol, QObject* parent)
     : QObject(parent), m_protocol(protocol),
       m_machines(this, [this](auto&& batch) { deliverMachines(std::move(batch)); }),

@@ -22,6 +22,7 @@
 #include "protocols/common/CommandOutcome.h"
 
 #include <QHash>
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QObject>
 #include <QStringList>
@@ -39,6 +40,9 @@ struct CommandTarget {
     bool sent = false;
     QString reason; // why not sent; empty when sent
 };
+
+// [{"id":…,"sent":…,"reason":… (only when not sent)}, …]: the same in headless results and audit lines.
+QJsonArray targetsToJson(const QVector<CommandTarget>& targets);
 
 // The final result of one operator command: ok only when there was at least one target and every target
 // was sent; `message` summarises for people (and carries the refusal when there is no target at all).
