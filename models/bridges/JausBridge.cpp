@@ -565,25 +565,19 @@ void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCa
         m_stack->requestControl(*sub, std::move(done));
         return;
     }
-    // Management commands without an outcome from the stack: handed to the stack after the checks above
-    // (subsystem heard, link up, command rights); the vehicle's management state shows the effect.
+    // Management commands: the stack says per vehicle what went on the wire (or why not); the vehicle's
+    // management state shows the effect.
+    if (name == QLatin1String("resume"))
+        return m_stack->resume(*sub, std::move(done));
+    if (name == QLatin1String("standby"))
+        return m_stack->standby(*sub, std::move(done));
+    if (name == QLatin1String("shutdown"))
+        return m_stack->shutdown(*sub, std::move(done));
+    if (name == QLatin1String("reset"))
+        return m_stack->reset(*sub, std::move(done));
+    // The drive stream has no single outcome: each demand is refreshed at the drive rate and the stack zeroes
+    // a stale one; what is reported is that the checks passed and the session was started.
     const TargetOutcome posted{id.toStdString(), true, {}};
-    if (name == QLatin1String("resume")) {
-        m_stack->resume(*sub);
-        return done({posted});
-    }
-    if (name == QLatin1String("standby")) {
-        m_stack->standby(*sub);
-        return done({posted});
-    }
-    if (name == QLatin1String("shutdown")) {
-        m_stack->shutdown(*sub);
-        return done({posted});
-    }
-    if (name == QLatin1String("reset")) {
-        m_stack->reset(*sub);
-        return done({posted});
-    }
     if (name == QLatin1String("drive")) {
         JausDrive c;
         const QString mode = args.value(QStringLiteral("mode")).toString(QStringLiteral("velocity"));

@@ -179,6 +179,18 @@ void JausStack::setEmergency(std::uint16_t ss, EmergencyCode code, OutcomeCallba
 void JausStack::clearEmergency(std::uint16_t ss, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.clearEmergency(ss));
 }
+void JausStack::resume(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.resume(ss));
+}
+void JausStack::standby(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.standby(ss));
+}
+void JausStack::shutdown(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.shutdown(ss));
+}
+void JausStack::reset(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.reset(ss));
+}
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
     d->post([=, done = std::move(done)] { done(d->core.setEmergencyAll(code)); });

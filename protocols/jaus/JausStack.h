@@ -48,6 +48,10 @@ public:
     void releaseControl(std::uint16_t subsystem, OutcomeCallback done);
     void setEmergency(std::uint16_t subsystem, EmergencyCode code, OutcomeCallback done);
     void clearEmergency(std::uint16_t subsystem, OutcomeCallback done);
+    void resume(std::uint16_t subsystem, OutcomeCallback done);
+    void standby(std::uint16_t subsystem, OutcomeCallback done);
+    void shutdown(std::uint16_t subsystem, OutcomeCallback done);
+    void reset(std::uint16_t subsystem, OutcomeCallback done);
     // STOP ALL: SetEmergency to every discovered subsystem (controlled by this console or not).
     void setEmergencyAll(EmergencyCode code, OutcomeCallback done);
 

@@ -173,6 +173,31 @@ private slots:
         QCOMPARE(v.received(msg::SetEmergency), 0);
     }
 
+    // §1: management commands report what went on the wire: Resume without control is refused with the
+    // reason (nothing sent), with control it is sent and the vehicle's status shows it.
+    void managementCommandsReportTheirOutcome() {
+        ForeignJausVehicle v(VehicleOptions{});
+        Console ocu(200, Role::PrimaryOperator, 205, v.port());
+        QVERIFY(waitFor([&] { return ocu.discovered(); }));
+        Outcomes early;
+        ocu.stack.resume(126, early.callback());
+        auto e = early.get();
+        QVERIFY(e && e->size() == 1);
+        QCOMPARE(e->front().target, std::string("jaus:126"));
+        QVERIFY(!e->front().sent);
+        QVERIFY2(e->front().reason.find("needs control") != std::string::npos, e->front().reason.c_str());
+        QCOMPARE(v.received(msg::Resume), 0);
+        Outcomes req;
+        ocu.stack.requestControl(126, req.callback());
+        QVERIFY(req.get() && req.get()->front().sent);
+        QVERIFY(waitFor([&] { return v.controller() == ocu.id(); }));
+        Outcomes standby;
+        ocu.stack.standby(126, standby.callback());
+        auto s = standby.get();
+        QVERIFY(s && s->size() == 1 && s->front().sent);
+        QVERIFY(waitFor([&] { return v.received(msg::Standby) >= 1; }));
+    }
+
     // §2: the monitor role stops a vehicle it does not control (SetEmergency on the wire, through STOP ALL)
     // and its ClearEmergency is refused with a reason, nothing sent.
     void monitorStopsAndCannotClear() {
