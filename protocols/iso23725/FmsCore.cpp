@@ -70,6 +70,26 @@ void FmsCore::event(IsoSeverity s, const std::string& text) {
     m_listener.onEvent(s, text);
 }
 
+void FmsCore::binaryFrame(std::size_t bytes) {
+    peerWarning("binary_frame", "binary WebSocket frame of " + std::to_string(bytes) + " bytes from " +
+                                    m_link.name + " ignored (§2: messages are text frames)");
+}
+
+void FmsCore::peerWarning(const std::string& cause, const std::string& text) {
+    PeerWarning& w = m_peerWarnings[cause];
+    const TimePoint now = m_clock.now();
+    if (w.any && now - w.last < kPeerWarningGap) {
+        ++w.suppressed;
+        return;
+    }
+    const std::uint64_t more = w.suppressed;
+    w = PeerWarning{now, 0, true};
+    event(IsoSeverity::Warning,
+          text +
+              (more ? " (" + std::to_string(more) + " more of this kind in the last minute, counted)" : "") +
+              "; at most one such warning per minute");
+}
+
 bool FmsCore::upOrRefuse(const char* what) {
     if (m_state != LinkState::Up) {
         // §2.1 rule 1: commands are never queued while the link is down.
@@ -226,9 +246,18 @@ void FmsCore::handleFrame(std::string_view frame, bool mapChannel) {
     for (auto& w : env->warnings) {
         m_counters.add("rx.tolerated");
         logWarning(kLog, from + ": " + w);
+        const bool unknown = w.rfind("unknown member", 0) == 0;
+        peerWarning(unknown ? "unknown_member" : "tolerated",
+                    "message from " + from + ": " + w +
+                        (unknown ? " (not in ISO 23725; kept, not acted on)" : ""));
     }
-    if (env->outOfStandard)
+    if (env->outOfStandard) {
         m_counters.add("rx.out_of_standard");
+        peerWarning("out_of_standard",
+                    "message from " + from +
+                        " names a protocol other than ISO23725 (out of the standard; decoded "
+                        "as far as its members are known)");
+    }
     if (!mapChannel && !m_gotFirstMessage && !env->members.empty()) {
         m_gotFirstMessage = true;
         if (!env->find<FleetDefinitionV2>()) {

@@ -47,6 +47,8 @@ public:
     // ---- main channel (from the transport) ----
     void opened(const std::string& peer);
     void text(std::string_view frame);
+    // A binary frame on the link (§2: ignored): a rate-limited warning for the operator.
+    void binaryFrame(std::size_t bytes);
     void closed(const std::string& reason);
     void connectFailed(const std::string& reason, std::chrono::milliseconds retryIn);
 
@@ -93,6 +95,17 @@ private:
     };
 
     void event(IsoSeverity severity, const std::string& text);
+    // A peer's misbehaviour the operator should see (issue 14 §6): always counted by the caller; a warning
+    // event at most once per cause and link every kPeerWarningGap, saying how many were seen since the last
+    // one.
+    void peerWarning(const std::string& cause, const std::string& text);
+    static constexpr Duration kPeerWarningGap = std::chrono::seconds(60);
+    struct PeerWarning {
+        TimePoint last{};
+        std::uint64_t suppressed = 0;
+        bool any = false;
+    };
+    std::map<std::string, PeerWarning> m_peerWarnings; // bounded: a handful of fixed causes
     bool upOrRefuse(const char* what);
     std::string frame(const Body& body, std::optional<Guid> equipmentId) const;
     bool sendBody(const Body& body, std::optional<Guid> equipmentId = std::nullopt);

@@ -61,6 +61,10 @@ struct Link final : FmsOutbound {
             link->mainSession.reset();
             link->session->closed(reason);
         }
+        void onBinaryFrame(SessionId id, std::size_t bytes) override {
+            if (link->mainSession == id)
+                link->session->binaryFrame(bytes);
+        }
         void onConnectFailed(const std::string& reason, std::chrono::milliseconds retryIn) override {
             link->session->connectFailed(reason, retryIn);
         }

@@ -225,6 +225,8 @@ private:
             // §2: binary frames are logged and ignored; the link stays up.
             m_ep->counters.add("rx.rejected.binary");
             logWarning(kLog, "binary frame of " + std::to_string(m_buffer.size()) + " bytes ignored");
+            if (m_ep->handler)
+                m_ep->handler->onBinaryFrame(m_id, m_buffer.size());
         } else if (m_ep->handler) {
             std::string text = beast::buffers_to_string(m_buffer.data());
             m_buffer.consume(m_buffer.size());

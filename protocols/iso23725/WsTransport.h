@@ -59,6 +59,12 @@ public:
     virtual void onOpen(SessionId id, const std::string& peer) = 0;
     virtual void onText(SessionId id, std::string text) = 0;
     virtual void onClose(SessionId id, const std::string& reason) = 0;
+    // A binary frame (§2: ignored; counted in rx.rejected.binary by the transport): for the operator's
+    // events.
+    virtual void onBinaryFrame(SessionId id, std::size_t bytes) {
+        (void)id;
+        (void)bytes;
+    }
     // Connection attempts that failed before a session opened (client), with the next retry delay.
     virtual void onConnectFailed(const std::string& reason, std::chrono::milliseconds retryIn) {
         (void)reason;

@@ -353,6 +353,39 @@ private slots:
         QCOMPARE(f.counters.get("rx.rejected.wrong_direction"), std::uint64_t(1));
     }
 
+    // Issue 14 §6: unknown members, binary frames and out-of-standard protocol names are warnings the
+    // operator sees, at most one per cause and minute per link, each counted.
+    void peerMisbehaviourIsVisibleAndRateLimited() {
+        Fixture f;
+        f.connect();
+        std::string frame = fromAhs(MachineAllStopV1{"Off", std::nullopt});
+        const auto brace = frame.rfind('}');
+        QVERIFY(brace != std::string::npos);
+        // A vendor's extra member beside a known one (the envelope's members sit in the outer object).
+        std::string unknown = frame;
+        const auto member = unknown.find("\"MachineAllStopV1\"");
+        QVERIFY(member != std::string::npos);
+        unknown.insert(member, "\"VendorBlinkV9\":{\"Rate\":3},");
+        for (int i = 0; i < 5; ++i)
+            f.session->text(unknown);
+        for (int i = 0; i < 3; ++i)
+            f.session->binaryFrame(42);
+        QCOMPARE(f.counters.get("rx.unknown_member"), std::uint64_t(5));
+        QCOMPARE(f.listener.count(IsoSeverity::Warning, "unknown member 'VendorBlinkV9'"), 1);
+        QCOMPARE(f.listener.count(IsoSeverity::Warning, "binary WebSocket frame of 42 bytes"), 1);
+        f.advance(61s);
+        f.session->text(unknown);
+        QCOMPARE(f.listener.count(IsoSeverity::Warning, "unknown member 'VendorBlinkV9'"), 2);
+        QCOMPARE(f.listener.count(IsoSeverity::Warning, "4 more of this kind"), 1);
+        std::string other = frame;
+        const auto proto = other.find("ISO23725");
+        QVERIFY(proto != std::string::npos);
+        other.replace(proto, 8, "ACME-AHS");
+        f.session->text(other);
+        QCOMPARE(f.counters.get("rx.out_of_standard"), std::uint64_t(1));
+        QCOMPARE(f.listener.count(IsoSeverity::Warning, "protocol other than ISO23725"), 1);
+    }
+
     void lateEventsDoNotOverwriteNewerState() {
         Fixture f;
         f.connect();
