@@ -78,6 +78,14 @@ void StationCore::reject(const std::string& reason, const std::string& text) {
     if (n++ < 5 || n % 1000 == 0) // bounded logging: a noisy radio must not flood the log
         logWarning("osyris",
                    "station " + std::to_string(idx()) + ": datagram rejected (" + reason + "): " + text);
+    // The operator sees it too (issue 14 §6): one warning per cause and minute, with the count since.
+    auto [it, first] = m_rejectEventAt.try_emplace(reason, m_clock.now());
+    if (!first && m_clock.now() - it->second < std::chrono::seconds(60))
+        return;
+    it->second = m_clock.now();
+    event(Severity::Warning, "OSYRIS input rejected (" + reason + "): " + text + " (" + std::to_string(n) +
+                                 " so far, counted in rx.rejected." + reason +
+                                 "; at most one such warning per minute)");
 }
 
 void StationCore::start() {

@@ -207,6 +207,7 @@ private:
     bool m_passCountsUnpublished = false;
     TimePoint m_nextPassCountPublish{};
     std::map<std::string, std::uint64_t> m_rejectLogged;
+    std::map<std::string, TimePoint> m_rejectEventAt; // bounded: one entry per reject reason (a fixed set)
     // Slots this station re-sent recently, per ribbon: a NAK that crossed our answer on the air is not
     // answered twice (the requester asks again after TTL if the answer was lost).
     std::map<std::uint8_t, std::map<std::uint32_t, TimePoint>> m_recentlySent;

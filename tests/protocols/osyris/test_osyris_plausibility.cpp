@@ -9,6 +9,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -227,6 +228,35 @@ private slots:
         encodeRequest(again, 9, kIdxAll, {RequestType::All, 0, kSlotLast, 0, 0});
         core.receive(again);
         QCOMPARE(core.counters().get("tx.retx.newest") - newest0, std::uint64_t(4));
+    }
+
+    void rejectedInputIsAWarningOncePerMinute() {
+        // Issue 14 §6: rejected OSYRIS datagrams went to stderr only.
+        FakeClock clock;
+        auto store = RibbonStore::inMemory();
+        OsyrisConfig cfg;
+        Recorder rec;
+        StationCore core(cfg, clock, *store, nullptr, &rec, [](const Bytes&) {});
+        core.start();
+        const CmRequest absurd{RequestType::Alive, 0, 0xFFFFFFFEu, 0, 0};
+        for (int i = 0; i < 3; ++i) {
+            Bytes b;
+            encodeRequest(b, 9, 9, absurd);
+            core.receive(b);
+        }
+        auto warnings = [&] {
+            return std::count_if(rec.warnings.begin(), rec.warnings.end(), [](const std::string& w) {
+                return w.find("rejected (alive_range_too_wide)") != std::string::npos;
+            });
+        };
+        QCOMPARE(core.counters().get("rx.rejected.alive_range_too_wide"), std::uint64_t(3));
+        QCOMPARE(warnings(), 1);
+        clock.advance(seconds(61));
+        Bytes b;
+        encodeRequest(b, 9, 9, absurd);
+        core.receive(b);
+        QCOMPARE(warnings(), 2);
+        QVERIFY(rec.warnings.back().find("4 so far") != std::string::npos);
     }
 
     void limitsComeFromTheConfiguration() {
