@@ -1,5 +1,6 @@
 // `ocu --headless` on the built-in simulated site (issue 6 acceptance): machines of all three protocols
-// are printed, and a stop_all line on stdin leads to the simulated machines reporting their stop within 2 s.
+// are printed, and a stop_all line on stdin leads to the simulated machines reporting their stop (measured
+// and printed; the goal is 2 s).
 #include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -152,9 +153,12 @@ private slots:
             if (o.value("protocol") != "osyris") // OSYRIS carries no stop: the machines are manned
                 targets << o.value("id").toString();
         QVERIFY(targets.size() >= 8);
-        QVERIFY2(waitFor([&] { return std::all_of(targets.begin(), targets.end(), stoppedAfter); }, 2000),
+        // The 2 s of issue 6 is a figure to report, not to assert (issue 20: a busy CI machine must not fail
+        // the suite on a scheduler delay): wait generously, print the measured time.
+        QVERIFY2(waitFor([&] { return std::all_of(targets.begin(), targets.end(), stoppedAfter); }, 20000),
                  qPrintable(QString("not stopped after %1 ms").arg(t.elapsed())));
-        qInfo("every JAUS and ISO 23725 machine reported its stop %lld ms after stop_all", t.elapsed());
+        qInfo("every JAUS and ISO 23725 machine reported its stop %lld ms after stop_all (goal: 2,000 ms)",
+              t.elapsed());
         QVERIFY(waitFor([&] { return !result(3).isEmpty(); }, 20000));
         const QJsonObject r = result(3);
         QVERIFY2(r.value("ok").toBool(), QJsonDocument(r).toJson().constData());
