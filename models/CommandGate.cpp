@@ -106,7 +106,7 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
                     QVector<CommandTarget> t;
                     for (const TargetOutcome& x : o)
                         t.push_back(toCommandTarget(x));
-                    watchStops(t, pend.since);
+                    watchStops(pend.bridges[i].data(), t, pend.since);
                 }
                 pend.outcomes[size_t(i)] = std::move(o);
                 if (++pend.answered == int(pend.outcomes.size()) && !pend.issuing)
@@ -249,15 +249,13 @@ QStringList CommandGate::awaitingConfirmation() const {
     return m_watches.keys();
 }
 
-void CommandGate::watchStops(const QVector<CommandTarget>& targets, const QElapsedTimer& since) {
+void CommandGate::watchStops(FleetBridge* b, const QVector<CommandTarget>& targets,
+                             const QElapsedTimer& since) {
+    // The bridge that answered for the targets is known: no guessing the owner from the target's name.
     QStringList noStopState;
     for (const CommandTarget& t : targets) {
         if (!t.sent)
             continue;
-        FleetBridge* b = nullptr;
-        for (FleetBridge* candidate : bridges())
-            if (candidate->ownsMachine(t.id) || t.id.startsWith(toText(candidate->protocol())))
-                b = candidate;
         if (b && !b->reportsStopState()) {
             noStopState << t.id;
             continue;

@@ -97,7 +97,8 @@ private:
     void finish(quint64 id);
     void finishNow(const QString& action, const QString& target, const QString& origin, CommandResult r,
                    const ResultHandler& onFinal);
-    void watchStops(const QVector<CommandTarget>& targets, const QElapsedTimer& since);
+    // `bridge` answered for these targets (null when it is gone): it says whether it can confirm a stop.
+    void watchStops(FleetBridge* bridge, const QVector<CommandTarget>& targets, const QElapsedTimer& since);
     void onStopReported(const QString& target, const QString& text);
     void audit(const QString& origin, const QString& action, const QString& target,
                const CommandResult& result);

@@ -146,8 +146,9 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
     : JausVehicleBridge(parent), m_config(config), m_frame(frame), m_snapshots(this, [this](auto&& batch) {
           for (auto& [id, snap] : batch) {
               const JausVehicle v = toVehicle(snap);
-              const bool wasStopped = m_latest.contains(id) && m_latest.value(id).emergency;
-              m_latest.insert(id, v);
+              JausVehicle& latest = m_latest[id]; // a new vehicle starts default: not in emergency
+              const bool wasStopped = latest.emergency;
+              latest = v;
               emit subsystemUpdated(v);
               if (v.emergency && !wasStopped) // the vehicle's own report (ReportStatus: Emergency)
                   emit stopReported(

@@ -70,6 +70,14 @@ void FmsCore::event(IsoSeverity s, const std::string& text) {
     m_listener.onEvent(s, text);
 }
 
+bool FmsCore::socketRefused(const char* what) {
+    // The link was up but its WebSocket did not take the frame (closing under us): not sent, and said so.
+    m_counters.add("cmd.refused.socket");
+    m_lastRefusal = "the WebSocket of link " + m_link.name + " did not take the frame (closing)";
+    event(IsoSeverity::Warning, std::string(what) + " not sent: " + m_lastRefusal);
+    return false;
+}
+
 void FmsCore::binaryFrame(std::size_t bytes) {
     peerWarning("binary_frame", "binary WebSocket frame of " + std::to_string(bytes) + " bytes from " +
                                     m_link.name + " ignored (§2: messages are text frames)");
@@ -529,9 +537,10 @@ bool FmsCore::allStopApply() {
     if (!upOrRefuse("all-stop Apply"))
         return false;
     Guid id = newGuid();
+    if (!sendBody(MachineAllStopRequestV1{"Apply", id}))
+        return socketRefused("all-stop Apply");
     m_issuedIds.insert(id);
     m_allStop.pendingId = id;
-    sendBody(MachineAllStopRequestV1{"Apply", id});
     m_counters.add("allstop.apply");
     event(IsoSeverity::Info, "all-stop Apply " + id + " sent to " + m_link.name);
     m_ackDeadline = {m_clock.now() + m_cfg.allStopAckTimeout, "all-stop not acknowledged"};
@@ -549,8 +558,9 @@ bool FmsCore::allStopRemove() {
         event(IsoSeverity::Warning, "all-stop Remove refused on " + m_link.name + ": no active all-stop id");
         return false;
     }
+    if (!sendBody(MachineAllStopRequestV1{"Remove", *id}))
+        return socketRefused("all-stop Remove");
     m_allStop.pendingId = id;
-    sendBody(MachineAllStopRequestV1{"Remove", *id});
     m_counters.add("allstop.remove");
     event(IsoSeverity::Info, "all-stop Remove " + *id + " sent to " + m_link.name);
     m_ackDeadline = {m_clock.now() + m_cfg.allStopAckTimeout, "all-stop Remove not acknowledged"};

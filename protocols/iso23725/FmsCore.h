@@ -95,6 +95,7 @@ private:
     };
 
     void event(IsoSeverity severity, const std::string& text);
+    bool socketRefused(const char* what); // counter, reason, event; returns false
     // A peer's misbehaviour the operator should see (issue 14 §6): always counted by the caller; a warning
     // event at most once per cause and link every kPeerWarningGap, saying how many were seen since the last
     // one.

@@ -136,7 +136,7 @@ void OsyrisStack::sendText(std::string text, OutcomeCallback done) {
         TargetOutcome o{groupTarget(), false, "the OSYRIS station is not running"};
         if (m_impl->running && m_impl->transport) {
             m_impl->lastSendOk = false;
-            m_impl->core->sendTextNow(t);
+            m_impl->core->sendText(t);
             o.sent = m_impl->lastSendOk;
             if (!o.sent)
                 o.reason = "socket error: " + m_impl->transport->lastError();

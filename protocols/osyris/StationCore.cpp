@@ -127,26 +127,18 @@ std::uint32_t StationCore::publishOwnPosition(CmPos p, std::vector<PosProp> prop
 }
 
 void StationCore::sendText(const std::string& text, std::uint8_t to) {
-    Bytes b;
-    encodeMsg(b, idx(), to, text, m_cfg.checksum);
-    enqueue(std::move(b), true);
-    // Sent now, not at the next Beat: the operator's texts carry the console's STOP, and the specification
-    // binds no message kind but Alive to the timer (OSYRIS communication spec §6: text messages are sent "for
-    // operator communication", Alive "periodically"; concatenating messages into one datagram is
-    // "recommended, but not required"). The Beat stays the pacing of the queue's periodic flush (§7 Beat);
-    // what is queued now leaves with the text, in order.
-    flush(m_clock.now(), true);
-    m_counters.add("tx.msg");
-}
-
-Bytes StationCore::sendTextNow(const std::string& text, std::uint8_t to) {
+    // Sent now, as its own datagram, not at the next Beat: the operator's texts carry the console's STOP, and
+    // the specification binds no message kind but Alive to the timer (OSYRIS communication spec §6: text
+    // messages are sent "for operator communication", Alive "periodically"; concatenating messages into one
+    // datagram is "recommended, but not required"). The queue keeps its Beat pacing (§7 Beat); a text carries
+    // no slot, so leaving ahead of queued positions changes nothing for them. One datagram, so the caller's
+    // send result is this text's.
     Bytes b;
     encodeMsg(b, idx(), to, text, m_cfg.checksum);
     m_counters.add("tx.msg");
     m_counters.add("tx.datagrams");
     m_counters.add("tx.bytes", b.size());
     m_send(b);
-    return b;
 }
 
 void StationCore::ping(std::uint8_t target) {

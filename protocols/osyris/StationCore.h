@@ -88,10 +88,8 @@ public:
 
     // This station's own machine writes a position into its ribbon (slot assigned here). Returns the slot.
     std::uint32_t publishOwnPosition(CmPos p, std::vector<PosProp> props = {});
+    // An operator text (the console's STOP among them) as its own datagram at once, not with the next Beat.
     void sendText(const std::string& text, std::uint8_t to = kIdxAll);
-    // The same, but as its own datagram at once instead of with the next Beat (the STOP text must not wait
-    // up to a beat, issue 13 §1). Returns the datagram's bytes as handed to the send function.
-    Bytes sendTextNow(const std::string& text, std::uint8_t to = kIdxAll);
     void ping(std::uint8_t idx);
 
     std::uint8_t idx() const { return m_cfg.stationIndex; }

@@ -174,6 +174,21 @@ private slots:
         QCOMPARE(f.listener.count(IsoSeverity::Warning, "all-stop Apply refused: link 'ahs' is DOWN"), 1);
     }
 
+    // Issue 13 §1: up, but the socket does not take the frame (closing under us): not sent, with the reason.
+    void allStopNotTakenBySocketIsNotSent() {
+        Fixture f;
+        f.connect();
+        f.out.mainOpen = false;
+        QVERIFY(!f.session->allStopApply());
+        QVERIFY2(f.session->lastRefusal().find("did not take the frame") != std::string::npos,
+                 f.session->lastRefusal().c_str());
+        QCOMPARE(f.counters.get("allstop.apply"), std::uint64_t(0));
+        QVERIFY(!f.session->allStop().pendingId);
+        f.out.mainOpen = true;
+        QVERIFY(f.session->allStopApply());
+        QCOMPARE(allOf<MachineAllStopRequestV1>(f.out.main).size(), std::size_t(1));
+    }
+
     void closeMakesStateUnknownBeforeLinkDown() {
         Fixture f;
         f.connect();
