@@ -51,6 +51,7 @@ void CommandGate::addBridge(FleetBridge* bridge) {
         return;
     m_bridges.push_back(bridge);
     connect(bridge, &FleetBridge::stopReported, this, &CommandGate::onStopReported);
+    connect(bridge, &FleetBridge::commandReported, this, &CommandGate::onCommandReported);
 }
 
 QVector<FleetBridge*> CommandGate::bridges() const {
@@ -107,6 +108,11 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
                     for (const TargetOutcome& x : o)
                         t.push_back(toCommandTarget(x));
                     watchStops(pend.bridges[i].data(), t, pend.since);
+                } else if (FleetBridge* b = pend.bridges[i].data(); b && b->confirmsCommand(pend.action)) {
+                    QVector<CommandTarget> t;
+                    for (const TargetOutcome& x : o)
+                        t.push_back(toCommandTarget(x));
+                    watchCommand(pend.action, b, t, pend.since);
                 }
                 pend.outcomes[size_t(i)] = std::move(o);
                 if (++pend.answered == int(pend.outcomes.size()) && !pend.issuing)
@@ -313,6 +319,66 @@ void CommandGate::onStopReported(const QString& target, const QString& text) {
     if (m_alarms)
         m_alarms->add(makeEvent(EventSeverity::Info, EventKind::Audit, target, line, QStringLiteral("gate")));
     emit stopConfirmed(target, line, ms);
+}
+
+QStringList CommandGate::awaitingCommandConfirmation() const {
+    QStringList out;
+    for (auto it = m_commandWatches.cbegin(); it != m_commandWatches.cend(); ++it)
+        out << QString(it.key()).replace(QLatin1Char('\n'), QLatin1Char(' '));
+    return out;
+}
+
+void CommandGate::watchCommand(const QString& action, FleetBridge* b, const QVector<CommandTarget>& targets,
+                               const QElapsedTimer& since) {
+    for (const CommandTarget& t : targets) {
+        if (!t.sent)
+            continue;
+        if (b->reportsConfirmed(action, t.id)) {
+            const QString text = tr("%1 already reports the effect of %2").arg(t.id, action);
+            if (m_alarms)
+                m_alarms->add(
+                    makeEvent(EventSeverity::Info, EventKind::Audit, t.id, text, QStringLiteral("gate")));
+            emit commandConfirmed(action, t.id, text, 0);
+            continue;
+        }
+        const QString key = action + QLatin1Char('\n') + t.id;
+        Watch& w = m_commandWatches[key];
+        w.since = since;
+        if (!w.timer) {
+            w.timer = new QTimer(this);
+            w.timer->setSingleShot(true);
+            const QString target = t.id;
+            connect(w.timer, &QTimer::timeout, this, [this, key, action, target] {
+                auto it = m_commandWatches.find(key);
+                if (it == m_commandWatches.end())
+                    return;
+                it->timer->deleteLater();
+                m_commandWatches.erase(it);
+                const QString text = tr("%1 has not confirmed %2 %3 ms after the command was sent")
+                                         .arg(target, action)
+                                         .arg(m_confirmTimeoutMs);
+                if (m_alarms)
+                    m_alarms->add(makeEvent(EventSeverity::Alarm, EventKind::Timeout, target, text,
+                                            QStringLiteral("gate")));
+                emit commandUnconfirmed(action, target, text);
+            });
+        }
+        w.timer->start(std::max<qint64>(0, m_confirmTimeoutMs - since.elapsed()));
+    }
+}
+
+void CommandGate::onCommandReported(const QString& action, const QString& target, const QString& text) {
+    auto it = m_commandWatches.find(action + QLatin1Char('\n') + target);
+    if (it == m_commandWatches.end())
+        return;
+    const qint64 ms = it->since.elapsed();
+    it->timer->stop();
+    it->timer->deleteLater();
+    m_commandWatches.erase(it);
+    const QString line = tr("%1 %2 ms after the command").arg(text).arg(ms);
+    if (m_alarms)
+        m_alarms->add(makeEvent(EventSeverity::Info, EventKind::Audit, target, line, QStringLiteral("gate")));
+    emit commandConfirmed(action, target, line, ms);
 }
 
 void CommandGate::audit(const QString& origin, const QString& action, const QString& target,

@@ -77,6 +77,8 @@ public:
     int pendingCommands() const { return int(m_pending.size()); }
     // Stops sent and not yet confirmed by the machines (target ids).
     QStringList awaitingConfirmation() const;
+    // Other commands sent and not yet confirmed: "action target" per entry.
+    QStringList awaitingCommandConfirmation() const;
 
 signals:
     // Every final result (any command, any origin).
@@ -86,6 +88,11 @@ signals:
     // A stop target's report arrived (latency in ms from the command) or did not arrive in time.
     void stopConfirmed(const QString& target, const QString& text, qint64 latencyMs);
     void stopUnconfirmed(const QString& target, const QString& text);
+    // The same for other commands a bridge confirms (FleetBridge::confirmsCommand): clear_stop,
+    // request_control, release_control.
+    void commandConfirmed(const QString& action, const QString& target, const QString& text,
+                          qint64 latencyMs);
+    void commandUnconfirmed(const QString& action, const QString& target, const QString& text);
     void audited(const QString& jsonLine);
 
 private:
@@ -100,6 +107,10 @@ private:
     // `bridge` answered for these targets (null when it is gone): it says whether it can confirm a stop.
     void watchStops(FleetBridge* bridge, const QVector<CommandTarget>& targets, const QElapsedTimer& since);
     void onStopReported(const QString& target, const QString& text);
+    // Other confirmed commands: watched per (action, target) until the bridge reports the effect.
+    void watchCommand(const QString& action, FleetBridge* bridge, const QVector<CommandTarget>& targets,
+                      const QElapsedTimer& since);
+    void onCommandReported(const QString& action, const QString& target, const QString& text);
     void audit(const QString& origin, const QString& action, const QString& target,
                const CommandResult& result);
 
@@ -120,7 +131,8 @@ private:
         QElapsedTimer since;
         QTimer* timer = nullptr;
     };
-    QHash<QString, Watch> m_watches; // stop target -> waiting for its report
+    QHash<QString, Watch> m_watches;        // stop target -> waiting for its report
+    QHash<QString, Watch> m_commandWatches; // action + '\n' + target -> waiting for its report
     std::shared_ptr<GateLife> m_life;
 };
 

@@ -13,6 +13,8 @@ QJsonArray targetsToJson(const QVector<CommandTarget>& targets) {
         j[QStringLiteral("sent")] = t.sent;
         if (!t.sent)
             j[QStringLiteral("reason")] = t.reason;
+        if (!t.note.isEmpty())
+            j[QStringLiteral("note")] = t.note;
         out.append(j);
     }
     return out;
@@ -78,7 +80,7 @@ CommandResult CommandResult::fromTargets(QVector<CommandTarget> targets, const Q
     QStringList sent;
     for (const CommandTarget& t : std::as_const(r.targets))
         if (t.sent)
-            sent << t.id;
+            sent << (t.note.isEmpty() ? t.id : QStringLiteral("%1 (%2)").arg(t.id, t.note));
     const QStringList failed = r.notSent();
     r.ok = failed.isEmpty();
     if (r.ok)
@@ -102,7 +104,8 @@ QStringList CommandResult::notSent() const {
 }
 
 CommandTarget toCommandTarget(const TargetOutcome& o) {
-    return {QString::fromStdString(o.target), o.sent, QString::fromStdString(o.reason)};
+    return {QString::fromStdString(o.target), o.sent, QString::fromStdString(o.reason),
+            QString::fromStdString(o.note)};
 }
 
 TargetOutcome refusal(const QString& target, const QString& reason) {
@@ -134,6 +137,13 @@ std::optional<LinkStatus> FleetBridge::linkStatus(const QString& link) const {
 void FleetBridge::flushPending() {
     m_links.drainNow();
     m_machines.drainNow();
+}
+
+void FleetBridge::publishStackStopped(const QString& detail) {
+    m_links.drainNow(); // a report still queued from the stack must not arrive after "stopped"
+    for (auto it = m_linkState.cbegin(); it != m_linkState.cend(); ++it)
+        m_links.push(it.key(), LinkStatus{it.key(), LinkState::Down, -1, detail});
+    m_links.drainNow();
 }
 
 void FleetBridge::deliverMachines(std::vector<std::pair<QString, std::optional<MachineState>>>&& batch) {

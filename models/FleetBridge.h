@@ -36,12 +36,17 @@ class PassCountLayer;
 
 // One target of a command as the GUI thread sees it (TargetOutcome in Qt types).
 struct CommandTarget {
+    CommandTarget() = default;
+    CommandTarget(QString id_, bool sent_, QString reason_ = {}, QString note_ = {})
+        : id(std::move(id_)), sent(sent_), reason(std::move(reason_)), note(std::move(note_)) {}
     QString id; // "jaus:126", "iso23725 link ahs", "osyris group 239.255.0.1:5000", ...
     bool sent = false;
     QString reason; // why not sent; empty when sent
+    QString note;   // TargetOutcome::note (e.g. sent to a vehicle whose link is down); empty: nothing
 };
 
-// [{"id":…,"sent":…,"reason":… (only when not sent)}, …]: the same in headless results and audit lines.
+// [{"id":…,"sent":…,"reason":… (only when not sent),"note":… (only when there is one)}, …]: the same in
+// headless results and audit lines.
 QJsonArray targetsToJson(const QVector<CommandTarget>& targets);
 
 // The final result of one operator command: ok only when there was at least one target and every target
@@ -103,6 +108,13 @@ public:
     // stop can never be confirmed by the machines; true when the target reports being stopped now.
     virtual bool reportsStopState() const { return true; }
     virtual bool reportsStopped(const QString& /*target*/) const { return false; }
+    // Confirmation of other commands (issue 13 §1: clear_stop, request_control, release_control...): true
+    // when this bridge watches `action`'s effect in the machines' own reports (commandReported), and whether
+    // `target` shows that effect now.
+    virtual bool confirmsCommand(const QString& /*action*/) const { return false; }
+    virtual bool reportsConfirmed(const QString& /*action*/, const QString& /*target*/) const {
+        return false;
+    }
 
     // Optional data layers.
     virtual const PassCountLayer* passCountLayer() const { return nullptr; }
@@ -112,6 +124,10 @@ public:
     QVector<LinkStatus> links() const;
     std::optional<LinkStatus> linkStatus(const QString& link) const;
     void flushPending();
+    // GUI thread, after the stack stopped: every link this bridge has published shows down with `detail`
+    // ("stack stopped"), delivered at once - the status bar reflects the stack's own state, not its last
+    // report (issue 13).
+    void publishStackStopped(const QString& detail);
     // Backlog and counters of the machine coalescer (benchmarks, diagnostics; any thread).
     size_t pendingMachineUpdates() const { return m_machines.pending(); }
     size_t pendingLinkUpdates() const { return m_links.pending(); }
@@ -130,6 +146,9 @@ signals:
     // A stop target (as named in TargetOutcome) reports being stopped: the machine's own report (JAUS
     // emergency state, ISO 23725 MachineAllStop on). `text` says so for people ("UGV-126 reports EMERGENCY").
     void stopReported(const QString& target, const QString& text);
+    // A target's own report answers a command (confirmsCommand): "UGV-126 reports READY (emergency
+    // cleared)", "UGV-126 confirms control by this console", "AHS ahs reports all-stop inactive".
+    void commandReported(const QString& action, const QString& target, const QString& text);
 
 private:
     void deliverMachines(std::vector<std::pair<QString, std::optional<MachineState>>>&& batch);

@@ -34,9 +34,12 @@ QString IsoBridge::start() {
 }
 
 void IsoBridge::stop() {
+    const bool wasRunning = m_running;
     m_running = false;
     if (m_stack)
         m_stack->stop();
+    if (wasRunning)
+        publishStackStopped(tr("ISO 23725 stack stopped"));
 }
 
 QStringList IsoBridge::linkNames() const {
@@ -155,6 +158,11 @@ void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& s
             if (static_cast<AllStopState>(st) == AllStopState::On) // MachineAllStopV1 from the AHS
                 emit stopReported(q(IsoStack::linkTarget(l.toStdString())),
                                   tr("AHS %1 reports all-stop active").arg(l));
+            else if (static_cast<AllStopState>(st) == AllStopState::Off) // the release, confirmed by the AHS
+                for (const char* action : {"clear_stop", "all_stop_remove"})
+                    emit commandReported(QString::fromLatin1(action),
+                                         q(IsoStack::linkTarget(l.toStdString())),
+                                         tr("AHS %1 reports all-stop inactive").arg(l));
         },
         Qt::QueuedConnection);
     publishEvent(makeEvent(status.state == AllStopState::On ? EventSeverity::Alarm : EventSeverity::Info,
@@ -436,6 +444,19 @@ void IsoBridge::clearStop(const QString& id, OutcomeCallback done) {
         return;
     }
     applyOrRefuse(link, false, std::move(done));
+}
+
+bool IsoBridge::confirmsCommand(const QString& action) const {
+    return action == QLatin1String("clear_stop") || action == QLatin1String("all_stop_remove");
+}
+
+bool IsoBridge::reportsConfirmed(const QString& action, const QString& target) const {
+    if (!confirmsCommand(action))
+        return false;
+    for (const auto& l : m_config.links)
+        if (q(IsoStack::linkTarget(l.name)) == target)
+            return allStopState(q(l.name)) == AllStopState::Off;
+    return false;
 }
 
 bool IsoBridge::reportsStopped(const QString& target) const {

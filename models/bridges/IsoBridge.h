@@ -41,6 +41,9 @@ public:
     // all_stop_apply / all_stop_remove {"link"}, fetch_map {"link"}, reset_assignment {"id"}.
     void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
     bool reportsStopped(const QString& target) const override;
+    // clear_stop / all_stop_remove: confirmed when the AHS reports all-stop inactive (MachineAllStop off).
+    bool confirmsCommand(const QString& action) const override;
+    bool reportsConfirmed(const QString& action, const QString& target) const override;
     SiteMapData siteMap() const override { return m_map; }
 
     // GUI thread: the all-stop status per link as the AHS reported it.

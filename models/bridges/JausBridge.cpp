@@ -4,6 +4,7 @@
 
 #include <QDateTime>
 #include <QJsonObject>
+#include <QPointer>
 
 #include <algorithm>
 #include <cmath>
@@ -148,12 +149,28 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
               const JausVehicle v = toVehicle(snap);
               JausVehicle& latest = m_latest[id]; // a new vehicle starts default: not in emergency
               const bool wasStopped = latest.emergency;
+              const bool wasOurs = latest.controlledByUs;
+              const bool wasDenied = latest.access == JausAccess::InsufficientAuthority;
               latest = v;
               emit subsystemUpdated(v);
+              const QString name = v.callSign.isEmpty() ? machineId(id) : v.callSign;
               if (v.emergency && !wasStopped) // the vehicle's own report (ReportStatus: Emergency)
-                  emit stopReported(
-                      machineId(id),
-                      tr("%1 reports EMERGENCY").arg(v.callSign.isEmpty() ? machineId(id) : v.callSign));
+                  emit stopReported(machineId(id), tr("%1 reports EMERGENCY").arg(name));
+              // Confirmations of other commands come from the vehicle's own reports too (issue 13 §1).
+              if (!v.emergency && wasStopped)
+                  emit commandReported(
+                      QStringLiteral("clear_stop"), machineId(id),
+                      tr("%1 reports %2: emergency cleared")
+                          .arg(name, v.managementText.isEmpty() ? tr("no emergency") : v.managementText));
+              if (v.controlledByUs && !wasOurs)
+                  emit commandReported(QStringLiteral("request_control"), machineId(id),
+                                       tr("%1 confirms control by this console").arg(name));
+              else if (v.access == JausAccess::InsufficientAuthority && !wasDenied)
+                  emit commandReported(QStringLiteral("request_control"), machineId(id),
+                                       tr("%1 refuses control: insufficient authority").arg(name));
+              if (!v.controlledByUs && wasOurs)
+                  emit commandReported(QStringLiteral("release_control"), machineId(id),
+                                       tr("%1 reports control released").arg(name));
           }
       }) {
     m_stack = std::make_unique<JausStack>(m_config, static_cast<JausListener&>(*this));
@@ -164,19 +181,23 @@ JausBridge::~JausBridge() {
 }
 
 QString JausBridge::start() {
+    // Published before the io thread runs: a vehicle answering within the first millisecond publishes "up"
+    // from there, and this must not overwrite it (the link would show "searching" for ever).
+    publishLink({QStringLiteral("jaus"), ocu::LinkState::Degraded, -1, tr("searching for subsystems")});
     try {
         m_stack->start();
     } catch (const std::exception& e) {
         publishLink({QStringLiteral("jaus"), ocu::LinkState::Down, -1, QString::fromUtf8(e.what())});
         return tr("JAUS: %1").arg(QString::fromUtf8(e.what()));
     }
-    publishLink({QStringLiteral("jaus"), ocu::LinkState::Degraded, -1, tr("searching for subsystems")});
     return {};
 }
 
 void JausBridge::stop() {
-    if (m_stack)
-        m_stack->stop(); // releases control after zero drive commands
+    if (!m_stack || !m_stack->running())
+        return;
+    m_stack->stop(); // releases control after zero drive commands
+    publishStackStopped(tr("JAUS stack stopped"));
 }
 
 JausConsoleIdentity JausBridge::identity() const {
@@ -264,6 +285,12 @@ void JausBridge::onEvent(const JausEvent& event) {
     publishEvent(e);
     QMetaObject::invokeMethod(
         this, [this, ev = toVehicleEvent(event)] { emit jausEvent(ev); }, Qt::QueuedConnection);
+    if (event.kind == jaus::EventKind::DriveNotSent)
+        QMetaObject::invokeMethod(
+            this,
+            [this, ss = event.subsystem, text = QString::fromStdString(event.text),
+             failing = event.severity != Severity::Info] { emit driveProblem(ss, text, failing); },
+            Qt::QueuedConnection);
 }
 
 MachineState JausBridge::toMachine(const SubsystemSnapshot& s) const {
@@ -410,15 +437,39 @@ void JausBridge::stopAll(OutcomeCallback done) {
         done({refusal(QStringLiteral("jaus"), tr("emergency stop refused by this console's JAUS role"))});
         return;
     }
-    if (refuseIfNotRunning(QStringLiteral("jaus"), done))
+    if (!m_stack->running()) {
+        // Nothing can go out; the result names every vehicle the console knows (heard earlier, or configured
+        // as a static endpoint), each with the reason (issue 13 acceptance: one target per machine).
+        std::vector<TargetOutcome> out;
+        for (quint16 ss : knownSubsystems())
+            out.push_back(refusal(machineId(ss), tr("the JAUS stack is not running; nothing sent")));
+        if (out.empty())
+            out.push_back(
+                refusal(QStringLiteral("jaus"),
+                        tr("no JAUS vehicle known and the JAUS stack is not running; nothing sent")));
+        done(std::move(out));
         return;
+    }
     // SetEmergency to every discovered subsystem, controlled by this console or not: the Management service
-    // accepts it from any client. No vehicle discovered: say that nothing went out on JAUS.
+    // accepts it from any client, and to every configured static endpoint. No vehicle known at all: say that
+    // nothing went out on JAUS.
     m_stack->setEmergencyAll(EmergencyCode::Safety, [done = std::move(done)](std::vector<TargetOutcome> out) {
         if (out.empty())
-            out.push_back(TargetOutcome{"jaus", false, "no JAUS vehicle discovered: no SetEmergency sent"});
+            out.push_back(TargetOutcome{"jaus", false,
+                                        "no JAUS vehicle known (none discovered, no static endpoint "
+                                        "configured): no SetEmergency sent"});
         done(std::move(out));
     });
+}
+
+QList<quint16> JausBridge::knownSubsystems() const {
+    QList<quint16> out = subsystems();
+    for (const StaticEndpoint& se : m_config.transport.staticEndpoints)
+        if (se.id.subsystem != 0 && se.id.subsystem != 0xFFFF && se.id.subsystem != m_config.subsystemId &&
+            !out.contains(se.id.subsystem))
+            out << se.id.subsystem;
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 void JausBridge::stopMachine(const QString& id, OutcomeCallback done) {
@@ -459,40 +510,96 @@ void JausBridge::clearStop(const QString& id, OutcomeCallback done) {
     m_stack->clearEmergency(*sub, std::move(done));
 }
 
+bool JausBridge::confirmsCommand(const QString& action) const {
+    return action == QLatin1String("clear_stop") || action == QLatin1String("request_control") ||
+           action == QLatin1String("release_control");
+}
+
+bool JausBridge::reportsConfirmed(const QString& action, const QString& target) const {
+    auto sub = subsystemOf(target);
+    auto it = sub ? m_latest.find(*sub) : m_latest.end();
+    if (it == m_latest.end())
+        return false;
+    if (action == QLatin1String("clear_stop"))
+        return !it->emergency;
+    if (action == QLatin1String("request_control"))
+        return it->controlledByUs;
+    if (action == QLatin1String("release_control"))
+        return !it->controlledByUs;
+    return false;
+}
+
 bool JausBridge::reportsStopped(const QString& target) const {
     auto sub = subsystemOf(target);
     auto it = sub ? m_latest.find(*sub) : m_latest.end();
     return it != m_latest.end() && it->emergency;
 }
 
-CommandResult JausBridge::drive(quint16 subsystem, const JausDrive& demand) {
-    if (auto r = refuseIfMonitor(tr("drive")); !r.ok)
-        return r;
-    auto s = this->subsystem(subsystem);
-    if (s && s->link == JausLink::Down)
-        return refuseIfUnreachable(subsystem, tr("drive"));
-    if (!s || !s->controlledByUs)
-        return CommandResult::failure(
-            tr("drive refused: this console does not control %1").arg(machineId(subsystem)));
-    if (!s->driving)
-        m_stack->startDriving(subsystem);
+namespace {
+DriveCommand toDriveCommand(const JausDrive& demand) {
     DriveCommand command;
     command.mode =
         demand.mode == JausDrive::Mode::Wrench ? DriveCommand::Mode::Wrench : DriveCommand::Mode::Velocity;
     command.linear = demand.linear;
     command.angular = demand.angular;
     command.brake = demand.brake;
-    m_stack->setDriveCommand(subsystem, command);
-    return CommandResult::success(tr("drive command sent"));
+    return command;
+}
+} // namespace
+
+CommandResult JausBridge::refuseDriving(quint16 subsystem) const {
+    if (auto r = refuseIfMonitor(tr("drive")); !r.ok)
+        return r;
+    if (!m_stack->running())
+        return CommandResult::failure(tr("drive refused: the JAUS stack is not running; nothing sent"));
+    auto s = this->subsystem(subsystem);
+    if (s && s->link == JausLink::Down)
+        return refuseIfUnreachable(subsystem, tr("drive"));
+    if (!s || !s->controlledByUs)
+        return CommandResult::failure(
+            tr("drive refused: this console does not control %1").arg(machineId(subsystem)));
+    return CommandResult::success();
+}
+
+CommandResult JausBridge::drive(quint16 subsystem, const JausDrive& demand) {
+    if (auto r = refuseDriving(subsystem); !r.ok)
+        return r;
+    if (!m_sessions.contains(subsystem))
+        return CommandResult::failure(tr("drive refused: no drive session open for %1 (a session starts "
+                                         "through the command gate)")
+                                          .arg(machineId(subsystem)));
+    m_stack->setDriveCommand(subsystem, toDriveCommand(demand));
+    return CommandResult::success(tr("drive demand handed to the drive stream"));
 }
 
 CommandResult JausBridge::stopDriving(quint16 subsystem) {
-    m_stack->stopDriving(subsystem); // zeros, several times
+    m_sessions.remove(subsystem);
     if (QTimer* t = m_driveTimers.take(subsystem)) {
         t->stop();
         t->deleteLater();
     }
-    return CommandResult::success(tr("drive stopped"));
+    if (!m_stack->running())
+        return CommandResult::failure(tr("the JAUS stack is not running; no zero drive commands sent"));
+    m_stack->stopDriving(subsystem); // zeros, several times
+    return CommandResult::success(tr("zero drive commands handed to the stack"));
+}
+
+void JausBridge::startSession(quint16 subsystem, OutcomeCallback done) {
+    m_sessions.insert(subsystem);
+    // A session the stack refused (or whose first message did not leave) is no session: the stream would
+    // only be refused at the drive rate.
+    QPointer<JausBridge> self(this);
+    m_stack->startDriving(subsystem, [self, subsystem, done = std::move(done)](std::vector<TargetOutcome> o) {
+        if (!allSent(o))
+            QMetaObject::invokeMethod(
+                self.data(),
+                [self, subsystem] {
+                    if (self)
+                        self->m_sessions.remove(subsystem);
+                },
+                Qt::QueuedConnection);
+        done(std::move(o));
+    });
 }
 
 void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
@@ -550,8 +657,30 @@ void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCa
     if (auto r = refuseIfMonitor(name); !r.ok)
         return refuse(r.message);
     if (name == QLatin1String("drive_stop")) {
-        stopDriving(*sub);
-        done({TargetOutcome{id.toStdString(), true, {}}});
+        // End of a drive session (release, focus loss, joystick loss, vehicle changed...): zeros, several
+        // times; the result says whether the first one left, and why the session ended.
+        const QString why = args.value(QStringLiteral("reason")).toString();
+        if (QTimer* t = m_driveTimers.take(*sub)) {
+            t->stop();
+            t->deleteLater();
+        }
+        m_sessions.remove(*sub);
+        if (refuseIfNotRunning(id, done))
+            return;
+        m_stack->stopDriving(*sub, [why, done = std::move(done)](std::vector<TargetOutcome> o) {
+            if (!why.isEmpty())
+                for (TargetOutcome& t : o)
+                    if (t.sent)
+                        t.note = "session ended: " + why.toStdString();
+            done(std::move(o));
+        });
+        return;
+    }
+    if (name == QLatin1String("drive_start")) {
+        // A teleop session (issue 13 §9): one gate command (and audit line) per session, not per message.
+        if (auto r = refuseDriving(*sub); !r.ok)
+            return refuse(r.message);
+        startSession(*sub, std::move(done));
         return;
     }
     static const QStringList kOverTheLink{QStringLiteral("request_control"), QStringLiteral("resume"),
@@ -576,9 +705,9 @@ void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCa
         return m_stack->shutdown(*sub, std::move(done));
     if (name == QLatin1String("reset"))
         return m_stack->reset(*sub, std::move(done));
-    // The drive stream has no single outcome: each demand is refreshed at the drive rate and the stack zeroes
-    // a stale one; what is reported is that the checks passed and the session was started.
-    const TargetOutcome posted{id.toStdString(), true, {}};
+    // A timed drive (headless): the session opens if needed, and the result says whether the demand itself
+    // was taken by the socket; the demand is then refreshed at the drive rate (the stack zeroes a stale one)
+    // and the session ends with zeros after `duration`.
     if (name == QLatin1String("drive")) {
         JausDrive c;
         const QString mode = args.value(QStringLiteral("mode")).toString(QStringLiteral("velocity"));
@@ -592,9 +721,11 @@ void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCa
             return refuse(tr("drive: \"duration\" must be between 0 and 60 seconds"));
         if (c.mode == JausDrive::Mode::Wrench && (std::abs(c.linear) > 100 || std::abs(c.angular) > 100))
             return refuse(tr("drive: effort must be within ±100 %"));
-        auto r = drive(*sub, c);
-        if (!r.ok)
+        if (auto r = refuseDriving(*sub); !r.ok)
             return refuse(r.message);
+        if (!m_sessions.contains(*sub))
+            startSession(*sub, [](std::vector<TargetOutcome>) {}); // the demand's outcome tells
+        m_stack->setDriveCommand(*sub, toDriveCommand(c), std::move(done));
         // The demand is refreshed at the drive rate for the duration (the stack zeroes a stale demand),
         // then the session stops with zeros.
         QTimer*& t = m_driveTimers[*sub];
@@ -610,7 +741,7 @@ void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCa
                 stopDriving(s);
         });
         t->start(static_cast<int>(1000.0 / std::max(1.0, m_config.driveRateHz)));
-        return done({posted});
+        return;
     }
     FleetBridge::command(name, args, std::move(done));
 }

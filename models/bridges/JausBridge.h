@@ -10,6 +10,7 @@
 #include "protocols/jaus/JausTypes.h"
 
 #include <QHash>
+#include <QSet>
 #include <QTimer>
 
 #include <map>
@@ -43,6 +44,10 @@ public:
     // request_control, release_control, release_all, drive, drive_stop, resume, standby, shutdown, reset.
     void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
     bool reportsStopped(const QString& target) const override;
+    // clear_stop (the vehicle reports no EMERGENCY), request_control / release_control (ReportControl /
+    // ConfirmControl as the vehicle reports them).
+    bool confirmsCommand(const QString& action) const override;
+    bool reportsConfirmed(const QString& action, const QString& target) const override;
 
     CommandResult drive(quint16 subsystem, const JausDrive& command) override;
     CommandResult stopDriving(quint16 subsystem) override;
@@ -56,6 +61,12 @@ private:
     CommandResult refuseIfUnreachable(quint16 subsystem, const QString& what) const;
     // True (and `done` called with the refusal) when the stack is not running: it would never answer.
     bool refuseIfNotRunning(const QString& target, OutcomeCallback& done) const;
+    // Why the console may not drive `subsystem` now (role, stack, link, control); ok when it may.
+    CommandResult refuseDriving(quint16 subsystem) const;
+    // Opens a drive session in the stack (its first zero demand): `done` says whether it left.
+    void startSession(quint16 subsystem, OutcomeCallback done);
+    // Every vehicle this console knows: heard (now or earlier) or configured as a static endpoint.
+    QList<quint16> knownSubsystems() const;
 
     jaus::JausConfig m_config;
     GeoFrame m_frame;
@@ -63,6 +74,7 @@ private:
     TelemetryCoalescer<std::uint16_t, jaus::SubsystemSnapshot> m_snapshots;
     QHash<std::uint16_t, JausVehicle> m_latest;
     QHash<std::uint16_t, QTimer*> m_driveTimers;
+    QSet<quint16> m_sessions; // drive sessions opened through the gate (or a headless "drive")
     // io thread only
     std::map<std::uint16_t, bool> m_linkUp;
     ocu::LinkState m_publishedLink = ocu::LinkState::Unknown;

@@ -38,9 +38,14 @@ QString OsyrisBridge::start() {
 }
 
 void OsyrisBridge::stop() {
+    const bool wasRunning = m_running;
     m_running = false;
     if (m_station)
         m_station->stop();
+    if (wasRunning) {
+        m_linkUp = false; // a restart publishes "up" again when a station is heard
+        publishStackStopped(tr("OSYRIS station stopped"));
+    }
 }
 
 osyris::PassCountSummary OsyrisBridge::passCountSummary() const {
@@ -222,9 +227,10 @@ void OsyrisBridge::command(const QString& name, const QJsonObject& args, Outcome
             return done({refusal(target, tr("ping: \"idx\" must be a station index 0-253"))});
         if (const QString why = linkRefusal(name); !why.isEmpty())
             return done({refusal(target, why)});
-        // Queued for the next Beat; the PONG (an event with the round trip) shows the effect.
-        m_station->ping(static_cast<std::uint8_t>(idx));
-        return done({TargetOutcome{"osyris:" + std::to_string(idx), true, {}}});
+        // Sent at once as its own datagram; the outcome says whether the socket took it, the PONG (an event
+        // with the round trip) shows the effect.
+        m_station->ping(static_cast<std::uint8_t>(idx), std::move(done));
+        return;
     }
     FleetBridge::command(name, args, std::move(done));
 }

@@ -30,15 +30,23 @@ public:
     virtual QList<quint16> subsystems() const = 0;
     virtual std::optional<JausVehicle> subsystem(quint16 id) const = 0;
 
-    // Drive stream for teleop (GUI thread): opens the session on first use; refused unless this console
-    // controls the vehicle.
+    // Drive stream for teleop (GUI thread). The session is opened and closed through the CommandGate
+    // (commands "drive_start" and "drive_stop" {"id", "reason"}: audited, with what went on the wire); this
+    // carries the demands of an open session at the drive rate, without one audit line per message. Refused
+    // (nothing posted, the reason in the result) without an open session, control of the vehicle, a running
+    // stack or a link; ok = the demand was handed to the stream. A stream message the socket does not take
+    // is reported by driveProblem() (and an event), once per failing streak.
     virtual CommandResult drive(quint16 subsystem, const JausDrive& command) = 0;
-    // Closes the session with zero demands, several times.
+    // Closes the session with zero demands, several times, without the gate (last resort when the gate is
+    // gone, e.g. while the window is destroyed).
     virtual CommandResult stopDriving(quint16 subsystem) = 0;
 
 signals:
     void subsystemUpdated(const ocu::JausVehicle& vehicle);
     void jausEvent(const ocu::JausVehicleEvent& event);
+    // The drive stream to `subsystem` stopped reaching the socket (failing = true, `text` says why) or goes
+    // out again (failing = false).
+    void driveProblem(quint16 subsystem, const QString& text, bool failing);
 };
 
 } // namespace ocu

@@ -1,5 +1,7 @@
 #include "protocols/jaus/JausCore.h"
 
+#include <set>
+
 namespace ocu::jaus {
 
 JausCore::JausCore(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock,
@@ -90,8 +92,35 @@ void JausCore::tick() {
 
 std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code) {
     std::vector<TargetOutcome> out;
-    for (std::uint16_t ss : subsystems())
-        out.push_back(outcome(ss, setEmergency(ss, code)));
+    const TimePoint now = m_ctx.now();
+    std::set<std::uint16_t> named;
+    for (std::uint16_t ss : subsystems()) {
+        named.insert(ss);
+        TargetOutcome o = outcome(ss, setEmergency(ss, code));
+        // A vehicle whose link is down still gets the stop at its last address (it may hear us even if we do
+        // not hear it); the result says so, and that its confirmation can only come when it is back.
+        if (const RemoteSubsystem* r = m_ctx.find(ss); o.sent && r && r->snap.link == LinkState::Down) {
+            const auto downS = std::chrono::duration_cast<std::chrono::seconds>(now - r->snap.lastMessage);
+            const std::string where =
+                m_ctx.endpointOf(r->managementTarget().subsystem ? r->managementTarget() : JausId{ss, 1, 1});
+            o.note = "link down (nothing heard for " + std::to_string(downS.count()) +
+                     " s): SetEmergency sent to its last address" + (where.empty() ? "" : " " + where) +
+                     "; no answer expected until it is back, confirmation pending";
+        }
+        out.push_back(std::move(o));
+    }
+    // Configured static endpoints never heard: the stop goes to every component of the subsystem at the
+    // configured address, so a vehicle that cannot be discovered (no multicast) is still stopped.
+    for (const StaticEndpoint& se : config().transport.staticEndpoints) {
+        const std::uint16_t ss = se.id.subsystem;
+        if (ss == 0 || ss == 0xFFFF || ss == config().subsystemId || !named.insert(ss).second)
+            continue;
+        TargetOutcome o = outcome(ss, m_management.setEmergencyUnheard(ss, code));
+        if (o.sent)
+            o.note = "configured static endpoint, never heard: SetEmergency sent to " + se.address + ":" +
+                     std::to_string(se.port) + "; confirmation pending";
+        out.push_back(std::move(o));
+    }
     return out;
 }
 

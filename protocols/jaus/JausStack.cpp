@@ -191,6 +191,15 @@ void JausStack::shutdown(std::uint16_t ss, OutcomeCallback done) {
 void JausStack::reset(std::uint16_t ss, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.reset(ss));
 }
+void JausStack::startDriving(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.startDriving(ss));
+}
+void JausStack::setDriveCommand(std::uint16_t ss, DriveCommand c, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.setDriveCommand(ss, c));
+}
+void JausStack::stopDriving(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.stopDriving(ss));
+}
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
     d->post([=, done = std::move(done)] { done(d->core.setEmergencyAll(code)); });

@@ -54,6 +54,11 @@ public:
     void reset(std::uint16_t subsystem, OutcomeCallback done);
     // STOP ALL: SetEmergency to every discovered subsystem (controlled by this console or not).
     void setEmergencyAll(EmergencyCode code, OutcomeCallback done);
+    // The drive session with its outcome: sent when the socket took the session's first (zero) demand, the
+    // demand itself (or, unchanged, the stream's latest message), the first of the zero commands.
+    void startDriving(std::uint16_t subsystem, OutcomeCallback done);
+    void setDriveCommand(std::uint16_t subsystem, DriveCommand command, OutcomeCallback done);
+    void stopDriving(std::uint16_t subsystem, OutcomeCallback done);
 
     // Fault injection on what the OCU sends (e.g. loss = 1: the OCU falls silent). Tests and ocu-sim drills.
     void setTransmitFaults(double loss, int delayMs = 0);

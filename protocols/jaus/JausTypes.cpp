@@ -66,6 +66,8 @@ const char* toString(EventKind k) {
         return "command-refused";
     case EventKind::TransportError:
         return "transport-error";
+    case EventKind::DriveNotSent:
+        return "drive-not-sent";
     }
     return "?";
 }

@@ -78,7 +78,8 @@ enum class EventKind {
     HealthFault,
     DecodeError,
     CommandRefused,
-    TransportError
+    TransportError,
+    DriveNotSent // a drive stream message was not taken by the socket (issue 13 §9), or the stream recovered
 };
 const char* toString(EventKind k);
 

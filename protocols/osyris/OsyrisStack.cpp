@@ -151,6 +151,24 @@ void OsyrisStack::ping(std::uint8_t idx) {
     m_impl->io.post([this, idx] { m_impl->core->ping(idx); });
 }
 
+void OsyrisStack::ping(std::uint8_t idx, OutcomeCallback done) {
+    const std::string target = "osyris:" + std::to_string(idx);
+    if (!m_impl->running) {
+        done({TargetOutcome{target, false, "the OSYRIS station is not running"}});
+        return;
+    }
+    m_impl->io.post([this, idx, target, done = std::move(done)] {
+        TargetOutcome o{target, false, "the OSYRIS station is not running"};
+        if (m_impl->running && m_impl->transport) {
+            m_impl->lastSendOk = false;
+            m_impl->core->pingNow(idx);
+            o.sent = m_impl->lastSendOk;
+            o.reason = o.sent ? std::string() : "socket error: " + m_impl->transport->lastError();
+        }
+        done({std::move(o)});
+    });
+}
+
 void OsyrisStack::publishOwnPosition(CmPos p, std::vector<PosProp> props) {
     if (!m_impl->running)
         return;

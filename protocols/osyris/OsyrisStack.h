@@ -41,6 +41,9 @@ public:
         return "osyris group " + m_cfg.group + ":" + std::to_string(m_cfg.port);
     }
     void ping(std::uint8_t idx);
+    // A ping as its own datagram at once, with its outcome: one TargetOutcome "osyris:<idx>", sent when the
+    // socket took it (the PONG, an event with the round trip, is the confirmation). Threads as sendText.
+    void ping(std::uint8_t idx, OutcomeCallback done);
     // For stations that are machines (simulated rollers): write a position into the own ribbon.
     void publishOwnPosition(CmPos p, std::vector<PosProp> props = {});
     void setImpairment(const RxImpairment& imp);

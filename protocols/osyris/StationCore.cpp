@@ -148,6 +148,18 @@ void StationCore::ping(std::uint8_t target) {
     m_counters.add("tx.ping");
 }
 
+void StationCore::pingNow(std::uint8_t target) {
+    auto own = ownPosition();
+    m_pings[target] = m_clock.now();
+    Bytes b;
+    encodeRequest(b, idx(), target, {RequestType::Ping, 0, 0, own ? own->x : 0.f, own ? own->y : 0.f},
+                  m_cfg.checksum);
+    m_counters.add("tx.ping");
+    m_counters.add("tx.datagrams");
+    m_counters.add("tx.bytes", b.size());
+    m_send(b);
+}
+
 std::string StationCore::nameOf(std::uint8_t owner) const {
     auto it = m_cfg.machineNames.find(owner);
     return it == m_cfg.machineNames.end() ? std::string() : it->second;

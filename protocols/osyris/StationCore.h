@@ -91,6 +91,9 @@ public:
     // An operator text (the console's STOP among them) as its own datagram at once, not with the next Beat.
     void sendText(const std::string& text, std::uint8_t to = kIdxAll);
     void ping(std::uint8_t idx);
+    // The same request as its own datagram at once (an operator's ping, whose send result is then this
+    // request's alone; §7 binds only Alive to the Beat).
+    void pingNow(std::uint8_t idx);
 
     std::uint8_t idx() const { return m_cfg.stationIndex; }
     const OsyrisConfig& config() const { return m_cfg; }

@@ -11,6 +11,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
+
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -188,10 +190,18 @@ private slots:
             20000));
     }
     // Issue 13 acceptance: every link down -> "ok": false, one target per link, a reason each.
+    // Issue 13 acceptance: with every link down, stop_all answers ok:false with one target per machine /
+    // link, each saying what happened. JAUS names every vehicle it knows: FOREIGN-126 (a foreign vehicle
+    // heard, then out of range: SetEmergency still goes to its last address, sent, with a note that its
+    // confirmation is pending) and subsystem 127 (a static endpoint never heard: sent to the configured
+    // address, noted); the ISO 23725 link and the OSYRIS group are not sent, each with its reason.
     void stopAllWithEveryLinkDownSaysSoPerTarget() {
         QTemporaryDir dir;
         const int jausPort = freePort(SOCK_DGRAM, 40000), osyPort = freePort(SOCK_DGRAM, 50000),
-                  ahsPort = freePort(SOCK_STREAM, 40000);
+                  ahsPort = freePort(SOCK_STREAM, 40000), silentPort = freePort(SOCK_DGRAM, 45000);
+        foreign::VehicleOptions vo;
+        vo.subsystem = 126;
+        foreign::ForeignJausVehicle vehicle(vo);
         const QString cfg = dir.filePath("down.json");
         QFile f(cfg);
         QVERIFY(f.open(QIODevice::WriteOnly));
@@ -206,7 +216,14 @@ private slots:
                                  {"port", 0},
                                  {"multicast_port", jausPort},
                                  {"multicast_group", "239.255.42.99"},
-                                 {"interface_address", "127.0.0.1"}}},
+                                 {"interface_address", "127.0.0.1"},
+                                 {"link_lost_s", 1.0},
+                                 {"static_endpoints", QJsonArray{QJsonObject{{"subsystem", 126},
+                                                                             {"address", "127.0.0.1"},
+                                                                             {"port", int(vehicle.port())}},
+                                                                 QJsonObject{{"subsystem", 127},
+                                                                             {"address", "127.0.0.1"},
+                                                                             {"port", silentPort}}}}}},
             {"iso23725",
              QJsonObject{{"links", QJsonArray{QJsonObject{
                                        {"name", "ahs"},
@@ -223,47 +240,67 @@ private slots:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.remove("DISPLAY");
         p.setProcessEnvironment(env);
-        p.start(OCU_BINARY, {"--config", cfg, "--no-sim", "--headless", "--duration", "60"});
+        p.start(OCU_BINARY, {"--config", cfg, "--no-sim", "--headless", "--duration", "90"});
         QVERIFY(p.waitForStarted(10000));
+        QByteArray buf;
+        auto readUntil = [&](auto pred, int ms) {
+            QElapsedTimer t;
+            t.start();
+            while (t.elapsed() < ms && p.state() == QProcess::Running) {
+                p.waitForReadyRead(100);
+                buf += p.readAllStandardOutput();
+                int nl;
+                while ((nl = buf.indexOf('\n')) >= 0) {
+                    const QJsonObject o = QJsonDocument::fromJson(buf.left(nl)).object();
+                    buf.remove(0, nl + 1);
+                    if (pred(o))
+                        return o;
+                }
+            }
+            return QJsonObject();
+        };
+        auto machineLink = [](const char* link) {
+            return [link](const QJsonObject& o) {
+                return o.value("type") == "machine" && o.value("id") == "jaus:126" && o.value("link") == link;
+            };
+        };
+        // The vehicle is heard (through the static endpoint), then goes out of range: its link goes down.
+        QVERIFY2(!readUntil(machineLink("up"), 30000).isEmpty(), "FOREIGN-126 never came up");
+        vehicle.setOffline(true);
+        QVERIFY2(!readUntil(machineLink("down"), 30000).isEmpty(), "FOREIGN-126 never went down");
         p.write(R"({"cmd":"stop_all","req":99})"
                 "\n");
-        QJsonObject r;
-        QByteArray buf;
-        QElapsedTimer t;
-        t.start();
-        while (r.isEmpty() && t.elapsed() < 30000 && p.state() == QProcess::Running) {
-            p.waitForReadyRead(100);
-            buf += p.readAllStandardOutput();
-            int nl;
-            while ((nl = buf.indexOf('\n')) >= 0) {
-                const QJsonObject o = QJsonDocument::fromJson(buf.left(nl)).object();
-                buf.remove(0, nl + 1);
-                if (o.value("type") == "result" && o.value("req").toInt() == 99)
-                    r = o;
-            }
-        }
+        const QJsonObject r = readUntil(
+            [](const QJsonObject& o) { return o.value("type") == "result" && o.value("req").toInt() == 99; },
+            30000);
         p.terminate();
         p.waitForFinished(10000);
         QVERIFY2(!r.isEmpty(), p.readAllStandardError().constData());
         const QByteArray text = QJsonDocument(r).toJson();
         QCOMPARE(r.value("ok").toBool(), false);
-        QStringList ids;
-        for (const auto& v : r.value("targets").toArray()) {
-            const QJsonObject o = v.toObject();
-            QVERIFY2(!o.value("sent").toBool(), text.constData());
-            QVERIFY2(!o.value("reason").toString().isEmpty(), text.constData());
-            ids << o.value("id").toString();
+        QMap<QString, QJsonObject> byId;
+        for (const auto& v : r.value("targets").toArray())
+            byId.insert(v.toObject().value("id").toString(), v.toObject());
+        QCOMPARE(byId.keys(), QStringList({"iso23725 link ahs", "jaus:126", "jaus:127",
+                                           QString("osyris group 239.255.42.98:%1").arg(osyPort)}));
+        for (const QString& id : {QString("iso23725 link ahs"), byId.lastKey()}) {
+            QVERIFY2(!byId[id].value("sent").toBool(), text.constData());
+            QVERIFY2(!byId[id].value("reason").toString().isEmpty(), text.constData());
         }
-        ids.sort();
-        QCOMPARE(ids, QStringList({"iso23725 link ahs", "jaus",
-                                   QString("osyris group 239.255.42.98:%1").arg(osyPort)}));
+        QVERIFY2(byId["jaus:126"].value("sent").toBool(), text.constData());
+        QVERIFY2(byId["jaus:126"].value("note").toString().contains("link down"), text.constData());
+        QVERIFY2(byId["jaus:126"].value("note").toString().contains("confirmation pending"),
+                 text.constData());
+        QVERIFY2(byId["jaus:127"].value("sent").toBool(), text.constData());
+        QVERIFY2(byId["jaus:127"].value("note").toString().contains("never heard"), text.constData());
         // The audit log records the same truth.
         QFile audit(dir.filePath("audit.jsonl"));
         QVERIFY(audit.open(QIODevice::ReadOnly));
         const QJsonObject a = QJsonDocument::fromJson(audit.readAll().trimmed().split('\n').last()).object();
         QCOMPARE(a.value("action").toString(), QString("stop_all"));
         QCOMPARE(a.value("ok").toBool(), false);
-        QCOMPARE(a.value("targets").toArray().size(), 3);
+        QCOMPARE(a.value("targets").toArray().size(), 4);
+        QCOMPARE(a.value("targets").toArray(), r.value("targets").toArray());
     }
     void cleanupTestCase() {
         m_p.closeWriteChannel();

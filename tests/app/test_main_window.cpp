@@ -125,7 +125,16 @@ private slots:
 
         // Issue 13 §1: with the stacks gone nothing can be sent; the window says so loudly, naming each
         // target.
+        // Before the stop the link indicators showed the stacks up; once the runtime stopped them they show
+        // down, said by the stack's own state (not the last report of a link that no longer exists).
+        for (const char* p : {"JAUS", "ISO 23725", "OSYRIS"})
+            QTRY_COMPARE_WITH_TIMEOUT(window.linkIndicator(p)->state(), LinkIndicator::State::Up, 10000);
         runtime.stop();
+        for (const char* p : {"JAUS", "ISO 23725", "OSYRIS"}) {
+            QTRY_COMPARE_WITH_TIMEOUT(window.linkIndicator(p)->state(), LinkIndicator::State::Down, 5000);
+            QVERIFY2(window.linkIndicator(p)->toolTip().contains(QLatin1String("stopped")),
+                     qPrintable(window.linkIndicator(p)->toolTip()));
+        }
         finished.clear();
         QTest::mouseClick(window.stopAllButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 20000);

@@ -18,6 +18,14 @@ using namespace ocu;
 using ocu::testing::gateResult;
 
 namespace {
+bool hasTimeoutAlarm(const AlarmModel& alarms, const QString& machine) {
+    for (int i = 0; i < alarms.rowCount(); ++i)
+        if (alarms.eventAt(i).kind == EventKind::Timeout && alarms.eventAt(i).machineId == machine &&
+            alarms.eventAt(i).severity == EventSeverity::Alarm)
+            return true;
+    return false;
+}
+
 MachineState machine(const QString& id) {
     MachineState m;
     m.id = id;
@@ -26,6 +34,17 @@ MachineState machine(const QString& id) {
     m.stop = StopState::None;
     return m;
 }
+// A bridge that confirms control commands through its machines' reports (commandReported), like JausBridge.
+class ConfirmingBridge : public FakeFleetBridge {
+public:
+    using FakeFleetBridge::FakeFleetBridge;
+    bool confirmsCommand(const QString& action) const override {
+        return action == QLatin1String("request_control") || action == QLatin1String("clear_stop");
+    }
+    bool reportsConfirmed(const QString& action, const QString& target) const override {
+        return action == QLatin1String("clear_stop") && target == QLatin1String("jaus:9"); // already clear
+    }
+};
 } // namespace
 
 class TestStopAlarms : public QObject {
@@ -157,6 +176,55 @@ private slots:
                               alarms.eventAt(i).severity == EventSeverity::Alarm);
         QVERIFY(alarm);
         QVERIFY(stop.awaitingConfirmation().isEmpty());
+    }
+
+    // Issue 13 §1 beyond stops: a confirmed command is watched until the machine's own report answers it
+    // (an event with the latency); none within the confirmation time raises a Timeout alarm. A command the
+    // bridge does not confirm (drive_start) is not watched.
+    void commandConfirmationLatencyAndAlarm() {
+        AlarmModel alarms;
+        CommandGate gate(&alarms);
+        gate.setConfirmTimeoutMs(300);
+        ConfirmingBridge jaus(Protocol::Jaus);
+        gate.addBridge(&jaus);
+        for (const char* id : {"jaus:1", "jaus:2", "jaus:9"})
+            jaus.setMachine(machine(QString::fromLatin1(id)));
+        QCoreApplication::processEvents();
+        QSignalSpy confirmed(&gate, &CommandGate::commandConfirmed);
+        QSignalSpy unconfirmed(&gate, &CommandGate::commandUnconfirmed);
+        for (const char* id : {"jaus:1", "jaus:2"})
+            QVERIFY(gateResult([&](auto h) {
+                        gate.command(QStringLiteral("request_control"), {{"id", QString::fromLatin1(id)}},
+                                     QStringLiteral("gui"), h);
+                    }).ok);
+        QVERIFY(gateResult([&](auto h) {
+                    gate.command(QStringLiteral("drive_start"), {{"id", "jaus:1"}}, QStringLiteral("gui"), h);
+                }).ok);
+        QCOMPARE(gate.awaitingCommandConfirmation().size(), 2);
+        emit jaus.commandReported(QStringLiteral("request_control"), QStringLiteral("jaus:1"),
+                                  QStringLiteral("UGV-1 confirms control by this console"));
+        QCOMPARE(confirmed.count(), 1);
+        QCOMPARE(confirmed.first().at(1).toString(), QStringLiteral("jaus:1"));
+        QVERIFY(confirmed.first().at(2).toString().startsWith(
+            QStringLiteral("UGV-1 confirms control by this console ")));
+        QVERIFY(confirmed.first().at(2).toString().endsWith(QStringLiteral("ms after the command")));
+        // A report nobody waits for (another action, another machine) changes nothing.
+        emit jaus.commandReported(QStringLiteral("release_control"), QStringLiteral("jaus:2"),
+                                  QStringLiteral("x"));
+        QCOMPARE(confirmed.count(), 1);
+        QTRY_COMPARE_WITH_TIMEOUT(unconfirmed.count(), 1, 20000);
+        QCOMPARE(unconfirmed.first().at(0).toString(), QStringLiteral("request_control"));
+        QCOMPARE(unconfirmed.first().at(1).toString(), QStringLiteral("jaus:2"));
+        QVERIFY(hasTimeoutAlarm(alarms, QStringLiteral("jaus:2")));
+        QVERIFY(!hasTimeoutAlarm(alarms, QStringLiteral("jaus:1")));
+        QVERIFY(gate.awaitingCommandConfirmation().isEmpty());
+        // Already showing the effect: confirmed at once.
+        QVERIFY(gateResult([&](auto h) {
+                    gate.clearStop(QStringLiteral("jaus:9"), gate.requestClearToken(QStringLiteral("jaus:9")),
+                                   QStringLiteral("gui"), h);
+                }).ok);
+        QCOMPARE(confirmed.count(), 2);
+        QVERIFY(gate.awaitingCommandConfirmation().isEmpty());
     }
 
     void stopNeedsNoConfirmationButReleaseDoes() {

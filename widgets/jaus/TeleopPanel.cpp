@@ -33,7 +33,7 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
       m_live(new QLabel(this)), m_device(new QLabel(this)), m_mode(new QComboBox(this)),
       m_limit(new QSlider(Qt::Horizontal, this)), m_limitLabel(new QLabel(this)),
       m_estop(new QPushButton(tr("E-STOP"), this)),
-      m_clear(new HoldToConfirmButton(tr("Hold to clear emergency"), this)) {
+      m_clear(new HoldToConfirmButton(tr("Hold to clear emergency"), this)), m_problem(new QLabel(this)) {
     setObjectName(QStringLiteral("teleop-panel"));
     setFocusPolicy(Qt::StrongFocus);
     m_controller->setRateHz(bridge->identity().driveRateHz);
@@ -111,6 +111,11 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     l->addWidget(m_title);
     l->addWidget(m_state);
     l->addWidget(m_live);
+    m_problem->setObjectName(QStringLiteral("label-drive-problem"));
+    m_problem->setWordWrap(true);
+    m_problem->setStyleSheet(QStringLiteral("color:#c81e1e; font-weight:bold;"));
+    m_problem->hide();
+    l->addWidget(m_problem);
     l->addLayout(inputs, 1);
     auto* stops = new QHBoxLayout;
     stops->addWidget(m_estop, 2);
@@ -120,6 +125,21 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     connect(m_stick, &VirtualStick::axesChanged, m_controller, &TeleopController::setStick);
     connect(m_controller, &TeleopController::command, this, &TeleopPanel::onCommand);
     connect(m_controller, &TeleopController::command, m_axes, &AxisDisplay::setMapped);
+    // Zero on release, focus loss, joystick loss...: the controller sends the zero demand at once, then the
+    // session ends through the gate (the stack sends zeros several times).
+    connect(m_controller, &TeleopController::stopped, this, [this](const QString& reason) {
+        if (m_session != Session::Closed)
+            endSession(reason);
+    });
+    connect(bridge, &JausVehicleBridge::driveProblem, this,
+            [this](quint16 subsystem, const QString& text, bool failing) {
+                if (subsystem != m_subsystem)
+                    return;
+                if (failing)
+                    showDriveProblem(text);
+                else
+                    showDriveProblem({});
+            });
     m_inputDevice = device;
     if (device) {
         m_controller->setDevice(device);
@@ -156,7 +176,14 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
 }
 
 TeleopPanel::~TeleopPanel() {
-    if (m_subsystem && m_sessionOpen)
+    if (!m_subsystem || m_session == Session::Closed)
+        return;
+    if (m_gate) // no handler: this panel is going away
+        m_gate->command(QStringLiteral("drive_stop"),
+                        {{QStringLiteral("id"), JausVehicleBridge::machineId(m_subsystem)},
+                         {QStringLiteral("reason"), tr("teleop panel closed")}},
+                        QStringLiteral("teleop"));
+    else
         m_bridge->stopDriving(m_subsystem);
 }
 
@@ -164,11 +191,67 @@ void TeleopPanel::setVehicle(std::uint16_t subsystem) {
     if (subsystem == m_subsystem)
         return;
     m_controller->releaseAll(tr("vehicle changed"));
-    if (m_subsystem && m_sessionOpen)
-        m_bridge->stopDriving(m_subsystem);
-    m_sessionOpen = false;
+    if (m_subsystem && m_session != Session::Closed)
+        endSession(tr("vehicle changed"));
     m_subsystem = subsystem;
+    showDriveProblem({});
     refresh();
+}
+
+QString TeleopPanel::driveProblem() const {
+    return m_problem->isVisible() || !m_problem->text().isEmpty() ? m_problem->text() : QString();
+}
+
+void TeleopPanel::showDriveProblem(const QString& text) {
+    m_problem->setText(text);
+    m_problem->setVisible(!text.isEmpty());
+}
+
+void TeleopPanel::startSession() {
+    if (!m_gate) {
+        showDriveProblem(tr("no command gate: driving is not possible"));
+        return;
+    }
+    m_session = Session::Opening;
+    const quint16 sub = m_subsystem;
+    QPointer<TeleopPanel> self(this);
+    m_gate->command(QStringLiteral("drive_start"),
+                    {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)},
+                     {QStringLiteral("reason"), tr("teleop input")}},
+                    QStringLiteral("teleop"), [self, sub](const CommandResult& r) {
+                        if (!self || self->m_subsystem != sub || self->m_session != Session::Opening)
+                            return; // ended (and closed through the gate) before the start's result came
+                        if (!r.ok) {
+                            self->m_session = Session::Closed;
+                            self->m_waitForRelease = true;
+                            self->showDriveProblem(tr("Drive session NOT started: %1")
+                                                       .arg(r.notSent().isEmpty()
+                                                                ? r.message
+                                                                : r.notSent().join(QStringLiteral("; "))));
+                            return;
+                        }
+                        self->m_session = Session::Open;
+                        self->showDriveProblem({});
+                        self->onCommand(self->m_controller->demand()); // the demand held meanwhile
+                    });
+}
+
+void TeleopPanel::endSession(const QString& reason) {
+    m_session = Session::Closed;
+    if (!m_gate) {
+        m_bridge->stopDriving(m_subsystem);
+        return;
+    }
+    QPointer<TeleopPanel> self(this);
+    const quint16 sub = m_subsystem;
+    m_gate->command(
+        QStringLiteral("drive_stop"),
+        {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}, {QStringLiteral("reason"), reason}},
+        QStringLiteral("teleop"), [self, sub](const CommandResult& r) {
+            if (self && !r.ok && self->m_subsystem == sub)
+                self->showDriveProblem(tr("Drive session end: zero commands NOT sent: %1")
+                                           .arg(r.notSent().join(QStringLiteral("; "))));
+        });
 }
 
 bool TeleopPanel::velocityMode() const {
@@ -198,10 +281,25 @@ JausDrive TeleopPanel::toDriveCommand(DriveAxes a) const {
 void TeleopPanel::onCommand(DriveAxes axes) {
     if (!m_subsystem)
         return;
-    if (axes.isZero() && !m_sessionOpen)
+    switch (m_session) {
+    case Session::Closed:
+        if (axes.isZero())
+            m_waitForRelease = false;
+        else if (!m_waitForRelease)
+            startSession(); // the demand follows once the gate says the session is open
         return;
+    case Session::Opening:
+        return; // the controller holds the demand; it goes out when the session is open
+    case Session::Open:
+        break;
+    }
+    // The stream itself: one message per period, no audit line each; a refusal ends the session loudly.
     const auto r = m_bridge->drive(m_subsystem, toDriveCommand(axes));
-    m_sessionOpen = r.ok;
+    if (!r.ok) {
+        showDriveProblem(tr("Driving stopped: %1").arg(r.message));
+        m_waitForRelease = true;
+        endSession(r.message);
+    }
 }
 
 void TeleopPanel::emergencyStop() {
@@ -249,7 +347,18 @@ void TeleopPanel::refresh() {
     const bool may = me.mayControl;
     const bool ours = s->controlledByUs;
     const bool up = s->link == JausLink::Up;
-    m_controller->setEnabled(may && ours && up && !s->emergency);
+    const bool canDrive = may && ours && up && !s->emergency;
+    if (!canDrive && m_session != Session::Closed) {
+        // The vehicle's own state ends the session: say why, loudly, and end it through the gate.
+        const QString why = !up            ? tr("the link to %1 is %2").arg(s->callSign, s->linkText)
+                            : s->emergency ? tr("%1 is in EMERGENCY").arg(s->callSign)
+                            : !ours        ? tr("this console no longer controls %1").arg(s->callSign)
+                                           : tr("driving is not allowed");
+        showDriveProblem(tr("Driving stopped: %1").arg(why));
+        m_waitForRelease = true;
+        endSession(why);
+    }
+    m_controller->setEnabled(canDrive);
     m_estop->setEnabled(me.mayStop);                      // any role may stop (the JAUS stop rule)
     m_clear->setEnabled(me.mayClearStop && s->emergency); // only roles with command rights may clear
     QStringList state;

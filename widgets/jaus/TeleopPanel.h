@@ -40,6 +40,11 @@ public:
     VirtualStick* stick() const { return m_stick; }
     QPushButton* emergencyButton() const { return m_estop; }
     HoldToConfirmButton* clearEmergencyButton() const { return m_clear; }
+    // Why driving does not reach the vehicle right now (a session the gate could not start, a demand
+    // refused, a stream message the socket did not take); empty while all is well. Shown in red.
+    QString driveProblem() const;
+    // True while a drive session is open (started through the command gate and not ended).
+    bool sessionOpen() const { return m_session == Session::Open; }
     // The JAUS drive command for a normalised demand, with the current mode and platform limits.
     JausDrive toDriveCommand(DriveAxes axes) const;
     bool velocityMode() const;
@@ -59,6 +64,11 @@ private:
     void refresh();
     void emergencyStop();
     void onCommand(DriveAxes axes);
+    // Drive sessions go through the command gate (issue 13 §9): start at the first demand, end on release,
+    // focus loss, joystick loss, vehicle change, a refused demand; one audit line each.
+    void startSession();
+    void endSession(const QString& reason);
+    void showDriveProblem(const QString& text);
 
     JausVehicleBridge* m_bridge;
     QPointer<CommandGate> m_gate;
@@ -78,7 +88,12 @@ private:
     QLabel* m_limitLabel;
     QPushButton* m_estop;
     HoldToConfirmButton* m_clear;
-    bool m_sessionOpen = false;
+    enum class Session { Closed, Opening, Open };
+    Session m_session = Session::Closed;
+    // After a session failed or was ended by a refusal, a new one starts only once the input was released
+    // (no new session, and audit line, per 20 Hz demand while the operator still holds the stick).
+    bool m_waitForRelease = false;
+    QLabel* m_problem;
 };
 
 } // namespace ocu

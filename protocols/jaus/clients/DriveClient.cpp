@@ -28,7 +28,15 @@ bool DriveClient::startDriving(std::uint16_t ss) {
     s.lastSent = TimePoint{};
     s.lastUpdate = m_ctx.now();
     s.stale = false;
+    s.failureReported = false;
     m_ctx.changed(*r);
+    // The session's first message, a zero demand, goes out at once: the session is open on the wire when the
+    // socket took it (the periodic stream follows at the drive rate).
+    if (!r->mobility().subsystem)
+        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "a driver (PrimitiveDriver / VelocityStateDriver)"));
+    if (!send(*r, s, true))
+        return m_ctx.refuse(ss, "drive session for " + r->snap.callSign +
+                                    ": the first drive command was not sent: " + s.lastError);
     return true;
 }
 
@@ -60,6 +68,10 @@ bool DriveClient::setDriveCommand(std::uint16_t ss, DriveCommand c) {
     // A new demand goes out at once (teleop latency); the periodic stream repeats it.
     if (changed && r->mobility().subsystem)
         send(*r, s, false);
+    if (!r->mobility().subsystem)
+        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "a driver (PrimitiveDriver / VelocityStateDriver)"));
+    if (!s.lastSendOk)
+        return m_ctx.refuse(ss, "drive command for " + r->snap.callSign + " was not sent: " + s.lastError);
     return true;
 }
 
@@ -67,7 +79,15 @@ bool DriveClient::stopDriving(std::uint16_t ss) {
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r)
         return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
-    return stop(*r, m_state[ss]);
+    State& s = m_state[ss];
+    if (!stop(*r, s))
+        return m_ctx.refuse(ss, r->snap.controlledByUs
+                                    ? "the zero drive command for " + r->snap.callSign +
+                                          " was not sent: " + s.lastError
+                                    : "this console does not control " + r->snap.callSign +
+                                          ": no zero drive commands sent (the vehicle's own drive "
+                                          "timeout stops it)");
+    return true;
 }
 
 bool DriveClient::stop(RemoteSubsystem& r, State& s) {
@@ -75,13 +95,14 @@ bool DriveClient::stop(RemoteSubsystem& r, State& s) {
     // Several zero commands, never a single message (AEP-4818 §9 item 21).
     s.stopRepeatsLeft = r.snap.controlledByUs ? m_ctx.config().stopRepeats : 0;
     s.drive.linear = s.drive.angular = 0;
+    bool sent = false;
     if (s.stopRepeatsLeft > 0) {
-        send(r, s, true);
+        sent = send(r, s, true);
         --s.stopRepeatsLeft;
     }
     r.snap.driving = s.stopRepeatsLeft > 0;
     m_ctx.changed(r);
-    return true;
+    return sent;
 }
 
 void DriveClient::endSession(RemoteSubsystem& r, bool dropZeroTail) {
@@ -110,22 +131,41 @@ bool DriveClient::anyActive() const {
     return false;
 }
 
-void DriveClient::send(RemoteSubsystem& r, State& s, bool zero) {
+bool DriveClient::send(RemoteSubsystem& r, State& s, bool zero) {
     s.lastSent = m_ctx.now();
     const DriveCommand c = s.drive;
+    bool ok;
     if (c.mode == DriveCommand::Mode::Velocity) {
         VelocityCommand v;
         v.vx = zero ? 0.0 : c.linear;
         v.yawRate = zero ? 0.0 : c.angular;
-        m_ctx.send(r.mobility(), encodeVelocityCommand(msg::SetVelocityCommand, v));
+        ok = m_ctx.send(r.mobility(), encodeVelocityCommand(msg::SetVelocityCommand, v));
     } else {
         WrenchEffort w;
         w.propLinX = zero ? 0.0 : c.linear;
         w.propRotZ = zero ? 0.0 : c.angular;
         w.resLinX = zero ? 0.0 : c.brake;
-        m_ctx.send(r.mobility(), encodeWrench(msg::SetWrenchEffort, w));
+        ok = m_ctx.send(r.mobility(), encodeWrench(msg::SetWrenchEffort, w));
+    }
+    s.lastSendOk = ok;
+    s.lastError = ok ? std::string() : m_ctx.lastSendError();
+    if (!ok) {
+        m_ctx.counters().add("tx.drive.failed");
+        // The stream runs at the drive rate: one event per failing streak, not one per message.
+        if (!s.failureReported) {
+            s.failureReported = true;
+            m_ctx.notify(Severity::Error, EventKind::DriveNotSent, r.id(),
+                         "drive command for " + r.snap.callSign + " NOT sent: " + s.lastError);
+        }
+        return false;
     }
     m_ctx.counters().add("tx.drive");
+    if (s.failureReported) {
+        s.failureReported = false;
+        m_ctx.notify(Severity::Info, EventKind::DriveNotSent, r.id(),
+                     "drive commands for " + r.snap.callSign + " are going out again");
+    }
+    return true;
 }
 
 void DriveClient::tick(RemoteSubsystem& r, TimePoint now) {

@@ -5,6 +5,7 @@
 // stop_repeats zero commands, never a single message (AEP-4818 §9 item 21).
 #include <cstdint>
 #include <map>
+#include <string>
 
 #include "protocols/jaus/clients/ClientService.h"
 
@@ -18,7 +19,10 @@ public:
     void tick(RemoteSubsystem& remote, TimePoint now) override;
     void forget(std::uint16_t subsystem) override { m_state.erase(subsystem); }
 
-    // Commands; each returns false and emits CommandRefused when not allowed.
+    // Commands; each returns false and emits CommandRefused when not allowed. What they return says what went
+    // on the wire (issue 13 §1): startDriving sends a first zero demand at once and is true when the socket
+    // took it; setDriveCommand is true when its demand (sent at once when it changed) or, unchanged, the
+    // stream's latest message was taken; stopDriving is true when the first of the zero commands was taken.
     bool startDriving(std::uint16_t subsystem);
     bool setDriveCommand(std::uint16_t subsystem, DriveCommand command);
     bool stopDriving(std::uint16_t subsystem);
@@ -39,8 +43,12 @@ private:
         TimePoint lastSent{};
         TimePoint lastUpdate{}; // last setDriveCommand (drive command watchdog)
         bool stale = false;
+        bool lastSendOk = true;       // the latest drive message was taken by the socket
+        std::string lastError;        // why not, when it was not
+        bool failureReported = false; // one event per failing streak, one when it recovers
     };
-    void send(RemoteSubsystem& remote, State& state, bool zero);
+    // True when the socket took the message; a failure (and the recovery after it) is an event.
+    bool send(RemoteSubsystem& remote, State& state, bool zero);
     bool stop(RemoteSubsystem& remote, State& state);
 
     std::map<std::uint16_t, State> m_state;

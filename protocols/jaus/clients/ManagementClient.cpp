@@ -67,6 +67,12 @@ bool ManagementClient::setEmergency(std::uint16_t ss, EmergencyCode code) {
     return true;
 }
 
+bool ManagementClient::setEmergencyUnheard(std::uint16_t ss, EmergencyCode code) {
+    if (!sendEmergency(JausId{ss, 0xFF, 0xFF}, code))
+        return m_ctx.sendFailed(ss, "SetEmergency");
+    return true;
+}
+
 bool ManagementClient::clearEmergency(std::uint16_t ss) {
     if (!m_ctx.config().mayClearStop())
         return m_ctx.refuse(ss,

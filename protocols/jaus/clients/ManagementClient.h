@@ -30,6 +30,9 @@ public:
     // id: msg::Resume, Standby, Shutdown or Reset; what names it in the refusal.
     bool command(std::uint16_t subsystem, std::uint16_t id, const char* what);
     bool setEmergency(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety);
+    // STOP ALL to a subsystem configured as a static endpoint and never heard (issue 13 §2/§3): SetEmergency
+    // to all of its components (ss.255.255) at the configured address. True when the socket took it.
+    bool setEmergencyUnheard(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety);
     bool clearEmergency(std::uint16_t subsystem);
 
 private:

@@ -123,6 +123,29 @@ private slots:
                 QVERIFY(!std::holds_alternative<CmMsg>(m.body));
     }
 
+    // Issue 13 §1: the operator's ping leaves at once as its own datagram, so its outcome is this request's.
+    void pingLeavesAtOnce() {
+        FakeClock clock;
+        auto store = RibbonStore::inMemory();
+        OsyrisConfig cfg;
+        cfg.stationIndex = 4;
+        cfg.beatMs = 100;
+        std::vector<Bytes> sent;
+        StationCore core(cfg, clock, *store, nullptr, nullptr, [&](const Bytes& d) { sent.push_back(d); });
+        core.start();
+        clock.advance(std::chrono::milliseconds(100));
+        core.tick();
+        sent.clear();
+        clock.advance(std::chrono::milliseconds(30));
+        core.pingNow(7);
+        QCOMPARE(sent.size(), std::size_t(1)); // no tick() in between
+        bool found = false;
+        for (const auto& m : decodeDatagram(sent[0], cfg.checksum).messages)
+            if (const auto* r = std::get_if<CmRequest>(&m.body))
+                found = found || (r->type == RequestType::Ping && m.header.whose == 7);
+        QVERIFY(found);
+    }
+
     void demoSiteAndOcuJoin() {
         OsyrisDemoOptions o;
         o.speedUp = 20;
@@ -142,12 +165,19 @@ private slots:
         QVERIFY2(waitFor([&] { return ocu.passCounts()->summary().coveredCells > 50; }),
                  "a pass-count patch appears");
         QVERIFY(waitFor([&] { return rec.passChanges > 0; })); // the listener hears of it (io thread)
-        ocu.ping(1);
+        std::atomic<int> pingSent{-1};
+        ocu.ping(1, [&](std::vector<TargetOutcome> o) {
+            pingSent = o.size() == 1 && o[0].target == "osyris:1" ? int(o[0].sent) : -2;
+        });
+        QVERIFY(waitFor([&] { return pingSent.load() == 1; })); // the socket took it
         QVERIFY(waitFor([&] { return rec.pongs > 0; }));
         ocu.sendText("OCU online");
         QVERIFY(waitFor([&] { return ocu.counters().get("tx.msg") == 1; }));
         QVERIFY(waitFor([&] { return rec.aliveCount() >= 5; }));
         ocu.stop();
+        std::vector<TargetOutcome> after;
+        ocu.ping(1, [&](std::vector<TargetOutcome> o) { after = std::move(o); }); // not running: at once
+        QVERIFY(after.size() == 1 && !after[0].sent && !after[0].reason.empty());
         demo.stop();
     }
 

@@ -17,6 +17,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -36,8 +37,9 @@ using namespace ocu::jaus;
 namespace {
 
 struct Site {
-    explicit Site(Role role = Role::PrimaryOperator) : demo(options()) {
+    explicit Site(Role role = Role::PrimaryOperator, double linkLostS = 5) : demo(options()) {
         JausConfig c;
+        c.linkLostS = linkLostS;
         c.subsystemId = 200;
         c.callSign = "OCU-TEST";
         c.role = role;
@@ -177,6 +179,59 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(126).state().v) < 1e-3, 10000);
         QVERIFY(!s.ugv(126).state().driveTimedOut);
         QCOMPARE(s.ugv(126).counters().get("drive.timeouts"), std::uint64_t(0));
+        QTest::keyRelease(win.teleop, Qt::Key_Shift);
+    }
+
+    // Issue 13 §9: the teleop drive session goes through the command gate - one audited drive_start and one
+    // drive_stop (with why it ended) per session, not one line per 20 Hz message; a session the vehicle's
+    // link ends is shown in the panel, in red, and audited.
+    void driveSessionGoesThroughTheGate() {
+        Site s(Role::PrimaryOperator, 1.0);
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
+        takeControl(win, 126);
+        win.teleop->setVehicle(126);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 10000);
+        win.teleop->setFocus();
+        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
+        auto audits = [&](const char* pattern) {
+            QStringList out;
+            for (int i = 0; i < s.ctx.alarms()->rowCount(); ++i)
+                if (s.ctx.alarms()->eventAt(i).kind == ocu::EventKind::Audit &&
+                    s.ctx.alarms()->eventAt(i).text.contains(
+                        QRegularExpression(QString::fromLatin1(pattern))))
+                    out << s.ctx.alarms()->eventAt(i).text;
+            return out;
+        };
+        const sim::UgvState start = s.ugv(126).state();
+        QTest::keyPress(win.teleop, Qt::Key_Shift);
+        QTest::keyPress(win.teleop, Qt::Key_W, Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->sessionOpen(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(s.forwardSince(start, 126) > 0.5, 10000); // ~20 demands a second meanwhile
+        QCOMPARE(audits("^drive_start by teleop: sent to jaus:126").size(), 1);
+        QVERIFY(audits("^drive_stop").isEmpty());
+        QTest::keyRelease(win.teleop, Qt::Key_W, Qt::ShiftModifier);
+        QTRY_COMPARE_WITH_TIMEOUT(
+            audits("^drive_stop by teleop: sent to jaus:126 \\(session ended: keys released\\)").size(), 1,
+            10000);
+        QVERIFY(!win.teleop->sessionOpen());
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(126).state().v) < 1e-3, 10000);
+        QVERIFY(win.teleop->driveProblem().isEmpty());
+
+        // A second session; then the vehicle falls silent: its link goes down, the session ends, the panel
+        // says why in red and the audit line too.
+        QTest::keyPress(win.teleop, Qt::Key_W, Qt::ShiftModifier);
+        QTRY_COMPARE_WITH_TIMEOUT(audits("^drive_start by teleop: sent to jaus:126").size(), 2, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->sessionOpen(), 10000);
+        s.ugv(126).setPacketLoss(1.0);
+        QTRY_VERIFY_WITH_TIMEOUT(!win.teleop->sessionOpen(), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->driveProblem().contains(QLatin1String("link")), 10000);
+        QVERIFY(win.teleop->findChild<QLabel*>(QStringLiteral("label-drive-problem"))->isVisible());
+        QTRY_COMPARE_WITH_TIMEOUT(audits("^drive_stop by teleop: .*jaus:126.*link").size(), 1, 10000);
+        // Keys still held: no new session (and audit line) per demand.
+        QTest::qWait(500);
+        QCOMPARE(audits("^drive_start").size(), 2);
+        QTest::keyRelease(win.teleop, Qt::Key_W, Qt::ShiftModifier);
         QTest::keyRelease(win.teleop, Qt::Key_Shift);
     }
 

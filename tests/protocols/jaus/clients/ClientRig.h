@@ -23,8 +23,15 @@ struct Sent {
 struct CaptureOutput : JausOutput {
     std::vector<Sent> sent;
     std::string endpoint = "192.0.2.26:3794"; // what the transport learnt for every JAUS ID
+    std::string failWith; // non-empty: the socket takes nothing, every send fails with this reason
     void send(const JausId& dst, const Bytes& payload, SendOptions o) override {
         sent.push_back({dst, payload, o});
+    }
+    std::string sendOrWhy(const JausId& dst, const Bytes& payload, SendOptions o) override {
+        if (!failWith.empty())
+            return failWith;
+        send(dst, payload, o);
+        return {};
     }
     std::string endpointOf(const JausId&) const override { return endpoint; }
     int count(std::uint16_t id) const {

@@ -63,8 +63,9 @@ private slots:
         r.snap.emergency = false;
         r.snap.management = ManagementState::Standby;
         QVERIFY(rig.drive.startDriving(126));
-        // Drivers obey only in READY: Resume first.
-        QCOMPARE(rig.out.ids(), (std::vector<std::uint16_t>{msg::Resume, msg::QueryStatus}));
+        // Drivers obey only in READY: Resume first; then the session's first (zero) demand, at once.
+        QCOMPARE(rig.out.ids(),
+                 (std::vector<std::uint16_t>{msg::Resume, msg::QueryStatus, msg::SetVelocityCommand}));
         QVERIFY(r.snap.driving);
 
         DriveRig monitor(rigConfig(0));
@@ -91,6 +92,42 @@ private slots:
         }
         QCOMPARE(rig.out.count(msg::SetVelocityCommand), 22);
         QCOMPARE(rig.counters.get("tx.drive"), std::uint64_t(22));
+    }
+
+    // Issue 13 §1/§9: what the drive commands return says whether the socket took the message; a stream
+    // that stops reaching the socket is one error event per failing streak (not one per 20 Hz message) and
+    // one when it goes out again.
+    void driveCommandsSayWhatWentOnTheWire() {
+        DriveRig rig;
+        RemoteSubsystem& r = rig.controlled();
+        rig.out.failWith = "the JAUS transport is closed";
+        QVERIFY(!rig.drive.startDriving(126));
+        QVERIFY(
+            QString::fromStdString(rig.ctx.lastRefusal()).contains("not sent: the JAUS transport is closed"));
+        QCOMPARE(rig.rec.count(EventKind::DriveNotSent), 1);
+        rig.out.failWith.clear();
+        QVERIFY(rig.drive.startDriving(126));
+        QVERIFY(rig.drive.setDriveCommand(126, forward(1)));
+        rig.out.failWith = "No buffer space available";
+        QVERIFY(!rig.drive.setDriveCommand(126, forward(1.2)));
+        QVERIFY(QString::fromStdString(rig.ctx.lastRefusal()).contains("No buffer space available"));
+        QCOMPARE(rig.rec.count(EventKind::DriveNotSent), 2);
+        for (int i = 0; i < 5; ++i) { // the stream keeps failing at 20 Hz: still one event
+            rig.run(r, 0.1);
+            QVERIFY(!rig.drive.setDriveCommand(126, forward(1.2)));
+        }
+        QCOMPARE(rig.rec.count(EventKind::DriveNotSent), 2);
+        QVERIFY(rig.counters.get("tx.drive.failed") >= 10);
+        rig.out.failWith.clear();
+        rig.run(r, 0.1);
+        QCOMPARE(rig.rec.count(EventKind::DriveNotSent), 3); // "going out again"
+        QVERIFY(rig.drive.setDriveCommand(126, forward(1.2)));
+        rig.out.failWith = "Network is unreachable";
+        QVERIFY(!rig.drive.stopDriving(126)); // the first zero was not taken
+        rig.out.failWith.clear();
+        r.snap.controlledByUs = false;
+        QVERIFY(!rig.drive.stopDriving(126)); // not controlled: no zeros go out, and the result says so
+        QVERIFY(QString::fromStdString(rig.ctx.lastRefusal()).contains("does not control"));
     }
 
     void clampedToPlatformAndPercent() {

@@ -1,0 +1,162 @@
+// JausBridge + CommandGate against the foreign JAUS vehicle (tests/protocols/jaus/foreign), end to end over
+// loopback (issue 13):
+// - §1 confirmation beyond stops: request_control, clear_stop and release_control are confirmed by the
+//   vehicle's own reports (an event with the latency), and a command the vehicle never answers raises a
+//   Timeout alarm after the confirmation time;
+// - §3 targets per machine: with the stack stopped, stop_all names every vehicle the console knows (heard
+//   earlier, or a configured static endpoint), each with its reason, and the JAUS link shows stopped.
+#include "models/AlarmModel.h"
+#include "models/CommandGate.h"
+#include "models/bridges/JausBridge.h"
+#include "models/testing/CommandWait.h"
+#include "protocols/common/GeoFrame.h"
+#include "protocols/common/Udp.h"
+#include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace ocu;
+using namespace ocu::jaus;
+using ocu::testing::gateResult;
+
+namespace {
+
+JausConfig consoleConfig(std::uint16_t vehiclePort, std::uint16_t neverHeardPort) {
+    JausConfig c;
+    c.subsystemId = 151;
+    c.callSign = "OCU-151";
+    c.role = Role::PrimaryOperator;
+    c.authority = 205;
+    c.statusPollHz = 2;
+    c.linkLostS = 1.5;
+    c.accessTimeoutS = 3;
+    auto& t = c.transport;
+    t.bindAddress = "127.0.0.1";
+    t.port = 0;
+    t.multicastGroup = "239.255.0.1";
+    t.multicastPort = findFreeUdpPort();
+    t.interfaceAddress = "127.0.0.1";
+    t.multicastTtl = 0;
+    t.staticEndpoints.push_back(StaticEndpoint{JausId{126, 0xFF, 0xFF}, "127.0.0.1", vehiclePort, false});
+    // A configured vehicle that never answers (nobody listens there).
+    t.staticEndpoints.push_back(StaticEndpoint{JausId{127, 0xFF, 0xFF}, "127.0.0.1", neverHeardPort, false});
+    return c;
+}
+
+bool hasTimeoutAlarm(const AlarmModel& alarms, const QString& machine) {
+    for (int i = 0; i < alarms.rowCount(); ++i)
+        if (alarms.eventAt(i).kind == ocu::EventKind::Timeout && alarms.eventAt(i).machineId == machine &&
+            alarms.eventAt(i).severity == EventSeverity::Alarm)
+            return true;
+    return false;
+}
+
+} // namespace
+
+class TestJausBridgeForeign : public QObject {
+    Q_OBJECT
+private slots:
+    void controlAndClearAreConfirmedByTheVehicle() {
+        foreign::ForeignJausVehicle vehicle(foreign::VehicleOptions{});
+        AlarmModel alarms;
+        CommandGate gate(&alarms);
+        gate.setConfirmTimeoutMs(3000);
+        JausBridge bridge(consoleConfig(vehicle.port(), findFreeUdpPort()),
+                          GeoFrame(GeoPoint{-23.36, 119.73, 550}));
+        gate.addBridge(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        const QString id = QStringLiteral("jaus:126");
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(126) && bridge.subsystem(126)->link == JausLink::Up &&
+                                     !bridge.subsystem(126)->services.isEmpty(),
+                                 20000);
+        QSignalSpy confirmed(&gate, &CommandGate::commandConfirmed);
+        QSignalSpy unconfirmed(&gate, &CommandGate::commandUnconfirmed);
+        auto confirmedText = [&](const char* action) {
+            for (const auto& c : confirmed)
+                if (c.at(0).toString() == QLatin1String(action) && c.at(1).toString() == id)
+                    return c.at(2).toString();
+            return QString();
+        };
+
+        // request_control: confirmed by the vehicle's ConfirmControl (it answers no QueryControl).
+        QVERIFY(gateResult([&](auto h) {
+                    gate.command(QStringLiteral("request_control"), {{"id", id}}, QStringLiteral("test"), h);
+                }).ok);
+        QTRY_VERIFY_WITH_TIMEOUT(!confirmedText("request_control").isEmpty(), 10000);
+        QVERIFY2(confirmedText("request_control").contains(QLatin1String("confirms control")) &&
+                     confirmedText("request_control").contains(QLatin1String("ms after the command")),
+                 qPrintable(confirmedText("request_control")));
+        QCOMPARE(vehicle.controller(), foreign::ForeignJausVehicle::id(151, 1, 1));
+
+        // stop, then clear_stop: confirmed when the vehicle reports it is no longer in EMERGENCY.
+        QVERIFY(gateResult([&](auto h) { gate.stopMachine(id, QStringLiteral("test"), h); }).ok);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(126)->emergency, 10000);
+        QVERIFY(gateResult([&](auto h) {
+                    gate.clearStop(id, gate.requestClearToken(id), QStringLiteral("test"), h);
+                }).ok);
+        QTRY_VERIFY_WITH_TIMEOUT(!confirmedText("clear_stop").isEmpty(), 10000);
+        QVERIFY2(confirmedText("clear_stop").contains(QLatin1String("emergency cleared")),
+                 qPrintable(confirmedText("clear_stop")));
+        QVERIFY(vehicle.status() != 5); // out of EMERGENCY (STANDBY after ClearEmergency, JSS Management)
+
+        // release_control: confirmed by the vehicle's answer.
+        QVERIFY(gateResult([&](auto h) {
+                    gate.command(QStringLiteral("release_control"), {{"id", id}}, QStringLiteral("test"), h);
+                }).ok);
+        QTRY_VERIFY_WITH_TIMEOUT(!confirmedText("release_control").isEmpty(), 10000);
+        QCOMPARE(unconfirmed.count(), 0);
+        QVERIFY(gate.awaitingCommandConfirmation().isEmpty());
+
+        // A vehicle that hears nothing any more: the request leaves (sent), no answer comes, and the
+        // confirmation time raises a Timeout alarm naming it.
+        vehicle.setOffline(true);
+        const CommandResult r = gateResult([&](auto h) {
+            gate.command(QStringLiteral("request_control"), {{"id", id}}, QStringLiteral("test"), h);
+        });
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(gate.awaitingCommandConfirmation(), QStringList{QStringLiteral("request_control jaus:126")});
+        QTRY_COMPARE_WITH_TIMEOUT(unconfirmed.count(), 1, 20000);
+        QCOMPARE(unconfirmed.first().at(0).toString(), QStringLiteral("request_control"));
+        QVERIFY(hasTimeoutAlarm(alarms, id));
+        bridge.stop();
+    }
+
+    void stoppedStackNamesEveryKnownVehicle() {
+        foreign::ForeignJausVehicle vehicle(foreign::VehicleOptions{});
+        AlarmModel alarms;
+        CommandGate gate(&alarms);
+        JausBridge bridge(consoleConfig(vehicle.port(), findFreeUdpPort()),
+                          GeoFrame(GeoPoint{-23.36, 119.73, 550}));
+        gate.addBridge(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(126) && bridge.subsystem(126)->link == JausLink::Up, 20000);
+        QTRY_COMPARE_WITH_TIMEOUT(bridge.linkStatus(QStringLiteral("jaus"))->state, ocu::LinkState::Up,
+                                  10000);
+
+        // Running: the vehicle heard and the static endpoint never heard both get SetEmergency.
+        CommandResult r = gateResult([&](auto h) { gate.stopAll(QStringLiteral("test"), h); });
+        QCOMPARE(r.targets.size(), 2);
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(r.targets[1].id, QStringLiteral("jaus:127"));
+        QVERIFY2(r.targets[1].note.contains(QLatin1String("never heard")), qPrintable(r.targets[1].note));
+        QTRY_VERIFY_WITH_TIMEOUT(vehicle.status() == 5, 10000); // EMERGENCY
+
+        // Stopped: nothing can go out, and the result names each vehicle with the reason.
+        bridge.stop();
+        QCOMPARE(bridge.linkStatus(QStringLiteral("jaus"))->state, ocu::LinkState::Down);
+        QVERIFY(bridge.linkStatus(QStringLiteral("jaus"))->detail.contains(QLatin1String("stopped")));
+        r = gateResult([&](auto h) { gate.stopAll(QStringLiteral("test"), h); });
+        QVERIFY(!r.ok);
+        QCOMPARE(r.targets.size(), 2);
+        QCOMPARE(r.targets[0].id, QStringLiteral("jaus:126"));
+        QCOMPARE(r.targets[1].id, QStringLiteral("jaus:127"));
+        for (const CommandTarget& t : r.targets) {
+            QVERIFY(!t.sent);
+            QVERIFY2(t.reason.contains(QLatin1String("not running")), qPrintable(t.reason));
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestJausBridgeForeign)
+#include "test_jaus_bridge_foreign.moc"
