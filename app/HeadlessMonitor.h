@@ -21,6 +21,7 @@
 //   {"cmd":"stop_all"}  {"cmd":"stop","id":..}  {"cmd":"clear_stop","id":..,"confirm":true}
 //   {"cmd":"request_control","id":..}  {"cmd":"release_control","id":..}
 //   {"cmd":"drive","id":..,"mode":"velocity|effort","linear":..,"angular":..,"duration":..}  {"cmd":"list"}
+//   {"cmd":"drive_start","id":..}  {"cmd":"drive_stop","id":..,"reason":..} (JAUS drive session)
 #include "models/CommandGate.h"
 
 #include <QByteArray>

@@ -55,8 +55,8 @@ public:
     }
 
     QStringList headlessCommands() const override {
-        return {QStringLiteral("request_control"), QStringLiteral("release_control"),
-                QStringLiteral("drive")};
+        return {QStringLiteral("request_control"), QStringLiteral("release_control"), QStringLiteral("drive"),
+                QStringLiteral("drive_start"), QStringLiteral("drive_stop")};
     }
 
 private:

@@ -3,12 +3,15 @@
 // bridge's thread; a receiver on another thread runs on its own), coalescing (a burst of positions for one
 // machine while the GUI thread is busy becomes one signal carrying the latest position), and commands while
 // the link is down (refused with the reason; nothing reaches the AHS, then or when the link is back).
+#include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/bridges/IsoBridge.h"
 #include "models/testing/CommandWait.h"
 #include "sim/iso23725/SimulatedAhs.h"
 #include "tests/models/bridges/BridgeThreadSupport.h"
 
 #include <QDateTime>
+#include <QSignalSpy>
 #include <QtTest>
 
 using namespace ocu;
@@ -173,6 +176,41 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(second.stats().allStopOn, 10000);
         bridge.stop();
         second.stop();
+    }
+
+    // Issue 13 §1 beyond stops: the all-stop release (clear_stop through the gate) is confirmed by the AHS's
+    // own report (all-stop inactive), logged with its latency.
+    void clearStopConfirmedByTheAhs() {
+        sim::SimulatedAhs ahs(quietAhs());
+        QVERIFY(ahs.start());
+        const GeoPoint origin = quietAhs().origin;
+        AlarmModel alarms;
+        CommandGate gate(&alarms);
+        IsoBridge bridge(consoleConfig(ahs.url()), GeoFrame(origin));
+        bridgetest::Deliveries seen(&bridge);
+        gate.addBridge(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(linkIs(bridge, LinkState::Up), 20000);
+        ahs.sendRaw(position(kMachineA, origin.lat, origin.lon, 1));
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(idOf(kMachineA)).has_value(), 20000);
+        QSignalSpy stopped(&gate, &CommandGate::stopConfirmed);
+        QSignalSpy confirmed(&gate, &CommandGate::commandConfirmed);
+        QSignalSpy unconfirmed(&gate, &CommandGate::commandUnconfirmed);
+        QVERIFY(ocu::testing::gateResult([&](auto h) { gate.stopAll(QStringLiteral("test"), h); }).ok);
+        QTRY_COMPARE_WITH_TIMEOUT(stopped.count(), 1, 20000);
+        const QString id = idOf(kMachineA);
+        QVERIFY(ocu::testing::gateResult([&](auto h) {
+                    gate.clearStop(id, gate.requestClearToken(id), QStringLiteral("test"), h);
+                }).ok);
+        QTRY_COMPARE_WITH_TIMEOUT(confirmed.count(), 1, 20000);
+        QCOMPARE(confirmed.first().at(0).toString(), QStringLiteral("clear_stop"));
+        QCOMPARE(confirmed.first().at(1).toString(), QStringLiteral("iso23725 link ahs"));
+        QVERIFY2(confirmed.first().at(2).toString().contains(QStringLiteral("all-stop inactive")),
+                 qPrintable(confirmed.first().at(2).toString()));
+        QVERIFY(!ahs.stats().allStopOn);
+        QCOMPARE(unconfirmed.count(), 0);
+        bridge.stop();
+        ahs.stop();
     }
 };
 

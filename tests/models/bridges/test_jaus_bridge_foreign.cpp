@@ -13,6 +13,7 @@
 #include "protocols/common/Udp.h"
 #include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
 
+#include <QJsonObject>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -120,6 +121,54 @@ private slots:
         QCOMPARE(unconfirmed.first().at(0).toString(), QStringLiteral("request_control"));
         QVERIFY(hasTimeoutAlarm(alarms, id));
         bridge.stop();
+    }
+
+    // Issue 13 §1: the drive commands' results say what went on the wire: refused without control; the
+    // session start and the demand sent when the socket took them (the vehicle receives them); the session
+    // end noted with its reason; with the stack stopped, nothing is sent and the result says why.
+    void driveReportsWhatWentOnTheWire() {
+        foreign::VehicleOptions o;
+        o.services.push_back("urn:jaus:jss:mobility:VelocityStateDriver");
+        foreign::ForeignJausVehicle vehicle(o);
+        AlarmModel alarms;
+        CommandGate gate(&alarms);
+        JausBridge bridge(consoleConfig(vehicle.port(), findFreeUdpPort()),
+                          GeoFrame(GeoPoint{-23.36, 119.73, 550}));
+        gate.addBridge(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        const QString id = QStringLiteral("jaus:126");
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(126) && bridge.subsystem(126)->link == JausLink::Up &&
+                                     !bridge.subsystem(126)->services.isEmpty(),
+                                 20000);
+        auto cmd = [&](const char* name, QJsonObject args) {
+            args.insert(QStringLiteral("id"), id);
+            return gateResult(
+                [&](auto h) { gate.command(QString::fromLatin1(name), args, QStringLiteral("test"), h); });
+        };
+        CommandResult r = cmd("drive", {{"linear", 0.5}, {"duration", 1.0}});
+        QVERIFY(!r.ok);
+        QVERIFY2(r.targets.value(0).reason.contains(QLatin1String("does not control")),
+                 qPrintable(r.message));
+        QCOMPARE(vehicle.received(0x0415), 0); // SetVelocityCommand: nothing went out
+
+        QVERIFY(cmd("request_control", {}).ok);
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(126)->controlledByUs, 10000);
+        r = cmd("drive_start", {{"reason", "test"}});
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QTRY_VERIFY_WITH_TIMEOUT(vehicle.received(0x0415) >= 1, 10000); // the session's first (zero) demand
+        r = cmd("drive", {{"linear", 0.5}, {"duration", 1.0}});
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QTRY_VERIFY_WITH_TIMEOUT(vehicle.received(0x0415) >= 5, 10000); // streamed at the drive rate
+        r = cmd("drive_stop", {{"reason", "operator released the stick"}});
+        QVERIFY2(r.ok, qPrintable(r.message));
+        QCOMPARE(r.targets.value(0).note, QStringLiteral("session ended: operator released the stick"));
+
+        bridge.stop();
+        for (const char* name : {"drive_start", "drive", "drive_stop"}) {
+            r = cmd(name, {{"linear", 0.1}});
+            QVERIFY(!r.ok);
+            QVERIFY2(r.targets.value(0).reason.contains(QLatin1String("not running")), qPrintable(r.message));
+        }
     }
 
     void stoppedStackNamesEveryKnownVehicle() {

@@ -228,6 +228,8 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(win.teleop->driveProblem().contains(QLatin1String("link")), 10000);
         QVERIFY(win.teleop->findChild<QLabel*>(QStringLiteral("label-drive-problem"))->isVisible());
         QTRY_COMPARE_WITH_TIMEOUT(audits("^drive_stop by teleop: .*jaus:126.*link").size(), 1, 10000);
+        if (const QString shots = qEnvironmentVariable("OCU_SCREENSHOT_DIR"); !shots.isEmpty())
+            win.w.grab().save(shots + QStringLiteral("/teleop-drive-problem.png"));
         // Keys still held: no new session (and audit line) per demand.
         QTest::qWait(500);
         QCOMPARE(audits("^drive_start").size(), 2);
