@@ -99,6 +99,11 @@ std::string HaulFleet::autonomyMode(const HaulTruck& t) const {
     return m_allStopOn ? "AllStop" : "Autonomous";
 }
 
+void HaulFleet::emitProduction(HaulTruck& t) {
+    t.reportedWay = t.motion.wayId();
+    m_emit(productionState(t), t.id);
+}
+
 HaulTruckProductionStateV2 HaulFleet::productionState(const HaulTruck& t) const {
     HaulTruckProductionStateV2 p;
     if (!t.assignments.empty())
@@ -174,6 +179,9 @@ void HaulFleet::tick(double dt) {
             if (t.motion.arrived()) {
                 t.motion.halt();
                 arrive(t);
+            } else if (t.motion.wayId() != t.reportedWay) {
+                // WayId is part of the production state (§5 #17, "current way"): a new way is a change.
+                emitProduction(t);
             }
         } else if (!halted && !t.idle) {
             t.dwell -= dt;
@@ -286,14 +294,14 @@ void HaulFleet::leave(HaulTruck& t) {
     }
     startRoute(t, legs, next);
     t.motion.placeAt(0);
-    m_emit(productionState(t), t.id);
+    emitProduction(t);
 }
 
 void HaulFleet::setProduction(HaulTruck& t, const std::string& state) {
     if (t.productionState == state)
         return;
     t.productionState = state;
-    m_emit(productionState(t), t.id);
+    emitProduction(t);
 }
 
 // HaulTruckProductionStateSensorV1 (§5 row 18, Q8 [I]): the raw inputs of the production state. Loaded from
@@ -378,7 +386,13 @@ std::string HaulFleet::cannotDo(const HaulTruck& t, const AssignmentItem& a, std
         for (auto& w : *a.route)
             if (m_closedWays.count(std::llabs(w.wayId)))
                 return "route way " + std::to_string(std::llabs(w.wayId)) + " is closed by the AHS";
-        if (auto why = checkRoute(m_routes, from, *a.route, a.destinationId); !why.empty())
+        // The FMS planned from the way it last heard of; the part of the route the truck is already past
+        // does not count.
+        std::vector<WayRef> ahead = *a.route;
+        for (std::size_t i = 0; i < a.route->size(); ++i)
+            if (std::llabs((*a.route)[i].wayId) == from)
+                ahead.assign(a.route->begin() + static_cast<std::ptrdiff_t>(i), a.route->end());
+        if (auto why = checkRoute(m_routes, from, ahead, a.destinationId); !why.empty())
             return "RouteV1 cannot be driven: " + why;
     }
     if (auto r = shortestRoute(m_routes, from, a.destinationId); !r.ok)
@@ -449,7 +463,7 @@ void HaulFleet::goIdle(HaulTruck& t) {
     auto legs = legsTo(t, m_map.parkArea);
     startRoute(t, legs, HaulPhase::ToPark);
     t.motion.placeAt(0);
-    m_emit(productionState(t), t.id);
+    emitProduction(t);
 }
 
 void HaulFleet::setWayClosed(std::int64_t wayId, bool closed) {

@@ -49,6 +49,7 @@ struct HaulTruck {
     std::string custodian = "FMS"; // MachineDispatchAvailabilityV1.DispatchingCustodian (§8.3)
     bool fmsWork = false;          // working through FMS assignments: idle when they run out
     bool idle = false;             // parked, waiting for an FMS assignment
+    std::int64_t reportedWay = 0;  // WayId of the last HaulTruckProductionStateV2 sent
     iso23725::Guid cycleId;
     std::int64_t cycleStartMs = 0;
     double fuel = 80;
@@ -109,6 +110,7 @@ private:
     void leave(HaulTruck& t);
     std::int64_t areaOf(const HaulTruck& t) const;
     void setProduction(HaulTruck& t, const std::string& state);
+    void emitProduction(HaulTruck& t); // HaulTruckProductionStateV2 now (and the way it reports)
     iso23725::HaulTruckProductionStateSensorV1 sensor(const HaulTruck& t) const;
     void updateSensor(HaulTruck& t);
     void reportHealth(HaulTruck& t);

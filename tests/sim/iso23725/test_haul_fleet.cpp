@@ -161,12 +161,19 @@ private slots:
         for (const auto& t : s.fleet.trucks()) {
             const auto states = s.emittedFor<HaulTruckProductionStateV2>(t.id);
             QVERIFY(states.size() >= 8);
+            int wayChanges = 0;
             for (std::size_t i = 0; i + 1 < states.size(); ++i) {
                 const auto& a = states[i].productionState;
                 const auto& b = states[i + 1].productionState;
+                if (a == b) { // the same state on the next way (WayId is part of the state, §5 #17)
+                    QVERIFY(states[i].wayId != states[i + 1].wayId);
+                    ++wayChanges;
+                    continue;
+                }
                 QVERIFY2(next.at(a).count(b), qPrintable(QString::fromStdString(a + " -> " + b)));
                 QCOMPARE(states[i].autonomyMode, std::string("Autonomous"));
             }
+            QVERIFY(wayChanges > 0);
         }
     }
 
