@@ -13,6 +13,7 @@
 #include <QJsonDocument>
 #include <QJsonParseError>
 #include <QSocketNotifier>
+#include <QUuid>
 #include <unistd.h>
 
 namespace ocu {
@@ -232,6 +233,8 @@ QByteArray HeadlessMonitor::result(const QJsonObject& cmd, const CommandResult& 
         o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
     if (cmd.contains(QStringLiteral("id")))
         o[QStringLiteral("id")] = cmd.value(QStringLiteral("id"));
+    if (cmd.value(QStringLiteral("tasks")).isArray()) // assign: the tasks with their AssignmentIds
+        o[QStringLiteral("tasks")] = cmd.value(QStringLiteral("tasks"));
     o[QStringLiteral("ok")] = r.ok;
     if (withTargets) {
         // What went on the wire, per target (issue 13 §1).
@@ -324,6 +327,9 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
             gate->clearStop(id, gate->requestClearToken(id), origin, std::move(h));
         });
     }
+    if (name == QLatin1String("assign") || name == QLatin1String("reset_assignment") ||
+        name == QLatin1String("production"))
+        return dispatchCommand(name, cmd);
     const bool forProtocol = id.isEmpty() && cmd.contains(QStringLiteral("protocol"));
     if (m_protocolCommands.contains(name) || (!name.isEmpty() && (m_gate->bridgeFor(id) || forProtocol))) {
         if (id.isEmpty() && !forProtocol)
@@ -334,6 +340,73 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
     return result(cmd, false,
                   name.isEmpty() ? QStringLiteral("missing \"cmd\"")
                                  : QStringLiteral("unknown command %1").arg(name));
+}
+
+// ---- issue 15: dispatch (ISO 23725 haul trucks) ----
+// assign / reset_assignment go through the gate to the bridge owning "id" (audited; the result lists the
+// truck as its target, sent only when the socket took the request). production answers from the bridges'
+// dispatch views (what the trucks reported), without touching the wire.
+QByteArray HeadlessMonitor::dispatchCommand(const QString& name, const QJsonObject& cmd) {
+    const QString id = cmd.value(QStringLiteral("id")).toString();
+    if (name == QLatin1String("production")) {
+        QJsonArray trucks;
+        int sources = 0;
+        for (FleetBridge* b : m_gate->bridges()) {
+            QJsonArray part;
+            if (!b || b->metaObject()->indexOfMethod("productionJson()") < 0 ||
+                !QMetaObject::invokeMethod(b, "productionJson", Qt::DirectConnection,
+                                           Q_RETURN_ARG(QJsonArray, part)))
+                continue;
+            ++sources;
+            for (const auto& t : part)
+                if (id.isEmpty() || t.toObject().value(QStringLiteral("id")).toString() == id)
+                    trucks << t;
+        }
+        QJsonObject o;
+        o[QStringLiteral("type")] = QStringLiteral("result");
+        o[QStringLiteral("cmd")] = name;
+        if (cmd.contains(QStringLiteral("req")))
+            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
+        o[QStringLiteral("ok")] = sources > 0;
+        o[QStringLiteral("trucks")] = trucks;
+        o[QStringLiteral("message")] = sources > 0 ? QStringLiteral("%1 trucks").arg(trucks.size())
+                                                   : QStringLiteral("no ISO 23725 bridge in this console");
+        writeLine(o);
+        QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
+        emit commandHandled(line);
+        return line;
+    }
+    if (id.isEmpty())
+        return result(cmd, false, QStringLiteral("missing \"id\""));
+    QJsonObject args = cmd;
+    if (name == QLatin1String("assign")) {
+        // The shorthand (one task at the top level) becomes "tasks"; every task gets its AssignmentId here so
+        // the result line names them.
+        QJsonArray tasks = cmd.value(QStringLiteral("tasks")).isArray()
+                               ? cmd.value(QStringLiteral("tasks")).toArray()
+                               : QJsonArray();
+        if (!cmd.contains(QStringLiteral("tasks"))) {
+            QJsonObject one;
+            for (const char* k : {"task", "destination", "equipment", "spot", "route", "assignment_id"})
+                if (cmd.contains(QLatin1String(k)))
+                    one[QLatin1String(k)] = cmd.value(QLatin1String(k));
+            tasks << one;
+        }
+        for (int i = 0; i < tasks.size(); ++i)
+            if (tasks[i].isObject() && !tasks[i].toObject().contains(QStringLiteral("assignment_id"))) {
+                QJsonObject t = tasks[i].toObject();
+                t[QStringLiteral("assignment_id")] = QUuid::createUuid().toString(QUuid::WithoutBraces);
+                tasks[i] = t;
+            }
+        if (cmd.contains(QStringLiteral("tasks")) && !cmd.value(QStringLiteral("tasks")).isArray())
+            args[QStringLiteral("tasks")] = cmd.value(QStringLiteral("tasks")); // the bridge says why
+        else
+            args[QStringLiteral("tasks")] = tasks;
+    }
+    CommandGate* gate = m_gate;
+    const QString origin = QStringLiteral("headless");
+    return viaGate(args,
+                   [&](CommandGate::ResultHandler h) { gate->command(name, args, origin, std::move(h)); });
 }
 
 void HeadlessMonitor::consumeInput(const QByteArray& chunk) {

@@ -21,7 +21,13 @@
 //   {"cmd":"stop_all"}  {"cmd":"stop","id":..}  {"cmd":"clear_stop","id":..,"confirm":true}
 //   {"cmd":"request_control","id":..}  {"cmd":"release_control","id":..}
 //   {"cmd":"drive","id":..,"mode":"velocity|effort","linear":..,"angular":..,"duration":..}  {"cmd":"list"}
+<<<<<<< HEAD
 //   {"cmd":"drive_start","id":..}  {"cmd":"drive_stop","id":..,"reason":..} (JAUS drive session)
+=======
+//   {"cmd":"assign","id":"iso23725:<guid>","tasks":[{"task":"Load","destination":4201,"route":[2001]},..]}
+//   (or one task's keys at the top level; the result echoes "tasks" with their "assignment_id")
+//   {"cmd":"reset_assignment","id":"iso23725:<guid>"}  {"cmd":"production"} (result "trucks": dispatch views)
+>>>>>>> h15wire
 #include "models/CommandGate.h"
 
 #include <QByteArray>
@@ -98,6 +104,8 @@ private:
     void consumeInput(const QByteArray& chunk);
     QJsonObject machineJson(const MachineState& m, bool stale, qint64 ageMs) const;
     QByteArray result(const QJsonObject& cmd, bool ok, const QString& message);
+    // Issue 15: assign, reset_assignment, production (ISO 23725 dispatch).
+    QByteArray dispatchCommand(const QString& name, const QJsonObject& cmd);
     QByteArray result(const QJsonObject& cmd, const CommandResult& r, bool withTargets);
     QByteArray viaGate(const QJsonObject& cmd, const std::function<void(CommandGate::ResultHandler)>& issue,
                        const QString& suffix = {});

@@ -4,6 +4,7 @@
 #include "protocols/iso23725/IsoStack.h"
 #include "protocols/iso23725/MapModel.h"
 #include "protocols/iso23725/PositionFastPath.h"
+#include "protocols/iso23725/Routing.h"
 #include "sim/iso23725/SimulatedAhs.h"
 
 #include "protocols/common/Log.h"
@@ -11,6 +12,7 @@
 #include <benchmark/benchmark.h>
 
 #include <atomic>
+#include <random>
 #include <thread>
 
 using namespace ocu::iso23725;
@@ -95,6 +97,67 @@ void BM_ParseMap100kNodes20kWays(benchmark::State& state) {
     state.counters["MB"] = static_cast<double>(bytes) / 1e6;
 }
 BENCHMARK(BM_ParseMap100kNodes20kWays)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// A generated 20,000-way MapConnectivityV1 (issue 15 §2): a 142 x 141 grid of ways, each connected to its
+// four neighbours (one in seven of those connections one-way, so the graph is directed), roads of 50-500 m,
+// every tenth way an area. The route goes corner to corner: the search visits about the whole graph.
+MapConnectivityV1 gridConnectivity(int cols, int rows, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> len(50, 500);
+    std::uniform_int_distribution<int> oneWay(0, 6);
+    MapConnectivityV1 c;
+    auto id = [&](int x, int y) { return std::int64_t(100000 + y * cols + x); };
+    for (int y = 0; y < rows; ++y)
+        for (int x = 0; x < cols; ++x) {
+            ConnectivityItem i;
+            i.wayId = id(x, y);
+            if ((y * cols + x) % 10 == 0) {
+                i.wayType = "Area";
+                i.areaDefaultTask = "Load";
+            } else {
+                i.wayType = "Road";
+                i.roadLength = len(rng);
+            }
+            const int dx[] = {1, -1, 0, 0}, dy[] = {0, 0, 1, -1};
+            for (int k = 0; k < 4; ++k) {
+                const int nx = x + dx[k], ny = y + dy[k];
+                if (nx < 0 || ny < 0 || nx >= cols || ny >= rows)
+                    continue;
+                if (k % 2 == 1 && oneWay(rng) == 0) // some reverse directions missing: one-way
+                    continue;
+                i.connection.push_back(WayRef{id(nx, ny)});
+            }
+            c.items.push_back(std::move(i));
+        }
+    return c;
+}
+
+void BM_Route20kWays(benchmark::State& state) {
+    const auto conn = gridConnectivity(142, 141, 7);
+    const RouteGraph g(conn);
+    const std::int64_t from = conn.items.front().wayId, to = conn.items.back().wayId;
+    std::size_t ways = 0;
+    for (auto _ : state) {
+        auto r = shortestRoute(g, from, to);
+        if (!r.ok)
+            state.SkipWithError(r.error.c_str());
+        ways = r.ways.size();
+        benchmark::DoNotOptimize(r);
+    }
+    state.counters["graph_ways"] = static_cast<double>(g.size());
+    state.counters["route_ways"] = static_cast<double>(ways);
+}
+BENCHMARK(BM_Route20kWays)->Unit(benchmark::kMillisecond);
+
+// Indexing a new MapConnectivityV1 (done once per received message, not per route).
+void BM_RouteGraphBuild20kWays(benchmark::State& state) {
+    const auto conn = gridConnectivity(142, 141, 7);
+    for (auto _ : state) {
+        RouteGraph g(conn);
+        benchmark::DoNotOptimize(g);
+    }
+}
+BENCHMARK(BM_RouteGraphBuild20kWays)->Unit(benchmark::kMillisecond);
 
 struct CountingListener : IsoListener {
     std::atomic<std::uint64_t> changes{0};

@@ -3,6 +3,7 @@
 #include <QJsonObject>
 #include <QMetaObject>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 
@@ -87,6 +88,7 @@ void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, 
             io.snapshot.stateKnown = false;
             io.row = toMachine(io.snapshot, AllStopState::Unknown);
             rows.push_back(io.row);
+            publishDispatch(io.row.id, toDispatchState(io.snapshot));
         }
         publishMachines(std::move(rows));
     }
@@ -111,6 +113,7 @@ void IsoBridge::onMachineChanged(const IsoMachineSnapshot& machine) {
         m_machineLinks.insert(io.row.id, q(machine.link));
     }
     publishMachine(io.row);
+    publishDispatch(io.row.id, toDispatchState(machine));
 }
 
 // The hot path (every machine, 1-10 Hz): only the position fields of the rows change, and the batch goes to
@@ -138,6 +141,7 @@ void IsoBridge::onMachinePositions(const std::string& link,
 void IsoBridge::onMachineRemoved(const std::string& link, const Guid& equipmentId) {
     m_machinesIo.erase(keyOf(link, equipmentId));
     publishRemoval(protocolPrefix(Protocol::Iso23725) + q(equipmentId));
+    publishDispatch(protocolPrefix(Protocol::Iso23725) + q(equipmentId), std::nullopt);
 }
 
 void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& status) {
@@ -229,6 +233,124 @@ void IsoBridge::onFleetDiscrepancies(const std::string& link, const std::vector<
         publishEvent(makeEvent(EventSeverity::Warning, ocu::EventKind::Discrepancy, {},
                                tr("Fleet definition discrepancy on %1: %2").arg(q(link), q(item)),
                                QStringLiteral("iso23725")));
+}
+
+void IsoBridge::onConnectivity(const std::string& link, const MapConnectivityV1& connectivity) {
+    QHash<qint64, IsoDestination> areas;
+    for (const auto& item : connectivity.items)
+        if (item.wayType == "Area")
+            areas.insert(item.wayId, IsoDestination{q(link), item.wayId, q(item.areaName.value_or("")),
+                                                    q(item.areaDefaultTask.value_or(""))});
+    const QString l = q(link);
+    QMetaObject::invokeMethod(
+        this,
+        [this, l, areas = std::move(areas)]() mutable {
+            m_destinations.insert(l, std::move(areas));
+            QStringList ids;
+            for (auto& d : m_dispatch)
+                if (d.link == l) {
+                    const auto a = d.destinationId ? m_destinations[l].constFind(*d.destinationId)
+                                                   : m_destinations[l].constEnd();
+                    d.destinationName = a != m_destinations[l].constEnd() ? a->name : QString();
+                    ids << d.id;
+                }
+            if (!ids.isEmpty())
+                emit dispatchChanged(ids);
+        },
+        Qt::QueuedConnection);
+}
+
+void IsoBridge::publishDispatch(const QString& id, std::optional<IsoDispatchState> state) {
+    std::lock_guard lock(m_dispatchMutex);
+    m_dispatchPending.insert(id, std::move(state));
+    if (m_dispatchScheduled)
+        return;
+    m_dispatchScheduled = true;
+    QMetaObject::invokeMethod(
+        this, [this] { deliverDispatch(); }, Qt::QueuedConnection);
+}
+
+void IsoBridge::deliverDispatch() {
+    QHash<QString, std::optional<IsoDispatchState>> batch;
+    {
+        std::lock_guard lock(m_dispatchMutex);
+        batch.swap(m_dispatchPending);
+        m_dispatchScheduled = false;
+    }
+    QStringList ids;
+    for (auto it = batch.begin(); it != batch.end(); ++it) {
+        ids << it.key();
+        if (!it.value()) {
+            m_dispatch.remove(it.key());
+            continue;
+        }
+        IsoDispatchState d = std::move(*it.value());
+        const auto& areas = m_destinations.value(d.link);
+        if (d.destinationId)
+            d.destinationName = areas.value(*d.destinationId).name;
+        m_dispatch.insert(it.key(), std::move(d));
+    }
+    if (!ids.isEmpty())
+        emit dispatchChanged(ids);
+}
+
+// ---- GUI thread: dispatch ----
+
+QVector<IsoDispatchState> IsoBridge::dispatchStates() const {
+    QVector<IsoDispatchState> out;
+    out.reserve(m_dispatch.size());
+    for (const auto& d : m_dispatch)
+        out << d;
+    std::sort(out.begin(), out.end(), [](auto& a, auto& b) { return a.id < b.id; });
+    return out;
+}
+
+std::optional<IsoDispatchState> IsoBridge::dispatchState(const QString& id) const {
+    auto it = m_dispatch.constFind(id);
+    if (it == m_dispatch.constEnd())
+        return std::nullopt;
+    return *it;
+}
+
+QVector<IsoDestination> IsoBridge::destinations(const QString& link) const {
+    QVector<IsoDestination> out;
+    for (auto l = m_destinations.constBegin(); l != m_destinations.constEnd(); ++l)
+        if (link.isEmpty() || l.key() == link)
+            for (const auto& d : l.value())
+                out << d;
+    std::sort(out.begin(), out.end(),
+              [](auto& a, auto& b) { return a.link != b.link ? a.link < b.link : a.wayId < b.wayId; });
+    return out;
+}
+
+QString IsoBridge::assignRefusal(const QString& id) const {
+    const QString link = linkOf(id);
+    const auto d = dispatchState(id);
+    if (link.isEmpty() || !d)
+        return tr("unknown ISO 23725 machine %1").arg(id);
+    if (const QString why = linkRefusal(link, tr("assignment")); !why.isEmpty())
+        return why;
+    if (d->custodian != QLatin1String("FMS"))
+        return d->custodian.isEmpty()
+                   ? tr("assignment refused: %1 has not reported its DispatchingCustodian yet").arg(d->name)
+                   : tr("assignment refused: %1 is dispatched by the %2 (DispatchingCustodian %2)")
+                         .arg(d->name, d->custodian);
+    return {};
+}
+
+QJsonObject IsoBridge::assignArgs(const QString& id, const QVector<IsoTask>& tasks) {
+    QJsonObject o;
+    o[QStringLiteral("id")] = id;
+    o[QStringLiteral("tasks")] = tasksToJson(tasks);
+    return o;
+}
+
+QJsonArray IsoBridge::productionJson() const {
+    QJsonArray out;
+    for (const auto& d : dispatchStates())
+        if (!d.custodian.isEmpty() || !d.assignmentStatus.isEmpty() || !d.productionState.isEmpty())
+            out << dispatchToJson(d);
+    return out;
 }
 
 void IsoBridge::onEvent(IsoSeverity severity, const std::string& text) {
@@ -482,31 +604,47 @@ void IsoBridge::command(const QString& name, const QJsonObject& args, OutcomeCal
         return;
     }
     const QString target = q(IsoStack::linkTarget(link.toStdString()));
-    static const QStringList kOverTheLink{QStringLiteral("fetch_map"), QStringLiteral("reset_assignment")};
-    if (kOverTheLink.contains(name))
-        if (const QString why = linkRefusal(link, name); !why.isEmpty()) {
-            done({refusal(target, why)});
-            return;
-        }
-    // Requests without an outcome from the stack: handed to it after the link check; their answers (the map,
-    // the assignment) show the effect.
-    if (name == QLatin1String("fetch_map")) {
-        m_stack->fetchMap(link.toStdString());
-        done({TargetOutcome{target.toStdString(), true, {}}});
+    const bool perTruck = name == QLatin1String("reset_assignment") || name == QLatin1String("assign");
+    if (name != QLatin1String("fetch_map") && !perTruck) {
+        FleetBridge::command(name, args, std::move(done));
         return;
     }
-    if (name == QLatin1String("reset_assignment")) {
-        const QString id = args.value(QStringLiteral("id")).toString();
-        const QString prefix = protocolPrefix(Protocol::Iso23725);
-        if (!id.startsWith(prefix)) {
-            done({refusal(target, tr("reset_assignment: \"id\" must name an ISO 23725 machine"))});
-            return;
-        }
-        m_stack->resetAssignment(link.toStdString(), id.mid(prefix.size()).toStdString());
-        done({TargetOutcome{id.toStdString(), true, {}}});
+    // Per-truck commands name the truck as their target, the map fetch the link.
+    const QString id = args.value(QStringLiteral("id")).toString();
+    const QString prefix = protocolPrefix(Protocol::Iso23725);
+    if (perTruck && !id.startsWith(prefix)) {
+        done(
+            {refusal(id.isEmpty() ? target : id, tr("%1: \"id\" must name an ISO 23725 machine").arg(name))});
         return;
     }
-    FleetBridge::command(name, args, std::move(done));
+    const QString shown = perTruck ? id : target;
+    std::optional<QVector<IsoTask>> tasks;
+    if (name == QLatin1String("assign")) {
+        QString why;
+        tasks = tasksFromJson(args, &why);
+        if (!tasks) {
+            done({refusal(shown, tr("assign refused: %1; nothing sent").arg(why))});
+            return;
+        }
+    }
+    // Never queued while the link is down (§2.1 rule 1): refused here, nothing posted.
+    if (const QString why = linkRefusal(link, name); !why.isEmpty()) {
+        done({refusal(shown, why)});
+        return;
+    }
+    if (!m_running) {
+        done({refusal(shown, tr("the ISO 23725 stack is not running; nothing sent"))});
+        return;
+    }
+    // The stack reports the outcome: sent only when the socket took the frame.
+    const std::string l = link.toStdString();
+    if (name == QLatin1String("fetch_map"))
+        m_stack->fetchMap(l, std::move(done));
+    else if (name == QLatin1String("reset_assignment"))
+        m_stack->resetAssignment(l, id.mid(prefix.size()).toStdString(), std::move(done));
+    else
+        m_stack->requestAssignment(l, id.mid(prefix.size()).toStdString(), toAssignmentItems(*tasks),
+                                   std::move(done));
 }
 
 } // namespace ocu

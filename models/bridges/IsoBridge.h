@@ -3,6 +3,7 @@
 // links become link states, the AHS map becomes SiteMapData, and STOP ALL becomes all-stop Apply on
 // every AHS link. The stop state shown is only ever what MachineAllStopV1 reported.
 #include "models/FleetBridge.h"
+#include "models/bridges/IsoBridgeDispatch.h"
 
 #include "protocols/common/GeoFrame.h"
 #include "protocols/iso23725/IsoConfig.h"
@@ -38,7 +39,9 @@ public:
     void stopAll(OutcomeCallback done) override;
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
-    // all_stop_apply / all_stop_remove {"link"}, fetch_map {"link"}, reset_assignment {"id"}.
+    // all_stop_apply / all_stop_remove {"link"}, fetch_map {"link"}, reset_assignment {"id"},
+    // assign {"id", "tasks":[...]} (IsoBridgeDispatch.h: tasksFromJson). Assign and reset name the truck as
+    // their target, the others the link; each is sent only when the socket took it.
     void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
     bool reportsStopped(const QString& target) const override;
     // clear_stop / all_stop_remove: confirmed when the AHS reports all-stop inactive (MachineAllStop off).
@@ -49,8 +52,25 @@ public:
     // GUI thread: the all-stop status per link as the AHS reported it.
     iso23725::AllStopState allStopState(const QString& link) const;
 
+    // ---- dispatch (issue 15), GUI thread ----
+    // Every ISO 23725 machine's dispatch view, in id order; one machine's, or nullopt.
+    QVector<IsoDispatchState> dispatchStates() const;
+    std::optional<IsoDispatchState> dispatchState(const QString& id) const;
+    // Areas of the AHS's MapConnectivityV1 (all links when `link` is empty), by link then way id.
+    QVector<IsoDestination> destinations(const QString& link = {}) const;
+    // Why an assignment to this truck would be refused now (link down, custodian not FMS, unknown truck), or
+    // empty: for enabling the assign control. The stack checks again when the command is sent.
+    QString assignRefusal(const QString& id) const;
+    // The arguments of CommandGate::command("assign", ...) for these tasks (first = current, then future).
+    static QJsonObject assignArgs(const QString& id, const QVector<IsoTask>& tasks);
+    // The headless "production" answer: dispatchToJson of every truck that reported a custodian, an
+    // assignment or production (HaulTruck), in id order.
+    Q_INVOKABLE QJsonArray productionJson() const;
+
 signals:
     void mapProgress(const QString& link, int received, int total);
+    // Dispatch views changed (coalesced; ids changed or removed since the last signal).
+    void dispatchChanged(const QStringList& ids);
 
 private:
     void onLinkState(const std::string& link, iso23725::LinkState state, const std::string& reason) override;
@@ -62,6 +82,10 @@ private:
     void onMapProgress(const std::string& link, const iso23725::MapProgress& progress) override;
     void onMapChanged(const std::string& link, const iso23725::MapModel& map) override;
     void onFleetDiscrepancies(const std::string& link, const std::vector<std::string>& items) override;
+    void onConnectivity(const std::string& link, const iso23725::MapConnectivityV1& connectivity) override;
+    // io thread: queue a machine's dispatch view (nullopt = removed) for the GUI thread, coalesced.
+    void publishDispatch(const QString& id, std::optional<IsoDispatchState> state);
+    void deliverDispatch();
     void onEvent(iso23725::IsoSeverity severity, const std::string& text) override;
 
     MachineState toMachine(const iso23725::IsoMachineSnapshot& m, iso23725::AllStopState stop) const;
@@ -92,6 +116,11 @@ private:
     // GUI thread
     SiteMapData m_map;
     QHash<QString, int> m_allStop;
+    QHash<QString, IsoDispatchState> m_dispatch;                  // by machine id
+    QHash<QString, QHash<qint64, IsoDestination>> m_destinations; // link -> area way id -> destination
+    std::mutex m_dispatchMutex;
+    QHash<QString, std::optional<IsoDispatchState>> m_dispatchPending; // io -> GUI, latest wins
+    bool m_dispatchScheduled = false;
     mutable std::mutex m_machineLinksMutex;
     QHash<QString, QString> m_machineLinks; // machine id -> link (written on the io thread)
 };

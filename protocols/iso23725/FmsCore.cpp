@@ -98,6 +98,13 @@ void FmsCore::peerWarning(const std::string& cause, const std::string& text) {
               "; at most one such warning per minute");
 }
 
+bool FmsCore::refuse(const std::string& what, const std::string& reason) {
+    m_counters.add("cmd.refused");
+    m_lastRefusal = reason;
+    event(IsoSeverity::Warning, what + " refused: " + reason + " (nothing sent)");
+    return false;
+}
+
 bool FmsCore::upOrRefuse(const char* what) {
     if (m_state != LinkState::Up) {
         // §2.1 rule 1: commands are never queued while the link is down.
@@ -306,6 +313,8 @@ void FmsCore::handle(const Envelope& env, bool mapChannel) {
                     m_mapService.summary(b, mapChannel);
                 } else if constexpr (std::is_same_v<T, MapConnectivityV1>) {
                     m_mapService.connectivity(b);
+                    m_routes = RouteGraph(b);
+                    m_listener.onConnectivity(m_link.name, b);
                 } else if constexpr (std::is_same_v<T, InterfaceDiagnosticV1>) {
                     for (auto& m : b.message)
                         event(m.severity == "Error"     ? IsoSeverity::Error
@@ -408,9 +417,14 @@ template <class T> void FmsCore::machineMember(IsoMachineSnapshot& m, const T& b
     if constexpr (std::is_same_v<T, MachineAutonomyModeV1>) {
         m.autonomyMode = b.autonomyMode;
     } else if constexpr (std::is_same_v<T, MachineDispatchAvailabilityV1>) {
-        if (m.dispatchingCustodian == "AHS" && b.dispatchingCustodian == "FMS")
-            event(IsoSeverity::Info,
+        if (m.dispatchingCustodian == "AHS" && b.dispatchingCustodian == "FMS") {
+            m.needsAssignment = true;
+            m_counters.add("assignment.needed");
+            event(IsoSeverity::Warning,
                   "machine " + label(m) + " needs an assignment (custodian AHS -> FMS, §8.3.4)");
+        } else if (b.dispatchingCustodian != "FMS") {
+            m.needsAssignment = false;
+        }
         m.dispatchingCustodian = b.dispatchingCustodian;
     } else if constexpr (std::is_same_v<T, MachineDiagnosticV2>) {
         m.diagnostics = b.entries; // full list each time; [] clears (§8.4)
@@ -448,12 +462,10 @@ template <class T> void FmsCore::machineMember(IsoMachineSnapshot& m, const T& b
         event(IsoSeverity::Info, "cycle " + b.cycleId + " completed by " + label(m));
     } else if constexpr (std::is_same_v<T, HaulTruckAssignmentV1>) {
         m.assignment = b;
+        if (b.status == "Active" || b.status == "Pending")
+            m.needsAssignment = false;
     } else if constexpr (std::is_same_v<T, HaulTruckAssignmentResponseV1>) {
-        m.assignmentResponses = b.items;
-        for (auto& r : b.items)
-            event(r.response == "Accepted" ? IsoSeverity::Info : IsoSeverity::Warning,
-                  "assignment " + r.assignmentId + " for " + label(m) + " " + r.response +
-                      (r.detail ? " (" + *r.detail + ")" : std::string()));
+        onAssignmentResponse(m, b);
     }
 }
 
@@ -573,20 +585,33 @@ bool FmsCore::requestAssignment(const Guid& equipmentId, std::vector<AssignmentI
     if (!upOrRefuse("assignment request"))
         return false;
     auto it = m_machines.find(equipmentId);
-    if (it == m_machines.end()) {
-        event(IsoSeverity::Warning,
-              "assignment refused: machine " + equipmentId + " unknown on " + m_link.name);
-        return false;
+    if (it == m_machines.end())
+        return refuse("assignment request", "machine " + equipmentId + " is unknown on link " + m_link.name);
+    auto& m = it->second;
+    // §8.3 [I]: only a truck the AHS handed to the FMS is dispatched by the FMS.
+    if (m.dispatchingCustodian != "FMS")
+        return refuse("assignment request",
+                      label(m) + (m.dispatchingCustodian.empty()
+                                      ? " has not reported its DispatchingCustodian yet"
+                                      : " is dispatched by the " + m.dispatchingCustodian +
+                                            " (DispatchingCustodian " + m.dispatchingCustodian + ")"));
+    if (items.empty())
+        return refuse("assignment request", "no task given");
+    for (auto& a : items) {
+        if (std::find(enums::haulTask.begin(), enums::haulTask.end(), a.task) == enums::haulTask.end())
+            return refuse("assignment request",
+                          "task '" + a.task + "' is not one of Load, Offload, Fuel, Park, Wait");
+        if (a.destinationEquipmentId && a.destinationSpotId)
+            return refuse("assignment request",
+                          "DestinationEquipmentId and DestinationSpotId are mutually exclusive (§5 #21)");
+        if (a.destinationEquipmentId && !isGuid(*a.destinationEquipmentId))
+            return refuse("assignment request",
+                          "DestinationEquipmentId '" + *a.destinationEquipmentId + "' is not a GUID");
+        if (!a.assignmentId.empty() && !isGuid(a.assignmentId))
+            return refuse("assignment request", "AssignmentId '" + a.assignmentId + "' is not a GUID");
     }
-    if (it->second.dispatchingCustodian == "AHS") {
-        event(IsoSeverity::Warning, "assignment refused: " + label(it->second) +
-                                        " is dispatched by the AHS (DispatchingCustodian AHS)");
-        return false;
-    }
-    if (items.empty()) {
-        event(IsoSeverity::Warning, "assignment refused: empty request");
-        return false;
-    }
+    if (std::string why = routeAssignment(m, items); !why.empty())
+        return refuse("assignment request", why);
     for (auto& a : items) {
         if (a.assignmentId.empty())
             a.assignmentId = newGuid();
@@ -594,19 +619,82 @@ bool FmsCore::requestAssignment(const Guid& equipmentId, std::vector<AssignmentI
             for (auto& w : *a.route)
                 w.wayId = std::abs(w.wayId); // Q6: negative ids not emitted unless enabled
     }
-    it->second.requestedAssignments = items;
-    sendBody(HaulTruckAssignmentRequestV2{items}, equipmentId);
+    if (!sendBody(HaulTruckAssignmentRequestV2{items}, equipmentId))
+        return socketRefused("assignment request");
+    m.requestedAssignments = items;
+    m.assignmentResponses.clear();
     m_counters.add("assignment.request");
-    m_listener.onMachineChanged(it->second);
+    std::string what;
+    for (auto& a : items)
+        what += (what.empty() ? "" : ", ") + a.task + " at way " + std::to_string(a.destinationId);
+    event(IsoSeverity::Info, "assignment request sent to " + label(m) + ": " + what);
+    m_listener.onMachineChanged(m);
     return true;
+}
+
+std::string FmsCore::routeAssignment(const IsoMachineSnapshot& m, std::vector<AssignmentItem>& items) const {
+    if (m_routes.empty())
+        return {}; // no MapConnectivityV1 yet: the AHS alone judges reachability
+    std::optional<std::int64_t> from;
+    if (m.production && m.production->wayId && m_routes.contains(*m.production->wayId))
+        from = m.production->wayId;
+    for (auto& a : items) {
+        if (!m_routes.contains(a.destinationId))
+            return "destination way " + std::to_string(a.destinationId) +
+                   " is not in the AHS's MapConnectivityV1";
+        if (from) {
+            if (a.route) {
+                if (std::string why = checkRoute(m_routes, *from, *a.route, a.destinationId); !why.empty())
+                    return "task " + a.task + " to way " + std::to_string(a.destinationId) + ": " + why;
+            } else {
+                RouteResult r = shortestRoute(m_routes, *from, a.destinationId);
+                if (!r.ok)
+                    return "task " + a.task + ": destination " + r.error;
+                if (m_cfg.rules.sendRoutes)
+                    a.route = r.routeV1();
+            }
+        }
+        from = a.destinationId; // a future task starts where the previous one ends
+    }
+    return {};
 }
 
 bool FmsCore::resetAssignment(const Guid& equipmentId) {
     if (!upOrRefuse("assignment reset"))
         return false;
-    sendBody(HaulTruckAssignmentResetV1{newGuid()}, equipmentId);
+    auto it = m_machines.find(equipmentId);
+    if (it == m_machines.end())
+        return refuse("assignment reset", "machine " + equipmentId + " is unknown on link " + m_link.name);
+    if (!sendBody(HaulTruckAssignmentResetV1{newGuid()}, equipmentId))
+        return socketRefused("assignment reset");
     m_counters.add("assignment.reset");
+    event(IsoSeverity::Info, "assignment reset sent to " + label(it->second));
     return true;
+}
+
+void FmsCore::onAssignmentResponse(IsoMachineSnapshot& m, const HaulTruckAssignmentResponseV1& b) {
+    for (auto& r : b.items) {
+        auto known = std::find_if(m.assignmentResponses.begin(), m.assignmentResponses.end(),
+                                  [&](auto& x) { return x.assignmentId == r.assignmentId; });
+        // §5 #22 [I]: a Rejected for an assignment already Accepted is the AHS giving it up.
+        const bool withdrawn =
+            known != m.assignmentResponses.end() && known->response == "Accepted" && r.response == "Rejected";
+        if (known != m.assignmentResponses.end())
+            *known = r;
+        else
+            m.assignmentResponses.push_back(r);
+        if (r.response == "Accepted")
+            m.needsAssignment = false;
+        const std::string detail = r.detail ? " (" + *r.detail + ")" : std::string();
+        if (withdrawn) {
+            m_counters.add("assignment.withdrawn");
+            event(IsoSeverity::Warning, "assignment " + r.assignmentId + " of " + label(m) +
+                                            " can no longer be done: Rejected by the AHS" + detail);
+        } else {
+            event(r.response == "Accepted" ? IsoSeverity::Info : IsoSeverity::Warning,
+                  "assignment " + r.assignmentId + " for " + label(m) + " " + r.response + detail);
+        }
+    }
 }
 
 // ---------------------------------------------------------------- own machines' positions (§7.4)
@@ -634,7 +722,13 @@ void FmsCore::sendOwnPositions(const std::map<Guid, IsoPosition>& positions) {
 bool FmsCore::fetchMap() {
     if (!separateMapService() && !upOrRefuse("map fetch"))
         return false;
-    return m_mapService.fetch();
+    if (m_mapService.fetch())
+        return true;
+    m_lastRefusal =
+        separateMapService() && m_mapService.channelState() != LinkState::Up
+            ? "the map service of link " + m_link.name + " is " + toString(m_mapService.channelState())
+            : "the WebSocket of link " + m_link.name + " did not take the frame (closing)";
+    return false;
 }
 
 // ---------------------------------------------------------------- interface diagnostic (§5 #15 [I])

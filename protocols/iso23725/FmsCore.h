@@ -9,6 +9,7 @@
 #include "protocols/iso23725/MapModel.h"
 #include "protocols/iso23725/MapServiceClient.h"
 #include "protocols/iso23725/Messages.h"
+#include "protocols/iso23725/Routing.h"
 
 #include "protocols/common/Clock.h"
 #include "protocols/common/Counters.h"
@@ -62,7 +63,11 @@ public:
     bool allStopApply();
     // Removes with the id of the active stop (ours or, after operator confirmation, an external one).
     bool allStopRemove();
-    // HaulTruckAssignmentRequestV2 (first = current, then future); empty AssignmentIds are generated.
+    // HaulTruckAssignmentRequestV2 (first = current, then future); empty AssignmentIds are generated. Refused
+    // (lastRefusal says why, nothing sent) unless the truck's DispatchingCustodian is FMS (§8.3 [I]), every
+    // task is a haul task, and, once MapConnectivityV1 is known, every destination is on it and reachable
+    // from the truck's current way (then from the previous destination); a missing RouteV1 is filled with the
+    // shortest route (IsoConfig rules.autoRoute), a given one must hold.
     bool requestAssignment(const Guid& equipmentId, std::vector<AssignmentItem> items);
     bool resetAssignment(const Guid& equipmentId);
     // MapCommandV1 GET "/" (summary then every chunk), on the map service's channel.
@@ -86,6 +91,8 @@ public:
     const std::string& lastRefusal() const { return m_lastRefusal; }
     const std::map<Guid, IsoMachineSnapshot>& machines() const { return m_machines; }
     std::shared_ptr<const MapModel> map() const { return m_mapService.map(); }
+    // The AHS's MapConnectivityV1, indexed for routing (empty until received).
+    const RouteGraph& routes() const { return m_routes; }
     const std::optional<FleetDefinitionV2>& ahsFleet() const { return m_ahsFleet; }
 
 private:
@@ -108,6 +115,10 @@ private:
     };
     std::map<std::string, PeerWarning> m_peerWarnings; // bounded: a handful of fixed causes
     bool upOrRefuse(const char* what);
+    bool refuse(const std::string& what, const std::string& reason); // counter, reason, event; false
+    // The routes of an assignment request (see requestAssignment); an error when one cannot be driven.
+    std::string routeAssignment(const IsoMachineSnapshot& m, std::vector<AssignmentItem>& items) const;
+    void onAssignmentResponse(IsoMachineSnapshot& m, const HaulTruckAssignmentResponseV1& r);
     std::string frame(const Body& body, std::optional<Guid> equipmentId) const;
     bool sendBody(const Body& body, std::optional<Guid> equipmentId = std::nullopt);
     bool sendMapBody(const Body& body);
@@ -149,6 +160,7 @@ private:
     Deadline m_statusDeadline;
 
     MapServiceClient m_mapService;
+    RouteGraph m_routes;
     // Machines (snapshots in m_machines) whose position changed since the last flushPositions, in arrival
     // order.
     std::vector<const IsoMachineSnapshot*> m_positionBatch;

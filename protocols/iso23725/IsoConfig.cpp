@@ -97,6 +97,7 @@ IsoConfig parseIsoConfig(ConfigObject& section) {
         c.rules.allStopStatusAlias = r->string("allStopStatusAlias", c.rules.allStopStatusAlias);
         c.rules.mapServiceMember = r->string("mapServiceMember", c.rules.mapServiceMember);
         c.rules.emitNegativeWayIds = r->boolean("emitNegativeWayIds", false);
+        c.rules.sendRoutes = r->boolean("sendRoutes", true);
         r->finish();
     }
     section.finish();

@@ -53,9 +53,13 @@ struct IsoMachineSnapshot {
     std::optional<HaulTruckProductionStateSensorV1> sensor;
     std::optional<HaulTruckDumpV1> lastDump;
     std::optional<HaulTruckProductionCycleV1> lastCycle;
-    std::optional<HaulTruckAssignmentV1> assignment;         // AHS-reported status
-    std::vector<AssignmentItem> requestedAssignments;        // last request sent by this FMS
-    std::vector<AssignmentResponseItem> assignmentResponses; // last response received
+    std::optional<HaulTruckAssignmentV1> assignment;  // AHS-reported status
+    std::vector<AssignmentItem> requestedAssignments; // last request sent by this FMS
+    // Responses to the last request, merged by AssignmentId (a later unsolicited Rejected replaces an
+    // Accepted).
+    std::vector<AssignmentResponseItem> assignmentResponses;
+    // The AHS handed the truck to the FMS (custodian AHS -> FMS, §8.3.4) and no assignment is active since.
+    bool needsAssignment = false;
 };
 
 enum class AllStopState { Unknown, Off, On };
@@ -95,6 +99,10 @@ public:
         (void)link, (void)progress;
     }
     virtual void onMapChanged(const std::string& link, const MapModel& map) { (void)link, (void)map; }
+    // MapConnectivityV1 as received (on connection and on change), also before any map document.
+    virtual void onConnectivity(const std::string& link, const MapConnectivityV1& connectivity) {
+        (void)link, (void)connectivity;
+    }
     // Fleet discrepancies (AHS list vs configured FMS fleet); empty list = consistent.
     virtual void onFleetDiscrepancies(const std::string& link, const std::vector<std::string>& items) {
         (void)link, (void)items;

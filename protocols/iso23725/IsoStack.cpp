@@ -332,6 +332,41 @@ void IsoStack::fetchMap(const std::string& link) {
     });
 }
 
+void IsoStack::requestAssignment(const std::string& link, const Guid& equipmentId,
+                                 std::vector<AssignmentItem> items, OutcomeCallback done) {
+    m_impl->io.post(
+        [d = m_impl.get(), link, equipmentId, items = std::move(items), done = std::move(done)]() mutable {
+            TargetOutcome o{machineTarget(equipmentId), false, "no ISO 23725 link named " + link};
+            if (auto* s = d->session(link, "assignment request")) {
+                o.sent = s->requestAssignment(equipmentId, std::move(items));
+                o.reason = o.sent ? std::string() : s->lastRefusal();
+            }
+            done({std::move(o)});
+        });
+}
+
+void IsoStack::resetAssignment(const std::string& link, const Guid& equipmentId, OutcomeCallback done) {
+    m_impl->io.post([d = m_impl.get(), link, equipmentId, done = std::move(done)] {
+        TargetOutcome o{machineTarget(equipmentId), false, "no ISO 23725 link named " + link};
+        if (auto* s = d->session(link, "assignment reset")) {
+            o.sent = s->resetAssignment(equipmentId);
+            o.reason = o.sent ? std::string() : s->lastRefusal();
+        }
+        done({std::move(o)});
+    });
+}
+
+void IsoStack::fetchMap(const std::string& link, OutcomeCallback done) {
+    m_impl->io.post([d = m_impl.get(), link, done = std::move(done)] {
+        TargetOutcome o{linkTarget(link), false, "no ISO 23725 link named " + link};
+        if (auto* s = d->session(link, "map fetch")) {
+            o.sent = s->fetchMap();
+            o.reason = o.sent ? std::string() : s->lastRefusal();
+        }
+        done({std::move(o)});
+    });
+}
+
 std::vector<IsoMachineSnapshot> IsoStack::machines(const std::string& link) {
     return m_impl->io.call([&] {
         std::vector<IsoMachineSnapshot> out;

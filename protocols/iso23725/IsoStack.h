@@ -45,6 +45,14 @@ public:
                         double speedKmh);
     // MapCommandV1 GET "/" (summary then all chunks).
     void fetchMap(const std::string& link);
+    // The same three with their outcome (issue 13 §1, issue 15 §1): `done` runs once on the io thread with
+    // one TargetOutcome, sent only when the socket took the frame. Assignment and reset name the truck
+    // (machineTarget), the map fetch the link (linkTarget). Never when the stack is not running.
+    void requestAssignment(const std::string& link, const Guid& equipmentId,
+                           std::vector<AssignmentItem> items, OutcomeCallback done);
+    void resetAssignment(const std::string& link, const Guid& equipmentId, OutcomeCallback done);
+    void fetchMap(const std::string& link, OutcomeCallback done);
+    static std::string machineTarget(const Guid& equipmentId) { return "iso23725:" + equipmentId; }
 
     // ---- queries (blocking round trip to the io thread: for tests and start-up, not for hot paths) ----
     Counters& counters() { return m_counters; }

@@ -142,14 +142,20 @@ bool MapServiceClient::fetch() {
         return false;
     }
     m_assembler.reset();
-    requestMap();
-    return true;
+    if (requestMap())
+        return true;
+    m_counters.add("cmd.refused.socket");
+    m_hooks.event(IsoSeverity::Warning, "map fetch not sent: the socket of the map service of '" + m_link +
+                                            "' did not take the frame");
+    return false;
 }
 
-void MapServiceClient::requestMap() {
+bool MapServiceClient::requestMap() {
+    if (!m_hooks.send(MapCommandV1{"GET", "/"}))
+        return false;
     m_fetchPending = true;
-    m_hooks.send(MapCommandV1{"GET", "/"});
     m_counters.add("map.fetch");
+    return true;
 }
 
 void MapServiceClient::askSummaryIfIdle() {

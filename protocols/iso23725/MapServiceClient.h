@@ -52,14 +52,14 @@ public:
     void summary(const MapSummaryV1& s, bool onMapChannel);
     void connectivity(const MapConnectivityV1& c);
 
-    // MapCommandV1 GET "/" now. False (with an event) when the separate channel is not up; the caller checks
-    // the main link when the service shares it.
+    // MapCommandV1 GET "/" now. False (with an event) when the separate channel is not up or the socket did
+    // not take the frame; the caller checks the main link when the service shares it.
     bool fetch();
     // The identification deadline, due at clock.now().
     void poll();
 
 private:
-    void requestMap();
+    bool requestMap(); // false: the socket did not take MapCommandV1
     void finishMap();
     void interruptTransfer(const std::string& why);
     void askSummaryIfIdle();

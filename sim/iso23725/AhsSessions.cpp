@@ -190,12 +190,12 @@ void AhsSessions::snapshotTo(SessionId s) {
             Member{MachineAutonomyModeV1{m_fleet.autonomyMode(t)}, nlohmann::json::object()});
         env.members.push_back(Member{m_fleet.position(t), nlohmann::json::object()}); // piggy-backed (§3)
         sendText(Sock::Main, s, encodeMessage(env));
-        sendTo(s, MachineDispatchAvailabilityV1{"FMS", std::nullopt, std::nullopt}, t.id);
+        sendTo(s, MachineDispatchAvailabilityV1{t.custodian, std::nullopt, std::nullopt}, t.id);
         sendTo(s, MachineDiagnosticV2{t.faults}, t.id);
         sendTo(s, m_fleet.productionState(t), t.id);
         sendTo(s, t.sensorSent, t.id); // §5 row 18 [I]: current sensor inputs next to the state
     }
-    sendTo(s, m_map.connectivity); // §9 connectivity is not part of the map service: always here
+    sendTo(s, m_fleet.connectivity()); // §9 connectivity is not part of the map service: always here
     if (!m_cfg.separateMapService) {
         sendTo(s, MapServiceV1{1});
         sendTo(s, m_map.summary(m_cfg.mapChunkElements));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace ocu::sim {
 
@@ -34,7 +35,8 @@ Guid stableGuid(std::uint32_t seed, std::uint32_t kind, std::uint32_t index) {
 
 HaulFleet::HaulFleet(const PitMap& map, HaulFleetConfig config, Counters& counters, Emit emit, UnixClock now)
     : m_map(map), m_cfg(config), m_counters(counters), m_emit(std::move(emit)), m_now(std::move(now)),
-      m_frame(map.map.origin), m_rng(config.seed) {
+      m_frame(map.map.origin), m_rng(config.seed), m_connectivity(map.connectivity),
+      m_routes(map.connectivity) {
     std::uniform_real_distribution<double> u(0, 1);
     const int shovels = static_cast<int>(m_map.loadAreas.size());
     const int dumps = static_cast<int>(m_map.dumpAreas.size());
@@ -95,6 +97,11 @@ std::string HaulFleet::autonomyMode(const HaulTruck& t) const {
     if (t.manual)
         return "Manual";
     return m_allStopOn ? "AllStop" : "Autonomous";
+}
+
+void HaulFleet::emitProduction(HaulTruck& t) {
+    t.reportedWay = t.motion.wayId();
+    m_emit(productionState(t), t.id);
 }
 
 HaulTruckProductionStateV2 HaulFleet::productionState(const HaulTruck& t) const {
@@ -172,8 +179,11 @@ void HaulFleet::tick(double dt) {
             if (t.motion.arrived()) {
                 t.motion.halt();
                 arrive(t);
+            } else if (t.motion.wayId() != t.reportedWay) {
+                // WayId is part of the production state (§5 #17, "current way"): a new way is a change.
+                emitProduction(t);
             }
-        } else if (!halted) {
+        } else if (!halted && !t.idle) {
             t.dwell -= dt;
             if (t.dwell <= 0)
                 leave(t);
@@ -201,6 +211,10 @@ void HaulFleet::arrive(HaulTruck& t) {
         t.phase = HaulPhase::Parked;
         t.dwell = kParkedSeconds;
         setProduction(t, "Parked");
+        if (t.custodian == "AHS" && !t.fmsWork && t.idle) {
+            // Parked out of the way: the AHS hands the truck back and so asks for work (§8.3.4).
+            setCustodian(t, "FMS");
+        }
     }
 }
 
@@ -253,6 +267,10 @@ void HaulFleet::leave(HaulTruck& t) {
             m_emit(HaulTruckAssignmentV1{next.assignmentId, "Active", next.task, next.destinationId}, t.id);
         }
     }
+    if (t.assignments.empty() && t.fmsWork) {
+        goIdle(t);
+        return;
+    }
     std::int64_t dest;
     if (!t.assignments.empty())
         dest = t.assignments.front().destinationId;
@@ -276,14 +294,14 @@ void HaulFleet::leave(HaulTruck& t) {
     }
     startRoute(t, legs, next);
     t.motion.placeAt(0);
-    m_emit(productionState(t), t.id);
+    emitProduction(t);
 }
 
 void HaulFleet::setProduction(HaulTruck& t, const std::string& state) {
     if (t.productionState == state)
         return;
     t.productionState = state;
-    m_emit(productionState(t), t.id);
+    emitProduction(t);
 }
 
 // HaulTruckProductionStateSensorV1 (§5 row 18, Q8 [I]): the raw inputs of the production state. Loaded from
@@ -351,31 +369,62 @@ void HaulFleet::setManual(int index, bool manual) {
     m_emit(MachineAutonomyModeV1{autonomyMode(t)}, t.id);
 }
 
+std::string HaulFleet::cannotDo(const HaulTruck& t, const AssignmentItem& a, std::int64_t from) const {
+    if (t.custodian != "FMS")
+        return "DispatchingCustodian is " + t.custodian + ": " + t.hid + " is dispatched by the AHS";
+    if (a.task == "Load" && m_map.loadIndex(a.destinationId) < 0)
+        return "destination " + std::to_string(a.destinationId) + " is not a load area";
+    if (a.task == "Offload" && m_map.dumpIndex(a.destinationId) < 0)
+        return "destination " + std::to_string(a.destinationId) + " is not a dump area";
+    if (a.task == "Park" && a.destinationId != m_map.parkArea)
+        return "destination " + std::to_string(a.destinationId) + " is not a park area";
+    if (a.task == "Fuel" || a.task == "Wait")
+        return "task " + a.task + " not supported by this AHS";
+    if (m_closedWays.count(a.destinationId))
+        return "destination " + std::to_string(a.destinationId) + " is closed by the AHS";
+    if (a.route) {
+        for (auto& w : *a.route)
+            if (m_closedWays.count(std::llabs(w.wayId)))
+                return "route way " + std::to_string(std::llabs(w.wayId)) + " is closed by the AHS";
+        // The FMS planned from the way it last heard of; the part of the route the truck is already past
+        // does not count.
+        std::vector<WayRef> ahead = *a.route;
+        for (std::size_t i = 0; i < a.route->size(); ++i)
+            if (std::llabs((*a.route)[i].wayId) == from)
+                ahead.assign(a.route->begin() + static_cast<std::ptrdiff_t>(i), a.route->end());
+        if (auto why = checkRoute(m_routes, from, ahead, a.destinationId); !why.empty())
+            return "RouteV1 cannot be driven: " + why;
+    }
+    if (auto r = shortestRoute(m_routes, from, a.destinationId); !r.ok)
+        return "destination " + r.error;
+    return {};
+}
+
 void HaulFleet::assign(const Guid& equipmentId, const HaulTruckAssignmentRequestV2& request) {
     HaulTruck* t = truck(equipmentId);
     HaulTruckAssignmentResponseV1 resp;
     std::vector<AssignmentItem> accepted;
+    std::int64_t from = t ? t->motion.wayId() : 0;
     for (auto& a : request.items) {
-        std::string why;
-        if (!t)
-            why = "unknown machine";
-        else if (a.task == "Load" && m_map.loadIndex(a.destinationId) < 0)
-            why = "destination " + std::to_string(a.destinationId) + " is not a load area";
-        else if (a.task == "Offload" && m_map.dumpIndex(a.destinationId) < 0)
-            why = "destination " + std::to_string(a.destinationId) + " is not a dump area";
-        else if (a.task == "Park" && a.destinationId != m_map.parkArea)
-            why = "destination " + std::to_string(a.destinationId) + " is not a park area";
-        else if (a.task == "Fuel" || a.task == "Wait")
-            why = "task " + a.task + " not supported by this AHS";
-        if (why.empty())
+        std::string why = t ? cannotDo(*t, a, from) : "unknown machine";
+        if (why.empty()) {
             accepted.push_back(a);
+            from = a.destinationId; // the next task starts where this one ends
+        }
         resp.items.push_back(
             AssignmentResponseItem{a.assignmentId, why.empty() ? "Accepted" : "Rejected",
                                    why.empty() ? std::nullopt : std::optional<std::string>(why)});
     }
+    m_counters.add("sim.assign.requests");
     m_emit(resp, equipmentId);
     if (t && !accepted.empty()) {
+        if (!t->assignments.empty() && t->assignments.front().assignmentId != accepted.front().assignmentId) {
+            const auto& old = t->assignments.front(); // replaced by the new request
+            m_emit(HaulTruckAssignmentV1{old.assignmentId, "Cancelled", old.task, old.destinationId}, t->id);
+        }
         t->assignments = accepted;
+        t->fmsWork = true;
+        t->idle = false;
         const auto& first = accepted.front();
         m_emit(HaulTruckAssignmentV1{first.assignmentId, "Active", first.task, first.destinationId}, t->id);
         if (t->phase == HaulPhase::Parked)
@@ -392,6 +441,68 @@ void HaulFleet::resetAssignments(const Guid& equipmentId) {
         m_emit(HaulTruckAssignmentV1{a.assignmentId, "Cancelled", a.task, a.destinationId}, t->id);
     }
     t->assignments.clear();
+}
+
+void HaulFleet::setCustodian(HaulTruck& t, const std::string& actor) {
+    if (t.custodian == actor)
+        return;
+    t.custodian = actor;
+    m_emit(MachineDispatchAvailabilityV1{actor, std::nullopt, std::nullopt}, t.id);
+}
+
+void HaulFleet::setCustodian(int index, const std::string& actor) {
+    if (index < 0 || index >= static_cast<int>(m_trucks.size()) || (actor != "AHS" && actor != "FMS"))
+        return;
+    setCustodian(m_trucks[static_cast<std::size_t>(index)], actor);
+}
+
+void HaulFleet::goIdle(HaulTruck& t) {
+    t.fmsWork = false;
+    t.idle = true;
+    setCustodian(t, "AHS"); // the AHS moves it out of the way itself
+    auto legs = legsTo(t, m_map.parkArea);
+    startRoute(t, legs, HaulPhase::ToPark);
+    t.motion.placeAt(0);
+    emitProduction(t);
+}
+
+void HaulFleet::setWayClosed(std::int64_t wayId, bool closed) {
+    if (closed ? !m_closedWays.insert(wayId).second : m_closedWays.erase(wayId) == 0)
+        return;
+    m_connectivity = m_map.connectivity;
+    for (auto& item : m_connectivity.items)
+        std::erase_if(item.connection, [&](const WayRef& c) { return m_closedWays.count(c.wayId) != 0; });
+    m_routes = RouteGraph(m_connectivity);
+    m_emit(m_connectivity, Guid()); // §9: on change, to every FMS
+    if (!closed)
+        return;
+    // Accepted tasks that can no longer be driven are given up, with the ones queued after them.
+    for (auto& t : m_trucks) {
+        std::int64_t from = t.motion.wayId();
+        std::size_t firstLost = t.assignments.size();
+        std::string why;
+        for (std::size_t i = 0; i < t.assignments.size(); ++i) {
+            why = cannotDo(t, t.assignments[i], from);
+            if (!why.empty()) {
+                firstLost = i;
+                break;
+            }
+            from = t.assignments[i].destinationId;
+        }
+        if (firstLost == t.assignments.size())
+            continue;
+        HaulTruckAssignmentResponseV1 lost;
+        for (std::size_t i = firstLost; i < t.assignments.size(); ++i)
+            lost.items.push_back(AssignmentResponseItem{t.assignments[i].assignmentId, "Rejected",
+                                                        "can no longer be done: " + why});
+        m_counters.add("sim.assign.withdrawn");
+        m_emit(lost, t.id);
+        if (firstLost == 0) {
+            const auto& a = t.assignments.front();
+            m_emit(HaulTruckAssignmentV1{a.assignmentId, "Cancelled", a.task, a.destinationId}, t.id);
+        }
+        t.assignments.resize(firstLost);
+    }
 }
 
 } // namespace ocu::sim

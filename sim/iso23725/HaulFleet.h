@@ -9,6 +9,7 @@
 #include "sim/iso23725/TruckKinematics.h"
 
 #include "protocols/iso23725/Messages.h"
+#include "protocols/iso23725/Routing.h"
 
 #include "protocols/common/Clock.h"
 #include "protocols/common/Counters.h"
@@ -17,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,10 @@ struct HaulTruck {
     int payload = 0;  // t on board
     std::string productionState = "Parked";
     std::vector<iso23725::AssignmentItem> assignments; // queue (first = current)
+    std::string custodian = "FMS"; // MachineDispatchAvailabilityV1.DispatchingCustodian (§8.3)
+    bool fmsWork = false;          // working through FMS assignments: idle when they run out
+    bool idle = false;             // parked, waiting for an FMS assignment
+    std::int64_t reportedWay = 0;  // WayId of the last HaulTruckProductionStateV2 sent
     iso23725::Guid cycleId;
     std::int64_t cycleStartMs = 0;
     double fuel = 80;
@@ -79,6 +85,14 @@ public:
     void assign(const iso23725::Guid& equipmentId, const iso23725::HaulTruckAssignmentRequestV2& request);
     // HaulTruckAssignmentResetV1: the current assignment is Cancelled and the queue emptied.
     void resetAssignments(const iso23725::Guid& equipmentId);
+    // Who dispatches the truck (§8.3): "AHS" (assignments rejected) or "FMS"; emits the availability.
+    void setCustodian(int index, const std::string& actor);
+    // Closes (or reopens) a way: connections into it leave the AHS's MapConnectivityV1 (emitted, §9 on
+    // change); new tasks to or through it are rejected as unreachable; accepted ones that can no longer be
+    // driven are given up with an unsolicited HaulTruckAssignmentResponseV1 Rejected (§5 #22 [I]) and the
+    // current one Cancelled.
+    void setWayClosed(std::int64_t wayId, bool closed);
+    const iso23725::MapConnectivityV1& connectivity() const { return m_connectivity; }
 
     // ---- what the trucks report ----
     const std::vector<HaulTruck>& trucks() const { return m_trucks; }
@@ -96,9 +110,15 @@ private:
     void leave(HaulTruck& t);
     std::int64_t areaOf(const HaulTruck& t) const;
     void setProduction(HaulTruck& t, const std::string& state);
+    void emitProduction(HaulTruck& t); // HaulTruckProductionStateV2 now (and the way it reports)
     iso23725::HaulTruckProductionStateSensorV1 sensor(const HaulTruck& t) const;
     void updateSensor(HaulTruck& t);
     void reportHealth(HaulTruck& t);
+    // Why the AHS cannot do `a` starting from way `from` (empty: it can).
+    std::string cannotDo(const HaulTruck& t, const iso23725::AssignmentItem& a, std::int64_t from) const;
+    void setCustodian(HaulTruck& t, const std::string& actor);
+    // The FMS's work ran out: the AHS takes the truck to the park area, then hands it back (asks for work).
+    void goIdle(HaulTruck& t);
 
     const PitMap& m_map;
     HaulFleetConfig m_cfg;
@@ -109,6 +129,9 @@ private:
     std::mt19937 m_rng;
     std::vector<HaulTruck> m_trucks;
     bool m_allStopOn = false;
+    std::set<std::int64_t> m_closedWays;
+    iso23725::MapConnectivityV1 m_connectivity; // the map's, without connections into closed ways
+    iso23725::RouteGraph m_routes;
     double m_simTime = 0;
 };
 

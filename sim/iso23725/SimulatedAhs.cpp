@@ -22,7 +22,9 @@ struct SimulatedAhs::Impl {
         : cfg(std::move(c)), io("sim-iso23725"), timer(io.context()),
           map(generatePitMap(PitLayout{cfg.shovelCount, cfg.dumpCount, cfg.origin}, unixMillisNow())),
           fleet(map, HaulFleetConfig{cfg.truckCount, cfg.seed, cfg.healthEvents}, counters,
-                [this](const Body& member, const Guid& eq) { sessions.broadcast(member, eq); }),
+                [this](const Body& member, const Guid& eq) {
+                    sessions.broadcast(member, eq.empty() ? std::nullopt : std::optional<Guid>(eq));
+                }),
           sessions(io.context(), cfg, map, fleet, counters) {}
 
     SimulatedAhsConfig cfg;
@@ -153,6 +155,31 @@ void SimulatedAhs::freezeFor(std::chrono::milliseconds d) {
 
 void SimulatedAhs::setTruckManual(int index, bool manual) {
     m_impl->io.post([d = m_impl.get(), index, manual] { d->fleet.setManual(index, manual); });
+}
+
+void SimulatedAhs::setTruckCustodian(int index, const std::string& actor) {
+    m_impl->io.post([d = m_impl.get(), index, actor] { d->fleet.setCustodian(index, actor); });
+}
+
+void SimulatedAhs::setWayClosed(std::int64_t wayId, bool closed) {
+    m_impl->io.post([d = m_impl.get(), wayId, closed] { d->fleet.setWayClosed(wayId, closed); });
+}
+
+SimulatedAhs::DispatchView SimulatedAhs::dispatchView() {
+    return m_impl->io.call([&] {
+        DispatchView v;
+        const auto& m = m_impl->map;
+        v.loadAreas = m.loadAreas;
+        v.dumpAreas = m.dumpAreas;
+        v.parkArea = m.parkArea;
+        v.parkRoad = m.parkRoad;
+        v.rampDown = m.rampDown;
+        v.rampUp = m.rampUp;
+        for (auto& t : m_impl->fleet.trucks())
+            v.trucks.push_back(DispatchView::Truck{t.id, t.custodian, t.idle, t.productionState,
+                                                   t.assignments.size(), t.motion.wayId()});
+        return v;
+    });
 }
 
 std::vector<double> SimulatedAhs::truckSpeedsKmh() {

@@ -95,6 +95,24 @@ public:
     void freezeFor(std::chrono::milliseconds d);
     void setTruckManual(int index, bool manual); // autonomy mode change
     std::vector<double> truckSpeedsKmh();        // current speeds
+    // Dispatch (issue 15 §5): who dispatches a truck ("AHS" or "FMS"; AHS -> FMS asks the FMS for work), and
+    // a way closed by the AHS (connectivity re-sent, impossible accepted tasks given up with a Rejected).
+    void setTruckCustodian(int index, const std::string& actor);
+    void setWayClosed(std::int64_t wayId, bool closed);
+    struct DispatchView {
+        struct Truck {
+            iso23725::Guid id;
+            std::string custodian;
+            bool idle = false;
+            std::string productionState;
+            std::size_t queued = 0; // accepted assignments not completed
+            std::int64_t wayId = 0;
+        };
+        std::vector<std::int64_t> loadAreas, dumpAreas;
+        std::int64_t parkArea = 0, parkRoad = 0, rampDown = 0, rampUp = 0;
+        std::vector<Truck> trucks;
+    };
+    DispatchView dispatchView(); // blocking round trip to the simulator's io thread
 
     struct Impl;
 

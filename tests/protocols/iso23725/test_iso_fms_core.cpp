@@ -18,6 +18,7 @@ namespace {
 const Guid kFms = "0f1e2d3c-4b5a-4968-8776-a5b4c3d2e1f0";
 const Guid kTruck = "c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78";
 const Guid kLight = "5a6b7c8d-9e0f-4a1b-8c2d-3e4f5a6b7c8d";
+const Guid kUnknownTruck = "11111111-2222-4333-8444-555555555555";
 
 struct Outbound final : FmsOutbound {
     bool mainOpen = true;
@@ -187,6 +188,132 @@ private slots:
         f.out.mainOpen = true;
         QVERIFY(f.session->allStopApply());
         QCOMPARE(allOf<MachineAllStopRequestV1>(f.out.main).size(), std::size_t(1));
+    }
+
+    // Issue 15 §1: assignments only while the AHS lets the FMS dispatch the truck; AHS -> FMS asks for work.
+    void assignmentOnlyWhileCustodianIsFms() {
+        Fixture f;
+        f.connect();
+        const auto sent = f.out.main.size();
+        const std::vector<AssignmentItem> load{AssignmentItem{"", "Load", 4201, {}, {}, {}}};
+        QVERIFY(!f.session->requestAssignment(kTruck, load)); // custodian not reported yet
+        QCOMPARE(f.session->lastRefusal(), std::string("HT01 has not reported its DispatchingCustodian yet"));
+        f.session->text(fromAhs(MachineDispatchAvailabilityV1{"AHS", std::nullopt, std::nullopt}, kTruck));
+        QVERIFY(!f.session->requestAssignment(kTruck, load));
+        QCOMPARE(f.session->lastRefusal(),
+                 std::string("HT01 is dispatched by the AHS (DispatchingCustodian AHS)"));
+        QCOMPARE(f.out.main.size(), sent); // nothing on the wire
+        QVERIFY(!f.session->machines().at(kTruck).needsAssignment);
+        f.session->text(fromAhs(MachineDispatchAvailabilityV1{"FMS", std::nullopt, std::nullopt}, kTruck));
+        QVERIFY(f.session->machines().at(kTruck).needsAssignment);
+        QCOMPARE(f.listener.count(IsoSeverity::Warning, "HT01 needs an assignment (custodian AHS -> FMS"), 1);
+        QVERIFY(f.session->requestAssignment(kTruck, load));
+        auto req = bodyOf<HaulTruckAssignmentRequestV2>(f.out.main.back());
+        QVERIFY(req);
+        QCOMPARE(req->items.size(), std::size_t(1));
+        QVERIFY(isGuid(req->items[0].assignmentId));
+        QCOMPARE(req->items[0].task, std::string("Load"));
+        QVERIFY(!req->items[0].route); // no MapConnectivityV1 yet: no route of ours
+        QCOMPARE(*decodeMessage(f.out.main.back())->header.equipmentId, kTruck);
+        f.session->text(fromAhs(HaulTruckAssignmentResponseV1{{AssignmentResponseItem{
+                                    req->items[0].assignmentId, "Accepted", {}}}},
+                                kTruck));
+        QVERIFY(!f.session->machines().at(kTruck).needsAssignment);
+        // Bad tasks never leave.
+        QVERIFY(!f.session->requestAssignment(kTruck, {AssignmentItem{"", "Dig", 4201, {}, {}, {}}}));
+        QCOMPARE(f.session->lastRefusal(),
+                 std::string("task 'Dig' is not one of Load, Offload, Fuel, Park, Wait"));
+        QVERIFY(!f.session->requestAssignment(kTruck, {}));
+        QVERIFY(!f.session->requestAssignment(kUnknownTruck, load));
+        QCOMPARE(allOf<HaulTruckAssignmentRequestV2>(f.out.main).size(), std::size_t(1));
+    }
+
+    // Issue 15 §2: once MapConnectivityV1 is known, destinations are routed from the truck's current way; an
+    // unreachable or unknown one is refused before sending.
+    void unreachableDestinationRefusedAndRoutesFilledIn() {
+        Fixture f;
+        f.connect();
+        f.session->text(fromAhs(MachineDispatchAvailabilityV1{"FMS", std::nullopt, std::nullopt}, kTruck));
+        auto conn = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:15:01.000Z","MapConnectivityV1":[)"
+            R"({"WayId":4101,"WayType":"Area","AreaProperty":{"DefaultTask":"Offload","Name":"North Waste Dump"},"Connection":[{"WayId":2001}]},)"
+            R"({"WayId":2001,"WayType":"Road","RoadProperty":{"Length":1840.5,"Name":"North Ramp"},"Connection":[{"WayId":4101},{"WayId":4201}]},)"
+            R"({"WayId":4201,"WayType":"Area","AreaProperty":{"DefaultTask":"Load","Name":"Pit 3 Bench 480"},"Connection":[{"WayId":2001}]},)"
+            R"({"WayId":4301,"WayType":"Area","AreaProperty":{"DefaultTask":"Park","Name":"Closed bay"},"Connection":[]}]})");
+        QVERIFY(conn);
+        f.session->text(encodeMessage(*conn));
+        QCOMPARE(f.session->routes().size(), std::size_t(4));
+        f.session->text(
+            fromAhs(HaulTruckProductionStateV2{std::nullopt, 4101, "Autonomous", "Parked"}, kTruck));
+        const auto sent = f.out.main.size();
+        QVERIFY(!f.session->requestAssignment(kTruck, {AssignmentItem{"", "Park", 4301, {}, {}, {}}}));
+        QCOMPARE(
+            f.session->lastRefusal(),
+            std::string("task Park: destination way 4301 unreachable from way 4101 over MapConnectivityV1"));
+        QVERIFY(!f.session->requestAssignment(kTruck, {AssignmentItem{"", "Load", 9999, {}, {}, {}}}));
+        QCOMPARE(f.session->lastRefusal(),
+                 std::string("destination way 9999 is not in the AHS's MapConnectivityV1"));
+        // A future task is routed from the previous destination: 4201 -> 4301 is unreachable too.
+        QVERIFY(!f.session->requestAssignment(kTruck, {AssignmentItem{"", "Load", 4201, {}, {}, {}},
+                                                       AssignmentItem{"", "Park", 4301, {}, {}, {}}}));
+        QCOMPARE(f.out.main.size(), sent);
+        QCOMPARE(f.counters.get("cmd.refused"), std::uint64_t(3));
+        // Load at 4201 then offload at 4101: both routed over 2001.
+        QVERIFY(f.session->requestAssignment(kTruck, {AssignmentItem{"", "Load", 4201, {}, {}, {}},
+                                                      AssignmentItem{"", "Offload", 4101, {}, {}, {}}}));
+        auto req = bodyOf<HaulTruckAssignmentRequestV2>(f.out.main.back());
+        QVERIFY(req);
+        QCOMPARE(*req->items[0].route, (std::vector<WayRef>{{2001}}));
+        QCOMPARE(*req->items[1].route, (std::vector<WayRef>{{2001}}));
+        // An operator's route that breaks is refused; one that holds is sent as given.
+        QVERIFY(!f.session->requestAssignment(
+            kTruck, {AssignmentItem{"", "Load", 4201, {}, {}, std::vector<WayRef>{{4301}}}}));
+        QVERIFY(f.session->lastRefusal().find("route breaks") != std::string::npos);
+    }
+
+    // §5 #22 [I]: a Rejected after an Accepted is the AHS giving the task up: a warning, the response
+    // replaced.
+    void unsolicitedRejectedIsAWithdrawal() {
+        Fixture f;
+        f.connect();
+        f.session->text(fromAhs(MachineDispatchAvailabilityV1{"FMS", std::nullopt, std::nullopt}, kTruck));
+        QVERIFY(f.session->requestAssignment(kTruck, {AssignmentItem{"", "Load", 4201, {}, {}, {}}}));
+        const Guid id = bodyOf<HaulTruckAssignmentRequestV2>(f.out.main.back())->items[0].assignmentId;
+        f.session->text(
+            fromAhs(HaulTruckAssignmentResponseV1{{AssignmentResponseItem{id, "Accepted", {}}}}, kTruck));
+        f.session->text(fromAhs(HaulTruckAssignmentResponseV1{{AssignmentResponseItem{
+                                    id, "Rejected", std::string("shovel SH01 down")}}},
+                                kTruck));
+        const auto& m = f.session->machines().at(kTruck);
+        QCOMPARE(m.assignmentResponses.size(), std::size_t(1));
+        QCOMPARE(m.assignmentResponses[0].response, std::string("Rejected"));
+        QCOMPARE(*m.assignmentResponses[0].detail, std::string("shovel SH01 down"));
+        QCOMPARE(f.listener.count(IsoSeverity::Warning,
+                                  "can no longer be done: Rejected by the AHS (shovel SH01 down)"),
+                 1);
+        QCOMPARE(f.counters.get("assignment.withdrawn"), std::uint64_t(1));
+    }
+
+    // Issue 13 §1 for assignment, reset and map fetch: up, but the socket does not take the frame.
+    void assignmentResetAndFetchNotTakenBySocketAreNotSent() {
+        Fixture f;
+        f.connect();
+        f.session->text(fromAhs(MachineDispatchAvailabilityV1{"FMS", std::nullopt, std::nullopt}, kTruck));
+        f.out.mainOpen = false;
+        QVERIFY(!f.session->requestAssignment(kTruck, {AssignmentItem{"", "Load", 4201, {}, {}, {}}}));
+        QVERIFY(f.session->lastRefusal().find("did not take the frame") != std::string::npos);
+        QVERIFY(f.session->machines().at(kTruck).requestedAssignments.empty());
+        QVERIFY(!f.session->resetAssignment(kTruck));
+        QVERIFY(f.session->lastRefusal().find("did not take the frame") != std::string::npos);
+        QVERIFY(!f.session->fetchMap());
+        QVERIFY(f.session->lastRefusal().find("did not take the frame") != std::string::npos);
+        QCOMPARE(f.counters.get("assignment.request"), std::uint64_t(0));
+        QCOMPARE(f.counters.get("map.fetch"), std::uint64_t(0));
+        f.out.mainOpen = true;
+        QVERIFY(f.session->resetAssignment(kTruck));
+        QVERIFY(f.session->fetchMap());
+        QCOMPARE(allOf<HaulTruckAssignmentResetV1>(f.out.main).size(), std::size_t(1));
+        QCOMPARE(allOf<MapCommandV1>(f.out.main).size(), std::size_t(1));
     }
 
     void closeMakesStateUnknownBeforeLinkDown() {

@@ -78,6 +78,87 @@ private slots:
             QVERIFY2(names.count(n), n);
     }
 
+    // Issue 15 §1: the assignment messages (§5 rows 21-24, §6 examples 21-24) byte for byte. The codec writes
+    // members in name order (one canonical form); these vectors pin every byte, and the examples as the note
+    // writes them (its member order) decode to the same values.
+    void assignmentVectorsByteExact() {
+        const Guid truck = "c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78";
+        const Guid a1 = "e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56", a2 = "f52b8d3c-7e40-4c69-b0f1-8a2d3e4c5b67";
+        const HaulTruckAssignmentRequestV2 req{
+            {AssignmentItem{a1,
+                            "Load",
+                            4201,
+                            std::string("a2d4f6b8-1c3e-4a5b-9d7f-0e2c4b6a8d13"),
+                            {},
+                            std::vector<WayRef>{{2001}}},
+             AssignmentItem{a2, "Offload", 4101, {}, std::int64_t(3), {}}}};
+        const std::string reqText =
+            R"({"EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78","HaulTruckAssignmentRequestV2":[)"
+            R"({"AssignmentId":"e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56","DestinationEquipmentId":"a2d4f6b8-1c3e-4a5b-9d7f-0e2c4b6a8d13",)"
+            R"("DestinationId":4201,"RouteV1":[{"WayId":2001}],"Task":"Load"},)"
+            R"({"AssignmentId":"f52b8d3c-7e40-4c69-b0f1-8a2d3e4c5b67","DestinationId":4101,"DestinationSpotId":3,"Task":"Offload"}],)"
+            R"("Protocol":"ISO23725","Timestamp":"2025-03-14T02:20:30.000Z","Version":1})";
+        QCOMPARE(encodeMessage(req, truck, 1741918830000), reqText);
+        const HaulTruckAssignmentResponseV1 resp{
+            {AssignmentResponseItem{a1, "Accepted", {}},
+             AssignmentResponseItem{a2, "Rejected", std::string("Dump 4101 closed by AHS")}}};
+        const std::string respText =
+            R"({"EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78","HaulTruckAssignmentResponseV1":[)"
+            R"({"AssignmentId":"e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56","Response":"Accepted"},)"
+            R"({"AssignmentId":"f52b8d3c-7e40-4c69-b0f1-8a2d3e4c5b67","Detail":"Dump 4101 closed by AHS","Response":"Rejected"}],)"
+            R"("Protocol":"ISO23725","Timestamp":"2025-03-14T02:20:30.640Z","Version":1})";
+        QCOMPARE(encodeMessage(resp, truck, 1741918830640), respText);
+        QCOMPARE(encodeMessage(HaulTruckAssignmentResetV1{"6a8c0e24-4f6b-4d8e-9a2c-1b3d5f7a9c0e"}, truck,
+                               1741920000000),
+                 std::string(
+                     R"({"EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78","HaulTruckAssignmentResetV1":)"
+                     R"({"ResetId":"6a8c0e24-4f6b-4d8e-9a2c-1b3d5f7a9c0e"},"Protocol":"ISO23725",)"
+                     R"("Timestamp":"2025-03-14T02:40:00.000Z","Version":1})"));
+        const HaulTruckAssignmentV1 active{a1, "Active", std::string("Load"), 4201};
+        QCOMPARE(
+            encodeMessage(active, truck, 1741918831000),
+            std::string(R"({"EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78","HaulTruckAssignmentV1":)"
+                        R"({"AssignmentId":"e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56","DestinationId":4201,)"
+                        R"("Status":"Active","Task":"Load"},"Protocol":"ISO23725",)"
+                        R"("Timestamp":"2025-03-14T02:20:31.000Z","Version":1})"));
+        // Idle: AssignmentId null (row 24), never left out.
+        QCOMPARE(
+            encodeMessage(HaulTruckAssignmentV1{std::nullopt, "Completed", {}, {}}, truck, 1741918831000),
+            std::string(R"({"EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78","HaulTruckAssignmentV1":)"
+                        R"({"AssignmentId":null,"Status":"Completed"},"Protocol":"ISO23725",)"
+                        R"("Timestamp":"2025-03-14T02:20:31.000Z","Version":1})"));
+        // Decoding, from the note's examples in their own member order.
+        auto r = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:20:30.000Z","EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78",)"
+            R"("HaulTruckAssignmentRequestV2":[{"AssignmentId":"e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56","Task":"Load","DestinationId":4201,)"
+            R"("DestinationEquipmentId":"a2d4f6b8-1c3e-4a5b-9d7f-0e2c4b6a8d13","RouteV1":[{"WayId":2001}]},)"
+            R"({"AssignmentId":"f52b8d3c-7e40-4c69-b0f1-8a2d3e4c5b67","Task":"Offload","DestinationId":4101,"DestinationSpotId":3}]})");
+        QVERIFY(r && r->errors.empty());
+        QVERIFY(*r->find<HaulTruckAssignmentRequestV2>() == req);
+        r = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:20:30.640Z","EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78",)"
+            R"("HaulTruckAssignmentResponseV1":[{"AssignmentId":"e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56","Response":"Accepted"},)"
+            R"({"AssignmentId":"f52b8d3c-7e40-4c69-b0f1-8a2d3e4c5b67","Response":"Rejected","Detail":"Dump 4101 closed by AHS"}]})");
+        QVERIFY(r && r->errors.empty());
+        QVERIFY(*r->find<HaulTruckAssignmentResponseV1>() == resp);
+        r = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:20:31.000Z","EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78",)"
+            R"("HaulTruckAssignmentV1":{"AssignmentId":"e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56","Status":"Active","Task":"Load","DestinationId":4201}})");
+        QVERIFY(r && r->errors.empty());
+        QVERIFY(*r->find<HaulTruckAssignmentV1>() == active);
+        // Bad values are refused with the member named: a task outside the set, a status outside the set.
+        r = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:20:31.000Z","EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78",)"
+            R"("HaulTruckAssignmentV1":{"AssignmentId":null,"Status":"Done"}})");
+        QVERIFY(r && r->errors.size() == 1);
+        QVERIFY2(r->errors[0].find("HaulTruckAssignmentV1.Status") == 0, r->errors[0].c_str());
+        r = decodeMessage(
+            R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:20:31.000Z","EquipmentId":"c3a51f7e-0d24-4b9a-8f63-1e2d4c5b6a78",)"
+            R"("HaulTruckAssignmentRequestV2":[{"AssignmentId":"e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56","Task":"Dig","DestinationId":4201}]})");
+        QVERIFY(r && r->errors.size() == 1);
+        QVERIFY2(r->errors[0].find("HaulTruckAssignmentRequestV2[0].Task") == 0, r->errors[0].c_str());
+    }
+
     void decodedValues() {
         auto r = decodeMessage(msg(std::string(R"("MachinePositionV1":{)") + kPose + "}", true));
         QVERIFY(r.ok());

@@ -161,12 +161,19 @@ private slots:
         for (const auto& t : s.fleet.trucks()) {
             const auto states = s.emittedFor<HaulTruckProductionStateV2>(t.id);
             QVERIFY(states.size() >= 8);
+            int wayChanges = 0;
             for (std::size_t i = 0; i + 1 < states.size(); ++i) {
                 const auto& a = states[i].productionState;
                 const auto& b = states[i + 1].productionState;
+                if (a == b) { // the same state on the next way (WayId is part of the state, §5 #17)
+                    QVERIFY(states[i].wayId != states[i + 1].wayId);
+                    ++wayChanges;
+                    continue;
+                }
                 QVERIFY2(next.at(a).count(b), qPrintable(QString::fromStdString(a + " -> " + b)));
                 QCOMPARE(states[i].autonomyMode, std::string("Autonomous"));
             }
+            QVERIFY(wayChanges > 0);
         }
     }
 
@@ -306,6 +313,107 @@ private slots:
         QCOMPARE(status.back().status, std::string("Cancelled"));
         QCOMPARE(status.back().assignmentId, std::optional<Guid>("a-park"));
         QVERIFY(s.fleet.trucks()[0].assignments.empty());
+    }
+
+    // Issue 15 §5: a truck the AHS dispatches itself (custodian AHS) rejects the FMS's tasks with the reason;
+    // handed back (AHS -> FMS) it takes them again.
+    void custodianAhsRejects() {
+        Site s(2, 1, false);
+        const Guid id = s.fleet.trucks()[0].id;
+        s.fleet.setCustodian(0, "AHS");
+        auto avail = s.emittedFor<MachineDispatchAvailabilityV1>(id);
+        QCOMPARE(avail.size(), std::size_t(1));
+        QCOMPARE(avail[0].dispatchingCustodian, std::string("AHS"));
+        HaulTruckAssignmentRequestV2 req;
+        req.items.push_back({"c-load", "Load", s.pit.loadAreas[0], {}, {}, {}});
+        s.fleet.assign(id, req);
+        auto resp = s.emitted<HaulTruckAssignmentResponseV1>();
+        QCOMPARE(resp.back().first.items[0].response, std::string("Rejected"));
+        QCOMPARE(*resp.back().first.items[0].detail,
+                 std::string("DispatchingCustodian is AHS: HT101 is dispatched by the AHS"));
+        QVERIFY(s.fleet.trucks()[0].assignments.empty());
+        s.fleet.setCustodian(0, "FMS");
+        s.fleet.assign(id, req);
+        QCOMPARE(s.emitted<HaulTruckAssignmentResponseV1>().back().first.items[0].response,
+                 std::string("Accepted"));
+    }
+
+    // Issue 15 §5: a closed way makes destinations behind it unreachable: new tasks are rejected with the
+    // reason, accepted ones are given up with an unsolicited Rejected and the current one Cancelled, and the
+    // AHS's MapConnectivityV1 goes out again without the connections into the closed way.
+    void closedWayRejectsAndWithdraws() {
+        Site s(2, 1, false);
+        const Guid id = s.fleet.trucks()[0].id;
+        HaulTruckAssignmentRequestV2 req;
+        req.items.push_back({"w-load", "Load", s.pit.loadAreas[1], {}, {}, {}});
+        req.items.push_back({"w-dump", "Offload", s.pit.dumpAreas[0], {}, {}, {}});
+        s.fleet.assign(id, req);
+        QCOMPARE(s.fleet.trucks()[0].assignments.size(), std::size_t(2));
+        s.out.clear();
+        s.fleet.setWayClosed(s.pit.loadRoads[1], true);
+        const auto conn = s.emitted<MapConnectivityV1>();
+        QCOMPARE(conn.size(), std::size_t(1));
+        QVERIFY(conn[0].second.empty()); // not about one truck
+        for (const auto& item : conn[0].first.items)
+            for (const auto& c : item.connection)
+                QVERIFY(c.wayId != s.pit.loadRoads[1]);
+        const auto lost = s.emittedFor<HaulTruckAssignmentResponseV1>(id);
+        QCOMPARE(lost.size(), std::size_t(1));
+        QCOMPARE(lost[0].items.size(), std::size_t(2)); // the load and the dump queued after it
+        QCOMPARE(lost[0].items[0].assignmentId, Guid("w-load"));
+        QCOMPARE(lost[0].items[0].response, std::string("Rejected"));
+        QVERIFY2(lost[0].items[0].detail->find("can no longer be done: destination way") != std::string::npos,
+                 lost[0].items[0].detail->c_str());
+        const auto status = s.emittedFor<HaulTruckAssignmentV1>(id);
+        QCOMPARE(status.back().status, std::string("Cancelled"));
+        QCOMPARE(status.back().assignmentId, std::optional<Guid>("w-load"));
+        QVERIFY(s.fleet.trucks()[0].assignments.empty());
+        QCOMPARE(s.counters.get("sim.assign.withdrawn"), std::uint64_t(1));
+        // New tasks there are rejected as unreachable; the other shovel is fine.
+        s.out.clear();
+        HaulTruckAssignmentRequestV2 again;
+        again.items.push_back({"u-load", "Load", s.pit.loadAreas[1], {}, {}, {}});
+        again.items.push_back({"o-load", "Load", s.pit.loadAreas[0], {}, {}, {}});
+        s.fleet.assign(id, again);
+        const auto r = s.emitted<HaulTruckAssignmentResponseV1>().back().first.items;
+        QCOMPARE(r[0].response, std::string("Rejected"));
+        QVERIFY2(r[0].detail->find("unreachable from way") != std::string::npos, r[0].detail->c_str());
+        QCOMPARE(r[1].response, std::string("Accepted"));
+        // Reopened: the connectivity is whole again.
+        s.out.clear();
+        s.fleet.setWayClosed(s.pit.loadRoads[1], false);
+        QCOMPARE(s.emitted<MapConnectivityV1>().back().first, s.pit.connectivity);
+    }
+
+    // Issue 15 §5: when the FMS's work runs out the AHS parks the truck (custodian AHS meanwhile), then hands
+    // it back (custodian FMS: "send me an assignment", §8.3.4) and it waits parked for the next task.
+    void idleTruckAsksForWork() {
+        Site s(1, 1, false);
+        const Guid id = s.fleet.trucks()[0].id;
+        HaulTruckAssignmentRequestV2 req;
+        req.items.push_back({"i-load", "Load", s.pit.loadAreas[0], {}, {}, {}});
+        s.fleet.assign(id, req);
+        s.run(3600);
+        const auto avail = s.emittedFor<MachineDispatchAvailabilityV1>(id);
+        QCOMPARE(avail.size(), std::size_t(2));
+        QCOMPARE(avail[0].dispatchingCustodian, std::string("AHS"));
+        QCOMPARE(avail[1].dispatchingCustodian, std::string("FMS"));
+        const auto& t = s.fleet.trucks()[0];
+        QVERIFY(t.idle);
+        QCOMPARE(t.phase, HaulPhase::Parked);
+        QCOMPARE(t.productionState, std::string("Parked"));
+        // It stays parked: no cycle of its own while it waits for the FMS.
+        const auto cycles = s.emittedFor<HaulTruckProductionCycleV1>(id).size();
+        s.run(1800);
+        QCOMPARE(s.emittedFor<HaulTruckProductionCycleV1>(id).size(), cycles);
+        QCOMPARE(s.fleet.trucks()[0].phase, HaulPhase::Parked);
+        // The next task gets it moving.
+        HaulTruckAssignmentRequestV2 next;
+        next.items.push_back({"i-dump", "Offload", s.pit.dumpAreas[0], {}, {}, {}});
+        s.fleet.assign(id, next);
+        s.run(5);
+        QVERIFY(s.fleet.trucks()[0].phase != HaulPhase::Parked);
+        QVERIFY(!s.fleet.trucks()[0].idle);
     }
 
     // The sensor inputs are sent when they change, never repeated; health comes every 30 s per truck.
