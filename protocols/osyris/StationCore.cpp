@@ -438,7 +438,7 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
     if (h.who != idx() && (!isNew || repair))
         if (auto ns = m_nakSeen.find(owner); ns != m_nakSeen.end())
             if (auto it = ns->second.find(p.slot); it != ns->second.end())
-                it->second = now + beats(m_cfg.ttlBeats);
+                it->second = NakSeen{now, 0, it->second.requester}; // count the repetitions afresh
     for (auto& s : m_suppressed)
         if (s.owner == owner && s.pending.contains(p.slot)) {
             s.pending.erase(p.slot);
@@ -562,17 +562,27 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
             // Soft relay (§5): a non-owner answers a NAK only when it is repeated after TTL/2, i.e. the owner
             // did not answer the first one. The first NAK is remembered (at most kMaxNakSeenPerRibbon slots).
             auto& seen = m_nakSeen[owner];
+            const auto heard = m_lastHeard.find(owner);
+            const int repeatsNeeded =
+                heard != m_lastHeard.end() &&
+                        now - heard->second < std::chrono::milliseconds(3 * m_cfg.sendPeriodMs)
+                    ? 2
+                    : 1;
             IntervalSet due;
             for (auto& x : have.ranges())
                 for (std::uint64_t sl = x.from; sl <= x.to; ++sl) {
                     auto it = seen.find(static_cast<std::uint32_t>(sl));
                     if (it == seen.end()) {
                         if (seen.size() < kMaxNakSeenPerRibbon)
-                            seen.emplace(static_cast<std::uint32_t>(sl), now);
+                            seen.emplace(static_cast<std::uint32_t>(sl), NakSeen{now, 0, who});
                         else
                             m_counters.add("rx.nak.unremembered");
-                    } else if (now - it->second >= beats(m_cfg.ttlBeats / 2.0)) {
-                        due.insert(static_cast<std::uint32_t>(sl));
+                    } else if (it->second.requester != who) {
+                        it->second = NakSeen{now, 0, who}; // another station's miss: its own count
+                    } else if (now - it->second.at >= beats(m_cfg.ttlBeats / 2.0)) {
+                        it->second.at = now;
+                        if (++it->second.repeats >= repeatsNeeded)
+                            due.insert(static_cast<std::uint32_t>(sl));
                     }
                 }
             if (due.empty()) {

@@ -206,6 +206,10 @@ private:
     std::map<std::pair<std::uint8_t, PositionFault>, TimePoint> m_implausibleEventAt;
     bool answerAllowed(std::uint8_t requester, std::uint8_t whose, RequestType type, TimePoint now);
     std::map<std::tuple<std::uint8_t, std::uint8_t, RequestType>, TimePoint> m_answeredAt;
+    // NAK rounds (issue 14 §7): when the next round may go out (nullopt: none planned) and when the last did.
+    std::optional<TimePoint> m_nakRoundAt;
+    TimePoint m_lastNakRound{};
+    Duration nakBackoff();
     std::uint8_t m_nakTurn = 0xFF; // the ribbon whose gaps were asked for first on the last Beat (fairness)
     // ALIVE ranges wider than this are not believed (issue 14 §4): 2^22 slots are 116 h of a machine at 10
     // Hz.
@@ -236,7 +240,14 @@ private:
     std::map<std::uint8_t, std::map<std::uint32_t, TimePoint>> m_recentlySent;
     // First time a NAK for (ribbon, slot) was overheard: a non-owner answers only a repeated NAK, i.e. when
     // the owner evidently did not (out of range, or its answer was lost).
-    std::map<std::uint8_t, std::map<std::uint32_t, TimePoint>> m_nakSeen;
+    // A relay that hears the owner itself answers only the second repetition (the owner hears the requester
+    // most likely, and only this relay missed its answer); one that does not, the first (issue 14 §7).
+    struct NakSeen {
+        TimePoint at;
+        int repeats = 0;
+        std::uint8_t requester = kIdxNobody; // repetitions count per requester
+    };
+    std::map<std::uint8_t, std::map<std::uint32_t, NakSeen>> m_nakSeen;
 };
 
 } // namespace ocu::osyris

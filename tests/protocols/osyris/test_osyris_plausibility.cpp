@@ -372,7 +372,9 @@ private slots:
             } else if (flood == "nak") {
                 probes.push_back(request(RequestType::Nak, ribbon));
             } else if (flood == "nak-repeated") {
-                before.push_back(request(RequestType::Nak, 3)); // a relay answers only a repeated NAK
+                // A relay that hears the owner answers only the second repetition of a NAK (§5 soft relay).
+                before.push_back(request(RequestType::Nak, 3));
+                before.push_back(request(RequestType::Nak, 3));
                 probes.push_back(request(RequestType::Nak, 3));
             } else {
                 Bytes b;
@@ -388,6 +390,10 @@ private slots:
                 if (b.size() > 1400)
                     qFatal("a probe larger than MaxLen");
                 core.receive(b);
+                for (int beat = 0; beat < 8; ++beat) {
+                    clock.advance(milliseconds(100));
+                    core.tick();
+                }
             }
             for (int beat = 0; beat < 8; ++beat) {
                 clock.advance(milliseconds(100));
