@@ -391,6 +391,10 @@ void StationCore::receive(ByteSpan datagram) {
                 m_listener->onText(who, t->text);
         }
     }
+    if (m_pongQueued) { // at most one PONG per requester and Beat (answerAllowed), within the answer budget
+        m_pongQueued = false;
+        flush(now, true);
+    }
 }
 
 void StationCore::noteKnown(std::uint8_t owner, std::uint32_t from, std::uint32_t to) {
@@ -682,6 +686,7 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         auto own = ownPosition();
         enqueueRequest(who, {RequestType::Pong, 0, 0, own ? own->x : 0.f, own ? own->y : 0.f});
         m_counters.add("tx.pong");
+        m_pongQueued = true; // answered at once, not at the next Beat: the round-trip time means something
         break;
     }
     case RequestType::Pong: {

@@ -201,6 +201,7 @@ private:
     std::map<std::uint8_t, RibbonState> m_ribbons;
     std::set<std::uint8_t> m_configured; // named in the configuration or held at start: always admitted
     std::set<std::uint8_t> m_unknown;    // admitted without being configured, at most kMaxUnknownStations
+    bool m_pongQueued = false;           // a PING of the datagram being received was answered
     std::size_t m_answerBudget = 0;      // bytes left for answers to the datagram being received
     static constexpr Duration kImplausibleEventGap = std::chrono::seconds(30);
     std::map<std::pair<std::uint8_t, PositionFault>, TimePoint> m_implausibleEventAt;
