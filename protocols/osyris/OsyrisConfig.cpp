@@ -91,6 +91,8 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
     }
     o.lossWaitBeats = static_cast<int>(c.integer("lossWaitBeats", o.lossWaitBeats, 0, 1000));
     o.maxNakSlots = static_cast<int>(c.integer("maxNakSlots", o.maxNakSlots, 1, 100000));
+    o.nakRoundBeats = static_cast<int>(c.integer("nakRoundBeats", o.nakRoundBeats, 1, 10000));
+    o.nakBackoffBeats = static_cast<int>(c.integer("nakBackoffBeats", o.nakBackoffBeats, 0, 10000));
     o.passCountPublishMs = static_cast<int>(c.integer("passCountPublishMs", o.passCountPublishMs, 0, 60000));
     c.finish();
     return o;

@@ -50,8 +50,15 @@ struct OsyrisConfig {
     // Engine tuning (not in §7)
     int lossWaitBeats = 3; // wait before requesting a gap (§5: until the loss can be estimated)
     int maxNakSlots = 256; // slots per NAK
-    int maxNaksPerBeat = 4;
-    int maxRetxPerBeat = 200; // positions re-sent per beat
+    // NAK rounds (issue 14 §7, NORM-like): a station sends its NAKs in rounds at least nakRoundBeats apart,
+    // every gap due by then in one datagram (at most maxNaksPerBeat NAK messages), after a random back-off
+    // of up to nakBackoffBeats (truncated exponential over the number of stations heard, RFC 5740 §5.5.1)
+    // during which overheard NAKs, NCFs and repairs suppress the same wishes.
+    int maxNaksPerBeat = 64;
+    int nakRoundBeats = 30;
+    int nakBackoffBeats = 4;
+    std::uint64_t nakRoundSlots = 64; // this many slots due start a round at once (late join, long outages)
+    int maxRetxPerBeat = 200;         // positions re-sent per beat
     int maxDatagramsPerBeat = 16;
     int answerHoldBeats = 3; // a slot re-sent this recently is not re-sent for another NAK
     // Pass-count snapshots for the GUI: at most one per this many ms (and per Beat), only after a change.

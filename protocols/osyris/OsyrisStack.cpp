@@ -5,6 +5,8 @@
 
 #include <boost/asio/steady_timer.hpp>
 
+#include <atomic>
+
 namespace ocu::osyris {
 
 namespace asio = boost::asio;
@@ -20,13 +22,26 @@ struct OsyrisStack::Impl {
     bool lastSendOk = false; // io thread: the last datagram went to every destination
     std::chrono::steady_clock::time_point nextBeat;
     int beatMs = 100;
+    std::atomic<std::int64_t> maxHandlerNs{0};
+
+    // Runs one io-thread handler and keeps the longest duration seen.
+    template <class F> void timed(F&& f) {
+        const auto t0 = std::chrono::steady_clock::now();
+        f();
+        const std::int64_t ns =
+            std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0)
+                .count();
+        std::int64_t seen = maxHandlerNs.load(std::memory_order_relaxed);
+        while (ns > seen && !maxHandlerNs.compare_exchange_weak(seen, ns, std::memory_order_relaxed)) {
+        }
+    }
 
     void scheduleBeat() {
         beat.expires_at(nextBeat);
         beat.async_wait([this](boost::system::error_code ec) {
             if (ec || !running)
                 return;
-            core->tick();
+            timed([this] { core->tick(); });
             nextBeat += std::chrono::milliseconds(beatMs);
             auto now = std::chrono::steady_clock::now();
             if (nextBeat < now)
@@ -48,6 +63,13 @@ OsyrisStack::~OsyrisStack() {
 Counters& OsyrisStack::counters() {
     return m_impl->core ? m_impl->core->counters() : m_fallbackCounters;
 }
+std::chrono::nanoseconds OsyrisStack::maxHandlerDuration() const {
+    return std::chrono::nanoseconds(m_impl->maxHandlerNs.load());
+}
+void OsyrisStack::resetMaxHandlerDuration() {
+    m_impl->maxHandlerNs = 0;
+}
+
 RibbonStore* OsyrisStack::store() {
     return m_impl->store.get();
 }
@@ -101,7 +123,7 @@ bool OsyrisStack::start(std::string* error) {
     m_impl->io.post([impl] {
         impl->core->start();
         impl->core->updateGrid(); // counts of a reopened site file appear at once
-        impl->transport->startReceive([impl](ByteSpan d) { impl->core->receive(d); });
+        impl->transport->startReceive([impl](ByteSpan d) { impl->timed([&] { impl->core->receive(d); }); });
         impl->nextBeat = std::chrono::steady_clock::now() + std::chrono::milliseconds(impl->beatMs);
         impl->scheduleBeat();
     });

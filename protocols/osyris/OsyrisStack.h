@@ -11,6 +11,7 @@
 #include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -56,6 +57,10 @@ public:
     // its snapshots through OsyrisListener::onPassCounts instead.
     std::shared_ptr<const PassCountSnapshot> passCounts();
     std::uint16_t localPort() const { return m_localPort; }
+    // The longest a single io-thread handler (one received datagram, one Beat) has run since start or the
+    // last reset (issue 14 §3, §5: no single input may stall the io thread). Thread-safe.
+    std::chrono::nanoseconds maxHandlerDuration() const;
+    void resetMaxHandlerDuration();
     // Runs f(core) on the io thread and returns its result (tests, diagnostics).
     template <class F> auto withCore(F&& f) -> decltype(f(std::declval<StationCore&>()));
 

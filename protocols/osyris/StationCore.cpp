@@ -8,6 +8,22 @@
 
 namespace ocu::osyris {
 
+namespace {
+
+// The newest n slots of s.
+IntervalSet newestOf(const IntervalSet& s, std::uint64_t n) {
+    IntervalSet out;
+    const auto ranges = s.ranges();
+    for (auto r = ranges.rbegin(); r != ranges.rend() && n > 0; ++r) {
+        const std::uint64_t take = std::min<std::uint64_t>(n, r->size());
+        out.insert(static_cast<std::uint32_t>(std::uint64_t(r->to) + 1 - take), r->to);
+        n -= take;
+    }
+    return out;
+}
+
+} // namespace
+
 MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* frame, const std::string& name,
                              const std::string& type) {
     MachineSnapshot s;
@@ -54,7 +70,13 @@ StationCore::StationCore(OsyrisConfig cfg, const Clock& clock, RibbonStore& stor
     m_geo = m_cfg.originLat != 0 || m_cfg.originLon != 0;
     if (auto n = m_store.newest(idx()))
         m_nextOwnSlot = n->pos.slot + 1; // restart: continue our own ribbon
+    m_configured.insert(idx());
+    for (const auto& [i, name] : m_cfg.machineNames)
+        m_configured.insert(i);
+    for (const auto& [i, type] : m_cfg.machineTypes)
+        m_configured.insert(i);
     for (auto owner : m_store.machines()) {
+        m_configured.insert(owner);
         auto held = m_store.held(owner);
         auto& rs = m_ribbons[owner];
         rs.knownMin = held.min();
@@ -86,6 +108,50 @@ void StationCore::reject(const std::string& reason, const std::string& text) {
     event(Severity::Warning, "OSYRIS input rejected (" + reason + "): " + text + " (" + std::to_string(n) +
                                  " so far, counted in rx.rejected." + reason +
                                  "; at most one such warning per minute)");
+}
+
+bool StationCore::admitted(std::uint8_t station) {
+    if (station >= kIdxNobody)
+        return false;
+    if (m_configured.count(station) || m_unknown.count(station))
+        return true;
+    if (m_unknown.size() >= static_cast<std::size_t>(kMaxUnknownStations))
+        return false;
+    m_unknown.insert(station);
+    event(Severity::Info, "OSYRIS station " + std::to_string(station) +
+                              " is not in the configuration; admitted as unknown station " +
+                              std::to_string(m_unknown.size()) + " of at most " +
+                              std::to_string(kMaxUnknownStations));
+    return true;
+}
+
+bool StationCore::charge(std::size_t bytes) {
+    if (bytes > m_answerBudget) {
+        m_counters.add("rx.limited.budget");
+        return false;
+    }
+    m_answerBudget -= bytes;
+    return true;
+}
+
+std::size_t StationCore::unitSize(const PositionRecord& rec) const {
+    return kPosSize + (rec.props.empty() ? 0 : kHeaderSize + kPosPropSize * rec.props.size());
+}
+
+IntervalSet StationCore::chargeSlots(std::uint8_t owner, const IntervalSet& slots) {
+    // Newest first, as the answers go out (§4); a slot no longer held costs nothing.
+    IntervalSet out;
+    const auto ranges = slots.ranges();
+    for (auto r = ranges.rbegin(); r != ranges.rend(); ++r)
+        for (std::uint64_t sl = r->to + std::uint64_t(1); sl-- > r->from;) {
+            auto rec = m_store.get(owner, static_cast<std::uint32_t>(sl));
+            if (!rec)
+                continue;
+            if (!charge(unitSize(*rec)))
+                return out;
+            out.insert(static_cast<std::uint32_t>(sl), static_cast<std::uint32_t>(sl));
+        }
+    return out;
 }
 
 void StationCore::start() {
@@ -248,7 +314,13 @@ void StationCore::flush(TimePoint now, bool force) {
 
 void StationCore::sendAlive() {
     bool any = false;
+    m_configured.insert(idx());
+    for (const auto& [i, name] : m_cfg.machineNames)
+        m_configured.insert(i);
+    for (const auto& [i, type] : m_cfg.machineTypes)
+        m_configured.insert(i);
     for (auto owner : m_store.machines()) {
+        m_configured.insert(owner);
         auto held = m_store.held(owner);
         if (held.empty())
             continue;
@@ -279,6 +351,13 @@ void StationCore::receive(ByteSpan datagram) {
         m_counters.add("rx.own"); // our own multicast looped back
         return;
     }
+    if (!admitted(who)) {
+        reject("station_cap", "datagram from station " + std::to_string(who) + ": already " +
+                                  std::to_string(kMaxUnknownStations) + " stations not in the configuration");
+        return;
+    }
+    m_answerBudget =
+        static_cast<std::size_t>(kAnswerBudgetDatagrams) * static_cast<std::size_t>(m_cfg.maxLen);
     if (m_cfg.maxRange > 0) {
         for (auto& m : d.messages)
             if (auto* p = std::get_if<CmPos>(&m.body); p && m.header.whose == who) {
@@ -299,6 +378,12 @@ void StationCore::receive(ByteSpan datagram) {
     m_lastHeard[who] = now;
     for (std::size_t i = 0; i < d.messages.size(); ++i) {
         const auto& m = d.messages[i];
+        if (m.header.who != who) {
+            // One datagram has one sender (§6 IdxWho); a message claiming another is not believed.
+            reject("mixed_sender", "message from station " + std::to_string(m.header.who) +
+                                       " in a datagram from station " + std::to_string(who));
+            continue;
+        }
         if (auto* p = std::get_if<CmPos>(&m.body)) {
             const std::vector<PosProp>* props = nullptr;
             if (i + 1 < d.messages.size() && d.messages[i + 1].header.whose == m.header.whose)
@@ -318,6 +403,10 @@ void StationCore::receive(ByteSpan datagram) {
                 m_listener->onText(who, t->text);
         }
     }
+    if (m_pongQueued) { // at most one PONG per requester and Beat (answerAllowed), within the answer budget
+        m_pongQueued = false;
+        flush(now, true);
+    }
 }
 
 void StationCore::noteKnown(std::uint8_t owner, std::uint32_t from, std::uint32_t to) {
@@ -329,6 +418,12 @@ void StationCore::noteKnown(std::uint8_t owner, std::uint32_t from, std::uint32_
 void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::vector<PosProp>* props,
                                  TimePoint now) {
     std::uint8_t owner = h.whose;
+    if (!admitted(owner)) {
+        reject("station_cap", "position of station " + std::to_string(owner) + " from station " +
+                                  std::to_string(h.who) + ": already " + std::to_string(kMaxUnknownStations) +
+                                  " stations not in the configuration");
+        return;
+    }
     if (h.who == owner)
         m_ownerShown[owner] = std::max(m_ownerShown[owner], p.slot);
     PositionRecord rec{p, props ? *props : std::vector<PosProp>{}};
@@ -359,7 +454,7 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
     if (h.who != idx() && (!isNew || repair))
         if (auto ns = m_nakSeen.find(owner); ns != m_nakSeen.end())
             if (auto it = ns->second.find(p.slot); it != ns->second.end())
-                it->second = now + beats(m_cfg.ttlBeats);
+                it->second = NakSeen{now, 0, it->second.requester}; // count the repetitions afresh
     for (auto& s : m_suppressed)
         if (s.owner == owner && s.pending.contains(p.slot)) {
             s.pending.erase(p.slot);
@@ -476,16 +571,35 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
             m_counters.add("rx.nak.ignored"); // we hold none of it (§5)
             return;
         }
+        const bool all = have.count() == std::uint64_t(to) - r.from + 1;
+        // Bounded work (issue 14 §3, §4): never look at more slots than the answer budget could pay for.
+        have = newestOf(have, m_answerBudget / kPosSize + 1);
         if (owner != idx()) {
             // Soft relay (§5): a non-owner answers a NAK only when it is repeated after TTL/2, i.e. the owner
-            // did not answer the first one. The first NAK is remembered.
+            // did not answer the first one. The first NAK is remembered (at most kMaxNakSeenPerRibbon slots).
             auto& seen = m_nakSeen[owner];
+            const auto heard = m_lastHeard.find(owner);
+            const int repeatsNeeded =
+                heard != m_lastHeard.end() &&
+                        now - heard->second < std::chrono::milliseconds(3 * m_cfg.sendPeriodMs)
+                    ? 2
+                    : 1;
             IntervalSet due;
             for (auto& x : have.ranges())
                 for (std::uint64_t sl = x.from; sl <= x.to; ++sl) {
-                    auto [it, fresh] = seen.emplace(static_cast<std::uint32_t>(sl), now);
-                    if (!fresh && now - it->second >= beats(m_cfg.ttlBeats / 2.0))
-                        due.insert(static_cast<std::uint32_t>(sl));
+                    auto it = seen.find(static_cast<std::uint32_t>(sl));
+                    if (it == seen.end()) {
+                        if (seen.size() < kMaxNakSeenPerRibbon)
+                            seen.emplace(static_cast<std::uint32_t>(sl), NakSeen{now, 0, who});
+                        else
+                            m_counters.add("rx.nak.unremembered");
+                    } else if (it->second.requester != who) {
+                        it->second = NakSeen{now, 0, who}; // another station's miss: its own count
+                    } else if (now - it->second.at >= beats(m_cfg.ttlBeats / 2.0)) {
+                        it->second.at = now;
+                        if (++it->second.repeats >= repeatsNeeded)
+                            due.insert(static_cast<std::uint32_t>(sl));
+                    }
                 }
             if (due.empty()) {
                 m_counters.add("rx.nak.deferred");
@@ -493,7 +607,11 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
             }
             have = std::move(due);
         }
-        bool all = have.count() == std::uint64_t(to) - r.from + 1;
+        if (!charge(kRequestSize)) // the NCF
+            return;
+        have = chargeSlots(owner, have);
+        if (have.empty())
+            return;
         int prio;
         TimePoint nb;
         if (owner == idx()) {
@@ -533,6 +651,8 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         m_counters.add("rx.all");
         if (!(m_cfg.active & kActiveAnswerRequests))
             return;
+        if (h.whose != kIdxAll && m_store.held(h.whose).empty())
+            return; // a ribbon we do not hold: nothing to answer, and no rate-limit entry for it
         if (!answerAllowed(who, h.whose, RequestType::All, now))
             return;
         for (auto owner : m_store.machines()) {
@@ -542,15 +662,19 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
             if (held.empty())
                 continue;
             // Newest state first (§4 late join): the newest position of every ribbon, right away.
-            if (auto n = m_store.newest(owner)) {
+            auto n = m_store.newest(owner);
+            if (!charge(kRequestSize + (n ? unitSize(*n) : 0)))
+                break;
+            if (n) {
                 enqueuePosition(owner, *n, true);
                 m_counters.add("tx.retx");
                 m_counters.add("tx.retx.newest");
             }
             enqueueRequest(owner, {RequestType::Alive, held.min(), held.max(), 0, 0}, true);
             m_counters.add("tx.alive");
-            if (owner == idx() && held.max() > held.min()) {
-                // Owner sends its tail (TailPos, default all), newest first, with an NCF.
+            if (owner == idx() && held.max() > held.min() && charge(kRequestSize)) {
+                // Owner sends its tail (TailPos, default all), newest first, with an NCF: as much of it as
+                // this datagram's answer budget pays for; the requester NAKs the rest, which ALIVE showed.
                 std::uint32_t hi = held.max() - 1;
                 std::uint32_t lo = held.min();
                 if (m_cfg.tailPos > 0 && hi - lo + 1 > m_cfg.tailPos)
@@ -558,6 +682,7 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
                 IntervalSet tail;
                 for (auto& x : held.intersect(lo, hi))
                     tail.insert(x.from, x.to);
+                tail = chargeSlots(owner, newestOf(tail, m_answerBudget / kPosSize + 1));
                 if (!tail.empty())
                     addAsset(owner, std::move(tail), kPrioOwner, now);
             }
@@ -568,11 +693,12 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         m_counters.add("rx.ping");
         if (h.whose != idx() && h.whose != kIdxAll)
             return;
-        if (!answerAllowed(who, h.whose, RequestType::Ping, now))
+        if (!answerAllowed(who, h.whose, RequestType::Ping, now) || !charge(kRequestSize))
             return;
         auto own = ownPosition();
         enqueueRequest(who, {RequestType::Pong, 0, 0, own ? own->x : 0.f, own ? own->y : 0.f});
         m_counters.add("tx.pong");
+        m_pongQueued = true; // answered at once, not at the next Beat: the round-trip time means something
         break;
     }
     case RequestType::Pong: {
@@ -595,6 +721,13 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
         m_counters.add("rx.alive");
         std::uint8_t owner = h.whose;
         bool hasRange = r.from <= r.to && r.to != kSlotLast;
+        if (owner < kIdxNobody && hasRange && !admitted(owner)) {
+            reject("station_cap", "ALIVE from " + std::to_string(who) + " about station " +
+                                      std::to_string(owner) + ": already " +
+                                      std::to_string(kMaxUnknownStations) +
+                                      " stations not in the configuration");
+            hasRange = false;
+        }
         if (owner < kIdxNobody && hasRange) {
             // Phantom ranges (issue 14 §4): too wide to be a machine's ribbon, or (from a third station) far
             // beyond anything the owner itself showed. Ignored with a counter; NAKing them cost endless

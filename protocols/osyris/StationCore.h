@@ -76,6 +76,21 @@ MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* f
 
 class StationCore {
 public:
+    // Stations not named in the configuration (machineNames/machineTypes) nor held in the store at start
+    // that get per-station state, first come first served (issue 14 §4). §4 expects at most 10 stations in
+    // one network; beyond this cap a datagram from (or a message about) yet another station is counted in
+    // rx.rejected.station_cap and ignored before anything is allocated for it.
+    static constexpr int kMaxUnknownStations = 16;
+    // Amplification bound (issue 14 §4): everything one received datagram makes this station send on its
+    // behalf (PONG, the ALL answer, retransmissions and NCFs for its NAKs) is charged to a budget of
+    // kAnswerBudgetDatagrams x MaxLen bytes; what is over it is not answered (rx.limited.budget), the
+    // requester asks again after TTL. Packed greedily into datagrams of MaxLen, that is at most
+    // kMaxDatagramsPerReceived datagrams sent per datagram received.
+    static constexpr int kAnswerBudgetDatagrams = 8;
+    static constexpr int kMaxDatagramsPerReceived = 2 * kAnswerBudgetDatagrams;
+    // Slots whose first overheard NAK is remembered per ribbon (soft relay answers only a repeated one).
+    static constexpr std::size_t kMaxNakSeenPerRibbon = 4096;
+
     using SendFn = std::function<void(const Bytes&)>;
     // store and clock must outlive the core; grid and listener may be null.
     StationCore(OsyrisConfig cfg, const Clock& clock, RibbonStore& store, PassCountGrid* grid,
@@ -167,6 +182,13 @@ private:
     // kImplausibleEventGap.
     void implausible(std::uint8_t owner, const CmPos& p, PositionFault fault, TimePoint now);
     void reject(const std::string& reason, const std::string& text);
+    // Per-station state exists only for admitted stations (kMaxUnknownStations).
+    bool admitted(std::uint8_t station);
+    // Takes bytes from the current received datagram's answer budget; false (and counted) when over it.
+    bool charge(std::size_t bytes);
+    std::size_t unitSize(const PositionRecord& rec) const;
+    // The newest slots of `slots` whose answer fits the budget.
+    IntervalSet chargeSlots(std::uint8_t owner, const IntervalSet& slots);
 
     OsyrisConfig m_cfg;
     const Clock& m_clock;
@@ -180,10 +202,18 @@ private:
     bool m_geo = false;
 
     std::map<std::uint8_t, RibbonState> m_ribbons;
+    std::set<std::uint8_t> m_configured; // named in the configuration or held at start: always admitted
+    std::set<std::uint8_t> m_unknown;    // admitted without being configured, at most kMaxUnknownStations
+    bool m_pongQueued = false;           // a PING of the datagram being received was answered
+    std::size_t m_answerBudget = 0;      // bytes left for answers to the datagram being received
     static constexpr Duration kImplausibleEventGap = std::chrono::seconds(30);
     std::map<std::pair<std::uint8_t, PositionFault>, TimePoint> m_implausibleEventAt;
     bool answerAllowed(std::uint8_t requester, std::uint8_t whose, RequestType type, TimePoint now);
     std::map<std::tuple<std::uint8_t, std::uint8_t, RequestType>, TimePoint> m_answeredAt;
+    // NAK rounds (issue 14 §7): when the next round may go out (nullopt: none planned) and when the last did.
+    std::optional<TimePoint> m_nakRoundAt;
+    TimePoint m_lastNakRound{};
+    Duration nakBackoff();
     std::uint8_t m_nakTurn = 0xFF; // the ribbon whose gaps were asked for first on the last Beat (fairness)
     // ALIVE ranges wider than this are not believed (issue 14 §4): 2^22 slots are 116 h of a machine at 10
     // Hz.
@@ -214,7 +244,14 @@ private:
     std::map<std::uint8_t, std::map<std::uint32_t, TimePoint>> m_recentlySent;
     // First time a NAK for (ribbon, slot) was overheard: a non-owner answers only a repeated NAK, i.e. when
     // the owner evidently did not (out of range, or its answer was lost).
-    std::map<std::uint8_t, std::map<std::uint32_t, TimePoint>> m_nakSeen;
+    // A relay that hears the owner itself answers only the second repetition (the owner hears the requester
+    // most likely, and only this relay missed its answer); one that does not, the first (issue 14 §7).
+    struct NakSeen {
+        TimePoint at;
+        int repeats = 0;
+        std::uint8_t requester = kIdxNobody; // repetitions count per requester
+    };
+    std::map<std::uint8_t, std::map<std::uint32_t, NakSeen>> m_nakSeen;
 };
 
 } // namespace ocu::osyris

@@ -3,6 +3,7 @@
 #include "protocols/osyris/StationCore.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace ocu::osyris {
@@ -86,6 +87,26 @@ void StationCore::processWishes(TimePoint now) {
             if (h.until <= now)
                 cands.push_back({owner, h.from, h.to});
     }
+    // NAK rounds (issue 14 §7): the first requestable wish plans a round after the rest of the round
+    // interval and a random back-off; until then overheard NAKs, NCFs and repairs take wishes off (they are
+    // held), and what is still due when the round comes goes out together, aggregated in one datagram.
+    if (cands.empty())
+        return;
+    std::uint64_t dueSlots = 0;
+    for (const auto& c : cands)
+        dueSlots += std::uint64_t(c.to) - c.from + 1;
+    if (dueSlots >= m_cfg.nakRoundSlots) // enough to fill a round: the aggregation has happened
+        m_nakRoundAt = std::min(m_nakRoundAt.value_or(now), now);
+    if (!m_nakRoundAt) {
+        const TimePoint earliest =
+            m_lastNakRound == TimePoint{} ? now : m_lastNakRound + beats(m_cfg.nakRoundBeats);
+        m_nakRoundAt = std::max(now, earliest) + nakBackoff();
+    }
+    if (now < *m_nakRoundAt)
+        return;
+    m_nakRoundAt.reset();
+    m_lastNakRound = now;
+    m_counters.add("tx.nak.rounds");
     // Newest and longest misses first within a ribbon (§4).
     std::sort(cands.begin(), cands.end(), [](const Cand& a, const Cand& b) {
         if (a.to != b.to)
@@ -127,6 +148,24 @@ void StationCore::processWishes(TimePoint now) {
         m_counters.add("tx.nak.slots", std::uint64_t(c.to) - from + 1);
         ++issued;
     }
+}
+
+Duration StationCore::nakBackoff() {
+    // RFC 5740 §5.5.1 (NORM's NACK back-off): a truncated exponential over [0, T] with lambda = ln(N) + 1 for
+    // a group of N receivers, so that few of them NAK before the others can overhear and hold back.
+    const double maxBeats = std::max(0, m_cfg.nakBackoffBeats);
+    if (maxBeats <= 0)
+        return Duration::zero();
+    const auto now = m_clock.now();
+    std::size_t group = 1;
+    for (const auto& [s, t] : m_lastHeard)
+        group += now - t < std::chrono::milliseconds(3 * m_cfg.sendPeriodMs);
+    const double lambda = std::log(double(group)) + 1.0;
+    const double el = std::exp(lambda);
+    std::uniform_real_distribution<double> u(lambda / maxBeats / (el - 1.0),
+                                             lambda / maxBeats * el / (el - 1.0));
+    const double t = maxBeats / lambda * std::log(u(m_rng) * (el - 1.0) * maxBeats / lambda);
+    return beats(std::clamp(t, 0.0, maxBeats));
 }
 
 void StationCore::processAssets(TimePoint now) {
@@ -188,7 +227,8 @@ void StationCore::processAssets(TimePoint now) {
     for (auto& [owner, sent] : m_recentlySent)
         std::erase_if(sent, [&](const auto& kv) { return now - kv.second >= beats(m_cfg.answerHoldBeats); });
     for (auto& [owner, seen] : m_nakSeen)
-        std::erase_if(seen, [&](const auto& kv) { return now - kv.second >= beats(3.0 * m_cfg.ttlBeats); });
+        std::erase_if(seen,
+                      [&](const auto& kv) { return now - kv.second.at >= beats(3.0 * m_cfg.ttlBeats); });
 }
 
 } // namespace ocu::osyris

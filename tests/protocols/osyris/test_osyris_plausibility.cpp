@@ -259,6 +259,175 @@ private slots:
         QVERIFY(rec.warnings.back().find("4 so far") != std::string::npos);
     }
 
+    void unknownStationsAreCapped() {
+        // Issue 14 §4: every station index a datagram names used to get ribbons, timers and rate-limit
+        // entries.
+        FakeClock clock;
+        auto store = RibbonStore::inMemory();
+        OsyrisConfig cfg;
+        cfg.stationIndex = 200;
+        cfg.machineNames[120] = "R-120"; // configured: admitted whatever the unknown ones did before
+        StationCore core(cfg, clock, *store, nullptr, nullptr, [](const Bytes&) {});
+        core.start();
+        auto send = [&](std::uint8_t who, std::uint8_t whose) {
+            Bytes b;
+            encodePos(b, who, whose, pos(0, 1, 1));
+            core.receive(b);
+        };
+        const int cap = StationCore::kMaxUnknownStations;
+        for (int i = 0; i < cap; ++i)
+            send(std::uint8_t(10 + i), std::uint8_t(10 + i));
+        QCOMPARE(core.counters().get("rx.rejected.station_cap"), std::uint64_t(0));
+        QCOMPARE(int(store->machines().size()), cap);
+        // Beyond the cap: the datagram is counted and nothing is allocated for its sender or its ribbon.
+        for (int i = 0; i < 50; ++i)
+            send(std::uint8_t(60 + i), std::uint8_t(60 + i));
+        QCOMPARE(core.counters().get("rx.rejected.station_cap"), std::uint64_t(50));
+        QCOMPARE(int(store->machines().size()), cap);
+        QCOMPARE(int(core.heardStations().size()), cap);
+        QVERIFY(!core.knownMax(60));
+        // An admitted station relaying (or inventing) the ribbon of a new one: that message is ignored too.
+        send(10, 99);
+        Bytes alive;
+        encodeRequest(alive, 10, 98, {RequestType::Alive, 0, 10, 0, 0});
+        core.receive(alive);
+        QCOMPARE(core.counters().get("rx.rejected.station_cap"), std::uint64_t(52));
+        QVERIFY(!core.knownMax(99) && !core.knownMax(98));
+        // A configured station and the known ones keep working.
+        send(120, 120);
+        send(10, 10);
+        QCOMPARE(int(store->machines().size()), cap + 1);
+        QCOMPARE(store->count(10), std::uint64_t(1)); // the same slot again: a duplicate
+        // A message claiming another sender inside a datagram is not believed (§6: one IdxWho per datagram).
+        Bytes mixed;
+        encodePos(mixed, 10, 10, pos(1, 1, 1));
+        encodePos(mixed, 11, 11, pos(1, 1, 1));
+        core.receive(mixed);
+        QCOMPARE(core.counters().get("rx.rejected.mixed_sender"), std::uint64_t(1));
+        QCOMPARE(store->count(11), std::uint64_t(1));
+        QCOMPARE(store->count(10), std::uint64_t(2));
+    }
+
+    void oneDatagramCausesAtMostKDatagramsSent_data() {
+        QTest::addColumn<bool>(
+            "owner"); // the station under test has its own ribbon (a machine) or not (the OCU)
+        QTest::addColumn<QString>("flood");
+        for (bool owner : {false, true})
+            for (const char* f : {"all", "ping", "nak", "nak-repeated", "mixed"})
+                QTest::newRow(qPrintable(QString(owner ? "machine, " : "console, ") + f))
+                    << owner << QString(f);
+    }
+    void oneDatagramCausesAtMostKDatagramsSent() {
+        // Issue 14 §4: "one received datagram causes at most a documented constant number of datagrams sent".
+        // The worst datagrams a hostile station can send (MaxLen full of ALL, PING or NAK for everything) fed
+        // to a StationCore holding three ribbons whose positions carry enough properties that no two answers
+        // fit one datagram; the datagrams sent afterwards are compared with the same run without that
+        // datagram.
+        QFETCH(bool, owner);
+        QFETCH(QString, flood);
+        const std::uint8_t self = owner ? 1 : 200;
+        const std::uint8_t hostile = 9;
+        std::vector<PosProp> props(78); // 73 + 8 + 78 x 8 = 705 bytes: more than MaxLen / 2
+        for (std::size_t i = 0; i < props.size(); ++i)
+            props[i] = PosProp{std::uint32_t(i), std::uint32_t(i)};
+        auto run = [&](bool probe, std::uint64_t* answered) {
+            FakeClock clock;
+            auto store = RibbonStore::inMemory();
+            OsyrisConfig cfg;
+            cfg.stationIndex = self;
+            cfg.beatMs = 100;
+            cfg.ttlBeats = 10;
+            int sent = 0;
+            StationCore core(cfg, clock, *store, nullptr, nullptr, [&](const Bytes&) { ++sent; });
+            core.start();
+            for (std::uint32_t s = 0; s < 400; ++s) {
+                if (owner)
+                    core.publishOwnPosition(pos(0, float(s) * 0.3f, 0), props);
+                for (std::uint8_t other : {2, 3}) {
+                    if (other == self)
+                        continue;
+                    Bytes b;
+                    encodePos(b, other, other, pos(s, float(s) * 0.3f, float(other)));
+                    encodePosProps(b, other, other, props);
+                    core.receive(b);
+                }
+            }
+            for (int beat = 0; beat < 30; ++beat) { // settle: late-join ALL and the first ALIVEs are out
+                clock.advance(milliseconds(100));
+                core.tick();
+            }
+            auto request = [&](RequestType t, std::uint8_t whose) {
+                Bytes b;
+                const std::uint32_t to = t == RequestType::Nak ? kSlotLast - 1 : 0;
+                while (b.size() + kRequestSize <= 1400)
+                    encodeRequest(b, hostile, whose, {t, 0, to, 1, 1});
+                return b;
+            };
+            std::vector<Bytes> before, probes;
+            const std::uint8_t ribbon = owner ? self : 2;
+            if (flood == "all") {
+                probes.push_back(request(RequestType::All, kIdxAll));
+            } else if (flood == "ping") {
+                probes.push_back(request(RequestType::Ping, kIdxAll));
+            } else if (flood == "nak") {
+                probes.push_back(request(RequestType::Nak, ribbon));
+            } else if (flood == "nak-repeated") {
+                // A relay that hears the owner answers only the second repetition of a NAK (§5 soft relay).
+                before.push_back(request(RequestType::Nak, 3));
+                before.push_back(request(RequestType::Nak, 3));
+                probes.push_back(request(RequestType::Nak, 3));
+            } else {
+                Bytes b;
+                for (int i = 0; b.size() + 3 * kRequestSize <= 1400; ++i) {
+                    encodeRequest(b, hostile, kIdxAll, {RequestType::All, 0, 0, 0, 0});
+                    encodeRequest(b, hostile, self, {RequestType::Ping, 0, 0, 1, 1});
+                    encodeRequest(b, hostile, std::uint8_t(i % 2 ? 3 : ribbon),
+                                  {RequestType::Nak, std::uint32_t(i), kSlotLast, 0, 0});
+                }
+                probes.push_back(b);
+            }
+            for (const auto& b : before) {
+                if (b.size() > 1400)
+                    qFatal("a probe larger than MaxLen");
+                core.receive(b);
+                for (int beat = 0; beat < 8; ++beat) {
+                    clock.advance(milliseconds(100));
+                    core.tick();
+                }
+            }
+            for (int beat = 0; beat < 8; ++beat) {
+                clock.advance(milliseconds(100));
+                core.tick();
+            }
+            const int sent0 = sent;
+            const auto retx0 = core.counters().get("tx.retx") + core.counters().get("tx.pong");
+            if (probe)
+                for (const auto& b : probes) {
+                    if (b.size() > 1400)
+                        qFatal("a probe larger than MaxLen");
+                    core.receive(b);
+                }
+            for (int beat = 0; beat < 60; ++beat) {
+                clock.advance(milliseconds(100));
+                core.tick();
+            }
+            *answered = core.counters().get("tx.retx") + core.counters().get("tx.pong") - retx0;
+            return sent - sent0;
+        };
+        std::uint64_t answeredWith = 0, answeredWithout = 0;
+        const int with = run(true, &answeredWith);
+        const int without = run(false, &answeredWithout);
+        qInfo("%s: %d datagrams sent in 6 s after the datagram, %d without it (answers %llu vs %llu); K = %d",
+              qPrintable(flood), with, without, qulonglong(answeredWith), qulonglong(answeredWithout),
+              StationCore::kMaxDatagramsPerReceived);
+        if (!owner && flood == "nak")
+            QCOMPARE(answeredWith, std::uint64_t(0)); // a relay answers only a repeated NAK (§5 soft relay)
+        else
+            QVERIFY(answeredWith > answeredWithout); // the datagram was answered: the bound is not silence
+        QVERIFY2(with - without <= StationCore::kMaxDatagramsPerReceived,
+                 qPrintable(QString("%1 datagrams caused by one").arg(with - without)));
+    }
+
     void limitsComeFromTheConfiguration() {
         OsyrisConfig cfg;
         cfg.passCount.plausibility.maxWidthM = 13; // a wide paver screed
