@@ -488,4 +488,13 @@ void IsoBridge::command(const QString& name, const QJsonObject& args, OutcomeCal
     FleetBridge::command(name, args, std::move(done));
 }
 
+std::chrono::milliseconds IsoBridge::ioStalledFor() const {
+    return m_stack ? m_stack->ioStalledFor() : std::chrono::milliseconds(0);
+}
+
+void IsoBridge::postToIo(std::function<void()> f) {
+    if (m_stack)
+        m_stack->postToIo(std::move(f));
+}
+
 } // namespace ocu

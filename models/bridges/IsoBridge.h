@@ -42,6 +42,10 @@ public:
     void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
     bool reportsStopped(const QString& target) const override;
     SiteMapData siteMap() const override { return m_map; }
+    // Watchdog (issue 14 §3): the stack's io thread.
+    std::chrono::milliseconds ioStalledFor() const override;
+    // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
+    void postToIo(std::function<void()> f);
 
     // GUI thread: the all-stop status per link as the AHS reported it.
     iso23725::AllStopState allStopState(const QString& link) const;

@@ -615,4 +615,13 @@ void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCa
     FleetBridge::command(name, args, std::move(done));
 }
 
+std::chrono::milliseconds JausBridge::ioStalledFor() const {
+    return m_stack ? m_stack->ioStalledFor() : std::chrono::milliseconds(0);
+}
+
+void JausBridge::postToIo(std::function<void()> f) {
+    if (m_stack)
+        m_stack->postToIo(std::move(f));
+}
+
 } // namespace ocu

@@ -45,6 +45,10 @@ public:
     bool reportsStopped(const QString& target) const override;
 
     CommandResult drive(quint16 subsystem, const JausDrive& command) override;
+    // Watchdog (issue 14 §3): the stack's io thread.
+    std::chrono::milliseconds ioStalledFor() const override;
+    // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
+    void postToIo(std::function<void()> f);
     CommandResult stopDriving(quint16 subsystem) override;
 
 private:

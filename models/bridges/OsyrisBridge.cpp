@@ -229,4 +229,13 @@ void OsyrisBridge::command(const QString& name, const QJsonObject& args, Outcome
     FleetBridge::command(name, args, std::move(done));
 }
 
+std::chrono::milliseconds OsyrisBridge::ioStalledFor() const {
+    return m_station ? m_station->ioStalledFor() : std::chrono::milliseconds(0);
+}
+
+void OsyrisBridge::postToIo(std::function<void()> f) {
+    if (m_station)
+        m_station->postToIo(std::move(f));
+}
+
 } // namespace ocu

@@ -367,6 +367,15 @@ LinkState IsoStack::mapServiceState(const std::string& link) {
     });
 }
 
+std::chrono::milliseconds IsoStack::ioStalledFor() const {
+    return m_impl->io.sinceLastTurn();
+}
+
+void IsoStack::postToIo(std::function<void()> f) {
+    if (m_impl->io.running())
+        m_impl->io.post(std::move(f));
+}
+
 std::vector<std::string> IsoStack::linkNames() const {
     std::vector<std::string> out;
     for (auto& l : m_impl->cfg.links)

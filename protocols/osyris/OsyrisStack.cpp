@@ -48,6 +48,13 @@ OsyrisStack::~OsyrisStack() {
 Counters& OsyrisStack::counters() {
     return m_impl->core ? m_impl->core->counters() : m_fallbackCounters;
 }
+std::chrono::milliseconds OsyrisStack::ioStalledFor() const {
+    return m_impl->io.sinceLastTurn();
+}
+void OsyrisStack::postToIo(std::function<void()> f) {
+    if (m_impl->running)
+        m_impl->io.post(std::move(f));
+}
 RibbonStore* OsyrisStack::store() {
     return m_impl->store.get();
 }

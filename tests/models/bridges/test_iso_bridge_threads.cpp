@@ -122,6 +122,17 @@ private slots:
         ahs.stop();
     }
 
+    void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
+        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        sim::SimulatedAhs ahs(quietAhs());
+        QVERIFY(ahs.start());
+        IsoBridge bridge(consoleConfig(ahs.url()), GeoFrame(quietAhs().origin));
+        QVERIFY(bridge.start().isEmpty());
+        bridgetest::expectWatchdog(bridge, QStringLiteral("iso23725:ahs"),
+                                   [&](std::function<void()> f) { bridge.postToIo(std::move(f)); });
+        bridge.stop();
+    }
+
     void commandsWhileTheLinkIsDownAreRefused() {
         auto first = std::make_unique<sim::SimulatedAhs>(quietAhs());
         QVERIFY(first->start());

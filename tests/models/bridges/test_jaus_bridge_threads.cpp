@@ -115,6 +115,16 @@ private slots:
         bridge.stop();
     }
 
+    void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
+        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        sim::JausDemo demo(oneUgv());
+        JausBridge bridge(consoleConfig(demo, 60), GeoFrame(oneUgv().origin));
+        QVERIFY(bridge.start().isEmpty());
+        bridgetest::expectWatchdog(bridge, QStringLiteral("jaus"),
+                                   [&](std::function<void()> f) { bridge.postToIo(std::move(f)); });
+        bridge.stop();
+    }
+
     void commandsWhileTheLinkIsDownAreRefused() {
         Received received;
         sim::JausDemo demo(oneUgv());

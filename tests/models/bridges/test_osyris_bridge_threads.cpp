@@ -118,6 +118,21 @@ private slots:
         demo.stop();
     }
 
+    void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
+        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        sim::osyris::OsyrisDemo demo(oneRoller());
+        std::string err;
+        QVERIFY2(demo.start(&err), err.c_str());
+        const osyris::OsyrisConfig cfg = consoleConfig(demo.ocuConfig());
+        OsyrisBridge bridge(cfg, GeoFrame(kOrigin));
+        QVERIFY(bridge.start().isEmpty());
+        bridgetest::expectWatchdog(
+            bridge, QStringLiteral("osyris:%1:%2").arg(QString::fromStdString(cfg.group)).arg(cfg.port),
+            [&](std::function<void()> f) { bridge.postToIo(std::move(f)); });
+        bridge.stop();
+        demo.stop();
+    }
+
     void commandsWhileNoStationIsHeardAreRefused() {
         osyris::OsyrisConfig cfg = sim::osyris::OsyrisDemo(oneRoller()).ocuConfig();
         cfg.port = findFreeUdpPort();

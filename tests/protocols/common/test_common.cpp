@@ -7,6 +7,8 @@
 
 #include <QtTest>
 
+#include <future>
+
 using namespace ocu;
 
 class TestCommon : public QObject {
@@ -71,6 +73,26 @@ private slots:
         QCOMPARE(v, 42);
         t.stop();
         t.stop(); // idempotent
+    }
+    void ioThreadWatchdogSeesABlockedLoop() {
+        // Issue 14 §3: the heartbeat stamps every turn; a handler that blocks the loop makes the age grow
+        // past the watchdog's 1 s, and it falls back once the loop turns again.
+        IoThread t("test-watchdog");
+        QCOMPARE(t.sinceLastTurn().count(), 0); // not running
+        t.start();
+        QTRY_VERIFY_WITH_TIMEOUT(t.sinceLastTurn() < std::chrono::milliseconds(1000), 10000);
+        std::promise<void> latch;
+        std::shared_future<void> released = latch.get_future().share();
+        t.post([released] { released.wait_for(std::chrono::seconds(120)); });
+        QTRY_VERIFY_WITH_TIMEOUT(t.sinceLastTurn() > std::chrono::milliseconds(1000), 20000);
+        latch.set_value();
+        QTRY_VERIFY_WITH_TIMEOUT(t.sinceLastTurn() < std::chrono::milliseconds(1000), 20000);
+        t.stop();
+        QCOMPARE(t.sinceLastTurn().count(), 0);
+        // A restart keeps one heartbeat (the old wait is cancelled, not doubled) and turns again.
+        t.start();
+        QTRY_VERIFY_WITH_TIMEOUT(t.sinceLastTurn() < std::chrono::milliseconds(1000), 10000);
+        t.stop();
     }
     void configLinesAndUnknownKeys() {
         const char* text = "{\n"
