@@ -19,6 +19,25 @@ QJsonArray targetsToJson(const QVector<CommandTarget>& targets) {
     return out;
 }
 
+quint64 LinkCounters::rejectedTotal() const {
+    quint64 n = 0;
+    for (quint64 v : rejected)
+        n += v;
+    return n;
+}
+
+LinkCounters LinkCounters::of(const QString& link, const Counters& counters) {
+    LinkCounters out;
+    out.link = link;
+    for (const auto& [name, value] : counters.snapshot()) {
+        const QString n = QString::fromStdString(name);
+        out.all.insert(n, value);
+        if (Counters::isReject(name))
+            out.rejected.insert(n.mid(3), value);
+    }
+    return out;
+}
+
 FleetBridge::FleetBridge(Protocol protocol, QObject* parent)
     : QObject(parent), m_protocol(protocol),
       m_machines(this, [this](auto&& batch) { deliverMachines(std::move(batch)); }),

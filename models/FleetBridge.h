@@ -20,10 +20,12 @@
 #include "models/TelemetryCoalescer.h"
 
 #include "protocols/common/CommandOutcome.h"
+#include "protocols/common/Counters.h"
 
 #include <QHash>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QMap>
 #include <QObject>
 #include <QStringList>
 #include <QVector>
@@ -69,6 +71,16 @@ struct LinkStatus {
     QString detail;
 };
 
+// One link's counters (issue 14 §6): rejected peer input by reason (Counters::isReject, names without the
+// leading "rx.": "rejected.too_short", "implausible.speed", "unknown_member") and every counter by name.
+struct LinkCounters {
+    QString link;
+    QMap<QString, quint64> rejected;
+    QMap<QString, quint64> all;
+    quint64 rejectedTotal() const;
+    static LinkCounters of(const QString& link, const Counters& counters);
+};
+
 class FleetBridge : public QObject {
     Q_OBJECT
 public:
@@ -108,6 +120,9 @@ public:
     // Optional data layers.
     virtual const PassCountLayer* passCountLayer() const { return nullptr; }
     virtual SiteMapData siteMap() const { return {}; }
+
+    // Per link, what its stack counted so far (link details, headless {"cmd":"counters"}). Any thread.
+    virtual QVector<LinkCounters> linkCounters() const { return {}; }
 
     // ---- io-thread watchdog (issue 14 §3), GUI thread ----
     // How long the stack's io thread has not turned; 0 while it turns, when it is not running, or when the

@@ -238,4 +238,9 @@ void OsyrisBridge::postToIo(std::function<void()> f) {
         m_station->postToIo(std::move(f));
 }
 
+QVector<LinkCounters> OsyrisBridge::linkCounters() const {
+    return {LinkCounters::of(QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port),
+                             m_station->counters())};
+}
+
 } // namespace ocu

@@ -50,6 +50,8 @@ public:
 
     // ---- queries (blocking round trip to the io thread: for tests and start-up, not for hot paths) ----
     Counters& counters() { return m_counters; }
+    // One link's counters (they also count into counters()); nullptr for an unknown link. Any thread.
+    Counters* linkCounters(const std::string& link) const;
     // Watchdog (issue 14 §3): how long the io thread has not turned (0 while it turns or is not running).
     std::chrono::milliseconds ioStalledFor() const;
     // Runs f on the io thread without waiting (diagnostics; tests block the thread with it on purpose).

@@ -209,6 +209,11 @@ private slots:
             std::any_of(events.begin(), events.end(),
                         [](const FleetEvent& e) { return e.text.contains(QStringLiteral("drum width")); }),
             20000);
+        // Counted per link and cause (issue 14 §6: link details, headless counters).
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !bridge.linkCounters().isEmpty() &&
+                bridge.linkCounters()[0].rejected.value(QStringLiteral("implausible.drum_width")) >= 1,
+            20000);
         // The station still turns: a good position after it is shown.
         roller.publishOwnPosition(at(7, 5));
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(seen.latest(id)->e - 7) < 0.01, 20000);
