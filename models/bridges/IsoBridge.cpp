@@ -102,8 +102,14 @@ void IsoBridge::onMachineChanged(const IsoMachineSnapshot& machine) {
     auto [it, added] = m_machinesIo.try_emplace(keyOf(machine.link, machine.equipmentId));
     IoMachine& io = it->second;
     const std::optional<IsoPosition> lastGood = added ? std::nullopt : io.snapshot.position;
-    const bool newPosition =
-        machine.position && (!lastGood || lastGood->receivedUnixMs != machine.position->receivedUnixMs);
+    // A full change carries the newest position again: judged once, unless it differs in any field (several
+    // positions may arrive within one millisecond).
+    auto same = [](const IsoPosition& a, const IsoPosition& b) {
+        return a.latitude == b.latitude && a.longitude == b.longitude && a.elevation == b.elevation &&
+               a.speedKmh == b.speedKmh && a.heading == b.heading && a.measuredUnixMs == b.measuredUnixMs &&
+               a.receivedUnixMs == b.receivedUnixMs;
+    };
+    const bool newPosition = machine.position && (!lastGood || !same(*lastGood, *machine.position));
     io.snapshot = machine;
     io.snapshot.position = lastGood;
     if (newPosition && admitPosition(machine.link, it->first, io, *machine.position))

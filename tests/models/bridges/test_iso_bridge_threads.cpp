@@ -114,7 +114,10 @@ private slots:
         const auto a = seen.latest(idOf(kMachineA));
         QVERIFY(a.has_value());
         QVERIFY2(std::abs(a->lat - lastLat) < 1e-9,
-                 qPrintable(QString::number(a->lat, 'f', 7))); // latest wins
+                 qPrintable(QString::number(a->lat, 'f', 7) +
+                            QStringLiteral(" rejected %1 pushed %2")
+                                .arg(bridge.linkCounters().value(0).rejectedTotal())
+                                .arg(pushed))); // latest wins
         QVERIFY(seen.latest(idOf(kMachineB)).has_value());
         QCOMPARE(bridge.machineStats().drains, before.drains + 1);
         QVERIFY(seen.allOn(bridge.thread()));
