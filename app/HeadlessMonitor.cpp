@@ -64,6 +64,7 @@ void HeadlessMonitor::setRateLimitMs(int ms) {
 
 void HeadlessMonitor::addBridge(FleetBridge* bridge) {
     connect(bridge, &FleetBridge::linkChanged, this, &HeadlessMonitor::onLink);
+    m_bridges.append(bridge);
 }
 
 void HeadlessMonitor::writeLine(const QJsonObject& o) {
@@ -302,6 +303,8 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
         printAll();
         return result(cmd, true, QStringLiteral("%1 machines").arg(m_fleet ? m_fleet->rowCount() : 0));
     }
+    if (name == QLatin1String("counters")) // issue 14 §6: rejects per link and reason
+        return countersResult(cmd);
     if (!m_gate)
         return result(cmd, false, QStringLiteral("no stop controller"));
     const QString origin = QStringLiteral("headless");
@@ -407,6 +410,42 @@ QByteArray HeadlessMonitor::dispatchCommand(const QString& name, const QJsonObje
     const QString origin = QStringLiteral("headless");
     return viaGate(args,
                    [&](CommandGate::ResultHandler h) { gate->command(name, args, origin, std::move(h)); });
+}
+
+// ---- {"cmd":"counters"} (issue 14 §6) ----
+QByteArray HeadlessMonitor::countersResult(const QJsonObject& cmd) {
+    QJsonArray links;
+    for (const QPointer<FleetBridge>& b : std::as_const(m_bridges)) {
+        if (!b)
+            continue;
+        for (const LinkCounters& c : b->linkCounters()) {
+            QJsonObject rejected;
+            for (auto it = c.rejected.begin(); it != c.rejected.end(); ++it)
+                rejected[it.key()] = double(it.value());
+            QJsonObject all;
+            for (auto it = c.all.begin(); it != c.all.end(); ++it)
+                all[it.key()] = double(it.value());
+            QJsonObject l;
+            l[QStringLiteral("protocol")] = toText(b->protocol());
+            l[QStringLiteral("link")] = c.link;
+            l[QStringLiteral("rejected_total")] = double(c.rejectedTotal());
+            l[QStringLiteral("rejected")] = rejected;
+            l[QStringLiteral("counters")] = all;
+            links.append(l);
+        }
+    }
+    QJsonObject o;
+    o[QStringLiteral("type")] = QStringLiteral("result");
+    o[QStringLiteral("cmd")] = QStringLiteral("counters");
+    if (cmd.contains(QStringLiteral("req")))
+        o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
+    o[QStringLiteral("ok")] = true;
+    o[QStringLiteral("message")] = QStringLiteral("%1 links").arg(links.size());
+    o[QStringLiteral("links")] = links;
+    writeLine(o);
+    const QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
+    emit commandHandled(line);
+    return line;
 }
 
 void HeadlessMonitor::consumeInput(const QByteArray& chunk) {

@@ -21,19 +21,21 @@
 //   {"cmd":"stop_all"}  {"cmd":"stop","id":..}  {"cmd":"clear_stop","id":..,"confirm":true}
 //   {"cmd":"request_control","id":..}  {"cmd":"release_control","id":..}
 //   {"cmd":"drive","id":..,"mode":"velocity|effort","linear":..,"angular":..,"duration":..}  {"cmd":"list"}
-<<<<<<< HEAD
 //   {"cmd":"drive_start","id":..}  {"cmd":"drive_stop","id":..,"reason":..} (JAUS drive session)
-=======
 //   {"cmd":"assign","id":"iso23725:<guid>","tasks":[{"task":"Load","destination":4201,"route":[2001]},..]}
 //   (or one task's keys at the top level; the result echoes "tasks" with their "assignment_id")
 //   {"cmd":"reset_assignment","id":"iso23725:<guid>"}  {"cmd":"production"} (result "trucks": dispatch views)
->>>>>>> h15wire
+//   {"cmd":"counters"}: one result line with every stack's counters per link (issue 14 §6):
+//     {"type":"result","cmd":"counters","ok":true,"message":"3 links","links":[{"protocol":"osyris",
+//      "link":"osyris:239.255.0.1:5000","rejected_total":4,"rejected":{"rejected.too_short":3,
+//      "implausible.speed":1},"counters":{"rx.datagrams":120,...}}, ...]}
 #include "models/CommandGate.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
 #include <QHash>
 #include <QJsonObject>
+#include <QList>
 #include <QObject>
 #include <QPointer>
 #include <QSet>
@@ -110,6 +112,7 @@ private:
     QByteArray viaGate(const QJsonObject& cmd, const std::function<void(CommandGate::ResultHandler)>& issue,
                        const QString& suffix = {});
     void maybeFinishInput();
+    QByteArray countersResult(const QJsonObject& cmd);
 
     QPointer<FleetModel> m_fleet;
     QPointer<AlarmModel> m_alarms;
@@ -127,6 +130,7 @@ private:
     QSet<QString> m_pending;
     QHash<QString, QString> m_linkSig;
     QSet<QString> m_protocolCommands;
+    QList<QPointer<FleetBridge>> m_bridges; // for {"cmd":"counters"}
     QByteArray m_inBuf;
     QSocketNotifier* m_stdinNotifier = nullptr;
     int m_pendingResults = 0;

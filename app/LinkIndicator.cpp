@@ -15,7 +15,11 @@ LinkIndicator::LinkIndicator(const QString& protocolName, QWidget* parent)
     l->addWidget(m_lamp);
     l->addWidget(m_label);
     auto* timer = new QTimer(this);
-    connect(timer, &QTimer::timeout, this, &LinkIndicator::refresh);
+    connect(timer, &QTimer::timeout, this, [this] {
+        if (m_bridge)
+            m_counters = m_bridge->linkCounters();
+        refresh();
+    });
     timer->start(1000);
     setObjectName(QStringLiteral("link-") + protocolName.toLower());
     refresh();
@@ -25,6 +29,17 @@ void LinkIndicator::setState(State state, const QString& detail) {
     m_state = state;
     m_detail = detail;
     refresh();
+}
+
+void LinkIndicator::setLinkCounters(const QVector<LinkCounters>& counters) {
+    m_counters = counters;
+    refresh();
+}
+
+void LinkIndicator::watchBridge(FleetBridge* bridge) {
+    m_bridge = bridge;
+    if (bridge)
+        setLinkCounters(bridge->linkCounters());
 }
 
 void LinkIndicator::dataReceived() {
@@ -77,7 +92,18 @@ void LinkIndicator::refresh() {
     m_label->setText(t);
     m_lamp->setStyleSheet(
         QStringLiteral("background:%1; border-radius:6px; border:1px solid #333;").arg(colour.name()));
-    setToolTip(m_detail.isEmpty() ? t : t + QLatin1Char('\n') + m_detail);
+    QString tip = m_detail.isEmpty() ? t : t + QLatin1Char('\n') + m_detail;
+    // Rejected input per link and reason: an operator sees a peer misbehave without reading logs.
+    for (const LinkCounters& c : std::as_const(m_counters)) {
+        if (c.rejected.isEmpty()) {
+            tip += QLatin1Char('\n') + tr("%1: no input rejected").arg(c.link);
+            continue;
+        }
+        tip += QLatin1Char('\n') + tr("%1: %2 inputs rejected").arg(c.link).arg(c.rejectedTotal());
+        for (auto it = c.rejected.begin(); it != c.rejected.end(); ++it)
+            tip += QStringLiteral("\n    %1: %2").arg(it.key()).arg(it.value());
+    }
+    setToolTip(tip);
 }
 
 } // namespace ocu

@@ -1,6 +1,11 @@
 #pragma once
-// One status-bar indicator per protocol link: a coloured lamp, the state in words and the data age.
+// One status-bar indicator per protocol link: a coloured lamp, the state in words and the data age; its
+// details (tooltip) add each link's rejected peer input by reason (issue 14 §6).
+#include "models/FleetBridge.h"
+
 #include <QElapsedTimer>
+#include <QPointer>
+#include <QVector>
 #include <QWidget>
 
 class QLabel;
@@ -22,12 +27,20 @@ public:
     void dataReceived();
     void setDataAgeMs(qint64 ageMs);
     qint64 dataAgeMs() const;
+    // The reject counters per link, shown in the details; watchBridge() takes them from the bridge every
+    // second (and at once).
+    void setLinkCounters(const QVector<LinkCounters>& counters);
+    void watchBridge(FleetBridge* bridge);
+    // What the tooltip shows: the state, the link's detail and the reject counters.
+    QString details() const { return toolTip(); }
 
 private:
     void refresh();
     QString m_protocol;
     State m_state = State::NotConfigured;
     QString m_detail;
+    QVector<LinkCounters> m_counters;
+    QPointer<FleetBridge> m_bridge;
     QElapsedTimer m_sinceData;
     qint64 m_ageOffsetMs = -1;
     QLabel* m_lamp;

@@ -225,6 +225,7 @@ void SiteRuntime::populate(MainWindow& window) {
 #endif
         });
         LinkIndicator* ind = window.linkIndicator(module->displayName());
+        ind->watchBridge(b); // reject counters per link in its details (issue 14 §6)
         connect(b, &FleetBridge::linkChanged, ind, [ind](const LinkStatus& s) {
             ind->setState(indicatorState(s.state),
                           s.link + (s.detail.isEmpty() ? QString() : ": " + s.detail));

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QTimer>
 
 namespace ocu {
 
@@ -20,6 +21,25 @@ QJsonArray targetsToJson(const QVector<CommandTarget>& targets) {
     return out;
 }
 
+quint64 LinkCounters::rejectedTotal() const {
+    quint64 n = 0;
+    for (quint64 v : rejected)
+        n += v;
+    return n;
+}
+
+LinkCounters LinkCounters::of(const QString& link, const Counters& counters) {
+    LinkCounters out;
+    out.link = link;
+    for (const auto& [name, value] : counters.snapshot()) {
+        const QString n = QString::fromStdString(name);
+        out.all.insert(n, value);
+        if (Counters::isReject(name))
+            out.rejected.insert(n.mid(3), value);
+    }
+    return out;
+}
+
 FleetBridge::FleetBridge(Protocol protocol, QObject* parent)
     : QObject(parent), m_protocol(protocol),
       m_machines(this, [this](auto&& batch) { deliverMachines(std::move(batch)); }),
@@ -27,6 +47,9 @@ FleetBridge::FleetBridge(Protocol protocol, QObject* parent)
     qRegisterMetaType<ocu::MachineState>();
     qRegisterMetaType<ocu::FleetEvent>();
     qRegisterMetaType<ocu::LinkStatus>();
+    auto* watchdog = new QTimer(this);
+    connect(watchdog, &QTimer::timeout, this, &FleetBridge::checkWatchdog);
+    watchdog->start(250);
 }
 
 FleetBridge::~FleetBridge() = default;
@@ -164,8 +187,50 @@ void FleetBridge::deliverMachines(std::vector<std::pair<QString, std::optional<M
 
 void FleetBridge::deliverLinks(std::vector<std::pair<QString, LinkStatus>>&& batch) {
     for (auto& [name, status] : batch) {
-        m_linkState.insert(name, status);
-        emit linkChanged(status);
+        m_reportedLinks.insert(name, status);
+        const LinkStatus shown = shownLink(status);
+        m_linkState.insert(name, shown);
+        emit linkChanged(shown);
+    }
+}
+
+LinkStatus FleetBridge::shownLink(const LinkStatus& reported) const {
+    if (!m_ioStalled)
+        return reported;
+    // A stalled io thread neither receives nor sends: whatever the stack last said, the link is degraded at
+    // best (a link already down stays down).
+    LinkStatus s = reported;
+    if (s.state != LinkState::Down)
+        s.state = LinkState::Degraded;
+    const QString why = tr("%1 io thread not turning").arg(toText(m_protocol));
+    s.detail = s.detail.isEmpty() ? why : why + QStringLiteral("; ") + s.detail;
+    return s;
+}
+
+void FleetBridge::checkWatchdog() {
+    const std::chrono::milliseconds stall = ioStalledFor();
+    const bool stalled = stall > m_watchdogLimit;
+    if (stalled == m_ioStalled)
+        return;
+    m_ioStalled = stalled;
+    // Links still queued by the io thread first, so the override applies to the newest reports.
+    m_links.drainNow();
+    FleetEvent ev;
+    if (stalled) {
+        ev = makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {},
+                       tr("%1 io thread has not turned for %2 s (watchdog): its links are degraded, data and "
+                          "commands are held up")
+                           .arg(toText(m_protocol))
+                           .arg(double(stall.count()) / 1000.0, 0, 'f', 1));
+    } else {
+        ev = makeEvent(EventSeverity::Info, EventKind::LinkLoss, {},
+                       tr("%1 io thread turns again (watchdog)").arg(toText(m_protocol)));
+    }
+    publishEvent(ev);
+    for (const LinkStatus& reported : std::as_const(m_reportedLinks)) {
+        const LinkStatus shown = shownLink(reported);
+        m_linkState.insert(reported.link, shown);
+        emit linkChanged(shown);
     }
 }
 

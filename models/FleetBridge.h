@@ -20,13 +20,16 @@
 #include "models/TelemetryCoalescer.h"
 
 #include "protocols/common/CommandOutcome.h"
+#include "protocols/common/Counters.h"
 
 #include <QHash>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QMap>
 #include <QObject>
 #include <QStringList>
 #include <QVector>
+#include <chrono>
 #include <optional>
 #include <vector>
 
@@ -71,6 +74,16 @@ struct LinkStatus {
     LinkState state = LinkState::Unknown;
     qint64 dataAgeMs = -1; // age of the newest data on this link; -1 = none yet
     QString detail;
+};
+
+// One link's counters (issue 14 §6): rejected peer input by reason (Counters::isReject, names without the
+// leading "rx.": "rejected.too_short", "implausible.speed", "unknown_member") and every counter by name.
+struct LinkCounters {
+    QString link;
+    QMap<QString, quint64> rejected;
+    QMap<QString, quint64> all;
+    quint64 rejectedTotal() const;
+    static LinkCounters of(const QString& link, const Counters& counters);
 };
 
 class FleetBridge : public QObject {
@@ -120,6 +133,20 @@ public:
     virtual const PassCountLayer* passCountLayer() const { return nullptr; }
     virtual SiteMapData siteMap() const { return {}; }
 
+    // Per link, what its stack counted so far (link details, headless {"cmd":"counters"}). Any thread.
+    virtual QVector<LinkCounters> linkCounters() const { return {}; }
+
+    // ---- io-thread watchdog (issue 14 §3), GUI thread ----
+    // How long the stack's io thread has not turned; 0 while it turns, when it is not running, or when the
+    // bridge has no io thread of its own (the default). Any thread.
+    virtual std::chrono::milliseconds ioStalledFor() const { return std::chrono::milliseconds(0); }
+    // A stall longer than the limit (default 1 s) raises an alarm and shows every link of this bridge
+    // degraded until the thread turns again (then an info event and the links as the stack reported them).
+    // The bridge's own timer checks every 250 ms; checkWatchdog() checks now.
+    void setWatchdogLimit(std::chrono::milliseconds limit) { m_watchdogLimit = limit; }
+    void checkWatchdog();
+    bool ioStalled() const { return m_ioStalled; }
+
     // GUI thread: the latest link states, and a way to deliver pending coalesced data synchronously.
     QVector<LinkStatus> links() const;
     std::optional<LinkStatus> linkStatus(const QString& link) const;
@@ -154,7 +181,12 @@ private:
     void deliverMachines(std::vector<std::pair<QString, std::optional<MachineState>>>&& batch);
     void deliverLinks(std::vector<std::pair<QString, LinkStatus>>&& batch);
 
+    LinkStatus shownLink(const LinkStatus& reported) const;
+
     Protocol m_protocol;
+    std::chrono::milliseconds m_watchdogLimit{1000};
+    bool m_ioStalled = false;
+    QHash<QString, LinkStatus> m_reportedLinks; // as the stack reported them (m_linkState: as shown)
     TelemetryCoalescer<QString, std::optional<MachineState>> m_machines; // nullopt = removal
     TelemetryCoalescer<QString, LinkStatus> m_links;
     QHash<QString, LinkStatus> m_linkState;

@@ -16,7 +16,8 @@ static QString q(const std::string& s) {
 }
 
 IsoBridge::IsoBridge(const IsoConfig& config, const GeoFrame& frame, QObject* parent)
-    : FleetBridge(Protocol::Iso23725, parent), m_config(config), m_frame(frame) {
+    : FleetBridge(Protocol::Iso23725, parent), m_config(config), m_frame(frame),
+      m_poseGate(config.plausibility) {
     m_stack = std::make_unique<IsoStack>(m_config, static_cast<IsoListener&>(*this));
 }
 
@@ -86,7 +87,7 @@ void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, 
             if (io.snapshot.link != link)
                 continue;
             io.snapshot.stateKnown = false;
-            io.row = toMachine(io.snapshot, AllStopState::Unknown);
+            io.row = rowOf(io, AllStopState::Unknown);
             rows.push_back(io.row);
             publishDispatch(io.row.id, toDispatchState(io.snapshot));
         }
@@ -105,9 +106,20 @@ const std::string& IsoBridge::keyOf(const std::string& link, const Guid& equipme
 void IsoBridge::onMachineChanged(const IsoMachineSnapshot& machine) {
     auto [it, added] = m_machinesIo.try_emplace(keyOf(machine.link, machine.equipmentId));
     IoMachine& io = it->second;
+    const std::optional<IsoPosition> lastGood = added ? std::nullopt : io.snapshot.position;
+    // A full change carries the newest position again: judged once, unless it differs in any field (several
+    // positions may arrive within one millisecond).
+    auto same = [](const IsoPosition& a, const IsoPosition& b) {
+        return a.latitude == b.latitude && a.longitude == b.longitude && a.elevation == b.elevation &&
+               a.speedKmh == b.speedKmh && a.heading == b.heading && a.measuredUnixMs == b.measuredUnixMs &&
+               a.receivedUnixMs == b.receivedUnixMs;
+    };
+    const bool newPosition = machine.position && (!lastGood || !same(*lastGood, *machine.position));
     io.snapshot = machine;
-    io.row = toMachine(machine,
-                       m_allStopIo.count(machine.link) ? m_allStopIo[machine.link] : AllStopState::Unknown);
+    io.snapshot.position = lastGood;
+    if (newPosition && admitPosition(machine.link, it->first, io, *machine.position))
+        io.snapshot.position = machine.position;
+    io.row = rowOf(io, m_allStopIo.count(machine.link) ? m_allStopIo[machine.link] : AllStopState::Unknown);
     if (added) {
         std::lock_guard lock(m_machineLinksMutex);
         m_machineLinks.insert(io.row.id, q(machine.link));
@@ -130,16 +142,27 @@ void IsoBridge::onMachinePositions(const std::string& link,
         }
         if (!m->position)
             continue;
-        it->second.snapshot.position = m->position;
-        setPosition(it->second.row, *m->position);
-        rows.push_back(it->second.row);
+        IoMachine& io = it->second;
+        const bool wasImplausible = !io.implausible.isEmpty();
+        if (!admitPosition(link, it->first, io, *m->position)) {
+            io.row = rowOf(io, m_allStopIo.count(link) ? m_allStopIo[link] : AllStopState::Unknown);
+            rows.push_back(io.row);
+            continue;
+        }
+        io.snapshot.position = m->position;
+        if (wasImplausible) // the warning mark goes with the next good position
+            io.row = rowOf(io, m_allStopIo.count(link) ? m_allStopIo[link] : AllStopState::Unknown);
+        else
+            setPosition(io.row, *m->position);
+        rows.push_back(io.row);
     }
     if (!rows.empty())
         publishMachines(std::move(rows));
 }
 
 void IsoBridge::onMachineRemoved(const std::string& link, const Guid& equipmentId) {
-    m_machinesIo.erase(keyOf(link, equipmentId));
+    m_poseGate.forget(keyOf(link, equipmentId));
+    m_machinesIo.erase(m_key);
     publishRemoval(protocolPrefix(Protocol::Iso23725) + q(equipmentId));
     publishDispatch(protocolPrefix(Protocol::Iso23725) + q(equipmentId), std::nullopt);
 }
@@ -149,7 +172,7 @@ void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& s
     std::vector<MachineState> rows;
     for (auto& [key, io] : m_machinesIo)
         if (io.snapshot.link == link) {
-            io.row = toMachine(io.snapshot, status.state);
+            io.row = rowOf(io, status.state);
             rows.push_back(io.row);
         }
     publishMachines(std::move(rows));
@@ -467,6 +490,54 @@ MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop
     return m;
 }
 
+MachineState IsoBridge::rowOf(const IoMachine& io, AllStopState stop) const {
+    MachineState m = toMachine(io.snapshot, stop);
+    if (!io.implausible.isEmpty()) {
+        m.health = std::max(m.health, HealthLevel::Warning);
+        m.healthText =
+            io.implausible + (m.healthText.isEmpty() ? QString() : QStringLiteral("; ") + m.healthText);
+    }
+    return m;
+}
+
+bool IsoBridge::admitPosition(const std::string& link, const std::string& key, IoMachine& io,
+                              const IsoPosition& p) {
+    const EnuPoint e = m_frame.toLocal({p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)});
+    std::optional<double> speed;
+    if (p.speedKmh)
+        speed = *p.speedKmh / 3.6;
+    // Latitudes and longitudes beyond the globe are as far outside the site as it gets (GeographicLib would
+    // answer NaN for them); a NaN stays NaN.
+    const double lat = p.latitude, lon = p.longitude;
+    const bool onGlobe = !(std::abs(lat) > 90) && !(std::abs(lon) > 180);
+    const PoseGate::Verdict v =
+        m_poseGate.check(key, onGlobe ? e.e : 1e300, e.n, e.u, speed, SteadyClock::instance().now());
+    if (v.ok()) {
+        io.implausible.clear();
+        return true;
+    }
+    const char* cause = toString(v.fault);
+    if (Counters* c = m_stack->linkCounters(link))
+        c->add(std::string("rx.implausible.") + cause);
+    const QString why = q(describe(v.fault, m_poseGate.limits()));
+    io.implausible = tr("implausible position ignored (%1 so far): %2").arg(v.peerCount).arg(why);
+    if (v.warn) {
+        const QString id = protocolPrefix(Protocol::Iso23725) + q(io.snapshot.equipmentId);
+        publishEvent(
+            makeEvent(EventSeverity::Warning, ocu::EventKind::Diagnostic, id,
+                      tr("ISO 23725 link %1, machine %2: position ignored, %3 (lat %4, lon %5, speed "
+                         "%6 km/h); last good position kept (counted in rx.implausible.%7; one "
+                         "warning per machine and cause every 30 s)")
+                          .arg(q(link), id, why)
+                          .arg(lat, 0, 'g', 10)
+                          .arg(lon, 0, 'g', 10)
+                          .arg(p.speedKmh.value_or(0))
+                          .arg(QLatin1String(cause)),
+                      QStringLiteral("iso23725")));
+    }
+    return false;
+}
+
 void IsoBridge::setPosition(MachineState& m, const IsoPosition& p) const {
     const EnuPoint e = m_frame.toLocal({p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)});
     m.hasPosition = true;
@@ -645,6 +716,23 @@ void IsoBridge::command(const QString& name, const QJsonObject& args, OutcomeCal
     else
         m_stack->requestAssignment(l, id.mid(prefix.size()).toStdString(), toAssignmentItems(*tasks),
                                    std::move(done));
+}
+
+std::chrono::milliseconds IsoBridge::ioStalledFor() const {
+    return m_stack ? m_stack->ioStalledFor() : std::chrono::milliseconds(0);
+}
+
+void IsoBridge::postToIo(std::function<void()> f) {
+    if (m_stack)
+        m_stack->postToIo(std::move(f));
+}
+
+QVector<LinkCounters> IsoBridge::linkCounters() const {
+    QVector<LinkCounters> out;
+    for (const auto& l : m_config.links)
+        if (const Counters* c = m_stack->linkCounters(l.name))
+            out.push_back(LinkCounters::of(QStringLiteral("iso23725:") + q(l.name), *c));
+    return out;
 }
 
 } // namespace ocu

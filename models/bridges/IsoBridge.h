@@ -6,6 +6,7 @@
 #include "models/bridges/IsoBridgeDispatch.h"
 
 #include "protocols/common/GeoFrame.h"
+#include "protocols/common/PosePlausibility.h"
 #include "protocols/iso23725/IsoConfig.h"
 #include "protocols/iso23725/IsoStack.h"
 
@@ -48,6 +49,11 @@ public:
     bool confirmsCommand(const QString& action) const override;
     bool reportsConfirmed(const QString& action, const QString& target) const override;
     SiteMapData siteMap() const override { return m_map; }
+    // Watchdog (issue 14 §3): the stack's io thread.
+    QVector<LinkCounters> linkCounters() const override;
+    std::chrono::milliseconds ioStalledFor() const override;
+    // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
+    void postToIo(std::function<void()> f);
 
     // GUI thread: the all-stop status per link as the AHS reported it.
     iso23725::AllStopState allStopState(const QString& link) const;
@@ -105,9 +111,18 @@ private:
     // the row when the all-stop or the link changes) and the row last published. A position patches both (the
     // snapshot's position, the row's position fields): no snapshot copy, and one hand-over per batch.
     struct IoMachine {
-        iso23725::IsoMachineSnapshot snapshot;
+        iso23725::IsoMachineSnapshot snapshot; // its position: the last plausible one
         MachineState row;
+        QString implausible; // why the newest position was not drawn; empty when it was
     };
+    // The row of a machine as published: derived from its snapshot, marked implausible when it is.
+    MachineState rowOf(const IoMachine& io, iso23725::AllStopState stop) const;
+    // io thread, issue 14 §2: true when `p` may be drawn (it becomes the machine's position); otherwise the
+    // cause is counted on the link (rx.implausible.<cause>), a warning raised once per machine and cause
+    // every 30 s, and io.implausible says why.
+    bool admitPosition(const std::string& link, const std::string& key, IoMachine& io,
+                       const iso23725::IsoPosition& p);
+    PoseGate m_poseGate; // io thread only
     std::map<std::string, IoMachine> m_machinesIo;
     std::string m_key; // reused by keyOf()
     // io thread only: all-stop per link.

@@ -6,6 +6,7 @@
 #include "models/jaus/JausVehicleBridge.h"
 
 #include "protocols/common/GeoFrame.h"
+#include "protocols/common/PosePlausibility.h"
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausTypes.h"
 
@@ -50,6 +51,11 @@ public:
     bool reportsConfirmed(const QString& action, const QString& target) const override;
 
     CommandResult drive(quint16 subsystem, const JausDrive& command) override;
+    // Watchdog (issue 14 §3): the stack's io thread.
+    QVector<LinkCounters> linkCounters() const override;
+    std::chrono::milliseconds ioStalledFor() const override;
+    // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
+    void postToIo(std::function<void()> f);
     CommandResult stopDriving(quint16 subsystem) override;
 
 private:
@@ -75,6 +81,20 @@ private:
     QHash<std::uint16_t, JausVehicle> m_latest;
     QHash<std::uint16_t, QTimer*> m_driveTimers;
     QSet<quint16> m_sessions; // drive sessions opened through the gate (or a headless "drive")
+    // io thread, issue 14 §2: why the snapshot's pose may not be drawn (empty when it may). Then its pose and
+    // velocity are replaced by the last plausible ones, the cause counted (rx.implausible.<cause>) and a
+    // warning raised once per vehicle and cause every 30 s.
+    QString admitPose(jaus::SubsystemSnapshot& snapshot);
+    struct PoseIo {
+        std::optional<jaus::GlobalPose> globalPose;
+        std::optional<jaus::LocalPose> localPose;
+        std::optional<jaus::VelocityState> velocity;
+        double checked[4] = {0, 0, 0, 0}; // e, n, u, speed of the pose last checked (bitwise: NaN included)
+        bool hasChecked = false;
+        QString implausible; // the verdict on it
+    };
+    std::map<std::uint16_t, PoseIo> m_poseIo;
+    PoseGate m_poseGate;
     // io thread only
     std::map<std::uint16_t, bool> m_linkUp;
     ocu::LinkState m_publishedLink = ocu::LinkState::Unknown;

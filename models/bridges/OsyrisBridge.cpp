@@ -235,4 +235,18 @@ void OsyrisBridge::command(const QString& name, const QJsonObject& args, Outcome
     FleetBridge::command(name, args, std::move(done));
 }
 
+std::chrono::milliseconds OsyrisBridge::ioStalledFor() const {
+    return m_station ? m_station->ioStalledFor() : std::chrono::milliseconds(0);
+}
+
+void OsyrisBridge::postToIo(std::function<void()> f) {
+    if (m_station)
+        m_station->postToIo(std::move(f));
+}
+
+QVector<LinkCounters> OsyrisBridge::linkCounters() const {
+    return {LinkCounters::of(QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port),
+                             m_station->counters())};
+}
+
 } // namespace ocu

@@ -34,6 +34,11 @@ public:
     bool reportsStopState() const override { return false; }
     const PassCountLayer* passCountLayer() const override { return m_layer.get(); }
     osyris::PassCountSummary passCountSummary() const;
+    // Watchdog (issue 14 §3): the stack's io thread.
+    QVector<LinkCounters> linkCounters() const override;
+    std::chrono::milliseconds ioStalledFor() const override;
+    // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
+    void postToIo(std::function<void()> f);
 
 private:
     void onMachinePosition(const osyris::MachineSnapshot& s) override;

@@ -1,10 +1,16 @@
 #pragma once
 // One Boost.Asio io_context on its own thread: every protocol stack owns one. Commands enter with post();
 // the stack's handlers run only on this thread, so stack state needs no locks.
+// Watchdog (issue 14 §3): a heartbeat timer on the loop stamps an atomic time at every turn; any other thread
+// reads how long the loop has not turned (sinceLastTurn) and can tell a stuck handler from an idle stack.
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
+#include <boost/asio/steady_timer.hpp>
 
+#include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <functional>
 #include <future>
 #include <memory>
@@ -27,6 +33,11 @@ public:
     bool running() const { return m_thread.joinable(); }
     bool onThread() const { return std::this_thread::get_id() == m_thread.get_id(); }
 
+    // How long since the loop last ran its heartbeat (kHeartbeat apart while it turns); 0 when not running.
+    // Any thread.
+    std::chrono::milliseconds sinceLastTurn() const;
+    static constexpr std::chrono::milliseconds kHeartbeat{100};
+
     boost::asio::io_context& context() { return m_context; }
     template <class F> void post(F&& f) { boost::asio::post(m_context, std::forward<F>(f)); }
     // Runs f on the io thread and waits for its result. Never call from the GUI thread's hot paths:
@@ -45,7 +56,10 @@ private:
     std::string m_name;
     boost::asio::io_context m_context;
     std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> m_work;
+    boost::asio::steady_timer m_heartbeat{m_context}; // after m_context: destroyed before it
+    std::atomic<std::int64_t> m_lastTurnNs{0};        // steady clock; 0 = not running
     std::thread m_thread;
+    void beat();
 };
 
 } // namespace ocu

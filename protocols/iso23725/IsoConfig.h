@@ -4,6 +4,8 @@
 #include "protocols/iso23725/Messages.h"
 #include "protocols/iso23725/WsTransport.h"
 
+#include "protocols/common/PosePlausibility.h"
+
 #include <chrono>
 #include <string>
 #include <vector>
@@ -41,6 +43,9 @@ struct IsoConfig {
     std::chrono::milliseconds interfaceDiagnosticPeriod{60000};
     std::chrono::milliseconds errorDiagnosticInterval{1000};
     InferredRules rules;
+    // Positions outside these are not drawn: the machine is marked implausible, its last good position kept
+    // (issue 14 §2; checked by the console's bridge in the site frame).
+    PoseLimits plausibility;
 };
 
 // Reads the `iso23725` object strictly (unknown keys, wrong types and bad values are errors naming the key).

@@ -134,6 +134,10 @@ struct IsoStack::Impl {
     Impl(IsoConfig c, IsoListener& l, Counters& counters)
         : cfg(std::move(c)), listener(l), counters(counters), io("iso23725"), positionTimer(io.context()),
           pollTimer(io.context()), positionFlush(io.context()) {
+        // One set of counters per link, feeding the stack's totals; never changed after construction, so
+        // any thread may read them (issue 14 §6).
+        for (auto& lc : cfg.links)
+            linkCounters.try_emplace(lc.name, std::make_unique<Counters>(&counters));
         positionFlush.flushAll = [this] {
             for (auto& [name, l] : links)
                 l->session->flushPositions();
@@ -145,6 +149,7 @@ struct IsoStack::Impl {
     Counters& counters;
     IoThread io;
     std::map<std::string, std::unique_ptr<Link>> links;
+    std::map<std::string, std::unique_ptr<Counters>> linkCounters;
     std::map<Guid, IsoPosition> ownPositions;
     boost::asio::steady_timer positionTimer;
     boost::asio::steady_timer pollTimer;
@@ -204,8 +209,8 @@ bool IsoStack::start() {
     return d.io.call([&] {
         bool ok = true;
         for (auto& lc : d.cfg.links) {
-            auto l =
-                std::make_unique<Link>(d.cfg, lc, d.listener, d.counters, d.io.context(), d.positionFlush);
+            auto l = std::make_unique<Link>(d.cfg, lc, d.listener, *d.linkCounters.at(lc.name),
+                                            d.io.context(), d.positionFlush);
             auto r = l->main->start();
             if (r && l->map)
                 if (auto rm = l->map->start(); !rm)
@@ -400,6 +405,20 @@ LinkState IsoStack::mapServiceState(const std::string& link) {
         auto& s = *it->second->session;
         return s.separateMapService() ? s.mapChannelState() : s.state();
     });
+}
+
+Counters* IsoStack::linkCounters(const std::string& link) const {
+    auto it = m_impl->linkCounters.find(link);
+    return it == m_impl->linkCounters.end() ? nullptr : it->second.get();
+}
+
+std::chrono::milliseconds IsoStack::ioStalledFor() const {
+    return m_impl->io.sinceLastTurn();
+}
+
+void IsoStack::postToIo(std::function<void()> f) {
+    if (m_impl->io.running())
+        m_impl->io.post(std::move(f));
 }
 
 std::vector<std::string> IsoStack::linkNames() const {

@@ -8,6 +8,8 @@
 #include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 
+#include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -56,6 +58,12 @@ public:
 
     // ---- queries (blocking round trip to the io thread: for tests and start-up, not for hot paths) ----
     Counters& counters() { return m_counters; }
+    // One link's counters (they also count into counters()); nullptr for an unknown link. Any thread.
+    Counters* linkCounters(const std::string& link) const;
+    // Watchdog (issue 14 §3): how long the io thread has not turned (0 while it turns or is not running).
+    std::chrono::milliseconds ioStalledFor() const;
+    // Runs f on the io thread without waiting (diagnostics; tests block the thread with it on purpose).
+    void postToIo(std::function<void()> f);
     std::vector<IsoMachineSnapshot> machines(const std::string& link);
     AllStopStatus allStop(const std::string& link);
     LinkState linkState(const std::string& link);

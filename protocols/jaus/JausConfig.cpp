@@ -77,6 +77,10 @@ JausConfig parseJausConfig(ConfigObject& s) {
     c.eventConfirmTimeoutS = s.number("event_confirm_timeout_s", c.eventConfirmTimeoutS, 0.2, 30);
     c.stopRepeats = int(s.integer("stop_repeats", c.stopRepeats, 2, 50));
     c.driveCommandTimeoutS = s.number("drive_command_timeout_s", c.driveCommandTimeoutS, 0, 10);
+    // Plausibility gate for poses (issue 14 §2): outside these a pose is not drawn.
+    c.plausibility.extentM = s.number("plausible_extent_m", c.plausibility.extentM, 10, 1e6);
+    c.plausibility.maxSpeedMps = s.number("plausible_speed_max_mps", c.plausibility.maxSpeedMps, 0.1, 1000);
+    c.plausibility.jumpSlackM = s.number("plausible_jump_slack_m", c.plausibility.jumpSlackM, 0, 1e5);
     c.velocityDrive = s.choice("drive_mode", "velocity", {"velocity", "wrench"}) == "velocity";
     s.finish();
     return c;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "protocols/common/ConfigReader.h"
+#include "protocols/common/PosePlausibility.h"
 #include "protocols/jaus/JudpCodec.h"
 
 namespace ocu::jaus {
@@ -59,6 +60,9 @@ struct JausConfig {
     // GUI or script must not keep a vehicle moving on its last command. 0 disables.
     double driveCommandTimeoutS = 0.5;
     bool velocityDrive = true; // default drive mode when a platform offers both drivers
+    // Poses outside these are not drawn: the vehicle is marked implausible, its last good pose kept (issue 14
+    // §2; checked by the console's bridge in the site frame).
+    PoseLimits plausibility;
 
     JausId ownId() const { return JausId{subsystemId, nodeId, componentId}; }
     bool mayControl() const { return role != Role::Monitor && authority > 0; }

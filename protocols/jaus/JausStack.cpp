@@ -220,6 +220,12 @@ void JausStack::setTransmitFaults(double loss, int delayMs) {
 Counters& JausStack::counters() {
     return m_impl->counters;
 }
+std::chrono::milliseconds JausStack::ioStalledFor() const {
+    return m_impl->io.sinceLastTurn();
+}
+void JausStack::postToIo(std::function<void()> f) {
+    m_impl->post(std::move(f));
+}
 const JausConfig& JausStack::config() const {
     return m_impl->cfg;
 }

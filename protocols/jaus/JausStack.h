@@ -1,7 +1,9 @@
 #pragma once
 // The OCU side of JAUS: JausCore (client services) + JudpTransport on its own io thread.
 // Command methods are thread-safe (they post to the io thread); listener callbacks run on the io thread.
+#include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -64,6 +66,10 @@ public:
     void setTransmitFaults(double loss, int delayMs = 0);
 
     Counters& counters();
+    // Watchdog (issue 14 §3): how long the io thread has not turned (0 while it turns or is not running).
+    std::chrono::milliseconds ioStalledFor() const;
+    // Runs f on the io thread without waiting (diagnostics; tests block the thread with it on purpose).
+    void postToIo(std::function<void()> f);
     const JausConfig& config() const;
     // The UDP port actually bound (useful with port 0). 0 before start().
     std::uint16_t localPort() const;

@@ -70,6 +70,13 @@ void OsyrisStack::resetMaxHandlerDuration() {
     m_impl->maxHandlerNs = 0;
 }
 
+std::chrono::milliseconds OsyrisStack::ioStalledFor() const {
+    return m_impl->io.sinceLastTurn();
+}
+void OsyrisStack::postToIo(std::function<void()> f) {
+    if (m_impl->running)
+        m_impl->io.post(std::move(f));
+}
 RibbonStore* OsyrisStack::store() {
     return m_impl->store.get();
 }

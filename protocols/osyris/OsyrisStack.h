@@ -51,6 +51,10 @@ public:
 
     const OsyrisConfig& config() const { return m_cfg; }
     Counters& counters();
+    // Watchdog (issue 14 §3): how long the io thread has not turned (0 while it turns or is not running).
+    std::chrono::milliseconds ioStalledFor() const;
+    // Runs f on the io thread without waiting (diagnostics; tests block the thread with it on purpose).
+    void postToIo(std::function<void()> f);
     // Thread-safe (own locks); valid after start().
     RibbonStore* store();
     // A snapshot of the pass counts now, taken on the io thread (blocking: tests, diagnostics). The GUI gets

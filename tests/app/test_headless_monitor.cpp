@@ -34,6 +34,16 @@ MachineState machine(const QString& id, double e) {
     return m;
 }
 
+// A bridge with two links whose stacks counted rejects (issue 14 §6).
+struct CountingBridge : FakeFleetBridge {
+    using FakeFleetBridge::FakeFleetBridge;
+    Counters first, second;
+    QVector<LinkCounters> linkCounters() const override {
+        return {LinkCounters::of(QStringLiteral("iso23725:ahs-1"), first),
+                LinkCounters::of(QStringLiteral("iso23725:ahs-2"), second)};
+    }
+};
+
 struct Rig {
     FleetModel fleet;
     AlarmModel alarms;
@@ -253,6 +263,53 @@ private slots:
         const auto events = Rig::ofType(lines, QStringLiteral("event"));
         QCOMPARE(events.size(), 1);
         QCOMPARE(events[0].value(QStringLiteral("kind")).toString(), QStringLiteral("link_loss"));
+    }
+
+    void countersCommandAnswersRejectsPerLinkAndReason() {
+        Rig rig;
+        CountingBridge extra(Protocol::Iso23725);
+        rig.monitor.addBridge(&extra);
+        extra.first.add("rx.rejected.invalid_json", 3);
+        extra.first.add("rx.unknown_member");
+        extra.first.add("rx.frames", 10);
+        extra.second.add("rx.frames", 5);
+        rig.take();
+        const QByteArray line = rig.monitor.handleLine(R"({"cmd":"counters","req":7})");
+        QVERIFY(!line.isEmpty());
+        const auto lines = rig.take();
+        QCOMPARE(lines.size(), 1); // one line answers it all
+        const QJsonObject r = lines[0];
+        QCOMPARE(QJsonDocument(r).toJson(QJsonDocument::Compact), line);
+        QCOMPARE(r.value(QStringLiteral("type")).toString(), QStringLiteral("result"));
+        QCOMPARE(r.value(QStringLiteral("cmd")).toString(), QStringLiteral("counters"));
+        QCOMPARE(r.value(QStringLiteral("req")).toInt(), 7);
+        QVERIFY(r.value(QStringLiteral("ok")).toBool());
+        const QJsonArray links = r.value(QStringLiteral("links")).toArray();
+        QCOMPARE(links.size(), 2); // the fake bridges without a stack have no links to count
+        const QJsonObject a = links[0].toObject();
+        QCOMPARE(a.value(QStringLiteral("protocol")).toString(), QStringLiteral("iso23725"));
+        QCOMPARE(a.value(QStringLiteral("link")).toString(), QStringLiteral("iso23725:ahs-1"));
+        QCOMPARE(a.value(QStringLiteral("rejected_total")).toInt(), 4);
+        const QJsonObject rej = a.value(QStringLiteral("rejected")).toObject();
+        QCOMPARE(rej.size(), 2);
+        QCOMPARE(rej.value(QStringLiteral("rejected.invalid_json")).toInt(), 3);
+        QCOMPARE(rej.value(QStringLiteral("unknown_member")).toInt(), 1);
+        QCOMPARE(a.value(QStringLiteral("counters")).toObject().value(QStringLiteral("rx.frames")).toInt(),
+                 10);
+        const QJsonObject b = links[1].toObject();
+        QCOMPARE(b.value(QStringLiteral("link")).toString(), QStringLiteral("iso23725:ahs-2"));
+        QCOMPARE(b.value(QStringLiteral("rejected_total")).toInt(), 0);
+        QVERIFY(b.value(QStringLiteral("rejected")).toObject().isEmpty());
+        // The counts are live: a later reject shows in the next answer.
+        extra.second.add("rx.rejected.header");
+        const QJsonObject again =
+            QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"counters"})")).object();
+        QCOMPARE(again.value(QStringLiteral("links"))
+                     .toArray()[1]
+                     .toObject()
+                     .value(QStringLiteral("rejected_total"))
+                     .toInt(),
+                 1);
     }
 
     void fleetContextWiresBridgesToEverything() {

@@ -30,6 +30,21 @@ struct StopTexts : osyris::OsyrisListener {
 };
 } // namespace
 
+namespace {
+// A bridge with two links whose stacks counted rejects (issue 14 §6).
+struct CountingBridge : ocu::FleetBridge {
+    CountingBridge() : FleetBridge(ocu::Protocol::Iso23725) {}
+    ocu::Counters first, second;
+    QVector<ocu::LinkCounters> linkCounters() const override {
+        return {ocu::LinkCounters::of(QStringLiteral("iso23725:ahs-1"), first),
+                ocu::LinkCounters::of(QStringLiteral("iso23725:ahs-2"), second)};
+    }
+    void stopAll(ocu::OutcomeCallback done) override { done({}); }
+    void stopMachine(const QString&, ocu::OutcomeCallback done) override { done({}); }
+    void clearStop(const QString&, ocu::OutcomeCallback done) override { done({}); }
+};
+} // namespace
+
 class TestMainWindow : public QObject {
     Q_OBJECT
 private slots:
@@ -256,6 +271,27 @@ private slots:
         QVERIFY(day != night);
         w.setNightMode(false);
         QVERIFY(qApp->palette().color(QPalette::Window).lightness() > 150);
+    }
+    void linkDetailsShowRejectCounters() {
+        // Issue 14 §6: the link details (the indicator's tooltip) show each link's rejected input by reason,
+        // taken from the bridge every second.
+        CountingBridge bridge;
+        bridge.first.add("rx.rejected.invalid_json", 2);
+        bridge.first.add("rx.out_of_standard");
+        bridge.first.add("rx.frames", 40); // not a reject
+        LinkIndicator ind(QStringLiteral("ISO 23725"));
+        ind.setState(LinkIndicator::State::Up, QStringLiteral("iso23725:ahs-1: connected"));
+        ind.watchBridge(&bridge);
+        const QString d = ind.details();
+        QVERIFY2(d.contains(QStringLiteral("iso23725:ahs-1: 3 inputs rejected")), qPrintable(d));
+        QVERIFY2(d.contains(QStringLiteral("rejected.invalid_json: 2")), qPrintable(d));
+        QVERIFY2(d.contains(QStringLiteral("out_of_standard: 1")), qPrintable(d));
+        QVERIFY2(!d.contains(QStringLiteral("frames")), qPrintable(d));
+        QVERIFY2(d.contains(QStringLiteral("iso23725:ahs-2: no input rejected")), qPrintable(d));
+        bridge.second.add("rx.implausible.speed");
+        QTRY_VERIFY_WITH_TIMEOUT(ind.details().contains(QStringLiteral("iso23725:ahs-2: 1 inputs rejected")),
+                                 10000);
+        QVERIFY(ind.details().contains(QStringLiteral("implausible.speed: 1")));
     }
     void linkIndicatorsAndAlarms() {
         MainWindow w;

@@ -1,13 +1,16 @@
 #pragma once
 // Helpers of the bridges' thread tests: waiting while the GUI thread stays busy (no event processed), a
 // receiver on a thread of its own, and a record of the thread each signal was emitted on.
+#include "models/AlarmModel.h"
 #include "models/FleetBridge.h"
 
 #include <QThread>
+#include <QtTest>
 
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <future>
 #include <mutex>
 #include <thread>
 
@@ -97,5 +100,60 @@ struct Deliveries {
     QVector<QVector<ocu::MachineState>> batches;
     QVector<QThread*> threads;
 };
+
+// Issue 14 §3: blocks the bridge's io thread on purpose (a handler waiting on a latch, `post` runs it there)
+// and expects the watchdog's alarm and `link` shown degraded, then, with the latch released, the thread
+// turning again: an info event and the link as the stack reports it (`upAgain`). The handler gives up by
+// itself after 120 s so a failing test still ends.
+inline void expectWatchdog(ocu::FleetBridge& bridge, const QString& link,
+                           const std::function<void(std::function<void()>)>& post) {
+    using namespace ocu;
+    AlarmModel alarms;
+    alarms.addBridge(&bridge);
+    QTRY_VERIFY_WITH_TIMEOUT(bridge.linkStatus(link) && bridge.linkStatus(link)->state == LinkState::Up,
+                             20000);
+    QVERIFY(!bridge.ioStalled());
+    auto latch = std::make_shared<std::promise<void>>();
+    std::shared_future<void> released = latch->get_future().share();
+    auto entered = std::make_shared<std::atomic<bool>>(false);
+    post([released, entered] {
+        *entered = true;
+        released.wait_for(std::chrono::seconds(120));
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(entered->load(), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(bridge.ioStalled(), 20000);
+    QVERIFY(bridge.ioStalledFor() > std::chrono::milliseconds(1000));
+    // The link as shown (indicators, headless link lines) is degraded and says why.
+    const auto shown = bridge.linkStatus(link);
+    QVERIFY(shown);
+    QCOMPARE(shown->state, LinkState::Degraded);
+    QVERIFY2(shown->detail.contains(QStringLiteral("io thread not turning")), qPrintable(shown->detail));
+    // One unacknowledged alarm in the alarm model.
+    auto alarmRows = [&] {
+        int n = 0;
+        for (int r = 0; r < alarms.rowCount(); ++r)
+            if (alarms.eventAt(r).severity == EventSeverity::Alarm &&
+                alarms.eventAt(r).text.contains(QStringLiteral("watchdog")))
+                ++n;
+        return n;
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(alarmRows(), 1, 10000);
+    QVERIFY(alarms.unacknowledgedCount() >= 1);
+
+    latch->set_value();
+    QTRY_VERIFY_WITH_TIMEOUT(!bridge.ioStalled(), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(bridge.linkStatus(link) && bridge.linkStatus(link)->state == LinkState::Up,
+                             20000);
+    QVERIFY(!bridge.linkStatus(link)->detail.contains(QStringLiteral("io thread not turning")));
+    auto cleared = [&] {
+        for (int r = 0; r < alarms.rowCount(); ++r)
+            if (alarms.eventAt(r).severity == EventSeverity::Info &&
+                alarms.eventAt(r).text.contains(QStringLiteral("turns again")))
+                return true;
+        return false;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(cleared(), 10000);
+    QCOMPARE(alarmRows(), 1); // raised once for the whole stall
+}
 
 } // namespace bridgetest

@@ -117,12 +117,110 @@ private slots:
         const auto a = seen.latest(idOf(kMachineA));
         QVERIFY(a.has_value());
         QVERIFY2(std::abs(a->lat - lastLat) < 1e-9,
-                 qPrintable(QString::number(a->lat, 'f', 7))); // latest wins
+                 qPrintable(QString::number(a->lat, 'f', 7) +
+                            QStringLiteral(" rejected %1 pushed %2")
+                                .arg(bridge.linkCounters().value(0).rejectedTotal())
+                                .arg(pushed))); // latest wins
         QVERIFY(seen.latest(idOf(kMachineB)).has_value());
         QCOMPARE(bridge.machineStats().drains, before.drains + 1);
         QVERIFY(seen.allOn(bridge.thread()));
         bridge.stop();
         ahs.stop();
+    }
+
+    void implausiblePositionsKeepTheLastGoodOne() {
+        // Issue 14 §2: positions beyond the site extent, too fast or jumping are not drawn: the machine keeps
+        // its last good position and is marked implausible; each cause is counted on the link and warned
+        // once per machine; a good position afterwards is drawn again.
+        sim::SimulatedAhs ahs(quietAhs());
+        QVERIFY(ahs.start());
+        const GeoPoint origin = quietAhs().origin;
+        IsoBridge bridge(consoleConfig(ahs.url()), GeoFrame(origin));
+        QList<FleetEvent> events;
+        connect(&bridge, &FleetBridge::eventRaised, this, [&](const FleetEvent& e) {
+            if (e.text.contains(QStringLiteral("position ignored")))
+                events << e;
+        });
+        bridgetest::Deliveries seen(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(linkIs(bridge, LinkState::Up), 20000);
+        const QString id = idOf(kMachineA);
+        int seq = 0;
+        ahs.sendRaw(position(kMachineA, origin.lat + 0.001, origin.lon, ++seq)); // 111 m north
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(id) && seen.latest(id)->hasPosition, 20000);
+        const MachineState good = *seen.latest(id);
+        QVERIFY(std::abs(good.n - 111.2) < 1);
+        auto counted = [&](const char* cause) {
+            const auto c = bridge.linkCounters();
+            return c.isEmpty() ? quint64(0) : c[0].rejected.value(QStringLiteral("implausible.") + cause);
+        };
+        auto sameAsGood = [&] {
+            const auto m = seen.latest(id);
+            return m && m->hasPosition && std::abs(m->n - good.n) < 0.01 && std::abs(m->e - good.e) < 0.01;
+        };
+        // 1 degree north: 111 km from the origin (twice, in two batches: counted twice, warned once).
+        ahs.sendRaw(position(kMachineA, origin.lat + 1.0, origin.lon, ++seq));
+        QTRY_COMPARE_WITH_TIMEOUT(counted("outside_extent"), quint64(1), 20000);
+        ahs.sendRaw(position(kMachineA, origin.lat + 1.0, origin.lon, ++seq));
+        QTRY_COMPARE_WITH_TIMEOUT(counted("outside_extent"), quint64(2), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(id)->healthText.contains(QStringLiteral("implausible")), 20000);
+        QVERIFY(sameAsGood());
+        QCOMPARE(seen.latest(id)->health, HealthLevel::Warning);
+        // 250 km/h.
+        std::string fast = position(kMachineA, origin.lat + 0.001, origin.lon, ++seq);
+        fast.replace(fast.find("\"Speed\":20"), 10, "\"Speed\":250");
+        ahs.sendRaw(fast);
+        QTRY_COMPARE_WITH_TIMEOUT(counted("speed"), quint64(1), 20000);
+        // 5 km away a moment later: a jump.
+        ahs.sendRaw(position(kMachineA, origin.lat + 0.046, origin.lon, ++seq));
+        QTRY_COMPARE_WITH_TIMEOUT(counted("jump"), quint64(1), 20000);
+        QCoreApplication::processEvents();
+        QVERIFY(sameAsGood());
+        QTRY_COMPARE_WITH_TIMEOUT(events.size(), 3, 20000); // one per cause
+        QVERIFY(std::all_of(events.begin(), events.end(), [&](const FleetEvent& e) {
+            return e.severity == EventSeverity::Warning && e.machineId == id;
+        }));
+        // A good position next to the last good one is drawn, and the mark is gone.
+        ahs.sendRaw(position(kMachineA, origin.lat + 0.0011, origin.lon, ++seq));
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(seen.latest(id)->n - 122.3) < 1, 20000);
+        QVERIFY2(!seen.latest(id)->healthText.contains(QStringLiteral("implausible")),
+                 qPrintable(seen.latest(id)->healthText));
+        QCOMPARE(events.size(), 3);
+        bridge.stop();
+    }
+
+    void rejectedInputIsCountedPerLink() {
+        // Issue 14 §6: what the AHS sent and the console rejected, per link and reason (link details,
+        // headless counters); the stack's totals count it as well.
+        sim::SimulatedAhs ahs(quietAhs());
+        QVERIFY(ahs.start());
+        IsoBridge bridge(consoleConfig(ahs.url()), GeoFrame(quietAhs().origin));
+        QVERIFY(bridge.start().isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(linkIs(bridge, LinkState::Up), 20000);
+        auto rejected = [&] {
+            const QVector<LinkCounters> c = bridge.linkCounters();
+            return c.size() == 1 && c[0].link == QStringLiteral("iso23725:ahs") ? c[0].rejectedTotal()
+                                                                                : quint64(0);
+        };
+        QCOMPARE(rejected(), quint64(0));
+        ahs.sendRaw("{\"this is\": not JSON");
+        ahs.sendRaw("{\"this is\": not JSON");
+        QTRY_COMPARE_WITH_TIMEOUT(rejected(), quint64(2), 20000);
+        const LinkCounters c = bridge.linkCounters()[0];
+        QCOMPARE(c.rejected.value(QStringLiteral("rejected.invalid_json")), quint64(2));
+        QVERIFY(c.all.value(QStringLiteral("rx.frames")) >= 2);
+        bridge.stop();
+    }
+
+    void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
+        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        sim::SimulatedAhs ahs(quietAhs());
+        QVERIFY(ahs.start());
+        IsoBridge bridge(consoleConfig(ahs.url()), GeoFrame(quietAhs().origin));
+        QVERIFY(bridge.start().isEmpty());
+        bridgetest::expectWatchdog(bridge, QStringLiteral("iso23725:ahs"),
+                                   [&](std::function<void()> f) { bridge.postToIo(std::move(f)); });
+        bridge.stop();
     }
 
     void commandsWhileTheLinkIsDownAreRefused() {

@@ -115,6 +115,52 @@ private slots:
         bridge.stop();
     }
 
+    void implausiblePoseIsNotDrawnButCountedAndWarnedOnce() {
+        // Issue 14 §2: a UGV whose poses are 220 km from the site origin (beyond the default 50 km extent) is
+        // marked implausible and not drawn; the cause is counted on the link, one warning is raised.
+        sim::JausDemo demo(oneUgv());
+        GeoPoint elsewhere = oneUgv().origin;
+        elsewhere.lat += 2.0;
+        JausBridge bridge(consoleConfig(demo, 60), GeoFrame(elsewhere));
+        QList<FleetEvent> events;
+        connect(&bridge, &FleetBridge::eventRaised, this, [&](const FleetEvent& e) {
+            if (e.text.contains(QStringLiteral("pose ignored")))
+                events << e;
+        });
+        bridgetest::Deliveries seen(&bridge);
+        QVERIFY(bridge.start().isEmpty());
+        auto implausible = [&] {
+            const auto c = bridge.linkCounters();
+            return c.isEmpty() ? quint64(0)
+                               : c[0].rejected.value(QStringLiteral("implausible.outside_extent"));
+        };
+        // Counted once per distinct pose (a standing UGV repeats its pose in every report), one warning.
+        QTRY_VERIFY_WITH_TIMEOUT(implausible() >= 1, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(kVehicle).has_value(), 20000);
+        const MachineState m = *seen.latest(kVehicle);
+        QVERIFY2(!m.hasPosition, qPrintable(QStringLiteral("%1 %2").arg(m.e).arg(m.n)));
+        QCOMPARE(m.health, HealthLevel::Warning);
+        QVERIFY2(m.healthText.contains(QStringLiteral("implausible pose ignored")), qPrintable(m.healthText));
+        QVERIFY(!bridge.subsystem(126) || !bridge.subsystem(126)->globalPose);
+        QTRY_COMPARE_WITH_TIMEOUT(events.size(), 1, 10000);
+        QCOMPARE(events[0].severity, EventSeverity::Warning);
+        QCOMPARE(events[0].machineId, kVehicle);
+        QVERIFY2(events[0].text.contains(QStringLiteral("outside_extent")), qPrintable(events[0].text));
+        QCoreApplication::processEvents();
+        QCOMPARE(events.size(), 1);
+        bridge.stop();
+    }
+
+    void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
+        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        sim::JausDemo demo(oneUgv());
+        JausBridge bridge(consoleConfig(demo, 60), GeoFrame(oneUgv().origin));
+        QVERIFY(bridge.start().isEmpty());
+        bridgetest::expectWatchdog(bridge, QStringLiteral("jaus"),
+                                   [&](std::function<void()> f) { bridge.postToIo(std::move(f)); });
+        bridge.stop();
+    }
+
     void commandsWhileTheLinkIsDownAreRefused() {
         Received received;
         sim::JausDemo demo(oneUgv());

@@ -118,6 +118,21 @@ private slots:
         demo.stop();
     }
 
+    void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
+        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        sim::osyris::OsyrisDemo demo(oneRoller());
+        std::string err;
+        QVERIFY2(demo.start(&err), err.c_str());
+        const osyris::OsyrisConfig cfg = consoleConfig(demo.ocuConfig());
+        OsyrisBridge bridge(cfg, GeoFrame(kOrigin));
+        QVERIFY(bridge.start().isEmpty());
+        bridgetest::expectWatchdog(
+            bridge, QStringLiteral("osyris:%1:%2").arg(QString::fromStdString(cfg.group)).arg(cfg.port),
+            [&](std::function<void()> f) { bridge.postToIo(std::move(f)); });
+        bridge.stop();
+        demo.stop();
+    }
+
     void commandsWhileNoStationIsHeardAreRefused() {
         osyris::OsyrisConfig cfg = sim::osyris::OsyrisDemo(oneRoller()).ocuConfig();
         cfg.port = findFreeUdpPort();
@@ -193,6 +208,11 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(
             std::any_of(events.begin(), events.end(),
                         [](const FleetEvent& e) { return e.text.contains(QStringLiteral("drum width")); }),
+            20000);
+        // Counted per link and cause (issue 14 §6: link details, headless counters).
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !bridge.linkCounters().isEmpty() &&
+                bridge.linkCounters()[0].rejected.value(QStringLiteral("implausible.drum_width")) >= 1,
             20000);
         // The station still turns: a good position after it is shown.
         roller.publishOwnPosition(at(7, 5));

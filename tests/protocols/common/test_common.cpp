@@ -4,8 +4,13 @@
 #include "protocols/common/Counters.h"
 #include "protocols/common/GeoFrame.h"
 #include "protocols/common/IoThread.h"
+#include "protocols/common/PosePlausibility.h"
 
 #include <QtTest>
+
+#include <cmath>
+#include <future>
+#include <limits>
 
 using namespace ocu;
 
@@ -71,6 +76,93 @@ private slots:
         QCOMPARE(v, 42);
         t.stop();
         t.stop(); // idempotent
+    }
+    void ioThreadWatchdogSeesABlockedLoop() {
+        // Issue 14 §3: the heartbeat stamps every turn; a handler that blocks the loop makes the age grow
+        // past the watchdog's 1 s, and it falls back once the loop turns again.
+        IoThread t("test-watchdog");
+        QCOMPARE(t.sinceLastTurn().count(), 0); // not running
+        t.start();
+        QTRY_VERIFY_WITH_TIMEOUT(t.sinceLastTurn() < std::chrono::milliseconds(1000), 10000);
+        std::promise<void> latch;
+        std::shared_future<void> released = latch.get_future().share();
+        t.post([released] { released.wait_for(std::chrono::seconds(120)); });
+        QTRY_VERIFY_WITH_TIMEOUT(t.sinceLastTurn() > std::chrono::milliseconds(1000), 20000);
+        latch.set_value();
+        QTRY_VERIFY_WITH_TIMEOUT(t.sinceLastTurn() < std::chrono::milliseconds(1000), 20000);
+        t.stop();
+        QCOMPARE(t.sinceLastTurn().count(), 0);
+        // A restart keeps one heartbeat (the old wait is cancelled, not doubled) and turns again.
+        t.start();
+        QTRY_VERIFY_WITH_TIMEOUT(t.sinceLastTurn() < std::chrono::milliseconds(1000), 10000);
+        t.stop();
+    }
+    void poseGateCausesAndRateLimitedWarnings() {
+        // Issue 14 §2 (ISO 23725 and JAUS poses): the first rule broken, counted per peer, one warning per
+        // peer and cause every 30 s.
+        PoseGate g; // defaults: 50 km, 30 m/s, 50 m slack
+        const TimePoint t0 = TimePoint{} + std::chrono::hours(1);
+        QVERIFY(g.check("a", 100, 200, 5, 10.0, t0).ok());
+        auto v = g.check("a", std::nan(""), 0, 0, std::nullopt, t0);
+        QCOMPARE(v.fault, PoseFault::NonFinite);
+        QVERIFY(v.warn);
+        QCOMPARE(v.peerCount, std::uint64_t(1));
+        QCOMPARE(g.check("a", 0, 0, 0, std::numeric_limits<double>::infinity(), t0).fault,
+                 PoseFault::NonFinite);
+        QCOMPARE(g.check("a", 1e30, 0, 0, std::nullopt, t0).fault, PoseFault::OutsideExtent);
+        QCOMPARE(g.check("a", 40000, 40000, 0, std::nullopt, t0).fault, PoseFault::OutsideExtent); // 56.6 km
+        QCOMPARE(g.check("a", 0, 0, 60000, std::nullopt, t0).fault, PoseFault::OutsideExtent);
+        v = g.check("a", 100, 200, 0, 31.0, t0);
+        QCOMPARE(v.fault, PoseFault::Speed);
+        QVERIFY(v.warn);
+        v = g.check("a", 100, 200, 0, -40.0, t0 + std::chrono::seconds(1));
+        QCOMPARE(v.fault, PoseFault::Speed);
+        QVERIFY(!v.warn); // the same cause within 30 s: counted, not warned
+        QCOMPARE(v.peerCount, std::uint64_t(7));
+        QVERIFY(g.check("a", 100, 200, 0, -40.0, t0 + std::chrono::seconds(31)).warn);
+        QCOMPARE(QString(toString(PoseFault::Jump)), QStringLiteral("jump"));
+        // Another peer has its own count and its own warnings.
+        v = g.check("b", 1e9, 0, 0, std::nullopt, t0);
+        QVERIFY(v.warn);
+        QCOMPARE(v.peerCount, std::uint64_t(1));
+        QCOMPARE(g.peerCount("a"), std::uint64_t(8));
+        // Limits from the site configuration.
+        PoseGate narrow(PoseLimits{1000, 5, 10});
+        QCOMPARE(narrow.check("x", 1500, 0, 0, std::nullopt, t0).fault, PoseFault::OutsideExtent);
+        QCOMPARE(narrow.check("x", 0, 0, 0, 6.0, t0).fault, PoseFault::Speed);
+    }
+    void poseGateBoundsJumpsAndReanchors() {
+        PoseGate g;
+        const TimePoint t0 = TimePoint{} + std::chrono::hours(1);
+        QVERIFY(g.check("m", 0, 0, 0, std::nullopt, t0).ok());
+        // 10 s later: up to 30 m/s x 10 s + 50 m = 350 m away is plausible, 400 m is a jump.
+        QVERIFY(g.check("m", 340, 0, 0, std::nullopt, t0 + std::chrono::seconds(10)).ok());
+        QCOMPARE(g.check("m", 740, 0, 0, std::nullopt, t0 + std::chrono::seconds(20)).fault, PoseFault::Jump);
+        auto v = g.check("m", 640, 0, 0, std::nullopt, t0 + std::chrono::seconds(20));
+        QVERIFY(v.ok()); // measured from the last good pose (340 m at 10 s): 300 m in 10 s
+        QCOMPARE(g.check("m", 5000, 0, 0, std::nullopt, t0 + std::chrono::seconds(21)).fault,
+                 PoseFault::Jump);
+        // The jumps do not move the reference: a pose next to the last good one is fine.
+        QVERIFY(g.check("m", 700, 0, 0, std::nullopt, t0 + std::chrono::seconds(22)).ok());
+        // Three poses in a row that agree with each other far away: the machine is there (re-anchored), so
+        // one wrong first pose cannot pin a machine forever.
+        QCOMPARE(g.check("m", 20000, 0, 0, std::nullopt, t0 + std::chrono::seconds(23)).fault,
+                 PoseFault::Jump);
+        QCOMPARE(g.check("m", 20010, 0, 0, std::nullopt, t0 + std::chrono::seconds(24)).fault,
+                 PoseFault::Jump);
+        QVERIFY(g.check("m", 20020, 0, 0, std::nullopt, t0 + std::chrono::seconds(25)).ok());
+        QVERIFY(g.check("m", 20030, 0, 0, std::nullopt, t0 + std::chrono::seconds(26)).ok());
+        // Scattered wild poses never agree, so they never re-anchor.
+        for (int i = 0; i < 10; ++i)
+            QCOMPARE(g.check("m", (i % 2 ? -1 : 1) * 30000.0, 0, 0, std::nullopt,
+                             t0 + std::chrono::seconds(27 + i))
+                         .fault,
+                     PoseFault::Jump);
+        // Bounded state: the least recently seen peer is forgotten beyond kMaxPeers.
+        for (std::size_t i = 0; i < PoseGate::kMaxPeers + 10; ++i)
+            g.check("p" + std::to_string(i), 0, 0, 0, std::nullopt, t0);
+        QCOMPARE(g.peers(), PoseGate::kMaxPeers);
+        QCOMPARE(g.peerCount("m"), std::uint64_t(0)); // "m" was the oldest
     }
     void configLinesAndUnknownKeys() {
         const char* text = "{\n"

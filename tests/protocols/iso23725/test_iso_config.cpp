@@ -37,6 +37,8 @@ private slots:
         QCOMPARE(c.fmsId, std::string("1b9e6a40-3c2d-4f87-8e15-6a7b9c0d2e41"));
         QVERIFY(c.sendPositions);
         QCOMPARE(c.positionRateHz, 5.0);
+        QCOMPARE(c.plausibility, (PoseLimits{8000, 20, 15}));
+        QCOMPARE(IsoConfig{}.plausibility, (PoseLimits{50000, 30, 50})); // the safe defaults
         QCOMPARE(c.allStopAckTimeout.count(), 1500);
         QCOMPARE(c.links.size(), std::size_t(2));
         QCOMPARE(c.links[0].ws.tls.caFile, std::string("/etc/ocu/ca.pem"));

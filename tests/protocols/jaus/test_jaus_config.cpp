@@ -58,7 +58,8 @@ private slots:
             "jtcp_server": true, "jtcp_port": 3795,
             "drive_rate_hz": 25, "heartbeat_rate_hz": 2, "pose_rate_hz": 5, "status_poll_hz": 2,
             "discovery_interval_s": 10, "link_lost_s": 3, "access_timeout_s": 4, "event_confirm_timeout_s": 1,
-            "stop_repeats": 6, "drive_mode": "wrench" }})");
+            "stop_repeats": 6, "drive_mode": "wrench", "plausible_extent_m": 2000,
+            "plausible_speed_max_mps": 4, "plausible_jump_slack_m": 5 }})");
         QVERIFY2(p.errors.empty(), p.errors.joined().c_str());
         const JausConfig& c = p.config;
         QCOMPARE(c.ownId(), (JausId{150, 64, 200}));
@@ -77,6 +78,8 @@ private slots:
         QCOMPARE(c.driveRateHz, 25.0);
         QCOMPARE(c.stopRepeats, 6);
         QVERIFY(!c.velocityDrive);
+        QCOMPARE(c.plausibility, (PoseLimits{2000, 4, 5}));
+        QCOMPARE(JausConfig{}.plausibility, (PoseLimits{50000, 30, 50})); // the safe defaults
     }
     void roles() {
         auto m = parse(R"({"jaus": {"role": "monitor"}})");
