@@ -16,7 +16,9 @@ namespace ocu {
 
 class IoThread {
 public:
-    explicit IoThread(std::string name = "io");
+    // stopPath: the thread carries operator commands (a protocol stack's): raised priority when the process
+    // enabled it (ThreadPriority.h).
+    explicit IoThread(std::string name = "io", bool stopPath = false);
     ~IoThread();
     IoThread(const IoThread&) = delete;
     IoThread& operator=(const IoThread&) = delete;
@@ -43,6 +45,7 @@ public:
 
 private:
     std::string m_name;
+    bool m_stopPath = false;
     boost::asio::io_context m_context;
     std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> m_work;
     std::thread m_thread;

@@ -132,8 +132,8 @@ struct Link final : FmsOutbound {
 
 struct IsoStack::Impl {
     Impl(IsoConfig c, IsoListener& l, Counters& counters)
-        : cfg(std::move(c)), listener(l), counters(counters), io("iso23725"), positionTimer(io.context()),
-          pollTimer(io.context()), positionFlush(io.context()) {
+        : cfg(std::move(c)), listener(l), counters(counters), io("iso23725", true),
+          positionTimer(io.context()), pollTimer(io.context()), positionFlush(io.context()) {
         positionFlush.flushAll = [this] {
             for (auto& [name, l] : links)
                 l->session->flushPositions();

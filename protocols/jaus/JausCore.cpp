@@ -1,5 +1,7 @@
 #include "protocols/jaus/JausCore.h"
 
+#include <algorithm>
+
 namespace ocu::jaus {
 
 JausCore::JausCore(JausConfig config, JausListener& listener, JausOutput& output, const Clock& clock,
@@ -88,10 +90,19 @@ void JausCore::tick() {
     }
 }
 
-std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code) {
+std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code,
+                                                     const std::vector<std::uint16_t>& alreadySent) {
     std::vector<TargetOutcome> out;
-    for (std::uint16_t ss : subsystems())
-        out.push_back(outcome(ss, setEmergency(ss, code)));
+    auto early = [&](std::uint16_t ss) {
+        return std::find(alreadySent.begin(), alreadySent.end(), ss) != alreadySent.end();
+    };
+    const auto known = subsystems();
+    for (std::uint16_t ss : known)
+        out.push_back(early(ss) ? emergencySent(ss, code) : outcome(ss, setEmergency(ss, code)));
+    // Sent on the caller's thread to a subsystem forgotten since: it still went on the wire.
+    for (std::uint16_t ss : alreadySent)
+        if (std::find(known.begin(), known.end(), ss) == known.end())
+            out.push_back(TargetOutcome{targetId(ss), true, {}});
     return out;
 }
 

@@ -53,7 +53,13 @@ public:
     void shutdown(std::uint16_t subsystem, OutcomeCallback done);
     void reset(std::uint16_t subsystem, OutcomeCallback done);
     // STOP ALL: SetEmergency to every discovered subsystem (controlled by this console or not).
+    // setEmergency and setEmergencyAll send from the calling thread at once where the io thread planned the
+    // datagram (UDP, known address: JudpTransport::plan, refreshed every 10 ms), the rest on the io thread;
+    // `done` still runs on the io thread, once the core has learnt what was sent.
     void setEmergencyAll(EmergencyCode code, OutcomeCallback done);
+
+    // Subsystems whose SetEmergency is planned for the caller's-thread fast path now (tests, diagnostics).
+    std::size_t plannedStopCount() const;
 
     // Fault injection on what the OCU sends (e.g. loss = 1: the OCU falls silent). Tests and ocu-sim drills.
     void setTransmitFaults(double loss, int delayMs = 0);

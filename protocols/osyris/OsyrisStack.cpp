@@ -10,7 +10,7 @@ namespace ocu::osyris {
 namespace asio = boost::asio;
 
 struct OsyrisStack::Impl {
-    IoThread io{"osyris"};
+    IoThread io{"osyris", true};
     asio::steady_timer beat{io.context()};
     std::unique_ptr<RibbonStore> store;
     std::unique_ptr<StationCore> core;
