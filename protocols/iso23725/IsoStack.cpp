@@ -114,6 +114,9 @@ struct Link final : FmsOutbound {
     bool sendMain(std::string text) override {
         return mainSession && main->send(*mainSession, std::move(text));
     }
+    bool sendMainUrgent(std::string text) override {
+        return mainSession && main->sendUrgent(*mainSession, std::move(text));
+    }
     bool sendMap(std::string text) override {
         return mapSession && map && map->send(*mapSession, std::move(text));
     }
