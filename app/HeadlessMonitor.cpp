@@ -8,11 +8,17 @@
 #include "models/FleetModel.h"
 #include <QJsonArray>
 
+#include <QCoreApplication>
 #include <QDateTime>
+#include <QEvent>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonParseError>
-#include <QSocketNotifier>
+
+#include "protocols/common/ThreadPriority.h"
+
+#include <cerrno>
+#include <poll.h>
 #include <unistd.h>
 
 namespace ocu {
@@ -39,7 +45,26 @@ HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, CommandG
     setRateLimitMs(1000);
 }
 
-HeadlessMonitor::~HeadlessMonitor() = default;
+namespace {
+
+// What the stdin reader thread read (or the end of input), for the monitor's thread.
+struct StdinEvent : QEvent {
+    static QEvent::Type kind() {
+        static const auto t = QEvent::Type(QEvent::registerEventType());
+        return t;
+    }
+    StdinEvent(QByteArray d, bool e) : QEvent(kind()), data(std::move(d)), end(e) {}
+    QByteArray data;
+    bool end;
+};
+
+} // namespace
+
+HeadlessMonitor::~HeadlessMonitor() {
+    m_stdinStop = true;
+    if (m_stdinThread.joinable())
+        m_stdinThread.join(); // within one poll period (100 ms)
+}
 
 HeadlessMonitor* HeadlessMonitor::attach(FleetContext* ctx, QIODevice* out) {
     auto* mon = new HeadlessMonitor(ctx->fleet(), ctx->alarms(), ctx->gate(), ctx);
@@ -356,22 +381,46 @@ void HeadlessMonitor::addProtocolCommands(const QStringList& names) {
 }
 
 bool HeadlessMonitor::startStdin() {
-    if (m_stdinNotifier)
+    if (m_stdinThread.joinable())
         return true;
-    m_stdinNotifier = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, this);
-    connect(m_stdinNotifier, &QSocketNotifier::activated, this, [this] {
+    m_stdinThread = std::thread([this] {
+        if (stopPathPriorityEnabled())
+            raiseThreadPriority("headless stdin reader");
         char buf[4096];
-        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
-        if (n <= 0) {
-            m_stdinNotifier->setEnabled(false);
-            if (!m_inBuf.isEmpty())
-                consumeInput("\n");
-            m_inputEnded = true;
-            maybeFinishInput();
-            return;
+        // High priority: ahead of the queued telemetry events; among themselves in order of reading.
+        auto post = [this](QByteArray d, bool end) {
+            QCoreApplication::postEvent(this, new StdinEvent(std::move(d), end), Qt::HighEventPriority);
+        };
+        while (!m_stdinStop) {
+            pollfd p{STDIN_FILENO, POLLIN, 0};
+            const int r = ::poll(&p, 1, 100); // wakes at once on input; checks m_stdinStop every 100 ms
+            if (r == 0 || (r < 0 && errno == EINTR))
+                continue;
+            const ssize_t n = r > 0 ? ::read(STDIN_FILENO, buf, sizeof buf) : -1;
+            if (n < 0 && (errno == EINTR || errno == EAGAIN))
+                continue;
+            if (n <= 0) {
+                post({}, true);
+                return;
+            }
+            post(QByteArray(buf, int(n)), false);
         }
-        consumeInput(QByteArray(buf, int(n)));
     });
+    return true;
+}
+
+bool HeadlessMonitor::event(QEvent* e) {
+    if (e->type() != StdinEvent::kind())
+        return QObject::event(e);
+    auto* in = static_cast<StdinEvent*>(e);
+    if (!in->end) {
+        consumeInput(in->data);
+        return true;
+    }
+    if (!m_inBuf.isEmpty())
+        consumeInput("\n");
+    m_inputEnded = true;
+    maybeFinishInput();
     return true;
 }
 

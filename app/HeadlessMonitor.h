@@ -32,11 +32,13 @@
 #include <QSet>
 #include <QStringList>
 #include <QTimer>
+#include <atomic>
 #include <functional>
 #include <memory>
+#include <thread>
 
 class QIODevice;
-class QSocketNotifier;
+class QEvent;
 class QFile;
 
 namespace ocu {
@@ -68,7 +70,10 @@ public:
     // by "id" (or of the "protocol"), and answered with "missing \"id\"" when both are absent.
     void addProtocolCommands(const QStringList& names);
 
-    // Read commands from stdin (QSocketNotifier on fd 0); inputFinished() at end of input.
+    // Read commands from stdin; inputFinished() at end of input. A reader thread (raised priority where the
+    // console enabled it, ThreadPriority.h) hands what it reads to this object as high-priority events, so a
+    // command (a stop_all above all) is handled ahead of the telemetry queued for the GUI thread, and the
+    // thread is woken at once by the kernel instead of at the event loop's next poll.
     bool startStdin();
     // Read commands from any device (not owned): readyRead + readChannelFinished.
     void setInput(QIODevice* in);
@@ -81,6 +86,9 @@ public:
 
     // Prints one line for every machine now.
     void printAll();
+
+protected:
+    bool event(QEvent* e) override;
 
 signals:
     // End of input, once every result line of it was written.
@@ -119,7 +127,8 @@ private:
     QHash<QString, QString> m_linkSig;
     QSet<QString> m_protocolCommands;
     QByteArray m_inBuf;
-    QSocketNotifier* m_stdinNotifier = nullptr;
+    std::thread m_stdinThread;
+    std::atomic<bool> m_stdinStop{false};
     int m_pendingResults = 0;
     bool m_inputEnded = false;
     bool m_finishedSignalled = false;

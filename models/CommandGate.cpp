@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <mutex>
 #include <optional>
+#include <utility>
 
 namespace ocu {
 
@@ -30,6 +31,7 @@ struct CommandGate::Pending {
     std::vector<std::optional<std::vector<TargetOutcome>>> outcomes; // per bridge; nullopt = not answered
     int answered = 0;
     bool issuing = true;
+    std::vector<std::function<void()>> deferred; // answers on the GUI thread while issuing
     QTimer* deadline = nullptr;
     ResultHandler onFinal;
     QElapsedTimer since; // when the command was issued (confirmation latency)
@@ -83,10 +85,6 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
         p->bridges.push_back(b);
     p->outcomes.resize(size_t(to.size()));
     m_pending.insert(id, p);
-    p->deadline = new QTimer(this);
-    p->deadline->setSingleShot(true);
-    connect(p->deadline, &QTimer::timeout, this, [this, id] { finish(id); });
-    p->deadline->start(m_answerDeadlineMs);
 
     std::weak_ptr<GateLife> life = m_life;
     QThread* guiThread = thread();
@@ -113,6 +111,14 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
                     finish(id);
             };
             if (QThread::currentThread() == guiThread) {
+                // Answered while the gate is still calling bridges (a refusal, or a stack that sent from
+                // this thread): recorded after every bridge was called, so no model, alarm or watch work
+                // delays the next bridge's sends (issue 13 §10).
+                if (auto it = m_pending.find(id); it != m_pending.end() && (*it)->issuing) {
+                    (*it)->deferred.push_back(
+                        [apply, o = std::move(outcomes)]() mutable { apply(std::move(o)); });
+                    return;
+                }
                 apply(std::move(outcomes));
                 return;
             }
@@ -128,6 +134,14 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
         };
         fn(to[i], std::move(done));
     }
+    // The deadline timer after the bridges were called: nothing but the command itself before the sends
+    // (issue 13 §10).
+    p->deadline = new QTimer(this);
+    p->deadline->setSingleShot(true);
+    connect(p->deadline, &QTimer::timeout, this, [this, id] { finish(id); });
+    p->deadline->start(m_answerDeadlineMs);
+    for (auto& f : std::exchange(p->deferred, {}))
+        f();
     p->issuing = false;
     if (p->answered == int(p->outcomes.size()))
         finish(id);
