@@ -47,20 +47,28 @@ HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, CommandG
 
 namespace {
 
-// What the stdin reader thread read (or the end of input), for the monitor's thread.
+// One line the stdin reader thread read (with the STOP ALL it already sent for it), a line that was too long,
+// or the end of input, for the monitor's thread.
 struct StdinEvent : QEvent {
+    enum What { Line, TooLong, End };
     static QEvent::Type kind() {
         static const auto t = QEvent::Type(QEvent::registerEventType());
         return t;
     }
-    StdinEvent(QByteArray d, bool e) : QEvent(kind()), data(std::move(d)), end(e) {}
-    QByteArray data;
-    bool end;
+    StdinEvent(What w, QByteArray d = {}, std::shared_ptr<EarlyStop> e = {})
+        : QEvent(kind()), what(w), line(std::move(d)), early(std::move(e)) {}
+    What what;
+    QByteArray line;
+    std::shared_ptr<EarlyStop> early;
 };
 
 } // namespace
 
 HeadlessMonitor::~HeadlessMonitor() {
+    stopStdin();
+}
+
+void HeadlessMonitor::stopStdin() {
     m_stdinStop = true;
     if (m_stdinThread.joinable())
         m_stdinThread.join(); // within one poll period (100 ms)
@@ -304,7 +312,25 @@ void HeadlessMonitor::maybeFinishInput() {
     }
 }
 
+bool HeadlessMonitor::isStopAll(const QByteArray& raw) {
+    // The same reading as handleLine's: a JSON object whose "cmd" (or "command") is "stop_all".
+    const QJsonDocument doc = QJsonDocument::fromJson(raw.trimmed());
+    if (!doc.isObject())
+        return false;
+    const QJsonObject cmd = doc.object();
+    QString name = cmd.value(QStringLiteral("cmd")).toString();
+    if (name.isEmpty())
+        name = cmd.value(QStringLiteral("command")).toString();
+    return name == QLatin1String("stop_all");
+}
+
 QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
+    return handleLine(raw, nullptr);
+}
+
+QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<EarlyStop> early) {
+    if (early && !isStopAll(raw))
+        early.reset(); // cannot happen (the reader asked the same question): never attach it elsewhere
     const QByteArray line = raw.trimmed();
     if (line.isEmpty())
         return {};
@@ -329,7 +355,8 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
     const QString origin = QStringLiteral("headless");
     CommandGate* gate = m_gate;
     if (name == QLatin1String("stop_all"))
-        return viaGate(cmd, [&](CommandGate::ResultHandler h) { gate->stopAll(origin, std::move(h)); });
+        return viaGate(cmd,
+                       [&](CommandGate::ResultHandler h) { gate->stopAll(origin, std::move(h), early); });
     if (name == QLatin1String("stop")) {
         if (id.isEmpty())
             return result(cmd, false, QStringLiteral("missing \"id\""));
@@ -383,14 +410,22 @@ void HeadlessMonitor::addProtocolCommands(const QStringList& names) {
 bool HeadlessMonitor::startStdin() {
     if (m_stdinThread.joinable())
         return true;
-    m_stdinThread = std::thread([this] {
+    CommandGate* gate = m_gate.data(); // lives as long as the bridges; the thread ends before they go
+    m_stdinThread = std::thread([this, gate] {
         if (stopPathPriorityEnabled())
             raiseThreadPriority("headless stdin reader");
-        char buf[4096];
         // High priority: ahead of the queued telemetry events; among themselves in order of reading.
-        auto post = [this](QByteArray d, bool end) {
-            QCoreApplication::postEvent(this, new StdinEvent(std::move(d), end), Qt::HighEventPriority);
+        auto post = [this](StdinEvent::What w, QByteArray line = {}, std::shared_ptr<EarlyStop> early = {}) {
+            QCoreApplication::postEvent(this, new StdinEvent(w, std::move(line), std::move(early)),
+                                        Qt::HighEventPriority);
         };
+        auto line = [&](const QByteArray& l) {
+            // A stop_all leaves from here at once on the stacks that can send from any thread; the monitor's
+            // thread sends the rest and records it all as this command (CommandGate::stopAllEarly).
+            post(StdinEvent::Line, l, gate && isStopAll(l) ? gate->stopAllEarly() : nullptr);
+        };
+        QByteArray pending;
+        char buf[4096];
         while (!m_stdinStop) {
             pollfd p{STDIN_FILENO, POLLIN, 0};
             const int r = ::poll(&p, 1, 100); // wakes at once on input; checks m_stdinStop every 100 ms
@@ -400,10 +435,21 @@ bool HeadlessMonitor::startStdin() {
             if (n < 0 && (errno == EINTR || errno == EAGAIN))
                 continue;
             if (n <= 0) {
-                post({}, true);
+                if (!pending.trimmed().isEmpty())
+                    line(pending); // the unterminated last line is still executed
+                post(StdinEvent::End);
                 return;
             }
-            post(QByteArray(buf, int(n)), false);
+            pending.append(buf, int(n));
+            int nl;
+            while ((nl = int(pending.indexOf('\n'))) >= 0) {
+                line(pending.left(nl));
+                pending.remove(0, nl + 1);
+            }
+            if (pending.size() > 1 << 20) { // a runaway line without newline: drop it, say so
+                pending.clear();
+                post(StdinEvent::TooLong);
+            }
         }
     });
     return true;
@@ -413,14 +459,18 @@ bool HeadlessMonitor::event(QEvent* e) {
     if (e->type() != StdinEvent::kind())
         return QObject::event(e);
     auto* in = static_cast<StdinEvent*>(e);
-    if (!in->end) {
-        consumeInput(in->data);
-        return true;
+    switch (in->what) {
+    case StdinEvent::Line:
+        handleLine(in->line, std::move(in->early));
+        break;
+    case StdinEvent::TooLong:
+        result({}, false, QStringLiteral("input line too long (over 1 MiB), dropped"));
+        break;
+    case StdinEvent::End:
+        m_inputEnded = true;
+        maybeFinishInput();
+        break;
     }
-    if (!m_inBuf.isEmpty())
-        consumeInput("\n");
-    m_inputEnded = true;
-    maybeFinishInput();
     return true;
 }
 

@@ -75,6 +75,9 @@ public:
     // command (a stop_all above all) is handled ahead of the telemetry queued for the GUI thread, and the
     // thread is woken at once by the kernel instead of at the event loop's next poll.
     bool startStdin();
+    // Ends the reader thread (within 100 ms); before the bridges go, as it may stop through them. Also done
+    // by the destructor.
+    void stopStdin();
     // Read commands from any device (not owned): readyRead + readChannelFinished.
     void setInput(QIODevice* in);
 
@@ -106,6 +109,8 @@ private:
     QJsonObject machineJson(const MachineState& m, bool stale, qint64 ageMs) const;
     QByteArray result(const QJsonObject& cmd, bool ok, const QString& message);
     QByteArray result(const QJsonObject& cmd, const CommandResult& r, bool withTargets);
+    QByteArray handleLine(const QByteArray& line, std::shared_ptr<EarlyStop> early);
+    static bool isStopAll(const QByteArray& line);
     QByteArray viaGate(const QJsonObject& cmd, const std::function<void(CommandGate::ResultHandler)>& issue,
                        const QString& suffix = {});
     void maybeFinishInput();

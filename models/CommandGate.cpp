@@ -10,6 +10,7 @@
 #include <QUuid>
 
 #include <algorithm>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <utility>
@@ -21,6 +22,46 @@ namespace ocu {
 struct GateLife {
     std::mutex mutex;
     CommandGate* gate = nullptr;
+};
+
+// The outcomes of a STOP ALL sent early on another thread, per bridge, until the gate's thread takes them
+// (attach: at once when in, else when they arrive).
+struct EarlyStop {
+    std::mutex mutex;
+    std::vector<FleetBridge*> bridges; // called early
+    std::map<FleetBridge*, std::vector<TargetOutcome>> got;
+    std::map<FleetBridge*, OutcomeCallback> waiting;
+    bool covers(FleetBridge* b) const {
+        return std::find(bridges.begin(), bridges.end(), b) != bridges.end();
+    }
+    void arrived(FleetBridge* b, std::vector<TargetOutcome> o) {
+        OutcomeCallback done;
+        {
+            std::lock_guard lock(mutex);
+            auto it = waiting.find(b);
+            if (it == waiting.end()) {
+                got[b] = std::move(o);
+                return;
+            }
+            done = std::move(it->second);
+            waiting.erase(it);
+        }
+        done(std::move(o));
+    }
+    void attach(FleetBridge* b, OutcomeCallback done) {
+        std::vector<TargetOutcome> o;
+        {
+            std::lock_guard lock(mutex);
+            auto it = got.find(b);
+            if (it == got.end()) {
+                waiting[b] = std::move(done);
+                return;
+            }
+            o = std::move(it->second);
+            got.erase(it);
+        }
+        done(std::move(o));
+    }
 };
 
 struct CommandGate::Pending {
@@ -52,6 +93,10 @@ void CommandGate::addBridge(FleetBridge* bridge) {
     if (!bridge || m_bridges.contains(bridge))
         return;
     m_bridges.push_back(bridge);
+    if (bridge->stopsFromCallersThread()) {
+        std::lock_guard lock(m_earlyMutex);
+        m_earlyBridges.push_back(bridge);
+    }
     connect(bridge, &FleetBridge::stopReported, this, &CommandGate::onStopReported);
 }
 
@@ -182,10 +227,34 @@ void CommandGate::finishNow(const QString& action, const QString& target, const 
 }
 
 void CommandGate::stopAll(const QString& origin, ResultHandler onFinal) {
-    // Every bridge gets the stop even if an earlier one refused: a partial stop beats no stop.
+    stopAll(origin, std::move(onFinal), nullptr);
+}
+
+std::shared_ptr<EarlyStop> CommandGate::stopAllEarly() {
+    auto early = std::make_shared<EarlyStop>();
+    {
+        std::lock_guard lock(m_earlyMutex);
+        early->bridges = m_earlyBridges;
+    }
+    for (FleetBridge* b : early->bridges)
+        b->stopAll([early, b](std::vector<TargetOutcome> o) { early->arrived(b, std::move(o)); });
+    return early;
+}
+
+void CommandGate::stopAll(const QString& origin, ResultHandler onFinal, std::shared_ptr<EarlyStop> early) {
+    // Every bridge gets the stop even if an earlier one refused: a partial stop beats no stop. Those that
+    // send from this thread first: a stack's io thread woken by a post may take this thread's core.
+    QVector<FleetBridge*> to = bridges();
+    std::stable_partition(to.begin(), to.end(), [](FleetBridge* b) { return b->stopsFromCallersThread(); });
     dispatch(
-        QStringLiteral("stop_all"), QString(), origin, bridges(),
-        [](FleetBridge* b, OutcomeCallback done) { b->stopAll(std::move(done)); }, std::move(onFinal));
+        QStringLiteral("stop_all"), QString(), origin, to,
+        [early](FleetBridge* b, OutcomeCallback done) {
+            if (early && early->covers(b))
+                early->attach(b, std::move(done)); // sent already: its outcome, now or when it comes
+            else
+                b->stopAll(std::move(done));
+        },
+        std::move(onFinal));
 }
 
 void CommandGate::stopMachine(const QString& id, const QString& origin, ResultHandler onFinal) {
