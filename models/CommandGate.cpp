@@ -1,6 +1,7 @@
 #include "models/CommandGate.h"
 
 #include "models/AlarmModel.h"
+#include "protocols/common/ThreadPriority.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -93,9 +94,12 @@ void CommandGate::addBridge(FleetBridge* bridge) {
     if (!bridge || m_bridges.contains(bridge))
         return;
     m_bridges.push_back(bridge);
-    if (bridge->stopsFromCallersThread()) {
+    if (bridge->stopAllFromAnyThread()) {
         std::lock_guard lock(m_earlyMutex);
         m_earlyBridges.push_back(bridge);
+        // Those that send from the caller's thread first (a woken io thread may take this core).
+        std::stable_partition(m_earlyBridges.begin(), m_earlyBridges.end(),
+                              [](FleetBridge* b) { return b->stopsFromCallersThread(); });
     }
     connect(bridge, &FleetBridge::stopReported, this, &CommandGate::onStopReported);
 }
@@ -231,6 +235,7 @@ void CommandGate::stopAll(const QString& origin, ResultHandler onFinal) {
 }
 
 std::shared_ptr<EarlyStop> CommandGate::stopAllEarly() {
+    ScopedStopPathBoost boost;
     auto early = std::make_shared<EarlyStop>();
     {
         std::lock_guard lock(m_earlyMutex);
@@ -242,6 +247,7 @@ std::shared_ptr<EarlyStop> CommandGate::stopAllEarly() {
 }
 
 void CommandGate::stopAll(const QString& origin, ResultHandler onFinal, std::shared_ptr<EarlyStop> early) {
+    ScopedStopPathBoost boost; // no io thread takes this core between two protocols' sends
     // Every bridge gets the stop even if an earlier one refused: a partial stop beats no stop. Those that
     // send from this thread first: a stack's io thread woken by a post may take this thread's core.
     QVector<FleetBridge*> to = bridges();

@@ -62,8 +62,9 @@ public:
     // on the GUI thread, before commandFinished is emitted. It may run before the call returns (every bridge
     // decided at once).
     void stopAll(const QString& origin = QStringLiteral("gui"), ResultHandler onFinal = {});
-    // Issue 13 §10. Any thread (the headless stdin reader): STOP ALL now to the bridges that stop from the
-    // caller's thread (FleetBridge::stopsFromCallersThread); their outcomes wait in the handle. Then, on the
+    // Issue 13 §10. Any thread (the headless stdin reader): STOP ALL now to the bridges that may be called
+    // from any thread (FleetBridge::stopAllFromAnyThread; those that send from the caller's thread first);
+    // their outcomes wait in the handle. Then, on the
     // gate's thread, stopAll(origin, onFinal, handle) sends the rest and records every part (audit, result,
     // confirmation) as one STOP ALL. Every handle must be passed to stopAll once: it is the audit of what
     // was already sent. Only while the bridges live (the caller stops calling before they are torn down).

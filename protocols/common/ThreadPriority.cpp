@@ -42,6 +42,35 @@ bool stopPathPriorityEnabled() {
     return g_enabled;
 }
 
+ScopedStopPathBoost::ScopedStopPathBoost() {
+    if (!g_enabled)
+        return;
+    const char* env = std::getenv("OCU_THREAD_PRIORITY");
+    if (env && std::string(env) != "rt")
+        return;
+    sched_param old{};
+    m_policy = ::sched_getscheduler(0);
+    if (m_policy < 0 || ::sched_getparam(0, &old) != 0)
+        return;
+    m_priority = old.sched_priority;
+    if ((m_policy & ~SCHED_RESET_ON_FORK) == SCHED_RR || (m_policy & ~SCHED_RESET_ON_FORK) == SCHED_FIFO)
+        return; // already real-time (the headless stdin reader)
+    sched_param sp{};
+    sp.sched_priority = kRealTimePriority;
+    rlimit rl{};
+    if (::getrlimit(RLIMIT_RTPRIO, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur > 0)
+        sp.sched_priority = std::min<int>(sp.sched_priority, int(rl.rlim_cur));
+    m_boosted = ::sched_setscheduler(0, SCHED_RR | SCHED_RESET_ON_FORK, &sp) == 0;
+}
+
+ScopedStopPathBoost::~ScopedStopPathBoost() {
+    if (!m_boosted)
+        return;
+    sched_param sp{};
+    sp.sched_priority = m_priority;
+    ::sched_setscheduler(0, m_policy, &sp);
+}
+
 ThreadPriorityResult raiseThreadPriority(const std::string& who) {
     const char* env = std::getenv("OCU_THREAD_PRIORITY");
     const std::string mode = env ? env : "rt";

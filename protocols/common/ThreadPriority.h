@@ -23,4 +23,21 @@ bool stopPathPriorityEnabled();
 // Raises the calling thread's priority as above; `who` names the thread in the log line.
 ThreadPriorityResult raiseThreadPriority(const std::string& who);
 
+// While it lives, the calling thread (the GUI thread issuing a STOP ALL) runs SCHED_RR at the io threads'
+// priority, when the process enabled the stop-path priority and the OS permits: the io threads, woken by the
+// stop or busy with telemetry, cannot take its core between two protocols' sends. Restores the thread's
+// previous policy; costs two system calls. Silent when refused.
+class ScopedStopPathBoost {
+public:
+    ScopedStopPathBoost();
+    ~ScopedStopPathBoost();
+    ScopedStopPathBoost(const ScopedStopPathBoost&) = delete;
+    ScopedStopPathBoost& operator=(const ScopedStopPathBoost&) = delete;
+
+private:
+    bool m_boosted = false;
+    int m_policy = 0;
+    int m_priority = 0;
+};
+
 } // namespace ocu
