@@ -8,12 +8,19 @@
 #include "models/FleetModel.h"
 #include <QJsonArray>
 
+#include <QCoreApplication>
 #include <QDateTime>
+#include <QEvent>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonParseError>
 #include <QSocketNotifier>
 #include <QUuid>
+
+#include "protocols/common/ThreadPriority.h"
+
+#include <cerrno>
+#include <poll.h>
 #include <unistd.h>
 
 namespace ocu {
@@ -40,7 +47,34 @@ HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, CommandG
     setRateLimitMs(1000);
 }
 
-HeadlessMonitor::~HeadlessMonitor() = default;
+namespace {
+
+// One line the stdin reader thread read (with the STOP ALL it already sent for it), a line that was too long,
+// or the end of input, for the monitor's thread.
+struct StdinEvent : QEvent {
+    enum What { Line, TooLong, End };
+    static QEvent::Type kind() {
+        static const auto t = QEvent::Type(QEvent::registerEventType());
+        return t;
+    }
+    StdinEvent(What w, QByteArray d = {}, std::shared_ptr<EarlyStop> e = {})
+        : QEvent(kind()), what(w), line(std::move(d)), early(std::move(e)) {}
+    What what;
+    QByteArray line;
+    std::shared_ptr<EarlyStop> early;
+};
+
+} // namespace
+
+HeadlessMonitor::~HeadlessMonitor() {
+    stopStdin();
+}
+
+void HeadlessMonitor::stopStdin() {
+    m_stdinStop = true;
+    if (m_stdinThread.joinable())
+        m_stdinThread.join(); // within one poll period (100 ms)
+}
 
 HeadlessMonitor* HeadlessMonitor::attach(FleetContext* ctx, QIODevice* out) {
     auto* mon = new HeadlessMonitor(ctx->fleet(), ctx->alarms(), ctx->gate(), ctx);
@@ -283,7 +317,25 @@ void HeadlessMonitor::maybeFinishInput() {
     }
 }
 
+bool HeadlessMonitor::isStopAll(const QByteArray& raw) {
+    // The same reading as handleLine's: a JSON object whose "cmd" (or "command") is "stop_all".
+    const QJsonDocument doc = QJsonDocument::fromJson(raw.trimmed());
+    if (!doc.isObject())
+        return false;
+    const QJsonObject cmd = doc.object();
+    QString name = cmd.value(QStringLiteral("cmd")).toString();
+    if (name.isEmpty())
+        name = cmd.value(QStringLiteral("command")).toString();
+    return name == QLatin1String("stop_all");
+}
+
 QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
+    return handleLine(raw, nullptr);
+}
+
+QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<EarlyStop> early) {
+    if (early && !isStopAll(raw))
+        early.reset(); // cannot happen (the reader asked the same question): never attach it elsewhere
     const QByteArray line = raw.trimmed();
     if (line.isEmpty())
         return {};
@@ -310,7 +362,8 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
     const QString origin = QStringLiteral("headless");
     CommandGate* gate = m_gate;
     if (name == QLatin1String("stop_all"))
-        return viaGate(cmd, [&](CommandGate::ResultHandler h) { gate->stopAll(origin, std::move(h)); });
+        return viaGate(cmd,
+                       [&](CommandGate::ResultHandler h) { gate->stopAll(origin, std::move(h), early); });
     if (name == QLatin1String("stop")) {
         if (id.isEmpty())
             return result(cmd, false, QStringLiteral("missing \"id\""));
@@ -468,22 +521,69 @@ void HeadlessMonitor::addProtocolCommands(const QStringList& names) {
 }
 
 bool HeadlessMonitor::startStdin() {
-    if (m_stdinNotifier)
+    if (m_stdinThread.joinable())
         return true;
-    m_stdinNotifier = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, this);
-    connect(m_stdinNotifier, &QSocketNotifier::activated, this, [this] {
+    CommandGate* gate = m_gate.data(); // lives as long as the bridges; the thread ends before they go
+    m_stdinThread = std::thread([this, gate] {
+        if (stopPathPriorityEnabled())
+            raiseThreadPriority("headless stdin reader");
+        // High priority: ahead of the queued telemetry events; among themselves in order of reading.
+        auto post = [this](StdinEvent::What w, QByteArray line = {}, std::shared_ptr<EarlyStop> early = {}) {
+            QCoreApplication::postEvent(this, new StdinEvent(w, std::move(line), std::move(early)),
+                                        Qt::HighEventPriority);
+        };
+        auto line = [&](const QByteArray& l) {
+            // A stop_all leaves from here at once on the stacks that can send from any thread; the monitor's
+            // thread sends the rest and records it all as this command (CommandGate::stopAllEarly).
+            post(StdinEvent::Line, l, gate && isStopAll(l) ? gate->stopAllEarly() : nullptr);
+        };
+        QByteArray pending;
         char buf[4096];
-        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
-        if (n <= 0) {
-            m_stdinNotifier->setEnabled(false);
-            if (!m_inBuf.isEmpty())
-                consumeInput("\n");
-            m_inputEnded = true;
-            maybeFinishInput();
-            return;
+        while (!m_stdinStop) {
+            pollfd p{STDIN_FILENO, POLLIN, 0};
+            const int r = ::poll(&p, 1, 100); // wakes at once on input; checks m_stdinStop every 100 ms
+            if (r == 0 || (r < 0 && errno == EINTR))
+                continue;
+            const ssize_t n = r > 0 ? ::read(STDIN_FILENO, buf, sizeof buf) : -1;
+            if (n < 0 && (errno == EINTR || errno == EAGAIN))
+                continue;
+            if (n <= 0) {
+                if (!pending.trimmed().isEmpty())
+                    line(pending); // the unterminated last line is still executed
+                post(StdinEvent::End);
+                return;
+            }
+            pending.append(buf, int(n));
+            int nl;
+            while ((nl = int(pending.indexOf('\n'))) >= 0) {
+                line(pending.left(nl));
+                pending.remove(0, nl + 1);
+            }
+            if (pending.size() > 1 << 20) { // a runaway line without newline: drop it, say so
+                pending.clear();
+                post(StdinEvent::TooLong);
+            }
         }
-        consumeInput(QByteArray(buf, int(n)));
     });
+    return true;
+}
+
+bool HeadlessMonitor::event(QEvent* e) {
+    if (e->type() != StdinEvent::kind())
+        return QObject::event(e);
+    auto* in = static_cast<StdinEvent*>(e);
+    switch (in->what) {
+    case StdinEvent::Line:
+        handleLine(in->line, std::move(in->early));
+        break;
+    case StdinEvent::TooLong:
+        result({}, false, QStringLiteral("input line too long (over 1 MiB), dropped"));
+        break;
+    case StdinEvent::End:
+        m_inputEnded = true;
+        maybeFinishInput();
+        break;
+    }
     return true;
 }
 

@@ -41,11 +41,13 @@
 #include <QSet>
 #include <QStringList>
 #include <QTimer>
+#include <atomic>
 #include <functional>
 #include <memory>
+#include <thread>
 
 class QIODevice;
-class QSocketNotifier;
+class QEvent;
 class QFile;
 
 namespace ocu {
@@ -77,8 +79,14 @@ public:
     // by "id" (or of the "protocol"), and answered with "missing \"id\"" when both are absent.
     void addProtocolCommands(const QStringList& names);
 
-    // Read commands from stdin (QSocketNotifier on fd 0); inputFinished() at end of input.
+    // Read commands from stdin; inputFinished() at end of input. A reader thread (raised priority where the
+    // console enabled it, ThreadPriority.h) hands what it reads to this object as high-priority events, so a
+    // command (a stop_all above all) is handled ahead of the telemetry queued for the GUI thread, and the
+    // thread is woken at once by the kernel instead of at the event loop's next poll.
     bool startStdin();
+    // Ends the reader thread (within 100 ms); before the bridges go, as it may stop through them. Also done
+    // by the destructor.
+    void stopStdin();
     // Read commands from any device (not owned): readyRead + readChannelFinished.
     void setInput(QIODevice* in);
 
@@ -90,6 +98,9 @@ public:
 
     // Prints one line for every machine now.
     void printAll();
+
+protected:
+    bool event(QEvent* e) override;
 
 signals:
     // End of input, once every result line of it was written.
@@ -109,6 +120,8 @@ private:
     // Issue 15: assign, reset_assignment, production (ISO 23725 dispatch).
     QByteArray dispatchCommand(const QString& name, const QJsonObject& cmd);
     QByteArray result(const QJsonObject& cmd, const CommandResult& r, bool withTargets);
+    QByteArray handleLine(const QByteArray& line, std::shared_ptr<EarlyStop> early);
+    static bool isStopAll(const QByteArray& line);
     QByteArray viaGate(const QJsonObject& cmd, const std::function<void(CommandGate::ResultHandler)>& issue,
                        const QString& suffix = {});
     void maybeFinishInput();
@@ -132,7 +145,8 @@ private:
     QSet<QString> m_protocolCommands;
     QList<QPointer<FleetBridge>> m_bridges; // for {"cmd":"counters"}
     QByteArray m_inBuf;
-    QSocketNotifier* m_stdinNotifier = nullptr;
+    std::thread m_stdinThread;
+    std::atomic<bool> m_stdinStop{false};
     int m_pendingResults = 0;
     bool m_inputEnded = false;
     bool m_finishedSignalled = false;

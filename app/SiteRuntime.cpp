@@ -316,6 +316,7 @@ int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
     else
         connect(mon, &HeadlessMonitor::inputFinished, &app, &QApplication::quit);
     const int rc = execUnlessQuitting(app); // SIGINT/SIGTERM quit as end of input does
+    mon->stopStdin();                       // no early stop through the bridges once they are being torn down
     stop();
     return rc;
 }

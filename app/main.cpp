@@ -1,6 +1,7 @@
 // ocu: the console. See README.md for the two commands and docs/site-config.md for the configuration.
 #include "app/CommandLine.h"
 #include "app/ConsoleApp.h"
+#include "protocols/common/ThreadPriority.h"
 
 #include <QApplication>
 #include <QByteArray>
@@ -10,6 +11,9 @@
 int main(int argc, char** argv) {
     // First, before any thread or library (SDL) installs its own: SIGINT/SIGTERM/SIGHUP quit cleanly.
     ocu::installQuitSignalHandlers();
+    // The console's stop-path threads (stacks' io threads, the headless stdin reader) ahead of ordinary
+    // threads where the OS permits (issue 13 §10, docs/architecture.md).
+    ocu::enableStopPathPriority();
     // --headless, --help and --version need no display at all, nor does --screenshot when there is none;
     // decide the platform before QApplication exists.
     const bool haveDisplay =

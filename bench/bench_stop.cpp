@@ -11,10 +11,13 @@
 //   ISO 23725 a WebSocket frame to the AHS whose (unmasked) JSON holds "ModeAllStop":"Apply",
 //   OSYRIS    a datagram to the group holding the CmMsg text "STOP ALL".
 // Needs CAP_NET_RAW (root) for the packet socket. Usage:
-//   bench_stop [--load idle,full] [--trigger window,headless] [--trials 1000]
+//   bench_stop [--load idle,full] [--trigger window,headless] [--trials 1000] [--sim-nice 10]
+// --sim-nice runs ocu-sim (the machines, on other hosts in reality) at that nice value. The console's
+// stop-path threads raise their priority as in `ocu` (OCU_THREAD_PRIORITY=off|nice to measure without).
 #include "app/MainWindow.h"
 #include "app/SiteLoader.h"
 #include "app/SiteRuntime.h"
+#include "protocols/common/ThreadPriority.h"
 #include "protocols/jaus/JudpCodec.h"
 #include "protocols/jaus/Messages.h"
 
@@ -386,10 +389,13 @@ bool trials(WireSniffer& sn, Samples& s, int n, bool qt, unsigned mask, Trigger 
     return true;
 }
 
-pid_t spawn(const std::vector<std::string>& argv, int stdinFd, const char* stdoutPath) {
+pid_t spawn(const std::vector<std::string>& argv, int stdinFd, const char* stdoutPath, int niceness = 0) {
     const pid_t pid = ::fork();
     if (pid != 0)
         return pid;
+    if (niceness != 0) {
+        [[maybe_unused]] const int r = ::nice(niceness);
+    }
     if (stdinFd >= 0) {
         ::dup2(stdinFd, 0);
     } else {
@@ -443,6 +449,7 @@ QJsonObject waitForConfig(const QString& path, pid_t sim) {
 int main(int argc, char** argv) {
     QStringList loads{"idle", "full"}, triggers{"window", "headless"};
     int n = 1000;
+    int simNice = 0;
     for (int i = 1; i + 1 < argc; i += 2) {
         const QString k = QString::fromLocal8Bit(argv[i]), v = QString::fromLocal8Bit(argv[i + 1]);
         if (k == "--load")
@@ -451,12 +458,17 @@ int main(int argc, char** argv) {
             triggers = v.split(',');
         else if (k == "--trials")
             n = std::max(1, v.toInt());
+        else if (k == "--sim-nice") // the load generator at lower priority (it stands for other hosts)
+            simNice = v.toInt();
     }
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     qputenv("QT_LOGGING_RULES", "*.debug=false;*.info=false;*.warning=false");
     QApplication app(argc, argv);
     ::signal(SIGPIPE, SIG_IGN);
+    // As the console's main does (the in-process window console): the stop-path threads ahead of ordinary
+    // threads where permitted. OCU_THREAD_PRIORITY=off measures without (it reaches ocu --headless too).
+    ocu::enableStopPathPriority();
 
     WireSniffer sn;
     std::string error;
@@ -476,7 +488,7 @@ int main(int argc, char** argv) {
             OCU_SIM_BINARY,    "--duration",        "3600",           "--ugvs",         full ? "20" : "1",
             "--trucks",        full ? "1000" : "1", "--rollers",      full ? "3" : "1", "--truck-rate",
             full ? "10" : "2", "--write-config",    cfg.toStdString()};
-        const pid_t sim = spawn(simArgs, -1, dir.filePath("ocu-sim.log").toLocal8Bit().constData());
+        const pid_t sim = spawn(simArgs, -1, dir.filePath("ocu-sim.log").toLocal8Bit().constData(), simNice);
         const QJsonObject site = waitForConfig(cfg, sim);
         if (site.isEmpty()) {
             std::fprintf(stderr, "bench_stop: ocu-sim wrote no configuration\n");
@@ -485,10 +497,14 @@ int main(int argc, char** argv) {
         }
         sn.ahsPort = static_cast<std::uint16_t>(QUrl(site["iso23725"]["links"][0]["url"].toString()).port());
         sn.osyrisPort = static_cast<std::uint16_t>(site["osyris"]["port"].toInt());
-        std::printf("\nload %s: ocu-sim %s (AHS port %u, OSYRIS port %u)\n", qPrintable(load),
+        std::printf("\nload %s: ocu-sim %s at nice %d (AHS port %u, OSYRIS port %u); stop-path priority %s\n",
+                    qPrintable(load),
                     full ? "--ugvs 20 --trucks 1000 --truck-rate 10 --rollers 3"
                          : "--ugvs 1 --trucks 1 --truck-rate 2 --rollers 1",
-                    sn.ahsPort, sn.osyrisPort);
+                    simNice, sn.ahsPort, sn.osyrisPort,
+                    qEnvironmentVariableIsEmpty("OCU_THREAD_PRIORITY")
+                        ? "rt (default)"
+                        : qgetenv("OCU_THREAD_PRIORITY").constData());
 
         if (triggers.contains("window")) {
             auto loaded = ocu::loadSite(cfg);

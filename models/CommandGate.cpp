@@ -1,6 +1,7 @@
 #include "models/CommandGate.h"
 
 #include "models/AlarmModel.h"
+#include "protocols/common/ThreadPriority.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -10,8 +11,10 @@
 #include <QUuid>
 
 #include <algorithm>
+#include <map>
 #include <mutex>
 #include <optional>
+#include <utility>
 
 namespace ocu {
 
@@ -22,6 +25,46 @@ struct GateLife {
     CommandGate* gate = nullptr;
 };
 
+// The outcomes of a STOP ALL sent early on another thread, per bridge, until the gate's thread takes them
+// (attach: at once when in, else when they arrive).
+struct EarlyStop {
+    std::mutex mutex;
+    std::vector<FleetBridge*> bridges; // called early
+    std::map<FleetBridge*, std::vector<TargetOutcome>> got;
+    std::map<FleetBridge*, OutcomeCallback> waiting;
+    bool covers(FleetBridge* b) const {
+        return std::find(bridges.begin(), bridges.end(), b) != bridges.end();
+    }
+    void arrived(FleetBridge* b, std::vector<TargetOutcome> o) {
+        OutcomeCallback done;
+        {
+            std::lock_guard lock(mutex);
+            auto it = waiting.find(b);
+            if (it == waiting.end()) {
+                got[b] = std::move(o);
+                return;
+            }
+            done = std::move(it->second);
+            waiting.erase(it);
+        }
+        done(std::move(o));
+    }
+    void attach(FleetBridge* b, OutcomeCallback done) {
+        std::vector<TargetOutcome> o;
+        {
+            std::lock_guard lock(mutex);
+            auto it = got.find(b);
+            if (it == got.end()) {
+                waiting[b] = std::move(done);
+                return;
+            }
+            o = std::move(it->second);
+            got.erase(it);
+        }
+        done(std::move(o));
+    }
+};
+
 struct CommandGate::Pending {
     QString action;
     QString target; // the machine (or empty for STOP ALL)
@@ -30,6 +73,7 @@ struct CommandGate::Pending {
     std::vector<std::optional<std::vector<TargetOutcome>>> outcomes; // per bridge; nullopt = not answered
     int answered = 0;
     bool issuing = true;
+    std::vector<std::function<void()>> deferred; // answers on the GUI thread while issuing
     QTimer* deadline = nullptr;
     ResultHandler onFinal;
     QElapsedTimer since; // when the command was issued (confirmation latency)
@@ -50,6 +94,13 @@ void CommandGate::addBridge(FleetBridge* bridge) {
     if (!bridge || m_bridges.contains(bridge))
         return;
     m_bridges.push_back(bridge);
+    if (bridge->stopAllFromAnyThread()) {
+        std::lock_guard lock(m_earlyMutex);
+        m_earlyBridges.push_back(bridge);
+        // Those that send from the caller's thread first (a woken io thread may take this core).
+        std::stable_partition(m_earlyBridges.begin(), m_earlyBridges.end(),
+                              [](FleetBridge* b) { return b->stopsFromCallersThread(); });
+    }
     connect(bridge, &FleetBridge::stopReported, this, &CommandGate::onStopReported);
     connect(bridge, &FleetBridge::commandReported, this, &CommandGate::onCommandReported);
 }
@@ -84,10 +135,6 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
         p->bridges.push_back(b);
     p->outcomes.resize(size_t(to.size()));
     m_pending.insert(id, p);
-    p->deadline = new QTimer(this);
-    p->deadline->setSingleShot(true);
-    connect(p->deadline, &QTimer::timeout, this, [this, id] { finish(id); });
-    p->deadline->start(m_answerDeadlineMs);
 
     std::weak_ptr<GateLife> life = m_life;
     QThread* guiThread = thread();
@@ -119,6 +166,14 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
                     finish(id);
             };
             if (QThread::currentThread() == guiThread) {
+                // Answered while the gate is still calling bridges (a refusal, or a stack that sent from
+                // this thread): recorded after every bridge was called, so no model, alarm or watch work
+                // delays the next bridge's sends (issue 13 §10).
+                if (auto it = m_pending.find(id); it != m_pending.end() && (*it)->issuing) {
+                    (*it)->deferred.push_back(
+                        [apply, o = std::move(outcomes)]() mutable { apply(std::move(o)); });
+                    return;
+                }
                 apply(std::move(outcomes));
                 return;
             }
@@ -134,6 +189,14 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
         };
         fn(to[i], std::move(done));
     }
+    // The deadline timer after the bridges were called: nothing but the command itself before the sends
+    // (issue 13 §10).
+    p->deadline = new QTimer(this);
+    p->deadline->setSingleShot(true);
+    connect(p->deadline, &QTimer::timeout, this, [this, id] { finish(id); });
+    p->deadline->start(m_answerDeadlineMs);
+    for (auto& f : std::exchange(p->deferred, {}))
+        f();
     p->issuing = false;
     if (p->answered == int(p->outcomes.size()))
         finish(id);
@@ -174,10 +237,36 @@ void CommandGate::finishNow(const QString& action, const QString& target, const 
 }
 
 void CommandGate::stopAll(const QString& origin, ResultHandler onFinal) {
-    // Every bridge gets the stop even if an earlier one refused: a partial stop beats no stop.
+    stopAll(origin, std::move(onFinal), nullptr);
+}
+
+std::shared_ptr<EarlyStop> CommandGate::stopAllEarly() {
+    ScopedStopPathBoost boost;
+    auto early = std::make_shared<EarlyStop>();
+    {
+        std::lock_guard lock(m_earlyMutex);
+        early->bridges = m_earlyBridges;
+    }
+    for (FleetBridge* b : early->bridges)
+        b->stopAll([early, b](std::vector<TargetOutcome> o) { early->arrived(b, std::move(o)); });
+    return early;
+}
+
+void CommandGate::stopAll(const QString& origin, ResultHandler onFinal, std::shared_ptr<EarlyStop> early) {
+    ScopedStopPathBoost boost; // no io thread takes this core between two protocols' sends
+    // Every bridge gets the stop even if an earlier one refused: a partial stop beats no stop. Those that
+    // send from this thread first: a stack's io thread woken by a post may take this thread's core.
+    QVector<FleetBridge*> to = bridges();
+    std::stable_partition(to.begin(), to.end(), [](FleetBridge* b) { return b->stopsFromCallersThread(); });
     dispatch(
-        QStringLiteral("stop_all"), QString(), origin, bridges(),
-        [](FleetBridge* b, OutcomeCallback done) { b->stopAll(std::move(done)); }, std::move(onFinal));
+        QStringLiteral("stop_all"), QString(), origin, to,
+        [early](FleetBridge* b, OutcomeCallback done) {
+            if (early && early->covers(b))
+                early->attach(b, std::move(done)); // sent already: its outcome, now or when it comes
+            else
+                b->stopAll(std::move(done));
+        },
+        std::move(onFinal));
 }
 
 void CommandGate::stopMachine(const QString& id, const QString& origin, ResultHandler onFinal) {

@@ -27,11 +27,14 @@
 
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <vector>
 
 namespace ocu {
 
 class AlarmModel;
 struct GateLife;
+struct EarlyStop;
 
 class CommandGate : public QObject {
     Q_OBJECT
@@ -59,6 +62,14 @@ public:
     // on the GUI thread, before commandFinished is emitted. It may run before the call returns (every bridge
     // decided at once).
     void stopAll(const QString& origin = QStringLiteral("gui"), ResultHandler onFinal = {});
+    // Issue 13 §10. Any thread (the headless stdin reader): STOP ALL now to the bridges that may be called
+    // from any thread (FleetBridge::stopAllFromAnyThread; those that send from the caller's thread first);
+    // their outcomes wait in the handle. Then, on the
+    // gate's thread, stopAll(origin, onFinal, handle) sends the rest and records every part (audit, result,
+    // confirmation) as one STOP ALL. Every handle must be passed to stopAll once: it is the audit of what
+    // was already sent. Only while the bridges live (the caller stops calling before they are torn down).
+    std::shared_ptr<EarlyStop> stopAllEarly();
+    void stopAll(const QString& origin, ResultHandler onFinal, std::shared_ptr<EarlyStop> early);
     void stopMachine(const QString& id, const QString& origin = QStringLiteral("gui"),
                      ResultHandler onFinal = {});
 
@@ -115,6 +126,8 @@ private:
                const CommandResult& result);
 
     QVector<QPointer<FleetBridge>> m_bridges;
+    std::mutex m_earlyMutex;                  // stopAllEarly() from another thread
+    std::vector<FleetBridge*> m_earlyBridges; // bridges that stop from the caller's thread
     QPointer<AlarmModel> m_alarms;
     QString m_auditPath;
     qint64 m_tokenLifetimeMs = 10000;

@@ -108,6 +108,15 @@ public:
     // STOP ALL for this protocol: JAUS SetEmergency to every discovered UGV, ISO 23725 all-stop Apply on
     // every AHS link, the OSYRIS stop text to the group. Never asks for confirmation.
     virtual void stopAll(OutcomeCallback done) = 0;
+    // True when stopAll puts its stop on the wire from the calling thread (no io-thread hop) and may be
+    // called from any thread (it reads only constant or atomic state): the gate calls these bridges first, so
+    // a woken io thread of another stack never delays them, and CommandGate::stopAllEarly calls them from
+    // the headless stdin reader (issue 13 §10).
+    virtual bool stopsFromCallersThread() const { return false; }
+    // True when stopAll may be called from any thread (reads only constant, atomic or locked state) even
+    // though its stack sends on its io thread (ISO 23725): CommandGate::stopAllEarly calls these too, after
+    // those that send from the caller's thread.
+    virtual bool stopAllFromAnyThread() const { return stopsFromCallersThread(); }
     virtual void stopMachine(const QString& id, OutcomeCallback done) = 0;
     // Release a stop (JAUS ClearEmergency, ISO all-stop Remove). The CommandGate has already checked the
     // operator's deliberate confirmation before calling this.

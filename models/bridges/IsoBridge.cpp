@@ -26,8 +26,15 @@ IsoBridge::~IsoBridge() {
 }
 
 QString IsoBridge::start() {
-    for (const auto& l : m_config.links)
-        publishLink({QStringLiteral("iso23725:") + q(l.name), ocu::LinkState::Unknown, -1, tr("connecting")});
+    for (const auto& l : m_config.links) {
+        const LinkStatus s{QStringLiteral("iso23725:") + q(l.name), ocu::LinkState::Unknown, -1,
+                           tr("connecting")};
+        {
+            std::lock_guard lock(m_linkNowMutex);
+            m_linkNow.insert(s.link, s);
+        }
+        publishLink(s);
+    }
     const bool ok = m_stack->start();
     m_running = true; // the io thread runs even when a link could not start
     if (!ok)
@@ -75,6 +82,10 @@ void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, 
     // Before the first connection the link is "connecting", not lost: no alarm for that.
     if (state == iso23725::LinkState::Down && !m_everUp.count(link))
         s.state = ocu::LinkState::Unknown;
+    {
+        std::lock_guard lock(m_linkNowMutex);
+        m_linkNow.insert(s.link, s);
+    }
     publishLink(s);
     if (state != iso23725::LinkState::Up && m_everUp.count(link)) {
         // §2.1: while the link is down nothing about its machines is known.
@@ -560,7 +571,13 @@ QString IsoBridge::linkOf(const QString& machineId) const {
 }
 
 QString IsoBridge::linkRefusal(const QString& link, const QString& what) const {
-    const auto st = linkStatus(QStringLiteral("iso23725:") + link);
+    std::optional<LinkStatus> st;
+    {
+        std::lock_guard lock(m_linkNowMutex);
+        auto it = m_linkNow.find(QStringLiteral("iso23725:") + link);
+        if (it != m_linkNow.end())
+            st = *it;
+    }
     if (st && st->state == ocu::LinkState::Up)
         return {};
     const QString why = st && !st->detail.isEmpty() ? QStringLiteral(" (%1)").arg(st->detail) : QString();

@@ -12,6 +12,7 @@
 
 #include <QHash>
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -38,6 +39,7 @@ public:
                         double headingDeg, double speedKmh);
 
     void stopAll(OutcomeCallback done) override;
+    bool stopAllFromAnyThread() const override { return true; } // link state and running flag are locked
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
     // all_stop_apply / all_stop_remove {"link"}, fetch_map {"link"}, reset_assignment {"id"},
@@ -98,11 +100,14 @@ private:
     void setPosition(MachineState& row, const iso23725::IsoPosition& p) const;
     const std::string& keyOf(const std::string& link, const iso23725::Guid& equipmentId);
     QString linkOf(const QString& machineId) const;
-    // GUI thread: why `what` cannot go to the AHS on `link` now (its link is not up), or an empty string.
+    // Any thread: why `what` cannot go to the AHS on `link` now (its link is not up, as the io thread last
+    // reported it), or an empty string.
     QString linkRefusal(const QString& link, const QString& what) const;
     // All-stop Apply/Remove on one link with its outcome (target IsoStack::linkTarget(link)).
     void applyOrRefuse(const QString& link, bool apply, OutcomeCallback done);
-    bool m_running = false;
+    std::atomic<bool> m_running{false};
+    mutable std::mutex m_linkNowMutex;
+    QHash<QString, LinkStatus> m_linkNow; // every link's latest state (io thread; start() first)
 
     iso23725::IsoConfig m_config;
     GeoFrame m_frame;

@@ -40,6 +40,7 @@ public:
     std::optional<JausVehicle> subsystem(quint16 id) const override;
 
     void stopAll(OutcomeCallback done) override;
+    bool stopsFromCallersThread() const override { return true; } // the stack's fast path (issue 13 §10)
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
     // request_control, release_control, release_all, drive, drive_stop, resume, standby, shutdown, reset.

@@ -26,6 +26,7 @@ public:
     void stop();
 
     void stopAll(OutcomeCallback done) override;
+    bool stopsFromCallersThread() const override { return true; } // the stack's fast path (issue 13 §10)
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
     // send_text {"text"}, ping {"idx"}.

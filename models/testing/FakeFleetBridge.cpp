@@ -53,6 +53,10 @@ void FakeFleetBridge::answer(OutcomeCallback done, std::vector<TargetOutcome> ou
 
 void FakeFleetBridge::stopAll(OutcomeCallback done) {
     record(QStringLiteral("stop_all"), {});
+    {
+        std::lock_guard lock(m_mutex);
+        m_stopAllThread = std::this_thread::get_id();
+    }
     if (refusedCommands.contains(QStringLiteral("stop_all")))
         return answer(std::move(done), {refusal(toText(protocol()), QStringLiteral("refused"))});
     QStringList ids;

@@ -8,6 +8,7 @@
 #include <QJsonObject>
 #include <QStringList>
 #include <mutex>
+#include <thread>
 
 namespace ocu {
 
@@ -36,6 +37,14 @@ public:
     void clearCalls();
 
     bool simulateMachines = true;
+    // Declares stopAll callable from any thread, sending on the caller's thread (set before addBridge).
+    bool fromCallersThread = false;
+    bool stopsFromCallersThread() const override { return fromCallersThread; }
+    // The thread of the last stopAll call.
+    std::thread::id stopAllThread() const {
+        std::lock_guard lock(m_mutex);
+        return m_stopAllThread;
+    }
     // Never answer (a stack that hangs): the CommandGate's deadline must decide.
     bool silent = false;
     // Commands named here are refused (to test role/authority enforcement paths).
@@ -54,6 +63,7 @@ private:
     mutable std::mutex m_mutex;
     QHash<QString, MachineState> m_machines;
     QVector<Call> m_calls;
+    std::thread::id m_stopAllThread;
 };
 
 } // namespace ocu

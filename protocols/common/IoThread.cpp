@@ -1,6 +1,7 @@
 #include "protocols/common/IoThread.h"
 
 #include "protocols/common/Log.h"
+#include "protocols/common/ThreadPriority.h"
 
 #include <exception>
 #include <pthread.h>
@@ -13,7 +14,7 @@ static std::int64_t steadyNowNs() {
         .count();
 }
 
-IoThread::IoThread(std::string name) : m_name(std::move(name)) {}
+IoThread::IoThread(std::string name, bool stopPath) : m_name(std::move(name)), m_stopPath(stopPath) {}
 
 IoThread::~IoThread() {
     stop();
@@ -28,6 +29,10 @@ void IoThread::start() {
     beat(); // expires_after() also cancels a wait left over from a previous run
     m_thread = std::thread([this] {
         pthread_setname_np(pthread_self(), m_name.substr(0, 15).c_str());
+        // Commands (a STOP ALL above all) wait for this thread to wake up: ahead of ordinary threads where
+        // the OS permits (ThreadPriority.h).
+        if (m_stopPath && stopPathPriorityEnabled())
+            raiseThreadPriority("io thread " + m_name);
         for (;;) {
             try {
                 m_context.run();

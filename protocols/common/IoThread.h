@@ -22,7 +22,9 @@ namespace ocu {
 
 class IoThread {
 public:
-    explicit IoThread(std::string name = "io");
+    // stopPath: the thread carries operator commands (a protocol stack's): raised priority when the process
+    // enabled it (ThreadPriority.h).
+    explicit IoThread(std::string name = "io", bool stopPath = false);
     ~IoThread();
     IoThread(const IoThread&) = delete;
     IoThread& operator=(const IoThread&) = delete;
@@ -54,6 +56,7 @@ public:
 
 private:
     std::string m_name;
+    bool m_stopPath = false;
     boost::asio::io_context m_context;
     std::optional<boost::asio::executor_work_guard<boost::asio::io_context::executor_type>> m_work;
     boost::asio::steady_timer m_heartbeat{m_context}; // after m_context: destroyed before it

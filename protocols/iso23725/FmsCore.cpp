@@ -127,8 +127,9 @@ std::string FmsCore::frame(const Body& body, std::optional<Guid> eq) const {
     return encodeMessage(env);
 }
 
-bool FmsCore::sendBody(const Body& body, std::optional<Guid> eq) {
-    if (!m_out.sendMain(frame(body, std::move(eq))))
+bool FmsCore::sendBody(const Body& body, std::optional<Guid> eq, bool urgent) {
+    std::string text = frame(body, std::move(eq));
+    if (!(urgent ? m_out.sendMainUrgent(std::move(text)) : m_out.sendMain(std::move(text))))
         return false;
     ++m_messagesSent;
     m_counters.add("tx.messages");
@@ -549,7 +550,7 @@ bool FmsCore::allStopApply() {
     if (!upOrRefuse("all-stop Apply"))
         return false;
     Guid id = newGuid();
-    if (!sendBody(MachineAllStopRequestV1{"Apply", id}))
+    if (!sendBody(MachineAllStopRequestV1{"Apply", id}, std::nullopt, true)) // ahead of queued frames
         return socketRefused("all-stop Apply");
     m_issuedIds.insert(id);
     m_allStop.pendingId = id;
@@ -570,7 +571,7 @@ bool FmsCore::allStopRemove() {
         event(IsoSeverity::Warning, "all-stop Remove refused on " + m_link.name + ": no active all-stop id");
         return false;
     }
-    if (!sendBody(MachineAllStopRequestV1{"Remove", *id}))
+    if (!sendBody(MachineAllStopRequestV1{"Remove", *id}, std::nullopt, true))
         return socketRefused("all-stop Remove");
     m_allStop.pendingId = id;
     m_counters.add("allstop.remove");

@@ -32,6 +32,8 @@ class FmsOutbound {
 public:
     virtual ~FmsOutbound() = default;
     virtual bool sendMain(std::string text) = 0;
+    // Ahead of the frames queued on the main socket (all-stop Apply/Remove).
+    virtual bool sendMainUrgent(std::string text) { return sendMain(std::move(text)); }
     // The map service's own socket (Q10: only when the link has a separate map URL).
     virtual bool sendMap(std::string text) = 0;
 };
@@ -120,7 +122,7 @@ private:
     std::string routeAssignment(const IsoMachineSnapshot& m, std::vector<AssignmentItem>& items) const;
     void onAssignmentResponse(IsoMachineSnapshot& m, const HaulTruckAssignmentResponseV1& r);
     std::string frame(const Body& body, std::optional<Guid> equipmentId) const;
-    bool sendBody(const Body& body, std::optional<Guid> equipmentId = std::nullopt);
+    bool sendBody(const Body& body, std::optional<Guid> equipmentId = std::nullopt, bool urgent = false);
     bool sendMapBody(const Body& body);
     void handleFrame(std::string_view frame, bool mapChannel);
     void handle(const Envelope& env, bool mapChannel);

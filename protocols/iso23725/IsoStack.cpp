@@ -114,6 +114,9 @@ struct Link final : FmsOutbound {
     bool sendMain(std::string text) override {
         return mainSession && main->send(*mainSession, std::move(text));
     }
+    bool sendMainUrgent(std::string text) override {
+        return mainSession && main->sendUrgent(*mainSession, std::move(text));
+    }
     bool sendMap(std::string text) override {
         return mapSession && map && map->send(*mapSession, std::move(text));
     }
@@ -132,8 +135,8 @@ struct Link final : FmsOutbound {
 
 struct IsoStack::Impl {
     Impl(IsoConfig c, IsoListener& l, Counters& counters)
-        : cfg(std::move(c)), listener(l), counters(counters), io("iso23725"), positionTimer(io.context()),
-          pollTimer(io.context()), positionFlush(io.context()) {
+        : cfg(std::move(c)), listener(l), counters(counters), io("iso23725", true),
+          positionTimer(io.context()), pollTimer(io.context()), positionFlush(io.context()) {
         // One set of counters per link, feeding the stack's totals; never changed after construction, so
         // any thread may read them (issue 14 §6).
         for (auto& lc : cfg.links)

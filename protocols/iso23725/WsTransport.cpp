@@ -82,7 +82,7 @@ namespace {
 class SessionBase {
 public:
     virtual ~SessionBase() = default;
-    virtual void send(std::string text, bool binary = false) = 0;
+    virtual void send(std::string text, bool binary = false, bool urgent = false) = 0;
     virtual void close(const std::string& reason) = 0;
     // Close frame with 1001, then teardown when the handshake ends or after `grace`; done() once.
     virtual void goAway(std::chrono::milliseconds grace, std::function<void()> done) = 0;
@@ -159,11 +159,20 @@ public:
         tick();
     }
 
-    void send(std::string text, bool binary) override {
+    void send(std::string text, bool binary, bool urgent) override {
         if (m_closing)
             return;
         m_queuedBytes += text.size();
-        m_queue.push_back(Item{std::move(text), false, binary});
+        if (urgent) {
+            // Ahead of every queued frame but the one being written (a Beast stream writes one message at a
+            // time) and earlier urgent ones.
+            auto at = m_queue.begin() + (m_writing && !m_queue.empty() ? 1 : 0);
+            while (at != m_queue.end() && at->urgent)
+                ++at;
+            m_queue.insert(at, Item{std::move(text), false, binary, true});
+        } else {
+            m_queue.push_back(Item{std::move(text), false, binary});
+        }
         if (!m_writing)
             write();
     }
@@ -194,6 +203,7 @@ private:
         std::string text;
         bool ping;
         bool binary = false;
+        bool urgent = false;
     };
 
     void read() {
@@ -647,6 +657,14 @@ bool WsEndpoint::send(SessionId id, std::string text) {
     if (it == m_impl->sessions.end())
         return false;
     it->second->send(std::move(text));
+    return true;
+}
+
+bool WsEndpoint::sendUrgent(SessionId id, std::string text) {
+    auto it = m_impl->sessions.find(id);
+    if (it == m_impl->sessions.end())
+        return false;
+    it->second->send(std::move(text), false, true);
     return true;
 }
 

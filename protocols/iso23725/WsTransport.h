@@ -94,6 +94,9 @@ public:
     void shutdown(std::chrono::milliseconds grace, std::function<void()> done);
     // Queues one text frame; false when the session is not open.
     bool send(SessionId id, std::string text);
+    // A text frame ahead of the queued ones (the all-stop: never behind telemetry), after the frame being
+    // written; false when the session is not open.
+    bool sendUrgent(SessionId id, std::string text);
     // Binary frame (never used by ISO 23725 itself: for fault-injection tests of the peer's tolerance).
     bool sendBinary(SessionId id, std::string data);
     void close(SessionId id, const std::string& reason);

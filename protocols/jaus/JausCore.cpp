@@ -1,5 +1,6 @@
 #include "protocols/jaus/JausCore.h"
 
+#include <algorithm>
 #include <set>
 
 namespace ocu::jaus {
@@ -90,13 +91,17 @@ void JausCore::tick() {
     }
 }
 
-std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code) {
+std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code,
+                                                     const std::vector<std::uint16_t>& alreadySent) {
     std::vector<TargetOutcome> out;
     const TimePoint now = m_ctx.now();
+    auto early = [&](std::uint16_t ss) {
+        return std::find(alreadySent.begin(), alreadySent.end(), ss) != alreadySent.end();
+    };
     std::set<std::uint16_t> named;
     for (std::uint16_t ss : subsystems()) {
         named.insert(ss);
-        TargetOutcome o = outcome(ss, setEmergency(ss, code));
+        TargetOutcome o = early(ss) ? emergencySent(ss, code) : outcome(ss, setEmergency(ss, code));
         // A vehicle whose link is down still gets the stop at its last address (it may hear us even if we do
         // not hear it); the result says so, and that its confirmation can only come when it is back.
         if (const RemoteSubsystem* r = m_ctx.find(ss); o.sent && r && r->snap.link == LinkState::Down) {
@@ -109,6 +114,10 @@ std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code) {
         }
         out.push_back(std::move(o));
     }
+    // Sent on the caller's thread to a subsystem forgotten since: it still went on the wire.
+    for (std::uint16_t ss : alreadySent)
+        if (named.insert(ss).second)
+            out.push_back(TargetOutcome{targetId(ss), true, {}});
     // Configured static endpoints never heard: the stop goes to every component of the subsystem at the
     // configured address, so a vehicle that cannot be discovered (no multicast) is still stopped.
     for (const StaticEndpoint& se : config().transport.staticEndpoints) {

@@ -62,7 +62,18 @@ public:
     bool stopDriving(std::uint16_t subsystem) { return m_drive.stopDriving(subsystem); }
     // STOP ALL (issue 13 §2): SetEmergency to every discovered subsystem, whether this console controls it
     // or not; one outcome per subsystem.
-    std::vector<TargetOutcome> setEmergencyAll(EmergencyCode code = EmergencyCode::Safety);
+    // alreadySent: subsystems whose SetEmergency already left on the caller's thread (JausStack's fast path):
+    // they count as sent and the state machine learns it; the others are sent now.
+    std::vector<TargetOutcome> setEmergencyAll(EmergencyCode code = EmergencyCode::Safety,
+                                               const std::vector<std::uint16_t>& alreadySent = {});
+    // One subsystem whose SetEmergency already left on the caller's thread: the state machine learns it.
+    TargetOutcome emergencySent(std::uint16_t subsystem, EmergencyCode code) {
+        return outcome(subsystem, m_management.setEmergency(subsystem, code, true));
+    }
+    // Where SetEmergency for this subsystem would go now (nullopt: it would be refused). No side effects.
+    std::optional<JausId> emergencyTarget(std::uint16_t subsystem) const {
+        return m_management.emergencyTarget(subsystem);
+    }
     // The outcome of a command just run for one subsystem: sent, or not sent with the refusal's reason.
     TargetOutcome outcome(std::uint16_t subsystem, bool sent) const;
     static std::string targetId(std::uint16_t subsystem) { return "jaus:" + std::to_string(subsystem); }

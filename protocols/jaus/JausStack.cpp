@@ -2,20 +2,23 @@
 
 #include <boost/asio/steady_timer.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <map>
+#include <mutex>
 #include <thread>
 
 #include "protocols/common/IoThread.h"
 #include "protocols/common/Log.h"
 #include "protocols/jaus/JausCore.h"
 #include "protocols/jaus/JudpTransport.h"
+#include "protocols/jaus/Messages.h"
 
 namespace ocu::jaus {
 
 struct JausStack::Impl : JausOutput {
     Impl(JausConfig c, JausListener& l, Clock& clk)
-        : cfg(std::move(c)), listener(l), clock(clk), io("jaus"),
+        : cfg(std::move(c)), listener(l), clock(clk), io("jaus", true),
           transport(io.context(), cfg.transport, counters, clock, "ocu.jaus"),
           core(cfg, listener, *this, clock, counters), timer(io.context()) {}
 
@@ -33,8 +36,56 @@ struct JausStack::Impl : JausOutput {
             if (ec)
                 return;
             core.tick();
+            refreshStopPlans();
             scheduleTick();
         });
+    }
+
+    // ---- STOP ALL fast path (issue 13 §10) ----
+    // The io thread keeps, per discovered subsystem, the SetEmergency datagram the core would send now
+    // (routed and encoded; refreshed every tick). A stop sends these from the caller's thread at once, then
+    // tells the core on the io thread, which learns them as sent (retries, drive session, status query) and
+    // sends the rest (subsystems without a plan: JTCP, unknown address, fault injection) itself.
+    struct StopPlan {
+        std::uint16_t subsystem = 0;
+        PlannedDatagram datagram;
+        bool operator==(const StopPlan&) const = default;
+    };
+    static constexpr EmergencyCode kPlannedCode = EmergencyCode::Safety; // what the console's stops use
+
+    void refreshStopPlans() {
+        std::vector<StopPlan> plans;
+        const Bytes payload = encodeU16(msg::SetEmergency, std::uint16_t(kPlannedCode));
+        for (std::uint16_t ss : core.subsystems()) {
+            auto target = core.emergencyTarget(ss);
+            if (!target)
+                continue;
+            if (auto p = transport.plan(cfg.ownId(), *target, payload, SendOptions{Priority::Safety, false}))
+                plans.push_back(StopPlan{ss, std::move(*p)});
+        }
+        if (plans == stopPlans) // written only here (io thread): no lock needed to read
+            return;
+        std::lock_guard lock(stopMutex);
+        stopPlans = std::move(plans);
+    }
+    void clearStopPlans() {
+        std::lock_guard lock(stopMutex);
+        stopPlans.clear();
+    }
+    // Any thread: sends the planned SetEmergency of every subsystem (or of `only`); returns those the socket
+    // took.
+    std::vector<std::uint16_t> sendStopPlans(EmergencyCode code, std::optional<std::uint16_t> only) {
+        std::vector<std::uint16_t> sent;
+        if (code != kPlannedCode)
+            return sent;
+        std::lock_guard lock(stopMutex);
+        for (const StopPlan& p : stopPlans) {
+            if (only && p.subsystem != *only)
+                continue;
+            if (transport.sendPlanned(cfg.ownId(), p.datagram).empty())
+                sent.push_back(p.subsystem);
+        }
+        return sent;
     }
     template <class F> void post(F&& f) {
         if (!running)
@@ -51,6 +102,8 @@ struct JausStack::Impl : JausOutput {
     JausCore core;
     boost::asio::steady_timer timer;
     std::map<std::string, TimePoint> lastDecodeEvent;
+    std::mutex stopMutex;            // guards stopPlans against the callers of the fast path
+    std::vector<StopPlan> stopPlans; // written on the io thread only
     std::atomic<bool> running{false};
     std::atomic<std::uint16_t> port{0};
 };
@@ -104,6 +157,7 @@ void JausStack::stop() {
     for (int i = 0; i < 30 && d->io.call([d] { return d->transport.pendingTcpWrites(); }) > 0; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     d->io.call([d] {
+        d->clearStopPlans();
         d->transport.close();
         return 0;
     });
@@ -174,7 +228,13 @@ void JausStack::releaseControl(std::uint16_t ss, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.releaseControl(ss));
 }
 void JausStack::setEmergency(std::uint16_t ss, EmergencyCode code, OutcomeCallback done) {
-    OCU_JAUS_OUTCOME(ss, d->core.setEmergency(ss, code));
+    Impl* d = m_impl.get();
+    if (!d->running)
+        return;
+    const bool early = !d->sendStopPlans(code, ss).empty();
+    d->post([=, done = std::move(done)] {
+        done({early ? d->core.emergencySent(ss, code) : d->core.outcome(ss, d->core.setEmergency(ss, code))});
+    });
 }
 void JausStack::clearEmergency(std::uint16_t ss, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.clearEmergency(ss));
@@ -202,7 +262,12 @@ void JausStack::stopDriving(std::uint16_t ss, OutcomeCallback done) {
 }
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
-    d->post([=, done = std::move(done)] { done(d->core.setEmergencyAll(code)); });
+    if (!d->running)
+        return;
+    auto early = d->sendStopPlans(code, std::nullopt);
+    d->post([=, done = std::move(done), early = std::move(early)] {
+        done(d->core.setEmergencyAll(code, early));
+    });
 }
 
 #undef OCU_JAUS_POST
@@ -215,6 +280,12 @@ void JausStack::setTransmitFaults(double loss, int delayMs) {
         f.delay = std::chrono::milliseconds(delayMs);
         d->transport.setFaults(f);
     });
+}
+
+std::size_t JausStack::plannedStopCount() const {
+    Impl* d = m_impl.get();
+    std::lock_guard lock(d->stopMutex);
+    return d->stopPlans.size();
 }
 
 Counters& JausStack::counters() {

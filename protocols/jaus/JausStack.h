@@ -55,12 +55,18 @@ public:
     void shutdown(std::uint16_t subsystem, OutcomeCallback done);
     void reset(std::uint16_t subsystem, OutcomeCallback done);
     // STOP ALL: SetEmergency to every discovered subsystem (controlled by this console or not).
+    // setEmergency and setEmergencyAll send from the calling thread at once where the io thread planned the
+    // datagram (UDP, known address: JudpTransport::plan, refreshed every 10 ms), the rest on the io thread;
+    // `done` still runs on the io thread, once the core has learnt what was sent.
     void setEmergencyAll(EmergencyCode code, OutcomeCallback done);
     // The drive session with its outcome: sent when the socket took the session's first (zero) demand, the
     // demand itself (or, unchanged, the stream's latest message), the first of the zero commands.
     void startDriving(std::uint16_t subsystem, OutcomeCallback done);
     void setDriveCommand(std::uint16_t subsystem, DriveCommand command, OutcomeCallback done);
     void stopDriving(std::uint16_t subsystem, OutcomeCallback done);
+
+    // Subsystems whose SetEmergency is planned for the caller's-thread fast path now (tests, diagnostics).
+    std::size_t plannedStopCount() const;
 
     // Fault injection on what the OCU sends (e.g. loss = 1: the OCU falls silent). Tests and ocu-sim drills.
     void setTransmitFaults(double loss, int delayMs = 0);

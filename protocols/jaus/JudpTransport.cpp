@@ -5,6 +5,8 @@
 #include <boost/asio/write.hpp>
 #include <boost/system/system_error.hpp>
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include <netinet/in.h>
@@ -150,6 +152,10 @@ void JudpTransport::open() {
         }
     }
     m_open = true;
+    {
+        std::lock_guard lock(m_fastMutex);
+        m_fastOpen = true;
+    }
     if (m_acceptor)
         startAccept();
     startReceive(*m_unicast);
@@ -159,6 +165,10 @@ void JudpTransport::open() {
 
 void JudpTransport::close() {
     m_open = false;
+    {
+        std::lock_guard lock(m_fastMutex);
+        m_fastOpen = false;
+    }
     boost::system::error_code ec;
     if (m_acceptor)
         m_acceptor->close(ec);
@@ -466,11 +476,10 @@ std::string JudpTransport::send(const JausId& src, const JausId& dst, const Byte
     // A destination within one subsystem (ss.255.255) may be reached through its static endpoint.
     if (!dst.isBroadcast() || dst.subsystem != 0xFFFF) {
         if (auto c = tcpRoute(dst)) {
-            std::uint16_t& tseq = m_sequence[src.value()];
-            h.sequence = tseq;
             h.ackNak = AckNak::None; // TCP is reliable
+            const std::size_t n = fragmentPayload(h, payload, m_cfg.maxFragmentPayload).size();
+            h.sequence = takeSequence(src, n);
             auto frags = fragmentPayload(h, payload, m_cfg.maxFragmentPayload);
-            tseq = std::uint16_t(tseq + frags.size());
             for (auto& f : frags) {
                 tcpWrite(c, encodeJtcp(f.header, f.payload, !c->versionSent));
                 c->versionSent = true;
@@ -485,12 +494,10 @@ std::string JudpTransport::send(const JausId& src, const JausId& dst, const Byte
         if (auto eps = staticUdpEndpoints(dst); !eps.empty()) {
             h.broadcast = BroadcastFlag::Local;
             h.ackNak = AckNak::None;
-            std::uint16_t& seq = m_sequence[src.value()];
-            h.sequence = seq;
             auto frags = fragmentPayload(h, payload, m_cfg.maxFragmentPayload);
             if (frags.size() > 1)
                 return "a broadcast may not be fragmented";
-            seq = std::uint16_t(seq + 1);
+            frags[0].header.sequence = takeSequence(src, 1);
             m_lastSendError.clear();
             for (auto& ep : eps)
                 transmit(encodeDatagram(frags[0].header, frags[0].payload), ep);
@@ -510,15 +517,14 @@ std::string JudpTransport::send(const JausId& src, const JausId& dst, const Byte
         to = broadcastEndpoint();
         m_counters.add("tx.unknown_destination");
     }
-    std::uint16_t& seq = m_sequence[src.value()];
-    h.sequence = seq;
-    auto frags = fragmentPayload(h, payload, m_cfg.maxFragmentPayload);
-    if (frags.size() > 1 && h.broadcast != BroadcastFlag::None) {
+    const std::size_t nfrag = fragmentPayload(h, payload, m_cfg.maxFragmentPayload).size();
+    if (nfrag > 1 && h.broadcast != BroadcastFlag::None) {
         m_counters.add("tx.refused.broadcast_too_large");
         logWarning(m_log, "refusing to broadcast a message larger than one fragment");
         return "a broadcast may not be fragmented";
     }
-    seq = std::uint16_t(seq + frags.size());
+    h.sequence = takeSequence(src, nfrag);
+    auto frags = fragmentPayload(h, payload, m_cfg.maxFragmentPayload);
     m_lastSendError.clear();
     for (auto& f : frags)
         transmit(encodeDatagram(f.header, f.payload), to);
@@ -553,6 +559,98 @@ void JudpTransport::transmit(Bytes datagram, const Endpoint& to) {
         return;
     }
     out(std::move(datagram), to);
+}
+
+std::uint16_t JudpTransport::takeSequence(const JausId& src, std::size_t n) {
+    std::lock_guard lock(m_sequenceMutex);
+    std::uint16_t& seq = m_sequence[src.value()];
+    const std::uint16_t first = seq;
+    seq = std::uint16_t(seq + n);
+    return first;
+}
+
+bool JudpTransport::hasTcpRoute(const JausId& dst) const {
+    if (auto it = m_tcpRoutes.find(dst.value()); it != m_tcpRoutes.end())
+        if (auto c = it->second.lock(); c && !c->dead)
+            return true;
+    for (const auto& s : m_cfg.staticEndpoints)
+        if (s.tcp && s.id.subsystem == dst.subsystem &&
+            (s.id.node == 0xFF || dst.node == 0xFF || s.id.node == dst.node) &&
+            (s.id.component == 0xFF || dst.component == 0xFF || s.id.component == dst.component))
+            return true;
+    return false;
+}
+
+std::optional<PlannedDatagram> JudpTransport::plan(const JausId& src, const JausId& dst, const Bytes& payload,
+                                                   SendOptions o) const {
+    // The same routing as send(), minus everything with side effects or more than one datagram.
+    if (!m_open || m_faults.loss > 0 || m_faults.delay > Duration::zero() || m_faults.reorder)
+        return std::nullopt;
+    if (payload.size() > (m_cfg.maxFragmentPayload ? m_cfg.maxFragmentPayload : kMaxFragmentPayload))
+        return std::nullopt;
+    if ((!dst.isBroadcast() || dst.subsystem != 0xFFFF) && hasTcpRoute(dst))
+        return std::nullopt;
+    JudpHeader h;
+    h.priority = o.priority;
+    h.ackNak = o.ackRequest ? AckNak::Request : AckNak::None;
+    h.source = src;
+    h.destination = dst;
+    PlannedDatagram p;
+    if (dst.isBroadcast() && dst.subsystem != 0xFFFF) {
+        if (auto eps = staticUdpEndpoints(dst); !eps.empty()) {
+            h.broadcast = BroadcastFlag::Local;
+            h.ackNak = AckNak::None;
+            p.to = std::move(eps);
+        }
+    }
+    if (p.to.empty()) {
+        if (dst.isBroadcast()) {
+            h.broadcast = dst.subsystem == 0xFFFF ? BroadcastFlag::Global : BroadcastFlag::Local;
+            h.ackNak = AckNak::None;
+            p.to.push_back(broadcastEndpoint());
+        } else if (auto ep = resolve(dst)) {
+            p.to.push_back(*ep);
+        } else {
+            return std::nullopt; // unknown address: send() broadcasts with an ACK request and counts it
+        }
+    }
+    h.sequence = 0;
+    auto frags = fragmentPayload(h, payload, m_cfg.maxFragmentPayload);
+    if (frags.size() != 1)
+        return std::nullopt;
+    p.datagram = encodeDatagram(frags[0].header, frags[0].payload);
+    return p;
+}
+
+std::string JudpTransport::sendPlanned(const JausId& src, const PlannedDatagram& planned) {
+    if (planned.datagram.size() < 1 + kMessageOverhead || planned.to.empty())
+        return "nothing planned";
+    std::lock_guard lock(m_fastMutex);
+    if (!m_fastOpen || !m_unicast)
+        return "the JAUS transport is closed";
+    // The sequence number closes the message (AS5669A JUDP header: ... payload, sequence number), little
+    // endian like every JUDP field.
+    Bytes d = planned.datagram;
+    const std::uint16_t seq = takeSequence(src, 1);
+    d[d.size() - 2] = std::uint8_t(seq & 0xFF);
+    d[d.size() - 1] = std::uint8_t(seq >> 8);
+    const int fd = m_unicast->socket.native_handle();
+    std::string why;
+    for (const auto& ep : planned.to) {
+        // The kernel's sendto is thread-safe; MSG_DONTWAIT: a full socket buffer is a refusal, never a wait.
+        const ssize_t n =
+            ::sendto(fd, d.data(), d.size(), MSG_DONTWAIT, ep.data(), static_cast<socklen_t>(ep.size()));
+        if (n != static_cast<ssize_t>(d.size())) {
+            m_counters.add("tx.errors");
+            why = "send to " + ep.address().to_string() + ":" + std::to_string(ep.port()) +
+                  " failed: " + (n < 0 ? std::strerror(errno) : "short write");
+        } else {
+            m_counters.add("tx.datagrams");
+        }
+    }
+    if (why.empty())
+        m_counters.add("tx.planned");
+    return why;
 }
 
 bool JudpTransport::rawSend(const Bytes& datagram, const Endpoint& to) {

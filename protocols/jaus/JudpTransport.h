@@ -14,6 +14,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <random>
 #include <set>
@@ -34,6 +35,15 @@ struct NetFaults {
     double loss = 0;      // probability 0..1 of dropping a datagram
     Duration delay{};     // added latency
     bool reorder = false; // swap every other pair of datagrams
+};
+
+// One datagram routed and encoded ahead of time on the io thread, sent later from any thread
+// (JudpTransport::sendPlanned): the STOP ALL path leaves from the operator's thread without waiting for the
+// io thread to wake up (issue 13 §10).
+struct PlannedDatagram {
+    Bytes datagram; // one message, encoded with sequence number 0: sendPlanned writes the real one
+    std::vector<boost::asio::ip::udp::endpoint> to;
+    bool operator==(const PlannedDatagram&) const = default;
 };
 
 class JudpTransport {
@@ -57,6 +67,16 @@ public:
     // Returns empty when the message was handed to a socket (or queued on a JTCP connection), else why not.
     std::string send(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions options);
     std::string endpointOf(const JausId& id) const;
+    // Io thread: the datagram send() would emit for this message, when it is exactly one UDP datagram sent
+    // without side effects (no JTCP route, no fragmentation, no unknown destination, no fault injection);
+    // otherwise nullopt and the message must go through send().
+    std::optional<PlannedDatagram> plan(const JausId& src, const JausId& dst, const Bytes& payload,
+                                        SendOptions options) const;
+    // Any thread: takes src's next sequence number (shared with send(), so numbers stay unique and
+    // consecutive) and hands the datagram to the unicast socket without blocking. Empty when every
+    // endpoint's socket took it, else why not (nothing is retried here: the caller sends through the io
+    // thread instead). Sequence numbers of datagrams not taken are spent, as for a failed send().
+    std::string sendPlanned(const JausId& src, const PlannedDatagram& planned);
     std::uint16_t localPort() const;
     std::uint16_t localTcpPort() const; // JTCP server port, 0 when not listening
     // JTCP bytes still queued or being written (stop() waits for the releases to leave).
@@ -77,6 +97,9 @@ private:
     staticUdpEndpoints(const JausId& dst) const; // UDP static entries of dst's subsystem
     void transmit(Bytes datagram, const Endpoint& to);
     bool rawSend(const Bytes& datagram, const Endpoint& to);
+    bool hasTcpRoute(const JausId& dst) const;
+    // The first of n consecutive sequence numbers of src (any thread).
+    std::uint16_t takeSequence(const JausId& src, std::size_t n);
     void deliver(JudpMessage m, TimePoint now, const std::function<void(const std::string&)>& reject);
     // JTCP (AS5669A; AEP-4818 §4.7.1: static address list, port 3794)
     void startAccept();
@@ -97,7 +120,11 @@ private:
     ErrorHandler m_onError;
     std::function<bool(const JausId&)> m_isLocal;
     std::map<std::uint32_t, Endpoint> m_learned;
+    std::mutex m_sequenceMutex;                        // send() on the io thread, sendPlanned() anywhere
     std::map<std::uint32_t, std::uint16_t> m_sequence; // per source component
+    // sendPlanned() on another thread never uses a closed (or reused) descriptor: close() takes this first.
+    std::mutex m_fastMutex;
+    bool m_fastOpen = false; // under m_fastMutex
     Reassembler m_reassembler;
     NetFaults m_faults;
     std::mt19937 m_rng{12345};

@@ -12,13 +12,13 @@ namespace ocu::osyris {
 namespace asio = boost::asio;
 
 struct OsyrisStack::Impl {
-    IoThread io{"osyris"};
+    IoThread io{"osyris", true};
     asio::steady_timer beat{io.context()};
     std::unique_ptr<RibbonStore> store;
     std::unique_ptr<StationCore> core;
     std::unique_ptr<OsyrisTransport> transport; // after core: it counts into the core's counters
     RxImpairment imp;
-    bool running = false;
+    std::atomic<bool> running{false};
     bool lastSendOk = false; // io thread: the last datagram went to every destination
     std::chrono::steady_clock::time_point nextBeat;
     int beatMs = 100;
@@ -160,6 +160,24 @@ void OsyrisStack::sendText(std::string text, OutcomeCallback done) {
     if (!m_impl->running) {
         done({TargetOutcome{groupTarget(), false, "the OSYRIS station is not running"}});
         return;
+    }
+    // From the calling thread at once (issue 13 §10: the STOP text does not wait for the io thread to wake
+    // up); the io thread sends it instead when the socket would not take it without waiting.
+    if (StationCore* c = m_impl->core.get(); c && m_impl->transport) {
+        const Bytes d = c->textDatagram(text);
+        std::string why;
+        std::size_t taken = 0;
+        const bool all = m_impl->transport->sendFromAnyThread(d, &why, &taken);
+        if (taken > 0)
+            c->textSent(d.size());
+        if (all) {
+            done({TargetOutcome{groupTarget(), true, {}}});
+            return;
+        }
+        if (taken > 0) { // some destinations have it: sending again would show it twice there
+            done({TargetOutcome{groupTarget(), false, "socket error: " + why}});
+            return;
+        }
     }
     m_impl->io.post([this, t = std::move(text), done = std::move(done)] {
         TargetOutcome o{groupTarget(), false, "the OSYRIS station is not running"};

@@ -35,8 +35,8 @@ public:
     void sendText(std::string text);
     // The text as its own datagram at once (not with the next Beat), with its outcome (issue 13 §1): `done`
     // runs once with one TargetOutcome for the group (target groupTarget()): sent when the socket took the
-    // datagram for every destination, otherwise the reason. On the io thread; on the calling thread when the
-    // station is not running.
+    // datagram for every destination, otherwise the reason. Sent from the calling thread (and `done` run
+    // there) when the socket takes it at once; otherwise on the io thread (and `done` there).
     void sendText(std::string text, OutcomeCallback done);
     std::string groupTarget() const {
         return "osyris group " + m_cfg.group + ":" + std::to_string(m_cfg.port);

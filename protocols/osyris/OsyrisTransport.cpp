@@ -7,7 +7,10 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <array>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <mutex>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -67,6 +70,8 @@ struct OsyrisTransport::Impl {
     RxImpairment imp;
     std::mt19937 rng{1};
     bool open = false;
+    std::mutex fastMutex; // sendFromAnyThread never uses a closed (or reused) descriptor
+    bool fastOpen = false;
 };
 
 OsyrisTransport::OsyrisTransport(asio::io_context& io, Counters& counters)
@@ -112,6 +117,8 @@ void OsyrisTransport::open(const OsyrisConfig& cfg) {
     }
     m_impl->destinations = std::move(destinations);
     m_impl->open = true;
+    std::lock_guard lock(m_impl->fastMutex);
+    m_impl->fastOpen = true;
 }
 
 void OsyrisTransport::startReceive(DatagramHandler onDatagram) {
@@ -136,9 +143,40 @@ bool OsyrisTransport::send(const Bytes& datagram) {
     return ok;
 }
 
+bool OsyrisTransport::sendFromAnyThread(const Bytes& datagram, std::string* why, std::size_t* taken) {
+    if (taken)
+        *taken = 0;
+    std::lock_guard lock(m_impl->fastMutex);
+    if (!m_impl->fastOpen || m_impl->destinations.empty()) {
+        if (why)
+            *why = "the OSYRIS socket is closed";
+        return false;
+    }
+    const int fd = m_impl->socket.native_handle();
+    bool ok = true;
+    for (const auto& ep : m_impl->destinations) {
+        // The kernel's sendto is thread-safe; MSG_DONTWAIT: a full socket buffer is a refusal, never a wait.
+        const ssize_t n = ::sendto(fd, datagram.data(), datagram.size(), MSG_DONTWAIT, ep.data(),
+                                   static_cast<socklen_t>(ep.size()));
+        if (n != static_cast<ssize_t>(datagram.size())) {
+            m_impl->counters.add("tx.error");
+            if (why)
+                *why = n < 0 ? std::strerror(errno) : "short write";
+            ok = false;
+        } else if (taken) {
+            ++*taken;
+        }
+    }
+    return ok;
+}
+
 void OsyrisTransport::close() {
     if (!m_impl->open)
         return;
+    {
+        std::lock_guard lock(m_impl->fastMutex);
+        m_impl->fastOpen = false;
+    }
     m_impl->open = false;
     boost::system::error_code ec;
     leaveMulticast(m_impl->socket, m_impl->options); // IGMP leave

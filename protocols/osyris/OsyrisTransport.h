@@ -3,7 +3,7 @@
 // outbound multicast on the configured interface), broadcast (wildcard bind) or unicast (interface bind),
 // the receive loop, and sends to the group/peer address plus any extra unicast peers. A receive-side
 // impairment (loss, duplication, reordering on the real socket) serves tests and demos. Runs on the owner's
-// io_context; not thread-safe (call from that thread once open() returned).
+// io_context; not thread-safe (call from that thread once open() returned), except sendFromAnyThread.
 #include "protocols/osyris/OsyrisConfig.h"
 
 #include "protocols/common/Bytes.h"
@@ -47,6 +47,11 @@ public:
     // Sends to every destination; failures count as tx.error.
     // True when every destination took the datagram (it is on the wire), false on a socket error or closed.
     bool send(const Bytes& datagram);
+    // Any thread (the STOP fast path): hands the datagram to the socket for every destination without
+    // blocking. True when every destination took it; otherwise false with the reason in *why (the caller
+    // sends through the io thread instead). Safe against a concurrent close().
+    // *taken counts the destinations that took it.
+    bool sendFromAnyThread(const Bytes& datagram, std::string* why, std::size_t* taken = nullptr);
     // Why the last failed send failed (socket error text).
     const std::string& lastError() const { return m_lastError; }
     // IGMP leave and close; impaired datagrams still held back are dropped.

@@ -199,12 +199,21 @@ void StationCore::sendText(const std::string& text, std::uint8_t to) {
     // datagram is "recommended, but not required"). The queue keeps its Beat pacing (§7 Beat); a text carries
     // no slot, so leaving ahead of queued positions changes nothing for them. One datagram, so the caller's
     // send result is this text's.
+    const Bytes b = textDatagram(text, to);
+    textSent(b.size());
+    m_send(b);
+}
+
+Bytes StationCore::textDatagram(const std::string& text, std::uint8_t to) const {
     Bytes b;
     encodeMsg(b, idx(), to, text, m_cfg.checksum);
+    return b;
+}
+
+void StationCore::textSent(std::size_t bytes) {
     m_counters.add("tx.msg");
     m_counters.add("tx.datagrams");
-    m_counters.add("tx.bytes", b.size());
-    m_send(b);
+    m_counters.add("tx.bytes", bytes);
 }
 
 void StationCore::ping(std::uint8_t target) {

@@ -105,6 +105,11 @@ public:
     std::uint32_t publishOwnPosition(CmPos p, std::vector<PosProp> props = {});
     // An operator text (the console's STOP among them) as its own datagram at once, not with the next Beat.
     void sendText(const std::string& text, std::uint8_t to = kIdxAll);
+    // The same datagram, encoded without sending (any thread: reads only the configuration), and the
+    // counting sendText does once a caller sent it itself (OsyrisStack's STOP fast path; counters are
+    // thread-safe). A text carries no slot, so sending it from another thread leaves the ribbon state alone.
+    Bytes textDatagram(const std::string& text, std::uint8_t to = kIdxAll) const;
+    void textSent(std::size_t bytes);
     void ping(std::uint8_t idx);
     // The same request as its own datagram at once (an operator's ping, whose send result is then this
     // request's alone; §7 binds only Alive to the Beat).

@@ -14,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <thread>
+
 using namespace ocu;
 using ocu::testing::gateResult;
 
@@ -94,6 +96,56 @@ private slots:
         QCOMPARE(o.value(QStringLiteral("origin")).toString(), QStringLiteral("test"));
         QCOMPARE(o.value(QStringLiteral("ok")).toBool(), true);
         QCOMPARE(o.value(QStringLiteral("targets")).toArray().size(), 3);
+    }
+
+    // Issue 13 §10: the headless stdin reader's STOP ALL. stopAllEarly() on another thread calls at once the
+    // bridges that send from the caller's thread (and only those); stopAll(origin, h, early) on the gate's
+    // thread calls the others and records it all as one STOP ALL: every target, one audit line, no bridge
+    // called twice. Bridges that send from the caller's thread come first in a plain stopAll too.
+    void earlyStopFromAnotherThreadIsOneStopAll() {
+        QTemporaryDir dir;
+        AlarmModel alarms;
+        CommandGate stop(&alarms);
+        stop.setAuditLogPath(dir.filePath(QStringLiteral("audit.jsonl")));
+        FakeFleetBridge iso(Protocol::Iso23725), jaus(Protocol::Jaus), osy(Protocol::Osyris);
+        jaus.fromCallersThread = true;
+        osy.fromCallersThread = true;
+        for (FakeFleetBridge* b : {&iso, &jaus, &osy}) {
+            stop.addBridge(b);
+            b->setMachine(machine(protocolPrefix(b->protocol()) + QStringLiteral("1")));
+        }
+        std::shared_ptr<EarlyStop> early;
+        std::thread::id reader;
+        std::thread t([&] {
+            reader = std::this_thread::get_id();
+            early = stop.stopAllEarly();
+        });
+        t.join();
+        QCOMPARE(jaus.calls().size(), 1);
+        QCOMPARE(osy.calls().size(), 1);
+        QVERIFY(jaus.stopAllThread() == reader);
+        QVERIFY(osy.stopAllThread() == reader);
+        QCOMPARE(iso.calls().size(), 0);                     // not thread-safe: the gate's thread calls it
+        QCOMPARE(QFile::exists(stop.auditLogPath()), false); // recorded only with the rest
+
+        const CommandResult r =
+            gateResult([&](auto h) { stop.stopAll(QStringLiteral("headless"), h, early); });
+        QVERIFY(r.ok);
+        QCOMPARE(r.targets.size(), 3);
+        for (FakeFleetBridge* b : {&iso, &jaus, &osy})
+            QCOMPARE(b->calls().size(), 1); // none twice
+        QVERIFY(iso.stopAllThread() == std::this_thread::get_id());
+        QFile f(stop.auditLogPath());
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+        QCOMPARE(lines.size(), 1);
+        QCOMPARE(QJsonDocument::fromJson(lines[0]).object().value(QStringLiteral("targets")).toArray().size(),
+                 3);
+
+        // A plain STOP ALL: the caller's-thread bridges first, whatever the order they were added in.
+        const CommandResult r2 = gateResult([&](auto h) { stop.stopAll(QStringLiteral("gui"), h); });
+        QCOMPARE(r2.targets.size(), 3);
+        QCOMPARE(r2.targets.last().id, QStringLiteral("iso23725:1"));
     }
 
     void stopAllStillReachesOthersWhenOneRefuses() {

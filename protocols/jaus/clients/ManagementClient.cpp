@@ -42,27 +42,39 @@ bool ManagementClient::sendEmergency(const JausId& target, EmergencyCode code) {
     return sent;
 }
 
-bool ManagementClient::setEmergency(std::uint16_t ss, EmergencyCode code) {
-    // Allowed for every role, the monitor included: an E-stop must never be refused by the console.
-    RemoteSubsystem* r = m_ctx.find(ss);
+std::optional<JausId> ManagementClient::emergencyTarget(std::uint16_t ss) const {
+    const RemoteSubsystem* r = m_ctx.find(ss);
     if (!r)
-        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
+        return std::nullopt;
     // Services not reported yet: the stop still goes out, to every component of the subsystem (ss.255.255),
     // because a stop must reach the vehicle if anything can. Services known and none offers Management
     // (directly or by inheritance): nobody there would obey, so the outcome says so instead of "sent".
     JausId target = r->managementTarget();
     if (!target.subsystem) {
         if (r->components.known)
-            return m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
+            return std::nullopt;
         target = JausId{ss, 0xFF, 0xFF};
     }
+    return target;
+}
+
+bool ManagementClient::setEmergency(std::uint16_t ss, EmergencyCode code, bool alreadySent) {
+    // Allowed for every role, the monitor included: an E-stop must never be refused by the console.
+    const auto target = emergencyTarget(ss);
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!target || !r)
+        return alreadySent ? true : m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
     State& s = m_state[ss];
     s.emergencyCode = code;
     m_drive.endSession(*r, true);
     // Repeated until ReportStatus shows EMERGENCY (see tick).
     s.emergencyRetries = 5;
     s.lastEmergencySent = m_ctx.now();
-    if (!sendEmergency(target, code))
+    if (alreadySent) {
+        m_ctx.send(*target, encodeEmpty(msg::QueryStatus));
+        return true;
+    }
+    if (!sendEmergency(*target, code))
         return m_ctx.sendFailed(ss, "SetEmergency");
     return true;
 }

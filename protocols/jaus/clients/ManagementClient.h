@@ -6,6 +6,7 @@
 // monitor.
 #include <cstdint>
 #include <map>
+#include <optional>
 
 #include "protocols/jaus/Messages.h"
 #include "protocols/jaus/clients/ClientService.h"
@@ -29,10 +30,15 @@ public:
     // Commands; each returns false and emits CommandRefused when not allowed.
     // id: msg::Resume, Standby, Shutdown or Reset; what names it in the refusal.
     bool command(std::uint16_t subsystem, std::uint16_t id, const char* what);
-    bool setEmergency(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety);
+    // alreadySent: the SetEmergency left on the caller's thread (JausStack's STOP ALL fast path); the state
+    // machine learns it (retries, drive session, status query) exactly as if it had sent it itself.
+    bool setEmergency(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety,
+                      bool alreadySent = false);
     // STOP ALL to a subsystem configured as a static endpoint and never heard (issue 13 §2/§3): SetEmergency
     // to all of its components (ss.255.255) at the configured address. True when the socket took it.
     bool setEmergencyUnheard(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety);
+    // Where setEmergency would send SetEmergency now (nullopt: it would refuse). No side effects.
+    std::optional<JausId> emergencyTarget(std::uint16_t subsystem) const;
     bool clearEmergency(std::uint16_t subsystem);
 
 private:

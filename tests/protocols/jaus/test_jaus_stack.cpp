@@ -192,6 +192,39 @@ private slots:
         QCOMPARE(f.demo.find(126)->state().x, x); // still stopped: nothing drives it
     }
 
+    // STOP ALL leaves from the caller's thread (issue 13 §10): once the io thread planned both vehicles'
+    // SetEmergency, setEmergencyAll sends them before it returns, and the core still learns them: both
+    // targets reported sent, the driving vehicle stops, its drive session ends, both report EMERGENCY.
+    void stopAllFromTheCallersThreadIsLearntByTheCore() {
+        Fixture f;
+        QVERIFY(f.takeControl(126));
+        QVERIFY(waitFor([&] { return f.ready(127); }));
+        f.drive(126, 1.0);
+        QVERIFY(waitFor([&] { return f.demo.find(126)->state().v > 0.9; }));
+        QVERIFY(waitFor([&] { return f.stack.plannedStopCount() == 2; }));
+        const auto plannedBefore = f.stack.counters().get("tx.planned");
+        std::mutex m;
+        std::vector<TargetOutcome> out;
+        f.stack.setEmergencyAll(EmergencyCode::Safety, [&](std::vector<TargetOutcome> o) {
+            std::lock_guard lock(m);
+            out = std::move(o);
+        });
+        // Both planned datagrams were taken by the socket before setEmergencyAll returned.
+        QCOMPARE(f.stack.counters().get("tx.planned"), plannedBefore + 2);
+        QVERIFY(waitFor([&] {
+            std::lock_guard lock(m);
+            return out.size() == 2;
+        }));
+        for (const auto& o : out)
+            QVERIFY2(o.sent, o.reason.c_str());
+        for (std::uint16_t ss : {126, 127})
+            QVERIFY(
+                waitFor([&] { return f.demo.find(ss)->state().management == ManagementState::Emergency; }));
+        QCOMPARE(f.demo.find(126)->state().v, 0.0);
+        QVERIFY(waitFor([&] { return f.snap(126)->emergency && f.snap(127)->emergency; }));
+        QVERIFY(!f.snap(126)->driving); // the core ended the drive session as for its own SetEmergency
+    }
+
     // The UGV's own watchdog on its real clock. Its 1 s window (not before 0.9 s, by 1.2 s) is proven on a
     // FakeClock by test_jaus_services driveTimeoutStopsAndRecovers; here it never fires early.
     void ugvStopsAfterDriveTimeoutWhenStreamingStops() {

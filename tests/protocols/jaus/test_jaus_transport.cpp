@@ -4,6 +4,11 @@
 #include <QtTest>
 
 #include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/udp.hpp>
+
+#include <atomic>
+#include <set>
+#include <thread>
 
 #include "protocols/common/Log.h"
 #include "protocols/common/Udp.h"
@@ -65,6 +70,88 @@ class TestJausTransport : public QObject {
 
 private slots:
     void initTestCase() { setLogThreshold(LogLevel::Warning); }
+
+    // The STOP ALL fast path (issue 13 §10): a datagram planned on the io thread and sent from another thread
+    // while the io thread sends too. Every datagram arrives byte-exact (the planned one equals what send()
+    // encodes with its sequence number) and the source's sequence numbers stay unique and consecutive.
+    void plannedSendFromAnotherThreadIsByteExactAndSharesTheSequence() {
+        namespace asio = boost::asio;
+        boost::asio::io_context io;
+        asio::ip::udp::socket peer(io, asio::ip::udp::endpoint(asio::ip::make_address_v4("127.0.0.1"), 0));
+        peer.set_option(asio::socket_base::receive_buffer_size(4 << 20));
+        const std::uint16_t mc = findFreeUdpPort();
+        auto s = loopback(mc);
+        const JausId vehicle{126, 1, 1};
+        s.staticEndpoints.push_back(
+            {JausId{126, 255, 255}, "127.0.0.1", peer.local_endpoint().port(), false});
+        Node ocu(io, s, JausId{200, 1, 1});
+        ocu.transport.open();
+        const Bytes stop = encodeU16(msg::SetEmergency, std::uint16_t(EmergencyCode::Safety));
+        const SendOptions safety{Priority::Safety, false};
+        auto planned = ocu.transport.plan(ocu.self, vehicle, stop, safety);
+        QVERIFY(planned);
+        QCOMPARE(planned->to.size(), std::size_t(1));
+        QCOMPARE(planned->to[0].port(), peer.local_endpoint().port());
+        // Nothing is planned where send() would do more than one plain datagram.
+        QVERIFY(!ocu.transport.plan(ocu.self, JausId{77, 1, 1}, stop, safety));  // unknown address
+        QVERIFY(!ocu.transport.plan(ocu.self, vehicle, Bytes(5000, 0), safety)); // fragmented
+
+        constexpr int kEach = 300;
+        std::vector<Bytes> got;
+        std::thread rx([&] {
+            std::array<std::uint8_t, 2048> buf{};
+            peer.non_blocking(true);
+            const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+            while (int(got.size()) < 2 * kEach && std::chrono::steady_clock::now() < end) {
+                boost::system::error_code ec;
+                const std::size_t n = peer.receive(asio::buffer(buf), 0, ec);
+                if (ec == asio::error::would_block) {
+                    std::this_thread::sleep_for(std::chrono::microseconds(200));
+                    continue;
+                }
+                if (!ec)
+                    got.emplace_back(buf.begin(), buf.begin() + long(n));
+            }
+        });
+        std::atomic<int> fastFailures{0};
+        std::thread fast([&] {
+            for (int i = 0; i < kEach; ++i)
+                if (!ocu.transport.sendPlanned(ocu.self, *planned).empty())
+                    ++fastFailures;
+        });
+        for (int i = 0; i < kEach; ++i) // this thread plays the io thread
+            QVERIFY(ocu.transport.send(ocu.self, vehicle, encodeEmpty(msg::QueryStatus), {}).empty());
+        fast.join();
+        rx.join();
+        QCOMPARE(fastFailures.load(), 0);
+        QCOMPARE(int(got.size()), 2 * kEach);
+        std::set<std::uint16_t> seqs;
+        int stops = 0;
+        for (const Bytes& d : got) {
+            auto dec = decodeDatagram(d);
+            QVERIFY(dec);
+            QCOMPARE(dec->messages.size(), std::size_t(1));
+            const JudpMessage& m = dec->messages[0];
+            QCOMPARE(m.header.source, ocu.self);
+            QVERIFY(seqs.insert(m.header.sequence).second); // unique
+            if (m.messageId() == msg::SetEmergency) {
+                ++stops;
+                JudpHeader h;
+                h.priority = Priority::Safety;
+                h.source = ocu.self;
+                h.destination = vehicle;
+                h.sequence = m.header.sequence;
+                QCOMPARE(d, encodeDatagram(h, stop)); // byte-exact, as send() would have encoded it
+            }
+        }
+        QCOMPARE(stops, kEach);
+        QCOMPARE(*seqs.begin(), std::uint16_t(0));
+        QCOMPARE(*seqs.rbegin(), std::uint16_t(2 * kEach - 1)); // consecutive: no number lost or reused
+        QCOMPARE(ocu.counters.get("tx.planned"), std::uint64_t(kEach));
+        // Closed: the fast path refuses instead of writing to a closed descriptor.
+        ocu.transport.close();
+        QVERIFY(!ocu.transport.sendPlanned(ocu.self, *planned).empty());
+    }
 
     void unknownDestinationGoesMulticastAndAckTeachesTheAddress() {
         boost::asio::io_context io;

@@ -12,6 +12,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 #include <set>
@@ -144,6 +145,53 @@ private slots:
             if (const auto* r = std::get_if<CmRequest>(&m.body))
                 found = found || (r->type == RequestType::Ping && m.header.whose == 7);
         QVERIFY(found);
+    }
+
+    // Issue 13 §10: the STOP text leaves from the caller's thread (no wait for the io thread), `done` runs
+    // there before sendText returns, and another station receives the text byte-exact.
+    void stopTextLeavesFromTheCallersThread() {
+        OsyrisDemoOptions o;
+        OsyrisDemo demo(o); // not started: only its loopback settings
+        struct Texts : Recorder {
+            std::vector<std::pair<int, std::string>> texts;
+            void onText(std::uint8_t idx, const std::string& t) override {
+                std::lock_guard l(m);
+                texts.emplace_back(idx, t);
+            }
+        } heard;
+        Recorder rec;
+        OsyrisConfig a = demo.ocuConfig();
+        a.port = findFreeUdpPort();
+        OsyrisConfig b = a;
+        b.stationIndex = std::uint8_t(a.stationIndex + 1);
+        OsyrisStack ocu(a, rec), other(b, heard);
+        std::string err;
+        QVERIFY2(other.start(&err), err.c_str());
+        QVERIFY2(ocu.start(&err), err.c_str());
+        const std::string text = "STOP ALL issued by the operator control unit";
+        std::vector<TargetOutcome> out;
+        std::thread::id ranOn;
+        ocu.sendText(text, [&](std::vector<TargetOutcome> o) {
+            ranOn = std::this_thread::get_id();
+            out = std::move(o);
+        });
+        QCOMPARE(out.size(), std::size_t(1)); // already decided: sent by this thread
+        QVERIFY(ranOn == std::this_thread::get_id());
+        QVERIFY2(out[0].sent, out[0].reason.c_str());
+        QCOMPARE(out[0].target, ocu.groupTarget());
+        QCOMPARE(ocu.counters().get("tx.msg"), std::uint64_t(1));
+        QVERIFY(waitFor([&] {
+            std::lock_guard l(heard.m);
+            return std::any_of(heard.texts.begin(), heard.texts.end(),
+                               [&](const auto& t) { return t.first == a.stationIndex && t.second == text; });
+        }));
+        // Stopped: not sent, and `done` says why instead of claiming it.
+        ocu.stop();
+        out.clear();
+        ocu.sendText(text, [&](std::vector<TargetOutcome> o) { out = std::move(o); });
+        QCOMPARE(out.size(), std::size_t(1));
+        QVERIFY(!out[0].sent);
+        other.stop();
     }
 
     void demoSiteAndOcuJoin() {
