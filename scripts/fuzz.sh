@@ -89,7 +89,7 @@ for h in "${harnesses[@]}"; do
   # The scratch corpus first (libFuzzer writes new inputs into the first directory), the committed one read.
   set +e
   ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-    nice -n 19 "$bin" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    nice -n 19 "$bin" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
     -artifact_prefix="$work/artifacts/" "$work/new" "$corpus_root/$h" >"$log" 2>&1
   rc=$?
   set -e
