@@ -246,7 +246,7 @@ Result<MapModel> MapAssembler::finish() {
     static const std::set<std::string> taskValues = {"load", "offload", "supply", "park",
                                                      "wait", "drive",   "fuel"};
     for (auto& entry : m.ways) {
-        // Not a structured binding: the lambdas below use w, and clang 14 (the fuzz build) cannot capture one.
+        // Not a structured binding: lambdas below use w; clang 14 (the fuzz build) cannot capture one.
         const std::int64_t id = entry.first;
         MapWay& w = entry.second;
         const std::string wn = "way " + std::to_string(id);
