@@ -12,6 +12,9 @@ packages=(
   libgeographiclib-dev libpugixml-dev libsdl2-dev libsqlite3-dev
   libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-dev libegl-mesa0 libglew-dev
+  # Fuzzing (scripts/fuzz.sh, issue 14): clang 14; -fsanitize=fuzzer needs libclang_rt.fuzzer*.a, which Debian 12
+  # ships in libclang-rt-14-dev (only a Recommends of clang-14, so not installed by --no-install-recommends).
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

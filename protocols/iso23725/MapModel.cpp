@@ -245,7 +245,10 @@ Result<MapModel> MapAssembler::finish() {
     static const std::set<std::string> onewayValues = {"yes", "no", "reversible", "alternating"};
     static const std::set<std::string> taskValues = {"load", "offload", "supply", "park",
                                                      "wait", "drive",   "fuel"};
-    for (auto& [id, w] : m.ways) {
+    for (auto& entry : m.ways) {
+        // Not a structured binding: lambdas below use w; clang 14 (the fuzz build) cannot capture one.
+        const std::int64_t id = entry.first;
+        MapWay& w = entry.second;
         const std::string wn = "way " + std::to_string(id);
         for (auto ref : w.nodes)
             if (!m.nodes.count(ref))

@@ -197,6 +197,15 @@ std::size_t Reassembler::expire(TimePoint now) {
     return n;
 }
 
+Result<std::vector<JudpMessage>> JtcpStreamDecoder::fail(std::vector<JudpMessage>& good, std::string error) {
+    m_failed = true;
+    m_error = std::move(error);
+    m_buffer.clear();
+    if (good.empty())
+        return makeError(m_error);
+    return std::move(good);
+}
+
 Result<std::vector<JudpMessage>> JtcpStreamDecoder::feed(ByteSpan data) {
     if (m_failed)
         return makeError("stream: stream already failed");
@@ -204,28 +213,22 @@ Result<std::vector<JudpMessage>> JtcpStreamDecoder::feed(ByteSpan data) {
     std::size_t pos = 0;
     std::vector<JudpMessage> out;
     if (!m_versionSeen && !m_buffer.empty()) {
-        if (m_buffer[0] != kJudpVersion) {
-            m_failed = true;
-            return makeError("version: JTCP stream starts with 0x" + std::to_string(m_buffer[0]) +
-                             ", not 0x02");
-        }
+        if (m_buffer[0] != kJudpVersion)
+            return fail(out,
+                        "version: JTCP stream starts with 0x" + std::to_string(m_buffer[0]) + ", not 0x02");
         m_versionSeen = true;
         pos = 1;
     }
     while (m_buffer.size() - pos >= 3) {
         const std::size_t size = m_buffer[pos + 1] | (m_buffer[pos + 2] << 8);
-        if (size < kMessageOverhead) {
-            m_failed = true;
-            return makeError("size: JTCP message DataSize " + std::to_string(size) + " below 14");
-        }
+        if (size < kMessageOverhead)
+            return fail(out, "size: JTCP message DataSize " + std::to_string(size) + " below 14");
         if (m_buffer.size() - pos < size)
             break;
         std::size_t used = 0;
         auto m = decodeMessage(ByteSpan(m_buffer).subspan(pos, size), used);
-        if (!m) {
-            m_failed = true;
-            return makeError(m.error());
-        }
+        if (!m)
+            return fail(out, m.error());
         out.push_back(std::move(*m));
         pos += size;
     }

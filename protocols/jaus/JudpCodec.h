@@ -133,13 +133,19 @@ private:
 // JTCP: the 0x02 version byte once per stream, then messages back to back (jaus-wire.md §2.1).
 class JtcpStreamDecoder {
 public:
-    // Appends bytes; returns the messages completed so far. After an error the stream is unusable
-    // (the caller closes the connection), since message boundaries are lost.
+    // Appends bytes; returns the messages completed so far, those before a bad one in the same read included
+    // (never lose what was good; a fuzz finding, docs/reliability.md). After a bad message failed() is true
+    // and error() says why: the stream is unusable (the caller closes the connection), since message
+    // boundaries are lost. feed() fails when it completed no message before the error, and on every call
+    // after it.
     Result<std::vector<JudpMessage>> feed(ByteSpan data);
     bool failed() const { return m_failed; }
+    const std::string& error() const { return m_error; }
 
 private:
+    Result<std::vector<JudpMessage>> fail(std::vector<JudpMessage>& good, std::string error);
     Bytes m_buffer;
+    std::string m_error;
     bool m_versionSeen = false;
     bool m_failed = false;
 };

@@ -331,6 +331,11 @@ void JudpTransport::startRead(const TcpPtr& c) {
                     continue;
                 deliver(std::move(m), now, reject);
             }
+            if (c->decoder.failed()) { // good messages before a bad one in the same read were delivered above
+                m_counters.add("rx.rejected." + rejectReason(c->decoder.error()));
+                logWarning(m_log, "JTCP stream from " + c->peer + " closed: " + c->decoder.error());
+                return dropConn(c, c->decoder.error());
+            }
             startRead(c);
         });
 }

@@ -111,8 +111,10 @@ constexpr std::uint64_t kFileTimeUnixEpoch = 116444736000000000ull;
 inline std::uint64_t unixMillisToFileTime(std::int64_t ms) {
     return kFileTimeUnixEpoch + static_cast<std::uint64_t>(ms) * 10000ull;
 }
+// Any 64-bit value a peer sends (fuzz finding, docs/reliability.md): milliseconds first, then the epoch
+// shift, so no signed overflow; the epoch is a whole number of milliseconds.
 inline std::int64_t fileTimeToUnixMillis(std::uint64_t ft) {
-    return (static_cast<std::int64_t>(ft) - static_cast<std::int64_t>(kFileTimeUnixEpoch)) / 10000;
+    return static_cast<std::int64_t>(ft / 10000) - static_cast<std::int64_t>(kFileTimeUnixEpoch / 10000);
 }
 
 // Checksums over the message bytes after the WCrc field ([2, WLen)).

@@ -694,6 +694,19 @@ private slots:
         JtcpStreamDecoder bad;
         QVERIFY(!bad.feed(second).ok());
         QVERIFY(bad.failed());
+        // A good message and a bad one in the same read: the good one is delivered, then the stream fails
+        // (fuzz finding: it used to be dropped with the error, unlike the same bytes in two reads).
+        Bytes goodThenBad = stream;
+        goodThenBad.resize(stream.size() - second.size());         // version byte + the first message
+        goodThenBad.insert(goodThenBad.end(), {0x01, 0x05, 0x00}); // DataSize 5 < 14
+        JtcpStreamDecoder mixed;
+        auto r = mixed.feed(goodThenBad);
+        QVERIFY(r.ok());
+        QCOMPARE(r->size(), std::size_t(1));
+        QCOMPARE((*r)[0].messageId(), msg::RequestControl);
+        QVERIFY(mixed.failed());
+        QVERIFY2(mixed.error().find("DataSize 5") != std::string::npos, mixed.error().c_str());
+        QVERIFY(!mixed.feed(second).ok());
     }
 };
 

@@ -274,6 +274,12 @@ private slots:
     void fileTime() {
         QCOMPARE(unixMillisToFileTime(0), kFileTimeUnixEpoch);
         QCOMPARE(fileTimeToUnixMillis(unixMillisToFileTime(1763712000123)), std::int64_t(1763712000123));
+        // Any FILETIME a peer sends converts without signed overflow (fuzz finding, docs/reliability.md):
+        // the far future stays in the future, not wrapped into the past.
+        QCOMPARE(fileTimeToUnixMillis(~0ull), std::int64_t(1844674407370955) - std::int64_t(11644473600000));
+        QCOMPARE(fileTimeToUnixMillis(0x8000000000000000ull),
+                 std::int64_t(922337203685477) - std::int64_t(11644473600000));
+        QCOMPARE(fileTimeToUnixMillis(kFileTimeUnixEpoch), std::int64_t(0));
     }
 };
 
