@@ -145,35 +145,38 @@ JausVehicleEvent toVehicleEvent(const JausEvent& e) {
 } // namespace
 
 JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject* parent)
-    : JausVehicleBridge(parent), m_config(config), m_frame(frame), m_snapshots(this, [this](auto&& batch) {
-          for (auto& [id, snap] : batch) {
-              const JausVehicle v = toVehicle(snap);
-              JausVehicle& latest = m_latest[id]; // a new vehicle starts default: not in emergency
-              const bool wasStopped = latest.emergency;
-              const bool wasOurs = latest.controlledByUs;
-              const bool wasDenied = latest.access == JausAccess::InsufficientAuthority;
-              latest = v;
-              emit subsystemUpdated(v);
-              const QString name = v.callSign.isEmpty() ? machineId(id) : v.callSign;
-              if (v.emergency && !wasStopped) // the vehicle's own report (ReportStatus: Emergency)
-                  emit stopReported(machineId(id), tr("%1 reports EMERGENCY").arg(name));
-              // Confirmations of other commands come from the vehicle's own reports too (issue 13 §1).
-              if (!v.emergency && wasStopped)
-                  emit commandReported(
-                      QStringLiteral("clear_stop"), machineId(id),
-                      tr("%1 reports %2: emergency cleared")
-                          .arg(name, v.managementText.isEmpty() ? tr("no emergency") : v.managementText));
-              if (v.controlledByUs && !wasOurs)
-                  emit commandReported(QStringLiteral("request_control"), machineId(id),
-                                       tr("%1 confirms control by this console").arg(name));
-              else if (v.access == JausAccess::InsufficientAuthority && !wasDenied)
-                  emit commandReported(QStringLiteral("request_control"), machineId(id),
-                                       tr("%1 refuses control: insufficient authority").arg(name));
-              if (!v.controlledByUs && wasOurs)
-                  emit commandReported(QStringLiteral("release_control"), machineId(id),
-                                       tr("%1 reports control released").arg(name));
-          }
-      }),
+    : JausVehicleBridge(parent), m_config(config), m_frame(frame),
+      m_snapshots(
+          this,
+          [this](auto&& batch) {
+              for (auto& [id, snap] : batch) {
+                  const JausVehicle v = toVehicle(snap);
+                  JausVehicle& latest = m_latest[id]; // a new vehicle starts default: not in emergency
+                  const bool wasStopped = latest.emergency;
+                  const bool wasOurs = latest.controlledByUs;
+                  const bool wasDenied = latest.access == JausAccess::InsufficientAuthority;
+                  latest = v;
+                  emit subsystemUpdated(v);
+                  const QString name = v.callSign.isEmpty() ? machineId(id) : v.callSign;
+                  if (v.emergency && !wasStopped) // the vehicle's own report (ReportStatus: Emergency)
+                      emit stopReported(machineId(id), tr("%1 reports EMERGENCY").arg(name));
+                  // Confirmations of other commands come from the vehicle's own reports too (issue 13 §1).
+                  if (!v.emergency && wasStopped)
+                      emit commandReported(
+                          QStringLiteral("clear_stop"), machineId(id),
+                          tr("%1 reports %2: emergency cleared")
+                              .arg(name, v.managementText.isEmpty() ? tr("no emergency") : v.managementText));
+                  if (v.controlledByUs && !wasOurs)
+                      emit commandReported(QStringLiteral("request_control"), machineId(id),
+                                           tr("%1 confirms control by this console").arg(name));
+                  else if (v.access == JausAccess::InsufficientAuthority && !wasDenied)
+                      emit commandReported(QStringLiteral("request_control"), machineId(id),
+                                           tr("%1 refuses control: insufficient authority").arg(name));
+                  if (!v.controlledByUs && wasOurs)
+                      emit commandReported(QStringLiteral("release_control"), machineId(id),
+                                           tr("%1 reports control released").arg(name));
+              }
+          }),
       m_poseGate(config.plausibility) {
     m_stack = std::make_unique<JausStack>(m_config, static_cast<JausListener&>(*this));
 }
