@@ -136,7 +136,10 @@ private slots:
         };
         // Counted once per distinct pose (a standing UGV repeats its pose in every report), one warning.
         QTRY_VERIFY_WITH_TIMEOUT(implausible() >= 1, 30000);
-        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(kVehicle).has_value(), 20000);
+        // The counter moves on the io thread; the state carrying the verdict reaches the GUI thread later.
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(kVehicle).has_value() &&
+                                     seen.latest(kVehicle)->health == HealthLevel::Warning,
+                                 20000);
         const MachineState m = *seen.latest(kVehicle);
         QVERIFY2(!m.hasPosition, qPrintable(QStringLiteral("%1 %2").arg(m.e).arg(m.n)));
         QCOMPARE(m.health, HealthLevel::Warning);
