@@ -15,9 +15,10 @@ constexpr double kLoadingSeconds = 30;
 constexpr double kDumpingSeconds = 15;
 constexpr double kParkedSeconds = 60;
 constexpr double kHealthPeriodSeconds = 30;
-constexpr double kBrakeDecel = 2.0;   // m/s², ordinary stop
-constexpr double kAllStopDecel = 3.0; // m/s², all-stop
-constexpr double kLoadedSpeed = 0.75; // of the cruise speed
+constexpr double kBrakeDecel = 2.0;    // m/s², ordinary stop
+constexpr double kAllStopDecel = 3.0;  // m/s², all-stop
+constexpr double kLoadedSpeed = 0.75;  // of the cruise speed
+constexpr double kSpottingSpeed = 2.5; // m/s, creeping from the area entry to the spot
 
 // Stable GUIDs from a seed and an index (v4 layout): kind 1 = trucks, 2 = shovels.
 Guid stableGuid(std::uint32_t seed, std::uint32_t kind, std::uint32_t index) {
@@ -135,47 +136,169 @@ MachinePositionV1 HaulFleet::position(const HaulTruck& t) const {
 void HaulFleet::startRoute(HaulTruck& t, const std::vector<RouteLeg>& legs, HaulPhase phase) {
     t.motion.setRoute(m_map.route(legs));
     t.phase = phase;
-    t.productionState = phase == HaulPhase::ToDump ? "Hauling" : "Driving";
+    t.area = phase == HaulPhase::ToLoad   ? m_map.loadAreas[t.shovel]
+             : phase == HaulPhase::ToDump ? m_map.dumpAreas[t.dump]
+                                          : m_map.parkArea;
+    changeState(t, phase == HaulPhase::ToDump ? "Hauling" : "Driving");
 }
 
-// From the area the truck is in (load i, dump j or park) to the target area.
-std::vector<RouteLeg> HaulFleet::legsTo(const HaulTruck& t, std::int64_t area) const {
-    std::vector<RouteLeg> legs;
-    const bool atLoad = t.phase == HaulPhase::Loading;
-    const bool atPark = t.phase == HaulPhase::Parked;
-    if (atLoad) {
-        legs.push_back({m_map.loadRoads[t.shovel], true});
-        legs.push_back({m_map.rampUp, false});
-    } else if (atPark) {
-        legs.push_back({m_map.parkRoad, true});
-    } else {
-        legs.push_back({m_map.dumpRoads[t.dump], true});
+namespace {
+
+double dist2(const EnuPoint& a, const EnuPoint& b) {
+    return (a.e - b.e) * (a.e - b.e) + (a.n - b.n) * (a.n - b.n);
+}
+
+EnuPoint centroid(const std::vector<EnuPoint>& pts) {
+    EnuPoint c{0, 0, 0};
+    // A closed way repeats its first node: count it once.
+    const std::size_t n =
+        pts.size() > 1 && dist2(pts.front(), pts.back()) < 1e-6 ? pts.size() - 1 : pts.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        c.e += pts[i].e / static_cast<double>(n);
+        c.n += pts[i].n / static_cast<double>(n);
+        c.u += pts[i].u / static_cast<double>(n);
     }
+    return c;
+}
+
+} // namespace
+
+EnuPoint HaulFleet::spotOf(const HaulTruck& t, std::int64_t area) const {
+    EnuPoint c = centroid(m_map.wayPoints(area, false));
+    if (area == m_map.parkArea) { // a row of parking slots, 14 m apart
+        const auto index = static_cast<int>(&t - m_trucks.data());
+        c.e += 14.0 * (index % 5 - 2);
+        c.n += 16.0 * ((index / 5) % 4 - 1.5);
+    }
+    return c;
+}
+
+Route HaulFleet::routeAlong(const HaulTruck& t, const std::vector<std::int64_t>& ways) const {
+    Route r;
+    EnuPoint last = t.motion.position();
+    auto isArea = [&](std::int64_t w) {
+        auto it = m_map.map.ways.find(w);
+        return it == m_map.map.ways.end() || it->second.kind == iso23725::WayKind::Area;
+    };
+    // Where a way can be joined: its two ends (a road), or its centre (an area).
+    auto ends = [&](std::int64_t w) {
+        auto pts = m_map.wayPoints(w, false);
+        return isArea(w) ? std::vector<EnuPoint>{centroid(pts)}
+                         : std::vector<EnuPoint>{pts.front(), pts.back()};
+    };
+    for (std::size_t i = 0; i < ways.size(); ++i) {
+        const std::int64_t w = std::llabs(ways[i]);
+        if (!m_map.map.ways.count(w))
+            continue;
+        if (isArea(w)) {
+            if (i == 0)
+                r.addLeg(w, {last}); // leaving the area it is in, from where it stands
+            else if (w == m_map.parkArea && i + 1 == ways.size())
+                r.addLeg(w, {spotOf(t, w)}); // on into its parking slot
+            continue;                        // a load or dump area is entered by spotting (queues first)
+        }
+        auto pts = m_map.wayPoints(w, false);
+        bool reversed;
+        if (m_map.map.ways.at(w).kind == iso23725::WayKind::Lane)
+            reversed = ways[i] < 0; // one-way: node order is the travel direction (Q6: negative = against it)
+        else if (i + 1 < ways.size()) {
+            // Leave it at the end nearest the next way.
+            double dFront = 1e300, dBack = 1e300;
+            for (const auto& p : ends(std::llabs(ways[i + 1]))) {
+                dFront = std::min(dFront, dist2(pts.front(), p));
+                dBack = std::min(dBack, dist2(pts.back(), p));
+            }
+            reversed = dFront < dBack;
+        } else {
+            reversed = dist2(pts.back(), last) < dist2(pts.front(), last);
+        }
+        if (reversed)
+            std::reverse(pts.begin(), pts.end());
+        if (i == 0 && pts.size() >= 2) {
+            // On this way already: from the truck's position (its nearest stretch) onwards.
+            std::size_t best = 0;
+            double bestD = 1e300;
+            for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+                const auto& a = pts[k];
+                const auto& b = pts[k + 1];
+                const double len2 = dist2(a, b);
+                double f =
+                    len2 > 0 ? ((last.e - a.e) * (b.e - a.e) + (last.n - a.n) * (b.n - a.n)) / len2 : 0;
+                f = std::clamp(f, 0.0, 1.0);
+                const EnuPoint q{a.e + f * (b.e - a.e), a.n + f * (b.n - a.n), a.u + f * (b.u - a.u)};
+                if (dist2(q, last) < bestD) {
+                    bestD = dist2(q, last);
+                    best = k;
+                }
+            }
+            std::vector<EnuPoint> rest{last};
+            rest.insert(rest.end(), pts.begin() + static_cast<std::ptrdiff_t>(best) + 1, pts.end());
+            pts = std::move(rest);
+        }
+        r.addLeg(w, pts);
+        last = pts.back();
+    }
+    return r;
+}
+
+bool HaulFleet::driveTo(HaulTruck& t, std::int64_t area, const std::optional<std::vector<WayRef>>& route) {
+    const std::int64_t from = t.motion.wayId();
+    std::vector<std::int64_t> ways;
+    if (route) {
+        // RouteV1 (§5 #21): the ways between the truck and the destination; the part already behind the truck
+        // does not count.
+        std::vector<WayRef> ahead = *route;
+        for (std::size_t i = 0; i < route->size(); ++i)
+            if (std::llabs((*route)[i].wayId) == from)
+                ahead.assign(route->begin() + static_cast<std::ptrdiff_t>(i), route->end());
+        if (checkRoute(m_routes, from, ahead, area).empty()) {
+            ways.push_back(from);
+            for (const auto& w : ahead)
+                if (std::llabs(w.wayId) != from)
+                    ways.push_back(w.wayId);
+            ways.push_back(area);
+            m_counters.add("sim.route.assigned");
+        }
+    }
+    if (ways.empty()) {
+        auto r = shortestRoute(m_routes, from, area);
+        if (!r.ok)
+            return false;
+        ways = r.ways;
+    }
+    if (t.phase == HaulPhase::Queued)
+        releaseArea(t);
     const int li = m_map.loadIndex(area), di = m_map.dumpIndex(area);
-    if (li >= 0) {
-        if (atLoad && li == t.shovel)
-            return {}; // already there
-        legs.push_back({m_map.rampDown, false});
-        legs.push_back({m_map.loadRoads[li], false});
-    } else if (di >= 0) {
-        legs.push_back({m_map.dumpRoads[di], false});
-    } else {
-        legs.push_back({m_map.parkRoad, false});
-    }
-    return legs;
+    if (li >= 0)
+        t.shovel = li;
+    if (di >= 0)
+        t.dump = di;
+    t.phase = li >= 0 ? HaulPhase::ToLoad : di >= 0 ? HaulPhase::ToDump : HaulPhase::ToPark;
+    t.area = area;
+    t.motion.setRoute(routeAlong(t, ways));
+    t.motion.placeAt(0);
+    changeState(t, t.payload > 0 ? "Hauling" : "Driving");
+    emitProduction(t);
+    return true;
 }
 
 void HaulFleet::tick(double dt) {
     m_simTime += dt;
     for (auto& t : m_trucks) {
         const bool halted = (m_allStopOn && t.autonomous) || t.manual;
-        if (t.phase == HaulPhase::ToLoad || t.phase == HaulPhase::ToDump || t.phase == HaulPhase::ToPark) {
-            const double cruise = halted ? 0.0 : t.cruise * (t.payload > 0 ? kLoadedSpeed : 1.0);
-            t.motion.drive(dt, cruise, m_allStopOn ? kAllStopDecel : kBrakeDecel);
+        if (t.phase == HaulPhase::ToLoad || t.phase == HaulPhase::ToDump || t.phase == HaulPhase::ToPark ||
+            t.phase == HaulPhase::Spotting) {
+            const double speed = t.phase == HaulPhase::Spotting
+                                     ? kSpottingSpeed
+                                     : t.cruise * (t.payload > 0 ? kLoadedSpeed : 1.0);
+            t.motion.drive(dt, halted ? 0.0 : speed, m_allStopOn ? kAllStopDecel : kBrakeDecel);
+            const std::string moving = t.phase == HaulPhase::Spotting ? "Spotting"
+                                       : t.phase == HaulPhase::ToDump ? "Hauling"
+                                                                      : "Driving";
             if (halted && t.motion.speed() == 0 && m_allStopOn)
                 setProduction(t, "Stopped");
             else if (!halted && t.productionState == "Stopped")
-                setProduction(t, t.phase == HaulPhase::ToDump ? "Hauling" : "Driving");
+                setProduction(t, moving);
             if (t.motion.arrived()) {
                 t.motion.halt();
                 arrive(t);
@@ -183,7 +306,7 @@ void HaulFleet::tick(double dt) {
                 // WayId is part of the production state (§5 #17, "current way"): a new way is a change.
                 emitProduction(t);
             }
-        } else if (!halted && !t.idle) {
+        } else if (!halted && !t.idle && t.phase != HaulPhase::Queued) {
             t.dwell -= dt;
             if (t.dwell <= 0)
                 leave(t);
@@ -198,15 +321,53 @@ void HaulFleet::tick(double dt) {
     }
 }
 
+void HaulFleet::reachArea(HaulTruck& t) {
+    auto& q = m_areaQueues[t.area];
+    const int index = static_cast<int>(&t - m_trucks.data());
+    if (q.inside < 0) {
+        q.inside = index;
+        startSpotting(t);
+        return;
+    }
+    q.waiting.push_back(index);
+    t.phase = HaulPhase::Queued;
+    setProduction(t, "Queued");
+}
+
+void HaulFleet::startSpotting(HaulTruck& t) {
+    Route r;
+    r.addLeg(t.area, {t.motion.position(), spotOf(t, t.area)});
+    t.motion.setRoute(std::move(r));
+    t.motion.placeAt(0);
+    t.phase = HaulPhase::Spotting;
+    setProduction(t, "Spotting");
+}
+
+void HaulFleet::releaseArea(HaulTruck& t) {
+    auto it = m_areaQueues.find(t.area);
+    if (it == m_areaQueues.end())
+        return;
+    auto& q = it->second;
+    const int index = static_cast<int>(&t - m_trucks.data());
+    std::erase(q.waiting, index);
+    if (q.inside != index)
+        return;
+    q.inside = -1;
+    if (q.waiting.empty())
+        return;
+    q.inside = q.waiting.front();
+    q.waiting.erase(q.waiting.begin());
+    startSpotting(m_trucks[static_cast<std::size_t>(q.inside)]);
+}
+
 void HaulFleet::arrive(HaulTruck& t) {
-    if (t.phase == HaulPhase::ToLoad) {
-        t.phase = HaulPhase::Loading;
-        t.dwell = kLoadingSeconds;
-        setProduction(t, "Loading");
-    } else if (t.phase == HaulPhase::ToDump) {
-        t.phase = HaulPhase::Dumping;
-        t.dwell = kDumpingSeconds;
-        setProduction(t, "Dumping");
+    if (t.phase == HaulPhase::ToLoad || t.phase == HaulPhase::ToDump) {
+        reachArea(t);
+    } else if (t.phase == HaulPhase::Spotting) {
+        const bool load = m_map.loadIndex(t.area) >= 0;
+        t.phase = load ? HaulPhase::Loading : HaulPhase::Dumping;
+        t.dwell = load ? kLoadingSeconds : kDumpingSeconds;
+        setProduction(t, load ? "Loading" : "Dumping");
     } else {
         t.phase = HaulPhase::Parked;
         t.dwell = kParkedSeconds;
@@ -235,7 +396,7 @@ void HaulFleet::leave(HaulTruck& t) {
         p.accuracy = 4.5;
         p.payloadSourceId = stableGuid(m_cfg.seed, 2, static_cast<std::uint32_t>(t.shovel));
         m_emit(p, t.id);
-    } else if (t.phase == HaulPhase::Dumping) {
+    } else if (t.phase == HaulPhase::Dumping && t.payload > 0) { // an empty truck has nothing to dump
         HaulTruckDumpV1 d;
         if (!t.assignments.empty())
             d.assignmentId = t.assignments.front().assignmentId;
@@ -244,13 +405,15 @@ void HaulFleet::leave(HaulTruck& t) {
         m_emit(d, t.id);
         HaulTruckProductionCycleV1 c;
         c.cycleId = t.cycleId;
+        if (!t.assignments.empty())
+            c.assignmentId = t.assignments.front().assignmentId;
         c.loadWayId = m_map.loadAreas[t.shovel];
         c.dumpWayId = m_map.dumpAreas[t.dump];
         c.loaderEquipmentId = stableGuid(m_cfg.seed, 2, static_cast<std::uint32_t>(t.shovel));
         c.payloadWeight = t.payload;
-        const std::int64_t now = m_now();
-        c.stateTimes.push_back(StateTime{"Hauling", makeTimestamp(t.cycleStartMs),
-                                         static_cast<double>((now - t.cycleStartMs) / 1000)});
+        changeState(t, {}); // closes the Dumping entry
+        c.stateTimes = std::move(t.cycleStates);
+        t.cycleStates.clear();
         m_emit(c, t.id);
         t.cycleId = newGuid();
         t.cycleStartMs = m_now();
@@ -267,40 +430,64 @@ void HaulFleet::leave(HaulTruck& t) {
             m_emit(HaulTruckAssignmentV1{next.assignmentId, "Active", next.task, next.destinationId}, t.id);
         }
     }
+    if (t.phase == HaulPhase::Loading || t.phase == HaulPhase::Dumping)
+        releaseArea(t);
     if (t.assignments.empty() && t.fmsWork) {
         goIdle(t);
         return;
     }
     std::int64_t dest;
-    if (!t.assignments.empty())
+    std::optional<std::vector<WayRef>> route;
+    if (!t.assignments.empty()) {
         dest = t.assignments.front().destinationId;
-    else if (t.phase == HaulPhase::Loading)
+        route = t.assignments.front().route;
+    } else if (t.phase == HaulPhase::Loading) {
         dest = m_map.dumpAreas[t.dump];
-    else
+    } else {
         dest = m_map.loadAreas[t.shovel];
-    auto legs = legsTo(t, dest);
-    const int li = m_map.loadIndex(dest), di = m_map.dumpIndex(dest);
-    HaulPhase next = HaulPhase::ToPark;
-    if (li >= 0) {
-        next = HaulPhase::ToLoad;
-        t.shovel = li;
-    } else if (di >= 0) {
-        next = HaulPhase::ToDump;
-        t.dump = di;
     }
-    if (legs.empty()) { // already there: load again
+    if (dest == areaOf(t) && t.phase == HaulPhase::Loading) { // already there: load again
+        m_areaQueues[dest].inside = static_cast<int>(&t - m_trucks.data());
         t.dwell = kLoadingSeconds;
         return;
     }
-    startRoute(t, legs, next);
-    t.motion.placeAt(0);
-    emitProduction(t);
+    if (!driveTo(t, dest, route)) {
+        // Cannot get there any more (a way closed meanwhile): give the task up and ask for other work.
+        if (!t.assignments.empty()) {
+            HaulTruckAssignmentResponseV1 lost;
+            for (const auto& a : t.assignments)
+                lost.items.push_back(AssignmentResponseItem{
+                    a.assignmentId, "Rejected", "can no longer be done: destination unreachable"});
+            m_emit(lost, t.id);
+            const auto& a = t.assignments.front();
+            m_emit(HaulTruckAssignmentV1{a.assignmentId, "Cancelled", a.task, a.destinationId}, t.id);
+            t.assignments.clear();
+        }
+        if (t.fmsWork) {
+            goIdle(t);
+        } else if (!driveTo(t, m_map.parkArea, std::nullopt)) {
+            t.phase = HaulPhase::Parked;
+            setProduction(t, "Parked");
+        }
+    }
+}
+
+void HaulFleet::changeState(HaulTruck& t, const std::string& state) {
+    const std::int64_t now = m_now();
+    if (!t.cycleStates.empty() && !t.cycleStates.back().duration) {
+        auto& open = t.cycleStates.back();
+        open.duration = std::round(static_cast<double>(now - open.start.unixMs.value_or(now)) / 100.0) / 10.0;
+    }
+    if (!state.empty()) {
+        t.cycleStates.push_back(StateTime{state, makeTimestamp(now), std::nullopt});
+        t.productionState = state;
+    }
 }
 
 void HaulFleet::setProduction(HaulTruck& t, const std::string& state) {
     if (t.productionState == state)
         return;
-    t.productionState = state;
+    changeState(t, state);
     emitProduction(t);
 }
 
@@ -427,8 +614,17 @@ void HaulFleet::assign(const Guid& equipmentId, const HaulTruckAssignmentRequest
         t->idle = false;
         const auto& first = accepted.front();
         m_emit(HaulTruckAssignmentV1{first.assignmentId, "Active", first.task, first.destinationId}, t->id);
-        if (t->phase == HaulPhase::Parked)
-            t->dwell = 0;
+        if (t->phase == HaulPhase::Parked) {
+            t->dwell = 0; // leaves now
+        } else if ((t->phase == HaulPhase::ToLoad || t->phase == HaulPhase::ToDump ||
+                    t->phase == HaulPhase::ToPark || t->phase == HaulPhase::Queued) &&
+                   (t->payload == 0 || first.task == "Offload") &&
+                   !(t->phase == HaulPhase::Queued && t->area == first.destinationId)) {
+            // On the road (or in a queue): it turns towards the new current task at once, along its route. A
+            // loaded truck finishes its haul first unless the task is where to dump; loading and dumping are
+            // never interrupted.
+            driveTo(*t, first.destinationId, first.route);
+        }
     }
 }
 
@@ -460,10 +656,11 @@ void HaulFleet::goIdle(HaulTruck& t) {
     t.fmsWork = false;
     t.idle = true;
     setCustodian(t, "AHS"); // the AHS moves it out of the way itself
-    auto legs = legsTo(t, m_map.parkArea);
-    startRoute(t, legs, HaulPhase::ToPark);
-    t.motion.placeAt(0);
-    emitProduction(t);
+    if (!driveTo(t, m_map.parkArea, std::nullopt)) {
+        t.phase = HaulPhase::Parked; // no way to the park: it waits where it is
+        setProduction(t, "Parked");
+        setCustodian(t, "FMS");
+    }
 }
 
 void HaulFleet::setWayClosed(std::int64_t wayId, bool closed) {

@@ -1,6 +1,8 @@
 #pragma once
-// The simulated AHS's haul trucks on the pit map: load-haul-dump cycles (drive to a shovel, load, haul to a
-// dump or the crusher, dump, drive back), FMS assignments choosing the next destination, all-stop and manual
+// The simulated AHS's haul trucks on the pit map: load-haul-dump cycles (drive to a shovel, queue while
+// another truck is under it, spot, load, haul to a dump or the crusher, queue, spot, dump, drive back), FMS
+// assignments choosing the destination and driven along their RouteV1 (or the shortest route over the
+// connectivity) from where the truck is, all-stop and manual
 // mode holding trucks, the production state and its sensor inputs (sent on change), payloads, dumps and
 // production cycles, periodic health with occasional diagnostics. Advanced by tick(dt) in simulated seconds;
 // what the trucks report leaves through an emit callback as ISO 23725 members, never through a socket, so
@@ -17,6 +19,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -30,7 +34,9 @@ struct HaulFleetConfig {
     bool healthEvents = true; // periodic health, occasional diagnostics
 };
 
-enum class HaulPhase { Parked, ToLoad, Loading, ToDump, Dumping, ToPark };
+// Queued: waiting at the area's entry for the truck under the shovel / on the tip to leave; Spotting:
+// creeping from the entry to the loading or dumping spot (then Loading or Dumping).
+enum class HaulPhase { Parked, ToLoad, Loading, ToDump, Dumping, ToPark, Queued, Spotting };
 
 struct HaulTruck {
     iso23725::Guid id;
@@ -45,6 +51,10 @@ struct HaulTruck {
     int dump = 0;     // index into PitMap::dumpAreas (the last is the crusher)
     int payload = 0;  // t on board
     std::string productionState = "Parked";
+    std::int64_t area = 0; // the load, dump or park area it is heading to, queued at or in
+    // This cycle's production states so far (§5 #16 StateTimes: each with its start, closed with its
+    // duration when the next begins); reported with HaulTruckProductionCycleV1 at the end of the dump.
+    std::vector<iso23725::StateTime> cycleStates;
     std::vector<iso23725::AssignmentItem> assignments; // queue (first = current)
     std::string custodian = "FMS"; // MachineDispatchAvailabilityV1.DispatchingCustodian (§8.3)
     bool fmsWork = false;          // working through FMS assignments: idle when they run out
@@ -105,7 +115,21 @@ public:
 
 private:
     void startRoute(HaulTruck& t, const std::vector<RouteLeg>& legs, HaulPhase phase);
-    std::vector<RouteLeg> legsTo(const HaulTruck& t, std::int64_t area) const;
+    // Drives the truck from where it is to `area` along the ways `route` names (RouteV1, checked from its
+    // current way onwards) or, without one or when it no longer holds, the shortest route; false when the
+    // area cannot be reached.
+    bool driveTo(HaulTruck& t, std::int64_t area, const std::optional<std::vector<iso23725::WayRef>>& route);
+    // The drive over `ways` (connected, from the truck's current way to the destination area): the rest of
+    // the current way from the truck's position, the roads between in their travel direction, to where the
+    // last road meets the area (a park area: on into the truck's parking slot).
+    Route routeAlong(const HaulTruck& t, const std::vector<std::int64_t>& ways) const;
+    // At the end of the drive to a load or dump area: spot when the area is free, else queue.
+    void reachArea(HaulTruck& t);
+    void startSpotting(HaulTruck& t);
+    // The truck left its area (or its queue): the next one waiting there spots.
+    void releaseArea(HaulTruck& t);
+    EnuPoint spotOf(const HaulTruck& t, std::int64_t area) const;
+    void changeState(HaulTruck& t, const std::string& state); // production state + the cycle's state log
     void arrive(HaulTruck& t);
     void leave(HaulTruck& t);
     std::int64_t areaOf(const HaulTruck& t) const;
@@ -132,6 +156,13 @@ private:
     std::set<std::int64_t> m_closedWays;
     iso23725::MapConnectivityV1 m_connectivity; // the map's, without connections into closed ways
     iso23725::RouteGraph m_routes;
+    // Per load/dump area: the truck spotting, loading or dumping there (index, -1 none) and the trucks queued
+    // at its entry in arrival order. One truck at a time under a shovel, on a tip, at the crusher.
+    struct AreaQueue {
+        int inside = -1;
+        std::vector<int> waiting;
+    };
+    std::map<std::int64_t, AreaQueue> m_areaQueues;
     double m_simTime = 0;
 };
 

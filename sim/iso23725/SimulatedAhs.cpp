@@ -9,6 +9,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <thread>
 
 namespace ocu::sim {
@@ -21,13 +22,22 @@ struct SimulatedAhs::Impl {
     Impl(SimulatedAhsConfig c, Counters& counters)
         : cfg(std::move(c)), io("sim-iso23725"), timer(io.context()),
           map(generatePitMap(PitLayout{cfg.shovelCount, cfg.dumpCount, cfg.origin}, unixMillisNow())),
-          fleet(map, HaulFleetConfig{cfg.truckCount, cfg.seed, cfg.healthEvents}, counters,
-                [this](const Body& member, const Guid& eq) {
-                    sessions.broadcast(member, eq.empty() ? std::nullopt : std::optional<Guid>(eq));
-                }),
+          fleet(
+              map, HaulFleetConfig{cfg.truckCount, cfg.seed, cfg.healthEvents}, counters,
+              [this](const Body& member, const Guid& eq) {
+                  sessions.broadcast(member, eq.empty() ? std::nullopt : std::optional<Guid>(eq));
+              },
+              [this] { return now(); }),
           sessions(io.context(), cfg, map, fleet, counters) {}
 
     SimulatedAhsConfig cfg;
+    // Times the trucks report (cycle state times): the wall clock, or simulated time from the start when the
+    // simulation runs faster (timeScale), so a cycle's durations are the simulated ones.
+    std::int64_t startUnixMs = unixMillisNow();
+    double simSeconds = 0;
+    std::int64_t now() const {
+        return cfg.timeScale == 1.0 ? unixMillisNow() : startUnixMs + std::llround(simSeconds * 1000);
+    }
     IoThread io;
     boost::asio::steady_timer timer;
     PitMap map;
@@ -43,6 +53,7 @@ struct SimulatedAhs::Impl {
         timer.async_wait([this](boost::system::error_code ec) {
             if (ec)
                 return;
+            simSeconds += tickSeconds() * cfg.timeScale;
             fleet.tick(tickSeconds() * cfg.timeScale);
             sessions.sendPositions();
             schedule();

@@ -149,15 +149,16 @@ private slots:
         }
     }
 
-    // The production states a truck reports follow the cycle: driving empty to a shovel, loading, hauling,
-    // dumping, and round again; each state is reported once, when it changes.
+    // The production states a truck reports follow the cycle: driving empty to a shovel, queueing when
+    // another truck is there, spotting, loading, hauling, (queueing,) spotting, dumping, and round again;
+    // each state is reported once, when it changes.
     void productionStatesFollowTheCycle() {
         Site s(4, 5, false);
         s.run(3600);
-        const std::map<std::string, std::set<std::string>> next = {{"Driving", {"Loading"}},
-                                                                   {"Loading", {"Hauling"}},
-                                                                   {"Hauling", {"Dumping"}},
-                                                                   {"Dumping", {"Driving"}}};
+        const std::map<std::string, std::set<std::string>> next = {
+            {"Driving", {"Queued", "Spotting"}},  {"Queued", {"Spotting"}},
+            {"Spotting", {"Loading", "Dumping"}}, {"Loading", {"Hauling"}},
+            {"Hauling", {"Queued", "Spotting"}},  {"Dumping", {"Driving"}}};
         for (const auto& t : s.fleet.trucks()) {
             const auto states = s.emittedFor<HaulTruckProductionStateV2>(t.id);
             QVERIFY(states.size() >= 8);
@@ -184,16 +185,118 @@ private slots:
         for (const auto& t : s.fleet.trucks()) {
             const auto cycles = s.emittedFor<HaulTruckProductionCycleV1>(t.id);
             QVERIFY(cycles.size() >= 2);
-            // From the second cycle on, a cycle starts where the previous one ended.
+            // From the second cycle on, a cycle starts where the previous one ended, and its states follow
+            // each other without gaps: return (Driving), [Queued], Spotting, Loading 30 s, Hauling, [Queued],
+            // Spotting, Dumping 15 s.
             for (std::size_t i = 1; i < cycles.size(); ++i) {
-                const auto& prev = cycles[i - 1].stateTimes.front();
-                const auto& cur = cycles[i].stateTimes.front();
+                const auto& prev = cycles[i - 1].stateTimes.back();
+                const auto& states = cycles[i].stateTimes;
+                QVERIFY(states.size() >= 6);
                 const std::int64_t prevEnd = *prev.start.unixMs + std::int64_t(*prev.duration * 1000);
-                QVERIFY(std::llabs(*cur.start.unixMs - prevEnd) <= 1000);
-                QVERIFY(*cur.duration > 60); // loading 30 s, dumping 15 s and two drives
-                QVERIFY(*cur.start.unixMs >= kEpochMs && *cur.start.unixMs < kEpochMs + 3'600'000);
+                QVERIFY(std::llabs(*states.front().start.unixMs - prevEnd) <= 100);
+                QCOMPARE(states.front().productionState, std::string("Driving"));
+                QCOMPARE(states.back().productionState, std::string("Dumping"));
+                double total = 0;
+                std::map<std::string, double> by;
+                for (std::size_t k = 0; k < states.size(); ++k) {
+                    QVERIFY(states[k].duration.has_value());
+                    if (k > 0) {
+                        const std::int64_t end =
+                            *states[k - 1].start.unixMs + std::llround(*states[k - 1].duration * 1000);
+                        QVERIFY(std::llabs(*states[k].start.unixMs - end) <= 100);
+                    }
+                    total += *states[k].duration;
+                    by[states[k].productionState] += *states[k].duration;
+                }
+                QVERIFY(total > 60);
+                QVERIFY(std::abs(by["Loading"] - 30) <= 1);
+                QVERIFY(std::abs(by["Dumping"] - 15) <= 1);
+                QVERIFY(by["Spotting"] > 5);
+                QVERIFY(by["Hauling"] > 60);
+                QVERIFY(*states.front().start.unixMs >= kEpochMs &&
+                        *states.front().start.unixMs < kEpochMs + 3'600'000);
             }
         }
+    }
+
+    // Issue 15 §5: one truck at a time under a shovel and on a tip; the others queue at the entry (reported
+    // Queued) and spot in arrival order when it leaves.
+    void trucksQueueAtShovelsAndDumps() {
+        Site s(10, 4, false);
+        int maxQueue = 0;
+        for (int step = 0; step < 3600 * 2; ++step) {
+            s.run(0.5);
+            std::map<std::int64_t, int> inside, queued;
+            for (const auto& t : s.fleet.trucks()) {
+                if (t.phase == HaulPhase::Spotting || t.phase == HaulPhase::Loading ||
+                    t.phase == HaulPhase::Dumping)
+                    QVERIFY2(++inside[t.area] == 1, qPrintable(QStringLiteral("area %1").arg(t.area)));
+                if (t.phase == HaulPhase::Queued) {
+                    maxQueue = std::max(maxQueue, ++queued[t.area]);
+                    QCOMPARE(t.productionState, std::string("Queued"));
+                    QCOMPARE(t.motion.speed(), 0.0);
+                }
+            }
+        }
+        QVERIFY(maxQueue >= 1);
+        // Queue time is part of the cycles the trucks report.
+        double queued = 0;
+        for (const auto& [c, eq] : s.emitted<HaulTruckProductionCycleV1>())
+            for (const auto& st : c.stateTimes)
+                if (st.productionState == "Queued")
+                    queued += *st.duration;
+        QVERIFY(queued > 0);
+    }
+
+    // Issue 15 §5: an assigned task is driven along its RouteV1 from where the truck is: the drive's ways are
+    // the truck's way, the route's ways and the destination's, and every position lies on those ways.
+    void assignedRouteIsDriven() {
+        Site s(1, 1, false);
+        const Guid id = s.fleet.trucks()[0].id;
+        // Once it drives empty towards its shovel, send it to the other one: it turns at once.
+        for (int step = 0; step < 7200 && s.fleet.trucks()[0].phase != HaulPhase::ToLoad; ++step)
+            s.run(0.5);
+        QCOMPARE(s.fleet.trucks()[0].phase, HaulPhase::ToLoad);
+        const int shovel = s.fleet.trucks()[0].shovel == 0 ? 1 : 0;
+        const std::int64_t from = s.fleet.trucks()[0].motion.wayId();
+        RouteGraph g(s.pit.connectivity);
+        const auto r = shortestRoute(g, from, s.pit.loadAreas[shovel]);
+        QVERIFY(r.ok);
+        HaulTruckAssignmentRequestV2 req;
+        req.items.push_back({"r-load", "Load", s.pit.loadAreas[shovel], {}, {}, r.routeV1()});
+        s.fleet.assign(id, req);
+        QCOMPARE(s.emitted<HaulTruckAssignmentResponseV1>().back().first.items[0].response,
+                 std::string("Accepted"));
+        std::set<std::int64_t> allowed(r.ways.begin(), r.ways.end());
+        bool loaded = false;
+        double maxOff = 0;
+        for (int step = 0; step < 3600 && !loaded; ++step) {
+            s.run(0.5);
+            const auto& t = s.fleet.trucks()[0];
+            QVERIFY(t.phase != HaulPhase::ToDump);
+            if (t.phase == HaulPhase::ToLoad) {
+                QVERIFY2(allowed.count(t.motion.wayId()) || t.motion.wayId() == from,
+                         qPrintable(QString::number(t.motion.wayId())));
+                // On the way's polyline (within a couple of metres of one of its stretches).
+                const auto pts = s.pit.wayPoints(t.motion.wayId(), false);
+                double best = 1e9;
+                for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+                    const auto& a = pts[k];
+                    const auto& b = pts[k + 1];
+                    const double l2 = (b.e - a.e) * (b.e - a.e) + (b.n - a.n) * (b.n - a.n);
+                    const auto& p = t.motion.position();
+                    double f = l2 > 0 ? ((p.e - a.e) * (b.e - a.e) + (p.n - a.n) * (b.n - a.n)) / l2 : 0;
+                    f = std::clamp(f, 0.0, 1.0);
+                    best =
+                        std::min(best, std::hypot(p.e - a.e - f * (b.e - a.e), p.n - a.n - f * (b.n - a.n)));
+                }
+                maxOff = std::max(maxOff, best);
+            }
+            loaded = t.phase == HaulPhase::Loading && t.area == s.pit.loadAreas[shovel];
+        }
+        QVERIFY(loaded);
+        QVERIFY2(maxOff < 10, qPrintable(QString::number(maxOff))); // junctions are a few metres apart
+        QVERIFY(s.counters.get("sim.route.assigned") >= 1);
     }
 
     // All-stop: every autonomous truck reports AllStop, brakes (at most 3 m/s²) to a standstill it holds,
