@@ -75,6 +75,18 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
                              QCoreApplication::translate("CommandLine", "Start with the default panel layout "
                                                                         "instead of the saved one."));
     p.addOptions({config, noSim, shot, view, size, settle, lang, log, headless, duration, reset});
+    // Issue 15 §4: the shift report at the end of a headless run.
+    QCommandLineOption shiftPdf(QStringLiteral("shift-report"),
+                                QCoreApplication::translate("CommandLine",
+                                                            "With --headless: write the shift "
+                                                            "report as PDF to FILE when the run ends."),
+                                QStringLiteral("FILE"));
+    QCommandLineOption shiftCsv(QStringLiteral("shift-csv"),
+                                QCoreApplication::translate("CommandLine",
+                                                            "With --headless: write the shift "
+                                                            "report as CSV to FILE when the run ends."),
+                                QStringLiteral("FILE"));
+    p.addOptions({shiftPdf, shiftCsv});
 
     if (!p.parse(args)) {
         error = p.errorText();
@@ -148,6 +160,14 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
         return false;
     }
     o.resetLayout = p.isSet(reset);
+    o.shiftReportPdf = p.value(shiftPdf);
+    o.shiftReportCsv = p.value(shiftCsv);
+    if ((!o.shiftReportPdf.isEmpty() || !o.shiftReportCsv.isEmpty()) && !o.headless) {
+        error = QCoreApplication::translate(
+            "CommandLine", "--shift-report/--shift-csv need --headless (in the window: Production "
+                           "panel, Shift report)");
+        return false;
+    }
     return true;
 }
 

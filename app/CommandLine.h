@@ -18,6 +18,9 @@ struct CommandLineOptions {
     bool headless = false;      // JSON-lines monitor on stdout, commands on stdin, no window
     double durationSeconds = 0; // headless: stop after this long (0 = until stdin closes or SIGINT)
     bool resetLayout = false;
+    // Issue 15 §4: with --headless, the shift report written when the run ends (PDF and/or CSV).
+    QString shiftReportPdf;
+    QString shiftReportCsv;
 };
 
 // Parses args (args[0] is the program name). On failure returns false and fills error; with --help or

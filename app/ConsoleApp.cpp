@@ -162,6 +162,12 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
         return 3;
     }
 
+    if (options.headless && (!options.shiftReportPdf.isEmpty() || !options.shiftReportCsv.isEmpty()))
+        // Issue 15 §4: written while the stacks still run (before runHeadless stops them); result on stderr.
+        QObject::connect(&app, &QCoreApplication::aboutToQuit, &runtime, [&runtime, &options] {
+            const QJsonObject r = runtime.writeShiftReport(options.shiftReportPdf, options.shiftReportCsv);
+            std::fprintf(stderr, "ocu: %s\n", qPrintable(r.value(QStringLiteral("message")).toString()));
+        });
     if (options.headless)
         return runtime.runHeadless(app, options.durationSeconds);
 

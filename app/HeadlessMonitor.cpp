@@ -1,4 +1,5 @@
 #include "app/HeadlessMonitor.h"
+#include "app/ShiftReportCommand.h"
 
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
@@ -386,6 +387,22 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
     if (name == QLatin1String("assign") || name == QLatin1String("reset_assignment") ||
         name == QLatin1String("production"))
         return dispatchCommand(name, cmd);
+    if (name == QLatin1String("shift_report")) { // issue 15 §4 (app/ShiftReportCommand.h)
+        ShiftReportRequest r{cmd.value(QStringLiteral("pdf")).toString(),
+                             cmd.value(QStringLiteral("csv")).toString(), std::nullopt,
+                             cmd.value(QStringLiteral("site")).toString()};
+        if (cmd.contains(QStringLiteral("plan_tonnes")))
+            r.planTonnes = cmd.value(QStringLiteral("plan_tonnes")).toDouble();
+        QJsonObject o = writeShiftReport(m_gate->bridges(), m_fleet, r);
+        o[QStringLiteral("type")] = QStringLiteral("result");
+        o[QStringLiteral("cmd")] = name;
+        if (cmd.contains(QStringLiteral("req")))
+            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
+        writeLine(o);
+        QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
+        emit commandHandled(line);
+        return line;
+    }
     const bool forProtocol = id.isEmpty() && cmd.contains(QStringLiteral("protocol"));
     if (m_protocolCommands.contains(name) || (!name.isEmpty() && (m_gate->bridgeFor(id) || forProtocol))) {
         if (id.isEmpty() && !forProtocol)

@@ -25,6 +25,9 @@
 //   {"cmd":"assign","id":"iso23725:<guid>","tasks":[{"task":"Load","destination":4201,"route":[2001]},..]}
 //   (or one task's keys at the top level; the result echoes "tasks" with their "assignment_id")
 //   {"cmd":"reset_assignment","id":"iso23725:<guid>"}  {"cmd":"production"} (result "trucks": dispatch views)
+//   {"cmd":"shift_report","pdf":"shift.pdf","csv":"shift.csv","plan_tonnes":30000} (either file may be left
+//   out; result "written":{"pdf":true,"csv":true}, "loads", "tonnes", "cycles"; ok only when all were
+//   written)
 //   {"cmd":"counters"}: one result line with every stack's counters per link (issue 14 §6):
 //     {"type":"result","cmd":"counters","ok":true,"message":"3 links","links":[{"protocol":"osyris",
 //      "link":"osyris:239.255.0.1:5000","rejected_total":4,"rejected":{"rejected.too_short":3,

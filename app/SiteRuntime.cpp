@@ -1,4 +1,5 @@
 #include "app/SiteRuntime.h"
+#include "app/ShiftReportCommand.h"
 
 #include "app/ConsoleApp.h"
 #include "app/LogRouting.h"
@@ -319,6 +320,11 @@ int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
     mon->stopStdin();                       // no early stop through the bridges once they are being torn down
     stop();
     return rc;
+}
+
+QJsonObject SiteRuntime::writeShiftReport(const QString& pdf, const QString& csv) {
+    return ocu::writeShiftReport(m_impl->ctx->gate()->bridges(), m_impl->ctx->fleet(),
+                                 {pdf, csv, std::nullopt, QString::fromStdString(m_config.name)});
 }
 
 } // namespace ocu

@@ -3,6 +3,8 @@
 // protocol stacks on their worker threads, the bridges into Qt, and the models the panels show.
 #include "protocols/site/SiteConfig.h"
 
+#include <QJsonObject>
+
 #include <QObject>
 #include <QString>
 
@@ -29,6 +31,9 @@ public:
     void populate(MainWindow& window);
     // JSON-lines monitor on stdout, commands on stdin; returns the exit code.
     int runHeadless(QApplication& app, double durationSeconds);
+    // Issue 15 §4: the shift report (PDF and/or CSV, empty = not asked); the result says what was written
+    // (app/ShiftReportCommand.h).
+    QJsonObject writeShiftReport(const QString& pdf, const QString& csv);
 
 private:
     struct Impl;

@@ -15,6 +15,9 @@ packages=(
   # Fuzzing (scripts/fuzz.sh, issue 14): clang 14; -fsanitize=fuzzer needs libclang_rt.fuzzer*.a, which Debian 12
   # ships in libclang-rt-14-dev (only a Recommends of clang-14, so not installed by --no-install-recommends).
   clang-14 libclang-rt-14-dev
+  # Issue 15 §4: production charts (Qt Charts, widgets/production) and the shift report test renders the PDF
+  # with poppler's pdftoppm.
+  qt6-charts-dev poppler-utils
 )
 
 missing=()

@@ -2,6 +2,7 @@
 // site map, the "ISO 23725" link indicator, and the console's own position sent to the AHS as one of the
 // FMS's machines when the site configuration names it (own_position.fms_machine_id).
 #include "app/ProtocolModule.h"
+#include "app/modules/IsoProduction.h"
 
 #include "models/FleetContext.h"
 #include "models/OwnPosition.h"
@@ -20,6 +21,7 @@ public:
         if (!s.config.iso23725)
             return {};
         m_bridge = new IsoBridge(*s.config.iso23725, s.frame, s.owner);
+        attachProductionModel(m_bridge); // issue 15 §4
         s.fleet->addBridge(m_bridge);
         return m_bridge->start();
     }
@@ -28,6 +30,10 @@ public:
             m_bridge->stop();
     }
     FleetBridge* bridge() const override { return m_bridge; }
+
+    void populate(const ModulePanels& ui) override {
+        addProductionDock(ui.window, ui.fleet, m_bridge, QString::fromStdString(ui.config.name));
+    }
 
     void attachOwnPosition(OwnPosition* own, const SiteConfig& config) override {
         if (!m_bridge || config.ownPosition.fmsMachineId.empty())

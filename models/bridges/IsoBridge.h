@@ -3,6 +3,7 @@
 // links become link states, the AHS map becomes SiteMapData, and STOP ALL becomes all-stop Apply on
 // every AHS link. The stop state shown is only ever what MachineAllStopV1 reported.
 #include "models/FleetBridge.h"
+#include "models/ProductionReport.h"
 #include "models/bridges/IsoBridgeDispatch.h"
 
 #include "protocols/common/GeoFrame.h"
@@ -79,12 +80,17 @@ signals:
     void mapProgress(const QString& link, int received, int total);
     // Dispatch views changed (coalesced; ids changed or removed since the last signal).
     void dispatchChanged(const QStringList& ids);
+    // Every production report as it arrived (not coalesced: a production tally must see each cycle and
+    // dump). Emitted on the io thread: connect with a queued (or auto) connection.
+    void productionReport(const ocu::ProductionReport& report);
 
 private:
     void onLinkState(const std::string& link, iso23725::LinkState state, const std::string& reason) override;
     void onMachineChanged(const iso23725::IsoMachineSnapshot& machine) override;
     void onMachinePositions(const std::string& link,
                             const std::vector<const iso23725::IsoMachineSnapshot*>& machines) override;
+    void onProductionReport(const iso23725::IsoMachineSnapshot& machine, const iso23725::Body& member,
+                            std::int64_t headerUnixMs) override;
     void onMachineRemoved(const std::string& link, const iso23725::Guid& equipmentId) override;
     void onAllStopChanged(const std::string& link, const iso23725::AllStopStatus& status) override;
     void onMapProgress(const std::string& link, const iso23725::MapProgress& progress) override;

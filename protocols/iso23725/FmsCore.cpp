@@ -359,6 +359,11 @@ void FmsCore::handle(const Envelope& env, bool mapChannel) {
                         machineMember(m, b, hdrMs);
                     }
                     m.stateKnown = true;
+                    if constexpr (std::is_same_v<T, HaulTruckProductionStateV2> ||
+                                  std::is_same_v<T, HaulTruckPayloadV1> ||
+                                  std::is_same_v<T, HaulTruckDumpV1> ||
+                                  std::is_same_v<T, HaulTruckProductionCycleV1>)
+                        m_listener.onProductionReport(m, mem.body, hdrMs);
                     m_listener.onMachineChanged(m);
                 }
             },

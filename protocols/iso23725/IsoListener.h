@@ -83,6 +83,14 @@ public:
     // Machines that only moved (a new MachinePositionV1, nothing else changed), latest position each, in one
     // batch some milliseconds after they arrived: a listener on the hot path reads just the positions (the
     // snapshots are valid during the call only). By default each is an onMachineChanged.
+    // One production report as it arrived (§12: HaulTruckProductionStateV2, HaulTruckPayloadV1,
+    // HaulTruckDumpV1, HaulTruckProductionCycleV1; late ones too, with their header time), so a production
+    // tally sees every cycle and dump even when several come between two deliveries of the machine's state.
+    // `machine` is the machine after the report.
+    virtual void onProductionReport(const IsoMachineSnapshot& machine, const Body& member,
+                                    std::int64_t headerUnixMs) {
+        (void)machine, (void)member, (void)headerUnixMs;
+    }
     virtual void onMachinePositions(const std::string& link,
                                     const std::vector<const IsoMachineSnapshot*>& machines) {
         (void)link;

@@ -1,0 +1,49 @@
+#include "app/modules/IsoProduction.h"
+
+#include "app/MainWindow.h"
+#include "models/FleetContext.h"
+#include "models/ProductionModel.h"
+#include "models/bridges/IsoBridge.h"
+#include "widgets/production/ProductionView.h"
+#include "widgets/production/ShiftReport.h"
+
+#include <QDockWidget>
+
+namespace ocu {
+
+ProductionModel* attachProductionModel(IsoBridge* bridge) {
+    qRegisterMetaType<ProductionReport>(); // queued from the stack's io thread
+    auto* model = new ProductionModel(bridge);
+    model->setObjectName(QStringLiteral("production"));
+    QObject::connect(bridge, &IsoBridge::productionReport, model, &ProductionModel::addReport,
+                     Qt::QueuedConnection);
+    QObject::connect(bridge, &IsoBridge::dispatchChanged, model, [bridge, model] {
+        for (const IsoDestination& d : bridge->destinations())
+            model->setAreaName(d.wayId, d.name);
+    });
+    return model;
+}
+
+void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridge, const QString& siteName) {
+    auto* model = bridge->findChild<ProductionModel*>();
+    if (!model)
+        return;
+    auto* view = new ProductionView(model);
+    view->setSiteName(siteName);
+    FleetModel* fleetModel = fleet ? fleet->fleet() : nullptr;
+    view->setMapSnapshotSource([fleetModel, bridge](const QSize& size) {
+        return renderSiteSnapshot(fleetModel, bridge->siteMap(), size);
+    });
+    auto* dock = new QDockWidget(QObject::tr("Production"), &window);
+    dock->setObjectName(QStringLiteral("dock-production"));
+    // Not closable: it has no entry in the View menu to bring it back.
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    dock->setWidget(view);
+    window.addDockWidget(Qt::BottomDockWidgetArea, dock);
+    if (QDockWidget* events = window.dock(Panel::EventLog)) {
+        window.tabifyDockWidget(events, dock);
+        events->raise();
+    }
+}
+
+} // namespace ocu

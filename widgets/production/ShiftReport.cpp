@@ -1,0 +1,295 @@
+#include "widgets/production/ShiftReport.h"
+
+#include "models/ProductionModel.h"
+#include "models/SiteMapData.h"
+#include "widgets/SiteMapView.h"
+#include "widgets/production/ProductionCharts.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QFileInfo>
+#include <QPageSize>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QSaveFile>
+#include <QTextStream>
+
+namespace ocu {
+
+namespace {
+
+QString num(double v, int decimals) {
+    return QString::number(v, 'f', decimals);
+}
+
+QString csvField(const QString& s) {
+    if (!s.contains(QLatin1Char(',')) && !s.contains(QLatin1Char('"')) && !s.contains(QLatin1Char('\n')))
+        return s;
+    QString q = s;
+    q.replace(QLatin1String("\""), QLatin1String("\"\""));
+    return QLatin1Char('"') + q + QLatin1Char('"');
+}
+
+QStringList row(const QString& section, const ProductionTally& t) {
+    QStringList r{section,
+                  t.key,
+                  t.name,
+                  QString::number(t.loads),
+                  num(t.tonnes, 1),
+                  QString::number(t.loadsWithoutTonnes),
+                  QString::number(t.cycle.cycles),
+                  num(t.cycle.averageTotal(), 1)};
+    for (int p = 0; p < CycleBreakdown::PartCount; ++p)
+        r << num(t.cycle.average(CycleBreakdown::Part(p)), 1);
+    return r;
+}
+
+QString when(qint64 ms) {
+    return QDateTime::fromMSecsSinceEpoch(ms).toString(QStringLiteral("yyyy-MM-dd HH:mm"));
+}
+
+QString minutes(double seconds) {
+    return QStringLiteral("%1:%2")
+        .arg(qint64(seconds) / 60)
+        .arg(qint64(seconds) % 60, 2, 10, QLatin1Char('0'));
+}
+
+// Draws tables on the PDF's pages, starting a new page when the next row does not fit.
+class PageWriter {
+public:
+    PageWriter(QPdfWriter& pdf, QPainter& p) : m_pdf(pdf), m_p(p) {
+        m_width = p.viewport().width();
+        m_height = p.viewport().height();
+    }
+    int width() const { return m_width; }
+    int& y() { return m_y; }
+    void need(int h) {
+        if (m_y + h > m_height) {
+            m_pdf.newPage();
+            m_y = 0;
+        }
+    }
+    void heading(const QString& text, int size) {
+        QFont f = m_p.font();
+        f.setPointSizeF(size);
+        f.setBold(true);
+        m_p.setFont(f);
+        const int h = m_p.fontMetrics().height();
+        need(h * 2);
+        m_p.drawText(QRect(0, m_y, m_width, h), Qt::AlignLeft | Qt::AlignVCenter, text);
+        m_y += h + h / 3;
+        f.setBold(false);
+        f.setPointSizeF(9);
+        m_p.setFont(f);
+    }
+    void text(const QString& t) {
+        const int h = m_p.fontMetrics().height();
+        need(h);
+        m_p.drawText(QRect(0, m_y, m_width, h), Qt::AlignLeft | Qt::AlignVCenter, t);
+        m_y += h;
+    }
+    // Column widths as fractions of the page; the first column left-aligned, the others right.
+    void table(const QStringList& header, const QVector<QStringList>& rows, const QVector<double>& widths) {
+        const int h = m_p.fontMetrics().height() * 13 / 10;
+        auto line = [&](const QStringList& cells, bool bold, bool shade) {
+            need(h);
+            if (shade)
+                m_p.fillRect(QRect(0, m_y, m_width, h), QColor(0xee, 0xf2, 0xf7));
+            QFont f = m_p.font();
+            f.setBold(bold);
+            m_p.setFont(f);
+            int x = 0;
+            for (int i = 0; i < cells.size() && i < widths.size(); ++i) {
+                const int w = int(widths[i] * m_width);
+                m_p.drawText(QRect(x + 4, m_y, w - 8, h),
+                             (i == 0 ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter, cells[i]);
+                x += w;
+            }
+            f.setBold(false);
+            m_p.setFont(f);
+            m_y += h;
+        };
+        line(header, true, true);
+        m_p.setPen(QColor(0x90, 0x90, 0x90));
+        m_p.drawLine(0, m_y, m_width, m_y);
+        m_p.setPen(Qt::black);
+        for (int i = 0; i < rows.size(); ++i)
+            line(rows[i], i == rows.size() - 1 && rows[i].value(0) == QObject::tr("Shift"), i % 2 == 1);
+        m_y += h / 2;
+    }
+
+private:
+    QPdfWriter& m_pdf;
+    QPainter& m_p;
+    int m_width = 0;
+    int m_height = 0;
+    int m_y = 0;
+};
+
+QVector<QStringList> tableRows(const QVector<ProductionTally>& tallies, const ProductionTally* total) {
+    QVector<QStringList> rows;
+    auto add = [&](const ProductionTally& t) {
+        QStringList r{t.name, QString::number(t.loads), num(t.tonnes, 0),
+                      t.loads ? num(t.tonnes / std::max(1, t.loads - t.loadsWithoutTonnes), 0)
+                              : QStringLiteral("–"),
+                      QString::number(t.cycle.cycles)};
+        for (auto part : {CycleBreakdown::Queue, CycleBreakdown::Spot, CycleBreakdown::Load,
+                          CycleBreakdown::Haul, CycleBreakdown::Dump, CycleBreakdown::Return})
+            r << (t.cycle.cycles ? minutes(t.cycle.average(part)) : QStringLiteral("–"));
+        r << (t.cycle.cycles ? minutes(t.cycle.averageTotal()) : QStringLiteral("–"));
+        rows << r;
+    };
+    for (const auto& t : tallies)
+        add(t);
+    if (total)
+        add(*total);
+    return rows;
+}
+
+} // namespace
+
+QVector<QStringList> shiftCsvRows(const ProductionModel& m) {
+    QVector<QStringList> rows;
+    QStringList header{QStringLiteral("section"), QStringLiteral("key"),
+                       QStringLiteral("name"),    QStringLiteral("loads"),
+                       QStringLiteral("tonnes"),  QStringLiteral("loads_without_tonnes"),
+                       QStringLiteral("cycles"),  QStringLiteral("avg_cycle_s")};
+    for (int p = 0; p < CycleBreakdown::PartCount; ++p)
+        header << CycleBreakdown::partName(CycleBreakdown::Part(p)) + QStringLiteral("_s");
+    rows << header;
+    rows << row(QStringLiteral("shift"), m.shift());
+    for (const auto& t : m.trucks())
+        rows << row(QStringLiteral("truck"), t);
+    for (const auto& t : m.shovels())
+        rows << row(QStringLiteral("shovel"), t);
+    for (const auto& t : m.dumps())
+        rows << row(QStringLiteral("dump"), t);
+    return rows;
+}
+
+QString writeShiftCsv(const ProductionModel& m, const QString& file) {
+    QSaveFile f(file);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Text))
+        return QObject::tr("cannot write %1: %2").arg(file, f.errorString());
+    QTextStream out(&f);
+    out << "# OCU shift report\n";
+    out << "# shift_start," << QDateTime::fromMSecsSinceEpoch(m.shiftStart()).toUTC().toString(Qt::ISODate)
+        << "\n";
+    out << "# shift_end," << QDateTime::fromMSecsSinceEpoch(m.shiftEnd()).toUTC().toString(Qt::ISODate)
+        << "\n";
+    out << "# plan_tonnes," << num(m.planTonnes(), 1) << "\n";
+    for (const QStringList& r : shiftCsvRows(m)) {
+        QStringList cells;
+        for (const QString& c : r)
+            cells << csvField(c);
+        out << cells.join(QLatin1Char(',')) << "\n";
+    }
+    out.flush();
+    if (!f.commit())
+        return QObject::tr("cannot write %1: %2").arg(file, f.errorString());
+    return {};
+}
+
+QString writeShiftPdf(const ProductionModel& m, const QImage& map, const QString& siteName,
+                      const QString& file) {
+    {
+        QFile probe(file);
+        if (!probe.open(QIODevice::WriteOnly))
+            return QObject::tr("cannot write %1: %2").arg(file, probe.errorString());
+    }
+    QPdfWriter pdf(file);
+    pdf.setPageSize(QPageSize(QPageSize::A4));
+    pdf.setResolution(150);
+    pdf.setPageMargins(QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter);
+    pdf.setTitle(QObject::tr("Shift report"));
+    pdf.setCreator(QStringLiteral("OCU"));
+    QPainter p;
+    if (!p.begin(&pdf))
+        return QObject::tr("cannot write %1").arg(file);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setRenderHint(QPainter::SmoothPixmapTransform);
+    PageWriter w(pdf, p);
+    const int W = w.width();
+
+    w.heading(QObject::tr("Shift report — %1").arg(siteName.isEmpty() ? QObject::tr("site") : siteName), 16);
+    w.text(QObject::tr("Shift %1 to %2 · written %3")
+               .arg(when(m.shiftStart()), when(m.shiftEnd()),
+                    QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
+    const auto& s = m.shift();
+    const qint64 now = std::clamp(QDateTime::currentMSecsSinceEpoch(), m.shiftStart(), m.shiftEnd());
+    QString planText =
+        m.planTonnes() > 0
+            ? QObject::tr("plan %1 t for the shift, %2 t due by now (%3 %)")
+                  .arg(num(m.planTonnes(), 0), num(m.plannedTonnesAt(now), 0),
+                       num(m.plannedTonnesAt(now) > 0 ? 100 * s.tonnes / m.plannedTonnesAt(now) : 0, 0))
+            : QObject::tr("no plan set");
+    w.text(QObject::tr("%1 loads, %2 t dumped, %3 cycles, average cycle %4 · %5")
+               .arg(s.loads)
+               .arg(num(s.tonnes, 0))
+               .arg(s.cycle.cycles)
+               .arg(s.cycle.cycles ? minutes(s.cycle.averageTotal()) : QStringLiteral("–"))
+               .arg(planText));
+    if (s.loadsWithoutTonnes)
+        w.text(QObject::tr("%1 loads were dumped without a reported weight (not in the tonnes)")
+                   .arg(s.loadsWithoutTonnes));
+    w.y() += 10;
+
+    // Map snapshot, then the two charts side by side.
+    const int mapH = W * 9 / 20;
+    if (!map.isNull()) {
+        const QImage scaled = map.scaled(W, mapH, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+        const int x = (W - scaled.width()) / 2;
+        p.drawImage(QPoint(x, w.y()), scaled);
+        p.setPen(QColor(0x80, 0x80, 0x80));
+        p.drawRect(QRect(x, w.y(), scaled.width(), scaled.height()));
+        p.setPen(Qt::black);
+        w.y() += scaled.height() + 12;
+    } else {
+        w.text(QObject::tr("(no site map available for the snapshot)"));
+    }
+    const int chartH = W * 2 / 5;
+    w.need(chartH);
+    const QImage tonnes = renderProductionChart(ProductionChart::TonnesVsPlan, m, QSize(W / 2 - 6, chartH));
+    const QImage cycle = renderProductionChart(ProductionChart::CycleBreakdown, m, QSize(W / 2 - 6, chartH));
+    p.drawImage(QPoint(0, w.y()), tonnes);
+    p.drawImage(QPoint(W / 2 + 6, w.y()), cycle);
+    w.y() += chartH + 12;
+
+    const QStringList header{QObject::tr("Name"),   QObject::tr("Loads"),  QObject::tr("Tonnes"),
+                             QObject::tr("t/load"), QObject::tr("Cycles"), QObject::tr("Queue"),
+                             QObject::tr("Spot"),   QObject::tr("Load"),   QObject::tr("Haul"),
+                             QObject::tr("Dump"),   QObject::tr("Return"), QObject::tr("Cycle")};
+    const QVector<double> widths{0.19,  0.06,  0.08,  0.07,  0.07,  0.075,
+                                 0.075, 0.075, 0.075, 0.075, 0.075, 0.08};
+    ProductionTally total = s;
+    total.name = QObject::tr("Shift");
+    w.heading(QObject::tr("Trucks (cycle parts: average min:s per cycle)"), 12);
+    w.table(header, tableRows(m.trucks(), &total), widths);
+    w.heading(QObject::tr("Shovels (load areas)"), 12);
+    w.table(header, tableRows(m.shovels(), nullptr), widths);
+    w.heading(QObject::tr("Dumps and crusher"), 12);
+    w.table(header, tableRows(m.dumps(), nullptr), widths);
+    if (!p.end())
+        return QObject::tr("cannot write %1").arg(file);
+    if (QFileInfo(file).size() == 0)
+        return QObject::tr("cannot write %1").arg(file);
+    return {};
+}
+
+QImage renderSiteSnapshot(FleetModel* fleet, const SiteMapData& map, const QSize& size) {
+    if (map.features.isEmpty())
+        return {};
+    SiteMapView view;
+    view.resize(size);
+    view.setSiteMap(map);
+    view.fitToContent(); // framed to the map (machines of other sites' protocols may be far away)
+    if (fleet)
+        view.setFleet(fleet, nullptr);
+    QImage img(size, QImage::Format_ARGB32_Premultiplied);
+    img.fill(Qt::white);
+    QPainter p(&img);
+    view.paintScene(p, size);
+    return img;
+}
+
+} // namespace ocu
