@@ -185,7 +185,7 @@ private slots:
         for (const QPointF& p : track) {
             double best = 1e12;
             for (const auto& f : map.features)
-                if (routeWays.contains(f.id))
+                if (routeWays.contains(f.id.section(QLatin1Char('/'), -1))) // "<link>/<way id>"
                     best = std::min(best, distanceTo(f, p));
             onRoute += best < 15 ? 1 : 0;
         }
