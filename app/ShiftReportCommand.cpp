@@ -32,7 +32,7 @@ QJsonObject writeShiftReport(const QVector<FleetBridge*>& bridges, FleetModel* f
     if (r.planTonnes)
         model->setPlanTonnes(*r.planTonnes);
     if (!r.pdf.isEmpty()) {
-        const QImage map = renderSiteSnapshot(fleet, owner->siteMap(), QSize(1600, 900));
+        const QImage map = renderSiteSnapshot(fleet, owner->siteMap(), QSize(1100, 500));
         const QString e = writeShiftPdf(*model, map, r.siteName, r.pdf);
         if (e.isEmpty())
             written[QStringLiteral("pdf")] = true;

@@ -129,6 +129,8 @@ void ProductionModel::countLoad(const ProductionReport& r, TruckState& t, std::o
         m_loadsSeries[k].ry() += 1;
     }
     t.loadedTonnes.reset();
+    t.lastDumpUnknownShovel = !loadWay;
+    t.lastDumpTonnes = tonnes;
 }
 
 void ProductionModel::addReport(const ProductionReport& r) {
@@ -153,10 +155,34 @@ void ProductionModel::addReport(const ProductionReport& r) {
         ++t.dumpsSinceCycle;
         break;
     case ProductionReport::Kind::Cycle: {
-        if (t.dumpsSinceCycle == 0) // no dump reported for this cycle: the cycle is the load
+        if (t.dumpsSinceCycle == 0) { // no dump reported for this cycle: the cycle is the load
             countLoad(r, t, r.loadWayId ? r.loadWayId : t.lastLoadingWay, r.dumpWayId,
                       r.tonnes ? r.tonnes : t.loadedTonnes);
+        } else if (t.lastDumpUnknownShovel && r.loadWayId) {
+            // The dump before went to the unknown shovel: the cycle says which it was.
+            auto move = [&](ProductionTally& x, int sign) {
+                x.loads += sign;
+                if (t.lastDumpTonnes)
+                    x.tonnes += sign * *t.lastDumpTonnes;
+                else
+                    x.loadsWithoutTonnes += sign;
+            };
+            move(tally(m_shovels, QStringLiteral("unknown"), tr("unknown shovel")), -1);
+            move(tally(m_shovels, QString::number(*r.loadWayId), areaName(*r.loadWayId)), +1);
+            if (m_shovels.value(QStringLiteral("unknown")).loads <= 0)
+                m_shovels.remove(QStringLiteral("unknown"));
+        }
         t.dumpsSinceCycle = 0;
+        t.lastDumpUnknownShovel = false;
+        bool loading = false, dumping = false;
+        for (const auto& p : r.periods) {
+            loading = loading || p.state == QLatin1String("Loading");
+            dumping = dumping || p.state == QLatin1String("Dumping");
+        }
+        if (!loading || !dumping) { // seen in part only: attributes the load, stays out of the breakdown
+            ++m_partialCycles;
+            break;
+        }
         m_shift.cycle.add(r.periods);
         tally(m_trucks, r.truckId, t.name).cycle.add(r.periods);
         if (r.loadWayId)
@@ -180,7 +206,7 @@ void ProductionModel::clear() {
     m_dumps.clear();
     m_tonnesSeries.clear();
     m_loadsSeries.clear();
-    m_counted = m_ignored = 0;
+    m_counted = m_ignored = m_partialCycles = 0;
     emit changed();
 }
 

@@ -8,7 +8,10 @@
 // Counting: a load is counted when the truck reports its dump (tonnes: DumpedWeight, else the payload it
 // reported at loading, else unknown and counted as such), attributed to the truck, the dump area and the load
 // area it was loaded at (the cycle's LoadWayId, else the way of its last Loading state). A completed cycle
-// that no dump preceded counts as the load itself. Reports timed before the shift's start are not counted.
+// that no dump preceded counts as the load itself, and a cycle names the load area of the dump before it when
+// the truck's Loading state was not seen. Only whole cycles (with Loading and Dumping among their states)
+// enter the breakdown: a cycle the AHS saw only part of (it started mid-cycle) would distort the averages.
+// Reports timed before the shift's start are not counted.
 #include "models/ProductionReport.h"
 
 #include <QHash>
@@ -67,7 +70,11 @@ public:
     const QVector<QPointF>& tonnesOverShift() const { return m_tonnesSeries; }
     const QVector<QPointF>& loadsOverShift() const { return m_loadsSeries; }
     int reportsCounted() const { return m_counted; }
-    int reportsIgnored() const { return m_ignored; } // before the shift
+    int reportsIgnored() const { return m_ignored; }      // before the shift
+    int partialCycles() const { return m_partialCycles; } // not in the breakdown
+    // The site's name for the shift report.
+    void setSiteName(const QString& name) { m_siteName = name; }
+    QString siteName() const { return m_siteName; }
 
 public slots:
     void addReport(const ocu::ProductionReport& report);
@@ -84,6 +91,10 @@ private:
         std::optional<double> loadedTonnes;   // the payload reported since its last dump
         QString loaderId;
         int dumpsSinceCycle = 0;
+        // The last dump's load went to the unknown shovel (tonnes as counted): a cycle naming the load area
+        // moves it there.
+        bool lastDumpUnknownShovel = false;
+        std::optional<double> lastDumpTonnes;
     };
     ProductionTally& tally(QHash<QString, ProductionTally>& in, const QString& key, const QString& name);
     void countLoad(const ProductionReport& r, TruckState& t, std::optional<qint64> loadWay,
@@ -100,6 +111,8 @@ private:
     QVector<QPointF> m_tonnesSeries, m_loadsSeries;
     int m_counted = 0;
     int m_ignored = 0;
+    int m_partialCycles = 0;
+    QString m_siteName;
 };
 
 } // namespace ocu

@@ -6,6 +6,7 @@
 
 #include "models/FleetContext.h"
 #include "models/OwnPosition.h"
+#include "models/ProductionModel.h"
 #include "models/bridges/IsoBridge.h"
 
 namespace ocu {
@@ -21,7 +22,7 @@ public:
         if (!s.config.iso23725)
             return {};
         m_bridge = new IsoBridge(*s.config.iso23725, s.frame, s.owner);
-        attachProductionModel(m_bridge); // issue 15 §4
+        attachProductionModel(m_bridge)->setSiteName(QString::fromStdString(s.config.name)); // issue 15 §4
         s.fleet->addBridge(m_bridge);
         return m_bridge->start();
     }

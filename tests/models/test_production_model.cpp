@@ -156,6 +156,30 @@ private slots:
         QCOMPARE(s[1], QPointF(double(kStart + 30 * kMin), 300));
     }
 
+    // A truck seen first mid-cycle (loaded, hauling): its first dump goes to the unknown shovel until the
+    // cycle names the load area; that cycle, seen in part only, stays out of the breakdown.
+    void partialFirstCycleAttributesButIsNotAveraged() {
+        ProductionModel m;
+        m.setShift(kStart, kStart + 60 * kMin);
+        m.addReport(dump(QStringLiteral("a"), 4201, 250, kStart + 5 * kMin));
+        QCOMPARE(find(m.shovels(), QStringLiteral("unknown"))->loads, 1);
+        ProductionReport c = cycle(QStringLiteral("a"), 4102, 4201, 250, kStart + 5 * kMin + 1);
+        c.periods = {{QStringLiteral("Hauling"), kStart + kMin, 200},
+                     {QStringLiteral("Dumping"), kStart + 4 * kMin, 45}};
+        m.addReport(c);
+        QVERIFY(!find(m.shovels(), QStringLiteral("unknown")));
+        QCOMPARE(find(m.shovels(), QStringLiteral("4102"))->loads, 1);
+        QCOMPARE(find(m.shovels(), QStringLiteral("4102"))->tonnes, 250.0);
+        QCOMPARE(m.shift().cycle.cycles, 0);
+        QCOMPARE(m.partialCycles(), 1);
+        QCOMPARE(m.shift().loads, 1);
+        // The next, whole cycle is averaged.
+        m.addReport(dump(QStringLiteral("a"), 4201, 260, kStart + 25 * kMin));
+        m.addReport(cycle(QStringLiteral("a"), 4102, 4201, 260, kStart + 25 * kMin + 1));
+        QCOMPARE(m.shift().cycle.cycles, 1);
+        QCOMPARE(find(m.shovels(), QStringLiteral("4102"))->loads, 2);
+    }
+
     void planIsSpreadOverTheShift() {
         ProductionModel m;
         m.setShift(kStart, kStart + 100 * kMin);

@@ -92,7 +92,8 @@ void build(ProductionChart kind, QChart* chart, const ProductionModel& m) {
         x->setRange(QDateTime::fromMSecsSinceEpoch(m.shiftStart()), QDateTime::fromMSecsSinceEpoch(xEnd));
         x->setTickCount(6);
         auto* yAxis = new QValueAxis;
-        yAxis->setRange(0, yMax * 1.1);
+        yAxis->setRange(0, yMax * 1.05);
+        yAxis->applyNiceNumbers();
         yAxis->setLabelFormat(QStringLiteral("%.0f"));
         yAxis->setTitleText(QObject::tr("t"));
         chart->addAxis(x, Qt::AlignBottom);
@@ -133,6 +134,7 @@ void build(ProductionChart kind, QChart* chart, const ProductionModel& m) {
     cats->append(names);
     auto* minutes = new QValueAxis;
     minutes->setRange(0, maxTotal * 1.05);
+    minutes->applyNiceNumbers();
     minutes->setLabelFormat(QStringLiteral("%.0f"));
     minutes->setTitleText(QObject::tr("min"));
     chart->addAxis(cats, Qt::AlignLeft);

@@ -157,7 +157,7 @@ void ProductionView::refresh() {
 }
 
 QString ProductionView::writeReport(const QString& pdfFile, const QString& csvFile) {
-    const QImage map = m_snapshot ? m_snapshot(QSize(1600, 900)) : QImage();
+    const QImage map = m_snapshot ? m_snapshot(QSize(1100, 500)) : QImage();
     if (QString e = writeShiftPdf(*m_model, map, m_siteName, pdfFile); !e.isEmpty())
         return e;
     if (QString e = writeShiftCsv(*m_model, csvFile); !e.isEmpty())

@@ -14,6 +14,8 @@
 #include <QSaveFile>
 #include <QTextStream>
 
+#include <algorithm>
+
 namespace ocu {
 
 namespace {
@@ -211,7 +213,8 @@ QString writeShiftPdf(const ProductionModel& m, const QImage& map, const QString
     PageWriter w(pdf, p);
     const int W = w.width();
 
-    w.heading(QObject::tr("Shift report — %1").arg(siteName.isEmpty() ? QObject::tr("site") : siteName), 16);
+    const QString site = siteName.isEmpty() ? m.siteName() : siteName;
+    w.heading(site.isEmpty() ? QObject::tr("Shift report") : QObject::tr("Shift report — %1").arg(site), 16);
     w.text(QObject::tr("Shift %1 to %2 · written %3")
                .arg(when(m.shiftStart()), when(m.shiftEnd()),
                     QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
@@ -238,6 +241,7 @@ QString writeShiftPdf(const ProductionModel& m, const QImage& map, const QString
     const int mapH = W * 9 / 20;
     if (!map.isNull()) {
         const QImage scaled = map.scaled(W, mapH, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+        // (callers render the snapshot at about 3/4 of this size, so its labels stay legible on paper)
         const int x = (W - scaled.width()) / 2;
         p.drawImage(QPoint(x, w.y()), scaled);
         p.setPen(QColor(0x80, 0x80, 0x80));
@@ -282,7 +286,10 @@ QImage renderSiteSnapshot(FleetModel* fleet, const SiteMapData& map, const QSize
     SiteMapView view;
     view.resize(size);
     view.setSiteMap(map);
-    view.fitToContent(); // framed to the map (machines of other sites' protocols may be far away)
+    // Framed to the map (machines of other protocols may be far away), with a small margin.
+    const QRectF b = map.bounds();
+    if (b.width() > 0 && b.height() > 0)
+        view.setView(b.center(), 0.94 * std::min(size.width() / b.width(), size.height() / b.height()));
     if (fleet)
         view.setFleet(fleet, nullptr);
     QImage img(size, QImage::Format_ARGB32_Premultiplied);
