@@ -49,6 +49,17 @@ private slots:
         QVERIFY(!parse({"--headless", "--screenshot", "x.png"}, o, e));
         QVERIFY(e.contains("cannot be combined"));
     }
+    void shiftReport() {
+        CommandLineOptions o;
+        QString e;
+        QVERIFY2(parse({"--headless", "--duration", "60", "--shift-report", "s.pdf", "--shift-csv", "s.csv"},
+                       o, e),
+                 qPrintable(e));
+        QCOMPARE(o.shiftReportPdf, QString("s.pdf"));
+        QCOMPARE(o.shiftReportCsv, QString("s.csv"));
+        QVERIFY(!parse({"--shift-csv", "s.csv"}, o, e)); // needs --headless
+        QVERIFY(e.contains("--headless"));
+    }
     void rejections_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("message");

@@ -95,6 +95,26 @@ private slots:
             QVERIFY2(!img.isNull() && img.width() > 100 && img.height() > 100, view);
         }
     }
+    // Issue 15 §4: the shift report from the command line, written when a headless run ends (the built-in
+    // site), and said so on stderr; the CSV has its header and the shift row.
+    void headlessShiftReportFromTheCommandLine() {
+        const QString pdf = m_dir.filePath("shift.pdf"), csv = m_dir.filePath("shift.csv");
+        const Run r =
+            run({"--headless", "--duration", "4", "--shift-report", pdf, "--shift-csv", csv}, 120000);
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains("shift report written"), qPrintable(r.err.right(2000)));
+        QVERIFY(QFileInfo(pdf).size() > 1000);
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(f.readAll());
+        QVERIFY(text.contains("section,key,name,loads,tonnes"));
+        QVERIFY(text.contains("\nshift,shift,"));
+        // Without --headless it is refused with the reason.
+        const Run bad = run({"--shift-report", pdf});
+        QVERIFY(bad.exitCode != 0);
+        QVERIFY2(bad.err.contains("--headless"), qPrintable(bad.err));
+    }
+
     void noQt5Linked() {
         QProcess p;
         p.start("ldd", {OCU_BINARY});
