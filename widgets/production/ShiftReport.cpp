@@ -263,8 +263,8 @@ QString writeShiftPdf(const ProductionModel& m, const QImage& map, const QString
                              QObject::tr("t/load"), QObject::tr("Cycles"), QObject::tr("Queue"),
                              QObject::tr("Spot"),   QObject::tr("Load"),   QObject::tr("Haul"),
                              QObject::tr("Dump"),   QObject::tr("Return"), QObject::tr("Cycle")};
-    const QVector<double> widths{0.19,  0.06,  0.08,  0.07,  0.07,  0.075,
-                                 0.075, 0.075, 0.075, 0.075, 0.075, 0.08};
+    const QVector<double> widths{0.145, 0.085, 0.085, 0.075, 0.075, 0.076,
+                                 0.076, 0.076, 0.076, 0.076, 0.076, 0.079};
     ProductionTally total = s;
     total.name = QObject::tr("Shift");
     w.heading(QObject::tr("Trucks (cycle parts: average min:s per cycle)"), 12);
