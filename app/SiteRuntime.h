@@ -13,6 +13,9 @@ class QApplication;
 namespace ocu {
 
 class MainWindow;
+namespace recording {
+class Recorder;
+}
 
 class SiteRuntime : public QObject {
     Q_OBJECT
@@ -29,8 +32,11 @@ public:
     void populate(MainWindow& window);
     // JSON-lines monitor on stdout, commands on stdin; returns the exit code.
     int runHeadless(QApplication& app, double durationSeconds);
+    // The flight recorder of this run (issue 16), or nullptr when recording is off or could not start.
+    recording::Recorder* recorder() const;
 
 private:
+    void startRecorder();
     struct Impl;
     SiteConfig m_config;
     std::unique_ptr<Impl> m_impl;
