@@ -84,9 +84,10 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     QCommandLineOption replay(QStringLiteral("replay"),
                               tr("Replay a flight recording (no protocol stacks, commands disabled)."),
                               QStringLiteral("FILE"));
-    QCommandLineOption at(QStringLiteral("at"),
-                          tr("With --replay: start at T (seconds after the start, HH:MM:SS UTC or ISO 8601)."),
-                          QStringLiteral("T"));
+    QCommandLineOption at(
+        QStringLiteral("at"),
+        tr("With --replay: start at T (seconds after the start, HH:MM:SS UTC or ISO 8601)."),
+        QStringLiteral("T"));
     QCommandLineOption speed(QStringLiteral("speed"),
                              tr("With --replay: playing speed 0.1 to 16 (--headless: default as fast as "
                                 "possible)."),
@@ -100,8 +101,10 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     QCommandLineOption exSlice(QStringLiteral("export-slice"),
                                tr("With --replay: write the window as a new recording and exit."),
                                QStringLiteral("FILE"));
-    QCommandLineOption from(QStringLiteral("from"), tr("Start of the export window (as --at)."), QStringLiteral("T"));
-    QCommandLineOption to(QStringLiteral("to"), tr("End of the export window (as --at)."), QStringLiteral("T"));
+    QCommandLineOption from(QStringLiteral("from"), tr("Start of the export window (as --at)."),
+                            QStringLiteral("T"));
+    QCommandLineOption to(QStringLiteral("to"), tr("End of the export window (as --at)."),
+                          QStringLiteral("T"));
     p.addOptions({record, noRecord, replay, at, speed, exJsonl, exCsv, exSlice, from, to});
 
     if (!p.parse(args)) {

@@ -108,11 +108,13 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     banner->setMovable(false);
     auto* bannerLabel = new QLabel(banner);
     bannerLabel->setObjectName(QStringLiteral("replayBannerLabel"));
-    bannerLabel->setText(QCoreApplication::translate("Replay", "REPLAY — %1 — recorded %2 to %3 UTC — not live, "
-                                                               "commands disabled")
+    bannerLabel->setText(QCoreApplication::translate("Replay",
+                                                     "REPLAY — %1 — recorded %2 to %3 UTC — not live, "
+                                                     "commands disabled")
                              .arg(QFileInfo(rec->path()).fileName(), utc(rec->startMs()), utc(rec->endMs())));
-    bannerLabel->setStyleSheet(QStringLiteral("QLabel { background: #7b1fa2; color: white; font-weight: bold; "
-                                              "font-size: 15px; padding: 6px 14px; }"));
+    bannerLabel->setStyleSheet(
+        QStringLiteral("QLabel { background: #7b1fa2; color: white; font-weight: bold; "
+                       "font-size: 15px; padding: 6px 14px; }"));
     bannerLabel->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
     banner->addWidget(bannerLabel);
     window.addToolBarBreak(Qt::TopToolBarArea);
@@ -120,10 +122,12 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
 
     // STOP ALL stays visible (the layout operators know) but does nothing in a replay.
     window.stopAllAction()->setEnabled(false);
-    window.stopAllAction()->setToolTip(QCoreApplication::translate("Replay", "Replay: commands are disabled"));
+    window.stopAllAction()->setToolTip(
+        QCoreApplication::translate("Replay", "Replay: commands are disabled"));
     if (window.stopAllButton()) {
         window.stopAllButton()->setEnabled(false);
-        window.stopAllButton()->setStyleSheet(QStringLiteral("QToolButton { background: #9e9e9e; color: #eeeeee; }"));
+        window.stopAllButton()->setStyleSheet(
+            QStringLiteral("QToolButton { background: #9e9e9e; color: #eeeeee; }"));
     }
 
     // Timeline.
@@ -184,7 +188,8 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
             indicators.insert(l.protocol, window.addLinkIndicator(protocolLabel(l.protocol)));
     auto showLink = [indicators](const recording::RecordedLink& l) {
         if (LinkIndicator* ind = indicators.value(l.protocol)) {
-            ind->setState(indicatorState(l.state), l.link + (l.detail.isEmpty() ? QString() : ": " + l.detail));
+            ind->setState(indicatorState(l.state),
+                          l.link + (l.detail.isEmpty() ? QString() : ": " + l.detail));
             if (l.dataAgeMs >= 0)
                 ind->setDataAgeMs(l.dataAgeMs);
         }
@@ -216,40 +221,45 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     feed->setSiteMap(rec->siteMapAt(c->position()));
     window.setPanelWidget(Panel::Site3D, view3d);
 #endif
-    QObject::connect(c, &ReplayController::siteMapChanged, map, [map
+    QObject::connect(c, &ReplayController::siteMapChanged, map,
+                     [map
 #ifdef OCU_HAVE_OCU_VIEW3D
-                                                                 ,
-                                                                 feed
+                      ,
+                      feed
 #endif
     ](const SiteMapData& m) {
-        map->setSiteMap(m);
+                         map->setSiteMap(m);
 #ifdef OCU_HAVE_OCU_VIEW3D
-        feed->setSiteMap(m);
+                         feed->setSiteMap(m);
 #endif
-        map->fitToContent();
-    });
+                         map->fitToContent();
+                     });
     QTimer::singleShot(0, map, [map] { map->fitToContent(); });
     window.setPanelWidget(Panel::EventLog, eventLog(c->alarms()));
     QObject::connect(c, &ReplayController::alarmsReplaced, &window, [&window](AlarmModel* a) {
         window.setPanelWidget(Panel::EventLog, eventLog(a));
         window.setUnacknowledgedAlarms(a->unacknowledgedCount());
-        QObject::connect(a, &AlarmModel::unacknowledgedCountChanged, &window, &MainWindow::setUnacknowledgedAlarms);
+        QObject::connect(a, &AlarmModel::unacknowledgedCountChanged, &window,
+                         &MainWindow::setUnacknowledgedAlarms);
     });
     QObject::connect(c->alarms(), &AlarmModel::unacknowledgedCountChanged, &window,
                      &MainWindow::setUnacknowledgedAlarms);
     window.setUnacknowledgedAlarms(c->alarms()->unacknowledgedCount());
-    const QString off = QCoreApplication::translate("Replay", "Replay: commands are disabled. This panel acts on "
-                                                              "live machines only.");
+    const QString off =
+        QCoreApplication::translate("Replay", "Replay: commands are disabled. This panel acts on "
+                                              "live machines only.");
     window.setPanelWidget(Panel::JausControl, notice(off));
     window.setPanelWidget(Panel::Teleop, notice(off));
-    window.setPanelWidget(Panel::PassCounts,
-                          notice(QCoreApplication::translate("Replay", "Pass counts are not part of a recording "
-                                                                       "(docs/recording.md).")));
+    window.setPanelWidget(Panel::PassCounts, notice(QCoreApplication::translate(
+                                                 "Replay", "Pass counts are not part of a recording "
+                                                           "(docs/recording.md).")));
 }
 
 static int runExports(const Recording& rec, const CommandLineOptions& o) {
-    const qint64 from = o.exportFrom.isEmpty() ? rec.startMs() : recording::parseReplayTime(o.exportFrom, rec.startMs());
-    const qint64 to = o.exportTo.isEmpty() ? rec.endMs() : recording::parseReplayTime(o.exportTo, rec.startMs());
+    const qint64 from =
+        o.exportFrom.isEmpty() ? rec.startMs() : recording::parseReplayTime(o.exportFrom, rec.startMs());
+    const qint64 to =
+        o.exportTo.isEmpty() ? rec.endMs() : recording::parseReplayTime(o.exportTo, rec.startMs());
     if (from < 0 || to < 0)
         return fail(QCoreApplication::translate("Replay", "--from/--to: not a time"));
     QString err;
@@ -264,7 +274,8 @@ static int runExports(const Recording& rec, const CommandLineOptions& o) {
     if (!o.exportJsonl.isEmpty() &&
         !toFile(o.exportJsonl, [&](QIODevice* d) { return rec.exportJsonLines(d, from, to, &err); }))
         return fail(err);
-    if (!o.exportCsv.isEmpty() && !toFile(o.exportCsv, [&](QIODevice* d) { return rec.exportCsv(d, from, to, &err); }))
+    if (!o.exportCsv.isEmpty() &&
+        !toFile(o.exportCsv, [&](QIODevice* d) { return rec.exportCsv(d, from, to, &err); }))
         return fail(err);
     if (!o.exportSlice.isEmpty() && !rec.exportSlice(o.exportSlice, from, to, &err))
         return fail(err);
@@ -282,7 +293,8 @@ int runReplay(QApplication& app, const CommandLineOptions& options) {
     if (!options.replayAt.isEmpty()) {
         at = recording::parseReplayTime(options.replayAt, rec->startMs());
         if (at < 0)
-            return fail(QCoreApplication::translate("Replay", "--at: \"%1\" is not a time").arg(options.replayAt));
+            return fail(
+                QCoreApplication::translate("Replay", "--at: \"%1\" is not a time").arg(options.replayAt));
     }
     FleetModel fleet;
     ReplayController controller(rec.get(), &fleet);
@@ -303,11 +315,13 @@ int runReplay(QApplication& app, const CommandLineOptions& options) {
             if (t == lastStamp)
                 return;
             lastStamp = t;
-            out.write(QJsonDocument(QJsonObject{{QStringLiteral("type"), QStringLiteral("replay")},
-                                                {QStringLiteral("time"), QDateTime::fromMSecsSinceEpoch(t, Qt::UTC)
-                                                                             .toString(Qt::ISODateWithMs)}})
-                          .toJson(QJsonDocument::Compact) +
-                      '\n');
+            out.write(
+                QJsonDocument(
+                    QJsonObject{{QStringLiteral("type"), QStringLiteral("replay")},
+                                {QStringLiteral("time"),
+                                 QDateTime::fromMSecsSinceEpoch(t, Qt::UTC).toString(Qt::ISODateWithMs)}})
+                    .toJson(QJsonDocument::Compact) +
+                '\n');
         });
         if (!options.replaySpeedSet || options.replaySpeed <= 0) {
             for (qint64 t = controller.position(); t < controller.endMs();) {

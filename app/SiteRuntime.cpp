@@ -159,9 +159,10 @@ void SiteRuntime::startRecorder() {
     const RecordConfig& rc = m_config.record;
     if (!rc.enabled)
         return;
-    const QString dir = rc.dir.empty() ? QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
-                                             QStringLiteral("/recordings")
-                                       : QString::fromStdString(rc.dir);
+    const QString dir = rc.dir.empty()
+                            ? QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
+                                  QStringLiteral("/recordings")
+                            : QString::fromStdString(rc.dir);
     recording::applyRetention(dir, qint64(rc.maxTotalMb * 1024 * 1024), rc.maxAgeDays);
     recording::RecorderOptions o;
     o.path = recording::newRecordingPath(dir);
@@ -184,6 +185,14 @@ void SiteRuntime::startRecorder() {
     qCInfo(lcApp).noquote() << "recording to" << o.path;
     d.ctx->alarms()->add(makeEvent(EventSeverity::Info, EventKind::Info, {},
                                    tr("Recording this run to %1").arg(o.path), QStringLiteral("recorder")));
+    if (rc.raw)
+        // No stack hands its raw frames to the recorder yet (docs/recording.md): say so instead of
+        // pretending.
+        d.ctx->alarms()->add(
+            makeEvent(EventSeverity::Warning, EventKind::Info, {},
+                      tr("record.raw is set, but this build records decoded data only (no raw "
+                         "frames)"),
+                      QStringLiteral("recorder")));
 }
 
 static QWidget* notice(const QString& text) {

@@ -1,11 +1,12 @@
 // Issue 16 benchmarks (docs/performance.md "Flight recorder and replay"): prints figures, asserts nothing.
 //   1. Recording cost: N machines x H Hz (default 1,000 x 10) plus other traffic (an event and a link change
-//      per second, a command every 10 s) for S seconds of recording time, pushed as the console does; CPU time
-//      of the whole process (producer + writer thread) per second of traffic = share of one core; file size
-//      per hour.
+//      per second, a command every 10 s) for S seconds of recording time, pushed as the console does; CPU
+//      time of the whole process (producer + writer thread) per second of traffic = share of one core; file
+//      size per hour.
 //   2. Seek: random positions in the recording; wall time per seek (picture rebuilt: keyframe + records after
 //      it, pushed into a FleetModel).
-//   3. Replay at 16x: advancing through the recording in 40 ms ticks of 16x (640 ms of recording per tick) into a
+//   3. Replay at 16x: advancing through the recording in 40 ms ticks of 16x (640 ms of recording per tick)
+//   into a
 //      FleetModel; keeps up when a tick's work takes less than its 40 ms.
 // Usage: bench_recording [--machines N] [--hz H] [--seconds S] [--seeks K] [--keep FILE]
 #include "models/FleetBridge.h"
@@ -32,7 +33,8 @@ using namespace ocu::recording;
 static double processCpuSeconds() {
     rusage u{};
     getrusage(RUSAGE_SELF, &u);
-    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+           double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
 }
 
 int main(int argc, char** argv) {
@@ -120,7 +122,8 @@ int main(int argc, char** argv) {
                 rec.recordLink(QStringLiteral("iso23725"), l);
             }
             if (ms % 10000 == 0)
-                rec.recordCommand(QStringLiteral(R"({"origin":"gui","action":"stop","target":"iso23725:truck-1","ok":true,"targets":[{"id":"iso23725:truck-1","sent":true}]})"));
+                rec.recordCommand(QStringLiteral(
+                    R"({"origin":"gui","action":"stop","target":"iso23725:truck-1","ok":true,"targets":[{"id":"iso23725:truck-1","sent":true}]})"));
             // The writer commits every 200 ms of recording time (as with the wall clock).
             if (ms % 200 == 0)
                 rec.flush();
@@ -129,8 +132,9 @@ int main(int argc, char** argv) {
         cpuRecording = processCpuSeconds() - cpu0;
         const auto s = rec.stats();
         const double bytes = double(QFileInfo(file).size());
-        std::printf("recording: %d machines x %d Hz + events/links/commands, %d s of traffic, %llu state records\n",
-                    machines, hz, seconds, static_cast<unsigned long long>(records));
+        std::printf(
+            "recording: %d machines x %d Hz + events/links/commands, %d s of traffic, %llu state records\n",
+            machines, hz, seconds, static_cast<unsigned long long>(records));
         std::printf("  cpu (producer + writer): %.3f s = %.2f %% of one core (writer thread alone %.3f s)\n",
                     cpuRecording, 100.0 * cpuRecording / seconds, double(s.writerCpuNs) / 1e9);
         std::printf("  dropped %llu, commits %llu\n", static_cast<unsigned long long>(s.dropped),
@@ -159,8 +163,10 @@ int main(int argc, char** argv) {
         double sum = 0;
         for (double v : ms)
             sum += v;
-        std::printf("seek: %d random seeks in %d s of recording, %d machines: mean %.1f ms, p50 %.1f ms, max %.1f ms\n",
-                    seeks, seconds, int(model.rowCount()), sum / double(ms.size()), ms[ms.size() / 2], ms.back());
+        std::printf("seek: %d random seeks in %d s of recording, %d machines: mean %.1f ms, p50 %.1f ms, max "
+                    "%.1f ms\n",
+                    seeks, seconds, int(model.rowCount()), sum / double(ms.size()), ms[ms.size() / 2],
+                    ms.back());
     }
 
     // ---- 3. replay at 16x ----
@@ -182,9 +188,10 @@ int main(int argc, char** argv) {
             ++ticks;
         }
         const double total = double(wall.nsecsElapsed()) / 1e6;
-        std::printf("replay 16x: %d ticks of 640 ms recording: mean %.1f ms per tick (budget 40 ms), worst %.1f ms; "
-                    "%.1fx real time possible\n",
-                    ticks, total / ticks, worst, double(rec->endMs() - rec->startMs()) / total);
+        std::printf(
+            "replay 16x: %d ticks of 640 ms recording: mean %.1f ms per tick (budget 40 ms), worst %.1f ms; "
+            "%.1fx real time possible\n",
+            ticks, total / ticks, worst, double(rec->endMs() - rec->startMs()) / total);
     }
     return 0;
 }

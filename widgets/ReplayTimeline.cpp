@@ -137,7 +137,8 @@ void ReplayTimeline::setPlaying(bool playing) {
 void ReplayTimeline::setSpeed(double speed) {
     int best = 0;
     for (int i = 0; i < m_speed->count(); ++i)
-        if (std::abs(m_speed->itemData(i).toDouble() - speed) < std::abs(m_speed->itemData(best).toDouble() - speed))
+        if (std::abs(m_speed->itemData(i).toDouble() - speed) <
+            std::abs(m_speed->itemData(best).toDouble() - speed))
             best = i;
     m_speed->setCurrentIndex(best);
 }
@@ -220,8 +221,10 @@ bool TimelineMarkerStrip::event(QEvent* e) {
         const int i = markerAt(he->pos().x());
         if (i >= 0)
             QToolTip::showText(he->globalPos(),
-                               QDateTime::fromMSecsSinceEpoch(m_markers[i].t, Qt::UTC).toString(QStringLiteral("HH:mm:ss ")) +
-                                   (m_markers[i].command ? tr("command: ") : tr("alarm: ")) + m_markers[i].text,
+                               QDateTime::fromMSecsSinceEpoch(m_markers[i].t, Qt::UTC)
+                                       .toString(QStringLiteral("HH:mm:ss ")) +
+                                   (m_markers[i].command ? tr("command: ") : tr("alarm: ")) +
+                                   m_markers[i].text,
                                this);
         else
             QToolTip::hideText();

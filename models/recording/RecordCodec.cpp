@@ -70,17 +70,18 @@ template <typename E> E enumOf(std::uint8_t v, E max) {
 } // namespace
 
 bool sameStatus(const MachineState& a, const MachineState& b) {
-    return a.id == b.id && a.protocol == b.protocol && a.name == b.name && a.type == b.type && a.link == b.link &&
-           a.hasPosition == b.hasPosition && a.length == b.length && a.width == b.width && a.height == b.height &&
-           a.modeText == b.modeText && a.mode == b.mode && a.stop == b.stop && a.stopText == b.stopText &&
-           a.controller == b.controller && a.control == b.control && a.health == b.health &&
-           a.healthText == b.healthText && a.workText == b.workText;
+    return a.id == b.id && a.protocol == b.protocol && a.name == b.name && a.type == b.type &&
+           a.link == b.link && a.hasPosition == b.hasPosition && a.length == b.length && a.width == b.width &&
+           a.height == b.height && a.modeText == b.modeText && a.mode == b.mode && a.stop == b.stop &&
+           a.stopText == b.stopText && a.controller == b.controller && a.control == b.control &&
+           a.health == b.health && a.healthText == b.healthText && a.workText == b.workText;
 }
 
 bool positionEncodable(const MachineState& s) {
     constexpr double lim = 2.0e6; // m: int32 millimetres
     return std::isfinite(s.e) && std::isfinite(s.n) && std::isfinite(s.u) && std::abs(s.e) < lim &&
-           std::abs(s.n) < lim && std::abs(s.u) < lim && std::isfinite(s.headingDeg) && std::isfinite(s.speed);
+           std::abs(s.n) < lim && std::abs(s.u) < lim && std::isfinite(s.headingDeg) &&
+           std::isfinite(s.speed);
 }
 
 static void header(QByteArray& out, RecordType t, std::uint32_t idx, std::int32_t dtMs) {
@@ -98,12 +99,13 @@ void appendFull(QByteArray& out, std::uint32_t idx, std::int32_t dtMs, const Mac
         put<double>(out, d);
     put<std::int64_t>(out, s.lastDataMs);
     put<std::int64_t>(out, s.lastMessageMs);
-    for (const QString* str : {&s.id, &s.name, &s.type, &s.modeText, &s.stopText, &s.controller, &s.healthText,
-                               &s.workText})
+    for (const QString* str :
+         {&s.id, &s.name, &s.type, &s.modeText, &s.stopText, &s.controller, &s.healthText, &s.workText})
         putString(out, *str);
 }
 
-void appendPosition(QByteArray& out, std::uint32_t idx, std::int32_t dtMs, qint64 tMs, const MachineState& s) {
+void appendPosition(QByteArray& out, std::uint32_t idx, std::int32_t dtMs, qint64 tMs,
+                    const MachineState& s) {
     header(out, RecordType::Position, idx, dtMs);
     put<std::int32_t>(out, mm(s.e));
     put<std::int32_t>(out, mm(s.n));
@@ -161,13 +163,13 @@ bool decodeChunk(const QByteArray& blob, qint64 t0Ms, QHash<std::uint32_t, Machi
             s.control = enumOf(e[4], ControlState::Denied);
             s.health = enumOf(e[5], HealthLevel::Fault);
             s.hasPosition = e[6] != 0;
-            for (double* d : {&s.e, &s.n, &s.u, &s.lat, &s.lon, &s.headingDeg, &s.speed, &s.length, &s.width,
-                              &s.height})
+            for (double* d :
+                 {&s.e, &s.n, &s.u, &s.lat, &s.lon, &s.headingDeg, &s.speed, &s.length, &s.width, &s.height})
                 *d = r.get<double>();
             s.lastDataMs = r.get<std::int64_t>();
             s.lastMessageMs = r.get<std::int64_t>();
-            for (QString* str : {&s.id, &s.name, &s.type, &s.modeText, &s.stopText, &s.controller, &s.healthText,
-                                 &s.workText})
+            for (QString* str : {&s.id, &s.name, &s.type, &s.modeText, &s.stopText, &s.controller,
+                                 &s.healthText, &s.workText})
                 *str = r.getString();
             if (!r.ok)
                 return false;

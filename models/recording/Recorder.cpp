@@ -84,7 +84,8 @@ struct Recorder::Writer {
     qint64 maxFileBytes = 0;
     int keyframeIntervalMs = 10000;
     quint64 stateBytes = 0;
-    std::unique_ptr<Stmt> insState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink, insMap, insRaw;
+    std::unique_ptr<Stmt> insState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink, insMap,
+        insRaw;
 
     ~Writer() {
         insState.reset();
@@ -148,7 +149,9 @@ struct Recorder::Writer {
         Stmt size(db, "SELECT page_count * page_size FROM pragma_page_count(), pragma_page_size()");
         if (sqlite3_step(size.s) != SQLITE_ROW || sqlite3_column_int64(size.s, 0) <= maxFileBytes)
             return;
-        Stmt kf(db, "SELECT t, chunk FROM keyframes ORDER BY t LIMIT 1 OFFSET (SELECT COUNT(*) / 4 FROM keyframes)");
+        Stmt kf(
+            db,
+            "SELECT t, chunk FROM keyframes ORDER BY t LIMIT 1 OFFSET (SELECT COUNT(*) / 4 FROM keyframes)");
         if (sqlite3_step(kf.s) != SQLITE_ROW)
             return;
         const qint64 kt = sqlite3_column_int64(kf.s, 0), chunk = sqlite3_column_int64(kf.s, 1);
@@ -183,7 +186,8 @@ QString Recorder::start(const RecorderOptions& options) {
     QDir().mkpath(QFileInfo(options.path).absolutePath());
     auto w = std::make_unique<Writer>();
     if (sqlite3_open_v2(options.path.toUtf8().constData(), &w->db,
-                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
+                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+                        nullptr) != SQLITE_OK) {
         const QString err = w->db ? QString::fromUtf8(sqlite3_errmsg(w->db)) : tr("out of memory");
         return tr("cannot create %1: %2").arg(options.path, err);
     }
@@ -196,11 +200,13 @@ QString Recorder::start(const RecorderOptions& options) {
     w->insMachine = std::make_unique<Stmt>(w->db, "INSERT OR REPLACE INTO machines(idx, id) VALUES(?,?)");
     w->insKeyframe =
         std::make_unique<Stmt>(w->db, "INSERT OR REPLACE INTO keyframes(t, chunk, n, data) VALUES(?,?,?,?)");
-    w->insEvent = std::make_unique<Stmt>(w->db, "INSERT INTO events(t, time_ms, severity, kind, machine, source, "
-                                                "text, requires_ack, key) VALUES(?,?,?,?,?,?,?,?,?)");
+    w->insEvent =
+        std::make_unique<Stmt>(w->db, "INSERT INTO events(t, time_ms, severity, kind, machine, source, "
+                                      "text, requires_ack, key) VALUES(?,?,?,?,?,?,?,?,?)");
     w->insAck = std::make_unique<Stmt>(w->db, "INSERT INTO acks(t, key, by, at_ms) VALUES(?,?,?,?)");
-    w->insCommand = std::make_unique<Stmt>(w->db, "INSERT INTO commands(t, origin, action, target, ok, audit) "
-                                                  "VALUES(?,?,?,?,?,?)");
+    w->insCommand =
+        std::make_unique<Stmt>(w->db, "INSERT INTO commands(t, origin, action, target, ok, audit) "
+                                      "VALUES(?,?,?,?,?,?)");
     w->insLink = std::make_unique<Stmt>(w->db, "INSERT INTO links(t, protocol, link, state, age_ms, detail) "
                                                "VALUES(?,?,?,?,?,?)");
     w->insMap = std::make_unique<Stmt>(w->db, "INSERT INTO sitemaps(t, data) VALUES(?,?)");
@@ -555,13 +561,14 @@ void Recorder::attach(FleetContext* ctx) {
 
 QString newRecordingPath(const QString& dir) {
     const QString stamp = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss"));
-    return QDir(dir).filePath(QStringLiteral("ocu-%1-%2.sqlite").arg(stamp).arg(QCoreApplication::applicationPid()));
+    return QDir(dir).filePath(
+        QStringLiteral("ocu-%1-%2.sqlite").arg(stamp).arg(QCoreApplication::applicationPid()));
 }
 
 QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxAgeDays, const QString& keep) {
     QDir d(dir);
-    QFileInfoList files =
-        d.entryInfoList({QStringLiteral("ocu-*.sqlite")}, QDir::Files, QDir::Time | QDir::Reversed); // oldest first
+    QFileInfoList files = d.entryInfoList({QStringLiteral("ocu-*.sqlite")}, QDir::Files,
+                                          QDir::Time | QDir::Reversed); // oldest first
     const QDateTime now = QDateTime::currentDateTimeUtc();
     const QString keepAbs = keep.isEmpty() ? QString() : QFileInfo(keep).absoluteFilePath();
     auto sizeOf = [](const QFileInfo& f) {

@@ -38,15 +38,15 @@ struct LinkStatus;
 namespace recording {
 
 struct RecorderOptions {
-    QString path;                 // the SQLite file of this run (created; an existing file is refused)
-    int queueCapacity = 200000;   // items waiting for the writer; beyond: dropped and counted
-    int flushIntervalMs = 200;    // the writer commits at least this often
+    QString path;               // the SQLite file of this run (created; an existing file is refused)
+    int queueCapacity = 200000; // items waiting for the writer; beyond: dropped and counted
+    int flushIntervalMs = 200;  // the writer commits at least this often
     int keyframeIntervalMs = 10000;
-    qint64 maxFileBytes = 0;      // 0 = unlimited; beyond it the oldest machine data of this file is deleted
-    bool raw = false;             // record.raw: raw frames (recordRaw); off by default
+    qint64 maxFileBytes = 0; // 0 = unlimited; beyond it the oldest machine data of this file is deleted
+    bool raw = false;        // record.raw: raw frames (recordRaw); off by default
     QString siteName;
     double originLat = 0, originLon = 0, originAlt = 0; // the site frame, for replay's map
-    std::function<qint64()> clock; // ms since the epoch; default: the wall clock
+    std::function<qint64()> clock;                      // ms since the epoch; default: the wall clock
 };
 
 // The key an acknowledgement names its alarm by (AlarmModel::alarmAcknowledged): stable across consoles.
@@ -85,11 +85,11 @@ public:
     void flush();
 
     struct Stats {
-        quint64 queued = 0;    // accepted into the queue
-        quint64 dropped = 0;   // refused: queue full
-        quint64 written = 0;   // committed
+        quint64 queued = 0;  // accepted into the queue
+        quint64 dropped = 0; // refused: queue full
+        quint64 written = 0; // committed
         quint64 commits = 0;
-        quint64 stateBytes = 0; // encoded machine-state bytes
+        quint64 stateBytes = 0;  // encoded machine-state bytes
         quint64 writerCpuNs = 0; // CPU time of the writer thread
     };
     Stats stats() const;
@@ -125,7 +125,8 @@ private:
 // in `dir` older than maxAgeDays, then the oldest while the folder holds more than maxTotalBytes. `keep` and
 // files written to within the last 5 minutes (another console's run) are never deleted. Returns the names
 // deleted.
-QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxAgeDays, const QString& keep = {});
+QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxAgeDays,
+                           const QString& keep = {});
 // ocu-YYYYMMDD-HHMMSS-<pid>.sqlite in dir.
 QString newRecordingPath(const QString& dir);
 

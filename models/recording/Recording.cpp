@@ -60,7 +60,8 @@ struct Query {
     }
     qint64 i64(int c) const { return sqlite3_column_int64(s, c); }
     QString text(int c) const {
-        return QString::fromUtf8(reinterpret_cast<const char*>(sqlite3_column_text(s, c)), sqlite3_column_bytes(s, c));
+        return QString::fromUtf8(reinterpret_cast<const char*>(sqlite3_column_text(s, c)),
+                                 sqlite3_column_bytes(s, c));
     }
     QByteArray blob(int c) const {
         // A copy: the column's memory is valid only until the next step.
@@ -133,8 +134,8 @@ std::unique_ptr<Recording> Recording::open(const QString& path, QString* error) 
     std::unique_ptr<Recording> r(new Recording);
     r->m_path = path;
     // Read-write so SQLite can recover the WAL of a killed writer; nothing is ever written through it.
-    if (sqlite3_open_v2(path.toUtf8().constData(), &r->m_db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX, nullptr) !=
-        SQLITE_OK) {
+    if (sqlite3_open_v2(path.toUtf8().constData(), &r->m_db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX,
+                        nullptr) != SQLITE_OK) {
         if (r->m_db) {
             sqlite3_close(r->m_db);
             r->m_db = nullptr;
@@ -154,14 +155,15 @@ std::unique_ptr<Recording> Recording::open(const QString& path, QString* error) 
             return fail(QCoreApplication::translate("Recording", "%1 is not an OCU recording").arg(path));
         const int v = q.text(0).toInt();
         if (v < 1 || v > kSchemaVersion)
-            return fail(
-                QCoreApplication::translate("Recording", "%1: recording schema %2 is not supported").arg(path).arg(v));
+            return fail(QCoreApplication::translate("Recording", "%1: recording schema %2 is not supported")
+                            .arg(path)
+                            .arg(v));
     }
     r->m_startMs = r->meta(QStringLiteral("start_ms")).toLongLong();
     // The end as committed: the newest row of any table (end_ms is updated with every commit too).
     qint64 end = r->meta(QStringLiteral("end_ms")).toLongLong();
-    for (const char* sql : {"SELECT MAX(t1) FROM states", "SELECT MAX(t) FROM events", "SELECT MAX(t) FROM links",
-                            "SELECT MAX(t) FROM commands"}) {
+    for (const char* sql : {"SELECT MAX(t1) FROM states", "SELECT MAX(t) FROM events",
+                            "SELECT MAX(t) FROM links", "SELECT MAX(t) FROM commands"}) {
         Query q(r->m_db, sql);
         if (q.next())
             end = std::max(end, q.i64(0));
@@ -202,9 +204,11 @@ Recording::StateMap Recording::statesAtIdx(qint64 t) const {
             decodeChunk(kf.blob(1), kf.i64(2), states, kMinT, std::numeric_limits<qint64>::max());
         }
     }
-    Query q(m_db, "SELECT t0, data FROM states WHERE id > ? AND t0 <= ? ORDER BY id");
-    q.bind(1, afterChunk).bind(2, t);
-    while (q.next())
+    // Chunks are in time order: walk them by id from the keyframe's and stop at the first one after t (a
+    // range condition on t0 alone would make SQLite visit every later chunk of the file).
+    Query q(m_db, "SELECT t0, data FROM states WHERE id > ? ORDER BY id");
+    q.bind(1, afterChunk);
+    while (q.next() && q.i64(0) <= t)
         decodeChunk(q.blob(1), q.i64(0), states, kMinT, t);
     return states;
 }
@@ -227,10 +231,19 @@ QString Recording::idOf(std::uint32_t idx) const {
 
 void Recording::walk(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
                      const std::function<bool(const StateChange&)>& fn) const {
-    Query q(m_db, "SELECT t0, data FROM states WHERE t1 > ? AND t0 <= ? ORDER BY id");
-    q.bind(1, fromExclusive).bind(2, toInclusive);
+    // The first chunk ending after `fromExclusive` (index on t1), then by id until one starts after the end.
+    qint64 first = -1;
+    {
+        Query f(m_db, "SELECT id FROM states WHERE t1 > ? ORDER BY t1, id LIMIT 1");
+        f.bind(1, fromExclusive);
+        if (!f.next())
+            return;
+        first = f.i64(0);
+    }
+    Query q(m_db, "SELECT t0, data FROM states WHERE id >= ? ORDER BY id");
+    q.bind(1, first);
     bool go = true;
-    while (go && q.next()) {
+    while (go && q.next() && q.i64(0) <= toInclusive) {
         decodeChunk(q.blob(1), q.i64(0), states, fromExclusive, toInclusive, [&](const DecodedRecord& r) {
             if (!go || !fn)
                 return;
@@ -308,7 +321,8 @@ QVector<RecordedAck> Recording::acks(qint64 fromExclusive, qint64 toInclusive) c
 
 QVector<RecordedCommand> Recording::commands(qint64 fromExclusive, qint64 toInclusive) const {
     QVector<RecordedCommand> out;
-    Query q(m_db, "SELECT t, origin, action, target, ok, audit FROM commands WHERE t > ? AND t <= ? ORDER BY id");
+    Query q(m_db,
+            "SELECT t, origin, action, target, ok, audit FROM commands WHERE t > ? AND t <= ? ORDER BY id");
     q.bind(1, fromExclusive).bind(2, toInclusive);
     while (q.next())
         out.push_back({q.i64(0), q.text(1), q.text(2), q.text(3), q.i64(4) != 0, q.text(5)});
@@ -317,7 +331,8 @@ QVector<RecordedCommand> Recording::commands(qint64 fromExclusive, qint64 toIncl
 
 QVector<RecordedLink> Recording::links(qint64 fromExclusive, qint64 toInclusive) const {
     QVector<RecordedLink> out;
-    Query q(m_db, "SELECT t, protocol, link, state, age_ms, detail FROM links WHERE t > ? AND t <= ? ORDER BY id");
+    Query q(m_db,
+            "SELECT t, protocol, link, state, age_ms, detail FROM links WHERE t > ? AND t <= ? ORDER BY id");
     q.bind(1, fromExclusive).bind(2, toInclusive);
     while (q.next()) {
         RecordedLink l;
@@ -418,7 +433,8 @@ bool Recording::exportJsonLines(QIODevice* out, qint64 from, qint64 to, QString*
                                           {QStringLiteral("state"), toText(l.state)},
                                           {QStringLiteral("age_ms"), double(l.dataAgeMs)},
                                           {QStringLiteral("detail"), l.detail}}});
-    std::stable_sort(other.begin(), other.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::stable_sort(other.begin(), other.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
     int next = 0;
     bool ok = true;
     auto write = [&](qint64 t, QJsonObject o) {
@@ -448,7 +464,8 @@ bool Recording::exportCsv(QIODevice* out, qint64 from, qint64 to, QString* error
             *error = QCoreApplication::translate("Recording", "the output is not writable");
         return false;
     }
-    bool ok = out->write("time,t_ms,id,name,protocol,e,n,u,lat,lon,heading,speed,mode,stop,health,link\r\n") > 0;
+    bool ok =
+        out->write("time,t_ms,id,name,protocol,e,n,u,lat,lon,heading,speed,mode,stop,health,link\r\n") > 0;
     changes(from - 1, to, [&](const StateChange& c) {
         if (c.removed)
             return true;
@@ -463,8 +480,8 @@ bool Recording::exportCsv(QIODevice* out, qint64 from, qint64 to, QString* error
         else
             line += ",,,,,,";
         line += QByteArray::number(m.speed, 'f', 3) + ',' +
-                csvField(m.modeText.isEmpty() ? toText(m.mode) : m.modeText) + ',' + toText(m.stop).toUtf8() + ',' +
-                toText(m.health).toUtf8() + ',' + toText(m.link).toUtf8() + "\r\n";
+                csvField(m.modeText.isEmpty() ? toText(m.mode) : m.modeText) + ',' + toText(m.stop).toUtf8() +
+                ',' + toText(m.health).toUtf8() + ',' + toText(m.link).toUtf8() + "\r\n";
         ok = ok && out->write(line) > 0;
         return ok;
     });
@@ -484,20 +501,23 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
     if (to < from)
         return fail(QCoreApplication::translate("Recording", "the window ends before it starts"));
     sqlite3* dst = nullptr;
-    if (sqlite3_open_v2(path.toUtf8().constData(), &dst, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
-        SQLITE_OK) {
+    if (sqlite3_open_v2(path.toUtf8().constData(), &dst, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE,
+                        nullptr) != SQLITE_OK) {
         const QString why = dst ? QString::fromUtf8(sqlite3_errmsg(dst)) : QString();
         sqlite3_close(dst);
         return fail(QCoreApplication::translate("Recording", "cannot create %1: %2").arg(path, why));
     }
-    auto exec = [&](const char* sql) { return sqlite3_exec(dst, sql, nullptr, nullptr, nullptr) == SQLITE_OK; };
+    auto exec = [&](const char* sql) {
+        return sqlite3_exec(dst, sql, nullptr, nullptr, nullptr) == SQLITE_OK;
+    };
     bool ok = exec("PRAGMA journal_mode=WAL") && exec(kSchemaSql) && exec("BEGIN");
     {
         Query attach(dst, "ATTACH DATABASE ? AS src");
         attach.bind(1, m_path);
         ok = ok && attach.run();
     }
-    ok = ok && exec("INSERT INTO meta SELECT * FROM src.meta") && exec("INSERT INTO machines SELECT * FROM src.machines");
+    ok = ok && exec("INSERT INTO meta SELECT * FROM src.meta") &&
+         exec("INSERT INTO machines SELECT * FROM src.machines");
     {
         Query q(dst, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
         for (const auto& [k, v] : {std::pair{QStringLiteral("start_ms"), QString::number(from)},
@@ -522,7 +542,8 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
     QByteArray chunk;
     qint64 t0 = 0, t1 = 0, lastKeyframe = from, chunkId = 0;
     int n = 0;
-    const qint64 kfInterval = std::max<qint64>(100, meta(QStringLiteral("keyframe_interval_ms")).toLongLong());
+    const qint64 kfInterval =
+        std::max<qint64>(100, meta(QStringLiteral("keyframe_interval_ms")).toLongLong());
     auto flushChunk = [&] {
         if (chunk.isEmpty())
             return;
@@ -552,7 +573,8 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
         if (c.removed) {
             appendRemoved(chunk, idx, dt);
             last.remove(idx);
-        } else if (auto p = last.find(idx); p != last.end() && sameStatus(*p, c.state) && positionEncodable(c.state)) {
+        } else if (auto p = last.find(idx);
+                   p != last.end() && sameStatus(*p, c.state) && positionEncodable(c.state)) {
             appendPosition(chunk, idx, dt, c.t, c.state);
             applyPosition(*p, c.state, c.t);
         } else {
@@ -564,12 +586,17 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
     flushChunk();
     // Everything else of the window; the site map and the links as they were at its start.
     for (const char* sql :
-         {"INSERT INTO events(t, time_ms, severity, kind, machine, source, text, requires_ack, key) SELECT t, "
-          "time_ms, severity, kind, machine, source, text, requires_ack, key FROM src.events WHERE t >= ?1 AND t <= ?2",
-          "INSERT INTO acks(t, key, by, at_ms) SELECT t, key, by, at_ms FROM src.acks WHERE t >= ?1 AND t <= ?2",
-          "INSERT INTO commands(t, origin, action, target, ok, audit) SELECT t, origin, action, target, ok, audit "
+         {"INSERT INTO events(t, time_ms, severity, kind, machine, source, text, requires_ack, key) SELECT "
+          "t, "
+          "time_ms, severity, kind, machine, source, text, requires_ack, key FROM src.events WHERE t >= ?1 "
+          "AND t <= ?2",
+          "INSERT INTO acks(t, key, by, at_ms) SELECT t, key, by, at_ms FROM src.acks WHERE t >= ?1 AND t <= "
+          "?2",
+          "INSERT INTO commands(t, origin, action, target, ok, audit) SELECT t, origin, action, target, ok, "
+          "audit "
           "FROM src.commands WHERE t >= ?1 AND t <= ?2",
-          "INSERT INTO links(t, protocol, link, state, age_ms, detail) SELECT t, protocol, link, state, age_ms, detail "
+          "INSERT INTO links(t, protocol, link, state, age_ms, detail) SELECT t, protocol, link, state, "
+          "age_ms, detail "
           "FROM src.links WHERE t <= ?2",
           "INSERT INTO sitemaps(t, data) SELECT t, data FROM src.sitemaps WHERE t <= ?2",
           "INSERT INTO raw(t, link, data) SELECT t, link, data FROM src.raw WHERE t >= ?1 AND t <= ?2"}) {
@@ -642,7 +669,8 @@ SiteMapData siteMapFromJson(const QByteArray& json) {
         MapFeature f;
         f.id = fo.value(QStringLiteral("id")).toString();
         f.name = fo.value(QStringLiteral("name")).toString();
-        f.kind = MapFeatureKind(std::clamp(fo.value(QStringLiteral("kind")).toInt(), 0, int(MapFeatureKind::Area)));
+        f.kind = MapFeatureKind(
+            std::clamp(fo.value(QStringLiteral("kind")).toInt(), 0, int(MapFeatureKind::Area)));
         f.defaultTask = fo.value(QStringLiteral("task")).toString();
         f.autonomous = fo.value(QStringLiteral("auto")).toBool();
         f.width = fo.value(QStringLiteral("width")).toDouble();

@@ -71,13 +71,15 @@ public:
     // From the newest keyframe <= t plus the records after it.
     QHash<QString, MachineState> statesAt(qint64 t) const;
     // Changes in (from, to], in order. `fn` returning false stops the walk.
-    void changes(qint64 fromExclusive, qint64 toInclusive, const std::function<bool(const StateChange&)>& fn) const;
+    void changes(qint64 fromExclusive, qint64 toInclusive,
+                 const std::function<bool(const StateChange&)>& fn) const;
     // The same keyed by the file's machine index (what advance() continues).
     using StateMap = QHash<std::uint32_t, MachineState>;
     StateMap statesAtIdx(qint64 t) const;
-    // Continues `states` (the picture at `fromExclusive`) to `toInclusive` without a new seek; returns the ids
-    // changed and, in `removed`, those that left.
-    QStringList advance(StateMap& states, qint64 fromExclusive, qint64 toInclusive, QStringList* removed) const;
+    // Continues `states` (the picture at `fromExclusive`) to `toInclusive` without a new seek; returns the
+    // ids changed and, in `removed`, those that left.
+    QStringList advance(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
+                        QStringList* removed) const;
 
     QVector<RecordedEvent> events(qint64 fromExclusive, qint64 toInclusive) const;
     QVector<RecordedAck> acks(qint64 fromExclusive, qint64 toInclusive) const;
@@ -92,10 +94,11 @@ public:
 
     // ---- export (issue 16 §3) ----
     // JSON lines in time order: {"type":"machine",...} per state change (the headless monitor's fields plus
-    // "t"), {"type":"machine_removed"}, {"type":"event"}, {"type":"ack"}, {"type":"command"}, {"type":"link"}.
+    // "t"), {"type":"machine_removed"}, {"type":"event"}, {"type":"ack"}, {"type":"command"},
+    // {"type":"link"}.
     bool exportJsonLines(QIODevice* out, qint64 from, qint64 to, QString* error = nullptr) const;
-    // CSV per machine state change: time (ISO 8601 UTC), t_ms, id, name, protocol, e, n, u, lat, lon, heading,
-    // speed (m/s), mode, stop, health, link.
+    // CSV per machine state change: time (ISO 8601 UTC), t_ms, id, name, protocol, e, n, u, lat, lon,
+    // heading, speed (m/s), mode, stop, health, link.
     bool exportCsv(QIODevice* out, qint64 from, qint64 to, QString* error = nullptr) const;
     // A new recording holding [from, to]: a keyframe at `from` (the picture then) plus everything after it up
     // to `to`, and the meta data. Refuses to overwrite.

@@ -22,7 +22,8 @@ namespace recording {
 class ReplayController : public QObject {
     Q_OBJECT
 public:
-    // `fleet` is driven (its clock becomes the replay clock, its own refresh timer and expiry are turned off).
+    // `fleet` is driven (its clock becomes the replay clock, its own refresh timer and expiry are turned
+    // off).
     ReplayController(const Recording* recording, FleetModel* fleet, QObject* parent = nullptr);
 
     const Recording* recording() const { return m_rec; }

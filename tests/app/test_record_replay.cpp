@@ -1,8 +1,8 @@
 // Issue 16 acceptance: the built-in simulated site is recorded while it runs (the console's own recorder,
-// in-process), then replayed: the fleet model at T (half-way) equals the live one at T (positions within 1 cm,
-// same states, same staleness, same alarms and acknowledgements); seeking backwards and forwards lands on the
-// same picture. And the real `ocu` killed with SIGKILL while recording: the file opens cleanly and at most 1 s
-// before the kill is missing.
+// in-process), then replayed: the fleet model at T (half-way) equals the live one at T (positions within 1
+// cm, same states, same staleness, same alarms and acknowledgements); seeking backwards and forwards lands on
+// the same picture. And the real `ocu` killed with SIGKILL while recording: the file opens cleanly and at
+// most 1 s before the kill is missing.
 //
 // Duration: OCU_RECORD_TEST_SECONDS (default 20 in CI: the suite's budget; the issue's 60 s run is
 // `OCU_RECORD_TEST_SECONDS=60 ctest -R test_record_replay`).
@@ -53,15 +53,17 @@ Picture pictureOf(const FleetModel& fleet, const AlarmModel& alarms) {
 
 QString compare(const Picture& live, const Picture& replay) {
     if (live.machines.size() != replay.machines.size())
-        return QStringLiteral("%1 machines live, %2 replayed").arg(live.machines.size()).arg(replay.machines.size());
+        return QStringLiteral("%1 machines live, %2 replayed")
+            .arg(live.machines.size())
+            .arg(replay.machines.size());
     for (auto it = live.machines.cbegin(); it != live.machines.cend(); ++it) {
         const MachineState& a = *it;
         if (!replay.machines.contains(a.id))
             return a.id + QStringLiteral(" not replayed");
         const MachineState& b = replay.machines[a.id];
         if (!sameStatus(a, b))
-            return a.id + QStringLiteral(": state differs (%1/%2 vs %3/%4)").arg(a.modeText, toText(a.stop), b.modeText,
-                                                                                   toText(b.stop));
+            return a.id + QStringLiteral(": state differs (%1/%2 vs %3/%4)")
+                              .arg(a.modeText, toText(a.stop), b.modeText, toText(b.stop));
         const double d = std::hypot(a.e - b.e, a.n - b.n, a.u - b.u);
         if (d > 0.01)
             return a.id + QStringLiteral(": %1 m apart").arg(d);
@@ -166,8 +168,8 @@ private slots:
         QVERIFY(ocu.waitForStarted(10000));
         // Recording and machines moving: wait for the file to hold machine data for a while.
         QString file;
-        QTRY_VERIFY_WITH_TIMEOUT(!(file = QDir(dir.path()).entryList({QStringLiteral("ocu-*.sqlite")}).value(0)).isEmpty(),
-                                 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !(file = QDir(dir.path()).entryList({QStringLiteral("ocu-*.sqlite")}).value(0)).isEmpty(), 30000);
         file = dir.filePath(file);
         qint64 firstData = 0;
         QTRY_VERIFY_WITH_TIMEOUT(

@@ -81,7 +81,12 @@ bool samePicture(const QHash<QString, MachineState>& a, const QHash<QString, Mac
         }
         if (std::hypot(it->e - o->e, it->n - o->n) > 0.01 || std::abs(it->u - o->u) > 0.01 ||
             std::abs(it->speed - o->speed) > 1e-3 || it->lastDataMs != o->lastDataMs) {
-            *why = QStringLiteral("%1 at %2,%3 vs %4,%5").arg(it.key()).arg(it->e).arg(it->n).arg(o->e).arg(o->n);
+            *why = QStringLiteral("%1 at %2,%3 vs %4,%5")
+                       .arg(it.key())
+                       .arg(it->e)
+                       .arg(it->n)
+                       .arg(o->e)
+                       .arg(o->n);
             return false;
         }
     }
@@ -148,16 +153,19 @@ class TestRecorder : public QObject {
                 m_truth.set(m_clock, expected);
             }
             if (step == 150) {
-                FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("iso23725:t1"),
-                                          QStringLiteral("stopped"), QStringLiteral("iso23725"));
+                FleetEvent ev =
+                    makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("iso23725:t1"),
+                              QStringLiteral("stopped"), QStringLiteral("iso23725"));
                 ev.timeMs = m_clock;
                 rec.recordEvent(ev);
                 m_alarmT = m_clock;
-                rec.recordCommand(QStringLiteral(R"({"origin":"gui","action":"stop_all","ok":false,"targets":[]})"));
+                rec.recordCommand(
+                    QStringLiteral(R"({"origin":"gui","action":"stop_all","ok":false,"targets":[]})"));
             }
             if (step == 400) {
-                FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("iso23725:t1"),
-                                          QStringLiteral("stopped"), QStringLiteral("iso23725"));
+                FleetEvent ev =
+                    makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("iso23725:t1"),
+                              QStringLiteral("stopped"), QStringLiteral("iso23725"));
                 ev.timeMs = m_alarmT;
                 rec.recordAck(alarmKey(ev), QStringLiteral("op"), m_clock);
                 m_ackT = m_clock;
@@ -374,13 +382,15 @@ private slots:
         QByteArray bad = good;
         bad[0] = char(99); // unknown record type
         QHash<std::uint32_t, MachineState> s;
-        QVERIFY(!decodeChunk(bad, 0, s, std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()));
+        QVERIFY(
+            !decodeChunk(bad, 0, s, std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()));
         QByteArray huge;
         huge.append(char(1));
         huge.append(QByteArray(8, '\0'));
         huge.append(QByteArray(7 + 80 + 16, '\0'));
         huge.append(QByteArray("\xff\xff\xff\x7f", 4)); // a string "2 GB long"
-        QVERIFY(!decodeChunk(huge, 0, s, std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()));
+        QVERIFY(
+            !decodeChunk(huge, 0, s, std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()));
     }
 
     void parsesReplayTimes() {
@@ -399,14 +409,15 @@ private slots:
             QFile f(d.filePath(name));
             QVERIFY(f.open(QIODevice::WriteOnly));
             f.write(QByteArray(kb * 1024, 'r'));
-            f.setFileTime(QDateTime::currentDateTimeUtc().addDays(-ageDays), QFileDevice::FileModificationTime);
+            f.setFileTime(QDateTime::currentDateTimeUtc().addDays(-ageDays),
+                          QFileDevice::FileModificationTime);
             f.close();
         };
         make(QStringLiteral("ocu-a.sqlite"), 100, 40);
         make(QStringLiteral("ocu-b.sqlite"), 100, 3);
         make(QStringLiteral("ocu-c.sqlite"), 100, 2);
-        make(QStringLiteral("ocu-d.sqlite"), 100, 0); // being written (fresh): kept
-        make(QStringLiteral("other.sqlite"), 100, 90);  // not ours: kept
+        make(QStringLiteral("ocu-d.sqlite"), 100, 0);  // being written (fresh): kept
+        make(QStringLiteral("other.sqlite"), 100, 90); // not ours: kept
         const QStringList gone = applyRetention(d.path(), 250 * 1024, 30);
         QCOMPARE(gone, (QStringList{QStringLiteral("ocu-a.sqlite"), QStringLiteral("ocu-b.sqlite")}));
         QVERIFY(QFile::exists(d.filePath(QStringLiteral("ocu-c.sqlite"))));
