@@ -73,14 +73,17 @@ void ReplayController::seek(qint64 t) {
 
 void ReplayController::applyAlarms(qint64 fromExclusive, qint64 toInclusive) {
     for (const RecordedEvent& e : m_rec->events(fromExclusive, toInclusive)) {
-        m_alarmRow.insert(e.key, m_alarms->rowCount());
+        m_alarmRow[e.key].push_back(m_alarms->rowCount());
         m_alarms->add(e.event);
     }
-    for (const RecordedAck& a : m_rec->acks(fromExclusive, toInclusive)) {
-        const int row = m_alarmRow.value(a.key, -1);
-        if (row >= 0)
-            m_alarms->acknowledge(row);
-    }
+    // Two alarms with the same key (same time, kind, machine and text): each acknowledgement takes the
+    // oldest one still open.
+    for (const RecordedAck& a : m_rec->acks(fromExclusive, toInclusive))
+        for (int row : m_alarmRow.value(a.key))
+            if (!m_alarms->isAcknowledged(row)) {
+                m_alarms->acknowledge(row);
+                break;
+            }
 }
 
 void ReplayController::updateSiteMap(qint64 t) {

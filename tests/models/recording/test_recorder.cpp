@@ -259,6 +259,34 @@ private slots:
         QVERIFY(markers[1].kind == Marker::Kind::Command && markers[1].bad);
     }
 
+    void identicalAlarmsAreAcknowledgedOneByOne() {
+        qint64 clock = 1'000'000;
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_dir.filePath(QStringLiteral("twins.sqlite"));
+        o.clock = [&clock] { return clock; };
+        QVERIFY(rec.start(o).isEmpty());
+        FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, QStringLiteral("link lost"));
+        ev.timeMs = 1'000'100;
+        clock = 1'000'100;
+        rec.recordEvent(ev);
+        rec.recordEvent(ev); // the same alarm text twice in one millisecond: one key
+        clock = 1'000'200;
+        rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock);
+        clock = 1'000'300;
+        rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock);
+        rec.stop();
+        auto r = Recording::open(o.path);
+        QVERIFY(r);
+        FleetModel fleet;
+        ReplayController c(r.get(), &fleet);
+        c.seek(1'000'200);
+        QCOMPARE(c.alarms()->rowCount(), 2);
+        QCOMPARE(c.alarms()->unacknowledgedCount(), 1);
+        c.moveTo(1'000'300);
+        QCOMPARE(c.alarms()->unacknowledgedCount(), 0);
+    }
+
     void playsAtTheChosenSpeedInBothDirections() {
         auto rec = Recording::open(m_file);
         QVERIFY(rec);
