@@ -87,6 +87,37 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
                                                             "report as CSV to FILE when the run ends."),
                                 QStringLiteral("FILE"));
     p.addOptions({shiftPdf, shiftCsv});
+    const auto tr = [](const char* text) { return QCoreApplication::translate("CommandLine", text); };
+    QCommandLineOption record(QStringLiteral("record"),
+                              tr("Folder for this run's flight recording (default: record.dir of the site "
+                                 "configuration, else the user's data folder)."),
+                              QStringLiteral("DIR"));
+    QCommandLineOption noRecord(QStringLiteral("no-record"), tr("Do not record this run."));
+    QCommandLineOption replay(QStringLiteral("replay"),
+                              tr("Replay a flight recording (no protocol stacks, commands disabled)."),
+                              QStringLiteral("FILE"));
+    QCommandLineOption at(
+        QStringLiteral("at"),
+        tr("With --replay: start at T (seconds after the start, HH:MM:SS UTC or ISO 8601)."),
+        QStringLiteral("T"));
+    QCommandLineOption speed(QStringLiteral("speed"),
+                             tr("With --replay: playing speed 0.1 to 16 (--headless: default as fast as "
+                                "possible)."),
+                             QStringLiteral("X"));
+    QCommandLineOption exJsonl(QStringLiteral("export-jsonl"),
+                               tr("With --replay: write the window --from/--to as JSON lines and exit."),
+                               QStringLiteral("FILE"));
+    QCommandLineOption exCsv(QStringLiteral("export-csv"),
+                             tr("With --replay: write machine states of the window as CSV and exit."),
+                             QStringLiteral("FILE"));
+    QCommandLineOption exSlice(QStringLiteral("export-slice"),
+                               tr("With --replay: write the window as a new recording and exit."),
+                               QStringLiteral("FILE"));
+    QCommandLineOption from(QStringLiteral("from"), tr("Start of the export window (as --at)."),
+                            QStringLiteral("T"));
+    QCommandLineOption to(QStringLiteral("to"), tr("End of the export window (as --at)."),
+                          QStringLiteral("T"));
+    p.addOptions({record, noRecord, replay, at, speed, exJsonl, exCsv, exSlice, from, to});
 
     if (!p.parse(args)) {
         error = p.errorText();
@@ -166,6 +197,30 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
         error = QCoreApplication::translate(
             "CommandLine", "--shift-report/--shift-csv need --headless (in the window: Production "
                            "panel, Shift report)");
+        return false;
+    }
+    o.recordDir = p.value(record);
+    o.noRecord = p.isSet(noRecord);
+    o.replayFile = p.value(replay);
+    o.replayAt = p.value(at);
+    o.exportJsonl = p.value(exJsonl);
+    o.exportCsv = p.value(exCsv);
+    o.exportSlice = p.value(exSlice);
+    o.exportFrom = p.value(from);
+    o.exportTo = p.value(to);
+    if (p.isSet(speed)) {
+        o.replaySpeed = p.value(speed).toDouble(&ok);
+        if (!ok || o.replaySpeed < 0 || o.replaySpeed > 16) {
+            error = tr("--speed: expected 0.1 to 16, got \"%1\"").arg(p.value(speed));
+            return false;
+        }
+        o.replaySpeedSet = true;
+    }
+    const bool replayOnly = !o.replayAt.isEmpty() || p.isSet(speed) || !o.exportJsonl.isEmpty() ||
+                            !o.exportCsv.isEmpty() || !o.exportSlice.isEmpty() || !o.exportFrom.isEmpty() ||
+                            !o.exportTo.isEmpty();
+    if (replayOnly && o.replayFile.isEmpty()) {
+        error = tr("--at, --speed, --export-* and --from/--to need --replay FILE");
         return false;
     }
     return true;

@@ -21,6 +21,15 @@ struct CommandLineOptions {
     // Issue 15 §4: with --headless, the shift report written when the run ends (PDF and/or CSV).
     QString shiftReportPdf;
     QString shiftReportCsv;
+    // Flight recorder and replay (issue 16, docs/recording.md).
+    QString recordDir;      // --record DIR: this run's recording goes there (overrides record.dir)
+    bool noRecord = false;  // --no-record
+    QString replayFile;     // --replay FILE: replay a recording instead of connecting to a site
+    QString replayAt;       // --at T: start the replay at T (seconds after the start, HH:MM:SS or ISO 8601)
+    double replaySpeed = 1; // --speed X (0.1..16; headless: 0 = as fast as possible, the default)
+    bool replaySpeedSet = false;
+    QString exportJsonl, exportCsv, exportSlice; // --export-jsonl/--export-csv/--export-slice FILE
+    QString exportFrom, exportTo;                // --from T --to T (default: the whole recording)
 };
 
 // Parses args (args[0] is the program name). On failure returns false and fills error; with --help or

@@ -2,6 +2,7 @@
 
 #include "app/LogRouting.h"
 #include "app/MainWindow.h"
+#include "app/ReplayRuntime.h"
 #include "app/Screenshot.h"
 #include "app/SiteLoader.h"
 #include "app/SiteRuntime.h"
@@ -136,6 +137,8 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
     installLogRouting();
     if (!options.logCategories.isEmpty())
         enableLogCategories(options.logCategories);
+    if (!options.replayFile.isEmpty())
+        return runReplay(app, options); // issue 16: no site, no stacks
 
     auto site = loadSite(options.configFile);
     if (!site) {
@@ -151,6 +154,10 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
     SiteConfig config = std::move(site.value());
     if (options.noSim)
         config.simulation.enabled = false;
+    if (options.noRecord)
+        config.record.enabled = false;
+    if (!options.recordDir.isEmpty())
+        config.record.dir = options.recordDir.toStdString();
 
     SiteRuntime runtime(config);
     QString startError = runtime.start();

@@ -17,6 +17,7 @@
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/OwnPosition.h"
+#include "models/recording/Recorder.h"
 #include "sim/SimulatedSite.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/FleetListWidget.h"
@@ -28,6 +29,7 @@
 #include <QLabel>
 #include <QPointer>
 #include <QSet>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTime>
 #include <QTimer>
@@ -41,6 +43,7 @@ struct SiteRuntime::Impl {
     FleetContext* ctx = nullptr;
     OwnPosition* own = nullptr;
     std::vector<std::unique_ptr<ProtocolModule>> modules = makeProtocolModules();
+    recording::Recorder* recorder = nullptr; // issue 16: the flight recorder of this run
     QStringList startProblems;
     bool stopped = false;
 
@@ -96,6 +99,7 @@ QString SiteRuntime::start() {
     if (!m_config.fleet.auditLog.empty())
         d.ctx->gate()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
     d.ctx->gate()->setConfirmTimeoutMs(int(m_config.fleet.stopConfirmTimeoutSeconds * 1000));
+    startRecorder();
 
     // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down and the
     // reason is an alarm.
@@ -118,6 +122,13 @@ QString SiteRuntime::start() {
     });
     for (const auto& m : d.modules)
         m->attachOwnPosition(d.own, m_config);
+    if (d.recorder) {
+        for (const auto& m : d.modules)
+            if (FleetBridge* b = m->bridge())
+                connect(b, &FleetBridge::siteMapChanged, d.recorder,
+                        [this] { m_impl->recorder->recordSiteMap(m_impl->mergedMap()); });
+        d.recorder->recordSiteMap(d.mergedMap());
+    }
     for (const QString& p : std::as_const(d.startProblems)) {
         qCWarning(lcApp).noquote() << p;
         d.ctx->alarms()->add(
@@ -136,6 +147,53 @@ void SiteRuntime::stop() {
         m->stop();
     if (d.sim)
         d.sim->stop();
+    if (d.recorder)
+        d.recorder->stop(); // commits what is queued and closes the file
+}
+
+recording::Recorder* SiteRuntime::recorder() const {
+    return m_impl->recorder;
+}
+
+void SiteRuntime::startRecorder() {
+    Impl& d = *m_impl;
+    const RecordConfig& rc = m_config.record;
+    if (!rc.enabled)
+        return;
+    const QString dir = rc.dir.empty()
+                            ? QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
+                                  QStringLiteral("/recordings")
+                            : QString::fromStdString(rc.dir);
+    recording::applyRetention(dir, qint64(rc.maxTotalMb * 1024 * 1024), rc.maxAgeDays);
+    recording::RecorderOptions o;
+    o.path = recording::newRecordingPath(dir);
+    o.raw = rc.raw;
+    o.maxFileBytes = qint64(rc.maxFileMb * 1024 * 1024);
+    o.siteName = QString::fromStdString(m_config.name);
+    o.originLat = m_config.origin.lat;
+    o.originLon = m_config.origin.lon;
+    o.originAlt = m_config.origin.alt;
+    d.recorder = new recording::Recorder(this);
+    const QString err = d.recorder->start(o);
+    if (!err.isEmpty()) {
+        // The console runs without a recorder, loudly.
+        d.startProblems << tr("Flight recorder: %1").arg(err);
+        delete d.recorder;
+        d.recorder = nullptr;
+        return;
+    }
+    d.recorder->attach(d.ctx);
+    qCInfo(lcApp).noquote() << "recording to" << o.path;
+    d.ctx->alarms()->add(makeEvent(EventSeverity::Info, EventKind::Info, {},
+                                   tr("Recording this run to %1").arg(o.path), QStringLiteral("recorder")));
+    if (rc.raw)
+        // No stack hands its raw frames to the recorder yet (docs/recording.md): say so instead of
+        // pretending.
+        d.ctx->alarms()->add(
+            makeEvent(EventSeverity::Warning, EventKind::Info, {},
+                      tr("record.raw is set, but this build records decoded data only (no raw "
+                         "frames)"),
+                      QStringLiteral("recorder")));
 }
 
 static QWidget* notice(const QString& text) {

@@ -15,6 +15,9 @@ class QApplication;
 namespace ocu {
 
 class MainWindow;
+namespace recording {
+class Recorder;
+}
 
 class SiteRuntime : public QObject {
     Q_OBJECT
@@ -34,8 +37,11 @@ public:
     // Issue 15 §4: the shift report (PDF and/or CSV, empty = not asked); the result says what was written
     // (app/ShiftReportCommand.h).
     QJsonObject writeShiftReport(const QString& pdf, const QString& csv);
+    // The flight recorder of this run (issue 16), or nullptr when recording is off or could not start.
+    recording::Recorder* recorder() const;
 
 private:
+    void startRecorder();
     struct Impl;
     SiteConfig m_config;
     std::unique_ptr<Impl> m_impl;

@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const QByteArray a(argv[i]);
         if (a == "--headless" || a == "--help" || a == "-h" || a == "--version" || a == "-v" ||
-            a == "--help-all")
+            a == "--help-all" || a.startsWith("--export-"))
             noWindowNeeded = true;
         if (a == "--screenshot" || a.startsWith("--screenshot="))
             screenshot = true;

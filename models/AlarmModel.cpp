@@ -184,6 +184,11 @@ void AlarmModel::trim() {
     }
 }
 
+// The alarm's stable text for alarmAcknowledged (same as recording::alarmKey).
+static QString ackKey(const FleetEvent& e) {
+    return QStringLiteral("%1|%2|%3|%4").arg(QString::number(e.timeMs), toText(e.kind), e.machineId, e.text);
+}
+
 void AlarmModel::acknowledge(int row) {
     if (row < 0 || row >= m_rows.size() || m_rows[row].acked)
         return;
@@ -192,21 +197,26 @@ void AlarmModel::acknowledge(int row) {
     --m_unacked;
     emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
     emit unacknowledgedCountChanged(m_unacked);
+    emit alarmAcknowledged(ackKey(m_rows[row].event), qEnvironmentVariable("USER"), m_rows[row].ackedMs);
 }
 
 void AlarmModel::acknowledgeAll() {
     if (m_unacked == 0)
         return;
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    QStringList keys;
     for (Row& r : m_rows) {
         if (!r.acked) {
             r.acked = true;
             r.ackedMs = now;
+            keys << ackKey(r.event);
         }
     }
     m_unacked = 0;
     emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1));
     emit unacknowledgedCountChanged(0);
+    for (const QString& key : std::as_const(keys))
+        emit alarmAcknowledged(key, qEnvironmentVariable("USER"), now);
 }
 
 static QByteArray csvField(const QString& s) {

@@ -63,6 +63,7 @@ public slots:
 signals:
     void unacknowledgedCountChanged(int count);
     void eventAdded(const ocu::FleetEvent& event);
+    void alarmAcknowledged(const QString& key, const QString& by, qint64 atMs);
 
 private:
     struct Row {

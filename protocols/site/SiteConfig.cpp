@@ -79,6 +79,16 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
         }
         t->finish();
     }
+    if (auto r = root.object("record")) {
+        auto& c = cfg.record;
+        c.enabled = r->boolean("enabled", c.enabled);
+        c.dir = r->string("dir", c.dir);
+        c.maxTotalMb = r->number("max_total_mb", c.maxTotalMb, 0, 1e7);
+        c.maxAgeDays = r->number("max_age_days", c.maxAgeDays, 0, 36500);
+        c.maxFileMb = r->number("max_file_mb", c.maxFileMb, 0, 1e7);
+        c.raw = r->boolean("raw", c.raw);
+        r->finish();
+    }
 #ifdef OCU_SITE_HAVE_JAUS
     if (auto s = root.object("jaus"))
         cfg.jaus = jaus::parseJausConfig(*s);

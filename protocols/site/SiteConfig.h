@@ -65,6 +65,16 @@ struct TeleopInputConfig {
     double deadZone = 0.12;
 };
 
+// The flight recorder (issue 16, docs/recording.md): always on unless enabled is false.
+struct RecordConfig {
+    bool enabled = true;
+    std::string dir;          // folder of the per-run files; empty = the user's data folder /recordings
+    double maxTotalMb = 2048; // the folder's recordings beyond this: the oldest go (0 = no limit)
+    double maxAgeDays = 30;   // recordings older than this go (0 = no limit)
+    double maxFileMb = 0;     // one run's file beyond this: its oldest machine data go (0 = no limit)
+    bool raw = false;         // record.raw: raw frames too
+};
+
 struct SiteConfig {
     std::string name = "Unnamed site";
     GeoPoint origin;
@@ -72,6 +82,7 @@ struct SiteConfig {
     FleetConfig fleet;
     OwnPositionConfig ownPosition;
     TeleopInputConfig teleop;
+    RecordConfig record;
 #ifdef OCU_SITE_HAVE_JAUS
     std::optional<jaus::JausConfig> jaus;
 #endif

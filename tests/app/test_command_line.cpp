@@ -89,6 +89,30 @@ private slots:
                                 "--lang", "--log", "--headless", "--duration", "--reset-layout"})
             QVERIFY2(help.contains(QLatin1String(opt)), opt);
     }
+    // Issue 16: recording and replay options.
+    void recordAndReplay() {
+        CommandLineOptions o;
+        QString e;
+        QVERIFY2(parse({"--record", "/tmp/r", "--no-record"}, o, e), qPrintable(e));
+        QCOMPARE(o.recordDir, QString("/tmp/r"));
+        QVERIFY(o.noRecord);
+        o = {};
+        QVERIFY2(parse({"--replay", "run.sqlite", "--at", "30", "--speed", "4", "--export-csv", "o.csv",
+                        "--from", "10", "--to", "20"},
+                       o, e),
+                 qPrintable(e));
+        QCOMPARE(o.replayFile, QString("run.sqlite"));
+        QCOMPARE(o.replayAt, QString("30"));
+        QCOMPARE(o.replaySpeed, 4.0);
+        QCOMPARE(o.exportCsv, QString("o.csv"));
+        QCOMPARE(o.exportFrom, QString("10"));
+        QCOMPARE(o.exportTo, QString("20"));
+        o = {};
+        QVERIFY(!parse({"--at", "30"}, o, e));
+        QVERIFY(e.contains("--replay"));
+        QVERIFY(!parse({"--replay", "r.sqlite", "--speed", "17"}, o, e));
+        QVERIFY(!parse({"--replay", "r.sqlite", "--speed", "fast"}, o, e));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCommandLine)

@@ -14,6 +14,31 @@ private slots:
         QCOMPARE(cfg->origin.lat, 48.2085);
         QCOMPARE(cfg->origin.lon, 11.4702);
     }
+    // Issue 16: the flight recorder's section.
+    void recordSection() {
+        auto def = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}}})", "d.json");
+        QVERIFY(def.ok());
+        QVERIFY(def->record.enabled);
+        QVERIFY(def->record.dir.empty());
+        auto cfg = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},
+            "record":{"enabled":false,"dir":"/var/rec","max_total_mb":100,"max_age_days":7,"max_file_mb":50,
+                      "raw":true}})",
+                                   "r.json");
+        QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
+        QVERIFY(!cfg->record.enabled);
+        QCOMPARE(cfg->record.dir, std::string("/var/rec"));
+        QCOMPARE(cfg->record.maxTotalMb, 100.0);
+        QCOMPARE(cfg->record.maxAgeDays, 7.0);
+        QCOMPARE(cfg->record.maxFileMb, 50.0);
+        QVERIFY(cfg->record.raw);
+        auto bad =
+            parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},"record":{"max_age_days":-1,
+            "keep":true}})",
+                            "b.json");
+        QVERIFY(!bad.ok());
+        QVERIFY(QString::fromStdString(bad.error()).contains("record.max_age_days"));
+        QVERIFY(QString::fromStdString(bad.error()).contains("record.keep"));
+    }
     void misspelledKeyNamesKeyAndLine() {
         const char* text = "{\n"
                            "  \"site\": {\n"

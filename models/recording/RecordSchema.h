@@ -1,0 +1,38 @@
+#pragma once
+// The SQLite schema of a flight recording (docs/recording.md "Schema"). Times `t` are the console's receive
+// times in ms since the Unix epoch (UTC), never going backwards within a file.
+#include "models/SiteMapData.h"
+
+#include <QByteArray>
+
+namespace ocu::recording {
+
+constexpr int kSchemaVersion = 1;
+
+inline constexpr const char* kSchemaSql = R"SQL(
+CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT);
+CREATE TABLE IF NOT EXISTS machines(idx INTEGER PRIMARY KEY, id TEXT NOT NULL);
+CREATE TABLE IF NOT EXISTS states(id INTEGER PRIMARY KEY, t0 INTEGER NOT NULL, t1 INTEGER NOT NULL,
+                                  n INTEGER NOT NULL, data BLOB NOT NULL);
+CREATE INDEX IF NOT EXISTS states_t1 ON states(t1);
+CREATE TABLE IF NOT EXISTS keyframes(t INTEGER PRIMARY KEY, chunk INTEGER NOT NULL, n INTEGER NOT NULL,
+                                     data BLOB NOT NULL);
+CREATE TABLE IF NOT EXISTS events(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, time_ms INTEGER, severity INTEGER,
+                                  kind INTEGER, machine TEXT, source TEXT, text TEXT, requires_ack INTEGER,
+                                  key TEXT);
+CREATE INDEX IF NOT EXISTS events_t ON events(t);
+CREATE TABLE IF NOT EXISTS acks(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, key TEXT, by TEXT, at_ms INTEGER);
+CREATE TABLE IF NOT EXISTS commands(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, origin TEXT, action TEXT,
+                                    target TEXT, ok INTEGER, audit TEXT);
+CREATE TABLE IF NOT EXISTS links(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, protocol TEXT, link TEXT,
+                                 state INTEGER, age_ms INTEGER, detail TEXT);
+CREATE TABLE IF NOT EXISTS sitemaps(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, data BLOB);
+CREATE TABLE IF NOT EXISTS raw(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, link TEXT, data BLOB);
+)SQL";
+
+// The site map as compact JSON ({"revision":..,"features":[{"id","name","kind","task","auto","width",
+// "points":[e,n,e,n,...]}]}), and back (malformed input gives an empty map).
+QByteArray siteMapToJson(const SiteMapData& map);
+SiteMapData siteMapFromJson(const QByteArray& json);
+
+} // namespace ocu::recording

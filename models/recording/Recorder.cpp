@@ -1,0 +1,596 @@
+#include "models/recording/Recorder.h"
+
+#include "models/AlarmModel.h"
+#include "models/CommandGate.h"
+#include "models/FleetBridge.h"
+#include "models/FleetContext.h"
+#include "models/FleetModel.h"
+#include "models/recording/RecordCodec.h"
+#include "models/recording/RecordSchema.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QHash>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <ctime>
+
+namespace ocu::recording {
+
+QString alarmKey(const FleetEvent& e) {
+    return QStringLiteral("%1|%2|%3|%4").arg(QString::number(e.timeMs), toText(e.kind), e.machineId, e.text);
+}
+
+struct Recorder::Item {
+    enum Kind : std::uint8_t { State, Removed, Event, Ack, Command, Link, SiteMap, Raw, Meta } kind = State;
+    qint64 t = 0;
+    MachineState state;
+    FleetEvent event;
+    QString a, b, c;
+    QByteArray blob;
+    qint64 x = 0;
+    int i = 0;
+};
+
+namespace {
+
+qint64 threadCpuNs() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return qint64(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
+// A prepared statement, finalized on scope exit.
+struct Stmt {
+    sqlite3_stmt* s = nullptr;
+    Stmt(sqlite3* db, const char* sql) { sqlite3_prepare_v2(db, sql, -1, &s, nullptr); }
+    ~Stmt() { sqlite3_finalize(s); }
+    Stmt(const Stmt&) = delete;
+    Stmt& operator=(const Stmt&) = delete;
+    void text(int i, const QString& v) {
+        const QByteArray u = v.toUtf8();
+        sqlite3_bind_text(s, i, u.constData(), int(u.size()), SQLITE_TRANSIENT);
+    }
+    void blob(int i, const QByteArray& v) {
+        sqlite3_bind_blob(s, i, v.constData(), int(v.size()), SQLITE_TRANSIENT);
+    }
+    void i64(int i, qint64 v) { sqlite3_bind_int64(s, i, v); }
+    bool run() {
+        const int rc = sqlite3_step(s);
+        sqlite3_reset(s);
+        return rc == SQLITE_DONE || rc == SQLITE_ROW;
+    }
+};
+
+} // namespace
+
+// Lives on the writer thread once started.
+struct Recorder::Writer {
+    sqlite3* db = nullptr;
+    QHash<QString, std::uint32_t> idxOf;
+    QHash<std::uint32_t, MachineState> last; // what the file says each machine is now
+    std::uint32_t nextIdx = 1;
+    qint64 lastKeyframeT = 0;
+    qint64 lastChunkT1 = 0;
+    qint64 lastChunkId = 0;
+    qint64 lastTrimCheckT = 0;
+    qint64 maxFileBytes = 0;
+    int keyframeIntervalMs = 10000;
+    quint64 stateBytes = 0;
+    std::unique_ptr<Stmt> insState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink, insMap,
+        insRaw;
+
+    ~Writer() {
+        insState.reset();
+        insMachine.reset();
+        insKeyframe.reset();
+        insEvent.reset();
+        insAck.reset();
+        insCommand.reset();
+        insLink.reset();
+        insMap.reset();
+        insRaw.reset();
+        if (db)
+            sqlite3_close(db);
+    }
+    bool exec(const char* sql) { return sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK; }
+
+    std::uint32_t indexOf(const QString& id) {
+        auto it = idxOf.find(id);
+        if (it != idxOf.end())
+            return *it;
+        const std::uint32_t idx = nextIdx++;
+        idxOf.insert(id, idx);
+        insMachine->i64(1, idx);
+        insMachine->text(2, id);
+        insMachine->run();
+        return idx;
+    }
+
+    void writeChunk(QByteArray& chunk, qint64 t0, qint64 t1, int n) {
+        if (chunk.isEmpty())
+            return;
+        insState->i64(1, t0);
+        insState->i64(2, t1);
+        insState->i64(3, n);
+        insState->blob(4, chunk);
+        insState->run();
+        lastChunkId = sqlite3_last_insert_rowid(db);
+        lastChunkT1 = t1;
+        stateBytes += quint64(chunk.size());
+        chunk.clear();
+    }
+
+    void writeKeyframe(qint64 t) {
+        QByteArray data;
+        for (auto it = last.cbegin(); it != last.cend(); ++it)
+            appendFull(data, it.key(), 0, it.value());
+        insKeyframe->i64(1, t);
+        insKeyframe->i64(2, lastChunkId);
+        insKeyframe->i64(3, last.size());
+        insKeyframe->blob(4, data);
+        insKeyframe->run();
+        lastKeyframeT = t;
+    }
+
+    // The file over its limit: the machine data before the keyframe a quarter into the file goes (that
+    // keyframe keeps the picture from there on); events, commands and links stay (they are small).
+    void trimIfNeeded(qint64 t) {
+        if (maxFileBytes <= 0 || t - lastTrimCheckT < 10000)
+            return;
+        lastTrimCheckT = t;
+        Stmt size(db, "SELECT page_count * page_size FROM pragma_page_count(), pragma_page_size()");
+        if (sqlite3_step(size.s) != SQLITE_ROW || sqlite3_column_int64(size.s, 0) <= maxFileBytes)
+            return;
+        Stmt kf(
+            db,
+            "SELECT t, chunk FROM keyframes ORDER BY t LIMIT 1 OFFSET (SELECT COUNT(*) / 4 FROM keyframes)");
+        if (sqlite3_step(kf.s) != SQLITE_ROW)
+            return;
+        const qint64 kt = sqlite3_column_int64(kf.s, 0), chunk = sqlite3_column_int64(kf.s, 1);
+        Stmt delS(db, "DELETE FROM states WHERE id <= ?");
+        delS.i64(1, chunk);
+        delS.run();
+        Stmt delK(db, "DELETE FROM keyframes WHERE t < ?");
+        delK.i64(1, kt);
+        delK.run();
+        Stmt meta(db, "INSERT OR REPLACE INTO meta(key, value) VALUES('trimmed_before_ms', ?)");
+        meta.text(1, QString::number(kt));
+        meta.run();
+    }
+};
+
+Recorder::Recorder(QObject* parent) : QObject(parent) {}
+
+Recorder::~Recorder() {
+    stop();
+}
+
+qint64 Recorder::now() const {
+    return m_options.clock ? m_options.clock() : QDateTime::currentMSecsSinceEpoch();
+}
+
+QString Recorder::start(const RecorderOptions& options) {
+    if (m_running)
+        return tr("the recorder is already running");
+    m_options = options;
+    if (QFileInfo::exists(options.path))
+        return tr("%1 exists already; a recording is never overwritten").arg(options.path);
+    QDir().mkpath(QFileInfo(options.path).absolutePath());
+    auto w = std::make_unique<Writer>();
+    if (sqlite3_open_v2(options.path.toUtf8().constData(), &w->db,
+                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+                        nullptr) != SQLITE_OK) {
+        const QString err = w->db ? QString::fromUtf8(sqlite3_errmsg(w->db)) : tr("out of memory");
+        return tr("cannot create %1: %2").arg(options.path, err);
+    }
+    sqlite3_busy_timeout(w->db, 2000);
+    if (!w->exec("PRAGMA auto_vacuum=INCREMENTAL") || !w->exec("PRAGMA journal_mode=WAL") ||
+        !w->exec("PRAGMA synchronous=NORMAL") || !w->exec(kSchemaSql))
+        return tr("cannot create the recording schema in %1: %2")
+            .arg(options.path, QString::fromUtf8(sqlite3_errmsg(w->db)));
+    w->insState = std::make_unique<Stmt>(w->db, "INSERT INTO states(t0, t1, n, data) VALUES(?,?,?,?)");
+    w->insMachine = std::make_unique<Stmt>(w->db, "INSERT OR REPLACE INTO machines(idx, id) VALUES(?,?)");
+    w->insKeyframe =
+        std::make_unique<Stmt>(w->db, "INSERT OR REPLACE INTO keyframes(t, chunk, n, data) VALUES(?,?,?,?)");
+    w->insEvent =
+        std::make_unique<Stmt>(w->db, "INSERT INTO events(t, time_ms, severity, kind, machine, source, "
+                                      "text, requires_ack, key) VALUES(?,?,?,?,?,?,?,?,?)");
+    w->insAck = std::make_unique<Stmt>(w->db, "INSERT INTO acks(t, key, by, at_ms) VALUES(?,?,?,?)");
+    w->insCommand =
+        std::make_unique<Stmt>(w->db, "INSERT INTO commands(t, origin, action, target, ok, audit) "
+                                      "VALUES(?,?,?,?,?,?)");
+    w->insLink = std::make_unique<Stmt>(w->db, "INSERT INTO links(t, protocol, link, state, age_ms, detail) "
+                                               "VALUES(?,?,?,?,?,?)");
+    w->insMap = std::make_unique<Stmt>(w->db, "INSERT INTO sitemaps(t, data) VALUES(?,?)");
+    w->insRaw = std::make_unique<Stmt>(w->db, "INSERT INTO raw(t, link, data) VALUES(?,?,?)");
+    w->keyframeIntervalMs = std::max(100, options.keyframeIntervalMs);
+    w->maxFileBytes = options.maxFileBytes;
+    {
+        const qint64 t = now();
+        Stmt meta(w->db, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
+        const QList<QPair<QString, QString>> kv{
+            {QStringLiteral("schema"), QString::number(kSchemaVersion)},
+            {QStringLiteral("start_ms"), QString::number(t)},
+            {QStringLiteral("site_name"), options.siteName},
+            {QStringLiteral("origin_lat"), QString::number(options.originLat, 'g', 17)},
+            {QStringLiteral("origin_lon"), QString::number(options.originLon, 'g', 17)},
+            {QStringLiteral("origin_alt"), QString::number(options.originAlt, 'g', 17)},
+            {QStringLiteral("raw"), options.raw ? QStringLiteral("1") : QStringLiteral("0")},
+            {QStringLiteral("keyframe_interval_ms"), QString::number(w->keyframeIntervalMs)},
+        };
+        for (const auto& [k, v] : kv) {
+            meta.text(1, k);
+            meta.text(2, v);
+            meta.run();
+        }
+        m_lastT = t;
+        w->lastKeyframeT = t;
+    }
+    m_writer = std::move(w);
+    m_stopRequested = false;
+    m_running = true;
+    m_thread = std::thread([this] { run(); });
+    return {};
+}
+
+void Recorder::stop() {
+    if (!m_running)
+        return;
+    {
+        std::lock_guard lk(m_mutex);
+        m_stopRequested = true;
+    }
+    m_cv.notify_all();
+    m_thread.join();
+    m_writer.reset();
+    m_running = false;
+}
+
+bool Recorder::push(Item&& item) {
+    if (!m_running)
+        return false;
+    std::lock_guard lk(m_mutex);
+    if (m_stopRequested || int(m_queue.size()) >= m_options.queueCapacity) {
+        m_dropped.fetch_add(1, std::memory_order_relaxed);
+        return false;
+    }
+    // Record times never go backwards (a stepped wall clock), so the file stays in time order.
+    item.t = std::max(now(), m_lastT.load(std::memory_order_relaxed));
+    m_lastT.store(item.t, std::memory_order_relaxed);
+    m_queue.push_back(std::move(item));
+    ++m_pushedSeq;
+    return true;
+}
+
+void Recorder::recordStates(const QVector<MachineState>& states) {
+    for (const MachineState& s : states) {
+        Item it;
+        it.kind = Item::State;
+        it.state = s;
+        push(std::move(it));
+    }
+}
+
+void Recorder::recordRemoval(const QString& id) {
+    Item it;
+    it.kind = Item::Removed;
+    it.a = id;
+    push(std::move(it));
+}
+
+void Recorder::recordEvent(const FleetEvent& event) {
+    Item it;
+    it.kind = Item::Event;
+    it.event = event;
+    push(std::move(it));
+}
+
+void Recorder::recordAck(const QString& key, const QString& by, qint64 atMs) {
+    Item it;
+    it.kind = Item::Ack;
+    it.a = key;
+    it.b = by;
+    it.x = atMs;
+    push(std::move(it));
+}
+
+void Recorder::recordCommand(const QString& auditJson) {
+    Item it;
+    it.kind = Item::Command;
+    it.a = auditJson;
+    push(std::move(it));
+}
+
+void Recorder::recordLink(const QString& protocol, const LinkStatus& status) {
+    Item it;
+    it.kind = Item::Link;
+    it.a = protocol;
+    it.b = status.link;
+    it.c = status.detail;
+    it.i = int(status.state);
+    it.x = status.dataAgeMs;
+    push(std::move(it));
+}
+
+void Recorder::recordSiteMap(const SiteMapData& map) {
+    Item it;
+    it.kind = Item::SiteMap;
+    it.blob = siteMapToJson(map);
+    push(std::move(it));
+}
+
+void Recorder::recordRaw(const QString& link, const QByteArray& frame) {
+    if (!m_options.raw)
+        return;
+    Item it;
+    it.kind = Item::Raw;
+    it.a = link;
+    it.blob = frame;
+    push(std::move(it));
+}
+
+void Recorder::flush() {
+    if (!m_running)
+        return;
+    std::unique_lock lk(m_mutex);
+    const quint64 target = m_pushedSeq;
+    m_flushRequested = true;
+    m_cv.notify_all();
+    m_flushedCv.wait(lk, [&] { return m_writtenSeq >= target || !m_running; });
+}
+
+Recorder::Stats Recorder::stats() const {
+    Stats s;
+    {
+        std::lock_guard lk(m_mutex);
+        s.queued = m_pushedSeq;
+        s.written = m_writtenSeq;
+    }
+    s.dropped = m_dropped.load();
+    s.commits = m_commits.load();
+    s.stateBytes = m_stateBytes.load();
+    s.writerCpuNs = m_writerCpuNs.load();
+    return s;
+}
+
+void Recorder::run() {
+    Writer& w = *m_writer;
+    std::vector<Item> batch;
+    const qint64 cpu0 = threadCpuNs();
+    for (;;) {
+        bool stopping = false;
+        {
+            std::unique_lock lk(m_mutex);
+            m_cv.wait_for(lk, std::chrono::milliseconds(m_options.flushIntervalMs),
+                          [&] { return m_stopRequested || m_flushRequested; });
+            m_flushRequested = false;
+            batch.swap(m_queue);
+            stopping = m_stopRequested;
+        }
+        if (!batch.empty()) {
+            w.exec("BEGIN");
+            QByteArray chunk;
+            qint64 t0 = 0, t1 = 0;
+            int n = 0;
+            for (Item& it : batch) {
+                switch (it.kind) {
+                case Item::State: {
+                    const std::uint32_t idx = w.indexOf(it.state.id);
+                    if (chunk.isEmpty())
+                        t0 = it.t;
+                    else if (it.t - t0 > 1000) {
+                        w.writeChunk(chunk, t0, t1, n);
+                        n = 0;
+                        t0 = it.t;
+                    }
+                    const auto dt = std::int32_t(it.t - t0);
+                    auto prev = w.last.find(idx);
+                    if (prev != w.last.end() && sameStatus(*prev, it.state) && positionEncodable(it.state)) {
+                        appendPosition(chunk, idx, dt, it.t, it.state);
+                        // What a replay will see: the quantised position (keyframes carry the same).
+                        applyPosition(*prev, it.state, it.t);
+                    } else {
+                        appendFull(chunk, idx, dt, it.state);
+                        w.last.insert(idx, it.state);
+                    }
+                    t1 = it.t;
+                    ++n;
+                    break;
+                }
+                case Item::Removed: {
+                    const std::uint32_t idx = w.indexOf(it.a);
+                    if (chunk.isEmpty())
+                        t0 = it.t;
+                    appendRemoved(chunk, idx, std::int32_t(it.t - t0));
+                    w.last.remove(idx);
+                    t1 = it.t;
+                    ++n;
+                    break;
+                }
+                case Item::Event: {
+                    Stmt& s = *w.insEvent;
+                    s.i64(1, it.t);
+                    s.i64(2, it.event.timeMs);
+                    s.i64(3, int(it.event.severity));
+                    s.i64(4, int(it.event.kind));
+                    s.text(5, it.event.machineId);
+                    s.text(6, it.event.source);
+                    s.text(7, it.event.text);
+                    s.i64(8, it.event.requiresAck ? 1 : 0);
+                    s.text(9, alarmKey(it.event));
+                    s.run();
+                    break;
+                }
+                case Item::Ack: {
+                    Stmt& s = *w.insAck;
+                    s.i64(1, it.t);
+                    s.text(2, it.a);
+                    s.text(3, it.b);
+                    s.i64(4, it.x);
+                    s.run();
+                    break;
+                }
+                case Item::Command: {
+                    const QJsonObject o = QJsonDocument::fromJson(it.a.toUtf8()).object();
+                    Stmt& s = *w.insCommand;
+                    s.i64(1, it.t);
+                    s.text(2, o.value(QStringLiteral("origin")).toString());
+                    s.text(3, o.value(QStringLiteral("action")).toString());
+                    s.text(4, o.value(QStringLiteral("target")).toString());
+                    s.i64(5, o.value(QStringLiteral("ok")).toBool() ? 1 : 0);
+                    s.text(6, it.a);
+                    s.run();
+                    break;
+                }
+                case Item::Link: {
+                    Stmt& s = *w.insLink;
+                    s.i64(1, it.t);
+                    s.text(2, it.a);
+                    s.text(3, it.b);
+                    s.i64(4, it.i);
+                    s.i64(5, it.x);
+                    s.text(6, it.c);
+                    s.run();
+                    break;
+                }
+                case Item::SiteMap: {
+                    Stmt& s = *w.insMap;
+                    s.i64(1, it.t);
+                    s.blob(2, it.blob);
+                    s.run();
+                    break;
+                }
+                case Item::Meta: {
+                    Stmt s(w.db, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
+                    s.text(1, it.a);
+                    s.text(2, it.c);
+                    s.run();
+                    break;
+                }
+                case Item::Raw: {
+                    Stmt& s = *w.insRaw;
+                    s.i64(1, it.t);
+                    s.text(2, it.a);
+                    s.blob(3, it.blob);
+                    s.run();
+                    break;
+                }
+                }
+            }
+            w.writeChunk(chunk, t0, t1, n);
+            const qint64 lastT = batch.back().t;
+            if (lastT - w.lastKeyframeT >= w.keyframeIntervalMs)
+                w.writeKeyframe(std::max(lastT, w.lastChunkT1));
+            Stmt end(w.db, "INSERT OR REPLACE INTO meta(key, value) VALUES('end_ms', ?)");
+            end.text(1, QString::number(lastT));
+            end.run();
+            w.trimIfNeeded(lastT);
+            w.exec("COMMIT");
+            if (w.maxFileBytes > 0)
+                w.exec("PRAGMA incremental_vacuum");
+            m_commits.fetch_add(1, std::memory_order_relaxed);
+            m_stateBytes.store(w.stateBytes, std::memory_order_relaxed);
+        }
+        {
+            std::lock_guard lk(m_mutex);
+            m_writtenSeq += batch.size();
+        }
+        batch.clear();
+        m_writerCpuNs.store(quint64(threadCpuNs() - cpu0), std::memory_order_relaxed);
+        m_flushedCv.notify_all();
+        if (stopping) {
+            std::lock_guard lk(m_mutex);
+            if (m_queue.empty())
+                break;
+        }
+    }
+    {
+        Stmt end(w.db, "INSERT OR REPLACE INTO meta(key, value) VALUES('closed', '1')");
+        end.run();
+    }
+    w.exec("PRAGMA wal_checkpoint(TRUNCATE)");
+    std::lock_guard lk(m_mutex);
+    m_flushedCv.notify_all();
+}
+
+void Recorder::attach(FleetContext* ctx) {
+    m_ctx = ctx;
+    FleetModel* fleet = ctx->fleet();
+    connect(fleet, &FleetModel::machinesChanged, this, [this, fleet](const QStringList& ids) {
+        QVector<MachineState> out;
+        out.reserve(ids.size());
+        for (const QString& id : ids)
+            if (const MachineState* m = fleet->machine(id))
+                out.push_back(*m);
+        recordStates(out);
+    });
+    connect(fleet, &FleetModel::machineRemoved, this, &Recorder::recordRemoval);
+    connect(ctx->alarms(), &AlarmModel::eventAdded, this, &Recorder::recordEvent);
+    connect(ctx->alarms(), &AlarmModel::alarmAcknowledged, this, &Recorder::recordAck);
+    connect(ctx->gate(), &CommandGate::audited, this, &Recorder::recordCommand);
+    auto watch = [this](FleetBridge* b) {
+        const QString protocol = toText(b->protocol());
+        connect(b, &FleetBridge::linkChanged, this,
+                [this, protocol](const LinkStatus& s) { recordLink(protocol, s); });
+        for (const LinkStatus& s : b->links())
+            recordLink(protocol, s);
+    };
+    for (FleetBridge* b : ctx->bridges())
+        watch(b);
+    connect(ctx, &FleetContext::bridgeAdded, this, watch);
+    // The staleness thresholds, so a replay greys out what the console greyed out.
+    QJsonObject stale;
+    for (Protocol p : {Protocol::Jaus, Protocol::Iso23725, Protocol::Osyris, Protocol::Other})
+        stale[toText(p)] = double(fleet->staleAfterMs(p));
+    Item it;
+    it.kind = Item::Meta;
+    it.a = QStringLiteral("stale_after_ms");
+    it.c = QString::fromUtf8(QJsonDocument(stale).toJson(QJsonDocument::Compact));
+    push(std::move(it));
+    // What is already in the models when the recorder starts late.
+    recordStates(fleet->machinesSnapshot());
+}
+
+QString newRecordingPath(const QString& dir) {
+    const QString stamp = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss"));
+    return QDir(dir).filePath(
+        QStringLiteral("ocu-%1-%2.sqlite").arg(stamp).arg(QCoreApplication::applicationPid()));
+}
+
+QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxAgeDays, const QString& keep) {
+    QDir d(dir);
+    QFileInfoList files = d.entryInfoList({QStringLiteral("ocu-*.sqlite")}, QDir::Files,
+                                          QDir::Time | QDir::Reversed); // oldest first
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    const QString keepAbs = keep.isEmpty() ? QString() : QFileInfo(keep).absoluteFilePath();
+    auto sizeOf = [](const QFileInfo& f) {
+        return f.size() + QFileInfo(f.absoluteFilePath() + QStringLiteral("-wal")).size();
+    };
+    qint64 total = 0;
+    for (const QFileInfo& f : files)
+        total += sizeOf(f);
+    QStringList deleted;
+    for (const QFileInfo& f : files) {
+        if (f.absoluteFilePath() == keepAbs || f.lastModified().secsTo(now) < 300)
+            continue;
+        const bool tooOld = maxAgeDays > 0 && f.lastModified().secsTo(now) > qint64(maxAgeDays * 86400);
+        const bool tooMuch = maxTotalBytes > 0 && total > maxTotalBytes;
+        if (!tooOld && !tooMuch)
+            continue;
+        total -= sizeOf(f);
+        for (const QString& suffix : {QString(), QStringLiteral("-wal"), QStringLiteral("-shm")})
+            QFile::remove(f.absoluteFilePath() + suffix);
+        deleted << f.fileName();
+    }
+    return deleted;
+}
+
+} // namespace ocu::recording

@@ -1,0 +1,134 @@
+#pragma once
+// The flight recorder (issue 16 §1, docs/recording.md): everything the console's models received - every
+// machine state as delivered to the fleet model, every removal, every link change, every event and alarm,
+// every acknowledgement, every operator command with its result and targets (the CommandGate's audit) and
+// the site map - into one SQLite file per run.
+//
+// Threads: record*() may be called from any thread and only append to a bounded in-memory queue (items over
+// the capacity are dropped and counted: the console is never slowed down by its recorder). A writer thread
+// of its own wakes every flushIntervalMs, encodes what is queued and commits it in one transaction (WAL,
+// synchronous=NORMAL: a killed process loses at most what was queued since the last commit, and the file
+// opens cleanly - SQLite's WAL recovery). Every keyframeIntervalMs it also writes a keyframe (the full state
+// of every machine) so a replay can seek anywhere quickly.
+#include "models/FleetEvent.h"
+#include "models/MachineState.h"
+#include "models/SiteMapData.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QString>
+#include <QStringList>
+#include <QVector>
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace ocu {
+
+class FleetContext;
+class FleetBridge;
+struct LinkStatus;
+
+namespace recording {
+
+struct RecorderOptions {
+    QString path;               // the SQLite file of this run (created; an existing file is refused)
+    int queueCapacity = 200000; // items waiting for the writer; beyond: dropped and counted
+    int flushIntervalMs = 200;  // the writer commits at least this often
+    int keyframeIntervalMs = 10000;
+    qint64 maxFileBytes = 0; // 0 = unlimited; beyond it the oldest machine data of this file is deleted
+    bool raw = false;        // record.raw: raw frames (recordRaw); off by default
+    QString siteName;
+    double originLat = 0, originLon = 0, originAlt = 0; // the site frame, for replay's map
+    std::function<qint64()> clock;                      // ms since the epoch; default: the wall clock
+};
+
+// The key an acknowledgement names its alarm by (AlarmModel::alarmAcknowledged): stable across consoles.
+QString alarmKey(const FleetEvent& e);
+
+class Recorder : public QObject {
+    Q_OBJECT
+public:
+    explicit Recorder(QObject* parent = nullptr);
+    ~Recorder() override; // stop()
+
+    // Creates the file and starts the writer thread; returns an empty string or what went wrong.
+    QString start(const RecorderOptions& options);
+    // Writes what is queued, the end time, checkpoints the WAL and ends the writer thread.
+    void stop();
+    bool running() const { return m_running; }
+    QString path() const { return m_options.path; }
+
+    // GUI thread: records the context's models - fleet changes and removals, events and acknowledgements,
+    // the gate's audit, and the links of every bridge (added now or later).
+    void attach(FleetContext* ctx);
+
+    // ---- any thread: queue only ----
+    void recordStates(const QVector<MachineState>& states);
+    void recordRemoval(const QString& id);
+    void recordEvent(const FleetEvent& event);
+    void recordAck(const QString& key, const QString& by, qint64 atMs);
+    // One operator command: the gate's audit line (JSON: time, origin, action, target, ok, targets, message).
+    void recordCommand(const QString& auditJson);
+    void recordLink(const QString& protocol, const LinkStatus& status);
+    void recordSiteMap(const SiteMapData& map);
+    // record.raw: one raw frame/datagram as received on `link` (ignored when raw is off).
+    void recordRaw(const QString& link, const QByteArray& frame);
+
+    // Blocks until everything queued before the call is committed (tests, benchmarks, shutdown).
+    void flush();
+
+    struct Stats {
+        quint64 queued = 0;  // accepted into the queue
+        quint64 dropped = 0; // refused: queue full
+        quint64 written = 0; // committed
+        quint64 commits = 0;
+        quint64 stateBytes = 0;  // encoded machine-state bytes
+        quint64 writerCpuNs = 0; // CPU time of the writer thread
+    };
+    Stats stats() const;
+
+private:
+    struct Item;
+    struct Writer;
+    bool push(Item&& item);
+    void run();
+    qint64 now() const;
+
+    RecorderOptions m_options;
+    std::unique_ptr<Writer> m_writer;
+    std::thread m_thread;
+    mutable std::mutex m_mutex;
+    std::condition_variable m_cv;
+    std::condition_variable m_flushedCv;
+    std::vector<Item> m_queue;
+    quint64 m_pushedSeq = 0;  // items accepted so far (incl. those already taken by the writer)
+    quint64 m_writtenSeq = 0; // items committed
+    bool m_stopRequested = false;
+    bool m_flushRequested = false;
+    std::atomic<bool> m_running{false};
+    std::atomic<quint64> m_dropped{0};
+    std::atomic<quint64> m_commits{0};
+    std::atomic<quint64> m_stateBytes{0};
+    std::atomic<quint64> m_writerCpuNs{0};
+    std::atomic<qint64> m_lastT{0};
+    QPointer<FleetContext> m_ctx;
+};
+
+// Retention (record.max_total_mb, record.max_age_days): deletes recordings (ocu-*.sqlite and their -wal/-shm)
+// in `dir` older than maxAgeDays, then the oldest while the folder holds more than maxTotalBytes. `keep` and
+// files written to within the last 5 minutes (another console's run) are never deleted. Returns the names
+// deleted.
+QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxAgeDays,
+                           const QString& keep = {});
+// ocu-YYYYMMDD-HHMMSS-<pid>.sqlite in dir.
+QString newRecordingPath(const QString& dir);
+
+} // namespace recording
+} // namespace ocu

@@ -1,0 +1,685 @@
+#include "models/recording/Recording.h"
+
+#include "models/recording/RecordCodec.h"
+#include "models/recording/RecordSchema.h"
+#include "models/recording/Recorder.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTimeZone>
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+namespace ocu::recording {
+
+namespace {
+
+struct Query {
+    sqlite3_stmt* s = nullptr;
+    Query(sqlite3* db, const char* sql) {
+        if (sqlite3_prepare_v2(db, sql, -1, &s, nullptr) != SQLITE_OK)
+            s = nullptr;
+    }
+    ~Query() { sqlite3_finalize(s); }
+    Query(const Query&) = delete;
+    Query& operator=(const Query&) = delete;
+    Query& bind(int i, qint64 v) {
+        if (s)
+            sqlite3_bind_int64(s, i, v);
+        return *this;
+    }
+    Query& bind(int i, const QString& v) {
+        if (s) {
+            const QByteArray u = v.toUtf8();
+            sqlite3_bind_text(s, i, u.constData(), int(u.size()), SQLITE_TRANSIENT);
+        }
+        return *this;
+    }
+    Query& bind(int i, const QByteArray& v) {
+        if (s)
+            sqlite3_bind_blob(s, i, v.constData(), int(v.size()), SQLITE_TRANSIENT);
+        return *this;
+    }
+    bool next() { return s && sqlite3_step(s) == SQLITE_ROW; }
+    bool run() {
+        if (!s)
+            return false;
+        const int rc = sqlite3_step(s);
+        sqlite3_reset(s);
+        return rc == SQLITE_DONE || rc == SQLITE_ROW;
+    }
+    qint64 i64(int c) const { return sqlite3_column_int64(s, c); }
+    QString text(int c) const {
+        return QString::fromUtf8(reinterpret_cast<const char*>(sqlite3_column_text(s, c)),
+                                 sqlite3_column_bytes(s, c));
+    }
+    QByteArray blob(int c) const {
+        // A copy: the column's memory is valid only until the next step.
+        return QByteArray(static_cast<const char*>(sqlite3_column_blob(s, c)), sqlite3_column_bytes(s, c));
+    }
+};
+
+constexpr qint64 kMinT = std::numeric_limits<qint64>::min();
+
+QString isoTime(qint64 ms) {
+    return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs);
+}
+
+QJsonObject machineJson(const MachineState& m) {
+    QJsonObject o;
+    o[QStringLiteral("type")] = QStringLiteral("machine");
+    o[QStringLiteral("id")] = m.id;
+    o[QStringLiteral("protocol")] = toText(m.protocol);
+    o[QStringLiteral("name")] = m.name;
+    o[QStringLiteral("machine_type")] = m.type;
+    if (m.hasPosition) {
+        o[QStringLiteral("lat")] = m.lat;
+        o[QStringLiteral("lon")] = m.lon;
+        o[QStringLiteral("e")] = m.e;
+        o[QStringLiteral("n")] = m.n;
+        o[QStringLiteral("u")] = m.u;
+        o[QStringLiteral("heading")] = m.headingDeg;
+    }
+    o[QStringLiteral("speed")] = m.speed;
+    o[QStringLiteral("state")] = m.modeText;
+    o[QStringLiteral("mode")] = toText(m.mode);
+    o[QStringLiteral("stop")] = toText(m.stop);
+    o[QStringLiteral("stop_text")] = m.stopText;
+    o[QStringLiteral("controller")] = m.controller;
+    o[QStringLiteral("control")] = toText(m.control);
+    o[QStringLiteral("health")] = toText(m.health);
+    if (!m.healthText.isEmpty())
+        o[QStringLiteral("health_text")] = m.healthText;
+    if (!m.workText.isEmpty())
+        o[QStringLiteral("work")] = m.workText;
+    o[QStringLiteral("link")] = toText(m.link);
+    return o;
+}
+
+QByteArray csvField(const QString& s) {
+    QString v = s;
+    if (v.contains(QLatin1Char('"')) || v.contains(QLatin1Char(',')) || v.contains(QLatin1Char('\n')) ||
+        v.contains(QLatin1Char('\r'))) {
+        v.replace(QLatin1String("\""), QLatin1String("\"\""));
+        v = QLatin1Char('"') + v + QLatin1Char('"');
+    }
+    return v.toUtf8();
+}
+
+} // namespace
+
+Recording::~Recording() {
+    if (m_db)
+        sqlite3_close(m_db);
+}
+
+std::unique_ptr<Recording> Recording::open(const QString& path, QString* error) {
+    auto fail = [&](const QString& why) -> std::unique_ptr<Recording> {
+        if (error)
+            *error = why;
+        return nullptr;
+    };
+    if (!QFileInfo(path).isFile())
+        return fail(QCoreApplication::translate("Recording", "%1: no such file").arg(path));
+    std::unique_ptr<Recording> r(new Recording);
+    r->m_path = path;
+    // Read-write so SQLite can recover the WAL of a killed writer; nothing is ever written through it.
+    if (sqlite3_open_v2(path.toUtf8().constData(), &r->m_db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX,
+                        nullptr) != SQLITE_OK) {
+        if (r->m_db) {
+            sqlite3_close(r->m_db);
+            r->m_db = nullptr;
+        }
+        if (sqlite3_open_v2(path.toUtf8().constData(), &r->m_db, SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX,
+                            nullptr) != SQLITE_OK)
+            return fail(QCoreApplication::translate("Recording", "%1: cannot open: %2")
+                            .arg(path, QString::fromUtf8(sqlite3_errmsg(r->m_db))));
+    }
+    sqlite3_busy_timeout(r->m_db, 2000);
+    {
+        Query q(r->m_db, "SELECT value FROM meta WHERE key = 'schema'");
+        if (!q.s)
+            return fail(QCoreApplication::translate("Recording", "%1 is not an OCU recording (%2)")
+                            .arg(path, QString::fromUtf8(sqlite3_errmsg(r->m_db))));
+        if (!q.next())
+            return fail(QCoreApplication::translate("Recording", "%1 is not an OCU recording").arg(path));
+        const int v = q.text(0).toInt();
+        if (v < 1 || v > kSchemaVersion)
+            return fail(QCoreApplication::translate("Recording", "%1: recording schema %2 is not supported")
+                            .arg(path)
+                            .arg(v));
+    }
+    r->m_startMs = r->meta(QStringLiteral("start_ms")).toLongLong();
+    // The end as committed: the newest row of any table (end_ms is updated with every commit too).
+    qint64 end = r->meta(QStringLiteral("end_ms")).toLongLong();
+    for (const char* sql : {"SELECT MAX(t1) FROM states", "SELECT MAX(t) FROM events",
+                            "SELECT MAX(t) FROM links", "SELECT MAX(t) FROM commands"}) {
+        Query q(r->m_db, sql);
+        if (q.next())
+            end = std::max(end, q.i64(0));
+    }
+    r->m_endMs = std::max(end, r->m_startMs);
+    r->loadMachineIds();
+    return r;
+}
+
+QString Recording::meta(const QString& key) const {
+    Query q(m_db, "SELECT value FROM meta WHERE key = ?");
+    q.bind(1, key);
+    return q.next() ? q.text(0) : QString();
+}
+
+QHash<Protocol, qint64> Recording::staleAfterMs() const {
+    QHash<Protocol, qint64> out;
+    const QJsonObject o = QJsonDocument::fromJson(meta(QStringLiteral("stale_after_ms")).toUtf8()).object();
+    for (auto it = o.begin(); it != o.end(); ++it)
+        out.insert(protocolFromString(it.key()), qint64(it.value().toDouble()));
+    return out;
+}
+
+void Recording::loadMachineIds() const {
+    Query q(m_db, "SELECT idx, id FROM machines");
+    while (q.next())
+        m_ids.insert(std::uint32_t(q.i64(0)), q.text(1));
+}
+
+Recording::StateMap Recording::statesAtIdx(qint64 t) const {
+    StateMap states;
+    qint64 afterChunk = 0;
+    {
+        Query kf(m_db, "SELECT chunk, data, t FROM keyframes WHERE t <= ? ORDER BY t DESC LIMIT 1");
+        kf.bind(1, t);
+        if (kf.next()) {
+            afterChunk = kf.i64(0);
+            decodeChunk(kf.blob(1), kf.i64(2), states, kMinT, std::numeric_limits<qint64>::max());
+        }
+    }
+    // Chunks are in time order: walk them by id from the keyframe's and stop at the first one after t (a
+    // range condition on t0 alone would make SQLite visit every later chunk of the file).
+    Query q(m_db, "SELECT t0, data FROM states WHERE id > ? ORDER BY id");
+    q.bind(1, afterChunk);
+    while (q.next() && q.i64(0) <= t)
+        decodeChunk(q.blob(1), q.i64(0), states, kMinT, t);
+    return states;
+}
+
+QHash<QString, MachineState> Recording::statesAt(qint64 t) const {
+    QHash<QString, MachineState> out;
+    const auto states = statesAtIdx(t);
+    for (auto it = states.cbegin(); it != states.cend(); ++it)
+        out.insert(it->id, *it);
+    return out;
+}
+
+QString Recording::idOf(std::uint32_t idx) const {
+    auto it = m_ids.constFind(idx);
+    if (it != m_ids.cend())
+        return *it;
+    loadMachineIds(); // a recording still being written gained machines
+    return m_ids.value(idx);
+}
+
+void Recording::walk(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
+                     const std::function<bool(const StateChange&)>& fn) const {
+    // The first chunk ending after `fromExclusive` (index on t1), then by id until one starts after the end.
+    qint64 first = -1;
+    {
+        Query f(m_db, "SELECT id FROM states WHERE t1 > ? ORDER BY t1, id LIMIT 1");
+        f.bind(1, fromExclusive);
+        if (!f.next())
+            return;
+        first = f.i64(0);
+    }
+    Query q(m_db, "SELECT t0, data FROM states WHERE id >= ? ORDER BY id");
+    q.bind(1, first);
+    bool go = true;
+    while (go && q.next() && q.i64(0) <= toInclusive) {
+        decodeChunk(q.blob(1), q.i64(0), states, fromExclusive, toInclusive, [&](const DecodedRecord& r) {
+            if (!go || !fn)
+                return;
+            StateChange c;
+            c.t = r.tMs;
+            if (r.type == RecordType::Removed) {
+                c.removed = true;
+                c.state.id = idOf(r.idx);
+            } else {
+                auto it = states.constFind(r.idx);
+                if (it == states.cend())
+                    return;
+                c.state = *it;
+            }
+            go = fn(c);
+        });
+    }
+}
+
+void Recording::changes(qint64 fromExclusive, qint64 toInclusive,
+                        const std::function<bool(const StateChange&)>& fn) const {
+    // The base: the picture at `fromExclusive` (Position records need the machine's last Full).
+    StateMap states = statesAtIdx(fromExclusive);
+    walk(states, fromExclusive, toInclusive, fn);
+}
+
+QStringList Recording::advance(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
+                               QStringList* removed) const {
+    QStringList changed;
+    QSet<QString> seen;
+    walk(states, fromExclusive, toInclusive, [&](const StateChange& c) {
+        if (c.removed) {
+            if (removed)
+                removed->push_back(c.state.id);
+            changed.removeAll(c.state.id);
+            seen.remove(c.state.id);
+        } else if (!seen.contains(c.state.id)) {
+            seen.insert(c.state.id);
+            changed << c.state.id;
+        }
+        return true;
+    });
+    return changed;
+}
+
+QVector<RecordedEvent> Recording::events(qint64 fromExclusive, qint64 toInclusive) const {
+    QVector<RecordedEvent> out;
+    Query q(m_db, "SELECT t, time_ms, severity, kind, machine, source, text, requires_ack, key FROM events "
+                  "WHERE t > ? AND t <= ? ORDER BY id");
+    q.bind(1, fromExclusive).bind(2, toInclusive);
+    while (q.next()) {
+        RecordedEvent e;
+        e.t = q.i64(0);
+        e.event.timeMs = q.i64(1);
+        e.event.severity = EventSeverity(std::clamp<qint64>(q.i64(2), 0, int(EventSeverity::Critical)));
+        e.event.kind = EventKind(std::clamp<qint64>(q.i64(3), 0, int(EventKind::Info)));
+        e.event.machineId = q.text(4);
+        e.event.source = q.text(5);
+        e.event.text = q.text(6);
+        e.event.requiresAck = q.i64(7) != 0;
+        e.key = q.text(8);
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
+QVector<RecordedAck> Recording::acks(qint64 fromExclusive, qint64 toInclusive) const {
+    QVector<RecordedAck> out;
+    Query q(m_db, "SELECT t, key, by FROM acks WHERE t > ? AND t <= ? ORDER BY id");
+    q.bind(1, fromExclusive).bind(2, toInclusive);
+    while (q.next())
+        out.push_back({q.i64(0), q.text(1), q.text(2)});
+    return out;
+}
+
+QVector<RecordedCommand> Recording::commands(qint64 fromExclusive, qint64 toInclusive) const {
+    QVector<RecordedCommand> out;
+    Query q(m_db,
+            "SELECT t, origin, action, target, ok, audit FROM commands WHERE t > ? AND t <= ? ORDER BY id");
+    q.bind(1, fromExclusive).bind(2, toInclusive);
+    while (q.next())
+        out.push_back({q.i64(0), q.text(1), q.text(2), q.text(3), q.i64(4) != 0, q.text(5)});
+    return out;
+}
+
+QVector<RecordedLink> Recording::links(qint64 fromExclusive, qint64 toInclusive) const {
+    QVector<RecordedLink> out;
+    Query q(m_db,
+            "SELECT t, protocol, link, state, age_ms, detail FROM links WHERE t > ? AND t <= ? ORDER BY id");
+    q.bind(1, fromExclusive).bind(2, toInclusive);
+    while (q.next()) {
+        RecordedLink l;
+        l.t = q.i64(0);
+        l.protocol = q.text(1);
+        l.link = q.text(2);
+        l.state = LinkState(std::clamp<qint64>(q.i64(3), 0, int(LinkState::Down)));
+        l.dataAgeMs = q.i64(4);
+        l.detail = q.text(5);
+        out.push_back(std::move(l));
+    }
+    return out;
+}
+
+QVector<RecordedLink> Recording::linksAt(qint64 t) const {
+    std::map<QString, RecordedLink> last;
+    for (RecordedLink& l : links(kMinT, t))
+        last[l.protocol + QLatin1Char('\n') + l.link] = std::move(l);
+    QVector<RecordedLink> out;
+    for (auto& [k, l] : last)
+        out.push_back(l);
+    return out;
+}
+
+SiteMapData Recording::siteMapAt(qint64 t) const {
+    Query q(m_db, "SELECT data FROM sitemaps WHERE t <= ? ORDER BY id DESC LIMIT 1");
+    q.bind(1, t);
+    if (q.next())
+        return siteMapFromJson(q.blob(0));
+    Query first(m_db, "SELECT data FROM sitemaps ORDER BY id LIMIT 1");
+    return first.next() ? siteMapFromJson(first.blob(0)) : SiteMapData{};
+}
+
+QVector<Marker> Recording::markers() const {
+    QVector<Marker> out;
+    {
+        Query q(m_db, "SELECT t, severity, machine, text FROM events WHERE requires_ack != 0 ORDER BY id");
+        while (q.next()) {
+            Marker m;
+            m.kind = Marker::Kind::Alarm;
+            m.t = q.i64(0);
+            m.bad = q.i64(1) >= int(EventSeverity::Alarm);
+            const QString machine = q.text(2);
+            m.text = machine.isEmpty() ? q.text(3) : machine + QStringLiteral(": ") + q.text(3);
+            out.push_back(std::move(m));
+        }
+    }
+    {
+        Query q(m_db, "SELECT t, origin, action, target, ok FROM commands ORDER BY id");
+        while (q.next()) {
+            Marker m;
+            m.kind = Marker::Kind::Command;
+            m.t = q.i64(0);
+            m.bad = q.i64(4) == 0;
+            m.text = QStringLiteral("%1 %2 (%3)%4")
+                         .arg(q.text(2), q.text(3), q.text(1),
+                              m.bad ? QCoreApplication::translate("Recording", " - not every target reached")
+                                    : QString());
+            out.push_back(std::move(m));
+        }
+    }
+    std::stable_sort(out.begin(), out.end(), [](const Marker& a, const Marker& b) { return a.t < b.t; });
+    return out;
+}
+
+bool Recording::exportJsonLines(QIODevice* out, qint64 from, qint64 to, QString* error) const {
+    if (!out || !out->isWritable()) {
+        if (error)
+            *error = QCoreApplication::translate("Recording", "the output is not writable");
+        return false;
+    }
+    // Merge the tables in time order: machine changes stream; the rest is small and loaded whole.
+    QVector<QPair<qint64, QJsonObject>> other;
+    for (const RecordedEvent& e : events(from - 1, to)) {
+        QJsonObject o{{QStringLiteral("type"), QStringLiteral("event")},
+                      {QStringLiteral("time"), isoTime(e.event.timeMs)},
+                      {QStringLiteral("severity"), toText(e.event.severity)},
+                      {QStringLiteral("kind"), toText(e.event.kind)},
+                      {QStringLiteral("machine"), e.event.machineId},
+                      {QStringLiteral("source"), e.event.source},
+                      {QStringLiteral("text"), e.event.text},
+                      {QStringLiteral("requires_ack"), e.event.requiresAck}};
+        other.push_back({e.t, o});
+    }
+    for (const RecordedAck& a : acks(from - 1, to))
+        other.push_back({a.t, QJsonObject{{QStringLiteral("type"), QStringLiteral("ack")},
+                                          {QStringLiteral("key"), a.key},
+                                          {QStringLiteral("by"), a.by}}});
+    for (const RecordedCommand& c : commands(from - 1, to)) {
+        QJsonObject o = QJsonDocument::fromJson(c.audit.toUtf8()).object();
+        o[QStringLiteral("type")] = QStringLiteral("command");
+        other.push_back({c.t, o});
+    }
+    for (const RecordedLink& l : links(from - 1, to))
+        other.push_back({l.t, QJsonObject{{QStringLiteral("type"), QStringLiteral("link")},
+                                          {QStringLiteral("protocol"), l.protocol},
+                                          {QStringLiteral("link"), l.link},
+                                          {QStringLiteral("state"), toText(l.state)},
+                                          {QStringLiteral("age_ms"), double(l.dataAgeMs)},
+                                          {QStringLiteral("detail"), l.detail}}});
+    std::stable_sort(other.begin(), other.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    int next = 0;
+    bool ok = true;
+    auto write = [&](qint64 t, QJsonObject o) {
+        o[QStringLiteral("t")] = double(t);
+        ok = ok && out->write(QJsonDocument(o).toJson(QJsonDocument::Compact) + '\n') > 0;
+    };
+    changes(from - 1, to, [&](const StateChange& c) {
+        while (next < other.size() && other[next].first <= c.t) {
+            write(other[next].first, other[next].second);
+            ++next;
+        }
+        write(c.t, c.removed ? QJsonObject{{QStringLiteral("type"), QStringLiteral("machine_removed")},
+                                           {QStringLiteral("id"), c.state.id}}
+                             : machineJson(c.state));
+        return ok;
+    });
+    for (; next < other.size(); ++next)
+        write(other[next].first, other[next].second);
+    if (!ok && error)
+        *error = QCoreApplication::translate("Recording", "write failed: %1").arg(out->errorString());
+    return ok;
+}
+
+bool Recording::exportCsv(QIODevice* out, qint64 from, qint64 to, QString* error) const {
+    if (!out || !out->isWritable()) {
+        if (error)
+            *error = QCoreApplication::translate("Recording", "the output is not writable");
+        return false;
+    }
+    bool ok =
+        out->write("time,t_ms,id,name,protocol,e,n,u,lat,lon,heading,speed,mode,stop,health,link\r\n") > 0;
+    changes(from - 1, to, [&](const StateChange& c) {
+        if (c.removed)
+            return true;
+        const MachineState& m = c.state;
+        QByteArray line;
+        line += isoTime(c.t).toUtf8() + ',' + QByteArray::number(c.t) + ',' + csvField(m.id) + ',' +
+                csvField(m.name) + ',' + toText(m.protocol).toUtf8() + ',';
+        if (m.hasPosition)
+            line += QByteArray::number(m.e, 'f', 3) + ',' + QByteArray::number(m.n, 'f', 3) + ',' +
+                    QByteArray::number(m.u, 'f', 3) + ',' + QByteArray::number(m.lat, 'f', 8) + ',' +
+                    QByteArray::number(m.lon, 'f', 8) + ',' + QByteArray::number(m.headingDeg, 'f', 1) + ',';
+        else
+            line += ",,,,,,";
+        line += QByteArray::number(m.speed, 'f', 3) + ',' +
+                csvField(m.modeText.isEmpty() ? toText(m.mode) : m.modeText) + ',' + toText(m.stop).toUtf8() +
+                ',' + toText(m.health).toUtf8() + ',' + toText(m.link).toUtf8() + "\r\n";
+        ok = ok && out->write(line) > 0;
+        return ok;
+    });
+    if (!ok && error)
+        *error = QCoreApplication::translate("Recording", "write failed: %1").arg(out->errorString());
+    return ok;
+}
+
+bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString* error) const {
+    auto fail = [&](const QString& why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (QFileInfo::exists(path))
+        return fail(QCoreApplication::translate("Recording", "%1 exists already").arg(path));
+    if (to < from)
+        return fail(QCoreApplication::translate("Recording", "the window ends before it starts"));
+    sqlite3* dst = nullptr;
+    if (sqlite3_open_v2(path.toUtf8().constData(), &dst, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE,
+                        nullptr) != SQLITE_OK) {
+        const QString why = dst ? QString::fromUtf8(sqlite3_errmsg(dst)) : QString();
+        sqlite3_close(dst);
+        return fail(QCoreApplication::translate("Recording", "cannot create %1: %2").arg(path, why));
+    }
+    auto exec = [&](const char* sql) {
+        return sqlite3_exec(dst, sql, nullptr, nullptr, nullptr) == SQLITE_OK;
+    };
+    bool ok = exec("PRAGMA journal_mode=WAL") && exec(kSchemaSql) && exec("BEGIN");
+    {
+        Query attach(dst, "ATTACH DATABASE ? AS src");
+        attach.bind(1, m_path);
+        ok = ok && attach.run();
+    }
+    ok = ok && exec("INSERT INTO meta SELECT * FROM src.meta") &&
+         exec("INSERT INTO machines SELECT * FROM src.machines");
+    {
+        Query q(dst, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
+        for (const auto& [k, v] : {std::pair{QStringLiteral("start_ms"), QString::number(from)},
+                                   std::pair{QStringLiteral("end_ms"), QString::number(to)},
+                                   std::pair{QStringLiteral("slice_of"), QFileInfo(m_path).fileName()}}) {
+            q.bind(1, k).bind(2, v);
+            ok = ok && q.run();
+        }
+    }
+    // The picture at `from` as a keyframe, then the machine changes re-encoded (as the recorder does).
+    QHash<std::uint32_t, MachineState> last = statesAtIdx(from);
+    QHash<QString, std::uint32_t> idxOf;
+    for (auto it = m_ids.cbegin(); it != m_ids.cend(); ++it)
+        idxOf.insert(it.value(), it.key());
+    QByteArray kf;
+    for (auto it = last.cbegin(); it != last.cend(); ++it)
+        appendFull(kf, it.key(), 0, *it);
+    Query insKf(dst, "INSERT OR REPLACE INTO keyframes(t, chunk, n, data) VALUES(?,?,?,?)");
+    insKf.bind(1, from).bind(2, 0).bind(3, last.size()).bind(4, kf);
+    ok = ok && insKf.run();
+    Query insState(dst, "INSERT INTO states(t0, t1, n, data) VALUES(?,?,?,?)");
+    QByteArray chunk;
+    qint64 t0 = 0, t1 = 0, lastKeyframe = from, chunkId = 0;
+    int n = 0;
+    const qint64 kfInterval =
+        std::max<qint64>(100, meta(QStringLiteral("keyframe_interval_ms")).toLongLong());
+    auto flushChunk = [&] {
+        if (chunk.isEmpty())
+            return;
+        insState.bind(1, t0).bind(2, t1).bind(3, n).bind(4, chunk);
+        ok = ok && insState.run();
+        chunkId = sqlite3_last_insert_rowid(dst);
+        chunk.clear();
+        n = 0;
+        if (t1 - lastKeyframe >= kfInterval) {
+            QByteArray k;
+            for (auto it = last.cbegin(); it != last.cend(); ++it)
+                appendFull(k, it.key(), 0, *it);
+            insKf.bind(1, t1).bind(2, chunkId).bind(3, last.size()).bind(4, k);
+            ok = ok && insKf.run();
+            lastKeyframe = t1;
+        }
+    };
+    changes(from, to, [&](const StateChange& c) {
+        if (!chunk.isEmpty() && c.t - t0 > 1000)
+            flushChunk();
+        if (chunk.isEmpty())
+            t0 = c.t;
+        t1 = c.t;
+        ++n;
+        const std::uint32_t idx = idxOf.value(c.state.id);
+        const auto dt = std::int32_t(c.t - t0);
+        if (c.removed) {
+            appendRemoved(chunk, idx, dt);
+            last.remove(idx);
+        } else if (auto p = last.find(idx);
+                   p != last.end() && sameStatus(*p, c.state) && positionEncodable(c.state)) {
+            appendPosition(chunk, idx, dt, c.t, c.state);
+            applyPosition(*p, c.state, c.t);
+        } else {
+            appendFull(chunk, idx, dt, c.state);
+            last.insert(idx, c.state);
+        }
+        return ok;
+    });
+    flushChunk();
+    // Everything else of the window; the site map and the links as they were at its start.
+    for (const char* sql :
+         {"INSERT INTO events(t, time_ms, severity, kind, machine, source, text, requires_ack, key) SELECT "
+          "t, "
+          "time_ms, severity, kind, machine, source, text, requires_ack, key FROM src.events WHERE t >= ?1 "
+          "AND t <= ?2",
+          "INSERT INTO acks(t, key, by, at_ms) SELECT t, key, by, at_ms FROM src.acks WHERE t >= ?1 AND t <= "
+          "?2",
+          "INSERT INTO commands(t, origin, action, target, ok, audit) SELECT t, origin, action, target, ok, "
+          "audit "
+          "FROM src.commands WHERE t >= ?1 AND t <= ?2",
+          "INSERT INTO links(t, protocol, link, state, age_ms, detail) SELECT t, protocol, link, state, "
+          "age_ms, detail "
+          "FROM src.links WHERE t <= ?2",
+          "INSERT INTO sitemaps(t, data) SELECT t, data FROM src.sitemaps WHERE t <= ?2",
+          "INSERT INTO raw(t, link, data) SELECT t, link, data FROM src.raw WHERE t >= ?1 AND t <= ?2"}) {
+        Query q(dst, sql);
+        q.bind(1, from).bind(2, to);
+        ok = ok && q.run();
+    }
+    ok = ok && exec("COMMIT") && exec("DETACH DATABASE src") && exec("PRAGMA wal_checkpoint(TRUNCATE)");
+    const QString why = QString::fromUtf8(sqlite3_errmsg(dst));
+    sqlite3_close(dst);
+    if (!ok) {
+        for (const QString& suffix : {QString(), QStringLiteral("-wal"), QStringLiteral("-shm")})
+            QFile::remove(path + suffix);
+        return fail(QCoreApplication::translate("Recording", "slice to %1 failed: %2").arg(path, why));
+    }
+    return true;
+}
+
+qint64 parseReplayTime(const QString& text, qint64 startMs) {
+    const QString s = text.trimmed();
+    static const QRegularExpression secs(QStringLiteral("^(\\d+(?:\\.\\d+)?)\\s*s?$"));
+    if (auto m = secs.match(s); m.hasMatch())
+        return startMs + qint64(m.captured(1).toDouble() * 1000.0 + 0.5);
+    static const QRegularExpression clock(QStringLiteral("^(\\d{1,2}):(\\d{2}):(\\d{2})(?:\\.(\\d{1,3}))?$"));
+    if (auto m = clock.match(s); m.hasMatch()) {
+        const QDate day = QDateTime::fromMSecsSinceEpoch(startMs, Qt::UTC).date();
+        const QTime t(m.captured(1).toInt(), m.captured(2).toInt(), m.captured(3).toInt(),
+                      m.captured(4).isEmpty() ? 0 : m.captured(4).leftJustified(3, QLatin1Char('0')).toInt());
+        if (!t.isValid())
+            return -1;
+        return QDateTime(day, t, Qt::UTC).toMSecsSinceEpoch();
+    }
+    QDateTime dt = QDateTime::fromString(s, Qt::ISODateWithMs);
+    if (!dt.isValid())
+        dt = QDateTime::fromString(s, Qt::ISODate);
+    if (!dt.isValid())
+        return -1;
+    if (dt.timeSpec() == Qt::LocalTime)
+        dt.setTimeSpec(Qt::UTC);
+    return dt.toMSecsSinceEpoch();
+}
+
+QByteArray siteMapToJson(const SiteMapData& map) {
+    QJsonArray features;
+    for (const MapFeature& f : map.features) {
+        QJsonArray pts;
+        for (const QPointF& p : f.points) {
+            pts.append(p.x());
+            pts.append(p.y());
+        }
+        features.append(QJsonObject{{QStringLiteral("id"), f.id},
+                                    {QStringLiteral("name"), f.name},
+                                    {QStringLiteral("kind"), int(f.kind)},
+                                    {QStringLiteral("task"), f.defaultTask},
+                                    {QStringLiteral("auto"), f.autonomous},
+                                    {QStringLiteral("width"), f.width},
+                                    {QStringLiteral("points"), pts}});
+    }
+    return QJsonDocument(QJsonObject{{QStringLiteral("revision"), double(map.revision)},
+                                     {QStringLiteral("features"), features}})
+        .toJson(QJsonDocument::Compact);
+}
+
+SiteMapData siteMapFromJson(const QByteArray& json) {
+    SiteMapData map;
+    const QJsonObject o = QJsonDocument::fromJson(json).object();
+    map.revision = quint64(o.value(QStringLiteral("revision")).toDouble());
+    for (const QJsonValue& v : o.value(QStringLiteral("features")).toArray()) {
+        const QJsonObject fo = v.toObject();
+        MapFeature f;
+        f.id = fo.value(QStringLiteral("id")).toString();
+        f.name = fo.value(QStringLiteral("name")).toString();
+        f.kind = MapFeatureKind(
+            std::clamp(fo.value(QStringLiteral("kind")).toInt(), 0, int(MapFeatureKind::Area)));
+        f.defaultTask = fo.value(QStringLiteral("task")).toString();
+        f.autonomous = fo.value(QStringLiteral("auto")).toBool();
+        f.width = fo.value(QStringLiteral("width")).toDouble();
+        const QJsonArray pts = fo.value(QStringLiteral("points")).toArray();
+        for (qsizetype i = 0; i + 1 < pts.size(); i += 2)
+            f.points.push_back(QPointF(pts[i].toDouble(), pts[i + 1].toDouble()));
+        map.features.push_back(std::move(f));
+    }
+    return map;
+}
+
+} // namespace ocu::recording

@@ -1,0 +1,99 @@
+#pragma once
+// Drives the console's models from a recording (issue 16 §2): the fleet model (machines, staleness by the
+// replay clock), an alarm model (events and acknowledgements as they were at the replay time), the links and
+// the site map. Play, pause, speed 0.1x-16x, reverse, step and seek; seeking anywhere rebuilds the picture
+// from the newest keyframe before the target plus the records after it (Recording::statesAtIdx), and
+// playing forward continues from the current picture without a new seek.
+#include "models/FleetModel.h"
+#include "models/recording/Recording.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QPointer>
+#include <QSet>
+#include <QTimer>
+
+namespace ocu {
+
+class AlarmModel;
+
+namespace recording {
+
+class ReplayController : public QObject {
+    Q_OBJECT
+public:
+    // `fleet` is driven (its clock becomes the replay clock, its own refresh timer and expiry are turned
+    // off).
+    ReplayController(const Recording* recording, FleetModel* fleet, QObject* parent = nullptr);
+
+    const Recording* recording() const { return m_rec; }
+    FleetModel* fleet() const { return m_fleet; }
+    // The alarm model of the current picture; replaced (alarmsReplaced) when seeking backwards.
+    AlarmModel* alarms() const { return m_alarms; }
+    QHash<QString, MachineState> links() const;
+
+    qint64 startMs() const { return m_rec->startMs(); }
+    qint64 endMs() const { return m_rec->endMs(); }
+    qint64 position() const { return m_t; }
+    bool playing() const { return m_timer.isActive(); }
+    double speed() const { return m_speed; }
+    bool reverse() const { return m_reverse; }
+    // How long the last seek took to rebuild the picture (ms, wall time).
+    double lastSeekMs() const { return m_lastSeekMs; }
+
+    static QVector<double> speeds(); // 0.1 0.25 0.5 1 2 4 8 16
+
+public slots:
+    // Rebuilds the picture at t (clamped to the recording).
+    void seek(qint64 t);
+    // Moves to t: forward by continuing (or seeking when far), backwards by seeking.
+    void moveTo(qint64 t);
+    void play();
+    void pause();
+    void togglePlay();
+    void setSpeed(double speed); // clamped to 0.1..16
+    void faster();
+    void slower();
+    void setReverse(bool reverse);
+    // One step (default 1 s) forward (+1) or back (-1); pauses.
+    void step(int direction);
+    void setStepMs(qint64 ms) { m_stepMs = std::max<qint64>(1, ms); }
+    // Wall-clock interval of the play timer (default 40 ms).
+    void setTickIntervalMs(int ms) { m_timer.setInterval(std::max(1, ms)); }
+
+signals:
+    void positionChanged(qint64 t);
+    void playingChanged(bool playing);
+    void speedChanged(double speed);
+    void reverseChanged(bool reverse);
+    void alarmsReplaced(ocu::AlarmModel* alarms);
+    void linkChanged(const ocu::recording::RecordedLink& link);
+    void linksReset(const QVector<ocu::recording::RecordedLink>& links);
+    void siteMapChanged(const ocu::SiteMapData& map);
+    void finished(); // playing reached an end
+
+private:
+    void tick();
+    void advanceTo(qint64 t);
+    void applyAlarms(qint64 fromExclusive, qint64 toInclusive);
+    void updateSiteMap(qint64 t);
+
+    const Recording* m_rec;
+    QPointer<FleetModel> m_fleet;
+    AlarmModel* m_alarms = nullptr;
+    QHash<QString, QVector<int>> m_alarmRow; // alarm key -> rows of m_alarms
+    Recording::StateMap m_states;
+    qint64 m_t = 0;
+    bool m_loaded = false;
+    double m_speed = 1.0;
+    bool m_reverse = false;
+    qint64 m_stepMs = 1000;
+    double m_lastSeekMs = 0;
+    QString m_mapStamp;
+    QTimer m_timer;
+    QElapsedTimer m_wall;
+    double m_carryMs = 0;
+};
+
+} // namespace recording
+} // namespace ocu

@@ -1,0 +1,150 @@
+// Issue 16 §2: the replay window - REPLAY banner, commands disabled, the timeline (markers that jump, exact
+// time entry, slider) and the keys (Space, + / -, arrows, Home / End) driving the replay controller.
+#include "app/MainWindow.h"
+#include "app/ReplayRuntime.h"
+#include "models/AlarmModel.h"
+#include "models/FleetModel.h"
+#include "models/recording/Recorder.h"
+#include "models/recording/Recording.h"
+#include "models/recording/ReplayController.h"
+#include "widgets/EventLogWidget.h"
+#include "widgets/ReplayTimeline.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+using namespace ocu;
+using namespace ocu::recording;
+
+class TestReplayWindow : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString m_file;
+    const qint64 m_t0 = 1'700'000'000'000;
+
+private slots:
+    void initTestCase() {
+        // 60 s of two machines at 10 Hz; an alarm at +20 s, a command at +40 s.
+        m_file = m_dir.filePath(QStringLiteral("w.sqlite"));
+        qint64 clock = m_t0;
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_file;
+        o.clock = [&clock] { return clock; };
+        QVERIFY(rec.start(o).isEmpty());
+        for (int step = 0; step <= 600; ++step) {
+            clock = m_t0 + step * 100;
+            for (int k = 0; k < 2; ++k) {
+                MachineState m;
+                m.id = QStringLiteral("jaus:%1").arg(100 + k);
+                m.protocol = Protocol::Jaus;
+                m.name = QStringLiteral("UGV-%1").arg(100 + k);
+                m.link = LinkState::Up;
+                m.hasPosition = true;
+                m.e = step * 0.5 + k * 10;
+                m.n = k * 5.0;
+                m.lastDataMs = clock;
+                rec.recordStates({m});
+            }
+            if (step == 200) {
+                FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::ControlLost,
+                                          QStringLiteral("jaus:100"), QStringLiteral("control lost"));
+                ev.timeMs = clock;
+                rec.recordEvent(ev);
+            }
+            if (step == 400)
+                rec.recordCommand(
+                    QStringLiteral(R"({"origin":"gui","action":"stop","target":"jaus:101","ok":true})"));
+        }
+        rec.stop();
+    }
+
+    void windowDrivesTheReplay() {
+        auto rec = Recording::open(m_file);
+        QVERIFY(rec);
+        FleetModel fleet;
+        ReplayController c(rec.get(), &fleet);
+        c.seek(rec->startMs());
+        MainWindow window;
+        populateReplayWindow(window, &c);
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+
+        // Banner and disabled commands.
+        auto* banner = window.findChild<QLabel*>(QStringLiteral("replayBannerLabel"));
+        QVERIFY(banner && banner->isVisible());
+        QVERIFY(banner->text().startsWith(QStringLiteral("REPLAY")));
+        QVERIFY(!window.stopAllAction()->isEnabled());
+        auto* log = qobject_cast<EventLogWidget*>(window.panelWidget(Panel::EventLog));
+        QVERIFY(log && !log->ackAllButton()->isEnabled());
+
+        auto* timeline = window.findChild<ReplayTimeline*>(QStringLiteral("replayTimeline"));
+        QVERIFY(timeline);
+        QCOMPARE(fleet.rowCount(), 2);
+
+        // Markers: an alarm at +20 s and a command at +40 s; clicking one jumps there.
+        TimelineMarkerStrip* strip = timeline->markerStrip();
+        QCOMPARE(strip->markers().size(), 2);
+        QTest::mouseClick(strip, Qt::LeftButton, {}, QPoint(strip->xOf(m_t0 + 40'000), strip->height() / 2));
+        QCOMPARE(c.position(), m_t0 + 40'000);
+        QCOMPARE(fleet.machine(QStringLiteral("jaus:100"))->e, 200.0);
+        // The alarm of +20 s is in the event log now; going back before it removes it.
+        QCOMPARE(c.alarms()->rowCount(), 1);
+
+        // Exact time entry: seconds after the start, and a clock time.
+        QLineEdit* time = timeline->timeEdit();
+        time->setFocus();
+        time->setText(QStringLiteral("12.5"));
+        QTest::keyClick(time, Qt::Key_Return);
+        QCOMPARE(c.position(), m_t0 + 12'500);
+        QCOMPARE(c.alarms()->rowCount(), 0);
+        log = qobject_cast<EventLogWidget*>(window.panelWidget(Panel::EventLog));
+        QVERIFY(log && !log->ackAllButton()->isEnabled()); // the replaced log is read-only too
+        time->setText(QStringLiteral("not a time"));
+        QTest::keyClick(time, Qt::Key_Return);
+        QCOMPARE(c.position(), m_t0 + 12'500);
+
+        // The slider seeks.
+        timeline->slider()->setValue(300); // 100 ms steps: +30 s
+        QCOMPARE(c.position(), m_t0 + 30'000);
+        QCOMPARE(timeline->position(), m_t0 + 30'000);
+
+        // Keys on the window.
+        window.activateWindow();
+        window.setFocus();
+        QTest::keyClick(&window, Qt::Key_Right);
+        QCOMPARE(c.position(), m_t0 + 31'000);
+        QTest::keyClick(&window, Qt::Key_Left);
+        QTest::keyClick(&window, Qt::Key_Left);
+        QCOMPARE(c.position(), m_t0 + 29'000);
+        QTest::keyClick(&window, Qt::Key_Right, Qt::ShiftModifier);
+        QCOMPARE(c.position(), m_t0 + 39'000);
+        QTest::keyClick(&window, Qt::Key_Plus);
+        QCOMPARE(c.speed(), 2.0);
+        QCOMPARE(timeline->speedBox()->currentData().toDouble(), 2.0);
+        QTest::keyClick(&window, Qt::Key_Minus);
+        QTest::keyClick(&window, Qt::Key_Minus);
+        QCOMPARE(c.speed(), 0.5);
+        QTest::keyClick(&window, Qt::Key_Home);
+        QCOMPARE(c.position(), rec->startMs());
+        QTest::keyClick(&window, Qt::Key_End);
+        QCOMPARE(c.position(), rec->endMs());
+        QTest::keyClick(&window, Qt::Key_Home);
+        QTest::keyClick(&window, Qt::Key_Space);
+        QVERIFY(c.playing());
+        QTRY_VERIFY(c.position() > rec->startMs());
+        QTest::keyClick(&window, Qt::Key_Space);
+        QVERIFY(!c.playing());
+    }
+};
+
+QTEST_MAIN(TestReplayWindow)
+#include "test_replay_window.moc"

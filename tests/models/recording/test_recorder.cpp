@@ -1,0 +1,457 @@
+// Flight recorder and recording reader (issue 16 §1-§3): what is recorded reads back as it was at any time
+// (keyframe seek and forward play agree, both directions), alarms and acknowledgements as of the replay time,
+// the bounded queue drops and counts instead of growing, exports (JSON lines, CSV, slice), hostile blobs.
+#include "models/AlarmModel.h"
+#include "models/FleetBridge.h"
+#include "models/FleetModel.h"
+#include "models/recording/RecordCodec.h"
+#include "models/recording/Recorder.h"
+#include "models/recording/Recording.h"
+#include "models/recording/ReplayController.h"
+
+#include <QBuffer>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace ocu;
+using namespace ocu::recording;
+
+namespace {
+
+MachineState machine(const QString& id, double e, double n) {
+    MachineState m;
+    m.id = id;
+    m.protocol = Protocol::Iso23725;
+    m.name = id.toUpper();
+    m.type = QStringLiteral("haul truck");
+    m.link = LinkState::Up;
+    m.hasPosition = true;
+    m.e = e;
+    m.n = n;
+    m.u = 1.5;
+    m.lat = 48.2 + n * 1e-5;
+    m.lon = 11.4 + e * 1e-5;
+    m.headingDeg = 90;
+    m.speed = 8.25;
+    m.modeText = QStringLiteral("Autonomous");
+    m.mode = ModeCategory::Autonomous;
+    m.stop = StopState::None;
+    m.health = HealthLevel::Ok;
+    return m;
+}
+
+// The test's own picture: what the fleet was after every record up to t.
+struct Truth {
+    QMap<qint64, QHash<QString, MachineState>> at; // t -> picture after the records at t
+    QHash<QString, MachineState> now;
+    void set(qint64 t, const MachineState& m) {
+        now.insert(m.id, m);
+        at[t] = now;
+    }
+    void remove(qint64 t, const QString& id) {
+        now.remove(id);
+        at[t] = now;
+    }
+    QHash<QString, MachineState> pictureAt(qint64 t) const {
+        auto it = at.upperBound(t);
+        if (it == at.begin())
+            return {};
+        return *std::prev(it);
+    }
+};
+
+bool samePicture(const QHash<QString, MachineState>& a, const QHash<QString, MachineState>& b, QString* why) {
+    if (a.size() != b.size()) {
+        *why = QStringLiteral("%1 machines vs %2").arg(a.size()).arg(b.size());
+        return false;
+    }
+    for (auto it = a.cbegin(); it != a.cend(); ++it) {
+        auto o = b.constFind(it.key());
+        if (o == b.cend()) {
+            *why = it.key() + QStringLiteral(" missing");
+            return false;
+        }
+        if (!sameStatus(*it, *o)) {
+            *why = it.key() + QStringLiteral(" status differs");
+            return false;
+        }
+        if (std::hypot(it->e - o->e, it->n - o->n) > 0.01 || std::abs(it->u - o->u) > 0.01 ||
+            std::abs(it->speed - o->speed) > 1e-3 || it->lastDataMs != o->lastDataMs) {
+            *why = QStringLiteral("%1 at %2,%3 vs %4,%5")
+                       .arg(it.key())
+                       .arg(it->e)
+                       .arg(it->n)
+                       .arg(o->e)
+                       .arg(o->n);
+            return false;
+        }
+    }
+    return true;
+}
+
+QHash<QString, MachineState> pictureOf(const FleetModel& fleet) {
+    QHash<QString, MachineState> out;
+    for (const MachineState& m : fleet.machinesSnapshot())
+        out.insert(m.id, m);
+    return out;
+}
+
+} // namespace
+
+class TestRecorder : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    qint64 m_clock = 0;
+    Truth m_truth;
+    QString m_file;
+    qint64 m_t0 = 0;
+    qint64 m_alarmT = 0, m_ackT = 0;
+
+    // 3 machines at 10 Hz for 60 s of recording time (fake clock), a status change now and then, one machine
+    // leaving and coming back, events, an acknowledgement, a command, a link change.
+    void recordScenario(const QString& path) {
+        Recorder rec;
+        RecorderOptions o;
+        o.path = path;
+        o.keyframeIntervalMs = 5000;
+        o.flushIntervalMs = 5;
+        o.clock = [this] { return m_clock; };
+        m_clock = m_t0 = 1'700'000'000'000;
+        QVERIFY(rec.start(o).isEmpty());
+        LinkStatus up;
+        up.link = QStringLiteral("iso23725:ahs");
+        up.state = LinkState::Up;
+        rec.recordLink(QStringLiteral("iso23725"), up);
+        for (int step = 0; step <= 600; ++step) {
+            m_clock = m_t0 + step * 100;
+            for (int k = 0; k < 3; ++k) {
+                const QString id = QStringLiteral("iso23725:t%1").arg(k);
+                if (k == 2 && step >= 200 && step < 300) {
+                    if (step == 200) {
+                        rec.recordRemoval(id);
+                        m_truth.remove(m_clock, id);
+                    }
+                    continue;
+                }
+                MachineState m = machine(id, 100.0 * k + step * 0.8333, -50.0 + step * 0.01234);
+                m.lastDataMs = m_clock - 7;
+                m.lastMessageMs = k == 1 ? 0 : m_clock - 20;
+                if (k == 1 && step >= 150)
+                    m.stop = StopState::Stopped, m.stopText = QStringLiteral("all-stop");
+                if (k == 0 && (step / 50) % 2 == 1)
+                    m.health = HealthLevel::Warning, m.healthText = QStringLiteral("tyre pressure");
+                rec.recordStates({m});
+                MachineState expected = m;
+                applyPosition(expected, m, m_clock); // the file keeps millimetres
+                if (!m_truth.now.contains(id) || !sameStatus(m_truth.now.value(id), m))
+                    expected = m; // a Full record: exact
+                m_truth.set(m_clock, expected);
+            }
+            if (step == 150) {
+                FleetEvent ev =
+                    makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("iso23725:t1"),
+                              QStringLiteral("stopped"), QStringLiteral("iso23725"));
+                ev.timeMs = m_clock;
+                rec.recordEvent(ev);
+                m_alarmT = m_clock;
+                rec.recordCommand(
+                    QStringLiteral(R"({"origin":"gui","action":"stop_all","ok":false,"targets":[]})"));
+            }
+            if (step == 400) {
+                FleetEvent ev =
+                    makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("iso23725:t1"),
+                              QStringLiteral("stopped"), QStringLiteral("iso23725"));
+                ev.timeMs = m_alarmT;
+                rec.recordAck(alarmKey(ev), QStringLiteral("op"), m_clock);
+                m_ackT = m_clock;
+                up.state = LinkState::Down;
+                rec.recordLink(QStringLiteral("iso23725"), up);
+            }
+            if (step % 20 == 0)
+                rec.flush(); // several commits and keyframes
+        }
+        rec.stop();
+        QCOMPARE(rec.stats().dropped, 0u);
+    }
+
+private slots:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        m_file = m_dir.filePath(QStringLiteral("run.sqlite"));
+        recordScenario(m_file);
+    }
+
+    void readsBackThePictureAtAnyTime() {
+        auto rec = Recording::open(m_file);
+        QVERIFY(rec);
+        QCOMPARE(rec->startMs(), m_t0);
+        QCOMPARE(rec->endMs(), m_t0 + 60000);
+        for (qint64 t : {m_t0 - 1, m_t0, m_t0 + 50, m_t0 + 4999, m_t0 + 5000, m_t0 + 15'050, m_t0 + 20'000,
+                         m_t0 + 25'000, m_t0 + 30'000, m_t0 + 44'444, m_t0 + 60'000}) {
+            QString why;
+            QVERIFY2(samePicture(rec->statesAt(t), m_truth.pictureAt(t), &why),
+                     qPrintable(QStringLiteral("t+%1: %2").arg(t - m_t0).arg(why)));
+        }
+        // Keyframes were written (seek does not decode the whole file).
+        QVERIFY(rec->meta(QStringLiteral("keyframe_interval_ms")).toInt() == 5000);
+    }
+
+    void seekAndPlayLandOnTheSamePicture() {
+        auto rec = Recording::open(m_file);
+        QVERIFY(rec);
+        FleetModel played, sought;
+        ReplayController a(rec.get(), &played), b(rec.get(), &sought);
+        a.seek(a.startMs());
+        // Forward in uneven steps (the play path), then compare with a seek (the keyframe path) at each stop.
+        QString why;
+        for (qint64 t = a.startMs(); t <= a.endMs(); t += 1'337) {
+            a.moveTo(t);
+            b.seek(t);
+            QVERIFY2(samePicture(pictureOf(played), pictureOf(sought), &why), qPrintable(why));
+            QVERIFY2(samePicture(pictureOf(played), m_truth.pictureAt(t), &why), qPrintable(why));
+        }
+        // Backwards, and forwards again, to the same picture.
+        b.seek(m_t0 + 30'000);
+        const auto at30 = pictureOf(sought);
+        b.seek(m_t0 + 55'000);
+        b.seek(m_t0 + 30'000);
+        QVERIFY2(samePicture(pictureOf(sought), at30, &why), qPrintable(why));
+        b.seek(m_t0 + 2'000);
+        b.moveTo(m_t0 + 30'000);
+        QVERIFY2(samePicture(pictureOf(sought), at30, &why), qPrintable(why));
+        // The machine that left is gone in between and back afterwards.
+        b.seek(m_t0 + 25'000);
+        QVERIFY(!sought.machine(QStringLiteral("iso23725:t2")));
+        b.seek(m_t0 + 35'000);
+        QVERIFY(sought.machine(QStringLiteral("iso23725:t2")));
+        QVERIFY(b.lastSeekMs() >= 0);
+    }
+
+    void alarmsAndAcknowledgementsAsOfTheReplayTime() {
+        auto rec = Recording::open(m_file);
+        QVERIFY(rec);
+        FleetModel fleet;
+        ReplayController c(rec.get(), &fleet);
+        c.seek(m_alarmT - 1);
+        QCOMPARE(c.alarms()->rowCount(), 0);
+        c.moveTo(m_alarmT);
+        QCOMPARE(c.alarms()->rowCount(), 1);
+        QCOMPARE(c.alarms()->unacknowledgedCount(), 1);
+        c.moveTo(m_ackT);
+        QCOMPARE(c.alarms()->unacknowledgedCount(), 0);
+        // Back before the acknowledgement: unacknowledged again (a fresh model).
+        QSignalSpy replaced(&c, &ReplayController::alarmsReplaced);
+        c.seek(m_ackT - 100);
+        QCOMPARE(replaced.count(), 1);
+        QCOMPARE(c.alarms()->rowCount(), 1);
+        QCOMPARE(c.alarms()->unacknowledgedCount(), 1);
+        // Links as they were; markers for the alarm and the command (not reaching every target: bad).
+        QCOMPARE(rec->linksAt(m_ackT - 1).value(0).state, LinkState::Up);
+        QCOMPARE(rec->linksAt(m_ackT).value(0).state, LinkState::Down);
+        const auto markers = rec->markers();
+        QCOMPARE(markers.size(), 2);
+        QCOMPARE(markers[0].t, m_alarmT);
+        QVERIFY(markers[1].kind == Marker::Kind::Command && markers[1].bad);
+    }
+
+    void identicalAlarmsAreAcknowledgedOneByOne() {
+        qint64 clock = 1'000'000;
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_dir.filePath(QStringLiteral("twins.sqlite"));
+        o.clock = [&clock] { return clock; };
+        QVERIFY(rec.start(o).isEmpty());
+        FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, QStringLiteral("link lost"));
+        ev.timeMs = 1'000'100;
+        clock = 1'000'100;
+        rec.recordEvent(ev);
+        rec.recordEvent(ev); // the same alarm text twice in one millisecond: one key
+        clock = 1'000'200;
+        rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock);
+        clock = 1'000'300;
+        rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock);
+        rec.stop();
+        auto r = Recording::open(o.path);
+        QVERIFY(r);
+        FleetModel fleet;
+        ReplayController c(r.get(), &fleet);
+        c.seek(1'000'200);
+        QCOMPARE(c.alarms()->rowCount(), 2);
+        QCOMPARE(c.alarms()->unacknowledgedCount(), 1);
+        c.moveTo(1'000'300);
+        QCOMPARE(c.alarms()->unacknowledgedCount(), 0);
+    }
+
+    void playsAtTheChosenSpeedInBothDirections() {
+        auto rec = Recording::open(m_file);
+        QVERIFY(rec);
+        FleetModel fleet;
+        ReplayController c(rec.get(), &fleet);
+        c.seek(m_t0 + 10'000);
+        c.setSpeed(16);
+        c.setTickIntervalMs(10);
+        QElapsedTimer wall;
+        wall.start();
+        c.play();
+        QTRY_VERIFY_WITH_TIMEOUT(c.position() >= m_t0 + 20'000, 20000);
+        // 10 s of recording at 16x: no sooner than 10/16 s of wall time.
+        QVERIFY(wall.elapsed() >= 600);
+        c.pause();
+        c.setReverse(true);
+        const qint64 from = c.position();
+        c.play();
+        QTRY_VERIFY_WITH_TIMEOUT(c.position() <= from - 5'000, 20000);
+        c.pause();
+        QString why;
+        QVERIFY2(samePicture(pictureOf(fleet), m_truth.pictureAt(c.position()), &why), qPrintable(why));
+        c.setSpeed(100);
+        QCOMPARE(c.speed(), 16.0);
+        c.setSpeed(0.01);
+        QCOMPARE(c.speed(), 0.1);
+        c.faster();
+        QCOMPARE(c.speed(), 0.25);
+    }
+
+    void exportsJsonLinesCsvAndSlices() {
+        auto rec = Recording::open(m_file);
+        QVERIFY(rec);
+        const qint64 from = m_t0 + 10'000, to = m_t0 + 12'000;
+        QBuffer csv;
+        csv.open(QIODevice::WriteOnly);
+        QVERIFY(rec->exportCsv(&csv, from, to));
+        const QList<QByteArray> lines = csv.data().split('\n');
+        QVERIFY(lines[0].startsWith("time,t_ms,id,name,protocol,e,n,u"));
+        // 21 steps (both ends included) x 3 machines, a header and the empty tail after the last CRLF.
+        QCOMPARE(lines.size(), 21 * 3 + 2);
+        QBuffer jsonl;
+        jsonl.open(QIODevice::WriteOnly);
+        QVERIFY(rec->exportJsonLines(&jsonl, m_t0 + 14'900, m_t0 + 15'000));
+        int machines = 0, events = 0, commands = 0;
+        for (const QByteArray& l : jsonl.data().split('\n')) {
+            if (l.isEmpty())
+                continue;
+            const QJsonObject o = QJsonDocument::fromJson(l).object();
+            QVERIFY(o.contains(QStringLiteral("t")));
+            const QString type = o.value(QStringLiteral("type")).toString();
+            machines += type == QLatin1String("machine");
+            events += type == QLatin1String("event");
+            commands += type == QLatin1String("command");
+        }
+        QCOMPARE(machines, 6);
+        QCOMPARE(events, 1);
+        QCOMPARE(commands, 1);
+
+        const QString slice = m_dir.filePath(QStringLiteral("slice.sqlite"));
+        QVERIFY(rec->exportSlice(slice, m_t0 + 14'000, m_t0 + 33'000));
+        QString err;
+        QVERIFY(!rec->exportSlice(slice, m_t0, m_t0 + 1, &err)); // never overwrites
+        auto part = Recording::open(slice);
+        QVERIFY(part);
+        QCOMPARE(part->startMs(), m_t0 + 14'000);
+        QString why;
+        for (qint64 t : {m_t0 + 14'000, m_t0 + 21'000, m_t0 + 29'999, m_t0 + 33'000})
+            QVERIFY2(samePicture(part->statesAt(t), rec->statesAt(t), &why), qPrintable(why));
+        QCOMPARE(part->events(0, std::numeric_limits<qint64>::max()).size(), 1);
+    }
+
+    void fullQueueDropsAndCounts() {
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_dir.filePath(QStringLiteral("drops.sqlite"));
+        o.queueCapacity = 10;
+        o.flushIntervalMs = 60000; // the writer sleeps: the queue fills
+        QVERIFY(rec.start(o).isEmpty());
+        QTest::qWait(50); // the writer is waiting
+        for (int i = 0; i < 100; ++i)
+            rec.recordStates({machine(QStringLiteral("jaus:%1").arg(i), i, i)});
+        const auto s = rec.stats();
+        QCOMPARE(s.queued, 10u);
+        QCOMPARE(s.dropped, 90u);
+        rec.flush();
+        QCOMPARE(rec.stats().written, 10u);
+        rec.stop();
+        auto r = Recording::open(o.path);
+        QVERIFY(r);
+        QCOMPARE(r->statesAt(r->endMs()).size(), 10);
+    }
+
+    void refusesWhatIsNotARecording() {
+        QString err;
+        QVERIFY(!Recording::open(m_dir.filePath(QStringLiteral("nothing.sqlite")), &err));
+        QVERIFY(err.contains(QStringLiteral("no such file")));
+        QFile junk(m_dir.filePath(QStringLiteral("junk.sqlite")));
+        QVERIFY(junk.open(QIODevice::WriteOnly));
+        junk.write(QByteArray(4096, 'x'));
+        junk.close();
+        QVERIFY(!Recording::open(junk.fileName(), &err));
+        QVERIFY(err.contains(QStringLiteral("not an OCU recording")));
+        // An existing file is never overwritten by a recorder.
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_file;
+        QVERIFY(!rec.start(o).isEmpty());
+    }
+
+    void hostileChunksEndCleanly() {
+        QByteArray good;
+        appendFull(good, 1, 0, machine(QStringLiteral("jaus:1"), 1, 2));
+        appendPosition(good, 1, 5, 1005, machine(QStringLiteral("jaus:1"), 3, 4));
+        for (int cut = 0; cut < good.size(); ++cut) {
+            QHash<std::uint32_t, MachineState> s;
+            const bool ok = decodeChunk(good.left(cut), 1000, s, std::numeric_limits<qint64>::min(),
+                                        std::numeric_limits<qint64>::max());
+            QVERIFY(cut == 0 || !ok || s.size() <= 1);
+        }
+        QByteArray bad = good;
+        bad[0] = char(99); // unknown record type
+        QHash<std::uint32_t, MachineState> s;
+        QVERIFY(
+            !decodeChunk(bad, 0, s, std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()));
+        QByteArray huge;
+        huge.append(char(1));
+        huge.append(QByteArray(8, '\0'));
+        huge.append(QByteArray(7 + 80 + 16, '\0'));
+        huge.append(QByteArray("\xff\xff\xff\x7f", 4)); // a string "2 GB long"
+        QVERIFY(
+            !decodeChunk(huge, 0, s, std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()));
+    }
+
+    void parsesReplayTimes() {
+        const qint64 start = QDateTime(QDate(2026, 11, 23), QTime(21, 0, 0), Qt::UTC).toMSecsSinceEpoch();
+        QCOMPARE(parseReplayTime(QStringLiteral("30"), start), start + 30000);
+        QCOMPARE(parseReplayTime(QStringLiteral("1.5s"), start), start + 1500);
+        QCOMPARE(parseReplayTime(QStringLiteral("21:00:05.250"), start), start + 5250);
+        QCOMPARE(parseReplayTime(QStringLiteral("2026-11-23T21:01:00Z"), start), start + 60000);
+        QCOMPARE(parseReplayTime(QStringLiteral("soon"), start), qint64(-1));
+        QCOMPARE(parseReplayTime(QStringLiteral("25:00:00"), start), qint64(-1));
+    }
+
+    void retentionDeletesOldAndExcess() {
+        QTemporaryDir d;
+        auto make = [&](const QString& name, int kb, int ageDays) {
+            QFile f(d.filePath(name));
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(kb * 1024, 'r'));
+            f.setFileTime(QDateTime::currentDateTimeUtc().addDays(-ageDays),
+                          QFileDevice::FileModificationTime);
+            f.close();
+        };
+        make(QStringLiteral("ocu-a.sqlite"), 100, 40);
+        make(QStringLiteral("ocu-b.sqlite"), 100, 3);
+        make(QStringLiteral("ocu-c.sqlite"), 100, 2);
+        make(QStringLiteral("ocu-d.sqlite"), 100, 0);  // being written (fresh): kept
+        make(QStringLiteral("other.sqlite"), 100, 90); // not ours: kept
+        const QStringList gone = applyRetention(d.path(), 250 * 1024, 30);
+        QCOMPARE(gone, (QStringList{QStringLiteral("ocu-a.sqlite"), QStringLiteral("ocu-b.sqlite")}));
+        QVERIFY(QFile::exists(d.filePath(QStringLiteral("ocu-c.sqlite"))));
+        QVERIFY(QFile::exists(d.filePath(QStringLiteral("other.sqlite"))));
+    }
+};
+
+QTEST_MAIN(TestRecorder)
+#include "test_recorder.moc"
