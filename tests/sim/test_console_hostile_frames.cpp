@@ -41,6 +41,21 @@ namespace asio = boost::asio;
 
 namespace {
 
+#if defined(__SANITIZE_THREAD__)
+constexpr bool kUnderThreadSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+constexpr bool kUnderThreadSanitizer = true;
+#else
+constexpr bool kUnderThreadSanitizer = false;
+#endif
+#else
+constexpr bool kUnderThreadSanitizer = false;
+#endif
+// Under ThreadSanitizer (scripts/test.sh --tsan: the whole process 5-15 times slower) the bound is not the
+// product's: there the PONG must come at all (within 1 s); the figures are printed either way.
+constexpr double kPongBoundMs = kUnderThreadSanitizer ? 1000 : 100;
+
 constexpr const char* kOsyrisGroup = "239.255.14.6";
 constexpr std::uint8_t kConsole = 200, kRoller = 1, kProbe = 50;
 const std::string kTruckA = "0b3c1d2e-4f50-4a61-8b72-9c83d4e5f6a1";
@@ -312,7 +327,7 @@ private slots:
         auto lastPing = steady_clock::now() - seconds(1);
         auto pingAfter = [&](const std::string& what) {
             std::optional<double> best;
-            for (int attempt = 0; attempt < 3 && !(best && *best < 100); ++attempt) {
+            for (int attempt = 0; attempt < 3 && !(best && *best < kPongBoundMs); ++attempt) {
                 if (attempt > 0)
                     ++repeated;
                 // One PING per requester and Beat is answered (issue 14 §4): a Beat since the last one.
@@ -324,7 +339,7 @@ private slots:
                 if (ms && (!best || *ms < *best))
                     best = ms;
             }
-            QVERIFY2(best && *best < 100,
+            QVERIFY2(best && *best < kPongBoundMs,
                      qPrintable(QString::fromStdString("no PONG within 100 ms after " + what + " (best: ") +
                                 (best ? QString::number(*best, 'f', 1) + " ms)" : QStringLiteral("none)"))));
         };
@@ -374,8 +389,12 @@ private slots:
             ++inputs;
         }
         // The inputs were seen and counted as bad, not silently lost on the way.
-        QVERIFY(isoStack.counters().sumPrefix("rx.") > 0);
-        QVERIFY(jausStack.counters().sumPrefix("rx.rejected.") >= 10);
+        const auto isoRejected = isoStack.counters().sumPrefix("rx.rejected.");
+        const auto jausRejected = jausStack.counters().sumPrefix("rx.rejected.");
+        qInfo("counted as rejected: ISO 23725 %llu, JAUS %llu", qulonglong(isoRejected),
+              qulonglong(jausRejected));
+        QVERIFY(isoRejected >= 8);
+        QVERIFY(jausRejected >= 10);
         std::sort(firstPing.begin(), firstPing.end());
         qInfo("%d malformed inputs (%zu ISO 23725 frames, %zu JUDP datagrams): OSYRIS PING answered after "
               "each; "

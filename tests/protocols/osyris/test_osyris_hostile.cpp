@@ -36,6 +36,18 @@ namespace asio = boost::asio;
 
 namespace {
 
+#if defined(__SANITIZE_THREAD__)
+constexpr bool kUnderThreadSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+constexpr bool kUnderThreadSanitizer = true;
+#else
+constexpr bool kUnderThreadSanitizer = false;
+#endif
+#else
+constexpr bool kUnderThreadSanitizer = false;
+#endif
+
 constexpr const char* kGroup = "239.255.14.5";
 constexpr std::uint8_t kConsole = 200, kHostile = 9, kProbe = 50;
 constexpr std::uint32_t kTrack = 240; // positions per roller
@@ -271,9 +283,12 @@ class TestOsyrisHostile : public QObject {
             // repeated (at most three, one Beat apart: one PING per requester and Beat is answered) and the
             // fastest must be under 100 ms. The first attempts are the figures reported.
             auto lastPing = steady_clock::now() - seconds(1);
+            // Under ThreadSanitizer (scripts/test.sh --tsan: the whole process 5-15 times slower) the bound
+            // is not the product's: there the PONG must come at all (within 1 s), the figures are printed.
+            const double boundMs = kUnderThreadSanitizer ? 1000 : 100;
             auto answered = [&](const std::string& after) {
                 std::optional<double> best;
-                for (int attempt = 0; attempt < 3 && !(best && *best < 100); ++attempt) {
+                for (int attempt = 0; attempt < 3 && !(best && *best < boundMs); ++attempt) {
                     std::this_thread::sleep_until(lastPing + milliseconds(110));
                     const auto ms = probe.ping(kProbe, milliseconds(1000));
                     lastPing = steady_clock::now();
@@ -282,10 +297,10 @@ class TestOsyrisHostile : public QObject {
                     if (ms && (!best || *ms < *best))
                         best = ms;
                 }
-                if (!(best && *best < 100))
+                if (!(best && *best < boundMs))
                     qWarning("no PONG within 100 ms after: %s (best %.1f ms)", after.c_str(),
                              best.value_or(-1));
-                return best && *best < 100;
+                return best && *best < boundMs;
             };
             QVERIFY(answered("nothing yet"));
             for (const auto& [what, datagram] : hostileDatagrams()) {
@@ -358,7 +373,8 @@ private slots:
         QVERIFY(attacked.limited >= 1);     // the floods
         // Generous bounds (a loaded build machine); the measured figures are printed above.
         // Each datagram's PONG within 100 ms is asserted above (the fastest of at most three PINGs).
-        QVERIFY2(attacked.maxHandlerMs < 500, "no io-thread handler of 0.5 s or more");
+        if (!kUnderThreadSanitizer) // a wall-clock figure: meaningless 5-15 times slowed down, printed only
+            QVERIFY2(attacked.maxHandlerMs < 500, "no io-thread handler of 0.5 s or more");
     }
 };
 
