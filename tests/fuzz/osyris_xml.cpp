@@ -39,6 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Not §7 items: the base's values stay.
     OCU_FUZZ_CHECK(c.stationIndex == base.stationIndex && c.sqlitePath == base.sqlitePath &&
                    c.machineNames == base.machineNames);
-    OCU_FUZZ_CHECK(b->beatMs == c.beatMs && b->port == c.port && b->group == c.group && b->tailPos == c.tailPos);
+    OCU_FUZZ_CHECK(b->beatMs == c.beatMs && b->port == c.port && b->group == c.group &&
+                   b->tailPos == c.tailPos);
     return 0;
 }
