@@ -13,13 +13,13 @@ cd "$here"
 corpus_root="$here/tests/fuzz/corpus"
 build="${OCU_FUZZ_BUILD:-$here/build-fuzz}"
 out="${OCU_FUZZ_OUT:-/tmp/ocu-fuzz}"
-harnesses_all=(judp_datagram jtcp_stream jaus_messages osyris_codec osyris_station iso_fast_path iso_dom_path
-               iso_fms_session osm_map site_config headless_commands)
+harnesses_all=(judp_datagram jtcp_stream jaus_messages osyris_codec osyris_station osyris_xml iso_fast_path
+               iso_dom_path iso_fms_session osm_map site_config headless_commands)
 
 seed_text() {
   # Text corpora from the tests' data; binary ones from fuzz_make_seeds (tests/fuzz/MakeSeeds.cpp).
   local data="$here/tests/protocols/iso23725/data" d n line
-  for h in iso_fast_path iso_dom_path iso_fms_session osm_map site_config headless_commands; do
+  for h in iso_fast_path iso_dom_path iso_fms_session osm_map site_config headless_commands osyris_xml; do
     mkdir -p "$corpus_root/$h"
   done
   n=0
@@ -42,6 +42,13 @@ seed_text() {
   printf '%s\n' '{"cmd":"stop","id":"osyris:7"}' '{"cmd":"stop","id":"nobody"}' '{"command":"list","req":"x"}' > "$d/stop_one.jsonl"
   printf '%s\n' '{"cmd":"request_control","id":"jaus:126"}' '{"cmd":"drive","id":"jaus:126","mode":"velocity","linear":0.5,"angular":0.1,"duration":0.2}' '{"cmd":"release_control","id":"jaus:126"}' > "$d/control_drive.jsonl"
   printf '%s\n' '{"cmd":"counters"}' 'not json' '[1,2]' '{"cmd":42}' '{}' > "$d/odd.jsonl"
+  # The OSYRIS §7 XML configuration: the forms tests/protocols/osyris/test_osyris_store.cpp imports.
+  d="$corpus_root/osyris_xml"
+  printf '%s' '<Multi><MultiAddr>233.1.1.1:50002</MultiAddr><Beat>200</Beat><MinLen>100</MinLen><MaxLen>1000</MaxLen><SendPeriod>4000</SendPeriod><TailPos>50</TailPos><TTL>10</TTL><Active>7</Active><MaxRange>150.5</MaxRange></Multi>' > "$d/elements.xml"
+  printf '%s' '<config MultiAddr="192.168.1.255" Port="50003" Beat="100"/>' > "$d/attributes.xml"
+  printf '%s' '<Multi><MultiAddr>233.1.1.1</MultiAddr><MultiPort>50009</MultiPort><TTL>5</TTL></Multi>' > "$d/port_element.xml"
+  printf '%s' '<?xml version="1.0"?><osyris><net><multiaddr value="10.0.0.7"/><beat value="50"/></net><Active>15</Active></osyris>' > "$d/nested_value.xml"
+  printf '%s' '<Multi><Beat>fast</Beat><MinLen>2000</MinLen><MaxLen>100</MaxLen></Multi>' > "$d/bad_values.xml"
 }
 
 if [ "${1:-}" = "--seed" ]; then
@@ -74,7 +81,9 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" \
     "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" "${launcher[@]}"
 fi
-cmake --build "$build" --target fuzz_all
+targets=()
+for h in "${harnesses[@]}"; do targets+=("fuzz_$h"); done
+cmake --build "$build" --target "${targets[@]}" # only the harnesses asked for
 
 mkdir -p "$out"
 summary="$out/summary.txt"

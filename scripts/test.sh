@@ -32,8 +32,14 @@ if [ "${1:-}" = "--tsan" ]; then
   # bridges). Debian's Qt is not built with TSan: scripts/tsan.supp names the few Qt internals whose
   # synchronisation TSan cannot see (each entry says why); nothing of ours is suppressed.
   export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$root/scripts/tsan.supp"
-  sanitized_run "$root/build-tsan" thread \
-    -R "^test_(common|jaus_stack|jaus_foreign|iso_e2e|osyris_stack|osyris_site|iso_bridge|iso_bridge_positions|osyris_pass_count_layer|jaus_bridge_threads|iso_bridge_threads|osyris_bridge_threads)$"
+  # The list: every *_stack, *_transport and *bridge* test, and the end-to-end tests that start io threads
+  # (simulators, foreign peers, the OSYRIS hostile station, the three stacks under malformed frames). Left
+  # out: test_iso_dispatch, which links the whole application (widgets) for the same IsoStack/IsoBridge
+  # threads that the ISO bridge tests run.
+  sanitized_run "$root/build-tsan" thread -R "^test_(common|jaus_transport|jaus_stack|jaus_foreign|\
+iso_e2e|iso_e2e_tls|iso_foreign_dispatch|iso_ws_urgent|sim_ahs_services|\
+osyris_stack|osyris_hostile|osyris_snapshot|osyris_site|osyris_pass_count_layer|console_hostile_frames|\
+iso_bridge|iso_bridge_positions|jaus_bridge_threads|iso_bridge_threads|osyris_bridge_threads|jaus_bridge_foreign)$"
 fi
 build="${OCU_BUILD_DIR:-$root/build}"
 OCU_BUILD_DIR="$build" "$root/scripts/build.sh"

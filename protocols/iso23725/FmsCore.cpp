@@ -339,6 +339,21 @@ void FmsCore::handle(const Envelope& env, bool mapChannel) {
                 } else {
                     if (!eq)
                         return; // checked by the codec for per-machine members
+                    if (!m_machines.count(*eq)) {
+                        std::size_t outside = 0;
+                        for (const auto& [id, known] : m_machines)
+                            outside += known.inAhsFleet ? 0 : 1;
+                        if (outside >= kMaxMachinesOutsideFleet) {
+                            m_counters.add("rx.rejected.machine_cap");
+                            peerWarning("machine_cap",
+                                        std::string(memberName(Body(b))) + " from " + m_link.name +
+                                            " for machine " + *eq + " ignored: already " +
+                                            std::to_string(kMaxMachinesOutsideFleet) +
+                                            " machines not in its fleet definition (counted in "
+                                            "rx.rejected.machine_cap)");
+                            return;
+                        }
+                    }
                     auto& m = machine(*eq);
                     if (!m.inAhsFleet && !m.stateKnown) {
                         m_counters.add("rx.unknown_machine");

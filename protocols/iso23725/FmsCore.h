@@ -116,6 +116,14 @@ private:
         bool any = false;
     };
     std::map<std::string, PeerWarning> m_peerWarnings; // bounded: a handful of fixed causes
+public:
+    // Machines not in the AHS's fleet definition that get a snapshot, per link (issue 14 §3): beyond this a
+    // frame about yet another unknown machine is counted (rx.rejected.machine_cap), warned about once a
+    // minute and dropped before anything is allocated for it. Without it every GUID an AHS sent became a
+    // machine row for good.
+    static constexpr std::size_t kMaxMachinesOutsideFleet = 64;
+
+private:
     bool upOrRefuse(const char* what);
     bool refuse(const std::string& what, const std::string& reason); // counter, reason, event; false
     // The routes of an assignment request (see requestAssignment); an error when one cannot be driven.

@@ -1,5 +1,6 @@
 #include "protocols/jaus/JudpCodec.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ocu::jaus {
@@ -148,10 +149,12 @@ Result<std::optional<JudpMessage>> Reassembler::feed(JudpMessage msg, TimePoint 
     case DataFlags::First: {
         if (msg.payload.size() < 2)
             return makeError("fragment_sequence: first fragment without a message ID");
-        if (m_sets.size() >= m_opt.maxSets)
-            m_sets.erase(m_sets.begin());
         std::uint16_t next = std::uint16_t(msg.header.sequence + 1);
+        if (auto old = m_sets.find({src, next}); old != m_sets.end())
+            erase(old); // the same chain started again: the new first fragment replaces it
+        makeRoomFor(src);
         m_sets[{src, next}] = Set{std::move(msg), next, now};
+        ++m_perSource[src];
         return std::optional<JudpMessage>{};
     }
     case DataFlags::Middle:
@@ -165,7 +168,7 @@ Result<std::optional<JudpMessage>> Reassembler::feed(JudpMessage msg, TimePoint 
             " fragment seq " + std::to_string(msg.header.sequence) + " from " + msg.header.source.toString() +
             " has no preceding fragment");
     Set set = std::move(it->second);
-    m_sets.erase(it);
+    erase(it);
     ByteSpan part(msg.payload);
     // JAUS++ repeats the message ID in every fragment (jaus-wire.md §2.4): strip it when it matches.
     if (part.size() >= 2 && part[0] == set.first.payload[0] && part[1] == set.first.payload[1])
@@ -180,15 +183,71 @@ Result<std::optional<JudpMessage>> Reassembler::feed(JudpMessage msg, TimePoint 
     }
     std::uint16_t next = std::uint16_t(msg.header.sequence + 1);
     set.nextSeq = next;
+    if (auto old = m_sets.find({src, next}); old != m_sets.end())
+        erase(old); // another chain of this source already expects that number: the older loses
     m_sets[{src, next}] = std::move(set);
+    ++m_perSource[src];
     return std::optional<JudpMessage>{};
+}
+
+std::size_t Reassembler::pending(std::uint32_t source) const {
+    auto it = m_perSource.find(source);
+    return it == m_perSource.end() ? 0 : it->second;
+}
+
+void Reassembler::erase(std::map<Key, Set>::iterator it) {
+    auto n = m_perSource.find(it->first.first);
+    if (n != m_perSource.end() && --n->second == 0)
+        m_perSource.erase(n);
+    m_sets.erase(it);
+}
+
+void Reassembler::evictOldestOf(std::uint32_t source) {
+    // A source's sets are contiguous in the map (keyed by source first); at most maxSetsPerSource of them.
+    auto oldest = m_sets.end();
+    for (auto it = m_sets.lower_bound({source, 0}); it != m_sets.end() && it->first.first == source; ++it)
+        if (oldest == m_sets.end() || it->second.started < oldest->second.started)
+            oldest = it;
+    if (oldest == m_sets.end())
+        return;
+    erase(oldest);
+    ++m_evicted;
+}
+
+void Reassembler::makeRoomFor(std::uint32_t source) {
+    const std::size_t perSource = std::max<std::size_t>(1, m_opt.maxSetsPerSource);
+    while (pending(source) >= perSource)
+        evictOldestOf(source); // a source at its own bound loses its own oldest set
+    while (!m_sets.empty() && m_sets.size() >= std::max<std::size_t>(1, m_opt.maxSets)) {
+        // Fair eviction: the source holding the most sets loses its oldest; on a tie the newcomer's own
+        // sets go first, so nobody can push out another source's only set by holding as many.
+        std::uint32_t victim = source;
+        std::size_t most = pending(source);
+        for (const auto& [s, n] : m_perSource)
+            if (n > most) {
+                victim = s;
+                most = n;
+            }
+        if (most == 0) { // the newcomer holds nothing: the oldest set of the sources holding the most
+            for (const auto& [s, n] : m_perSource)
+                most = std::max(most, n);
+            auto oldest = m_sets.end();
+            for (auto it = m_sets.begin(); it != m_sets.end(); ++it)
+                if (pending(it->first.first) == most &&
+                    (oldest == m_sets.end() || it->second.started < oldest->second.started))
+                    oldest = it;
+            victim = oldest->first.first;
+        }
+        evictOldestOf(victim);
+    }
 }
 
 std::size_t Reassembler::expire(TimePoint now) {
     std::size_t n = 0;
     for (auto it = m_sets.begin(); it != m_sets.end();) {
         if (now - it->second.started > m_opt.staleAfter) {
-            it = m_sets.erase(it);
+            auto stale = it++;
+            erase(stale);
             ++n;
         } else {
             ++it;

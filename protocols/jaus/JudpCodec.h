@@ -103,12 +103,17 @@ std::vector<JudpMessage> fragmentPayload(const JudpHeader& header, ByteSpan payl
 
 // Reassembles First/Middle/Last sets by (source, sequence chain). Accepts the JAUS++ variant that repeats
 // the message ID in every fragment. Stale sets are dropped after a timeout (JTS OldMsgTimeout = 3 s).
+// Bounded per peer and in total (issue 14 §3, docs/reliability.md "Bounds"): a source holds at most
+// maxSetsPerSource partial sets (a new one evicts that source's own oldest), and when all sources together
+// hold maxSets, a new set evicts the oldest set of the source holding the most (ties: the newcomer's own
+// first, then the oldest set), so a flooding peer loses its own sets before anybody else's.
 class Reassembler {
 public:
     struct Options {
         Duration staleAfter = std::chrono::seconds(3);
-        std::size_t maxSets = 50;
-        std::size_t maxBytes = 1 << 20;
+        std::size_t maxSets = 50;         // partial sets of all sources together
+        std::size_t maxSetsPerSource = 8; // partial sets of one source (JAUS ID)
+        std::size_t maxBytes = 1 << 20;   // one reassembled message
     };
     Reassembler() : Reassembler(Options{}) {}
     explicit Reassembler(Options o) : m_opt(o) {}
@@ -119,6 +124,9 @@ public:
     // Drops sets older than staleAfter; returns how many were dropped.
     std::size_t expire(TimePoint now);
     std::size_t pending() const { return m_sets.size(); }
+    std::size_t pending(std::uint32_t source) const;
+    // Partial sets dropped to make room for a new one (the per-source or the total bound).
+    std::uint64_t evicted() const { return m_evicted; }
 
 private:
     struct Set {
@@ -126,8 +134,14 @@ private:
         std::uint16_t nextSeq = 0;
         TimePoint started;
     };
+    using Key = std::pair<std::uint32_t, std::uint16_t>; // (source, next expected sequence)
+    void makeRoomFor(std::uint32_t source);
+    void evictOldestOf(std::uint32_t source);
+    void erase(std::map<Key, Set>::iterator it);
     Options m_opt;
-    std::map<std::pair<std::uint32_t, std::uint16_t>, Set> m_sets; // (source, next expected sequence)
+    std::map<Key, Set> m_sets;
+    std::map<std::uint32_t, std::size_t> m_perSource; // sets per source (no entry for none)
+    std::uint64_t m_evicted = 0;
 };
 
 // JTCP: the 0x02 version byte once per stream, then messages back to back (jaus-wire.md §2.1).

@@ -251,8 +251,14 @@ void JudpTransport::onDatagram(ByteSpan data, const Endpoint& from) {
     for (auto& m : d->messages) {
         const JudpHeader& h = m.header;
         // Learn where this JAUS ID lives (AEP-4818 §4.7.2: dynamic address list from every message).
-        if (!h.source.isBroadcast() && h.source.subsystem != 0)
-            m_learned[h.source.value()] = from;
+        if (!h.source.isBroadcast() && h.source.subsystem != 0) {
+            if (auto known = m_learned.find(h.source.value()); known != m_learned.end())
+                known->second = from;
+            else if (m_learned.size() < kMaxLearnedAddresses)
+                m_learned.emplace(h.source.value(), from);
+            else
+                m_counters.add("rx.limited.learned_address");
+        }
         if (h.ackNak == AckNak::Ack || h.ackNak == AckNak::Nak) {
             m_counters.add(h.ackNak == AckNak::Ack ? "rx.ack" : "rx.nak");
             continue;
@@ -269,7 +275,10 @@ void JudpTransport::onDatagram(ByteSpan data, const Endpoint& from) {
 
 void JudpTransport::deliver(JudpMessage m, TimePoint now,
                             const std::function<void(const std::string&)>& reject) {
+    const std::uint64_t evictedBefore = m_reassembler.evicted();
     auto r = m_reassembler.feed(std::move(m), now);
+    if (m_reassembler.evicted() != evictedBefore) // a partial set made room (per-peer or total bound)
+        m_counters.add("rx.rejected.fragment_evicted", m_reassembler.evicted() - evictedBefore);
     if (!r) {
         reject(r.error());
         return;

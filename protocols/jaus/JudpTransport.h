@@ -78,6 +78,12 @@ public:
     // thread instead). Sequence numbers of datagrams not taken are spent, as for a failed send().
     std::string sendPlanned(const JausId& src, const PlannedDatagram& planned);
     std::uint16_t localPort() const;
+    // JAUS IDs whose address was learned from their traffic (AEP-4818 §4.7.2), at most kMaxLearnedAddresses
+    // (issue 14 §3): an ID first heard when the table is full is not learned (rx.limited.learned_address; it
+    // is still reached by the static table, JTCP or multicast), so a peer inventing source IDs can neither
+    // grow the table nor push out the addresses of the vehicles already known. Io thread.
+    static constexpr std::size_t kMaxLearnedAddresses = 1024;
+    std::size_t learnedAddresses() const { return m_learned.size(); }
     std::uint16_t localTcpPort() const; // JTCP server port, 0 when not listening
     // JTCP bytes still queued or being written (stop() waits for the releases to leave).
     std::size_t pendingTcpWrites() const;

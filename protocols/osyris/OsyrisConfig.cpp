@@ -100,7 +100,9 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
 
 namespace {
 
-// Finds a §7 item as a child element or attribute, case-insensitively, anywhere under the root.
+// Finds a §7 item as a child element or attribute, case-insensitively, anywhere under the root (depth first,
+// an element's attributes before its children). Iterative: a file nested a million levels deep must not
+// exhaust the stack.
 std::optional<std::string> findItem(const pugi::xml_node& root, const char* name) {
     auto eq = [&](const char* a) {
         std::string x(a), y(name);
@@ -109,32 +111,36 @@ std::optional<std::string> findItem(const pugi::xml_node& root, const char* name
                           std::tolower(static_cast<unsigned char>(q));
                });
     };
-    std::optional<std::string> found;
-    auto visit = [&](auto&& self, const pugi::xml_node& n) -> void {
-        if (found)
-            return;
+    auto attribute = [&](const pugi::xml_node& n) -> std::optional<std::string> {
         for (auto a : n.attributes())
-            if (eq(a.name())) {
-                found = a.value();
-                return;
-            }
-        for (auto ch : n.children()) {
-            if (ch.type() != pugi::node_element)
-                continue;
-            if (eq(ch.name())) {
-                if (auto v = ch.attribute("value"))
-                    found = v.value();
-                else
-                    found = ch.text().get();
-                return;
-            }
-            self(self, ch);
-            if (found)
-                return;
-        }
+            if (eq(a.name()))
+                return std::string(a.value());
+        return std::nullopt;
     };
-    visit(visit, root);
-    return found;
+    if (auto a = attribute(root))
+        return a;
+    pugi::xml_node n = root.first_child();
+    while (n && n != root) {
+        if (n.type() == pugi::node_element) {
+            if (eq(n.name())) {
+                if (auto v = n.attribute("value"))
+                    return std::string(v.value());
+                return std::string(n.text().get());
+            }
+            if (auto a = attribute(n))
+                return a;
+            if (n.first_child()) {
+                n = n.first_child();
+                continue;
+            }
+        }
+        while (n != root && !n.next_sibling())
+            n = n.parent();
+        if (n == root)
+            break;
+        n = n.next_sibling();
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -152,7 +158,9 @@ Result<OsyrisConfig> importOsyrisXml(const std::string& text, OsyrisConfig o) {
             return std::nullopt;
         char* end = nullptr;
         double d = std::strtod(v->c_str(), &end);
-        if (end == v->c_str() || *end != '\0' || d < min || d > max) {
+        // !(in range) rather than (below || above): "nan" parses and compares false both ways, and a NaN
+        // cast to int is undefined behaviour (fuzz finding, osyris_xml).
+        if (end == v->c_str() || *end != '\0' || !(d >= min && d <= max)) {
             errors.push_back(std::string(name) + ": '" + *v + "' is not a number in [" + std::to_string(min) +
                              ", " + std::to_string(max) + "]");
             return std::nullopt;

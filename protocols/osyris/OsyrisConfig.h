@@ -61,6 +61,12 @@ struct OsyrisConfig {
     int maxRetxPerBeat = 200;         // positions re-sent per beat
     int maxDatagramsPerBeat = 16;
     int answerHoldBeats = 3; // a slot re-sent this recently is not re-sent for another NAK
+    // Ribbon store bounds (issue 14 §3, docs/reliability.md "Bounds"): positions of another station beyond
+    // these are refused (rx.rejected.ribbon_full / store_full, a warning a minute) and their gaps are not
+    // NAKed; nothing held is ever dropped (it is in the pass counts already). 2^22 slots are 116 h of one
+    // machine at 10 Hz, the widest range an ALIVE may announce; 2^24 = four such ribbons.
+    std::uint64_t maxRibbonSlots = std::uint64_t(1) << 22;
+    std::uint64_t maxStoreSlots = std::uint64_t(1) << 24;
     // Pass-count snapshots for the GUI: at most one per this many ms (and per Beat), only after a change.
     int passCountPublishMs = 100;
 };

@@ -110,6 +110,10 @@ void StationCore::reject(const std::string& reason, const std::string& text) {
                                  "; at most one such warning per minute)");
 }
 
+bool StationCore::storeFull(std::uint8_t owner) const {
+    return m_store.count(owner) >= m_cfg.maxRibbonSlots || m_store.totalCount() >= m_cfg.maxStoreSlots;
+}
+
 bool StationCore::admitted(std::uint8_t station) {
     if (station >= kIdxNobody)
         return false;
@@ -431,6 +435,17 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
         reject("station_cap", "position of station " + std::to_string(owner) + " from station " +
                                   std::to_string(h.who) + ": already " + std::to_string(kMaxUnknownStations) +
                                   " stations not in the configuration");
+        return;
+    }
+    if (owner != idx() && storeFull(owner) && !m_store.has(owner, p.slot)) {
+        // Bounded store (issue 14 §3): refused, never room made by dropping a held slot (it is counted).
+        const bool ribbon = m_store.count(owner) >= m_cfg.maxRibbonSlots;
+        reject(ribbon ? "ribbon_full" : "store_full",
+               "position of slot " + std::to_string(p.slot) + " of station " + std::to_string(owner) +
+                   " refused: " +
+                   (ribbon ? "its ribbon holds " + std::to_string(m_cfg.maxRibbonSlots) + " positions"
+                           : "the store holds " + std::to_string(m_cfg.maxStoreSlots) + " positions") +
+                   " (the bound); what is held stays and its gaps are no longer asked for");
         return;
     }
     if (h.who == owner)

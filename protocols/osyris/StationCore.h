@@ -189,6 +189,8 @@ private:
     void reject(const std::string& reason, const std::string& text);
     // Per-station state exists only for admitted stations (kMaxUnknownStations).
     bool admitted(std::uint8_t station);
+    // The ribbon of `owner` or the whole store is at its bound (OsyrisConfig::maxRibbonSlots/maxStoreSlots).
+    bool storeFull(std::uint8_t owner) const;
     // Takes bytes from the current received datagram's answer budget; false (and counted) when over it.
     bool charge(std::size_t bytes);
     std::size_t unitSize(const PositionRecord& rec) const;

@@ -59,6 +59,10 @@ void StationCore::processWishes(TimePoint now) {
     for (auto& [owner, rs] : m_ribbons) {
         if (owner == idx() || !rs.knownMax)
             continue;
+        if (storeFull(owner)) { // its positions would be refused (issue 14 §3): asking would loop forever
+            rs.holds.clear();
+            continue;
+        }
         auto held = m_store.held(owner);
         auto gaps = held.gaps(rs.knownMin.value_or(0), *rs.knownMax);
         // Rebuild the holds over the current gaps; a new gap waits lossWaitBeats before it may be asked for.

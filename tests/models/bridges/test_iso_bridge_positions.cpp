@@ -86,18 +86,28 @@ private slots:
         QVERIFY2(handovers * 2 < positions,
                  qPrintable(QStringLiteral("%1 hand-overs for %2 positions").arg(handovers).arg(positions)));
 
-        int moved = 0;
+        // The trucks move: waited for, not assumed to have happened within the 2 s above (under
+        // ThreadSanitizer on a loaded machine the simulated trucks, on the same slowed process, had not yet
+        // moved 1 m when the window closed).
+        auto moved = [&] {
+            s.bridge->flushPending();
+            int n = 0;
+            for (int r = 0; r < s.model.rowCount(); ++r) {
+                const MachineState& m = s.model.machineAt(r);
+                const QPointF was = before.value(m.id);
+                n += std::hypot(m.e - was.x(), m.n - was.y()) > 1.0 ? 1 : 0;
+            }
+            return n;
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(moved() >= kTrucks / 2, qPrintable(QString::number(moved())), 60000);
         for (int r = 0; r < s.model.rowCount(); ++r) {
             const MachineState& m = s.model.machineAt(r);
-            const QPointF was = before.value(m.id);
-            moved += std::hypot(m.e - was.x(), m.n - was.y()) > 1.0 ? 1 : 0;
             // What slower members gave the row survives the position updates.
             QVERIFY2(!m.workText.isEmpty(), qPrintable(m.id));
             QCOMPARE(m.modeText, QStringLiteral("Autonomous"));
             QCOMPARE(m.link, LinkState::Up);
             QVERIFY(m.lastDataMs > 0);
         }
-        QVERIFY2(moved >= kTrucks / 2, qPrintable(QString::number(moved)));
     }
 
     // All-stop re-derives every row (stop shown); the positions that follow (trucks braking to a standstill)
@@ -107,13 +117,15 @@ private slots:
         QVERIFY(s.started);
         QTRY_COMPARE_WITH_TIMEOUT(s.rowsWith([](const MachineState& m) { return m.hasPosition; }), kTrucks,
                                   20000);
-        QTRY_VERIFY_WITH_TIMEOUT(s.rowsWith([](const MachineState& m) { return m.speed > 1.0; }) > 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(s.rowsWith([](const MachineState& m) { return m.speed > 1.0; }) > 0, 60000);
         QVERIFY(ocu::testing::bridgeResult([&](auto d) { s.bridge->stopAll(d); }).ok);
+        // Generous: 100 trucks at 10 Hz through one process under ThreadSanitizer on a loaded machine needed
+        // 18.7 s where an idle plain build needs well under one.
         QTRY_COMPARE_WITH_TIMEOUT(
-            s.rowsWith([](const MachineState& m) { return m.stop == StopState::Stopped; }), kTrucks, 10000);
+            s.rowsWith([](const MachineState& m) { return m.stop == StopState::Stopped; }), kTrucks, 60000);
         // Trucks brake at up to 3 m/s² from at most 12 m/s: standing within seconds, reported by positions.
         QTRY_COMPARE_WITH_TIMEOUT(s.rowsWith([](const MachineState& m) { return m.speed == 0.0; }), kTrucks,
-                                  15000);
+                                  60000);
         QCOMPARE(s.rowsWith([](const MachineState& m) { return m.stop == StopState::Stopped; }), kTrucks);
         QCOMPARE(s.rowsWith([](const MachineState& m) { return m.modeText == QLatin1String("AllStop"); }),
                  kTrucks);

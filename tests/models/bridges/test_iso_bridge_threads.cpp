@@ -81,6 +81,13 @@ private slots:
         int seq = 0;
         ahs.sendRaw(position(kMachineA, origin.lat, origin.lon, ++seq));
         QTRY_VERIFY_WITH_TIMEOUT(seen.latest(idOf(kMachineA)).has_value(), 20000);
+        // Machine B is known before the burst: the first thing heard of a machine is a whole change, which
+        // FmsCore delivers at once, while a known machine's positions wait for the next position batch
+        // (kPositionBatchInterval). With B unknown, B's first position could overtake A's last positions
+        // still waiting for their batch, so "B pending" would not mean "every position of A handed over"
+        // (seen under ThreadSanitizer, where a batch is flushed in the middle of the burst).
+        ahs.sendRaw(position(kMachineB, origin.lat, origin.lon + 1e-4, ++seq));
+        QTRY_VERIFY_WITH_TIMEOUT(seen.latest(idOf(kMachineB)).has_value(), 20000);
 
         // Queued delivery: the positions arrive on the stack's io thread, the signals are emitted on the
         // bridge's (this GUI) thread, and a receiver living on another thread is called on that thread.
@@ -90,7 +97,10 @@ private slots:
         QCOMPARE(worker.probe().ranOn.load(), worker.thread());
 
         // Coalescing: while the GUI thread is busy, 50 positions of machine A arrive, then one of machine B.
-        // They come in order on one WebSocket, so when B is pending every position of A has been handled.
+        // They come in order on one WebSocket and both machines are known, so their positions leave FmsCore
+        // in arrival order (position batches): when B is pending every position of A has been handed over.
+        // The burst is sent in two halves with a position batch of A handed over in between, so a batch
+        // flushed in the middle of the burst (the case that made this test flaky) is always exercised.
         QTest::qWait(200);
         QCoreApplication::processEvents();
         seen.clear();
@@ -100,8 +110,10 @@ private slots:
         for (int i = 1; i <= n; ++i) {
             lastLat = origin.lat + i * 1e-5;
             ahs.sendRaw(position(kMachineA, lastLat, origin.lon, ++seq));
+            if (i == n / 2)
+                QVERIFY(waitBusy([&] { return bridge.pendingMachineUpdates() == 1; }));
         }
-        ahs.sendRaw(position(kMachineB, origin.lat, origin.lon + 1e-4, ++seq));
+        ahs.sendRaw(position(kMachineB, origin.lat + 1e-5, origin.lon + 1e-4, ++seq));
         QVERIFY(waitBusy([&] { return bridge.pendingMachineUpdates() == 2; }));
         const auto burst = bridge.machineStats();
         QCOMPARE(burst.drains, before.drains); // nothing was delivered while the GUI thread was busy

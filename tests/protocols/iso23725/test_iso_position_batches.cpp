@@ -32,9 +32,14 @@ struct BatchListener : IsoListener {
     std::vector<std::string> calls; // "changed:<id>" or "batch:<n>"
     std::vector<std::vector<Position>> batches;
     std::vector<IsoMachineSnapshot> changed;
+    std::vector<std::string> warnings;
     void onMachineChanged(const IsoMachineSnapshot& m) override {
         calls.push_back("changed:" + m.equipmentId);
         changed.push_back(m);
+    }
+    void onEvent(IsoSeverity s, const std::string& text) override {
+        if (s == IsoSeverity::Warning)
+            warnings.push_back(text);
     }
     void onMachinePositions(const std::string& link,
                             const std::vector<const IsoMachineSnapshot*>& machines) override {
@@ -189,6 +194,34 @@ private slots:
         QVERIFY(!c.session.positionsPending());
         c.session.flushPositions();
         QCOMPARE(c.listener.calls.size(), std::size_t(2));
+    }
+
+    // Issue 14 §3: every GUID an AHS named became a machine for good; machines outside the fleet definition
+    // are capped per link, the rest is counted, warned about once a minute and allocates nothing.
+    void machinesOutsideTheFleetAreCapped() {
+        Core<BatchListener> c;
+        const std::size_t cap = FmsCore::kMaxMachinesOutsideFleet;
+        auto guid = [](int i) {
+            char id[40];
+            std::snprintf(id, sizeof id, "00000000-0000-4000-8000-%012d", i);
+            return Guid(id);
+        };
+        for (int i = 0; i < int(cap) + 36; ++i)
+            c.session.text(position(guid(i), -23.1, kT0 + i));
+        QCOMPARE(c.session.machines().size(), 2 + cap);
+        QCOMPARE(c.counters.get("rx.rejected.machine_cap"), std::uint64_t(36));
+        const auto capWarnings =
+            std::count_if(c.listener.warnings.begin(), c.listener.warnings.end(), [](const std::string& w) {
+                return w.find("rx.rejected.machine_cap") != std::string::npos;
+            });
+        QCOMPARE(capWarnings, 1);
+        // The admitted ones and the fleet's machines keep working.
+        c.listener.calls.clear();
+        c.session.text(position(guid(0), -23.2, kT0 + 1000));
+        c.session.text(position(kTruck1, -23.3, kT0 + 1000));
+        c.session.flushPositions();
+        QCOMPARE(c.listener.calls, (std::vector<std::string>{"batch:2"}));
+        QCOMPARE(c.session.machines().at(kTruck1).position->latitude, -23.3);
     }
 
     // A listener that takes no batches sees each moved machine through onMachineChanged, at the flush.

@@ -644,6 +644,61 @@ private slots:
         QVERIFY(r.ok() && r->has_value());
         QCOMPARE((*r)->payload, (Bytes{0x03, 0x4B, 1, 2, 3, 4, 5}));
     }
+    // Issue 14 §3: partial sets are bounded per peer and in total, and a flooding peer loses its own first:
+    // however many first fragments one peer sends, another peer's partial message still completes.
+    void floodingPeerCannotEvictAnotherPeersSet() {
+        auto frag = [](JausId src, std::uint16_t seq, DataFlags flags, Bytes payload) {
+            JudpMessage m{header(JausId{126, 1, 1}, src, seq), std::move(payload)};
+            m.header.dataFlags = flags;
+            return m;
+        };
+        const JausId victim{2, 1, 1}, flooder{66, 1, 1};
+        Reassembler::Options opt; // defaults: 50 in total, 8 per source
+        Reassembler re(opt);
+        TimePoint t{};
+        QVERIFY(re.feed(frag(victim, 100, DataFlags::First, Bytes{0x03, 0x4B, 1}), t).ok());
+        for (int i = 0; i < 1000; ++i) { // a first fragment every millisecond, each a new chain
+            t += std::chrono::milliseconds(1);
+            QVERIFY(
+                re.feed(frag(flooder, std::uint16_t(i * 3), DataFlags::First, Bytes{0x03, 0x4B, 9}), t).ok());
+            QVERIFY(re.pending(flooder.value()) <= opt.maxSetsPerSource);
+            QVERIFY(re.pending() <= opt.maxSets);
+        }
+        QCOMPARE(re.pending(flooder.value()), opt.maxSetsPerSource);
+        QCOMPARE(re.pending(victim.value()), std::size_t(1));
+        QCOMPARE(re.evicted(), std::uint64_t(1000 - opt.maxSetsPerSource));
+        auto done = re.feed(frag(victim, 101, DataFlags::Last, Bytes{2}), t);
+        QVERIFY(done.ok() && done->has_value());
+        QCOMPARE((*done)->payload, (Bytes{0x03, 0x4B, 1, 2}));
+
+        // The total bound: 49 peers with one set each and a flooder; the flooder keeps at most what is left
+        // and never evicts a peer's set; a new peer's set evicts the flooder's oldest, not anybody else's.
+        Reassembler all(opt);
+        t = TimePoint{};
+        for (std::uint8_t p = 1; p <= 45; ++p)
+            QVERIFY(
+                all.feed(frag(JausId{std::uint16_t(p), 1, 1}, 10, DataFlags::First, Bytes{0x03, 0x4B, p}), t)
+                    .ok());
+        for (int i = 0; i < 100; ++i) {
+            t += std::chrono::milliseconds(1);
+            QVERIFY(all.feed(frag(flooder, std::uint16_t(i * 3), DataFlags::First, Bytes{0x03, 0x4B, 9}), t)
+                        .ok());
+        }
+        QCOMPARE(all.pending(), opt.maxSets);
+        QCOMPARE(all.pending(flooder.value()), std::size_t(5));
+        for (std::uint8_t p = 46; p <= 49; ++p) {
+            t += std::chrono::milliseconds(1);
+            QVERIFY(
+                all.feed(frag(JausId{std::uint16_t(p), 1, 1}, 10, DataFlags::First, Bytes{0x03, 0x4B, p}), t)
+                    .ok());
+        }
+        QCOMPARE(all.pending(), opt.maxSets);
+        QCOMPARE(all.pending(flooder.value()), std::size_t(1));
+        for (std::uint8_t p = 1; p <= 49; ++p) {
+            auto r = all.feed(frag(JausId{std::uint16_t(p), 1, 1}, 11, DataFlags::Last, Bytes{p}), t);
+            QVERIFY2(r.ok() && r->has_value(), qPrintable(QString("peer %1").arg(p)));
+        }
+    }
     void badFragmentSequences() {
         auto h = header(JausId{2, 1, 1}, JausId{126, 1, 1}, 7);
         Reassembler re;

@@ -180,6 +180,42 @@ private slots:
         QCOMPARE(a.got.back().dst, kBroadcastAll);
     }
 
+    // Issue 14 §3: every source ID a datagram named became a learned address for good; a peer inventing IDs
+    // grew the table without end. Bounded, and the addresses learned first (the real vehicles) stay.
+    void learnedAddressesAreBounded() {
+        boost::asio::io_context io;
+        const std::uint16_t mc = findFreeUdpPort();
+        Node a(io, loopback(mc), JausId{200, 1, 1});
+        Node vehicle(io, loopback(mc), JausId{126, 1, 1});
+        a.transport.open();
+        vehicle.transport.open();
+        vehicle.transport.send(vehicle.self, a.self, encode(ReportStatus{ManagementState::Ready, 0}), {});
+        QVERIFY(runUntil(io, [&] { return a.got.size() == 1; }));
+        const std::string vehicleAt = a.transport.endpointOf(vehicle.self);
+        QVERIFY(!vehicleAt.empty());
+        boost::asio::ip::udp::socket raw(
+            io, boost::asio::ip::udp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
+        const boost::asio::ip::udp::endpoint to(boost::asio::ip::make_address("127.0.0.1"),
+                                                a.transport.localPort());
+        const std::size_t cap = JudpTransport::kMaxLearnedAddresses, extra = 50;
+        const auto datagrams0 = a.counters.get("rx.datagrams");
+        for (std::size_t i = 0; i < cap + extra; ++i) {
+            JudpHeader h;
+            h.destination = a.self;
+            h.source = JausId{std::uint16_t(1000 + i), 1, 1};
+            raw.send_to(
+                boost::asio::buffer(encodeDatagram(h, encode(ReportStatus{ManagementState::Ready, 0}))), to);
+            if (i % 64 ==
+                63) // let the receiver keep up (the socket buffer is large, but the machine is shared)
+                QVERIFY(runUntil(io, [&] { return a.counters.get("rx.datagrams") - datagrams0 == i + 1; }));
+        }
+        QVERIFY(runUntil(io, [&] { return a.counters.get("rx.datagrams") - datagrams0 == cap + extra; }));
+        QCOMPARE(a.transport.learnedAddresses(), cap);
+        // The vehicle holds one entry, so cap - 1 invented IDs were learned and the rest not.
+        QCOMPARE(a.counters.get("rx.limited.learned_address"), std::uint64_t(extra + 1));
+        QCOMPARE(a.transport.endpointOf(vehicle.self), vehicleAt); // the real vehicle is still known
+    }
+
     void staticTableAvoidsTheBroadcast() {
         boost::asio::io_context io;
         const std::uint16_t mc = findFreeUdpPort();

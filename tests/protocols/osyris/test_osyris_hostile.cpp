@@ -4,9 +4,9 @@
 // the codec only, no simulator code) sending phantom ranges, absurd positions, huge drums, request floods,
 // garbage and datagrams from more unknown stations than the cap. Every slot of the rollers arrives, the
 // console's pass counts equal those of the quiet run, the console answers a PING after every single hostile
-// datagram and keeps both rollers live, and the longest io-thread handler is measured and printed (generous
-// bounds only: the 100 ms / 10 ms figures of the issue are reported, not asserted, so the test holds on a
-// loaded machine).
+// datagram within 100 ms (measured round trip; the fastest of at most three PINGs, so that a descheduled test
+// process does not fail it) and keeps both rollers live, and the longest io-thread handler is measured and
+// printed (the issue's 10 ms is reported, a generous 0.5 s asserted, so the test holds on a loaded machine).
 #include "protocols/osyris/OsyrisCodec.h"
 #include "protocols/osyris/OsyrisStack.h"
 #include "protocols/osyris/RibbonStore.h"
@@ -35,6 +35,18 @@ using namespace std::chrono;
 namespace asio = boost::asio;
 
 namespace {
+
+#if defined(__SANITIZE_THREAD__)
+constexpr bool kUnderThreadSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+constexpr bool kUnderThreadSanitizer = true;
+#else
+constexpr bool kUnderThreadSanitizer = false;
+#endif
+#else
+constexpr bool kUnderThreadSanitizer = false;
+#endif
 
 constexpr const char* kGroup = "239.255.14.5";
 constexpr std::uint8_t kConsole = 200, kHostile = 9, kProbe = 50;
@@ -265,25 +277,38 @@ class TestOsyrisHostile : public QObject {
         if (hostile) {
             ocu.resetMaxHandlerDuration();
             auto before = std::make_pair(console.shown(1), console.shown(2));
-            // The probe first (a PING before anything hostile), then after each hostile datagram.
+            // The probe first (a PING before anything hostile), then right after each hostile datagram (issue
+            // 14 acceptance 2: a PONG within 100 ms). The round trip is measured, not slept for; a shared
+            // build machine may deschedule this process for 100 ms at any moment, so a PING over the bound is
+            // repeated (at most three, one Beat apart: one PING per requester and Beat is answered) and the
+            // fastest must be under 100 ms. The first attempts are the figures reported.
+            auto lastPing = steady_clock::now() - seconds(1);
+            // Under ThreadSanitizer (scripts/test.sh --tsan: the whole process 5-15 times slower) the bound
+            // is not the product's: there the PONG must come at all (within 1 s), the figures are printed.
+            const double boundMs = kUnderThreadSanitizer ? 1000 : 100;
             auto answered = [&](const std::string& after) {
-                std::optional<double> ms;
-                for (int attempt = 0; attempt < 3 && !ms; ++attempt) { // a PONG lost in a full socket buffer
-                    std::this_thread::sleep_for(
-                        milliseconds(110)); // one PING per requester and Beat is answered
-                    ms = probe.ping(kProbe, milliseconds(1000));
+                std::optional<double> best;
+                for (int attempt = 0; attempt < 3 && !(best && *best < boundMs); ++attempt) {
+                    std::this_thread::sleep_until(lastPing + milliseconds(110));
+                    const auto ms = probe.ping(kProbe, milliseconds(1000));
+                    lastPing = steady_clock::now();
+                    if (attempt == 0)
+                        pings.push_back(ms.value_or(1000));
+                    if (ms && (!best || *ms < *best))
+                        best = ms;
                 }
-                if (!ms)
-                    qWarning("no PONG within 3 x 1 s after: %s", after.c_str());
-                if (ms)
-                    pings.push_back(*ms);
-                return ms.has_value();
+                if (!(best && *best < boundMs))
+                    qWarning("no PONG within 100 ms after: %s (best %.1f ms)", after.c_str(),
+                             best.value_or(-1));
+                return best && *best < boundMs;
             };
             QVERIFY(answered("nothing yet"));
             for (const auto& [what, datagram] : hostileDatagrams()) {
+                std::this_thread::sleep_until(lastPing + milliseconds(110)); // the PING may follow at once
                 attacker.send(datagram);
                 ++out.hostileDatagrams;
-                QVERIFY2(answered(what), qPrintable(QString::fromStdString("PING unanswered after " + what)));
+                QVERIFY2(answered(what),
+                         qPrintable(QString::fromStdString("no PONG within 100 ms after " + what)));
                 // Both rollers stay live: new positions of each arrived since the previous hostile datagram
                 // (unless the drive is over).
                 if (published < kTrack) {
@@ -347,8 +372,9 @@ private slots:
         QVERIFY(attacked.implausible >= 4); // NaN, 1e30 m, 1e6 m and 1e5 m drums
         QVERIFY(attacked.limited >= 1);     // the floods
         // Generous bounds (a loaded build machine); the measured figures are printed above.
-        QVERIFY2(attacked.maxPingMs < 1000, "PONG within 1 s");
-        QVERIFY2(attacked.maxHandlerMs < 500, "no io-thread handler of 0.5 s or more");
+        // Each datagram's PONG within 100 ms is asserted above (the fastest of at most three PINGs).
+        if (!kUnderThreadSanitizer) // a wall-clock figure: meaningless 5-15 times slowed down, printed only
+            QVERIFY2(attacked.maxHandlerMs < 500, "no io-thread handler of 0.5 s or more");
     }
 };
 

@@ -308,6 +308,59 @@ private slots:
         QCOMPARE(store->count(10), std::uint64_t(2));
     }
 
+    void ribbonStoreIsBounded() {
+        // Issue 14 §3: the ribbon of an admitted station grew without a bound (one station could fill the
+        // memory with positions). Beyond the bound a position is refused, counted and warned about; what is
+        // held stays (it is in the pass counts) and the ribbon's gaps are no longer NAKed (they would be
+        // refused). The store-wide bound likewise; other ribbons keep working below it.
+        FakeClock clock;
+        auto store = RibbonStore::inMemory();
+        OsyrisConfig cfg;
+        cfg.stationIndex = 200;
+        cfg.maxRibbonSlots = 100;
+        cfg.maxStoreSlots = 250;
+        Recorder rec;
+        std::map<std::uint8_t, int> naks;
+        StationCore core(cfg, clock, *store, nullptr, &rec, [&](const Bytes& d) {
+            for (const auto& m : decodeDatagram(d).messages)
+                if (auto* r = std::get_if<CmRequest>(&m.body); r && r->type == RequestType::Nak)
+                    ++naks[m.header.whose];
+        });
+        core.start();
+        auto send = [&](std::uint8_t owner, std::uint32_t slot) {
+            Bytes b;
+            encodePos(b, owner, owner, pos(slot, float(slot % 50), float(owner)));
+            core.receive(b);
+        };
+        for (std::uint32_t s = 0; s < 150; s += 1)
+            send(10, s * 2); // every other slot: gaps all along the ribbon
+        QCOMPARE(store->count(10), std::uint64_t(100));
+        QCOMPARE(core.counters().get("rx.rejected.ribbon_full"), std::uint64_t(50));
+        QVERIFY(store->has(10, 0) && store->has(10, 198) && !store->has(10, 200));
+        send(10, 198); // a held slot again is a duplicate, not a refusal
+        QCOMPARE(core.counters().get("rx.rejected.ribbon_full"), std::uint64_t(50));
+        const auto warned = std::count_if(rec.warnings.begin(), rec.warnings.end(), [](const std::string& w) {
+            return w.find("rejected (ribbon_full)") != std::string::npos;
+        });
+        QCOMPARE(warned, 1); // one warning a minute, however many refused
+        // Another station's ribbon is still taken, up to the store's bound (250 in all).
+        for (std::uint32_t s = 0; s < 200; ++s)
+            send(11, s);
+        QCOMPARE(store->count(11), std::uint64_t(100)); // its own ribbon bound first
+        for (std::uint32_t s = 0; s < 80; ++s)
+            send(12, s);
+        QCOMPARE(store->totalCount(), std::uint64_t(250));
+        QCOMPARE(store->count(12), std::uint64_t(50));
+        QCOMPARE(core.counters().get("rx.rejected.store_full"), std::uint64_t(30));
+        // The full ribbons' gaps are not asked for: nothing would be kept.
+        for (int beat = 0; beat < 100; ++beat) {
+            clock.advance(milliseconds(cfg.beatMs));
+            core.tick();
+        }
+        QCOMPARE(naks[10], 0);
+        QCOMPARE(store->count(10), std::uint64_t(100)); // nothing held was dropped
+    }
+
     void oneDatagramCausesAtMostKDatagramsSent_data() {
         QTest::addColumn<bool>(
             "owner"); // the station under test has its own ribbon (a machine) or not (the OCU)

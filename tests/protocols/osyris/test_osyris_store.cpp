@@ -171,6 +171,26 @@ private slots:
         QVERIFY(attrs->addressing == Addressing::Broadcast);
         QCOMPARE(int(attrs->port), 50003);
         QVERIFY(!importOsyrisXml("<Multi><Beat>fast</Beat></Multi>").ok());
+        // Not a number at all: "nan" parses as a double and passed both range comparisons (then the cast to
+        // int was undefined behaviour); likewise for a double item.
+        for (const char* bad : {"<Multi><Beat>nan</Beat></Multi>", "<Multi><TTL>-NAN</TTL></Multi>",
+                                "<Multi MaxRange=\"nan\"/>", "<Multi><TailPos>inf</TailPos></Multi>"})
+            QVERIFY2(!importOsyrisXml(bad).ok(), bad);
+        // A million levels of nesting (pugixml parses it without recursion): the item search must not
+        // recurse either (it did, one stack frame per level, and overflowed the stack).
+        {
+            const int depth = 1'000'000;
+            std::string deep;
+            deep.reserve(std::size_t(depth) * 7 + 64);
+            for (int i = 0; i < depth; ++i)
+                deep += "<a>";
+            deep += "<Beat>250</Beat>";
+            for (int i = 0; i < depth; ++i)
+                deep += "</a>";
+            auto nested = importOsyrisXml(deep);
+            QVERIFY(nested.ok());
+            QCOMPARE(nested->beatMs, 250);
+        }
         QTemporaryDir dir;
         QFile f(dir.filePath("multi.xml"));
         QVERIFY(f.open(QIODevice::WriteOnly));
