@@ -9,6 +9,7 @@
 #include "protocols/common/PosePlausibility.h"
 #include "protocols/iso23725/IsoConfig.h"
 #include "protocols/iso23725/IsoStack.h"
+#include "protocols/iso23725/Routing.h"
 
 #include <QHash>
 
@@ -74,11 +75,17 @@ public:
     // The headless "production" answer: dispatchToJson of every truck that reported a custodian, an
     // assignment or production (HaulTruck), in id order.
     Q_INVOKABLE QJsonArray productionJson() const;
+    // The link's MapConnectivityV1 as a route graph (for the dispatch panel's routes and ETAs), or null.
+    std::shared_ptr<const iso23725::RouteGraph> routeGraph(const QString& link) const {
+        return m_routeGraphs.value(link);
+    }
 
 signals:
     void mapProgress(const QString& link, int received, int total);
     // Dispatch views changed (coalesced; ids changed or removed since the last signal).
     void dispatchChanged(const QStringList& ids);
+    // A link's MapConnectivityV1 arrived: destinations() and routeGraph() changed.
+    void destinationsChanged(const QString& link);
 
 private:
     void onLinkState(const std::string& link, iso23725::LinkState state, const std::string& reason) override;
@@ -138,6 +145,7 @@ private:
     QHash<QString, int> m_allStop;
     QHash<QString, IsoDispatchState> m_dispatch;                  // by machine id
     QHash<QString, QHash<qint64, IsoDestination>> m_destinations; // link -> area way id -> destination
+    QHash<QString, std::shared_ptr<const iso23725::RouteGraph>> m_routeGraphs; // link -> its connectivity
     std::mutex m_dispatchMutex;
     QHash<QString, std::optional<IsoDispatchState>> m_dispatchPending; // io -> GUI, latest wins
     bool m_dispatchScheduled = false;
