@@ -94,6 +94,14 @@ private slots:
         QCOMPARE(panel.taskBox()->currentText(), QStringLiteral("Load"));
         QVERIFY(panel.assignButton()->isEnabled());
         QVERIFY(!panel.refusalLabel()->isVisible());
+        // Before sending: the route the truck would drive (the preview on the map) ends at the shovel.
+        DispatchArea shovel;
+        for (const auto& a : source.areas())
+            if (a.featureId() == shovelFeature)
+                shovel = a;
+        const DispatchRoute preview = source.routeTo(id0, shovel);
+        QVERIFY2(!preview.ways.isEmpty(), qPrintable(preview.error));
+        QCOMPARE(preview.ways.last(), view.loadAreas[0]);
 
         // Assign: sent (the truck is the target), then the truck's own answer and the assignment it reports.
         const auto requestsBefore = ahs.counters().get("sim.assign.requests");

@@ -63,6 +63,11 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     top->setContentsMargins(4, 4, 4, 4);
     top->setSpacing(4);
 
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    auto* left = new QWidget(split);
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->setSpacing(2);
     auto* head = new QHBoxLayout;
     auto* trucksLabel = new QLabel(tr("Truc&ks"), this);
     trucksLabel->setStyleSheet(QStringLiteral("font-weight:bold"));
@@ -72,14 +77,14 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     head->addWidget(m_needs);
     head->addStretch(1);
     auto* next = new QPushButton(tr("Next needing work (F6)"), this);
+    next->setFlat(true);
     next->setObjectName(QStringLiteral("button-next-needing"));
     next->setToolTip(tr("Select the next truck that asks for work or was handed back to the FMS."));
     connect(next, &QPushButton::clicked, this, &DispatchPanel::selectNextNeedingAssignment);
     head->addWidget(next);
-    top->addLayout(head);
-
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    m_table = new QTableView(split);
+    leftLayout->addLayout(head);
+    m_table = new QTableView(left);
+    leftLayout->addWidget(m_table, 1);
     m_table->setObjectName(QStringLiteral("dispatch-table"));
     m_table->setModel(m_model);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -138,7 +143,7 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     }
     queueLabel->setBuddy(m_queueTable);
     queueLayout->addWidget(m_queueTable, 1);
-    split->addWidget(m_table);
+    split->addWidget(left);
     split->addWidget(queues);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);

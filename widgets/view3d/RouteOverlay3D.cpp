@@ -21,7 +21,6 @@ namespace ocu {
 
 struct RouteOverlay3D::Impl {
     QPointer<Site3DView> view;
-    vtkSmartPointer<vtkRenderer> renderer; // kept alive: the overlay may outlive the scene's renderer owner
     vtkNew<vtkPolyData> poly;
     vtkNew<vtkPolyDataMapper> mapper;
     vtkNew<vtkActor> actor;
@@ -30,7 +29,6 @@ struct RouteOverlay3D::Impl {
 
 RouteOverlay3D::RouteOverlay3D(Site3DView* view) : QObject(view), d(std::make_unique<Impl>()) {
     d->view = view;
-    d->renderer = view->sceneRenderer().renderer();
     d->mapper->SetInputData(d->poly);
     d->actor->SetMapper(d->mapper);
     d->actor->GetProperty()->SetColor(0.56, 0.14, 0.67);
@@ -39,12 +37,14 @@ RouteOverlay3D::RouteOverlay3D(Site3DView* view) : QObject(view), d(std::make_un
     d->actor->GetProperty()->LightingOff();
     d->actor->PickableOff();
     d->actor->VisibilityOff();
-    d->renderer->AddActor(d->actor);
+    view->sceneRenderer().renderer()->AddActor(d->actor); // the renderer holds it from now on
 }
 
+// The renderer is not touched here: as a child of the view this runs after the view's renderer and its window
+// are gone (the renderer keeps a reference to the actor and releases it with itself); hiding our own actor
+// covers an overlay deleted before its view.
 RouteOverlay3D::~RouteOverlay3D() {
-    if (d->renderer)
-        d->renderer->RemoveActor(d->actor);
+    d->actor->VisibilityOff();
 }
 
 void RouteOverlay3D::setPath(const QVector<QPointF>& path) {
