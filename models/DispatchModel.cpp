@@ -13,6 +13,10 @@
 namespace ocu {
 
 namespace {
+// Rows in truck-name order (ids break ties), as the dispatcher reads them.
+bool before(const DispatchTruck& a, const DispatchTruck& b) {
+    return a.name != b.name ? a.name < b.name : a.id < b.id;
+}
 QString orDash(const QString& s) {
     return s.isEmpty() ? QStringLiteral("—") : s;
 }
@@ -87,8 +91,25 @@ void DispatchModel::updateTrucks(const QStringList& ids) {
             continue;
         }
         if (row < 0) {
-            const auto at = std::lower_bound(m_rows.begin(), m_rows.end(), id,
-                                             [](const Row& r, const QString& k) { return r.truck.id < k; });
+            const auto at =
+                std::lower_bound(m_rows.begin(), m_rows.end(), *t,
+                                 [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
+            const int pos = int(at - m_rows.begin());
+            beginInsertRows({}, pos, pos);
+            m_rows.insert(pos, Row{std::move(*t), false, {}});
+            reindex(pos);
+            endInsertRows();
+            continue;
+        }
+        if (m_rows[row].truck.name != t->name) { // renamed: its place changes
+            beginRemoveRows({}, row, row);
+            m_rows.remove(row);
+            m_index.remove(id);
+            reindex(row);
+            endRemoveRows();
+            const auto at =
+                std::lower_bound(m_rows.begin(), m_rows.end(), *t,
+                                 [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
             const int pos = int(at - m_rows.begin());
             beginInsertRows({}, pos, pos);
             m_rows.insert(pos, Row{std::move(*t), false, {}});

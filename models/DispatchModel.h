@@ -12,7 +12,7 @@
 // for.
 //
 // Updates are incremental: trucksChanged(ids) re-reads those trucks, one dataChanged over the changed rows;
-// rows are kept in id order; the "in state" column is refreshed once a second.
+// rows are kept in truck-name order; the "in state" column is refreshed once a second.
 #include "models/DispatchSource.h"
 
 #include <QAbstractTableModel>
