@@ -42,8 +42,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 MainWindow::~MainWindow() = default;
 
 QList<Panel> MainWindow::panels() {
-    return {Panel::Fleet,  Panel::SiteMap,    Panel::Site3D,  Panel::JausControl,
-            Panel::Teleop, Panel::PassCounts, Panel::EventLog};
+    return {Panel::Fleet,  Panel::SiteMap,    Panel::Site3D,   Panel::JausControl,
+            Panel::Teleop, Panel::PassCounts, Panel::EventLog, Panel::Dispatch};
 }
 
 QString MainWindow::panelKey(Panel panel) {
@@ -62,6 +62,8 @@ QString MainWindow::panelKey(Panel panel) {
         return QStringLiteral("passcounts");
     case Panel::EventLog:
         return QStringLiteral("events");
+    case Panel::Dispatch:
+        return QStringLiteral("dispatch");
     }
     return {};
 }
@@ -82,6 +84,8 @@ QString MainWindow::panelTitle(Panel panel) const {
         return tr("Pass counts");
     case Panel::EventLog:
         return tr("Event log");
+    case Panel::Dispatch:
+        return tr("Dispatch");
     }
     return {};
 }
@@ -227,6 +231,8 @@ void MainWindow::createMenus() {
             tr("F12 or Ctrl+Shift+Space: STOP ALL\n"
                "Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop\n"
                "Site map: arrows pan, +/- zoom, F follow the selected machine\n"
+               "Dispatch: F6 next truck needing work, Alt+T task, Alt+D destination, Alt+M pick on map, "
+               "Ctrl+Enter assign, Alt+R reset\n"
                "Ctrl+Shift+N: night palette\nCtrl+Shift+P: save a screenshot"));
     });
     QAction* about = help->addAction(tr("&About"));
@@ -285,10 +291,13 @@ void MainWindow::applyDefaultLayout() {
     splitDockWidget(m_docks[Panel::EventLog], m_docks[Panel::PassCounts], Qt::Horizontal);
     tabifyDockWidget(m_docks[Panel::SiteMap], m_docks[Panel::Site3D]);
     tabifyDockWidget(m_docks[Panel::JausControl], m_docks[Panel::Teleop]);
+    tabifyDockWidget(m_docks[Panel::PassCounts],
+                     m_docks[Panel::Dispatch]); // issue 15: the dispatcher's table
     for (QDockWidget* d : std::as_const(m_docks))
         d->show();
     m_docks[Panel::SiteMap]->raise();
     m_docks[Panel::JausControl]->raise();
+    m_docks[Panel::Dispatch]->raise();
     resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]},
                 {420, 900, 380}, Qt::Horizontal);
     resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]}, {700, 220}, Qt::Vertical);
@@ -303,6 +312,7 @@ void MainWindow::resetLayout() {
         applyDefaultLayout();
     m_docks[Panel::SiteMap]->raise();
     m_docks[Panel::JausControl]->raise();
+    m_docks[Panel::Dispatch]->raise();
     m_bannerBar->setVisible(!m_bannerText.isEmpty()); // a saved layout never hides a failed stop
 }
 

@@ -13,7 +13,7 @@ class QToolButton;
 
 namespace ocu {
 
-enum class Panel { Fleet, SiteMap, Site3D, JausControl, Teleop, PassCounts, EventLog };
+enum class Panel { Fleet, SiteMap, Site3D, JausControl, Teleop, PassCounts, EventLog, Dispatch };
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -22,7 +22,8 @@ public:
     ~MainWindow() override;
 
     static QList<Panel> panels();
-    static QString panelKey(Panel panel); // stable name: fleet, map, 3d, jaus, teleop, passcounts, events
+    static QString
+    panelKey(Panel panel); // stable name: fleet, map, 3d, jaus, teleop, passcounts, events, dispatch
     QString panelTitle(Panel panel) const;
 
     QDockWidget* dock(Panel panel) const { return m_docks.value(panel); }

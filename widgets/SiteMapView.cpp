@@ -288,6 +288,8 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     p.setRenderHint(QPainter::Antialiasing, true);
     if (m_layers & LayerTrails)
         drawTrails(p, world);
+    for (SiteMapOverlay* o : std::as_const(m_overlays))
+        o->paintOverlay(p, *this);
     if (m_layers & LayerMachines)
         drawMachines(p, world);
     if (m_layers & LayerOwnPosition)
@@ -718,6 +720,11 @@ void SiteMapView::mouseMoveEvent(QMouseEvent* e) {
 void SiteMapView::mouseReleaseEvent(QMouseEvent* e) {
     const bool click = m_dragging && !m_dragMoved && e->button() == Qt::LeftButton;
     m_dragging = false;
+    if (click && m_areaPicking) {
+        if (const QString area = areaAt(e->position()); !area.isEmpty())
+            emit areaClicked(area);
+        return;
+    }
     if (!click || !m_selection)
         return;
     const QString id = machineAt(e->position());
@@ -727,6 +734,33 @@ void SiteMapView::mouseReleaseEvent(QMouseEvent* e) {
     } else {
         m_selection->setCurrent(id); // empty = clear
     }
+}
+
+void SiteMapView::addOverlay(SiteMapOverlay* overlay) {
+    if (overlay && !m_overlays.contains(overlay))
+        m_overlays.push_back(overlay);
+    update();
+}
+
+void SiteMapView::removeOverlay(SiteMapOverlay* overlay) {
+    m_overlays.removeAll(overlay);
+    update();
+}
+
+void SiteMapView::setAreaPicking(bool on) {
+    m_areaPicking = on;
+    if (on)
+        setCursor(Qt::CrossCursor);
+    else
+        unsetCursor();
+}
+
+QString SiteMapView::areaAt(QPointF px) const {
+    const QPointF w = screenToWorld(px);
+    for (auto it = m_map.features.crbegin(); it != m_map.features.crend(); ++it)
+        if (it->kind == MapFeatureKind::Area && QPolygonF(it->points).containsPoint(w, Qt::OddEvenFill))
+            return it->id;
+    return {};
 }
 
 void SiteMapView::mouseDoubleClickEvent(QMouseEvent* e) {

@@ -23,6 +23,14 @@ namespace ocu {
 
 class FleetModel;
 class FleetSelection;
+class SiteMapView;
+
+// Drawing of another feature above the map and the trails (e.g. the dispatch route, widgets/dispatch/).
+class SiteMapOverlay {
+public:
+    virtual ~SiteMapOverlay() = default;
+    virtual void paintOverlay(QPainter& p, const SiteMapView& view) = 0;
+};
 
 class SiteMapView : public QWidget {
     Q_OBJECT
@@ -82,6 +90,14 @@ public:
 
     // Draws the whole scene (what paintEvent does) into any painter, e.g. an offscreen QImage.
     void paintScene(QPainter& p, const QSize& size);
+    // Overlays (not owned; remove before deleting), drawn in order after the trails.
+    void addOverlay(SiteMapOverlay* overlay);
+    void removeOverlay(SiteMapOverlay* overlay);
+    // While on, a left click on a map area emits areaClicked and leaves the selection alone.
+    void setAreaPicking(bool on);
+    bool isAreaPicking() const { return m_areaPicking; }
+    QString areaAt(QPointF px) const; // id of the topmost area feature under the pixel, or empty
+
     // Frame statistics of the last paintScene (for benchmarks and the status bar).
     struct FrameStats {
         bool staticRebuilt = false;
@@ -99,6 +115,7 @@ signals:
     void machineActivated(const QString& id); // double click
     void contextMenuRequested(const QString& id, QPoint globalPos);
     void followChanged(bool follow);
+    void areaClicked(const QString& featureId);
 
 protected:
     void paintEvent(QPaintEvent* e) override;
@@ -168,6 +185,8 @@ private:
     QPointF m_dragLast;
     QPointF m_cursorPx{-1, -1};
     FrameStats m_stats;
+    QVector<SiteMapOverlay*> m_overlays;
+    bool m_areaPicking = false;
 };
 
 } // namespace ocu

@@ -4,10 +4,20 @@
 #include "app/ProtocolModule.h"
 #include "app/modules/IsoProduction.h"
 
+#include <QCoreApplication>
+
 #include "models/FleetContext.h"
 #include "models/OwnPosition.h"
 #include "models/ProductionModel.h"
 #include "models/bridges/IsoBridge.h"
+#include "models/bridges/IsoDispatchSource.h"
+#include "widgets/SiteMapView.h"
+#include "widgets/dispatch/DispatchPanel.h"
+#include "widgets/dispatch/RouteOverlay2D.h"
+#ifdef OCU_HAVE_OCU_VIEW3D
+#include "widgets/view3d/RouteOverlay3D.h"
+#include "widgets/view3d/Site3DView.h"
+#endif
 
 namespace ocu {
 
@@ -45,6 +55,29 @@ public:
                 if (f.valid)
                     bridge->setOwnPosition(machine, f.lat, f.lon, f.alt, f.headingDeg, f.speed * 3.6);
             });
+    }
+
+    // Issue 15 §3: the dispatch panel over this bridge; the selected truck's route on the 2D map and in 3D.
+    QList<Panel> panels() const override { return {Panel::Dispatch}; }
+    QString notConfiguredText() const override {
+        return QCoreApplication::translate(
+            "IsoModule", "Dispatch needs an ISO 23725 AHS link (site configuration \"iso23725\").");
+    }
+    void populate(const ModulePanels& ui) override {
+        auto* source = new IsoDispatchSource(m_bridge, m_bridge);
+        auto* panel = new DispatchPanel(source, ui.fleet->gate(), ui.fleet->selection());
+        auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
+        panel->setMap(map);
+        ui.window.setPanelWidget(Panel::Dispatch, panel);
+#ifdef OCU_HAVE_OCU_VIEW3D
+        if (auto* view3d = qobject_cast<Site3DView*>(ui.window.panelWidget(Panel::Site3D)); view3d && map) {
+            auto* route3d = new RouteOverlay3D(view3d);
+            QObject::connect(panel, &DispatchPanel::routeChanged, route3d,
+                             [route3d, map](const QString& link, const QVector<qint64>& ways) {
+                                 route3d->setPath(routePath(map->siteMap(), link, ways));
+                             });
+        }
+#endif
     }
 
 private:

@@ -276,10 +276,13 @@ void IsoBridge::onConnectivity(const std::string& link, const MapConnectivityV1&
             areas.insert(item.wayId, IsoDestination{q(link), item.wayId, q(item.areaName.value_or("")),
                                                     q(item.areaDefaultTask.value_or(""))});
     const QString l = q(link);
+    auto graph = std::make_shared<const RouteGraph>(connectivity); // indexed here, off the GUI thread
     QMetaObject::invokeMethod(
         this,
-        [this, l, areas = std::move(areas)]() mutable {
+        [this, l, areas = std::move(areas), graph = std::move(graph)]() mutable {
             m_destinations.insert(l, std::move(areas));
+            m_routeGraphs.insert(l, std::move(graph));
+            emit destinationsChanged(l);
             QStringList ids;
             for (auto& d : m_dispatch)
                 if (d.link == l) {

@@ -10,6 +10,7 @@
 #include "protocols/common/PosePlausibility.h"
 #include "protocols/iso23725/IsoConfig.h"
 #include "protocols/iso23725/IsoStack.h"
+#include "protocols/iso23725/Routing.h"
 
 #include <QHash>
 
@@ -75,6 +76,10 @@ public:
     // The headless "production" answer: dispatchToJson of every truck that reported a custodian, an
     // assignment or production (HaulTruck), in id order.
     Q_INVOKABLE QJsonArray productionJson() const;
+    // The link's MapConnectivityV1 as a route graph (for the dispatch panel's routes and ETAs), or null.
+    std::shared_ptr<const iso23725::RouteGraph> routeGraph(const QString& link) const {
+        return m_routeGraphs.value(link);
+    }
 
 signals:
     void mapProgress(const QString& link, int received, int total);
@@ -83,6 +88,8 @@ signals:
     // Every production report as it arrived (not coalesced: a production tally must see each cycle and
     // dump). Emitted on the io thread: connect with a queued (or auto) connection.
     void productionReport(const ocu::ProductionReport& report);
+    // A link's MapConnectivityV1 arrived: destinations() and routeGraph() changed.
+    void destinationsChanged(const QString& link);
 
 private:
     void onLinkState(const std::string& link, iso23725::LinkState state, const std::string& reason) override;
@@ -144,6 +151,7 @@ private:
     QHash<QString, int> m_allStop;
     QHash<QString, IsoDispatchState> m_dispatch;                  // by machine id
     QHash<QString, QHash<qint64, IsoDestination>> m_destinations; // link -> area way id -> destination
+    QHash<QString, std::shared_ptr<const iso23725::RouteGraph>> m_routeGraphs; // link -> its connectivity
     std::mutex m_dispatchMutex;
     QHash<QString, std::optional<IsoDispatchState>> m_dispatchPending; // io -> GUI, latest wins
     bool m_dispatchScheduled = false;

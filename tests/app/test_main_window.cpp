@@ -196,7 +196,7 @@ private slots:
 
     void everyPanelIsADock() {
         MainWindow w;
-        QCOMPARE(MainWindow::panels().size(), 7);
+        QCOMPARE(MainWindow::panels().size(), 8);
         QStringList titles;
         for (Panel p : MainWindow::panels()) {
             QDockWidget* d = w.dock(p);
@@ -206,7 +206,7 @@ private slots:
             titles << d->windowTitle();
         }
         QCOMPARE(titles, QStringList({"Fleet", "Site map (2D)", "Site 3D", "JAUS control", "Teleop",
-                                      "Pass counts", "Event log"}));
+                                      "Pass counts", "Event log", "Dispatch"}));
     }
     void stopAllAlwaysVisibleWithShortcut() {
         MainWindow w;

@@ -50,6 +50,8 @@ public:
     QImage renderImage(QSize size);
 
     SiteSceneRenderer& sceneRenderer();
+    // Redraw soon (after a change made directly on sceneRenderer().renderer(), e.g. an overlay's actor).
+    void refresh() { scheduleRender(); }
 
     // Size of the drawing area in device pixels (what pick/project coordinates refer to).
     QSize viewPixelSize() const;

@@ -1,0 +1,452 @@
+#include "models/DispatchModel.h"
+
+#include "models/FleetModel.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QDateTime>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+namespace ocu {
+
+namespace {
+// Rows in truck-name order (ids break ties), as the dispatcher reads them.
+bool before(const DispatchTruck& a, const DispatchTruck& b) {
+    return a.name != b.name ? a.name < b.name : a.id < b.id;
+}
+QString orDash(const QString& s) {
+    return s.isEmpty() ? QStringLiteral("—") : s;
+}
+QString duration(qint64 seconds) {
+    if (seconds < 0)
+        return QStringLiteral("—");
+    if (seconds < 3600)
+        return QStringLiteral("%1:%2").arg(seconds / 60).arg(seconds % 60, 2, 10, QLatin1Char('0'));
+    return QStringLiteral("%1 h %2").arg(seconds / 3600).arg((seconds % 3600) / 60, 2, 10, QLatin1Char('0'));
+}
+} // namespace
+
+DispatchModel::DispatchModel(QObject* parent)
+    : QAbstractTableModel(parent), m_now([] { return QDateTime::currentMSecsSinceEpoch(); }) {
+    m_clockTimer.setInterval(1000);
+    connect(&m_clockTimer, &QTimer::timeout, this, &DispatchModel::refreshTimes);
+    m_clockTimer.start();
+}
+
+void DispatchModel::setSource(DispatchSource* source) {
+    if (m_source)
+        disconnect(m_source, nullptr, this, nullptr);
+    m_source = source;
+    if (source) {
+        connect(source, &DispatchSource::trucksChanged, this, &DispatchModel::updateTrucks);
+        connect(source, &DispatchSource::areasChanged, this, [this] {
+            for (auto& r : m_rows)
+                r.routeValid = false;
+        });
+    }
+    reload();
+}
+
+void DispatchModel::setFleet(FleetModel* fleet) {
+    m_fleet = fleet;
+}
+
+void DispatchModel::reload() {
+    beginResetModel();
+    m_rows.clear();
+    m_index.clear();
+    if (m_source)
+        for (auto& t : m_source->trucks())
+            m_rows.push_back(Row{std::move(t), false, {}});
+    std::sort(m_rows.begin(), m_rows.end(),
+              [](const Row& a, const Row& b) { return a.truck.id < b.truck.id; });
+    reindex(0);
+    endResetModel();
+    emit trucksUpdated({});
+}
+
+void DispatchModel::reindex(int from) {
+    for (int i = from; i < m_rows.size(); ++i)
+        m_index.insert(m_rows[i].truck.id, i);
+}
+
+void DispatchModel::updateTrucks(const QStringList& ids) {
+    if (!m_source)
+        return;
+    QStringList updated; // rows changed in place (their row numbers are looked up after inserts/removals)
+    for (const QString& id : ids) {
+        std::optional<DispatchTruck> t = m_source->truck(id);
+        const int row = m_index.value(id, -1);
+        if (!t) {
+            if (row < 0)
+                continue;
+            beginRemoveRows({}, row, row);
+            m_rows.remove(row);
+            m_index.remove(id);
+            reindex(row);
+            endRemoveRows();
+            continue;
+        }
+        if (row < 0) {
+            const auto at =
+                std::lower_bound(m_rows.begin(), m_rows.end(), *t,
+                                 [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
+            const int pos = int(at - m_rows.begin());
+            beginInsertRows({}, pos, pos);
+            m_rows.insert(pos, Row{std::move(*t), false, {}});
+            reindex(pos);
+            endInsertRows();
+            continue;
+        }
+        if (m_rows[row].truck.name != t->name) { // renamed: its place changes
+            beginRemoveRows({}, row, row);
+            m_rows.remove(row);
+            m_index.remove(id);
+            reindex(row);
+            endRemoveRows();
+            const auto at =
+                std::lower_bound(m_rows.begin(), m_rows.end(), *t,
+                                 [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
+            const int pos = int(at - m_rows.begin());
+            beginInsertRows({}, pos, pos);
+            m_rows.insert(pos, Row{std::move(*t), false, {}});
+            reindex(pos);
+            endInsertRows();
+            continue;
+        }
+        Row& r = m_rows[row];
+        if (r.truck.wayId != t->wayId || r.truck.destinationId != t->destinationId ||
+            r.truck.assignmentId != t->assignmentId || r.truck.assignmentStatus != t->assignmentStatus)
+            r.routeValid = false;
+        r.truck = std::move(*t);
+        updated << id;
+    }
+    int first = INT_MAX, last = -1;
+    for (const QString& id : std::as_const(updated))
+        if (const int row = m_index.value(id, -1); row >= 0) {
+            first = std::min(first, row);
+            last = std::max(last, row);
+        }
+    if (last >= 0)
+        emit dataChanged(index(first, 0), index(last, ColumnCount - 1));
+    emit trucksUpdated(ids);
+}
+
+void DispatchModel::refreshTimes() {
+    if (!m_rows.isEmpty())
+        emit dataChanged(index(0, ColInState), index(int(m_rows.size()) - 1, ColInState), {Qt::DisplayRole});
+}
+
+int DispatchModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int DispatchModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+int DispatchModel::rowOf(const QString& id) const {
+    return m_index.value(id, -1);
+}
+
+const QVector<DispatchTruck> DispatchModel::trucks() const {
+    QVector<DispatchTruck> out;
+    out.reserve(m_rows.size());
+    for (const auto& r : m_rows)
+        out << r.truck;
+    return out;
+}
+
+int DispatchModel::needsAssignmentCount() const {
+    return int(
+        std::count_if(m_rows.begin(), m_rows.end(), [](const Row& r) { return r.truck.needsAssignment; }));
+}
+
+const DispatchRoute& DispatchModel::routeOf(int row) const {
+    const Row& r = m_rows[row];
+    if (!r.routeValid) {
+        r.route = m_source ? m_source->route(r.truck.id) : DispatchRoute{};
+        r.routeValid = true;
+    }
+    return r.route;
+}
+
+double DispatchModel::etaSeconds(int row, bool* nominal) const {
+    if (nominal)
+        *nominal = false;
+    const DispatchRoute& route = routeOf(row);
+    if (route.ways.isEmpty())
+        return -1;
+    double speed = 0;
+    if (m_fleet)
+        if (const MachineState* m = m_fleet->machine(m_rows[row].truck.id))
+            speed = m->speed;
+    if (!(speed >= 1.0)) {
+        speed = kNominalSpeedMs;
+        if (nominal)
+            *nominal = true;
+    }
+    return route.lengthM / speed;
+}
+
+QString DispatchModel::etaText(int row) const {
+    bool nominal = false;
+    const double s = etaSeconds(row, &nominal);
+    if (s < 0)
+        return QStringLiteral("—");
+    return (nominal ? QStringLiteral("~") : QString()) + duration(qint64(std::llround(s)));
+}
+
+QString DispatchModel::assignmentText(const DispatchTruck& t) const {
+    if (t.needsAssignment)
+        return tr("NEEDS ASSIGNMENT");
+    QString s = t.assignmentStatus;
+    // The answer to this console's newest request, when it is not what the truck reports as its assignment.
+    if (!t.lastResponse.isEmpty() && t.requestedAssignmentId != t.assignmentId)
+        s = s.isEmpty() ? t.lastResponse : s + QStringLiteral(" · ") + t.lastResponse;
+    else if (t.lastResponse == QLatin1String("Rejected"))
+        s += QStringLiteral(" · Rejected");
+    return orDash(s);
+}
+
+QVariant DispatchModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const DispatchTruck& t = m_rows[index.row()].truck;
+    const int col = index.column();
+    if (role == IdRole)
+        return t.id;
+    if (role == NeedsAssignmentRole)
+        return t.needsAssignment;
+    if (role == EtaSecondsRole)
+        return etaSeconds(index.row());
+    if (role == Qt::DisplayRole) {
+        switch (col) {
+        case ColTruck:
+            return t.name;
+        case ColCustodian:
+            return t.stateKnown ? orDash(t.custodian) : tr("link down");
+        case ColMode:
+            return orDash(t.autonomyMode);
+        case ColAssignment:
+            return assignmentText(t);
+        case ColTask:
+            return orDash(t.task);
+        case ColDestination:
+            if (!t.destinationId)
+                return QStringLiteral("—");
+            return t.destinationName.isEmpty() ? tr("way %1").arg(*t.destinationId) : t.destinationName;
+        case ColEta:
+            return etaText(index.row());
+        case ColProduction:
+            return orDash(t.productionState);
+        case ColPayload:
+            return t.payloadTonnes ? QStringLiteral("%1 t").arg(*t.payloadTonnes, 0, 'f', 0)
+                                   : QStringLiteral("—");
+        case ColInState:
+            return t.productionSinceMs > 0
+                       ? duration(std::max<qint64>(0, (m_now() - t.productionSinceMs) / 1000))
+                       : QStringLiteral("—");
+        }
+    }
+    if (role == Qt::ToolTipRole) {
+        switch (col) {
+        case ColAssignment: {
+            QString tip = tr("Reported assignment: %1").arg(orDash(t.assignmentStatus));
+            if (!t.assignmentId.isEmpty())
+                tip += QStringLiteral(" (%1)").arg(t.assignmentId);
+            if (!t.requestedTask.isEmpty())
+                tip += QLatin1Char('\n') +
+                       tr("Last request from this console: %1 to way %2 — %3")
+                           .arg(t.requestedTask)
+                           .arg(t.requestedDestination.value_or(0))
+                           .arg(t.lastResponse.isEmpty() ? tr("no answer yet") : t.lastResponse);
+            if (!t.lastResponseDetail.isEmpty())
+                tip += QLatin1Char('\n') + tr("Detail: %1").arg(t.lastResponseDetail);
+            if (t.needsAssignment)
+                tip += QLatin1Char('\n') + tr("The truck asks for work (or was handed back to the FMS).");
+            return tip;
+        }
+        case ColEta: {
+            const DispatchRoute& r = routeOf(index.row());
+            if (r.ways.isEmpty())
+                return tr("No route: %1").arg(orDash(r.error));
+            bool nominal = false;
+            etaSeconds(index.row(), &nominal);
+            return tr("%1 m over %n way(s) (%2); %3", "", int(r.ways.size()))
+                .arg(r.lengthM, 0, 'f', 0)
+                .arg(r.fromAssignment ? tr("route of the assignment") : tr("shortest path"))
+                .arg(nominal ? tr("nominal 25 km/h (the truck is slower than 1 m/s)")
+                             : tr("at the reported speed"));
+        }
+        case ColCustodian:
+            return tr("DispatchingCustodian: who dispatches this truck (only FMS trucks can be assigned)");
+        default:
+            return {};
+        }
+    }
+    if (role == Qt::BackgroundRole) {
+        if (t.needsAssignment)
+            return QBrush(QColor(0xff, 0xd5, 0x4f)); // amber: the dispatcher has to act
+        if (col == ColAssignment && t.lastResponse == QLatin1String("Rejected"))
+            return QBrush(QColor(0xf4, 0xa0, 0xa0));
+        if (col == ColCustodian && t.custodian == QLatin1String("AHS"))
+            return QBrush(QColor(0xd8, 0xd8, 0xd8));
+    }
+    if (role == Qt::ForegroundRole &&
+        (t.needsAssignment || (col == ColAssignment && t.lastResponse == QLatin1String("Rejected"))))
+        return QBrush(Qt::black); // readable on the cue colours in the night palette too
+    if (role == Qt::TextAlignmentRole && (col == ColEta || col == ColPayload || col == ColInState))
+        return int(Qt::AlignRight | Qt::AlignVCenter);
+    return {};
+}
+
+QVariant DispatchModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case ColTruck:
+        return tr("Truck");
+    case ColCustodian:
+        return tr("Custodian");
+    case ColMode:
+        return tr("Mode");
+    case ColAssignment:
+        return tr("Assignment");
+    case ColTask:
+        return tr("Task");
+    case ColDestination:
+        return tr("Destination");
+    case ColEta:
+        return tr("ETA");
+    case ColProduction:
+        return tr("Production");
+    case ColPayload:
+        return tr("Payload");
+    case ColInState:
+        return tr("In state");
+    }
+    return {};
+}
+
+// ---- queues ----
+
+DispatchQueueModel::DispatchQueueModel(DispatchModel* trucks, QObject* parent)
+    : QAbstractTableModel(parent), m_trucks(trucks) {
+    connect(trucks, &DispatchModel::trucksUpdated, this, &DispatchQueueModel::rebuild);
+    connect(trucks, &QAbstractItemModel::modelReset, this, &DispatchQueueModel::rebuild);
+    rebuild();
+}
+
+bool DispatchQueueModel::isQueueArea(const DispatchArea& a) {
+    return a.defaultTask == QLatin1String("Load") || a.defaultTask == QLatin1String("Offload");
+}
+
+void DispatchQueueModel::rebuild() {
+    QVector<Queue> next;
+    QHash<QPair<QString, qint64>, int> at;
+    if (DispatchSource* src = m_trucks->source())
+        for (const DispatchArea& a : src->areas())
+            if (isQueueArea(a)) {
+                at.insert({a.link, a.wayId}, int(next.size()));
+                next.push_back(Queue{a, {}, {}});
+            }
+    for (int row = 0; row < m_trucks->rowCount(); ++row) {
+        const DispatchTruck& t = m_trucks->truckAt(row);
+        if (t.wayId)
+            if (const int i = at.value({t.link, *t.wayId}, -1); i >= 0) {
+                next[i].atArea << t.name;
+                continue;
+            }
+        if (const auto dest = t.activeDestination())
+            if (const int i = at.value({t.link, *dest}, -1); i >= 0)
+                next[i].enRoute << t.name;
+    }
+    const bool sameAreas =
+        next.size() == m_queues.size() &&
+        std::equal(next.begin(), next.end(), m_queues.begin(), [](const Queue& a, const Queue& b) {
+            return a.area.link == b.area.link && a.area.wayId == b.area.wayId && a.area.name == b.area.name;
+        });
+    if (!sameAreas) {
+        beginResetModel();
+        m_queues = std::move(next);
+        endResetModel();
+        return;
+    }
+    m_queues = std::move(next);
+    if (!m_queues.isEmpty())
+        emit dataChanged(index(0, ColEnRoute), index(int(m_queues.size()) - 1, ColTrucks));
+}
+
+const DispatchQueueModel::Queue* DispatchQueueModel::queueOf(const QString& link, qint64 wayId) const {
+    for (const auto& q : m_queues)
+        if (q.area.link == link && q.area.wayId == wayId)
+            return &q;
+    return nullptr;
+}
+
+int DispatchQueueModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : int(m_queues.size());
+}
+
+int DispatchQueueModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant DispatchQueueModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() >= m_queues.size())
+        return {};
+    const Queue& q = m_queues[index.row()];
+    if (role == Qt::DisplayRole) {
+        switch (index.column()) {
+        case ColArea:
+            return q.area.name.isEmpty() ? tr("way %1").arg(q.area.wayId) : q.area.name;
+        case ColKind:
+            return q.area.defaultTask == QLatin1String("Load") ? tr("Shovel (load)") : tr("Dump (offload)");
+        case ColEnRoute:
+            return int(q.enRoute.size());
+        case ColAtArea:
+            return int(q.atArea.size());
+        case ColTrucks: {
+            QStringList parts;
+            if (!q.atArea.isEmpty())
+                parts << tr("at: %1").arg(q.atArea.join(QStringLiteral(", ")));
+            if (!q.enRoute.isEmpty())
+                parts << tr("coming: %1").arg(q.enRoute.join(QStringLiteral(", ")));
+            return parts.join(QStringLiteral("; "));
+        }
+        }
+    }
+    if (role == Qt::ToolTipRole)
+        return tr("Way %1 on %2. Coming: assigned (Pending/Active) and not yet there; at: the truck reports "
+                  "this "
+                  "area as its way (queued, spotting, loading or dumping).")
+            .arg(q.area.wayId)
+            .arg(q.area.link);
+    if (role == Qt::TextAlignmentRole && (index.column() == ColEnRoute || index.column() == ColAtArea))
+        return int(Qt::AlignRight | Qt::AlignVCenter);
+    return {};
+}
+
+QVariant DispatchQueueModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case ColArea:
+        return tr("Area");
+    case ColKind:
+        return tr("Kind");
+    case ColEnRoute:
+        return tr("Coming");
+    case ColAtArea:
+        return tr("At area");
+    case ColTrucks:
+        return tr("Trucks");
+    }
+    return {};
+}
+
+} // namespace ocu

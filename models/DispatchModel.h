@@ -1,0 +1,131 @@
+#pragma once
+// The dispatch table (issue 15 §3): one row per haul truck with its custodian, autonomy mode, assignment and
+// the answer to this console's last request, task, destination, ETA, production state, payload and time in
+// state, as the trucks reported them (DispatchSource). Rows that need the dispatcher (the truck asks for
+// work, or its custodian went from AHS to FMS) carry the "needs assignment" cue; a rejected request is marked
+// too.
+//
+// ETA = the remaining route's length (DispatchSource::route: the roads still to enter, the rest of the
+// current way not counted) over the truck's reported speed; below 1 m/s (loading, queued, just starting) the
+// nominal haul speed (kNominalSpeedMs, 25 km/h) is used instead and the ETA is shown with a "~". Routes are
+// cached per truck until its way, destination or assignment changes, and computed only for rows a view asks
+// for.
+//
+// Updates are incremental: trucksChanged(ids) re-reads those trucks, one dataChanged over the changed rows;
+// rows are kept in truck-name order; the "in state" column is refreshed once a second.
+#include "models/DispatchSource.h"
+
+#include <QAbstractTableModel>
+#include <QHash>
+#include <QPointer>
+#include <QTimer>
+
+#include <functional>
+
+namespace ocu {
+
+class FleetModel;
+
+class DispatchModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column {
+        ColTruck,
+        ColCustodian,
+        ColMode,
+        ColAssignment,
+        ColTask,
+        ColDestination,
+        ColEta,
+        ColProduction,
+        ColPayload,
+        ColInState,
+        ColumnCount
+    };
+    enum Role { IdRole = Qt::UserRole + 1, NeedsAssignmentRole, EtaSecondsRole };
+    static constexpr double kNominalSpeedMs = 25.0 / 3.6;
+
+    explicit DispatchModel(QObject* parent = nullptr);
+
+    // Not owned. `fleet` (optional) gives the speeds for the ETA.
+    void setSource(DispatchSource* source);
+    DispatchSource* source() const { return m_source; }
+    void setFleet(FleetModel* fleet);
+    void setClock(std::function<qint64()> nowMs) { m_now = std::move(nowMs); }
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+    int rowOf(const QString& id) const;
+    const DispatchTruck& truckAt(int row) const { return m_rows[row].truck; }
+    const QVector<DispatchTruck> trucks() const;
+    // Remaining route of a truck (cached, see above).
+    const DispatchRoute& routeOf(int row) const;
+    // Seconds to the destination, or a negative number when unknown; `nominal` tells whether the nominal
+    // speed stood in for the reported one.
+    double etaSeconds(int row, bool* nominal = nullptr) const;
+    int needsAssignmentCount() const;
+
+public slots:
+    // Re-reads these trucks from the source (removed when the source no longer has them).
+    void updateTrucks(const QStringList& ids);
+    void reload();
+    void refreshTimes(); // the "in state" column
+
+signals:
+    // After every update (ids changed/added/removed): the queue view and the overlays follow it.
+    void trucksUpdated(const QStringList& ids);
+
+private:
+    struct Row {
+        DispatchTruck truck;
+        // Route cache key and value.
+        mutable bool routeValid = false;
+        mutable DispatchRoute route;
+    };
+    QString assignmentText(const DispatchTruck& t) const;
+    QString etaText(int row) const;
+    void reindex(int from);
+
+    QPointer<DispatchSource> m_source;
+    QPointer<FleetModel> m_fleet;
+    QVector<Row> m_rows;
+    QHash<QString, int> m_index;
+    QTimer m_clockTimer;
+    std::function<qint64()> m_now;
+};
+
+// Per load area (shovel) and per dump area (dump, crusher): the trucks assigned to it (Pending/Active, still
+// on the way) and the trucks at it (their reported way is the area: queued, spotting, loading or dumping).
+class DispatchQueueModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column { ColArea, ColKind, ColEnRoute, ColAtArea, ColTrucks, ColumnCount };
+    explicit DispatchQueueModel(DispatchModel* trucks, QObject* parent = nullptr);
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+    struct Queue {
+        DispatchArea area;
+        QStringList enRoute; // truck names
+        QStringList atArea;
+    };
+    const QVector<Queue>& queues() const { return m_queues; }
+    // The queue of one area (link + way id), or null.
+    const Queue* queueOf(const QString& link, qint64 wayId) const;
+    static bool isQueueArea(const DispatchArea& a); // Load or Offload (dump, crusher)
+
+public slots:
+    void rebuild();
+
+private:
+    DispatchModel* m_trucks;
+    QVector<Queue> m_queues;
+};
+
+} // namespace ocu

@@ -1,0 +1,170 @@
+#include "widgets/dispatch/RouteOverlay2D.h"
+
+#include <QPainter>
+#include <QPainterPath>
+
+#include <cmath>
+#include <limits>
+
+namespace ocu {
+
+namespace {
+double dist2(QPointF a, QPointF b) {
+    const QPointF d = a - b;
+    return d.x() * d.x() + d.y() * d.y();
+}
+QPointF centroid(const QVector<QPointF>& pts) {
+    QPointF c;
+    for (const auto& p : pts)
+        c += p;
+    return pts.isEmpty() ? c : c / double(pts.size());
+}
+const MapFeature* featureOf(const SiteMapData& map, const QString& id) {
+    for (const auto& f : map.features)
+        if (f.id == id)
+            return &f;
+    return nullptr;
+}
+} // namespace
+
+QVector<QPointF> routePath(const SiteMapData& map, const QString& link, const QVector<qint64>& ways,
+                           QVector<qint64>* missing) {
+    // One point list per way: a road's polyline, an area's centroid.
+    QHash<QString, const MapFeature*> byId;
+    byId.reserve(map.features.size());
+    for (const auto& f : map.features)
+        byId.insert(f.id, &f);
+    QVector<QVector<QPointF>> parts;
+    for (qint64 w : ways) {
+        const MapFeature* f = byId.value(link + QLatin1Char('/') + QString::number(std::llabs(w)));
+        if (!f || f->points.isEmpty()) {
+            if (missing)
+                *missing << w;
+            continue;
+        }
+        parts << (f->kind == MapFeatureKind::Area ? QVector<QPointF>{centroid(f->points)} : f->points);
+    }
+    QVector<QPointF> path;
+    for (int i = 0; i < parts.size(); ++i) {
+        QVector<QPointF> part = parts[i];
+        if (part.size() > 1) {
+            bool reverse = false;
+            if (!path.isEmpty()) {
+                // Continue where the path ended.
+                reverse = dist2(path.back(), part.back()) < dist2(path.back(), part.front());
+            } else if (i + 1 < parts.size()) {
+                // The first road: end where the next way is nearest.
+                double front = std::numeric_limits<double>::max(), back = front;
+                for (const auto& q : {parts[i + 1].front(), parts[i + 1].back()}) {
+                    front = std::min(front, dist2(part.front(), q));
+                    back = std::min(back, dist2(part.back(), q));
+                }
+                reverse = front < back;
+            }
+            if (reverse)
+                std::reverse(part.begin(), part.end());
+        }
+        for (const auto& p : part)
+            if (path.isEmpty() || path.back() != p)
+                path << p;
+    }
+    return path;
+}
+
+RouteOverlay2D::RouteOverlay2D(SiteMapView* view) : m_view(view) {
+    if (view)
+        view->addOverlay(this);
+}
+
+RouteOverlay2D::~RouteOverlay2D() {
+    if (m_view)
+        m_view->removeOverlay(this);
+}
+
+void RouteOverlay2D::setRoute(const QString& link, const QVector<qint64>& ways, const QString& label,
+                              bool preview) {
+    if (link == m_link && ways == m_ways && label == m_label && preview == m_preview)
+        return;
+    m_preview = preview;
+    m_link = link;
+    m_ways = ways;
+    m_label = label;
+    m_pathValid = false;
+    if (m_view)
+        m_view->update();
+}
+
+const QVector<QPointF>& RouteOverlay2D::path() const {
+    const quint64 rev = m_view ? m_view->siteMap().revision : 0;
+    if (!m_pathValid || rev != m_pathRevision) {
+        m_path =
+            m_view && !m_ways.isEmpty() ? routePath(m_view->siteMap(), m_link, m_ways) : QVector<QPointF>{};
+        m_pathRevision = rev;
+        m_pathValid = true;
+    }
+    return m_path;
+}
+
+QString RouteOverlay2D::destinationFeature() const {
+    return m_ways.isEmpty() ? QString()
+                            : m_link + QLatin1Char('/') + QString::number(std::llabs(m_ways.back()));
+}
+
+void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
+    const QVector<QPointF>& world = path();
+    if (world.isEmpty())
+        return;
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    // The destination area, outlined.
+    if (const MapFeature* dest = featureOf(view.siteMap(), destinationFeature());
+        dest && dest->kind == MapFeatureKind::Area) {
+        QPolygonF poly;
+        for (const auto& q : dest->points)
+            poly << view.worldToScreen(q);
+        p.setPen(QPen(QColor(0x6a, 0x1b, 0x9a), 3, Qt::DashLine));
+        p.setBrush(QColor(0x6a, 0x1b, 0x9a, 40));
+        p.drawPolygon(poly);
+    }
+    QPolygonF screen;
+    screen.reserve(world.size());
+    for (const auto& q : world)
+        screen << view.worldToScreen(q);
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(QColor(255, 255, 255, 220), 9, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    p.drawPolyline(screen);
+    p.setPen(QPen(QColor(0x8e, 0x24, 0xaa), 5, m_preview ? Qt::DashLine : Qt::SolidLine, Qt::RoundCap,
+                  Qt::RoundJoin));
+    p.drawPolyline(screen);
+    // Start dot and an arrowhead at the destination.
+    const QPointF end = screen.back();
+    p.setBrush(QColor(0x8e, 0x24, 0xaa));
+    p.setPen(QPen(Qt::white, 2));
+    p.drawEllipse(screen.front(), 5, 5);
+    if (screen.size() > 1) {
+        QPointF prev = screen[screen.size() - 2];
+        for (int i = int(screen.size()) - 2; i >= 0 && dist2(screen[i], end) < 4; --i)
+            prev = screen[i];
+        const double a = std::atan2(end.y() - prev.y(), end.x() - prev.x());
+        const double s = 14;
+        QPolygonF head;
+        head << end << end - QPointF(std::cos(a - 0.45) * s, std::sin(a - 0.45) * s)
+             << end - QPointF(std::cos(a + 0.45) * s, std::sin(a + 0.45) * s);
+        p.drawPolygon(head);
+    }
+    if (!m_label.isEmpty()) {
+        QFont f = p.font();
+        f.setBold(true);
+        p.setFont(f);
+        const QRectF box = QFontMetricsF(f).boundingRect(m_label).adjusted(-4, -2, 4, 2);
+        const QRectF at = box.translated(end + QPointF(10, -10) - box.bottomLeft());
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(0x4a, 0x14, 0x8c, 220));
+        p.drawRoundedRect(at, 3, 3);
+        p.setPen(Qt::white);
+        p.drawText(at, Qt::AlignCenter, m_label);
+    }
+    p.restore();
+}
+
+} // namespace ocu
