@@ -12,17 +12,21 @@
 #include "models/PassCountLayer.h"
 #include "models/SiteMapData.h"
 #include "protocols/common/GeoFrame.h"
+#include "widgets/MapLabelLayout.h"
+#include "widgets/MapSymbols.h"
 
 #include <QHash>
 #include <QImage>
 #include <QPointer>
 #include <QWidget>
 #include <deque>
+#include <memory>
 
 namespace ocu {
 
 class FleetModel;
 class FleetSelection;
+class MapBackground;
 
 class SiteMapView : public QWidget {
     Q_OBJECT
@@ -80,6 +84,42 @@ public:
     // Topmost machine under the pixel (footprint or 8 px pick radius), or empty.
     QString machineAt(QPointF px) const;
 
+    // ---- Issue 19 §2: navigation ----
+    void zoomToFleet();                        // every positioned machine (Home)
+    void zoomToSelection();                    // the selected machines (S); nothing selected: the fleet
+    bool zoomToArea(const QString& featureId); // a map feature (area, road) by id; false when unknown
+    QString areaAt(QPointF px) const;          // innermost area feature under the pixel, or empty
+    // Until the operator pans, zooms or centres, the view keeps fitting the site and every machine that
+    // appears outside it (start-up: machines arrive over seconds).
+    bool isAutoFitting() const { return m_autoFit; }
+    void refitIfAuto() {
+        if (m_autoFit)
+            fitToContent();
+    }
+    // Machines outside the view, shown as arrows at the edge (grouped per 32 px of edge).
+    struct EdgeIndicator {
+        QPointF pos;         // screen px, on the edge
+        double angleDeg = 0; // direction from the view centre to the machines (screen, 0 = right, clockwise)
+        int count = 0;
+        StatusCategory worst = StatusCategory::Ok;
+        QString firstId; // clicking the arrow centres on this machine
+    };
+    const QVector<EdgeIndicator>& edgeIndicators() const { return m_edges; }
+
+    // ---- Issue 19 §1: symbols and labels ----
+    // Labels placed in the last frame (machine names, road and area names), none overlapping another.
+    const QVector<MapLabelLayout::Placed>& labelPlacements() const { return m_labels.placed(); }
+    QString hoveredMachine() const { return m_hoverId; }
+    MapSymbolCache& symbolCache() { return m_symbols; }
+
+    // ---- Issue 19 §3: background raster ----
+    void setBackground(std::shared_ptr<const MapBackground> background);
+    std::shared_ptr<const MapBackground> background() const { return m_background; }
+    // Loads a GeoTIFF/MBTiles file off the GUI thread; ends in backgroundLoaded or backgroundFailed.
+    void loadBackground(const QString& path);
+    void setBackgroundVisible(bool visible);
+    bool isBackgroundVisible() const { return m_backgroundVisible; }
+
     // Draws the whole scene (what paintEvent does) into any painter, e.g. an offscreen QImage.
     void paintScene(QPainter& p, const QSize& size);
     // Frame statistics of the last paintScene (for benchmarks and the status bar).
@@ -99,6 +139,8 @@ signals:
     void machineActivated(const QString& id); // double click
     void contextMenuRequested(const QString& id, QPoint globalPos);
     void followChanged(bool follow);
+    void backgroundLoaded(const QString& path);
+    void backgroundFailed(const QString& message); // names the file and the reason
 
 protected:
     void paintEvent(QPaintEvent* e) override;
@@ -129,6 +171,29 @@ private:
     void drawCursor(QPainter& p, const QSize& size);
     QRectF visibleWorld(const QSize& size) const;
     void invalidateStatic() { m_staticValid = false; }
+    // Issue 19 (SiteMapViewSymbols.cpp).
+    struct MachineLabel {
+        QPointF centre;
+        double radius = 0; // half the symbol's larger side (px)
+        int priority = 0;
+        int row = 0;
+    };
+    struct MapLabelCandidate {
+        QVector<QPair<QPointF, double>> spots; // centre (px) and angle (deg), tried in order
+        QString text;
+        MapLabelLayout::Kind kind = MapLabelLayout::Kind::Road;
+        QColor colour;
+        int priority = 0;
+    };
+    void collectMapLabels(const QSize& size);
+    void layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<MachineLabel>& machines);
+    void drawEdgeIndicators(QPainter& p);
+    void drawHoverCard(QPainter& p, const QSize& size);
+    QImage labelImage(const QString& text, MapLabelLayout::Kind kind, const QColor& colour, qreal dpr);
+    QRectF legendRect(const QSize& size) const;
+    void userTookOver() { m_autoFit = false; }
+    bool clickEdgeIndicator(QPointF px);
+    void drawBackgroundRaster(QPainter& p, const QSize& size);
 
     QPointer<FleetModel> m_fleet;
     QPointer<FleetSelection> m_selection;
@@ -168,6 +233,18 @@ private:
     QPointF m_dragLast;
     QPointF m_cursorPx{-1, -1};
     FrameStats m_stats;
+
+    // Issue 19.
+    bool m_autoFit = true;
+    MapSymbolCache m_symbols;
+    MapLabelLayout m_labels;
+    QVector<MapLabelCandidate> m_mapLabels; // of the static layer's view
+    QHash<QString, QImage> m_labelImages;
+    QVector<EdgeIndicator> m_edges;
+    QString m_hoverId;
+    std::shared_ptr<const MapBackground> m_background;
+    bool m_backgroundVisible = true;
+    quint64 m_backgroundRequest = 0;
 };
 
 } // namespace ocu

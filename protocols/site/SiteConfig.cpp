@@ -2,12 +2,23 @@
 
 #include <boost/asio/ip/address_v4.hpp>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace ocu {
 
-static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
+// A relative path in the configuration names a file next to the configuration file (not the working folder).
+static std::string resolveSitePath(const std::string& path, const std::string& configFile) {
+    if (path.empty() || configFile.empty() || configFile.rfind(":/", 0) == 0)
+        return path;
+    const std::filesystem::path p(path);
+    if (p.is_absolute())
+        return path;
+    return (std::filesystem::path(configFile).parent_path() / p).lexically_normal().string();
+}
+
+static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, const std::string& fileName) {
     SiteConfig cfg;
     ConfigObject root(doc, "", errors);
     if (!root.valid())
@@ -79,6 +90,14 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
         }
         t->finish();
     }
+    if (auto b = root.object("background")) {
+        cfg.background.raster = resolveSitePath(b->string("raster", cfg.background.raster), fileName);
+        b->finish();
+    }
+    if (auto t = root.object("terrain")) {
+        cfg.terrain.dem = resolveSitePath(t->string("dem", cfg.terrain.dem), fileName);
+        t->finish();
+    }
 #ifdef OCU_SITE_HAVE_JAUS
     if (auto s = root.object("jaus"))
         cfg.jaus = jaus::parseJausConfig(*s);
@@ -107,7 +126,7 @@ Result<SiteConfig> parseSiteConfig(std::string_view text, const std::string& fil
     if (!doc)
         return Error{doc.error()};
     ConfigErrors errors;
-    SiteConfig cfg = readSite(*doc, errors);
+    SiteConfig cfg = readSite(*doc, errors, fileName);
     if (!errors.empty())
         return Error{errors.joined()};
     return cfg;

@@ -65,6 +65,15 @@ struct TeleopInputConfig {
     double deadZone = 0.12;
 };
 
+// Issue 19 §3/§4: the 2D map's background raster (GeoTIFF or .mbtiles) and the 3D view's terrain (a GeoTIFF
+// DEM). Relative paths are resolved against the configuration file's folder; empty = none.
+struct MapBackgroundConfig {
+    std::string raster;
+};
+struct TerrainConfig {
+    std::string dem;
+};
+
 struct SiteConfig {
     std::string name = "Unnamed site";
     GeoPoint origin;
@@ -72,6 +81,8 @@ struct SiteConfig {
     FleetConfig fleet;
     OwnPositionConfig ownPosition;
     TeleopInputConfig teleop;
+    MapBackgroundConfig background;
+    TerrainConfig terrain;
 #ifdef OCU_SITE_HAVE_JAUS
     std::optional<jaus::JausConfig> jaus;
 #endif
