@@ -292,8 +292,11 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     m_edges.clear();
     if (m_layers & LayerMachines)
         drawMachines(p, world);
-    else
+    else {
         m_labels.reset(QRectF(QPointF(0, 0), QSizeF(size)));
+        QVector<MachineLabel> none;
+        layoutAndDrawLabels(p, size, none); // road and area names
+    }
     if (m_layers & LayerMachines)
         drawEdgeIndicators(p);
     if (m_layers & LayerOwnPosition)

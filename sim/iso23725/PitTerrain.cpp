@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <gdal.h>
-#include <gdal_utils.h>
 #include <mutex>
 #include <ogr_srs_api.h>
 #include <unistd.h>
@@ -164,7 +163,7 @@ double PitTerrainModel::up(double e, double n) const {
 
 std::string defaultPitTerrainDir(const PitLayout& layout) {
     char name[160];
-    std::snprintf(name, sizeof name, "ocu-pit-terrain-v1_%.6f_%.6f_%.1f_%d_%d", layout.origin.lat,
+    std::snprintf(name, sizeof name, "ocu-pit-terrain-v2_%.6f_%.6f_%.1f_%d_%d", layout.origin.lat,
                   layout.origin.lon, layout.origin.alt, layout.shovels, layout.dumps);
     std::error_code ec;
     std::filesystem::path tmp = std::filesystem::temp_directory_path(ec);
@@ -240,17 +239,43 @@ PitTerrainFiles writePitTerrain(const PitMap& pit, const GeoPoint& origin, const
     GDALSetMetadataItem(ds, "TIFFTAG_IMAGEDESCRIPTION",
                         "OCU simulated open pit: ground height above the WGS84 ellipsoid (m)", nullptr);
     GDALSetRasterUnitType(band, "m");
-    // The hillshade: light from the north-west, high sun, so flat ground stays light under the map.
-    const char* hsArgs[] = {
-        "-of",  "GTiff", "-az", "315", "-alt", "55", "-z", "1.5", "-compute_edges", "-co", "COMPRESS=DEFLATE",
-        nullptr};
-    GDALDEMProcessingOptions* hsOpts = GDALDEMProcessingOptionsNew(const_cast<char**>(hsArgs), nullptr);
+    // The hillshade (Horn's gradient, light from the north-west at 55°), compressed towards white so that it
+    // sits under the map's roads and symbols as a light relief: flat ground ~234, faces away from the light
+    // down to ~140, faces towards it up to 255.
+    std::vector<unsigned char> shade(z.size());
+    const double az = 315 * M_PI / 180, zen = (90 - 55) * M_PI / 180;
+    auto at = [&](int c, int r) {
+        c = std::clamp(c, 0, cols - 1);
+        r = std::clamp(r, 0, rows - 1);
+        return double(z[std::size_t(r) * std::size_t(cols) + std::size_t(c)]);
+    };
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            const double dzdx = ((at(c + 1, r - 1) + 2 * at(c + 1, r) + at(c + 1, r + 1)) -
+                                 (at(c - 1, r - 1) + 2 * at(c - 1, r) + at(c - 1, r + 1))) /
+                                (8 * cellM);
+            const double dzdy = ((at(c - 1, r + 1) + 2 * at(c, r + 1) + at(c + 1, r + 1)) -
+                                 (at(c - 1, r - 1) + 2 * at(c, r - 1) + at(c + 1, r - 1))) /
+                                (8 * cellM); // towards the south (rows grow southwards)
+            const double slope = std::atan(std::hypot(dzdx, dzdy));
+            const double aspect = std::atan2(dzdy, -dzdx);
+            const double lit =
+                std::max(0.0, std::cos(zen) * std::cos(slope) +
+                                  std::sin(zen) * std::sin(slope) * std::cos(az - M_PI / 2 - aspect));
+            shade[std::size_t(r) * std::size_t(cols) + std::size_t(c)] =
+                static_cast<unsigned char>(std::clamp(255.0 - 0.45 * (255.0 - 255.0 * lit), 0.0, 255.0));
+        }
     GDALDatasetH hs =
-        ok ? GDALDEMProcessing(hsTmp.c_str(), ds, "hillshade", nullptr, hsOpts, nullptr) : nullptr;
-    GDALDEMProcessingOptionsFree(hsOpts);
-    ok = ok && hs;
-    if (hs)
+        ok ? GDALCreate(gtiff, hsTmp.c_str(), cols, rows, 1, GDT_Byte, const_cast<char**>(co)) : nullptr;
+    if (hs) {
+        GDALSetGeoTransform(hs, gt);
+        GDALSetProjection(hs, GDALGetProjectionRef(ds));
+        ok = GDALRasterIO(GDALGetRasterBand(hs, 1), GF_Write, 0, 0, cols, rows, shade.data(), cols, rows,
+                          GDT_Byte, 0, 0) == CE_None;
         GDALClose(hs);
+    } else {
+        ok = false;
+    }
     GDALClose(ds);
     if (!ok) {
         out.error = std::string("writing the pit terrain failed: ") + CPLGetLastErrorMsg();
