@@ -149,8 +149,10 @@ void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
                      : m.control == ControlState::ControlledByMe ? SymbolRing::ControlledByMe
                                                                  : SymbolRing::None;
         m_symbols.draw(p, c, fp, m.headingDeg, style, dpr);
-        labels.push_back({c, radius + (style.ring != SymbolRing::None ? 4 : 0),
-                          labelPriority(m, status, isCurrent, selected), i});
+        // The label keeps clear of the state ring and of the selection ring.
+        const double clear = selected ? std::hypot(fp.width(), fp.height()) / 2 + 9
+                                      : radius + (style.ring != SymbolRing::None ? 4 : 0);
+        labels.push_back({c, clear, labelPriority(m, status, isCurrent, selected), i});
     }
     // Selection highlight on top of the symbols: a yellow (current) or white ring with a dark edge.
     p.setRenderHint(QPainter::Antialiasing, true);
