@@ -230,9 +230,12 @@ void MainWindow::createMenus() {
             this, tr("Keyboard shortcuts"),
             tr("F12 or Ctrl+Shift+Space: STOP ALL\n"
                "Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop\n"
-               "Site map: arrows pan, +/- zoom, F follow the selected machine\n"
                "Dispatch: F6 next truck needing work, Alt+T task, Alt+D destination, Alt+M pick on map, "
                "Ctrl+Enter assign, Alt+R reset\n"
+               "Site map: arrows pan, +/- or wheel zoom (about the cursor), F follow the selected machine, "
+               "Home whole site, Shift+Home the fleet, S the selection, A the area under the cursor, C "
+               "centre; "
+               "double-click selects; click an edge arrow to go to machines outside the view\n"
                "Ctrl+Shift+N: night palette\nCtrl+Shift+P: save a screenshot"));
     });
     QAction* about = help->addAction(tr("&About"));

@@ -238,8 +238,18 @@ void SiteRuntime::populate(MainWindow& window) {
     connect(list, &FleetListWidget::centerOnMapRequested, map, &SiteMapView::centerOnMachine);
     connect(map, &SiteMapView::contextMenuRequested, list, &FleetListWidget::showContextMenu);
     connect(d.own, &OwnPosition::fixChanged, map, &SiteMapView::setOwnFix);
-    // Frame the whole site once the first machines have arrived.
-    QTimer::singleShot(1500, map, [map] { map->fitToContent(); });
+    // Frame the whole site once the first machines have arrived (unless the operator has taken over).
+    QTimer::singleShot(1500, map, [map] { map->refitIfAuto(); });
+    // Issue 19 §3: the background raster named by the site (the simulated pit's hillshade by default).
+    if (!m_config.background.raster.empty()) {
+        connect(map, &SiteMapView::backgroundFailed, this, [this](const QString& msg) {
+            qCWarning(lcApp).noquote() << "map background:" << msg;
+            m_impl->ctx->alarms()->add(makeEvent(EventSeverity::Warning, EventKind::Info, {},
+                                                 tr("Map background not shown: %1").arg(msg),
+                                                 QStringLiteral("gui")));
+        });
+        map->loadBackground(QString::fromStdString(m_config.background.raster));
+    }
 
 #ifdef OCU_HAVE_OCU_VIEW3D
     auto* view3d = new Site3DView;
@@ -274,7 +284,7 @@ void SiteRuntime::populate(MainWindow& window) {
 #ifdef OCU_HAVE_OCU_VIEW3D
             static_cast<Site3DFeed*>(feed)->setSiteMap(m);
 #endif
-            map->fitToContent();
+            map->refitIfAuto();
         });
         connect(b, &FleetBridge::passCountChanged, map, [map, passPanel, feed] {
             map->passCountChanged();

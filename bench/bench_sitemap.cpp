@@ -8,12 +8,17 @@
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/PassCountLayer.h"
+#ifdef OCU_BENCH_HAVE_PIT
+#include "sim/iso23725/PitTerrain.h"
+#endif
+#include "widgets/MapBackground.h"
 #include "widgets/SiteMapView.h"
 
 #include <QApplication>
 #include <QImage>
 #include <QPainter>
 #include <QRandomGenerator>
+#include <QTemporaryDir>
 #include <benchmark/benchmark.h>
 #include <cmath>
 #include <memory>
@@ -160,6 +165,129 @@ static void BM_PassCountRecolour(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_PassCountRecolour)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+#ifdef OCU_BENCH_HAVE_PIT
+// Issue 19 §7: the simulated pit as an operator sees it at 1920x1080 — 1,000 haul trucks (SVG symbols at the
+// minimum legible size, decluttered name labels, trails), the pit's roads and areas with their names, and the
+// pit's hillshade as background raster (GDAL-warped tile pyramid).
+//  * BM_FullRepaintSite: view changed every frame, so the static layer (background tiles, roads, areas) is
+//    redrawn too: what a pan or zoom costs. Budget 16 ms, aim 8 ms.
+//  * BM_FrameSite: trucks moved, static layer cached (the 10 Hz case).
+namespace {
+struct SiteScene {
+    FleetModel fleet;
+    FleetSelection selection{&fleet};
+    SiteMapView view;
+    QImage target{1920, 1080, QImage::Format_ARGB32_Premultiplied};
+    QVector<MachineState> machines;
+    QTemporaryDir dir;
+    int labelsPlaced = 0;
+
+    SiteScene() {
+        fleet.setRefreshIntervalMs(0);
+        const ocu::sim::PitLayout layout{2, 2, {48.2085, 11.4702, 480.0}};
+        const ocu::sim::PitMap pit = ocu::sim::generatePitMap(layout, 0);
+        const auto files = ocu::sim::writePitTerrain(pit, layout.origin, dir.path().toStdString());
+        if (!files.error.empty())
+            qFatal("pit terrain: %s", files.error.c_str());
+        const auto bg = MapBackground::load(QString::fromStdString(files.hillshade), GeoFrame(layout.origin));
+        if (!bg.background)
+            qFatal("background: %s", qPrintable(bg.error));
+        SiteMapData map;
+        for (const auto& [id, way] : pit.map.ways) {
+            MapFeature f;
+            f.id = QString::number(id);
+            f.name = QString::fromStdString(way.name());
+            f.kind = way.kind == ocu::iso23725::WayKind::Area   ? MapFeatureKind::Area
+                     : way.kind == ocu::iso23725::WayKind::Lane ? MapFeatureKind::Lane
+                                                                : MapFeatureKind::Road;
+            f.defaultTask = QString::fromStdString(way.defaultTask()).toLower();
+            f.width = f.kind == MapFeatureKind::Area ? 0 : 12;
+            for (auto n : way.nodes)
+                f.points.push_back({pit.map.nodes.at(n).enu.e, pit.map.nodes.at(n).enu.n});
+            map.features.push_back(f);
+        }
+        QRandomGenerator rng(19);
+        for (int i = 0; i < 1000; ++i) {
+            MachineState m;
+            m.id = QStringLiteral("iso23725:T%1").arg(i, 4, 10, QLatin1Char('0'));
+            m.protocol = Protocol::Iso23725;
+            m.name = QStringLiteral("HT%1").arg(i, 4, 10, QLatin1Char('0'));
+            m.type = QStringLiteral("haul truck");
+            m.link = LinkState::Up;
+            m.hasPosition = true;
+            m.e = rng.bounded(1100.0) - 550;
+            m.n = rng.bounded(1100.0) - 650;
+            m.headingDeg = rng.bounded(360.0);
+            m.length = 12;
+            m.width = 7;
+            m.stop = i % 50 == 0 ? StopState::Stopped : StopState::None;
+            m.mode = ModeCategory::Autonomous;
+            m.health = i % 97 == 0 ? HealthLevel::Fault : HealthLevel::Ok;
+            machines.push_back(m);
+        }
+        view.resize(1920, 1080);
+        view.setFleet(&fleet, &selection);
+        view.setGeoFrame(GeoFrame(layout.origin));
+        view.setSiteMap(map);
+        view.setBackground(bg.background);
+        for (int k = 0; k < 125; ++k)
+            move(1.5);
+        selection.setCurrent(machines[500].id);
+        view.setView({0, -150}, 1080.0 / 1250.0); // the pit and its dumps on screen
+    }
+    void move(double metres) {
+        for (MachineState& m : machines) {
+            const double h = m.headingDeg * M_PI / 180;
+            m.e += std::sin(h) * metres;
+            m.n += std::cos(h) * metres;
+            if (std::abs(m.e) > 550 || m.n > 450 || m.n < -750)
+                m.headingDeg = std::fmod(m.headingDeg + 180, 360);
+        }
+        fleet.upsert(machines);
+    }
+    void paint() {
+        QPainter p(&target);
+        view.paintScene(p, target.size());
+        labelsPlaced = int(view.labelPlacements().size());
+    }
+};
+
+SiteScene& siteScene() {
+    static SiteScene s;
+    return s;
+}
+} // namespace
+
+static void BM_FullRepaintSite(benchmark::State& state) {
+    SiteScene& s = siteScene();
+    s.paint(); // symbol and label caches warm, as after the first second on screen
+    double jitter = 0;
+    for (auto _ : state) {
+        jitter = jitter == 0 ? 1e-6 : 0;
+        s.view.setView({jitter, -150}, 1080.0 / 1250.0);
+        s.paint();
+        if (!s.view.lastFrame().staticRebuilt)
+            state.SkipWithError("static layer was not rebuilt");
+    }
+    state.counters["machines"] = s.view.lastFrame().machinesDrawn;
+    state.counters["labels"] = s.labelsPlaced;
+}
+BENCHMARK(BM_FullRepaintSite)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+static void BM_FrameSite(benchmark::State& state) {
+    SiteScene& s = siteScene();
+    s.paint();
+    for (auto _ : state) {
+        state.PauseTiming();
+        s.move(0.3);
+        state.ResumeTiming();
+        s.paint();
+    }
+    state.counters["labels"] = s.labelsPlaced;
+}
+BENCHMARK(BM_FrameSite)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+#endif
 
 int main(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))

@@ -19,26 +19,7 @@ constexpr double kMinScale = 0.005; // px/m: 200 km across 1000 px
 constexpr double kMaxScale = 200.0; // px/m: 5 m across 1000 px
 constexpr double kDefaultLength = 4.0;
 constexpr double kDefaultWidth = 2.0;
-
-QChar typeGlyph(const QString& type) {
-    const QString t = type.toLower();
-    if (t.contains(QLatin1String("truck")) || t.contains(QLatin1String("haul")))
-        return QLatin1Char('T');
-    if (t.contains(QLatin1String("ugv")) || t.contains(QLatin1String("robot")))
-        return QLatin1Char('U');
-    if (t.contains(QLatin1String("roller")) || t.contains(QLatin1String("compact")))
-        return QLatin1Char('R');
-    if (t.contains(QLatin1String("paver")))
-        return QLatin1Char('P');
-    if (t.contains(QLatin1String("dozer")))
-        return QLatin1Char('D');
-    if (t.contains(QLatin1String("loader")) || t.contains(QLatin1String("excavator")) ||
-        t.contains(QLatin1String("shovel")))
-        return QLatin1Char('L');
-    if (t.contains(QLatin1String("light")) || t.contains(QLatin1String("vehicle")))
-        return QLatin1Char('V');
-    return t.isEmpty() ? QLatin1Char('?') : t.at(0).toUpper();
-}
+constexpr double kFitRadius = 50000.0; // m from the site origin: machines beyond are not fitted
 
 double niceLength(double metres) {
     const double p = std::pow(10.0, std::floor(std::log10(metres)));
@@ -187,6 +168,7 @@ void SiteMapView::zoomBy(double factor, QPointF anchorPx) {
 }
 
 void SiteMapView::panByPixels(QPointF delta) {
+    userTookOver();
     if (m_follow)
         setFollow(false); // a manual pan ends following
     m_center += QPointF(-delta.x() / m_scale, delta.y() / m_scale);
@@ -198,6 +180,7 @@ void SiteMapView::centerOnMachine(const QString& id) {
     const MachineState* m = m_fleet ? m_fleet->machine(id) : nullptr;
     if (!m || !m->hasPosition)
         return;
+    userTookOver();
     setView({m->e, m->n}, m_scale);
 }
 
@@ -206,7 +189,9 @@ void SiteMapView::fitToContent() {
     if (m_fleet) {
         for (int i = 0; i < m_fleet->rowCount(); ++i) {
             const MachineState& m = m_fleet->machineAt(i);
-            if (m.hasPosition)
+            // A machine reporting a position far off the site (no fix yet: 0°/0°) must not shrink the site
+            // to a dot.
+            if (m.hasPosition && std::abs(m.e) < kFitRadius && std::abs(m.n) < kFitRadius)
                 r = r.isNull() ? QRectF(m.e - 5, m.n - 5, 10, 10)
                                : r.united(QRectF(m.e - 5, m.n - 5, 10, 10));
         }
@@ -226,6 +211,8 @@ void SiteMapView::setFollow(bool follow) {
     if (m_follow == follow)
         return;
     m_follow = follow;
+    if (follow)
+        userTookOver();
     emit followChanged(follow);
     followCurrent();
 }
@@ -259,6 +246,20 @@ void SiteMapView::onMachinesChanged(const QStringList& ids) {
         }
     }
     followCurrent();
+    if (m_autoFit && !m_follow && m_fleet) {
+        // Start-up: keep every machine in view until the operator takes over.
+        const QRectF world = visibleWorld(m_viewSize);
+        const QRectF inner = world.adjusted(world.width() * 0.03, world.height() * 0.03,
+                                            -world.width() * 0.03, -world.height() * 0.03);
+        for (const QString& id : ids) {
+            const MachineState* m = m_fleet->machine(id);
+            if (m && m->hasPosition && std::abs(m->e) < kFitRadius && std::abs(m->n) < kFitRadius &&
+                !inner.contains(m->e, m->n)) {
+                fitToContent();
+                break;
+            }
+        }
+    }
     update();
 }
 
@@ -290,8 +291,16 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
         drawTrails(p, world);
     for (SiteMapOverlay* o : std::as_const(m_overlays))
         o->paintOverlay(p, *this);
+    m_edges.clear();
     if (m_layers & LayerMachines)
         drawMachines(p, world);
+    else {
+        m_labels.reset(QRectF(QPointF(0, 0), QSizeF(size)));
+        QVector<MachineLabel> none;
+        layoutAndDrawLabels(p, size, none); // road and area names
+    }
+    if (m_layers & LayerMachines)
+        drawEdgeIndicators(p);
     if (m_layers & LayerOwnPosition)
         drawOwnPosition(p);
     if ((m_layers & LayerLegend) && (m_layers & LayerPassCount) && m_pass)
@@ -302,6 +311,7 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
         drawNorthArrow(p, size);
     if (m_layers & LayerCursor)
         drawCursor(p, size);
+    drawHoverCard(p, size);
 }
 
 void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
@@ -327,6 +337,8 @@ void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
 void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
     const QRectF world = visibleWorld(size);
     const bool passCounts = (m_layers & LayerPassCount) && m_pass;
+    m_mapLabels.clear();
+    drawBackgroundRaster(p, size);
     if (!(m_layers & LayerMap)) {
         if (passCounts)
             drawPassCount(p, size);
@@ -387,27 +399,10 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
         p.setBrush(Qt::NoBrush);
     }
     m_stats.featuresDrawn = drawn;
-    // Names only when they can be read: not with thousands of features on screen.
-    if (!(m_layers & LayerMapNames) || visible > 400)
-        return;
-    p.setRenderHint(QPainter::Antialiasing, true);
-    QFont font = p.font();
-    font.setPointSizeF(8);
-    p.setFont(font);
-    const QFontMetrics fm(font);
-    p.setPen(QColor(0x33, 0x33, 0x33));
-    for (int i = 0; i < m_map.features.size(); ++i) {
-        const MapFeature& f = m_map.features[i];
-        const QRectF& b = m_featureBounds[i];
-        if (f.name.isEmpty() || !world.intersects(b))
-            continue;
-        const double extentPx = std::max(b.width(), b.height()) * s;
-        if (extentPx < fm.horizontalAdvance(f.name) + 20)
-            continue; // too small on screen to carry its name
-        const QPointF at =
-            f.kind == MapFeatureKind::Area ? toPx(b.center()) : toPx(f.points[f.points.size() / 2]);
-        p.drawText(at + QPointF(-fm.horizontalAdvance(f.name) / 2.0, fm.ascent() / 2.0), f.name);
-    }
+    // Names only when they can be read (not with thousands of features on screen); placed per frame
+    // together with the machine labels so that none overlaps another (SiteMapViewSymbols.cpp).
+    if ((m_layers & LayerMapNames) && visible <= 400)
+        collectMapLabels(size);
 }
 
 void SiteMapView::rebuildPassImage() {
@@ -493,79 +488,6 @@ void SiteMapView::drawTrails(QPainter& p, const QRectF& world) {
             p.drawPolyline(poly);
     }
     p.setRenderHint(QPainter::Antialiasing, true);
-}
-
-void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
-    if (!m_fleet)
-        return;
-    const int n = m_fleet->rowCount();
-    const double s = m_scale;
-    const double cx = m_viewSize.width() / 2.0, cy = m_viewSize.height() / 2.0;
-    const QRectF grown = world.adjusted(-30, -30, 30, 30);
-    const QString current = m_selection ? m_selection->currentId() : QString();
-    const bool labels = (m_layers & LayerLabels) != 0;
-    QFont font = p.font();
-    font.setPointSizeF(8);
-    font.setBold(true);
-    p.setFont(font);
-    QPolygonF shape(5);
-    int drawn = 0;
-    QVector<int> highlighted;
-    for (int i = 0; i < n; ++i) {
-        const MachineState& m = m_fleet->machineAt(i);
-        if (!m.hasPosition || !grown.contains(m.e, m.n))
-            continue;
-        ++drawn;
-        const QColor fill = statusColor(m_fleet->statusAt(i));
-        const QPointF c(cx + (m.e - m_center.x()) * s, cy - (m.n - m_center.y()) * s);
-        const double len = (m.length > 0 ? m.length : kDefaultLength) * s;
-        const double wid = (m.width > 0 ? m.width : kDefaultWidth) * s;
-        const bool selected = m_selection && (m.id == current || m_selection->isSelected(m.id));
-        if (selected)
-            highlighted.push_back(i);
-        if (len < 4.0) {
-            // Level of detail: a 5 px square (orientation is not readable at this size anyway).
-            p.fillRect(QRectF(c.x() - 2.5, c.y() - 2.5, 5, 5), fill);
-            continue;
-        }
-        // Oriented footprint with a pointed front (heading 0 = north, clockwise); screen y points down.
-        const double h = m.headingDeg * std::numbers::pi / 180.0;
-        const QPointF fwd(std::sin(h), -std::cos(h));
-        const QPointF right(std::cos(h), std::sin(h));
-        const QPointF f = fwd * (len / 2), r = right * (wid / 2),
-                      nose = fwd * (len / 2 - std::min(len, wid) * 0.35);
-        shape[0] = c + f;
-        shape[1] = c + nose + r;
-        shape[2] = c - f + r;
-        shape[3] = c - f - r;
-        shape[4] = c + nose - r;
-        p.setPen(QPen(fill.darker(170), 0));
-        p.setBrush(fill);
-        p.drawPolygon(shape);
-        if (len >= 16.0) {
-            p.setPen(Qt::white);
-            p.drawText(QRectF(c.x() - 8, c.y() - 8, 16, 16), Qt::AlignCenter, QString(typeGlyph(m.type)));
-        }
-        // Labels cost ~10 µs each: only when machines are large on screen, or for the selected ones.
-        if (labels && (len >= 24.0 || (selected && len >= 6.0))) {
-            p.setPen(QColor(0x20, 0x20, 0x20));
-            p.drawText(c + QPointF(std::max(len, wid) / 2 + 4, 4), m.name.isEmpty() ? m.id : m.name);
-        }
-    }
-    p.setBrush(Qt::NoBrush);
-    // Selection rings on top of everything else.
-    for (int i : highlighted) {
-        const MachineState& m = m_fleet->machineAt(i);
-        const QPointF c = worldToScreen({m.e, m.n});
-        const double rad = std::max(
-            8.0, std::max(m.length > 0 ? m.length : kDefaultLength, m.width > 0 ? m.width : kDefaultWidth) *
-                     s * 0.7);
-        p.setPen(QPen(m.id == current ? QColor(0xff, 0xd7, 0x00) : QColor(0xff, 0xff, 0xff), 2));
-        p.drawEllipse(c, rad, rad);
-        p.setPen(QPen(Qt::black, 0));
-        p.drawEllipse(c, rad + 1.5, rad + 1.5);
-    }
-    m_stats.machinesDrawn = drawn;
 }
 
 void SiteMapView::drawOwnPosition(QPainter& p) {
@@ -680,9 +602,9 @@ QString SiteMapView::machineAt(QPointF px) const {
         if (!m.hasPosition)
             continue;
         const QPointF c = worldToScreen({m.e, m.n});
-        const double half =
-            std::max(m.length > 0 ? m.length : kDefaultLength, m.width > 0 ? m.width : kDefaultWidth) *
-            m_scale / 2;
+        const QSizeF fp = MapSymbolCache::footprintPx(m.length > 0 ? m.length : kDefaultLength,
+                                                      m.width > 0 ? m.width : kDefaultWidth, m_scale);
+        const double half = std::max(fp.width(), fp.height()) / 2;
         const double d = std::max(0.0, std::hypot(c.x() - px.x(), c.y() - px.y()) - half);
         if (d <= bestD) {
             bestD = d;
@@ -713,7 +635,10 @@ void SiteMapView::mouseMoveEvent(QMouseEvent* e) {
     const QPointF w = screenToWorld(m_cursorPx);
     const GeoPoint g = m_frame.toGeodetic({w.x(), w.y(), 0});
     emit cursorMoved(w, g.lat, g.lon);
-    if (m_layers & LayerCursor)
+    const QString hover = m_dragging ? QString() : machineAt(m_cursorPx);
+    const bool hoverChanged = hover != m_hoverId;
+    m_hoverId = hover;
+    if ((m_layers & LayerCursor) || hoverChanged || !m_hoverId.isEmpty())
         update();
 }
 
@@ -725,6 +650,8 @@ void SiteMapView::mouseReleaseEvent(QMouseEvent* e) {
             emit areaClicked(area);
         return;
     }
+    if (click && clickEdgeIndicator(e->position()))
+        return;
     if (!click || !m_selection)
         return;
     const QString id = machineAt(e->position());
@@ -755,16 +682,9 @@ void SiteMapView::setAreaPicking(bool on) {
         unsetCursor();
 }
 
-QString SiteMapView::areaAt(QPointF px) const {
-    const QPointF w = screenToWorld(px);
-    for (auto it = m_map.features.crbegin(); it != m_map.features.crend(); ++it)
-        if (it->kind == MapFeatureKind::Area && QPolygonF(it->points).containsPoint(w, Qt::OddEvenFill))
-            return it->id;
-    return {};
-}
-
 void SiteMapView::mouseDoubleClickEvent(QMouseEvent* e) {
     const QString id = machineAt(e->position());
+    userTookOver();
     if (id.isEmpty()) {
         zoomBy(2.0, e->position());
         return;
@@ -777,14 +697,25 @@ void SiteMapView::mouseDoubleClickEvent(QMouseEvent* e) {
 
 void SiteMapView::wheelEvent(QWheelEvent* e) {
     const double steps = e->angleDelta().y() / 120.0;
-    if (steps != 0)
+    if (steps != 0) {
+        userTookOver();
         zoomBy(std::pow(1.25, steps), e->position());
+    }
     e->accept();
 }
 
 void SiteMapView::keyPressEvent(QKeyEvent* e) {
     const double step = 80.0;
-    switch (e->key()) {
+    switch (e->key()) { // every key here is an operator taking over the view
+    case Qt::Key_S:
+        zoomToSelection();
+        break;
+    case Qt::Key_A:
+        if (!zoomToArea(areaAt(m_cursorPx.x() >= 0
+                                   ? m_cursorPx
+                                   : QPointF(m_viewSize.width() / 2.0, m_viewSize.height() / 2.0))))
+            QWidget::keyPressEvent(e);
+        break;
     case Qt::Key_Left:
         panByPixels({step, 0});
         break;
@@ -799,14 +730,20 @@ void SiteMapView::keyPressEvent(QKeyEvent* e) {
         break;
     case Qt::Key_Plus:
     case Qt::Key_Equal:
+        userTookOver();
         zoomBy(1.5, QPointF(m_viewSize.width() / 2.0, m_viewSize.height() / 2.0));
         break;
     case Qt::Key_Minus:
+        userTookOver();
         zoomBy(1 / 1.5, QPointF(m_viewSize.width() / 2.0, m_viewSize.height() / 2.0));
         break;
     case Qt::Key_Home:
         setFollow(false);
-        fitToContent();
+        userTookOver();
+        if (e->modifiers() & Qt::ShiftModifier)
+            zoomToFleet();
+        else
+            fitToContent();
         break;
     case Qt::Key_F:
         setFollow(!m_follow);
@@ -835,6 +772,7 @@ void SiteMapView::contextMenuEvent(QContextMenuEvent* e) {
 
 void SiteMapView::leaveEvent(QEvent*) {
     m_cursorPx = {-1, -1};
+    m_hoverId.clear();
     update();
 }
 

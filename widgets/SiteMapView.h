@@ -12,12 +12,15 @@
 #include "models/PassCountLayer.h"
 #include "models/SiteMapData.h"
 #include "protocols/common/GeoFrame.h"
+#include "widgets/MapLabelLayout.h"
+#include "widgets/MapSymbols.h"
 
 #include <QHash>
 #include <QImage>
 #include <QPointer>
 #include <QWidget>
 #include <deque>
+#include <memory>
 
 namespace ocu {
 
@@ -31,6 +34,7 @@ public:
     virtual ~SiteMapOverlay() = default;
     virtual void paintOverlay(QPainter& p, const SiteMapView& view) = 0;
 };
+class MapBackground;
 
 class SiteMapView : public QWidget {
     Q_OBJECT
@@ -88,6 +92,42 @@ public:
     // Topmost machine under the pixel (footprint or 8 px pick radius), or empty.
     QString machineAt(QPointF px) const;
 
+    // ---- Issue 19 §2: navigation ----
+    void zoomToFleet();                        // every positioned machine (Home)
+    void zoomToSelection();                    // the selected machines (S); nothing selected: the fleet
+    bool zoomToArea(const QString& featureId); // a map feature (area, road) by id; false when unknown
+    QString areaAt(QPointF px) const;          // innermost area feature under the pixel, or empty
+    // Until the operator pans, zooms or centres, the view keeps fitting the site and every machine that
+    // appears outside it (start-up: machines arrive over seconds).
+    bool isAutoFitting() const { return m_autoFit; }
+    void refitIfAuto() {
+        if (m_autoFit)
+            fitToContent();
+    }
+    // Machines outside the view, shown as arrows at the edge (grouped per 32 px of edge).
+    struct EdgeIndicator {
+        QPointF pos;         // screen px, on the edge
+        double angleDeg = 0; // direction from the view centre to the machines (screen, 0 = right, clockwise)
+        int count = 0;
+        StatusCategory worst = StatusCategory::Ok;
+        QString firstId; // clicking the arrow centres on this machine
+    };
+    const QVector<EdgeIndicator>& edgeIndicators() const { return m_edges; }
+
+    // ---- Issue 19 §1: symbols and labels ----
+    // Labels placed in the last frame (machine names, road and area names), none overlapping another.
+    const QVector<MapLabelLayout::Placed>& labelPlacements() const { return m_labels.placed(); }
+    QString hoveredMachine() const { return m_hoverId; }
+    MapSymbolCache& symbolCache() { return m_symbols; }
+
+    // ---- Issue 19 §3: background raster ----
+    void setBackground(std::shared_ptr<const MapBackground> background);
+    std::shared_ptr<const MapBackground> background() const { return m_background; }
+    // Loads a GeoTIFF/MBTiles file off the GUI thread; ends in backgroundLoaded or backgroundFailed.
+    void loadBackground(const QString& path);
+    void setBackgroundVisible(bool visible);
+    bool isBackgroundVisible() const { return m_backgroundVisible; }
+
     // Draws the whole scene (what paintEvent does) into any painter, e.g. an offscreen QImage.
     void paintScene(QPainter& p, const QSize& size);
     // Overlays (not owned; remove before deleting), drawn in order after the trails.
@@ -96,7 +136,6 @@ public:
     // While on, a left click on a map area emits areaClicked and leaves the selection alone.
     void setAreaPicking(bool on);
     bool isAreaPicking() const { return m_areaPicking; }
-    QString areaAt(QPointF px) const; // id of the topmost area feature under the pixel, or empty
 
     // Frame statistics of the last paintScene (for benchmarks and the status bar).
     struct FrameStats {
@@ -116,6 +155,8 @@ signals:
     void contextMenuRequested(const QString& id, QPoint globalPos);
     void followChanged(bool follow);
     void areaClicked(const QString& featureId);
+    void backgroundLoaded(const QString& path);
+    void backgroundFailed(const QString& message); // names the file and the reason
 
 protected:
     void paintEvent(QPaintEvent* e) override;
@@ -146,6 +187,29 @@ private:
     void drawCursor(QPainter& p, const QSize& size);
     QRectF visibleWorld(const QSize& size) const;
     void invalidateStatic() { m_staticValid = false; }
+    // Issue 19 (SiteMapViewSymbols.cpp).
+    struct MachineLabel {
+        QPointF centre;
+        double radius = 0; // half the symbol's larger side (px)
+        int priority = 0;
+        int row = 0;
+    };
+    struct MapLabelCandidate {
+        QVector<QPair<QPointF, double>> spots; // centre (px) and angle (deg), tried in order
+        QString text;
+        MapLabelLayout::Kind kind = MapLabelLayout::Kind::Road;
+        QColor colour;
+        int priority = 0;
+    };
+    void collectMapLabels(const QSize& size);
+    void layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<MachineLabel>& machines);
+    void drawEdgeIndicators(QPainter& p);
+    void drawHoverCard(QPainter& p, const QSize& size);
+    QImage labelImage(const QString& text, MapLabelLayout::Kind kind, const QColor& colour, qreal dpr);
+    QRectF legendRect(const QSize& size) const;
+    void userTookOver() { m_autoFit = false; }
+    bool clickEdgeIndicator(QPointF px);
+    void drawBackgroundRaster(QPainter& p, const QSize& size);
 
     QPointer<FleetModel> m_fleet;
     QPointer<FleetSelection> m_selection;
@@ -187,6 +251,18 @@ private:
     FrameStats m_stats;
     QVector<SiteMapOverlay*> m_overlays;
     bool m_areaPicking = false;
+
+    // Issue 19.
+    bool m_autoFit = true;
+    MapSymbolCache m_symbols;
+    MapLabelLayout m_labels;
+    QVector<MapLabelCandidate> m_mapLabels; // of the static layer's view
+    QHash<QString, QImage> m_labelImages;
+    QVector<EdgeIndicator> m_edges;
+    QString m_hoverId;
+    std::shared_ptr<const MapBackground> m_background;
+    bool m_backgroundVisible = true;
+    quint64 m_backgroundRequest = 0;
 };
 
 } // namespace ocu

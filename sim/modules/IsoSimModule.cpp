@@ -3,6 +3,7 @@
 #include "sim/SimModule.h"
 
 #include "sim/iso23725/IsoDemo.h"
+#include "sim/iso23725/PitTerrain.h"
 
 #include <nlohmann/json.hpp>
 
@@ -33,6 +34,19 @@ public:
         else
             config.iso23725 = demo->config;
         m_demo = std::move(demo);
+        // Issue 19 §3/§4: the pit's DEM and hillshade, consistent with the map the AHS serves; the site uses
+        // them as map background and 3D terrain unless its configuration names others.
+        m_terrain = {};
+        if (config.background.raster.empty() || config.terrain.dem.empty()) {
+            const PitLayout layout{c.shovelCount, c.dumpCount, c.origin};
+            m_terrain = writePitTerrain(generatePitMap(layout, 0), c.origin, defaultPitTerrainDir(layout));
+            if (m_terrain.error.empty()) {
+                if (config.background.raster.empty())
+                    config.background.raster = m_terrain.hillshade;
+                if (config.terrain.dem.empty())
+                    config.terrain.dem = m_terrain.dem;
+            }
+        }
         return {};
     }
     void stop() override {
@@ -50,6 +64,10 @@ public:
             lines.push_back("ISO 23725: AHS with " + std::to_string(config.simulation.ahsTrucks) +
                             " trucks at " + l.ws.url + (l.mapWs.url.empty() ? "" : ", map service at ") +
                             l.mapWs.url);
+        if (!m_terrain.error.empty())
+            lines.push_back("ISO 23725: no pit terrain: " + m_terrain.error);
+        else if (!m_terrain.dem.empty())
+            lines.push_back("ISO 23725: pit terrain " + m_terrain.dem + ", hillshade " + m_terrain.hillshade);
         return lines;
     }
 
@@ -65,10 +83,16 @@ public:
             links.push_back(link);
         }
         out["iso23725"] = {{"links", links}};
+        // The pit's hillshade and DEM (or what the simulator's own configuration named), absolute paths.
+        if (!config.background.raster.empty())
+            out["background"] = {{"raster", config.background.raster}};
+        if (!config.terrain.dem.empty())
+            out["terrain"] = {{"dem", config.terrain.dem}};
     }
 
 private:
     std::unique_ptr<IsoDemo> m_demo;
+    PitTerrainFiles m_terrain;
 };
 
 } // namespace
