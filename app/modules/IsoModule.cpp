@@ -42,10 +42,6 @@ public:
     }
     FleetBridge* bridge() const override { return m_bridge; }
 
-    void populate(const ModulePanels& ui) override {
-        addProductionDock(ui.window, ui.fleet, m_bridge, QString::fromStdString(ui.config.name));
-    }
-
     void attachOwnPosition(OwnPosition* own, const SiteConfig& config) override {
         if (!m_bridge || config.ownPosition.fmsMachineId.empty())
             return;
@@ -64,6 +60,7 @@ public:
             "IsoModule", "Dispatch needs an ISO 23725 AHS link (site configuration \"iso23725\").");
     }
     void populate(const ModulePanels& ui) override {
+        addProductionDock(ui.window, ui.fleet, m_bridge, QString::fromStdString(ui.config.name)); // issue 15 §4
         auto* source = new IsoDispatchSource(m_bridge, m_bridge);
         auto* panel = new DispatchPanel(source, ui.fleet->gate(), ui.fleet->selection());
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
