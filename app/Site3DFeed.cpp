@@ -24,12 +24,31 @@ Site3DFeed::Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* sele
         if (m_machinesDirty)
             pushMachines();
     });
-    m_machineTimer->start(100);
     connect(m_passTimer, &QTimer::timeout, this, [this] {
         if (m_passDirty)
             pushPassCount();
     });
-    m_passTimer->start(1000);
+    // Nothing is prepared for a hidden panel (issue 19 §4: no CPU while hidden): the timers run only while
+    // it is visible; what changed meanwhile stays marked dirty and is pushed at once when it is shown.
+    // Machines go out at most every 100 ms and only when the fleet changed, so the view never draws faster
+    // than the data arrive.
+    connect(view, &Site3DView::visibilityChanged, this, [this](bool visible) {
+        if (!visible) {
+            m_machineTimer->stop();
+            m_passTimer->stop();
+            return;
+        }
+        if (m_passDirty)
+            pushPassCount();
+        if (m_machinesDirty)
+            pushMachines();
+        m_machineTimer->start(100);
+        m_passTimer->start(1000);
+    });
+    if (view->isVisible()) {
+        m_machineTimer->start(100);
+        m_passTimer->start(1000);
+    }
     if (selection) {
         connect(view, &Site3DView::machinePicked, selection, &FleetSelection::setCurrent);
         connect(selection, &FleetSelection::currentMachineChanged, view, &Site3DView::setSelectedMachine);
@@ -51,9 +70,14 @@ void Site3DFeed::passCountChanged() {
     m_passDirty = true;
 }
 
+int Site3DFeed::machinePushCount() const {
+    return m_machinePushes;
+}
+
 void Site3DFeed::pushMachines() {
     if (!m_view)
         return;
+    ++m_machinePushes;
     m_machinesDirty = false;
     std::vector<Machine3D> out;
     const auto& machines = m_fleet->machinesSnapshot();

@@ -25,6 +25,8 @@ public:
     void setPassCountLayer(const PassCountLayer* layer);
     void setPassTarget(PassTarget target) { m_target = target; }
     void passCountChanged();
+    // How often machines were pushed to the view (not while it is hidden).
+    int machinePushCount() const;
 
 private:
     void pushMachines();
@@ -41,6 +43,7 @@ private:
     QTimer* m_passTimer;
     bool m_machinesDirty = true;
     bool m_passDirty = false;
+    int m_machinePushes = 0;
 };
 
 } // namespace ocu

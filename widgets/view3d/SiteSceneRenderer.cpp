@@ -3,9 +3,11 @@
 #include "protocols/common/Log.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkCoordinate.h>
 #include <vtkCubeSource.h>
 #include <vtkDelaunay2D.h>
@@ -224,8 +226,14 @@ struct SiteSceneRenderer::Impl {
     std::uint64_t buildCount = 0;
     std::uint64_t layoutCount = 0;
     std::size_t lastBadMachines = 0;
+    std::uint64_t renders = 0;
+    vtkNew<vtkCallbackCommand> renderObserver;
 
     Impl() {
+        renderObserver->SetClientData(this);
+        renderObserver->SetCallback(
+            [](vtkObject*, unsigned long, void* self, void*) { ++static_cast<Impl*>(self)->renders; });
+        renderer->AddObserver(vtkCommand::StartEvent, renderObserver);
         renderer->SetBackground(0.78, 0.84, 0.92);
         // Nothing is drawn in VTK's translucent pass: in 9.1 that pass always runs order-independent
         // transparency (extra full-screen passes, several ms per frame on llvmpipe). The pass-count surface
@@ -1019,6 +1027,9 @@ std::uint64_t SiteSceneRenderer::sceneBuildCount() const {
 }
 std::uint64_t SiteSceneRenderer::machineLayoutCount() const {
     return d->layoutCount;
+}
+std::uint64_t SiteSceneRenderer::renderCount() const {
+    return d->renders;
 }
 
 } // namespace ocu

@@ -61,6 +61,9 @@ public:
     std::optional<Machine3D> machine(const QString& id) const;
     std::uint64_t sceneBuildCount() const;    // number of full rebuilds (setScene calls)
     std::uint64_t machineLayoutCount() const; // number of times the machine arrays were re-laid out
+    // Frames drawn by any window this renderer is attached to (VTK StartEvent of the renderer): a hidden
+    // view must not move it (issue 19 §4).
+    std::uint64_t renderCount() const;
 
 private:
     struct Impl;
