@@ -61,6 +61,11 @@ void Site3DFeed::setSiteMap(const SiteMapData& map) {
     rebuildScene();
 }
 
+void Site3DFeed::setTerrain(const TerrainGrid3D& grid) {
+    m_terrain = grid;
+    rebuildScene();
+}
+
 void Site3DFeed::setPassCountLayer(const PassCountLayer* layer) {
     m_layer = layer;
     m_passDirty = true;
@@ -89,6 +94,7 @@ void Site3DFeed::pushMachines() {
         const MachineSize d = defaultMachineSize(s.type);
         Machine3D m;
         m.id = s.id;
+        m.shape = machineShapeFor(s.type);
         m.e = s.e;
         m.n = s.n;
         m.u = s.u;
@@ -154,6 +160,7 @@ void Site3DFeed::rebuildScene() {
     scene.terrain.maxE = b.right();
     scene.terrain.minN = b.top();
     scene.terrain.maxN = b.bottom();
+    scene.terrain.grid = m_terrain;
     for (const MapFeature& f : m_map.features) {
         Way3D w;
         w.kind = f.kind == MapFeatureKind::Area   ? WayKind::Area

@@ -15,6 +15,8 @@ packages=(
   # Fuzzing (scripts/fuzz.sh, issue 14): clang 14; -fsanitize=fuzzer needs libclang_rt.fuzzer*.a, which Debian 12
   # ships in libclang-rt-14-dev (only a Recommends of clang-14, so not installed by --no-install-recommends).
   clang-14 libclang-rt-14-dev
+  # 3D terrain from the site DEM (app/TerrainDem.cpp, issue 19 §4)
+  libgdal-dev
 )
 
 missing=()

@@ -4,6 +4,7 @@
 #include "models/FleetFilterProxy.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
+#include "widgets/ColumnFit.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -115,6 +116,7 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
     setDensity(Density::Dense);
+    keepColumnsFitted(m_view); // issue 19 §6: headers and cells in view never elided
 
     connect(m_filter, &QLineEdit::textChanged, this, &FleetListWidget::applyFilters);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, &FleetListWidget::applyFilters);

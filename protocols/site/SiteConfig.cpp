@@ -55,6 +55,10 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors) {
             f->error("remove_after_s", "must not be shorter than stale_after_s");
         f->finish();
     }
+    if (auto t = root.object("terrain")) {
+        cfg.terrain.dem = t->string("dem", "");
+        t->finish();
+    }
     if (auto p = root.object("own_position")) {
         cfg.ownPosition.source =
             p->choice("source", cfg.ownPosition.source, {"none", "system", "nmea-file", "nmea-serial"});

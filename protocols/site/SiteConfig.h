@@ -65,8 +65,14 @@ struct TeleopInputConfig {
     double deadZone = 0.12;
 };
 
+// "terrain": {"dem": "<GeoTIFF>"}: the ground of the 3D view (issue 19 §4); empty = flat ground.
+struct TerrainConfig {
+    std::string dem;
+};
+
 struct SiteConfig {
     std::string name = "Unnamed site";
+    TerrainConfig terrain;
     GeoPoint origin;
     SimulationConfig simulation;
     FleetConfig fleet;

@@ -68,6 +68,16 @@ private slots:
         QTest::qWait(500);
         QCOMPARE(view->renderCount(), idle);
 
+        // Machines are type-specific shapes with decluttered name labels (issue 19 §4).
+        QCOMPARE(view->sceneRenderer().machine(QStringLiteral("iso23725:HT3"))->shape,
+                 MachineShape::HaulTruck);
+        const std::vector<QRectF> labels = view->sceneRenderer().nameLabelRects();
+        QVERIFY(labels.size() >= 5);
+        QVERIFY(labels.size() <= 40);
+        for (std::size_t i = 0; i < labels.size(); ++i)
+            for (std::size_t j = i + 1; j < labels.size(); ++j)
+                QVERIFY2(!labels[i].intersects(labels[j]), "two 3D name labels overlap");
+
         // New data: drawn again.
         fleet.upsert(fleetAt(20));
         QTRY_VERIFY_WITH_TIMEOUT(view->renderCount() > idle, 20000);
