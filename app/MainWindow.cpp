@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QResizeEvent>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -104,13 +105,30 @@ void MainWindow::createDocks() {
 void MainWindow::setPanelWidget(Panel panel, QWidget* widget) {
     QDockWidget* d = m_docks.value(panel);
     QWidget* old = d->widget();
-    d->setWidget(widget);
-    if (old && old != widget)
+    QWidget* content = widget;
+    // Panels of controls (not a map or a table that scroll by themselves) scroll when their dock is narrower
+    // than they need, instead of forcing the whole column wide and squeezing the map (issue 19 §6: German
+    // texts at 1366 x 768 left the map a small square).
+    if (widget != nullptr &&
+        (panel == Panel::JausControl || panel == Panel::Teleop || panel == Panel::PassCounts)) {
+        auto* scroll = new QScrollArea;
+        scroll->setObjectName(QStringLiteral("panel-scroll"));
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidgetResizable(true);
+        scroll->setWidget(widget);
+        content = scroll;
+    }
+    d->setWidget(content);
+    if (old && old != content)
         old->deleteLater();
 }
 
 QWidget* MainWindow::panelWidget(Panel panel) const {
-    return m_docks.value(panel)->widget();
+    QWidget* w = m_docks.value(panel)->widget();
+    if (auto* scroll = qobject_cast<QScrollArea*>(w);
+        scroll && scroll->objectName() == QLatin1String("panel-scroll"))
+        return scroll->widget();
+    return w;
 }
 
 void MainWindow::createToolBar() {
@@ -308,7 +326,7 @@ void MainWindow::focusPanel(Panel panel) {
         return;
     d->show();
     d->raise();
-    QWidget* w = d->widget();
+    QWidget* w = panelWidget(panel);
     if (w == nullptr)
         return;
     // The panel's first control that takes the keyboard (or the panel itself).
@@ -362,6 +380,12 @@ void MainWindow::showFirstStart() {
 void MainWindow::resizeEvent(QResizeEvent* event) {
     QMainWindow::resizeEvent(event);
     if (m_fitPending && isVisible())
+        fitDocksToWindow();
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (m_fitPending) // the size was set before show (screenshot, restored geometry without a state)
         fitDocksToWindow();
 }
 

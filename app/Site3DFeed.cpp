@@ -170,6 +170,14 @@ void Site3DFeed::rebuildScene() {
         w.width = f.width > 0 ? f.width : (w.kind == WayKind::Lane ? 4.0 : 8.0);
         for (const QPointF& p : f.points)
             w.points.push_back({p.x(), p.y(), 0});
+        // A zone without a task (the AOZ, a site boundary) is drawn as its outline: filled, it would cover
+        // the terrain and everything in it with one grey sheet.
+        if (w.kind == WayKind::Area && f.defaultTask.isEmpty() && w.points.size() >= 3) {
+            w.kind = WayKind::Lane;
+            w.width = 3.0;
+            w.colour = Rgb{235, 200, 40};
+            w.points.push_back(w.points.front());
+        }
         scene.ways.push_back(std::move(w));
     }
     m_view->setScene(scene);

@@ -8,7 +8,8 @@ build=${1:-build}
 warmup=${2:-40}
 measure=${3:-30}
 work=$(mktemp -d)
-trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
+pid=""
+trap 'kill ${pid:+"$pid"} $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
 "$build/app/ocu-sim" --trucks 1000 --position-rate 10 --ugvs 20 --rollers 3 --write-config "$work/site.json" \
   >"$work/sim.log" 2>&1 &
 sim=$!
@@ -21,7 +22,10 @@ done
 XDG_CONFIG_HOME="$work/config" xvfb-run -a -s "-screen 0 1920x1080x24" \
   "$build/app/ocu" --config "$work/site.json" --no-sim >"$work/ocu.log" 2>&1 &
 for _ in $(seq 100); do
-  pid=$(pgrep -n -x ocu || true)
+  pid=""
+  for p in $(pgrep -f -- "--config $work/site.json" || true); do # our ocu, not another one on the host
+    [ "$(cat /proc/"$p"/comm 2>/dev/null)" = ocu ] && pid=$p
+  done
   [ -n "$pid" ] && break
   sleep 0.2
 done
@@ -33,6 +37,7 @@ snap() { for t in /proc/"$pid"/task/*; do
 snap >"$work/a"
 sleep "$measure"
 snap >"$work/b"
+[ -d /proc/"$pid" ] || { echo "ocu ended early"; cat "$work/ocu.log"; exit 1; }
 echo "ocu pid $pid, ${measure} s window after ${warmup} s warm-up; $(uptime | sed 's/.*load/load/')"
 join <(sort "$work/a") <(sort "$work/b") | awk -v hz="$hz" -v s="$measure" -v pid="$pid" '
   { cpu = ($5 - $3) / hz / s * 100; name = ($1 == pid ? "GUI(main)" : $2);

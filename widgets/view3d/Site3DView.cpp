@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include <functional>
+#include <utility>
 
 namespace ocu {
 
@@ -88,6 +89,22 @@ private:
     bool m_dirty = true;
     QPointF m_press;
     QPointF m_last;
+};
+
+// Stands in for the GL widget until the panel is painted for the first time (really on screen).
+class CanvasPlaceholder : public QWidget {
+public:
+    CanvasPlaceholder(QWidget* parent, std::function<void()> firstPaint)
+        : QWidget(parent), m_firstPaint(std::move(firstPaint)) {}
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        if (m_firstPaint)
+            QTimer::singleShot(0, parentWidget(), std::exchange(m_firstPaint, {}));
+    }
+
+private:
+    std::function<void()> m_firstPaint;
 };
 
 // Pass-count legend in the top-right corner of its parent (the GL widget or the image view).
@@ -230,7 +247,7 @@ Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Im
         // held one composes its widgets without OpenGL, so a console whose 3D tab stays closed pays nothing
         // for it (issue 19 §4/§7).
         d->backend = Backend::OpenGLWidget;
-        d->placeholder = new QWidget(this);
+        d->placeholder = new CanvasPlaceholder(this, [this] { ensureCanvas(); });
         layout->addWidget(d->placeholder, 1);
     }
 }
@@ -256,7 +273,14 @@ QWidget* Site3DView::ensureCanvas() const {
 }
 
 void Site3DView::showEvent(QShowEvent* event) {
-    ensureCanvas();
+    // Not at once: a QMainWindow shows every dock when it is first shown and only then hides the tabs that
+    // are not current; the GL widget is made once the panel is still shown after that (and then at once
+    // when it is really raised).
+    if (d->image == nullptr && d->gl == nullptr)
+        QTimer::singleShot(0, this, [this] {
+            if (isVisible() && !visibleRegion().isEmpty())
+                ensureCanvas();
+        });
     QWidget::showEvent(event);
     // Changes that arrived while hidden were not drawn: draw the current state once.
     if (d->image != nullptr)
