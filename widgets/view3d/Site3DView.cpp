@@ -6,6 +6,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QCoreApplication>
 #include <QEvent>
 #include <QGuiApplication>
 #include <QMouseEvent>
@@ -140,7 +141,9 @@ protected:
         p.setBrush(QColor(255, 255, 255, 215));
         p.drawRoundedRect(rect().adjusted(0, 0, -1, -1), 4, 4);
         p.setPen(Qt::black);
-        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter, tr("Passes"));
+        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter,
+                   QCoreApplication::translate("ocu::LegendOverlay",
+                                               "Passes")); // no Q_OBJECT: tr() would use "QWidget"
         int y = kPad + kRow;
         for (const LegendEntry& e : m_entries) {
             p.fillRect(QRect(kPad, y + 3, kSwatch, kRow - 6), QColor(e.colour.r, e.colour.g, e.colour.b));
