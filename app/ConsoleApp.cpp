@@ -185,10 +185,12 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
     const bool screenshot = !options.screenshotFile.isEmpty();
     if (screenshot) {
         window.resize(options.size);
+        window.show();
     } else if (options.resetLayout || !window.restoreLayout()) {
-        window.resize(1600, 1000);
+        window.showFirstStart(); // issue 19 §6: maximized, not 1200 x 720 on a 1920 x 1080 screen
+    } else {
+        window.show();
     }
-    window.show();
 
     int exitCode = 0;
     if (screenshot) {

@@ -13,6 +13,9 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QResizeEvent>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -106,13 +109,30 @@ void MainWindow::createDocks() {
 void MainWindow::setPanelWidget(Panel panel, QWidget* widget) {
     QDockWidget* d = m_docks.value(panel);
     QWidget* old = d->widget();
-    d->setWidget(widget);
-    if (old && old != widget)
+    QWidget* content = widget;
+    // Panels of controls (not a map or a table that scroll by themselves) scroll when their dock is narrower
+    // than they need, instead of forcing the whole column wide and squeezing the map (issue 19 §6: German
+    // texts at 1366 x 768 left the map a small square).
+    if (widget != nullptr &&
+        (panel == Panel::JausControl || panel == Panel::Teleop || panel == Panel::PassCounts)) {
+        auto* scroll = new QScrollArea;
+        scroll->setObjectName(QStringLiteral("panel-scroll"));
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidgetResizable(true);
+        scroll->setWidget(widget);
+        content = scroll;
+    }
+    d->setWidget(content);
+    if (old && old != content)
         old->deleteLater();
 }
 
 QWidget* MainWindow::panelWidget(Panel panel) const {
-    return m_docks.value(panel)->widget();
+    QWidget* w = m_docks.value(panel)->widget();
+    if (auto* scroll = qobject_cast<QScrollArea*>(w);
+        scroll && scroll->objectName() == QLatin1String("panel-scroll"))
+        return scroll->widget();
+    return w;
 }
 
 void MainWindow::createToolBar() {
@@ -223,6 +243,8 @@ void MainWindow::createMenus() {
     m_nightAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     connect(m_nightAction, &QAction::toggled, this, &MainWindow::setNightMode);
 
+    createPanelShortcuts(view);
+
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard shortcuts"));
     connect(keys, &QAction::triggered, this, [this] {
@@ -236,7 +258,11 @@ void MainWindow::createMenus() {
                "Home whole site, Shift+Home the fleet, S the selection, A the area under the cursor, C "
                "centre; "
                "double-click selects; click an edge arrow to go to machines outside the view\n"
-               "Ctrl+Shift+N: night palette\nCtrl+Shift+P: save a screenshot"));
+               "Ctrl+Shift+N: night palette\nCtrl+Shift+P: save a screenshot\n"
+               "Ctrl+1 … Ctrl+7: go to the fleet list, 2D map, 3D view, JAUS control, teleop, pass counts, "
+               "event log (raises the panel and puts the keyboard focus in it)\n"
+               "Tab / Shift+Tab: next / previous control in a panel; arrows move in lists and tables; "
+               "Space or Enter presses the focused button\nSee docs/keyboard.md for the full list."));
     });
     QAction* about = help->addAction(tr("&About"));
     connect(about, &QAction::triggered, this, [this] {
@@ -306,6 +332,75 @@ void MainWindow::applyDefaultLayout() {
     resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]}, {700, 220}, Qt::Vertical);
 }
 
+void MainWindow::focusPanel(Panel panel) {
+    QDockWidget* d = m_docks.value(panel);
+    if (d == nullptr)
+        return;
+    d->show();
+    d->raise();
+    QWidget* w = panelWidget(panel);
+    if (w == nullptr)
+        return;
+    // The panel's first control that takes the keyboard (or the panel itself).
+    QWidget* target = w;
+    if (!(w->focusPolicy() & Qt::TabFocus)) {
+        for (QWidget* c : w->findChildren<QWidget*>())
+            if ((c->focusPolicy() & Qt::TabFocus) && c->isEnabled() && c->isVisibleTo(w)) {
+                target = c;
+                break;
+            }
+    }
+    target->setFocus(Qt::ShortcutFocusReason);
+}
+
+void MainWindow::createPanelShortcuts(QMenu* view) {
+    // Issue 19 §6: a keyboard-only path to every panel (also listed in Help > Keyboard shortcuts and
+    // docs/keyboard.md).
+    QMenu* go = view->addMenu(tr("&Go to panel"));
+    int n = 1;
+    for (Panel p : panels()) {
+        QAction* a = go->addAction(panelTitle(p));
+        a->setObjectName(QStringLiteral("action-go-") + panelKey(p));
+        a->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_0 + n++)));
+        a->setShortcutContext(Qt::ApplicationShortcut);
+        connect(a, &QAction::triggered, this, [this, p] { focusPanel(p); });
+        addAction(a); // active even when the menu bar is hidden
+    }
+}
+
+void MainWindow::fitDocksToWindow() {
+    const int w = width(), h = height();
+    if (w < 200 || h < 200)
+        return;
+    // Fleet list a quarter, the map the most, the JAUS/teleop column about a quarter; the bottom row a
+    // quarter of the height. Minimum sizes of the panels still apply.
+    resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]},
+                {w * 24 / 100, w * 50 / 100, w * 26 / 100}, Qt::Horizontal);
+    resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]}, {h * 70 / 100, h * 30 / 100},
+                Qt::Vertical);
+    resizeDocks({m_docks[Panel::EventLog], m_docks[Panel::PassCounts]}, {w * 60 / 100, w * 40 / 100},
+                Qt::Horizontal);
+    m_fitPending = false;
+}
+
+void MainWindow::showFirstStart() {
+    if (QScreen* s = screen())
+        resize(s->availableGeometry().size());
+    showMaximized();
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+    QMainWindow::resizeEvent(event);
+    if (m_fitPending && isVisible())
+        fitDocksToWindow();
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (m_fitPending) // the size was set before show (screenshot, restored geometry without a state)
+        fitDocksToWindow();
+}
+
 void MainWindow::resetLayout() {
     for (QDockWidget* d : std::as_const(m_docks)) {
         d->setFloating(false);
@@ -313,6 +408,7 @@ void MainWindow::resetLayout() {
     }
     if (!restoreState(m_defaultState, kLayoutVersion))
         applyDefaultLayout();
+    fitDocksToWindow();
     m_docks[Panel::SiteMap]->raise();
     m_docks[Panel::JausControl]->raise();
     m_docks[Panel::Dispatch]->raise();
@@ -335,6 +431,7 @@ bool MainWindow::restoreLayout() {
         return false;
     restoreGeometry(geometry);
     const bool ok = restoreState(state, kLayoutVersion);
+    m_fitPending = !ok;                               // the operator's own sizes stay
     m_bannerBar->setVisible(!m_bannerText.isEmpty()); // a saved layout never hides a failed stop
     return ok;
 }

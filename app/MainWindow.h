@@ -8,6 +8,7 @@
 
 class QDockWidget;
 class QLabel;
+class QMenu;
 class QToolBar;
 class QToolButton;
 
@@ -53,6 +54,15 @@ public:
     void saveLayout() const;
     bool restoreLayout();
     void resetLayout();
+    // Shares the window's width and height among the default docks in proportion (issue 19 §6: at 1366 x 768
+    // the map must not end up a small square); called on the first show of a default layout and by
+    // resetLayout().
+    void fitDocksToWindow();
+    // First start (no saved layout): maximized, or the screen's available size where maximizing is not
+    // possible (offscreen).
+    void showFirstStart();
+    // Raises the panel and puts the keyboard focus on its first control (Ctrl+1 … Ctrl+7).
+    void focusPanel(Panel panel);
 
 signals:
     void stopAllRequested();
@@ -61,6 +71,8 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     void createDocks();
@@ -68,6 +80,7 @@ private:
     void createMenus();
     void createStatusBar();
     void applyDefaultLayout();
+    void createPanelShortcuts(QMenu* view);
 
     QMap<Panel, QDockWidget*> m_docks;
     QMap<QString, LinkIndicator*> m_links;
@@ -81,6 +94,7 @@ private:
     QByteArray m_defaultState;
     int m_unacked = 0;
     bool m_night = false;
+    bool m_fitPending = true; // default layout not yet shared out for the real window size
 };
 
 } // namespace ocu

@@ -4,6 +4,8 @@
 
 #include <QCoreApplication>
 #include <QDockWidget>
+#include <QElapsedTimer>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QImageWriter>
 #include <QPixmap>
@@ -19,7 +21,12 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
                 QDockWidget* d = window.dock(p);
                 d->show();
                 d->raise(); // a tabbed panel must be the visible tab to be painted
-                QCoreApplication::processEvents();
+                // A little event loop: a panel may build its content on its first paint (the 3D view makes
+                // its GL widget only once it is really on screen).
+                QElapsedTimer t;
+                t.start();
+                while (t.elapsed() < 400)
+                    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
                 target = d;
             }
         }

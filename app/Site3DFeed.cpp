@@ -24,12 +24,31 @@ Site3DFeed::Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* sele
         if (m_machinesDirty)
             pushMachines();
     });
-    m_machineTimer->start(100);
     connect(m_passTimer, &QTimer::timeout, this, [this] {
         if (m_passDirty)
             pushPassCount();
     });
-    m_passTimer->start(1000);
+    // Nothing is prepared for a hidden panel (issue 19 §4: no CPU while hidden): the timers run only while
+    // it is visible; what changed meanwhile stays marked dirty and is pushed at once when it is shown.
+    // Machines go out at most every 100 ms and only when the fleet changed, so the view never draws faster
+    // than the data arrive.
+    connect(view, &Site3DView::visibilityChanged, this, [this](bool visible) {
+        if (!visible) {
+            m_machineTimer->stop();
+            m_passTimer->stop();
+            return;
+        }
+        if (m_passDirty)
+            pushPassCount();
+        if (m_machinesDirty)
+            pushMachines();
+        m_machineTimer->start(100);
+        m_passTimer->start(1000);
+    });
+    if (view->isVisible()) {
+        m_machineTimer->start(100);
+        m_passTimer->start(1000);
+    }
     if (selection) {
         connect(view, &Site3DView::machinePicked, selection, &FleetSelection::setCurrent);
         connect(selection, &FleetSelection::currentMachineChanged, view, &Site3DView::setSelectedMachine);
@@ -42,6 +61,11 @@ void Site3DFeed::setSiteMap(const SiteMapData& map) {
     rebuildScene();
 }
 
+void Site3DFeed::setTerrain(const TerrainGrid3D& grid) {
+    m_terrain = grid;
+    rebuildScene();
+}
+
 void Site3DFeed::setPassCountLayer(const PassCountLayer* layer) {
     m_layer = layer;
     m_passDirty = true;
@@ -51,9 +75,14 @@ void Site3DFeed::passCountChanged() {
     m_passDirty = true;
 }
 
+int Site3DFeed::machinePushCount() const {
+    return m_machinePushes;
+}
+
 void Site3DFeed::pushMachines() {
     if (!m_view)
         return;
+    ++m_machinePushes;
     m_machinesDirty = false;
     std::vector<Machine3D> out;
     const auto& machines = m_fleet->machinesSnapshot();
@@ -65,6 +94,7 @@ void Site3DFeed::pushMachines() {
         const MachineSize d = defaultMachineSize(s.type);
         Machine3D m;
         m.id = s.id;
+        m.shape = machineShapeFor(s.type);
         m.e = s.e;
         m.n = s.n;
         m.u = s.u;
@@ -130,6 +160,7 @@ void Site3DFeed::rebuildScene() {
     scene.terrain.maxE = b.right();
     scene.terrain.minN = b.top();
     scene.terrain.maxN = b.bottom();
+    scene.terrain.grid = m_terrain;
     for (const MapFeature& f : m_map.features) {
         Way3D w;
         w.kind = f.kind == MapFeatureKind::Area   ? WayKind::Area
@@ -139,6 +170,14 @@ void Site3DFeed::rebuildScene() {
         w.width = f.width > 0 ? f.width : (w.kind == WayKind::Lane ? 4.0 : 8.0);
         for (const QPointF& p : f.points)
             w.points.push_back({p.x(), p.y(), 0});
+        // A zone without a task (the AOZ, a site boundary) is drawn as its outline: filled, it would cover
+        // the terrain and everything in it with one grey sheet.
+        if (w.kind == WayKind::Area && f.defaultTask.isEmpty() && w.points.size() >= 3) {
+            w.kind = WayKind::Lane;
+            w.width = 3.0;
+            w.colour = Rgb{235, 200, 40};
+            w.points.push_back(w.points.front());
+        }
         scene.ways.push_back(std::move(w));
     }
     m_view->setScene(scene);

@@ -4,6 +4,7 @@
 // pass-count raster at most once a second. Selection goes both ways through the shared FleetSelection.
 #include "models/PassCountLayer.h"
 #include "models/SiteMapData.h"
+#include "widgets/view3d/Scene3D.h"
 
 #include <QObject>
 #include <QPointer>
@@ -22,9 +23,13 @@ public:
     Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* selection, QObject* parent = nullptr);
 
     void setSiteMap(const SiteMapData& map);
+    // The ground from the site's DEM (issue 19 §4); an invalid grid = flat ground under the map.
+    void setTerrain(const TerrainGrid3D& grid);
     void setPassCountLayer(const PassCountLayer* layer);
     void setPassTarget(PassTarget target) { m_target = target; }
     void passCountChanged();
+    // How often machines were pushed to the view (not while it is hidden).
+    int machinePushCount() const;
 
 private:
     void pushMachines();
@@ -34,6 +39,7 @@ private:
     QPointer<Site3DView> m_view;
     FleetModel* m_fleet;
     SiteMapData m_map;
+    TerrainGrid3D m_terrain;
     const PassCountLayer* m_layer = nullptr;
     quint64 m_layerRevision = 0;
     PassTarget m_target;
@@ -41,6 +47,7 @@ private:
     QTimer* m_passTimer;
     bool m_machinesDirty = true;
     bool m_passDirty = false;
+    int m_machinePushes = 0;
 };
 
 } // namespace ocu

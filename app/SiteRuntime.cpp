@@ -7,6 +7,7 @@
 #include "app/ProtocolModule.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "app/Site3DFeed.h"
+#include "app/TerrainDem.h"
 #include "widgets/view3d/Site3DView.h"
 #endif
 
@@ -255,6 +256,16 @@ void SiteRuntime::populate(MainWindow& window) {
     auto* view3d = new Site3DView;
     auto* feed = new Site3DFeed(view3d, ctx->fleet(), ctx->selection(), view3d);
     feed->setPassCountLayer(d.passLayer());
+    if (!m_config.terrain.dem.empty()) {
+        auto dem = loadTerrainDem(m_config.terrain.dem, d.frame);
+        if (dem)
+            feed->setTerrain(dem.value());
+        else
+            ctx->alarms()->add(
+                makeEvent(EventSeverity::Warning, EventKind::Diagnostic, {},
+                          tr("3D terrain not shown: %1").arg(QString::fromStdString(dem.error())),
+                          QStringLiteral("gui")));
+    }
     window.setPanelWidget(Panel::Site3D, view3d);
 #else
     QObject* feed = nullptr;

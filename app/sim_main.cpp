@@ -77,9 +77,10 @@ int main(int argc, char** argv) {
         QStringLiteral("separate-map-service"),
         QStringLiteral("The AHS serves its ISO 23725 map service on a socket of its "
                        "own (the written configuration gets its mapUrl)."));
-    QCommandLineOption truckRate(QStringLiteral("truck-rate"),
-                                 QStringLiteral("Positions per second of each simulated haul truck (1-10)."),
-                                 QStringLiteral("hz"));
+    QCommandLineOption truckRate(QStringList{QStringLiteral("position-rate"), QStringLiteral("truck-rate")},
+                                 QStringLiteral("Positions per second of each simulated haul truck (1-10; "
+                                                "--truck-rate is the older name)."),
+                                 QStringLiteral("HZ"));
     p.addOptions({config, duration, ugvs, trucks, rollers, iface, writeConfig, separateMap, truckRate});
     p.process(app);
 
@@ -109,7 +110,7 @@ int main(int argc, char** argv) {
         bool ok = false;
         const double hz = p.value(truckRate).toDouble(&ok);
         if (!ok || hz < 1.0 || hz > 10.0) {
-            std::fprintf(stderr, "ocu-sim: --truck-rate must be a number 1..10\n");
+            std::fprintf(stderr, "ocu-sim: --position-rate must be a number 1..10\n");
             return 2;
         }
         cfg.simulation.ahsPositionRateHz = hz;

@@ -7,6 +7,21 @@
 
 namespace ocu {
 
+// The link state in the operator's language (issue 19 §6; toText() stays the stable English key).
+static QString linkText(LinkState s) {
+    switch (s) {
+    case LinkState::Up:
+        return FleetModel::tr("up");
+    case LinkState::Degraded:
+        return FleetModel::tr("degraded");
+    case LinkState::Down:
+        return FleetModel::tr("down");
+    case LinkState::Unknown:
+        break;
+    }
+    return FleetModel::tr("unknown");
+}
+
 FleetModel::FleetModel(QObject* parent)
     : QAbstractTableModel(parent), m_now([] { return QDateTime::currentMSecsSinceEpoch(); }) {
     connect(&m_timer, &QTimer::timeout, this, &FleetModel::refresh);
@@ -127,7 +142,7 @@ QVariant FleetModel::display(const Row& r, int column) const {
     case ColProtocol:
         return protocolLabel(m.protocol);
     case ColLink:
-        return QStringLiteral("%1 · %2").arg(toText(m.link), ageText(row >= 0 ? ageMsAt(row) : -1));
+        return QStringLiteral("%1 · %2").arg(linkText(m.link), ageText(row >= 0 ? ageMsAt(row) : -1));
     case ColEast:
         return m.hasPosition ? QString::number(m.e, 'f', 1) : QString();
     case ColNorth:

@@ -18,7 +18,7 @@ packages=(
   # Issue 15 §4: production charts (Qt Charts, widgets/production) and the shift report test renders the PDF
   # with poppler's pdftoppm.
   qt6-charts-dev poppler-utils
-  # Issue 19 (2D map background rasters, the simulated pit's DEM and hillshade): GDAL (GeoTIFF, MBTiles, PROJ).
+  # Issue 19: GDAL for the 2D map background rasters, the simulated pit's DEM and hillshade, the 3D terrain.
   libgdal-dev
 )
 

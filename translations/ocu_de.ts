@@ -454,6 +454,18 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <source>this OCU</source>
         <translation>diese Konsole</translation>
     </message>
+    <message>
+        <source>up</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <source>degraded</source>
+        <translation>beeinträchtigt</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>ausgefallen</translation>
+    </message>
 </context>
 <context>
     <name>ocu::HoldToConfirmButton</name>
@@ -759,6 +771,12 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <source>Release control of this vehicle</source>
         <translation>Steuerung dieses Fahrzeugs freigeben</translation>
     </message>
+    <message>
+        <source>No machine selected.
+Select one in the fleet list, in the table above or on the map (click, or Tab to the list and use the arrow keys) to see its details here.</source>
+        <translation>Keine Maschine ausgewählt.
+Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus (Klick, oder mit Tab zur Liste und den Pfeiltasten), um hier ihre Details zu sehen.</translation>
+    </message>
 </context>
 <context>
     <name>ocu::JausSubsystemModel</name>
@@ -1058,12 +1076,18 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
 Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop
 Site map: arrows pan, +/- zoom, F follow the selected machine
 Ctrl+Shift+N: night palette
-Ctrl+Shift+P: save a screenshot</source>
+Ctrl+Shift+P: save a screenshot
+Ctrl+1 … Ctrl+7: go to the fleet list, 2D map, 3D view, JAUS control, teleop, pass counts, event log (raises the panel and puts the keyboard focus in it)
+Tab / Shift+Tab: next / previous control in a panel; arrows move in lists and tables; Space or Enter presses the focused button
+See docs/keyboard.md for the full list.</source>
         <translation>F12 oder Strg+Umschalt+Leertaste: ALLE STOPPEN
 Fernsteuerung: W/A/S/D oder Pfeiltasten bei gehaltener Totmanntaste; Leertaste oder Esc: Not-Halt
 Lageplan: Pfeiltasten verschieben, +/- zoomen, F folgt der ausgewählten Maschine
 Strg+Umschalt+N: Nachtpalette
-Strg+Umschalt+P: Bildschirmfoto speichern</translation>
+Strg+Umschalt+P: Bildschirmfoto speichern
+Strg+1 … Strg+7: zu Flottenliste, Lageplan, 3D-Ansicht, JAUS-Steuerung, Fernsteuerung, Verdichtungsübergängen, Ereignisprotokoll (holt das Feld nach vorn und setzt den Tastaturfokus hinein)
+Tab / Umschalt+Tab: nächstes / vorheriges Bedienelement eines Felds; Pfeiltasten bewegen in Listen und Tabellen; Leertaste oder Eingabe drückt die fokussierte Schaltfläche
+Die vollständige Liste steht in docs/keyboard.md.</translation>
     </message>
     <message>
         <source>&amp;About</source>
@@ -1089,6 +1113,10 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
             <numerusform>%n unquittierter Alarm</numerusform>
             <numerusform>%n unquittierte Alarme</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Go to panel</source>
+        <translation>&amp;Gehe zu Feld</translation>
     </message>
 </context>
 <context>
@@ -1231,6 +1259,14 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%1&apos;&gt;■&lt;/span&gt; below %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%4&apos;&gt;■&lt;/span&gt; within %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%8&apos;&gt;■&lt;/span&gt; above %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;covered area&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%1&apos;&gt;■&lt;/span&gt; unter %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%4&apos;&gt;■&lt;/span&gt; im Soll %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%8&apos;&gt;■&lt;/span&gt; über %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;abgedeckte Fläche&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
+    <message>
+        <source>Passes</source>
+        <translation>Überfahrten</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
 </context>
 <context>
     <name>ocu::SdlJoystickInput</name>
@@ -1325,6 +1361,10 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>No JAUS section in the site configuration: no JAUS vehicles on this site.</source>
         <translation>Kein JAUS-Abschnitt in der Baustellenkonfiguration: keine JAUS-Fahrzeuge auf dieser Baustelle.</translation>
+    </message>
+    <message>
+        <source>3D terrain not shown: %1</source>
+        <translation>3D-Gelände nicht angezeigt: %1</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 #include "widgets/EventLogWidget.h"
 
 #include "models/AlarmModel.h"
+#include "widgets/ColumnFit.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -50,6 +51,7 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     m_view->verticalHeader()->setDefaultSectionSize(20);
     m_view->horizontalHeader()->setStretchLastSection(false);
     m_view->horizontalHeader()->setSectionResizeMode(AlarmModel::ColText, QHeaderView::Stretch);
+    keepColumnsFitted(m_view); // issue 19 §6: headers and cells in view never elided
 
     connect(m_search, &QLineEdit::textChanged, m_proxy, &AlarmFilterProxy::setText);
     connect(m_severity, &QComboBox::currentIndexChanged, this,

@@ -4,6 +4,7 @@
 #include "models/FleetFilterProxy.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
+#include "widgets/ColumnFit.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -79,6 +80,13 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_proxy->setSourceModel(fleet);
     m_filter->setPlaceholderText(tr("Filter machines…"));
     m_filter->setClearButtonEnabled(true);
+    // The filter row stays narrow enough for a field laptop (issue 19 §6): the combos shrink to a few
+    // characters, the filter keeps room for its placeholder.
+    m_filter->setMinimumWidth(fontMetrics().horizontalAdvance(m_filter->placeholderText()) + 36);
+    for (QComboBox* c : {m_protocol, m_status}) {
+        c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        c->setMinimumContentsLength(9);
+    }
     m_protocol->addItem(tr("All protocols"), -1);
     m_protocol->addItem(QStringLiteral("JAUS"), int(Protocol::Jaus));
     m_protocol->addItem(QStringLiteral("ISO 23725"), int(Protocol::Iso23725));
@@ -115,6 +123,7 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
     setDensity(Density::Dense);
+    keepColumnsFitted(m_view); // issue 19 §6: headers and cells in view never elided
 
     connect(m_filter, &QLineEdit::textChanged, this, &FleetListWidget::applyFilters);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, &FleetListWidget::applyFilters);

@@ -4,7 +4,9 @@
 // The summary is recomputed at most once per second while the layer changes.
 #include "models/PassCountLayer.h"
 
+#include <QStringList>
 #include <QTimer>
+#include <QVector>
 #include <QWidget>
 
 class QComboBox;
@@ -27,6 +29,17 @@ public:
     void setPalette(PassPalette p);
 
     QLabel* summaryLabel() const { return m_summaryLabel; }
+
+    // What the histogram draws (issue 19 §6): the area per pass count 1..9+ (m²), the y axis end and its
+    // tick texts (0, half, top), the text above each bar (empty for no area) and the axis titles.
+    struct HistogramAxis {
+        QVector<double> values;
+        double top = 1;
+        QStringList ticks;
+        QStringList barLabels;
+        QString xTitle, yTitle;
+    };
+    HistogramAxis histogramAxis() const;
 
 public slots:
     void layerChanged(); // throttled recompute

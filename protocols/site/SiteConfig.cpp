@@ -99,55 +99,56 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         c.maxFileMb = r->number("max_file_mb", c.maxFileMb, 0, 1e7);
         c.raw = r->boolean("raw", c.raw);
         r->finish();
-        if (auto b = root.object("background")) {
-            cfg.background.raster = resolveSitePath(b->string("raster", cfg.background.raster), fileName);
-            b->finish();
-        }
-        if (auto t = root.object("terrain")) {
-            cfg.terrain.dem = resolveSitePath(t->string("dem", cfg.terrain.dem), fileName);
-            t->finish();
-        }
+    }
+    if (auto b = root.object("background")) {
+        cfg.background.raster = resolveSitePath(b->string("raster", cfg.background.raster), fileName);
+        b->finish();
+    }
+    if (auto t = root.object("terrain")) {
+        cfg.terrain.dem = resolveSitePath(t->string("dem", cfg.terrain.dem), fileName);
+        t->finish();
+    }
 #ifdef OCU_SITE_HAVE_JAUS
-        if (auto s = root.object("jaus"))
-            cfg.jaus = jaus::parseJausConfig(*s);
+    if (auto s = root.object("jaus"))
+        cfg.jaus = jaus::parseJausConfig(*s);
 #else
-        root.raw("jaus");
+    root.raw("jaus");
 #endif
 #ifdef OCU_SITE_HAVE_ISO
-        if (auto s = root.object("iso23725"))
-            cfg.iso23725 = iso23725::parseIsoConfig(*s);
+    if (auto s = root.object("iso23725"))
+        cfg.iso23725 = iso23725::parseIsoConfig(*s);
 #else
-        root.raw("iso23725");
+    root.raw("iso23725");
 #endif
 #ifdef OCU_SITE_HAVE_OSYRIS
-        if (auto s = root.object("osyris"))
-            cfg.osyris = osyris::parseOsyrisConfig(*s);
+    if (auto s = root.object("osyris"))
+        cfg.osyris = osyris::parseOsyrisConfig(*s);
 #else
-        root.raw("osyris");
+    root.raw("osyris");
 #endif
-        root.raw("$schema"); // editors may point at a schema; harmless
-        root.finish();
-        return cfg;
-    }
+    root.raw("$schema"); // editors may point at a schema; harmless
+    root.finish();
+    return cfg;
+}
 
-    Result<SiteConfig> parseSiteConfig(std::string_view text, const std::string& fileName) {
-        auto doc = ConfigDocument::parse(text, fileName);
-        if (!doc)
-            return Error{doc.error()};
-        ConfigErrors errors;
-        SiteConfig cfg = readSite(*doc, errors, fileName);
-        if (!errors.empty())
-            return Error{errors.joined()};
-        return cfg;
-    }
+Result<SiteConfig> parseSiteConfig(std::string_view text, const std::string& fileName) {
+    auto doc = ConfigDocument::parse(text, fileName);
+    if (!doc)
+        return Error{doc.error()};
+    ConfigErrors errors;
+    SiteConfig cfg = readSite(*doc, errors, fileName);
+    if (!errors.empty())
+        return Error{errors.joined()};
+    return cfg;
+}
 
-    Result<SiteConfig> loadSiteConfig(const std::string& path) {
-        std::ifstream in(path, std::ios::binary);
-        if (!in)
-            return Error{path + ": cannot open the site configuration"};
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        return parseSiteConfig(ss.str(), path);
-    }
+Result<SiteConfig> loadSiteConfig(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return Error{path + ": cannot open the site configuration"};
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return parseSiteConfig(ss.str(), path);
+}
 
 } // namespace ocu

@@ -73,39 +73,41 @@ struct RecordConfig {
     double maxAgeDays = 30;   // recordings older than this go (0 = no limit)
     double maxFileMb = 0;     // one run's file beyond this: its oldest machine data go (0 = no limit)
     bool raw = false;         // record.raw: raw frames too
-    // Issue 19 §3/§4: the 2D map's background raster (GeoTIFF or .mbtiles) and the 3D view's terrain (a
-    // GeoTIFF DEM). Relative paths are resolved against the configuration file's folder; empty = none.
-    struct MapBackgroundConfig {
-        std::string raster;
-    };
-    struct TerrainConfig {
-        std::string dem;
-    };
+};
 
-    struct SiteConfig {
-        std::string name = "Unnamed site";
-        GeoPoint origin;
-        SimulationConfig simulation;
-        FleetConfig fleet;
-        OwnPositionConfig ownPosition;
-        TeleopInputConfig teleop;
-        RecordConfig record;
-        MapBackgroundConfig background;
-        TerrainConfig terrain;
+// Issue 19 §3/§4: the 2D map's background raster (GeoTIFF or .mbtiles) and the 3D view's terrain (a GeoTIFF
+// DEM; empty = flat ground). Relative paths are resolved against the configuration file's folder; empty =
+// none.
+struct MapBackgroundConfig {
+    std::string raster;
+};
+struct TerrainConfig {
+    std::string dem;
+};
+
+struct SiteConfig {
+    std::string name = "Unnamed site";
+    GeoPoint origin;
+    SimulationConfig simulation;
+    FleetConfig fleet;
+    OwnPositionConfig ownPosition;
+    TeleopInputConfig teleop;
+    RecordConfig record;
+    MapBackgroundConfig background;
+    TerrainConfig terrain;
 #ifdef OCU_SITE_HAVE_JAUS
-        std::optional<jaus::JausConfig> jaus;
+    std::optional<jaus::JausConfig> jaus;
 #endif
 #ifdef OCU_SITE_HAVE_ISO
-        std::optional<iso23725::IsoConfig> iso23725;
+    std::optional<iso23725::IsoConfig> iso23725;
 #endif
 #ifdef OCU_SITE_HAVE_OSYRIS
-        std::optional<osyris::OsyrisConfig> osyris;
+    std::optional<osyris::OsyrisConfig> osyris;
 #endif
-    };
+};
 
-    // Parses and validates; the error lists every problem found, one per line, each naming file, line and
-    // key.
-    Result<SiteConfig> parseSiteConfig(std::string_view text, const std::string& fileName);
-    Result<SiteConfig> loadSiteConfig(const std::string& path);
+// Parses and validates; the error lists every problem found, one per line, each naming file, line and key.
+Result<SiteConfig> parseSiteConfig(std::string_view text, const std::string& fileName);
+Result<SiteConfig> loadSiteConfig(const std::string& path);
 
 } // namespace ocu

@@ -82,7 +82,27 @@ public:
                 link["mapUrl"] = l.mapWs.url;
             links.push_back(link);
         }
-        out["iso23725"] = {{"links", links}};
+        // The FMS fleet too (the manned machines and the trucks it expects from the AHS): a console
+        // configured from this file must not report its own simulator's trucks as fleet discrepancies (issue
+        // 19 §5).
+        json fleet = json::array();
+        for (const auto& e : config.iso23725->fleet) {
+            json m = {{"equipmentId", e.equipmentId},
+                      {"hid", e.hid},
+                      {"type", e.type},
+                      {"oem", e.oem},
+                      {"model", e.model},
+                      {"autonomous", e.autonomous}};
+            if (e.length)
+                m["length"] = *e.length;
+            if (e.width)
+                m["width"] = *e.width;
+            fleet.push_back(std::move(m));
+        }
+        out["iso23725"] = {{"fmsId", config.iso23725->fmsId},
+                           {"sendPositions", config.iso23725->sendPositions},
+                           {"links", links},
+                           {"fleet", fleet}};
         // The pit's hillshade and DEM (or what the simulator's own configuration named), absolute paths.
         if (!config.background.raster.empty())
             out["background"] = {{"raster", config.background.raster}};

@@ -8,11 +8,13 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QToolBar>
 #include <QToolButton>
+#include <QVBoxLayout>
 #include <QtTest>
 
 #include <atomic>
@@ -231,6 +233,35 @@ private slots:
         w.stopAllButton()->setFocus();
         QTest::keyClick(w.stopAllButton(), Qt::Key_Space);
         QCOMPARE(spy.count(), 3);
+    }
+    // Issue 19 §6: Ctrl+1 … Ctrl+7 raise each panel (also a closed one or a hidden tab) and put the keyboard
+    // focus in it; the default layout gives the map most of a 1366 x 768 window.
+    void keyboardPathToEveryPanel() {
+        MainWindow w;
+        QMap<Panel, QLineEdit*> edits;
+        for (Panel p : MainWindow::panels()) {
+            auto* box = new QWidget;
+            auto* l = new QVBoxLayout(box);
+            auto* label = new QLabel(w.panelTitle(p)); // takes no focus: the edit below gets it
+            auto* edit = new QLineEdit;
+            l->addWidget(label);
+            l->addWidget(edit);
+            edits.insert(p, edit);
+            w.setPanelWidget(p, box);
+        }
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QTRY_VERIFY(w.dock(Panel::SiteMap)->width() >= 1366 * 40 / 100);
+        w.dock(Panel::EventLog)->close();
+        int n = 1;
+        for (Panel p : MainWindow::panels()) {
+            QTest::keyClick(&w, static_cast<Qt::Key>(Qt::Key_0 + n++), Qt::ControlModifier);
+            QTRY_VERIFY2(edits[p]->isVisible(), qPrintable(w.panelTitle(p)));
+            QTRY_VERIFY2(edits[p]->hasFocus(), qPrintable(w.panelTitle(p)));
+        }
     }
     void closeAndReopenPanel() {
         MainWindow w;

@@ -2,6 +2,7 @@
 // writes (the two-host set-up of the README, on loopback).
 #include <QElapsedTimer>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -35,6 +36,13 @@ private slots:
         const QJsonObject link = std::as_const(site)["iso23725"]["links"][0].toObject();
         QVERIFY(link["mapUrl"].toString().startsWith("ws://127.0.0.1:"));
         QVERIFY(link["mapUrl"].toString() != link["url"].toString());
+        // The FMS fleet is written too (issue 19 §5): the manned shovel and light vehicle plus the 3 trucks.
+        const QJsonArray fleet = std::as_const(site)["iso23725"]["fleet"].toArray();
+        QCOMPARE(fleet.size(), 2 + 3);
+        int autonomous = 0;
+        for (const QJsonValue& m : fleet)
+            autonomous += m["autonomous"].toBool() ? 1 : 0;
+        QCOMPARE(autonomous, 3);
 
         QProcess ocu;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -44,6 +52,7 @@ private slots:
         ocu.start(OCU_BINARY, {"--config", cfg, "--no-sim", "--headless"});
         QVERIFY(ocu.waitForStarted(10000));
         QSet<QString> protocols, ids;
+        QStringList discrepancies; // none: the console is configured with the simulator's own fleet
         bool mapComplete = false;
         QByteArray buf;
         QElapsedTimer t;
@@ -56,6 +65,9 @@ private slots:
             while ((nl = buf.indexOf('\n')) >= 0) {
                 const QJsonObject o = QJsonDocument::fromJson(buf.left(nl)).object();
                 buf.remove(0, nl + 1);
+                if (o.value("type") == "event" &&
+                    o.value("text").toString().contains("discrepancy", Qt::CaseInsensitive))
+                    discrepancies << o.value("text").toString();
                 if (o.value("type") == "machine") {
                     protocols.insert(o.value("protocol").toString());
                     ids.insert(o.value("id").toString());
@@ -69,6 +81,8 @@ private slots:
         QVERIFY(ids.contains("jaus:126"));
         QVERIFY(mapComplete);             // fetched over the separate map-service socket
         QVERIFY(ids.size() >= 1 + 3 + 2); // 1 UGV, 3 trucks, a paver and a roller
+        // The trucks are known, so their fleet definition has been checked (the check runs when it arrives).
+        QVERIFY2(discrepancies.isEmpty(), qPrintable(discrepancies.join("\n")));
         ocu.closeWriteChannel();
         QVERIFY(ocu.waitForFinished(20000));
         QCOMPARE(ocu.exitStatus(), QProcess::NormalExit);
@@ -77,6 +91,22 @@ private slots:
         QVERIFY(sim.waitForFinished(10000));
         QCOMPARE(sim.exitStatus(), QProcess::NormalExit);
         QCOMPARE(sim.exitCode(), 0);
+    }
+    void positionRateOption() {
+        // --position-rate HZ: 1..10 accepted (the simulator starts and runs), anything else refused.
+        for (const char* bad : {"0", "11", "fast"}) {
+            QProcess sim;
+            sim.start(OCU_SIM_BINARY, {"--position-rate", bad, "--duration", "1"});
+            QVERIFY(sim.waitForFinished(20000));
+            QCOMPARE(sim.exitCode(), 2);
+            QVERIFY(sim.readAllStandardError().contains("--position-rate must be a number 1..10"));
+        }
+        QProcess sim;
+        sim.start(OCU_SIM_BINARY, {"--position-rate", "10", "--trucks", "2", "--ugvs", "0", "--rollers", "0",
+                                   "--duration", "1"});
+        QVERIFY(sim.waitForFinished(30000));
+        QCOMPARE(sim.exitCode(), 0);
+        QVERIFY(sim.readAllStandardOutput().contains("AHS with 2 trucks"));
     }
     void badInterfaceIsRefused() {
         QProcess sim;

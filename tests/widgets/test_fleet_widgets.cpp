@@ -5,11 +5,13 @@
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/testing/FakeFleetBridge.h"
+#include "widgets/ColumnFit.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/FleetListWidget.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/PassCountPanel.h"
 
+#include <QDateTime>
 #include <QFile>
 #include <QHeaderView>
 #include <QLabel>
@@ -134,6 +136,69 @@ private slots:
         panel.setPalette(PassPalette::Summary);
         QCOMPARE(palette.count(), 1);
         QCOMPARE(panel.palette(), PassPalette::Summary);
+
+        // Issue 19 §6: the histogram has a scale (area ticks 0 / half / top), the area on each bar and
+        // titles.
+        const PassCountPanel::HistogramAxis a = panel.histogramAxis();
+        QCOMPARE(a.values.size(), 9);
+        QCOMPARE(a.values[1], 50.0); // 50 cells of 1 m² with 2 passes
+        QCOMPARE(a.values[3], 50.0);
+        QCOMPARE(a.values[0], 0.0);
+        QCOMPARE(a.top, 50.0);
+        QCOMPARE(a.ticks,
+                 (QStringList{QStringLiteral("0 m²"), QStringLiteral("25 m²"), QStringLiteral("50 m²")}));
+        QCOMPARE(a.barLabels[1], QStringLiteral("50 m²"));
+        QVERIFY(a.barLabels[0].isEmpty());
+        QCOMPARE(a.xTitle, QStringLiteral("Passes"));
+        QVERIFY(!a.yTitle.isEmpty());
+    }
+
+    // Issue 19 §6: in a fixed-size window no header and no cell in view is elided ("Link / a",
+    // "2026-11-23 …"): every column is at least as wide as what its header and visible cells need.
+    void columnsFitTheirContent() {
+        Rig rig;
+        for (int i = 0; i < 30; ++i) {
+            MachineState m = machine(QStringLiteral("iso23725:HT%1").arg(100 + i));
+            m.type = QStringLiteral("HaulTruck");
+            m.hasPosition = true;
+            m.e = -1234.56 + i;
+            m.n = 2345.67;
+            m.lastDataMs = QDateTime::currentMSecsSinceEpoch();
+            rig.iso.setMachine(m);
+        }
+        for (int i = 0; i < 20; ++i)
+            rig.alarms.add(makeEvent(EventSeverity::Warning, EventKind::LinkLoss, QStringLiteral("jaus:101"),
+                                     QStringLiteral("link lost %1").arg(i), QStringLiteral("jaus")));
+        QCoreApplication::processEvents();
+        QWidget window;
+        window.setFixedSize(1366, 768);
+        auto* list = new FleetListWidget(&rig.fleet, &rig.selection, &window);
+        auto* log = new EventLogWidget(&rig.alarms, &window);
+        list->setGeometry(0, 0, 683, 500);
+        log->setGeometry(0, 500, 1366, 268);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        for (QTableView* view : {list->findChild<QTableView*>(), log->tableView()}) {
+            QVERIFY(view != nullptr);
+            QHeaderView* h = view->horizontalHeader();
+            const int columns = view->model()->columnCount();
+            auto fits = [&] {
+                for (int c = 0; c < columns; ++c) {
+                    if (h->isSectionHidden(c) || h->sectionResizeMode(c) == QHeaderView::Stretch ||
+                        (h->stretchLastSection() && c == columns - 1))
+                        continue;
+                    if (headerTextWidth(h, c) > h->sectionSize(c))
+                        return false;
+                    for (int r = 0; r < qMin(20, view->model()->rowCount()); ++r)
+                        if (static_cast<QAbstractItemView*>(view)
+                                ->sizeHintForIndex(view->model()->index(r, c))
+                                .width() > h->sectionSize(c))
+                            return false;
+                }
+                return true;
+            };
+            QTRY_VERIFY_WITH_TIMEOUT(fits(), 10000);
+        }
     }
 };
 

@@ -2,8 +2,10 @@
 
 #include "models/CommandGate.h"
 
+#include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
+#include "widgets/FleetListWidget.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
 
 #include <QHBoxLayout>
@@ -11,8 +13,11 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QTableView>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace ocu {
@@ -22,7 +27,8 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     : QWidget(parent), m_bridge(bridge), m_gate(gate), m_selection(selection),
       m_model(new JausSubsystemModel(bridge, this)), m_table(new QTableView(this)),
       m_details(new VehicleDetailsWidget(bridge, this)), m_roleLabel(new QLabel(this)),
-      m_releaseAll(new QPushButton(tr("Release all"), this)) {
+      m_releaseAll(new QPushButton(tr("Release all"), this)), m_detailsStack(new QStackedWidget(this)),
+      m_hint(new QLabel(this)), m_generic(new QLabel), m_detailsRefresh(new QTimer(this)) {
     setObjectName(QStringLiteral("jaus-control-panel"));
     auto* top = new QHBoxLayout;
     const JausConsoleIdentity me = bridge->identity();
@@ -50,9 +56,34 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->verticalHeader()->setDefaultSectionSize(30);
 
+    // The details pane (issue 19 §6): what to do when nothing is selected, the JAUS details of a JAUS
+    // vehicle, the fleet picture's details of a machine of any other protocol.
+    m_hint->setObjectName(QStringLiteral("details-hint"));
+    m_hint->setText(tr("No machine selected.\nSelect one in the fleet list, in the table above or on the map "
+                       "(click, or Tab to the list and use the arrow keys) to see its details here."));
+    m_hint->setAlignment(Qt::AlignCenter);
+    m_hint->setWordWrap(true);
+    m_hint->setMargin(12);
+    m_generic->setObjectName(QStringLiteral("details-generic"));
+    m_generic->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    m_generic->setWordWrap(true);
+    m_generic->setMargin(8);
+    m_generic->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
+    auto* genericScroll = new QScrollArea(this);
+    genericScroll->setWidget(m_generic);
+    genericScroll->setWidgetResizable(true);
+    m_detailsStack->addWidget(m_hint);
+    m_detailsStack->addWidget(m_details);
+    m_detailsStack->addWidget(genericScroll);
+    m_detailsStack->setCurrentWidget(m_hint);
+    m_detailsRefresh->setInterval(1000);
+    connect(m_detailsRefresh, &QTimer::timeout, this, [this] {
+        if (isVisible())
+            showMachineDetails(m_detailsId);
+    });
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(m_table);
-    split->addWidget(m_details);
+    split->addWidget(m_detailsStack);
     split->setStretchFactor(0, 2);
     split->setStretchFactor(1, 3);
     auto* l = new QVBoxLayout(this);
@@ -69,6 +100,8 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
             [this](const QModelIndex& current) {
                 const std::uint16_t sub = m_model->subsystemAt(current.row());
                 m_details->showSubsystem(sub);
+                if (sub)
+                    m_detailsStack->setCurrentWidget(m_details);
                 if (m_selection && sub)
                     m_selection->setCurrent(JausVehicleBridge::machineId(sub));
             });
@@ -76,7 +109,35 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
         connect(m_selection, &FleetSelection::currentMachineChanged, this, [this](const QString& id) {
             if (auto sub = JausVehicleBridge::subsystemOf(id))
                 selectSubsystem(*sub);
+            showMachineDetails(id);
         });
+}
+
+void JausControlPanel::showMachineDetails(const QString& id) {
+    m_detailsId = id;
+    const MachineState* m =
+        id.isEmpty() || !m_selection || !m_selection->model() ? nullptr : m_selection->model()->machine(id);
+    if (JausVehicleBridge::subsystemOf(id) && m_model->rowOf(*JausVehicleBridge::subsystemOf(id)) >= 0) {
+        m_detailsRefresh->stop();
+        m_detailsStack->setCurrentWidget(m_details);
+    } else if (m != nullptr) {
+        m_generic->setText(FleetListWidget::describeMachine(*m));
+        m_detailsStack->setCurrentIndex(2);
+        if (!m_detailsRefresh->isActive())
+            m_detailsRefresh->start();
+    } else {
+        m_detailsRefresh->stop();
+        m_detailsStack->setCurrentWidget(m_hint);
+    }
+}
+
+QString JausControlPanel::detailsText() const {
+    QWidget* page = m_detailsStack->currentWidget();
+    if (page == m_hint)
+        return m_hint->text();
+    if (page == m_details)
+        return QStringLiteral("jaus:%1").arg(m_details->subsystem());
+    return m_generic->text();
 }
 
 void JausControlPanel::selectSubsystem(std::uint16_t subsystem) {

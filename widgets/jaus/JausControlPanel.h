@@ -9,6 +9,8 @@
 class QTableView;
 class QPushButton;
 class QLabel;
+class QStackedWidget;
+class QTimer;
 
 namespace ocu {
 
@@ -32,11 +34,15 @@ public:
     QPushButton* controlButton(std::uint16_t subsystem) const;
     QPushButton* releaseButton(std::uint16_t subsystem) const;
     QPushButton* monitorButton(std::uint16_t subsystem) const;
+    // What the details pane shows: the hint when nothing is selected, "jaus:<id>" for a JAUS vehicle (the
+    // details widget), the machine's details text for a machine of any other protocol.
+    QString detailsText() const;
 
 private:
     void installRowButtons(int first, int last);
     void refreshButtons();
     void selectSubsystem(std::uint16_t subsystem);
+    void showMachineDetails(const QString& id);
 
     void send(const QString& name, const QJsonObject& args);
     JausVehicleBridge* m_bridge;
@@ -47,6 +53,11 @@ private:
     VehicleDetailsWidget* m_details;
     QLabel* m_roleLabel;
     QPushButton* m_releaseAll;
+    QStackedWidget* m_detailsStack;
+    QLabel* m_hint;
+    QLabel* m_generic;
+    QTimer* m_detailsRefresh;
+    QString m_detailsId;
 };
 
 } // namespace ocu

@@ -22,9 +22,25 @@ struct Enu {
     double u = 0.0;
 };
 
-// Terrain: a Delaunay surface through `points` when there are at least 3 non-collinear ones,
-// otherwise a flat plane at height `planeU` covering [minE, maxE] x [minN, maxN].
+// A regular height grid in the site frame (from a DEM): sample (c, r) is at (originE + c*step,
+// originN + r*step), row 0 southernmost; `u` holds cols*rows heights, row-major.
+struct TerrainGrid3D {
+    double originE = 0.0;
+    double originN = 0.0;
+    double step = 1.0;
+    int cols = 0;
+    int rows = 0;
+    std::vector<double> u;
+    bool valid() const {
+        return cols >= 2 && rows >= 2 && step > 0.0 && u.size() == static_cast<std::size_t>(cols) * rows;
+    }
+};
+
+// Terrain: the `grid` surface when it is valid (a DEM), else a Delaunay surface through `points` when there
+// are at least 3 non-collinear ones, otherwise a flat plane at height `planeU` covering [minE, maxE] x
+// [minN, maxN].
 struct Terrain3D {
+    TerrainGrid3D grid;
     std::vector<Enu> points;
     double minE = -100.0;
     double minN = -100.0;
@@ -45,8 +61,12 @@ struct Way3D {
     double width = 6.0;
 };
 
+// Simple type-specific 3D shapes (issue 19 §4): told apart at a glance, the front recognisable (heading).
+enum class MachineShape { Unknown, HaulTruck, Ugv, Roller, Paver, Loader, LightVehicle };
+
 struct Machine3D {
     QString id;
+    MachineShape shape = MachineShape::Unknown;
     double e = 0.0;
     double n = 0.0;
     double u = 0.0;          // height of the box bottom (replaced by the terrain height, see Scene3D)
@@ -55,7 +75,7 @@ struct Machine3D {
     double width = 4.0;
     double height = 4.0;
     Rgb colour{0, 200, 0};
-    QString label; // shown above the selected machine (id when empty)
+    QString label; // name shown above the machine (decluttered; the selected one always; id when empty)
     bool selected = false;
 };
 
@@ -119,6 +139,27 @@ inline MachineSize defaultMachineSize(const QString& type) {
         t.contains(QLatin1String("pickup")))
         return {5.0, 2.0, 2.0};
     return {6.0, 3.0, 3.0};
+}
+
+// Shape by equipment type text (the same words as defaultMachineSize).
+inline MachineShape machineShapeFor(const QString& type) {
+    const QString t = type.toLower();
+    if (t.contains(QLatin1String("haul")) || t.contains(QLatin1String("truck")) ||
+        t.contains(QLatin1String("dump")))
+        return MachineShape::HaulTruck;
+    if (t.contains(QLatin1String("roller")) || t.contains(QLatin1String("compact")))
+        return MachineShape::Roller;
+    if (t.contains(QLatin1String("paver")))
+        return MachineShape::Paver;
+    if (t.contains(QLatin1String("excavat")) || t.contains(QLatin1String("shovel")) ||
+        t.contains(QLatin1String("loader")) || t.contains(QLatin1String("dozer")))
+        return MachineShape::Loader;
+    if (t.contains(QLatin1String("ugv")) || t.contains(QLatin1String("robot")))
+        return MachineShape::Ugv;
+    if (t.contains(QLatin1String("car")) || t.contains(QLatin1String("light")) ||
+        t.contains(QLatin1String("pickup")))
+        return MachineShape::LightVehicle;
+    return MachineShape::Unknown;
 }
 
 } // namespace ocu

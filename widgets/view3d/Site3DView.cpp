@@ -6,6 +6,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QCoreApplication>
 #include <QEvent>
 #include <QGuiApplication>
 #include <QMouseEvent>
@@ -19,6 +20,7 @@
 #include <cmath>
 
 #include <functional>
+#include <utility>
 
 namespace ocu {
 
@@ -90,6 +92,22 @@ private:
     QPointF m_last;
 };
 
+// Stands in for the GL widget until the panel is painted for the first time (really on screen).
+class CanvasPlaceholder : public QWidget {
+public:
+    CanvasPlaceholder(QWidget* parent, std::function<void()> firstPaint)
+        : QWidget(parent), m_firstPaint(std::move(firstPaint)) {}
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        if (m_firstPaint)
+            QTimer::singleShot(0, parentWidget(), std::exchange(m_firstPaint, {}));
+    }
+
+private:
+    std::function<void()> m_firstPaint;
+};
+
 // Pass-count legend in the top-right corner of its parent (the GL widget or the image view).
 class LegendOverlay : public QWidget {
 public:
@@ -123,7 +141,9 @@ protected:
         p.setBrush(QColor(255, 255, 255, 215));
         p.drawRoundedRect(rect().adjusted(0, 0, -1, -1), 4, 4);
         p.setPen(Qt::black);
-        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter, tr("Passes"));
+        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter,
+                   QCoreApplication::translate("ocu::LegendOverlay",
+                                               "Passes")); // no Q_OBJECT: tr() would use "QWidget"
         int y = kPad + kRow;
         for (const LegendEntry& e : m_entries) {
             p.fillRect(QRect(kPad, y + 3, kSwatch, kRow - 6), QColor(e.colour.r, e.colour.g, e.colour.b));
@@ -150,6 +170,9 @@ struct Site3DView::Impl {
     ImageView* image = nullptr;
     std::unique_ptr<EglOffscreenRenderer> egl;
     LegendOverlay* legend = nullptr;
+    std::vector<LegendEntry> legendEntries;
+    QVBoxLayout* layout = nullptr;
+    QWidget* placeholder = nullptr; // stands in for the GL widget until the panel is first shown
     QTimer renderTimer;
     QAction* orbit = nullptr;
     QAction* follow = nullptr;
@@ -184,7 +207,7 @@ Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Im
     connect(reset, &QAction::triggered, this, [this] { resetCamera(); });
     layout->addWidget(toolbar);
 
-    QWidget* view = nullptr;
+    d->layout = layout;
     if (useOffscreenImage()) {
         d->backend = Backend::OffscreenImage;
         d->egl = std::make_unique<EglOffscreenRenderer>();
@@ -219,19 +242,62 @@ Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Im
         d->renderTimer.setSingleShot(true);
         d->renderTimer.setInterval(50);
         connect(&d->renderTimer, &QTimer::timeout, d->image, qOverload<>(&QWidget::update));
-        view = d->image;
+        d->image->setObjectName(QStringLiteral("view3dCanvas"));
+        layout->addWidget(d->image, 1);
+        d->legend = new LegendOverlay(d->image);
     } else {
+        // The QOpenGLWidget is created when the panel is first shown (ensureCanvas): a window that has never
+        // held one composes its widgets without OpenGL, so a console whose 3D tab stays closed pays nothing
+        // for it (issue 19 §4/§7).
         d->backend = Backend::OpenGLWidget;
-        d->gl = new VtkOpenGLWidget(&d->scene, this);
-        connect(d->gl, &VtkOpenGLWidget::machinePicked, this, [this](const QString& id) {
-            setSelectedMachine(id);
-            emit machinePicked(id);
-        });
-        view = d->gl;
+        d->placeholder = new CanvasPlaceholder(this, [this] { ensureCanvas(); });
+        layout->addWidget(d->placeholder, 1);
     }
-    view->setObjectName(QStringLiteral("view3dCanvas"));
-    layout->addWidget(view, 1);
-    d->legend = new LegendOverlay(view);
+}
+
+QWidget* Site3DView::ensureCanvas() const {
+    if (d->image != nullptr)
+        return d->image;
+    if (d->gl == nullptr) {
+        auto* self = const_cast<Site3DView*>(this);
+        d->gl = new VtkOpenGLWidget(&d->scene, self);
+        connect(d->gl, &VtkOpenGLWidget::machinePicked, self, [self](const QString& id) {
+            self->setSelectedMachine(id);
+            emit self->machinePicked(id);
+        });
+        d->gl->setObjectName(QStringLiteral("view3dCanvas"));
+        d->layout->replaceWidget(d->placeholder, d->gl);
+        d->placeholder->deleteLater();
+        d->placeholder = nullptr;
+        d->legend = new LegendOverlay(d->gl);
+        d->legend->setEntries(d->legendEntries);
+    }
+    return d->gl;
+}
+
+void Site3DView::showEvent(QShowEvent* event) {
+    // Not at once: a QMainWindow shows every dock when it is first shown and only then hides the tabs that
+    // are not current; the GL widget is made once the panel is still shown after that (and then at once
+    // when it is really raised).
+    if (d->image == nullptr && d->gl == nullptr)
+        QTimer::singleShot(0, this, [this] {
+            if (isVisible() && !visibleRegion().isEmpty())
+                ensureCanvas();
+        });
+    QWidget::showEvent(event);
+    // Changes that arrived while hidden were not drawn: draw the current state once.
+    if (d->image != nullptr)
+        d->image->markDirty();
+    emit visibilityChanged(true);
+}
+
+void Site3DView::hideEvent(QHideEvent* event) {
+    QWidget::hideEvent(event);
+    emit visibilityChanged(false);
+}
+
+std::uint64_t Site3DView::renderCount() const {
+    return d->scene.renderCount();
 }
 
 Site3DView::~Site3DView() {
@@ -261,17 +327,22 @@ QString Site3DView::statusMessage() const {
 
 void Site3DView::scheduleRender() {
     if (d->gl != nullptr) {
-        d->gl->requestRender(); // Qt coalesces repaints
+        if (isVisible())
+            d->gl->requestRender(); // Qt coalesces repaints
         return;
     }
+    if (d->image == nullptr)
+        return; // no canvas yet: the first show draws the current scene
     d->image->markDirty();
-    if (!d->renderTimer.isActive())
+    if (isVisible() && !d->renderTimer.isActive())
         d->renderTimer.start();
 }
 
 void Site3DView::setScene(const Scene3D& scene) {
     d->scene.setScene(scene);
-    d->legend->setEntries(scene.legend);
+    d->legendEntries = scene.legend;
+    if (d->legend != nullptr)
+        d->legend->setEntries(scene.legend);
     scheduleRender();
 }
 
@@ -282,7 +353,9 @@ void Site3DView::updateMachines(const std::vector<Machine3D>& machines) {
 
 void Site3DView::setPassCount(const PassCountRaster& raster, const std::vector<LegendEntry>& legend) {
     d->scene.setPassCount(raster, legend);
-    d->legend->setEntries(legend);
+    d->legendEntries = legend;
+    if (d->legend != nullptr)
+        d->legend->setEntries(legend);
     scheduleRender();
 }
 
@@ -338,6 +411,7 @@ QImage Site3DView::renderImage(QSize size) {
         d->image->update();
         return img;
     }
+    ensureCanvas();
     const QImage frame = d->gl->grabFramebuffer();
     if (frame.isNull() || frame.size() == size)
         return frame;
@@ -355,9 +429,7 @@ QSize Site3DView::viewPixelSize() const {
 }
 
 QWidget* Site3DView::viewWidget() const {
-    if (d->gl != nullptr)
-        return d->gl;
-    return d->image;
+    return ensureCanvas();
 }
 
 } // namespace ocu

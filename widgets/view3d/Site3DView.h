@@ -12,6 +12,7 @@
 #include <QString>
 #include <QWidget>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -56,17 +57,26 @@ public:
     // Size of the drawing area in device pixels (what pick/project coordinates refer to).
     QSize viewPixelSize() const;
     // The widget that shows the 3D picture (the QOpenGLWidget or the image widget); for tests and event
-    // filters.
+    // filters. The QOpenGLWidget is created on the first show (or by this call).
     QWidget* viewWidget() const;
+    // Frames of the 3D scene drawn so far (any backend). It does not move while the panel is hidden.
+    std::uint64_t renderCount() const;
 
 signals:
     // A machine was clicked in the 3D view (it is also selected locally). Connect to the shared selection.
     void machinePicked(const QString& id);
     void cameraModeChanged(ocu::CameraMode mode);
+    // The panel was shown (true) or hidden (false), e.g. its tab was raised or another tab covered it.
+    void visibilityChanged(bool visible);
+
+protected:
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
 
 private:
     void scheduleRender();
     void syncModeButtons();
+    QWidget* ensureCanvas() const;
     struct Impl;
     std::unique_ptr<Impl> d;
 };

@@ -3,16 +3,21 @@
 #include "protocols/common/Log.h"
 
 #include <vtkActor.h>
+#include <vtkAppendPolyData.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkCoordinate.h>
 #include <vtkCubeSource.h>
+#include <vtkCylinderSource.h>
 #include <vtkDelaunay2D.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkGlyph3DMapper.h>
 #include <vtkImageData.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -25,6 +30,8 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTexture.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -160,6 +167,79 @@ vtkSmartPointer<vtkUnsignedCharArray> makeColours(int components, const char* na
     return a;
 }
 
+// Machine shapes in the unit frame the glyphs are scaled from: x = width [-0.5, 0.5], y = length (forward
+// = +y) [-0.5, 0.5], z = height [0, 1]. Made of a few boxes (and a drum) so the type and the front read at a
+// glance; index = int(MachineShape).
+vtkSmartPointer<vtkPolyData> shapeOf(MachineShape shape) {
+    vtkNew<vtkAppendPolyData> all;
+    auto box = [&](double x0, double x1, double y0, double y1, double z0, double z1) {
+        vtkNew<vtkCubeSource> c;
+        c->SetBounds(x0, x1, y0, y1, z0, z1);
+        c->Update();
+        all->AddInputData(c->GetOutput());
+    };
+    auto drum = [&](double y, double radius) { // a cylinder across the machine (axis = x)
+        vtkNew<vtkCylinderSource> c;
+        c->SetResolution(16);
+        c->SetRadius(radius);
+        c->SetHeight(1.0);
+        vtkNew<vtkTransform> t;
+        t->Translate(0.0, y, radius);
+        t->RotateZ(90.0);
+        vtkNew<vtkTransformPolyDataFilter> f;
+        f->SetTransform(t);
+        f->SetInputConnection(c->GetOutputPort());
+        f->Update();
+        all->AddInputData(f->GetOutput());
+    };
+    switch (shape) {
+    case MachineShape::HaulTruck: // low chassis, raised dump body at the rear with a canopy over the cab
+        box(-0.45, 0.45, -0.5, 0.5, 0.0, 0.35);
+        box(-0.5, 0.5, -0.5, 0.2, 0.35, 1.0);
+        box(-0.45, 0.05, 0.25, 0.5, 0.35, 0.8);
+        box(-0.5, 0.5, 0.2, 0.5, 0.85, 0.95);
+        break;
+    case MachineShape::Ugv: // flat body, a mast, a low bumper in front
+        box(-0.5, 0.5, -0.5, 0.4, 0.15, 0.6);
+        box(-0.4, 0.4, 0.4, 0.5, 0.05, 0.35);
+        box(-0.08, 0.08, 0.05, 0.25, 0.6, 1.0);
+        break;
+    case MachineShape::Roller: // the drum in front, engine body and cab behind
+        drum(0.3, 0.28);
+        box(-0.45, 0.45, -0.5, 0.05, 0.1, 0.55);
+        box(-0.35, 0.35, -0.4, 0.0, 0.55, 1.0);
+        break;
+    case MachineShape::Paver: // hopper in front, wide screed behind, canopy
+        box(-0.45, 0.45, -0.3, 0.3, 0.0, 0.6);
+        box(-0.5, 0.5, 0.3, 0.5, 0.2, 0.7);
+        box(-0.5, 0.5, -0.5, -0.3, 0.0, 0.25);
+        box(-0.4, 0.4, -0.25, 0.1, 0.9, 1.0);
+        box(-0.4, -0.35, -0.25, 0.1, 0.6, 0.9);
+        box(0.35, 0.4, -0.25, 0.1, 0.6, 0.9);
+        break;
+    case MachineShape::Loader: // body and cab, arms and the bucket in front
+        box(-0.45, 0.45, -0.5, 0.15, 0.0, 0.6);
+        box(-0.3, 0.3, -0.25, 0.15, 0.6, 1.0);
+        box(-0.35, 0.35, 0.15, 0.35, 0.2, 0.45);
+        box(-0.5, 0.5, 0.35, 0.5, 0.0, 0.4);
+        break;
+    case MachineShape::LightVehicle: // body and a cabin set back
+        box(-0.5, 0.5, -0.5, 0.5, 0.0, 0.5);
+        box(-0.45, 0.45, -0.35, 0.2, 0.5, 1.0);
+        break;
+    case MachineShape::Unknown:
+        box(-0.5, 0.5, -0.5, 0.5, 0.0, 1.0);
+        break;
+    }
+    all->Update();
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->DeepCopy(all->GetOutput());
+    return out;
+}
+
+constexpr int kShapeCount = static_cast<int>(MachineShape::LightVehicle) + 1;
+constexpr int kMaxLabels = 40; // name labels drawn at once (nearest first, never overlapping)
+
 void configureDirectColours(vtkMapper* mapper, bool cellData) {
     mapper->SetColorModeToDirectScalars();
     mapper->ScalarVisibilityOn();
@@ -203,6 +283,7 @@ struct SiteSceneRenderer::Impl {
     vtkNew<vtkPoints> machinePoints;
     vtkNew<vtkDoubleArray> machineScale;
     vtkNew<vtkDoubleArray> machineRotation;
+    vtkNew<vtkIntArray> machineShape;
     vtkSmartPointer<vtkUnsignedCharArray> machineColour = makeColours(3, "colour");
     vtkNew<vtkGlyph3DMapper> machineMapper;
     vtkNew<vtkActor> machineActor;
@@ -213,6 +294,9 @@ struct SiteSceneRenderer::Impl {
     vtkNew<vtkPolyDataMapper> selectionMapper;
     vtkNew<vtkActor> selectionActor;
     vtkNew<vtkTextActor> label; // 2D overlay anchored to a world point (no translucent pass)
+    std::vector<vtkSmartPointer<vtkTextActor>> nameLabels; // placed before every frame (placeLabels)
+    std::uint64_t labelsPlaced = 0;
+    std::vector<QRectF> labelRects; // where the name labels of the last frame are (display pixels, y up)
     vtkNew<vtkCoordinate> labelAnchor;
 
     Scene3D scene;
@@ -224,8 +308,27 @@ struct SiteSceneRenderer::Impl {
     std::uint64_t buildCount = 0;
     std::uint64_t layoutCount = 0;
     std::size_t lastBadMachines = 0;
+    std::uint64_t renders = 0;
+    vtkNew<vtkCallbackCommand> renderObserver;
 
     Impl() {
+        renderObserver->SetClientData(this);
+        renderObserver->SetCallback(
+            [](vtkObject*, unsigned long, void* self, void*) { static_cast<Impl*>(self)->beforeFrame(); });
+        renderer->AddObserver(vtkCommand::StartEvent, renderObserver);
+        for (int i = 0; i < kMaxLabels; ++i) {
+            auto t = vtkSmartPointer<vtkTextActor>::New();
+            t->GetTextProperty()->SetFontSize(12);
+            t->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+            t->GetTextProperty()->SetBackgroundColor(0.12, 0.12, 0.12);
+            t->GetTextProperty()->SetBackgroundOpacity(0.6);
+            t->GetTextProperty()->SetJustificationToCentered();
+            t->GetTextProperty()->SetVerticalJustificationToBottom();
+            t->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+            t->SetVisibility(false);
+            renderer->AddActor2D(t);
+            nameLabels.push_back(t);
+        }
         renderer->SetBackground(0.78, 0.84, 0.92);
         // Nothing is drawn in VTK's translucent pass: in 9.1 that pass always runs order-independent
         // transparency (extra full-screen passes, several ms per frame on llvmpipe). The pass-count surface
@@ -282,9 +385,14 @@ struct SiteSceneRenderer::Impl {
         machineData->SetPoints(machinePoints);
         machineData->GetPointData()->AddArray(machineScale);
         machineData->GetPointData()->AddArray(machineRotation);
+        machineShape->SetName("shape");
+        machineData->GetPointData()->AddArray(machineShape);
+        for (int i = 0; i < kShapeCount; ++i)
+            machineMapper->SetSourceData(i, shapeOf(static_cast<MachineShape>(i)));
+        machineMapper->SetSourceIndexArray("shape");
+        machineMapper->SourceIndexingOn();
         machineData->GetPointData()->SetScalars(machineColour);
         machineMapper->SetInputData(machineData);
-        machineMapper->SetSourceConnection(box->GetOutputPort());
         machineMapper->SetScaleArray("scale");
         machineMapper->SetScaleModeToScaleByVectorComponents();
         machineMapper->SetOrientationArray("rotation");
@@ -321,10 +429,138 @@ struct SiteSceneRenderer::Impl {
         label->SetVisibility(false);
     }
 
+    void beforeFrame() {
+        ++renders;
+        placeLabels();
+    }
+
+    // Name labels above the machines, nearest to the camera first, none overlapping another or the selected
+    // machine's label; at most kMaxLabels. Done before every frame because the camera may have moved.
+    void placeLabels() {
+        labelRects.clear();
+        int w = 0, h = 0;
+        std::size_t used = 0;
+        if (windowSize(w, h) && machineActor->GetVisibility()) {
+            vtkCamera* cam = renderer->GetActiveCamera();
+            double eye[3];
+            cam->GetPosition(eye);
+            auto project = [&](const Machine3D& m, double& x, double& y) {
+                renderer->SetWorldPoint(m.e, m.n, m.u + m.height + 1.0, 1.0);
+                renderer->WorldToDisplay();
+                double dp[3];
+                renderer->GetDisplayPoint(dp);
+                x = dp[0];
+                y = dp[1];
+                return dp[2] >= 0.0 && dp[2] <= 1.0 && x >= 0 && x < w && y >= 0 && y < h;
+            };
+            auto rectFor = [](const QString& text, double x, double y, int fontPx) {
+                const double tw = text.size() * fontPx * 0.6 + 8.0, th = fontPx + 6.0;
+                return QRectF(x - tw / 2.0, y + 6.0, tw, th);
+            };
+            if (const Machine3D* sel = find(selected)) {
+                double x = 0, y = 0;
+                if (project(*sel, x, y))
+                    labelRects.push_back(
+                        rectFor(sel->label.isEmpty() ? sel->id : sel->label, x, y + 8.0, 16));
+            }
+            std::vector<std::pair<double, std::size_t>> order;
+            order.reserve(scene.machines.size());
+            for (std::size_t i = 0; i < scene.machines.size(); ++i) {
+                const Machine3D& m = scene.machines[i];
+                if (!finite(m) || m.id == selected)
+                    continue;
+                const double d2 = (m.e - eye[0]) * (m.e - eye[0]) + (m.n - eye[1]) * (m.n - eye[1]) +
+                                  (m.u - eye[2]) * (m.u - eye[2]);
+                order.emplace_back(d2, i);
+            }
+            std::sort(order.begin(), order.end());
+            const std::size_t first = labelRects.size();
+            for (const auto& [d2, i] : order) {
+                if (used == nameLabels.size())
+                    break;
+                const Machine3D& m = scene.machines[i];
+                double x = 0, y = 0;
+                if (!project(m, x, y))
+                    continue;
+                const QString text = m.label.isEmpty() ? m.id : m.label;
+                const QRectF r = rectFor(text, x, y, 12);
+                if (std::any_of(labelRects.begin(), labelRects.end(),
+                                [&](const QRectF& o) { return o.intersects(r); }))
+                    continue;
+                labelRects.push_back(r);
+                vtkTextActor* t = nameLabels[used++];
+                t->SetInput(text.toUtf8().constData());
+                t->SetPosition(x, y + 6.0);
+                t->SetVisibility(true);
+            }
+            // Only the name labels are reported (the selected machine's label is drawn by `label`).
+            labelRects.erase(labelRects.begin(), labelRects.begin() + static_cast<std::ptrdiff_t>(first));
+        }
+        for (std::size_t k = used; k < nameLabels.size(); ++k)
+            nameLabels[k]->SetVisibility(false);
+        labelsPlaced = used;
+    }
+
     double height(double e, double n) const {
         if (!flatTerrain && terrainIndex.valid())
             return terrainIndex.height(e, n);
         return flatU;
+    }
+
+    // A DEM grid: two triangles per cell, coloured by height (low = darker, like a pit floor in shadow).
+    vtkSmartPointer<vtkPolyData> buildGridTerrain(const Terrain3D& t) {
+        const TerrainGrid3D& g = t.grid;
+        std::vector<Enu> verts;
+        verts.reserve(g.u.size());
+        double uMin = std::numeric_limits<double>::max(), uMax = std::numeric_limits<double>::lowest();
+        double sum = 0.0;
+        std::size_t good = 0;
+        for (double u : g.u)
+            if (std::isfinite(u)) {
+                uMin = std::min(uMin, u);
+                uMax = std::max(uMax, u);
+                sum += u;
+                ++good;
+            }
+        if (good == 0)
+            return nullptr;
+        const double fill = sum / static_cast<double>(good);
+        vtkNew<vtkPoints> pts;
+        pts->SetNumberOfPoints(static_cast<vtkIdType>(g.u.size()));
+        auto colours = makeColours(3, "colour");
+        colours->SetNumberOfTuples(static_cast<vtkIdType>(g.u.size()));
+        for (int r = 0; r < g.rows; ++r)
+            for (int c = 0; c < g.cols; ++c) {
+                const std::size_t i = static_cast<std::size_t>(r) * g.cols + c;
+                const double u = std::isfinite(g.u[i]) ? g.u[i] : fill;
+                const Enu p{g.originE + c * g.step, g.originN + r * g.step, u};
+                verts.push_back(p);
+                pts->SetPoint(static_cast<vtkIdType>(i), p.e, p.n, p.u);
+                const double f = 0.7 + 0.5 * (uMax > uMin ? (u - uMin) / (uMax - uMin) : 0.5);
+                colours->SetTuple3(static_cast<vtkIdType>(i), std::min(255.0, t.colour.r * f),
+                                   std::min(255.0, t.colour.g * f), std::min(255.0, t.colour.b * f));
+            }
+        std::vector<std::array<int, 3>> tris;
+        tris.reserve(static_cast<std::size_t>(g.cols - 1) * (g.rows - 1) * 2);
+        vtkNew<vtkCellArray> cells;
+        for (int r = 0; r + 1 < g.rows; ++r)
+            for (int c = 0; c + 1 < g.cols; ++c) {
+                const int a = r * g.cols + c, b = a + 1, d = a + g.cols, e = d + 1;
+                for (const std::array<int, 3>& tri :
+                     {std::array<int, 3>{a, b, e}, std::array<int, 3>{a, e, d}}) {
+                    tris.push_back(tri);
+                    const vtkIdType ids[3] = {tri[0], tri[1], tri[2]};
+                    cells->InsertNextCell(3, ids);
+                }
+            }
+        terrainIndex.build(verts, std::move(tris));
+        flatTerrain = !terrainIndex.valid();
+        drapeStep = std::clamp(g.step / 2.0, 1.0, 25.0);
+        auto surface = vtkSmartPointer<vtkPolyData>::New();
+        surface->SetPoints(pts);
+        surface->SetPolys(cells);
+        surface->GetPointData()->SetScalars(colours);
+        return surface;
     }
 
     void buildTerrain() {
@@ -341,7 +577,9 @@ struct SiteSceneRenderer::Impl {
                                                       [](const Enu& p) { return !finite(p); }),
                                        scene.terrain.points.end());
         }
-        if (t.points.size() >= 3) {
+        if (t.grid.valid()) {
+            surface = buildGridTerrain(t);
+        } else if (t.points.size() >= 3) {
             vtkNew<vtkPoints> pts;
             for (const Enu& p : t.points)
                 pts->InsertNextPoint(p.e, p.n, p.u);
@@ -659,6 +897,7 @@ struct SiteSceneRenderer::Impl {
         machineScale->SetNumberOfTuples(n);
         machineRotation->SetNumberOfTuples(n);
         machineColour->SetNumberOfTuples(n);
+        machineShape->SetNumberOfTuples(n);
         machineIndex.clear();
         for (vtkIdType i = 0; i < n; ++i)
             machineIndex.insert(scene.machines[static_cast<std::size_t>(i)].id, static_cast<int>(i));
@@ -673,8 +912,10 @@ struct SiteSceneRenderer::Impl {
             machineScale->SetTuple3(i, 0.0, 0.0, 0.0);
             machineRotation->SetTuple3(i, 0.0, 0.0, 0.0);
             machineColour->SetTuple3(i, 0, 0, 0);
+            machineShape->SetValue(i, 0);
             return;
         }
+        machineShape->SetValue(i, std::clamp(static_cast<int>(m.shape), 0, kShapeCount - 1));
         machinePoints->SetPoint(i, m.e, m.n, m.u);
         machineScale->SetTuple3(i, std::max(m.width, 0.1), std::max(m.length, 0.1), std::max(m.height, 0.1));
         machineRotation->SetTuple3(i, 0.0, 0.0,
@@ -709,6 +950,7 @@ struct SiteSceneRenderer::Impl {
         machineScale->Modified();
         machineRotation->Modified();
         machineColour->Modified();
+        machineShape->Modified();
         machineData->Modified();
         machineActor->SetVisibility(!machines.empty());
         updateSelection();
@@ -780,6 +1022,22 @@ struct SiteSceneRenderer::Impl {
             b[3] = flatExtent[3];
             b[4] = flatU;
             b[5] = flatU + 5.0;
+            return;
+        }
+        const TerrainGrid3D& g = scene.terrain.grid;
+        if (g.valid()) {
+            b[0] = g.originE;
+            b[1] = g.originE + (g.cols - 1) * g.step;
+            b[2] = g.originN;
+            b[3] = g.originN + (g.rows - 1) * g.step;
+            b[4] = std::numeric_limits<double>::max();
+            b[5] = std::numeric_limits<double>::lowest();
+            for (double u : g.u)
+                if (std::isfinite(u)) {
+                    b[4] = std::min(b[4], u);
+                    b[5] = std::max(b[5], u);
+                }
+            b[5] += 5.0;
             return;
         }
         const auto& pts = scene.terrain.points;
@@ -1019,6 +1277,13 @@ std::uint64_t SiteSceneRenderer::sceneBuildCount() const {
 }
 std::uint64_t SiteSceneRenderer::machineLayoutCount() const {
     return d->layoutCount;
+}
+std::vector<QRectF> SiteSceneRenderer::nameLabelRects() const {
+    return d->labelRects;
+}
+
+std::uint64_t SiteSceneRenderer::renderCount() const {
+    return d->renders;
 }
 
 } // namespace ocu

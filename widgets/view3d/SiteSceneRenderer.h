@@ -5,6 +5,7 @@
 #include "widgets/view3d/Scene3D.h"
 
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 
 #include <cstdint>
@@ -61,6 +62,12 @@ public:
     std::optional<Machine3D> machine(const QString& id) const;
     std::uint64_t sceneBuildCount() const;    // number of full rebuilds (setScene calls)
     std::uint64_t machineLayoutCount() const; // number of times the machine arrays were re-laid out
+    // Frames drawn by any window this renderer is attached to (VTK StartEvent of the renderer): a hidden
+    // view must not move it (issue 19 §4).
+    std::uint64_t renderCount() const;
+    // Where the machines' name labels were drawn in the last frame (display pixels, origin bottom-left):
+    // nearest machines first, at most 40, never overlapping each other or the selected machine's label.
+    std::vector<QRectF> nameLabelRects() const;
 
 private:
     struct Impl;

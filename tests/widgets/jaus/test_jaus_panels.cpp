@@ -1,6 +1,7 @@
 // The JAUS access-control and teleop panels against two simulated UGVs on loopback (issue 7).
 #include "models/AlarmModel.h"
 #include "models/FleetContext.h"
+#include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"
 #include "models/jaus/JausSubsystemModel.h"
@@ -137,6 +138,30 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(hasService(), 10000);
     }
 
+    // Issue 19 §6: the details pane says what to do when nothing is selected and shows the selected machine
+    // of any protocol (JAUS: the vehicle details; others: the fleet picture's details).
+    void detailsPaneHintAndAnyProtocol() {
+        Site s;
+        Window w(s);
+        QVERIFY(w.control->detailsText().contains("No machine selected"));
+        QVERIFY(w.control->detailsText().contains("Select one in the fleet list"));
+        MachineState truck;
+        truck.id = QStringLiteral("iso23725:HT101");
+        truck.protocol = Protocol::Iso23725;
+        truck.name = QStringLiteral("HT101");
+        truck.type = QStringLiteral("HaulTruck");
+        truck.hasPosition = true;
+        truck.e = 12.5;
+        s.ctx.fleet()->upsert({truck});
+        s.ctx.selection()->setCurrent(truck.id);
+        QVERIFY2(w.control->detailsText().contains("Name: HT101"), qPrintable(w.control->detailsText()));
+        QVERIFY(w.control->detailsText().contains("Protocol: iso23725"));
+        QTRY_VERIFY_WITH_TIMEOUT(w.control->model()->rowOf(126) >= 0, 20000);
+        s.ctx.selection()->setCurrent(QStringLiteral("jaus:126"));
+        QCOMPARE(w.control->detailsText(), QStringLiteral("jaus:126"));
+        s.ctx.selection()->clear();
+        QVERIFY(w.control->detailsText().contains("No machine selected"));
+    }
     void takeControlTurnsRowGreen() {
         Site s;
         Window win(s);

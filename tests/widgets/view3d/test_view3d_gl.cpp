@@ -9,9 +9,11 @@
 #include "widgets/view3d/VtkOpenGLWidget.h"
 
 #include <QApplication>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QSignalSpy>
+#include <QTabWidget>
 #include <QVBoxLayout>
 #include <QtTest>
 
@@ -160,6 +162,25 @@ private slots:
     }
 
     // Headless fallback when EGL is unavailable but an X server is: VTK's own offscreen X window.
+    // Issue 19 §4: a 3D panel in a tab that is not raised creates no QOpenGLWidget (a window holding one is
+    // composed through OpenGL on every repaint, which cost the GUI thread and Mesa's threads with the 2D map
+    // shown); raising the tab creates it and draws.
+    void noGlWidgetUntilTheTabIsRaised() {
+        QTabWidget tabs;
+        tabs.resize(800, 600);
+        tabs.addTab(new QLabel(QStringLiteral("2D")), QStringLiteral("2D"));
+        auto* view = new Site3DView;
+        view->setScene(makeSite());
+        tabs.addTab(view, QStringLiteral("3D"));
+        tabs.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tabs, 30000));
+        QTest::qWait(200);
+        QCOMPARE(view->findChild<VtkOpenGLWidget*>(), nullptr);
+        QCOMPARE(view->renderCount(), std::uint64_t(0));
+        tabs.setCurrentIndex(1);
+        QTRY_VERIFY_WITH_TIMEOUT(view->findChild<VtkOpenGLWidget*>() != nullptr, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(view->renderCount() > 0, 30000);
+    }
     void xOffscreenFallbackRendersTheScene() {
         qputenv("OCU_VIEW3D_NO_EGL", "1");
         EglOffscreenRenderer offscreen;

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Issue 19 §7: CPU of the real console window under Xvfb at 1920x1080 with `ocu-sim` driving
+# 1,000 trucks at 10 Hz, 20 UGVs and 3 rollers. Prints CPU % of one core per thread of `ocu` over a window
+# (from /proc/<pid>/task/*/stat), the GUI thread first, plus the load average.
+# Usage: scripts/gui-load.sh [BUILD_DIR] [WARMUP_S] [MEASURE_S]
+set -euo pipefail
+build=${1:-build}
+warmup=${2:-40}
+measure=${3:-30}
+work=$(mktemp -d)
+pid=""
+trap 'kill ${pid:+"$pid"} $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
+"$build/app/ocu-sim" --trucks 1000 --position-rate 10 --ugvs 20 --rollers 3 --write-config "$work/site.json" \
+  >"$work/sim.log" 2>&1 &
+sim=$!
+for _ in $(seq 100); do
+  [ -s "$work/site.json" ] && python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$work/site.json" 2>/dev/null && break
+  sleep 0.2
+done
+# A fresh settings directory: the first start (maximized at the screen's size, default layout: 2D map shown,
+# 3D view a hidden tab).
+XDG_CONFIG_HOME="$work/config" xvfb-run -a -s "-screen 0 1920x1080x24" \
+  "$build/app/ocu" --config "$work/site.json" --no-sim >"$work/ocu.log" 2>&1 &
+for _ in $(seq 100); do
+  pid=""
+  for p in $(pgrep -f -- "--config $work/site.json" || true); do # our ocu, not another one on the host
+    [ "$(cat /proc/"$p"/comm 2>/dev/null)" = ocu ] && pid=$p
+  done
+  [ -n "$pid" ] && break
+  sleep 0.2
+done
+[ -n "$pid" ] || { echo "ocu did not start"; cat "$work/ocu.log"; exit 1; }
+sleep "$warmup"
+hz=$(getconf CLK_TCK)
+snap() { for t in /proc/"$pid"/task/*; do
+  echo "$(basename "$t") $(cat "$t/comm" | tr ' ' '_') $(awk '{print $14+$15}' "$t/stat")"; done; }
+snap >"$work/a"
+sleep "$measure"
+snap >"$work/b"
+[ -d /proc/"$pid" ] || { echo "ocu ended early"; cat "$work/ocu.log"; exit 1; }
+echo "ocu pid $pid, ${measure} s window after ${warmup} s warm-up; $(uptime | sed 's/.*load/load/')"
+join <(sort "$work/a") <(sort "$work/b") | awk -v hz="$hz" -v s="$measure" -v pid="$pid" '
+  { cpu = ($5 - $3) / hz / s * 100; name = ($1 == pid ? "GUI(main)" : $2);
+    tot[name] += cpu; n[name]++; all += cpu }
+  END { printf "  %-22s %6.1f %%\n", "GUI(main)", tot["GUI(main)"];
+        for (k in tot) if (k != "GUI(main)") printf "  %-22s %6.1f %% (%d threads)\n", k, tot[k], n[k];
+        printf "  %-22s %6.1f %%\n", "process total", all }'
+kill "$sim" 2>/dev/null || true

@@ -1,0 +1,20 @@
+#pragma once
+// Column widths that fit their content (issue 19 §6: no "Link / a", no "2026-11-23 …"): each column is
+// made at least as wide as its header text and the cells of the rows in view (the view's own size hints,
+// so delegates and fonts count). Cheap enough for a timer: only the visible rows are measured.
+class QHeaderView;
+class QTableView;
+
+namespace ocu {
+
+// Widens (never narrows) every column of the view except stretched ones.
+// Returns how many columns were widened.
+int fitColumnsToContent(QTableView* view);
+
+// Width the header section needs to show its title unelided (with the sort indicator's room).
+int headerTextWidth(const QHeaderView* header, int section);
+
+// Calls fitColumnsToContent when rows arrive or the view is shown, at most once a second.
+void keepColumnsFitted(QTableView* view);
+
+} // namespace ocu
