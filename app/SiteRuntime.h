@@ -31,6 +31,7 @@ public:
     int runHeadless(QApplication& app, double durationSeconds);
 
 private:
+    void startControlRoomHistory();
     struct Impl;
     SiteConfig m_config;
     std::unique_ptr<Impl> m_impl;

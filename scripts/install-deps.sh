@@ -15,6 +15,8 @@ packages=(
   # Fuzzing (scripts/fuzz.sh, issue 14): clang 14; -fsanitize=fuzzer needs libclang_rt.fuzzer*.a, which Debian 12
   # ships in libclang-rt-14-dev (only a Recommends of clang-14, so not installed by --no-install-recommends).
   clang-14 libclang-rt-14-dev
+  # Shared control-room history (issue 16 §4): libpq to build; the server for the tests' throwaway instances.
+  libpq-dev postgresql
 )
 
 missing=()

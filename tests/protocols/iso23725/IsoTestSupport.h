@@ -48,9 +48,9 @@ struct Recorder : IsoListener {
         mapWays = m.ways.size();
         mapConnectivity = m.connectivity.size();
     }
-    void onFleetDiscrepancies(const std::string&, const std::vector<std::string>& items) override {
+    void onFleetDiscrepancies(const std::string&, const std::vector<FleetDiscrepancy>& items) override {
         std::lock_guard l(mu);
-        discrepancies = items;
+        discrepancies = discrepancyTexts(items);
     }
     void onEvent(IsoSeverity s, const std::string& text) override {
         std::lock_guard l(mu);
