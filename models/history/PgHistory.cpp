@@ -306,16 +306,25 @@ private:
             dropConnection(QString::fromUtf8(PQerrorMessage(m_pg)).trimmed(), true);
             return;
         }
-        QStringList ids;
-        while (PGnotify* n = PQnotifies(m_pg)) {
-            bool ok = false;
-            const qint64 id = QByteArray(n->extra).toLongLong(&ok);
-            if (ok && !m_applied.contains(id))
-                ids << QString::number(id);
-            PQfreemem(n);
-        }
-        if (!ids.isEmpty())
+        drainNotifies();
+    }
+
+    // Notifications libpq already read while running another command sit in its buffer and wake no socket
+    // notifier: drain them after every command, and again after the query their ids lead to.
+    void drainNotifies() {
+        for (int round = 0; m_pg && round < 100; ++round) {
+            QStringList ids;
+            while (PGnotify* n = PQnotifies(m_pg)) {
+                bool ok = false;
+                const qint64 id = QByteArray(n->extra).toLongLong(&ok);
+                if (ok && !m_applied.contains(id))
+                    ids << QString::number(id);
+                PQfreemem(n);
+            }
+            if (ids.isEmpty())
+                return;
             fetchRemote("id = ANY($2::bigint[])", QStringLiteral("{%1}").arg(ids.join(QLatin1Char(','))));
+        }
     }
 
     void catchUp() {
@@ -426,6 +435,11 @@ private:
 
     void flush() {
         m_flushQueued = false;
+        sendOutbox();
+        drainNotifies();
+    }
+
+    void sendOutbox() {
         while (m_pg && m_db) {
             const std::vector<Row> rows = readBatch();
             if (rows.empty())

@@ -4,6 +4,7 @@
 // duplicates nothing (rows counted per console against what each console recorded); a record sent twice
 // (crash between COMMIT and the outbox delete) is stored once.
 #include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/history/PgHistory.h"
 #include "tests/models/history/PgTestServer.h"
 
@@ -89,11 +90,13 @@ private slots:
         QSignalSpy remote(b.history.get(), &PgHistory::remoteAcknowledged);
 
         QElapsedTimer t;
+        qint64 seenAfterMs = -1;
+        connect(b.history.get(), &PgHistory::remoteAcknowledged, this, [&] { seenAfterMs = t.elapsed(); });
         t.start();
         a.alarms.acknowledge(0);
         QTRY_VERIFY_WITH_TIMEOUT(b.alarms.isAcknowledged(0), 10000);
         // The figure (the issue asks for < 1 s); not asserted on a loaded machine, printed for the report.
-        qInfo("acknowledgement at console A seen at console B after %lld ms", qint64(t.elapsed()));
+        qInfo("acknowledgement at console A applied at console B after %lld ms", seenAfterMs);
         QCOMPARE(b.alarms.acknowledgedByAt(0), QStringLiteral("dispatcher operator (dispatcher)"));
         QCOMPARE(remote.count(), 1);
         QVERIFY(!b.alarms.isAcknowledged(1));
@@ -114,6 +117,18 @@ private slots:
         QCOMPARE(scalar(m_server.conninfo(),
                         QStringLiteral("SELECT count(*) FROM ocu_history WHERE kind = 'shelve'")),
                  QStringLiteral("1"));
+
+        // The command audit goes in whole (the gate's JSON line as jsonb), once.
+        CommandGate gate(&a.alarms);
+        a.history->attachGate(&gate);
+        gate.stopMachine(QStringLiteral("no-such-machine"), QStringLiteral("test"));
+        QTRY_COMPARE_WITH_TIMEOUT(
+            scalar(m_server.conninfo(),
+                   QStringLiteral(
+                       "SELECT count(*) FROM ocu_history WHERE kind = 'audit' AND console = 'dispatcher' "
+                       "AND details->>'action' = 'stop' AND details->>'target' = 'no-such-machine' AND "
+                       "NOT (details->>'ok')::boolean")),
+            QStringLiteral("1"), 10000);
     }
 
     void outageLosesAndDuplicatesNothing() {
