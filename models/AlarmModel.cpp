@@ -291,14 +291,15 @@ void AlarmModel::recount() {
     }
 }
 
-void AlarmModel::ackRow(int row, const QString& by, qint64 atMs) {
+void AlarmModel::ackRow(int row, const QString& by, qint64 atMs, bool notify) {
     Row& r = m_rows[row];
     r.acked = true;
     r.ackedMs = atMs;
     r.ackedBy = by;
     if (m_active.value(r.key, -1) == row)
         m_active.remove(r.key);
-    emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    if (notify)
+        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
 }
 
 void AlarmModel::acknowledge(int row) {
@@ -317,11 +318,13 @@ void AlarmModel::acknowledgeAll() {
     for (int i = 0; i < m_rows.size(); ++i) {
         if (!m_rows[i].acked) {
             keys << m_rows[i].key;
-            ackRow(i, m_operator, now);
+            ackRow(i, m_operator, now, false);
         }
     }
     if (keys.isEmpty())
         return;
+    emit dataChanged(index(0, 0),
+                     index(int(m_rows.size()) - 1, ColumnCount - 1)); // one signal, not one per row
     recount();
     for (const QString& k : std::as_const(keys))
         emit alarmAcknowledged(k, m_operator, now);

@@ -149,7 +149,7 @@ private:
     void trim();
     void recount();
     void rebuildActive();
-    void ackRow(int row, const QString& by, qint64 atMs);
+    void ackRow(int row, const QString& by, qint64 atMs, bool notify = true);
     void updateTimer();
     void pruneRate(bool notify);
 

@@ -19,6 +19,8 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace ocu {
 
 EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
@@ -67,8 +69,12 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(m_view);
     split->addWidget(m_details);
-    split->setStretchFactor(0, 4);
-    split->setStretchFactor(1, 1);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 0);
+    split->setCollapsible(0, false);
+    // The details pane starts small (three lines); the operator drags it taller for a long list.
+    m_details->setMinimumHeight(m_details->fontMetrics().lineSpacing() * 2);
+    split->setSizes({400, m_details->fontMetrics().lineSpacing() * 4});
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(0, 0, 0, 0);
     lay->addLayout(bar);
@@ -83,6 +89,14 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     m_view->verticalHeader()->setDefaultSectionSize(20);
     m_view->horizontalHeader()->setStretchLastSection(false);
     m_view->horizontalHeader()->setSectionResizeMode(AlarmModel::ColText, QHeaderView::Stretch);
+    // The alarm-management columns are short: as wide as their header or "urgent" / "1,000 ×99".
+    const QFontMetrics fm = m_view->horizontalHeader()->fontMetrics();
+    m_view->horizontalHeader()->resizeSection(
+        AlarmModel::ColPriority,
+        std::max(fm.horizontalAdvance(tr("Priority")), fm.horizontalAdvance(QStringLiteral("urgent"))) + 24);
+    m_view->horizontalHeader()->resizeSection(
+        AlarmModel::ColCount,
+        std::max(fm.horizontalAdvance(tr("Count")), fm.horizontalAdvance(QStringLiteral("1,000 ×99"))) + 16);
 
     connect(m_search, &QLineEdit::textChanged, m_proxy, &AlarmFilterProxy::setText);
     connect(m_severity, &QComboBox::currentIndexChanged, this,

@@ -147,6 +147,8 @@ public:
     }
 
     void close() {
+        delete m_retry; // on the worker's thread, where it runs
+        m_retry = nullptr;
         dropConnection(QString(), false);
         if (m_db) {
             sqlite3_close(m_db);
@@ -501,7 +503,6 @@ QString PgHistory::start() {
     m_thread->setObjectName(QStringLiteral("ocu-history-pg"));
     m_worker = new PgHistoryWorker(this, m_config);
     m_worker->moveToThread(m_thread);
-    connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     connect(m_worker, &PgHistoryWorker::connectionChanged, this, &PgHistory::connectionChanged,
             Qt::QueuedConnection);
     connect(m_worker, &PgHistoryWorker::remote, this, &PgHistory::applyRemote, Qt::QueuedConnection);
@@ -522,6 +523,7 @@ void PgHistory::stop() {
         m_worker, [w = m_worker] { w->close(); }, Qt::BlockingQueuedConnection);
     m_thread->quit();
     m_thread->wait();
+    delete m_worker; // its thread has ended and it owns no timer or notifier any more
     delete m_thread;
     m_thread = nullptr;
     m_worker = nullptr;
