@@ -73,6 +73,14 @@ struct Recorder : IsoListener {
                 return true;
         return false;
     }
+    // Fleet discrepancies come once, through onFleetDiscrepancies (no event per item, issue 19 §5).
+    bool hasDiscrepancy(const std::string& needle) const {
+        std::lock_guard l(mu);
+        for (auto& t : discrepancies)
+            if (t.find(needle) != std::string::npos)
+                return true;
+        return false;
+    }
     int machinesWith(const std::function<bool(const IsoMachineSnapshot&)>& pred) const {
         std::lock_guard l(mu);
         int n = 0;
