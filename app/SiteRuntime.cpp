@@ -18,6 +18,7 @@
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/OwnPosition.h"
+#include "models/history/PgHistory.h"
 #include "models/recording/Recorder.h"
 #include "sim/SimulatedSite.h"
 #include "widgets/EventLogWidget.h"
@@ -27,11 +28,13 @@
 
 #include <QApplication>
 #include <QDateTime>
+#include <QDir>
 #include <QLabel>
 #include <QPointer>
 #include <QSet>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QSysInfo>
 #include <QTime>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -101,6 +104,7 @@ QString SiteRuntime::start() {
         d.ctx->gate()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
     d.ctx->gate()->setConfirmTimeoutMs(int(m_config.fleet.stopConfirmTimeoutSeconds * 1000));
     startRecorder();
+    startControlRoomHistory();
 
     // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down and the
     // reason is an alarm.
@@ -136,6 +140,40 @@ QString SiteRuntime::start() {
             makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, p, QStringLiteral("gui")));
     }
     return {};
+}
+
+// Issue 16 §4: the shared history on PostgreSQL, when the site configuration names one.
+void SiteRuntime::startControlRoomHistory() {
+    Impl& d = *m_impl;
+    if (!m_config.historyPostgres)
+        return;
+    const auto& h = *m_config.historyPostgres;
+    PgHistoryConfig hc{QString::fromStdString(h.conninfo), QString::fromStdString(h.console),
+                       QString::fromStdString(h.outbox)};
+    if (hc.console.isEmpty())
+        hc.console = QSysInfo::machineHostName();
+    if (hc.outboxPath.isEmpty()) {
+        const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+        QDir().mkpath(dir);
+        hc.outboxPath = dir + QStringLiteral("/history-outbox-%1.sqlite").arg(hc.console);
+    }
+    AlarmModel* alarms = d.ctx->alarms();
+    alarms->setOperatorName(hc.console);
+    auto* history = new PgHistory(hc, this);
+    history->attach(alarms);
+    history->attachGate(d.ctx->gate());
+    connect(history, &PgHistory::connectionChanged, alarms, [alarms](bool up, const QString& why) {
+        alarms->add(up ? makeEvent(EventSeverity::Info, EventKind::LinkLoss, {},
+                                   tr("control-room history connected"), QStringLiteral("history"))
+                       : makeEvent(EventSeverity::Warning, EventKind::LinkLoss, {},
+                                   tr("control-room history unavailable (kept locally, back-filled on "
+                                      "return): %1")
+                                       .arg(why),
+                                   QStringLiteral("history")));
+    });
+    const QString e = history->start();
+    if (!e.isEmpty())
+        d.startProblems << tr("Control-room history: %1").arg(e);
 }
 
 void SiteRuntime::stop() {

@@ -42,6 +42,7 @@ public:
 
 private:
     void startRecorder();
+    void startControlRoomHistory();
     struct Impl;
     SiteConfig m_config;
     std::unique_ptr<Impl> m_impl;

@@ -8,10 +8,37 @@
 #include <QFile>
 #include <QFont>
 #include <QIODevice>
+#include <QLocale>
+#include <QTimer>
 
 namespace ocu {
 
-AlarmModel::AlarmModel(QObject* parent) : QAbstractTableModel(parent) {}
+namespace {
+// Consoles of one control room run NTP-synchronised clocks; an acknowledgement made elsewhere covers the
+// alarm occurrences raised up to this much after its stamp.
+constexpr qint64 kAckSkewMs = 5000;
+} // namespace
+
+AlarmModel::AlarmModel(QObject* parent)
+    : QAbstractTableModel(parent), m_clock([] { return QDateTime::currentMSecsSinceEpoch(); }),
+      m_operator(QStringLiteral("local")), m_timer(new QTimer(this)) {
+    m_timer->setInterval(1000);
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        expireShelving();
+        pruneRate(true);
+    });
+}
+
+void AlarmModel::setClock(std::function<qint64()> nowMs) {
+    m_clock = nowMs ? std::move(nowMs) : [] { return QDateTime::currentMSecsSinceEpoch(); };
+}
+
+int AlarmModel::rowOfKey(const QString& key) const {
+    for (int i = int(m_rows.size()) - 1; i >= 0; --i)
+        if (m_rows[i].key == key)
+            return i;
+    return -1;
+}
 
 void AlarmModel::addBridge(FleetBridge* bridge) {
     connect(bridge, &FleetBridge::eventRaised, this, &AlarmModel::add);
@@ -83,6 +110,10 @@ QVariant AlarmModel::headerData(int section, Qt::Orientation orientation, int ro
         return tr("Message");
     case ColAck:
         return tr("Ack");
+    case ColPriority:
+        return tr("Priority");
+    case ColCount:
+        return tr("Count");
     default:
         return {};
     }
@@ -121,14 +152,31 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
         case ColText:
             return e.text;
         case ColAck:
-            return !e.requiresAck ? QString() : (r.acked ? tr("yes") : tr("NO"));
+            if (!e.requiresAck)
+                return QString();
+            if (m_shelves.contains(r.key))
+                return tr("shelved until %1")
+                    .arg(QDateTime::fromMSecsSinceEpoch(m_shelves.value(r.key).untilMs, Qt::UTC)
+                             .toString(QStringLiteral("HH:mm")));
+            return r.acked ? tr("yes") : tr("NO");
+        case ColPriority:
+            return e.requiresAck ? toText(effectivePriority(e)) : QString();
+        case ColCount:
+            // Grouped items and repeats: "1,000" machines, "×3" raised three times while active.
+            return (e.itemCount > 1 ? QLocale().toString(e.itemCount) : QString()) +
+                   (r.occurrences > 1 ? QStringLiteral(" ×%1").arg(r.occurrences) : QString());
         default:
             return {};
         }
+    case Qt::ToolTipRole:
+        if (index.column() == ColText && !e.details.isEmpty())
+            return e.details.mid(0, 20).join(QLatin1Char('\n')) +
+                   (e.details.size() > 20 ? tr("\n… and %1 more").arg(e.details.size() - 20) : QString());
+        return {};
     case Qt::DecorationRole:
         return index.column() == ColSeverity ? QVariant(severityColor(e.severity)) : QVariant();
     case Qt::FontRole:
-        if (e.requiresAck && !r.acked) {
+        if (e.requiresAck && !r.acked && !m_shelves.contains(r.key)) {
             QFont f;
             f.setBold(true);
             return f;
@@ -146,6 +194,16 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
         return e.timeMs;
     case MachineRole:
         return e.machineId;
+    case KeyRole:
+        return r.key;
+    case PriorityRole:
+        return int(effectivePriority(e));
+    case OccurrencesRole:
+        return r.occurrences;
+    case ShelvedRole:
+        return m_shelves.contains(r.key);
+    case DetailsRole:
+        return e.details;
     default:
         return {};
     }
@@ -153,15 +211,42 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
 
 void AlarmModel::add(const FleetEvent& event) {
     FleetEvent ev = event;
+    const qint64 now = m_clock();
     if (ev.timeMs == 0)
-        ev.timeMs = QDateTime::currentMSecsSinceEpoch();
+        ev.timeMs = now;
+    const QString key = alarmKey(ev);
+    if (ev.requiresAck) {
+        // A repeat of an active alarm updates it: one cause, one alarm (EEMUA 191 §A6: no floods of repeats).
+        if (auto it = m_active.constFind(key); it != m_active.constEnd()) {
+            const int row = it.value();
+            Row& r = m_rows[row];
+            ++r.occurrences;
+            r.event.timeMs = ev.timeMs;
+            r.event.text = ev.text;
+            r.event.details = ev.details;
+            r.event.itemCount = ev.itemCount;
+            if (ev.severity > r.event.severity)
+                r.event.severity = ev.severity;
+            emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+            emit eventAdded(ev);
+            return;
+        }
+    }
     const int row = int(m_rows.size());
     beginInsertRows({}, row, row);
-    m_rows.push_back(Row{ev, !ev.requiresAck, 0});
+    m_rows.push_back(Row{ev, !ev.requiresAck, 0, key, {}, 1, ev.timeMs});
     endInsertRows();
     if (ev.requiresAck) {
-        ++m_unacked;
-        emit unacknowledgedCountChanged(m_unacked);
+        m_active.insert(key, row);
+        if (!m_shelves.contains(key)) {
+            ++m_unacked;
+            emit unacknowledgedCountChanged(m_unacked);
+            m_annunciations.push_back(now);
+            pruneRate(false);
+            m_lastRate = int(m_annunciations.size());
+            emit alarmRateChanged(m_lastRate, m_lastRate > kFloodThreshold);
+            updateTimer();
+        }
     }
     emit eventAdded(ev);
     trim();
@@ -172,51 +257,161 @@ void AlarmModel::trim() {
         return;
     // Drop the oldest acknowledged entries; never an unacknowledged alarm.
     int excess = int(m_rows.size()) - m_maxEntries;
+    bool removed = false;
     for (int i = 0; i < m_rows.size() && excess > 0;) {
         if (m_rows[i].acked) {
             beginRemoveRows({}, i, i);
             m_rows.remove(i);
             endRemoveRows();
             --excess;
+            removed = true;
         } else {
             ++i;
         }
     }
+    if (removed)
+        rebuildActive();
 }
 
-// The alarm's stable text for alarmAcknowledged (same as recording::alarmKey).
-static QString ackKey(const FleetEvent& e) {
-    return QStringLiteral("%1|%2|%3|%4").arg(QString::number(e.timeMs), toText(e.kind), e.machineId, e.text);
+void AlarmModel::rebuildActive() {
+    m_active.clear();
+    for (int i = 0; i < m_rows.size(); ++i)
+        if (!m_rows[i].acked)
+            m_active.insert(m_rows[i].key, i);
+}
+
+void AlarmModel::recount() {
+    int n = 0;
+    for (const Row& r : std::as_const(m_rows))
+        if (!r.acked && !m_shelves.contains(r.key))
+            ++n;
+    if (n != m_unacked) {
+        m_unacked = n;
+        emit unacknowledgedCountChanged(n);
+    }
+}
+
+void AlarmModel::ackRow(int row, const QString& by, qint64 atMs, bool notify) {
+    Row& r = m_rows[row];
+    r.acked = true;
+    r.ackedMs = atMs;
+    r.ackedBy = by;
+    if (m_active.value(r.key, -1) == row)
+        m_active.remove(r.key);
+    if (notify)
+        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
 }
 
 void AlarmModel::acknowledge(int row) {
     if (row < 0 || row >= m_rows.size() || m_rows[row].acked)
         return;
-    m_rows[row].acked = true;
-    m_rows[row].ackedMs = QDateTime::currentMSecsSinceEpoch();
-    --m_unacked;
-    emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
-    emit unacknowledgedCountChanged(m_unacked);
-    emit alarmAcknowledged(ackKey(m_rows[row].event), qEnvironmentVariable("USER"), m_rows[row].ackedMs);
+    const qint64 now = m_clock();
+    const QString key = m_rows[row].key;
+    ackRow(row, m_operator, now);
+    recount();
+    emit alarmAcknowledged(key, m_operator, now);
 }
 
 void AlarmModel::acknowledgeAll() {
-    if (m_unacked == 0)
-        return;
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const qint64 now = m_clock();
     QStringList keys;
-    for (Row& r : m_rows) {
-        if (!r.acked) {
-            r.acked = true;
-            r.ackedMs = now;
-            keys << ackKey(r.event);
+    for (int i = 0; i < m_rows.size(); ++i) {
+        if (!m_rows[i].acked) {
+            keys << m_rows[i].key;
+            ackRow(i, m_operator, now, false);
         }
     }
-    m_unacked = 0;
-    emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1));
-    emit unacknowledgedCountChanged(0);
-    for (const QString& key : std::as_const(keys))
-        emit alarmAcknowledged(key, qEnvironmentVariable("USER"), now);
+    if (keys.isEmpty())
+        return;
+    emit dataChanged(index(0, 0),
+                     index(int(m_rows.size()) - 1, ColumnCount - 1)); // one signal, not one per row
+    recount();
+    for (const QString& k : std::as_const(keys))
+        emit alarmAcknowledged(k, m_operator, now);
+}
+
+bool AlarmModel::acknowledgeKey(const QString& key, const QString& by, qint64 atMs) {
+    const auto it = m_active.constFind(key);
+    if (it == m_active.constEnd())
+        return false;
+    const int row = it.value();
+    // An acknowledgement covers what the operator saw: not an occurrence raised well after it.
+    if (m_rows[row].firstMs > atMs + kAckSkewMs)
+        return false;
+    ackRow(row, by, atMs);
+    recount();
+    emit alarmAcknowledged(key, by, atMs);
+    return true;
+}
+
+void AlarmModel::shelve(const QString& key, qint64 durationMs, const QString& reason) {
+    if (key.isEmpty() || durationMs <= 0)
+        return;
+    const qint64 now = m_clock();
+    const QString by =
+        reason.isEmpty() ? m_operator : m_operator + QStringLiteral(" (") + reason + QLatin1Char(')');
+    applyShelve(key, by, now, now + durationMs);
+}
+
+bool AlarmModel::applyShelve(const QString& key, const QString& by, qint64 atMs, qint64 untilMs) {
+    if (key.isEmpty() || untilMs <= m_clock())
+        return false;
+    m_shelves.insert(key, Shelf{by, atMs, untilMs});
+    recount();
+    if (rowCount() > 0)
+        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+    updateTimer();
+    emit alarmShelved(key, by, atMs, untilMs);
+    return true;
+}
+
+bool AlarmModel::unshelve(const QString& key, const QString& by) {
+    if (!m_shelves.remove(key))
+        return false;
+    recount();
+    if (rowCount() > 0)
+        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+    updateTimer();
+    emit alarmUnshelved(key, by.isEmpty() ? m_operator : by, m_clock());
+    return true;
+}
+
+void AlarmModel::expireShelving() {
+    const qint64 now = m_clock();
+    QStringList expired;
+    for (auto it = m_shelves.constBegin(); it != m_shelves.constEnd(); ++it)
+        if (it->untilMs <= now)
+            expired << it.key();
+    for (const QString& k : std::as_const(expired))
+        unshelve(k, QStringLiteral("expiry"));
+}
+
+void AlarmModel::pruneRate(bool notify) {
+    const qint64 from = m_clock() - kRateWindowMs;
+    while (!m_annunciations.empty() && m_annunciations.front() <= from)
+        m_annunciations.pop_front();
+    if (notify && int(m_annunciations.size()) != m_lastRate) {
+        m_lastRate = int(m_annunciations.size());
+        emit alarmRateChanged(m_lastRate, m_lastRate > kFloodThreshold);
+    }
+    if (notify)
+        updateTimer();
+}
+
+int AlarmModel::alarmRate() const {
+    const qint64 from = m_clock() - kRateWindowMs;
+    int n = 0;
+    for (auto it = m_annunciations.rbegin(); it != m_annunciations.rend() && *it > from; ++it)
+        ++n;
+    return n;
+}
+
+void AlarmModel::updateTimer() {
+    const bool need = !m_shelves.isEmpty() || !m_annunciations.empty();
+    if (need && !m_timer->isActive())
+        m_timer->start();
+    else if (!need && m_timer->isActive())
+        m_timer->stop();
 }
 
 static QByteArray csvField(const QString& s) {
@@ -273,6 +468,11 @@ void AlarmFilterProxy::setMinimumSeverity(EventSeverity s) {
     invalidateFilter();
 }
 
+void AlarmFilterProxy::setShowShelved(bool on) {
+    m_showShelved = on;
+    invalidateFilter();
+}
+
 void AlarmFilterProxy::setUnacknowledgedOnly(bool on) {
     m_unackedOnly = on;
     invalidateFilter();
@@ -287,12 +487,15 @@ bool AlarmFilterProxy::filterAcceptsRow(int sourceRow, const QModelIndex& source
         return false;
     if (m_unackedOnly && alarms->isAcknowledged(sourceRow))
         return false;
+    if (!m_showShelved && e.requiresAck && alarms->isShelved(sourceRow))
+        return false;
     if (m_text.isEmpty())
         return true;
     return e.text.contains(m_text, Qt::CaseInsensitive) ||
            e.machineId.contains(m_text, Qt::CaseInsensitive) ||
            toText(e.kind).contains(m_text, Qt::CaseInsensitive) ||
-           e.source.contains(m_text, Qt::CaseInsensitive);
+           e.source.contains(m_text, Qt::CaseInsensitive) ||
+           e.details.filter(m_text, Qt::CaseInsensitive).size() > 0;
 }
 
 } // namespace ocu

@@ -42,6 +42,49 @@ QString toText(EventKind k) {
     return QStringLiteral("info");
 }
 
+QString toText(AlarmPriority p) {
+    switch (p) {
+    case AlarmPriority::Low:
+        return QStringLiteral("low");
+    case AlarmPriority::Medium:
+        return QStringLiteral("medium");
+    case AlarmPriority::High:
+        return QStringLiteral("high");
+    case AlarmPriority::Urgent:
+        return QStringLiteral("urgent");
+    case AlarmPriority::Auto:
+        break;
+    }
+    return QStringLiteral("auto");
+}
+
+AlarmPriority effectivePriority(const FleetEvent& e) {
+    if (e.priority != AlarmPriority::Auto)
+        return e.priority;
+    switch (e.severity) {
+    case EventSeverity::Info:
+    case EventSeverity::Warning:
+        return AlarmPriority::Low;
+    case EventSeverity::Alarm:
+        return AlarmPriority::High;
+    case EventSeverity::Critical:
+        return AlarmPriority::Urgent;
+    }
+    return AlarmPriority::Low;
+}
+
+QString alarmKey(const FleetEvent& e) {
+    QString cause = e.cause;
+    if (cause.isEmpty()) {
+        cause = toText(e.kind);
+        if (e.kind == EventKind::Info || e.kind == EventKind::Diagnostic ||
+            e.kind == EventKind::TextMessage || e.kind == EventKind::Audit)
+            cause += QLatin1Char(':') + e.text;
+    }
+    return cause + QLatin1Char('|') + (e.group.isEmpty() ? e.machineId : e.group) + QLatin1Char('|') +
+           e.source;
+}
+
 FleetEvent makeEvent(EventSeverity severity, EventKind kind, const QString& machineId, const QString& text,
                      const QString& source) {
     FleetEvent ev;

@@ -20,6 +20,8 @@ packages=(
   qt6-charts-dev poppler-utils
   # Issue 19: GDAL for the 2D map background rasters, the simulated pit's DEM and hillshade, the 3D terrain.
   libgdal-dev
+  # Shared control-room history (issue 16 §4): libpq to build; the server for the tests' throwaway instances.
+  libpq-dev postgresql
 )
 
 missing=()

@@ -5,16 +5,22 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDateTime>
 #include <QFile>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollBar>
+#include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace ocu {
 
@@ -23,7 +29,10 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
       m_search(new QLineEdit(this)), m_severity(new QComboBox(this)),
       m_unackOnly(new QCheckBox(tr("Unacknowledged"), this)), m_ack(new QPushButton(tr("Acknowledge"), this)),
       m_ackAll(new QPushButton(tr("Acknowledge all"), this)),
-      m_export(new QPushButton(tr("Export CSV…"), this)), m_unackLabel(new QLabel(this)) {
+      m_export(new QPushButton(tr("Export CSV…"), this)), m_unackLabel(new QLabel(this)),
+      m_showShelved(new QCheckBox(tr("Shelved"), this)), m_shelveFor(new QComboBox(this)),
+      m_shelve(new QPushButton(tr("Shelve"), this)), m_unshelve(new QPushButton(tr("Unshelve"), this)),
+      m_rateLabel(new QLabel(this)), m_details(new QPlainTextEdit(this)) {
     m_proxy->setSourceModel(alarms);
     m_search->setPlaceholderText(tr("Search events…"));
     m_search->setClearButtonEnabled(true);
@@ -38,10 +47,40 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     bar->addWidget(m_ackAll);
     bar->addWidget(m_export);
     bar->addWidget(m_unackLabel);
+    // Alarm management row: shelving (ISA-18.2 §11.4, always with an expiry) and the alarm rate.
+    m_shelveFor->addItem(tr("15 min"), 15);
+    m_shelveFor->addItem(tr("1 h"), 60);
+    m_shelveFor->addItem(tr("8 h (shift)"), 8 * 60);
+    m_shelve->setToolTip(
+        tr("Shelve the selected alarms: hidden and not annunciated until the time runs out"));
+    m_showShelved->setToolTip(tr("Show shelved alarms too"));
+    m_rateLabel->setToolTip(tr("New alarms in the last 10 minutes (EEMUA 191: more than 10 is a flood)"));
+    auto* bar2 = new QHBoxLayout;
+    bar2->addWidget(m_showShelved);
+    bar2->addWidget(m_shelveFor);
+    bar2->addWidget(m_shelve);
+    bar2->addWidget(m_unshelve);
+    bar2->addStretch(1);
+    bar2->addWidget(m_rateLabel);
+    m_details->setReadOnly(true);
+    m_details->setPlaceholderText(
+        tr("Select an alarm to see its details: the grouped machines, who acknowledged "
+           "or shelved it, and when."));
+    m_details->setMaximumBlockCount(2000);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_view);
+    split->addWidget(m_details);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 0);
+    split->setCollapsible(0, false);
+    // The details pane starts small (three lines); the operator drags it taller for a long list.
+    m_details->setMinimumHeight(m_details->fontMetrics().lineSpacing() * 2);
+    split->setSizes({400, m_details->fontMetrics().lineSpacing() * 4});
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(0, 0, 0, 0);
     lay->addLayout(bar);
-    lay->addWidget(m_view, 1);
+    lay->addLayout(bar2);
+    lay->addWidget(split, 1);
 
     m_view->setModel(m_proxy);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -59,6 +98,18 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     connect(m_unackOnly, &QCheckBox::toggled, m_proxy, &AlarmFilterProxy::setUnacknowledgedOnly);
     connect(m_ack, &QPushButton::clicked, this, &EventLogWidget::acknowledgeSelected);
     connect(m_ackAll, &QPushButton::clicked, alarms, &AlarmModel::acknowledgeAll);
+    connect(m_shelve, &QPushButton::clicked, this, &EventLogWidget::shelveSelected);
+    connect(m_unshelve, &QPushButton::clicked, this, &EventLogWidget::unshelveSelected);
+    connect(m_showShelved, &QCheckBox::toggled, m_proxy, &AlarmFilterProxy::setShowShelved);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &EventLogWidget::showDetails);
+    connect(alarms, &QAbstractItemModel::dataChanged, this, &EventLogWidget::showDetails);
+    auto updateRate = [this](int n, bool flood) {
+        m_rateLabel->setText(flood ? tr("<b style='color:#d01010'>ALARM FLOOD: %1 alarms / 10 min</b>").arg(n)
+                                   : tr("%1 alarms / 10 min").arg(n));
+    };
+    connect(alarms, &AlarmModel::alarmRateChanged, this, updateRate);
+    updateRate(alarms->alarmRate(), alarms->isFlood());
     connect(m_export, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getSaveFileName(
             this, tr("Export events"), QStringLiteral("events.csv"), tr("CSV files (*.csv)"));
@@ -83,6 +134,70 @@ void EventLogWidget::acknowledgeSelected() {
         return;
     for (const QModelIndex& idx : m_view->selectionModel()->selectedRows(0))
         m_alarms->acknowledge(m_proxy->mapToSource(idx).row());
+}
+
+QStringList EventLogWidget::selectedKeys() const {
+    QStringList keys;
+    if (!m_alarms)
+        return keys;
+    for (const QModelIndex& idx : m_view->selectionModel()->selectedRows(0)) {
+        const int row = m_proxy->mapToSource(idx).row();
+        if (m_alarms->eventAt(row).requiresAck && !keys.contains(m_alarms->keyAt(row)))
+            keys << m_alarms->keyAt(row);
+    }
+    return keys;
+}
+
+void EventLogWidget::shelveSelected() {
+    if (!m_alarms)
+        return;
+    const qint64 ms = qint64(m_shelveFor->currentData().toInt()) * 60 * 1000;
+    for (const QString& k : selectedKeys())
+        m_alarms->shelve(k, ms > 0 ? ms : 15 * 60 * 1000);
+}
+
+void EventLogWidget::unshelveSelected() {
+    if (!m_alarms)
+        return;
+    for (const QString& k : selectedKeys())
+        m_alarms->unshelve(k);
+}
+
+void EventLogWidget::showDetails() {
+    if (!m_alarms)
+        return;
+    const QModelIndexList rows = m_view->selectionModel()->selectedRows(0);
+    if (rows.isEmpty()) {
+        m_details->clear();
+        return;
+    }
+    const int row = m_proxy->mapToSource(rows.front()).row();
+    if (row < 0 || row >= m_alarms->rowCount())
+        return;
+    const FleetEvent& e = m_alarms->eventAt(row);
+    auto time = [](qint64 ms) {
+        return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC)
+            .toString(QStringLiteral("yyyy-MM-dd HH:mm:ss 'UTC'"));
+    };
+    QStringList lines;
+    lines << e.text;
+    if (e.requiresAck) {
+        lines << tr("Priority: %1 · raised %2 · %n time(s)", nullptr, m_alarms->occurrencesAt(row))
+                     .arg(toText(effectivePriority(e)), time(e.timeMs));
+        if (m_alarms->isAcknowledged(row))
+            lines << tr("Acknowledged by %1 at %2")
+                         .arg(m_alarms->acknowledgedByAt(row), time(m_alarms->acknowledgedAtMs(row)));
+        if (m_alarms->isShelved(row)) {
+            const auto s = m_alarms->shelf(m_alarms->keyAt(row));
+            lines << tr("Shelved by %1 until %2").arg(s.by, time(s.untilMs));
+        }
+        lines << tr("Key: %1").arg(m_alarms->keyAt(row));
+    }
+    if (!e.details.isEmpty()) {
+        lines << tr("%1 items:").arg(QLocale().toString(e.itemCount));
+        lines += e.details;
+    }
+    m_details->setPlainText(lines.join(QLatin1Char('\n')));
 }
 
 bool EventLogWidget::exportShown(const QString& path) const {

@@ -1,5 +1,7 @@
 #pragma once
-// The alarm list / event log (issue 6 §7): filter, search, acknowledge, CSV export.
+// The alarm list / event log (issue 6 §7): filter, search, acknowledge, CSV export; alarm management
+// (issue 19 §5): priority and count columns, shelving with an expiry, the alarm rate per 10 min with the
+// flood indication, a details pane with the grouped items of the selected alarm.
 #include <QPointer>
 #include <QWidget>
 
@@ -9,6 +11,7 @@ class QComboBox;
 class QCheckBox;
 class QLabel;
 class QPushButton;
+class QPlainTextEdit;
 
 namespace ocu {
 
@@ -26,6 +29,13 @@ public:
     QPushButton* ackButton() const { return m_ack; }
     QPushButton* ackAllButton() const { return m_ackAll; }
     QLabel* unackLabel() const { return m_unackLabel; }
+    QLabel* rateLabel() const { return m_rateLabel; }
+    QPushButton* shelveButton() const { return m_shelve; }
+    QPlainTextEdit* detailsPane() const { return m_details; }
+
+    // Shelves the alarms of the selected rows for the duration chosen in the panel (default 15 min).
+    void shelveSelected();
+    void unshelveSelected();
 
     // Acknowledges the selected rows of the (filtered) view.
     void acknowledgeSelected();
@@ -43,6 +53,14 @@ private:
     QPushButton* m_ackAll;
     QPushButton* m_export;
     QLabel* m_unackLabel;
+    QCheckBox* m_showShelved;
+    QComboBox* m_shelveFor;
+    QPushButton* m_shelve;
+    QPushButton* m_unshelve;
+    QLabel* m_rateLabel;
+    QPlainTextEdit* m_details;
+    void showDetails();
+    QStringList selectedKeys() const;
 };
 
 } // namespace ocu

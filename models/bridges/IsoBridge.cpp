@@ -1,5 +1,7 @@
 #include "models/bridges/IsoBridge.h"
 
+#include "models/bridges/FleetDiscrepancyAlarms.h"
+
 #include <QJsonObject>
 #include <QMetaObject>
 
@@ -262,11 +264,11 @@ void IsoBridge::onMapChanged(const std::string& link, const MapModel& map) {
         Qt::QueuedConnection);
 }
 
-void IsoBridge::onFleetDiscrepancies(const std::string& link, const std::vector<std::string>& items) {
-    for (const auto& item : items)
-        publishEvent(makeEvent(EventSeverity::Warning, ocu::EventKind::Discrepancy, {},
-                               tr("Fleet definition discrepancy on %1: %2").arg(q(link), q(item)),
-                               QStringLiteral("iso23725")));
+void IsoBridge::onFleetDiscrepancies(const std::string& link,
+                                     const std::vector<iso23725::FleetDiscrepancy>& items) {
+    // One alarm per cause and link, the machines in its details (issue 19 §5).
+    for (const FleetEvent& ev : fleetDiscrepancyAlarms(link, items))
+        publishEvent(ev);
 }
 
 void IsoBridge::onConnectivity(const std::string& link, const MapConnectivityV1& connectivity) {

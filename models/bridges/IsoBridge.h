@@ -102,7 +102,8 @@ private:
     void onAllStopChanged(const std::string& link, const iso23725::AllStopStatus& status) override;
     void onMapProgress(const std::string& link, const iso23725::MapProgress& progress) override;
     void onMapChanged(const std::string& link, const iso23725::MapModel& map) override;
-    void onFleetDiscrepancies(const std::string& link, const std::vector<std::string>& items) override;
+    void onFleetDiscrepancies(const std::string& link,
+                              const std::vector<iso23725::FleetDiscrepancy>& items) override;
     void onConnectivity(const std::string& link, const iso23725::MapConnectivityV1& connectivity) override;
     // io thread: queue a machine's dispatch view (nullopt = removed) for the GUI thread, coalesced.
     void publishDispatch(const QString& id, std::optional<IsoDispatchState> state);

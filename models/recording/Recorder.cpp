@@ -24,8 +24,10 @@
 
 namespace ocu::recording {
 
+// The AlarmModel's own key (cause, group or machine, source): the one alarmAcknowledged carries and the
+// consoles share (models/FleetEvent.h).
 QString alarmKey(const FleetEvent& e) {
-    return QStringLiteral("%1|%2|%3|%4").arg(QString::number(e.timeMs), toText(e.kind), e.machineId, e.text);
+    return ocu::alarmKey(e);
 }
 
 struct Recorder::Item {

@@ -59,7 +59,6 @@ void ReplayController::seek(qint64 t) {
         fresh->setMaxEntries(0);
         AlarmModel* old = m_alarms;
         m_alarms = fresh;
-        m_alarmRow.clear();
         applyAlarms(std::numeric_limits<qint64>::min(), t);
         emit alarmsReplaced(m_alarms);
         old->deleteLater();
@@ -72,18 +71,12 @@ void ReplayController::seek(qint64 t) {
 }
 
 void ReplayController::applyAlarms(qint64 fromExclusive, qint64 toInclusive) {
-    for (const RecordedEvent& e : m_rec->events(fromExclusive, toInclusive)) {
-        m_alarmRow[e.key].push_back(m_alarms->rowCount());
+    for (const RecordedEvent& e : m_rec->events(fromExclusive, toInclusive))
         m_alarms->add(e.event);
-    }
-    // Two alarms with the same key (same time, kind, machine and text): each acknowledgement takes the
-    // oldest one still open.
+    // A repeat of an open alarm is one row (AlarmModel groups by key); an acknowledgement closes the open
+    // one.
     for (const RecordedAck& a : m_rec->acks(fromExclusive, toInclusive))
-        for (int row : m_alarmRow.value(a.key))
-            if (!m_alarms->isAcknowledged(row)) {
-                m_alarms->acknowledge(row);
-                break;
-            }
+        m_alarms->acknowledgeKey(a.key, a.by, a.t);
 }
 
 void ReplayController::updateSiteMap(qint64 t) {

@@ -81,7 +81,6 @@ private:
     const Recording* m_rec;
     QPointer<FleetModel> m_fleet;
     AlarmModel* m_alarms = nullptr;
-    QHash<QString, QVector<int>> m_alarmRow; // alarm key -> rows of m_alarms
     Recording::StateMap m_states;
     qint64 m_t = 0;
     bool m_loaded = false;

@@ -10,7 +10,31 @@
 
 namespace ocu::iso23725 {
 
+// The cause of a discrepancy: the operator sees one alarm per cause and link (EEMUA 191 / ISA-18.2: one
+// cause, one alarm), with the machines in its details.
+enum class DiscrepancyCause {
+    MissingFromAhs,
+    ListedByBoth,
+    HidDiffers,
+    TypeDiffers,
+    DimensionsDiffer,
+    NotInFms
+};
+
+struct FleetDiscrepancy {
+    DiscrepancyCause cause = DiscrepancyCause::NotInFms;
+    std::string machine; // equipment id
+    std::string text;    // one line for the operator
+};
+
+// Stable identifier of a cause ("fleet.not_in_fms", ...), used in alarm keys shared by consoles.
+const char* causeId(DiscrepancyCause cause);
+
+std::vector<FleetDiscrepancy> checkFleet(const FleetDefinitionV2& ahs, const std::vector<Equipment>& fms,
+                                         double dimensionTolerance);
+// The texts of checkFleet, in the same order.
 std::vector<std::string> fleetDiscrepancies(const FleetDefinitionV2& ahs, const std::vector<Equipment>& fms,
                                             double dimensionTolerance);
+std::vector<std::string> discrepancyTexts(const std::vector<FleetDiscrepancy>& items);
 
 } // namespace ocu::iso23725

@@ -522,11 +522,11 @@ void FmsCore::onFleet(const FleetDefinitionV2& f) {
 }
 
 void FmsCore::checkDiscrepancies() {
-    const auto items = fleetDiscrepancies(*m_ahsFleet, m_cfg.fleet, m_cfg.dimensionTolerance);
+    const auto items = checkFleet(*m_ahsFleet, m_cfg.fleet, m_cfg.dimensionTolerance);
     m_counters.add("fleet.discrepancies", items.size());
+    // Reported once, through onFleetDiscrepancies only: an onEvent per item as well made every discrepancy
+    // appear twice in the console (once as "discrepancy", once as "info") and flooded it (issue 19 §5).
     m_listener.onFleetDiscrepancies(m_link.name, items);
-    for (auto& i : items)
-        event(IsoSeverity::Warning, "fleet discrepancy on " + m_link.name + ": " + i);
 }
 
 // ---------------------------------------------------------------- all-stop (§7.6, §7.7)

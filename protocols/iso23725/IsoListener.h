@@ -2,6 +2,7 @@
 // What an ISO 23725 link tells its listener (the console's bridge, tests): link states, everything known
 // about each machine of the AHS, the all-stop status, map progress and maps, fleet discrepancies, operator
 // events. Called on the stack's io thread; listeners must not block.
+#include "protocols/iso23725/FleetDiscrepancies.h"
 #include "protocols/iso23725/MapModel.h"
 #include "protocols/iso23725/Messages.h"
 
@@ -111,8 +112,9 @@ public:
     virtual void onConnectivity(const std::string& link, const MapConnectivityV1& connectivity) {
         (void)link, (void)connectivity;
     }
-    // Fleet discrepancies (AHS list vs configured FMS fleet); empty list = consistent.
-    virtual void onFleetDiscrepancies(const std::string& link, const std::vector<std::string>& items) {
+    // Fleet discrepancies (AHS list vs configured FMS fleet), each with its cause; empty list = consistent.
+    // This is the only report of them (no onEvent per item: one event per cause, issue 19 §5).
+    virtual void onFleetDiscrepancies(const std::string& link, const std::vector<FleetDiscrepancy>& items) {
         (void)link, (void)items;
     }
     virtual void onEvent(IsoSeverity severity, const std::string& text) { (void)severity, (void)text; }

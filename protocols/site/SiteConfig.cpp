@@ -108,6 +108,19 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         cfg.terrain.dem = resolveSitePath(t->string("dem", cfg.terrain.dem), fileName);
         t->finish();
     }
+    if (auto h = root.object("history")) {
+        if (auto pg = h->object("postgres")) {
+            PostgresHistoryConfig c;
+            c.conninfo = pg->string("conninfo", c.conninfo);
+            c.console = pg->string("console", c.console);
+            c.outbox = pg->string("outbox", c.outbox);
+            if (c.conninfo.empty())
+                pg->error("conninfo", "required: the libpq connection string of the control-room database");
+            pg->finish();
+            cfg.historyPostgres = std::move(c);
+        }
+        h->finish();
+    }
 #ifdef OCU_SITE_HAVE_JAUS
     if (auto s = root.object("jaus"))
         cfg.jaus = jaus::parseJausConfig(*s);

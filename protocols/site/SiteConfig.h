@@ -85,6 +85,13 @@ struct TerrainConfig {
     std::string dem;
 };
 
+// The shared control-room history on PostgreSQL (issue 16 §4): "history": {"postgres": {...}}.
+struct PostgresHistoryConfig {
+    std::string conninfo; // libpq connection string, e.g. "host=ocu-db dbname=ocu user=ocu"
+    std::string console;  // this console's name in the shared history; empty = the host name
+    std::string outbox;   // the local SQLite outbox; empty = history-outbox-<console>.sqlite in the data dir
+};
+
 struct SiteConfig {
     std::string name = "Unnamed site";
     GeoPoint origin;
@@ -95,6 +102,7 @@ struct SiteConfig {
     RecordConfig record;
     MapBackgroundConfig background;
     TerrainConfig terrain;
+    std::optional<PostgresHistoryConfig> historyPostgres;
 #ifdef OCU_SITE_HAVE_JAUS
     std::optional<jaus::JausConfig> jaus;
 #endif

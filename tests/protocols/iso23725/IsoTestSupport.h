@@ -48,9 +48,9 @@ struct Recorder : IsoListener {
         mapWays = m.ways.size();
         mapConnectivity = m.connectivity.size();
     }
-    void onFleetDiscrepancies(const std::string&, const std::vector<std::string>& items) override {
+    void onFleetDiscrepancies(const std::string&, const std::vector<FleetDiscrepancy>& items) override {
         std::lock_guard l(mu);
-        discrepancies = items;
+        discrepancies = discrepancyTexts(items);
     }
     void onEvent(IsoSeverity s, const std::string& text) override {
         std::lock_guard l(mu);
@@ -69,6 +69,14 @@ struct Recorder : IsoListener {
     bool hasEvent(const std::string& needle) const {
         std::lock_guard l(mu);
         for (auto& [s, t] : events)
+            if (t.find(needle) != std::string::npos)
+                return true;
+        return false;
+    }
+    // Fleet discrepancies come once, through onFleetDiscrepancies (no event per item, issue 19 §5).
+    bool hasDiscrepancy(const std::string& needle) const {
+        std::lock_guard l(mu);
+        for (auto& t : discrepancies)
             if (t.find(needle) != std::string::npos)
                 return true;
         return false;

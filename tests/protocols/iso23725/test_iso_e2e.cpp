@@ -75,10 +75,11 @@ private slots:
         QVERIFY(waitFor([&] { return stack.counters().get("rx.positions") > before + 30; }));
 
         // Discrepancies reported as events.
-        QVERIFY(
-            waitFor([&] { return rec.hasEvent("HT999 (11111111-2222-4333-8444-555555555555) is missing"); }));
         QVERIFY(waitFor(
-            [&] { return rec.hasEvent("HID '" + fleet[1].hid + "' at the AHS, 'HT-OLD' at the FMS"); }));
+            [&] { return rec.hasDiscrepancy("HT999 (11111111-2222-4333-8444-555555555555) is missing"); }));
+        QVERIFY(waitFor([&] {
+            return rec.hasDiscrepancy("HID '" + fleet[1].hid + "' at the AHS, 'HT-OLD' at the FMS");
+        }));
         QVERIFY(
             waitFor([&] { return rec.with([&] { return rec.discrepancies.size(); }) == std::size_t(2); }));
 

@@ -98,8 +98,8 @@ private slots:
         QVERIFY(waitFor([&] { return !ahs->stats().fmsFirstMessages.empty(); }));
         QCOMPARE(ahs->stats().fmsFirstMessages.front(), std::string("FleetDefinitionV2"));
         QVERIFY(waitFor([&] {
-            return rec.hasEvent("at the AHS, 'T-WRONG' at the FMS") &&
-                   rec.hasEvent("machine HT99 (9b8a7c6d-5e4f-4a3b-8c2d-1e0f9a8b7c6d) is missing");
+            return rec.hasDiscrepancy("at the AHS, 'T-WRONG' at the FMS") &&
+                   rec.hasDiscrepancy("machine HT99 (9b8a7c6d-5e4f-4a3b-8c2d-1e0f9a8b7c6d) is missing");
         }));
         QVERIFY(
             waitFor([&] { return rec.machinesWith([](auto& m) { return m.position.has_value(); }) == 4; }));

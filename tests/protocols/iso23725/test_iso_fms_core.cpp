@@ -54,8 +54,8 @@ struct Listener final : IsoListener {
         order.push_back(std::string("allstop:") + toString(s.state));
     }
     void onMapChanged(const std::string&, const MapModel&) override { ++maps; }
-    void onFleetDiscrepancies(const std::string&, const std::vector<std::string>& items) override {
-        discrepancies.push_back(items);
+    void onFleetDiscrepancies(const std::string&, const std::vector<FleetDiscrepancy>& items) override {
+        discrepancies.push_back(discrepancyTexts(items));
     }
     void onEvent(IsoSeverity s, const std::string& text) override { events.emplace_back(s, text); }
     int count(IsoSeverity s, const std::string& part) const {
@@ -159,6 +159,9 @@ private slots:
         QCOMPARE(f.listener.discrepancies.front().size(), std::size_t(1));
         QCOMPARE(f.listener.discrepancies.front().front(),
                  std::string("machine " + kTruck + ": type WaterCart at the AHS, HaulTruck at the FMS"));
+        // One report per discrepancy, not two: no event mentions it (issue 19 §5).
+        QCOMPARE(f.listener.count(IsoSeverity::Warning, "WaterCart"), 0);
+        QCOMPARE(f.listener.count(IsoSeverity::Info, "WaterCart"), 0);
     }
 
     void commandsRefusedWhileDown() {

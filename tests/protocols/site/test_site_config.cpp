@@ -111,6 +111,26 @@ private slots:
         QVERIFY(QString::fromStdString(cfg.error())
                     .contains("remove_after_s: must not be shorter than stale_after_s"));
     }
+    void postgresHistory() {
+        auto none = parseSiteConfig(R"({"site": {"origin": {"latitude": 1, "longitude": 2}}})", "n.json");
+        QVERIFY(none.ok());
+        QVERIFY(!none->historyPostgres);
+        auto cfg = parseSiteConfig(
+            R"({"site": {"origin": {"latitude": 1, "longitude": 2}},
+                "history": {"postgres": {"conninfo": "host=db dbname=ocu", "console": "dispatcher"}}})",
+            "h.json");
+        QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
+        QVERIFY(cfg->historyPostgres);
+        QCOMPARE(cfg->historyPostgres->conninfo, std::string("host=db dbname=ocu"));
+        QCOMPARE(cfg->historyPostgres->console, std::string("dispatcher"));
+        QVERIFY(cfg->historyPostgres->outbox.empty());
+        auto bad = parseSiteConfig(
+            R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "history": {"postgres": {"consle": "x"}}})",
+            "b.json");
+        QVERIFY(!bad.ok());
+        QVERIFY(QString::fromStdString(bad.error()).contains("conninfo"));
+        QVERIFY(QString::fromStdString(bad.error()).contains("consle"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSiteConfig)
