@@ -24,12 +24,6 @@
 
 namespace ocu::recording {
 
-// The AlarmModel's own key (cause, group or machine, source): the one alarmAcknowledged carries and the
-// consoles share (models/FleetEvent.h).
-QString alarmKey(const FleetEvent& e) {
-    return ocu::alarmKey(e);
-}
-
 struct Recorder::Item {
     enum Kind : std::uint8_t { State, Removed, Event, Ack, Command, Link, SiteMap, Raw, Meta } kind = State;
     qint64 t = 0;
@@ -427,7 +421,7 @@ void Recorder::run() {
                     s.text(6, it.event.source);
                     s.text(7, it.event.text);
                     s.i64(8, it.event.requiresAck ? 1 : 0);
-                    s.text(9, alarmKey(it.event));
+                    s.text(9, ocu::alarmKey(it.event)); // the key AlarmModel and the consoles share
                     s.run();
                     break;
                 }

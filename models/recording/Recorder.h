@@ -49,8 +49,8 @@ struct RecorderOptions {
     std::function<qint64()> clock;                      // ms since the epoch; default: the wall clock
 };
 
-// The key an acknowledgement names its alarm by (AlarmModel::alarmAcknowledged): stable across consoles.
-QString alarmKey(const FleetEvent& e);
+// An acknowledgement names its alarm by ocu::alarmKey (models/FleetEvent.h), the key AlarmModel and the
+// consoles share.
 
 class Recorder : public QObject {
     Q_OBJECT
