@@ -114,7 +114,8 @@ void MainWindow::setPanelWidget(Panel panel, QWidget* widget) {
     // than they need, instead of forcing the whole column wide and squeezing the map (issue 19 §6: German
     // texts at 1366 x 768 left the map a small square).
     if (widget != nullptr &&
-        (panel == Panel::JausControl || panel == Panel::Teleop || panel == Panel::PassCounts)) {
+        (panel == Panel::JausControl || panel == Panel::Teleop || panel == Panel::PassCounts ||
+         panel == Panel::Dispatch || panel == Panel::EventLog)) {
         auto* scroll = new QScrollArea;
         scroll->setObjectName(QStringLiteral("panel-scroll"));
         scroll->setFrameShape(QFrame::NoFrame);

@@ -8,6 +8,7 @@
 #include "widgets/production/ShiftReport.h"
 
 #include <QDockWidget>
+#include <QScrollArea>
 
 namespace ocu {
 
@@ -38,7 +39,12 @@ void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridg
     dock->setObjectName(QStringLiteral("dock-production"));
     // Not closable: it has no entry in the View menu to bring it back.
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
-    dock->setWidget(view);
+    // Scrolls rather than forcing the bottom row wider than a 1366 px screen (issue 19 §6).
+    auto* scroll = new QScrollArea;
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(view);
+    dock->setWidget(scroll);
     window.addDockWidget(Qt::BottomDockWidgetArea, dock);
     if (QDockWidget* events = window.dock(Panel::EventLog)) {
         window.tabifyDockWidget(events, dock);

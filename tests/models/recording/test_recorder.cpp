@@ -259,7 +259,7 @@ private slots:
         QVERIFY(markers[1].kind == Marker::Kind::Command && markers[1].bad);
     }
 
-    void identicalAlarmsAreAcknowledgedOneByOne() {
+    void repeatedAlarmIsOneRowUntilAcknowledged() {
         qint64 clock = 1'000'000;
         Recorder rec;
         RecorderOptions o;
@@ -270,7 +270,7 @@ private slots:
         ev.timeMs = 1'000'100;
         clock = 1'000'100;
         rec.recordEvent(ev);
-        rec.recordEvent(ev); // the same alarm text twice in one millisecond: one key
+        rec.recordEvent(ev); // a repeat of an open alarm: one key, one row (AlarmModel groups, EEMUA 191)
         clock = 1'000'200;
         rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock);
         clock = 1'000'300;
@@ -280,11 +280,14 @@ private slots:
         QVERIFY(r);
         FleetModel fleet;
         ReplayController c(r.get(), &fleet);
-        c.seek(1'000'200);
-        QCOMPARE(c.alarms()->rowCount(), 2);
+        c.seek(1'000'150);
+        QCOMPARE(c.alarms()->rowCount(), 1);
         QCOMPARE(c.alarms()->unacknowledgedCount(), 1);
-        c.moveTo(1'000'300);
+        c.moveTo(1'000'200); // the recorded acknowledgement closes it (by the shared key)
+        QCOMPARE(c.alarms()->rowCount(), 1);
         QCOMPARE(c.alarms()->unacknowledgedCount(), 0);
+        c.seek(1'000'150); // and seeking back before it opens it again
+        QCOMPARE(c.alarms()->unacknowledgedCount(), 1);
     }
 
     void playsAtTheChosenSpeedInBothDirections() {
