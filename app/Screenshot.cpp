@@ -1,6 +1,9 @@
 #include "app/Screenshot.h"
 
 #include "app/MainWindow.h"
+#ifdef OCU_HAVE_OCU_VIEW3D
+#include "widgets/view3d/Site3DView.h"
+#endif
 
 #include <QCoreApplication>
 #include <QDockWidget>
@@ -27,6 +30,14 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
                 t.start();
                 while (t.elapsed() < 400)
                     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+#ifdef OCU_HAVE_OCU_VIEW3D
+                // The 3D view's first frame can take longer than that on a loaded machine with a real X
+                // server (GL context, first pipeline): wait for it, up to 10 s, rather than grab a blank
+                // panel.
+                if (auto* v3d = d->findChild<Site3DView*>())
+                    while (v3d->renderCount() == 0 && t.elapsed() < 10000)
+                        QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+#endif
                 target = d;
             }
         }
