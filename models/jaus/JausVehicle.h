@@ -64,6 +64,16 @@ struct JausComponentServices {
     int component = 0;
     QVector<JausService> services;
 };
+// A camera of the vehicle (issue 18): announced through its IOP services or configured per vehicle.
+struct JausVideoEndpoint {
+    quint16 resourceId = 0;
+    quint16 sensorId = 0;
+    QString url;
+    QString name;
+    bool panTilt = false;
+    bool configured = false; // from the site configuration, not announced
+    bool operator==(const JausVideoEndpoint&) const = default;
+};
 struct JausNodeServices {
     int node = 0;
     QVector<JausComponentServices> components;
@@ -97,6 +107,7 @@ struct JausVehicle {
 
     JausAddress mobilityComponent; // zero until discovered
     QVector<JausNodeServices> services;
+    QVector<JausVideoEndpoint> videoEndpoints; // issue 18; empty until announced or configured
 };
 
 enum class JausEventSeverity { Info, Warning, Error };
