@@ -7,7 +7,6 @@
 #include <QDateTime>
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 
 namespace ocu {
@@ -59,8 +58,10 @@ void DispatchModel::reload() {
     m_rows.clear();
     m_index.clear();
     if (m_source)
-        for (auto& t : m_source->trucks())
-            m_rows.push_back(Row{std::move(t), false, {}});
+        for (auto& t : m_source->trucks()) {
+            m_rows.push_back(Row{std::move(t), false, {}, {}});
+            formatRow(m_rows.back());
+        }
     std::sort(m_rows.begin(), m_rows.end(),
               [](const Row& a, const Row& b) { return a.truck.id < b.truck.id; });
     reindex(0);
@@ -76,7 +77,12 @@ void DispatchModel::reindex(int from) {
 void DispatchModel::updateTrucks(const QStringList& ids) {
     if (!m_source)
         return;
-    QStringList updated; // rows changed in place (their row numbers are looked up after inserts/removals)
+    struct Change {
+        int row;
+        uint mask;
+        QString id;
+    };
+    QVector<Change> updated; // rows changed in place (their row numbers are looked up after inserts/removals)
     for (const QString& id : ids) {
         std::optional<DispatchTruck> t = m_source->truck(id);
         const int row = m_index.value(id, -1);
@@ -96,7 +102,8 @@ void DispatchModel::updateTrucks(const QStringList& ids) {
                                  [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
             const int pos = int(at - m_rows.begin());
             beginInsertRows({}, pos, pos);
-            m_rows.insert(pos, Row{std::move(*t), false, {}});
+            m_rows.insert(pos, Row{std::move(*t), false, {}, {}});
+            formatRow(m_rows[pos]);
             reindex(pos);
             endInsertRows();
             continue;
@@ -112,32 +119,86 @@ void DispatchModel::updateTrucks(const QStringList& ids) {
                                  [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
             const int pos = int(at - m_rows.begin());
             beginInsertRows({}, pos, pos);
-            m_rows.insert(pos, Row{std::move(*t), false, {}});
+            m_rows.insert(pos, Row{std::move(*t), false, {}, {}});
+            formatRow(m_rows[pos]);
             reindex(pos);
             endInsertRows();
             continue;
         }
         Row& r = m_rows[row];
+        uint mask = 0; // the columns whose cells change
         if (r.truck.wayId != t->wayId || r.truck.destinationId != t->destinationId ||
-            r.truck.assignmentId != t->assignmentId || r.truck.assignmentStatus != t->assignmentStatus)
+            r.truck.assignmentId != t->assignmentId || r.truck.assignmentStatus != t->assignmentStatus) {
             r.routeValid = false;
-        r.truck = std::move(*t);
-        updated << id;
-    }
-    int first = INT_MAX, last = -1;
-    for (const QString& id : std::as_const(updated))
-        if (const int row = m_index.value(id, -1); row >= 0) {
-            first = std::min(first, row);
-            last = std::max(last, row);
+            mask |= 1u << ColEta;
         }
-    if (last >= 0)
-        emit dataChanged(index(first, 0), index(last, ColumnCount - 1));
+        if (r.truck.productionSinceMs != t->productionSinceMs)
+            mask |= 1u << ColInState;
+        const bool cueChanged = r.truck.needsAssignment != t->needsAssignment ||
+                                r.truck.custodian != t->custodian || r.truck.lastResponse != t->lastResponse;
+        const std::array<QString, ColumnCount> previous = std::move(r.text);
+        r.truck = std::move(*t);
+        formatRow(r);
+        for (int c = 0; c < ColumnCount; ++c)
+            if (r.text[c] != previous[c])
+                mask |= 1u << c;
+        if (cueChanged) // the colours of the row or of its assignment/custodian cell
+            mask = (1u << ColumnCount) - 1;
+        if (mask)
+            updated.push_back({0, mask, id});
+    }
+    // Row numbers after the inserts and removals; one dataChanged per run of consecutive rows with the same
+    // changed columns and per run of consecutive changed columns.
+    for (auto& u : updated)
+        u.row = m_index.value(u.id, -1);
+    std::sort(updated.begin(), updated.end(), [](const Change& a, const Change& b) { return a.row < b.row; });
+    for (qsizetype i = 0; i < updated.size();) {
+        if (updated[i].row < 0) {
+            ++i;
+            continue;
+        }
+        qsizetype j = i + 1;
+        while (j < updated.size() && updated[j].row == updated[j - 1].row + 1 &&
+               updated[j].mask == updated[i].mask)
+            ++j;
+        const uint mask = updated[i].mask;
+        for (int c = 0; c < ColumnCount;) {
+            if (!(mask & (1u << c))) {
+                ++c;
+                continue;
+            }
+            int d = c;
+            while (d + 1 < ColumnCount && (mask & (1u << (d + 1))))
+                ++d;
+            emit dataChanged(index(updated[i].row, c), index(updated[j - 1].row, d));
+            c = d + 1;
+        }
+        i = j;
+    }
     emit trucksUpdated(ids);
 }
 
+void DispatchModel::formatRow(Row& r) const {
+    const DispatchTruck& t = r.truck;
+    r.text[ColTruck] = t.name;
+    r.text[ColCustodian] = t.stateKnown ? orDash(t.custodian) : tr("link down");
+    r.text[ColMode] = orDash(t.autonomyMode);
+    r.text[ColAssignment] = assignmentText(t);
+    r.text[ColTask] = orDash(t.task);
+    r.text[ColDestination] = !t.destinationId              ? QStringLiteral("—")
+                             : t.destinationName.isEmpty() ? tr("way %1").arg(*t.destinationId)
+                                                           : t.destinationName;
+    r.text[ColProduction] = orDash(t.productionState);
+    r.text[ColPayload] =
+        t.payloadTonnes ? QStringLiteral("%1 t").arg(*t.payloadTonnes, 0, 'f', 0) : QStringLiteral("—");
+}
+
 void DispatchModel::refreshTimes() {
-    if (!m_rows.isEmpty())
-        emit dataChanged(index(0, ColInState), index(int(m_rows.size()) - 1, ColInState), {Qt::DisplayRole});
+    if (m_rows.isEmpty())
+        return;
+    // A view repaints only the visible cells of these columns.
+    emit dataChanged(index(0, ColInState), index(int(m_rows.size()) - 1, ColInState), {Qt::DisplayRole});
+    emit dataChanged(index(0, ColEta), index(int(m_rows.size()) - 1, ColEta), {Qt::DisplayRole});
 }
 
 int DispatchModel::rowCount(const QModelIndex& parent) const {
@@ -225,31 +286,14 @@ QVariant DispatchModel::data(const QModelIndex& index, int role) const {
         return etaSeconds(index.row());
     if (role == Qt::DisplayRole) {
         switch (col) {
-        case ColTruck:
-            return t.name;
-        case ColCustodian:
-            return t.stateKnown ? orDash(t.custodian) : tr("link down");
-        case ColMode:
-            return orDash(t.autonomyMode);
-        case ColAssignment:
-            return assignmentText(t);
-        case ColTask:
-            return orDash(t.task);
-        case ColDestination:
-            if (!t.destinationId)
-                return QStringLiteral("—");
-            return t.destinationName.isEmpty() ? tr("way %1").arg(*t.destinationId) : t.destinationName;
         case ColEta:
             return etaText(index.row());
-        case ColProduction:
-            return orDash(t.productionState);
-        case ColPayload:
-            return t.payloadTonnes ? QStringLiteral("%1 t").arg(*t.payloadTonnes, 0, 'f', 0)
-                                   : QStringLiteral("—");
         case ColInState:
             return t.productionSinceMs > 0
                        ? duration(std::max<qint64>(0, (m_now() - t.productionSinceMs) / 1000))
                        : QStringLiteral("—");
+        default:
+            return m_rows[index.row()].text[col]; // formatted when the report came (formatRow)
         }
     }
     if (role == Qt::ToolTipRole) {
@@ -341,6 +385,26 @@ DispatchQueueModel::DispatchQueueModel(DispatchModel* trucks, QObject* parent)
     rebuild();
 }
 
+namespace {
+// At most `shown` names, then "+N": a cell shows a handful anyway (the tooltip has them all), and a long
+// joined string would be laid out again at every repaint.
+QString names(const QStringList& list, int shown) {
+    if (list.size() <= shown)
+        return list.join(QStringLiteral(", "));
+    return QStringList(list.mid(0, shown)).join(QStringLiteral(", ")) +
+           QStringLiteral(" +%1").arg(list.size() - shown);
+}
+} // namespace
+
+QString DispatchQueueModel::trucksText(const Queue& q, int shown) {
+    QStringList parts;
+    if (!q.atArea.isEmpty())
+        parts << tr("at: %1").arg(names(q.atArea, shown));
+    if (!q.enRoute.isEmpty())
+        parts << tr("coming: %1").arg(names(q.enRoute, shown));
+    return parts.join(QStringLiteral("; "));
+}
+
 bool DispatchQueueModel::isQueueArea(const DispatchArea& a) {
     return a.defaultTask == QLatin1String("Load") || a.defaultTask == QLatin1String("Offload");
 }
@@ -376,9 +440,19 @@ void DispatchQueueModel::rebuild() {
         endResetModel();
         return;
     }
+    // Only the queues whose trucks changed are repainted.
+    QVector<int> changed;
+    for (int i = 0; i < next.size(); ++i)
+        if (next[i].enRoute != m_queues[i].enRoute || next[i].atArea != m_queues[i].atArea)
+            changed << i;
     m_queues = std::move(next);
-    if (!m_queues.isEmpty())
-        emit dataChanged(index(0, ColEnRoute), index(int(m_queues.size()) - 1, ColTrucks));
+    for (int i = 0; i < changed.size();) {
+        int j = i + 1;
+        while (j < changed.size() && changed[j] == changed[j - 1] + 1)
+            ++j;
+        emit dataChanged(index(changed[i], ColEnRoute), index(changed[j - 1], ColTrucks));
+        i = j;
+    }
 }
 
 const DispatchQueueModel::Queue* DispatchQueueModel::queueOf(const QString& link, qint64 wayId) const {
@@ -410,22 +484,17 @@ QVariant DispatchQueueModel::data(const QModelIndex& index, int role) const {
             return int(q.enRoute.size());
         case ColAtArea:
             return int(q.atArea.size());
-        case ColTrucks: {
-            QStringList parts;
-            if (!q.atArea.isEmpty())
-                parts << tr("at: %1").arg(q.atArea.join(QStringLiteral(", ")));
-            if (!q.enRoute.isEmpty())
-                parts << tr("coming: %1").arg(q.enRoute.join(QStringLiteral(", ")));
-            return parts.join(QStringLiteral("; "));
-        }
+        case ColTrucks:
+            return trucksText(q, kShownNames);
         }
     }
     if (role == Qt::ToolTipRole)
         return tr("Way %1 on %2. Coming: assigned (Pending/Active) and not yet there; at: the truck reports "
                   "this "
                   "area as its way (queued, spotting, loading or dumping).")
-            .arg(q.area.wayId)
-            .arg(q.area.link);
+                   .arg(q.area.wayId)
+                   .arg(q.area.link) +
+               (index.column() == ColTrucks ? QStringLiteral("\n") + trucksText(q, 1000) : QString());
     if (role == Qt::TextAlignmentRole && (index.column() == ColEnRoute || index.column() == ColAtArea))
         return int(Qt::AlignRight | Qt::AlignVCenter);
     return {};

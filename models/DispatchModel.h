@@ -11,8 +11,12 @@
 // cached per truck until its way, destination or assignment changes, and computed only for rows a view asks
 // for.
 //
-// Updates are incremental: trucksChanged(ids) re-reads those trucks, one dataChanged over the changed rows;
-// rows are kept in truck-name order; the "in state" column is refreshed once a second.
+// Updates are incremental: trucksChanged(ids) re-reads those trucks; the display texts of a row are formatted
+// once per update (kept in the row, so painting allocates nothing for them) and compared with the previous
+// ones, and dataChanged covers only the cells whose text (or the row's cue) really changed, one signal per
+// run of consecutive rows with the same changed columns (a view repaints only those cells, and nothing for
+// rows scrolled out of sight). Rows are kept in truck-name order; the "in state" and "ETA" columns (time and
+// reported speed) are refreshed once a second.
 #include "models/DispatchSource.h"
 
 #include <QAbstractTableModel>
@@ -20,6 +24,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <array>
 #include <functional>
 
 namespace ocu {
@@ -84,8 +89,11 @@ private:
         // Route cache key and value.
         mutable bool routeValid = false;
         mutable DispatchRoute route;
+        // Display texts of the columns that depend only on the truck's report (not ETA, not in state).
+        std::array<QString, ColumnCount> text;
     };
     QString assignmentText(const DispatchTruck& t) const;
+    void formatRow(Row& r) const;
     QString etaText(int row) const;
     void reindex(int from);
 
@@ -119,6 +127,9 @@ public:
     // The queue of one area (link + way id), or null.
     const Queue* queueOf(const QString& link, qint64 wayId) const;
     static bool isQueueArea(const DispatchArea& a); // Load or Offload (dump, crusher)
+    // "at: A, B; coming: C, D" with at most `shown` names per list (then "+N more" as "+N").
+    static QString trucksText(const Queue& q, int shown);
+    static constexpr int kShownNames = 8;
 
 public slots:
     void rebuild();

@@ -1,5 +1,5 @@
-// Issue 15 §3: the dispatch table model. Rows in id order from the source, incremental updates (one
-// dataChanged over the changed rows, inserts and removals), the "needs assignment" cue, the assignment column
+// Issue 15 §3: the dispatch table model. Rows in id order from the source, incremental updates (dataChanged
+// only over the cells that changed, inserts and removals), the "needs assignment" cue, the assignment column
 // telling the reported status apart from the answer to this console's request, the ETA (route length over the
 // reported speed, the nominal speed below 1 m/s), the route cache, "in state" from the report time, and the
 // queues per shovel and dump.
@@ -176,8 +176,12 @@ private slots:
         QSignalSpy changed(&m, &QAbstractItemModel::dataChanged);
         now += 3'600'000;
         m.refreshTimes();
-        QCOMPARE(changed.size(), 1);
+        // Two columns depend on the clock or the reported speed: in state and ETA, each over all rows.
+        QCOMPARE(changed.size(), 2);
         QCOMPARE(changed[0][0].toModelIndex().column(), int(DispatchModel::ColInState));
+        QCOMPARE(changed[0][1].toModelIndex().column(), int(DispatchModel::ColInState));
+        QCOMPARE(changed[1][0].toModelIndex().column(), int(DispatchModel::ColEta));
+        QCOMPARE(changed[1][1].toModelIndex().column(), int(DispatchModel::ColEta));
         QCOMPARE(cell(m, 0, DispatchModel::ColInState), QStringLiteral("1 h 02"));
     }
 
@@ -225,9 +229,102 @@ private slots:
                  QStringLiteral("at: T1, T2; coming: T3"));
         // T3 arrives: it moves from coming to at.
         DispatchTruck t3 = going("T3", 10, 10, QStringLiteral("Active"));
+        QSignalSpy queueChanged(&q, &QAbstractItemModel::dataChanged);
         src.setTrucks({t3});
         QCOMPARE(q.queueOf(QStringLiteral("ahs"), 10)->atArea, QStringList({"T1", "T2", "T3"}));
         QVERIFY(q.queueOf(QStringLiteral("ahs"), 10)->enRoute.isEmpty());
+        // Only that queue's row changed.
+        QCOMPARE(queueChanged.size(), 1);
+        QCOMPARE(queueChanged[0][0].toModelIndex().row(), row);
+        QCOMPARE(queueChanged[0][1].toModelIndex().row(), row);
+        // A report that moves no truck between queues repaints no queue.
+        DispatchTruck t6 = at("T6", 20, QStringLiteral("Dumping"));
+        t6.payloadTonnes = 0;
+        src.setTrucks({t6});
+        QCOMPARE(queueChanged.size(), 1);
+
+        // A long queue shows a handful of names and the count of the others; the tooltip has them all.
+        QVector<DispatchTruck> many;
+        for (int i = 0; i < 20; ++i)
+            many << at(QStringLiteral("Q%1").arg(i, 2, 10, QLatin1Char('0')), 11, QStringLiteral("Queued"));
+        src.setTrucks(many);
+        const int rowB = int(std::find_if(q.queues().begin(), q.queues().end(),
+                                          [](const auto& x) { return x.area.wayId == 11; }) -
+                             q.queues().begin());
+        const QString shown = q.data(q.index(rowB, DispatchQueueModel::ColTrucks)).toString();
+        QVERIFY2(
+            shown.startsWith(QStringLiteral("at: Q00, Q01, Q02, Q03, Q04, Q05, Q06, Q07 +12; coming: T4")),
+            qPrintable(shown));
+        QVERIFY(q.data(q.index(rowB, DispatchQueueModel::ColTrucks), Qt::ToolTipRole)
+                    .toString()
+                    .contains(QStringLiteral("Q19")));
+    }
+
+    // dataChanged covers only the cells whose text changed (a view repaints those and nothing for rows out
+    // of sight); consecutive rows with the same change are one signal; the "needs assignment" cue colours the
+    // whole row; a report that changes nothing visible emits nothing.
+    void dataChangedOnlyForChangedCells() {
+        FakeDispatchSource src;
+        QVector<DispatchTruck> all;
+        for (int i = 0; i < 6; ++i) {
+            DispatchTruck t = truck(QStringLiteral("T%1").arg(i));
+            t.productionState = QStringLiteral("Hauling");
+            t.payloadTonnes = 200;
+            all << t;
+        }
+        src.setTrucks(all, false);
+        DispatchModel m;
+        m.setSource(&src);
+        QSignalSpy changed(&m, &QAbstractItemModel::dataChanged);
+        auto span = [&](int i) {
+            return QStringLiteral("%1,%2-%3,%4")
+                .arg(changed[i][0].toModelIndex().row())
+                .arg(changed[i][0].toModelIndex().column())
+                .arg(changed[i][1].toModelIndex().row())
+                .arg(changed[i][1].toModelIndex().column());
+        };
+
+        // The same report again: nothing to repaint.
+        src.setTrucks({all[2]});
+        QCOMPARE(changed.size(), 0);
+        // The payload of one truck rounds to the same text: nothing either.
+        all[2].payloadTonnes = 200.2;
+        src.setTrucks({all[2]});
+        QCOMPARE(changed.size(), 0);
+
+        // Production state of T1 and T2 (consecutive rows): one signal over the production column.
+        all[1].productionState = QStringLiteral("Dumping");
+        all[2].productionState = QStringLiteral("Dumping");
+        src.setTrucks({all[2], all[1]});
+        QCOMPARE(changed.size(), 1);
+        QCOMPARE(span(0), QStringLiteral("1,%1-2,%1").arg(int(DispatchModel::ColProduction)));
+        changed.clear();
+
+        // T0 production + payload (adjacent columns), T4 payload only: two signals, each its own cells.
+        all[0].productionState = QStringLiteral("Loading");
+        all[0].payloadTonnes = 50;
+        all[4].payloadTonnes = 230;
+        src.setTrucks({all[0], all[4]});
+        QCOMPARE(changed.size(), 2);
+        QCOMPARE(span(0), QStringLiteral("0,%1-0,%2")
+                              .arg(int(DispatchModel::ColProduction))
+                              .arg(int(DispatchModel::ColPayload)));
+        QCOMPARE(span(1), QStringLiteral("4,%1-4,%1").arg(int(DispatchModel::ColPayload)));
+        changed.clear();
+
+        // T3 asks for work: the whole row (its colour) changes.
+        all[3].needsAssignment = true;
+        src.setTrucks({all[3]});
+        QCOMPARE(changed.size(), 1);
+        QCOMPARE(span(0), QStringLiteral("3,0-3,%1").arg(int(DispatchModel::ColumnCount) - 1));
+        QCOMPARE(cell(m, 3, DispatchModel::ColAssignment), QStringLiteral("NEEDS ASSIGNMENT"));
+        changed.clear();
+
+        // A new way: the ETA (route) changes, and only it.
+        all[5].wayId = 7;
+        src.setTrucks({all[5]});
+        QCOMPARE(changed.size(), 1);
+        QCOMPARE(span(0), QStringLiteral("5,%1-5,%1").arg(int(DispatchModel::ColEta)));
     }
 };
 

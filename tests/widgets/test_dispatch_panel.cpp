@@ -10,6 +10,7 @@
 #include "models/testing/FakeDispatchSource.h"
 #include "models/testing/FakeFleetBridge.h"
 #include "widgets/SiteMapView.h"
+#include "widgets/dispatch/CachedTextDelegate.h"
 #include "widgets/dispatch/DispatchPanel.h"
 #include "widgets/dispatch/RouteOverlay2D.h"
 
@@ -115,6 +116,57 @@ struct Rig {
 class TestDispatchPanel : public QObject {
     Q_OBJECT
 private slots:
+    // The table's delegate draws what a text cell shows — the text (elided when the column is narrow), the
+    // background and foreground roles, the selection — and lays each distinct text out once.
+    void cachedTextDelegatePaintsCells() {
+        FakeDispatchSource src;
+        QVector<DispatchTruck> trucks;
+        for (int i = 0; i < 30; ++i) {
+            DispatchTruck t = truck(QStringLiteral("T%1").arg(i, 2, 10, QLatin1Char('0')));
+            t.productionState = i % 2 ? QStringLiteral("Hauling") : QStringLiteral("Loading");
+            t.needsAssignment = i == 1;
+            trucks << t;
+        }
+        src.setTrucks(trucks, false);
+        DispatchPanel panel(&src, nullptr, nullptr);
+        panel.resize(1200, 600);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QTableView* table = panel.table();
+        auto* delegate = qobject_cast<CachedTextDelegate*>(table->itemDelegate());
+        QVERIFY(delegate);
+        table->clearSelection();
+        table->setCurrentIndex({});
+        const QImage img = table->viewport()->grab().toImage();
+        // Row 0 (not selected, no cue): the truck cell has dark text pixels on the light base.
+        const QRect name = table->visualRect(panel.model()->index(0, DispatchModel::ColTruck));
+        const QRect prod = table->visualRect(panel.model()->index(0, DispatchModel::ColProduction));
+        auto inkIn = [&](const QRect& r) {
+            int ink = 0;
+            for (int y = r.top(); y <= r.bottom(); ++y)
+                for (int x = r.left(); x <= r.right(); ++x)
+                    ink += qGray(img.pixel(x, y)) < 128;
+            return ink;
+        };
+        QVERIFY(inkIn(name) > 10);
+        QVERIFY(inkIn(prod) > 10);
+        // Row 1 asks for work: its cells have the amber background of the cue.
+        const QRect cue = table->visualRect(panel.model()->index(1, DispatchModel::ColMode));
+        QCOMPARE(QColor(img.pixel(cue.right() - 2, cue.center().y())), QColor(0xff, 0xd5, 0x4f));
+        // 30 names + a handful of shared texts ("Loading", "Hauling", "FMS", "—"...) laid out, not 30 x 10.
+        QVERIFY2(delegate->cachedTexts() < 60, qPrintable(QString::number(delegate->cachedTexts())));
+        const int cached = delegate->cachedTexts();
+        table->viewport()->repaint();
+        QCOMPARE(delegate->cachedTexts(), cached); // a repaint lays nothing out again
+        // A narrow column: the text is elided, not cut or overflowing into the next cell.
+        table->setColumnWidth(DispatchModel::ColAssignment, 40);
+        table->viewport()->grab(); // paints
+        const QRect a = table->visualRect(panel.model()->index(1, DispatchModel::ColAssignment));
+        const QRect next = table->visualRect(panel.model()->index(1, DispatchModel::ColTask));
+        QVERIFY(a.width() <= 41 && next.left() > a.right());
+        QVERIFY(delegate->cachedTexts() > cached); // the elided "NEEDS ASSIGNMENT" is its own layout
+    }
+
     void keyboardPath() {
         Rig r;
         QVERIFY(QTest::qWaitForWindowActive(&r.panel));

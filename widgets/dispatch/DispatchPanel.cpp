@@ -3,6 +3,7 @@
 #include "models/CommandGate.h"
 #include "models/FleetSelection.h"
 #include "widgets/SiteMapView.h"
+#include "widgets/dispatch/CachedTextDelegate.h"
 #include "widgets/dispatch/RouteOverlay2D.h"
 
 #include <QComboBox>
@@ -92,7 +93,9 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setAlternatingRowColors(true);
     m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed); // uniform rows, no size hints
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    m_table->setItemDelegate(new CachedTextDelegate(m_table)); // 1,000 trucks: see bench_dispatch_panel
     m_table->horizontalHeader()->setStretchLastSection(false);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     m_table->setWordWrap(false);
@@ -125,7 +128,9 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     m_queueTable->setObjectName(QStringLiteral("dispatch-queues"));
     m_queueTable->setModel(m_queues);
     m_queueTable->verticalHeader()->hide();
+    m_queueTable->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
     m_queueTable->verticalHeader()->setDefaultSectionSize(m_queueTable->fontMetrics().height() + 6);
+    m_queueTable->setItemDelegate(new CachedTextDelegate(m_queueTable));
     m_queueTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_queueTable->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_queueTable->setWordWrap(false);
@@ -325,11 +330,14 @@ void DispatchPanel::setCurrentTruck(const QString& id) {
 
 void DispatchPanel::onTrucksUpdated(const QStringList& ids) {
     const int n = m_model->needsAssignmentCount();
-    m_needs->setText(n == 0 ? tr("no truck needs an assignment")
-                            : tr("%n truck(s) need an assignment", "", n));
-    m_needs->setStyleSheet(n == 0 ? QString()
-                                  : QStringLiteral("background:#ffd54f; color:black; font-weight:bold;"
-                                                   " padding:1px 6px; border-radius:3px;"));
+    if (n != m_needsShown) { // a style sheet change re-polishes the label: only when the count changed
+        m_needsShown = n;
+        m_needs->setText(n == 0 ? tr("no truck needs an assignment")
+                                : tr("%n truck(s) need an assignment", "", n));
+        m_needs->setStyleSheet(n == 0 ? QString()
+                                      : QStringLiteral("background:#ffd54f; color:black; font-weight:bold;"
+                                                       " padding:1px 6px; border-radius:3px;"));
+    }
     if (m_current.isEmpty() && m_model->rowCount() > 0 && !m_table->currentIndex().isValid()) {
         // Nothing chosen yet: start on the first truck, so the keyboard has a row to move from.
         m_table->setCurrentIndex(m_model->index(0, 0));

@@ -101,6 +101,7 @@ private:
     QString m_followTruck, m_followAssignment, m_followText;
     std::function<bool(const QString&, const QString&)> m_confirm;
     bool m_syncing = false;
+    int m_needsShown = -1;
 };
 
 } // namespace ocu
