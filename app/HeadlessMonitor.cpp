@@ -2,6 +2,7 @@
 #include "app/ShiftReportCommand.h"
 
 #include "models/AlarmModel.h"
+#include "models/AutoDispatcher.h"
 #include "models/CommandGate.h"
 
 #include "models/FleetBridge.h"
@@ -387,6 +388,17 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
     if (name == QLatin1String("assign") || name == QLatin1String("reset_assignment") ||
         name == QLatin1String("production"))
         return dispatchCommand(name, cmd);
+    if (name == QLatin1String("auto_dispatch")) { // issue 15 §5 (models/AutoDispatcher.h)
+        QJsonObject o = AutoDispatcher::command(m_gate->bridges(), cmd, origin);
+        o[QStringLiteral("type")] = QStringLiteral("result");
+        o[QStringLiteral("cmd")] = name;
+        if (cmd.contains(QStringLiteral("req")))
+            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
+        writeLine(o);
+        QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
+        emit commandHandled(line);
+        return line;
+    }
     if (name == QLatin1String("shift_report")) { // issue 15 §4 (app/ShiftReportCommand.h)
         ShiftReportRequest r{cmd.value(QStringLiteral("pdf")).toString(),
                              cmd.value(QStringLiteral("csv")).toString(), std::nullopt,

@@ -28,6 +28,8 @@
 //   {"cmd":"shift_report","pdf":"shift.pdf","csv":"shift.csv","plan_tonnes":30000} (either file may be left
 //   out; result "written":{"pdf":true,"csv":true}, "loads", "tonnes", "cycles"; ok only when all were
 //   written)
+//   {"cmd":"auto_dispatch","on":true|false} (without "on": the state): the automatic dispatcher (issue 15
+//   §5, models/AutoDispatcher.h); result "on", "dispatchers":[{"bridge","on","sent","last"}]
 //   {"cmd":"counters"}: one result line with every stack's counters per link (issue 14 §6):
 //     {"type":"result","cmd":"counters","ok":true,"message":"3 links","links":[{"protocol":"osyris",
 //      "link":"osyris:239.255.0.1:5000","rejected_total":4,"rejected":{"rejected.too_short":3,

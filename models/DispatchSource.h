@@ -38,6 +38,7 @@ struct DispatchTruck {
     std::optional<qint64> wayId;
     qint64 productionSinceMs = 0; // ms since the epoch of the production state report; 0 = unknown
     std::optional<double> payloadTonnes;
+    std::optional<bool> loaded; // carries a load, as the truck reported (unknown: not reported)
 
     // The destination the truck is heading for: the reported assignment's while Pending/Active, else none.
     std::optional<qint64> activeDestination() const {

@@ -6,6 +6,7 @@
 
 #include <QCoreApplication>
 
+#include "models/AutoDispatcher.h"
 #include "models/FleetContext.h"
 #include "models/OwnPosition.h"
 #include "models/ProductionModel.h"
@@ -34,6 +35,11 @@ public:
         m_bridge = new IsoBridge(*s.config.iso23725, s.frame, s.owner);
         attachProductionModel(m_bridge)->setSiteName(QString::fromStdString(s.config.name)); // issue 15 §4
         s.fleet->addBridge(m_bridge);
+        // Issue 15 §5: the automatic dispatcher (off until the operator or a script switches it on), owned by
+        // the bridge like its dispatch source, so the panel and the headless monitor find it.
+        auto* source = new IsoDispatchSource(m_bridge, m_bridge);
+        auto* autoDispatch = new AutoDispatcher(source, s.fleet->gate(), m_bridge);
+        autoDispatch->setAlarms(s.fleet->alarms());
         return m_bridge->start();
     }
     void stop() override {
@@ -60,9 +66,12 @@ public:
             "IsoModule", "Dispatch needs an ISO 23725 AHS link (site configuration \"iso23725\").");
     }
     void populate(const ModulePanels& ui) override {
-        addProductionDock(ui.window, ui.fleet, m_bridge, QString::fromStdString(ui.config.name)); // issue 15 §4
-        auto* source = new IsoDispatchSource(m_bridge, m_bridge);
+        addProductionDock(ui.window, ui.fleet, m_bridge,
+                          QString::fromStdString(ui.config.name)); // issue 15 §4
+        auto* autoDispatch = m_bridge->findChild<AutoDispatcher*>();
+        auto* source = autoDispatch ? autoDispatch->source() : new IsoDispatchSource(m_bridge, m_bridge);
         auto* panel = new DispatchPanel(source, ui.fleet->gate(), ui.fleet->selection());
+        panel->setAutoDispatcher(autoDispatch);
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
         panel->setMap(map);
         ui.window.setPanelWidget(Panel::Dispatch, panel);

@@ -68,6 +68,12 @@ IsoDispatchState toDispatchState(const IsoMachineSnapshot& m) {
         s.payloadTonnes = double(*m.payload->payloadWeight);
         s.payloadUnixMs = m.payloadUnixMs;
     }
+    if (m.sensor && m.sensor->loaded)
+        s.loaded = *m.sensor->loaded;
+    else if (m.payload && m.payload->payloadWeight)
+        s.loaded = *m.payload->payloadWeight > 0 && (!m.lastDump || m.payloadUnixMs > m.dumpUnixMs);
+    else if (m.lastDump)
+        s.loaded = false;
     return s;
 }
 

@@ -63,6 +63,9 @@ struct IsoDispatchState {
     qint64 productionSinceMs = 0;        // header time of the production state report
     std::optional<double> payloadTonnes; // null payload stays unknown, never 0
     qint64 payloadUnixMs = 0;
+    // Whether the truck carries a load, as it reported: HaulTruckProductionStateSensorV1.Loaded when it sends
+    // that, else a payload above 0 reported after its last dump; unknown when neither.
+    std::optional<bool> loaded;
 
     // The newest response naming `assignmentId`, or null.
     const IsoAssignmentResponse* response(const QString& assignmentId) const;

@@ -37,6 +37,7 @@ DispatchTruck toDispatchTruck(const IsoDispatchState& s) {
     t.wayId = s.wayId;
     t.productionSinceMs = s.productionSinceMs;
     t.payloadTonnes = s.payloadTonnes;
+    t.loaded = s.loaded;
     return t;
 }
 

@@ -53,6 +53,7 @@ struct IsoMachineSnapshot {
     std::int64_t payloadUnixMs = 0;
     std::optional<HaulTruckProductionStateSensorV1> sensor;
     std::optional<HaulTruckDumpV1> lastDump;
+    std::int64_t dumpUnixMs = 0; // header time of lastDump
     std::optional<HaulTruckProductionCycleV1> lastCycle;
     std::optional<HaulTruckAssignmentV1> assignment;  // AHS-reported status
     std::vector<AssignmentItem> requestedAssignments; // last request sent by this FMS

@@ -4,6 +4,7 @@
 // result shown; picking the destination by clicking an area on the map (selection untouched); the route's
 // geometry over a known map, and that the map draws it.
 #include "models/AlarmModel.h"
+#include "models/AutoDispatcher.h"
 #include "models/CommandGate.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
@@ -165,6 +166,39 @@ private slots:
         const QRect next = table->visualRect(panel.model()->index(1, DispatchModel::ColTask));
         QVERIFY(a.width() <= 41 && next.left() > a.right());
         QVERIFY(delegate->cachedTexts() > cached); // the elided "NEEDS ASSIGNMENT" is its own layout
+    }
+
+    // Issue 15 §5: the automatic dispatcher's switch in the panel: hidden without one; switching on asks
+    // first (No leaves it off); on, the line says so and what it did last; the state follows a switch from
+    // elsewhere (the headless command); off stops it.
+    void autoDispatchSwitch() {
+        Rig r;
+        QVERIFY(!r.panel.autoButton()->isVisible());
+        AutoDispatcher dispatcher(&r.src, &r.gate);
+        r.panel.setAutoDispatcher(&dispatcher);
+        QVERIFY(r.panel.autoButton()->isVisible());
+        QVERIFY(!r.panel.autoLabel()->isVisible());
+        r.answer = false;
+        r.panel.autoButton()->click();
+        QCOMPARE(r.questions.size(), 1);
+        QVERIFY(!dispatcher.isOn());
+        QVERIFY(!r.panel.autoButton()->isChecked());
+        r.answer = true;
+        r.panel.autoButton()->click();
+        QVERIFY(dispatcher.isOn());
+        QVERIFY(r.panel.autoButton()->isChecked());
+        QVERIFY(r.panel.autoButton()->text().contains(QStringLiteral("ON")));
+        // T1 (no task) and T2 (asks for work) go to the only shovel; the line shows the last one.
+        QTRY_VERIFY(r.calls(QStringLiteral("assign")).size() == 2);
+        QTRY_VERIFY2(r.panel.autoLabel()->text().contains(QStringLiteral("Auto dispatch ON — last:")) &&
+                         r.panel.autoLabel()->text().contains(QStringLiteral("Load at Shovel A")),
+                     qPrintable(r.panel.autoLabel()->text()));
+        QVERIFY(r.panel.autoLabel()->isVisible());
+        // Switched off elsewhere (the headless command): the panel follows.
+        dispatcher.setOn(false, QStringLiteral("headless"));
+        QVERIFY(!r.panel.autoButton()->isChecked());
+        QVERIFY(r.panel.autoLabel()->text().contains(QStringLiteral("Auto dispatch OFF (headless)")));
+        QCOMPARE(r.questions.size(), 2); // switching off never asks
     }
 
     void keyboardPath() {
