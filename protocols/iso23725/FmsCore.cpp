@@ -475,6 +475,7 @@ template <class T> void FmsCore::machineMember(IsoMachineSnapshot& m, const T& b
         m_counters.add("rx.production_sensor");
     } else if constexpr (std::is_same_v<T, HaulTruckDumpV1>) {
         m.lastDump = b;
+        m.dumpUnixMs = std::max(m.dumpUnixMs, hdrMs);
         event(IsoSeverity::Info,
               "dump by " + label(m) + " at way " + std::to_string(b.wayId) +
                   (b.dumpedWeight ? ", " + std::to_string(*b.dumpedWeight) + " t" : std::string()));
@@ -671,8 +672,10 @@ std::string FmsCore::routeAssignment(const IsoMachineSnapshot& m, std::vector<As
                 RouteResult r = shortestRoute(m_routes, *from, a.destinationId);
                 if (!r.ok)
                     return "task " + a.task + ": destination " + r.error;
-                if (m_cfg.rules.sendRoutes)
-                    a.route = r.routeV1();
+                // RouteV1 is optional (row 21): a destination next to the truck's way has no way in between,
+                // and an empty list would only say that; it is left out then.
+                if (std::vector<WayRef> v = r.routeV1(); m_cfg.rules.sendRoutes && !v.empty())
+                    a.route = std::move(v);
             }
         }
         from = a.destinationId; // a future task starts where the previous one ends

@@ -4,7 +4,10 @@
 // console's codec. Its own minimal WebSocket server (Boost.Beast, synchronous, one FMS at a time, 127.0.0.1,
 // port 0) sends hand-written frames and records every text frame the FMS sends, verbatim. Behaviours as other
 // vendors' stacks might have them: no DispatchingCustodian at all, a custodian of AHS, assignments answered
-// (Accepted + HaulTruckAssignmentV1 Active) or left unanswered.
+// (Accepted + HaulTruckAssignmentV1 Active), answered late or left unanswered, an unsolicited Rejected after
+// an Accepted. With `production`, one load-haul-dump cycle of production messages (§5 rows 16-20, §6
+// examples) after the snapshot, in one of several dialects: as the tables' examples, with every optional
+// field left out, with unknown extra members and fields, or with the fields in another order.
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -21,6 +24,26 @@ struct ForeignAhsOptions {
     std::string custodian = "FMS";  // "" = never reports MachineDispatchAvailabilityV1
     std::int64_t truckWayId = 4101; // HaulTruckProductionStateV2.WayId at connection
     bool answerAssignments = true;
+    int answerDelayMs = 0;         // answers that come late
+    std::string unsolicitedReject; // after the Accepted and Active: Rejected with this Detail ("" = none)
+    bool production = false;       // the production cycle below after the snapshot
+    enum class Dialect { Tables, Minimal, Extra, Reordered };
+    Dialect dialect = Dialect::Tables;
+};
+
+// The values of the production cycle the peer sends (the §6 examples' values); what the console must show.
+struct ForeignProduction {
+    static constexpr const char* cycleId = "3c5e7a91-2b4d-4f60-8a1c-9e0d2f4b6c88";
+    static constexpr const char* loadAssignment = "e41a7c2b-6d3f-4b58-a9e0-7f1c2d3b4a56";
+    static constexpr const char* dumpAssignment = "f52b8d3c-7e40-4c69-b0f1-8a2d3e4c5b67";
+    static constexpr const char* loader = "a2d4f6b8-1c3e-4a5b-9d7f-0e2c4b6a8d13";
+    static constexpr std::int64_t payload = 289;
+    static constexpr double accuracy = 4.5;
+    static constexpr std::int64_t loadWay = 4201;
+    static constexpr std::int64_t dumpWay = 4101;
+    static constexpr std::int64_t haulWay = 2001;
+    // The last production state: back on the ramp, empty, after the dump.
+    static constexpr const char* finalState = "Driving";
 };
 
 class ForeignAhs {
