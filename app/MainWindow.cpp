@@ -377,10 +377,14 @@ void MainWindow::fitDocksToWindow() {
     // quarter of the height. Minimum sizes of the panels still apply.
     resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]},
                 {w * 24 / 100, w * 50 / 100, w * 26 / 100}, Qt::Horizontal);
-    resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]}, {h * 70 / 100, h * 30 / 100},
-                Qt::Vertical);
-    resizeDocks({m_docks[Panel::EventLog], m_docks[Panel::PassCounts]}, {w * 60 / 100, w * 40 / 100},
-                Qt::Horizontal);
+    // Issue 15: on a short screen (a 1366x768 field laptop) the bottom row (event log, dispatch) gets 40 %
+    // and the dispatch side half of it, so the dispatch table shows trucks, not two rows.
+    const int bottom = h < 900 ? 40 : 30;
+    const int dispatch = w < 1600 ? 50 : 40;
+    resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]},
+                {h * (100 - bottom) / 100, h * bottom / 100}, Qt::Vertical);
+    resizeDocks({m_docks[Panel::EventLog], m_docks[Panel::PassCounts]},
+                {w * (100 - dispatch) / 100, w * dispatch / 100}, Qt::Horizontal);
     m_fitPending = false;
 }
 

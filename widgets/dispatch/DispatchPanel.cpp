@@ -1,5 +1,6 @@
 #include "widgets/dispatch/DispatchPanel.h"
 
+#include "models/AutoDispatcher.h"
 #include "models/CommandGate.h"
 #include "models/FleetSelection.h"
 #include "widgets/SiteMapView.h"
@@ -46,7 +47,8 @@ QString DispatchPanel::shortcutHelp() {
               "(click an area; Esc cancels)\n"
               "Ctrl+Enter or Alt+A: assign (re-assigning a truck that has a task asks first)\n"
               "Alt+R: reset the truck's assignment (asks first)\n"
-              "Alt+Q: go to the queues per shovel and dump");
+              "Alt+Q: go to the queues per shovel and dump\n"
+              "Alt+U: auto dispatch on/off (switching on asks first)");
 }
 
 DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSelection* selection,
@@ -61,8 +63,9 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     m_queues = new DispatchQueueModel(m_model, this);
 
     auto* top = new QVBoxLayout(this);
-    top->setContentsMargins(4, 4, 4, 4);
-    top->setSpacing(4);
+    // Compact: on a 1366x768 field laptop the panel shares the bottom row; every pixel row is a truck row.
+    top->setContentsMargins(2, 2, 2, 2);
+    top->setSpacing(2);
 
     auto* split = new QSplitter(Qt::Horizontal, this);
     auto* left = new QWidget(split);
@@ -83,7 +86,21 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     next->setToolTip(tr("Select the next truck that asks for work or was handed back to the FMS."));
     connect(next, &QPushButton::clicked, this, &DispatchPanel::selectNextNeedingAssignment);
     head->addWidget(next);
+    // Issue 15 §5: the automatic dispatcher's switch (shown when there is one, see setAutoDispatcher).
+    m_auto = new QPushButton(tr("A&uto dispatch"), this);
+    m_auto->setObjectName(QStringLiteral("button-auto-dispatch"));
+    m_auto->setCheckable(true);
+    m_auto->setToolTip(
+        tr("Assign every idle FMS truck automatically: empty to the shovel with the shortest "
+           "queue, loaded to the dump with the shortest queue (Alt+U; switching on asks first)."));
+    m_auto->hide();
+    head->addWidget(m_auto);
     leftLayout->addLayout(head);
+    m_autoLabel = new QLabel(this);
+    m_autoLabel->setObjectName(QStringLiteral("label-auto-dispatch"));
+    m_autoLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_autoLabel->hide();
+    leftLayout->addWidget(m_autoLabel);
     m_table = new QTableView(left);
     leftLayout->addWidget(m_table, 1);
     m_table->setObjectName(QStringLiteral("dispatch-table"));
@@ -94,7 +111,8 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     m_table->setAlternatingRowColors(true);
     m_table->verticalHeader()->hide();
     m_table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed); // uniform rows, no size hints
-    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 4);
+    m_table->verticalHeader()->setMinimumSectionSize(m_table->fontMetrics().height() + 4);
     m_table->setItemDelegate(new CachedTextDelegate(m_table)); // 1,000 trucks: see bench_dispatch_panel
     m_table->horizontalHeader()->setStretchLastSection(false);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
@@ -121,7 +139,9 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     auto* queueLayout = new QVBoxLayout(queues);
     queueLayout->setContentsMargins(0, 0, 0, 0);
     queueLayout->setSpacing(2);
-    auto* queueLabel = new QLabel(tr("&Queues per shovel and dump"), queues);
+    // Short: the panel must fit half the bottom row of a 1366x768 screen (the tooltip says the rest).
+    auto* queueLabel = new QLabel(tr("&Queues"), queues);
+    queueLabel->setToolTip(tr("Queues per shovel and dump: trucks at the area and trucks coming to it"));
     queueLabel->setStyleSheet(QStringLiteral("font-weight:bold"));
     queueLayout->addWidget(queueLabel);
     m_queueTable = new QTableView(queues);
@@ -129,7 +149,8 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     m_queueTable->setModel(m_queues);
     m_queueTable->verticalHeader()->hide();
     m_queueTable->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
-    m_queueTable->verticalHeader()->setDefaultSectionSize(m_queueTable->fontMetrics().height() + 6);
+    m_queueTable->verticalHeader()->setDefaultSectionSize(m_queueTable->fontMetrics().height() + 4);
+    m_queueTable->verticalHeader()->setMinimumSectionSize(m_queueTable->fontMetrics().height() + 4);
     m_queueTable->setItemDelegate(new CachedTextDelegate(m_queueTable));
     m_queueTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_queueTable->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -150,8 +171,9 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     queueLayout->addWidget(m_queueTable, 1);
     split->addWidget(left);
     split->addWidget(queues);
-    split->setStretchFactor(0, 3);
+    split->setStretchFactor(0, 4);
     split->setStretchFactor(1, 1);
+    split->setChildrenCollapsible(true); // the queues can be dragged away on a narrow screen
     top->addWidget(split, 1);
 
     auto* controls = new QHBoxLayout;
@@ -164,6 +186,10 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     m_destination = new QComboBox(this);
     m_destination->setObjectName(QStringLiteral("combo-destination"));
     m_destination->setMinimumContentsLength(16);
+    // It stretches; its own minimum (the longest area name) would push Reset off half the bottom row of a
+    // 1366x768 screen.
+    m_destination->setMinimumWidth(
+        m_destination->fontMetrics().horizontalAdvance(QStringLiteral("Pit 1 shovel 1")) + 40);
     m_destination->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     destLabel->setBuddy(m_destination);
     m_pick = new QPushButton(tr("Pick on &map"), this);
@@ -253,6 +279,49 @@ DispatchPanel::~DispatchPanel() {
     if (m_map)
         m_map->setAreaPicking(false);
     delete m_overlay;
+}
+
+void DispatchPanel::setAutoDispatcher(AutoDispatcher* autoDispatcher) {
+    if (m_autoDispatcher)
+        disconnect(m_autoDispatcher, nullptr, this, nullptr);
+    disconnect(m_auto, &QPushButton::clicked, this, nullptr);
+    m_autoDispatcher = autoDispatcher;
+    m_auto->setVisible(autoDispatcher != nullptr);
+    if (!autoDispatcher) {
+        m_autoLabel->hide();
+        return;
+    }
+    connect(autoDispatcher, &AutoDispatcher::stateChanged, this, &DispatchPanel::updateAuto);
+    connect(autoDispatcher, &AutoDispatcher::acted, this, &DispatchPanel::updateAuto);
+    connect(m_auto, &QPushButton::clicked, this, [this](bool on) {
+        if (!m_autoDispatcher)
+            return;
+        if (on &&
+            !confirm(tr("Switch auto dispatch on?"),
+                     tr("Every idle truck the FMS dispatches will be assigned automatically (empty: "
+                        "shortest shovel queue; loaded: shortest dump queue) until you switch it off.")))
+            on = false;
+        m_autoDispatcher->setOn(on, QStringLiteral("gui"));
+        updateAuto();
+    });
+    updateAuto();
+}
+
+void DispatchPanel::updateAuto() {
+    if (!m_autoDispatcher)
+        return;
+    const bool on = m_autoDispatcher->isOn();
+    {
+        const QSignalBlocker block(m_auto);
+        m_auto->setChecked(on);
+    }
+    m_auto->setText(on ? tr("A&uto dispatch ON") : tr("A&uto dispatch"));
+    m_auto->setStyleSheet(on ? QStringLiteral("background:#1b5e20; color:white; font-weight:bold;")
+                             : QString());
+    const QString last = m_autoDispatcher->lastAction();
+    m_autoLabel->setText(on ? tr("Auto dispatch ON — last: %1").arg(last.isEmpty() ? tr("nothing yet") : last)
+                            : (last.isEmpty() ? QString() : tr("Auto dispatch OFF — last: %1").arg(last)));
+    m_autoLabel->setVisible(!m_autoLabel->text().isEmpty());
 }
 
 void DispatchPanel::setMap(SiteMapView* map) {

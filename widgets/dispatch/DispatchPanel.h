@@ -20,6 +20,7 @@ class QTableView;
 
 namespace ocu {
 
+class AutoDispatcher;
 class CommandGate;
 class FleetSelection;
 class SiteMapView;
@@ -39,6 +40,11 @@ public:
     void setConfirm(std::function<bool(const QString&, const QString&)> confirm) {
         m_confirm = std::move(confirm);
     }
+
+    // The automatic dispatcher (optional, not owned): its switch and what it did last show in the panel.
+    void setAutoDispatcher(AutoDispatcher* autoDispatcher);
+    QPushButton* autoButton() const { return m_auto; }
+    QLabel* autoLabel() const { return m_autoLabel; }
 
     static QString shortcutHelp();
 
@@ -102,6 +108,10 @@ private:
     std::function<bool(const QString&, const QString&)> m_confirm;
     bool m_syncing = false;
     int m_needsShown = -1;
+    QPointer<AutoDispatcher> m_autoDispatcher;
+    QPushButton* m_auto = nullptr;
+    QLabel* m_autoLabel = nullptr;
+    void updateAuto();
 };
 
 } // namespace ocu
