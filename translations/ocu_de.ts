@@ -192,6 +192,45 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     </message>
 </context>
 <context>
+    <name>ocu::AutoDispatcher</name>
+    <message>
+        <source>way %1</source>
+        <translation>Weg %1</translation>
+    </message>
+    <message>
+        <source>Auto dispatch ON (%1): idle FMS trucks go to the shortest queue</source>
+        <translation>Automatische Disposition EIN (%1): freie FMS-Lkw fahren zur kürzesten Warteschlange</translation>
+    </message>
+    <message>
+        <source>Auto dispatch OFF (%1)</source>
+        <translation>Automatische Disposition AUS (%1)</translation>
+    </message>
+    <message>
+        <source>Auto dispatch: %1</source>
+        <translation>Automatische Disposition: %1</translation>
+    </message>
+    <message>
+        <source>%1 rejected way %2: %3</source>
+        <translation>%1 hat Weg %2 abgelehnt: %3</translation>
+    </message>
+    <message>
+        <source>%1 did not report the assignment to way %2 within %3 s</source>
+        <translation>%1 hat den Auftrag zu Weg %2 nicht binnen %3 s gemeldet</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3 (queue %4)</source>
+        <translation>%1: %2 bei %3 (Warteschlange %4)</translation>
+    </message>
+    <message>
+        <source>%1 — sent</source>
+        <translation>%1 — gesendet</translation>
+    </message>
+    <message>
+        <source>%1 — NOT sent: %2</source>
+        <translation>%1 — NICHT gesendet: %2</translation>
+    </message>
+</context>
+<context>
     <name>ocu::AxisDisplay</name>
     <message>
         <source>forward</source>
@@ -204,6 +243,49 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     <message>
         <source>axis %1</source>
         <translation>Achse %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DispatchPanel</name>
+    <message>
+        <source>A&amp;uto dispatch</source>
+        <translation>A&amp;uto-Disposition</translation>
+    </message>
+    <message>
+        <source>A&amp;uto dispatch ON</source>
+        <translation>A&amp;uto-Disposition EIN</translation>
+    </message>
+    <message>
+        <source>Assign every idle FMS truck automatically: empty to the shovel with the shortest queue, loaded to the dump with the shortest queue (Alt+U; switching on asks first).</source>
+        <translation>Jeden freien FMS-Lkw automatisch disponieren: leer zum Bagger mit der kürzesten Warteschlange, beladen zur Kippe mit der kürzesten Warteschlange (Alt+U; das Einschalten fragt zuerst).</translation>
+    </message>
+    <message>
+        <source>Switch auto dispatch on?</source>
+        <translation>Automatische Disposition einschalten?</translation>
+    </message>
+    <message>
+        <source>Every idle truck the FMS dispatches will be assigned automatically (empty: shortest shovel queue; loaded: shortest dump queue) until you switch it off.</source>
+        <translation>Jeder freie Lkw, den das FMS disponiert, erhält automatisch Aufträge (leer: kürzeste Bagger-Warteschlange; beladen: kürzeste Kippen-Warteschlange), bis Sie sie ausschalten.</translation>
+    </message>
+    <message>
+        <source>Auto dispatch ON — last: %1</source>
+        <translation>Automatische Disposition EIN — zuletzt: %1</translation>
+    </message>
+    <message>
+        <source>nothing yet</source>
+        <translation>noch nichts</translation>
+    </message>
+    <message>
+        <source>Auto dispatch OFF — last: %1</source>
+        <translation>Automatische Disposition AUS — zuletzt: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Queues</source>
+        <translation>&amp;Warteschlangen</translation>
+    </message>
+    <message>
+        <source>Queues per shovel and dump: trucks at the area and trucks coming to it</source>
+        <translation>Warteschlangen je Bagger und Kippe: Lkw im Bereich und Lkw auf dem Weg dorthin</translation>
     </message>
 </context>
 <context>
