@@ -62,8 +62,9 @@ void DispatchModel::reload() {
             m_rows.push_back(Row{std::move(t), false, {}, {}});
             formatRow(m_rows.back());
         }
+    // Truck-name order, the same as insertSorted keeps (it was id order here, name order on inserts).
     std::sort(m_rows.begin(), m_rows.end(),
-              [](const Row& a, const Row& b) { return a.truck.id < b.truck.id; });
+              [](const Row& a, const Row& b) { return before(a.truck, b.truck); });
     reindex(0);
     endResetModel();
     emit trucksUpdated({});
@@ -87,42 +88,17 @@ void DispatchModel::updateTrucks(const QStringList& ids) {
         std::optional<DispatchTruck> t = m_source->truck(id);
         const int row = m_index.value(id, -1);
         if (!t) {
-            if (row < 0)
-                continue;
-            beginRemoveRows({}, row, row);
-            m_rows.remove(row);
-            m_index.remove(id);
-            reindex(row);
-            endRemoveRows();
+            if (row >= 0)
+                removeRowAt(row);
             continue;
         }
         if (row < 0) {
-            const auto at =
-                std::lower_bound(m_rows.begin(), m_rows.end(), *t,
-                                 [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
-            const int pos = int(at - m_rows.begin());
-            beginInsertRows({}, pos, pos);
-            m_rows.insert(pos, Row{std::move(*t), false, {}, {}});
-            formatRow(m_rows[pos]);
-            reindex(pos);
-            endInsertRows();
+            insertSorted(std::move(*t));
             continue;
         }
         if (m_rows[row].truck.name != t->name) { // renamed: its place changes
-            beginRemoveRows({}, row, row);
-            m_rows.remove(row);
-            m_index.remove(id);
-            reindex(row);
-            endRemoveRows();
-            const auto at =
-                std::lower_bound(m_rows.begin(), m_rows.end(), *t,
-                                 [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
-            const int pos = int(at - m_rows.begin());
-            beginInsertRows({}, pos, pos);
-            m_rows.insert(pos, Row{std::move(*t), false, {}, {}});
-            formatRow(m_rows[pos]);
-            reindex(pos);
-            endInsertRows();
+            removeRowAt(row);
+            insertSorted(std::move(*t));
             continue;
         }
         Row& r = m_rows[row];
@@ -176,6 +152,25 @@ void DispatchModel::updateTrucks(const QStringList& ids) {
         i = j;
     }
     emit trucksUpdated(ids);
+}
+
+void DispatchModel::removeRowAt(int row) {
+    beginRemoveRows({}, row, row);
+    m_index.remove(m_rows[row].truck.id);
+    m_rows.remove(row);
+    reindex(row);
+    endRemoveRows();
+}
+
+void DispatchModel::insertSorted(DispatchTruck&& t) {
+    const auto at = std::lower_bound(m_rows.begin(), m_rows.end(), t,
+                                     [](const Row& r, const DispatchTruck& k) { return before(r.truck, k); });
+    const int pos = int(at - m_rows.begin());
+    beginInsertRows({}, pos, pos);
+    m_rows.insert(pos, Row{std::move(t), false, {}, {}});
+    formatRow(m_rows[pos]);
+    reindex(pos);
+    endInsertRows();
 }
 
 void DispatchModel::formatRow(Row& r) const {

@@ -94,6 +94,8 @@ private:
     };
     QString assignmentText(const DispatchTruck& t) const;
     void formatRow(Row& r) const;
+    void removeRowAt(int row);
+    void insertSorted(DispatchTruck&& t); // in truck-name order
     QString etaText(int row) const;
     void reindex(int from);
 

@@ -260,6 +260,24 @@ private slots:
                     .contains(QStringLiteral("Q19")));
     }
 
+    // Rows are in truck-name order however they come: loaded at once (setSource) or one by one; the ids
+    // (GUIDs on a real link) do not decide.
+    void rowsInNameOrderOnLoadAndInsert() {
+        FakeDispatchSource src;
+        DispatchTruck b = truck("HT102"), a = truck("HT101"), c = truck("HT103");
+        b.id = QStringLiteral("iso23725:0001"); // the smallest id has the middle name
+        a.id = QStringLiteral("iso23725:0009");
+        c.id = QStringLiteral("iso23725:0005");
+        src.setTrucks({b, a}, false);
+        DispatchModel m;
+        m.setSource(&src);
+        QCOMPARE(cell(m, 0, DispatchModel::ColTruck), QStringLiteral("HT101"));
+        QCOMPARE(cell(m, 1, DispatchModel::ColTruck), QStringLiteral("HT102"));
+        src.setTrucks({c});
+        QCOMPARE(cell(m, 2, DispatchModel::ColTruck), QStringLiteral("HT103"));
+        QCOMPARE(m.rowOf(QStringLiteral("iso23725:0001")), 1);
+    }
+
     // dataChanged covers only the cells whose text changed (a view repaints those and nothing for rows out
     // of sight); consecutive rows with the same change are one signal; the "needs assignment" cue colours the
     // whole row; a report that changes nothing visible emits nothing.

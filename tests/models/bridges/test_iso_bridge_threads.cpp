@@ -9,6 +9,7 @@
 #include "models/testing/CommandWait.h"
 #include "sim/iso23725/SimulatedAhs.h"
 #include "tests/models/bridges/BridgeThreadSupport.h"
+#include "tests/support/IsoSimConsole.h"
 
 #include <QDateTime>
 #include <QSignalSpy>
@@ -30,14 +31,7 @@ sim::SimulatedAhsConfig quietAhs() {
 }
 
 iso23725::IsoConfig consoleConfig(const std::string& url) {
-    iso23725::IsoConfig c;
-    c.links.push_back(iso23725::IsoLinkConfig{"ahs", {}, {}});
-    c.links[0].ws.url = url;
-    c.links[0].ws.backoffMin = std::chrono::milliseconds(100);
-    c.links[0].ws.backoffMax = std::chrono::milliseconds(400);
-    c.links[0].ws.pingInterval = std::chrono::milliseconds(500);
-    c.links[0].ws.deadAfter = std::chrono::milliseconds(3000);
-    return c;
+    return isosim::consoleConfig(url);
 }
 
 // MachinePositionV1 from the AHS (catalogue example shape); `seq` orders the timestamps.

@@ -9,6 +9,7 @@
 #include "models/CommandGate.h"
 #include "models/bridges/IsoBridge.h"
 #include "sim/iso23725/SimulatedAhs.h"
+#include "tests/support/IsoSimConsole.h"
 
 #include <QBuffer>
 #include <QJsonArray>
@@ -23,22 +24,11 @@ namespace {
 constexpr int kWait = 30000;
 
 sim::SimulatedAhsConfig ahsConfig() {
-    sim::SimulatedAhsConfig c;
-    c.truckCount = 3;
-    c.healthEvents = false;
-    c.positionRateHz = 2;
-    return c;
+    return isosim::ahsConfig(3, 2);
 }
 
 iso23725::IsoConfig consoleConfig(const std::string& url) {
-    iso23725::IsoConfig c;
-    c.links.push_back(iso23725::IsoLinkConfig{"ahs", {}, {}});
-    c.links[0].ws.url = url;
-    c.links[0].ws.backoffMin = std::chrono::milliseconds(100);
-    c.links[0].ws.backoffMax = std::chrono::milliseconds(400);
-    c.links[0].ws.pingInterval = std::chrono::milliseconds(500);
-    c.links[0].ws.deadAfter = std::chrono::milliseconds(3000);
-    return c;
+    return isosim::consoleConfig(url);
 }
 
 struct Console {

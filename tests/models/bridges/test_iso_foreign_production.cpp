@@ -15,6 +15,7 @@
 #include "models/bridges/IsoDispatchSource.h"
 #include "models/testing/CommandWait.h"
 #include "tests/protocols/iso23725/foreign/ForeignAhs.h"
+#include "tests/support/JsonFrames.h"
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,7 @@
 #include <regex>
 
 using namespace ocu;
+using isosim::withoutTimestamp;
 using nlohmann::json;
 using P = foreign::ForeignProduction;
 using Dialect = foreign::ForeignAhsOptions::Dialect;
@@ -42,18 +44,6 @@ iso23725::IsoConfig consoleConfig(const std::string& url) {
     c.links[0].ws.backoffMin = std::chrono::milliseconds(100);
     c.links[0].ws.backoffMax = std::chrono::milliseconds(400);
     return c;
-}
-
-json withoutTimestamp(const std::string& frame) {
-    json j = json::parse(frame, nullptr, false);
-    if (!j.is_object())
-        return json();
-    static const std::regex ts(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z)");
-    if (!j.contains("Timestamp") || !j["Timestamp"].is_string() ||
-        !std::regex_match(j["Timestamp"].get<std::string>(), ts))
-        return json("bad Timestamp");
-    j.erase("Timestamp");
-    return j;
 }
 
 struct Console {

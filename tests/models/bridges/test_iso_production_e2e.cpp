@@ -10,6 +10,7 @@
 #include "models/ProductionModel.h"
 #include "models/bridges/IsoBridge.h"
 #include "sim/iso23725/SimulatedAhs.h"
+#include "tests/support/IsoSimConsole.h"
 
 #include <QBuffer>
 #include <QJsonArray>
@@ -27,25 +28,11 @@ namespace {
 constexpr int kWait = 60000;
 
 sim::SimulatedAhsConfig ahsConfig() {
-    sim::SimulatedAhsConfig c;
-    c.truckCount = 2;
-    c.healthEvents = false;
-    c.positionRateHz = 10;
-    c.timeScale = 8; // a cycle in well under a minute
-    return c;
+    return isosim::ahsConfig(2, 10, 8);
 }
 
 iso23725::IsoConfig consoleConfig(const std::string& url) {
-    iso23725::IsoConfig c;
-    c.links.push_back(iso23725::IsoLinkConfig{"ahs", {}, {}});
-    c.links[0].ws.url = url;
-    c.links[0].ws.backoffMin = std::chrono::milliseconds(100);
-    c.links[0].ws.backoffMax = std::chrono::milliseconds(400);
-    c.links[0].ws.pingInterval = std::chrono::milliseconds(500);
-    c.links[0].ws.deadAfter = std::chrono::milliseconds(5000);
-    // The simulation runs 8x: positions jump further between reports than a real truck's.
-    c.plausibility.maxSpeedMps = 200;
-    return c;
+    return isosim::consoleConfig(url, std::chrono::milliseconds(5000), 200);
 }
 
 // Distance from p to the polyline (or polygon outline) of a map feature.

@@ -6,6 +6,7 @@
 #include "protocols/iso23725/IsoStack.h"
 #include "tests/protocols/iso23725/IsoTestSupport.h"
 #include "tests/protocols/iso23725/foreign/ForeignAhs.h"
+#include "tests/support/JsonFrames.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +16,7 @@
 #include <regex>
 
 using namespace isotest;
+using isosim::withoutTimestamp;
 using nlohmann::json;
 
 namespace {
@@ -47,19 +49,6 @@ template <class Issue> std::vector<ocu::TargetOutcome> outcome(Issue&& issue) {
     if (f.wait_for(std::chrono::seconds(30)) != std::future_status::ready)
         return {};
     return f.get();
-}
-
-// The frame without its send time, after checking that time has the §4.2 form (UTC with milliseconds).
-json withoutTimestamp(const std::string& frame) {
-    json j = json::parse(frame, nullptr, false);
-    if (!j.is_object())
-        return json();
-    static const std::regex ts(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z)");
-    if (!j.contains("Timestamp") || !j["Timestamp"].is_string() ||
-        !std::regex_match(j["Timestamp"].get<std::string>(), ts))
-        return json("bad Timestamp");
-    j.erase("Timestamp");
-    return j;
 }
 
 struct Session {
