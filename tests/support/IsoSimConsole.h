@@ -11,8 +11,8 @@
 namespace isosim {
 
 // `timeScale` > 1 runs the haul cycle faster (a cycle in well under a minute at 8).
-inline sim::SimulatedAhsConfig ahsConfig(int trucks, double positionRateHz, double timeScale = 1.0) {
-    sim::SimulatedAhsConfig c;
+inline ocu::sim::SimulatedAhsConfig ahsConfig(int trucks, double positionRateHz, double timeScale = 1.0) {
+    ocu::sim::SimulatedAhsConfig c;
     c.truckCount = trucks;
     c.healthEvents = false;
     c.positionRateHz = positionRateHz;
@@ -22,11 +22,11 @@ inline sim::SimulatedAhsConfig ahsConfig(int trucks, double positionRateHz, doub
 
 // One link "ahs" to `url`. A simulation running faster than real time moves its trucks further between
 // reports than a real truck: give it `maxSpeedMps` (0 = the default plausibility limit).
-inline iso23725::IsoConfig
+inline ocu::iso23725::IsoConfig
 consoleConfig(const std::string& url, std::chrono::milliseconds deadAfter = std::chrono::milliseconds(3000),
               double maxSpeedMps = 0) {
-    iso23725::IsoConfig c;
-    c.links.push_back(iso23725::IsoLinkConfig{"ahs", {}, {}});
+    ocu::iso23725::IsoConfig c;
+    c.links.push_back(ocu::iso23725::IsoLinkConfig{"ahs", {}, {}});
     c.links[0].ws.url = url;
     c.links[0].ws.backoffMin = std::chrono::milliseconds(100);
     c.links[0].ws.backoffMax = std::chrono::milliseconds(400);
