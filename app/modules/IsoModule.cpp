@@ -32,6 +32,7 @@ public:
         if (!s.config.iso23725)
             return {};
         m_bridge = new IsoBridge(*s.config.iso23725, s.frame, s.owner);
+        m_bridge->setMessageTap(s.tap);
         attachProductionModel(m_bridge)->setSiteName(QString::fromStdString(s.config.name)); // issue 15 §4
         s.fleet->addBridge(m_bridge);
         return m_bridge->start();
@@ -60,7 +61,8 @@ public:
             "IsoModule", "Dispatch needs an ISO 23725 AHS link (site configuration \"iso23725\").");
     }
     void populate(const ModulePanels& ui) override {
-        addProductionDock(ui.window, ui.fleet, m_bridge, QString::fromStdString(ui.config.name)); // issue 15 §4
+        addProductionDock(ui.window, ui.fleet, m_bridge,
+                          QString::fromStdString(ui.config.name)); // issue 15 §4
         auto* source = new IsoDispatchSource(m_bridge, m_bridge);
         auto* panel = new DispatchPanel(source, ui.fleet->gate(), ui.fleet->selection());
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));

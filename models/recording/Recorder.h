@@ -31,6 +31,7 @@
 
 namespace ocu {
 
+class MessageTap;
 class FleetContext;
 class FleetBridge;
 struct LinkStatus;
@@ -80,6 +81,10 @@ public:
     void recordSiteMap(const SiteMapData& map);
     // record.raw: one raw frame/datagram as received on `link` (ignored when raw is off).
     void recordRaw(const QString& link, const QByteArray& frame);
+    // The stacks' tap (issue 16 §1): every decoded inbound message with its receive time, protocol, link,
+    // peer and type, and with record.raw every raw frame. Its calls only pack the message into one buffer and
+    // queue it (io threads never wait for the writer); valid while the recorder lives.
+    MessageTap* messageTap() const;
 
     // Blocks until everything queued before the call is committed (tests, benchmarks, shutdown).
     void flush();
@@ -89,8 +94,10 @@ public:
         quint64 dropped = 0; // refused: queue full
         quint64 written = 0; // committed
         quint64 commits = 0;
-        quint64 stateBytes = 0;  // encoded machine-state bytes
-        quint64 writerCpuNs = 0; // CPU time of the writer thread
+        quint64 stateBytes = 0;   // encoded machine-state bytes
+        quint64 messages = 0;     // inbound messages (and raw frames) committed
+        quint64 messageBytes = 0; // their encoded chunk bytes
+        quint64 writerCpuNs = 0;  // CPU time of the writer thread
     };
     Stats stats() const;
 
@@ -119,6 +126,11 @@ private:
     std::atomic<quint64> m_writerCpuNs{0};
     std::atomic<qint64> m_lastT{0};
     QPointer<FleetContext> m_ctx;
+    class Tap;
+    std::unique_ptr<Tap> m_tap;
+    std::atomic<quint64> m_messages{0};
+    std::atomic<quint64> m_messageBytes{0};
+    quint64 m_droppedReported = 0; // GUI thread: drops already told to the operator
 };
 
 // Retention (record.max_total_mb, record.max_age_days): deletes recordings (ocu-*.sqlite and their -wal/-shm)
