@@ -1,4 +1,5 @@
 #include "models/recording/Recording.h"
+#include "models/MachineJson.h"
 
 #include "models/recording/RecordCodec.h"
 #include "models/recording/RecordSchema.h"
@@ -73,37 +74,6 @@ constexpr qint64 kMinT = std::numeric_limits<qint64>::min();
 
 QString isoTime(qint64 ms) {
     return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs);
-}
-
-QJsonObject machineJson(const MachineState& m) {
-    QJsonObject o;
-    o[QStringLiteral("type")] = QStringLiteral("machine");
-    o[QStringLiteral("id")] = m.id;
-    o[QStringLiteral("protocol")] = toText(m.protocol);
-    o[QStringLiteral("name")] = m.name;
-    o[QStringLiteral("machine_type")] = m.type;
-    if (m.hasPosition) {
-        o[QStringLiteral("lat")] = m.lat;
-        o[QStringLiteral("lon")] = m.lon;
-        o[QStringLiteral("e")] = m.e;
-        o[QStringLiteral("n")] = m.n;
-        o[QStringLiteral("u")] = m.u;
-        o[QStringLiteral("heading")] = m.headingDeg;
-    }
-    o[QStringLiteral("speed")] = m.speed;
-    o[QStringLiteral("state")] = m.modeText;
-    o[QStringLiteral("mode")] = toText(m.mode);
-    o[QStringLiteral("stop")] = toText(m.stop);
-    o[QStringLiteral("stop_text")] = m.stopText;
-    o[QStringLiteral("controller")] = m.controller;
-    o[QStringLiteral("control")] = toText(m.control);
-    o[QStringLiteral("health")] = toText(m.health);
-    if (!m.healthText.isEmpty())
-        o[QStringLiteral("health_text")] = m.healthText;
-    if (!m.workText.isEmpty())
-        o[QStringLiteral("work")] = m.workText;
-    o[QStringLiteral("link")] = toText(m.link);
-    return o;
 }
 
 QByteArray csvField(const QString& s) {
@@ -489,7 +459,7 @@ bool Recording::exportJsonLines(QIODevice* out, qint64 from, qint64 to, QString*
         }
         write(c.t, c.removed ? QJsonObject{{QStringLiteral("type"), QStringLiteral("machine_removed")},
                                            {QStringLiteral("id"), c.state.id}}
-                             : machineJson(c.state));
+                             : machineStateJson(c.state));
         return ok;
     });
     for (; next < other.size(); ++next)

@@ -26,11 +26,13 @@ struct OsyrisStack::Impl {
     std::atomic<std::int64_t> maxHandlerNs{0};
     MessageTap* tap = nullptr; // issue 16: the flight recorder's
     std::string tapLink;
+    OsyrisConfig tapCfg; // checksum, MaxLen and our own index, as the station decodes
 
     // Issue 16: the datagram to the tap, before the station handles it - raw as received, and each message
     // the codec accepts (with the station's checksum and MaxLen) as its own bytes. Our own looped-back
     // datagrams are not inbound.
-    void tapDatagram(ByteSpan d, const OsyrisConfig& cfg) {
+    void tapDatagram(ByteSpan d) {
+        const OsyrisConfig& cfg = tapCfg;
         if (tap->wantsRaw())
             tap->onRaw({"osyris", tapLink, {}, {}, d});
         const DecodedDatagram dd =
@@ -175,10 +177,10 @@ bool OsyrisStack::start(std::string* error) {
     m_impl->io.post([impl] {
         impl->core->start();
         impl->core->updateGrid(); // counts of a reopened site file appear at once
-        impl->transport->startReceive([impl, this](ByteSpan d) {
+        impl->transport->startReceive([impl](ByteSpan d) {
             impl->timed([&] {
                 if (impl->tap)
-                    impl->tapDatagram(d, m_cfg);
+                    impl->tapDatagram(d);
                 impl->core->receive(d);
             });
         });
@@ -191,6 +193,7 @@ bool OsyrisStack::start(std::string* error) {
 void OsyrisStack::setMessageTap(MessageTap* tap) {
     m_impl->tap = tap;
     m_impl->tapLink = "osyris:" + m_cfg.group + ":" + std::to_string(m_cfg.port);
+    m_impl->tapCfg = m_cfg;
 }
 
 void OsyrisStack::stop() {

@@ -153,6 +153,74 @@ private slots:
         QVERIFY2(diff.isEmpty(), qPrintable("after playing forward: " + diff));
     }
 
+    // Issue 16 §1: the simulated site's inbound messages of every protocol are in the file with their type,
+    // peer and receive time; with record.raw the raw frames too.
+    void recordsEveryProtocolsMessages() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        auto site = loadSite({});
+        QVERIFY(site.ok());
+        SiteConfig cfg = std::move(site.value());
+        cfg.record.dir = dir.path().toStdString();
+        cfg.record.raw = true;
+        QString file;
+        qint64 tStart = 0, tEnd = 0;
+        {
+            SiteRuntime runtime(cfg);
+            tStart = QDateTime::currentMSecsSinceEpoch();
+            QVERIFY(runtime.start().isEmpty());
+            QVERIFY(runtime.recorder());
+            file = runtime.recorder()->path();
+            QTest::qWait(6000);
+            runtime.stop();
+            tEnd = QDateTime::currentMSecsSinceEpoch();
+            QCOMPARE(runtime.recorder()->stats().dropped, 0u);
+        }
+        auto rec = Recording::open(file);
+        QVERIFY(rec);
+        const auto channels = rec->messageChannels();
+        QHash<QString, QSet<QString>> types, rawOf;
+        qint64 last = 0;
+        int n = 0;
+        QString bad;
+        rec->messages(0, std::numeric_limits<qint64>::max(), [&](const RecordedMessage& m) {
+            const MessageChannel c = channels.value(m.channel);
+            ++n;
+            if (m.t < last || m.t < tStart || m.t > tEnd)
+                bad = QStringLiteral("time %1 out of order or outside the run").arg(m.t);
+            last = m.t;
+            if (m.raw) {
+                rawOf[c.protocol].insert(c.link);
+                return true;
+            }
+            types[c.protocol].insert(c.type);
+            if (c.protocol == QLatin1String("jaus") &&
+                (m.bytes.size() < 2 ||
+                 c.type != QStringLiteral("%1")
+                               .arg(quint8(m.bytes[0]) | quint8(m.bytes[1]) << 8, 4, 16, QLatin1Char('0'))
+                               .toUpper()))
+                bad = QStringLiteral("JAUS type %1 does not match its message code").arg(c.type);
+            if (c.protocol == QLatin1String("iso23725") && c.type != QLatin1String("MapDocument") &&
+                !m.bytes.contains(c.type.section(QLatin1Char('+'), 0, 0).toUtf8()))
+                bad = QStringLiteral("ISO 23725 type %1 not in its frame").arg(c.type);
+            if (c.protocol == QLatin1String("osyris") && c.type == QLatin1String("CmPos") &&
+                m.bytes.size() != 73)
+                bad = QStringLiteral("CmPos of %1 bytes").arg(m.bytes.size());
+            if (c.peer.isEmpty() && c.protocol != QLatin1String("iso23725"))
+                bad = QStringLiteral("%1 message without a peer").arg(c.protocol);
+            return bad.isEmpty();
+        });
+        QVERIFY2(bad.isEmpty(), qPrintable(bad));
+        QVERIFY(n > 100);
+        QVERIFY2(types.value(QStringLiteral("osyris")).contains(QStringLiteral("CmPos")),
+                 qPrintable(QStringList(types.value(QStringLiteral("osyris")).values()).join(',')));
+        QVERIFY2(types.value(QStringLiteral("iso23725")).contains(QStringLiteral("FleetDefinitionV2")),
+                 qPrintable(QStringList(types.value(QStringLiteral("iso23725")).values()).join(',')));
+        QVERIFY(types.value(QStringLiteral("jaus")).size() >= 3);
+        for (const char* p : {"jaus", "iso23725", "osyris"})
+            QVERIFY2(!rawOf.value(QString::fromLatin1(p)).isEmpty(), p);
+    }
+
     // kill -9 during recording: the file opens, at most 1 s is missing.
     void killNineLosesAtMostOneSecond() {
         QTemporaryDir dir;
