@@ -134,6 +134,14 @@ QString SiteRuntime::start() {
                 connect(b, &FleetBridge::siteMapChanged, d.recorder,
                         [this] { m_impl->recorder->recordSiteMap(m_impl->mergedMap()); });
         d.recorder->recordSiteMap(d.mergedMap());
+        // The OSYRIS pass counts: the grid now, then its changes (at most once a second).
+        if (const PassCountLayer* layer = d.passLayer()) {
+            d.recorder->watchPassCounts(layer);
+            for (const auto& m : d.modules)
+                if (FleetBridge* b = m->bridge())
+                    connect(b, &FleetBridge::passCountChanged, d.recorder,
+                            &recording::Recorder::passCountsChanged);
+        }
     }
     for (const QString& p : std::as_const(d.startProblems)) {
         qCWarning(lcApp).noquote() << p;

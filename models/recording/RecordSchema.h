@@ -7,7 +7,7 @@
 
 namespace ocu::recording {
 
-// 2: inbound messages (msg_channels, messages) replace the never-written `raw` table of 1.
+// 2: inbound messages (msg_channels, messages) replace the never-written `raw` table of 1; pass counts.
 constexpr int kSchemaVersion = 2;
 
 inline constexpr const char* kSchemaSql = R"SQL(
@@ -32,6 +32,7 @@ CREATE TABLE IF NOT EXISTS msg_channels(idx INTEGER PRIMARY KEY, protocol TEXT, 
 CREATE TABLE IF NOT EXISTS messages(id INTEGER PRIMARY KEY, t0 INTEGER NOT NULL, t1 INTEGER NOT NULL,
                                     n INTEGER NOT NULL, data BLOB NOT NULL);
 CREATE INDEX IF NOT EXISTS messages_t1 ON messages(t1);
+CREATE TABLE IF NOT EXISTS passcounts(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, data BLOB NOT NULL);
 )SQL";
 
 // The site map as compact JSON ({"revision":..,"features":[{"id","name","kind","task","auto","width",

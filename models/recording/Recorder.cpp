@@ -6,6 +6,7 @@
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/recording/MessageLog.h"
+#include "models/recording/PassCountLog.h"
 #include "models/recording/RecordCodec.h"
 #include "models/recording/RecordSchema.h"
 #include "protocols/common/MessageTap.h"
@@ -37,7 +38,8 @@ struct Recorder::Item {
         Link,
         SiteMap,
         Meta,
-        Message
+        Message,
+        PassCounts
     } kind = State;
     qint64 t = 0;
     MachineState state;
@@ -94,7 +96,7 @@ struct Recorder::Writer {
     int keyframeIntervalMs = 10000;
     quint64 stateBytes = 0;
     std::unique_ptr<Stmt> insState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink, insMap,
-        insChannel, insMessages;
+        insChannel, insMessages, insPass;
     // Inbound messages: channel (protocol, link, peer, type) -> index, and the chunk being filled.
     QHash<QByteArray, std::uint32_t> channelOf;
     std::uint32_t nextChannel = 1;
@@ -150,6 +152,7 @@ struct Recorder::Writer {
         insMap.reset();
         insChannel.reset();
         insMessages.reset();
+        insPass.reset();
         if (db)
             sqlite3_close(db);
     }
@@ -293,6 +296,7 @@ QString Recorder::start(const RecorderOptions& options) {
     w->insChannel = std::make_unique<Stmt>(
         w->db, "INSERT OR REPLACE INTO msg_channels(idx, protocol, link, peer, type) VALUES(?,?,?,?,?)");
     w->insMessages = std::make_unique<Stmt>(w->db, "INSERT INTO messages(t0, t1, n, data) VALUES(?,?,?,?)");
+    w->insPass = std::make_unique<Stmt>(w->db, "INSERT INTO passcounts(t, data) VALUES(?,?)");
     w->keyframeIntervalMs = std::max(100, options.keyframeIntervalMs);
     w->maxFileBytes = options.maxFileBytes;
     {
@@ -563,6 +567,13 @@ void Recorder::run() {
                 case Item::Message:
                     w.addMessage(it.t, it.blob);
                     break;
+                case Item::PassCounts: {
+                    Stmt& s = *w.insPass;
+                    s.i64(1, it.t);
+                    s.blob(2, qCompress(it.blob, 1));
+                    s.run();
+                    break;
+                }
                 }
             }
             w.writeChunk(chunk, t0, t1, n);
@@ -656,6 +667,51 @@ void Recorder::attach(FleetContext* ctx) {
                                        QStringLiteral("recorder")));
     });
     dropWatch->start(5000);
+}
+
+void Recorder::watchPassCounts(const PassCountLayer* layer) {
+    m_passLayer = layer;
+    m_passRevision = 0;
+    m_passSize = QSize();
+    if (!m_passTimer) {
+        m_passTimer = new QTimer(this);
+        m_passTimer->setSingleShot(true);
+        m_passTimer->setInterval(1000);
+        connect(m_passTimer, &QTimer::timeout, this, &Recorder::recordPassCountsNow);
+    }
+    recordPassCountsNow();
+}
+
+void Recorder::passCountsChanged() {
+    if (m_passLayer && m_passTimer && !m_passTimer->isActive())
+        m_passTimer->start();
+}
+
+void Recorder::recordPassCountsNow() {
+    const PassCountLayer* l = m_passLayer;
+    if (!l || !m_running || (m_passRevision != 0 && l->revision() == m_passRevision))
+        return;
+    PassCountChange c;
+    c.origin = l->origin();
+    c.cellSize = l->cellSize();
+    c.columns = l->columns();
+    c.rows = l->rows();
+    const QRectF grid(c.origin, QSizeF(c.cellSize, c.cellSize));
+    const bool sameGrid = m_passRevision != 0 && grid == m_passGrid && m_passSize == QSize(c.columns, c.rows);
+    const QRect all(0, 0, c.columns, c.rows);
+    const QRect want = sameGrid ? l->changedCellsSince(m_passRevision).intersected(all) : all;
+    const quint64 revision = l->revision();
+    c.cells = want.isEmpty() ? QRect(0, 0, 0, 0) : l->countsIn(want, c.counts);
+    if (c.counts.size() !=
+        std::size_t(std::max(0, c.cells.width())) * std::size_t(std::max(0, c.cells.height())))
+        c.cells = QRect(0, 0, 0, 0), c.counts.clear();
+    m_passRevision = revision;
+    m_passGrid = grid;
+    m_passSize = QSize(c.columns, c.rows);
+    Item it;
+    it.kind = Item::PassCounts;
+    it.blob = encodePassCounts(c);
+    push(std::move(it));
 }
 
 QString newRecordingPath(const QString& dir) {

@@ -16,6 +16,8 @@
 
 #include <QObject>
 #include <QPointer>
+#include <QRectF>
+#include <QSize>
 #include <QString>
 #include <QStringList>
 #include <QVector>
@@ -29,9 +31,12 @@
 #include <thread>
 #include <vector>
 
+class QTimer;
+
 namespace ocu {
 
 class MessageTap;
+class PassCountLayer;
 class FleetContext;
 class FleetBridge;
 struct LinkStatus;
@@ -86,6 +91,13 @@ public:
     // queue it (io threads never wait for the writer); valid while the recorder lives.
     MessageTap* messageTap() const;
 
+    // GUI thread: records the pass-count layer (OSYRIS): the whole grid now, then after each
+    // passCountsChanged() (connect FleetBridge::passCountChanged) its changed cells, at most once a second.
+    // The layer must outlive the recorder's run (or be unwatched with nullptr).
+    void watchPassCounts(const PassCountLayer* layer);
+    void passCountsChanged();
+    void recordPassCountsNow();
+
     // Blocks until everything queued before the call is committed (tests, benchmarks, shutdown).
     void flush();
 
@@ -131,6 +143,12 @@ private:
     std::atomic<quint64> m_messages{0};
     std::atomic<quint64> m_messageBytes{0};
     quint64 m_droppedReported = 0; // GUI thread: drops already told to the operator
+    // GUI thread: the watched pass-count layer, the revision and grid last recorded.
+    const PassCountLayer* m_passLayer = nullptr;
+    quint64 m_passRevision = 0;
+    QRectF m_passGrid;
+    QSize m_passSize;
+    QTimer* m_passTimer = nullptr;
 };
 
 // Retention (record.max_total_mb, record.max_age_days): deletes recordings (ocu-*.sqlite and their -wal/-shm)

@@ -328,6 +328,21 @@ void Recording::messages(qint64 from, qint64 to,
                            [&](const RecordedMessage& m) { return go = fn(m); });
 }
 
+void Recording::passCounts(qint64 fromExclusive, qint64 toInclusive,
+                           const std::function<void(qint64, const PassCountChange&)>& fn) const {
+    Query q(m_db, "SELECT t, data FROM passcounts WHERE t > ? AND t <= ? ORDER BY id");
+    q.bind(1, fromExclusive).bind(2, toInclusive);
+    PassCountChange c;
+    while (q.next())
+        if (decodePassCounts(qUncompress(q.blob(1)), c))
+            fn(q.i64(0), c);
+}
+
+bool Recording::hasPassCounts() const {
+    Query q(m_db, "SELECT 1 FROM passcounts LIMIT 1");
+    return q.next();
+}
+
 QHash<std::uint32_t, MessageChannel> Recording::messageChannels() const {
     QHash<std::uint32_t, MessageChannel> out;
     Query q(m_db, "SELECT idx, protocol, link, peer, type FROM msg_channels");
@@ -612,6 +627,15 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
           "INSERT INTO sitemaps(t, data) SELECT t, data FROM src.sitemaps WHERE t <= ?2"}) {
         Query q(dst, sql);
         q.bind(1, from).bind(2, to);
+        ok = ok && q.run();
+    }
+    // Pass counts up to the end (the counts at `from` are the changes before it applied).
+    if (Query has(m_db, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'passcounts'");
+        has.next()) {
+        Query q(
+            dst,
+            "INSERT INTO passcounts(t, data) SELECT t, data FROM src.passcounts WHERE t <= ?2 ORDER BY id");
+        q.bind(2, to);
         ok = ok && q.run();
     }
     // Inbound messages (schema 2): the chunks overlapping the window (a chunk spans at most ~1 s).

@@ -5,6 +5,7 @@
 #include "models/MachineState.h"
 #include "models/SiteMapData.h"
 #include "models/recording/MessageLog.h"
+#include "models/recording/PassCountLog.h"
 
 #include <QHash>
 #include <QIODevice>
@@ -97,6 +98,10 @@ public:
     // false stops the walk. Their channels (protocol, link, peer, type) by index.
     void messages(qint64 from, qint64 to, const std::function<bool(const RecordedMessage&)>& fn) const;
     QHash<std::uint32_t, MessageChannel> messageChannels() const;
+    // The pass-count changes recorded in (from, to], in order (malformed rows are skipped).
+    void passCounts(qint64 fromExclusive, qint64 toInclusive,
+                    const std::function<void(qint64 t, const PassCountChange&)>& fn) const;
+    bool hasPassCounts() const;
     // The message as JSON for the export and the headless view: protocol, link, peer, msg_type, raw, the
     // bytes as hex and, for ISO 23725 (JSON text on the wire), the message itself under "json".
     static QJsonObject messageJson(const RecordedMessage& m, const MessageChannel& channel);

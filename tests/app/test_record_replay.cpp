@@ -219,6 +219,13 @@ private slots:
         QVERIFY(types.value(QStringLiteral("jaus")).size() >= 3);
         for (const char* p : {"jaus", "iso23725", "osyris"})
             QVERIFY2(!rawOf.value(QString::fromLatin1(p)).isEmpty(), p);
+        // The rollers' pass counts are recorded, and the replay at the end shows covered cells.
+        QVERIFY(rec->hasPassCounts());
+        FleetModel fleet;
+        ReplayController replay(rec.get(), &fleet);
+        replay.seek(rec->endMs());
+        QVERIFY(replay.passCounts());
+        QVERIFY(summarize(*replay.passCounts(), PassTarget{}).coveredCells > 0);
     }
 
     // kill -9 during recording: the file opens, at most 1 s is missing.
