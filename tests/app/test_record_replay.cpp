@@ -228,6 +228,49 @@ private slots:
         QVERIFY(summarize(*replay.passCounts(), PassTarget{}).coveredCells > 0);
     }
 
+    // Issue 16: without record.dir the run records into OCU_RECORD_DIR (tests: a temporary folder, never the
+    // user's home), and retention by age and size is enforced there at start.
+    void recordsIntoOcuRecordDirWithRetention() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QByteArray saved = qgetenv("OCU_RECORD_DIR");
+        qputenv("OCU_RECORD_DIR", dir.path().toUtf8());
+        auto make = [&](const QString& name, int kb, int ageDays) {
+            QFile f(dir.filePath(name));
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(kb * 1024, 'r'));
+            f.flush(); // before the time is set: a later write would make the file fresh
+            f.setFileTime(QDateTime::currentDateTimeUtc().addDays(-ageDays),
+                          QFileDevice::FileModificationTime);
+        };
+        make(QStringLiteral("ocu-20260101-000000-1.sqlite"), 10, 40); // older than max_age_days
+        make(QStringLiteral("ocu-20261101-000000-2.sqlite"), 900, 3); // the oldest beyond max_total_mb
+        make(QStringLiteral("ocu-20261120-000000-3.sqlite"), 300, 2); // fits
+        auto site = loadSite({});
+        QVERIFY(site.ok());
+        SiteConfig cfg = std::move(site.value());
+        cfg.simulation.enabled = false;
+        cfg.record.dir.clear();
+        cfg.record.maxAgeDays = 30;
+        cfg.record.maxTotalMb = 1;
+        {
+            SiteRuntime runtime(cfg);
+            QVERIFY(runtime.start().isEmpty());
+            QVERIFY(runtime.recorder());
+            QCOMPARE(QFileInfo(runtime.recorder()->path()).absolutePath(),
+                     QFileInfo(dir.path()).absoluteFilePath());
+            runtime.stop();
+        }
+        if (saved.isNull())
+            qunsetenv("OCU_RECORD_DIR");
+        else
+            qputenv("OCU_RECORD_DIR", saved);
+        const QStringList left =
+            QDir(dir.path()).entryList({QStringLiteral("ocu-*.sqlite")}, QDir::Files, QDir::Name);
+        QVERIFY2(left.size() == 2, qPrintable(left.join(QLatin1Char(' '))));
+        QCOMPARE(left.first(), QStringLiteral("ocu-20261120-000000-3.sqlite"));
+    }
+
     // kill -9 during recording: the file opens, at most 1 s is missing.
     void killNineLosesAtMostOneSecond() {
         QTemporaryDir dir;
