@@ -1,7 +1,7 @@
 #pragma once
 // Inbound protocol messages in a flight recording (issue 16 §1, docs/recording.md "Schema"): what the stacks
-// handed to the recorder's tap (protocols/common/MessageTap.h). A chunk is one BLOB of the `messages` table,
-// records back to back:
+// handed to the recorder's tap (protocols/common/MessageTap.h). A chunk is one BLOB of the `messages` table
+// (qCompress'ed: zlib with Qt's 4-byte length prefix), records back to back:
 //   varint channel   index into `msg_channels` (protocol, link, peer, type)
 //   varint dt        ms after the chunk's t0
 //   u8     flags     bit 0: raw frame/datagram (record.raw) rather than a decoded message

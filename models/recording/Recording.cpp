@@ -324,7 +324,7 @@ void Recording::messages(qint64 from, qint64 to,
     q.bind(1, from).bind(2, to);
     bool go = true;
     while (go && q.next())
-        decodeMessageChunk(q.blob(1), q.i64(0), from, to,
+        decodeMessageChunk(qUncompress(q.blob(1)), q.i64(0), from, to,
                            [&](const RecordedMessage& m) { return go = fn(m); });
 }
 
