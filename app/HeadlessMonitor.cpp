@@ -1,5 +1,6 @@
 #include "app/HeadlessMonitor.h"
 #include "app/ShiftReportCommand.h"
+#include "models/MachineJson.h"
 
 #include "models/AlarmModel.h"
 #include "models/AutoDispatcher.h"
@@ -121,39 +122,7 @@ void HeadlessMonitor::writeLine(const QJsonObject& o) {
 }
 
 QJsonObject HeadlessMonitor::machineJson(const MachineState& m, bool stale, qint64 ageMs) const {
-    QJsonObject o;
-    o[QStringLiteral("type")] = QStringLiteral("machine");
-    o[QStringLiteral("id")] = m.id;
-    o[QStringLiteral("protocol")] = toText(m.protocol);
-    o[QStringLiteral("name")] = m.name;
-    o[QStringLiteral("machine_type")] = m.type;
-    if (m.hasPosition) {
-        o[QStringLiteral("lat")] = m.lat;
-        o[QStringLiteral("lon")] = m.lon;
-        o[QStringLiteral("e")] = m.e;
-        o[QStringLiteral("n")] = m.n;
-        o[QStringLiteral("u")] = m.u;
-        o[QStringLiteral("heading")] = m.headingDeg;
-    } else {
-        o[QStringLiteral("lat")] = QJsonValue::Null;
-        o[QStringLiteral("lon")] = QJsonValue::Null;
-        o[QStringLiteral("e")] = QJsonValue::Null;
-        o[QStringLiteral("n")] = QJsonValue::Null;
-        o[QStringLiteral("heading")] = QJsonValue::Null;
-    }
-    o[QStringLiteral("speed")] = m.speed;
-    o[QStringLiteral("state")] = m.modeText.isEmpty() ? toText(m.mode) : m.modeText;
-    o[QStringLiteral("mode")] = toText(m.mode);
-    o[QStringLiteral("stop")] = toText(m.stop);
-    if (!m.stopText.isEmpty())
-        o[QStringLiteral("stop_text")] = m.stopText;
-    o[QStringLiteral("controller")] =
-        m.controller.isEmpty() ? QJsonValue(QJsonValue::Null) : QJsonValue(m.controller);
-    o[QStringLiteral("control")] = toText(m.control);
-    o[QStringLiteral("health")] = toText(m.health);
-    if (!m.workText.isEmpty())
-        o[QStringLiteral("work")] = m.workText;
-    o[QStringLiteral("link")] = toText(m.link);
+    QJsonObject o = machineStateJson(m); // shared with the recording's export (models/MachineJson.h)
     o[QStringLiteral("stale")] = stale;
     o[QStringLiteral("status")] = toText(statusOf(m, stale));
     o[QStringLiteral("age_ms")] = double(ageMs);

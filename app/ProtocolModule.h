@@ -20,6 +20,7 @@
 namespace ocu {
 
 class FleetBridge;
+class MessageTap;
 class FleetContext;
 class OwnPosition;
 
@@ -27,8 +28,9 @@ class OwnPosition;
 struct ModuleStart {
     const SiteConfig& config;
     const GeoFrame& frame;
-    FleetContext* fleet; // the bridge is added to it
-    QObject* owner;      // owns the bridge
+    FleetContext* fleet;       // the bridge is added to it
+    QObject* owner;            // owns the bridge
+    MessageTap* tap = nullptr; // issue 16: the flight recorder's tap on inbound messages (nullptr: none)
 };
 
 // What a module needs to fill its panels.

@@ -15,6 +15,7 @@
 #include "protocols/common/GeoFrame.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/FleetListWidget.h"
+#include "widgets/PassCountPanel.h"
 #include "widgets/ReplayTimeline.h"
 #include "widgets/SiteMapView.h"
 
@@ -250,9 +251,30 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
                                               "live machines only.");
     window.setPanelWidget(Panel::JausControl, notice(off));
     window.setPanelWidget(Panel::Teleop, notice(off));
-    window.setPanelWidget(Panel::PassCounts, notice(QCoreApplication::translate(
-                                                 "Replay", "Pass counts are not part of a recording "
-                                                           "(docs/recording.md).")));
+    // The OSYRIS pass counts as they were at the replay time (overlay on the map, the panel's histogram).
+    if (rec->hasPassCounts()) {
+        auto* passPanel = new PassCountPanel;
+        passPanel->setLayer(c->passCounts());
+        map->setPassCountLayer(c->passCounts());
+        window.setPanelWidget(Panel::PassCounts, passPanel);
+        QObject::connect(passPanel, &PassCountPanel::paletteChanged, map, &SiteMapView::setPassPalette);
+        QObject::connect(passPanel, &PassCountPanel::targetChanged, map, &SiteMapView::setPassTarget);
+        QObject::connect(c, &ReplayController::passCountsChanged, map,
+                         [map, passPanel, shown = c->passCounts()](const PassCountLayer* layer) mutable {
+                             if (layer != shown) { // a new grid
+                                 shown = layer;
+                                 map->setPassCountLayer(layer);
+                                 passPanel->setLayer(layer);
+                             } else {
+                                 map->passCountChanged();
+                                 passPanel->layerChanged();
+                             }
+                         });
+    } else {
+        window.setPanelWidget(Panel::PassCounts,
+                              notice(QCoreApplication::translate("Replay", "This recording holds no pass "
+                                                                           "counts (no OSYRIS station).")));
+    }
 }
 
 static int runExports(const Recording& rec, const CommandLineOptions& o) {

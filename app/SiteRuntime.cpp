@@ -109,7 +109,8 @@ QString SiteRuntime::start() {
     // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down and the
     // reason is an alarm.
     for (const auto& m : d.modules) {
-        const QString e = m->start({m_config, d.frame, d.ctx, this});
+        const QString e =
+            m->start({m_config, d.frame, d.ctx, this, d.recorder ? d.recorder->messageTap() : nullptr});
         if (!e.isEmpty())
             d.startProblems << e;
     }
@@ -133,6 +134,14 @@ QString SiteRuntime::start() {
                 connect(b, &FleetBridge::siteMapChanged, d.recorder,
                         [this] { m_impl->recorder->recordSiteMap(m_impl->mergedMap()); });
         d.recorder->recordSiteMap(d.mergedMap());
+        // The OSYRIS pass counts: the grid now, then its changes (at most once a second).
+        if (const PassCountLayer* layer = d.passLayer()) {
+            d.recorder->watchPassCounts(layer);
+            for (const auto& m : d.modules)
+                if (FleetBridge* b = m->bridge())
+                    connect(b, &FleetBridge::passCountChanged, d.recorder,
+                            &recording::Recorder::passCountsChanged);
+        }
     }
     for (const QString& p : std::as_const(d.startProblems)) {
         qCWarning(lcApp).noquote() << p;
@@ -199,10 +208,14 @@ void SiteRuntime::startRecorder() {
     const RecordConfig& rc = m_config.record;
     if (!rc.enabled)
         return;
-    const QString dir = rc.dir.empty()
-                            ? QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
-                                  QStringLiteral("/recordings")
-                            : QString::fromStdString(rc.dir);
+    // Where: record.dir (or --record); else OCU_RECORD_DIR (tests and CI runs: a temporary folder, never the
+    // user's home); else the user's data folder.
+    const QString envDir = qEnvironmentVariable("OCU_RECORD_DIR");
+    const QString dir = !rc.dir.empty() ? QString::fromStdString(rc.dir)
+                        : !envDir.isEmpty()
+                            ? envDir
+                            : QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
+                                  QStringLiteral("/recordings");
     recording::applyRetention(dir, qint64(rc.maxTotalMb * 1024 * 1024), rc.maxAgeDays);
     recording::RecorderOptions o;
     o.path = recording::newRecordingPath(dir);
@@ -225,14 +238,6 @@ void SiteRuntime::startRecorder() {
     qCInfo(lcApp).noquote() << "recording to" << o.path;
     d.ctx->alarms()->add(makeEvent(EventSeverity::Info, EventKind::Info, {},
                                    tr("Recording this run to %1").arg(o.path), QStringLiteral("recorder")));
-    if (rc.raw)
-        // No stack hands its raw frames to the recorder yet (docs/recording.md): say so instead of
-        // pretending.
-        d.ctx->alarms()->add(
-            makeEvent(EventSeverity::Warning, EventKind::Info, {},
-                      tr("record.raw is set, but this build records decoded data only (no raw "
-                         "frames)"),
-                      QStringLiteral("recorder")));
 }
 
 static QWidget* notice(const QString& text) {

@@ -8,12 +8,16 @@
 //   3. Replay at 16x: advancing through the recording in 40 ms ticks of 16x (640 ms of recording per tick)
 //   into a
 //      FleetModel; keeps up when a tick's work takes less than its 40 ms.
-// Usage: bench_recording [--machines N] [--hz H] [--seconds S] [--seeks K] [--keep FILE]
+//   Every machine update also arrives as one decoded inbound message through the stacks' tap (MessageTap), a
+//   third each JAUS ReportGlobalPose (34 bytes), ISO 23725 PositionV1 (JSON, ~330 bytes) and OSYRIS CmPos (73
+//   bytes), as the io threads hand them over (--no-messages leaves them out).
+// Usage: bench_recording [--machines N] [--hz H] [--seconds S] [--seeks K] [--keep FILE] [--no-messages]
 #include "models/FleetBridge.h"
 #include "models/FleetModel.h"
 #include "models/recording/Recorder.h"
 #include "models/recording/Recording.h"
 #include "models/recording/ReplayController.h"
+#include "protocols/common/MessageTap.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -21,8 +25,10 @@
 #include <QTemporaryDir>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 
 #include <sys/resource.h>
@@ -42,6 +48,7 @@ int main(int argc, char** argv) {
     int machines = 1000, hz = 10, seconds = 60, seeks = 50;
     QString keep;
     const QStringList args = app.arguments();
+    const bool withMessages = !args.contains(QStringLiteral("--no-messages"));
     for (int i = 1; i + 1 < args.size(); ++i) {
         if (args[i] == QLatin1String("--machines"))
             machines = args[++i].toInt();
@@ -90,6 +97,32 @@ int main(int argc, char** argv) {
             return 1;
         }
         const int stepMs = 1000 / hz;
+        // The inbound messages: one per machine update, bytes prepared once (the peers encode them).
+        struct Wire {
+            const char* protocol;
+            std::string link, peer;
+            const char* type;
+            std::vector<std::uint8_t> bytes;
+        };
+        std::vector<Wire> wire{size_t(machines)};
+        for (int i = 0; i < machines; ++i) {
+            Wire& w = wire[size_t(i)];
+            if (i % 3 == 0) {
+                w = {"jaus", "jaus", std::to_string(100 + i) + ".1.1", "4402",
+                     std::vector<std::uint8_t>(34, 7)};
+                w.bytes[0] = 0x02, w.bytes[1] = 0x44;
+            } else if (i % 3 == 1) {
+                const std::string json =
+                    R"({"Header":{"Protocol":"ISO23725","Version":"1.0","EquipmentId":"6f1c2d3e-0000-4000-8000-)" +
+                    std::to_string(100000000000 + i) +
+                    R"(","Timestamp":"2026-11-24T02:00:00.000Z"},"PositionV1":{"Latitude":48.2085123,"Longitude":11.4702456,"Altitude":480.25,"Heading":123.4,"Speed":8.25,"Accuracy":0.05,"Source":"GNSS","Time":"2026-11-24T02:00:00.000Z"}})";
+                w = {"iso23725", "ahs", "127.0.0.1:40000", "PositionV1", {json.begin(), json.end()}};
+            } else {
+                w = {"osyris", "osyris:233.1.1.1:50010", std::to_string(i % 250), "CmPos",
+                     std::vector<std::uint8_t>(73, 3)};
+            }
+        }
+        MessageTap* tap = rec.messageTap();
         const double cpu0 = processCpuSeconds();
         QVector<MachineState> batch;
         batch.reserve(machines);
@@ -109,6 +142,26 @@ int main(int argc, char** argv) {
                 if (ms % 30000 == 0 && i % 10 == 0) // a status change now and then (Full records)
                     m.healthText = m.healthText.isEmpty() ? QStringLiteral("tyre pressure") : QString();
                 batch.push_back(m);
+                if (withMessages) {
+                    Wire& w = wire[size_t(i)];
+                    // What changes between messages: the position's digits or bytes.
+                    const auto v = std::uint64_t(std::llround(std::fabs(m.e * 1e4) + std::fabs(m.n * 1e4)));
+                    if (w.bytes.size() > 200) { // the JSON's latitude, longitude and heading digits
+                        for (const char* key : {"Latitude\":48.", "Longitude\":11.", "Heading\":"}) {
+                            const std::size_t kl = std::strlen(key);
+                            auto p = std::search(w.bytes.begin(), w.bytes.end(), key, key + kl);
+                            std::uint64_t x = v ^ kl;
+                            if (p != w.bytes.end())
+                                for (p += std::ptrdiff_t(kl); p < w.bytes.end() && std::isdigit(*p);
+                                     ++p, x /= 7)
+                                    *p = std::uint8_t('0' + x % 10);
+                        }
+                    } else {
+                        for (std::size_t k = 4; k < 28 && k < w.bytes.size(); ++k)
+                            w.bytes[k] = std::uint8_t(v >> (8 * (k % 8)));
+                    }
+                    tap->onDecoded({w.protocol, w.link, w.peer, w.type, w.bytes});
+                }
             }
             rec.recordStates(batch); // what FleetModel::machinesChanged hands over per delivered batch
             records += quint64(machines);
@@ -139,6 +192,9 @@ int main(int argc, char** argv) {
                     cpuRecording, 100.0 * cpuRecording / seconds, double(s.writerCpuNs) / 1e9);
         std::printf("  dropped %llu, commits %llu\n", static_cast<unsigned long long>(s.dropped),
                     static_cast<unsigned long long>(s.commits));
+        std::printf("  inbound messages recorded %llu (%.1f MB of message chunks = %.0f MB per hour)\n",
+                    static_cast<unsigned long long>(s.messages), double(s.messageBytes) / 1e6,
+                    double(s.messageBytes) / 1e6 * 3600.0 / seconds);
         std::printf("  file %.1f MB = %.0f MB per hour (%.1f bytes per machine update)\n", bytes / 1e6,
                     bytes / 1e6 * 3600.0 / seconds, bytes / double(records));
     }

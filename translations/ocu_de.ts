@@ -1832,4 +1832,21 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <translation>vor</translation>
     </message>
 </context>
+<context>
+    <name>ocu::recording::Recorder</name>
+    <message numerus="yes">
+        <source>Flight recorder behind: %n record(s) dropped (%1 in all)</source>
+        <translation>
+            <numerusform>Flugschreiber im Rückstand: %n Eintrag verworfen (insgesamt %1)</numerusform>
+            <numerusform>Flugschreiber im Rückstand: %n Einträge verworfen (insgesamt %1)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>Replay</name>
+    <message>
+        <source>This recording holds no pass counts (no OSYRIS station).</source>
+        <translation>Diese Aufzeichnung enthält keine Überfahrtszahlen (keine OSYRIS-Station).</translation>
+    </message>
+</context>
 </TS>

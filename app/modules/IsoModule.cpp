@@ -33,6 +33,7 @@ public:
         if (!s.config.iso23725)
             return {};
         m_bridge = new IsoBridge(*s.config.iso23725, s.frame, s.owner);
+        m_bridge->setMessageTap(s.tap);
         attachProductionModel(m_bridge)->setSiteName(QString::fromStdString(s.config.name)); // issue 15 §4
         s.fleet->addBridge(m_bridge);
         // Issue 15 §5: the automatic dispatcher (off until the operator or a script switches it on), owned by

@@ -24,6 +24,7 @@ public:
         if (!s.config.jaus)
             return {};
         m_bridge = new JausBridge(*s.config.jaus, s.frame, s.owner);
+        m_bridge->setMessageTap(s.tap);
         s.fleet->addBridge(m_bridge);
         return m_bridge->start();
     }

@@ -18,6 +18,7 @@ public:
         if (!s.config.osyris)
             return {};
         m_bridge = new OsyrisBridge(*s.config.osyris, s.frame, s.owner);
+        m_bridge->setMessageTap(s.tap);
         s.fleet->addBridge(m_bridge);
         return m_bridge->start();
     }

@@ -27,6 +27,10 @@ IsoBridge::~IsoBridge() {
     stop();
 }
 
+void IsoBridge::setMessageTap(MessageTap* tap) {
+    m_stack->setMessageTap(tap);
+}
+
 QString IsoBridge::start() {
     for (const auto& l : m_config.links) {
         const LinkStatus s{QStringLiteral("iso23725:") + q(l.name), ocu::LinkState::Unknown, -1,

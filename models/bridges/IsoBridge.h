@@ -7,6 +7,7 @@
 #include "models/bridges/IsoBridgeDispatch.h"
 
 #include "protocols/common/GeoFrame.h"
+#include "protocols/common/MessageTap.h"
 #include "protocols/common/PosePlausibility.h"
 #include "protocols/iso23725/IsoConfig.h"
 #include "protocols/iso23725/IsoStack.h"
@@ -33,6 +34,8 @@ public:
     ~IsoBridge() override;
 
     QString start();
+    // Issue 16: the flight recorder's tap on the stack's inbound messages (before start()).
+    void setMessageTap(MessageTap* tap);
     void stop();
     QStringList linkNames() const;
     // Position of one of the FMS's own (manned) machines (MachinePositionV1 to every AHS link, at the links'

@@ -185,6 +185,10 @@ JausBridge::~JausBridge() {
     stop();
 }
 
+void JausBridge::setMessageTap(MessageTap* tap) {
+    m_stack->setMessageTap(tap);
+}
+
 QString JausBridge::start() {
     // Published before the io thread runs: a vehicle answering within the first millisecond publishes "up"
     // from there, and this must not overwrite it (the link would show "searching" for ever).

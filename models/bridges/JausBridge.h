@@ -6,6 +6,7 @@
 #include "models/jaus/JausVehicleBridge.h"
 
 #include "protocols/common/GeoFrame.h"
+#include "protocols/common/MessageTap.h"
 #include "protocols/common/PosePlausibility.h"
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausTypes.h"
@@ -31,6 +32,8 @@ public:
 
     // Starts the stack; returns an empty string or why it could not (e.g. the UDP port is taken).
     QString start();
+    // Issue 16: the flight recorder's tap on the stack's inbound messages (before start()).
+    void setMessageTap(MessageTap* tap);
     void stop();
     const jaus::JausConfig& config() const { return m_config; }
     JausConsoleIdentity identity() const override;

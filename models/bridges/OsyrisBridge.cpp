@@ -25,6 +25,10 @@ OsyrisBridge::~OsyrisBridge() {
     stop();
 }
 
+void OsyrisBridge::setMessageTap(MessageTap* tap) {
+    m_station->setMessageTap(tap);
+}
+
 QString OsyrisBridge::start() {
     std::string error;
     const QString link = QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port);

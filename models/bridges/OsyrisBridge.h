@@ -7,6 +7,7 @@
 #include "models/bridges/OsyrisPassCountLayer.h"
 
 #include "protocols/common/GeoFrame.h"
+#include "protocols/common/MessageTap.h"
 #include "protocols/osyris/OsyrisConfig.h"
 #include "protocols/osyris/OsyrisStack.h"
 
@@ -23,6 +24,8 @@ public:
     ~OsyrisBridge() override;
 
     QString start();
+    // Issue 16: the flight recorder's tap on the stack's inbound messages (before start()).
+    void setMessageTap(MessageTap* tap);
     void stop();
 
     void stopAll(OutcomeCallback done) override;

@@ -34,7 +34,8 @@ struct PgHistory::Record {
 namespace {
 
 // The schema, created by whichever console connects first (serialised by an advisory lock so two consoles
-// starting together do not race on CREATE). docs/recording-postgres.md explains every column.
+// starting together do not race on CREATE). docs/recording.md ("Shared control-room history on PostgreSQL")
+// explains every column.
 constexpr const char* kSchemaSql = R"sql(
 BEGIN;
 SET LOCAL client_min_messages = warning;

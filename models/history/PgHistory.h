@@ -6,7 +6,7 @@
 // (one file per console) and leaves it only once PostgreSQL has it, so a console that loses the database
 // keeps working and back-fills when it returns: each record carries an idempotent key (console, outbox
 // origin, sequence) and is inserted with ON CONFLICT DO NOTHING, so nothing is lost and nothing doubled.
-// Schema and operation: docs/recording-postgres.md.
+// Schema and operation: docs/recording.md ("Shared control-room history on PostgreSQL").
 #include <QObject>
 #include <QPointer>
 #include <QString>

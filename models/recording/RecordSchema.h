@@ -7,7 +7,8 @@
 
 namespace ocu::recording {
 
-constexpr int kSchemaVersion = 1;
+// 2: inbound messages (msg_channels, messages) replace the never-written `raw` table of 1; pass counts.
+constexpr int kSchemaVersion = 2;
 
 inline constexpr const char* kSchemaSql = R"SQL(
 CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT);
@@ -27,7 +28,11 @@ CREATE TABLE IF NOT EXISTS commands(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, 
 CREATE TABLE IF NOT EXISTS links(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, protocol TEXT, link TEXT,
                                  state INTEGER, age_ms INTEGER, detail TEXT);
 CREATE TABLE IF NOT EXISTS sitemaps(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, data BLOB);
-CREATE TABLE IF NOT EXISTS raw(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, link TEXT, data BLOB);
+CREATE TABLE IF NOT EXISTS msg_channels(idx INTEGER PRIMARY KEY, protocol TEXT, link TEXT, peer TEXT, type TEXT);
+CREATE TABLE IF NOT EXISTS messages(id INTEGER PRIMARY KEY, t0 INTEGER NOT NULL, t1 INTEGER NOT NULL,
+                                    n INTEGER NOT NULL, data BLOB NOT NULL);
+CREATE INDEX IF NOT EXISTS messages_t1 ON messages(t1);
+CREATE TABLE IF NOT EXISTS passcounts(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, data BLOB NOT NULL);
 )SQL";
 
 // The site map as compact JSON ({"revision":..,"features":[{"id","name","kind","task","auto","width",

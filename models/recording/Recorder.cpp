@@ -5,8 +5,11 @@
 #include "models/FleetBridge.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
+#include "models/recording/MessageLog.h"
+#include "models/recording/PassCountLog.h"
 #include "models/recording/RecordCodec.h"
 #include "models/recording/RecordSchema.h"
+#include "protocols/common/MessageTap.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -16,6 +19,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTimer>
 
 #include <sqlite3.h>
 
@@ -25,7 +29,18 @@
 namespace ocu::recording {
 
 struct Recorder::Item {
-    enum Kind : std::uint8_t { State, Removed, Event, Ack, Command, Link, SiteMap, Raw, Meta } kind = State;
+    enum Kind : std::uint8_t {
+        State,
+        Removed,
+        Event,
+        Ack,
+        Command,
+        Link,
+        SiteMap,
+        Meta,
+        Message,
+        PassCounts
+    } kind = State;
     qint64 t = 0;
     MachineState state;
     FleetEvent event;
@@ -81,7 +96,52 @@ struct Recorder::Writer {
     int keyframeIntervalMs = 10000;
     quint64 stateBytes = 0;
     std::unique_ptr<Stmt> insState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink, insMap,
-        insRaw;
+        insChannel, insMessages, insPass;
+    // Inbound messages: channel (protocol, link, peer, type) -> index, and the chunk being filled.
+    QHash<QByteArray, std::uint32_t> channelOf;
+    std::uint32_t nextChannel = 1;
+    QByteArray msgChunk;
+    qint64 msgT0 = 0, msgT1 = 0;
+    int msgN = 0;
+    quint64 messages = 0, messageBytes = 0;
+
+    void addMessage(qint64 t, const QByteArray& packed) {
+        UnpackedTapped u;
+        if (!unpackTapped(packed, u))
+            return;
+        auto it = channelOf.find(u.key);
+        if (it == channelOf.end()) {
+            it = channelOf.insert(u.key, nextChannel++);
+            insChannel->i64(1, *it);
+            insChannel->text(2, u.channel.protocol);
+            insChannel->text(3, u.channel.link);
+            insChannel->text(4, u.channel.peer);
+            insChannel->text(5, u.channel.type);
+            insChannel->run();
+        }
+        if (!msgChunk.isEmpty() && t - msgT0 > 1000)
+            writeMessages();
+        if (msgChunk.isEmpty())
+            msgT0 = t;
+        appendMessage(msgChunk, *it, std::uint32_t(t - msgT0), u.raw, u.data, u.size);
+        msgT1 = t;
+        ++msgN;
+    }
+    void writeMessages() {
+        if (msgChunk.isEmpty())
+            return;
+        insMessages->i64(1, msgT0);
+        insMessages->i64(2, msgT1);
+        insMessages->i64(3, msgN);
+        // zlib at its fastest: JSON frames shrink several times, binary positions about by half.
+        const QByteArray packed = qCompress(msgChunk, 1);
+        insMessages->blob(4, packed);
+        insMessages->run();
+        messages += quint64(msgN);
+        messageBytes += quint64(packed.size());
+        msgChunk.clear();
+        msgN = 0;
+    }
 
     ~Writer() {
         insState.reset();
@@ -92,7 +152,9 @@ struct Recorder::Writer {
         insCommand.reset();
         insLink.reset();
         insMap.reset();
-        insRaw.reset();
+        insChannel.reset();
+        insMessages.reset();
+        insPass.reset();
         if (db)
             sqlite3_close(db);
     }
@@ -154,6 +216,9 @@ struct Recorder::Writer {
         Stmt delS(db, "DELETE FROM states WHERE id <= ?");
         delS.i64(1, chunk);
         delS.run();
+        Stmt delM(db, "DELETE FROM messages WHERE t1 < ?");
+        delM.i64(1, kt);
+        delM.run();
         Stmt delK(db, "DELETE FROM keyframes WHERE t < ?");
         delK.i64(1, kt);
         delK.run();
@@ -163,7 +228,31 @@ struct Recorder::Writer {
     }
 };
 
-Recorder::Recorder(QObject* parent) : QObject(parent) {}
+// The stacks' tap: packs and queues, nothing else (io threads).
+class Recorder::Tap final : public MessageTap {
+public:
+    explicit Tap(Recorder& r) : m_r(r) {}
+    void onDecoded(const TappedMessage& m) override { queue(m, false); }
+    void onRaw(const TappedMessage& m) override { queue(m, true); }
+    bool wantsRaw() const override { return m_r.m_options.raw; }
+
+private:
+    void queue(const TappedMessage& m, bool raw) {
+        if (!m_r.m_running)
+            return;
+        Item it;
+        it.kind = Item::Message;
+        it.blob = packTapped(m.protocol, m.link, m.peer, m.type, raw, m.bytes.data(), m.bytes.size());
+        m_r.push(std::move(it));
+    }
+    Recorder& m_r;
+};
+
+Recorder::Recorder(QObject* parent) : QObject(parent), m_tap(std::make_unique<Tap>(*this)) {}
+
+MessageTap* Recorder::messageTap() const {
+    return m_tap.get();
+}
 
 Recorder::~Recorder() {
     stop();
@@ -206,7 +295,10 @@ QString Recorder::start(const RecorderOptions& options) {
     w->insLink = std::make_unique<Stmt>(w->db, "INSERT INTO links(t, protocol, link, state, age_ms, detail) "
                                                "VALUES(?,?,?,?,?,?)");
     w->insMap = std::make_unique<Stmt>(w->db, "INSERT INTO sitemaps(t, data) VALUES(?,?)");
-    w->insRaw = std::make_unique<Stmt>(w->db, "INSERT INTO raw(t, link, data) VALUES(?,?,?)");
+    w->insChannel = std::make_unique<Stmt>(
+        w->db, "INSERT OR REPLACE INTO msg_channels(idx, protocol, link, peer, type) VALUES(?,?,?,?,?)");
+    w->insMessages = std::make_unique<Stmt>(w->db, "INSERT INTO messages(t0, t1, n, data) VALUES(?,?,?,?)");
+    w->insPass = std::make_unique<Stmt>(w->db, "INSERT INTO passcounts(t, data) VALUES(?,?)");
     w->keyframeIntervalMs = std::max(100, options.keyframeIntervalMs);
     w->maxFileBytes = options.maxFileBytes;
     {
@@ -326,10 +418,11 @@ void Recorder::recordSiteMap(const SiteMapData& map) {
 void Recorder::recordRaw(const QString& link, const QByteArray& frame) {
     if (!m_options.raw)
         return;
+    const QByteArray l = link.toUtf8();
     Item it;
-    it.kind = Item::Raw;
-    it.a = link;
-    it.blob = frame;
+    it.kind = Item::Message;
+    it.blob = packTapped({}, std::string_view(l.constData(), size_t(l.size())), {}, {}, true,
+                         reinterpret_cast<const std::uint8_t*>(frame.constData()), size_t(frame.size()));
     push(std::move(it));
 }
 
@@ -354,6 +447,8 @@ Recorder::Stats Recorder::stats() const {
     s.commits = m_commits.load();
     s.stateBytes = m_stateBytes.load();
     s.writerCpuNs = m_writerCpuNs.load();
+    s.messages = m_messages.load();
+    s.messageBytes = m_messageBytes.load();
     return s;
 }
 
@@ -471,17 +566,20 @@ void Recorder::run() {
                     s.run();
                     break;
                 }
-                case Item::Raw: {
-                    Stmt& s = *w.insRaw;
+                case Item::Message:
+                    w.addMessage(it.t, it.blob);
+                    break;
+                case Item::PassCounts: {
+                    Stmt& s = *w.insPass;
                     s.i64(1, it.t);
-                    s.text(2, it.a);
-                    s.blob(3, it.blob);
+                    s.blob(2, qCompress(it.blob, 1));
                     s.run();
                     break;
                 }
                 }
             }
             w.writeChunk(chunk, t0, t1, n);
+            w.writeMessages();
             const qint64 lastT = batch.back().t;
             if (lastT - w.lastKeyframeT >= w.keyframeIntervalMs)
                 w.writeKeyframe(std::max(lastT, w.lastChunkT1));
@@ -494,6 +592,8 @@ void Recorder::run() {
                 w.exec("PRAGMA incremental_vacuum");
             m_commits.fetch_add(1, std::memory_order_relaxed);
             m_stateBytes.store(w.stateBytes, std::memory_order_relaxed);
+            m_messages.store(w.messages, std::memory_order_relaxed);
+            m_messageBytes.store(w.messageBytes, std::memory_order_relaxed);
         }
         {
             std::lock_guard lk(m_mutex);
@@ -553,6 +653,67 @@ void Recorder::attach(FleetContext* ctx) {
     push(std::move(it));
     // What is already in the models when the recorder starts late.
     recordStates(fleet->machinesSnapshot());
+    // A writer that falls behind drops (the io threads never wait for it): the operator hears of it, at most
+    // once every 5 s, with the count.
+    auto* dropWatch = new QTimer(this);
+    connect(dropWatch, &QTimer::timeout, this, [this] {
+        const quint64 dropped = m_dropped.load(std::memory_order_relaxed);
+        if (dropped == m_droppedReported || !m_ctx)
+            return;
+        const quint64 n = dropped - m_droppedReported;
+        m_droppedReported = dropped;
+        m_ctx->alarms()->add(makeEvent(EventSeverity::Warning, EventKind::Info, {},
+                                       tr("Flight recorder behind: %n record(s) dropped (%1 in all)", nullptr,
+                                          int(std::min<quint64>(n, INT32_MAX)))
+                                           .arg(dropped),
+                                       QStringLiteral("recorder")));
+    });
+    dropWatch->start(5000);
+}
+
+void Recorder::watchPassCounts(const PassCountLayer* layer) {
+    m_passLayer = layer;
+    m_passRevision = 0;
+    m_passSize = QSize();
+    if (!m_passTimer) {
+        m_passTimer = new QTimer(this);
+        m_passTimer->setSingleShot(true);
+        m_passTimer->setInterval(1000);
+        connect(m_passTimer, &QTimer::timeout, this, &Recorder::recordPassCountsNow);
+    }
+    recordPassCountsNow();
+}
+
+void Recorder::passCountsChanged() {
+    if (m_passLayer && m_passTimer && !m_passTimer->isActive())
+        m_passTimer->start();
+}
+
+void Recorder::recordPassCountsNow() {
+    const PassCountLayer* l = m_passLayer;
+    if (!l || !m_running || (m_passRevision != 0 && l->revision() == m_passRevision))
+        return;
+    PassCountChange c;
+    c.origin = l->origin();
+    c.cellSize = l->cellSize();
+    c.columns = l->columns();
+    c.rows = l->rows();
+    const QRectF grid(c.origin, QSizeF(c.cellSize, c.cellSize));
+    const bool sameGrid = m_passRevision != 0 && grid == m_passGrid && m_passSize == QSize(c.columns, c.rows);
+    const QRect all(0, 0, c.columns, c.rows);
+    const QRect want = sameGrid ? l->changedCellsSince(m_passRevision).intersected(all) : all;
+    const quint64 revision = l->revision();
+    c.cells = want.isEmpty() ? QRect(0, 0, 0, 0) : l->countsIn(want, c.counts);
+    if (c.counts.size() !=
+        std::size_t(std::max(0, c.cells.width())) * std::size_t(std::max(0, c.cells.height())))
+        c.cells = QRect(0, 0, 0, 0), c.counts.clear();
+    m_passRevision = revision;
+    m_passGrid = grid;
+    m_passSize = QSize(c.columns, c.rows);
+    Item it;
+    it.kind = Item::PassCounts;
+    it.blob = encodePassCounts(c);
+    push(std::move(it));
 }
 
 QString newRecordingPath(const QString& dir) {

@@ -16,6 +16,8 @@
 
 #include <QObject>
 #include <QPointer>
+#include <QRectF>
+#include <QSize>
 #include <QString>
 #include <QStringList>
 #include <QVector>
@@ -29,8 +31,12 @@
 #include <thread>
 #include <vector>
 
+class QTimer;
+
 namespace ocu {
 
+class MessageTap;
+class PassCountLayer;
 class FleetContext;
 class FleetBridge;
 struct LinkStatus;
@@ -80,6 +86,17 @@ public:
     void recordSiteMap(const SiteMapData& map);
     // record.raw: one raw frame/datagram as received on `link` (ignored when raw is off).
     void recordRaw(const QString& link, const QByteArray& frame);
+    // The stacks' tap (issue 16 §1): every decoded inbound message with its receive time, protocol, link,
+    // peer and type, and with record.raw every raw frame. Its calls only pack the message into one buffer and
+    // queue it (io threads never wait for the writer); valid while the recorder lives.
+    MessageTap* messageTap() const;
+
+    // GUI thread: records the pass-count layer (OSYRIS): the whole grid now, then after each
+    // passCountsChanged() (connect FleetBridge::passCountChanged) its changed cells, at most once a second.
+    // The layer must outlive the recorder's run (or be unwatched with nullptr).
+    void watchPassCounts(const PassCountLayer* layer);
+    void passCountsChanged();
+    void recordPassCountsNow();
 
     // Blocks until everything queued before the call is committed (tests, benchmarks, shutdown).
     void flush();
@@ -89,8 +106,10 @@ public:
         quint64 dropped = 0; // refused: queue full
         quint64 written = 0; // committed
         quint64 commits = 0;
-        quint64 stateBytes = 0;  // encoded machine-state bytes
-        quint64 writerCpuNs = 0; // CPU time of the writer thread
+        quint64 stateBytes = 0;   // encoded machine-state bytes
+        quint64 messages = 0;     // inbound messages (and raw frames) committed
+        quint64 messageBytes = 0; // their encoded chunk bytes
+        quint64 writerCpuNs = 0;  // CPU time of the writer thread
     };
     Stats stats() const;
 
@@ -119,6 +138,17 @@ private:
     std::atomic<quint64> m_writerCpuNs{0};
     std::atomic<qint64> m_lastT{0};
     QPointer<FleetContext> m_ctx;
+    class Tap;
+    std::unique_ptr<Tap> m_tap;
+    std::atomic<quint64> m_messages{0};
+    std::atomic<quint64> m_messageBytes{0};
+    quint64 m_droppedReported = 0; // GUI thread: drops already told to the operator
+    // GUI thread: the watched pass-count layer, the revision and grid last recorded.
+    const PassCountLayer* m_passLayer = nullptr;
+    quint64 m_passRevision = 0;
+    QRectF m_passGrid;
+    QSize m_passSize;
+    QTimer* m_passTimer = nullptr;
 };
 
 // Retention (record.max_total_mb, record.max_age_days): deletes recordings (ocu-*.sqlite and their -wal/-shm)

@@ -1,4 +1,5 @@
 #include "models/recording/Recording.h"
+#include "models/MachineJson.h"
 
 #include "models/recording/RecordCodec.h"
 #include "models/recording/RecordSchema.h"
@@ -73,37 +74,6 @@ constexpr qint64 kMinT = std::numeric_limits<qint64>::min();
 
 QString isoTime(qint64 ms) {
     return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs);
-}
-
-QJsonObject machineJson(const MachineState& m) {
-    QJsonObject o;
-    o[QStringLiteral("type")] = QStringLiteral("machine");
-    o[QStringLiteral("id")] = m.id;
-    o[QStringLiteral("protocol")] = toText(m.protocol);
-    o[QStringLiteral("name")] = m.name;
-    o[QStringLiteral("machine_type")] = m.type;
-    if (m.hasPosition) {
-        o[QStringLiteral("lat")] = m.lat;
-        o[QStringLiteral("lon")] = m.lon;
-        o[QStringLiteral("e")] = m.e;
-        o[QStringLiteral("n")] = m.n;
-        o[QStringLiteral("u")] = m.u;
-        o[QStringLiteral("heading")] = m.headingDeg;
-    }
-    o[QStringLiteral("speed")] = m.speed;
-    o[QStringLiteral("state")] = m.modeText;
-    o[QStringLiteral("mode")] = toText(m.mode);
-    o[QStringLiteral("stop")] = toText(m.stop);
-    o[QStringLiteral("stop_text")] = m.stopText;
-    o[QStringLiteral("controller")] = m.controller;
-    o[QStringLiteral("control")] = toText(m.control);
-    o[QStringLiteral("health")] = toText(m.health);
-    if (!m.healthText.isEmpty())
-        o[QStringLiteral("health_text")] = m.healthText;
-    if (!m.workText.isEmpty())
-        o[QStringLiteral("work")] = m.workText;
-    o[QStringLiteral("link")] = toText(m.link);
-    return o;
 }
 
 QByteArray csvField(const QString& s) {
@@ -347,6 +317,55 @@ QVector<RecordedLink> Recording::links(qint64 fromExclusive, qint64 toInclusive)
     return out;
 }
 
+void Recording::messages(qint64 from, qint64 to,
+                         const std::function<bool(const RecordedMessage&)>& fn) const {
+    // Chunks span at most ~1 s (the recorder cuts them), in time order by id.
+    Query q(m_db, "SELECT t0, data FROM messages WHERE t1 >= ? AND t0 <= ? ORDER BY id");
+    q.bind(1, from).bind(2, to);
+    bool go = true;
+    while (go && q.next())
+        decodeMessageChunk(qUncompress(q.blob(1)), q.i64(0), from, to,
+                           [&](const RecordedMessage& m) { return go = fn(m); });
+}
+
+void Recording::passCounts(qint64 fromExclusive, qint64 toInclusive,
+                           const std::function<void(qint64, const PassCountChange&)>& fn) const {
+    Query q(m_db, "SELECT t, data FROM passcounts WHERE t > ? AND t <= ? ORDER BY id");
+    q.bind(1, fromExclusive).bind(2, toInclusive);
+    PassCountChange c;
+    while (q.next())
+        if (decodePassCounts(qUncompress(q.blob(1)), c))
+            fn(q.i64(0), c);
+}
+
+bool Recording::hasPassCounts() const {
+    Query q(m_db, "SELECT 1 FROM passcounts LIMIT 1");
+    return q.next();
+}
+
+QHash<std::uint32_t, MessageChannel> Recording::messageChannels() const {
+    QHash<std::uint32_t, MessageChannel> out;
+    Query q(m_db, "SELECT idx, protocol, link, peer, type FROM msg_channels");
+    while (q.next())
+        out.insert(std::uint32_t(q.i64(0)), MessageChannel{q.text(1), q.text(2), q.text(3), q.text(4)});
+    return out;
+}
+
+QJsonObject Recording::messageJson(const RecordedMessage& m, const MessageChannel& c) {
+    QJsonObject o{{QStringLiteral("type"), m.raw ? QStringLiteral("raw") : QStringLiteral("message")},
+                  {QStringLiteral("protocol"), c.protocol},
+                  {QStringLiteral("link"), c.link},
+                  {QStringLiteral("peer"), c.peer},
+                  {QStringLiteral("msg_type"), c.type},
+                  {QStringLiteral("bytes"), QString::fromLatin1(m.bytes.toHex())}};
+    if (!m.raw && c.protocol == QLatin1String("iso23725")) {
+        const QJsonDocument d = QJsonDocument::fromJson(m.bytes);
+        if (d.isObject())
+            o[QStringLiteral("json")] = d.object();
+    }
+    return o;
+}
+
 QVector<RecordedLink> Recording::linksAt(qint64 t) const {
     std::map<QString, RecordedLink> last;
     for (RecordedLink& l : links(kMinT, t))
@@ -433,6 +452,13 @@ bool Recording::exportJsonLines(QIODevice* out, qint64 from, qint64 to, QString*
                                           {QStringLiteral("state"), toText(l.state)},
                                           {QStringLiteral("age_ms"), double(l.dataAgeMs)},
                                           {QStringLiteral("detail"), l.detail}}});
+    {
+        const QHash<std::uint32_t, MessageChannel> channels = messageChannels();
+        messages(from, to, [&](const RecordedMessage& m) {
+            other.push_back({m.t, messageJson(m, channels.value(m.channel))});
+            return true;
+        });
+    }
     std::stable_sort(other.begin(), other.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     int next = 0;
@@ -448,7 +474,7 @@ bool Recording::exportJsonLines(QIODevice* out, qint64 from, qint64 to, QString*
         }
         write(c.t, c.removed ? QJsonObject{{QStringLiteral("type"), QStringLiteral("machine_removed")},
                                            {QStringLiteral("id"), c.state.id}}
-                             : machineJson(c.state));
+                             : machineStateJson(c.state));
         return ok;
     });
     for (; next < other.size(); ++next)
@@ -598,12 +624,30 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
           "INSERT INTO links(t, protocol, link, state, age_ms, detail) SELECT t, protocol, link, state, "
           "age_ms, detail "
           "FROM src.links WHERE t <= ?2",
-          "INSERT INTO sitemaps(t, data) SELECT t, data FROM src.sitemaps WHERE t <= ?2",
-          "INSERT INTO raw(t, link, data) SELECT t, link, data FROM src.raw WHERE t >= ?1 AND t <= ?2"}) {
+          "INSERT INTO sitemaps(t, data) SELECT t, data FROM src.sitemaps WHERE t <= ?2"}) {
         Query q(dst, sql);
         q.bind(1, from).bind(2, to);
         ok = ok && q.run();
     }
+    // Pass counts up to the end (the counts at `from` are the changes before it applied).
+    if (Query has(m_db, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'passcounts'");
+        has.next()) {
+        Query q(
+            dst,
+            "INSERT INTO passcounts(t, data) SELECT t, data FROM src.passcounts WHERE t <= ?2 ORDER BY id");
+        q.bind(2, to);
+        ok = ok && q.run();
+    }
+    // Inbound messages (schema 2): the chunks overlapping the window (a chunk spans at most ~1 s).
+    if (Query has(m_db, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'messages'"); has.next())
+        for (const char* sql :
+             {"INSERT INTO msg_channels SELECT * FROM src.msg_channels",
+              "INSERT INTO messages(t0, t1, n, data) SELECT t0, t1, n, data FROM src.messages "
+              "WHERE t1 >= ?1 AND t0 <= ?2 ORDER BY id"}) {
+            Query q(dst, sql);
+            q.bind(1, from).bind(2, to);
+            ok = ok && q.run();
+        }
     ok = ok && exec("COMMIT") && exec("DETACH DATABASE src") && exec("PRAGMA wal_checkpoint(TRUNCATE)");
     const QString why = QString::fromUtf8(sqlite3_errmsg(dst));
     sqlite3_close(dst);

@@ -4,9 +4,12 @@
 #include "models/FleetEvent.h"
 #include "models/MachineState.h"
 #include "models/SiteMapData.h"
+#include "models/recording/MessageLog.h"
+#include "models/recording/PassCountLog.h"
 
 #include <QHash>
 #include <QIODevice>
+#include <QJsonObject>
 #include <QString>
 #include <QVector>
 
@@ -91,6 +94,17 @@ public:
     SiteMapData siteMapAt(qint64 t) const;
     // Alarms (events that required acknowledgement) and commands, for the timeline.
     QVector<Marker> markers() const;
+    // Inbound protocol messages (and record.raw frames) received in [from, to], in time order; `fn` returning
+    // false stops the walk. Their channels (protocol, link, peer, type) by index.
+    void messages(qint64 from, qint64 to, const std::function<bool(const RecordedMessage&)>& fn) const;
+    QHash<std::uint32_t, MessageChannel> messageChannels() const;
+    // The pass-count changes recorded in (from, to], in order (malformed rows are skipped).
+    void passCounts(qint64 fromExclusive, qint64 toInclusive,
+                    const std::function<void(qint64 t, const PassCountChange&)>& fn) const;
+    bool hasPassCounts() const;
+    // The message as JSON for the export and the headless view: protocol, link, peer, msg_type, raw, the
+    // bytes as hex and, for ISO 23725 (JSON text on the wire), the message itself under "json".
+    static QJsonObject messageJson(const RecordedMessage& m, const MessageChannel& channel);
 
     // ---- export (issue 16 §3) ----
     // JSON lines in time order: {"type":"machine",...} per state change (the headless monitor's fields plus

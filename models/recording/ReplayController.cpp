@@ -65,6 +65,7 @@ void ReplayController::seek(qint64 t) {
     }
     emit linksReset(m_rec->linksAt(t));
     updateSiteMap(t);
+    updatePassCounts(t);
     m_loaded = true;
     m_lastSeekMs = double(timer.nsecsElapsed()) / 1e6;
     emit positionChanged(m_t);
@@ -77,6 +78,24 @@ void ReplayController::applyAlarms(qint64 fromExclusive, qint64 toInclusive) {
     // one.
     for (const RecordedAck& a : m_rec->acks(fromExclusive, toInclusive))
         m_alarms->acknowledgeKey(a.key, a.by, a.t);
+}
+
+// Forward: the changes since the last time applied; backwards: rebuilt from the start (changes are rects of
+// absolute counts, so applying them in order gives the counts of t).
+void ReplayController::updatePassCounts(qint64 t) {
+    if (t == m_passT)
+        return;
+    const PassCountLayer* before = m_pass.layer();
+    const quint64 revBefore = before ? before->revision() : 0;
+    if (t < m_passT) {
+        m_pass.clear();
+        m_passT = std::numeric_limits<qint64>::min();
+    }
+    m_rec->passCounts(m_passT, t, [this](qint64, const PassCountChange& c) { m_pass.apply(c); });
+    m_passT = t;
+    const PassCountLayer* after = m_pass.layer();
+    if (after != before || (after && after->revision() != revBefore))
+        emit passCountsChanged(after);
 }
 
 void ReplayController::updateSiteMap(qint64 t) {
@@ -119,6 +138,7 @@ void ReplayController::advanceTo(qint64 t) {
     for (const RecordedLink& l : m_rec->links(from, t))
         emit linkChanged(l);
     updateSiteMap(t);
+    updatePassCounts(t);
     emit positionChanged(m_t);
 }
 

@@ -13,6 +13,8 @@
 #include <QSet>
 #include <QTimer>
 
+#include <limits>
+
 namespace ocu {
 
 class AlarmModel;
@@ -31,6 +33,8 @@ public:
     // The alarm model of the current picture; replaced (alarmsReplaced) when seeking backwards.
     AlarmModel* alarms() const { return m_alarms; }
     QHash<QString, MachineState> links() const;
+    // The OSYRIS pass counts at the replay time (nullptr before the first recorded grid).
+    const PassCountLayer* passCounts() const { return m_pass.layer(); }
 
     qint64 startMs() const { return m_rec->startMs(); }
     qint64 endMs() const { return m_rec->endMs(); }
@@ -70,6 +74,8 @@ signals:
     void linkChanged(const ocu::recording::RecordedLink& link);
     void linksReset(const QVector<ocu::recording::RecordedLink>& links);
     void siteMapChanged(const ocu::SiteMapData& map);
+    // The pass counts of the replay time changed (the layer is replaced when the recorded grid changed).
+    void passCountsChanged(const ocu::PassCountLayer* layer);
     void finished(); // playing reached an end
 
 private:
@@ -77,6 +83,7 @@ private:
     void advanceTo(qint64 t);
     void applyAlarms(qint64 fromExclusive, qint64 toInclusive);
     void updateSiteMap(qint64 t);
+    void updatePassCounts(qint64 t);
 
     const Recording* m_rec;
     QPointer<FleetModel> m_fleet;
@@ -89,6 +96,8 @@ private:
     qint64 m_stepMs = 1000;
     double m_lastSeekMs = 0;
     QString m_mapStamp;
+    ReplayPassCounts m_pass;
+    qint64 m_passT = std::numeric_limits<qint64>::min();
     QTimer m_timer;
     QElapsedTimer m_wall;
     double m_carryMs = 0;

@@ -171,6 +171,7 @@ std::string FmsCore::label(const IsoMachineSnapshot& m) {
 // ---------------------------------------------------------------- main channel
 
 void FmsCore::opened(const std::string& peer) {
+    m_tapPeer = peer;
     m_state = LinkState::Up;
     m_gotFirstMessage = false;
     m_mapService.linkOpened();
@@ -237,9 +238,13 @@ void FmsCore::mapClosed(const std::string& reason) {
 void FmsCore::handleFrame(std::string_view frame, bool mapChannel) {
     m_counters.add(mapChannel ? "rx.map_service.frames" : "rx.frames");
     ++m_framesReceived;
+    if (m_tap && m_tap->wantsRaw())
+        m_tap->onRaw({"iso23725", m_link.name, m_tapPeer, mapChannel ? "map" : "main", tapBytes(frame)});
     const std::string& from = mapChannel ? "map service of " + m_link.name : m_link.name;
     std::size_t i = frame.find_first_not_of(" \t\r\n");
     if (i != std::string_view::npos && frame[i] == '<') {
+        if (m_tap)
+            m_tap->onDecoded({"iso23725", m_link.name, m_tapPeer, "MapDocument", tapBytes(frame)});
         m_mapService.chunk(frame, mapChannel); // raw XML: a map document (§8)
         return;
     }
@@ -254,6 +259,13 @@ void FmsCore::handleFrame(std::string_view frame, bool mapChannel) {
     }
     if (!env->errors.empty())
         ++m_framesRejected;
+    if (m_tap && !env->members.empty()) {
+        // The frame as received is what decodeMessage decodes again; its members name the type.
+        std::string type(memberName(env->members.front().body));
+        for (std::size_t k = 1; k < env->members.size(); ++k)
+            type.append("+").append(memberName(env->members[k].body));
+        m_tap->onDecoded({"iso23725", m_link.name, m_tapPeer, type, tapBytes(frame)});
+    }
     for (auto& e : env->errors) {
         m_counters.add("rx.rejected.invalid_member");
         event(IsoSeverity::Warning, "message from " + from + " rejected: " + e);

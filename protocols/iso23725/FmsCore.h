@@ -13,6 +13,7 @@
 
 #include "protocols/common/Clock.h"
 #include "protocols/common/Counters.h"
+#include "protocols/common/MessageTap.h"
 
 #include <cstdint>
 #include <functional>
@@ -97,7 +98,13 @@ public:
     const RouteGraph& routes() const { return m_routes; }
     const std::optional<FleetDefinitionV2>& ahsFleet() const { return m_ahsFleet; }
 
+    // Issue 16: every decoded frame (and, when the tap wants them, every text frame as received) goes to
+    // `tap` (the io thread). Set before the link opens.
+    void setMessageTap(MessageTap* tap) { m_tap = tap; }
+
 private:
+    MessageTap* m_tap = nullptr;
+    std::string m_tapPeer; // the AHS's address, for the tap
     struct Deadline {
         std::optional<TimePoint> at;
         std::string alarm;

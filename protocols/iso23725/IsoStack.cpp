@@ -157,6 +157,7 @@ struct IsoStack::Impl {
     boost::asio::steady_timer positionTimer;
     boost::asio::steady_timer pollTimer;
     PositionFlush positionFlush;
+    MessageTap* tap = nullptr; // issue 16: the flight recorder's
 
     FmsCore* session(const std::string& name, const char* what) {
         auto it = links.find(name);
@@ -204,6 +205,10 @@ IsoStack::~IsoStack() {
     stop();
 }
 
+void IsoStack::setMessageTap(MessageTap* tap) {
+    m_impl->tap = tap;
+}
+
 bool IsoStack::start() {
     auto& d = *m_impl;
     if (d.io.running())
@@ -214,6 +219,7 @@ bool IsoStack::start() {
         for (auto& lc : d.cfg.links) {
             auto l = std::make_unique<Link>(d.cfg, lc, d.listener, *d.linkCounters.at(lc.name),
                                             d.io.context(), d.positionFlush);
+            l->session->setMessageTap(d.tap);
             auto r = l->main->start();
             if (r && l->map)
                 if (auto rm = l->map->start(); !rm)

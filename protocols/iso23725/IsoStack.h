@@ -16,6 +16,10 @@
 #include <string>
 #include <vector>
 
+namespace ocu {
+class MessageTap;
+}
+
 namespace ocu::iso23725 {
 
 class IsoStack {
@@ -28,6 +32,9 @@ public:
     // Starts the io thread and every link; false (with events) when a link cannot start (bad URL, TLS files).
     bool start();
     void stop();
+    // Issue 16: every decoded frame of every link (and, when the tap wants them, every text frame) goes to
+    // `tap` on the io thread. Set before start(); the tap outlives the stack's run.
+    void setMessageTap(MessageTap* tap);
 
     // ---- commands (thread-safe, posted to the io thread; refused with an event while the link is down) ----
     void allStopApply(const std::string& link);

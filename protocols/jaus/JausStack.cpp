@@ -10,6 +10,7 @@
 
 #include "protocols/common/IoThread.h"
 #include "protocols/common/Log.h"
+#include "protocols/common/MessageTap.h"
 #include "protocols/jaus/JausCore.h"
 #include "protocols/jaus/JudpTransport.h"
 #include "protocols/jaus/Messages.h"
@@ -106,6 +107,7 @@ struct JausStack::Impl : JausOutput {
     std::vector<StopPlan> stopPlans; // written on the io thread only
     std::atomic<bool> running{false};
     std::atomic<std::uint16_t> port{0};
+    MessageTap* tap = nullptr; // issue 16: the flight recorder's
 };
 
 JausStack::JausStack(JausConfig config, JausListener& listener, Clock& clock)
@@ -120,8 +122,24 @@ void JausStack::start() {
         return;
     Impl* d = m_impl.get();
     d->transport.setLocalIds([d](const JausId& id) { return id == d->cfg.ownId(); });
+    if (d->tap && d->tap->wantsRaw())
+        d->transport.setRawHandler([d](ByteSpan data, const std::string& peer) {
+            d->tap->onRaw({"jaus", "jaus", peer, {}, data});
+        });
     d->transport.setHandlers(
-        [d](const JausId& src, const JausId& dst, ByteSpan p) { d->core.handle(src, dst, p); },
+        [d](const JausId& src, const JausId& dst, ByteSpan p) {
+            if (d->tap) {
+                // The message code (little-endian, AS5669A §4.2) names the type; the payload is what
+                // JausCore decodes again.
+                static constexpr char kHex[] = "0123456789ABCDEF";
+                const unsigned code = unsigned(p[0]) | unsigned(p[1]) << 8;
+                const char type[4] = {kHex[code >> 12], kHex[(code >> 8) & 15], kHex[(code >> 4) & 15],
+                                      kHex[code & 15]};
+                const std::string peer = src.toString();
+                d->tap->onDecoded({"jaus", "jaus", peer, std::string_view(type, 4), p});
+            }
+            d->core.handle(src, dst, p);
+        },
         [d](const std::string& reason, const std::string& text) {
             // One decode-error event per reason and second: bad peers must not flood the console.
             auto now = d->clock.now();
@@ -163,6 +181,10 @@ void JausStack::stop() {
     });
     d->running = false;
     d->io.stop();
+}
+
+void JausStack::setMessageTap(MessageTap* tap) {
+    m_impl->tap = tap;
 }
 
 bool JausStack::running() const {

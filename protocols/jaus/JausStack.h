@@ -14,6 +14,10 @@
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausTypes.h"
 
+namespace ocu {
+class MessageTap;
+}
+
 namespace ocu::jaus {
 
 class JausStack {
@@ -23,6 +27,9 @@ public:
     JausStack(const JausStack&) = delete;
     JausStack& operator=(const JausStack&) = delete;
 
+    // Issue 16: every message the transport delivers (and, when the tap wants them, every raw datagram and
+    // JTCP read) goes to `tap` on the io thread. Set before start(); the tap outlives the stack's run.
+    void setMessageTap(MessageTap* tap);
     // Opens the sockets and starts the io thread; throws std::runtime_error when a socket cannot be opened.
     void start();
     // Releases all control (zero drive commands first), then stops the io thread. Safe to call twice.

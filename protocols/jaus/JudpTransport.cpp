@@ -226,6 +226,8 @@ void JudpTransport::startReceive(Receiver& r) {
 
 void JudpTransport::onDatagram(ByteSpan data, const Endpoint& from) {
     m_counters.add("rx.datagrams");
+    if (m_onRaw)
+        m_onRaw(data, from.address().to_string() + ":" + std::to_string(from.port()));
     auto reject = [&](const std::string& err) {
         const std::string reason = rejectReason(err);
         m_counters.add("rx.rejected." + reason);
@@ -321,6 +323,8 @@ void JudpTransport::startRead(const TcpPtr& c) {
                 return;
             if (ec)
                 return dropConn(c, ec.message());
+            if (m_onRaw)
+                m_onRaw(ByteSpan(c->buffer.data(), n), c->peer);
             auto msgs = c->decoder.feed(ByteSpan(c->buffer.data(), n));
             if (!msgs) {
                 m_counters.add("rx.rejected." + rejectReason(msgs.error()));

@@ -61,6 +61,10 @@ public:
     void open();
     void close();
     void setHandlers(MessageHandler onMessage, ErrorHandler onError);
+    // Issue 16 record.raw: every datagram and every JTCP read as received (peer "address:port"), before any
+    // check.
+    using RawHandler = std::function<void(ByteSpan data, const std::string& peer)>;
+    void setRawHandler(RawHandler onRaw) { m_onRaw = std::move(onRaw); }
     // Which destination IDs are ours (for ACK answering).
     void setLocalIds(std::function<bool(const JausId&)> isLocal) { m_isLocal = std::move(isLocal); }
 
@@ -124,6 +128,7 @@ private:
     std::unique_ptr<Receiver> m_multicast;
     MessageHandler m_onMessage;
     ErrorHandler m_onError;
+    RawHandler m_onRaw;
     std::function<bool(const JausId&)> m_isLocal;
     std::map<std::uint32_t, Endpoint> m_learned;
     std::mutex m_sequenceMutex;                        // send() on the io thread, sendPlanned() anywhere

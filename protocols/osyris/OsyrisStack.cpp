@@ -2,6 +2,7 @@
 
 #include "protocols/common/IoThread.h"
 #include "protocols/common/Log.h"
+#include "protocols/common/MessageTap.h"
 
 #include <boost/asio/steady_timer.hpp>
 
@@ -23,6 +24,52 @@ struct OsyrisStack::Impl {
     std::chrono::steady_clock::time_point nextBeat;
     int beatMs = 100;
     std::atomic<std::int64_t> maxHandlerNs{0};
+    MessageTap* tap = nullptr; // issue 16: the flight recorder's
+    std::string tapLink;
+    OsyrisConfig tapCfg; // checksum, MaxLen and our own index, as the station decodes
+
+    // Issue 16: the datagram to the tap, before the station handles it - raw as received, and each message
+    // the codec accepts (with the station's checksum and MaxLen) as its own bytes. Our own looped-back
+    // datagrams are not inbound.
+    void tapDatagram(ByteSpan d) {
+        const OsyrisConfig& cfg = tapCfg;
+        if (tap->wantsRaw())
+            tap->onRaw({"osyris", tapLink, {}, {}, d});
+        const DecodedDatagram dd =
+            decodeDatagram(d, cfg.checksum, static_cast<std::size_t>(std::max(cfg.maxLen, 1500)));
+        if (dd.messages.empty() || dd.messages.front().header.who == cfg.stationIndex)
+            return;
+        char peer[4];
+        const unsigned who = dd.messages.front().header.who;
+        peer[0] = char('0' + who / 100), peer[1] = char('0' + who / 10 % 10), peer[2] = char('0' + who % 10);
+        const std::string_view peerView = who >= 100  ? std::string_view(peer, 3)
+                                          : who >= 10 ? std::string_view(peer + 1, 2)
+                                                      : std::string_view(peer + 2, 1);
+        std::size_t off = 0;
+        for (const Message& m : dd.messages) {
+            const std::size_t len = m.header.len;
+            if (len == 0 || off + len > d.size())
+                break;
+            std::string_view type = "Cm?";
+            switch (m.header.type) {
+            case std::uint16_t(MsgType::Pos):
+                type = "CmPos";
+                break;
+            case std::uint16_t(MsgType::Request):
+                type = "CmRequest";
+                break;
+            case std::uint16_t(MsgType::Msg):
+            case kTypeMsgAlt:
+                type = "CmMsg";
+                break;
+            case std::uint16_t(MsgType::PosProps):
+                type = "CmPosProps";
+                break;
+            }
+            tap->onDecoded({"osyris", tapLink, peerView, type, d.subspan(off, len)});
+            off += len;
+        }
+    }
 
     // Runs one io-thread handler and keeps the longest duration seen.
     template <class F> void timed(F&& f) {
@@ -130,11 +177,23 @@ bool OsyrisStack::start(std::string* error) {
     m_impl->io.post([impl] {
         impl->core->start();
         impl->core->updateGrid(); // counts of a reopened site file appear at once
-        impl->transport->startReceive([impl](ByteSpan d) { impl->timed([&] { impl->core->receive(d); }); });
+        impl->transport->startReceive([impl](ByteSpan d) {
+            impl->timed([&] {
+                if (impl->tap)
+                    impl->tapDatagram(d);
+                impl->core->receive(d);
+            });
+        });
         impl->nextBeat = std::chrono::steady_clock::now() + std::chrono::milliseconds(impl->beatMs);
         impl->scheduleBeat();
     });
     return true;
+}
+
+void OsyrisStack::setMessageTap(MessageTap* tap) {
+    m_impl->tap = tap;
+    m_impl->tapLink = "osyris:" + m_cfg.group + ":" + std::to_string(m_cfg.port);
+    m_impl->tapCfg = m_cfg;
 }
 
 void OsyrisStack::stop() {

@@ -17,6 +17,10 @@
 #include <memory>
 #include <string>
 
+namespace ocu {
+class MessageTap;
+}
+
 namespace ocu::osyris {
 
 class OsyrisStack {
@@ -30,6 +34,9 @@ public:
     // with the reason in *error (also reported through onEvent, on the calling thread).
     bool start(std::string* error = nullptr);
     void stop();
+    // Issue 16: every message of another station that the codec accepts (and, when the tap wants them, every
+    // datagram as received) goes to `tap` on the io thread. Set before start(); the tap outlives the run.
+    void setMessageTap(MessageTap* tap);
     bool running() const;
 
     void sendText(std::string text);

@@ -8,6 +8,7 @@
 #include "models/recording/Recording.h"
 #include "models/recording/ReplayController.h"
 #include "widgets/EventLogWidget.h"
+#include "widgets/PassCountPanel.h"
 #include "widgets/ReplayTimeline.h"
 
 #include <QAction>
@@ -39,6 +40,12 @@ private slots:
         o.path = m_file;
         o.clock = [&clock] { return clock; };
         QVERIFY(rec.start(o).isEmpty());
+        // Pass counts (OSYRIS): one cell passed once at the start, a strip of 5 cells twice at +20 s, a
+        // second grid (finer, after a re-layout) at +40 s.
+        GridPassCountLayer grid(QPointF(0, 0), 1.0, 20, 20);
+        grid.setCount(3, 3, 1);
+        rec.watchPassCounts(&grid);
+        GridPassCountLayer finer(QPointF(-10, -10), 0.5, 40, 40);
         for (int step = 0; step <= 600; ++step) {
             clock = m_t0 + step * 100;
             for (int k = 0; k < 2; ++k) {
@@ -59,11 +66,67 @@ private slots:
                 ev.timeMs = clock;
                 rec.recordEvent(ev);
             }
+            if (step == 200) {
+                for (int col = 0; col < 5; ++col)
+                    grid.setCount(col, 7, 2);
+                rec.recordPassCountsNow();
+            }
+            if (step == 250)
+                rec.recordPassCountsNow(); // nothing changed: nothing recorded
+            if (step == 400) {
+                finer.fillRect(QRect(0, 0, 4, 4), 3);
+                rec.watchPassCounts(&finer);
+            }
             if (step == 400)
                 rec.recordCommand(
                     QStringLiteral(R"({"origin":"gui","action":"stop","target":"jaus:101","ok":true})"));
         }
         rec.stop();
+    }
+
+    // At T the map's overlay and the pass-count panel's histogram show the counts of T, seeking either way.
+    void passCountsFollowTheReplayTime() {
+        auto rec = Recording::open(m_file);
+        QVERIFY(rec);
+        QVERIFY(rec->hasPassCounts());
+        int rows = 0;
+        rec->passCounts(std::numeric_limits<qint64>::min(), rec->endMs(),
+                        [&](qint64, const PassCountChange&) { ++rows; });
+        QCOMPARE(rows, 3); // start, +20 s, the new grid; not the unchanged +25 s
+        FleetModel fleet;
+        ReplayController c(rec.get(), &fleet);
+        c.seek(rec->startMs());
+        MainWindow window;
+        populateReplayWindow(window, &c);
+        auto* panel = qobject_cast<PassCountPanel*>(window.panelWidget(Panel::PassCounts));
+        QVERIFY(panel);
+        auto histogram = [&] {
+            QTest::qWait(0);
+            return summarize(*c.passCounts(), panel->target()).histogram;
+        };
+        auto check = [&](qint64 t, qint64 ones, qint64 twos, qint64 threes) {
+            c.seek(t);
+            QVERIFY(c.passCounts());
+            const auto h = histogram();
+            QCOMPARE(h.value(1), ones);
+            QCOMPARE(h.value(2), twos);
+            QCOMPARE(h.value(3), threes);
+            // The panel shows the replayed layer's figures.
+            QTRY_COMPARE(panel->summary().coveredCells, ones + twos + threes);
+        };
+        check(m_t0 + 10'000, 1, 0, 0);
+        check(m_t0 + 30'000, 1, 5, 0);
+        QCOMPARE(c.passCounts()->count(4, 7), 2);
+        QCOMPARE(c.passCounts()->cellSize(), 1.0);
+        check(m_t0 + 50'000, 0, 0, 16);
+        QCOMPARE(c.passCounts()->cellSize(), 0.5);
+        check(m_t0 + 10'000, 1, 0, 0); // backwards
+        QCOMPARE(c.passCounts()->count(4, 7), 0);
+        // Playing forward (no seek) reaches the same counts.
+        for (qint64 t = m_t0 + 10'000; t <= m_t0 + 30'000; t += 500)
+            c.moveTo(t);
+        QCOMPARE(summarize(*c.passCounts(), panel->target()).histogram.value(2), qint64(5));
+        QTRY_COMPARE(panel->summary().coveredCells, qint64(6));
     }
 
     void windowDrivesTheReplay() {

@@ -3,11 +3,13 @@
 // the bounded queue drops and counts instead of growing, exports (JSON lines, CSV, slice), hostile blobs.
 #include "models/AlarmModel.h"
 #include "models/FleetBridge.h"
+#include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/recording/RecordCodec.h"
 #include "models/recording/Recorder.h"
 #include "models/recording/Recording.h"
 #include "models/recording/ReplayController.h"
+#include "protocols/common/MessageTap.h"
 
 #include <QBuffer>
 #include <QJsonDocument>
@@ -381,6 +383,161 @@ private slots:
         auto r = Recording::open(o.path);
         QVERIFY(r);
         QCOMPARE(r->statesAt(r->endMs()).size(), 10);
+    }
+
+    // Issue 16 §1: what the stacks hand to the tap is in the file - protocol, link, peer, type, receive time
+    // and the bytes - readable by time window, exported as JSON lines (ISO 23725 decoded), copied by a slice.
+    // record.raw off: raw frames are not kept; on: they are, flagged raw, undecodable ones included.
+    void tappedMessagesAreRecorded() {
+        for (const bool raw : {false, true}) {
+            Recorder rec;
+            RecorderOptions o;
+            o.path = m_dir.filePath(raw ? QStringLiteral("msgs-raw.sqlite") : QStringLiteral("msgs.sqlite"));
+            o.flushIntervalMs = 5;
+            o.raw = raw;
+            qint64 clock = 1'700'000'000'000;
+            o.clock = [&clock] { return clock; };
+            QVERIFY(rec.start(o).isEmpty());
+            MessageTap* tap = rec.messageTap();
+            QVERIFY(tap);
+            QCOMPARE(tap->wantsRaw(), raw);
+            const std::uint8_t jaus[] = {0x02, 0x44, 1, 2, 3, 4};
+            const std::string iso = R"({"Header":{"Protocol":"ISO23725"},"PositionV1":{"X":1}})";
+            const std::uint8_t osy[] = {9, 8, 7, 6, 5, 4, 3, 2, 1};
+            const std::uint8_t junk[] = {0xFF, 0x00, 0xEE};
+            clock += 100;
+            tap->onDecoded({"jaus", "jaus", "42.1.1", "4402", jaus});
+            clock += 1500; // a new chunk
+            tap->onDecoded({"iso23725", "ahs", "127.0.0.1:5000", "PositionV1", tapBytes(iso)});
+            clock += 10;
+            tap->onDecoded({"osyris", "osyris:239.1.1.1:7000", "3", "CmPos", osy});
+            if (tap->wantsRaw())
+                tap->onRaw({"jaus", "jaus", "127.0.0.1:9", {}, junk});
+            clock += 10;
+            tap->onDecoded({"osyris", "osyris:239.1.1.1:7000", "3", "CmPos", osy});
+            rec.flush();
+            QCOMPARE(rec.stats().messages, raw ? 5u : 4u);
+            rec.stop();
+            auto r = Recording::open(o.path);
+            QVERIFY(r);
+            const auto channels = r->messageChannels();
+            QVector<RecordedMessage> all;
+            r->messages(0, std::numeric_limits<qint64>::max(), [&](const RecordedMessage& m) {
+                all.push_back(m);
+                return true;
+            });
+            QCOMPARE(all.size(), raw ? 5 : 4);
+            const qint64 t0 = 1'700'000'000'000;
+            auto check = [&](int i, qint64 t, const char* protocol, const char* type, const QByteArray& bytes,
+                             bool isRaw) {
+                const MessageChannel c = channels.value(all[i].channel);
+                QCOMPARE(all[i].t, t);
+                QCOMPARE(c.protocol, QString::fromLatin1(protocol));
+                QCOMPARE(c.type, QString::fromLatin1(type));
+                QCOMPARE(all[i].bytes, bytes);
+                QCOMPARE(all[i].raw, isRaw);
+            };
+            auto bytesOf = [](const auto& a) {
+                return QByteArray(reinterpret_cast<const char*>(std::data(a)), qsizetype(std::size(a)));
+            };
+            check(0, t0 + 100, "jaus", "4402", bytesOf(jaus), false);
+            QCOMPARE(channels.value(all[0].channel).peer, QStringLiteral("42.1.1"));
+            check(1, t0 + 1600, "iso23725", "PositionV1", QByteArray::fromStdString(iso), false);
+            QCOMPARE(channels.value(all[1].channel).link, QStringLiteral("ahs"));
+            check(2, t0 + 1610, "osyris", "CmPos", bytesOf(osy), false);
+            int k = 3;
+            if (raw)
+                check(k++, t0 + 1610, "jaus", "", bytesOf(junk), true);
+            check(k, t0 + 1620, "osyris", "CmPos", bytesOf(osy), false);
+            QCOMPARE(all[2].channel, all[k].channel); // one channel per (protocol, link, peer, type)
+            // A window: only what was received in it.
+            int inWindow = 0;
+            r->messages(t0 + 1600, t0 + 1610, [&](const RecordedMessage&) { return ++inWindow, true; });
+            QCOMPARE(inWindow, raw ? 3 : 2);
+            // The export shows them, ISO 23725 decoded.
+            QBuffer buf;
+            buf.open(QIODevice::WriteOnly);
+            QVERIFY(r->exportJsonLines(&buf, t0, t0 + 5000));
+            bool sawIso = false;
+            int lines = 0;
+            for (const QByteArray& line : buf.data().split('\n')) {
+                const QJsonObject obj = QJsonDocument::fromJson(line).object();
+                if (obj.value(QStringLiteral("type")).toString() == QLatin1String("message") ||
+                    obj.value(QStringLiteral("type")).toString() == QLatin1String("raw"))
+                    ++lines;
+                if (obj.value(QStringLiteral("msg_type")).toString() == QLatin1String("PositionV1")) {
+                    sawIso = true;
+                    QCOMPARE(obj.value(QStringLiteral("t")).toDouble(), double(t0 + 1600));
+                    QCOMPARE(obj.value(QStringLiteral("json"))
+                                 .toObject()
+                                 .value(QStringLiteral("PositionV1"))
+                                 .toObject()
+                                 .value(QStringLiteral("X"))
+                                 .toInt(),
+                             1);
+                }
+            }
+            QVERIFY(sawIso);
+            QCOMPARE(lines, raw ? 5 : 4);
+            // A slice keeps the messages of its window.
+            const QString slice = o.path + QStringLiteral(".slice.sqlite");
+            QVERIFY(r->exportSlice(slice, t0 + 1000, t0 + 5000));
+            auto s = Recording::open(slice);
+            QVERIFY(s);
+            QVector<RecordedMessage> inSlice;
+            s->messages(t0 + 1000, t0 + 5000, [&](const RecordedMessage& m) {
+                inSlice.push_back(m);
+                return true;
+            });
+            for (const RecordedMessage& m : inSlice)
+                QCOMPARE(s->messageChannels().value(m.channel).type, channels.value(m.channel).type);
+            QCOMPARE(inSlice.size(), raw ? 4 : 3);
+        }
+    }
+
+    // Hostile message chunks end the walk, never read past the blob.
+    void malformedMessageChunk() {
+        QByteArray chunk;
+        appendMessage(chunk, 1, 5, false, "abcdef", 6);
+        appendMessage(chunk, 2, 7, true, "xyz", 3);
+        int n = 0;
+        QVERIFY(decodeMessageChunk(chunk, 1000, 0, 10000, [&](const RecordedMessage&) { return ++n, true; }));
+        QCOMPARE(n, 2);
+        for (int cut = 0; cut < chunk.size(); ++cut) {
+            n = 0;
+            decodeMessageChunk(chunk.left(cut), 1000, 0, 10000,
+                               [&](const RecordedMessage& m) { return ++n, m.bytes.size() <= 6; });
+            QVERIFY(n <= 1 || cut == chunk.size());
+        }
+        QByteArray huge;
+        appendMessage(huge, 1, 5, false, "ab", 2);
+        huge[3] = char(0x7F); // the length now claims more than the blob holds
+        QVERIFY(!decodeMessageChunk(huge, 0, 0, 10000, [](const RecordedMessage&) { return true; }));
+    }
+
+    // The writer behind: dropped records reach the operator as a warning with the count.
+    void dropsAreReportedToTheOperator() {
+        FleetContext ctx;
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_dir.filePath(QStringLiteral("dropreport.sqlite"));
+        o.queueCapacity = 5;
+        o.flushIntervalMs = 60000;
+        QVERIFY(rec.start(o).isEmpty());
+        QString warning;
+        connect(ctx.alarms(), &AlarmModel::eventAdded, this, [&](const FleetEvent& e) {
+            if (e.source == QLatin1String("recorder") && e.severity == EventSeverity::Warning)
+                warning = e.text;
+        });
+        rec.attach(&ctx);
+        QTest::qWait(50);
+        const std::uint8_t b[] = {1, 2};
+        for (int i = 0; i < 50; ++i)
+            rec.messageTap()->onDecoded({"jaus", "jaus", "1.1.1", "4402", b});
+        QVERIFY(rec.stats().dropped >= 40u);
+        QTRY_VERIFY_WITH_TIMEOUT(!warning.isEmpty(), 20000);
+        QVERIFY2(warning.contains(QStringLiteral("dropped")), qPrintable(warning));
+        rec.stop();
     }
 
     void refusesWhatIsNotARecording() {

@@ -17,6 +17,7 @@
 
 #include "protocols/common/GeoFrame.h"
 #include "protocols/common/Log.h"
+#include "protocols/common/MessageTap.h"
 #include "protocols/common/Udp.h"
 #include "protocols/jaus/JausStack.h"
 #include "protocols/jaus/Messages.h"
@@ -378,6 +379,58 @@ private slots:
         stack.stop();
         QVERIFY(waitFor([&] { return ugv.state().controller.subsystem == 0; }));
         ugv.stop();
+    }
+
+    // Issue 16: the flight recorder's tap sees every delivered message with its type (the message code) and
+    // sender, and, when it wants raw frames, every datagram as received - undecodable ones included.
+    void tapSeesDecodedMessagesAndRawDatagrams() {
+        struct CollectTap : MessageTap {
+            std::mutex m;
+            std::vector<std::tuple<std::string, std::string, Bytes>> decoded; // peer, type, bytes
+            std::vector<Bytes> raws;
+            void onDecoded(const TappedMessage& t) override {
+                QCOMPARE(t.protocol, std::string_view("jaus"));
+                std::lock_guard l(m);
+                decoded.emplace_back(std::string(t.peer), std::string(t.type),
+                                     Bytes(t.bytes.begin(), t.bytes.end()));
+            }
+            void onRaw(const TappedMessage& t) override {
+                std::lock_guard l(m);
+                raws.emplace_back(t.bytes.begin(), t.bytes.end());
+            }
+            bool wantsRaw() const override { return true; }
+        } tap;
+        JausDemo demo;
+        Recorder rec;
+        JausStack stack(ocuConfig(demo), rec);
+        stack.setMessageTap(&tap);
+        stack.start();
+        QVERIFY(waitFor([&] {
+            std::lock_guard l(tap.m);
+            return std::any_of(tap.decoded.begin(), tap.decoded.end(),
+                               [](const auto& d) { return std::get<0>(d).rfind("126.", 0) == 0; });
+        }));
+        boost::asio::io_context io;
+        boost::asio::ip::udp::socket s(
+            io, boost::asio::ip::udp::endpoint(boost::asio::ip::address_v4::loopback(), 0));
+        const Bytes junk{0xEE, 0x01, 0x02, 0x03, 0x04};
+        s.send_to(boost::asio::buffer(junk),
+                  boost::asio::ip::udp::endpoint(boost::asio::ip::address_v4::loopback(), stack.localPort()));
+        QVERIFY(waitFor([&] {
+            std::lock_guard l(tap.m);
+            return std::find(tap.raws.begin(), tap.raws.end(), junk) != tap.raws.end();
+        }));
+        stack.stop();
+        demo.stop();
+        std::lock_guard l(tap.m);
+        QVERIFY(tap.raws.size() >= tap.decoded.size() / 2); // datagrams may carry several messages
+        for (const auto& [peer, type, bytes] : tap.decoded) {
+            QVERIFY(bytes.size() >= 2);
+            QVERIFY(bytes != junk);
+            char hex[5];
+            std::snprintf(hex, sizeof hex, "%04X", unsigned(bytes[0] | bytes[1] << 8));
+            QCOMPARE(type, std::string(hex));
+        }
     }
 
     void garbageIsCountedNotFatal() {
