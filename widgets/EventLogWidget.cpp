@@ -1,6 +1,7 @@
 #include "widgets/EventLogWidget.h"
 
 #include "models/AlarmModel.h"
+#include "models/DisplayText.h"
 #include "widgets/ColumnFit.h"
 
 #include <QCheckBox>
@@ -90,7 +91,13 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     m_view->verticalHeader()->setDefaultSectionSize(20);
     m_view->horizontalHeader()->setStretchLastSection(false);
     m_view->horizontalHeader()->setSectionResizeMode(AlarmModel::ColText, QHeaderView::Stretch);
-    keepColumnsFitted(m_view); // issue 19 §6: headers and cells in view never elided
+    // Issue 19 §6: the message takes the remaining width; the other columns fit their content from their
+    // title up, the long ones capped (the tooltip shows the full text) so a 1366-px laptop keeps the message.
+    startColumnsAtHeaderWidth(m_view);
+    setColumnFitCap(m_view, AlarmModel::ColKind, 130);
+    setColumnFitCap(m_view, AlarmModel::ColMachine, 170);
+    setColumnFitCap(m_view, AlarmModel::ColAck, 130);
+    keepColumnsFitted(m_view);
 
     connect(m_search, &QLineEdit::textChanged, m_proxy, &AlarmFilterProxy::setText);
     connect(m_severity, &QComboBox::currentIndexChanged, this,
@@ -183,7 +190,7 @@ void EventLogWidget::showDetails() {
     lines << e.text;
     if (e.requiresAck) {
         lines << tr("Priority: %1 · raised %2 · %n time(s)", nullptr, m_alarms->occurrencesAt(row))
-                     .arg(toText(effectivePriority(e)), time(e.timeMs));
+                     .arg(DisplayText::priority(effectivePriority(e)), time(e.timeMs));
         if (m_alarms->isAcknowledged(row))
             lines << tr("Acknowledged by %1 at %2")
                          .arg(m_alarms->acknowledgedByAt(row), time(m_alarms->acknowledgedAtMs(row)));

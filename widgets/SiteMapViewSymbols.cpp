@@ -1,5 +1,6 @@
 // SiteMapView, issue 19: machine symbols, decluttered labels, edge indicators, the hover card, navigation
 // (zoom to fleet / selection / area) and the background raster. The rest of the view is in SiteMapView.cpp.
+#include "models/DisplayText.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "widgets/MapBackground.h"
@@ -440,20 +441,20 @@ void SiteMapView::drawHoverCard(QPainter& p, const QSize& size) {
     const StatusCategory status = m_fleet->statusAt(row);
     QStringList lines;
     lines << (m.type.isEmpty() ? tr("type unknown") : m.type) + QStringLiteral(" · ") + toText(m.protocol);
-    lines << tr("Status: %1").arg(toText(status));
+    lines << tr("Status: %1").arg(DisplayText::status(status));
     if (!m.modeText.isEmpty())
         lines << tr("Mode: %1").arg(m.modeText);
     lines << tr("Speed: %1 km/h · heading %2°").arg(m.speed * 3.6, 0, 'f', 1).arg(m.headingDeg, 0, 'f', 0);
     if (m.stop == StopState::Stopped)
         lines << tr("Stopped: %1").arg(m.stopText.isEmpty() ? tr("yes") : m.stopText);
     if (m.health != HealthLevel::Unknown)
-        lines << tr("Health: %1").arg(m.healthText.isEmpty() ? toText(m.health) : m.healthText);
+        lines << tr("Health: %1").arg(m.healthText.isEmpty() ? DisplayText::health(m.health) : m.healthText);
     if (m.control != ControlState::None)
-        lines << tr("Control: %1").arg(toText(m.control));
+        lines << tr("Control: %1").arg(DisplayText::control(m.control));
     if (!m.workText.isEmpty())
         lines << m.workText.left(80);
     const qint64 age = m_fleet->ageMsAt(row);
-    lines << tr("Link: %1 · data %2 s ago").arg(toText(m.link)).arg(age / 1000.0, 0, 'f', 1);
+    lines << tr("Link: %1 · data %2 s ago").arg(DisplayText::link(m.link)).arg(age / 1000.0, 0, 'f', 1);
     QFont bold = font();
     bold.setPointSizeF(9);
     bold.setBold(true);
