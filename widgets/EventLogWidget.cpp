@@ -47,7 +47,6 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     bar->addWidget(m_ack);
     bar->addWidget(m_ackAll);
     bar->addWidget(m_export);
-    bar->addWidget(m_unackLabel);
     // Alarm management row: shelving (ISA-18.2 §11.4, always with an expiry) and the alarm rate.
     m_shelveFor->addItem(tr("15 min"), 15);
     m_shelveFor->addItem(tr("1 h"), 60);
@@ -62,6 +61,9 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     bar2->addWidget(m_shelve);
     bar2->addWidget(m_unshelve);
     bar2->addStretch(1);
+    // The open-alarm count sits with the rate: on the first row it was cut off at 1366 px (issue 19 §6).
+    bar2->addWidget(m_unackLabel);
+    bar2->addSpacing(12);
     bar2->addWidget(m_rateLabel);
     m_details->setReadOnly(true);
     m_details->setPlaceholderText(

@@ -39,6 +39,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
                                        : tr("This console: %1 [%2] · MONITOR role: commands are disabled")
                                              .arg(me.callSign)
                                              .arg(me.subsystemId));
+    m_roleLabel->setWordWrap(true); // a narrow dock wraps it rather than cutting off "Release all"
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
     m_releaseAll->setEnabled(me.mayControl);

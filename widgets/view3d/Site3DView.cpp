@@ -122,6 +122,8 @@ public:
         int w = 0;
         for (const LegendEntry& e : m_entries)
             w = qMax(w, fm.horizontalAdvance(e.label));
+        // The title too ("Überfahrten" is wider than any entry): nothing cut off (issue 19 §6).
+        w = qMax(w, fm.horizontalAdvance(title()) - kSwatch - kGap);
         resize(w + 2 * kPad + kSwatch + kGap, static_cast<int>(m_entries.size()) * kRow + 2 * kPad + kRow);
         setVisible(!m_entries.empty());
         place();
@@ -141,9 +143,7 @@ protected:
         p.setBrush(QColor(255, 255, 255, 215));
         p.drawRoundedRect(rect().adjusted(0, 0, -1, -1), 4, 4);
         p.setPen(Qt::black);
-        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter,
-                   QCoreApplication::translate("ocu::LegendOverlay",
-                                               "Passes")); // no Q_OBJECT: tr() would use "QWidget"
+        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter, title());
         int y = kPad + kRow;
         for (const LegendEntry& e : m_entries) {
             p.fillRect(QRect(kPad, y + 3, kSwatch, kRow - 6), QColor(e.colour.r, e.colour.g, e.colour.b));
@@ -153,6 +153,10 @@ protected:
     }
 
 private:
+    static QString title() {
+        return QCoreApplication::translate("ocu::LegendOverlay",
+                                           "Passes"); // no Q_OBJECT: tr() would use "QWidget"
+    }
     void place() {
         if (parentWidget() != nullptr)
             move(parentWidget()->width() - width() - 8, 8);
