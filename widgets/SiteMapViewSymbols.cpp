@@ -8,6 +8,7 @@
 
 #include <QApplication>
 #include <QDateTime>
+#include <QEvent>
 #include <QPainter>
 #include <QPainterPath>
 #include <QPointer>
@@ -177,7 +178,8 @@ void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
 
 QImage SiteMapView::labelImage(const QString& text, MapLabelLayout::Kind kind, const QColor& colour,
                                qreal dpr) {
-    const QString key = QString::number(int(kind)) + colour.name() + QString::number(dpr) + text;
+    const QString key = QString::number(int(kind)) + colour.name() + QString::number(dpr) +
+                        (m_night ? QLatin1Char('n') : QLatin1Char('d')) + text;
     auto it = m_labelImages.constFind(key);
     if (it != m_labelImages.constEnd())
         return *it;
@@ -199,20 +201,24 @@ QImage SiteMapView::labelImage(const QString& text, MapLabelLayout::Kind kind, c
     ip.setFont(font);
     const QPointF base(pad, pad - 1 + fm.ascent());
     if (kind == MapLabelLayout::Kind::Machine) {
-        ip.setPen(QPen(QColor(0x60, 0x60, 0x60), 1));
-        ip.setBrush(QColor(255, 255, 255, 225));
+        ip.setPen(QPen(m_night ? QColor(0x90, 0x90, 0x90) : QColor(0x60, 0x60, 0x60), 1));
+        ip.setBrush(m_night ? QColor(30, 30, 34, 230) : QColor(255, 255, 255, 225));
         ip.drawRoundedRect(QRectF(QPointF(0.5, 0.5), sz - QSizeF(1, 1)), 3, 3);
-        ip.setPen(QColor(0x10, 0x10, 0x10));
+        ip.setPen(m_night ? QColor(0xe6, 0xe6, 0xe0) : QColor(0x10, 0x10, 0x10));
         ip.drawText(base, text);
     } else {
         // A white halo keeps road and area names readable over roads and the background raster.
         QPainterPath path;
         path.addText(base, font, text);
-        ip.setPen(QPen(QColor(255, 255, 255, 230), 3, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        // At night: a dark halo and the colour lifted to a light tone of the same hue (contrast >= 4.5:1).
+        ip.setPen(QPen(m_night ? QColor(20, 20, 22, 230) : QColor(255, 255, 255, 230), 3, Qt::SolidLine,
+                       Qt::RoundCap, Qt::RoundJoin));
         ip.setBrush(Qt::NoBrush);
         ip.drawPath(path);
         ip.setPen(Qt::NoPen);
-        ip.setBrush(colour);
+        ip.setBrush(m_night ? QColor::fromHsl(colour.hslHue() < 0 ? 0 : colour.hslHue(),
+                                              std::min(colour.hslSaturation(), 120), 200)
+                            : colour);
         ip.drawPath(path);
     }
     ip.end();
@@ -616,6 +622,30 @@ void SiteMapView::drawBackgroundRaster(QPainter& p, const QSize& size) {
     if (!m_background || !m_backgroundVisible)
         return;
     m_background->draw(p, m_center, m_scale, QSizeF(size));
+}
+
+// ---- night palette (issue 19 §6) ----
+
+void SiteMapView::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::PaletteChange) {
+        const bool night = palette().color(QPalette::Window).lightness() < 110;
+        if (night != m_night) {
+            m_night = night;
+            m_labelImages.clear();
+            invalidateStatic();
+            update();
+        }
+    }
+    QWidget::changeEvent(e);
+}
+
+void SiteMapView::dimStaticForNight(QPainter& p, const QSize& size) {
+    // Multiplying keeps every hue of the plan, the background raster and the pass-count layer apart while
+    // taking the light site-plan ground (#f4f1ea) down to about #5c5a58.
+    p.save();
+    p.setCompositionMode(QPainter::CompositionMode_Multiply);
+    p.fillRect(QRect(QPoint(0, 0), size), QColor(0x60, 0x60, 0x64));
+    p.restore();
 }
 
 } // namespace ocu
