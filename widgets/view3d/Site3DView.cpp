@@ -32,8 +32,9 @@ class ImageView : public QWidget {
 public:
     std::function<QImage(QSize)> render;
     std::function<void(QPointF)> clicked;
-    std::function<void(QPointF)> dragged; // left-button drag, device pixels since the last move
-    std::function<void(double)> wheeled;  // wheel steps (+ = away from the user = zoom in)
+    std::function<void(QPointF)> doubleClicked; // issue 19 §2: double-click selects (and follows)
+    std::function<void(QPointF)> dragged;       // left-button drag, device pixels since the last move
+    std::function<void(double)> wheeled;        // wheel steps (+ = away from the user = zoom in)
     QString message;
 
     explicit ImageView(QWidget* parent) : QWidget(parent) {
@@ -77,6 +78,10 @@ protected:
         if (wheeled && e->angleDelta().y() != 0)
             wheeled(e->angleDelta().y() / 120.0);
         e->accept();
+    }
+    void mouseDoubleClickEvent(QMouseEvent* e) override {
+        if (e->button() == Qt::LeftButton && doubleClicked)
+            doubleClicked(e->position() * devicePixelRatioF());
     }
     void mouseReleaseEvent(QMouseEvent* e) override {
         if (e->button() == Qt::LeftButton && (e->position() - m_press).manhattanLength() <= 4 && clicked) {
@@ -229,6 +234,7 @@ Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Im
                 emit machinePicked(id);
             }
         };
+        d->image->doubleClicked = [this](QPointF px) { activateMachine(d->scene.pick(px.x(), px.y())); };
         // Same feel as the GL widget's trackball: a quarter degree per pixel, 10 % per wheel step.
         d->image->dragged = [this](QPointF delta) {
             d->scene.orbit(-delta.x() * 0.25, delta.y() * 0.25);
@@ -269,6 +275,7 @@ QWidget* Site3DView::ensureCanvas() const {
             self->setSelectedMachine(id);
             emit self->machinePicked(id);
         });
+        connect(d->gl, &VtkOpenGLWidget::machineDoubleClicked, self, &Site3DView::activateMachine);
         d->gl->setObjectName(QStringLiteral("view3dCanvas"));
         d->layout->replaceWidget(d->placeholder, d->gl);
         d->placeholder->deleteLater();
@@ -434,6 +441,17 @@ QSize Site3DView::viewPixelSize() const {
 
 QWidget* Site3DView::viewWidget() const {
     return ensureCanvas();
+}
+
+void Site3DView::activateMachine(const QString& id) {
+    // Issue 19 §2 "double-click selects in every view": as on the 2D map (select and centre), the machine
+    // becomes the selection and the camera follows it.
+    if (id.isEmpty())
+        return;
+    setSelectedMachine(id);
+    emit machinePicked(id);
+    setCameraMode(CameraMode::FollowSelected);
+    emit machineActivated(id);
 }
 
 } // namespace ocu
