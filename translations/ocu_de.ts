@@ -113,6 +113,10 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <source>Stop every machine of every protocol (F12)</source>
         <translation>Alle Maschinen aller Protokolle stoppen (F12)</translation>
     </message>
+    <message>
+        <source>Production</source>
+        <translation>Produktion</translation>
+    </message>
 </context>
 <context>
     <name>Screenshot</name>

@@ -113,6 +113,10 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>Stop every machine of every protocol (F12)</source>
         <translation>Arrêter toutes les machines de tous les protocoles (F12)</translation>
     </message>
+    <message>
+        <source>Production</source>
+        <translation>Production</translation>
+    </message>
 </context>
 <context>
     <name>Screenshot</name>

@@ -123,6 +123,7 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_view->verticalHeader()->hide();
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_view->setTabKeyNavigation(false); // arrows move in the table, Tab leaves it (docs/keyboard.md)
     setDensity(Density::Dense);
     keepColumnsFitted(m_view); // issue 19 §6: headers and cells in view never elided
 
