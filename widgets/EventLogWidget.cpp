@@ -98,7 +98,7 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     // title up, the long ones capped (the tooltip shows the full text) so a 1366-px laptop keeps the message.
     startColumnsAtHeaderWidth(m_view);
     setColumnFitCap(m_view, AlarmModel::ColKind, 130);
-    setColumnFitCap(m_view, AlarmModel::ColMachine, 170);
+    setColumnFitCap(m_view, AlarmModel::ColMachine, 120);
     setColumnFitCap(m_view, AlarmModel::ColAck, 130);
     keepColumnsFitted(m_view);
 
