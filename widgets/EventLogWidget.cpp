@@ -46,7 +46,6 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     bar->addWidget(m_unackOnly);
     bar->addWidget(m_ack);
     bar->addWidget(m_ackAll);
-    bar->addWidget(m_export);
     // Alarm management row: shelving (ISA-18.2 §11.4, always with an expiry) and the alarm rate.
     m_shelveFor->addItem(tr("15 min"), 15);
     m_shelveFor->addItem(tr("1 h"), 60);
@@ -60,6 +59,7 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     bar2->addWidget(m_shelveFor);
     bar2->addWidget(m_shelve);
     bar2->addWidget(m_unshelve);
+    bar2->addWidget(m_export); // on the first row it was cut off in an 800-px dock (1366 x 768)
     bar2->addStretch(1);
     // The open-alarm count sits with the rate: on the first row it was cut off at 1366 px (issue 19 §6).
     bar2->addWidget(m_unackLabel);

@@ -74,6 +74,9 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&log));
         auto* view = log.findChild<QTableView*>();
         QVERIFY(view);
+        // The button rows fit an 800-px dock (a wider minimum and the dock cuts off the last buttons).
+        QVERIFY2(log.minimumSizeHint().width() <= 800,
+                 qPrintable(QString::number(log.minimumSizeHint().width())));
         QHeaderView* h = view->horizontalHeader();
         QTRY_VERIFY(h->sectionSize(AlarmModel::ColMachine) > h->sectionSize(AlarmModel::ColAck) ||
                     h->sectionSize(AlarmModel::ColMachine) >= 160); // fitted once shown
