@@ -118,6 +118,10 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     QCommandLineOption to(QStringLiteral("to"), tr("End of the export window (as --at)."),
                           QStringLiteral("T"));
     p.addOptions({record, noRecord, replay, at, speed, exJsonl, exCsv, exSlice, from, to});
+    // Issue 19 §6: the night palette from the start (screenshots of it; the View menu toggles it too).
+    QCommandLineOption night(QStringLiteral("night"),
+                             QCoreApplication::translate("CommandLine", "Start with the night palette."));
+    p.addOption(night);
 
     if (!p.parse(args)) {
         error = p.errorText();
@@ -191,6 +195,7 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
         return false;
     }
     o.resetLayout = p.isSet(reset);
+    o.night = p.isSet(night);
     o.shiftReportPdf = p.value(shiftPdf);
     o.shiftReportCsv = p.value(shiftCsv);
     if ((!o.shiftReportPdf.isEmpty() || !o.shiftReportCsv.isEmpty()) && !o.headless) {

@@ -18,6 +18,7 @@ struct CommandLineOptions {
     bool headless = false;      // JSON-lines monitor on stdout, commands on stdin, no window
     double durationSeconds = 0; // headless: stop after this long (0 = until stdin closes or SIGINT)
     bool resetLayout = false;
+    bool night = false; // --night: start with the night palette
     // Issue 15 §4: with --headless, the shift report written when the run ends (PDF and/or CSV).
     QString shiftReportPdf;
     QString shiftReportCsv;

@@ -191,6 +191,8 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
     } else {
         window.show();
     }
+    if (options.night)
+        window.setNightMode(true);
 
     int exitCode = 0;
     if (screenshot) {

@@ -1,5 +1,7 @@
 #include "models/AlarmModel.h"
 
+#include "models/DisplayText.h"
+
 #include "models/FleetBridge.h"
 #include "models/FleetModel.h"
 
@@ -144,9 +146,9 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
             return QDateTime::fromMSecsSinceEpoch(e.timeMs, Qt::UTC)
                 .toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
         case ColSeverity:
-            return toText(e.severity).toUpper();
+            return DisplayText::severity(e.severity).toUpper(); // toText(): the stable key
         case ColKind:
-            return toText(e.kind);
+            return DisplayText::kind(e.kind);
         case ColMachine:
             return e.machineId;
         case ColText:
@@ -160,7 +162,7 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
                              .toString(QStringLiteral("HH:mm")));
             return r.acked ? tr("yes") : tr("NO");
         case ColPriority:
-            return e.requiresAck ? toText(effectivePriority(e)) : QString();
+            return e.requiresAck ? DisplayText::priority(effectivePriority(e)) : QString();
         case ColCount:
             // Grouped items and repeats: "1,000" machines, "×3" raised three times while active.
             return (e.itemCount > 1 ? QLocale().toString(e.itemCount) : QString()) +
@@ -172,6 +174,13 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
         if (index.column() == ColText && !e.details.isEmpty())
             return e.details.mid(0, 20).join(QLatin1Char('\n')) +
                    (e.details.size() > 20 ? tr("\n… and %1 more").arg(e.details.size() - 20) : QString());
+        // The full text of the columns that may be narrower than their content (issue 19 §6).
+        if (index.column() == ColText)
+            return e.text;
+        if (index.column() == ColMachine)
+            return e.machineId;
+        if (index.column() == ColKind)
+            return QStringLiteral("%1 (%2)").arg(DisplayText::kind(e.kind), toText(e.kind));
         return {};
     case Qt::DecorationRole:
         return index.column() == ColSeverity ? QVariant(severityColor(e.severity)) : QVariant();
@@ -494,6 +503,7 @@ bool AlarmFilterProxy::filterAcceptsRow(int sourceRow, const QModelIndex& source
     return e.text.contains(m_text, Qt::CaseInsensitive) ||
            e.machineId.contains(m_text, Qt::CaseInsensitive) ||
            toText(e.kind).contains(m_text, Qt::CaseInsensitive) ||
+           DisplayText::kind(e.kind).contains(m_text, Qt::CaseInsensitive) ||
            e.source.contains(m_text, Qt::CaseInsensitive) ||
            e.details.filter(m_text, Qt::CaseInsensitive).size() > 0;
 }

@@ -1,5 +1,6 @@
 #include "models/FleetModel.h"
 
+#include "models/DisplayText.h"
 #include "models/FleetBridge.h"
 
 #include <QDateTime>
@@ -157,7 +158,7 @@ QVariant FleetModel::display(const Row& r, int column) const {
         // Displayed in km/h (anchors-features.md §8.2), stored in m/s.
         return QString::number(m.speed * 3.6, 'f', 1) + QStringLiteral(" km/h");
     case ColMode:
-        return m.modeText.isEmpty() ? toText(m.mode) : m.modeText;
+        return m.modeText.isEmpty() ? DisplayText::mode(m.mode) : m.modeText;
     case ColStop:
         if (m.stop == StopState::Stopped)
             return m.stopText.isEmpty() ? tr("STOPPED") : m.stopText.toUpper();
@@ -165,11 +166,13 @@ QVariant FleetModel::display(const Row& r, int column) const {
     case ColController:
         if (m.control == ControlState::ControlledByMe)
             return tr("this OCU");
-        return m.controller.isEmpty() ? (m.control == ControlState::None ? QString() : toText(m.control))
-                                      : m.controller;
+        return m.controller.isEmpty()
+                   ? (m.control == ControlState::None ? QString() : DisplayText::control(m.control))
+                   : m.controller;
     case ColHealth:
-        return m.healthText.isEmpty() ? toText(m.health)
-                                      : QStringLiteral("%1: %2").arg(toText(m.health), m.healthText);
+        return m.healthText.isEmpty()
+                   ? DisplayText::health(m.health)
+                   : QStringLiteral("%1: %2").arg(DisplayText::health(m.health), m.healthText);
     case ColLastMessage:
         return m.lastMessageMs > 0 ? QDateTime::fromMSecsSinceEpoch(m.lastMessageMs, Qt::UTC)
                                          .toString(QStringLiteral("HH:mm:ss.zzz"))
@@ -225,7 +228,7 @@ QVariant FleetModel::data(const QModelIndex& index, int role) const {
     case Qt::DisplayRole:
         return display(r, index.column());
     case Qt::ToolTipRole:
-        return QStringLiteral("%1 — %2").arg(r.state.id, toText(statusOf(r.state, r.stale)));
+        return QStringLiteral("%1 — %2").arg(r.state.id, DisplayText::status(statusOf(r.state, r.stale)));
     case Qt::DecorationRole:
         if (index.column() == ColName)
             return statusColor(statusOf(r.state, r.stale));

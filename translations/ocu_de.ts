@@ -113,6 +113,10 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <source>Stop every machine of every protocol (F12)</source>
         <translation>Alle Maschinen aller Protokolle stoppen (F12)</translation>
     </message>
+    <message>
+        <source>Production</source>
+        <translation>Produktion</translation>
+    </message>
 </context>
 <context>
     <name>Screenshot</name>
@@ -189,6 +193,24 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     <message>
         <source>NO</source>
         <translation>NEIN</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Priorität</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>shelved until %1</source>
+        <translation>zurückgestellt bis %1</translation>
+    </message>
+    <message>
+        <source>
+… and %1 more</source>
+        <translation>
+… und %1 weitere</translation>
     </message>
 </context>
 <context>
@@ -337,6 +359,77 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     <message>
         <source>no open alarms</source>
         <translation>keine offenen Alarme</translation>
+    </message>
+    <message>
+        <source>Shelved</source>
+        <translation>Zurückgestellte</translation>
+    </message>
+    <message>
+        <source>Shelve</source>
+        <translation>Zurückstellen</translation>
+    </message>
+    <message>
+        <source>Unshelve</source>
+        <translation>Zurückholen</translation>
+    </message>
+    <message>
+        <source>15 min</source>
+        <translation>15 min</translation>
+    </message>
+    <message>
+        <source>1 h</source>
+        <translation>1 h</translation>
+    </message>
+    <message>
+        <source>8 h (shift)</source>
+        <translation>8 h (Schicht)</translation>
+    </message>
+    <message>
+        <source>Shelve the selected alarms: hidden and not annunciated until the time runs out</source>
+        <translation>Gewählte Alarme zurückstellen: ausgeblendet und nicht gemeldet, bis die Zeit abläuft</translation>
+    </message>
+    <message>
+        <source>Show shelved alarms too</source>
+        <translation>Auch zurückgestellte Alarme zeigen</translation>
+    </message>
+    <message>
+        <source>New alarms in the last 10 minutes (EEMUA 191: more than 10 is a flood)</source>
+        <translation>Neue Alarme in den letzten 10 Minuten (EEMUA 191: mehr als 10 ist eine Alarmflut)</translation>
+    </message>
+    <message>
+        <source>Select an alarm to see its details: the grouped machines, who acknowledged or shelved it, and when.</source>
+        <translation>Einen Alarm wählen, um die Einzelheiten zu sehen: die zusammengefassten Maschinen, wer ihn quittiert oder zurückgestellt hat und wann.</translation>
+    </message>
+    <message>
+        <source>&lt;b style=&apos;color:#d01010&apos;&gt;ALARM FLOOD: %1 alarms / 10 min&lt;/b&gt;</source>
+        <translation>&lt;b style=&apos;color:#d01010&apos;&gt;ALARMFLUT: %1 Alarme / 10 min&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>%1 alarms / 10 min</source>
+        <translation>%1 Alarme / 10 min</translation>
+    </message>
+    <message numerus="yes">
+        <source>Priority: %1 · raised %2 · %n time(s)</source>
+        <translation>
+            <numerusform>Priorität: %1 · ausgelöst %2 · %n Mal</numerusform>
+            <numerusform>Priorität: %1 · ausgelöst %2 · %n Mal</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Acknowledged by %1 at %2</source>
+        <translation>Quittiert von %1 um %2</translation>
+    </message>
+    <message>
+        <source>Shelved by %1 until %2</source>
+        <translation>Zurückgestellt von %1 bis %2</translation>
+    </message>
+    <message>
+        <source>Key: %1</source>
+        <translation>Schlüssel: %1</translation>
+    </message>
+    <message>
+        <source>%1 items:</source>
+        <translation>%1 Einträge:</translation>
     </message>
 </context>
 <context>
@@ -1425,6 +1518,42 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <source>Passes · target %1–%2</source>
         <translation>Überfahrten · Soll %1–%2</translation>
     </message>
+    <message>
+        <source>type unknown</source>
+        <translation>Typ unbekannt</translation>
+    </message>
+    <message>
+        <source>Status: %1</source>
+        <translation>Status: %1</translation>
+    </message>
+    <message>
+        <source>Mode: %1</source>
+        <translation>Modus: %1</translation>
+    </message>
+    <message>
+        <source>Speed: %1 km/h · heading %2°</source>
+        <translation>Geschw.: %1 km/h · Kurs %2°</translation>
+    </message>
+    <message>
+        <source>Stopped: %1</source>
+        <translation>Gestoppt: %1</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>Health: %1</source>
+        <translation>Zustand: %1</translation>
+    </message>
+    <message>
+        <source>Control: %1</source>
+        <translation>Steuerung: %1</translation>
+    </message>
+    <message>
+        <source>Link: %1 · data %2 s ago</source>
+        <translation>Verbindung: %1 · Daten vor %2 s</translation>
+    </message>
 </context>
 <context>
     <name>ocu::SiteRuntime</name>
@@ -1847,6 +1976,169 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>This recording holds no pass counts (no OSYRIS station).</source>
         <translation>Diese Aufzeichnung enthält keine Überfahrtszahlen (keine OSYRIS-Station).</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DisplayText</name>
+    <message>
+        <source>Info</source>
+        <translation>Info</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Critical</source>
+        <translation>Kritisch</translation>
+    </message>
+    <message>
+        <source>link loss</source>
+        <translation>Verbindungsverlust</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <source>health fault</source>
+        <translation>Zustandsfehler</translation>
+    </message>
+    <message>
+        <source>diagnostic</source>
+        <translation>Diagnose</translation>
+    </message>
+    <message>
+        <source>discrepancy</source>
+        <translation>Abweichung</translation>
+    </message>
+    <message>
+        <source>control lost</source>
+        <translation>Steuerung verloren</translation>
+    </message>
+    <message>
+        <source>text message</source>
+        <translation>Textmeldung</translation>
+    </message>
+    <message>
+        <source>operator action</source>
+        <translation>Bedienhandlung</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>Info</translation>
+    </message>
+    <message>
+        <source>low</source>
+        <translation>niedrig</translation>
+    </message>
+    <message>
+        <source>medium</source>
+        <translation>mittel</translation>
+    </message>
+    <message>
+        <source>high</source>
+        <translation>hoch</translation>
+    </message>
+    <message>
+        <source>urgent</source>
+        <translation>dringend</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <source>degraded</source>
+        <translation>beeinträchtigt</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>ausgefallen</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>in Betrieb</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>manual</source>
+        <translation>manuell</translation>
+    </message>
+    <message>
+        <source>autonomous</source>
+        <translation>autonom</translation>
+    </message>
+    <message>
+        <source>remote</source>
+        <translation>ferngesteuert</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>im Leerlauf</translation>
+    </message>
+    <message>
+        <source>transition</source>
+        <translation>Übergang</translation>
+    </message>
+    <message>
+        <source>shutdown</source>
+        <translation>abgeschaltet</translation>
+    </message>
+    <message>
+        <source>monitoring</source>
+        <translation>beobachtend</translation>
+    </message>
+    <message>
+        <source>this console</source>
+        <translation>diese Konsole</translation>
+    </message>
+    <message>
+        <source>another console</source>
+        <translation>andere Konsole</translation>
+    </message>
+    <message>
+        <source>denied</source>
+        <translation>abgelehnt</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>fault or stopped</source>
+        <translation>Fehler oder gestoppt</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>veraltet</translation>
     </message>
 </context>
 </TS>

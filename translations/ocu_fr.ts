@@ -113,6 +113,10 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>Stop every machine of every protocol (F12)</source>
         <translation>Arrêter toutes les machines de tous les protocoles (F12)</translation>
     </message>
+    <message>
+        <source>Production</source>
+        <translation>Production</translation>
+    </message>
 </context>
 <context>
     <name>Screenshot</name>
@@ -190,6 +194,24 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>NO</source>
         <translation>NON</translation>
     </message>
+    <message>
+        <source>Priority</source>
+        <translation>Priorité</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>shelved until %1</source>
+        <translation>mise en attente jusqu&apos;à %1</translation>
+    </message>
+    <message>
+        <source>
+… and %1 more</source>
+        <translation>
+… et %1 de plus</translation>
+    </message>
 </context>
 <context>
     <name>ocu::AxisDisplay</name>
@@ -255,6 +277,77 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>no open alarms</source>
         <translation>aucune alarme ouverte</translation>
+    </message>
+    <message>
+        <source>Shelved</source>
+        <translation>En attente</translation>
+    </message>
+    <message>
+        <source>Shelve</source>
+        <translation>Mettre en attente</translation>
+    </message>
+    <message>
+        <source>Unshelve</source>
+        <translation>Reprendre</translation>
+    </message>
+    <message>
+        <source>15 min</source>
+        <translation>15 min</translation>
+    </message>
+    <message>
+        <source>1 h</source>
+        <translation>1 h</translation>
+    </message>
+    <message>
+        <source>8 h (shift)</source>
+        <translation>8 h (poste)</translation>
+    </message>
+    <message>
+        <source>Shelve the selected alarms: hidden and not annunciated until the time runs out</source>
+        <translation>Mettre en attente les alarmes choisies : masquées et non annoncées jusqu&apos;à l&apos;échéance</translation>
+    </message>
+    <message>
+        <source>Show shelved alarms too</source>
+        <translation>Afficher aussi les alarmes en attente</translation>
+    </message>
+    <message>
+        <source>New alarms in the last 10 minutes (EEMUA 191: more than 10 is a flood)</source>
+        <translation>Nouvelles alarmes des 10 dernières minutes (EEMUA 191 : plus de 10 est une avalanche)</translation>
+    </message>
+    <message>
+        <source>Select an alarm to see its details: the grouped machines, who acknowledged or shelved it, and when.</source>
+        <translation>Choisir une alarme pour voir ses détails : les machines regroupées, qui l&apos;a acquittée ou mise en attente, et quand.</translation>
+    </message>
+    <message>
+        <source>&lt;b style=&apos;color:#d01010&apos;&gt;ALARM FLOOD: %1 alarms / 10 min&lt;/b&gt;</source>
+        <translation>&lt;b style=&apos;color:#d01010&apos;&gt;AVALANCHE D&apos;ALARMES : %1 alarmes / 10 min&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>%1 alarms / 10 min</source>
+        <translation>%1 alarmes / 10 min</translation>
+    </message>
+    <message numerus="yes">
+        <source>Priority: %1 · raised %2 · %n time(s)</source>
+        <translation>
+            <numerusform>Priorité : %1 · levée %2 · %n fois</numerusform>
+            <numerusform>Priorité : %1 · levée %2 · %n fois</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Acknowledged by %1 at %2</source>
+        <translation>Acquittée par %1 à %2</translation>
+    </message>
+    <message>
+        <source>Shelved by %1 until %2</source>
+        <translation>Mise en attente par %1 jusqu&apos;à %2</translation>
+    </message>
+    <message>
+        <source>Key: %1</source>
+        <translation>Clé : %1</translation>
+    </message>
+    <message>
+        <source>%1 items:</source>
+        <translation>%1 éléments :</translation>
     </message>
 </context>
 <context>
@@ -453,6 +546,18 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>this OCU</source>
         <translation>cette console</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>active</translation>
+    </message>
+    <message>
+        <source>degraded</source>
+        <translation>dégradée</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>coupée</translation>
     </message>
 </context>
 <context>
@@ -1307,6 +1412,42 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
         <source>Passes · target %1–%2</source>
         <translation>Passes · cible %1–%2</translation>
     </message>
+    <message>
+        <source>type unknown</source>
+        <translation>type inconnu</translation>
+    </message>
+    <message>
+        <source>Status: %1</source>
+        <translation>État : %1</translation>
+    </message>
+    <message>
+        <source>Mode: %1</source>
+        <translation>Mode : %1</translation>
+    </message>
+    <message>
+        <source>Speed: %1 km/h · heading %2°</source>
+        <translation>Vitesse : %1 km/h · cap %2°</translation>
+    </message>
+    <message>
+        <source>Stopped: %1</source>
+        <translation>Arrêté : %1</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>oui</translation>
+    </message>
+    <message>
+        <source>Health: %1</source>
+        <translation>Santé : %1</translation>
+    </message>
+    <message>
+        <source>Control: %1</source>
+        <translation>Contrôle : %1</translation>
+    </message>
+    <message>
+        <source>Link: %1 · data %2 s ago</source>
+        <translation>Liaison : %1 · données il y a %2 s</translation>
+    </message>
 </context>
 <context>
     <name>ocu::SiteRuntime</name>
@@ -1708,6 +1849,169 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
     <message>
         <source>fwd</source>
         <translation>av.</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DisplayText</name>
+    <message>
+        <source>Info</source>
+        <translation>Info</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Avertissement</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <source>Critical</source>
+        <translation>Critique</translation>
+    </message>
+    <message>
+        <source>link loss</source>
+        <translation>perte de liaison</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>délai dépassé</translation>
+    </message>
+    <message>
+        <source>health fault</source>
+        <translation>défaut de santé</translation>
+    </message>
+    <message>
+        <source>diagnostic</source>
+        <translation>diagnostic</translation>
+    </message>
+    <message>
+        <source>discrepancy</source>
+        <translation>écart</translation>
+    </message>
+    <message>
+        <source>control lost</source>
+        <translation>contrôle perdu</translation>
+    </message>
+    <message>
+        <source>text message</source>
+        <translation>message texte</translation>
+    </message>
+    <message>
+        <source>operator action</source>
+        <translation>action opérateur</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>info</translation>
+    </message>
+    <message>
+        <source>low</source>
+        <translation>basse</translation>
+    </message>
+    <message>
+        <source>medium</source>
+        <translation>moyenne</translation>
+    </message>
+    <message>
+        <source>high</source>
+        <translation>haute</translation>
+    </message>
+    <message>
+        <source>urgent</source>
+        <translation>urgente</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>active</translation>
+    </message>
+    <message>
+        <source>degraded</source>
+        <translation>dégradée</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>coupée</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>inconnu</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>en marche</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>arrêté</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>avertissement</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>défaut</translation>
+    </message>
+    <message>
+        <source>manual</source>
+        <translation>manuel</translation>
+    </message>
+    <message>
+        <source>autonomous</source>
+        <translation>autonome</translation>
+    </message>
+    <message>
+        <source>remote</source>
+        <translation>télécommandé</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>au repos</translation>
+    </message>
+    <message>
+        <source>transition</source>
+        <translation>transition</translation>
+    </message>
+    <message>
+        <source>shutdown</source>
+        <translation>éteint</translation>
+    </message>
+    <message>
+        <source>monitoring</source>
+        <translation>surveillance</translation>
+    </message>
+    <message>
+        <source>this console</source>
+        <translation>cette console</translation>
+    </message>
+    <message>
+        <source>another console</source>
+        <translation>autre console</translation>
+    </message>
+    <message>
+        <source>denied</source>
+        <translation>refusé</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucun</translation>
+    </message>
+    <message>
+        <source>fault or stopped</source>
+        <translation>défaut ou arrêté</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>périmé</translation>
     </message>
 </context>
 </TS>

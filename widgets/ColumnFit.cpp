@@ -6,6 +6,7 @@
 #include <QStyleOptionHeader>
 #include <QTableView>
 #include <QTimer>
+#include <QVariantMap>
 
 namespace ocu {
 
@@ -26,20 +27,46 @@ int headerTextWidth(const QHeaderView* header, int section) {
     return size.width();
 }
 
+static const char* const kCapsProperty = "ocuColumnFitCaps";
+
+static bool isFitted(const QHeaderView* header, int c, int columns) {
+    return !header->isSectionHidden(c) && header->sectionResizeMode(c) != QHeaderView::Stretch &&
+           !(header->stretchLastSection() && c == columns - 1);
+}
+
+void setColumnFitCap(QTableView* view, int column, int maxPx) {
+    QVariantMap caps = view->property(kCapsProperty).toMap();
+    caps.insert(QString::number(column), maxPx);
+    view->setProperty(kCapsProperty, caps);
+}
+
+void startColumnsAtHeaderWidth(QTableView* view) {
+    if (view == nullptr || view->model() == nullptr)
+        return;
+    QHeaderView* header = view->horizontalHeader();
+    const int columns = view->model()->columnCount();
+    for (int c = 0; c < columns; ++c)
+        if (isFitted(header, c, columns))
+            header->resizeSection(c, qMax(header->minimumSectionSize(), headerTextWidth(header, c)));
+}
+
 int fitColumnsToContent(QTableView* view) {
     if (view == nullptr || view->model() == nullptr)
         return 0;
     QHeaderView* header = view->horizontalHeader();
     const int columns = view->model()->columnCount();
+    const QVariantMap caps = view->property(kCapsProperty).toMap();
     int widened = 0;
     for (int c = 0; c < columns; ++c) {
-        if (header->isSectionHidden(c) || header->sectionResizeMode(c) == QHeaderView::Stretch ||
-            (header->stretchLastSection() && c == columns - 1))
+        if (!isFitted(header, c, columns))
             continue;
         // sizeHintForColumn measures the rows in view (QTableView) with the delegate; the header's own
         // hint covers the title and the sort indicator.
-        const int want = qMax(static_cast<const QAbstractItemView*>(view)->sizeHintForColumn(c),
-                              headerTextWidth(header, c));
+        const int title = headerTextWidth(header, c);
+        int want = qMax(static_cast<const QAbstractItemView*>(view)->sizeHintForColumn(c), title);
+        const int cap = caps.value(QString::number(c), -1).toInt();
+        if (cap > 0)
+            want = qMax(title, qMin(want, cap));
         if (want > header->sectionSize(c)) {
             header->resizeSection(c, want);
             ++widened;

@@ -17,4 +17,12 @@ int headerTextWidth(const QHeaderView* header, int section);
 // Calls fitColumnsToContent when rows arrive or the view is shown, at most once a second.
 void keepColumnsFitted(QTableView* view);
 
+// A fitted column never grows past maxPx (but always shows its header title): a long machine id must not
+// squeeze the stretched column of a narrow laptop screen; the model's tooltip shows the full text.
+void setColumnFitCap(QTableView* view, int column, int maxPx);
+
+// Sets every fitted (not stretched) column to its header title's width, so that fitting starts from the
+// title rather than the header's default section size (100 px for a two-digit count column).
+void startColumnsAtHeaderWidth(QTableView* view);
+
 } // namespace ocu

@@ -1,6 +1,7 @@
 #include "widgets/EventLogWidget.h"
 
 #include "models/AlarmModel.h"
+#include "models/DisplayText.h"
 #include "widgets/ColumnFit.h"
 
 #include <QCheckBox>
@@ -45,8 +46,6 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     bar->addWidget(m_unackOnly);
     bar->addWidget(m_ack);
     bar->addWidget(m_ackAll);
-    bar->addWidget(m_export);
-    bar->addWidget(m_unackLabel);
     // Alarm management row: shelving (ISA-18.2 §11.4, always with an expiry) and the alarm rate.
     m_shelveFor->addItem(tr("15 min"), 15);
     m_shelveFor->addItem(tr("1 h"), 60);
@@ -60,7 +59,11 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     bar2->addWidget(m_shelveFor);
     bar2->addWidget(m_shelve);
     bar2->addWidget(m_unshelve);
+    bar2->addWidget(m_export); // on the first row it was cut off in an 800-px dock (1366 x 768)
     bar2->addStretch(1);
+    // The open-alarm count sits with the rate: on the first row it was cut off at 1366 px (issue 19 §6).
+    bar2->addWidget(m_unackLabel);
+    bar2->addSpacing(12);
     bar2->addWidget(m_rateLabel);
     m_details->setReadOnly(true);
     m_details->setPlaceholderText(
@@ -86,11 +89,18 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_view->setTabKeyNavigation(false); // arrows move in the table, Tab leaves it (docs/keyboard.md)
     m_view->verticalHeader()->hide();
     m_view->verticalHeader()->setDefaultSectionSize(20);
     m_view->horizontalHeader()->setStretchLastSection(false);
     m_view->horizontalHeader()->setSectionResizeMode(AlarmModel::ColText, QHeaderView::Stretch);
-    keepColumnsFitted(m_view); // issue 19 §6: headers and cells in view never elided
+    // Issue 19 §6: the message takes the remaining width; the other columns fit their content from their
+    // title up, the long ones capped (the tooltip shows the full text) so a 1366-px laptop keeps the message.
+    startColumnsAtHeaderWidth(m_view);
+    setColumnFitCap(m_view, AlarmModel::ColKind, 130);
+    setColumnFitCap(m_view, AlarmModel::ColMachine, 120);
+    setColumnFitCap(m_view, AlarmModel::ColAck, 130);
+    keepColumnsFitted(m_view);
 
     connect(m_search, &QLineEdit::textChanged, m_proxy, &AlarmFilterProxy::setText);
     connect(m_severity, &QComboBox::currentIndexChanged, this,
@@ -183,7 +193,7 @@ void EventLogWidget::showDetails() {
     lines << e.text;
     if (e.requiresAck) {
         lines << tr("Priority: %1 · raised %2 · %n time(s)", nullptr, m_alarms->occurrencesAt(row))
-                     .arg(toText(effectivePriority(e)), time(e.timeMs));
+                     .arg(DisplayText::priority(effectivePriority(e)), time(e.timeMs));
         if (m_alarms->isAcknowledged(row))
             lines << tr("Acknowledged by %1 at %2")
                          .arg(m_alarms->acknowledgedByAt(row), time(m_alarms->acknowledgedAtMs(row)));

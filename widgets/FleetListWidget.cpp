@@ -1,6 +1,7 @@
 #include "widgets/FleetListWidget.h"
 
 #include "models/CommandGate.h"
+#include "models/DisplayText.h"
 #include "models/FleetFilterProxy.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
@@ -122,6 +123,7 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_view->verticalHeader()->hide();
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_view->setTabKeyNavigation(false); // arrows move in the table, Tab leaves it (docs/keyboard.md)
     setDensity(Density::Dense);
     keepColumnsFitted(m_view); // issue 19 §6: headers and cells in view never elided
 
@@ -208,7 +210,7 @@ void FleetListWidget::syncFromShared() {
 QString FleetListWidget::describeMachine(const MachineState& m) {
     QStringList lines;
     lines << tr("Id: %1").arg(m.id) << tr("Name: %1").arg(m.name) << tr("Type: %1").arg(m.type)
-          << tr("Protocol: %1").arg(toText(m.protocol)) << tr("Link: %1").arg(toText(m.link));
+          << tr("Protocol: %1").arg(toText(m.protocol)) << tr("Link: %1").arg(DisplayText::link(m.link));
     if (m.hasPosition)
         lines
             << tr("Position: E %1 m, N %2 m, U %3 m")
@@ -218,10 +220,10 @@ QString FleetListWidget::describeMachine(const MachineState& m) {
             << tr("WGS84: %1, %2").arg(m.lat, 0, 'f', 7).arg(m.lon, 0, 'f', 7)
             << tr("Heading: %1°  Speed: %2 km/h").arg(m.headingDeg, 0, 'f', 1).arg(m.speed * 3.6, 0, 'f', 1);
     lines << tr("Size: %1 × %2 × %3 m").arg(m.length).arg(m.width).arg(m.height)
-          << tr("Mode: %1 (%2)").arg(m.modeText, toText(m.mode))
-          << tr("Stop (reported): %1 %2").arg(toText(m.stop), m.stopText)
-          << tr("Controller: %1 (%2)").arg(m.controller, toText(m.control))
-          << tr("Health: %1 %2").arg(toText(m.health), m.healthText);
+          << tr("Mode: %1 (%2)").arg(m.modeText, DisplayText::mode(m.mode))
+          << tr("Stop (reported): %1 %2").arg(DisplayText::stop(m.stop), m.stopText)
+          << tr("Controller: %1 (%2)").arg(m.controller, DisplayText::control(m.control))
+          << tr("Health: %1 %2").arg(DisplayText::health(m.health), m.healthText);
     if (!m.workText.isEmpty())
         lines << tr("Work: %1").arg(m.workText);
     return lines.join(QLatin1Char('\n'));

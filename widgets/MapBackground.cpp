@@ -53,6 +53,49 @@ std::string siteSrs(const GeoFrame& frame) {
 } // namespace
 
 MapBackground::LoadResult MapBackground::load(const QString& path, const GeoFrame& frame) {
+    return load(path, frame, MapTileCache::defaultDir());
+}
+
+MapBackground::LoadResult MapBackground::load(const QString& path, const GeoFrame& frame,
+                                              const QString& cacheDir) {
+    const MapTileCache cache(cacheDir);
+    const QString key = MapTileCache::keyFor(path, frame, kMaxSidePx, kTilePx);
+    if (auto p = cache.load(key, kTilePx))
+        return {fromPyramid(path, std::move(*p)), {}, true};
+    LoadResult r = warp(path, frame);
+    if (r.background && !key.isEmpty()) {
+        MapTilePyramid p;
+        p.bounds = r.background->m_bounds;
+        p.mpp = r.background->m_mpp;
+        p.size = r.background->m_size;
+        p.levels = r.background->m_levels;
+        cache.store(key, p, path); // a full disk or read-only cache only costs the next start a warp
+    }
+    return r;
+}
+
+std::shared_ptr<MapBackground> MapBackground::fromPyramid(const QString& path, MapTilePyramid pyramid) {
+    auto bg = std::make_shared<MapBackground>();
+    bg->m_path = path;
+    bg->m_bounds = pyramid.bounds;
+    bg->m_mpp = pyramid.mpp;
+    bg->m_size = pyramid.size;
+    bg->m_levels = std::move(pyramid.levels);
+    // Level 0 as one image again (colorAt).
+    const Level& L = bg->m_levels.front();
+    QImage full(bg->m_size, QImage::Format_ARGB32_Premultiplied);
+    full.fill(Qt::transparent);
+    QPainter p(&full);
+    p.setCompositionMode(QPainter::CompositionMode_Source);
+    for (int ty = 0; ty < L.rows; ++ty)
+        for (int tx = 0; tx < L.cols; ++tx)
+            p.drawImage(QPoint(tx * kTilePx, ty * kTilePx), L.tiles[ty * L.cols + tx]);
+    p.end();
+    bg->m_full = std::move(full);
+    return bg;
+}
+
+MapBackground::LoadResult MapBackground::warp(const QString& path, const GeoFrame& frame) {
     static std::once_flag once;
     std::call_once(once, [] { GDALAllRegister(); });
     auto fail = [&](const QString& why) {

@@ -4,6 +4,7 @@
 // site ENU metres) and cut into a pyramid of 256 px tiles, so a repaint draws only the few visible tiles of
 // the level that matches the zoom. GDAL stays in the .cpp.
 #include "protocols/common/GeoFrame.h"
+#include "widgets/MapTileCache.h"
 
 #include <QColor>
 #include <QImage>
@@ -26,10 +27,14 @@ public:
     struct LoadResult {
         std::shared_ptr<const MapBackground> background; // null on failure
         QString error;                                   // what went wrong, naming the file
+        bool fromCache = false;                          // the tiles came from the disk cache (no warp)
     };
     // Loads and warps the raster (GeoTIFF, MBTiles or anything else GDAL reads with georeferencing).
     // Blocking: call it off the GUI thread for big files. Never throws; bad files give an error.
+    // The warped tiles are cached on disk (MapTileCache::defaultDir()): a restart reads them back.
     static LoadResult load(const QString& path, const GeoFrame& frame);
+    // The same with the given cache directory (empty: no disk cache).
+    static LoadResult load(const QString& path, const GeoFrame& frame, const QString& cacheDir);
 
     QString path() const { return m_path; }
     QRectF bounds() const { return m_bounds; }      // site ENU (x = east, y = north; top() = south edge)
@@ -44,11 +49,9 @@ public:
     int draw(QPainter& p, QPointF centre, double scale, const QSizeF& size) const;
 
 private:
-    struct Level {
-        double mpp = 1; // metres per pixel
-        int cols = 0, rows = 0;
-        QVector<QImage> tiles; // row-major, row 0 = north
-    };
+    using Level = MapTileLevel; // tiles row-major, row 0 = north
+    static std::shared_ptr<MapBackground> fromPyramid(const QString& path, MapTilePyramid pyramid);
+    static LoadResult warp(const QString& path, const GeoFrame& frame);
     QString m_path;
     QRectF m_bounds;
     double m_mpp = 1;

@@ -327,6 +327,8 @@ void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
     m_static.fill(QColor(0xf4, 0xf1, 0xea)); // light site-plan background
     QPainter sp(&m_static);
     drawStatic(sp, size);
+    if (m_night)
+        dimStaticForNight(sp, size);
     sp.end();
     m_staticValid = true;
     m_staticCenter = m_center;

@@ -127,6 +127,9 @@ public:
     void loadBackground(const QString& path);
     void setBackgroundVisible(bool visible);
     bool isBackgroundVisible() const { return m_backgroundVisible; }
+    // Issue 19 §6: the night palette (a dark window palette) dims the site plan and background and draws
+    // dark labels with light text, so the map does not glare in a dark cab. Follows the palette by itself.
+    bool isNight() const { return m_night; }
 
     // Draws the whole scene (what paintEvent does) into any painter, e.g. an offscreen QImage.
     void paintScene(QPainter& p, const QSize& size);
@@ -169,6 +172,7 @@ protected:
     void keyPressEvent(QKeyEvent* e) override;
     void contextMenuEvent(QContextMenuEvent* e) override;
     void leaveEvent(QEvent* e) override;
+    void changeEvent(QEvent* e) override;
 
 private:
     void onMachinesChanged(const QStringList& ids);
@@ -263,6 +267,8 @@ private:
     std::shared_ptr<const MapBackground> m_background;
     bool m_backgroundVisible = true;
     quint64 m_backgroundRequest = 0;
+    bool m_night = false;
+    void dimStaticForNight(QPainter& p, const QSize& size);
 };
 
 } // namespace ocu

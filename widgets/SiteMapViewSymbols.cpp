@@ -1,5 +1,6 @@
 // SiteMapView, issue 19: machine symbols, decluttered labels, edge indicators, the hover card, navigation
 // (zoom to fleet / selection / area) and the background raster. The rest of the view is in SiteMapView.cpp.
+#include "models/DisplayText.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "widgets/MapBackground.h"
@@ -7,6 +8,7 @@
 
 #include <QApplication>
 #include <QDateTime>
+#include <QEvent>
 #include <QPainter>
 #include <QPainterPath>
 #include <QPointer>
@@ -176,7 +178,8 @@ void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
 
 QImage SiteMapView::labelImage(const QString& text, MapLabelLayout::Kind kind, const QColor& colour,
                                qreal dpr) {
-    const QString key = QString::number(int(kind)) + colour.name() + QString::number(dpr) + text;
+    const QString key = QString::number(int(kind)) + colour.name() + QString::number(dpr) +
+                        (m_night ? QLatin1Char('n') : QLatin1Char('d')) + text;
     auto it = m_labelImages.constFind(key);
     if (it != m_labelImages.constEnd())
         return *it;
@@ -198,20 +201,24 @@ QImage SiteMapView::labelImage(const QString& text, MapLabelLayout::Kind kind, c
     ip.setFont(font);
     const QPointF base(pad, pad - 1 + fm.ascent());
     if (kind == MapLabelLayout::Kind::Machine) {
-        ip.setPen(QPen(QColor(0x60, 0x60, 0x60), 1));
-        ip.setBrush(QColor(255, 255, 255, 225));
+        ip.setPen(QPen(m_night ? QColor(0x90, 0x90, 0x90) : QColor(0x60, 0x60, 0x60), 1));
+        ip.setBrush(m_night ? QColor(30, 30, 34, 230) : QColor(255, 255, 255, 225));
         ip.drawRoundedRect(QRectF(QPointF(0.5, 0.5), sz - QSizeF(1, 1)), 3, 3);
-        ip.setPen(QColor(0x10, 0x10, 0x10));
+        ip.setPen(m_night ? QColor(0xe6, 0xe6, 0xe0) : QColor(0x10, 0x10, 0x10));
         ip.drawText(base, text);
     } else {
         // A white halo keeps road and area names readable over roads and the background raster.
         QPainterPath path;
         path.addText(base, font, text);
-        ip.setPen(QPen(QColor(255, 255, 255, 230), 3, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        // At night: a dark halo and the colour lifted to a light tone of the same hue (contrast >= 4.5:1).
+        ip.setPen(QPen(m_night ? QColor(20, 20, 22, 230) : QColor(255, 255, 255, 230), 3, Qt::SolidLine,
+                       Qt::RoundCap, Qt::RoundJoin));
         ip.setBrush(Qt::NoBrush);
         ip.drawPath(path);
         ip.setPen(Qt::NoPen);
-        ip.setBrush(colour);
+        ip.setBrush(m_night ? QColor::fromHsl(colour.hslHue() < 0 ? 0 : colour.hslHue(),
+                                              std::min(colour.hslSaturation(), 120), 200)
+                            : colour);
         ip.drawPath(path);
     }
     ip.end();
@@ -440,20 +447,20 @@ void SiteMapView::drawHoverCard(QPainter& p, const QSize& size) {
     const StatusCategory status = m_fleet->statusAt(row);
     QStringList lines;
     lines << (m.type.isEmpty() ? tr("type unknown") : m.type) + QStringLiteral(" · ") + toText(m.protocol);
-    lines << tr("Status: %1").arg(toText(status));
+    lines << tr("Status: %1").arg(DisplayText::status(status));
     if (!m.modeText.isEmpty())
         lines << tr("Mode: %1").arg(m.modeText);
     lines << tr("Speed: %1 km/h · heading %2°").arg(m.speed * 3.6, 0, 'f', 1).arg(m.headingDeg, 0, 'f', 0);
     if (m.stop == StopState::Stopped)
         lines << tr("Stopped: %1").arg(m.stopText.isEmpty() ? tr("yes") : m.stopText);
     if (m.health != HealthLevel::Unknown)
-        lines << tr("Health: %1").arg(m.healthText.isEmpty() ? toText(m.health) : m.healthText);
+        lines << tr("Health: %1").arg(m.healthText.isEmpty() ? DisplayText::health(m.health) : m.healthText);
     if (m.control != ControlState::None)
-        lines << tr("Control: %1").arg(toText(m.control));
+        lines << tr("Control: %1").arg(DisplayText::control(m.control));
     if (!m.workText.isEmpty())
         lines << m.workText.left(80);
     const qint64 age = m_fleet->ageMsAt(row);
-    lines << tr("Link: %1 · data %2 s ago").arg(toText(m.link)).arg(age / 1000.0, 0, 'f', 1);
+    lines << tr("Link: %1 · data %2 s ago").arg(DisplayText::link(m.link)).arg(age / 1000.0, 0, 'f', 1);
     QFont bold = font();
     bold.setPointSizeF(9);
     bold.setBold(true);
@@ -615,6 +622,30 @@ void SiteMapView::drawBackgroundRaster(QPainter& p, const QSize& size) {
     if (!m_background || !m_backgroundVisible)
         return;
     m_background->draw(p, m_center, m_scale, QSizeF(size));
+}
+
+// ---- night palette (issue 19 §6) ----
+
+void SiteMapView::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::PaletteChange) {
+        const bool night = palette().color(QPalette::Window).lightness() < 110;
+        if (night != m_night) {
+            m_night = night;
+            m_labelImages.clear();
+            invalidateStatic();
+            update();
+        }
+    }
+    QWidget::changeEvent(e);
+}
+
+void SiteMapView::dimStaticForNight(QPainter& p, const QSize& size) {
+    // Multiplying keeps every hue of the plan, the background raster and the pass-count layer apart while
+    // taking the light site-plan ground (#f4f1ea) down to about #5c5a58.
+    p.save();
+    p.setCompositionMode(QPainter::CompositionMode_Multiply);
+    p.fillRect(QRect(QPoint(0, 0), size), QColor(0x60, 0x60, 0x64));
+    p.restore();
 }
 
 } // namespace ocu

@@ -7,7 +7,9 @@
 #include "widgets/production/ProductionView.h"
 #include "widgets/production/ShiftReport.h"
 
+#include <QAction>
 #include <QDockWidget>
+#include <QKeySequence>
 #include <QScrollArea>
 
 namespace ocu {
@@ -50,6 +52,23 @@ void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridg
         window.tabifyDockWidget(events, dock);
         events->raise();
     }
+    // Issue 19 §6: a keyboard path here too (Ctrl+9, after the Ctrl+1 … Ctrl+8 panels; docs/keyboard.md):
+    // raises the panel and puts the focus on its first control.
+    auto* go = new QAction(QObject::tr("Production"), dock);
+    go->setObjectName(QStringLiteral("action-go-production"));
+    go->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_9));
+    go->setShortcutContext(Qt::ApplicationShortcut);
+    QObject::connect(go, &QAction::triggered, dock, [dock, view] {
+        dock->show();
+        dock->raise();
+        for (QWidget* c : view->findChildren<QWidget*>())
+            if ((c->focusPolicy() & Qt::TabFocus) && c->isEnabled() && c->isVisibleTo(view)) {
+                c->setFocus(Qt::ShortcutFocusReason);
+                return;
+            }
+        view->setFocus(Qt::ShortcutFocusReason);
+    });
+    window.addAction(go);
 }
 
 } // namespace ocu

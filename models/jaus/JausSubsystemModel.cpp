@@ -1,5 +1,7 @@
 #include "models/jaus/JausSubsystemModel.h"
 
+#include "models/DisplayText.h"
+
 #include <QBrush>
 #include <QColor>
 #include <QDateTime>
@@ -57,6 +59,12 @@ void JausSubsystemModel::onVehicle(const JausVehicle& s) {
     beginInsertRows({}, at, at);
     m_rows.insert(at, s);
     endInsertRows();
+}
+
+QString JausSubsystemModel::linkText(JausLink s) {
+    return DisplayText::link(s == JausLink::Up         ? LinkState::Up
+                             : s == JausLink::Degraded ? LinkState::Degraded
+                                                       : LinkState::Down);
 }
 
 QString JausSubsystemModel::accessText(JausAccess s) {
@@ -129,7 +137,7 @@ QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
             .arg(s.callSign.isEmpty() ? tr("unnamed") : s.callSign)
             .arg(s.subsystem);
     case Link: {
-        const QString state = s.linkText;
+        const QString state = linkText(s.link);
         if (s.lastMessageUnixMs <= 0)
             return state;
         const qint64 age = std::max<qint64>(0, QDateTime::currentMSecsSinceEpoch() - s.lastMessageUnixMs);

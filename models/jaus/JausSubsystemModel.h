@@ -26,6 +26,8 @@ public:
     int rowOf(std::uint16_t subsystem) const;
     const JausVehicle* vehicleAt(int row) const;
     static QString accessText(JausAccess s);
+    // The link state in the operator's language (JausVehicle::linkText keeps the stack's English word).
+    static QString linkText(JausLink s);
     RowColour rowColour(const JausVehicle& s) const;
 
 private:

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QToolBar>
@@ -262,6 +263,22 @@ private slots:
             QTRY_VERIFY2(edits[p]->isVisible(), qPrintable(w.panelTitle(p)));
             QTRY_VERIFY2(edits[p]->hasFocus(), qPrintable(w.panelTitle(p)));
         }
+    }
+    // Issue 19 §6: the first start (no saved layout) opens maximized, at the screen's available size, not
+    // at the widgets' size hint (1200 x 720 on a 1920 x 1080 screen).
+    void firstStartFillsTheScreen() {
+        MainWindow w;
+        w.showFirstStart();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.screen());
+        const QSize avail = w.screen()->availableGeometry().size();
+        QTRY_VERIFY2(w.isMaximized() || w.frameGeometry().size() == avail,
+                     qPrintable(QStringLiteral("%1x%2 on %3x%4")
+                                    .arg(w.width())
+                                    .arg(w.height())
+                                    .arg(avail.width())
+                                    .arg(avail.height())));
+        QTRY_VERIFY(w.width() >= avail.width() * 95 / 100 && w.height() >= avail.height() * 90 / 100);
     }
     void closeAndReopenPanel() {
         MainWindow w;

@@ -6,6 +6,8 @@
 #include "widgets/MapBackground.h"
 #include "widgets/SiteMapView.h"
 
+#include <QDateTime>
+#include <QDir>
 #include <QFile>
 #include <QPainter>
 #include <QSignalSpy>
@@ -88,6 +90,11 @@ class TestMapBackground : public QObject {
     QTemporaryDir dir;
 
 private slots:
+    void initTestCase() {
+        // The default disk cache goes into the test's directory, never the user's home.
+        qputenv("OCU_TILE_CACHE_DIR", dir.filePath(QStringLiteral("default-cache")).toUtf8());
+    }
+
     void geotiffInWgs84IsPlacedInTheSiteFrame() {
         // 400 x 400 px over 0.008° x 0.008° around the origin; the mark 200 m east and 150 m north of it.
         const GeoFrame frame(kOrigin);
@@ -257,6 +264,125 @@ private slots:
         QImage img(400, 300, QImage::Format_ARGB32_Premultiplied);
         QPainter p(&img);
         v.paintScene(p, img.size()); // still paints
+    }
+
+    // Issue 19 §3 "warped ... and cached as tiles": the second load (a restart) reads the tiles back from the
+    // disk cache, identical to the warped ones; a changed file, another site origin or a corrupt entry warps
+    // again (and a corrupt entry is replaced, never a crash); the cache stays within its size bound.
+    void tilesAreCachedOnDisk() {
+        const GeoFrame frame(kOrigin);
+        const GeoPoint markGeo = frame.toGeodetic({-120, 80, 0});
+        const double px = 0.012 / 600;
+        const double gt[6] = {kOrigin.lon - 0.006, px, 0, kOrigin.lat + 0.006, 0, -px};
+        const int mx = int((markGeo.lon - gt[0]) / px), my = int((gt[3] - markGeo.lat) / px);
+        const QString path = dir.filePath(QStringLiteral("cached.tif"));
+        QVERIFY(writeRaster(path, "GTiff", 4326, gt, 600, mx, my, 8));
+        const QString cacheDir = dir.filePath(QStringLiteral("tile-cache"));
+
+        const auto first = MapBackground::load(path, frame, cacheDir);
+        QVERIFY2(first.background, qPrintable(first.error));
+        QVERIFY(!first.fromCache);
+        const QString key =
+            MapTileCache::keyFor(path, frame, MapBackground::kMaxSidePx, MapBackground::kTilePx);
+        QVERIFY(!key.isEmpty());
+        const QString entry = MapTileCache(cacheDir).entryPath(key);
+        QVERIFY(QFile::exists(entry + QStringLiteral("/meta.json")));
+
+        auto sameAsFirst = [&](const MapBackground& bg) {
+            if (bg.bounds() != first.background->bounds() || bg.sizePx() != first.background->sizePx() ||
+                bg.levels() != first.background->levels() ||
+                bg.metresPerPixel() != first.background->metresPerPixel())
+                return false;
+            // Every 7th level-0 pixel the same, and the mark where it was.
+            const QRectF b = bg.bounds();
+            const double m = bg.metresPerPixel();
+            for (double n = b.top() + m / 2; n < b.bottom(); n += 7 * m)
+                for (double e = b.left() + m / 2; e < b.right(); e += 7 * m)
+                    if (bg.colorAt({e, n}) != first.background->colorAt({e, n}))
+                        return false;
+            return true;
+        };
+        const auto second = MapBackground::load(path, frame, cacheDir);
+        QVERIFY2(second.background, qPrintable(second.error));
+        QVERIFY(second.fromCache);
+        QVERIFY(sameAsFirst(*second.background));
+        const EnuPoint e = frame.toLocal({gt[3] - my * px, gt[0] + mx * px, kOrigin.alt});
+        QVERIFY(isRed(second.background->colorAt({e.e, e.n})));
+        // The tiles it draws are the cached ones.
+        QImage a(500, 400, QImage::Format_ARGB32_Premultiplied),
+            b(500, 400, QImage::Format_ARGB32_Premultiplied);
+        a.fill(Qt::black);
+        b.fill(Qt::black);
+        for (double scale : {0.2, 1.0, 3.0}) {
+            QPainter pa(&a), pb(&b);
+            QVERIFY(first.background->draw(pa, {e.e, e.n}, scale, a.size()) > 0);
+            QVERIFY(second.background->draw(pb, {e.e, e.n}, scale, b.size()) > 0);
+        }
+        QCOMPARE(a, b);
+
+        // Another site origin: another entry.
+        const GeoFrame moved(GeoPoint{kOrigin.lat + 0.001, kOrigin.lon, kOrigin.alt});
+        QVERIFY(MapTileCache::keyFor(path, moved, MapBackground::kMaxSidePx, MapBackground::kTilePx) != key);
+        QVERIFY(!MapBackground::load(path, moved, cacheDir).fromCache);
+
+        // A corrupt tile: discarded, warped again, the entry rewritten and good again.
+        QFile tile(entry + QStringLiteral("/L0_0_0.png"));
+        QVERIFY(tile.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        tile.write("\x89PNG this is not a png");
+        tile.close();
+        const auto afterCorruptTile = MapBackground::load(path, frame, cacheDir);
+        QVERIFY2(afterCorruptTile.background, qPrintable(afterCorruptTile.error));
+        QVERIFY(!afterCorruptTile.fromCache);
+        QVERIFY(sameAsFirst(*afterCorruptTile.background));
+        QVERIFY(MapBackground::load(path, frame, cacheDir).fromCache);
+        // Corrupt or hostile meta data: not JSON, absurd sizes, a missing tile.
+        for (const QByteArray& meta :
+             {QByteArray("{not json"),
+              QByteArray("{\"version\":1,\"tile\":256,\"bounds\":[0,0,1,1],\"mpp\":1,"
+                         "\"width\":100000000,\"height\":1,\"levels\":[]}"),
+              QByteArray("[]"), QByteArray()}) {
+            QFile f(entry + QStringLiteral("/meta.json"));
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            f.write(meta);
+            f.close();
+            const auto r = MapBackground::load(path, frame, cacheDir);
+            QVERIFY2(r.background, qPrintable(r.error));
+            QVERIFY2(!r.fromCache, meta.constData());
+            QVERIFY(sameAsFirst(*r.background));
+        }
+        QVERIFY(QFile::remove(entry + QStringLiteral("/L0_1_1.png")));
+        QVERIFY(!MapBackground::load(path, frame, cacheDir).fromCache);
+        QVERIFY(MapBackground::load(path, frame, cacheDir).fromCache);
+
+        // The source file changed (size and time): a new key, the new picture.
+        QTest::qWait(20);
+        QVERIFY(writeRaster(path, "GTiff", 4326, gt, 600, 300, 300, 30));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::ReadWrite));
+            QVERIFY(
+                f.setFileTime(QDateTime::currentDateTimeUtc().addSecs(5), QFileDevice::FileModificationTime));
+        }
+        QVERIFY(MapTileCache::keyFor(path, frame, MapBackground::kMaxSidePx, MapBackground::kTilePx) != key);
+        const auto changed = MapBackground::load(path, frame, cacheDir);
+        QVERIFY(changed.background && !changed.fromCache);
+        QVERIFY(!isRed(changed.background->colorAt({e.e, e.n})));
+
+        // Bounded: trimmed to 1 byte, nothing stays.
+        const qint64 oneEntry = MapTileCache(cacheDir, 1ll << 40).trim();
+        QVERIFY(oneEntry > 0);
+        const qint64 kept = MapTileCache(cacheDir, 1).trim();
+        QCOMPARE(kept, qint64(0));
+        QVERIFY(QDir(cacheDir).entryList(QDir::Dirs | QDir::NoDotAndDotDot).isEmpty());
+        // An unwritable cache directory: still loads (no cache), no crash.
+        const QString file = dir.filePath(QStringLiteral("not-a-dir"));
+        {
+            QFile f(file);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("x");
+        }
+        const auto noCache = MapBackground::load(path, frame, file + QStringLiteral("/sub"));
+        QVERIFY(noCache.background && !noCache.fromCache);
     }
 };
 

@@ -39,6 +39,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
                                        : tr("This console: %1 [%2] · MONITOR role: commands are disabled")
                                              .arg(me.callSign)
                                              .arg(me.subsystemId));
+    m_roleLabel->setWordWrap(true); // a narrow dock wraps it rather than cutting off "Release all"
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
     m_releaseAll->setEnabled(me.mayControl);
@@ -55,6 +56,9 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->verticalHeader()->setDefaultSectionSize(30);
+    // Keyboard-only path (issue 19 §6, docs/keyboard.md): arrows move between vehicles, Tab leaves the table
+    // for the row's Monitor / Control / Release buttons (with tab navigation on, Tab cycled the cells).
+    m_table->setTabKeyNavigation(false);
 
     // The details pane (issue 19 §6): what to do when nothing is selected, the JAUS details of a JAUS
     // vehicle, the fleet picture's details of a machine of any other protocol.
@@ -209,6 +213,16 @@ void JausControlPanel::installRowButtons(int first, int last) {
             if (!m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions)))
                 installRowButtons(row, row);
     }
+    // Tab order: from the table straight to the rows' buttons, row by row (they are created after the rest
+    // of the panel, so by default they came last, after the details and the teleop panel).
+    QWidget* prev = m_table;
+    for (int row = 0; row < m_model->rowCount(); ++row)
+        if (QWidget* cell = m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions)))
+            for (const char* name : {"monitor", "control", "release"})
+                if (QPushButton* b = findButton(cell, name)) {
+                    QWidget::setTabOrder(prev, b);
+                    prev = b;
+                }
     refreshButtons();
 }
 

@@ -2,6 +2,7 @@
 
 #include "models/CommandGate.h"
 #include "models/FleetSelection.h"
+#include "models/jaus/JausSubsystemModel.h"
 #include "models/jaus/JausVehicleBridge.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
@@ -350,10 +351,11 @@ void TeleopPanel::refresh() {
     const bool canDrive = may && ours && up && !s->emergency;
     if (!canDrive && m_session != Session::Closed) {
         // The vehicle's own state ends the session: say why, loudly, and end it through the gate.
-        const QString why = !up            ? tr("the link to %1 is %2").arg(s->callSign, s->linkText)
-                            : s->emergency ? tr("%1 is in EMERGENCY").arg(s->callSign)
-                            : !ours        ? tr("this console no longer controls %1").arg(s->callSign)
-                                           : tr("driving is not allowed");
+        const QString why =
+            !up ? tr("the link to %1 is %2").arg(s->callSign, JausSubsystemModel::linkText(s->link))
+            : s->emergency ? tr("%1 is in EMERGENCY").arg(s->callSign)
+            : !ours        ? tr("this console no longer controls %1").arg(s->callSign)
+                           : tr("driving is not allowed");
         showDriveProblem(tr("Driving stopped: %1").arg(why));
         m_waitForRelease = true;
         endSession(why);
@@ -371,7 +373,7 @@ void TeleopPanel::refresh() {
     if (s->emergency)
         state << tr("EMERGENCY — hold the clear button to release");
     if (!up)
-        state << tr("link %1").arg(s->linkText);
+        state << tr("link %1").arg(JausSubsystemModel::linkText(s->link));
     if (s->management)
         state << tr("state %1").arg(s->managementText);
     state << (s->driving ? tr("drive session open")

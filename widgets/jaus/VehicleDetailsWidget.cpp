@@ -76,7 +76,7 @@ void VehicleDetailsWidget::rebuild(const JausVehicle& s) {
     row(ident, tr("Call sign"), s.callSign);
     row(ident, tr("Subsystem ID"), QString::number(s.subsystem));
     row(ident, tr("Endpoint"), s.endpoint);
-    row(ident, tr("Link"), s.linkText);
+    row(ident, tr("Link"), JausSubsystemModel::linkText(s.link));
 
     auto* state = section(tr("State"));
     row(state, tr("Access"), JausSubsystemModel::accessText(s.access));

@@ -32,8 +32,9 @@ class ImageView : public QWidget {
 public:
     std::function<QImage(QSize)> render;
     std::function<void(QPointF)> clicked;
-    std::function<void(QPointF)> dragged; // left-button drag, device pixels since the last move
-    std::function<void(double)> wheeled;  // wheel steps (+ = away from the user = zoom in)
+    std::function<void(QPointF)> doubleClicked; // issue 19 §2: double-click selects (and follows)
+    std::function<void(QPointF)> dragged;       // left-button drag, device pixels since the last move
+    std::function<void(double)> wheeled;        // wheel steps (+ = away from the user = zoom in)
     QString message;
 
     explicit ImageView(QWidget* parent) : QWidget(parent) {
@@ -77,6 +78,10 @@ protected:
         if (wheeled && e->angleDelta().y() != 0)
             wheeled(e->angleDelta().y() / 120.0);
         e->accept();
+    }
+    void mouseDoubleClickEvent(QMouseEvent* e) override {
+        if (e->button() == Qt::LeftButton && doubleClicked)
+            doubleClicked(e->position() * devicePixelRatioF());
     }
     void mouseReleaseEvent(QMouseEvent* e) override {
         if (e->button() == Qt::LeftButton && (e->position() - m_press).manhattanLength() <= 4 && clicked) {
@@ -122,6 +127,8 @@ public:
         int w = 0;
         for (const LegendEntry& e : m_entries)
             w = qMax(w, fm.horizontalAdvance(e.label));
+        // The title too ("Überfahrten" is wider than any entry): nothing cut off (issue 19 §6).
+        w = qMax(w, fm.horizontalAdvance(title()) - kSwatch - kGap);
         resize(w + 2 * kPad + kSwatch + kGap, static_cast<int>(m_entries.size()) * kRow + 2 * kPad + kRow);
         setVisible(!m_entries.empty());
         place();
@@ -141,9 +148,7 @@ protected:
         p.setBrush(QColor(255, 255, 255, 215));
         p.drawRoundedRect(rect().adjusted(0, 0, -1, -1), 4, 4);
         p.setPen(Qt::black);
-        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter,
-                   QCoreApplication::translate("ocu::LegendOverlay",
-                                               "Passes")); // no Q_OBJECT: tr() would use "QWidget"
+        p.drawText(QRect(kPad, kPad, width() - 2 * kPad, kRow), Qt::AlignVCenter, title());
         int y = kPad + kRow;
         for (const LegendEntry& e : m_entries) {
             p.fillRect(QRect(kPad, y + 3, kSwatch, kRow - 6), QColor(e.colour.r, e.colour.g, e.colour.b));
@@ -153,6 +158,10 @@ protected:
     }
 
 private:
+    static QString title() {
+        return QCoreApplication::translate("ocu::LegendOverlay",
+                                           "Passes"); // no Q_OBJECT: tr() would use "QWidget"
+    }
     void place() {
         if (parentWidget() != nullptr)
             move(parentWidget()->width() - width() - 8, 8);
@@ -225,6 +234,7 @@ Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Im
                 emit machinePicked(id);
             }
         };
+        d->image->doubleClicked = [this](QPointF px) { activateMachine(d->scene.pick(px.x(), px.y())); };
         // Same feel as the GL widget's trackball: a quarter degree per pixel, 10 % per wheel step.
         d->image->dragged = [this](QPointF delta) {
             d->scene.orbit(-delta.x() * 0.25, delta.y() * 0.25);
@@ -265,6 +275,7 @@ QWidget* Site3DView::ensureCanvas() const {
             self->setSelectedMachine(id);
             emit self->machinePicked(id);
         });
+        connect(d->gl, &VtkOpenGLWidget::machineDoubleClicked, self, &Site3DView::activateMachine);
         d->gl->setObjectName(QStringLiteral("view3dCanvas"));
         d->layout->replaceWidget(d->placeholder, d->gl);
         d->placeholder->deleteLater();
@@ -430,6 +441,17 @@ QSize Site3DView::viewPixelSize() const {
 
 QWidget* Site3DView::viewWidget() const {
     return ensureCanvas();
+}
+
+void Site3DView::activateMachine(const QString& id) {
+    // Issue 19 §2 "double-click selects in every view": as on the 2D map (select and centre), the machine
+    // becomes the selection and the camera follows it.
+    if (id.isEmpty())
+        return;
+    setSelectedMachine(id);
+    emit machinePicked(id);
+    setCameraMode(CameraMode::FollowSelected);
+    emit machineActivated(id);
 }
 
 } // namespace ocu

@@ -65,6 +65,8 @@ public:
 signals:
     // A machine was clicked in the 3D view (it is also selected locally). Connect to the shared selection.
     void machinePicked(const QString& id);
+    // A machine was double-clicked: selected (machinePicked too) and the camera follows it.
+    void machineActivated(const QString& id);
     void cameraModeChanged(ocu::CameraMode mode);
     // The panel was shown (true) or hidden (false), e.g. its tab was raised or another tab covered it.
     void visibilityChanged(bool visible);
@@ -74,6 +76,7 @@ protected:
     void hideEvent(QHideEvent* event) override;
 
 private:
+    void activateMachine(const QString& id);
     void scheduleRender();
     void syncModeButtons();
     QWidget* ensureCanvas() const;

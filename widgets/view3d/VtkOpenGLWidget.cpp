@@ -230,6 +230,12 @@ void VtkOpenGLWidget::mouseDoubleClickEvent(QMouseEvent* event) {
     setEventInfo(d->interactor, event->position(), devicePixelRatioF(), event->modifiers(), 1);
     if (const unsigned long e = buttonEvent(event->button(), true); e != vtkCommand::NoEvent)
         d->interactor->InvokeEvent(e);
+    if (event->button() == Qt::LeftButton) {
+        const qreal dpr = devicePixelRatioF();
+        const QString id = d->scene->pick(event->position().x() * dpr, event->position().y() * dpr);
+        if (!id.isEmpty())
+            emit machineDoubleClicked(id);
+    }
     event->accept();
 }
 

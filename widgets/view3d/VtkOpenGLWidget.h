@@ -30,6 +30,7 @@ public:
 signals:
     // Left click (press and release within a few pixels) on a machine.
     void machinePicked(const QString& id);
+    void machineDoubleClicked(const QString& id); // left double-click on a machine
     // The user moved the camera with the mouse, wheel or keys.
     void cameraInteracted();
 

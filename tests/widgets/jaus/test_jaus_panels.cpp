@@ -162,6 +162,34 @@ private slots:
         s.ctx.selection()->clear();
         QVERIFY(w.control->detailsText().contains("No machine selected"));
     }
+    // Issue 19 §6 / docs/keyboard.md: keyboard only, from the vehicle table Tab reaches the row's Control
+    // button and Space presses it (control is taken, as with the mouse).
+    void keyboardReachesTheRowButtons() {
+        Site s;
+        Window win(s);
+        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
+        win.w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&win.w));
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            win.control->controlButton(126) && win.control->controlButton(126)->isEnabled(), 10000);
+        win.control->table()->setFocus(Qt::ShortcutFocusReason);
+        QTRY_VERIFY(win.control->table()->hasFocus());
+        QTest::keyClick(win.control->table(), Qt::Key_Down); // arrows select a row
+        QStringList path;
+        for (int i = 0; i < 30 && QApplication::focusWidget() != win.control->controlButton(126); ++i) {
+            QWidget* f = QApplication::focusWidget();
+            path << (f ? f->metaObject()->className() + QStringLiteral(":") + f->objectName() : QString("-"));
+            QTest::keyClick(f ? f : &win.w, Qt::Key_Tab);
+        }
+        QVERIFY2(QApplication::focusWidget() == win.control->controlButton(126),
+                 qPrintable(path.join(QStringLiteral(" > "))));
+        // Straight from the table to the first row's buttons: table > Monitor > Control.
+        QVERIFY2(path.size() <= 2, qPrintable(path.join(QStringLiteral(" > "))));
+        QTest::keyClick(win.control->controlButton(126), Qt::Key_Space);
+        QTRY_COMPARE_WITH_TIMEOUT(accessOf(win.control, 126), QString("CONTROL_ACCEPTED"), 10000);
+    }
+
     void takeControlTurnsRowGreen() {
         Site s;
         Window win(s);

@@ -92,6 +92,21 @@ private slots:
         QVERIFY2(isMagenta(pixelAt(shot, inWindow)), qPrintable(describe(pixelAt(shot, inWindow))));
     }
 
+    // Issue 19 §2: a double-click on a machine in the GL view selects it and the camera follows it.
+    void doubleClickSelectsAndFollows() {
+        frame();
+        SiteSceneRenderer& scene = m_view->sceneRenderer();
+        const Machine3D m1 = *scene.machine(QStringLiteral("M1"));
+        const auto p = scene.project(m1.e, m1.n, m1.u + m1.height);
+        QVERIFY(p);
+        QSignalSpy activated(m_view.get(), &Site3DView::machineActivated);
+        QTest::mouseDClick(gl(), Qt::LeftButton, Qt::NoModifier, p->toPoint());
+        QCOMPARE(activated.count(), 1);
+        QCOMPARE(activated.at(0).at(0).toString(), QStringLiteral("M1"));
+        QCOMPARE(m_view->selectedMachine(), QStringLiteral("M1"));
+        QCOMPARE(m_view->cameraMode(), CameraMode::FollowSelected);
+    }
+
     void mouseDragRotatesTheCamera() {
         frame();
         SiteSceneRenderer& scene = m_view->sceneRenderer();

@@ -105,6 +105,39 @@ private slots:
                  qPrintable(describe(pixelAt(shot, *moved + offset))));
     }
 
+    // Issue 19 §2 "double-click selects in every view": in the 3D panel too, and the camera follows it.
+    void doubleClickSelectsAndFollows() {
+        Site3DView view;
+        view.resize(640, 480);
+        view.setScene(makeSite());
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        view.grab();
+        SiteSceneRenderer& scene = view.sceneRenderer();
+        const Machine3D m2 = *scene.machine(QStringLiteral("M2"));
+        const auto p2 = scene.project(m2.e, m2.n, m2.u + m2.height);
+        QVERIFY(p2);
+        QCOMPARE(view.cameraMode(), CameraMode::FreeOrbit);
+        QSignalSpy picked(&view, &Site3DView::machinePicked);
+        QSignalSpy activated(&view, &Site3DView::machineActivated);
+        QTest::mouseDClick(view.viewWidget(), Qt::LeftButton, Qt::NoModifier, p2->toPoint());
+        QVERIFY(picked.count() >= 1);
+        QCOMPARE(picked.last().at(0).toString(), QStringLiteral("M2"));
+        QCOMPARE(activated.count(), 1);
+        QCOMPARE(activated.at(0).at(0).toString(), QStringLiteral("M2"));
+        QCOMPARE(view.selectedMachine(), QStringLiteral("M2"));
+        QCOMPARE(view.cameraMode(), CameraMode::FollowSelected);
+        // A double-click on bare ground selects nothing new.
+        view.setCameraMode(CameraMode::FreeOrbit);
+        view.grab();
+        const auto ground = scene.project(-70.0, 60.0, scene.terrainHeight(-70.0, 60.0));
+        QVERIFY(ground);
+        QVERIFY(scene.pick(ground->x(), ground->y()).isEmpty());
+        QTest::mouseDClick(view.viewWidget(), Qt::LeftButton, Qt::NoModifier, ground->toPoint());
+        QCOMPARE(activated.count(), 1);
+        QCOMPARE(view.cameraMode(), CameraMode::FreeOrbit);
+    }
+
     void dragOrbitsAndWheelZoomsInTheImageView() {
         Site3DView view;
         view.resize(640, 480);

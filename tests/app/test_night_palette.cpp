@@ -1,0 +1,124 @@
+// Issue 19 §6 "the night palette legible": the night palette's text/background pairs keep a contrast the
+// WCAG calls readable (>= 7:1 for body text, 4.5:1 for buttons and selections), and the 2D map follows the
+// palette by itself: dim ground, dark machine labels with light text; back to the day look when switched off.
+#include "app/Theme.h"
+#include "models/FleetModel.h"
+#include "models/FleetSelection.h"
+#include "widgets/SiteMapView.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QPainter>
+#include <QTest>
+#include <cmath>
+
+using namespace ocu;
+
+namespace {
+
+double luminance(QColor c) {
+    auto lin = [](double v) {
+        v /= 255.0;
+        return v <= 0.03928 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+    };
+    return 0.2126 * lin(c.red()) + 0.7152 * lin(c.green()) + 0.0722 * lin(c.blue());
+}
+
+double contrast(QColor a, QColor b) {
+    const double la = luminance(a), lb = luminance(b);
+    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+MachineState truck() {
+    MachineState m;
+    m.id = QStringLiteral("iso23725:t1");
+    m.protocol = Protocol::Iso23725;
+    m.name = QStringLiteral("HT1");
+    m.type = QStringLiteral("HaulTruck");
+    m.link = LinkState::Up;
+    m.hasPosition = true;
+    m.e = 0;
+    m.n = 0;
+    m.length = 15;
+    m.width = 9;
+    m.lastDataMs = 1000;
+    return m;
+}
+
+QImage paint(SiteMapView& v) {
+    QImage img(600, 400, QImage::Format_ARGB32_Premultiplied);
+    QPainter p(&img);
+    v.paintScene(p, img.size());
+    return img;
+}
+
+// The darkest and lightest pixels in a rectangle.
+std::pair<int, int> lightnessRange(const QImage& img, QRect r) {
+    int lo = 255, hi = 0;
+    for (int y = r.top(); y <= r.bottom(); ++y)
+        for (int x = r.left(); x <= r.right(); ++x) {
+            const int l = QColor(img.pixel(x, y)).lightness();
+            lo = std::min(lo, l);
+            hi = std::max(hi, l);
+        }
+    return {lo, hi};
+}
+
+} // namespace
+
+class TestNightPalette : public QObject {
+    Q_OBJECT
+private slots:
+    void paletteContrast() {
+        auto* app = qobject_cast<QApplication*>(QCoreApplication::instance());
+        applyTheme(*app, Theme::Night);
+        const QPalette p = QApplication::palette();
+        QVERIFY(p.color(QPalette::Window).lightness() < 80); // it is a night palette
+        QVERIFY(contrast(p.color(QPalette::Text), p.color(QPalette::Base)) >= 7.0);
+        QVERIFY(contrast(p.color(QPalette::WindowText), p.color(QPalette::Window)) >= 7.0);
+        QVERIFY(contrast(p.color(QPalette::ButtonText), p.color(QPalette::Button)) >= 4.5);
+        QVERIFY(contrast(p.color(QPalette::HighlightedText), p.color(QPalette::Highlight)) >= 4.5);
+        QVERIFY(contrast(p.color(QPalette::ToolTipText), p.color(QPalette::ToolTipBase)) >= 7.0);
+        QVERIFY(contrast(p.color(QPalette::Text), p.color(QPalette::AlternateBase)) >= 7.0);
+        applyTheme(*app, Theme::Day);
+    }
+
+    void mapFollowsThePalette() {
+        auto* app = qobject_cast<QApplication*>(QCoreApplication::instance());
+        FleetModel fleet;
+        fleet.setClock([] { return qint64(1500); });
+        FleetSelection selection(&fleet);
+        fleet.upsert({truck()});
+        SiteMapView v;
+        v.resize(600, 400);
+        v.setFleet(&fleet, &selection);
+        v.setView(QPointF(0, 0), 2.0);
+        QVERIFY(!v.isNight());
+        const QImage day = paint(v);
+        const QColor dayGround = day.pixel(5, 395);
+        QVERIFY2(dayGround.lightness() > 200, qPrintable(dayGround.name()));
+
+        applyTheme(*app, Theme::Night);
+        QTRY_VERIFY(v.isNight()); // the palette change reaches the view by itself
+        const QImage night = paint(v);
+        const QColor nightGround = night.pixel(5, 395);
+        QVERIFY2(nightGround.lightness() < 110, qPrintable(nightGround.name()));
+        // The machine's label, where the view placed it: a dark box with light text in it.
+        QRect labelArea;
+        for (const auto& l : v.labelPlacements())
+            if (l.text == QLatin1String("HT1"))
+                labelArea = l.rect.toAlignedRect().adjusted(2, 2, -2, -2);
+        QVERIFY(!labelArea.isEmpty());
+        const auto [lo, hi] = lightnessRange(night, labelArea.intersected(night.rect()));
+        QVERIFY2(lo < 60 && hi > 190, qPrintable(QStringLiteral("%1..%2").arg(lo).arg(hi)));
+        const auto [dlo, dhi] = lightnessRange(day, labelArea.intersected(day.rect()));
+        QVERIFY2(dlo < 60 && dhi > 230, qPrintable(QStringLiteral("%1..%2").arg(dlo).arg(dhi)));
+
+        applyTheme(*app, Theme::Day);
+        QTRY_VERIFY(!v.isNight());
+        QCOMPARE(QColor(paint(v).pixel(5, 395)), dayGround);
+    }
+};
+
+QTEST_MAIN(TestNightPalette)
+#include "test_night_palette.moc"
