@@ -15,9 +15,11 @@
 #include "widgets/MapLabelLayout.h"
 #include "widgets/MapSymbols.h"
 
+#include <QElapsedTimer>
 #include <QHash>
 #include <QImage>
 #include <QPointer>
+#include <QTimer>
 #include <QWidget>
 #include <deque>
 #include <memory>
@@ -145,6 +147,14 @@ public:
     };
     FrameStats lastFrame() const { return m_stats; }
 
+    // ---- Issue 19 §7: load (SiteMapViewPerf.cpp) ----
+    // Repaints caused by data (positions, staleness, own fix, pass counts) are coalesced to at most this
+    // rate (default 10 Hz: the fastest data rate); the operator's own actions (pan, zoom, hover, selection)
+    // repaint at once. 0 = no cap.
+    void setMaxDataFrameRate(double hz);
+    double maxDataFrameRate() const { return m_maxDataHz; }
+    int framesPainted() const { return m_framesPainted; } // paintEvent calls so far
+
 public slots:
     void passCountChanged();
     void setOwnFix(const ocu::OwnFix& fix);
@@ -210,6 +220,9 @@ private:
     void userTookOver() { m_autoFit = false; }
     bool clickEdgeIndicator(QPointF px);
     void drawBackgroundRaster(QPainter& p, const QSize& size);
+    // Issue 19 §7 (SiteMapViewPerf.cpp).
+    void requestDataRepaint();
+    const QImage& machineLabelImage(const QString& text, qreal dpr);
 
     QPointer<FleetModel> m_fleet;
     QPointer<FleetSelection> m_selection;
@@ -263,6 +276,14 @@ private:
     std::shared_ptr<const MapBackground> m_background;
     bool m_backgroundVisible = true;
     quint64 m_backgroundRequest = 0;
+
+    // Issue 19 §7.
+    double m_maxDataHz = 10.0;
+    QTimer m_dataRepaint; // single shot: the next data-driven repaint when one came too soon
+    QElapsedTimer m_lastPaint;
+    int m_framesPainted = 0;
+    QHash<QString, QImage> m_machineLabels; // machine name label per text, at m_machineLabelsDpr
+    qreal m_machineLabelsDpr = 0;
 };
 
 } // namespace ocu

@@ -10,6 +10,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPointer>
+#include <QSet>
 #include <QThreadPool>
 #include <algorithm>
 #include <cmath>
@@ -82,6 +83,13 @@ void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
     labels.reserve(std::min(n, 2048));
     QHash<int, int> edgeBins; // perimeter bin -> index in m_edges
     p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+    // The selected rows, once per frame (usually none or a few), instead of an id lookup per machine.
+    QSet<int> selectedRows;
+    if (m_selection)
+        for (const QString& id : m_selection->selectedIds())
+            if (const int row = m_fleet->rowOf(id); row >= 0)
+                selectedRows.insert(row);
+    const int currentRow = current.isEmpty() ? -1 : m_fleet->rowOf(current);
     for (int i = 0; i < n; ++i) {
         const MachineState& m = m_fleet->machineAt(i);
         if (!m.hasPosition)
@@ -137,12 +145,12 @@ void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
         }
         (void)world;
         ++drawn;
-        const bool isCurrent = !current.isEmpty() && m.id == current;
-        const bool selected = m_selection && (isCurrent || m_selection->isSelected(m.id));
+        const bool isCurrent = i == currentRow;
+        const bool selected = isCurrent || (!selectedRows.isEmpty() && selectedRows.contains(i));
         if (selected)
             highlighted.push_back(i);
         SymbolStyle style;
-        style.symbol = symbolForType(m.type);
+        style.symbol = m_symbols.symbolFor(m.type);
         style.status = status;
         style.stale = status == StatusCategory::Stale;
         style.ring = m.stop == StopState::Stopped                ? SymbolRing::Stopped
@@ -320,7 +328,7 @@ void SiteMapView::layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<Ma
         for (const MachineLabel& ml : machines) {
             const MachineState& m = m_fleet->machineAt(ml.row);
             const QString text = m.name.isEmpty() ? m.id : m.name;
-            const QImage img = labelImage(text, MapLabelLayout::Kind::Machine, Qt::black, dpr);
+            const QImage& img = machineLabelImage(text, dpr);
             const QSizeF sz = QSizeF(img.size()) / dpr;
             const double r = ml.radius + 2;
             const QPointF c = ml.centre;
