@@ -160,6 +160,38 @@ private slots:
                  qPrintable(describe(img.pixelColor(p))));
     }
 
+    // Issue 19 §7: repaints caused by data are coalesced to the capped rate; the operator's own actions
+    // repaint at once.
+    void dataRepaintsAreCoalescedToTheCappedRate() {
+        fleet->upsert({machine(QStringLiteral("jaus:1"), 0, 0)});
+        SiteMapView view;
+        view.resize(400, 300);
+        view.setFleet(fleet, selection);
+        view.setView({0, 0}, 2.0);
+        QCOMPARE(view.maxDataFrameRate(), 10.0); // the default: the fastest data rate
+        view.setMaxDataFrameRate(1.0 / 3600);    // one data-driven frame an hour: none during this test
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QTRY_VERIFY(view.framesPainted() > 0);
+        QCoreApplication::processEvents();
+        const int f0 = view.framesPainted();
+        for (int i = 1; i <= 30; ++i) {
+            fleet->upsert({machine(QStringLiteral("jaus:1"), i, 0)});
+            QCoreApplication::processEvents();
+        }
+        QCOMPARE(view.framesPainted(), f0);
+        // A zoom (the operator) paints at once, and shows the latest data.
+        view.zoomBy(1.25, {200, 150});
+        QTRY_COMPARE(view.framesPainted(), f0 + 1);
+        // No cap: the pending frame is painted, and every later change paints.
+        view.setMaxDataFrameRate(0);
+        QTRY_VERIFY(view.framesPainted() > f0 + 1);
+        QCoreApplication::processEvents();
+        const int f1 = view.framesPainted();
+        fleet->upsert({machine(QStringLiteral("jaus:1"), 50, 0)});
+        QTRY_VERIFY(view.framesPainted() > f1);
+    }
+
     void selectionIsSharedBetweenListAndMap() {
         fleet->upsert({machine(QStringLiteral("jaus:1"), 20, 0), machine(QStringLiteral("jaus:2"), -20, 0)});
         SiteMapView view;
