@@ -288,10 +288,11 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     m_viewSize = size;
     const qreal dpr = p.device() ? p.device()->devicePixelRatioF() : 1.0;
     ensureStaticLayer(size, dpr);
-    p.drawImage(QPointF(0, 0), m_static);
     const QRectF world = visibleWorld(size);
+    const bool trailsInBase = (m_layers & LayerTrails) && drawTrailsIntoBase(world, dpr);
+    p.drawImage(QPointF(0, 0), trailsInBase ? m_frameBase : m_static);
     p.setRenderHint(QPainter::Antialiasing, true);
-    if (m_layers & LayerTrails)
+    if ((m_layers & LayerTrails) && !trailsInBase)
         drawTrails(p, world);
     for (SiteMapOverlay* o : std::as_const(m_overlays))
         o->paintOverlay(p, *this);

@@ -223,6 +223,9 @@ private:
     // Issue 19 §7 (SiteMapViewPerf.cpp).
     void requestDataRepaint();
     const QImage& machineLabelImage(const QString& text, qreal dpr);
+    // Many trails (aliased 1 px): rasterised straight into a copy of the static layer, which is then blitted
+    // instead of it. False when the painter path is used instead (few trails: antialiased).
+    bool drawTrailsIntoBase(const QRectF& visibleWorld, qreal dpr);
 
     QPointer<FleetModel> m_fleet;
     QPointer<FleetSelection> m_selection;
@@ -284,6 +287,7 @@ private:
     int m_framesPainted = 0;
     QHash<QString, QImage> m_machineLabels; // machine name label per text, at m_machineLabelsDpr
     qreal m_machineLabelsDpr = 0;
+    QImage m_frameBase; // static layer + trails (drawTrailsIntoBase)
 };
 
 } // namespace ocu
