@@ -350,6 +350,11 @@ void SiteMapView::layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<Ma
             }
         }
     }
+    // Road and area names are drawn after the machines: they also keep off the machine symbols (issue 19 §7
+    // screenshots: "Dumproad 2" was written across a truck).
+    for (const MachineLabel& ml : std::as_const(machines))
+        m_labels.block(
+            QRectF(ml.centre - QPointF(ml.radius, ml.radius), QSizeF(2 * ml.radius, 2 * ml.radius)));
     // Road and area names yield to machine labels and to each other.
     for (const MapLabelCandidate& cand : std::as_const(m_mapLabels)) {
         const QImage img = labelImage(cand.text, cand.kind, cand.colour, dpr);
