@@ -3,6 +3,9 @@
 # 1,000 trucks at 10 Hz, 20 UGVs and 3 rollers. Prints CPU % of one core per thread of `ocu` over a window
 # (from /proc/<pid>/task/*/stat), the GUI thread first, plus the load average.
 # Usage: scripts/gui-load.sh [BUILD_DIR] [WARMUP_S] [MEASURE_S]
+# With PERF_OUT=<file>, after the measurement the GUI thread is sampled for 15 s more with
+# `perf record --call-graph dwarf` (Qt is built without frame pointers):
+#   PERF_OUT=/tmp/gui.perf scripts/gui-load.sh build 40 30 && perf report -i /tmp/gui.perf --no-children
 set -euo pipefail
 build=${1:-build}
 warmup=${2:-40}
@@ -45,4 +48,8 @@ join <(sort "$work/a") <(sort "$work/b") | awk -v hz="$hz" -v s="$measure" -v pi
   END { printf "  %-22s %6.1f %%\n", "GUI(main)", tot["GUI(main)"];
         for (k in tot) if (k != "GUI(main)") printf "  %-22s %6.1f %% (%d threads)\n", k, tot[k], n[k];
         printf "  %-22s %6.1f %%\n", "process total", all }'
+if [ -n "${PERF_OUT:-}" ]; then
+  perf record -F 199 --call-graph dwarf,16384 -t "$pid" -o "$PERF_OUT" -- sleep 15 >/dev/null 2>&1 || echo "perf record failed"
+  echo "perf samples of the GUI thread in $PERF_OUT"
+fi
 kill "$sim" 2>/dev/null || true

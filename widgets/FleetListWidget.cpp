@@ -78,6 +78,8 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     : QWidget(parent), m_fleet(fleet), m_selection(selection), m_proxy(new FleetFilterProxy(this)),
       m_view(new QTableView(this)), m_filter(new QLineEdit(this)), m_protocol(new QComboBox(this)),
       m_status(new QComboBox(this)), m_densityButton(new QToolButton(this)) {
+    // 1,000 machines at 10 Hz: the table re-sorts and repaints at most 4 times a second (issue 19 §7).
+    m_proxy->setChangeIntervalMs(250);
     m_proxy->setSourceModel(fleet);
     m_filter->setPlaceholderText(tr("Filter machines…"));
     m_filter->setClearButtonEnabled(true);

@@ -72,6 +72,15 @@ MapSymbolCache::MapSymbolCache() {
 
 MapSymbolCache::~MapSymbolCache() = default;
 
+MachineSymbol MapSymbolCache::symbolFor(const QString& type) {
+    auto it = m_typeSymbols.constFind(type);
+    if (it != m_typeSymbols.constEnd())
+        return *it;
+    if (m_typeSymbols.size() > 1000) // free-text types from foreign peers: bounded
+        m_typeSymbols.clear();
+    return *m_typeSymbols.insert(type, symbolForType(type));
+}
+
 QSizeF MapSymbolCache::footprintPx(double lengthM, double widthM, double pxPerMetre) {
     double len = lengthM * pxPerMetre, wid = widthM * pxPerMetre;
     if (len < kMinLengthPx) {

@@ -54,6 +54,9 @@ public:
     // The cached image for one style (exposed for tests); null when the footprint is too big to cache.
     QImage image(QSizeF footprint, double headingDeg, const SymbolStyle& style, qreal dpr);
 
+    // symbolForType(type), remembered per type text (a frame asks once per machine).
+    MachineSymbol symbolFor(const QString& type);
+
     int cachedImages() const { return int(m_images.size()); }
     int renders() const { return m_renders; } // images rendered so far (cache misses)
 
@@ -65,6 +68,7 @@ private:
     QHash<quint64, QImage> m_images;
     QHash<int, std::shared_ptr<QSvgRenderer>> m_renderers; // per (symbol, status colour)
     QHash<int, QByteArray> m_sources;                      // SVG text per symbol
+    QHash<QString, MachineSymbol> m_typeSymbols;
     int m_renders = 0;
 };
 

@@ -36,6 +36,8 @@ SiteMapView::SiteMapView(QWidget* parent) : QWidget(parent) {
     setAttribute(Qt::WA_OpaquePaintEvent);
     setMinimumSize(200, 150);
     m_viewSize = size();
+    m_dataRepaint.setSingleShot(true);
+    connect(&m_dataRepaint, &QTimer::timeout, this, [this] { update(); });
 }
 
 SiteMapView::~SiteMapView() = default;
@@ -51,7 +53,7 @@ void SiteMapView::setFleet(FleetModel* fleet, FleetSelection* selection) {
     if (fleet) {
         connect(fleet, &FleetModel::machinesChanged, this, &SiteMapView::onMachinesChanged);
         connect(fleet, &FleetModel::machineRemoved, this, &SiteMapView::onMachineRemoved);
-        connect(fleet, &FleetModel::machineStaleChanged, this, [this] { update(); });
+        connect(fleet, &FleetModel::machineStaleChanged, this, [this] { requestDataRepaint(); });
     }
     if (selection) {
         connect(selection, &FleetSelection::selectionChanged, this, [this] { update(); });
@@ -104,12 +106,12 @@ void SiteMapView::setPassCountLayer(const PassCountLayer* layer) {
 
 void SiteMapView::passCountChanged() {
     invalidateStatic();
-    update();
+    requestDataRepaint();
 }
 
 void SiteMapView::setOwnFix(const OwnFix& fix) {
     m_own = fix;
-    update();
+    requestDataRepaint();
 }
 
 void SiteMapView::setLayerVisible(Layer layer, bool visible) {
@@ -260,17 +262,19 @@ void SiteMapView::onMachinesChanged(const QStringList& ids) {
             }
         }
     }
-    update();
+    requestDataRepaint();
 }
 
 void SiteMapView::onMachineRemoved(const QString& id) {
     m_trails.remove(id);
-    update();
+    requestDataRepaint();
 }
 
 // ---- painting ----
 
 void SiteMapView::paintEvent(QPaintEvent*) {
+    ++m_framesPainted;
+    m_lastPaint.start();
     QPainter p(this);
     paintScene(p, size());
 }
@@ -284,10 +288,11 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     m_viewSize = size;
     const qreal dpr = p.device() ? p.device()->devicePixelRatioF() : 1.0;
     ensureStaticLayer(size, dpr);
-    p.drawImage(QPointF(0, 0), m_static);
     const QRectF world = visibleWorld(size);
+    const bool trailsInBase = (m_layers & LayerTrails) && drawTrailsIntoBase(world, dpr);
+    p.drawImage(QPointF(0, 0), trailsInBase ? m_frameBase : m_static);
     p.setRenderHint(QPainter::Antialiasing, true);
-    if (m_layers & LayerTrails)
+    if ((m_layers & LayerTrails) && !trailsInBase)
         drawTrails(p, world);
     for (SiteMapOverlay* o : std::as_const(m_overlays))
         o->paintOverlay(p, *this);

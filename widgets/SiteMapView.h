@@ -15,9 +15,11 @@
 #include "widgets/MapLabelLayout.h"
 #include "widgets/MapSymbols.h"
 
+#include <QElapsedTimer>
 #include <QHash>
 #include <QImage>
 #include <QPointer>
+#include <QTimer>
 #include <QWidget>
 #include <deque>
 #include <memory>
@@ -148,6 +150,14 @@ public:
     };
     FrameStats lastFrame() const { return m_stats; }
 
+    // ---- Issue 19 §7: load (SiteMapViewPerf.cpp) ----
+    // Repaints caused by data (positions, staleness, own fix, pass counts) are coalesced to at most this
+    // rate (default 10 Hz: the fastest data rate); the operator's own actions (pan, zoom, hover, selection)
+    // repaint at once. 0 = no cap.
+    void setMaxDataFrameRate(double hz);
+    double maxDataFrameRate() const { return m_maxDataHz; }
+    int framesPainted() const { return m_framesPainted; } // paintEvent calls so far
+
 public slots:
     void passCountChanged();
     void setOwnFix(const ocu::OwnFix& fix);
@@ -214,6 +224,12 @@ private:
     void userTookOver() { m_autoFit = false; }
     bool clickEdgeIndicator(QPointF px);
     void drawBackgroundRaster(QPainter& p, const QSize& size);
+    // Issue 19 §7 (SiteMapViewPerf.cpp).
+    void requestDataRepaint();
+    const QImage& machineLabelImage(const QString& text, qreal dpr);
+    // Many trails (aliased 1 px): rasterised straight into a copy of the static layer, which is then blitted
+    // instead of it. False when the painter path is used instead (few trails: antialiased).
+    bool drawTrailsIntoBase(const QRectF& visibleWorld, qreal dpr);
 
     QPointer<FleetModel> m_fleet;
     QPointer<FleetSelection> m_selection;
@@ -269,6 +285,15 @@ private:
     quint64 m_backgroundRequest = 0;
     bool m_night = false;
     void dimStaticForNight(QPainter& p, const QSize& size);
+
+    // Issue 19 §7.
+    double m_maxDataHz = 10.0;
+    QTimer m_dataRepaint; // single shot: the next data-driven repaint when one came too soon
+    QElapsedTimer m_lastPaint;
+    int m_framesPainted = 0;
+    QHash<QString, QImage> m_machineLabels; // machine name label per text, at m_machineLabelsDpr
+    qreal m_machineLabelsDpr = 0;
+    QImage m_frameBase; // static layer + trails (drawTrailsIntoBase)
 };
 
 } // namespace ocu

@@ -12,6 +12,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPointer>
+#include <QSet>
 #include <QThreadPool>
 #include <algorithm>
 #include <cmath>
@@ -84,6 +85,13 @@ void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
     labels.reserve(std::min(n, 2048));
     QHash<int, int> edgeBins; // perimeter bin -> index in m_edges
     p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+    // The selected rows, once per frame (usually none or a few), instead of an id lookup per machine.
+    QSet<int> selectedRows;
+    if (m_selection)
+        for (const QString& id : m_selection->selectedIds())
+            if (const int row = m_fleet->rowOf(id); row >= 0)
+                selectedRows.insert(row);
+    const int currentRow = current.isEmpty() ? -1 : m_fleet->rowOf(current);
     for (int i = 0; i < n; ++i) {
         const MachineState& m = m_fleet->machineAt(i);
         if (!m.hasPosition)
@@ -139,12 +147,12 @@ void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
         }
         (void)world;
         ++drawn;
-        const bool isCurrent = !current.isEmpty() && m.id == current;
-        const bool selected = m_selection && (isCurrent || m_selection->isSelected(m.id));
+        const bool isCurrent = i == currentRow;
+        const bool selected = isCurrent || (!selectedRows.isEmpty() && selectedRows.contains(i));
         if (selected)
             highlighted.push_back(i);
         SymbolStyle style;
-        style.symbol = symbolForType(m.type);
+        style.symbol = m_symbols.symbolFor(m.type);
         style.status = status;
         style.stale = status == StatusCategory::Stale;
         style.ring = m.stop == StopState::Stopped                ? SymbolRing::Stopped
@@ -327,7 +335,7 @@ void SiteMapView::layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<Ma
         for (const MachineLabel& ml : machines) {
             const MachineState& m = m_fleet->machineAt(ml.row);
             const QString text = m.name.isEmpty() ? m.id : m.name;
-            const QImage img = labelImage(text, MapLabelLayout::Kind::Machine, Qt::black, dpr);
+            const QImage& img = machineLabelImage(text, dpr);
             const QSizeF sz = QSizeF(img.size()) / dpr;
             const double r = ml.radius + 2;
             const QPointF c = ml.centre;
@@ -349,6 +357,11 @@ void SiteMapView::layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<Ma
             }
         }
     }
+    // Road and area names are drawn after the machines: they also keep off the machine symbols (issue 19 §7
+    // screenshots: "Dumproad 2" was written across a truck).
+    for (const MachineLabel& ml : std::as_const(machines))
+        m_labels.block(
+            QRectF(ml.centre - QPointF(ml.radius, ml.radius), QSizeF(2 * ml.radius, 2 * ml.radius)));
     // Road and area names yield to machine labels and to each other.
     for (const MapLabelCandidate& cand : std::as_const(m_mapLabels)) {
         const QImage img = labelImage(cand.text, cand.kind, cand.colour, dpr);

@@ -49,8 +49,34 @@ int JausSubsystemModel::rowOf(std::uint16_t subsystem) const {
 void JausSubsystemModel::onVehicle(const JausVehicle& s) {
     const int row = rowOf(s.subsystem);
     if (row >= 0) {
+        // Only the cells that show something new (issue 19 §7): a pose report changes no cell here, and each
+        // dataChanged makes the table re-measure every row for its ResizeToContents columns.
+        const JausVehicle& o = m_rows[row];
+        const bool colour = rowColour(o) != rowColour(s);
+        bool changed[ColumnCount] = {};
+        changed[Vehicle] = o.callSign != s.callSign;
+        changed[Link] = o.linkText != s.linkText || o.link != s.link ||
+                        (o.lastMessageUnixMs > 0) != (s.lastMessageUnixMs > 0);
+        changed[Access] = o.access != s.access;
+        changed[Controller] = o.controlledByUs != s.controlledByUs || !(o.controller == s.controller) ||
+                              o.controllerAuthority != s.controllerAuthority;
+        changed[Management] = o.management != s.management || o.managementText != s.managementText ||
+                              o.emergency != s.emergency;
+        changed[Health] = o.health.has_value() != s.health.has_value() ||
+                          (o.health && s.health && o.health->severity != s.health->severity);
+        // The row's buttons (JausControlPanel::refreshButtons) follow the link, control and mobility
+        // component.
+        changed[Actions] = o.link != s.link || o.controlledByUs != s.controlledByUs ||
+                           !(o.mobilityComponent == s.mobilityComponent);
         m_rows[row] = s;
-        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+        int first = colour ? 0 : -1, last = colour ? ColumnCount - 1 : -1;
+        for (int c = 0; c < ColumnCount && !colour; ++c)
+            if (changed[c]) {
+                first = first < 0 ? c : first;
+                last = c;
+            }
+        if (first >= 0)
+            emit dataChanged(index(row, first), index(row, last));
         return;
     }
     int at = 0;

@@ -6,7 +6,9 @@
 #include "widgets/view3d/Site3DView.h"
 #include "widgets/view3d/SiteSceneRenderer.h"
 
+#include <QDockWidget>
 #include <QLabel>
+#include <QMainWindow>
 #include <QTabWidget>
 #include <QtTest>
 
@@ -93,6 +95,48 @@ private slots:
             QTest::qWait(60);
         }
         QCOMPARE(view->renderCount(), hidden);
+        QCOMPARE(feed.machinePushCount(), pushes);
+    }
+
+    // The console's layout: the 3D panel is a dock tabified behind the 2D map's dock. Such a dock stays
+    // isVisible() with nothing of it on screen and gets no hide event; the feed must still prepare nothing.
+    void dockTabBehindAnotherPreparesNothing() {
+        FleetModel fleet;
+        QMainWindow win;
+        win.resize(800, 600);
+        auto* front = new QDockWidget(QStringLiteral("2D"), &win);
+        front->setWidget(new QLabel(QStringLiteral("2D map stand-in")));
+        auto* back = new QDockWidget(QStringLiteral("3D"), &win);
+        auto* view = new Site3DView;
+        back->setWidget(view);
+        win.addDockWidget(Qt::LeftDockWidgetArea, front);
+        win.addDockWidget(Qt::LeftDockWidgetArea, back);
+        win.tabifyDockWidget(front, back);
+        front->raise();
+        Site3DFeed feed(view, &fleet, nullptr);
+        win.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&win));
+        for (int step = 0; step < 10; ++step) {
+            fleet.upsert(fleetAt(step));
+            QTest::qWait(60);
+        }
+        QVERIFY(view->visibleRegion().isEmpty());
+        QCOMPARE(feed.machinePushCount(), 0);
+        QCOMPARE(view->renderCount(), std::uint64_t(0));
+        // Raised: the current state goes out once and is drawn.
+        back->raise();
+        QTRY_VERIFY_WITH_TIMEOUT(feed.machinePushCount() >= 1, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(view->renderCount() > 0, 20000);
+        QTRY_COMPARE_WITH_TIMEOUT(view->sceneRenderer().scene().machines.size(), std::size_t(50), 5000);
+        // Behind the 2D map again: moves are not prepared.
+        front->raise();
+        QTRY_VERIFY(view->visibleRegion().isEmpty());
+        QTest::qWait(150);
+        const int pushes = feed.machinePushCount();
+        for (int step = 21; step < 30; ++step) {
+            fleet.upsert(fleetAt(step));
+            QTest::qWait(60);
+        }
         QCOMPARE(feed.machinePushCount(), pushes);
     }
 };

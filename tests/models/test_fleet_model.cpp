@@ -239,6 +239,62 @@ private slots:
         QCOMPARE(proxy.index(0, 0).data(FleetModel::IdRole).toString(), b.id);
     }
 
+    // Issue 19 §7: with a change interval, bursts of source changes reach the sort and the view as one merged
+    // dataChanged; the order follows the data once the merged change is handed over; rows pass at once.
+    void proxyThrottlesDataChangesIntoOneMergedBatch() {
+        FleetModel model;
+        model.setRefreshIntervalMs(0);
+        QVector<MachineState> ms;
+        for (int i = 0; i < 50; ++i)
+            ms.push_back(machine(QStringLiteral("iso23725:T%1").arg(i), i));
+        model.upsert(ms);
+        FleetFilterProxy proxy;
+        proxy.setChangeIntervalMs(3600 * 1000); // never by the timer in this test: flushChanges() hands over
+        proxy.setSourceModel(&model);
+        proxy.sort(FleetModel::ColEast, Qt::DescendingOrder);
+        QCOMPARE(proxy.index(0, 0).data(FleetModel::IdRole).toString(), QStringLiteral("iso23725:T49"));
+        QSignalSpy changed(&proxy, &QAbstractItemModel::dataChanged);
+        QSignalSpy layout(&proxy, &QAbstractItemModel::layoutChanged);
+        // 20 bursts of position updates: nothing reaches the view yet.
+        for (int round = 1; round <= 20; ++round) {
+            for (int i = 0; i < ms.size(); ++i)
+                ms[i].e = i + round * (i == 3 ? 100 : 1); // T3 overtakes everyone
+            model.upsert(ms);
+        }
+        QCOMPARE(changed.count(), 0);
+        QCOMPARE(layout.count(), 0);
+        QCOMPARE(proxy.changeBatches(), 0);
+        // A new machine is a row: it passes at once (and the pending rows are kept).
+        model.upsert({machine(QStringLiteral("jaus:7"), -5)});
+        QCOMPARE(proxy.rowCount(), 51);
+        proxy.flushChanges();
+        QCOMPARE(proxy.changeBatches(), 1);
+        QVERIFY(changed.count() + layout.count() >= 1);
+        QCOMPARE(proxy.index(0, 0).data(FleetModel::IdRole).toString(), QStringLiteral("iso23725:T3"));
+        QCOMPARE(proxy.index(0, FleetModel::ColEast).data(FleetModel::RawRole).toDouble(), 2003.0);
+        // Filtering on a state that changed while throttled sees the current data.
+        ms[10].stop = StopState::Stopped;
+        model.upsert({ms[10]});
+        proxy.flushChanges();
+        proxy.setStatuses({StatusCategory::FaultOrStopped});
+        QCOMPARE(proxy.rowCount(), 1);
+        // Without an interval every change passes at once again.
+        proxy.setStatuses({});
+        proxy.setChangeIntervalMs(0);
+        const int before = changed.count() + layout.count();
+        ms[0].e = 5000;
+        model.upsert({ms[0]});
+        QVERIFY(changed.count() + layout.count() > before);
+        QCOMPARE(proxy.index(0, 0).data(FleetModel::IdRole).toString(), QStringLiteral("iso23725:T0"));
+        // And the timer hands over by itself (no flushChanges call).
+        proxy.setChangeIntervalMs(20);
+        proxy.setSourceModel(&model);
+        proxy.sort(FleetModel::ColEast, Qt::DescendingOrder);
+        ms[1].e = 9000;
+        model.upsert({ms[1]});
+        QTRY_COMPARE(proxy.index(0, 0).data(FleetModel::IdRole).toString(), QStringLiteral("iso23725:T1"));
+    }
+
     void selectionIsSharedAndKeyedById() {
         FleetModel model;
         model.setRefreshIntervalMs(0);

@@ -8,6 +8,7 @@
 #include "widgets/SiteMapView.h"
 
 #include <QItemSelectionModel>
+#include <QPainter>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTest>
@@ -158,6 +159,76 @@ private slots:
         QVERIFY2(img.pixelColor(p).hsvSaturation() < 40 &&
                      !near(img.pixelColor(p), statusColor(StatusCategory::Ok), 40),
                  qPrintable(describe(img.pixelColor(p))));
+    }
+
+    // Issue 19 §7: repaints caused by data are coalesced to the capped rate; the operator's own actions
+    // repaint at once.
+    void dataRepaintsAreCoalescedToTheCappedRate() {
+        fleet->upsert({machine(QStringLiteral("jaus:1"), 0, 0)});
+        SiteMapView view;
+        view.resize(400, 300);
+        view.setFleet(fleet, selection);
+        view.setView({0, 0}, 2.0);
+        QCOMPARE(view.maxDataFrameRate(), 10.0); // the default: the fastest data rate
+        view.setMaxDataFrameRate(1.0 / 3600);    // one data-driven frame an hour: none during this test
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QTRY_VERIFY(view.framesPainted() > 0);
+        QCoreApplication::processEvents();
+        const int f0 = view.framesPainted();
+        for (int i = 1; i <= 30; ++i) {
+            fleet->upsert({machine(QStringLiteral("jaus:1"), i, 0)});
+            QCoreApplication::processEvents();
+        }
+        QCOMPARE(view.framesPainted(), f0);
+        // A zoom (the operator) paints at once, and shows the latest data.
+        view.zoomBy(1.25, {200, 150});
+        QTRY_COMPARE(view.framesPainted(), f0 + 1);
+        // No cap: the pending frame is painted, and every later change paints.
+        view.setMaxDataFrameRate(0);
+        QTRY_VERIFY(view.framesPainted() > f0 + 1);
+        QCoreApplication::processEvents();
+        const int f1 = view.framesPainted();
+        fleet->upsert({machine(QStringLiteral("jaus:1"), 50, 0)});
+        QTRY_VERIFY(view.framesPainted() > f1);
+    }
+
+    // Issue 19 §7: hundreds of trails are rasterised straight into a copy of the static layer; they are where
+    // the machines drove, and the static layer itself stays clean (they vanish with their machines).
+    void manyTrailsAreDrawnWhereTheMachinesDrove() {
+        SiteMapView view;
+        view.resize(400, 600);
+        view.setFleet(fleet, selection); // trails are collected from here on
+        QVector<MachineState> ms;
+        for (int i = 0; i < 250; ++i)
+            ms.push_back(machine(QStringLiteral("iso23725:T%1").arg(i), -100, i * 2.0, 90));
+        for (int k = 0; k <= 50; ++k) { // eastwards from E -100 to E 0
+            for (MachineState& m : ms)
+                m.e = -100 + 2.0 * k;
+            fleet->upsert(ms);
+        }
+        view.setLayerVisible(SiteMapView::LayerMachines, false); // nothing on top of the trails
+        view.setView({0, 249}, 1.0);                             // whole pixels: E -50 is x 150
+        QImage img(400, 600, QImage::Format_RGB32);
+        auto paint = [&] {
+            QPainter p(&img);
+            view.paintScene(p, img.size());
+        };
+        paint();
+        const QColor trail(0x55, 0x55, 0x88);
+        for (int i : {0, 1, 100, 249}) {
+            const QPoint at = view.worldToScreen({-50, i * 2.0}).toPoint();
+            QCOMPARE(img.pixelColor(at), trail);
+            QVERIFY2(img.pixelColor(at + QPoint(0, 1)) != trail, qPrintable(describe(img.pixelColor(at))));
+            // Only where the machine drove: not ahead of it.
+            QVERIFY(img.pixelColor(view.worldToScreen({30, i * 2.0}).toPoint()) != trail);
+        }
+        QStringList ids;
+        for (const MachineState& m : ms)
+            ids << m.id;
+        fleet->remove(ids);
+        paint();
+        QVERIFY(img.pixelColor(view.worldToScreen({-50, 0}).toPoint()) != trail);
     }
 
     void selectionIsSharedBetweenListAndMap() {

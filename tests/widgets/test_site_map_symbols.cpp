@@ -220,6 +220,36 @@ private slots:
         QCOMPARE(overlaps(v.labelPlacements(), nullptr), 0);
     }
 
+    // A road name is drawn after the machines: it keeps off a machine symbol on the road and moves along it.
+    void roadNamesKeepOffMachineSymbols() {
+        SiteMapData map;
+        QVector<QPointF> diag;
+        for (int k = 0; k <= 10; ++k)
+            diag.push_back({-100 + 20.0 * k, -100 + 20.0 * k});
+        map.features << road(QStringLiteral("3"), QStringLiteral("Crusher road"), diag);
+        SiteMapView v;
+        v.setFleet(fleet, selection);
+        v.setSiteMap(map);
+        v.setView({0, 0}, 3.0);
+        v.setLayerVisible(SiteMapView::LayerLabels, false); // machine names elsewhere would hide the effect
+        paint(v);
+        QCOMPARE(v.labelPlacements().size(), 1);
+        const QRectF first = v.labelPlacements().front().rect;
+        // A truck right where the name was.
+        const QPointF at = v.screenToWorld(first.center());
+        fleet->upsert({machine(QStringLiteral("iso23725:T1"), at.x(), at.y(), 45)});
+        paint(v);
+        const QPointF c = v.worldToScreen(at);
+        const QSizeF fp = MapSymbolCache::footprintPx(12, 7, v.scale());
+        const double r = std::max(fp.width(), fp.height()) / 2;
+        const QRectF symbol(c - QPointF(r, r), QSizeF(2 * r, 2 * r));
+        QCOMPARE(v.labelPlacements().size(), 1); // still named, further along the road
+        QVERIFY2(!v.labelPlacements().front().rect.intersects(symbol),
+                 qPrintable(QStringLiteral("label at %1,%2")
+                                .arg(v.labelPlacements().front().rect.x())
+                                .arg(v.labelPlacements().front().rect.y())));
+    }
+
     void followKeepsSelectedMachineInView() {
         fleet->upsert({machine(QStringLiteral("jaus:1"), 0, 0), machine(QStringLiteral("jaus:2"), 50, 50)});
         SiteMapView v;

@@ -138,6 +138,29 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(hasService(), 10000);
     }
 
+    // Issue 19 §7: a pose report changes no cell of the table, so it must not make the table re-measure its
+    // rows (ResizeToContents): the model signals only cells that show something new.
+    void poseReportsChangeNoCell() {
+        Site s;
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(accessOf(win.control, 126), QString("NOT_CONTROLLED"), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            win.control->controlButton(126) && win.control->controlButton(126)->isEnabled(), 10000);
+        QSignalSpy updates(s.bridge.get(), &JausVehicleBridge::subsystemUpdated);
+        QSignalSpy changed(win.control->model(), &QAbstractItemModel::dataChanged);
+        const QString before = win.control->model()->index(0, JausSubsystemModel::Access).data().toString();
+        QTRY_VERIFY_WITH_TIMEOUT(updates.count() >= 20, 20000);
+        int rowChanges = 0;
+        for (const auto& args : changed) // the 1 s data-age refresh (Link column only) is not a row change
+            if (args.at(0).value<QModelIndex>().column() != JausSubsystemModel::Link ||
+                args.at(1).value<QModelIndex>().column() != JausSubsystemModel::Link)
+                ++rowChanges;
+        QVERIFY2(
+            rowChanges * 4 < updates.count(),
+            qPrintable(QStringLiteral("%1 row changes for %2 reports").arg(rowChanges).arg(updates.count())));
+        QCOMPARE(win.control->model()->index(0, JausSubsystemModel::Access).data().toString(), before);
+    }
+
     // Issue 19 §6: the details pane says what to do when nothing is selected and shows the selected machine
     // of any protocol (JAUS: the vehicle details; others: the fleet picture's details).
     void detailsPaneHintAndAnyProtocol() {
