@@ -645,6 +645,7 @@ void SiteMapView::changeEvent(QEvent* e) {
         if (night != m_night) {
             m_night = night;
             m_labelImages.clear();
+            m_machineLabels.clear(); // keyed by text only: their colours follow the palette
             invalidateStatic();
             update();
         }
