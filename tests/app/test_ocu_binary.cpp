@@ -18,6 +18,7 @@ class TestOcuBinary : public QObject {
         env.remove("DISPLAY"); // headless: no X server at all
         env.insert("QT_QPA_PLATFORM", "offscreen");
         env.insert("XDG_CONFIG_HOME", m_dir.path()); // never touch the user's saved layout
+        env.insert("XDG_CACHE_HOME", m_dir.path());  // the map tile cache (issue 19 §3) too
         p.setProcessEnvironment(env);
         p.start(OCU_BINARY, args);
         Run r;

@@ -95,6 +95,7 @@ class TestOcuExit : public QObject {
         env.remove(QStringLiteral("DISPLAY"));
         env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
         env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config"))); // no layout
+        env.insert(QStringLiteral("XDG_CACHE_HOME"), dir.filePath(QStringLiteral("cache")));   // map tiles
         ocu.setProcessEnvironment(env);
         QStringList args{QStringLiteral("--config"), cfg, QStringLiteral("--no-sim")};
         if (headless)
