@@ -139,10 +139,12 @@ std::vector<StationBin> coverageByStation(const PassCountSnapshot& snap, const S
     std::vector<StationBin> out;
     if (!(step > 0) || !(to > from) || !std::isfinite(from) || !std::isfinite(to) || (to - from) / step > 1e6)
         return out;
-    for (double s = from; s < to - 1e-9; s += step) {
+    // A last piece under 1 % of a step (rounding of the design's geometry) joins the range before it.
+    const auto n = static_cast<std::int64_t>(std::ceil((to - from) / step - 0.01));
+    for (std::int64_t k = 0; k < n; ++k) {
         StationBin b;
-        b.from = s;
-        b.to = std::min(to, s + step);
+        b.from = from + double(k) * step;
+        b.to = k + 1 == n ? to : std::min(to, b.from + step);
         const LocalRing ring = stationBandRing(pointAt, b.from, b.to, offsetLeft, offsetRight, sample);
         if (!ring.empty())
             b.stats = coverageInRings(snap, {ring}, lift);
