@@ -16,6 +16,7 @@
 #include <ogr_spatialref.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <mutex>
@@ -268,9 +269,10 @@ QString writeCoverageCsv(const CoverageJob& job, const CoverageFrames& frames, i
     tag("lift", liftName(snap, lift));
     if (!area.isEmpty())
         tag("area", area);
-    head +=
-        "easting,northing,latitude,longitude,lift,lift-bottom,lift-top,pass-count,target-status,incomplete,"
-        "cell-x,cell-y\n";
+    for (int i = 0; i < snap.liftCount(); ++i)
+        tag(QStringLiteral("lift-%1").arg(i + 1).toUtf8().constData(),
+            QStringLiteral("z %1 .. %2 m").arg(snap.liftBottom(i), 0, 'f', 3).arg(snap.liftTop(i), 0, 'f', 3));
+    head += "easting,northing,lift,pass-count,target-status,incomplete,cell-x,cell-y\n";
     f.write(head);
 
     std::vector<int> lifts;
@@ -300,67 +302,97 @@ QString writeCoverageCsv(const CoverageJob& job, const CoverageFrames& frames, i
     };
 
     qint64 rows = 0;
-    std::vector<double> xs, ys, es, ns, lats, lons;
-    struct Cell {
-        std::int32_t cx, cy;
-        int count;
-        bool inc;
+    // Tile by tile of the top view (every cell with a count in any lift is in it): each cell's position goes
+    // through the geodetic position and PROJ once, then one row per lift asked for.
+    const bool top = lifts.size() == 1 && (lifts[0] < 0 || lifts[0] >= snap.liftCount());
+    auto findTile = [&](int l, std::int32_t tx, std::int32_t ty) -> const osyris::PassCountTile* {
+        const auto& v = snap.tiles(l);
+        auto it = std::lower_bound(v.begin(), v.end(), std::pair{ty, tx}, [](const auto& e, const auto& k) {
+            return std::pair{e.ty, e.tx} < k;
+        });
+        return it != v.end() && it->tx == tx && it->ty == ty ? it->tile.get() : nullptr;
     };
-    std::vector<Cell> cells;
-    char line[320];
-    for (int l : lifts) {
-        // A tile's worth at a time: batch conversion through PROJ.
-        const auto& entries = snap.tiles(l);
-        const bool top = l < 0 || l >= snap.liftCount();
-        const QByteArray liftNo = top ? QByteArray("top") : QByteArray::number(l + 1);
-        const QByteArray bottom = top ? QByteArray() : QByteArray::number(snap.liftBottom(l), 'f', 3);
-        const QByteArray topZ = top ? QByteArray() : QByteArray::number(snap.liftTop(l), 'f', 3);
-        for (const auto& e : entries) {
-            cells.clear();
-            const std::int32_t x0 = e.tx * osyris::kTileSize, y0 = e.ty * osyris::kTileSize;
-            for (int i = 0; i < osyris::kTileCells; ++i) {
-                const int c = e.tile->counts[std::size_t(i)];
-                const std::int32_t cx = x0 + (i & (osyris::kTileSize - 1)),
-                                   cy = y0 + (i >> osyris::kTileBits);
-                const bool inc = snap.anyIncomplete() && snap.incompleteAtCell(cx, cy);
-                if ((c == 0 && !(top && inc)) || !inArea(cx, cy))
+    std::vector<double> xs, ys, es, ns, lats, lons;
+    std::vector<int> idx;
+    std::vector<const osyris::PassCountTile*> liftTiles(lifts.size());
+    QByteArray block;
+    char num[64];
+    auto put = [&](double v, int prec) {
+        auto [end, ec] = std::to_chars(num, num + sizeof num, v, std::chars_format::fixed, prec);
+        block.append(num, int(end - num));
+    };
+    auto putInt = [&](long long v) {
+        auto [end, ec] = std::to_chars(num, num + sizeof num, v);
+        block.append(num, int(end - num));
+    };
+    std::vector<QByteArray> liftNo;
+    for (int l : lifts)
+        liftNo.push_back(l < 0 || l >= snap.liftCount() ? QByteArray("top") : QByteArray::number(l + 1));
+    for (const auto& e : snap.tiles(-1)) {
+        bool any = false;
+        for (std::size_t k = 0; k < lifts.size(); ++k) {
+            liftTiles[k] = top ? e.tile.get() : findTile(lifts[k], e.tx, e.ty);
+            any = any || liftTiles[k];
+        }
+        if (!any)
+            continue;
+        const auto* flags =
+            snap.anyIncomplete() ? static_cast<const osyris::PassCountTopTile*>(e.tile.get()) : nullptr;
+        idx.clear();
+        const std::int32_t x0 = e.tx * osyris::kTileSize, y0 = e.ty * osyris::kTileSize;
+        for (int i = 0; i < osyris::kTileCells; ++i) {
+            bool has = flags && top && (flags->flags[std::size_t(i)] & osyris::kCellIncomplete);
+            for (std::size_t k = 0; k < lifts.size() && !has; ++k)
+                has = liftTiles[k] && liftTiles[k]->counts[std::size_t(i)] > 0;
+            if (has && inArea(x0 + (i & (osyris::kTileSize - 1)), y0 + (i >> osyris::kTileBits)))
+                idx.push_back(i);
+        }
+        if (idx.empty())
+            continue;
+        const std::size_t n = idx.size();
+        xs.resize(n);
+        ys.resize(n);
+        es.resize(n);
+        ns.resize(n);
+        lats.resize(n);
+        lons.resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            xs[k] = (x0 + (idx[k] & (osyris::kTileSize - 1)) + 0.5) * cs;
+            ys[k] = (y0 + (idx[k] >> osyris::kTileBits) + 0.5) * cs;
+        }
+        if (!frames.localToProjected(xs.data(), ys.data(), n, es.data(), ns.data(), lats.data(), lons.data()))
+            return tr("PROJ could not convert a cell to EPSG:%1").arg(frames.epsg());
+        block.clear();
+        for (std::size_t k = 0; k < n; ++k) {
+            const int i = idx[k];
+            const bool inc = flags && (flags->flags[std::size_t(i)] & osyris::kCellIncomplete);
+            for (std::size_t l = 0; l < lifts.size(); ++l) {
+                const int c = liftTiles[l] ? liftTiles[l]->counts[std::size_t(i)] : 0;
+                if (c == 0 && !(top && inc))
                     continue;
-                cells.push_back({cx, cy, c, inc});
-            }
-            if (cells.empty())
-                continue;
-            const std::size_t n = cells.size();
-            xs.resize(n);
-            ys.resize(n);
-            es.resize(n);
-            ns.resize(n);
-            lats.resize(n);
-            lons.resize(n);
-            for (std::size_t k = 0; k < n; ++k) {
-                xs[k] = (cells[k].cx + 0.5) * cs;
-                ys[k] = (cells[k].cy + 0.5) * cs;
-            }
-            if (!frames.localToProjected(xs.data(), ys.data(), n, es.data(), ns.data(), lats.data(),
-                                         lons.data()))
-                return tr("PROJ could not convert a cell to EPSG:%1").arg(frames.epsg());
-            QByteArray block;
-            block.reserve(int(n * 110));
-            for (std::size_t k = 0; k < n; ++k) {
-                const int c = cells[k].count;
                 const char* status = c == 0                  ? "none"
                                      : c < snap.targetMin()  ? "under"
                                      : c <= snap.targetMax() ? "at"
                                                              : "over";
-                const int len = std::snprintf(
-                    line, sizeof line, "%.4f,%.4f,%.9f,%.9f,%s,%s,%s,%d,%s,%d,%d,%d\n", es[k], ns[k], lats[k],
-                    lons[k], liftNo.constData(), bottom.constData(), topZ.constData(), c, status,
-                    cells[k].inc ? 1 : 0, cells[k].cx, cells[k].cy);
-                block.append(line, len);
+                put(es[k], 4);
+                block.append(',');
+                put(ns[k], 4);
+                block.append(',');
+                block.append(liftNo[l]);
+                block.append(',');
+                putInt(c);
+                block.append(',');
+                block.append(status);
+                block.append(inc ? ",1," : ",0,");
+                putInt(x0 + (i & (osyris::kTileSize - 1)));
+                block.append(',');
+                putInt(y0 + (i >> osyris::kTileBits));
+                block.append('\n');
+                ++rows;
             }
-            rows += qint64(n);
-            if (f.write(block) != block.size())
-                return tr("cannot write %1: %2").arg(path, f.errorString());
         }
+        if (f.write(block) != block.size())
+            return tr("cannot write %1: %2").arg(path, f.errorString());
     }
     if (!f.commit())
         return tr("cannot write %1: %2").arg(path, f.errorString());

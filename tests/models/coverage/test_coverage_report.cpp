@@ -146,16 +146,16 @@ private slots:
             const auto v = split(line);
             QCOMPARE(v.size(), columns.size());
             const double e = v[0].toDouble(), n = v[1].toDouble();
-            const int lift = v[4].toInt() - 1;
-            const int count = v[7].toInt();
-            const int cx = v[10].toInt(), cy = v[11].toInt();
+            const int lift = v[2].toInt() - 1;
+            const int count = v[3].toInt();
+            const int cx = v[6].toInt(), cy = v[7].toInt();
             double lat = 0, lon = 0;
             QVERIFY(back->toGeographic(e, n, lat, lon));
             const EnuPoint p = ws.toLocal({lat, lon, ws.origin().alt});
             worst = std::max(worst, std::hypot(p.e - (cx + 0.5) * h.cell, p.n - (cy + 0.5) * h.cell));
             QCOMPARE(count, countIn(h, lift, cx, cy));
-            QCOMPARE(v[8], QByteArray(count < 3 ? "under" : count <= 5 ? "at" : "over"));
-            QCOMPARE(v[9], QByteArray(cx >= h.incFrom && cx < h.incTo ? "1" : "0"));
+            QCOMPARE(v[4], QByteArray(count < 3 ? "under" : count <= 5 ? "at" : "over"));
+            QCOMPARE(v[5], QByteArray(cx >= h.incFrom && cx < h.incTo ? "1" : "0"));
             ++perLift[lift];
             ++rows;
         }
