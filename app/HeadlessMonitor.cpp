@@ -330,6 +330,19 @@ bool HeadlessMonitor::isStopAll(const QByteArray& raw) {
     return name == QLatin1String("stop_all");
 }
 
+// Issue 17: commands of other parts of the console, by name.
+static QHash<QString, HeadlessMonitor::LocalCommand>& localCommands() {
+    static QHash<QString, HeadlessMonitor::LocalCommand> commands;
+    return commands;
+}
+
+void HeadlessMonitor::setLocalCommand(const QString& name, LocalCommand f) {
+    if (f)
+        localCommands().insert(name, std::move(f));
+    else
+        localCommands().remove(name);
+}
+
 QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
     return handleLine(raw, nullptr);
 }
@@ -387,6 +400,17 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
     if (name == QLatin1String("assign") || name == QLatin1String("reset_assignment") ||
         name == QLatin1String("production"))
         return dispatchCommand(name, cmd);
+    if (const auto local = localCommands().find(name); local != localCommands().end()) { // issue 17
+        QJsonObject o = local.value()(cmd);
+        o[QStringLiteral("type")] = QStringLiteral("result");
+        o[QStringLiteral("cmd")] = name;
+        if (cmd.contains(QStringLiteral("req")))
+            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
+        writeLine(o);
+        QByteArray out = QJsonDocument(o).toJson(QJsonDocument::Compact);
+        emit commandHandled(out);
+        return out;
+    }
     if (name == QLatin1String("shift_report")) { // issue 15 §4 (app/ShiftReportCommand.h)
         ShiftReportRequest r{cmd.value(QStringLiteral("pdf")).toString(),
                              cmd.value(QStringLiteral("csv")).toString(), std::nullopt,

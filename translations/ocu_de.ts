@@ -1750,4 +1750,399 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <translation>vor</translation>
     </message>
 </context>
+<context>
+    <name>ocu::CompactionPanel</name>
+    <message>
+        <source>Lift:</source>
+        <translation>Lage:</translation>
+    </message>
+    <message>
+        <source>Top view</source>
+        <translation>Draufsicht</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>Covered %</source>
+        <translation>Überfahren %</translation>
+    </message>
+    <message>
+        <source>At target %</source>
+        <translation>Im Ziel %</translation>
+    </message>
+    <message>
+        <source>Under %</source>
+        <translation>Unter Ziel %</translation>
+    </message>
+    <message>
+        <source>Over %</source>
+        <translation>Über Ziel %</translation>
+    </message>
+    <message>
+        <source>Incomplete</source>
+        <translation>Unvollständig</translation>
+    </message>
+    <message>
+        <source>Draw area</source>
+        <translation>Fläche zeichnen</translation>
+    </message>
+    <message>
+        <source>Draw a compaction area on the 2D map: click to add points, Enter closes, Esc cancels</source>
+        <translation>Eine Verdichtungsfläche in der 2D-Karte zeichnen: Klick setzt Punkte, Enter schließt, Esc bricht ab</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Coverage report…</source>
+        <translation>Abdeckungsbericht…</translation>
+    </message>
+    <message>
+        <source>PDF, Veta-style CSV and GeoTIFF of the pass counts, in the site's projected CRS</source>
+        <translation>PDF, CSV im Veta-Stil und GeoTIFF der Übergangszahlen im projizierten KBS der Baustelle</translation>
+    </message>
+    <message>
+        <source>Cancel drawing</source>
+        <translation>Zeichnen abbrechen</translation>
+    </message>
+    <message>
+        <source>Area "%1" removed.</source>
+        <translation>Fläche „%1“ entfernt.</translation>
+    </message>
+    <message>
+        <source>Design: %1 — %2 alignment(s), %3 boundary(ies)%4</source>
+        <translation>Entwurf: %1 — %2 Achse(n), %3 Begrenzung(en)%4</translation>
+    </message>
+    <message>
+        <source> · %1 warning(s): %2</source>
+        <translation> · %1 Warnung(en): %2</translation>
+    </message>
+    <message>
+        <source>No design loaded (site configuration "compaction": {"design": …}).</source>
+        <translation>Kein Entwurf geladen (Baustellenkonfiguration "compaction": {"design": …}).</translation>
+    </message>
+    <message>
+        <source>Lift %1 (z %2 … %3 m)</source>
+        <translation>Lage %1 (z %2 … %3 m)</translation>
+    </message>
+    <message>
+        <source>%1 (design)</source>
+        <translation>%1 (Entwurf)</translation>
+    </message>
+    <message>
+        <source>New compaction area</source>
+        <translation>Neue Verdichtungsfläche</translation>
+    </message>
+    <message>
+        <source>Name of the area:</source>
+        <translation>Name der Fläche:</translation>
+    </message>
+    <message>
+        <source>Area %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <source>Area "%1" saved to %2.</source>
+        <translation>Fläche „%1“ gespeichert in %2.</translation>
+    </message>
+    <message>
+        <source>Coverage report not written.</source>
+        <translation>Abdeckungsbericht nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>Written: %1 (%2.*).</source>
+        <translation>Geschrieben: %1 (%2.*).</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>Fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Coverage report</source>
+        <translation>Abdeckungsbericht</translation>
+    </message>
+    <message>
+        <source>coverage-report.pdf</source>
+        <translation>abdeckungsbericht.pdf</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CompactionMapOverlay</name>
+    <message>
+        <source>New area: click to add points · Enter or double click closes · Backspace undoes · Esc cancels</source>
+        <translation>Neue Fläche: Klick setzt Punkte · Enter oder Doppelklick schließt · Rücktaste nimmt zurück · Esc bricht ab</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CompactionSession</name>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 MiB</source>
+        <translation>%1 ist größer als %2 MiB</translation>
+    </message>
+    <message>
+        <source>the design names no EPSG code (CoordinateSystem/@epsgCode): it cannot be placed on the map</source>
+        <translation>der Entwurf nennt keinen EPSG-Code (CoordinateSystem/@epsgCode): er kann nicht in die Karte gelegt werden</translation>
+    </message>
+    <message>
+        <source>an area needs a name</source>
+        <translation>eine Fläche braucht einen Namen</translation>
+    </message>
+    <message>
+        <source>an area needs at least 3 points</source>
+        <translation>eine Fläche braucht mindestens 3 Punkte</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON (%2): areas not saved</source>
+        <translation>%1 ist kein gültiges JSON (%2): Flächen nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>no OSYRIS station in this console: no pass counts to report</source>
+        <translation>keine OSYRIS-Station in dieser Konsole: keine Übergangszahlen für einen Bericht</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CoverageReport</name>
+    <message>
+        <source>every lift</source>
+        <translation>jede Lage</translation>
+    </message>
+    <message>
+        <source>top view (top-most lift per cell)</source>
+        <translation>Draufsicht (oberste Lage je Zelle)</translation>
+    </message>
+    <message>
+        <source>lift %1 (z %2 … %3 m)</source>
+        <translation>Lage %1 (z %2 … %3 m)</translation>
+    </message>
+    <message>
+        <source>no pass counts yet</source>
+        <translation>noch keine Übergangszahlen</translation>
+    </message>
+    <message>
+        <source>no area named "%1"</source>
+        <translation>keine Fläche namens „%1“</translation>
+    </message>
+    <message>
+        <source>the design names no EPSG code: station ranges cannot be placed</source>
+        <translation>der Entwurf nennt keinen EPSG-Code: Stationsbereiche können nicht verortet werden</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>PROJ could not convert a cell to EPSG:%1</source>
+        <translation>PROJ konnte eine Zelle nicht nach EPSG:%1 umrechnen</translation>
+    </message>
+    <message>
+        <source>Passes</source>
+        <translation>Übergänge</translation>
+    </message>
+    <message>
+        <source> (target)</source>
+        <translation> (Ziel)</translation>
+    </message>
+    <message>
+        <source>incomplete</source>
+        <translation>unvollständig</translation>
+    </message>
+    <message>
+        <source>vibration on only</source>
+        <translation>nur mit Vibration</translation>
+    </message>
+    <message>
+        <source>vibration off only</source>
+        <translation>nur ohne Vibration</translation>
+    </message>
+    <message>
+        <source>vibration on or off</source>
+        <translation>mit oder ohne Vibration</translation>
+    </message>
+    <message>
+        <source>forward passes only</source>
+        <translation>nur Vorwärtsfahrten</translation>
+    </message>
+    <message>
+        <source>backward passes only</source>
+        <translation>nur Rückwärtsfahrten</translation>
+    </message>
+    <message>
+        <source>both directions</source>
+        <translation>beide Richtungen</translation>
+    </message>
+    <message>
+        <source>speed %1 … %2 m/s</source>
+        <translation>Geschwindigkeit %1 … %2 m/s</translation>
+    </message>
+    <message>
+        <source>time %1 … %2</source>
+        <translation>Zeit %1 … %2</translation>
+    </message>
+    <message>
+        <source>machines %1 only</source>
+        <translation>nur Maschinen %1</translation>
+    </message>
+    <message>
+        <source>Compaction coverage report</source>
+        <translation>Verdichtungs-Abdeckungsbericht</translation>
+    </message>
+    <message>
+        <source>Compaction coverage report — %1</source>
+        <translation>Verdichtungs-Abdeckungsbericht — %1</translation>
+    </message>
+    <message>
+        <source>Written %1 · %2 · cell %3 m · target %4–%5 passes</source>
+        <translation>Erstellt %1 · %2 · Zelle %3 m · Ziel %4–%5 Übergänge</translation>
+    </message>
+    <message>
+        <source>CRS: EPSG:%1 (%2) · design: %3</source>
+        <translation>KBS: EPSG:%1 (%2) · Entwurf: %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Machines: %1 · data %2</source>
+        <translation>Maschinen: %1 · Daten %2</translation>
+    </message>
+    <message>
+        <source>none known</source>
+        <translation>keine bekannt</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <source>time range not known</source>
+        <translation>Zeitraum unbekannt</translation>
+    </message>
+    <message>
+        <source>Filters: %1</source>
+        <translation>Filter: %1</translation>
+    </message>
+    <message>
+        <source>%1: z %2 … %3 m</source>
+        <translation>%1: z %2 … %3 m</translation>
+    </message>
+    <message>
+        <source>Lifts (thickness %1): %2</source>
+        <translation>Lagen (Dicke %1): %2</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>machine %1: %2 slot ranges</source>
+        <translation>Maschine %1: %2 Slot-Bereiche</translation>
+    </message>
+    <message>
+        <source>INCOMPLETE: %1 cells may be under-counted: ribbon data that never arrived was given up (%2). Their counts are lower bounds.</source>
+        <translation>UNVOLLSTÄNDIG: %1 Zellen sind möglicherweise zu niedrig gezählt: nie eingetroffene Ribbon-Daten wurden aufgegeben (%2). Ihre Zahlen sind Untergrenzen.</translation>
+    </message>
+    <message>
+        <source>Complete: every ribbon slot of every machine was received; no cell is marked incomplete.</source>
+        <translation>Vollständig: jeder Ribbon-Slot jeder Maschine ist eingetroffen; keine Zelle ist als unvollständig markiert.</translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>covered %</source>
+        <translation>überfahren %</translation>
+    </message>
+    <message>
+        <source>under %</source>
+        <translation>unter %</translation>
+    </message>
+    <message>
+        <source>at %</source>
+        <translation>im Ziel %</translation>
+    </message>
+    <message>
+        <source>over %</source>
+        <translation>über %</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>Statistics per area</source>
+        <translation>Statistik je Fläche</translation>
+    </message>
+    <message>
+        <source>All counted cells</source>
+        <translation>Alle gezählten Zellen</translation>
+    </message>
+    <message>
+        <source>Cells belong to an area when their centre lies inside it. covered = at least one pass; under/at/over the target as % of the area's cells; min/mean/max over covered cells.</source>
+        <translation>Zellen gehören zu einer Fläche, wenn ihr Mittelpunkt darin liegt. überfahren = mindestens ein Übergang; unter/im/über Ziel in % der Zellen der Fläche; min/Mittel/max über die überfahrenen Zellen.</translation>
+    </message>
+    <message>
+        <source>Statistics per station range — %1, %2 m left to %3 m right of the centre line</source>
+        <translation>Statistik je Stationsbereich — %1, %2 m links bis %3 m rechts der Achse</translation>
+    </message>
+    <message>
+        <source>Stations</source>
+        <translation>Stationen</translation>
+    </message>
+    <message>
+        <source>coverage report written</source>
+        <translation>Abdeckungsbericht geschrieben</translation>
+    </message>
+    <message>
+        <source>give "pdf", "csv" and/or "geotiff" (file names)</source>
+        <translation>"pdf", "csv" und/oder "geotiff" angeben (Dateinamen)</translation>
+    </message>
+    <message>
+        <source>no pass counts yet (no OSYRIS station, or nothing counted)</source>
+        <translation>noch keine Übergangszahlen (keine OSYRIS-Station oder nichts gezählt)</translation>
+    </message>
+    <message>
+        <source>no lift %1 (the data has %2)</source>
+        <translation>keine Lage %1 (die Daten haben %2)</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Compaction design not loaded: %1</source>
+        <translation>Verdichtungsentwurf nicht geladen: %1</translation>
+    </message>
+</context>
 </TS>

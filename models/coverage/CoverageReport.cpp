@@ -270,8 +270,9 @@ QString writeCoverageCsv(const CoverageJob& job, const CoverageFrames& frames, i
     if (!area.isEmpty())
         tag("area", area);
     for (int i = 0; i < snap.liftCount(); ++i)
-        tag(QStringLiteral("lift-%1").arg(i + 1).toUtf8().constData(),
-            QStringLiteral("z %1 .. %2 m").arg(snap.liftBottom(i), 0, 'f', 3).arg(snap.liftTop(i), 0, 'f', 3));
+        tag(QStringLiteral("lift-%1").arg(i + 1).toUtf8().constData(), QStringLiteral("z %1 .. %2 m")
+                                                                           .arg(snap.liftBottom(i), 0, 'f', 3)
+                                                                           .arg(snap.liftTop(i), 0, 'f', 3));
     head += "easting,northing,lift,pass-count,target-status,incomplete,cell-x,cell-y\n";
     f.write(head);
 
