@@ -637,7 +637,7 @@ QImage renderCoverageMap(const CoverageJob& job, const CoverageFrames& frames, i
     }
     // Legend (top right) and scale bar (bottom left).
     QFont f = p.font();
-    f.setPixelSize(std::max(12, size.height() / 60));
+    f.setPixelSize(std::max(12, size.height() / 38));
     p.setFont(f);
     const int lh = p.fontMetrics().height();
     const QStringList labels{QStringLiteral("1"), QStringLiteral("2"), QStringLiteral("3"),
@@ -648,6 +648,7 @@ QImage renderCoverageMap(const CoverageJob& job, const CoverageFrames& frames, i
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(255, 255, 255, 225));
     p.drawRect(legend);
+    p.setBrush(Qt::NoBrush);
     p.setPen(Qt::black);
     p.drawText(QRect(legend.left() + 6, legend.top() + 2, lw, lh), Qt::AlignLeft | Qt::AlignVCenter,
                tr("Passes"));
@@ -880,7 +881,7 @@ QString writeCoveragePdf(const CoverageJob& job, const CoverageFrames& frames, c
 
     const QStringList header{tr("Area"),   tr("m²"),  tr("covered %"), tr("under %"), tr("at %"),
                              tr("over %"), tr("min"), tr("mean"),      tr("max"),     tr("incomplete")};
-    const QVector<double> widths{0.26, 0.09, 0.09, 0.08, 0.08, 0.08, 0.07, 0.08, 0.07, 0.10};
+    const QVector<double> widths{0.19, 0.08, 0.11, 0.09, 0.08, 0.09, 0.06, 0.08, 0.06, 0.13};
     w.heading(tr("Statistics per area"), 11);
     QVector<QStringList> rows;
     rows << statsRow(tr("All counted cells"), t.whole);
