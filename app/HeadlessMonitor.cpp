@@ -300,6 +300,19 @@ bool HeadlessMonitor::isStopAll(const QByteArray& raw) {
     return name == QLatin1String("stop_all");
 }
 
+// Issue 17: commands of other parts of the console, by name.
+static QHash<QString, HeadlessMonitor::LocalCommand>& localCommands() {
+    static QHash<QString, HeadlessMonitor::LocalCommand> commands;
+    return commands;
+}
+
+void HeadlessMonitor::setLocalCommand(const QString& name, LocalCommand f) {
+    if (f)
+        localCommands().insert(name, std::move(f));
+    else
+        localCommands().remove(name);
+}
+
 QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
     return handleLine(raw, nullptr);
 }
@@ -357,8 +370,8 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
     if (name == QLatin1String("assign") || name == QLatin1String("reset_assignment") ||
         name == QLatin1String("production"))
         return dispatchCommand(name, cmd);
-    if (name == QLatin1String("auto_dispatch")) { // issue 15 §5 (models/AutoDispatcher.h)
-        QJsonObject o = AutoDispatcher::command(m_gate->bridges(), cmd, origin);
+    // Commands answered in this process (no gate round trip): the result line as the command's reply.
+    const auto localResult = [&](QJsonObject o) {
         o[QStringLiteral("type")] = QStringLiteral("result");
         o[QStringLiteral("cmd")] = name;
         if (cmd.contains(QStringLiteral("req")))
@@ -367,7 +380,11 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
         QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
         emit commandHandled(line);
         return line;
-    }
+    };
+    if (name == QLatin1String("auto_dispatch")) // issue 15 §5 (models/AutoDispatcher.h)
+        return localResult(AutoDispatcher::command(m_gate->bridges(), cmd, origin));
+    if (const auto local = localCommands().find(name); local != localCommands().end()) // issue 17
+        return localResult(local.value()(cmd));
     if (name == QLatin1String("shift_report")) { // issue 15 §4 (app/ShiftReportCommand.h)
         ShiftReportRequest r{cmd.value(QStringLiteral("pdf")).toString(),
                              cmd.value(QStringLiteral("csv")).toString(), std::nullopt,

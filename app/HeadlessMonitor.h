@@ -30,6 +30,8 @@
 //   written)
 //   {"cmd":"auto_dispatch","on":true|false} (without "on": the state): the automatic dispatcher (issue 15
 //   §5, models/AutoDispatcher.h); result "on", "dispatchers":[{"bridge","on","sent","last"}]
+//   {"cmd":"coverage_report","pdf":"c.pdf","csv":"c.csv","geotiff":"c.tif","area":"Lot 1","lift":-1}
+//   (issue 17, models/coverage/CompactionSession; result "written":{"pdf","csv","geotiff"}, "errors")
 //   {"cmd":"counters"}: one result line with every stack's counters per link (issue 14 §6):
 //     {"type":"result","cmd":"counters","ok":true,"message":"3 links","links":[{"protocol":"osyris",
 //      "link":"osyris:239.255.0.1:5000","rejected_total":4,"rejected":{"rejected.too_short":3,
@@ -80,6 +82,10 @@ public:
     void setRateLimitMs(int ms);
     int rateLimitMs() const { return m_rateMs; }
     void addBridge(FleetBridge* bridge);
+    // Issue 17: commands answered by another part of the console (e.g. "coverage_report" by the compaction
+    // session): f(cmd) returns the result's fields ("ok", "message", ...). GUI thread; remove when gone.
+    using LocalCommand = std::function<QJsonObject(const QJsonObject&)>;
+    static void setLocalCommand(const QString& name, LocalCommand f); // an empty f removes it
     // Commands a protocol module adds (e.g. JAUS request_control): routed to the bridge of the machine named
     // by "id" (or of the "protocol"), and answered with "missing \"id\"" when both are absent.
     void addProtocolCommands(const QStringList& names);

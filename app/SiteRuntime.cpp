@@ -2,6 +2,9 @@
 #include "app/ShiftReportCommand.h"
 
 #include "app/ConsoleApp.h"
+#ifdef OCU_HAVE_COVERAGE
+#include "app/CompactionSetup.h"
+#endif
 #include "app/LogRouting.h"
 #include "app/MainWindow.h"
 #include "app/ProtocolModule.h"
@@ -41,6 +44,8 @@
 
 namespace ocu {
 
+class CompactionSession; // issue 17
+
 struct SiteRuntime::Impl {
     GeoFrame frame;
     std::unique_ptr<sim::SimulatedSite> sim;
@@ -50,6 +55,7 @@ struct SiteRuntime::Impl {
     recording::Recorder* recorder = nullptr; // issue 16: the flight recorder of this run
     QStringList startProblems;
     bool stopped = false;
+    CompactionSession* compaction = nullptr; // issue 17 (app/CompactionSetup)
 
     // The site map: what the bridges offer (today the ISO 23725 AHS map), in module order.
     SiteMapData mergedMap() const {
@@ -114,6 +120,9 @@ QString SiteRuntime::start() {
         if (!e.isEmpty())
             d.startProblems << e;
     }
+#ifdef OCU_HAVE_COVERAGE
+    d.compaction = startCompaction(m_config, d.frame, d.passLayer(), this, &d.startProblems);
+#endif
     d.own = new OwnPosition(d.frame, this);
     const auto& op = m_config.ownPosition;
     if (op.source == "system")
@@ -190,6 +199,9 @@ void SiteRuntime::stop() {
     if (d.stopped)
         return;
     d.stopped = true;
+#ifdef OCU_HAVE_COVERAGE
+    stopCompaction(d.compaction);
+#endif
     // Stacks first (JAUS releases control after zero drive commands), then the simulators.
     for (const auto& m : d.modules)
         m->stop();
@@ -310,6 +322,9 @@ void SiteRuntime::populate(MainWindow& window) {
                           QStringLiteral("gui")));
     }
     window.setPanelWidget(Panel::Site3D, view3d);
+#ifdef OCU_HAVE_COVERAGE
+    attachCompaction3D(d.compaction, view3d); // issue 17
+#endif
 #else
     QObject* feed = nullptr;
     window.setPanelWidget(Panel::Site3D,
@@ -318,7 +333,11 @@ void SiteRuntime::populate(MainWindow& window) {
 
     auto* passPanel = new PassCountPanel;
     passPanel->setLayer(d.passLayer());
+#ifdef OCU_HAVE_COVERAGE
+    window.setPanelWidget(Panel::PassCounts, buildCompactionGui(d.compaction, map, passPanel));
+#else
     window.setPanelWidget(Panel::PassCounts, passPanel);
+#endif
     connect(passPanel, &PassCountPanel::paletteChanged, map, &SiteMapView::setPassPalette);
     connect(passPanel, &PassCountPanel::targetChanged, map, &SiteMapView::setPassTarget);
 #ifdef OCU_HAVE_OCU_VIEW3D

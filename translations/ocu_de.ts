@@ -58,11 +58,11 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>Unerwartetes Argument: %1</translation>
     </message>
     <message>
-        <source>--view: unknown view &quot;%1&quot;; use all, %2</source>
+        <source>--view: unknown view "%1"; use all, %2</source>
         <translation>--view: unbekannte Ansicht „%1“; zulässig: all, %2</translation>
     </message>
     <message>
-        <source>--size: expected WxH such as 1600x1000, got &quot;%1&quot;</source>
+        <source>--size: expected WxH such as 1600x1000, got "%1"</source>
         <translation>--size: WxH erwartet, z. B. 1600x1000, erhalten: „%1“</translation>
     </message>
     <message>
@@ -70,15 +70,15 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>--size: %1 liegt außerhalb von 320x240 .. 8192x8192</translation>
     </message>
     <message>
-        <source>--settle: expected seconds between 0 and 3600, got &quot;%1&quot;</source>
+        <source>--settle: expected seconds between 0 and 3600, got "%1"</source>
         <translation>--settle: Sekunden zwischen 0 und 3600 erwartet, erhalten: „%1“</translation>
     </message>
     <message>
-        <source>--lang: &quot;%1&quot; is not one of en, de, fr</source>
+        <source>--lang: "%1" is not one of en, de, fr</source>
         <translation>--lang: „%1“ ist nicht en, de oder fr</translation>
     </message>
     <message>
-        <source>--duration: expected seconds &gt;= 0, got &quot;%1&quot;</source>
+        <source>--duration: expected seconds &gt;= 0, got "%1"</source>
         <translation>--duration: Sekunden &gt;= 0 erwartet, erhalten: „%1“</translation>
     </message>
     <message>
@@ -117,15 +117,19 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <source>Production</source>
         <translation>Produktion</translation>
     </message>
+    <message>
+        <source>Compaction design not loaded: %1</source>
+        <translation>Verdichtungsentwurf nicht geladen: %1</translation>
+    </message>
 </context>
 <context>
     <name>Screenshot</name>
     <message>
-        <source>unknown view &quot;%1&quot;</source>
+        <source>unknown view "%1"</source>
         <translation>unbekannte Ansicht „%1“</translation>
     </message>
     <message>
-        <source>nothing to grab for view &quot;%1&quot;</source>
+        <source>nothing to grab for view "%1"</source>
         <translation>nichts aufzunehmen für Ansicht „%1“</translation>
     </message>
     <message>
@@ -353,8 +357,8 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <source>&lt;b style=&apos;color:#d01010&apos;&gt;%1 unacknowledged&lt;/b&gt;</source>
-        <translation>&lt;b style=&apos;color:#d01010&apos;&gt;%1 nicht quittiert&lt;/b&gt;</translation>
+        <source>&lt;b style='color:#d01010'&gt;%1 unacknowledged&lt;/b&gt;</source>
+        <translation>&lt;b style='color:#d01010'&gt;%1 nicht quittiert&lt;/b&gt;</translation>
     </message>
     <message>
         <source>no open alarms</source>
@@ -401,8 +405,8 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>Einen Alarm wählen, um die Einzelheiten zu sehen: die zusammengefassten Maschinen, wer ihn quittiert oder zurückgestellt hat und wann.</translation>
     </message>
     <message>
-        <source>&lt;b style=&apos;color:#d01010&apos;&gt;ALARM FLOOD: %1 alarms / 10 min&lt;/b&gt;</source>
-        <translation>&lt;b style=&apos;color:#d01010&apos;&gt;ALARMFLUT: %1 Alarme / 10 min&lt;/b&gt;</translation>
+        <source>&lt;b style='color:#d01010'&gt;ALARM FLOOD: %1 alarms / 10 min&lt;/b&gt;</source>
+        <translation>&lt;b style='color:#d01010'&gt;ALARMFLUT: %1 Alarme / 10 min&lt;/b&gt;</translation>
     </message>
     <message>
         <source>%1 alarms / 10 min</source>
@@ -719,7 +723,7 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>Gesamtstopp Remove an AHS %1 gesendet</translation>
     </message>
     <message>
-        <source>%1: unknown ISO 23725 link &quot;%2&quot;</source>
+        <source>%1: unknown ISO 23725 link "%2"</source>
         <translation>%1: unbekannte ISO 23725-Verbindung „%2“</translation>
     </message>
     <message>
@@ -735,8 +739,8 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>Karte von %1 angefordert</translation>
     </message>
     <message>
-        <source>reset_assignment: &quot;id&quot; must name an ISO 23725 machine</source>
-        <translation>reset_assignment: &quot;id&quot; muss eine ISO 23725-Maschine bezeichnen</translation>
+        <source>reset_assignment: "id" must name an ISO 23725 machine</source>
+        <translation>reset_assignment: "id" muss eine ISO 23725-Maschine bezeichnen</translation>
     </message>
     <message>
         <source>assignment reset sent</source>
@@ -813,7 +817,7 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>diese Konsole (%1)</translation>
     </message>
     <message>
-        <source>%1 refused: this console&apos;s JAUS role is MONITOR</source>
+        <source>%1 refused: this console's JAUS role is MONITOR</source>
         <translation>%1: abgelehnt, JAUS-Rolle dieser Konsole ist MONITOR</translation>
     </message>
     <message>
@@ -864,8 +868,8 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>Steuerung auf allen Subsystemen freigegeben</translation>
     </message>
     <message>
-        <source>%1: &quot;id&quot; must name a JAUS machine such as &quot;jaus:101&quot;</source>
-        <translation>%1: &quot;id&quot; muss eine JAUS-Maschine bezeichnen, z. B. &quot;jaus:101&quot;</translation>
+        <source>%1: "id" must name a JAUS machine such as "jaus:101"</source>
+        <translation>%1: "id" muss eine JAUS-Maschine bezeichnen, z. B. "jaus:101"</translation>
     </message>
     <message>
         <source>ReleaseControl sent to %1</source>
@@ -892,12 +896,12 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>Reset gesendet</translation>
     </message>
     <message>
-        <source>drive: &quot;mode&quot; must be &quot;velocity&quot; or &quot;effort&quot;</source>
-        <translation>drive: &quot;mode&quot; muss &quot;velocity&quot; oder &quot;effort&quot; sein</translation>
+        <source>drive: "mode" must be "velocity" or "effort"</source>
+        <translation>drive: "mode" muss "velocity" oder "effort" sein</translation>
     </message>
     <message>
-        <source>drive: &quot;duration&quot; must be between 0 and 60 seconds</source>
-        <translation>drive: &quot;duration&quot; muss zwischen 0 und 60 Sekunden liegen</translation>
+        <source>drive: "duration" must be between 0 and 60 seconds</source>
+        <translation>drive: "duration" muss zwischen 0 und 60 Sekunden liegen</translation>
     </message>
     <message>
         <source>drive: effort must be within ±100 %</source>
@@ -935,7 +939,7 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <translation>Steuern</translation>
     </message>
     <message>
-        <source>Request control with this console&apos;s authority</source>
+        <source>Request control with this console's authority</source>
         <translation>Steuerung mit der Autorität dieser Konsole anfordern</translation>
     </message>
     <message>
@@ -1357,7 +1361,7 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <translation>Meldung von Station %1: %2</translation>
     </message>
     <message>
-        <source>OSYRIS has no remote stop: STOP message sent to every machine&apos;s display</source>
+        <source>OSYRIS has no remote stop: STOP message sent to every machine's display</source>
         <translation>OSYRIS hat keinen Fern-Stopp: STOP-Meldung an das Display jeder Maschine gesendet</translation>
     </message>
     <message>
@@ -1373,16 +1377,16 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <translation>%1: OSYRIS-Maschinen haben keinen Stoppzustand zum Aufheben</translation>
     </message>
     <message>
-        <source>send_text: &quot;text&quot; must be 1 to 80 bytes (CmMsg)</source>
-        <translation>send_text: &quot;text&quot; muss 1 bis 80 Bytes lang sein (CmMsg)</translation>
+        <source>send_text: "text" must be 1 to 80 bytes (CmMsg)</source>
+        <translation>send_text: "text" muss 1 bis 80 Bytes lang sein (CmMsg)</translation>
     </message>
     <message>
         <source>message sent to every station</source>
         <translation>Meldung an alle Stationen gesendet</translation>
     </message>
     <message>
-        <source>ping: &quot;idx&quot; must be a station index 0-253</source>
-        <translation>ping: &quot;idx&quot; muss ein Stationsindex 0-253 sein</translation>
+        <source>ping: "idx" must be a station index 0-253</source>
+        <translation>ping: "idx" muss ein Stationsindex 0-253 sein</translation>
     </message>
     <message>
         <source>PING sent to station %1</source>
@@ -1431,8 +1435,8 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <translation>Keine Überfahrtsdaten</translation>
     </message>
     <message>
-        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%1&apos;&gt;■&lt;/span&gt; below %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%4&apos;&gt;■&lt;/span&gt; within %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%8&apos;&gt;■&lt;/span&gt; above %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;covered area&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%1&apos;&gt;■&lt;/span&gt; unter %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%4&apos;&gt;■&lt;/span&gt; im Soll %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%8&apos;&gt;■&lt;/span&gt; über %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;abgedeckte Fläche&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style='color:%1'&gt;■&lt;/span&gt; below %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style='color:%4'&gt;■&lt;/span&gt; within %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style='color:%8'&gt;■&lt;/span&gt; above %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;covered area&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style='color:%1'&gt;■&lt;/span&gt; unter %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style='color:%4'&gt;■&lt;/span&gt; im Soll %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style='color:%8'&gt;■&lt;/span&gt; über %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;abgedeckte Fläche&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
     <message>
         <source>Passes</source>
@@ -2139,6 +2143,394 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>stale</source>
         <translation>veraltet</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CompactionPanel</name>
+    <message>
+        <source>Lift:</source>
+        <translation>Lage:</translation>
+    </message>
+    <message>
+        <source>Top view</source>
+        <translation>Draufsicht</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>Covered %</source>
+        <translation>Überfahren %</translation>
+    </message>
+    <message>
+        <source>At target %</source>
+        <translation>Im Ziel %</translation>
+    </message>
+    <message>
+        <source>Under %</source>
+        <translation>Unter Ziel %</translation>
+    </message>
+    <message>
+        <source>Over %</source>
+        <translation>Über Ziel %</translation>
+    </message>
+    <message>
+        <source>Incomplete</source>
+        <translation>Unvollständig</translation>
+    </message>
+    <message>
+        <source>Draw area</source>
+        <translation>Fläche zeichnen</translation>
+    </message>
+    <message>
+        <source>Draw a compaction area on the 2D map: click to add points, Enter closes, Esc cancels</source>
+        <translation>Eine Verdichtungsfläche in der 2D-Karte zeichnen: Klick setzt Punkte, Enter schließt, Esc bricht ab</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Coverage report…</source>
+        <translation>Abdeckungsbericht…</translation>
+    </message>
+    <message>
+        <source>PDF, Veta-style CSV and GeoTIFF of the pass counts, in the site's projected CRS</source>
+        <translation>PDF, CSV im Veta-Stil und GeoTIFF der Übergangszahlen im projizierten KBS der Baustelle</translation>
+    </message>
+    <message>
+        <source>Cancel drawing</source>
+        <translation>Zeichnen abbrechen</translation>
+    </message>
+    <message>
+        <source>Area "%1" removed.</source>
+        <translation>Fläche „%1“ entfernt.</translation>
+    </message>
+    <message>
+        <source>Design: %1 — %2 alignment(s), %3 boundary(ies)%4</source>
+        <translation>Entwurf: %1 — %2 Achse(n), %3 Begrenzung(en)%4</translation>
+    </message>
+    <message>
+        <source> · %1 warning(s): %2</source>
+        <translation> · %1 Warnung(en): %2</translation>
+    </message>
+    <message>
+        <source>No design loaded (site configuration "compaction": {"design": …}).</source>
+        <translation>Kein Entwurf geladen (Baustellenkonfiguration "compaction": {"design": …}).</translation>
+    </message>
+    <message>
+        <source>Lift %1 (z %2 … %3 m)</source>
+        <translation>Lage %1 (z %2 … %3 m)</translation>
+    </message>
+    <message>
+        <source>%1 (design)</source>
+        <translation>%1 (Entwurf)</translation>
+    </message>
+    <message>
+        <source>New compaction area</source>
+        <translation>Neue Verdichtungsfläche</translation>
+    </message>
+    <message>
+        <source>Name of the area:</source>
+        <translation>Name der Fläche:</translation>
+    </message>
+    <message>
+        <source>Area %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <source>Area "%1" saved to %2.</source>
+        <translation>Fläche „%1“ gespeichert in %2.</translation>
+    </message>
+    <message>
+        <source>Coverage report not written.</source>
+        <translation>Abdeckungsbericht nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>Written: %1 (%2.*).</source>
+        <translation>Geschrieben: %1 (%2.*).</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>Fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Coverage report</source>
+        <translation>Abdeckungsbericht</translation>
+    </message>
+    <message>
+        <source>coverage-report.pdf</source>
+        <translation>abdeckungsbericht.pdf</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CompactionMapOverlay</name>
+    <message>
+        <source>New area: click to add points · Enter or double click closes · Backspace undoes · Esc cancels</source>
+        <translation>Neue Fläche: Klick setzt Punkte · Enter oder Doppelklick schließt · Rücktaste nimmt zurück · Esc bricht ab</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CompactionSession</name>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 MiB</source>
+        <translation>%1 ist größer als %2 MiB</translation>
+    </message>
+    <message>
+        <source>the design names no EPSG code (CoordinateSystem/@epsgCode): it cannot be placed on the map</source>
+        <translation>der Entwurf nennt keinen EPSG-Code (CoordinateSystem/@epsgCode): er kann nicht in die Karte gelegt werden</translation>
+    </message>
+    <message>
+        <source>an area needs a name</source>
+        <translation>eine Fläche braucht einen Namen</translation>
+    </message>
+    <message>
+        <source>an area needs at least 3 points</source>
+        <translation>eine Fläche braucht mindestens 3 Punkte</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON (%2): areas not saved</source>
+        <translation>%1 ist kein gültiges JSON (%2): Flächen nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>no OSYRIS station in this console: no pass counts to report</source>
+        <translation>keine OSYRIS-Station in dieser Konsole: keine Übergangszahlen für einen Bericht</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CoverageReport</name>
+    <message>
+        <source>every lift</source>
+        <translation>jede Lage</translation>
+    </message>
+    <message>
+        <source>top view (top-most lift per cell)</source>
+        <translation>Draufsicht (oberste Lage je Zelle)</translation>
+    </message>
+    <message>
+        <source>lift %1 (z %2 … %3 m)</source>
+        <translation>Lage %1 (z %2 … %3 m)</translation>
+    </message>
+    <message>
+        <source>no pass counts yet</source>
+        <translation>noch keine Übergangszahlen</translation>
+    </message>
+    <message>
+        <source>no area named "%1"</source>
+        <translation>keine Fläche namens „%1“</translation>
+    </message>
+    <message>
+        <source>the design names no EPSG code: station ranges cannot be placed</source>
+        <translation>der Entwurf nennt keinen EPSG-Code: Stationsbereiche können nicht verortet werden</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>PROJ could not convert a cell to EPSG:%1</source>
+        <translation>PROJ konnte eine Zelle nicht nach EPSG:%1 umrechnen</translation>
+    </message>
+    <message>
+        <source>Passes</source>
+        <translation>Übergänge</translation>
+    </message>
+    <message>
+        <source> (target)</source>
+        <translation> (Ziel)</translation>
+    </message>
+    <message>
+        <source>incomplete</source>
+        <translation>unvollständig</translation>
+    </message>
+    <message>
+        <source>vibration on only</source>
+        <translation>nur mit Vibration</translation>
+    </message>
+    <message>
+        <source>vibration off only</source>
+        <translation>nur ohne Vibration</translation>
+    </message>
+    <message>
+        <source>vibration on or off</source>
+        <translation>mit oder ohne Vibration</translation>
+    </message>
+    <message>
+        <source>forward passes only</source>
+        <translation>nur Vorwärtsfahrten</translation>
+    </message>
+    <message>
+        <source>backward passes only</source>
+        <translation>nur Rückwärtsfahrten</translation>
+    </message>
+    <message>
+        <source>both directions</source>
+        <translation>beide Richtungen</translation>
+    </message>
+    <message>
+        <source>speed %1 … %2 m/s</source>
+        <translation>Geschwindigkeit %1 … %2 m/s</translation>
+    </message>
+    <message>
+        <source>time %1 … %2</source>
+        <translation>Zeit %1 … %2</translation>
+    </message>
+    <message>
+        <source>machines %1 only</source>
+        <translation>nur Maschinen %1</translation>
+    </message>
+    <message>
+        <source>Compaction coverage report</source>
+        <translation>Verdichtungs-Abdeckungsbericht</translation>
+    </message>
+    <message>
+        <source>Compaction coverage report — %1</source>
+        <translation>Verdichtungs-Abdeckungsbericht — %1</translation>
+    </message>
+    <message>
+        <source>Written %1 · %2 · cell %3 m · target %4–%5 passes</source>
+        <translation>Erstellt %1 · %2 · Zelle %3 m · Ziel %4–%5 Übergänge</translation>
+    </message>
+    <message>
+        <source>CRS: EPSG:%1 (%2) · design: %3</source>
+        <translation>KBS: EPSG:%1 (%2) · Entwurf: %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Machines: %1 · data %2</source>
+        <translation>Maschinen: %1 · Daten %2</translation>
+    </message>
+    <message>
+        <source>none known</source>
+        <translation>keine bekannt</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <source>time range not known</source>
+        <translation>Zeitraum unbekannt</translation>
+    </message>
+    <message>
+        <source>Filters: %1</source>
+        <translation>Filter: %1</translation>
+    </message>
+    <message>
+        <source>%1: z %2 … %3 m</source>
+        <translation>%1: z %2 … %3 m</translation>
+    </message>
+    <message>
+        <source>Lifts (thickness %1): %2</source>
+        <translation>Lagen (Dicke %1): %2</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>machine %1: %2 slot ranges</source>
+        <translation>Maschine %1: %2 Slot-Bereiche</translation>
+    </message>
+    <message>
+        <source>INCOMPLETE: %1 cells may be under-counted: ribbon data that never arrived was given up (%2). Their counts are lower bounds.</source>
+        <translation>UNVOLLSTÄNDIG: %1 Zellen sind möglicherweise zu niedrig gezählt: nie eingetroffene Ribbon-Daten wurden aufgegeben (%2). Ihre Zahlen sind Untergrenzen.</translation>
+    </message>
+    <message>
+        <source>Complete: every ribbon slot of every machine was received; no cell is marked incomplete.</source>
+        <translation>Vollständig: jeder Ribbon-Slot jeder Maschine ist eingetroffen; keine Zelle ist als unvollständig markiert.</translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>covered %</source>
+        <translation>überfahren %</translation>
+    </message>
+    <message>
+        <source>under %</source>
+        <translation>unter %</translation>
+    </message>
+    <message>
+        <source>at %</source>
+        <translation>im Ziel %</translation>
+    </message>
+    <message>
+        <source>over %</source>
+        <translation>über %</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>Statistics per area</source>
+        <translation>Statistik je Fläche</translation>
+    </message>
+    <message>
+        <source>All counted cells</source>
+        <translation>Alle gezählten Zellen</translation>
+    </message>
+    <message>
+        <source>Cells belong to an area when their centre lies inside it. covered = at least one pass; under/at/over the target as % of the area's cells; min/mean/max over covered cells.</source>
+        <translation>Zellen gehören zu einer Fläche, wenn ihr Mittelpunkt darin liegt. überfahren = mindestens ein Übergang; unter/im/über Ziel in % der Zellen der Fläche; min/Mittel/max über die überfahrenen Zellen.</translation>
+    </message>
+    <message>
+        <source>Statistics per station range — %1, %2 m left to %3 m right of the centre line</source>
+        <translation>Statistik je Stationsbereich — %1, %2 m links bis %3 m rechts der Achse</translation>
+    </message>
+    <message>
+        <source>Stations</source>
+        <translation>Stationen</translation>
+    </message>
+    <message>
+        <source>coverage report written</source>
+        <translation>Abdeckungsbericht geschrieben</translation>
+    </message>
+    <message>
+        <source>give "pdf", "csv" and/or "geotiff" (file names)</source>
+        <translation>"pdf", "csv" und/oder "geotiff" angeben (Dateinamen)</translation>
+    </message>
+    <message>
+        <source>no pass counts yet (no OSYRIS station, or nothing counted)</source>
+        <translation>noch keine Übergangszahlen (keine OSYRIS-Station oder nichts gezählt)</translation>
+    </message>
+    <message>
+        <source>no lift %1 (the data has %2)</source>
+        <translation>keine Lage %1 (die Daten haben %2)</translation>
     </message>
 </context>
 </TS>

@@ -62,7 +62,21 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
     o.passCount.targetMax = static_cast<int>(c.integer("targetMax", 5, 1, 100));
     if (o.passCount.targetMin > o.passCount.targetMax)
         c.error("targetMin", "must not exceed targetMax");
-    o.passCount.vibrationOnly = c.boolean("vibrationOnly", true);
+    const bool vibrationOnly = c.boolean("vibrationOnly", true);
+    const std::string vib = c.choice("vibration", vibrationOnly ? "on" : "any", {"on", "off", "any"});
+    o.passCount.vibration = vib == "on"    ? VibrationFilter::On
+                            : vib == "off" ? VibrationFilter::Off
+                                           : VibrationFilter::Any;
+    // Lifts and filters (issue 17 §2).
+    o.passCount.liftThickness = c.number("liftThicknessM", 0, 0, 100);
+    o.passCount.liftBase = c.number("liftBaseM", 0, -20000, 20000);
+    if (c.has("speedMinMps"))
+        o.passCount.speedMin = c.number("speedMinMps", 0, 0, 1000);
+    if (c.has("speedMaxMps"))
+        o.passCount.speedMax = c.number("speedMaxMps", 0, 0, 1000);
+    // Late join and gaps (issue 17 §4).
+    o.gapGiveUpNaks = static_cast<int>(c.integer("gapGiveUpNaks", o.gapGiveUpNaks, 0, 1000));
+    o.gapGiveUpMs = static_cast<int>(c.number("gapGiveUpSeconds", o.gapGiveUpMs / 1000.0, 0, 86400) * 1000);
     std::string dir = c.choice("direction", "any", {"any", "forward", "backward"});
     o.passCount.direction = dir == "forward"    ? DirectionFilter::Forward
                             : dir == "backward" ? DirectionFilter::Backward

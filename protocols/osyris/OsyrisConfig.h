@@ -67,6 +67,12 @@ struct OsyrisConfig {
     // machine at 10 Hz, the widest range an ALIVE may announce; 2^24 = four such ribbons.
     std::uint64_t maxRibbonSlots = std::uint64_t(1) << 22;
     std::uint64_t maxStoreSlots = std::uint64_t(1) << 24;
+    // Late join and gaps (issue 17 §4): the slots a ribbon's pass counting waits for are given up as
+    // unobtainable (counted without, their cells marked incomplete) once this station asked for them
+    // gapGiveUpNaks times, or gapGiveUpMs after counting first stopped at them, whichever comes first
+    // (0 = that rule off).
+    int gapGiveUpNaks = 5;
+    int gapGiveUpMs = 120000;
     // Pass-count snapshots for the GUI: at most one per this many ms (and per Beat), only after a change.
     int passCountPublishMs = 100;
 };

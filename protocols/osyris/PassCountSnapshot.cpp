@@ -48,10 +48,51 @@ PassCountSummary summarizeTiles(std::span<const PassCountTile* const> tiles, dou
     return s;
 }
 
+namespace {
+
+const PassCountTile* findIn(const std::vector<PassCountSnapshot::Entry>& v, std::int32_t tx,
+                            std::int32_t ty) {
+    auto it = std::lower_bound(
+        v.begin(), v.end(), std::pair(tx, ty),
+        [](const PassCountSnapshot::Entry& e, const std::pair<std::int32_t, std::int32_t>& k) {
+            return before(e, k.first, k.second);
+        });
+    return it != v.end() && it->tx == tx && it->ty == ty ? it->tile.get() : nullptr;
+}
+
+} // namespace
+
 PassCountSnapshot::PassCountSnapshot(std::vector<Entry> tiles, double cellSize, int targetMin, int targetMax,
                                      std::uint64_t sequence, std::uint64_t clearedAt)
-    : m_tiles(std::move(tiles)), m_cellSize(cellSize), m_targetMin(targetMin), m_targetMax(targetMax),
-      m_sequence(sequence), m_clearedAt(clearedAt) {
+    : m_tiles(std::move(tiles)), m_sequence(sequence), m_clearedAt(clearedAt) {
+    m_settings.cellSize = cellSize;
+    m_settings.targetMin = targetMin;
+    m_settings.targetMax = targetMax;
+    if (!m_tiles.empty())
+        m_lifts.push_back({0, 0, 0, m_tiles});
+    init();
+}
+
+PassCountSnapshot::PassCountSnapshot(std::vector<Entry> top, std::vector<Lift> lifts,
+                                     const PassCountSettings& settings, std::uint64_t sequence,
+                                     std::uint64_t clearedAt,
+                                     std::map<std::uint8_t, std::vector<SlotRange>> givenUp)
+    : m_tiles(std::move(top)), m_lifts(std::move(lifts)), m_settings(settings), m_sequence(sequence),
+      m_clearedAt(clearedAt), m_topHasFlags(true), m_givenUp(std::move(givenUp)) {
+    init();
+    for (const auto& e : m_tiles) {
+        const auto* t = static_cast<const PassCountTopTile*>(e.tile.get());
+        for (auto f : t->flags)
+            if (f & kCellIncomplete) {
+                m_anyIncomplete = true;
+                break;
+            }
+        if (m_anyIncomplete)
+            break;
+    }
+}
+
+void PassCountSnapshot::init() {
     if (m_tiles.empty())
         return;
     std::int32_t tx0 = INT_MAX, tx1 = INT_MIN;
@@ -64,25 +105,54 @@ PassCountSnapshot::PassCountSnapshot(std::vector<Entry> tiles, double cellSize, 
                 m_tiles.back().ty * kTileSize + kTileSize - 1};
 }
 
-const PassCountTile* PassCountSnapshot::tile(std::int32_t tx, std::int32_t ty) const {
-    auto it = std::lower_bound(m_tiles.begin(), m_tiles.end(), std::pair(tx, ty),
-                               [](const Entry& e, const std::pair<std::int32_t, std::int32_t>& k) {
-                                   return before(e, k.first, k.second);
-                               });
-    return it != m_tiles.end() && it->tx == tx && it->ty == ty ? it->tile.get() : nullptr;
+GridRect PassCountSnapshot::bounds() const {
+    if (m_tiles.empty())
+        return {};
+    const double cs = m_settings.cellSize;
+    return {m_extent.cx0 * cs, m_extent.cy0 * cs, (m_extent.cx1 + 1) * cs, (m_extent.cy1 + 1) * cs};
 }
 
-int PassCountSnapshot::countAtCell(std::int32_t cx, std::int32_t cy) const {
-    const PassCountTile* t = tile(cx >> kTileBits, cy >> kTileBits);
+double PassCountSnapshot::liftBottom(int l) const {
+    return l >= 0 && l < liftCount() ? m_lifts[static_cast<std::size_t>(l)].bottom : 0.0;
+}
+
+double PassCountSnapshot::liftTop(int l) const {
+    return l >= 0 && l < liftCount() ? m_lifts[static_cast<std::size_t>(l)].top : 0.0;
+}
+
+const PassCountSnapshot::Lift* PassCountSnapshot::lift(int l) const {
+    return l >= 0 && l < liftCount() ? &m_lifts[static_cast<std::size_t>(l)] : nullptr;
+}
+
+const std::vector<PassCountSnapshot::Entry>& PassCountSnapshot::tiles(int l) const {
+    if (l < 0 || l >= liftCount())
+        return m_tiles;
+    return m_lifts[static_cast<std::size_t>(l)].tiles;
+}
+
+const PassCountTile* PassCountSnapshot::tile(std::int32_t tx, std::int32_t ty) const {
+    return findIn(m_tiles, tx, ty);
+}
+
+int PassCountSnapshot::countAtCell(std::int32_t cx, std::int32_t cy, int l) const {
+    const PassCountTile* t = findIn(tiles(l), cx >> kTileBits, cy >> kTileBits);
     return t ? t->counts[cellOffset(cx, cy)] : 0;
 }
 
-void PassCountSnapshot::countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows,
-                                     PassCount* out) const {
+bool PassCountSnapshot::incompleteAtCell(std::int32_t cx, std::int32_t cy) const {
+    if (!m_topHasFlags || !m_anyIncomplete)
+        return false;
+    const auto* t = static_cast<const PassCountTopTile*>(tile(cx >> kTileBits, cy >> kTileBits));
+    return t && (t->flags[cellOffset(cx, cy)] & kCellIncomplete);
+}
+
+void PassCountSnapshot::countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows, PassCount* out,
+                                     int l) const {
     if (cols <= 0 || rows <= 0)
         return;
     std::fill_n(out, std::size_t(cols) * std::size_t(rows), PassCount(0));
-    if (m_tiles.empty())
+    const auto& entries = tiles(l);
+    if (entries.empty())
         return;
     // Tile by tile: a binary search per tile row, then row segments copied out of each covered tile.
     const std::int64_t cx1 = std::int64_t(cx0) + cols - 1, cy1 = std::int64_t(cy0) + rows - 1;
@@ -92,9 +162,9 @@ void PassCountSnapshot::countsInRect(std::int32_t cx0, std::int32_t cy0, int col
                ty1 = static_cast<std::int32_t>(cy1 >> kTileBits);
     for (std::int64_t ty = ty0; ty <= ty1; ++ty) {
         const auto tyi = static_cast<std::int32_t>(ty);
-        auto it = std::lower_bound(m_tiles.begin(), m_tiles.end(), tx0,
+        auto it = std::lower_bound(entries.begin(), entries.end(), tx0,
                                    [tyi](const Entry& e, std::int32_t tx) { return before(e, tx, tyi); });
-        for (; it != m_tiles.end() && it->ty == tyi && it->tx <= tx1; ++it) {
+        for (; it != entries.end() && it->ty == tyi && it->tx <= tx1; ++it) {
             const std::int64_t tcx0 = std::int64_t(it->tx) * kTileSize, tcy0 = ty * kTileSize;
             const std::int64_t xa = std::max<std::int64_t>(cx0, tcx0),
                                xb = std::min<std::int64_t>(cx1, tcx0 + kTileSize - 1);
@@ -112,17 +182,18 @@ void PassCountSnapshot::countsInRect(std::int32_t cx0, std::int32_t cy0, int col
     }
 }
 
-PassCountSummary PassCountSnapshot::summary() const {
-    std::vector<const PassCountTile*> tiles;
-    tiles.reserve(m_tiles.size());
-    for (const auto& e : m_tiles)
-        tiles.push_back(e.tile.get());
-    return summarizeTiles(tiles, m_cellSize, m_targetMin, m_targetMax);
+PassCountSummary PassCountSnapshot::summary(int l) const {
+    const auto& entries = tiles(l);
+    std::vector<const PassCountTile*> ts;
+    ts.reserve(entries.size());
+    for (const auto& e : entries)
+        ts.push_back(e.tile.get());
+    return summarizeTiles(ts, m_settings.cellSize, m_settings.targetMin, m_settings.targetMax);
 }
 
-std::optional<CellBox> PassCountSnapshot::changedSince(std::uint64_t sequence) const {
+std::optional<CellBox> PassCountSnapshot::changedSince(std::uint64_t sequence, int l) const {
     std::optional<CellBox> box;
-    for (const auto& e : m_tiles) {
+    for (const auto& e : tiles(l)) {
         if (e.tile->generation <= sequence)
             continue;
         const std::int32_t x0 = e.tx * kTileSize, y0 = e.ty * kTileSize;
@@ -138,10 +209,11 @@ std::optional<CellBox> PassCountSnapshot::changedSince(std::uint64_t sequence) c
     return box;
 }
 
-std::vector<TileSnapshot> PassCountSnapshot::tileValues() const {
+std::vector<TileSnapshot> PassCountSnapshot::tileValues(int l) const {
+    const auto& entries = tiles(l);
     std::vector<TileSnapshot> out;
-    out.reserve(m_tiles.size());
-    for (const auto& e : m_tiles)
+    out.reserve(entries.size());
+    for (const auto& e : entries)
         out.push_back({e.tx, e.ty, e.tile->counts});
     return out;
 }

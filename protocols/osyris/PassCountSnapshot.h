@@ -7,13 +7,20 @@
 // no lock shared with the io thread, and consecutive snapshots share every tile that did not change between
 // them (a snapshot costs one pointer per tile plus a copy of each changed tile).
 //
-// Shaped for larger jobs (issue 17): one snapshot per grid, so per-lift or per-machine counts are more grids
-// with their own snapshots; tiles are the unit of change, sharing and (later) level of detail; the count type
-// is one alias.
+// Lifts (issue 17 §2): the grid keeps one tile set per lift (an elevation band of the positions' z, of
+// PassCountSettings::liftThickness above liftBase) plus a composite "top" tile set: per cell the count of the
+// top-most lift with data there and the cell's flags (incomplete: a given-up gap of a ribbon may have passed
+// over it, issue 17 §4). tiles()/countAtCell(cx, cy)/countsInRect() without a lift read the top view.
+#include "protocols/osyris/IntervalSet.h"
+#include "protocols/osyris/Plausibility.h"
+
 #include <array>
+#include <climits>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <vector>
 
@@ -25,6 +32,37 @@ constexpr int kTileBits = 5;
 constexpr int kTileSize = 1 << kTileBits; // 32 x 32 cells per tile
 constexpr int kTileCells = kTileSize * kTileSize;
 
+enum class DirectionFilter { Any, Forward, Backward };
+enum class VibrationFilter { Any, On, Off };
+
+// What is counted and how (issue 5 §5, issue 17 §2). A change clears the grid, which is then re-fed from the
+// ribbons, so every filter applies to the whole job.
+struct PassCountSettings {
+    double cellSize = 0.34;                          // m (TRex default)
+    VibrationFilter vibration = VibrationFilter::On; // On: count only with POS_VIBRATING
+    DirectionFilter direction = DirectionFilter::Any;
+    std::set<std::uint8_t> machines; // empty = every machine
+    // Speed window [m/s] and time window [Unix ms, inclusive]: positions outside count nothing (they still
+    // move the machine on, so the traversal is not swept across them).
+    std::optional<double> speedMin, speedMax;
+    std::optional<std::int64_t> timeFrom, timeTo;
+    // Lifts: lift n is z in [liftBase + n*liftThickness, liftBase + (n+1)*liftThickness). Thickness <= 0 puts
+    // every position in one lift (0).
+    double liftThickness = 0;
+    double liftBase = 0;
+    double minMove = 0.25;     // m since the last counted position (Trimble GCS900)
+    double maxJump = 10.0;     // m; a longer step breaks the traversal (GCS900 "< 10 m")
+    double defaultWidth = 2.0; // m when a position carries no extent
+    int targetMin = 3;
+    int targetMax = 5;
+    PlausibilityLimits plausibility; // implausible positions break the traversal and count nothing
+    bool operator==(const PassCountSettings&) const = default;
+};
+
+struct GridRect { // in metres, local ENU
+    double xMin = 0, yMin = 0, xMax = 0, yMax = 0;
+};
+
 // One tile of counts. Cell (cx, cy) of the grid is tile (cx >> 5, cy >> 5), index ((cy & 31) << 5) | (cx &
 // 31).
 struct PassCountTile {
@@ -32,6 +70,17 @@ struct PassCountTile {
     // The grid generation this version of the tile was written in: equal to the sequence of the first
     // snapshot that holds it, so "changed since snapshot n" is "generation > n".
     std::uint64_t generation = 0;
+};
+
+constexpr std::int16_t kNoLift = INT16_MIN;
+constexpr std::uint8_t kCellIncomplete = 1;
+
+// A tile of the top view: the count of the top-most lift with data per cell, that lift (absolute index,
+// kNoLift where none) and the cell's flags (kCellIncomplete).
+struct PassCountTopTile : PassCountTile {
+    PassCountTopTile() { lift.fill(kNoLift); }
+    std::array<std::int16_t, kTileCells> lift;
+    std::array<std::uint8_t, kTileCells> flags{};
 };
 
 // A tile's counts as a plain value (tests compare grids with these).
@@ -62,45 +111,106 @@ class PassCountSnapshot {
 public:
     struct Entry {
         std::int32_t tx = 0, ty = 0;
-        std::shared_ptr<const PassCountTile> tile;
+        std::shared_ptr<const PassCountTile> tile; // a PassCountTopTile in the top view
+    };
+    // One lift with data: its absolute index (elevation band), its z range and its tiles.
+    struct Lift {
+        int index = 0;
+        double bottom = 0, top = 0; // m z; with lifts off, the z range of the counted positions
+        std::vector<Entry> tiles;   // sorted by (ty, tx)
     };
 
     PassCountSnapshot() = default;
-    // tiles sorted by (ty, tx), no duplicates (PassCountGrid::snapshot() builds it).
+    // tiles sorted by (ty, tx), no duplicates (PassCountGrid::snapshot() builds it); a single-lift picture
+    // whose top view is `tiles` (plain PassCountTiles: no flags).
     PassCountSnapshot(std::vector<Entry> tiles, double cellSize, int targetMin, int targetMax,
                       std::uint64_t sequence, std::uint64_t clearedAt);
+    // The grid's picture: the top view (PassCountTopTiles), the lifts lowest first, the settings in force,
+    // and per machine the slots given up as unobtainable (issue 17 §4).
+    PassCountSnapshot(std::vector<Entry> top, std::vector<Lift> lifts, const PassCountSettings& settings,
+                      std::uint64_t sequence, std::uint64_t clearedAt,
+                      std::map<std::uint8_t, std::vector<SlotRange>> givenUp);
 
     // 1, 2, ... for the snapshots of one grid, in the order they were taken.
     std::uint64_t sequence() const { return m_sequence; }
     // Sequence of the first snapshot after the grid was last cleared (settings changed): everything may have
     // changed since an older snapshot, including tiles that are gone.
     std::uint64_t clearedAt() const { return m_clearedAt; }
-    double cellSize() const { return m_cellSize; }
-    int targetMin() const { return m_targetMin; }
-    int targetMax() const { return m_targetMax; }
+    double cellSize() const { return m_settings.cellSize; }
+    int targetMin() const { return m_settings.targetMin; }
+    int targetMax() const { return m_settings.targetMax; }
+    // Cell size, targets, the filters in force, lift thickness and base.
+    const PassCountSettings& settings() const { return m_settings; }
 
     bool empty() const { return m_tiles.empty(); }
-    const std::vector<Entry>& tiles() const { return m_tiles; } // sorted by (ty, tx)
+    const std::vector<Entry>& tiles() const { return m_tiles; } // the top view, sorted by (ty, tx)
     const PassCountTile* tile(std::int32_t tx, std::int32_t ty) const;
     // Bounding box of the covered tiles, in cells (whole tiles); cx1 < cx0 when empty.
     CellBox extent() const { return m_extent; }
+    // The same in metres (local ENU); all zero when empty.
+    GridRect bounds() const;
 
-    int countAtCell(std::int32_t cx, std::int32_t cy) const;
+    // Lifts with data, 0 = the lowest. liftBottom/liftTop: metres z (0 for a lift out of range).
+    int liftCount() const { return static_cast<int>(m_lifts.size()); }
+    double liftBottom(int lift) const;
+    double liftTop(int lift) const;
+    const Lift* lift(int lift) const;
+    // Tiles of a lift; lift -1 (or out of range) = the top view.
+    const std::vector<Entry>& tiles(int lift) const;
+
+    // lift -1: the top-most lift with data at that cell.
+    int countAtCell(std::int32_t cx, std::int32_t cy) const { return countAtCell(cx, cy, -1); }
+    int countAtCell(std::int32_t cx, std::int32_t cy, int lift) const;
+    // A ribbon gap given up as unobtainable may have passed over this cell: its counts may be too low.
+    bool incompleteAtCell(std::int32_t cx, std::int32_t cy) const;
+    // f(cx, cy, count, incomplete) for every cell with a count in that lift (-1: the top view, which also
+    // visits incomplete cells without a count), tile by tile in (ty, tx) order.
+    template <class F> void forEachCell(int lift, F&& f) const;
     // Counts of the cells [cx0, cx0+cols) x [cy0, cy0+rows) into out[row*cols + col] (0 where not covered).
-    void countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows, PassCount* out) const;
-    PassCountSummary summary() const;
+    void countsInRect(std::int32_t cx0, std::int32_t cy0, int cols, int rows, PassCount* out,
+                      int lift = -1) const;
+    PassCountSummary summary(int lift = -1) const;
     // Bounding box (cells, whole tiles) of the tiles written after snapshot `sequence` was taken, nullopt
     // when none was. Only meaningful when sequence >= clearedAt() (otherwise everything changed).
-    std::optional<CellBox> changedSince(std::uint64_t sequence) const;
-    std::vector<TileSnapshot> tileValues() const; // sorted by (ty, tx)
+    std::optional<CellBox> changedSince(std::uint64_t sequence, int lift = -1) const;
+    std::vector<TileSnapshot> tileValues(int lift = -1) const; // sorted by (ty, tx)
+    // Per machine, the slot ranges of its ribbon counted without (given up as unobtainable, issue 17 §4).
+    const std::map<std::uint8_t, std::vector<SlotRange>>& givenUp() const { return m_givenUp; }
+    bool anyIncomplete() const { return m_anyIncomplete; }
 
 private:
     std::vector<Entry> m_tiles;
-    double m_cellSize = 0.34;
-    int m_targetMin = 3, m_targetMax = 5;
+    std::vector<Lift> m_lifts;
+    PassCountSettings m_settings;
     std::uint64_t m_sequence = 0, m_clearedAt = 0;
     CellBox m_extent;
+    bool m_topHasFlags = false; // m_tiles hold PassCountTopTiles
+    bool m_anyIncomplete = false;
+    std::map<std::uint8_t, std::vector<SlotRange>> m_givenUp;
+    void init();
 };
+
+template <class F> void PassCountSnapshot::forEachCell(int lift, F&& f) const {
+    const bool top = lift < 0 || lift >= liftCount();
+    const auto& entries = tiles(lift);
+    for (const auto& e : entries) {
+        const PassCountTopTile* flags = nullptr;
+        if (m_topHasFlags) {
+            if (top)
+                flags = static_cast<const PassCountTopTile*>(e.tile.get());
+            else
+                flags = static_cast<const PassCountTopTile*>(tile(e.tx, e.ty));
+        }
+        const std::int32_t x0 = e.tx * kTileSize, y0 = e.ty * kTileSize;
+        for (int i = 0; i < kTileCells; ++i) {
+            const int c = e.tile->counts[static_cast<std::size_t>(i)];
+            const bool inc = flags && (flags->flags[static_cast<std::size_t>(i)] & kCellIncomplete);
+            if (c == 0 && !(top && inc))
+                continue;
+            f(x0 + (i & (kTileSize - 1)), y0 + (i >> kTileBits), c, inc);
+        }
+    }
+}
 
 // The summary (histogram, below/within/above target) of a set of tiles; shared by the grid and its snapshots.
 PassCountSummary summarizeTiles(std::span<const PassCountTile* const> tiles, double cellSize, int targetMin,

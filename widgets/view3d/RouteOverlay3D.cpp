@@ -81,6 +81,13 @@ void RouteOverlay3D::setPath(const QVector<QPointF>& path) {
         d->view->refresh();
 }
 
+void RouteOverlay3D::setStyle(double r, double g, double b, float width) {
+    d->actor->GetProperty()->SetColor(r, g, b);
+    d->actor->GetProperty()->SetLineWidth(width);
+    if (d->view)
+        d->view->refresh();
+}
+
 QVector<QVector3D> RouteOverlay3D::drawnPoints() const {
     return d->points;
 }

@@ -22,6 +22,8 @@ public:
 
     // Empty: nothing drawn.
     void setPath(const QVector<QPointF>& pathEN);
+    // Issue 17 (the compaction design and areas reuse this overlay): line colour (0..1) and width (px).
+    void setStyle(double r, double g, double b, float width);
     // The drawn polyline in ENU (x = E, y = N, z = height on the terrain + kLift), for tests.
     QVector<QVector3D> drawnPoints() const;
     static constexpr double kLift = 1.5;  // m above the terrain, so the line is not buried in it

@@ -146,7 +146,7 @@ private slots:
         feed(g, 1, run(0, 20, 0, 0.5, kPosValid | kPosAccuracyHigh));
         QCOMPARE(g.summary().coveredCells, std::uint64_t(0));
         PassCountSettings s;
-        s.vibrationOnly = false;
+        s.vibration = VibrationFilter::Any;
         PassCountGrid all(s);
         feed(all, 1, run(0, 20, 0, 0.5, kPosValid | kPosAccuracyHigh));
         QCOMPARE(all.countAt(10, 0), 1);

@@ -1,0 +1,27 @@
+#pragma once
+// Issue 17: the compaction job of a started site: the session (design, areas, reports) fed by the OSYRIS
+// pass counts, the headless "coverage_report" command, and in the GUI the map overlay and the areas panel
+// under the pass-count summary. Kept out of SiteRuntime so the runtime's assembly stays small.
+#include "protocols/site/SiteConfig.h"
+
+#include <QObject>
+#include <QStringList>
+
+class QWidget;
+
+namespace ocu {
+
+class CompactionSession;
+class PassCountLayer;
+class SiteMapView;
+
+// nullptr in a build without the coverage module. Problems (design not readable) are appended to problems.
+CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& frame,
+                                   const PassCountLayer* layer, QObject* parent, QStringList* problems);
+void stopCompaction(CompactionSession* session); // unregisters the headless command
+// The pass-count panel with the areas panel under it (the panel itself when session is nullptr).
+QWidget* buildCompactionGui(CompactionSession* session, SiteMapView* map, QWidget* passPanel);
+// The design's centre line and boundary and the areas in the 3D view (a build with the 3D view).
+void attachCompaction3D(CompactionSession* session, QWidget* site3DView);
+
+} // namespace ocu

@@ -1,0 +1,213 @@
+#include "widgets/coverage/CompactionMapOverlay.h"
+
+#include "models/coverage/CompactionSession.h"
+#include "protocols/site/LandXml.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+
+namespace ocu {
+
+CompactionMapOverlay::CompactionMapOverlay(SiteMapView* view, CompactionSession* session)
+    // A child of the session, not of the view: a child of the view would be deleted inside ~QWidget, after
+    // SiteMapView's own members (its overlay list) are gone, while the QPointer still says it is alive.
+    : QObject(session), m_view(view), m_session(session) {
+    view->addOverlay(this);
+    view->installEventFilter(this);
+    connect(session, &CompactionSession::changed, view, qOverload<>(&QWidget::update));
+}
+
+CompactionMapOverlay::~CompactionMapOverlay() {
+    if (m_view)
+        m_view->removeOverlay(this);
+}
+
+void CompactionMapOverlay::setHighlightedArea(const QString& name) {
+    m_highlight = name;
+    if (m_view)
+        m_view->update();
+}
+
+void CompactionMapOverlay::startDrawing() {
+    m_drawing = true;
+    m_points.clear();
+    m_haveHover = false;
+    if (m_view) {
+        m_view->setCursor(Qt::CrossCursor);
+        m_view->setFocus();
+        m_view->update();
+    }
+    emit drawingChanged(true);
+}
+
+void CompactionMapOverlay::cancelDrawing() {
+    if (!m_drawing)
+        return;
+    m_drawing = false;
+    m_points.clear();
+    if (m_view) {
+        m_view->unsetCursor();
+        m_view->update();
+    }
+    emit drawingChanged(false);
+}
+
+void CompactionMapOverlay::finish() {
+    if (m_points.size() < 3)
+        return; // keep drawing: a polygon needs three points
+    const QPolygonF done = m_points;
+    cancelDrawing();
+    emit polygonFinished(done);
+}
+
+bool CompactionMapOverlay::eventFilter(QObject* watched, QEvent* event) {
+    if (!m_drawing || watched != m_view)
+        return QObject::eventFilter(watched, event);
+    switch (event->type()) {
+    case QEvent::MouseButtonPress: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        if (e->button() != Qt::LeftButton)
+            return false; // right/middle: the map's own (pan, menu)
+        m_points << m_view->screenToWorld(e->position());
+        m_view->update();
+        return true;
+    }
+    case QEvent::MouseButtonDblClick:
+        finish();
+        return true;
+    case QEvent::MouseButtonRelease:
+        return static_cast<QMouseEvent*>(event)->button() == Qt::LeftButton;
+    case QEvent::MouseMove:
+        m_hover = m_view->screenToWorld(static_cast<QMouseEvent*>(event)->position());
+        m_haveHover = true;
+        m_view->update();
+        return false; // the map still shows the cursor position
+    case QEvent::KeyPress: {
+        auto* k = static_cast<QKeyEvent*>(event);
+        if (k->key() == Qt::Key_Escape) {
+            cancelDrawing();
+            return true;
+        }
+        if (k->key() == Qt::Key_Return || k->key() == Qt::Key_Enter) {
+            finish();
+            return true;
+        }
+        if (k->key() == Qt::Key_Backspace) {
+            if (!m_points.isEmpty())
+                m_points.removeLast();
+            m_view->update();
+            return true;
+        }
+        return false;
+    }
+    default:
+        return false;
+    }
+}
+
+void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
+    if (!m_session)
+        return;
+    const auto& g = m_session->mapGeometry();
+    const QRectF screen(QPointF(-50, -50), QSizeF(view.width() + 100, view.height() + 100));
+    auto toScreen = [&](const QPolygonF& w) {
+        QPolygonF s;
+        s.reserve(w.size());
+        for (const QPointF& q : w)
+            s << view.worldToScreen(q);
+        return s;
+    };
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setBrush(Qt::NoBrush);
+    for (const QPolygonF& b : g.boundaries) {
+        const QPolygonF s = toScreen(b);
+        if (!s.boundingRect().intersects(screen))
+            continue;
+        p.setPen(QPen(QColor(40, 40, 40, 200), 1.5, Qt::DashLine));
+        p.drawPolygon(s);
+    }
+    for (const QPolygonF& c : g.centreLines) {
+        const QPolygonF s = toScreen(c);
+        if (!s.boundingRect().intersects(screen))
+            continue;
+        p.setPen(QPen(QColor(0xe0, 0x70, 0x00), 2));
+        p.drawPolyline(s);
+    }
+    // Station ticks every 100 m; labels when they are at least 60 px apart (else every 500 m or km).
+    if (g.ticks.size() >= 1) {
+        const double pxPer100 = view.scale() * CompactionSession::kTickSpacing;
+        const int labelEvery = pxPer100 >= 60 ? 1 : pxPer100 * 5 >= 60 ? 5 : 10;
+        QFont f = p.font();
+        f.setPixelSize(11);
+        p.setFont(f);
+        for (const auto& t : g.ticks) {
+            const QPointF a = view.worldToScreen(t.left), b = view.worldToScreen(t.right);
+            if (!screen.contains(a))
+                continue;
+            p.setPen(QPen(QColor(0xe0, 0x70, 0x00), 2));
+            if (pxPer100 >= 8)
+                p.drawLine(a, b);
+            const long long k = std::llround(t.station / CompactionSession::kTickSpacing);
+            if (k % labelEvery == 0) {
+                const QString text = QString::fromStdString(landxml::formatStation(t.station, 0));
+                const QRectF r = p.fontMetrics().boundingRect(text).adjusted(-2, -1, 2, 1);
+                const QPointF at = b + QPointF(4, 4);
+                p.fillRect(r.translated(at), QColor(255, 255, 255, 200));
+                p.setPen(QColor(0x80, 0x40, 0x00));
+                p.drawText(at, text);
+            }
+        }
+    }
+    for (const auto& [name, ring] : g.areas) {
+        const QPolygonF s = toScreen(ring);
+        if (!s.boundingRect().intersects(screen))
+            continue;
+        const bool hi = name == m_highlight;
+        p.setPen(QPen(hi ? QColor(0x10, 0x50, 0xe0) : QColor(0x30, 0x30, 0xb0), hi ? 3 : 1.5));
+        p.setBrush(hi ? QColor(0x10, 0x50, 0xe0, 30) : QColor(0, 0, 0, 0));
+        p.drawPolygon(s);
+        p.setBrush(Qt::NoBrush);
+        QFont f = p.font();
+        f.setPixelSize(12);
+        f.setBold(true);
+        p.setFont(f);
+        // The name at the first vertex on screen (a long area's bounding box may be far off).
+        QPointF at = s.boundingRect().topLeft();
+        for (const QPointF& q : s)
+            if (q.x() >= 0 && q.y() >= 14 && q.x() < view.width() - 40 && q.y() < view.height()) {
+                at = q + QPointF(4, -4);
+                break;
+            }
+        const QRectF r = p.fontMetrics().boundingRect(name).adjusted(-2, -1, 2, 1);
+        p.fillRect(r.translated(at), QColor(255, 255, 255, 210));
+        p.drawText(at, name);
+    }
+    if (m_drawing) {
+        QPolygonF s = toScreen(m_points);
+        if (m_haveHover)
+            s << view.worldToScreen(m_hover);
+        p.setPen(QPen(QColor(0xd0, 0x00, 0x80), 2, Qt::DashLine));
+        p.setBrush(QColor(0xd0, 0x00, 0x80, 40));
+        p.drawPolygon(s);
+        p.setBrush(QColor(0xd0, 0x00, 0x80));
+        for (const QPointF& q : toScreen(m_points))
+            p.drawEllipse(q, 3.5, 3.5);
+        p.setPen(Qt::black);
+        QFont f = p.font();
+        f.setPixelSize(12);
+        f.setBold(false);
+        p.setFont(f);
+        const QString hint =
+            tr("New area: click to add points · Enter or double click closes · Backspace undoes · "
+               "Esc cancels");
+        const QRectF r = p.fontMetrics().boundingRect(hint).adjusted(-6, -3, 6, 3);
+        const QPointF at(12, view.height() - 40.0);
+        p.fillRect(r.translated(at), QColor(255, 255, 230, 235));
+        p.drawText(at, hint);
+    }
+    p.restore();
+}
+
+} // namespace ocu

@@ -1,0 +1,216 @@
+#include "widgets/coverage/CompactionPanel.h"
+
+#include "models/coverage/CompactionSession.h"
+#include "widgets/coverage/CompactionMapOverlay.h"
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QJsonArray>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace ocu {
+
+CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverlay* overlay, QWidget* parent)
+    : QWidget(parent), m_session(session), m_overlay(overlay) {
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(4, 4, 4, 4);
+    m_design = new QLabel;
+    m_design->setWordWrap(true);
+    v->addWidget(m_design);
+    auto* liftRow = new QHBoxLayout;
+    liftRow->addWidget(new QLabel(tr("Lift:")));
+    m_lift = new QComboBox;
+    m_lift->addItem(tr("Top view"), -1);
+    liftRow->addWidget(m_lift, 1);
+    v->addLayout(liftRow);
+    m_table = new QTableWidget(0, 6);
+    m_table->setHorizontalHeaderLabels(
+        {tr("Area"), tr("Covered %"), tr("At target %"), tr("Under %"), tr("Over %"), tr("Incomplete")});
+    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_table->verticalHeader()->hide();
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    v->addWidget(m_table, 1);
+    auto* buttons = new QHBoxLayout;
+    m_draw = new QPushButton(tr("Draw area"));
+    m_draw->setToolTip(
+        tr("Draw a compaction area on the 2D map: click to add points, Enter closes, Esc cancels"));
+    m_remove = new QPushButton(tr("Remove"));
+    m_report = new QPushButton(tr("Coverage report…"));
+    m_report->setToolTip(
+        tr("PDF, Veta-style CSV and GeoTIFF of the pass counts, in the site's projected CRS"));
+    buttons->addWidget(m_draw);
+    buttons->addWidget(m_remove);
+    buttons->addStretch(1);
+    buttons->addWidget(m_report);
+    v->addLayout(buttons);
+    m_status = new QLabel;
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    v->addWidget(m_status);
+
+    m_throttle.setSingleShot(true);
+    m_throttle.setInterval(2000);
+    connect(&m_throttle, &QTimer::timeout, this, &CompactionPanel::refresh);
+    connect(session, &CompactionSession::changed, this, &CompactionPanel::refresh);
+    connect(m_lift, &QComboBox::currentIndexChanged, this, &CompactionPanel::refresh);
+    connect(m_draw, &QPushButton::clicked, this, [this] {
+        if (m_overlay->isDrawing())
+            m_overlay->cancelDrawing();
+        else
+            m_overlay->startDrawing();
+    });
+    connect(m_overlay, &CompactionMapOverlay::drawingChanged, this,
+            [this](bool on) { m_draw->setText(on ? tr("Cancel drawing") : tr("Draw area")); });
+    connect(m_overlay, &CompactionMapOverlay::polygonFinished, this, &CompactionPanel::askAreaName);
+    connect(m_remove, &QPushButton::clicked, this, [this] {
+        const int row = m_table->currentRow();
+        if (row < 0)
+            return;
+        const QString name = m_table->item(row, 0)->data(Qt::UserRole).toString();
+        if (m_session->removeArea(name)) {
+            const QString e = m_session->saveAreas();
+            m_status->setText(e.isEmpty() ? tr("Area \"%1\" removed.").arg(name) : e);
+        }
+    });
+    connect(m_table, &QTableWidget::itemSelectionChanged, this, [this] {
+        const int row = m_table->currentRow();
+        m_overlay->setHighlightedArea(row >= 0 ? m_table->item(row, 0)->data(Qt::UserRole).toString()
+                                               : QString());
+    });
+    connect(m_report, &QPushButton::clicked, this, &CompactionPanel::reportAction);
+    refresh();
+}
+
+void CompactionPanel::countsChanged() {
+    if (!m_throttle.isActive())
+        m_throttle.start();
+}
+
+void CompactionPanel::refresh() {
+    const CoverageJob job = m_session->job();
+    if (m_session->design())
+        m_design->setText(tr("Design: %1 — %2 alignment(s), %3 boundary(ies)%4")
+                              .arg(QFileInfo(m_session->designPath()).fileName())
+                              .arg(m_session->design()->alignments.size())
+                              .arg(m_session->design()->boundaries.size())
+                              .arg(m_session->designWarnings().isEmpty()
+                                       ? QString()
+                                       : tr(" · %1 warning(s): %2")
+                                             .arg(m_session->designWarnings().size())
+                                             .arg(m_session->designWarnings().first())));
+    else
+        m_design->setText(tr("No design loaded (site configuration \"compaction\": {\"design\": …})."));
+    // Lifts of the data.
+    const int liftCount = job.snapshot ? job.snapshot->liftCount() : 0;
+    if (m_lift->count() != liftCount + 1) {
+        const QSignalBlocker block(m_lift);
+        const int keep = m_lift->currentData().toInt();
+        m_lift->clear();
+        m_lift->addItem(tr("Top view"), -1);
+        for (int i = 0; i < liftCount; ++i)
+            m_lift->addItem(tr("Lift %1 (z %2 … %3 m)")
+                                .arg(i + 1)
+                                .arg(job.snapshot->liftBottom(i), 0, 'f', 2)
+                                .arg(job.snapshot->liftTop(i), 0, 'f', 2),
+                            i);
+        const int idx = m_lift->findData(keep);
+        m_lift->setCurrentIndex(idx < 0 ? 0 : idx);
+    }
+    const QString selected = m_table->currentRow() >= 0
+                                 ? m_table->item(m_table->currentRow(), 0)->data(Qt::UserRole).toString()
+                                 : QString();
+    CoverageTables t;
+    if (job.snapshot && m_session->hasWorksite()) {
+        CoverageFrames frames;
+        if (frames.init(job).isEmpty())
+            t = computeCoverageTables(job, frames, m_lift->currentData().toInt());
+    }
+    m_table->setRowCount(int(job.areas.size()));
+    for (int r = 0; r < job.areas.size(); ++r) {
+        const CompactionArea& a = job.areas[r];
+        const AreaStats* s = nullptr;
+        for (const AreaStats& x : t.areas)
+            if (x.name == a.name)
+                s = &x;
+        auto set = [&](int c, const QString& text) {
+            auto* it = new QTableWidgetItem(text);
+            if (c > 0)
+                it->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            m_table->setItem(r, c, it);
+            return it;
+        };
+        auto* name = set(0, a.source == QLatin1String("design") ? tr("%1 (design)").arg(a.name) : a.name);
+        name->setData(Qt::UserRole, a.name);
+        if (s && s->stats.cells) {
+            set(1, QString::number(s->stats.coveragePercent(), 'f', 1));
+            set(2, QString::number(s->stats.percentOf(s->stats.atTarget), 'f', 1));
+            set(3, QString::number(s->stats.percentOf(s->stats.under), 'f', 1));
+            set(4, QString::number(s->stats.percentOf(s->stats.over), 'f', 1));
+            set(5, QString::number(s->stats.incomplete));
+        } else {
+            for (int c = 1; c < 6; ++c)
+                set(c, QStringLiteral("–"));
+        }
+        if (a.name == selected)
+            m_table->selectRow(r);
+    }
+    m_remove->setEnabled(!job.areas.isEmpty());
+    m_report->setEnabled(m_session->hasWorksite());
+}
+
+void CompactionPanel::askAreaName(const QPolygonF& siteEN) {
+    bool ok = false;
+    const QString name =
+        QInputDialog::getText(this, tr("New compaction area"), tr("Name of the area:"), QLineEdit::Normal,
+                              tr("Area %1").arg(m_session->areas().size() + 1), &ok);
+    if (!ok)
+        return;
+    QString e = m_session->addArea(name, siteEN);
+    if (e.isEmpty())
+        e = m_session->saveAreas();
+    m_status->setText(e.isEmpty() ? tr("Area \"%1\" saved to %2.").arg(name.trimmed(), m_session->areasFile())
+                                  : e);
+}
+
+QString CompactionPanel::writeReport(const QString& pdfPath) {
+    const QFileInfo fi(pdfPath);
+    const QString base = fi.path() + QLatin1Char('/') + fi.completeBaseName();
+    QJsonObject cmd{{QStringLiteral("pdf"), base + QStringLiteral(".pdf")},
+                    {QStringLiteral("csv"), base + QStringLiteral(".csv")},
+                    {QStringLiteral("geotiff"), base + QStringLiteral(".tif")}};
+    const int lift = m_lift->currentData().toInt();
+    if (lift >= 0)
+        cmd[QStringLiteral("lift")] = lift + 1;
+    const int row = m_table->currentRow();
+    if (row >= 0)
+        cmd[QStringLiteral("area")] = m_table->item(row, 0)->data(Qt::UserRole).toString();
+    const QJsonObject r = m_session->reportCommand(cmd);
+    const QJsonObject w = r.value(QStringLiteral("written")).toObject();
+    QStringList done, failed;
+    for (const QString& k : {QStringLiteral("pdf"), QStringLiteral("csv"), QStringLiteral("geotiff")})
+        (w.value(k).toBool() ? done : failed) << k.toUpper();
+    QString text = done.isEmpty() ? tr("Coverage report not written.")
+                                  : tr("Written: %1 (%2.*).").arg(done.join(QStringLiteral(", ")), base);
+    for (const auto& e : r.value(QStringLiteral("errors")).toArray())
+        text += QLatin1Char(' ') + tr("Failed: %1").arg(e.toString());
+    m_status->setText(text);
+    return text;
+}
+
+void CompactionPanel::reportAction() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Coverage report"), tr("coverage-report.pdf"),
+                                                      tr("PDF (*.pdf)"));
+    if (!path.isEmpty())
+        writeReport(path);
+}
+
+} // namespace ocu
