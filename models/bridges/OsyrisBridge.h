@@ -4,6 +4,7 @@
 // the site frame through the worksite origin: immutable snapshots published by the io thread and handed to
 // the GUI thread by a queued call (OsyrisPassCountLayer).
 #include "models/FleetBridge.h"
+#include "models/PassCountControls.h"
 #include "models/bridges/OsyrisPassCountLayer.h"
 
 #include "protocols/common/GeoFrame.h"
@@ -16,7 +17,7 @@
 
 namespace ocu {
 
-class OsyrisBridge : public FleetBridge, private osyris::OsyrisListener {
+class OsyrisBridge : public FleetBridge, public PassCountControls, private osyris::OsyrisListener {
     Q_OBJECT
 public:
     OsyrisBridge(const osyris::OsyrisConfig& config, const GeoFrame& siteFrame, QObject* parent = nullptr);
@@ -29,7 +30,8 @@ public:
     bool stopsFromCallersThread() const override { return true; } // the stack's fast path (issue 13 §10)
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
-    // send_text {"text"}, ping {"idx"}.
+    // send_text {"text"} to every station, or {"id": "osyris:<idx>", "text"} to one (CmMsg IdxWhose; the
+    // result's target is then that machine); ping {"idx"}.
     void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
     // OSYRIS carries no stop state: a stop can never be confirmed by the machines.
     bool reportsStopState() const override { return false; }
@@ -40,6 +42,22 @@ public:
     std::chrono::milliseconds ioStalledFor() const override;
     // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
     void postToIo(std::function<void()> f);
+    // Lifts and filters (issue 17 §2; GUI thread): a new filter makes the station recount from the ribbons.
+    PassCountFilter passCountFilter() const override;
+    void setPassCountFilter(const PassCountFilter& filter) override;
+    QVector<PassCountLiftInfo> passCountLifts() const override;
+    int viewLift() const override;
+    void setViewLift(int lift) override;
+    QStringList passCountGaps() const override;
+    const osyris::PassCountSettings& passCountSettings() const { return m_config.passCount; }
+
+    // The display name of station idx (configured, else "station <idx>").
+    QString stationName(int idx) const;
+
+signals:
+    // A crew message (CmMsg) for this console or for all arrived (GUI thread): sender id ("osyris:3"), its
+    // name, the text.
+    void textReceived(const QString& fromId, const QString& fromName, const QString& text);
 
 private:
     void onMachinePosition(const osyris::MachineSnapshot& s) override;

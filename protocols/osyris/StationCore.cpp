@@ -838,6 +838,18 @@ void StationCore::checkGridBlocks(TimePoint now) {
     }
 }
 
+void StationCore::setPassCountSettings(const PassCountSettings& s) {
+    m_cfg.passCount = s;
+    if (!m_grid)
+        return;
+    m_grid->setSettings(s);
+    for (auto owner : m_store.machines())
+        m_gridDirty.insert(owner);
+    m_passCountsUnpublished = true;
+    m_nextPassCountPublish = {};
+    updateGrid();
+}
+
 void StationCore::updateGrid() {
     if (!m_grid)
         return;

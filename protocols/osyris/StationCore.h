@@ -125,6 +125,9 @@ public:
     // Advances the grid over every ribbon now (normally done in tick()) and publishes the pass counts when
     // due.
     void updateGrid();
+    // New pass-count settings (filters, lifts, cell size): the grid is cleared and every ribbon recounted,
+    // keeping the slots given up as unobtainable (issue 17 §2, §4).
+    void setPassCountSettings(const PassCountSettings& s);
 
 private:
     static constexpr int kPrioOwner = 3;   // our own ribbon

@@ -14,9 +14,10 @@ namespace ocu::sim::osyris {
 struct OsyrisDemoOptions {
     int rollers = 3; // 0-3 tandem rollers
     bool paver = true;
-    bool relay = true;            // a relay-only station (Active 7, no machine)
-    double speedUp = 10;          // simulated seconds per real second
-    double positionPeriodS = 0.5; // simulated seconds between positions of one machine
+    bool relay = true;              // a relay-only station (Active 7, no machine)
+    double speedUp = 10;            // simulated seconds per real second
+    double positionPeriodS = 0.5;   // simulated seconds between positions of one machine
+    double crewMessageEveryS = 600; // simulated seconds between a driver's own reports (0 = never)
     std::string group = "233.1.1.1";
     std::uint16_t port = 0; // 0 = a free port
     std::string interfaceAddress = "127.0.0.1";
@@ -50,6 +51,8 @@ public:
     // Parked machines stop writing positions (stations keep running, answering and relaying).
     void setPaused(bool paused);
     void setImpairment(const ocu::osyris::RxImpairment& imp); // at every simulated station
+    // Messages from the console station i's driver got (and acknowledged to the console).
+    int crewMessagesReceived(std::size_t station) const;
 
 private:
     struct Impl;

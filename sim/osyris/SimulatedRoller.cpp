@@ -82,4 +82,22 @@ CmPos SimulatedMachine::poseAt(double t, std::int64_t unixMs) const {
     return p;
 }
 
+std::optional<std::string> SimulatedMachine::crewMessage(double t0, double t1) const {
+    const double every = m_spec.crewMessageEveryS;
+    if (m_spec.kind == MachineKind::Relay || !(every > 0) || t1 <= 0 ||
+        std::floor(t1 / every) <= std::floor(std::max(t0, 0.0) / every))
+        return std::nullopt;
+    const auto x = static_cast<long>(std::lround(
+        m_spec.kind == MachineKind::Paver ? paverX(t1)
+                                          : paverX(t1) - m_spec.gapBehindPaver - m_spec.passLength));
+    std::string text = m_spec.kind == MachineKind::Paver
+                           ? m_spec.name + ": paved up to x=" + std::to_string(x) + " m"
+                           : m_spec.name + ": rolled up to x=" + std::to_string(x) + " m";
+    return text.substr(0, 79);
+}
+
+std::string SimulatedMachine::crewReply(const std::string& received) const {
+    return (m_spec.name + ": OK, " + received).substr(0, 79);
+}
+
 } // namespace ocu::sim::osyris

@@ -30,6 +30,8 @@ struct MachineSpec {
     // Relay: moves back and forth between (x0,y0) and (x1,y1) at speed (speed 0 = static at x0,y0)
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     std::uint32_t seed = 1;
+    // Crew messages (issue 17 §5): the driver reports every this many simulated seconds (0 = never).
+    double crewMessageEveryS = 600;
 };
 
 class SimulatedMachine {
@@ -39,6 +41,11 @@ public:
     // Pose at t seconds of simulated time (slot is assigned by the station).
     ocu::osyris::CmPos poseAt(double t, std::int64_t unixMs = 0) const;
     double paverX(double t) const { return m_spec.paverStartX + m_spec.paverSpeed * t; }
+    // What the driver reports between simulated times t0 (exclusive) and t1 (inclusive), if anything
+    // ("Roller 1: rolled up to x=62 m"); at most 79 bytes (one CmMsg).
+    std::optional<std::string> crewMessage(double t0, double t1) const;
+    // The driver's answer to a message from the console.
+    std::string crewReply(const std::string& received) const;
 
 private:
     MachineSpec m_spec;
