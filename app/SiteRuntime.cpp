@@ -25,6 +25,7 @@
 #include "widgets/FleetListWidget.h"
 #include "widgets/PassCountPanel.h"
 #include "widgets/SiteMapView.h"
+#include "widgets/osyris/CrewMessagesPanel.h"
 
 #include <QApplication>
 #include <QDateTime>
@@ -35,6 +36,7 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QSysInfo>
+#include <QTabWidget>
 #include <QTime>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -313,7 +315,23 @@ void SiteRuntime::populate(MainWindow& window) {
 
     auto* passPanel = new PassCountPanel;
     passPanel->setLayer(d.passLayer());
-    window.setPanelWidget(Panel::PassCounts, passPanel);
+    // Issue 17 §2/§5: lifts and filters of the layer's source; crew messages beside the pass counts.
+    QWidget* passDock = passPanel;
+    for (const auto& module : d.modules) {
+        FleetBridge* b = module->bridge();
+        if (auto* c = dynamic_cast<PassCountControls*>(b); c && b->passCountLayer() == d.passLayer())
+            passPanel->setControls(c);
+        if (auto* crew = dynamic_cast<CrewMessaging*>(b); crew && passDock == passPanel) {
+            auto* crewPanel = new CrewMessagesPanel;
+            crewPanel->setCommandGate(ctx->gate());
+            crewPanel->setBridge(b, crew);
+            auto* tabs = new QTabWidget;
+            tabs->addTab(passPanel, tr("Pass counts"));
+            tabs->addTab(crewPanel, tr("Crew messages"));
+            passDock = tabs;
+        }
+    }
+    window.setPanelWidget(Panel::PassCounts, passDock);
     connect(passPanel, &PassCountPanel::paletteChanged, map, &SiteMapView::setPassPalette);
     connect(passPanel, &PassCountPanel::targetChanged, map, &SiteMapView::setPassTarget);
 #ifdef OCU_HAVE_OCU_VIEW3D

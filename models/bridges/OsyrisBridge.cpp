@@ -211,6 +211,20 @@ void OsyrisBridge::setViewLift(int lift) {
     emit passCountChanged();
 }
 
+QVector<CrewRecipient> OsyrisBridge::crewRecipients() const {
+    std::set<int> ids(m_textSenders);
+    for (const auto& [idx, name] : m_config.machineNames) {
+        auto t = m_config.machineTypes.find(idx);
+        if (t == m_config.machineTypes.end() || t->second != "relay")
+            ids.insert(idx);
+    }
+    QVector<CrewRecipient> out;
+    for (int idx : ids)
+        if (idx != m_config.stationIndex)
+            out.push_back({protocolPrefix(Protocol::Osyris) + QString::number(idx), stationName(idx)});
+    return out;
+}
+
 QString OsyrisBridge::stationName(int idx) const {
     if (auto it = m_config.machineNames.find(static_cast<std::uint8_t>(idx));
         it != m_config.machineNames.end())
@@ -226,7 +240,12 @@ void OsyrisBridge::onText(std::uint8_t idx, const std::string& text) {
     e.requiresAck = true; // an operator should read messages from the machines
     publishEvent(e);
     QMetaObject::invokeMethod(
-        this, [this, id, name, t = q(text)] { emit textReceived(id, name, t); }, Qt::QueuedConnection);
+        this,
+        [this, idx, id, name, t = q(text)] {
+            m_textSenders.insert(idx);
+            emit textReceived(id, name, t);
+        },
+        Qt::QueuedConnection);
 }
 
 bool OsyrisBridge::readyForPassCounts() {

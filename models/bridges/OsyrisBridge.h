@@ -3,6 +3,7 @@
 // messages become events, and the station's pass counts are offered to the map as a PassCountLayer placed in
 // the site frame through the worksite origin: immutable snapshots published by the io thread and handed to
 // the GUI thread by a queued call (OsyrisPassCountLayer).
+#include "models/CrewMessaging.h"
 #include "models/FleetBridge.h"
 #include "models/PassCountControls.h"
 #include "models/bridges/OsyrisPassCountLayer.h"
@@ -14,10 +15,14 @@
 #include <atomic>
 #include <map>
 #include <memory>
+#include <set>
 
 namespace ocu {
 
-class OsyrisBridge : public FleetBridge, public PassCountControls, private osyris::OsyrisListener {
+class OsyrisBridge : public FleetBridge,
+                     public PassCountControls,
+                     public CrewMessaging,
+                     private osyris::OsyrisListener {
     Q_OBJECT
 public:
     OsyrisBridge(const osyris::OsyrisConfig& config, const GeoFrame& siteFrame, QObject* parent = nullptr);
@@ -51,6 +56,10 @@ public:
     QStringList passCountGaps() const override;
     const osyris::PassCountSettings& passCountSettings() const { return m_config.passCount; }
 
+    // Crew messages (issue 17 §5): the configured machines (relays excepted) and every station that wrote.
+    QVector<CrewRecipient> crewRecipients() const override;
+    int crewMessageMaxBytes() const override { return 79; }
+
     // The display name of station idx (configured, else "station <idx>").
     QString stationName(int idx) const;
 
@@ -76,6 +85,7 @@ private:
     std::atomic<bool> m_heard{false};                  // a station (position or alive) was heard
     std::map<std::uint8_t, MachineState> m_lastGoodIo; // io thread only: the last plausible state per machine
     std::atomic<bool> m_running{false};
+    std::set<int> m_textSenders; // GUI thread
     // Why a message cannot go out now (no station heard, station not running), or an empty string.
     QString linkRefusal(const QString& what) const;
 };
