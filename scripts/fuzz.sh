@@ -14,7 +14,7 @@ corpus_root="$here/tests/fuzz/corpus"
 build="${OCU_FUZZ_BUILD:-$here/build-fuzz}"
 out="${OCU_FUZZ_OUT:-/tmp/ocu-fuzz}"
 harnesses_all=(judp_datagram jtcp_stream jaus_messages osyris_codec osyris_station osyris_xml iso_fast_path
-               iso_dom_path iso_fms_session osm_map site_config headless_commands)
+               iso_dom_path iso_fms_session osm_map site_config headless_commands landxml)
 
 seed_text() {
   # Text corpora from the tests' data; binary ones from fuzz_make_seeds (tests/fuzz/MakeSeeds.cpp).

@@ -22,6 +22,8 @@ packages=(
   libgdal-dev
   # Shared control-room history (issue 16 §4): libpq to build; the server for the tests' throwaway instances.
   libpq-dev postgresql
+  # Issue 17 §3: PROJ for the coverage report's projected CRS (CSV, GeoTIFF).
+  libproj-dev
 )
 
 missing=()

@@ -1,6 +1,9 @@
 #include "protocols/site/SiteConfig.h"
 
 #include <boost/asio/ip/address_v4.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 
 #include <filesystem>
 #include <fstream>
@@ -107,6 +110,40 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
     if (auto t = root.object("terrain")) {
         cfg.terrain.dem = resolveSitePath(t->string("dem", cfg.terrain.dem), fileName);
         t->finish();
+    }
+    cfg.compaction.configFile = fileName;
+    if (auto c = root.object("compaction")) { // issue 17
+        auto& k = cfg.compaction;
+        k.design = resolveSitePath(c->string("design", k.design), fileName);
+        k.stationStep = c->number("station_step", k.stationStep, 0.5, 10000);
+        k.bandLeft = c->number("band_left", k.bandLeft, 0, 1000);
+        k.bandRight = c->number("band_right", k.bandRight, 0, 1000);
+        k.epsg = static_cast<int>(c->integer("epsg", k.epsg, 0, 999999));
+        for (auto& a : c->objectList("areas")) {
+            CompactionAreaConfig area;
+            area.name = a.string("name", "");
+            area.source = a.choice("source", area.source, {"drawn", "design"});
+            const nlohmann::json* pts = a.raw("points");
+            if (area.name.empty())
+                a.error("name", "required: the area's name");
+            if (!pts || !pts->is_array() || pts->size() < 3 || pts->size() > 100000) {
+                a.error("points", "required: 3 to 100000 [latitude, longitude] pairs");
+            } else {
+                for (const auto& p : *pts) {
+                    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number() ||
+                        std::fabs(p[0].get<double>()) > 90 || std::fabs(p[1].get<double>()) > 180) {
+                        a.error("points", "each point is [latitude, longitude] in degrees");
+                        area.ring.clear();
+                        break;
+                    }
+                    area.ring.push_back({p[0].get<double>(), p[1].get<double>(), 0});
+                }
+            }
+            a.finish();
+            if (!area.name.empty() && area.ring.size() >= 3)
+                k.areas.push_back(std::move(area));
+        }
+        c->finish();
     }
     if (auto h = root.object("history")) {
         if (auto pg = h->object("postgres")) {

@@ -92,6 +92,22 @@ struct PostgresHistoryConfig {
     std::string outbox;   // the local SQLite outbox; empty = history-outbox-<console>.sqlite in the data dir
 };
 
+// Issue 17: the compaction job: its LandXML design and its named areas (rings of WGS 84 points), saved with
+// the site ("compaction": {"design": "job.xml", "areas": [{"name": "Lot 1", "points": [[lat, lon], ...]}],
+// "station_step": 20, "band_left": 6, "band_right": 6, "epsg": 0}).
+struct CompactionAreaConfig {
+    std::string name;
+    std::string source = "drawn"; // or "design"
+    std::vector<GeoPoint> ring;
+};
+struct CompactionConfig {
+    std::string design; // LandXML file; relative to the configuration file's folder
+    std::vector<CompactionAreaConfig> areas;
+    double stationStep = 20, bandLeft = 6, bandRight = 6;
+    int epsg = 0;           // report CRS; 0 = the design's, else the site's UTM zone
+    std::string configFile; // the file this configuration came from (where areas are saved)
+};
+
 struct SiteConfig {
     std::string name = "Unnamed site";
     GeoPoint origin;
@@ -103,6 +119,7 @@ struct SiteConfig {
     MapBackgroundConfig background;
     TerrainConfig terrain;
     std::optional<PostgresHistoryConfig> historyPostgres;
+    CompactionConfig compaction;
 #ifdef OCU_SITE_HAVE_JAUS
     std::optional<jaus::JausConfig> jaus;
 #endif

@@ -131,6 +131,29 @@ private slots:
         QVERIFY(QString::fromStdString(bad.error()).contains("conninfo"));
         QVERIFY(QString::fromStdString(bad.error()).contains("consle"));
     }
+    // Issue 17: the compaction section (design next to the file, areas as [lat, lon] rings).
+    void compactionSection() {
+        auto cfg = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},
+            "compaction":{"design":"job.xml","station_step":25,"band_left":5,"band_right":7,"epsg":32632,
+              "areas":[{"name":"Lot 1","points":[[48.1,11.1],[48.1,11.2],[48.2,11.2]]}]}})",
+                                   "/etc/ocu/site.json");
+        QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
+        QCOMPARE(cfg->compaction.design, std::string("/etc/ocu/job.xml"));
+        QCOMPARE(cfg->compaction.stationStep, 25.0);
+        QCOMPARE(cfg->compaction.bandRight, 7.0);
+        QCOMPARE(cfg->compaction.epsg, 32632);
+        QCOMPARE(cfg->compaction.configFile, std::string("/etc/ocu/site.json"));
+        QCOMPARE(cfg->compaction.areas.size(), std::size_t(1));
+        QCOMPARE(cfg->compaction.areas[0].ring.size(), std::size_t(3));
+        QCOMPARE(cfg->compaction.areas[0].ring[2].lat, 48.2);
+        auto bad = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},
+            "compaction":{"areas":[{"name":"x","points":[[1,2],[3]]},{"points":[[1,2],[1,3],[2,2]]}]}})",
+                                   "b.json");
+        QVERIFY(!bad.ok());
+        QVERIFY(QString::fromStdString(bad.error()).contains("compaction/areas/0/points") ||
+                QString::fromStdString(bad.error()).contains("points"));
+        QVERIFY(QString::fromStdString(bad.error()).contains("name"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSiteConfig)
