@@ -123,8 +123,14 @@ bool OsyrisDemo::start(std::string* error) {
     if (m_opts.relay)
         plan.emplace_back(std::nullopt, next++);
     for (auto& [spec, idx] : plan) {
-        if (spec)
+        if (spec) {
             spec->crewMessageEveryS = m_opts.crewMessageEveryS;
+            if (m_opts.pavingJob) {
+                spec->job = m_opts.pavingJob;
+                spec->paverStartX = 0;
+                spec->paverSpeed = m_opts.pavingJob->paverSpeed;
+            }
+        }
         OsyrisConfig c = ocuConfig();
         c.stationIndex = idx;
         c.active = spec ? 15 : 7; // §7 default for machines, plus a driver's display for messages (bit 8)
@@ -161,6 +167,8 @@ bool OsyrisDemo::start(std::string* error) {
     m_impl->nextT = 0;
     m_impl->driver.start();
     m_impl->timer = std::make_unique<boost::asio::steady_timer>(m_impl->driver.context());
+    if (m_opts.pavingJob) // at most 40 positions per real second per machine, whatever the speed-up
+        m_opts.positionPeriodS = std::max(m_opts.positionPeriodS, m_opts.speedUp / 40.0);
     auto periodMs = std::max(5.0, 1000.0 * m_opts.positionPeriodS / std::max(0.01, m_opts.speedUp));
     m_impl->driver.post([this, periodMs] {
         auto step = [this, periodMs](auto&& self) -> void {

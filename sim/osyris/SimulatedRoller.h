@@ -4,6 +4,9 @@
 // with vibration switched on and off, accuracy flags and an occasional GPS shadow. Pure functions of the
 // simulated time, so runs are reproducible.
 #include "protocols/osyris/OsyrisCodec.h"
+#include "sim/osyris/PavingJob.h"
+
+#include <memory>
 
 #include <cstdint>
 #include <optional>
@@ -32,6 +35,9 @@ struct MachineSpec {
     std::uint32_t seed = 1;
     // Crew messages (issue 17 §5): the driver reports every this many simulated seconds (0 = never).
     double crewMessageEveryS = 600;
+    // Issue 17 §7: drive a long job instead of the straight test road: the straight-road pose (x along,
+    // y lateral) is laid onto the job's centre line, lift after lift (z rises by the lift thickness).
+    std::shared_ptr<const PavingJob> job;
 };
 
 class SimulatedMachine {
