@@ -25,7 +25,7 @@ void OsyrisPassCountLayer::setViewLift(int lift) {
     m_lift = lift;
     ++m_offsetRevision;
     ++m_revision;
-    m_extentRevision = m_revision; // everything shown changed
+    m_liftRevision = m_revision; // everything shown changed
     m_histograms.clear();
     updateExtent();
 }
@@ -78,9 +78,9 @@ QRect OsyrisPassCountLayer::changedCellsSince(quint64 revision) const {
     if (revision >= m_revision)
         return {};
     const QRect all(0, 0, m_cols, m_rows);
-    // Revision r was snapshot r - 1 - offset; before the extent, the lift or the grid changed wholesale,
-    // everything is new.
-    if (!m_snap || revision < m_extentRevision || revision < 1 + m_offsetRevision + m_snap->clearedAt() ||
+    // Revision r was snapshot r - 1 - offset; before the lift shown or the grid changed wholesale, everything
+    // is new. A grown extent alone is not: the tiles' generations are in grid cells, whatever the frame.
+    if (!m_snap || revision < m_liftRevision || revision < 1 + m_offsetRevision + m_snap->clearedAt() ||
         revision < 2 + m_offsetRevision)
         return all;
     const auto box = m_snap->changedSince(revision - 1 - m_offsetRevision, m_lift);

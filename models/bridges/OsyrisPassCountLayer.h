@@ -36,8 +36,8 @@ public:
     // Bumped on every snapshot and on a change of the lift shown.
     quint64 revision() const override { return m_revision; }
     QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const override;
-    // The tiles written after `revision` (their generation says so), or everything after a clear, a change
-    // of the lift shown or when the extent moved.
+    // The tiles written after `revision` (their generation says so; in the current frame, so a grown extent
+    // is not a change of its own), or everything after a clear or a change of the lift shown.
     QRect changedCellsSince(quint64 revision) const override;
     bool fastSummary(PassTarget target, PassCountSummary& out) const override;
 
@@ -55,6 +55,7 @@ private:
     quint64 m_revision = 1;
     quint64 m_offsetRevision = 0; // revision = 1 + sequence + m_offsetRevision
     quint64 m_extentRevision = 1; // revision at which origin/columns/rows/lift last changed
+    quint64 m_liftRevision = 1;   // revision at which the lift shown last changed
     // Per-tile histograms of the tiles shown, keyed by the tile object (kept alive by the cache).
     struct Cached {
         std::shared_ptr<const osyris::PassCountTile> tile;
