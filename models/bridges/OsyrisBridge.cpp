@@ -192,10 +192,11 @@ QStringList OsyrisBridge::passCountGaps() const {
                                          : QStringLiteral("%1–%2").arg(r.from).arg(r.to));
                 n += r.size();
             }
-            out << tr("%1: %n position(s) given up as unobtainable (slots %2); its cells are marked "
-                      "incomplete",
-                      "", int(std::min<std::uint64_t>(n, INT32_MAX)))
-                       .arg(stationName(idx), parts.join(QStringLiteral(", ")));
+            out << tr("%1: %2 positions given up as unobtainable (slots %3); their cells are marked "
+                      "incomplete")
+                       .arg(stationName(idx))
+                       .arg(n)
+                       .arg(parts.join(QStringLiteral(", ")));
         }
     return out;
 }
