@@ -28,6 +28,7 @@
 #include "widgets/FleetListWidget.h"
 #include "widgets/PassCountPanel.h"
 #include "widgets/SiteMapView.h"
+#include "widgets/osyris/CrewMessagesPanel.h"
 
 #include <QApplication>
 #include <QDateTime>
@@ -38,6 +39,7 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QSysInfo>
+#include <QTabWidget>
 #include <QTime>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -333,10 +335,26 @@ void SiteRuntime::populate(MainWindow& window) {
 
     auto* passPanel = new PassCountPanel;
     passPanel->setLayer(d.passLayer());
+    // Issue 17 §2/§5: lifts and filters of the layer's source; crew messages beside the pass counts.
+    QWidget* passDock = passPanel;
+    for (const auto& module : d.modules) {
+        FleetBridge* b = module->bridge();
+        if (auto* c = dynamic_cast<PassCountControls*>(b); c && b->passCountLayer() == d.passLayer())
+            passPanel->setControls(c);
+        if (auto* crew = dynamic_cast<CrewMessaging*>(b); crew && passDock == passPanel) {
+            auto* crewPanel = new CrewMessagesPanel;
+            crewPanel->setCommandGate(ctx->gate());
+            crewPanel->setBridge(b, crew);
+            auto* tabs = new QTabWidget;
+            tabs->addTab(passPanel, tr("Pass counts"));
+            tabs->addTab(crewPanel, tr("Crew messages"));
+            passDock = tabs;
+        }
+    }
 #ifdef OCU_HAVE_COVERAGE
-    window.setPanelWidget(Panel::PassCounts, buildCompactionGui(d.compaction, map, passPanel));
+    window.setPanelWidget(Panel::PassCounts, buildCompactionGui(d.compaction, map, passDock));
 #else
-    window.setPanelWidget(Panel::PassCounts, passPanel);
+    window.setPanelWidget(Panel::PassCounts, passDock);
 #endif
     connect(passPanel, &PassCountPanel::paletteChanged, map, &SiteMapView::setPassPalette);
     connect(passPanel, &PassCountPanel::targetChanged, map, &SiteMapView::setPassTarget);

@@ -81,7 +81,18 @@ int main(int argc, char** argv) {
                                  QStringLiteral("Positions per second of each simulated haul truck (1-10; "
                                                 "--truck-rate is the older name)."),
                                  QStringLiteral("HZ"));
-    p.addOptions({config, duration, ugvs, trucks, rollers, iface, writeConfig, separateMap, truckRate});
+    // Issue 17 §7: the simulated paving train on a long job.
+    QCommandLineOption pavingJob(QStringLiteral("paving-job"),
+                                 QStringLiteral("The paving train drives a long job: a LandXML file (first "
+                                                "alignment, UTM) or \"built-in\"."),
+                                 QStringLiteral("file"));
+    QCommandLineOption speedup(QStringLiteral("speedup"),
+                               QStringLiteral("Simulated seconds per real second for the rollers (1-1000)."),
+                               QStringLiteral("factor"));
+    QCommandLineOption lifts(QStringLiteral("lifts"), QStringLiteral("Lifts of the paving job (1-20)."),
+                             QStringLiteral("n"));
+    p.addOptions({config, duration, ugvs, trucks, rollers, iface, writeConfig, separateMap, truckRate,
+                  pavingJob, speedup, lifts});
     p.process(app);
 
     auto site = ocu::loadSite(p.value(config));
@@ -114,6 +125,23 @@ int main(int argc, char** argv) {
             return 2;
         }
         cfg.simulation.ahsPositionRateHz = hz;
+    }
+    if (p.isSet(speedup)) {
+        bool ok = false;
+        const double f = p.value(speedup).toDouble(&ok);
+        if (!ok || f < 1 || f > 1000) {
+            std::fprintf(stderr, "ocu-sim: --speedup must be a number 1..1000\n");
+            return 2;
+        }
+        cfg.simulation.osyrisSpeedUp = f;
+    }
+    if (p.isSet(pavingJob))
+        cfg.simulation.osyrisPavingJob = p.value(pavingJob).toStdString();
+    if (!intOption(lifts, cfg.simulation.osyrisLifts, 20))
+        return 2;
+    if (cfg.simulation.osyrisLifts < 1) {
+        std::fprintf(stderr, "ocu-sim: --lifts must be 1..20\n");
+        return 2;
     }
     cfg.simulation.enabled = true;
     if (p.isSet(separateMap))

@@ -134,8 +134,14 @@ QColor passCountColor(int count, PassPalette palette, PassTarget target) {
                                             : passCountSummaryColor(count, target);
 }
 
+bool PassCountLayer::fastSummary(PassTarget, PassCountSummary&) const {
+    return false;
+}
+
 PassCountSummary summarize(const PassCountLayer& layer, PassTarget target) {
     PassCountSummary s;
+    if (layer.fastSummary(target, s))
+        return s;
     s.histogram = QVector<qint64>(10, 0);
     qint64 below = 0, within = 0, above = 0;
     auto add = [&](int v) {

@@ -10,6 +10,9 @@
 
 namespace ocu {
 
+struct PassTarget;
+struct PassCountSummary;
+
 // Cell (col, row) covers E in [origin.x + col*cellSize, +cellSize) and N in [origin.y + row*cellSize, ...).
 class PassCountLayer {
 public:
@@ -30,6 +33,10 @@ public:
     // rect.
     // Layers with a faster bulk read (a dense array, tiled snapshots) override it.
     virtual QRect countsIn(QRect cells, std::vector<std::uint16_t>& out) const;
+
+    // Layers that can summarise faster than a read of every cell (tiled, incremental) fill `out` and return
+    // true; summarize() then uses it.
+    virtual bool fastSummary(PassTarget target, PassCountSummary& out) const;
 };
 
 // A dense in-memory grid (tests, benchmarks; 1 km² at 0.34 m is ~8.6 M cells, 17 MB). The OSYRIS bridge's

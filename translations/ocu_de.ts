@@ -1392,6 +1392,26 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <source>PING sent to station %1</source>
         <translation>PING an Station %1 gesendet</translation>
     </message>
+    <message>
+        <source>send_text: "%1" is not an OSYRIS station</source>
+        <translation>send_text: „%1“ ist keine OSYRIS-Station</translation>
+    </message>
+    <message>
+        <source>send_text: "text" must be 1 to 79 bytes (CmMsg)</source>
+        <translation>send_text: „text“ muss 1 bis 79 Bytes lang sein (CmMsg)</translation>
+    </message>
+    <message>
+        <source>Message from %1 (%2): %3</source>
+        <translation>Nachricht von %1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>station %1</source>
+        <translation>Station %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 positions given up as unobtainable (slots %3); their cells are marked incomplete</source>
+        <translation>%1: %2 Positionen als nicht erhältlich aufgegeben (Slots %3); ihre Zellen sind als unvollständig markiert</translation>
+    </message>
 </context>
 <context>
     <name>ocu::OwnPosition</name>
@@ -1445,6 +1465,86 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>Area</source>
         <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>Lift</source>
+        <translation>Lage</translation>
+    </message>
+    <message>
+        <source>Filters</source>
+        <translation>Filter</translation>
+    </message>
+    <message>
+        <source>Vibrating only</source>
+        <translation>Nur mit Vibration</translation>
+    </message>
+    <message>
+        <source>Static only</source>
+        <translation>Nur statisch</translation>
+    </message>
+    <message>
+        <source>Vibrating and static</source>
+        <translation>Vibration und statisch</translation>
+    </message>
+    <message>
+        <source>Both directions</source>
+        <translation>Beide Richtungen</translation>
+    </message>
+    <message>
+        <source>Forward only</source>
+        <translation>Nur vorwärts</translation>
+    </message>
+    <message>
+        <source>Backward only</source>
+        <translation>Nur rückwärts</translation>
+    </message>
+    <message>
+        <source> km/h</source>
+        <translation> km/h</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>beliebig</translation>
+    </message>
+    <message>
+        <source>Time window</source>
+        <translation>Zeitfenster</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>one lift</source>
+        <translation>eine Lage</translation>
+    </message>
+    <message>
+        <source>Lifts are elevation bands of this thickness in the machines' heights</source>
+        <translation>Lagen sind Höhenbänder dieser Dicke in den Höhen der Maschinen</translation>
+    </message>
+    <message>
+        <source>Vibration</source>
+        <translation>Vibration</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Lift thickness</source>
+        <translation>Lagendicke</translation>
+    </message>
+    <message>
+        <source>Top-most lift</source>
+        <translation>Oberste Lage</translation>
+    </message>
+    <message>
+        <source>Lift %1 (z %2 – %3 m)</source>
+        <translation>Lage %1 (z %2 – %3 m)</translation>
     </message>
 </context>
 <context>
@@ -1580,6 +1680,14 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>3D terrain not shown: %1</source>
         <translation>3D-Gelände nicht angezeigt: %1</translation>
+    </message>
+    <message>
+        <source>Pass counts</source>
+        <translation>Überfahrten</translation>
+    </message>
+    <message>
+        <source>Crew messages</source>
+        <translation>Nachrichten an die Mannschaft</translation>
     </message>
 </context>
 <context>
@@ -2531,6 +2639,37 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>no lift %1 (the data has %2)</source>
         <translation>keine Lage %1 (die Daten haben %2)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CrewMessagesPanel</name>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <source>Message to the crew (Enter sends)</source>
+        <translation>Nachricht an die Mannschaft (Enter sendet)</translation>
+    </message>
+    <message>
+        <source>Recipient</source>
+        <translation>Empfänger</translation>
+    </message>
+    <message>
+        <source>All machines</source>
+        <translation>Alle Maschinen</translation>
+    </message>
+    <message>
+        <source>%1  → %2: %3 (sending…)</source>
+        <translation>%1  → %2: %3 (wird gesendet …)</translation>
+    </message>
+    <message>
+        <source>%1  → %2: %3 (sent)</source>
+        <translation>%1  → %2: %3 (gesendet)</translation>
+    </message>
+    <message>
+        <source>%1  → %2: %3 (NOT sent: %4)</source>
+        <translation>%1  → %2: %3 (NICHT gesendet: %4)</translation>
     </message>
 </context>
 </TS>

@@ -1,7 +1,11 @@
 #include "widgets/PassCountPanel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDateTimeEdit>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -108,7 +112,11 @@ private:
 
 PassCountPanel::PassCountPanel(QWidget* parent)
     : QWidget(parent), m_palette(new QComboBox(this)), m_min(new QSpinBox(this)), m_max(new QSpinBox(this)),
-      m_summaryLabel(new QLabel(this)), m_histogram(new Histogram(this)) {
+      m_summaryLabel(new QLabel(this)), m_histogram(new Histogram(this)), m_filters(new QGroupBox(this)),
+      m_lift(new QComboBox(this)), m_vibration(new QComboBox(this)), m_direction(new QComboBox(this)),
+      m_speedMin(new QDoubleSpinBox(this)), m_speedMax(new QDoubleSpinBox(this)),
+      m_timeWindow(new QCheckBox(this)), m_timeFrom(new QDateTimeEdit(this)),
+      m_timeTo(new QDateTimeEdit(this)), m_liftThickness(new QDoubleSpinBox(this)), m_gaps(new QLabel(this)) {
     m_palette->addItem(tr("Pass count (discrete)"), int(PassPalette::Discrete));
     m_palette->addItem(tr("Summary (below / within / above)"), int(PassPalette::Summary));
     m_min->setRange(1, 50);
@@ -122,8 +130,79 @@ PassCountPanel::PassCountPanel(QWidget* parent)
     auto* form = new QFormLayout;
     form->addRow(tr("Palette"), m_palette);
     form->addRow(tr("Target passes"), targetRow);
+    form->addRow(tr("Lift"), m_lift);
+
+    // Lifts and filters (issue 17 §2): what the engine counts; the overlay and the statistics follow.
+    static_cast<QGroupBox*>(m_filters)->setTitle(tr("Filters"));
+    m_vibration->addItem(tr("Vibrating only"), int(PassCountFilter::Vibration::On));
+    m_vibration->addItem(tr("Static only"), int(PassCountFilter::Vibration::Off));
+    m_vibration->addItem(tr("Vibrating and static"), int(PassCountFilter::Vibration::Any));
+    m_direction->addItem(tr("Both directions"), int(PassCountFilter::Direction::Any));
+    m_direction->addItem(tr("Forward only"), int(PassCountFilter::Direction::Forward));
+    m_direction->addItem(tr("Backward only"), int(PassCountFilter::Direction::Backward));
+    for (QDoubleSpinBox* b : {m_speedMin, m_speedMax}) {
+        b->setRange(0, 30);
+        b->setDecimals(1);
+        b->setSingleStep(0.5);
+        b->setSuffix(tr(" km/h"));
+        b->setSpecialValueText(tr("any"));
+    }
+    m_timeWindow->setText(tr("Time window"));
+    for (QDateTimeEdit* e : {m_timeFrom, m_timeTo}) {
+        e->setDisplayFormat(QStringLiteral("yyyy-MM-dd HH:mm"));
+        e->setCalendarPopup(true);
+        e->setEnabled(false);
+    }
+    m_timeFrom->setDateTime(QDateTime::currentDateTime().addSecs(-8 * 3600));
+    m_timeTo->setDateTime(QDateTime::currentDateTime().addSecs(3600));
+    m_liftThickness->setRange(0, 100);
+    m_liftThickness->setDecimals(0);
+    m_liftThickness->setSuffix(tr(" cm"));
+    m_liftThickness->setSpecialValueText(tr("one lift"));
+    m_liftThickness->setToolTip(tr("Lifts are elevation bands of this thickness in the machines' heights"));
+    auto* speedRow = new QHBoxLayout;
+    speedRow->addWidget(m_speedMin);
+    speedRow->addWidget(new QLabel(QStringLiteral("–"), this));
+    speedRow->addWidget(m_speedMax);
+    auto* timeRow = new QHBoxLayout;
+    timeRow->addWidget(m_timeFrom);
+    timeRow->addWidget(new QLabel(QStringLiteral("–"), this));
+    timeRow->addWidget(m_timeTo);
+    auto* filterForm = new QFormLayout(m_filters);
+    filterForm->addRow(tr("Vibration"), m_vibration);
+    filterForm->addRow(tr("Direction"), m_direction);
+    filterForm->addRow(tr("Speed"), speedRow);
+    filterForm->addRow(m_timeWindow, timeRow);
+    filterForm->addRow(tr("Lift thickness"), m_liftThickness);
+    m_gaps->setWordWrap(true);
+    m_gaps->hide();
+    m_filters->hide();
+    m_lift->setEnabled(false);
+    m_lift->addItem(tr("Top-most lift"), -1);
+    m_applyFilter.setSingleShot(true);
+    m_applyFilter.setInterval(400);
+    connect(&m_applyFilter, &QTimer::timeout, this, &PassCountPanel::applyFilter);
+    for (QComboBox* c : {m_vibration, m_direction})
+        connect(c, &QComboBox::currentIndexChanged, this, [this] { m_applyFilter.start(); });
+    for (QDoubleSpinBox* b : {m_speedMin, m_speedMax, m_liftThickness})
+        connect(b, &QDoubleSpinBox::valueChanged, this, [this] { m_applyFilter.start(); });
+    connect(m_timeWindow, &QCheckBox::toggled, this, [this](bool on) {
+        m_timeFrom->setEnabled(on);
+        m_timeTo->setEnabled(on);
+        m_applyFilter.start();
+    });
+    for (QDateTimeEdit* e : {m_timeFrom, m_timeTo})
+        connect(e, &QDateTimeEdit::dateTimeChanged, this, [this] { m_applyFilter.start(); });
+    connect(m_lift, &QComboBox::activated, this, [this] {
+        if (m_controls)
+            m_controls->setViewLift(m_lift->currentData().toInt());
+        recompute();
+    });
+
     auto* lay = new QVBoxLayout(this);
     lay->addLayout(form);
+    lay->addWidget(m_filters);
+    lay->addWidget(m_gaps);
     lay->addWidget(m_summaryLabel);
     lay->addWidget(m_histogram);
     lay->addStretch(1);
@@ -152,6 +231,77 @@ void PassCountPanel::setLayer(const PassCountLayer* layer) {
     recompute();
 }
 
+void PassCountPanel::setControls(PassCountControls* controls) {
+    m_controls = controls;
+    m_filters->setVisible(controls != nullptr);
+    m_lift->setEnabled(controls != nullptr);
+    if (controls) {
+        const QSignalBlocker block(this);
+        setFilter(controls->passCountFilter());
+        m_applyFilter.stop(); // what the source has is shown, nothing to apply
+    }
+    recompute();
+}
+
+PassCountFilter PassCountPanel::filter() const {
+    PassCountFilter f;
+    f.vibration = PassCountFilter::Vibration(m_vibration->currentData().toInt());
+    f.direction = PassCountFilter::Direction(m_direction->currentData().toInt());
+    f.speedMin = m_speedMin->value() / 3.6;
+    f.speedMax = m_speedMax->value() / 3.6;
+    if (m_timeWindow->isChecked()) {
+        f.timeFromMs = m_timeFrom->dateTime().toMSecsSinceEpoch();
+        f.timeToMs = m_timeTo->dateTime().toMSecsSinceEpoch();
+    }
+    f.liftThickness = m_liftThickness->value() / 100.0;
+    if (m_controls)
+        f.liftBase = m_controls->passCountFilter().liftBase;
+    return f;
+}
+
+void PassCountPanel::setFilter(const PassCountFilter& f) {
+    m_vibration->setCurrentIndex(m_vibration->findData(int(f.vibration)));
+    m_direction->setCurrentIndex(m_direction->findData(int(f.direction)));
+    m_speedMin->setValue(f.speedMin * 3.6);
+    m_speedMax->setValue(f.speedMax * 3.6);
+    m_timeWindow->setChecked(f.timeFromMs > 0 || f.timeToMs > 0);
+    if (f.timeFromMs > 0)
+        m_timeFrom->setDateTime(QDateTime::fromMSecsSinceEpoch(f.timeFromMs));
+    if (f.timeToMs > 0)
+        m_timeTo->setDateTime(QDateTime::fromMSecsSinceEpoch(f.timeToMs));
+    m_liftThickness->setValue(f.liftThickness * 100.0);
+}
+
+void PassCountPanel::applyFilter() {
+    if (m_controls)
+        m_controls->setPassCountFilter(filter());
+}
+
+void PassCountPanel::refreshLifts() {
+    const QVector<PassCountLiftInfo> lifts =
+        m_controls ? m_controls->passCountLifts() : QVector<PassCountLiftInfo>{};
+    const int shown = m_controls ? m_controls->viewLift() : -1;
+    QStringList labels{tr("Top-most lift")};
+    for (int i = 0; i < lifts.size(); ++i)
+        labels << tr("Lift %1 (z %2 – %3 m)")
+                      .arg(i + 1)
+                      .arg(QLocale().toString(lifts[i].bottom, 'f', 2),
+                           QLocale().toString(lifts[i].top, 'f', 2));
+    bool same = labels.size() == m_lift->count();
+    for (int i = 0; same && i < labels.size(); ++i)
+        same = m_lift->itemText(i) == labels[i];
+    if (!same) {
+        const QSignalBlocker block(m_lift);
+        m_lift->clear();
+        for (int i = 0; i < labels.size(); ++i)
+            m_lift->addItem(labels[i], i - 1);
+    }
+    m_lift->setCurrentIndex(std::clamp(shown + 1, 0, m_lift->count() - 1));
+    const QStringList gaps = m_controls ? m_controls->passCountGaps() : QStringList{};
+    m_gaps->setVisible(!gaps.isEmpty());
+    m_gaps->setText(gaps.join(QLatin1Char('\n')));
+}
+
 PassPalette PassCountPanel::palette() const {
     return PassPalette(m_palette->currentData().toInt());
 }
@@ -178,6 +328,9 @@ void PassCountPanel::layerChanged() {
 }
 
 void PassCountPanel::recompute() {
+    refreshLifts();
+    // Incremental for tiled layers (per-tile histograms cached by tile identity), at most once a second
+    // while the counts change (layerChanged()).
     m_summary = m_layer ? summarize(*m_layer, target()) : PassCountSummary{};
     if (!m_layer || m_summary.coveredCells == 0) {
         m_summaryLabel->setText(tr("No pass-count data"));

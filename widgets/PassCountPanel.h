@@ -2,6 +2,7 @@
 // Pass-count summary (issue 6 §5; anchors-features.md §4.3-4.4): % of the covered area below / within /
 // above the target range, covered area, a histogram per pass count, palette choice and target range.
 // The summary is recomputed at most once per second while the layer changes.
+#include "models/PassCountControls.h"
 #include "models/PassCountLayer.h"
 
 #include <QStringList>
@@ -9,7 +10,10 @@
 #include <QVector>
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
+class QDateTimeEdit;
+class QDoubleSpinBox;
 class QLabel;
 class QSpinBox;
 
@@ -22,6 +26,12 @@ public:
 
     // Not owned.
     void setLayer(const PassCountLayer* layer);
+    // Lifts and filters of the layer's source (issue 17 §2); null hides the controls. Not owned.
+    void setControls(PassCountControls* controls);
+    // The filter the controls show (applied to the source after a short pause in editing).
+    PassCountFilter filter() const;
+    void setFilter(const PassCountFilter& f);
+    QComboBox* liftPicker() const { return m_lift; }
     PassCountSummary summary() const { return m_summary; }
     PassPalette palette() const;
     PassTarget target() const;
@@ -59,6 +69,22 @@ private:
     QLabel* m_summaryLabel;
     Histogram* m_histogram;
     QTimer m_throttle;
+    // Lifts and filters
+    void refreshLifts();
+    void applyFilter();
+    PassCountControls* m_controls = nullptr;
+    QWidget* m_filters;
+    QComboBox* m_lift;
+    QComboBox* m_vibration;
+    QComboBox* m_direction;
+    QDoubleSpinBox* m_speedMin;
+    QDoubleSpinBox* m_speedMax;
+    QCheckBox* m_timeWindow;
+    QDateTimeEdit* m_timeFrom;
+    QDateTimeEdit* m_timeTo;
+    QDoubleSpinBox* m_liftThickness;
+    QLabel* m_gaps;
+    QTimer m_applyFilter;
 };
 
 } // namespace ocu

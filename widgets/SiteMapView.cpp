@@ -98,7 +98,7 @@ void SiteMapView::setSiteMap(const SiteMapData& map) {
 
 void SiteMapView::setPassCountLayer(const PassCountLayer* layer) {
     m_pass = layer;
-    m_passImage = QImage();
+    m_passOverlay.clear();
     m_passImageRevision = 0;
     invalidateStatic();
     update();
@@ -412,59 +412,13 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
         collectMapLabels(size);
 }
 
-void SiteMapView::rebuildPassImage() {
-    const int cols = m_pass->columns(), rows = m_pass->rows();
-    QRect region(0, 0, cols, rows);
-    if (m_passImage.size() != QSize(cols, rows)) {
-        m_passImage = QImage(cols, rows, QImage::Format_ARGB32_Premultiplied);
-    } else if (m_palette == m_passImagePalette && m_target.min == m_passImageTarget.min &&
-               m_target.max == m_passImageTarget.max && m_passImageRevision != 0) {
-        // Same colours: recolour only the cells changed since the image was built.
-        region = m_pass->changedCellsSince(m_passImageRevision).intersected(region);
-    }
-    QRgb lut[16];
-    for (int c = 0; c < 16; ++c)
-        lut[c] = passCountColor(c, m_palette, m_target).rgba();
-    lut[0] = 0;
-    // One bulk read of the changed cells (one lock for a live grid), then a table lookup per cell.
-    std::vector<std::uint16_t> counts;
-    const QRect got = m_pass->countsIn(region, counts);
-    const int width = got.width();
-    for (int r = got.top(); r <= got.bottom(); ++r) {
-        // Image row 0 is the northernmost cell row.
-        auto* line = reinterpret_cast<QRgb*>(m_passImage.scanLine(rows - 1 - r));
-        const std::uint16_t* src = counts.data() + size_t(r - got.top()) * size_t(width);
-        for (int c = 0; c < width; ++c)
-            line[got.left() + c] = lut[std::min<int>(src[c], 15)];
-    }
-    m_passImageRevision = m_pass->revision();
+void SiteMapView::drawPassCount(QPainter& p, const QSize& size) {
+    // Issue 17 §6: a tile pyramid of cached images (PassCountOverlay), any zoom, only changed tiles redrawn.
+    m_passOverlay.draw(p, *m_pass, m_palette, m_target, visibleWorld(size),
+                       QRectF(QPointF(0, 0), QSizeF(size)));
+    m_passImageRevision = m_pass->revision(); // what the static layer shows (ensureStaticLayer)
     m_passImagePalette = m_palette;
     m_passImageTarget = m_target;
-}
-
-void SiteMapView::drawPassCount(QPainter& p, const QSize& size) {
-    if (m_pass->columns() <= 0 || m_pass->rows() <= 0)
-        return;
-    if (m_passImage.isNull() || m_pass->revision() != m_passImageRevision ||
-        m_palette != m_passImagePalette || m_target.min != m_passImageTarget.min ||
-        m_target.max != m_passImageTarget.max)
-        rebuildPassImage();
-    const double cell = m_pass->cellSize();
-    const QPointF o = m_pass->origin();
-    const int rows = m_pass->rows();
-    // Visible cell range only: drawImage then scales just that part (nearest neighbour).
-    const QRectF world = visibleWorld(size);
-    const int c0 = std::max(0, int(std::floor((world.left() - o.x()) / cell)));
-    const int c1 = std::min(m_pass->columns(), int(std::ceil((world.right() - o.x()) / cell)));
-    const int r0 = std::max(0, int(std::floor((world.top() - o.y()) / cell)));
-    const int r1 = std::min(rows, int(std::ceil((world.bottom() - o.y()) / cell)));
-    if (c0 >= c1 || r0 >= r1)
-        return;
-    const QRectF src(c0, rows - r1, c1 - c0, r1 - r0);
-    const QPointF tl = worldToScreen({o.x() + c0 * cell, o.y() + r1 * cell});
-    const QPointF br = worldToScreen({o.x() + c1 * cell, o.y() + r0 * cell});
-    p.setRenderHint(QPainter::SmoothPixmapTransform, false);
-    p.drawImage(QRectF(tl, br), m_passImage, src);
 }
 
 void SiteMapView::drawTrails(QPainter& p, const QRectF& world) {

@@ -14,6 +14,7 @@
 #include "protocols/common/GeoFrame.h"
 #include "widgets/MapLabelLayout.h"
 #include "widgets/MapSymbols.h"
+#include "widgets/PassCountOverlay.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -191,7 +192,6 @@ private:
     void ensureStaticLayer(const QSize& size, qreal dpr);
     void drawStatic(QPainter& p, const QSize& size);
     void drawPassCount(QPainter& p, const QSize& size);
-    void rebuildPassImage();
     void drawTrails(QPainter& p, const QRectF& visibleWorld);
     void drawMachines(QPainter& p, const QRectF& visibleWorld);
     void drawOwnPosition(QPainter& p);
@@ -255,7 +255,7 @@ private:
     QPointF m_staticCenter;
     double m_staticScale = 0;
     // Pass-count colour image (one pixel per cell, row 0 = southernmost at the bottom).
-    QImage m_passImage;
+    PassCountOverlay m_passOverlay; // issue 17 §6: tile pyramid (widgets/PassCountOverlay.h)
     quint64 m_passImageRevision = 0;
     PassPalette m_passImagePalette = PassPalette::Discrete;
     PassTarget m_passImageTarget{-1, -1};

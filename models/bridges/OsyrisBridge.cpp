@@ -138,13 +138,119 @@ void OsyrisBridge::onStationAlive(std::uint8_t idx, std::optional<SlotRange>) {
                  0, tr("stations heard")});
 }
 
+PassCountFilter OsyrisBridge::passCountFilter() const {
+    const PassCountSettings& s = m_config.passCount;
+    PassCountFilter f;
+    f.vibration = s.vibration == VibrationFilter::On    ? PassCountFilter::Vibration::On
+                  : s.vibration == VibrationFilter::Off ? PassCountFilter::Vibration::Off
+                                                        : PassCountFilter::Vibration::Any;
+    f.direction = s.direction == DirectionFilter::Forward    ? PassCountFilter::Direction::Forward
+                  : s.direction == DirectionFilter::Backward ? PassCountFilter::Direction::Backward
+                                                             : PassCountFilter::Direction::Any;
+    f.speedMin = s.speedMin.value_or(0);
+    f.speedMax = s.speedMax.value_or(0);
+    f.timeFromMs = s.timeFrom.value_or(0);
+    f.timeToMs = s.timeTo.value_or(0);
+    f.liftThickness = s.liftThickness;
+    f.liftBase = s.liftBase;
+    return f;
+}
+
+void OsyrisBridge::setPassCountFilter(const PassCountFilter& f) {
+    PassCountSettings s = m_config.passCount;
+    s.vibration = f.vibration == PassCountFilter::Vibration::On    ? VibrationFilter::On
+                  : f.vibration == PassCountFilter::Vibration::Off ? VibrationFilter::Off
+                                                                   : VibrationFilter::Any;
+    s.direction = f.direction == PassCountFilter::Direction::Forward    ? DirectionFilter::Forward
+                  : f.direction == PassCountFilter::Direction::Backward ? DirectionFilter::Backward
+                                                                        : DirectionFilter::Any;
+    s.speedMin = f.speedMin > 0 ? std::optional<double>(f.speedMin) : std::nullopt;
+    s.speedMax = f.speedMax > 0 ? std::optional<double>(f.speedMax) : std::nullopt;
+    s.timeFrom = f.timeFromMs > 0 ? std::optional<std::int64_t>(f.timeFromMs) : std::nullopt;
+    s.timeTo = f.timeToMs > 0 ? std::optional<std::int64_t>(f.timeToMs) : std::nullopt;
+    s.liftThickness = std::max(0.0, f.liftThickness);
+    s.liftBase = f.liftBase;
+    if (s == m_config.passCount)
+        return;
+    m_config.passCount = s;
+    if (m_station)
+        m_station->setPassCountSettings(s);
+}
+
+QVector<PassCountLiftInfo> OsyrisBridge::passCountLifts() const {
+    QVector<PassCountLiftInfo> out;
+    if (const auto& snap = m_layer->snapshot())
+        for (int i = 0; i < snap->liftCount(); ++i)
+            out.push_back({snap->liftBottom(i), snap->liftTop(i)});
+    return out;
+}
+
+QStringList OsyrisBridge::passCountGaps() const {
+    QStringList out;
+    if (const auto& snap = m_layer->snapshot())
+        for (const auto& [idx, ranges] : snap->givenUp()) {
+            QStringList parts;
+            std::uint64_t n = 0;
+            for (const auto& r : ranges) {
+                parts << (r.from == r.to ? QString::number(r.from)
+                                         : QStringLiteral("%1–%2").arg(r.from).arg(r.to));
+                n += r.size();
+            }
+            out << tr("%1: %2 positions given up as unobtainable (slots %3); their cells are marked "
+                      "incomplete")
+                       .arg(stationName(idx))
+                       .arg(n)
+                       .arg(parts.join(QStringLiteral(", ")));
+        }
+    return out;
+}
+
+int OsyrisBridge::viewLift() const {
+    return m_layer->viewLift();
+}
+
+void OsyrisBridge::setViewLift(int lift) {
+    if (lift == m_layer->viewLift())
+        return;
+    m_layer->setViewLift(lift);
+    emit passCountChanged();
+}
+
+QVector<CrewRecipient> OsyrisBridge::crewRecipients() const {
+    std::set<int> ids(m_textSenders);
+    for (const auto& [idx, name] : m_config.machineNames) {
+        auto t = m_config.machineTypes.find(idx);
+        if (t == m_config.machineTypes.end() || t->second != "relay")
+            ids.insert(idx);
+    }
+    QVector<CrewRecipient> out;
+    for (int idx : ids)
+        if (idx != m_config.stationIndex)
+            out.push_back({protocolPrefix(Protocol::Osyris) + QString::number(idx), stationName(idx)});
+    return out;
+}
+
+QString OsyrisBridge::stationName(int idx) const {
+    if (auto it = m_config.machineNames.find(static_cast<std::uint8_t>(idx));
+        it != m_config.machineNames.end())
+        return q(it->second);
+    return tr("station %1").arg(idx);
+}
+
 void OsyrisBridge::onText(std::uint8_t idx, const std::string& text) {
-    FleetEvent e =
-        makeEvent(EventSeverity::Info, ocu::EventKind::TextMessage,
-                  protocolPrefix(Protocol::Osyris) + QString::number(idx),
-                  tr("Message from station %1: %2").arg(idx).arg(q(text)), QStringLiteral("osyris"));
+    const QString id = protocolPrefix(Protocol::Osyris) + QString::number(idx);
+    const QString name = stationName(idx);
+    FleetEvent e = makeEvent(EventSeverity::Info, ocu::EventKind::TextMessage, id,
+                             tr("Message from %1 (%2): %3").arg(name, id, q(text)), QStringLiteral("osyris"));
     e.requiresAck = true; // an operator should read messages from the machines
     publishEvent(e);
+    QMetaObject::invokeMethod(
+        this,
+        [this, idx, id, name, t = q(text)] {
+            m_textSenders.insert(idx);
+            emit textReceived(id, name, t);
+        },
+        Qt::QueuedConnection);
 }
 
 bool OsyrisBridge::readyForPassCounts() {
@@ -218,11 +324,23 @@ void OsyrisBridge::command(const QString& name, const QJsonObject& args, Outcome
     const QString target = q(m_station->groupTarget());
     if (name == QLatin1String("send_text")) {
         const QString text = args.value(QStringLiteral("text")).toString();
-        if (text.isEmpty() || text.toUtf8().size() > 80)
-            return done({refusal(target, tr("send_text: \"text\" must be 1 to 80 bytes (CmMsg)"))});
+        // To one machine (its id) or to all (no id).
+        const QString id = args.value(QStringLiteral("id")).toString();
+        int to = osyris::kIdxAll;
+        if (!id.isEmpty()) {
+            bool ok = false;
+            to = id.startsWith(protocolPrefix(Protocol::Osyris))
+                     ? id.mid(protocolPrefix(Protocol::Osyris).size()).toInt(&ok)
+                     : -1;
+            if (!ok || to < 0 || to > 253)
+                return done({refusal(id, tr("send_text: \"%1\" is not an OSYRIS station").arg(id))});
+        }
+        const QString shown = id.isEmpty() ? target : id;
+        if (text.isEmpty() || text.toUtf8().size() > 79) // §6: 80 bytes NUL-padded, so C peers find a NUL
+            return done({refusal(shown, tr("send_text: \"text\" must be 1 to 79 bytes (CmMsg)"))});
         if (const QString why = linkRefusal(name); !why.isEmpty())
-            return done({refusal(target, why)});
-        m_station->sendText(text.toStdString(), std::move(done));
+            return done({refusal(shown, why)});
+        m_station->sendText(text.toStdString(), static_cast<std::uint8_t>(to), std::move(done));
         return;
     }
     if (name == QLatin1String("ping")) {

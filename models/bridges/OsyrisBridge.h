@@ -3,7 +3,9 @@
 // messages become events, and the station's pass counts are offered to the map as a PassCountLayer placed in
 // the site frame through the worksite origin: immutable snapshots published by the io thread and handed to
 // the GUI thread by a queued call (OsyrisPassCountLayer).
+#include "models/CrewMessaging.h"
 #include "models/FleetBridge.h"
+#include "models/PassCountControls.h"
 #include "models/bridges/OsyrisPassCountLayer.h"
 
 #include "protocols/common/GeoFrame.h"
@@ -14,10 +16,14 @@
 #include <atomic>
 #include <map>
 #include <memory>
+#include <set>
 
 namespace ocu {
 
-class OsyrisBridge : public FleetBridge, private osyris::OsyrisListener {
+class OsyrisBridge : public FleetBridge,
+                     public PassCountControls,
+                     public CrewMessaging,
+                     private osyris::OsyrisListener {
     Q_OBJECT
 public:
     OsyrisBridge(const osyris::OsyrisConfig& config, const GeoFrame& siteFrame, QObject* parent = nullptr);
@@ -32,7 +38,8 @@ public:
     bool stopsFromCallersThread() const override { return true; } // the stack's fast path (issue 13 §10)
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
-    // send_text {"text"}, ping {"idx"}.
+    // send_text {"text"} to every station, or {"id": "osyris:<idx>", "text"} to one (CmMsg IdxWhose; the
+    // result's target is then that machine); ping {"idx"}.
     void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
     // OSYRIS carries no stop state: a stop can never be confirmed by the machines.
     bool reportsStopState() const override { return false; }
@@ -43,6 +50,26 @@ public:
     std::chrono::milliseconds ioStalledFor() const override;
     // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
     void postToIo(std::function<void()> f);
+    // Lifts and filters (issue 17 §2; GUI thread): a new filter makes the station recount from the ribbons.
+    PassCountFilter passCountFilter() const override;
+    void setPassCountFilter(const PassCountFilter& filter) override;
+    QVector<PassCountLiftInfo> passCountLifts() const override;
+    int viewLift() const override;
+    void setViewLift(int lift) override;
+    QStringList passCountGaps() const override;
+    const osyris::PassCountSettings& passCountSettings() const { return m_config.passCount; }
+
+    // Crew messages (issue 17 §5): the configured machines (relays excepted) and every station that wrote.
+    QVector<CrewRecipient> crewRecipients() const override;
+    int crewMessageMaxBytes() const override { return 79; }
+
+    // The display name of station idx (configured, else "station <idx>").
+    QString stationName(int idx) const;
+
+signals:
+    // A crew message (CmMsg) for this console or for all arrived (GUI thread): sender id ("osyris:3"), its
+    // name, the text.
+    void textReceived(const QString& fromId, const QString& fromName, const QString& text);
 
 private:
     void onMachinePosition(const osyris::MachineSnapshot& s) override;
@@ -61,6 +88,7 @@ private:
     std::atomic<bool> m_heard{false};                  // a station (position or alive) was heard
     std::map<std::uint8_t, MachineState> m_lastGoodIo; // io thread only: the last plausible state per machine
     std::atomic<bool> m_running{false};
+    std::set<int> m_textSenders; // GUI thread
     // Why a message cannot go out now (no station heard, station not running), or an empty string.
     QString linkRefusal(const QString& what) const;
 };

@@ -138,6 +138,18 @@ void OsyrisStack::callOnIo(const std::function<void()>& f) {
     m_impl->io.call([&] { f(); });
 }
 
+void OsyrisStack::setPassCountSettings(const PassCountSettings& s) {
+    if (!m_impl->running) {
+        m_grid.setSettings(s);
+        m_cfg.passCount = s;
+        return;
+    }
+    m_impl->io.post([this, s] {
+        if (m_impl->core)
+            m_impl->core->setPassCountSettings(s);
+    });
+}
+
 std::shared_ptr<const PassCountSnapshot> OsyrisStack::passCounts() {
     return m_impl->io.call([this] { return m_grid.snapshot(); });
 }
@@ -209,40 +221,41 @@ void OsyrisStack::stop() {
     m_impl->io.stop();
 }
 
-void OsyrisStack::sendText(std::string text) {
+void OsyrisStack::sendText(std::string text, std::uint8_t to) {
     if (!m_impl->running)
         return;
-    m_impl->io.post([this, t = std::move(text)] { m_impl->core->sendText(t); });
+    m_impl->io.post([this, t = std::move(text), to] { m_impl->core->sendText(t, to); });
 }
 
-void OsyrisStack::sendText(std::string text, OutcomeCallback done) {
+void OsyrisStack::sendText(std::string text, std::uint8_t to, OutcomeCallback done) {
+    const std::string target = to == kIdxAll ? groupTarget() : "osyris:" + std::to_string(to);
     if (!m_impl->running) {
-        done({TargetOutcome{groupTarget(), false, "the OSYRIS station is not running"}});
+        done({TargetOutcome{target, false, "the OSYRIS station is not running"}});
         return;
     }
     // From the calling thread at once (issue 13 §10: the STOP text does not wait for the io thread to wake
     // up); the io thread sends it instead when the socket would not take it without waiting.
     if (StationCore* c = m_impl->core.get(); c && m_impl->transport) {
-        const Bytes d = c->textDatagram(text);
+        const Bytes d = c->textDatagram(text, to);
         std::string why;
         std::size_t taken = 0;
         const bool all = m_impl->transport->sendFromAnyThread(d, &why, &taken);
         if (taken > 0)
             c->textSent(d.size());
         if (all) {
-            done({TargetOutcome{groupTarget(), true, {}}});
+            done({TargetOutcome{target, true, {}}});
             return;
         }
         if (taken > 0) { // some destinations have it: sending again would show it twice there
-            done({TargetOutcome{groupTarget(), false, "socket error: " + why}});
+            done({TargetOutcome{target, false, "socket error: " + why}});
             return;
         }
     }
-    m_impl->io.post([this, t = std::move(text), done = std::move(done)] {
-        TargetOutcome o{groupTarget(), false, "the OSYRIS station is not running"};
+    m_impl->io.post([this, t = std::move(text), to, target, done = std::move(done)] {
+        TargetOutcome o{target, false, "the OSYRIS station is not running"};
         if (m_impl->running && m_impl->transport) {
             m_impl->lastSendOk = false;
-            m_impl->core->sendText(t);
+            m_impl->core->sendText(t, to);
             o.sent = m_impl->lastSendOk;
             if (!o.sent)
                 o.reason = "socket error: " + m_impl->transport->lastError();

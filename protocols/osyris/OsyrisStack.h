@@ -39,12 +39,17 @@ public:
     void setMessageTap(MessageTap* tap);
     bool running() const;
 
-    void sendText(std::string text);
+    void sendText(std::string text, std::uint8_t to = kIdxAll);
     // The text as its own datagram at once (not with the next Beat), with its outcome (issue 13 §1): `done`
     // runs once with one TargetOutcome for the group (target groupTarget()): sent when the socket took the
     // datagram for every destination, otherwise the reason. Sent from the calling thread (and `done` run
     // there) when the socket takes it at once; otherwise on the io thread (and `done` there).
-    void sendText(std::string text, OutcomeCallback done);
+    void sendText(std::string text, OutcomeCallback done) {
+        sendText(std::move(text), kIdxAll, std::move(done));
+    }
+    // The same to one station (CmMsg IdxWhose = to; kIdxAll = everybody): the outcome's target is then
+    // "osyris:<to>" (the datagram still goes to the group: OSYRIS addresses by IdxWhose, not by socket).
+    void sendText(std::string text, std::uint8_t to, OutcomeCallback done);
     std::string groupTarget() const {
         return "osyris group " + m_cfg.group + ":" + std::to_string(m_cfg.port);
     }
@@ -55,6 +60,8 @@ public:
     // For stations that are machines (simulated rollers): write a position into the own ribbon.
     void publishOwnPosition(CmPos p, std::vector<PosProp> props = {});
     void setImpairment(const RxImpairment& imp);
+    // Filters, lifts (issue 17 §2): the io thread recounts the whole job from the ribbons.
+    void setPassCountSettings(const PassCountSettings& s);
 
     const OsyrisConfig& config() const { return m_cfg; }
     Counters& counters();

@@ -125,6 +125,9 @@ public:
     // Advances the grid over every ribbon now (normally done in tick()) and publishes the pass counts when
     // due.
     void updateGrid();
+    // New pass-count settings (filters, lifts, cell size): the grid is cleared and every ribbon recounted,
+    // keeping the slots given up as unobtainable (issue 17 §2, §4).
+    void setPassCountSettings(const PassCountSettings& s);
 
 private:
     static constexpr int kPrioOwner = 3;   // our own ribbon
@@ -242,6 +245,19 @@ private:
     bool m_receivedPositions = false;
     std::uint32_t m_nextOwnSlot = 0;
     std::set<std::uint8_t> m_gridDirty;
+    // Late join and gaps (issue 17 §4): where the grid waits for each ribbon, since when, and how many NAKs
+    // asked for that gap without an answer for the ribbon since; a late given-up slot asks for a recount.
+    struct GridBlock {
+        std::uint32_t slot = 0;
+        TimePoint since{};
+        int naks = 0;
+        TimePoint lastNak{};
+    };
+    std::map<std::uint8_t, GridBlock> m_gridBlocks;
+    bool m_gridRecount = false;
+    TimePoint m_nextRecount{}; // a recount (the whole job) at most every kRecountGap
+    static constexpr Duration kRecountGap = std::chrono::seconds(5);
+    void checkGridBlocks(TimePoint now);
     bool m_passCountsUnpublished = false;
     TimePoint m_nextPassCountPublish{};
     std::map<std::string, std::uint64_t> m_rejectLogged;

@@ -147,6 +147,11 @@ void StationCore::processWishes(TimePoint now) {
         std::uint32_t n = static_cast<std::uint32_t>(m_cfg.maxNakSlots);
         std::uint32_t from = (c.to - c.from + 1 > n) ? c.to - n + 1 : c.from;
         enqueueRequest(c.owner, {RequestType::Nak, from, c.to, 0, 0});
+        if (auto b = m_gridBlocks.find(c.owner);
+            b != m_gridBlocks.end() && b->second.slot >= c.from && b->second.slot <= c.to) {
+            ++b->second.naks; // a request for the gap the pass counts wait at (issue 17 §4)
+            b->second.lastNak = now;
+        }
         setHold(m_ribbons[c.owner], from, c.to, now + beats(m_cfg.ttlBeats));
         m_counters.add("tx.nak");
         m_counters.add("tx.nak.slots", std::uint64_t(c.to) - from + 1);

@@ -50,6 +50,11 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         cfg.simulation.osyrisRollers =
             static_cast<int>(s->integer("osyris_rollers", cfg.simulation.osyrisRollers, 0, 3));
         cfg.simulation.osyrisSpeedUp = s->number("osyris_speed_up", cfg.simulation.osyrisSpeedUp, 1, 1000);
+        cfg.simulation.osyrisPavingJob = s->string("osyris_paving_job", cfg.simulation.osyrisPavingJob);
+        cfg.simulation.osyrisLifts =
+            static_cast<int>(s->integer("osyris_lifts", cfg.simulation.osyrisLifts, 1, 20));
+        cfg.simulation.osyrisLiftThickness =
+            s->number("osyris_lift_thickness", cfg.simulation.osyrisLiftThickness, 0.01, 2);
         cfg.simulation.interfaceAddress = s->string("interface", cfg.simulation.interfaceAddress);
         boost::system::error_code ec;
         boost::asio::ip::make_address_v4(cfg.simulation.interfaceAddress, ec);

@@ -35,6 +35,11 @@ struct SimulationConfig {
     bool ahsSeparateMapService = false;
     int osyrisRollers = 2;
     double osyrisSpeedUp = 30.0; // paver pace multiplied for demos
+    // Issue 17 §7: the simulated paving train drives a long job: "built-in" or a LandXML file (its first
+    // alignment, UTM), in osyrisLifts lifts of osyrisLiftThickness m. Empty = the short test road.
+    std::string osyrisPavingJob;
+    int osyrisLifts = 3;
+    double osyrisLiftThickness = 0.05;
     // Address the simulators listen on. 127.0.0.1 (default) keeps all traffic on the host; a LAN
     // address lets consoles on other hosts reach `ocu-sim`.
     std::string interfaceAddress = "127.0.0.1";

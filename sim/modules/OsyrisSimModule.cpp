@@ -24,18 +24,36 @@ public:
         o.rollers = s.osyrisRollers;
         o.speedUp = s.osyrisSpeedUp;
         o.interfaceAddress = s.interfaceAddress;
+        const GeoPoint road = site.toGeodetic({SimulatedSite::kRoadAreaE, SimulatedSite::kRoadAreaN, 0});
+        if (!s.osyrisPavingJob.empty()) { // issue 17 §7: the paving train on a long job
+            osyris::PavingJob job;
+            if (s.osyrisPavingJob == "built-in") {
+                job = osyris::builtInPavingJob();
+            } else {
+                auto loaded = osyris::pavingJobFromLandXml(s.osyrisPavingJob, road);
+                if (!loaded)
+                    return "simulated OSYRIS site: " + loaded.error();
+                job = std::move(loaded.value());
+            }
+            job.lifts = s.osyrisLifts;
+            job.liftThickness = s.osyrisLiftThickness;
+            o.pavingJob = std::make_shared<const osyris::PavingJob>(std::move(job));
+        }
         auto demo = std::make_unique<osyris::OsyrisDemo>(o);
         std::string err;
         if (!demo->start(&err))
             return "simulated OSYRIS site: " + err;
         auto c = demo->ocuConfig();
-        const GeoPoint road = site.toGeodetic({SimulatedSite::kRoadAreaE, SimulatedSite::kRoadAreaN, 0});
         c.originLat = road.lat;
         c.originLon = road.lon;
         c.originAlt = road.alt;
         if (config.osyris) {
             c.sqlitePath = config.osyris->sqlitePath;
             c.passCount = config.osyris->passCount;
+        }
+        if (o.pavingJob && !(c.passCount.liftThickness > 0)) { // count in the job's lifts
+            c.passCount.liftThickness = o.pavingJob->liftThickness;
+            c.passCount.liftBase = o.pavingJob->baseZ;
         }
         config.osyris = c;
         m_demo = std::move(demo);
@@ -51,9 +69,16 @@ public:
     std::vector<std::string> describe(const SiteConfig& config) const override {
         if (!m_demo)
             return {};
-        return {"OSYRIS: " + std::to_string(m_demo->stationCount()) + " stations on " + config.osyris->group +
-                ":" + std::to_string(config.osyris->port) + " (interface " + config.osyris->interfaceAddress +
-                ")"};
+        std::vector<std::string> out{"OSYRIS: " + std::to_string(m_demo->stationCount()) + " stations on " +
+                                     config.osyris->group + ":" + std::to_string(config.osyris->port) +
+                                     " (interface " + config.osyris->interfaceAddress + ")"};
+        if (const auto& job = m_demo->options().pavingJob)
+            out.push_back("OSYRIS paving job: " + job->source + ", " + std::to_string(int(job->length())) +
+                          " m, " + std::to_string(job->lifts) + " lifts of " +
+                          std::to_string(int(job->liftThickness * 100)) + " cm, paver " +
+                          std::to_string(int(job->paverSpeed * 60)) + " m/min, speed-up " +
+                          std::to_string(int(config.simulation.osyrisSpeedUp)));
+        return out;
     }
 
     void writeConsoleConfig(const SiteConfig& config, nlohmann::json& out) const override {

@@ -34,8 +34,25 @@ std::uint16_t freeDynamicPort() {
 
 using namespace ocu::osyris;
 
+// A simulated driver's display (issue 17 §5): a message from the console to this machine or to all is
+// acknowledged to its sender; messages from other machines are only read. Runs on the station's io thread.
+struct CrewListener : OsyrisListener {
+    CrewListener(std::uint8_t ocu, std::optional<SimulatedMachine> m)
+        : ocuIndex(ocu), machine(std::move(m)) {}
+    void onText(std::uint8_t who, const std::string& text) override {
+        if (who != ocuIndex || !machine || !station)
+            return;
+        received.fetch_add(1);
+        station->sendText(machine->crewReply(text), who);
+    }
+    std::uint8_t ocuIndex;
+    std::optional<SimulatedMachine> machine;
+    OsyrisStack* station = nullptr;
+    std::atomic<int> received{0};
+};
+
 struct OsyrisDemo::Impl {
-    OsyrisListener quiet; // simulated machines ignore events
+    std::vector<std::unique_ptr<CrewListener>> crews; // parallel to stations
     std::vector<std::unique_ptr<OsyrisStack>> stations;
     std::vector<std::optional<SimulatedMachine>> machines; // parallel to stations
     IoThread driver{"osyris-demo"};
@@ -106,10 +123,21 @@ bool OsyrisDemo::start(std::string* error) {
     if (m_opts.relay)
         plan.emplace_back(std::nullopt, next++);
     for (auto& [spec, idx] : plan) {
+        if (spec) {
+            spec->crewMessageEveryS = m_opts.crewMessageEveryS;
+            if (m_opts.pavingJob) {
+                spec->job = m_opts.pavingJob;
+                spec->paverStartX = 0;
+                spec->paverSpeed = m_opts.pavingJob->paverSpeed;
+            }
+        }
         OsyrisConfig c = ocuConfig();
         c.stationIndex = idx;
-        c.active = 7; // §7 default for machines
-        auto st = std::make_unique<OsyrisStack>(c, m_impl->quiet);
+        c.active = spec ? 15 : 7; // §7 default for machines, plus a driver's display for messages (bit 8)
+        auto crew = std::make_unique<CrewListener>(
+            m_opts.ocuIndex, spec ? std::optional<SimulatedMachine>(*spec) : std::nullopt);
+        auto st = std::make_unique<OsyrisStack>(c, *crew);
+        crew->station = st.get();
         auto imp = m_opts.impairment;
         imp.seed += idx;
         st->setImpairment(imp);
@@ -132,21 +160,28 @@ bool OsyrisDemo::start(std::string* error) {
             m_impl->machines.emplace_back(std::nullopt);
         }
         m_impl->stations.push_back(std::move(st));
+        m_impl->crews.push_back(std::move(crew));
     }
     m_impl->running = true;
     m_impl->t0 = std::chrono::steady_clock::now();
     m_impl->nextT = 0;
     m_impl->driver.start();
     m_impl->timer = std::make_unique<boost::asio::steady_timer>(m_impl->driver.context());
+    if (m_opts.pavingJob) // at most 40 positions per real second per machine, whatever the speed-up
+        m_opts.positionPeriodS = std::max(m_opts.positionPeriodS, m_opts.speedUp / 40.0);
     auto periodMs = std::max(5.0, 1000.0 * m_opts.positionPeriodS / std::max(0.01, m_opts.speedUp));
     m_impl->driver.post([this, periodMs] {
         auto step = [this, periodMs](auto&& self) -> void {
             double t = simTime();
             while (m_impl->nextT <= t) {
                 for (std::size_t i = 0; i < m_impl->stations.size(); ++i)
-                    if (m_impl->machines[i] && !m_impl->paused)
+                    if (m_impl->machines[i] && !m_impl->paused) {
                         m_impl->stations[i]->publishOwnPosition(
                             m_impl->machines[i]->poseAt(m_impl->nextT, unixMillisNow()));
+                        if (auto msg = m_impl->machines[i]->crewMessage(
+                                m_impl->nextT - m_opts.positionPeriodS, m_impl->nextT))
+                            m_impl->stations[i]->sendText(*msg, m_opts.ocuIndex);
+                    }
                 m_impl->nextT += m_opts.positionPeriodS;
             }
             m_impl->timer->expires_after(std::chrono::microseconds(static_cast<long>(periodMs * 1000)));
@@ -158,6 +193,10 @@ bool OsyrisDemo::start(std::string* error) {
         step(step);
     });
     return true;
+}
+
+int OsyrisDemo::crewMessagesReceived(std::size_t station) const {
+    return station < m_impl->crews.size() ? m_impl->crews[station]->received.load() : 0;
 }
 
 void OsyrisDemo::setPaused(bool paused) {
@@ -182,6 +221,7 @@ void OsyrisDemo::stop() {
         s->stop();
     m_impl->stations.clear();
     m_impl->machines.clear();
+    m_impl->crews.clear();
 }
 
 } // namespace ocu::sim::osyris

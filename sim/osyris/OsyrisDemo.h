@@ -14,9 +14,13 @@ namespace ocu::sim::osyris {
 struct OsyrisDemoOptions {
     int rollers = 3; // 0-3 tandem rollers
     bool paver = true;
-    bool relay = true;            // a relay-only station (Active 7, no machine)
-    double speedUp = 10;          // simulated seconds per real second
-    double positionPeriodS = 0.5; // simulated seconds between positions of one machine
+    bool relay = true;              // a relay-only station (Active 7, no machine)
+    double speedUp = 10;            // simulated seconds per real second
+    double positionPeriodS = 0.5;   // simulated seconds between positions of one machine
+    double crewMessageEveryS = 600; // simulated seconds between a driver's own reports (0 = never)
+    // Issue 17 §7: a long paving job (several lifts) instead of the straight test road; the paver starts at
+    // station 0 and the positions come at most 40 per real second per machine whatever the speed-up.
+    std::shared_ptr<const PavingJob> pavingJob;
     std::string group = "233.1.1.1";
     std::uint16_t port = 0; // 0 = a free port
     std::string interfaceAddress = "127.0.0.1";
@@ -40,6 +44,7 @@ public:
     OsyrisDemo& operator=(const OsyrisDemo&) = delete;
 
     bool start(std::string* error = nullptr);
+    const OsyrisDemoOptions& options() const { return m_opts; }
     void stop();
     // Configuration for the OCU's own station (group, port, interface, index, Beat, checksum).
     ocu::osyris::OsyrisConfig ocuConfig() const;
@@ -50,6 +55,8 @@ public:
     // Parked machines stop writing positions (stations keep running, answering and relaying).
     void setPaused(bool paused);
     void setImpairment(const ocu::osyris::RxImpairment& imp); // at every simulated station
+    // Messages from the console station i's driver got (and acknowledged to the console).
+    int crewMessagesReceived(std::size_t station) const;
 
 private:
     struct Impl;

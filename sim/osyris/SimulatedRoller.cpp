@@ -76,10 +76,54 @@ CmPos SimulatedMachine::poseAt(double t, std::int64_t unixMs) const {
     flags |= noise(s.seed, n) < s.mediumAccuracyRate ? kPosAccuracyMed : kPosAccuracyHigh;
     if (s.shadowFromX < s.shadowToX && x >= s.shadowFromX && x <= s.shadowToX)
         flags = (flags & ~(kPosValid | kPosAccuracyMed | kPosAccuracyHigh)) | kPosGpsShadow | kPosAccuracyLow;
+    if (s.job && s.kind != MachineKind::Relay) {
+        int lift = 0;
+        double station = 0, heading = 0;
+        s.job->liftOf(x, lift, station);
+        s.job->at(station, y, x, y, heading);
+        p.z = static_cast<float>(s.job->zOf(lift));
+        p.yaw = static_cast<float>(heading - std::numbers::pi / 2); // north = 0, west = +pi/2
+    }
     p.x = static_cast<float>(x);
     p.y = static_cast<float>(y);
     p.flags = flags;
     return p;
+}
+
+std::optional<std::string> SimulatedMachine::crewMessage(double t0, double t1) const {
+    if (m_spec.job && m_spec.kind != MachineKind::Relay && t1 > 0) {
+        // A lift finished: the driver says so ("Roller 1: lift 2 done").
+        const auto along = [&](double t) {
+            const CmPos straight = SimulatedMachine([&] {
+                                       MachineSpec plain = m_spec;
+                                       plain.job.reset();
+                                       return plain;
+                                   }())
+                                       .poseAt(t);
+            return double(straight.x);
+        };
+        int k0 = 0, k1 = 0;
+        double st = 0;
+        m_spec.job->liftOf(along(std::max(t0, 0.0)), k0, st);
+        m_spec.job->liftOf(along(t1), k1, st);
+        if (k1 > k0)
+            return (m_spec.name + ": lift " + std::to_string(k0 + 1) + " done").substr(0, 79);
+    }
+    const double every = m_spec.crewMessageEveryS;
+    if (m_spec.kind == MachineKind::Relay || !(every > 0) || t1 <= 0 ||
+        std::floor(t1 / every) <= std::floor(std::max(t0, 0.0) / every))
+        return std::nullopt;
+    const auto x = static_cast<long>(std::lround(
+        m_spec.kind == MachineKind::Paver ? paverX(t1)
+                                          : paverX(t1) - m_spec.gapBehindPaver - m_spec.passLength));
+    std::string text = m_spec.kind == MachineKind::Paver
+                           ? m_spec.name + ": paved up to x=" + std::to_string(x) + " m"
+                           : m_spec.name + ": rolled up to x=" + std::to_string(x) + " m";
+    return text.substr(0, 79);
+}
+
+std::string SimulatedMachine::crewReply(const std::string& received) const {
+    return (m_spec.name + ": OK, " + received).substr(0, 79);
 }
 
 } // namespace ocu::sim::osyris

@@ -4,6 +4,9 @@
 // with vibration switched on and off, accuracy flags and an occasional GPS shadow. Pure functions of the
 // simulated time, so runs are reproducible.
 #include "protocols/osyris/OsyrisCodec.h"
+#include "sim/osyris/PavingJob.h"
+
+#include <memory>
 
 #include <cstdint>
 #include <optional>
@@ -30,6 +33,11 @@ struct MachineSpec {
     // Relay: moves back and forth between (x0,y0) and (x1,y1) at speed (speed 0 = static at x0,y0)
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     std::uint32_t seed = 1;
+    // Crew messages (issue 17 §5): the driver reports every this many simulated seconds (0 = never).
+    double crewMessageEveryS = 600;
+    // Issue 17 §7: drive a long job instead of the straight test road: the straight-road pose (x along,
+    // y lateral) is laid onto the job's centre line, lift after lift (z rises by the lift thickness).
+    std::shared_ptr<const PavingJob> job;
 };
 
 class SimulatedMachine {
@@ -39,6 +47,11 @@ public:
     // Pose at t seconds of simulated time (slot is assigned by the station).
     ocu::osyris::CmPos poseAt(double t, std::int64_t unixMs = 0) const;
     double paverX(double t) const { return m_spec.paverStartX + m_spec.paverSpeed * t; }
+    // What the driver reports between simulated times t0 (exclusive) and t1 (inclusive), if anything
+    // ("Roller 1: rolled up to x=62 m"); at most 79 bytes (one CmMsg).
+    std::optional<std::string> crewMessage(double t0, double t1) const;
+    // The driver's answer to a message from the console.
+    std::string crewReply(const std::string& received) const;
 
 private:
     MachineSpec m_spec;
