@@ -72,16 +72,22 @@ void renderCameraView(const I420Frame& f, const CameraPose& c, const std::vector
         const double t = -c.height / d0.z; // same for every pixel of the row (d.z constant)
         V3 p = eye + t * d0;
         const V3 dp = t * step;
-        const double dist0 = t * std::sqrt(dot(d0, d0));
-        const double fog = 1.0 - std::exp(-dist0 / 120.0);
-        // Line half-width grows with distance so lines stay about a pixel wide.
-        const double lw = std::max(0.04, 1.2 * dist0 / fpx);
+        const V3 dc = base; // the row's centre ray
+        const double dist = t * std::sqrt(dot(dc, dc));
+        const double fog = 1.0 - std::exp(-dist / 120.0);
+        // Line half-width grows with distance so lines stay about a pixel wide; far lines fade out instead
+        // of aliasing into noise (which would also cost the encoder bits).
+        // A row's ground footprint in depth is about dist² / (fpx · height): a line must be at least that
+        // wide to show in every row it crosses, or it breaks into dashes.
+        const double lw = std::max({0.04, 1.2 * dist / fpx, 0.6 * dist * dist / (fpx * c.height)});
+        const double fine = std::clamp(1.0 - dist / 30.0, 0.0, 1.0);
+        const double coarse = std::clamp(1.0 - dist / 90.0, 0.0, 1.0);
         for (int px = 0; px < w; ++px, p = p + dp) {
             double yv = ((int(std::floor(p.x / 10)) + int(std::floor(p.y / 10))) & 1) ? 92 : 80;
-            if (toLine(p.x, 10) < 1.5 * lw || toLine(p.y, 10) < 1.5 * lw)
-                yv = 210;
-            else if (toLine(p.x, 2) < lw || toLine(p.y, 2) < lw)
-                yv = 150;
+            if (coarse > 0 && (toLine(p.x, 10) < 1.5 * lw || toLine(p.y, 10) < 1.5 * lw))
+                yv += (210 - yv) * coarse;
+            else if (fine > 0 && (toLine(p.x, 2) < lw || toLine(p.y, 2) < lw))
+                yv += (150 - yv) * fine;
             yv = yv * (1 - fog) + 160 * fog;
             row[px] = std::uint8_t(yv);
         }

@@ -45,6 +45,14 @@ void VideoClient::registerMessages(MessageTable& table) {
                                State& s = m_state[r.id()];
                                s.drdAnswered = true;
                                s.endpoints = m->endpoints;
+                               // A camera not named yet: its host is asked (again) for its capabilities.
+                               for (const DigitalResourceEndpoint& e : s.endpoints) {
+                                   const JausId host = hostOf(s, e);
+                                   if (!s.names.count({host.value(), e.resourceId.value_or(0)})) {
+                                       s.capsAnswered[host.value()] = false;
+                                       s.geometryAnswered[host.value()] = false;
+                                   }
+                               }
                                publish(r, s);
                            });
     // A registrant's confirmation: the console registers nothing, so one reaching it is only counted.
@@ -58,7 +66,7 @@ void VideoClient::registerMessages(MessageTable& table) {
                                State& s = m_state[r.id()];
                                for (const VisualSensorCapabilities& c : m->sensors)
                                    s.names[{src.value(), c.sensorId}] = c.name;
-                               s.lastNameQuery[src.value()] = m_ctx.now();
+                               s.capsAnswered[src.value()] = true;
                                publish(r, s);
                            });
     table.onVehicleMessage(msg::ReportSensorGeometricProperties,
@@ -135,6 +143,7 @@ void VideoClient::onLinkRestored(RemoteSubsystem& r) {
     s.drdAnswered = false; // the platform may have restarted: ask again at once
     s.lastDrdQuery = TimePoint{};
     s.geometryAnswered.clear();
+    s.capsAnswered.clear();
     s.lastNameQuery.clear();
     for (PanTilt& u : s.panTilts) {
         u.requested = u.confirmed = false;
@@ -206,14 +215,13 @@ void VideoClient::tick(RemoteSubsystem& r, TimePoint now) {
         s.lastDrdQuery = now;
         m_ctx.send(s.drd, encodeEmpty(msg::QueryDigitalResourceEndpoint));
     }
-    // Names and mounts from the hosts that offer a Visual Sensor service.
+    // Names and mounts from the hosts that offer a Visual Sensor service, each asked until it answers.
     for (const DigitalResourceEndpoint& e : s.endpoints) {
         const JausId host = hostOf(s, e);
-        if (!host.subsystem ||
+        if (e.serverType != std::uint8_t(ServerType::Rtsp) || !host.subsystem ||
             std::find(s.visualSensors.begin(), s.visualSensors.end(), host) == s.visualSensors.end())
             continue;
-        const std::uint16_t sensor = e.resourceId.value_or(0);
-        const bool named = s.names.count({host.value(), sensor}) > 0;
+        const bool named = s.capsAnswered[host.value()];
         const bool geometry = s.geometryAnswered[host.value()];
         TimePoint& last = s.lastNameQuery[host.value()];
         if ((named && geometry) || now - last < kNameRetry)
@@ -317,22 +325,34 @@ bool VideoClient::handleControlMessage(RemoteSubsystem& r, const JausId& src, st
     return true;
 }
 
+bool VideoClient::refusePanTilt(std::uint16_t ss, const std::string& why) {
+    State& s = m_state[ss];
+    const TimePoint now = m_ctx.now();
+    if (why == s.lastRefusal && now - s.lastRefusalAt < std::chrono::seconds(2)) {
+        s.lastRefusalAt = now;
+        return m_ctx.refuseQuietly(why);
+    }
+    s.lastRefusal = why;
+    s.lastRefusalAt = now;
+    return m_ctx.refuse(ss, why);
+}
+
 bool VideoClient::panTilt(std::uint16_t ss, std::uint16_t sensorId, double panRate, double tiltRate) {
     if (!m_ctx.config().mayControl())
-        return m_ctx.refuse(ss, "the monitor role may not move a pan-tilt");
+        return refusePanTilt(ss, "the monitor role may not move a pan-tilt");
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r || !r->snap.controlledByUs)
-        return m_ctx.refuse(ss, "pan-tilt needs control of subsystem " + std::to_string(ss));
+        return refusePanTilt(ss, "pan-tilt needs control of subsystem " + std::to_string(ss));
     if (r->snap.emergency)
-        return m_ctx.refuse(ss, r->snap.callSign + " is in EMERGENCY");
+        return refusePanTilt(ss, r->snap.callSign + " is in EMERGENCY");
     if (!std::isfinite(panRate) || !std::isfinite(tiltRate))
-        return m_ctx.refuse(ss, "pan-tilt rates must be finite numbers");
+        return refusePanTilt(ss, "pan-tilt rates must be finite numbers");
     State& s = m_state[ss];
     auto ep = std::find_if(r->snap.videoEndpoints.begin(), r->snap.videoEndpoints.end(),
                            [&](const VideoEndpoint& v) { return v.sensorId == sensorId && !v.configured; });
     if (ep == r->snap.videoEndpoints.end())
-        return m_ctx.refuse(ss, r->snap.callSign + " announces no camera with sensor ID " +
-                                    std::to_string(sensorId));
+        return refusePanTilt(ss, r->snap.callSign + " announces no camera with sensor ID " +
+                                     std::to_string(sensorId));
     JausId unit;
     for (const DigitalResourceEndpoint& e : s.endpoints) {
         if (e.resourceId.value_or(0) != sensorId)
@@ -344,11 +364,11 @@ bool VideoClient::panTilt(std::uint16_t ss, std::uint16_t sensorId, double panRa
     }
     PanTilt* u = unitFor(s, unit);
     if (!u)
-        return m_ctx.refuse(ss, r->snap.callSign + ": camera " + std::to_string(sensorId) +
-                                    " is not on a pan-tilt");
+        return refusePanTilt(ss, r->snap.callSign + ": camera " + std::to_string(sensorId) +
+                                     " is not on a pan-tilt");
     if (!u->confirmed)
-        return m_ctx.refuse(ss, r->snap.callSign + ": control of pan-tilt " + u->component.toString() +
-                                    " is not confirmed yet (RequestControl pending)");
+        return refusePanTilt(ss, r->snap.callSign + ": control of pan-tilt " + u->component.toString() +
+                                     " is not confirmed yet (RequestControl pending)");
     // Clamped to the message range (±10π rad/s); the unit clamps to its own limits.
     const double lim = 10 * 3.14159265358979;
     panRate = std::clamp(panRate, -lim, lim);

@@ -67,9 +67,11 @@ private:
         std::map<std::uint32_t, TimePoint> lastNameQuery; // host component -> last capabilities query
         std::map<std::pair<std::uint32_t, std::uint16_t>, std::string> names;
         std::map<std::pair<std::uint32_t, std::uint16_t>, JausId> mounts; // camera -> pan-tilt component
-        std::map<std::uint32_t, bool> geometryAnswered;
+        std::map<std::uint32_t, bool> geometryAnswered, capsAnswered;
         std::vector<PanTilt> panTilts;
         bool published = false;
+        std::string lastRefusal;
+        TimePoint lastRefusalAt{};
     };
 
     void locate(RemoteSubsystem& remote, State& state);
@@ -77,6 +79,9 @@ private:
     void publish(RemoteSubsystem& remote, State& state);
     void tickPanTilt(RemoteSubsystem& remote, PanTilt& unit, TimePoint now);
     PanTilt* unitFor(State& state, const JausId& component);
+    // A pan-tilt refusal: an event the first time, then quietly while the same reason repeats within 2 s
+    // (the command comes at the rate of a held key).
+    bool refusePanTilt(std::uint16_t subsystem, const std::string& why);
 
     std::map<std::uint16_t, State> m_state;
 };
