@@ -30,6 +30,10 @@ struct StreamCtx {
     CameraStream cfg;
     std::atomic<std::uint64_t>* frames = nullptr;
     GstVideoInfo info{};
+    // False once the server stops: a pipeline still winding down renders nothing and calls no scene
+    // function (whose owner may be going away); busy counts callbacks in flight, stop() waits for them.
+    std::atomic<bool> serving{false};
+    std::atomic<int> busy{0};
 };
 
 // One running pipeline of a camera (created when the first client asks for it).
@@ -44,6 +48,13 @@ struct MediaCtx {
 void needData(GstAppSrc* src, guint, gpointer user) {
     auto* m = static_cast<MediaCtx*>(user);
     StreamCtx& s = *m->stream;
+    s.busy.fetch_add(1);
+    struct Done {
+        StreamCtx& s;
+        ~Done() { s.busy.fetch_sub(1); }
+    } done{s};
+    if (!s.serving.load())
+        return;
     const auto period = std::chrono::microseconds(1'000'000 / std::max(1, s.cfg.fps));
     const SteadyTime now = std::chrono::steady_clock::now();
     if (m->next == SteadyTime{} || now - m->next > 2 * period)
@@ -52,6 +63,8 @@ void needData(GstAppSrc* src, guint, gpointer user) {
         std::this_thread::sleep_until(m->next);
     m->next += period;
 
+    if (!s.serving.load())
+        return;
     CameraPose pose;
     m->boxes.clear();
     if (s.cfg.scene)
@@ -218,6 +231,8 @@ std::string SimCameraServer::start(std::uint16_t port) {
         g_main_loop_run(loop);
         g_main_context_pop_thread_default(ctx);
     });
+    for (auto& s : d.streams)
+        s->serving = true;
     d.running = true;
     logInfo(kLog, "camera RTSP server on rtsp://127.0.0.1:" + std::to_string(d.port));
     return {};
@@ -228,6 +243,8 @@ void SimCameraServer::stop() {
     Impl& d = *m_impl;
     if (!d.running)
         return;
+    for (auto& s : d.streams)
+        s->serving = false;
     d.onLoop([&d] {
         // Clients and their sessions go first (their pipelines stop), then the listening socket.
         gst_rtsp_server_client_filter(d.server, closeClient, nullptr);
@@ -241,6 +258,10 @@ void SimCameraServer::stop() {
         g_main_loop_quit(d.loop);
     });
     d.thread.join();
+    // A frame callback still running (it may wait up to one frame period) finishes before we return.
+    for (auto& s : d.streams)
+        while (s->busy.load() > 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
     g_source_unref(d.source);
     d.source = nullptr;
     g_object_unref(d.server);

@@ -37,24 +37,30 @@ constexpr int kZeroRepeats = 3;
 } // namespace
 
 void VideoClient::registerMessages(MessageTable& table) {
-    table.onVehicleMessage(msg::ReportDigitalResourceEndpoint,
-                           [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
-                               auto m = decodeReportDigitalResourceEndpoint(p);
-                               if (!m)
-                                   return m_ctx.rejected(src, m.error());
-                               State& s = m_state[r.id()];
-                               s.drdAnswered = true;
-                               s.endpoints = m->endpoints;
-                               // A camera not named yet: its host is asked (again) for its capabilities.
-                               for (const DigitalResourceEndpoint& e : s.endpoints) {
-                                   const JausId host = hostOf(s, e);
-                                   if (!s.names.count({host.value(), e.resourceId.value_or(0)})) {
-                                       s.capsAnswered[host.value()] = false;
-                                       s.geometryAnswered[host.value()] = false;
-                                   }
-                               }
-                               publish(r, s);
-                           });
+    table.onVehicleMessage(
+        msg::ReportDigitalResourceEndpoint, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+            auto m = decodeReportDigitalResourceEndpoint(p);
+            if (!m)
+                return m_ctx.rejected(src, m.error());
+            State& s = m_state[r.id()];
+            // An empty report may only mean the cameras have not registered yet (they
+            // retry until the DRD confirms, V1.JAUS-~55): keep asking every second for
+            // 30 s before settling to the slow refresh.
+            const TimePoint now = m_ctx.now();
+            if (s.firstDrdReport == TimePoint{})
+                s.firstDrdReport = now;
+            s.drdAnswered = !m->endpoints.empty() || now - s.firstDrdReport >= std::chrono::seconds(30);
+            s.endpoints = m->endpoints;
+            // A camera not named yet: its host is asked (again) for its capabilities.
+            for (const DigitalResourceEndpoint& e : s.endpoints) {
+                const JausId host = hostOf(s, e);
+                if (!s.names.count({host.value(), e.resourceId.value_or(0)})) {
+                    s.capsAnswered[host.value()] = false;
+                    s.geometryAnswered[host.value()] = false;
+                }
+            }
+            publish(r, s);
+        });
     // A registrant's confirmation: the console registers nothing, so one reaching it is only counted.
     table.onVehicleMessage(msg::ConfirmDigitalResourceEndpoint,
                            [](RemoteSubsystem&, const JausId&, ByteSpan) {});
@@ -141,6 +147,7 @@ void VideoClient::onServicesKnown(RemoteSubsystem& r) {
 void VideoClient::onLinkRestored(RemoteSubsystem& r) {
     State& s = m_state[r.id()];
     s.drdAnswered = false; // the platform may have restarted: ask again at once
+    s.firstDrdReport = TimePoint{};
     s.lastDrdQuery = TimePoint{};
     s.geometryAnswered.clear();
     s.capsAnswered.clear();
@@ -205,8 +212,11 @@ void VideoClient::publish(RemoteSubsystem& r, State& s) {
 
 void VideoClient::tick(RemoteSubsystem& r, TimePoint now) {
     State& s = m_state[r.id()];
-    if (!s.located)
+    // Services are merged as reports arrive (and re-checked every discovery interval): locate again.
+    if (!s.located || now - s.lastLocate >= std::chrono::seconds(5)) {
+        s.lastLocate = now;
         locate(r, s);
+    }
     if (!r.reachable())
         return;
     // Digital Resource Discovery: every second until the first report, then a slow refresh.

@@ -61,8 +61,9 @@ private:
         bool located = false;
         JausId drd; // component offering DigitalResourceDiscovery, zero when none
         std::vector<JausId> visualSensors;
-        bool drdAnswered = false;
-        TimePoint lastDrdQuery{};
+        bool drdAnswered = false;   // a report with endpoints arrived, or the first one 30 s ago
+        TimePoint firstDrdReport{}; // the first report (possibly empty: cameras register later)
+        TimePoint lastDrdQuery{}, lastLocate{};
         std::vector<DigitalResourceEndpoint> endpoints;
         std::map<std::uint32_t, TimePoint> lastNameQuery; // host component -> last capabilities query
         std::map<std::pair<std::uint32_t, std::uint16_t>, std::string> names;

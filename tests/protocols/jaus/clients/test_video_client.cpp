@@ -80,6 +80,24 @@ private slots:
         QCOMPARE(rig.sentTo(msg::QueryDigitalResourceEndpoint, kPm), 1);
     }
 
+    // An empty report: the cameras may not have registered yet, so the client keeps asking every second
+    // (for 30 s) rather than waiting for the slow refresh.
+    void emptyReportKeepsAsking() {
+        VideoRig rig;
+        RemoteSubsystem& r = rig.camVehicle();
+        rig.run(r, 0.05);
+        rig.deliver(r, encode(ReportDigitalResourceEndpoint{}), kPm);
+        rig.out.sent.clear();
+        rig.run(r, 5);
+        QCOMPARE(rig.sentTo(msg::QueryDigitalResourceEndpoint, kPm), 5);
+        QVERIFY(r.snap.videoEndpoints.empty());
+        rig.deliver(r, encode(report()), kPm);
+        QCOMPARE(r.snap.videoEndpoints.size(), std::size_t(2));
+        rig.out.sent.clear();
+        rig.run(r, 5);
+        QCOMPARE(rig.sentTo(msg::QueryDigitalResourceEndpoint, kPm), 0);
+    }
+
     void namesAndMountFromTheHost() {
         VideoRig rig;
         RemoteSubsystem& r = rig.camVehicle();
