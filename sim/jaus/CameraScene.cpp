@@ -77,16 +77,20 @@ void renderCameraView(const I420Frame& f, const CameraPose& c, const std::vector
         const double fog = 1.0 - std::exp(-dist / 120.0);
         // Line half-width grows with distance so lines stay about a pixel wide; far lines fade out instead
         // of aliasing into noise (which would also cost the encoder bits).
-        // A row's ground footprint in depth is about dist² / (fpx · height): a line must be at least that
-        // wide to show in every row it crosses, or it breaks into dashes.
-        const double lw = std::max({0.04, 1.2 * dist / fpx, 0.6 * dist * dist / (fpx * c.height)});
+        // A line must be about a pixel wide across the view, and as wide as a row's ground footprint in depth
+        // (about dist² / (fpx · height)) where it runs across the view, or it breaks into dashes. Lines of
+        // constant x (north) run across a view facing north; lines of constant y across a view facing east.
+        const double lwPx = std::max(0.04, 1.2 * dist / fpx);
+        const double lwRow = std::max(lwPx, 0.6 * dist * dist / (fpx * c.height));
+        const double cx0 = std::abs(fwd0.x), cy0 = std::abs(fwd0.y);
+        const double lwX = lwPx * cy0 + lwRow * cx0, lwY = lwPx * cx0 + lwRow * cy0;
         const double fine = std::clamp(1.0 - dist / 30.0, 0.0, 1.0);
         const double coarse = std::clamp(1.0 - dist / 90.0, 0.0, 1.0);
         for (int px = 0; px < w; ++px, p = p + dp) {
             double yv = ((int(std::floor(p.x / 10)) + int(std::floor(p.y / 10))) & 1) ? 92 : 80;
-            if (coarse > 0 && (toLine(p.x, 10) < 1.5 * lw || toLine(p.y, 10) < 1.5 * lw))
+            if (coarse > 0 && (toLine(p.x, 10) < 1.5 * lwX || toLine(p.y, 10) < 1.5 * lwY))
                 yv += (210 - yv) * coarse;
-            else if (fine > 0 && (toLine(p.x, 2) < lw || toLine(p.y, 2) < lw))
+            else if (fine > 0 && (toLine(p.x, 2) < lwX || toLine(p.y, 2) < lwY))
                 yv += (150 - yv) * fine;
             yv = yv * (1 - fog) + 160 * fog;
             row[px] = std::uint8_t(yv);
