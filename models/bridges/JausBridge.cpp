@@ -128,6 +128,9 @@ JausVehicle toVehicle(const SubsystemSnapshot& s) {
         }
         v.services.push_back(node);
     }
+    for (const jaus::VideoEndpoint& e : s.videoEndpoints) // issue 18
+        v.videoEndpoints.push_back({e.resourceId, e.sensorId, QString::fromStdString(e.url),
+                                    QString::fromStdString(e.name), e.panTilt, e.configured});
     return v;
 }
 
@@ -665,6 +668,26 @@ CommandResult JausBridge::stopDriving(quint16 subsystem) {
         return CommandResult::failure(tr("the JAUS stack is not running; no zero drive commands sent"));
     m_stack->stopDriving(subsystem); // zeros, several times
     return CommandResult::success(tr("zero drive commands handed to the stack"));
+}
+
+CommandResult JausBridge::panTilt(quint16 subsystem, quint16 sensorId, double panRate, double tiltRate) {
+    // Same rules as driving (issue 18): role, running stack, link, control of the vehicle.
+    if (auto r = refuseIfMonitor(tr("pan-tilt")); !r.ok)
+        return r;
+    if (!m_stack->running())
+        return CommandResult::failure(tr("pan-tilt refused: the JAUS stack is not running; nothing sent"));
+    auto s = this->subsystem(subsystem);
+    if (s && s->link == JausLink::Down)
+        return refuseIfUnreachable(subsystem, tr("pan-tilt"));
+    if (!s || !s->controlledByUs)
+        return CommandResult::failure(
+            tr("pan-tilt refused: this console does not control %1").arg(machineId(subsystem)));
+    if (!std::isfinite(panRate) || !std::isfinite(tiltRate))
+        return CommandResult::failure(tr("pan-tilt refused: the rates must be finite numbers"));
+    // Refusals on the io thread (no camera on a pan-tilt, control of the unit not confirmed yet) arrive as
+    // CommandRefused events; the stream is not audited per message, like the drive stream.
+    m_stack->panTilt(subsystem, sensorId, panRate, tiltRate, [](std::vector<TargetOutcome>) {});
+    return CommandResult::success(tr("pan-tilt demand handed to the stack"));
 }
 
 void JausBridge::startSession(quint16 subsystem, OutcomeCallback done) {

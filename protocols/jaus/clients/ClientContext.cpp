@@ -48,6 +48,12 @@ bool ClientContext::refuse(std::uint16_t ss, const std::string& why) {
     return false;
 }
 
+bool ClientContext::refuseQuietly(const std::string& why) {
+    m_counters.add("cmd.refused");
+    m_lastRefusal = why;
+    return false;
+}
+
 std::string ClientContext::noTarget(std::uint16_t ss, const char* service) const {
     const RemoteSubsystem* r = find(ss);
     const std::string name = "subsystem " + std::to_string(ss);

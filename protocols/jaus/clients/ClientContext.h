@@ -65,6 +65,9 @@ public:
     void changed(const RemoteSubsystem& remote);
     // A command the console does not send: counter, CommandRefused event; returns false.
     bool refuse(std::uint16_t subsystem, const std::string& why);
+    // The same without the event (a refusal repeated at a stream's rate, e.g. a held pan-tilt key: the
+    // first one was an event already); counted and the outcome's reason all the same.
+    bool refuseQuietly(const std::string& why);
     // Why a command for a subsystem has no component to go to, in words an operator can act on: not
     // discovered, services not reported yet, or no component offering `service` (directly or by inheritance).
     std::string noTarget(std::uint16_t subsystem, const char* service) const;

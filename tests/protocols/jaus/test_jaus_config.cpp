@@ -81,6 +81,29 @@ private slots:
         QCOMPARE(c.plausibility, (PoseLimits{2000, 4, 5}));
         QCOMPARE(JausConfig{}.plausibility, (PoseLimits{50000, 30, 50})); // the safe defaults
     }
+    // Issue 18: streams configured for a vehicle that announces none.
+    void configuredVideo() {
+        // Plain literals: moc's scanner mistakes "//" inside a raw string for a comment.
+        auto p = parse("{\"jaus\": {\"static_endpoints\": [{\"subsystem\": 127, \"address\": \"127.0.0.1\", "
+                       "\"video\": [{\"url\": \"rtsp:\\/\\/10.0.0.5:8554/front\", \"name\": \"front\", "
+                       "\"sensor_id\": 1000}, {\"url\": \"rtsp:\\/\\/10.0.0.5:8554/rear\"}]}]}}");
+        QVERIFY2(p.errors.empty(), p.errors.joined().c_str());
+        const auto& v = p.config.configuredVideo.at(127);
+        QCOMPARE(v.size(), std::size_t(2));
+        QCOMPARE(v[0].url, std::string("rtsp:") + "/" + "/10.0.0.5:8554/front");
+        QCOMPARE(v[0].name, std::string("front"));
+        QCOMPARE(v[0].sensorId, std::uint16_t(1000));
+        QVERIFY(v[0].configured && v[1].configured);
+        auto bad =
+            parse("{\"jaus\": {\"static_endpoints\": [{\"subsystem\": 127, \"address\": \"127.0.0.1\", "
+                  "\"video\": [{\"url\": \"front camera\"}, {\"name\": \"x\"}, "
+                  "{\"url\": \"rtsp:\\/\\/ok/1\", \"colour\": 1}]}]}}");
+        const std::string errors = bad.errors.joined();
+        QVERIFY2(errors.find("is not a stream URL") != std::string::npos, errors.c_str());
+        QVERIFY2(errors.find("colour") != std::string::npos, errors.c_str()); // unknown key reported
+        QCOMPARE(bad.config.configuredVideo[127].size(), std::size_t(1));     // the good one is kept
+    }
+
     void roles() {
         auto m = parse(R"({"jaus": {"role": "monitor"}})");
         QVERIFY(m.errors.empty());
