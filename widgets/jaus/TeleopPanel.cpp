@@ -3,8 +3,11 @@
 #include "models/CommandGate.h"
 #include "models/FleetSelection.h"
 #include "models/jaus/JausVehicleBridge.h"
+#include "models/video/VideoPlayer.h"
 #include "widgets/HoldToConfirmButton.h"
+#include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
+#include "widgets/teleop/PanTiltController.h"
 #include "widgets/teleop/SdlJoystickInput.h"
 #include "widgets/teleop/TeleopController.h"
 #include "widgets/teleop/VirtualStick.h"
@@ -37,6 +40,18 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     setObjectName(QStringLiteral("teleop-panel"));
     setFocusPolicy(Qt::StrongFocus);
     m_controller->setRateHz(bridge->identity().driveRateHz);
+    m_video = new TeleopVideoPane(this);
+    m_video->setKeyFilter(this);
+    m_panTilt = new PanTiltController(this);
+    m_stickCamera = new QPushButton(tr("Stick: camera"), this);
+    m_stickCamera->setObjectName(QStringLiteral("button-stick-camera"));
+    m_stickCamera->setCheckable(true);
+    m_stickCamera->setToolTip(tr("The on-screen stick pans and tilts the camera instead of driving"));
+    m_videoHold = new QLabel(this);
+    m_videoHold->setObjectName(QStringLiteral("label-video-watchdog"));
+    m_videoHold->setWordWrap(true);
+    m_videoHold->setStyleSheet(QStringLiteral("color:#c81e1e; font-weight:bold;"));
+    m_videoHold->hide();
 
     QFont big = m_title->font();
     big.setPointSizeF(big.pointSizeF() * 1.3);
@@ -101,7 +116,10 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     auto* right = new QVBoxLayout;
     right->addLayout(settings);
     right->addWidget(m_axes);
-    auto* keysHint = new QLabel(tr("Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows."), this);
+    right->addWidget(m_stickCamera);
+    auto* keysHint = new QLabel(tr("Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows. Camera: "
+                                   "J/L pan, I/K tilt (or the joystick hat)."),
+                                this);
     keysHint->setWordWrap(true);
     right->addWidget(keysHint);
     right->addStretch(1);
@@ -116,13 +134,34 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     m_problem->setStyleSheet(QStringLiteral("color:#c81e1e; font-weight:bold;"));
     m_problem->hide();
     l->addWidget(m_problem);
+    l->addWidget(m_videoHold);
+    l->addWidget(m_video, 3);
     l->addLayout(inputs, 1);
     auto* stops = new QHBoxLayout;
     stops->addWidget(m_estop, 2);
     stops->addWidget(m_clear, 1);
     l->addLayout(stops);
 
-    connect(m_stick, &VirtualStick::axesChanged, m_controller, &TeleopController::setStick);
+    connect(m_stick, &VirtualStick::axesChanged, this, [this](DriveAxes a) {
+        if (m_stickCamera->isChecked())
+            m_panTilt->setStick(a);
+        else
+            m_controller->setStick(a);
+    });
+    connect(m_stickCamera, &QPushButton::toggled, this, [this] {
+        m_controller->setStick({});
+        m_panTilt->setStick({});
+    });
+    connect(m_panTilt, &PanTiltController::command, this, &TeleopPanel::onPanTilt);
+    connect(m_video, &TeleopVideoPane::watchdogChanged, this, &TeleopPanel::onWatchdog);
+    connect(m_video, &TeleopVideoPane::resumed, this, [this] {
+        showDriveProblem({});
+        refresh();
+    });
+    connect(m_video, &TeleopVideoPane::cameraChanged, this, [this] {
+        m_panTilt->releaseAll(tr("camera changed"));
+        refresh();
+    });
     connect(m_controller, &TeleopController::command, this, &TeleopPanel::onCommand);
     connect(m_controller, &TeleopController::command, m_axes, &AxisDisplay::setMapped);
     // Zero on release, focus loss, joystick loss...: the controller sends the zero demand at once, then the
@@ -143,6 +182,7 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     m_inputDevice = device;
     if (device) {
         m_controller->setDevice(device);
+        m_panTilt->setDevice(device);
         // The operator's saved mapping for this device wins over the site configuration's.
         auto applySaved = [device] {
             if (device->supportsMapping() && device->isConnected())
@@ -169,7 +209,7 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     // Window focus loss (another application, a dialog): stop driving at once.
     connect(qApp, &QApplication::applicationStateChanged, this, [this](Qt::ApplicationState st) {
         if (st != Qt::ApplicationActive)
-            m_controller->releaseAll(tr("window lost focus"));
+            releaseAll(tr("window lost focus"));
     });
     m_stick->installEventFilter(this);
     refresh();
@@ -187,10 +227,42 @@ TeleopPanel::~TeleopPanel() {
         m_bridge->stopDriving(m_subsystem);
 }
 
+void TeleopPanel::releaseAll(const QString& reason) {
+    m_controller->releaseAll(reason);
+    m_panTilt->releaseAll(reason);
+}
+
+void TeleopPanel::setConfiguredCameras(quint16 subsystem, const QVector<JausVideoEndpoint>& cameras) {
+    m_configuredCameras[subsystem] = cameras;
+    for (JausVideoEndpoint& c : m_configuredCameras[subsystem])
+        c.configured = true;
+    refresh();
+}
+
+QString TeleopPanel::videoHold() const {
+    return m_video->watchdog().allowsDriving() ? QString() : m_video->watchdog().reason();
+}
+
+void TeleopPanel::onWatchdog() {
+    if (!m_video->watchdog().allowsDriving() && m_subsystem) {
+        // The drive stream goes to zero at once; the session ends below (refresh) with the reason.
+        const QString why = m_video->watchdog().reason();
+        m_controller->releaseAll(why);
+    }
+    refresh();
+}
+
+void TeleopPanel::onPanTilt(double pan, double tilt) {
+    const auto cam = m_video->currentCamera();
+    if (!m_subsystem || !cam || !cam->panTilt)
+        return;
+    emit panTiltCommand(m_subsystem, cam->sensorId, pan, tilt);
+}
+
 void TeleopPanel::setVehicle(std::uint16_t subsystem) {
     if (subsystem == m_subsystem)
         return;
-    m_controller->releaseAll(tr("vehicle changed"));
+    releaseAll(tr("vehicle changed"));
     if (m_subsystem && m_session != Session::Closed)
         endSession(tr("vehicle changed"));
     m_subsystem = subsystem;
@@ -303,7 +375,7 @@ void TeleopPanel::onCommand(DriveAxes axes) {
 }
 
 void TeleopPanel::emergencyStop() {
-    m_controller->releaseAll(tr("emergency stop"));
+    releaseAll(tr("emergency stop"));
     if (m_subsystem && m_gate)
         m_gate->stopMachine(JausVehicleBridge::machineId(m_subsystem), QStringLiteral("teleop"));
 }
@@ -337,6 +409,10 @@ void TeleopPanel::refresh() {
         m_state->setText(
             tr("Select a vehicle in the fleet list or the JAUS control panel, then take control."));
         m_live->clear();
+        m_video->setCameras({});
+        m_video->setOverlay({});
+        m_videoHold->hide();
+        m_panTilt->setEnabled(false);
         m_controller->setEnabled(false);
         m_estop->setEnabled(false);
         m_clear->setEnabled(false);
@@ -347,10 +423,27 @@ void TeleopPanel::refresh() {
     const bool may = me.mayControl;
     const bool ours = s->controlledByUs;
     const bool up = s->link == JausLink::Up;
-    const bool canDrive = may && ours && up && !s->emergency;
+    QVector<JausVideoEndpoint> cameras = s->videoEndpoints;
+    for (const JausVideoEndpoint& c : m_configuredCameras.value(s->subsystem)) {
+        const bool announced = std::any_of(cameras.begin(), cameras.end(),
+                                           [&](const JausVideoEndpoint& a) { return a.url == c.url; });
+        if (!announced)
+            cameras << c;
+    }
+    m_video->setCameras(cameras);
+    m_video->checkWatchdog();
+    const bool videoOk = m_video->watchdog().allowsDriving();
+    const QString hold = videoOk ? QString() : m_video->watchdog().reason();
+    m_videoHold->setText(hold);
+    m_videoHold->setVisible(!hold.isEmpty());
+    const bool canDrive = may && ours && up && !s->emergency && videoOk;
+    const auto cam = m_video->currentCamera();
+    m_panTilt->setEnabled(may && ours && up && !s->emergency && cam && cam->panTilt);
+    m_stickCamera->setEnabled(cam && cam->panTilt);
     if (!canDrive && m_session != Session::Closed) {
         // The vehicle's own state ends the session: say why, loudly, and end it through the gate.
-        const QString why = !up            ? tr("the link to %1 is %2").arg(s->callSign, s->linkText)
+        const QString why = !videoOk       ? hold
+                            : !up          ? tr("the link to %1 is %2").arg(s->callSign, s->linkText)
                             : s->emergency ? tr("%1 is in EMERGENCY").arg(s->callSign)
                             : !ours        ? tr("this console no longer controls %1").arg(s->callSign)
                                            : tr("driving is not allowed");
@@ -388,6 +481,18 @@ void TeleopPanel::refresh() {
     if (s->localPose && s->localPose->x && s->localPose->y)
         live << tr("local %1 / %2 m").arg(*s->localPose->x, 0, 'f', 1).arg(*s->localPose->y, 0, 'f', 1);
     m_live->setText(live.join(QStringLiteral(" · ")));
+    QStringList overlay;
+    overlay << QStringLiteral("%1 [%2]").arg(s->callSign).arg(s->subsystem);
+    if (s->velocity && s->velocity->vx)
+        overlay << tr("speed %1 m/s").arg(*s->velocity->vx, 0, 'f', 2);
+    if (s->globalPose && s->globalPose->yaw)
+        overlay << tr("heading %1°").arg(std::fmod(*s->globalPose->yaw * 180 / M_PI + 360, 360), 0, 'f', 0);
+    overlay << (s->emergency ? tr("EMERGENCY")
+                : !videoOk   ? tr("driving held (video)")
+                : s->driving ? tr("drive session open")
+                : canDrive   ? tr("ready to drive")
+                             : tr("not driving"));
+    m_video->setOverlay(overlay);
     double maxFwd = 1.0;
     if (s->platform && s->platform->maxForwardSpeed)
         maxFwd = *s->platform->maxForwardSpeed;
@@ -398,32 +503,47 @@ void TeleopPanel::refresh() {
 }
 
 void TeleopPanel::keyPressEvent(QKeyEvent* e) {
-    if (!m_controller->handleKey(e->key(), true, e->isAutoRepeat()))
+    if (!m_controller->handleKey(e->key(), true, e->isAutoRepeat()) &&
+        !m_panTilt->handleKey(e->key(), true, e->isAutoRepeat()))
         QWidget::keyPressEvent(e);
 }
 
 void TeleopPanel::keyReleaseEvent(QKeyEvent* e) {
-    if (!m_controller->handleKey(e->key(), false, e->isAutoRepeat()))
+    if (!m_controller->handleKey(e->key(), false, e->isAutoRepeat()) &&
+        !m_panTilt->handleKey(e->key(), false, e->isAutoRepeat()))
         QWidget::keyReleaseEvent(e);
 }
 
 void TeleopPanel::focusOutEvent(QFocusEvent* e) {
-    m_controller->releaseAll(tr("teleop panel lost keyboard focus"));
+    // The full-screen video window takes the keys over (they come back through eventFilter).
+    if (!m_video->fullScreenWindow())
+        releaseAll(tr("teleop panel lost keyboard focus"));
     QWidget::focusOutEvent(e);
 }
 
 void TeleopPanel::hideEvent(QHideEvent* e) {
-    m_controller->releaseAll(tr("teleop panel hidden"));
+    releaseAll(tr("teleop panel hidden"));
     QWidget::hideEvent(e);
 }
 
 bool TeleopPanel::eventFilter(QObject* watched, QEvent* event) {
-    // Keys typed while the stick has focus drive too.
-    if (watched == m_stick && (event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease)) {
+    // Keys typed while the stick (or the full-screen video window) has focus drive too.
+    const bool fullScreen = watched && watched == m_video->fullScreenWindow();
+    if ((watched == m_stick || fullScreen) &&
+        (event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease)) {
         auto* k = static_cast<QKeyEvent*>(event);
-        if (m_controller->handleKey(k->key(), event->type() == QEvent::KeyPress, k->isAutoRepeat()))
+        const bool press = event->type() == QEvent::KeyPress;
+        if (fullScreen && press && k->key() == Qt::Key_Space) {
+            emergencyStop();
+            return true;
+        }
+        if (m_controller->handleKey(k->key(), press, k->isAutoRepeat()) ||
+            m_panTilt->handleKey(k->key(), press, k->isAutoRepeat()))
             return true;
     }
+    // Leaving the full-screen window (Esc, closed, another application): stop as on focus loss.
+    if (fullScreen && (event->type() == QEvent::Close || event->type() == QEvent::WindowDeactivate))
+        releaseAll(tr("video window closed or lost focus"));
     return QWidget::eventFilter(watched, event);
 }
 
