@@ -22,6 +22,10 @@ packages=(
   libgdal-dev
   # Shared control-room history (issue 16 §4): libpq to build; the server for the tests' throwaway instances.
   libpq-dev postgresql
+  # Issue 18 (simulated cameras, h18sim): RTSP server + appsrc (dev), x264enc (ugly), rtph264pay/rtspsrc/udp
+  # (good), videoconvert (base), avdec_h264 for the tests' RTSP client (libav).
+  libgstrtspserver-1.0-dev libgstreamer-plugins-base1.0-dev gstreamer1.0-plugins-base gstreamer1.0-plugins-good
+  gstreamer1.0-plugins-ugly gstreamer1.0-libav
 )
 
 missing=()

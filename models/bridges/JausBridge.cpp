@@ -128,6 +128,9 @@ JausVehicle toVehicle(const SubsystemSnapshot& s) {
         }
         v.services.push_back(node);
     }
+    for (const jaus::VideoEndpoint& e : s.videoEndpoints) // issue 18
+        v.videoEndpoints.push_back({e.resourceId, e.sensorId, QString::fromStdString(e.url),
+                                    QString::fromStdString(e.name), e.panTilt, e.configured});
     return v;
 }
 
@@ -661,6 +664,16 @@ CommandResult JausBridge::stopDriving(quint16 subsystem) {
         return CommandResult::failure(tr("the JAUS stack is not running; no zero drive commands sent"));
     m_stack->stopDriving(subsystem); // zeros, several times
     return CommandResult::success(tr("zero drive commands handed to the stack"));
+}
+
+CommandResult JausBridge::panTilt(quint16 subsystem, quint16 sensorId, double panRate, double tiltRate) {
+    // Same rules as driving (issue 18): role, running stack, link, control of the vehicle.
+    if (auto r = refuseDriving(subsystem); !r.ok)
+        return CommandResult::failure(tr("pan-tilt: %1").arg(r.message));
+    // Refusals on the io thread (no camera on a pan-tilt, control of the unit not confirmed) arrive as
+    // CommandRefused events; they are not audited per message, like the drive stream.
+    m_stack->panTilt(subsystem, sensorId, panRate, tiltRate, [](std::vector<TargetOutcome>) {});
+    return CommandResult::success(tr("pan-tilt demand handed to the stack"));
 }
 
 void JausBridge::startSession(quint16 subsystem, OutcomeCallback done) {

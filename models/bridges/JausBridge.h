@@ -58,6 +58,7 @@ public:
     // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
     void postToIo(std::function<void()> f);
     CommandResult stopDriving(quint16 subsystem) override;
+    CommandResult panTilt(quint16 subsystem, quint16 sensorId, double panRate, double tiltRate) override;
 
 private:
     void onSubsystemChanged(const jaus::SubsystemSnapshot& snapshot) override;

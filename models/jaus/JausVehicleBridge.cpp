@@ -9,6 +9,10 @@ JausVehicleBridge::JausVehicleBridge(QObject* parent) : FleetBridge(Protocol::Ja
 
 JausVehicleBridge::~JausVehicleBridge() = default;
 
+CommandResult JausVehicleBridge::panTilt(quint16, quint16, double, double) {
+    return CommandResult::failure(tr("pan-tilt: this vehicle link drives no pan-tilt; nothing sent"));
+}
+
 QString JausVehicleBridge::machineId(quint16 subsystem) {
     return protocolPrefix(Protocol::Jaus) + QString::number(subsystem);
 }

@@ -61,6 +61,21 @@ JausConfig parseJausConfig(ConfigObject& s) {
         se.address = checkedAddress(e, "address", "127.0.0.1");
         se.port = std::uint16_t(e.integer("port", 3794, 1, 65535));
         se.tcp = e.choice("transport", "udp", {"udp", "tcp"}) == "tcp";
+        // Issue 18: cameras of a vehicle that announces none through Digital Resource Discovery.
+        for (auto& v : e.objectList("video")) {
+            VideoEndpoint ve;
+            ve.url = v.string("url", "");
+            const auto scheme = ve.url.find("://");
+            if (ve.url.empty() || ve.url.size() > 255 || scheme == std::string::npos || scheme == 0)
+                v.error("url", "'" + ve.url + "' is not a stream URL (e.g. rtsp://192.168.1.50:8554/front)");
+            ve.name = v.string("name", "");
+            ve.sensorId = std::uint16_t(v.integer("sensor_id", 0, 0, 65535));
+            ve.resourceId = ve.sensorId;
+            ve.configured = true;
+            v.finish();
+            if (!ve.url.empty() && scheme != std::string::npos && scheme != 0 && ve.url.size() <= 255)
+                c.configuredVideo[se.id.subsystem].push_back(ve);
+        }
         e.finish();
         t.staticEndpoints.push_back(se);
     }

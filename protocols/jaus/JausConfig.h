@@ -1,12 +1,14 @@
 #pragma once
 // The site configuration's "jaus" section (docs/jaus.md lists every key).
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "protocols/common/ConfigReader.h"
 #include "protocols/common/PosePlausibility.h"
 #include "protocols/jaus/JudpCodec.h"
+#include "protocols/jaus/VideoTypes.h"
 
 namespace ocu::jaus {
 
@@ -63,6 +65,9 @@ struct JausConfig {
     // Poses outside these are not drawn: the vehicle is marked implausible, its last good pose kept (issue 14
     // §2; checked by the console's bridge in the site frame).
     PoseLimits plausibility;
+    // Video streams per subsystem for vehicles that announce none (issue 18): the "video" list of a
+    // static_endpoints entry. Published with configured = true beside what the vehicle announces.
+    std::map<std::uint16_t, std::vector<VideoEndpoint>> configuredVideo;
 
     JausId ownId() const { return JausId{subsystemId, nodeId, componentId}; }
     bool mayControl() const { return role != Role::Monitor && authority > 0; }

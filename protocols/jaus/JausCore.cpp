@@ -10,11 +10,15 @@ JausCore::JausCore(JausConfig config, JausListener& listener, JausOutput& output
     : m_ctx(std::move(config), listener, output, clock, counters), m_events(m_ctx), m_drive(m_ctx),
       m_liveness(m_ctx, m_events), m_discovery(m_ctx, [this](RemoteSubsystem& r) { servicesKnown(r); }),
       m_access(m_ctx, m_drive), m_management(m_ctx, m_events, m_drive), m_pose(m_ctx, m_events),
-      m_platform(m_ctx), m_health(m_ctx) {
+      m_platform(m_ctx), m_health(m_ctx), m_video(m_ctx) {
     m_all = {&m_liveness, &m_discovery, &m_events,   &m_access, &m_management,
-             &m_drive,    &m_pose,      &m_platform, &m_health};
+             &m_drive,    &m_pose,      &m_platform, &m_health, &m_video};
     // Timer order within one tick: what discovery found is queried first, commands and streams last.
-    m_afterDiscovery = {&m_platform, &m_events, &m_management, &m_access, &m_health, &m_drive};
+    m_afterDiscovery = {&m_platform, &m_events, &m_management, &m_access, &m_health, &m_drive, &m_video};
+    // Pan-tilt units hold their own access control (issue 18): their confirmations are the video client's.
+    m_access.setOtherControl([this](RemoteSubsystem& r, const JausId& src, std::uint16_t id, ByteSpan p) {
+        return m_video.handleControlMessage(r, src, id, p);
+    });
     for (ClientService* c : m_all)
         c->registerMessages(m_table);
 }
@@ -84,6 +88,7 @@ void JausCore::tick() {
     for (auto& [ss, r] : m_ctx.remotes()) {
         m_liveness.tick(r, now);
         m_discovery.tick(r, now);
+        m_video.heard(r);
         if (!r.components.known)
             continue;
         for (ClientService* c : m_afterDiscovery)

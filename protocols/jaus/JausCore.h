@@ -26,6 +26,7 @@
 #include "protocols/jaus/clients/MessageTable.h"
 #include "protocols/jaus/clients/PlatformSpecificationsClient.h"
 #include "protocols/jaus/clients/PoseClient.h"
+#include "protocols/jaus/clients/VideoClient.h"
 
 namespace ocu::jaus {
 
@@ -60,6 +61,10 @@ public:
         return m_drive.setDriveCommand(subsystem, command);
     }
     bool stopDriving(std::uint16_t subsystem) { return m_drive.stopDriving(subsystem); }
+    // Issue 18: pan-tilt rates (rad/s) for a camera of the subsystem; zero stops (VideoClient).
+    bool panTilt(std::uint16_t subsystem, std::uint16_t sensorId, double panRate, double tiltRate) {
+        return m_video.panTilt(subsystem, sensorId, panRate, tiltRate);
+    }
     // STOP ALL (issue 13 §2): SetEmergency to every discovered subsystem, whether this console controls it
     // or not; one outcome per subsystem.
     // alreadySent: subsystems whose SetEmergency already left on the caller's thread (JausStack's fast path):
@@ -102,6 +107,7 @@ private:
     PoseClient m_pose;
     PlatformSpecificationsClient m_platform;
     HealthMonitorClient m_health;
+    VideoClient m_video;
     std::vector<ClientService*> m_all;
     // The timers that run once a subsystem's services are known, in this order (liveness and discovery
     // run before them, for every subsystem).

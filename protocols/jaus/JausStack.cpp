@@ -260,6 +260,10 @@ void JausStack::setDriveCommand(std::uint16_t ss, DriveCommand c, OutcomeCallbac
 void JausStack::stopDriving(std::uint16_t ss, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.stopDriving(ss));
 }
+void JausStack::panTilt(std::uint16_t ss, std::uint16_t sensorId, double panRate, double tiltRate,
+                        OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.panTilt(ss, sensorId, panRate, tiltRate));
+}
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
     if (!d->running)

@@ -64,6 +64,10 @@ public:
     void startDriving(std::uint16_t subsystem, OutcomeCallback done);
     void setDriveCommand(std::uint16_t subsystem, DriveCommand command, OutcomeCallback done);
     void stopDriving(std::uint16_t subsystem, OutcomeCallback done);
+    // Issue 18: pan-tilt rates (rad/s, + pan right, + tilt up; zero stops) for the camera `sensorId`; needs
+    // control of the vehicle. `done` says whether SetPanTiltJointVelocity went out (or why not).
+    void panTilt(std::uint16_t subsystem, std::uint16_t sensorId, double panRate, double tiltRate,
+                 OutcomeCallback done);
 
     // Subsystems whose SetEmergency is planned for the caller's-thread fast path now (tests, diagnostics).
     std::size_t plannedStopCount() const;

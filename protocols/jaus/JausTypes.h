@@ -8,6 +8,7 @@
 #include "protocols/common/Clock.h"
 #include "protocols/jaus/JudpCodec.h"
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/VideoTypes.h"
 
 namespace ocu::jaus {
 
@@ -32,6 +33,14 @@ struct ComponentInfo {
 struct NodeInfo {
     std::uint8_t node = 0;
     std::vector<ComponentInfo> components;
+};
+
+// A pan-tilt unit of a vehicle (AS6057A, AEP-4818 §9.3.3) as its position sensor reports it (issue 18).
+struct PanTiltState {
+    JausId component;
+    bool controlledByUs = false;     // its own access control confirmed our RequestControl
+    std::optional<double> pan, tilt; // rad, from ReportPanTiltJointPositions; empty until reported
+    bool operator==(const PanTiltState&) const = default;
 };
 
 struct SubsystemSnapshot {
@@ -60,6 +69,11 @@ struct SubsystemSnapshot {
 
     JausId mobilityComponent; // zero until discovered
     std::vector<NodeInfo> services;
+
+    // Issue 18: the vehicle's video streams (Digital Resource Discovery + Visual Sensor names, or configured
+    // per vehicle) and its pan-tilt units.
+    std::vector<VideoEndpoint> videoEndpoints;
+    std::vector<PanTiltState> panTilts;
 };
 
 enum class Severity { Info, Warning, Error };

@@ -1,5 +1,6 @@
 // Core service messages (AS5710A): names, management, access control, one-integer bodies.
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/MessagesVideo.h"
 
 #include "protocols/jaus/MessageSupport.h"
 
@@ -124,7 +125,7 @@ const char* messageName(std::uint16_t id) {
     case msg::ReportHealthSummary:
         return "ReportHealthSummary";
     default:
-        return "unknown";
+        return videoMessageName(id);
     }
 }
 

@@ -32,9 +32,40 @@ JausDemo::JausDemo(JausDemoOptions options) : m_opt(std::move(options)) {
         c.accessTimeoutS = m_opt.accessTimeoutS;
         c.driveTimeoutS = m_opt.driveTimeoutS;
         c.network = loopbackTransport(m_mcPort, m_opt.multicastGroup, m_opt.interfaceAddress);
+        if (m_opt.video) {
+            SimCameraConfig front;
+            front.sensorId = 1000; // drive cameras 1000-1032 (AEP-4818 §9.1.2)
+            front.name = "front (pan-tilt)";
+            front.path = "front";
+            front.panTilt = true;
+            SimCameraConfig rear;
+            rear.sensorId = 1001;
+            rear.name = "rear";
+            rear.path = "rear";
+            rear.yawOffset = 3.14159265358979;
+            rear.forwardOffset = -0.5;
+            rear.height = 0.9;
+            for (SimCameraConfig* k : {&front, &rear}) {
+                k->width = m_opt.videoWidth;
+                k->height_px = m_opt.videoHeight;
+                k->fps = m_opt.videoFps;
+            }
+            c.cameras = {front, rear};
+        }
         auto u = std::make_unique<SimulatedUgv>(c);
         u->start();
         m_ugvs.push_back(std::move(u));
+    }
+    // Each camera shows the other UGVs as boxes.
+    for (auto& u : m_ugvs) {
+        SimulatedUgv* self = u.get();
+        u->setNeighbours([this, self] {
+            std::vector<SceneBox> out;
+            for (auto& o : m_ugvs)
+                if (o.get() != self)
+                    out.push_back(o->box());
+            return out;
+        });
     }
 }
 

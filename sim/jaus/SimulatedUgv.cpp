@@ -3,10 +3,12 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include <atomic>
+#include <mutex>
 
 #include "protocols/common/IoThread.h"
 #include "protocols/common/Log.h"
 #include "protocols/jaus/JudpTransport.h"
+#include "sim/jaus/SimCameraServer.h"
 
 namespace ocu::sim {
 
@@ -40,8 +42,58 @@ struct SimulatedUgv::Impl : JausOutput {
             if (ec)
                 return;
             core.tick();
+            publishScene();
             scheduleTick();
         });
+    }
+    // What the cameras' threads read: the pose and pan-tilt of this tick.
+    void publishScene() {
+        const UgvState& st = core.state();
+        std::lock_guard lock(sceneMutex);
+        scene.x = st.x;
+        scene.y = st.y;
+        scene.yaw = st.yaw;
+        pt = core.video().panTilt();
+    }
+    void createCameras() {
+        std::vector<CameraStream> streams;
+        for (const SimCameraConfig& c : cfg.cameras) {
+            CameraStream s;
+            s.path = "ugv" + std::to_string(cfg.subsystemId) + "/" + c.path;
+            s.width = c.width;
+            s.height = c.height_px;
+            s.fps = c.fps;
+            s.scene = [this, c](CameraPose& pose, std::vector<SceneBox>& boxes) {
+                std::function<std::vector<SceneBox>()> others;
+                {
+                    std::lock_guard lock(sceneMutex);
+                    pose.x = scene.x;
+                    pose.y = scene.y;
+                    pose.yaw = scene.yaw;
+                    if (c.panTilt) {
+                        pose.pan = pt.pan;
+                        pose.tilt = pt.tilt;
+                    }
+                    others = neighbours;
+                }
+                pose.forwardOffset = c.forwardOffset;
+                pose.height = c.height;
+                pose.yawOffset = c.yawOffset;
+                pose.horizontalFov = c.horizontalFov;
+                if (others)
+                    boxes = others();
+            };
+            streams.push_back(std::move(s));
+        }
+        cameras = std::make_unique<SimCameraServer>(std::move(streams));
+    }
+    // Tells the camera component the URLs (it registers them with the DRD on its next tick).
+    void announceUrls() {
+        for (const SimCameraConfig& c : cfg.cameras) {
+            const std::string url = cameras->url("ugv" + std::to_string(cfg.subsystemId) + "/" + c.path);
+            const std::uint16_t id = c.sensorId;
+            io.post([this, id, url] { core.video().setUrl(id, url); });
+        }
     }
     template <class F> void post(F&& f) {
         if (running)
@@ -61,10 +113,25 @@ struct SimulatedUgv::Impl : JausOutput {
     std::shared_ptr<const SimulatedUgv::MessageTap> tap;
     std::atomic<std::uint16_t> port{0};
     std::atomic<std::uint16_t> tcpPort{0};
+    // Cameras (issue 18).
+    std::unique_ptr<SimCameraServer> cameras;
+    mutable std::mutex sceneMutex; // below
+    SceneBox scene;
+    PanTiltPose pt;
+    std::function<std::vector<SceneBox>()> neighbours;
 };
 
 SimulatedUgv::SimulatedUgv(SimulatedUgvConfig config, Clock& clock)
-    : m_impl(std::make_unique<Impl>(std::move(config), clock)) {}
+    : m_impl(std::make_unique<Impl>(std::move(config), clock)) {
+    m_impl->scene.x = m_impl->cfg.startX;
+    m_impl->scene.y = m_impl->cfg.startY;
+    m_impl->scene.yaw = m_impl->cfg.startYaw;
+    m_impl->scene.length = m_impl->cfg.length;
+    m_impl->scene.width = m_impl->cfg.width;
+    m_impl->scene.height = m_impl->cfg.height;
+    if (!m_impl->cfg.cameras.empty())
+        m_impl->createCameras();
+}
 
 void SimulatedUgv::setMessageTap(MessageTap tap) {
     std::atomic_store(&m_impl->tap, tap ? std::make_shared<const MessageTap>(std::move(tap))
@@ -100,12 +167,20 @@ void SimulatedUgv::start() {
         d->core.tick();
         d->scheduleTick();
     });
+    if (d->cameras) {
+        if (std::string why = d->cameras->start(); !why.empty())
+            logWarning("ocu.sim.jaus", d->cfg.callSign + ": cameras not served: " + why);
+        else
+            d->announceUrls();
+    }
 }
 
 void SimulatedUgv::stop() {
     if (!m_impl || !m_impl->running)
         return;
     Impl* d = m_impl.get();
+    if (d->cameras)
+        d->cameras->stop();
     d->io.call([d] {
         d->timer.cancel();
         d->transport.close();
@@ -181,6 +256,42 @@ void SimulatedUgv::clearFailure() {
 }
 
 #undef OCU_SIM_POST
+
+void SimulatedUgv::stopCameras() {
+    if (m_impl->cameras)
+        m_impl->cameras->stop();
+}
+std::string SimulatedUgv::startCameras() {
+    if (!m_impl->cameras)
+        return "this UGV has no cameras";
+    return m_impl->cameras->start();
+}
+bool SimulatedUgv::camerasRunning() const {
+    return m_impl->cameras && m_impl->cameras->running();
+}
+std::string SimulatedUgv::cameraUrl(std::uint16_t sensorId) const {
+    if (!m_impl->cameras)
+        return {};
+    for (const SimCameraConfig& c : m_impl->cfg.cameras)
+        if (c.sensorId == sensorId)
+            return m_impl->cameras->url("ugv" + std::to_string(m_impl->cfg.subsystemId) + "/" + c.path);
+    return {};
+}
+std::uint64_t SimulatedUgv::cameraFramesRendered() const {
+    return m_impl->cameras ? m_impl->cameras->framesRendered() : 0;
+}
+void SimulatedUgv::setNeighbours(std::function<std::vector<SceneBox>()> neighbours) {
+    std::lock_guard lock(m_impl->sceneMutex);
+    m_impl->neighbours = std::move(neighbours);
+}
+SceneBox SimulatedUgv::box() const {
+    std::lock_guard lock(m_impl->sceneMutex);
+    return m_impl->scene;
+}
+PanTiltPose SimulatedUgv::panTilt() const {
+    std::lock_guard lock(m_impl->sceneMutex);
+    return m_impl->pt;
+}
 
 UgvState SimulatedUgv::state() const {
     Impl* d = m_impl.get();

@@ -7,6 +7,7 @@
 
 #include "protocols/common/Clock.h"
 #include "protocols/common/Counters.h"
+#include "sim/jaus/CameraScene.h"
 #include "sim/jaus/UgvCore.h"
 
 namespace ocu::sim {
@@ -46,6 +47,21 @@ public:
     // command latency on the wire with it). Empty function removes the tap.
     using MessageTap = std::function<void(ByteSpan payload)>;
     void setMessageTap(MessageTap tap);
+
+    // Issue 18: the cameras (config().cameras) served over RTSP on 127.0.0.1 by a SimCameraServer started
+    // with the UGV and registered through Digital Resource Discovery. Stopping the server (loss drills and
+    // tests) keeps the registration, as a camera whose server fails would; starting it again keeps the URL.
+    void stopCameras();
+    std::string startCameras(); // empty, or why the server could not start
+    bool camerasRunning() const;
+    std::string cameraUrl(std::uint16_t sensorId) const; // empty when no such camera or the server is down
+    std::uint64_t cameraFramesRendered() const;
+    // The other machines the cameras show as boxes (called on the cameras' threads; thread-safe function).
+    void setNeighbours(std::function<std::vector<SceneBox>()> neighbours);
+    // This UGV as a box for the others' cameras (thread-safe, from the latest physics tick).
+    SceneBox box() const;
+    // The pan-tilt unit's joint positions (thread-safe, latest tick).
+    PanTiltPose panTilt() const;
 
     // Blocking snapshot of the simulated state (tests, demo).
     UgvState state() const;

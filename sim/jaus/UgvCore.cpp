@@ -35,14 +35,18 @@ double approach(double cur, double target, double maxStep) {
 } // namespace
 
 UgvCore::UgvCore(SimulatedUgvConfig config, JausOutput& output, const Clock& clock, Counters& counters)
-    : m_cfg(std::move(config)), m_out(output), m_clock(clock), m_counters(counters), m_geo(m_cfg.origin) {
+    : m_cfg(std::move(config)), m_out(output), m_clock(clock), m_counters(counters), m_geo(m_cfg.origin),
+      m_video(
+          m_cfg.subsystemId, m_cfg.cameras,
+          [this](const JausId& from, const JausId& to, const Bytes& b) { send(from, to, b); }, clock,
+          counters) {
     m_s.x = m_cfg.startX;
     m_s.y = m_cfg.startY;
     m_s.yaw = m_cfg.startYaw;
 }
 
 bool UgvCore::isLocal(const JausId& id) const {
-    return id == platformManager() || id == mobility() || id == sensors();
+    return id == platformManager() || id == mobility() || id == sensors() || m_video.isLocal(id);
 }
 
 void UgvCore::send(const JausId& from, const JausId& to, const Bytes& payload, Priority prio) {
@@ -58,6 +62,8 @@ std::vector<ServiceRecord> UgvCore::servicesOf(const JausId& c) const {
         s.push_back({"urn:jaus:jss:core:Discovery", 1, 1});
         s.push_back({"urn:jaus:jss:exp:aeodrs:HealthMonitor", 1, 4});
         s.push_back({"urn:jaus:jss:iop:UnsolicitedHeartbeat", 1, 1});
+        for (const ServiceRecord& v : m_video.platformManagerServices())
+            s.push_back(v);
     } else if (c == mobility()) {
         s.push_back({"urn:jaus:jss:core:AccessControl", 1, 1});
         s.push_back({"urn:jaus:jss:core:Management", 1, 1});
@@ -141,12 +147,21 @@ void UgvCore::handle(const JausId& src, const JausId& dst, ByteSpan payload) {
     m_counters.add("rx.messages");
     bool any = false;
     for (const JausId& c : {platformManager(), mobility(), sensors()}) {
-        if (!dst.matches(c) || !serves(c, id))
+        if (!dst.matches(c))
+            continue;
+        if (c == platformManager() && m_video.handle(c, src, id, payload)) {
+            any = true; // Digital Resource Discovery (issue 18)
+            continue;
+        }
+        if (!serves(c, id))
             continue;
         // Subsystem-level identification is answered once, by the platform manager (AEP-4818 §6.2.2.2.1.1).
         any = true;
         handleAt(c, src, dst, id, payload);
     }
+    for (const JausId& c : {m_video.camera(), m_video.panTiltUnit()})
+        if (dst.matches(c) && m_video.handle(c, src, id, payload))
+            any = true;
     if (!any)
         m_counters.add("rx.ignored");
 }
@@ -334,6 +349,8 @@ void UgvCore::handleAt(const JausId& c, const JausId& src, const JausId& dst, st
             return;
         std::vector<NodeServices> nodes{{1, {{1, 0, servicesOf(platformManager())}}},
                                         {3, {{1, 0, servicesOf(mobility())}, {2, 0, servicesOf(sensors())}}}};
+        if (auto n4 = m_video.node4(); !n4.empty())
+            nodes.push_back({4, std::move(n4)});
         if (id == msg::QueryServices)
             send(c, src, encode(ReportServices{nodes}));
         else
@@ -656,6 +673,7 @@ void UgvCore::tick() {
         m_lastHeartbeat = now - std::chrono::seconds(10);
     }
     physics(now);
+    m_video.tick();
     // Access-control timeout: release a controller that stopped re-requesting (AEP-4818 §4.3.4).
     if (m_s.controller.subsystem != 0 && !(m_s.controller == internalClient()) && m_cfg.accessTimeoutS > 0 &&
         now - m_lastRequest > secondsD(m_cfg.accessTimeoutS)) {

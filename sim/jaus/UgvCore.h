@@ -17,6 +17,7 @@
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausOutput.h"
 #include "protocols/jaus/Messages.h"
+#include "sim/jaus/UgvVideo.h"
 
 namespace ocu::sim {
 
@@ -54,6 +55,9 @@ struct SimulatedUgvConfig {
     double length = 1.2, width = 0.8, height = 0.9;
     double physicsRateHz = 50;
     UgvFaults faults;
+    // Issue 18: cameras served over RTSP by SimulatedUgv and announced through Digital Resource Discovery
+    // (UgvVideo); empty = no video services.
+    std::vector<SimCameraConfig> cameras;
 };
 
 struct UgvState {
@@ -83,6 +87,8 @@ public:
     const SimulatedUgvConfig& config() const { return m_cfg; }
     bool isLocal(const jaus::JausId& id) const;
     jaus::GlobalPose globalPose() const;
+    UgvVideo& video() { return m_video; }
+    const UgvVideo& video() const { return m_video; }
 
     jaus::JausId platformManager() const { return {m_cfg.subsystemId, 1, 1}; }
     jaus::JausId mobility() const { return {m_cfg.subsystemId, 3, 1}; }
@@ -136,6 +142,7 @@ private:
     jaus::VelocityCommand m_velCmd;
     std::map<std::uint8_t, EventSub> m_events;
     std::uint8_t m_nextEventId = 1;
+    UgvVideo m_video;
 };
 
 } // namespace ocu::sim

@@ -26,6 +26,7 @@ public:
             o.count = s.jausUgvs;
             o.origin = site.toGeodetic({SimulatedSite::kUgvAreaE, SimulatedSite::kUgvAreaN, 0});
             o.interfaceAddress = s.interfaceAddress;
+            o.video = true; // issue 18: simulated cameras over RTSP, announced through the IOP services
             m_demo = std::make_unique<JausDemo>(o);
             if (!config.jaus)
                 config.jaus = jaus::JausConfig{};

@@ -21,9 +21,13 @@ constexpr auto kRejectGrace = std::chrono::milliseconds(1500);
 
 void AccessControlClient::registerMessages(MessageTable& table) {
     table.onVehicleMessage(msg::ConfirmControl, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+        if (m_other && m_other(r, src, msg::ConfirmControl, p))
+            return;
         onConfirm(r, src, p);
     });
     table.onVehicleMessage(msg::RejectControl, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+        if (m_other && m_other(r, src, msg::RejectControl, p))
+            return;
         onReject(r, src, p);
     });
     table.onVehicleMessage(msg::ReportControl, [this](RemoteSubsystem& r, const JausId& src, ByteSpan p) {

@@ -5,6 +5,7 @@
 // released, pre-empted by a higher authority and lost by timeout (AEP-4818 §9 items 10-16). The monitor role
 // (authority 0) never requests control.
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -32,6 +33,10 @@ public:
     void releaseAll();
     // True between requestControl and its refusal, loss or release.
     bool wantsControl(std::uint16_t subsystem) const;
+    // ConfirmControl / RejectControl from components another client holds control of (issue 18: the
+    // pan-tilt units): the filter returns true when it handled the message, which then is not the vehicle's.
+    using OtherControl = std::function<bool(RemoteSubsystem&, const JausId&, std::uint16_t, ByteSpan)>;
+    void setOtherControl(OtherControl filter) { m_other = std::move(filter); }
 
 private:
     struct State {
@@ -57,6 +62,7 @@ private:
     double timeoutS(const RemoteSubsystem& remote) const;
 
     DriveClient& m_drive;
+    OtherControl m_other;
     std::map<std::uint16_t, State> m_state;
 };
 

@@ -39,6 +39,9 @@ enum : std::uint16_t {
     ReportControl = 0x400D,
     ReportIdentification = 0x4B00,
     ReportServices = 0x4B03,
+    // IOP Digital Resource Discovery 1.1 (jaus-services-extra.md §1.1)
+    QueryDigitalResourceEndpoint = 0xE702,
+    ReportDigitalResourceEndpoint = 0xF702,
 };
 
 void put8(Buf& b, std::uint8_t v) {
@@ -124,6 +127,7 @@ struct ForeignJausVehicle::Impl {
         socket.open(udp::v4());
         socket.bind(udp::endpoint(asio::ip::make_address_v4("127.0.0.1"), opt.port));
         self = id(opt.subsystem, opt.node, opt.component);
+        started = Clock::now();
         receive();
         tick();
         thread = std::thread([this] { io.run(); });
@@ -298,8 +302,25 @@ struct ForeignJausVehicle::Impl {
                 reply(src, b);
             }
             return;
+        case QueryDigitalResourceEndpoint: {
+            if (Clock::now() - started < std::chrono::milliseconds(opt.drdSilentFirstMs))
+                return; // still "starting up": silently ignored, the client must retry
+            // count u8, then {PV u8; ServerType u8; URL str8; [JAUS_ID u32]; [ResourceID u16]}
+            Buf b = withId(ReportDigitalResourceEndpoint);
+            put8(b, std::uint8_t(opt.streams.size()));
+            for (const AnnouncedStream& st : opt.streams) {
+                put8(b, std::uint8_t((st.withHost ? 1 : 0) | (st.withResourceId ? 2 : 0)));
+                put8(b, st.serverType);
+                putStr8(b, st.url);
+                if (st.withHost)
+                    put32(b, self);
+                if (st.withResourceId)
+                    put16(b, st.resourceId);
+            }
+            return reply(src, b);
+        }
         default:
-            return; // CreateEvent, QueryHeartbeatPulse ...: not offered, not answered
+            return; // CreateEvent, QueryHeartbeatPulse, Visual Sensor ...: not offered, not answered
         }
     }
 
@@ -336,6 +357,7 @@ struct ForeignJausVehicle::Impl {
     std::array<std::uint8_t, 65536> buffer{};
     udp::endpoint from;
     std::uint32_t self = 0;
+    Clock::time_point started{};
     std::atomic<bool> offline{false};
 
     mutable std::mutex mutex; // everything below

@@ -20,6 +20,16 @@
 
 namespace foreign {
 
+// A stream this vehicle announces through IOP Digital Resource Discovery (issue 18): its own DRD answers
+// QueryDigitalResourceEndpoint (0xE702) with ReportDigitalResourceEndpoint (0xF702).
+struct AnnouncedStream {
+    std::string url;
+    bool withHost = false;       // optional JAUS_ID field (PV bit 0) sent
+    bool withResourceId = false; // optional ResourceID field (PV bit 1) sent
+    std::uint16_t resourceId = 0;
+    std::uint8_t serverType = 0; // 0 RTSP
+};
+
 struct VehicleOptions {
     std::uint16_t subsystem = 126;
     std::uint8_t node = 1;
@@ -42,6 +52,9 @@ struct VehicleOptions {
     int replyDelayMs = 0;
     std::uint8_t accessTimeoutS = 3; // control lapses without a re-request within this time
     std::uint16_t port = 0;          // 127.0.0.1 unicast port; 0 = ephemeral
+    // Issue 18: Digital Resource Discovery (list "urn:jaus:jss:iop:DigitalResourceDiscovery" in services).
+    std::vector<AnnouncedStream> streams;
+    int drdSilentFirstMs = 0; // queries within this time after start are ignored (FKIE's server: 5 s)
 };
 
 class ForeignJausVehicle {
