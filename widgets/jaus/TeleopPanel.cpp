@@ -257,6 +257,12 @@ void TeleopPanel::onPanTilt(double pan, double tilt) {
     if (!m_subsystem || !cam || !cam->panTilt)
         return;
     emit panTiltCommand(m_subsystem, cam->sensorId, pan, tilt);
+    // Full deflection (or the hat / keys at their fraction of it) is kPanTiltFullRate rad/s; the unit
+    // clamps to its own limit.
+    const CommandResult r = m_bridge->panTilt(m_subsystem, cam->sensorId, pan * kPanTiltFullRate,
+                                              tilt * kPanTiltFullRate);
+    if (!r.ok && (pan != 0 || tilt != 0))
+        showDriveProblem(tr("Camera pan-tilt refused: %1").arg(r.message));
 }
 
 void TeleopPanel::setVehicle(std::uint16_t subsystem) {

@@ -60,6 +60,8 @@ public:
     void openJoystickMapping();
     QPushButton* joystickMappingButton() const { return m_mapButton; }
 
+    // Pan-tilt rate (rad/s) at full stick deflection (AEP-4818 §9.3.3 rates; the unit clamps to its own).
+    static constexpr double kPanTiltFullRate = 1.0;
     // Issue 18: the video pane, the pan-tilt stream, cameras configured for vehicles that announce none.
     TeleopVideoPane* video() const { return m_video; }
     PanTiltController* panTilt() const { return m_panTilt; }
