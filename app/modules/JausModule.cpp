@@ -2,6 +2,7 @@
 // (with the SDL2 joystick mapped as the site configuration says), the "JAUS" link indicator and the headless
 // commands request_control, release_control and drive.
 #include "app/ProtocolModule.h"
+#include "app/modules/JausVideoHeadless.h"
 
 #include "models/FleetContext.h"
 #include "models/bridges/JausBridge.h"
@@ -57,6 +58,13 @@ public:
     QStringList headlessCommands() const override {
         return {QStringLiteral("request_control"), QStringLiteral("release_control"), QStringLiteral("drive"),
                 QStringLiteral("drive_start"), QStringLiteral("drive_stop")};
+    }
+
+    void attachHeadless(HeadlessMonitor* monitor) override {
+        if (!m_bridge)
+            return;
+        auto* video = new JausVideoHeadless(m_bridge, m_bridge); // video_status, video_play, video_stop
+        video->attach(monitor);
     }
 
 private:

@@ -58,15 +58,16 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(video->cameras().size(), 2, 30000);
         QVERIFY(!video->cameras()[0].configured);
         QVERIFY(video->cameras()[0].panTilt);
-        QCOMPARE(video->cameras()[0].url, QString::fromStdString(ugv.cameraUrl(video->cameras()[0].sensorId)));
+        QCOMPARE(video->cameras()[0].url,
+                 QString::fromStdString(ugv.cameraUrl(video->cameras()[0].sensorId)));
         QTRY_VERIFY_WITH_TIMEOUT(video->player()->state() == VideoState::Playing, 30000);
         QTRY_VERIFY_WITH_TIMEOUT(video->view()->paintedFrame() > 0, 30000);
         QVERIFY(video->player()->status().ageFromTimeCode);
 
         const CommandResult rc = ocu::testing::gateResult([&](CommandGate::ResultHandler h) {
             ctx.gate()->command(QStringLiteral("request_control"),
-                                {{QStringLiteral("id"), JausVehicleBridge::machineId(id)}}, QStringLiteral("test"),
-                                h);
+                                {{QStringLiteral("id"), JausVehicleBridge::machineId(id)}},
+                                QStringLiteral("test"), h);
         });
         QVERIFY2(rc.ok, qPrintable(rc.message));
         QTRY_VERIFY_WITH_TIMEOUT(panel.controller()->isEnabled(), 30000);
@@ -82,9 +83,8 @@ private slots:
         const quint64 framesFront = video->player()->status().frames;
         video->selectCamera(1);
         QCOMPARE(video->player()->url(), video->cameras()[1].url);
-        QTRY_VERIFY_WITH_TIMEOUT(video->player()->state() == VideoState::Playing &&
-                                     video->player()->status().frames > 3,
-                                 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            video->player()->state() == VideoState::Playing && video->player()->status().frames > 3, 30000);
         Q_UNUSED(framesFront);
         QTRY_VERIFY_WITH_TIMEOUT(panel.controller()->isEnabled(), 30000);
 

@@ -57,6 +57,9 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     big.setPointSizeF(big.pointSizeF() * 1.3);
     big.setBold(true);
     m_title->setFont(big);
+    // Long state lines wrap rather than widen the panel beyond its dock (the video needs the width).
+    m_state->setWordWrap(true);
+    m_live->setWordWrap(true);
 
     m_estop->setObjectName(QStringLiteral("button-estop"));
     m_estop->setMinimumHeight(64);
@@ -198,6 +201,10 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
         connect(device, &InputDevice::rawAxesChanged, m_axes, &AxisDisplay::setAxes);
     }
     connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& s) {
+        // Nothing selected yet: show the first vehicle heard of (its video and state; driving still needs
+        // control of it), rather than an empty panel.
+        if (!m_subsystem && m_autoSelect)
+            setVehicle(s.subsystem);
         if (s.subsystem == m_subsystem)
             refresh();
     });
@@ -259,13 +266,14 @@ void TeleopPanel::onPanTilt(double pan, double tilt) {
     emit panTiltCommand(m_subsystem, cam->sensorId, pan, tilt);
     // Full deflection (or the hat / keys at their fraction of it) is kPanTiltFullRate rad/s; the unit
     // clamps to its own limit.
-    const CommandResult r = m_bridge->panTilt(m_subsystem, cam->sensorId, pan * kPanTiltFullRate,
-                                              tilt * kPanTiltFullRate);
+    const CommandResult r =
+        m_bridge->panTilt(m_subsystem, cam->sensorId, pan * kPanTiltFullRate, tilt * kPanTiltFullRate);
     if (!r.ok && (pan != 0 || tilt != 0))
         showDriveProblem(tr("Camera pan-tilt refused: %1").arg(r.message));
 }
 
 void TeleopPanel::setVehicle(std::uint16_t subsystem) {
+    m_autoSelect = false;
     if (subsystem == m_subsystem)
         return;
     releaseAll(tr("vehicle changed"));

@@ -124,6 +124,7 @@ private:
     QPushButton* m_stickCamera = nullptr;
     QLabel* m_videoHold = nullptr;
     QHash<quint16, QVector<JausVideoEndpoint>> m_configuredCameras;
+    bool m_autoSelect = true; // until a vehicle is set (selection or setVehicle)
 };
 
 } // namespace ocu

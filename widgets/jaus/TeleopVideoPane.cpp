@@ -62,13 +62,15 @@ TeleopVideoPane::TeleopVideoPane(QWidget* parent)
     auto* bar = new QHBoxLayout;
     bar->addWidget(new QLabel(tr("Camera"), this));
     bar->addWidget(m_cameraBox, 1);
-    bar->addWidget(m_stream, 2);
     bar->addWidget(m_resume);
     bar->addWidget(m_fullButton);
     auto* l = new QVBoxLayout(this);
     l->setContentsMargins(0, 0, 0, 0);
     l->addLayout(bar);
     l->addWidget(m_view, 1);
+    // The stream line (state, resolution, rate, frame age) under the picture, for narrow docks too.
+    m_stream->setWordWrap(true);
+    l->addWidget(m_stream);
 
     connect(m_cameraBox, &QComboBox::activated, this, [this](int) {
         play();
@@ -103,12 +105,14 @@ void TeleopVideoPane::setCameras(const QVector<JausVideoEndpoint>& cameras) {
     for (int i = 0; i < cameras.size(); ++i) {
         const JausVideoEndpoint& c = cameras[i];
         QString name = c.name.isEmpty() ? tr("camera %1").arg(c.sensorId) : c.name;
-        if (c.panTilt)
-            name += tr(" (pan-tilt)");
         if (c.configured)
             name += tr(" (configured)");
         m_cameraBox->addItem(name, c.url);
-        m_cameraBox->setItemData(i, c.url, Qt::ToolTipRole);
+        m_cameraBox->setItemData(
+            i,
+            c.panTilt ? tr("%1 — pan-tilt: J/L/I/K, the stick's camera mode or the joystick hat").arg(c.url)
+                      : c.url,
+            Qt::ToolTipRole);
         if (current && current->url == c.url)
             keep = i;
     }

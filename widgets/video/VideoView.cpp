@@ -18,6 +18,7 @@ VideoView::VideoView(QWidget* parent) : QWidget(parent) {
 }
 
 void VideoView::setPlayer(VideoPlayer* player) {
+    setProperty("screenshotPending", false);
     if (m_player)
         disconnect(m_player, nullptr, this, nullptr);
     m_player = player;
@@ -120,6 +121,10 @@ void VideoView::paintEvent(QPaintEvent*) {
         p.setPen(Qt::white);
         p.drawText(band.adjusted(8, 0, -8, 0), Qt::AlignCenter | Qt::TextWordWrap, m_alert);
     }
+    // Screenshots (app/Screenshot.cpp) wait while a view that is connecting has painted no frame yet.
+    setProperty("screenshotPending",
+                m_player && (st.state == VideoState::Connecting || st.state == VideoState::Reconnecting) &&
+                    !f.number);
     if (f.number)
         emit framePainted(f.number);
 }

@@ -34,7 +34,7 @@ public:
     QString streamText() const;
 
     QSize sizeHint() const override { return {640, 360}; }
-    QSize minimumSizeHint() const override { return {320, 180}; }
+    QSize minimumSizeHint() const override { return {160, 90}; }
 
 signals:
     void doubleClicked();
