@@ -6,12 +6,6 @@
 
 namespace ocu {
 
-namespace {
-QString tr(const char* s) {
-    return QCoreApplication::translate("ocu::VideoWatchdog", s);
-}
-} // namespace
-
 VideoWatchdog::VideoWatchdog(Clock clock) : m_clock(std::move(clock)) {
     if (!m_clock)
         m_clock = [] {
@@ -53,8 +47,10 @@ bool VideoWatchdog::check() {
         m_tripped = true;
         m_tripReason =
             m_state != VideoState::Playing
-                ? tr("video %1").arg(videoStateText(m_state))
-                : tr("video frame %1 ms old (limit %2 ms)").arg(m_ageMs.value_or(-1)).arg(m_limitMs);
+                ? QCoreApplication::translate("ocu::VideoWatchdog", "video %1").arg(videoStateText(m_state))
+                : QCoreApplication::translate("ocu::VideoWatchdog", "video frame %1 ms old (limit %2 ms)")
+                      .arg(m_ageMs.value_or(-1))
+                      .arg(m_limitMs);
     }
     return allowsDriving();
 }
@@ -63,11 +59,16 @@ QString VideoWatchdog::reason() const {
     if (!m_required)
         return {};
     if (m_tripped)
-        return m_good ? tr("VIDEO WATCHDOG stopped driving (%1); video is back: press Resume driving")
-                            .arg(m_tripReason)
-                      : tr("VIDEO WATCHDOG stopped driving: %1").arg(m_tripReason);
+        return m_good
+                   ? QCoreApplication::translate(
+                         "ocu::VideoWatchdog",
+                         "VIDEO WATCHDOG stopped driving (%1); video is back: press Resume driving")
+                         .arg(m_tripReason)
+                   : QCoreApplication::translate("ocu::VideoWatchdog", "VIDEO WATCHDOG stopped driving: %1")
+                         .arg(m_tripReason);
     if (!m_good)
-        return tr("Driving waits for video (%1)").arg(videoStateText(m_state));
+        return QCoreApplication::translate("ocu::VideoWatchdog", "Driving waits for video (%1)")
+            .arg(videoStateText(m_state));
     return {};
 }
 
