@@ -14,6 +14,7 @@
 #include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/PanTiltController.h"
 #include "widgets/teleop/TeleopController.h"
+#include "widgets/teleop/VirtualStick.h"
 #include "widgets/video/VideoView.h"
 
 #include <QComboBox>
@@ -71,6 +72,9 @@ private slots:
         const quint16 id = s.bridge->subsystems().first();
         sim::SimulatedUgv& ugv = *s.demo.find(id);
         const QString machine = JausVehicleBridge::machineId(id);
+        // Control can be requested once the vehicle reported its services.
+        QTRY_VERIFY_WITH_TIMEOUT(s.bridge->subsystem(id) && !s.bridge->subsystem(id)->services.isEmpty(),
+                                 20000);
         const CommandResult rc = ocu::testing::gateResult([&](CommandGate::ResultHandler h) {
             s.ctx.gate()->command(QStringLiteral("request_control"), {{QStringLiteral("id"), machine}},
                                   QStringLiteral("test"), h);
@@ -117,6 +121,18 @@ private slots:
         QTest::keyRelease(&panel, Qt::Key_J);
         QCOMPARE(panTilt.last().at(2).toDouble(), 0.0);
         QCOMPARE(panTilt.last().at(3).toDouble(), 0.0);
+
+        // The on-screen stick's camera mode pans instead of driving; leaving the mode sends zero.
+        const int drives = commands.size();
+        panel.stickCameraButton()->setChecked(true);
+        emit panel.stick()->axesChanged(DriveAxes{0.0, 0.7});
+        QVERIFY(panTilt.last().at(2).toDouble() > 0);
+        QTest::qWait(200);
+        QVERIFY(std::abs(ugv.state().v) < 1e-3);
+        for (int i = drives; i < commands.size(); ++i)
+            QVERIFY(commands.at(i).at(0).value<DriveAxes>().isZero());
+        panel.stickCameraButton()->setChecked(false);
+        QCOMPARE(panTilt.last().at(2).toDouble(), 0.0);
 
         // Switch cameras: the rear camera's (bright) picture.
         video->selectCamera(1);

@@ -55,15 +55,18 @@ private slots:
         TeleopVideoPane* video = panel.video();
 
         // Discovered through the IOP services: two announced cameras, the front one on the pan-tilt.
-        QTRY_COMPARE_WITH_TIMEOUT(video->cameras().size(), 2, 30000);
+        // (the endpoints come from Digital Resource Discovery first, the names and the pan-tilt mount from
+        // the Visual Sensor and Pan Tilt services a little later)
+        QTRY_VERIFY_WITH_TIMEOUT(video->cameras().size() == 2 && video->cameras()[0].panTilt, 30000);
         QVERIFY(!video->cameras()[0].configured);
-        QVERIFY(video->cameras()[0].panTilt);
+        QVERIFY(!video->cameras()[1].panTilt);
         QCOMPARE(video->cameras()[0].url,
                  QString::fromStdString(ugv.cameraUrl(video->cameras()[0].sensorId)));
         QTRY_VERIFY_WITH_TIMEOUT(video->player()->state() == VideoState::Playing, 30000);
         QTRY_VERIFY_WITH_TIMEOUT(video->view()->paintedFrame() > 0, 30000);
         QVERIFY(video->player()->status().ageFromTimeCode);
 
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(id) && !bridge.subsystem(id)->services.isEmpty(), 20000);
         const CommandResult rc = ocu::testing::gateResult([&](CommandGate::ResultHandler h) {
             ctx.gate()->command(QStringLiteral("request_control"),
                                 {{QStringLiteral("id"), JausVehicleBridge::machineId(id)}},
