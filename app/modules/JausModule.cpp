@@ -8,6 +8,7 @@
 #include "models/bridges/JausBridge.h"
 #include "widgets/jaus/JausControlPanel.h"
 #include "widgets/jaus/TeleopPanel.h"
+#include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/SdlJoystickInput.h"
 
 #include <QCoreApplication>
@@ -47,8 +48,9 @@ public:
         mapping.invertTurn = t.invertTurn;
         mapping.deadZone = t.deadZone;
         joystick->setMapping(mapping);
-        ui.window.setPanelWidget(
-            Panel::Teleop, new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick));
+        auto* teleop = new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick);
+        teleop->video()->watchdog().setLimitMs(static_cast<int>(t.videoWatchdogS * 1000));
+        ui.window.setPanelWidget(Panel::Teleop, teleop);
     }
     QString notConfiguredText() const override {
         return QCoreApplication::translate(
