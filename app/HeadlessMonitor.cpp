@@ -341,6 +341,17 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
     }
     if (name == QLatin1String("counters")) // issue 14 §6: rejects per link and reason
         return countersResult(cmd);
+    if (auto q = m_queries.constFind(name); q != m_queries.constEnd()) { // issue 18: module queries
+        QJsonObject o = (*q)(cmd);
+        o[QStringLiteral("type")] = QStringLiteral("result");
+        o[QStringLiteral("cmd")] = name;
+        if (cmd.contains(QStringLiteral("req")))
+            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
+        writeLine(o);
+        QByteArray out = QJsonDocument(o).toJson(QJsonDocument::Compact);
+        emit commandHandled(out);
+        return out;
+    }
     if (!m_gate)
         return result(cmd, false, QStringLiteral("no stop controller"));
     const QString origin = QStringLiteral("headless");
@@ -611,6 +622,10 @@ void HeadlessMonitor::setInput(QIODevice* in) {
         m_inputEnded = true;
         maybeFinishInput();
     });
+}
+
+void HeadlessMonitor::addQuery(const QString& name, QueryHandler handler) {
+    m_queries.insert(name, std::move(handler));
 }
 
 } // namespace ocu

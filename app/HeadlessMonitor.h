@@ -90,6 +90,12 @@ public:
     // by "id" (or of the "protocol"), and answered with "missing \"id\"" when both are absent.
     void addProtocolCommands(const QStringList& names);
 
+    // Issue 18: a read-only query a module answers itself (not through the command gate, not audited), e.g.
+    // {"cmd":"video_status"}: the handler returns the result's fields ("ok", "message", ...); the monitor
+    // adds "type", "cmd" and "req".
+    using QueryHandler = std::function<QJsonObject(const QJsonObject& cmd)>;
+    void addQuery(const QString& name, QueryHandler handler);
+
     // Read commands from stdin; inputFinished() at end of input. A reader thread (raised priority where the
     // console enabled it, ThreadPriority.h) hands what it reads to this object as high-priority events, so a
     // command (a stop_all above all) is handled ahead of the telemetry queued for the GUI thread, and the
@@ -161,6 +167,7 @@ private:
     int m_pendingResults = 0;
     bool m_inputEnded = false;
     bool m_finishedSignalled = false;
+    QHash<QString, QueryHandler> m_queries; // issue 18
 };
 
 } // namespace ocu

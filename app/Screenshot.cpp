@@ -13,6 +13,8 @@
 #include <QImageWriter>
 #include <QPixmap>
 
+#include <algorithm>
+
 namespace ocu {
 
 QString saveScreenshot(MainWindow& window, const QString& view, const QString& file) {
@@ -38,6 +40,16 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
                     while (v3d->renderCount() == 0 && t.elapsed() < 10000)
                         QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
 #endif
+                // Issue 18: a video view still connecting (property "screenshotPending") gets up to 10 s for
+                // its first frame, so --view teleop shows the picture.
+                auto pending = [d] {
+                    const auto widgets = d->findChildren<QWidget*>();
+                    return std::any_of(widgets.begin(), widgets.end(), [](QWidget* w) {
+                        return w->isVisible() && w->property("screenshotPending").toBool();
+                    });
+                };
+                while (pending() && t.elapsed() < 10000)
+                    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
                 target = d;
             }
         }

@@ -463,8 +463,10 @@ void SiteRuntime::populate(MainWindow& window) {
 int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
     Impl& d = *m_impl;
     HeadlessMonitor* mon = HeadlessMonitor::attach(d.ctx);
-    for (const auto& m : d.modules)
+    for (const auto& m : d.modules) {
         mon->addProtocolCommands(m->headlessCommands());
+        m->attachHeadless(mon);
+    }
     mon->setRateLimitMs(static_cast<int>(1000.0 / m_config.fleet.monitorRateHz));
     if (!mon->startStdin() && durationSeconds <= 0) {
         std::fputs("ocu: --headless reads commands from stdin, which is not readable; give --duration\n",

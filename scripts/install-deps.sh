@@ -28,6 +28,8 @@ packages=(
   # (good), videoconvert (base), avdec_h264 for the tests' RTSP client (libav).
   libgstrtspserver-1.0-dev libgstreamer-plugins-base1.0-dev gstreamer1.0-plugins-base gstreamer1.0-plugins-good
   gstreamer1.0-plugins-ugly gstreamer1.0-libav
+  # Issue 18 (the console's video player, h18view): GStreamer core/app/video dev files and h264parse (bad).
+  libgstreamer1.0-dev gstreamer1.0-plugins-bad
 )
 
 missing=()

@@ -1878,6 +1878,46 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <source>joystick mapping</source>
         <translation>Joystick-Belegung</translation>
     </message>
+    <message>
+        <source>Stick: camera</source>
+        <translation>Stick: Kamera</translation>
+    </message>
+    <message>
+        <source>The on-screen stick pans and tilts the camera instead of driving</source>
+        <translation>Der Bildschirm-Stick schwenkt und neigt die Kamera, statt zu fahren</translation>
+    </message>
+    <message>
+        <source>Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows. Camera: J/L pan, I/K tilt (or the joystick hat).</source>
+        <translation>Tastatur: Umschalt (Totmann) halten und W/A/S/D oder die Pfeiltasten benutzen. Kamera: J/L schwenken, I/K neigen (oder Coolie-Hat des Joysticks).</translation>
+    </message>
+    <message>
+        <source>camera changed</source>
+        <translation>Kamera gewechselt</translation>
+    </message>
+    <message>
+        <source>Camera pan-tilt refused: %1</source>
+        <translation>Schwenken/Neigen der Kamera abgelehnt: %1</translation>
+    </message>
+    <message>
+        <source>EMERGENCY</source>
+        <translation>NOTHALT</translation>
+    </message>
+    <message>
+        <source>driving held (video)</source>
+        <translation>Fahren angehalten (Video)</translation>
+    </message>
+    <message>
+        <source>ready to drive</source>
+        <translation>fahrbereit</translation>
+    </message>
+    <message>
+        <source>not driving</source>
+        <translation>fährt nicht</translation>
+    </message>
+    <message>
+        <source>video window closed or lost focus</source>
+        <translation>Videofenster geschlossen oder Fokus verloren</translation>
+    </message>
 </context>
 <context>
     <name>ocu::VehicleDetailsWidget</name>
@@ -2670,6 +2710,173 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>%1  → %2: %3 (NOT sent: %4)</source>
         <translation>%1  → %2: %3 (NICHT gesendet: %4)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::VideoPlayer</name>
+    <message>
+        <source>no video</source>
+        <translation>kein Video</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>verbinde</translation>
+    </message>
+    <message>
+        <source>playing</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <source>video LOST</source>
+        <translation>Video VERLOREN</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>verbinde neu</translation>
+    </message>
+    <message>
+        <source>no video URL</source>
+        <translation>keine Video-URL</translation>
+    </message>
+    <message>
+        <source>not an RTSP URL: %1</source>
+        <translation>keine RTSP-URL: %1</translation>
+    </message>
+    <message>
+        <source>GStreamer elements missing</source>
+        <translation>GStreamer-Elemente fehlen</translation>
+    </message>
+    <message>
+        <source>cannot link the video pipeline</source>
+        <translation>die Video-Pipeline lässt sich nicht verbinden</translation>
+    </message>
+    <message>
+        <source>the video pipeline did not start</source>
+        <translation>die Video-Pipeline ist nicht gestartet</translation>
+    </message>
+    <message>
+        <source>no video from %1</source>
+        <translation>kein Video von %1</translation>
+    </message>
+    <message>
+        <source>no frame for %1 ms</source>
+        <translation>seit %1 ms kein Bild</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::VideoWatchdog</name>
+    <message>
+        <source>video %1</source>
+        <translation>Video %1</translation>
+    </message>
+    <message>
+        <source>video frame %1 ms old (limit %2 ms)</source>
+        <translation>Videobild %1 ms alt (Grenze %2 ms)</translation>
+    </message>
+    <message>
+        <source>VIDEO WATCHDOG stopped driving (%1); video is back: press Resume driving</source>
+        <translation>VIDEO-WATCHDOG hat das Fahren gestoppt (%1); Video ist zurück: „Fahren fortsetzen“ drücken</translation>
+    </message>
+    <message>
+        <source>VIDEO WATCHDOG stopped driving: %1</source>
+        <translation>VIDEO-WATCHDOG hat das Fahren gestoppt: %1</translation>
+    </message>
+    <message>
+        <source>Driving waits for video (%1)</source>
+        <translation>Fahren wartet auf Video (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::VideoView</name>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 fps</translation>
+    </message>
+    <message>
+        <source>frame age %1 ms</source>
+        <translation>Bildalter %1 ms</translation>
+    </message>
+    <message>
+        <source>frame age %1 ms (since arrival)</source>
+        <translation>Bildalter %1 ms (seit Empfang)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::TeleopVideoPane</name>
+    <message>
+        <source>Teleoperation video</source>
+        <translation>Teleoperations-Video</translation>
+    </message>
+    <message>
+        <source>Full screen</source>
+        <translation>Vollbild</translation>
+    </message>
+    <message>
+        <source>Resume driving</source>
+        <translation>Fahren fortsetzen</translation>
+    </message>
+    <message>
+        <source>No camera on this vehicle</source>
+        <translation>Keine Kamera an diesem Fahrzeug</translation>
+    </message>
+    <message>
+        <source>Camera shown (announced by the vehicle or configured for it)</source>
+        <translation>Angezeigte Kamera (vom Fahrzeug angekündigt oder für es konfiguriert)</translation>
+    </message>
+    <message>
+        <source>Show the video full screen (Esc returns); driving keys keep working there</source>
+        <translation>Video im Vollbild zeigen (Esc kehrt zurück); die Fahrtasten wirken dort weiter</translation>
+    </message>
+    <message>
+        <source>The video watchdog stopped driving: resume once the video is back</source>
+        <translation>Der Video-Watchdog hat das Fahren gestoppt: fortsetzen, sobald das Video zurück ist</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>camera %1</source>
+        <translation>Kamera %1</translation>
+    </message>
+    <message>
+        <source> (configured)</source>
+        <translation> (konfiguriert)</translation>
+    </message>
+    <message>
+        <source>%1 — pan-tilt: J/L/I/K, the stick's camera mode or the joystick hat</source>
+        <translation>%1 — Schwenken/Neigen: J/L/I/K, Kameramodus des Sticks oder Coolie-Hat des Joysticks</translation>
+    </message>
+    <message>
+        <source>no camera</source>
+        <translation>keine Kamera</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::PanTiltController</name>
+    <message>
+        <source>camera control disabled</source>
+        <translation>Kamerasteuerung deaktiviert</translation>
+    </message>
+    <message>
+        <source>hat released</source>
+        <translation>Coolie-Hat losgelassen</translation>
+    </message>
+    <message>
+        <source>joystick unplugged</source>
+        <translation>Joystick abgezogen</translation>
+    </message>
+    <message>
+        <source>keys released</source>
+        <translation>Tasten losgelassen</translation>
+    </message>
+    <message>
+        <source>stick released</source>
+        <translation>Stick losgelassen</translation>
+    </message>
+    <message>
+        <source>input released</source>
+        <translation>Eingabe losgelassen</translation>
     </message>
 </context>
 </TS>

@@ -2,11 +2,13 @@
 // (with the SDL2 joystick mapped as the site configuration says), the "JAUS" link indicator and the headless
 // commands request_control, release_control and drive.
 #include "app/ProtocolModule.h"
+#include "app/modules/JausVideoHeadless.h"
 
 #include "models/FleetContext.h"
 #include "models/bridges/JausBridge.h"
 #include "widgets/jaus/JausControlPanel.h"
 #include "widgets/jaus/TeleopPanel.h"
+#include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/SdlJoystickInput.h"
 
 #include <QCoreApplication>
@@ -47,8 +49,9 @@ public:
         mapping.invertTurn = t.invertTurn;
         mapping.deadZone = t.deadZone;
         joystick->setMapping(mapping);
-        ui.window.setPanelWidget(
-            Panel::Teleop, new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick));
+        auto* teleop = new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick);
+        teleop->video()->watchdog().setLimitMs(static_cast<int>(t.videoWatchdogS * 1000));
+        ui.window.setPanelWidget(Panel::Teleop, teleop);
     }
     QString notConfiguredText() const override {
         return QCoreApplication::translate(
@@ -58,6 +61,13 @@ public:
     QStringList headlessCommands() const override {
         return {QStringLiteral("request_control"), QStringLiteral("release_control"), QStringLiteral("drive"),
                 QStringLiteral("drive_start"), QStringLiteral("drive_stop")};
+    }
+
+    void attachHeadless(HeadlessMonitor* monitor) override {
+        if (!m_bridge)
+            return;
+        auto* video = new JausVideoHeadless(m_bridge, m_bridge); // video_status, video_play, video_stop
+        video->attach(monitor);
     }
 
 private:

@@ -96,6 +96,8 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
                 j->error("turn_axis", "must differ from forward_axis");
             j->finish();
         }
+        // Issue 18: the video watchdog's frame age limit (seconds).
+        cfg.teleop.videoWatchdogS = t->number("video_watchdog_s", cfg.teleop.videoWatchdogS, 0.1, 10);
         t->finish();
     }
     if (auto r = root.object("record")) {

@@ -68,6 +68,8 @@ struct TeleopInputConfig {
     bool invertForward = true; // SDL reports a stick pushed away as negative
     bool invertTurn = false;
     double deadZone = 0.12;
+    // Issue 18: driving is held when the teleop video is lost or its frame older than this (seconds).
+    double videoWatchdogS = 1.0;
 };
 
 // The flight recorder (issue 16, docs/recording.md): always on unless enabled is false.

@@ -4,8 +4,11 @@
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
 #include "models/jaus/JausVehicleBridge.h"
+#include "models/video/VideoPlayer.h"
 #include "widgets/HoldToConfirmButton.h"
+#include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
+#include "widgets/teleop/PanTiltController.h"
 #include "widgets/teleop/SdlJoystickInput.h"
 #include "widgets/teleop/TeleopController.h"
 #include "widgets/teleop/VirtualStick.h"
@@ -38,11 +41,26 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     setObjectName(QStringLiteral("teleop-panel"));
     setFocusPolicy(Qt::StrongFocus);
     m_controller->setRateHz(bridge->identity().driveRateHz);
+    m_video = new TeleopVideoPane(this);
+    m_video->setKeyFilter(this);
+    m_panTilt = new PanTiltController(this);
+    m_stickCamera = new QPushButton(tr("Stick: camera"), this);
+    m_stickCamera->setObjectName(QStringLiteral("button-stick-camera"));
+    m_stickCamera->setCheckable(true);
+    m_stickCamera->setToolTip(tr("The on-screen stick pans and tilts the camera instead of driving"));
+    m_videoHold = new QLabel(this);
+    m_videoHold->setObjectName(QStringLiteral("label-video-watchdog"));
+    m_videoHold->setWordWrap(true);
+    m_videoHold->setStyleSheet(QStringLiteral("color:#c81e1e; font-weight:bold;"));
+    m_videoHold->hide();
 
     QFont big = m_title->font();
     big.setPointSizeF(big.pointSizeF() * 1.3);
     big.setBold(true);
     m_title->setFont(big);
+    // Long state lines wrap rather than widen the panel beyond its dock (the video needs the width).
+    m_state->setWordWrap(true);
+    m_live->setWordWrap(true);
 
     m_estop->setObjectName(QStringLiteral("button-estop"));
     m_estop->setMinimumHeight(64);
@@ -102,7 +120,10 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     auto* right = new QVBoxLayout;
     right->addLayout(settings);
     right->addWidget(m_axes);
-    auto* keysHint = new QLabel(tr("Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows."), this);
+    right->addWidget(m_stickCamera);
+    auto* keysHint = new QLabel(tr("Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows. Camera: "
+                                   "J/L pan, I/K tilt (or the joystick hat)."),
+                                this);
     keysHint->setWordWrap(true);
     right->addWidget(keysHint);
     right->addStretch(1);
@@ -117,13 +138,34 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     m_problem->setStyleSheet(QStringLiteral("color:#c81e1e; font-weight:bold;"));
     m_problem->hide();
     l->addWidget(m_problem);
+    l->addWidget(m_videoHold);
+    l->addWidget(m_video, 3);
     l->addLayout(inputs, 1);
     auto* stops = new QHBoxLayout;
     stops->addWidget(m_estop, 2);
     stops->addWidget(m_clear, 1);
     l->addLayout(stops);
 
-    connect(m_stick, &VirtualStick::axesChanged, m_controller, &TeleopController::setStick);
+    connect(m_stick, &VirtualStick::axesChanged, this, [this](DriveAxes a) {
+        if (m_stickCamera->isChecked())
+            m_panTilt->setStick(a);
+        else
+            m_controller->setStick(a);
+    });
+    connect(m_stickCamera, &QPushButton::toggled, this, [this] {
+        m_controller->setStick({});
+        m_panTilt->setStick({});
+    });
+    connect(m_panTilt, &PanTiltController::command, this, &TeleopPanel::onPanTilt);
+    connect(m_video, &TeleopVideoPane::watchdogChanged, this, &TeleopPanel::onWatchdog);
+    connect(m_video, &TeleopVideoPane::resumed, this, [this] {
+        showDriveProblem({});
+        refresh();
+    });
+    connect(m_video, &TeleopVideoPane::cameraChanged, this, [this] {
+        m_panTilt->releaseAll(tr("camera changed"));
+        refresh();
+    });
     connect(m_controller, &TeleopController::command, this, &TeleopPanel::onCommand);
     connect(m_controller, &TeleopController::command, m_axes, &AxisDisplay::setMapped);
     // Zero on release, focus loss, joystick loss...: the controller sends the zero demand at once, then the
@@ -144,6 +186,7 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     m_inputDevice = device;
     if (device) {
         m_controller->setDevice(device);
+        m_panTilt->setDevice(device);
         // The operator's saved mapping for this device wins over the site configuration's.
         auto applySaved = [device] {
             if (device->supportsMapping() && device->isConnected())
@@ -159,6 +202,10 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
         connect(device, &InputDevice::rawAxesChanged, m_axes, &AxisDisplay::setAxes);
     }
     connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& s) {
+        // Nothing selected yet: show the first vehicle heard of (its video and state; driving still needs
+        // control of it), rather than an empty panel.
+        if (!m_subsystem && m_autoSelect)
+            setVehicle(s.subsystem);
         if (s.subsystem == m_subsystem)
             refresh();
     });
@@ -170,7 +217,7 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     // Window focus loss (another application, a dialog): stop driving at once.
     connect(qApp, &QApplication::applicationStateChanged, this, [this](Qt::ApplicationState st) {
         if (st != Qt::ApplicationActive)
-            m_controller->releaseAll(tr("window lost focus"));
+            releaseAll(tr("window lost focus"));
     });
     m_stick->installEventFilter(this);
     refresh();
@@ -188,10 +235,49 @@ TeleopPanel::~TeleopPanel() {
         m_bridge->stopDriving(m_subsystem);
 }
 
+void TeleopPanel::releaseAll(const QString& reason) {
+    m_controller->releaseAll(reason);
+    m_panTilt->releaseAll(reason);
+}
+
+void TeleopPanel::setConfiguredCameras(quint16 subsystem, const QVector<JausVideoEndpoint>& cameras) {
+    m_configuredCameras[subsystem] = cameras;
+    for (JausVideoEndpoint& c : m_configuredCameras[subsystem])
+        c.configured = true;
+    refresh();
+}
+
+QString TeleopPanel::videoHold() const {
+    return m_video->watchdog().allowsDriving() ? QString() : m_video->watchdog().reason();
+}
+
+void TeleopPanel::onWatchdog() {
+    if (!m_video->watchdog().allowsDriving() && m_subsystem) {
+        // The drive stream goes to zero at once; the session ends below (refresh) with the reason.
+        const QString why = m_video->watchdog().reason();
+        m_controller->releaseAll(why);
+    }
+    refresh();
+}
+
+void TeleopPanel::onPanTilt(double pan, double tilt) {
+    const auto cam = m_video->currentCamera();
+    if (!m_subsystem || !cam || !cam->panTilt)
+        return;
+    emit panTiltCommand(m_subsystem, cam->sensorId, pan, tilt);
+    // Full deflection (or the hat / keys at their fraction of it) is kPanTiltFullRate rad/s; the unit
+    // clamps to its own limit.
+    const CommandResult r =
+        m_bridge->panTilt(m_subsystem, cam->sensorId, pan * kPanTiltFullRate, tilt * kPanTiltFullRate);
+    if (!r.ok && (pan != 0 || tilt != 0))
+        showDriveProblem(tr("Camera pan-tilt refused: %1").arg(r.message));
+}
+
 void TeleopPanel::setVehicle(std::uint16_t subsystem) {
+    m_autoSelect = false;
     if (subsystem == m_subsystem)
         return;
-    m_controller->releaseAll(tr("vehicle changed"));
+    releaseAll(tr("vehicle changed"));
     if (m_subsystem && m_session != Session::Closed)
         endSession(tr("vehicle changed"));
     m_subsystem = subsystem;
@@ -304,7 +390,7 @@ void TeleopPanel::onCommand(DriveAxes axes) {
 }
 
 void TeleopPanel::emergencyStop() {
-    m_controller->releaseAll(tr("emergency stop"));
+    releaseAll(tr("emergency stop"));
     if (m_subsystem && m_gate)
         m_gate->stopMachine(JausVehicleBridge::machineId(m_subsystem), QStringLiteral("teleop"));
 }
@@ -338,6 +424,10 @@ void TeleopPanel::refresh() {
         m_state->setText(
             tr("Select a vehicle in the fleet list or the JAUS control panel, then take control."));
         m_live->clear();
+        m_video->setCameras({});
+        m_video->setOverlay({});
+        m_videoHold->hide();
+        m_panTilt->setEnabled(false);
         m_controller->setEnabled(false);
         m_estop->setEnabled(false);
         m_clear->setEnabled(false);
@@ -348,11 +438,28 @@ void TeleopPanel::refresh() {
     const bool may = me.mayControl;
     const bool ours = s->controlledByUs;
     const bool up = s->link == JausLink::Up;
-    const bool canDrive = may && ours && up && !s->emergency;
+    QVector<JausVideoEndpoint> cameras = s->videoEndpoints;
+    for (const JausVideoEndpoint& c : m_configuredCameras.value(s->subsystem)) {
+        const bool announced = std::any_of(cameras.begin(), cameras.end(),
+                                           [&](const JausVideoEndpoint& a) { return a.url == c.url; });
+        if (!announced)
+            cameras << c;
+    }
+    m_video->setCameras(cameras);
+    m_video->checkWatchdog();
+    const bool videoOk = m_video->watchdog().allowsDriving();
+    const QString hold = videoOk ? QString() : m_video->watchdog().reason();
+    m_videoHold->setText(hold);
+    m_videoHold->setVisible(!hold.isEmpty());
+    const bool canDrive = may && ours && up && !s->emergency && videoOk;
+    const auto cam = m_video->currentCamera();
+    m_panTilt->setEnabled(may && ours && up && !s->emergency && cam && cam->panTilt);
+    m_stickCamera->setEnabled(cam && cam->panTilt);
     if (!canDrive && m_session != Session::Closed) {
         // The vehicle's own state ends the session: say why, loudly, and end it through the gate.
         const QString why =
-            !up ? tr("the link to %1 is %2").arg(s->callSign, JausSubsystemModel::linkText(s->link))
+            !videoOk ? hold
+            : !up    ? tr("the link to %1 is %2").arg(s->callSign, JausSubsystemModel::linkText(s->link))
             : s->emergency ? tr("%1 is in EMERGENCY").arg(s->callSign)
             : !ours        ? tr("this console no longer controls %1").arg(s->callSign)
                            : tr("driving is not allowed");
@@ -390,6 +497,18 @@ void TeleopPanel::refresh() {
     if (s->localPose && s->localPose->x && s->localPose->y)
         live << tr("local %1 / %2 m").arg(*s->localPose->x, 0, 'f', 1).arg(*s->localPose->y, 0, 'f', 1);
     m_live->setText(live.join(QStringLiteral(" · ")));
+    QStringList overlay;
+    overlay << QStringLiteral("%1 [%2]").arg(s->callSign).arg(s->subsystem);
+    if (s->velocity && s->velocity->vx)
+        overlay << tr("speed %1 m/s").arg(*s->velocity->vx, 0, 'f', 2);
+    if (s->globalPose && s->globalPose->yaw)
+        overlay << tr("heading %1°").arg(std::fmod(*s->globalPose->yaw * 180 / M_PI + 360, 360), 0, 'f', 0);
+    overlay << (s->emergency ? tr("EMERGENCY")
+                : !videoOk   ? tr("driving held (video)")
+                : s->driving ? tr("drive session open")
+                : canDrive   ? tr("ready to drive")
+                             : tr("not driving"));
+    m_video->setOverlay(overlay);
     double maxFwd = 1.0;
     if (s->platform && s->platform->maxForwardSpeed)
         maxFwd = *s->platform->maxForwardSpeed;
@@ -400,32 +519,47 @@ void TeleopPanel::refresh() {
 }
 
 void TeleopPanel::keyPressEvent(QKeyEvent* e) {
-    if (!m_controller->handleKey(e->key(), true, e->isAutoRepeat()))
+    if (!m_controller->handleKey(e->key(), true, e->isAutoRepeat()) &&
+        !m_panTilt->handleKey(e->key(), true, e->isAutoRepeat()))
         QWidget::keyPressEvent(e);
 }
 
 void TeleopPanel::keyReleaseEvent(QKeyEvent* e) {
-    if (!m_controller->handleKey(e->key(), false, e->isAutoRepeat()))
+    if (!m_controller->handleKey(e->key(), false, e->isAutoRepeat()) &&
+        !m_panTilt->handleKey(e->key(), false, e->isAutoRepeat()))
         QWidget::keyReleaseEvent(e);
 }
 
 void TeleopPanel::focusOutEvent(QFocusEvent* e) {
-    m_controller->releaseAll(tr("teleop panel lost keyboard focus"));
+    // The full-screen video window takes the keys over (they come back through eventFilter).
+    if (!m_video->fullScreenWindow())
+        releaseAll(tr("teleop panel lost keyboard focus"));
     QWidget::focusOutEvent(e);
 }
 
 void TeleopPanel::hideEvent(QHideEvent* e) {
-    m_controller->releaseAll(tr("teleop panel hidden"));
+    releaseAll(tr("teleop panel hidden"));
     QWidget::hideEvent(e);
 }
 
 bool TeleopPanel::eventFilter(QObject* watched, QEvent* event) {
-    // Keys typed while the stick has focus drive too.
-    if (watched == m_stick && (event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease)) {
+    // Keys typed while the stick (or the full-screen video window) has focus drive too.
+    const bool fullScreen = watched && watched == m_video->fullScreenWindow();
+    if ((watched == m_stick || fullScreen) &&
+        (event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease)) {
         auto* k = static_cast<QKeyEvent*>(event);
-        if (m_controller->handleKey(k->key(), event->type() == QEvent::KeyPress, k->isAutoRepeat()))
+        const bool press = event->type() == QEvent::KeyPress;
+        if (fullScreen && press && k->key() == Qt::Key_Space) {
+            emergencyStop();
+            return true;
+        }
+        if (m_controller->handleKey(k->key(), press, k->isAutoRepeat()) ||
+            m_panTilt->handleKey(k->key(), press, k->isAutoRepeat()))
             return true;
     }
+    // Leaving the full-screen window (Esc, closed, another application): stop as on focus loss.
+    if (fullScreen && (event->type() == QEvent::Close || event->type() == QEvent::WindowDeactivate))
+        releaseAll(tr("video window closed or lost focus"));
     return QWidget::eventFilter(watched, event);
 }
 

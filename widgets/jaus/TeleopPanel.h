@@ -3,9 +3,14 @@
 // (W/A/S/D or arrows with the dead-man key), SDL2 joysticks; wrench effort or velocity as the platform
 // offers; a speed limit within the platform specifications; zero on release, focus loss and joystick
 // loss; a large E-STOP (Space, Esc) and clear-emergency only by holding a confirm button.
+// Issue 18: the vehicle's video above the controls (TeleopVideoPane: cameras, overlays, full-screen window),
+// the video watchdog (driving is held while the video is lost or too old, and resumes only by the
+// operator's Resume once it is back), and the camera's pan-tilt from J/L/I/K, the stick's camera mode and
+// a joystick hat.
 #include "models/jaus/JausVehicle.h"
 #include "widgets/teleop/InputDevice.h"
 
+#include <QHash>
 #include <QPointer>
 #include <QWidget>
 
@@ -24,6 +29,8 @@ class VirtualStick;
 class AxisDisplay;
 class HoldToConfirmButton;
 class InputDevice;
+class PanTiltController;
+class TeleopVideoPane;
 
 class TeleopPanel : public QWidget {
     Q_OBJECT
@@ -53,6 +60,21 @@ public:
     void openJoystickMapping();
     QPushButton* joystickMappingButton() const { return m_mapButton; }
 
+    // Pan-tilt rate (rad/s) at full stick deflection (AEP-4818 §9.3.3 rates; the unit clamps to its own).
+    static constexpr double kPanTiltFullRate = 1.0;
+    // Issue 18: the video pane, the pan-tilt stream, cameras configured for vehicles that announce none.
+    TeleopVideoPane* video() const { return m_video; }
+    PanTiltController* panTilt() const { return m_panTilt; }
+    // The on-screen stick drives the camera's pan-tilt instead of the vehicle while checked.
+    QPushButton* stickCameraButton() const { return m_stickCamera; }
+    void setConfiguredCameras(quint16 subsystem, const QVector<JausVideoEndpoint>& cameras);
+    // Why the video watchdog holds driving (empty when it does not).
+    QString videoHold() const;
+
+signals:
+    // A pan-tilt rate demand for the shown camera (rates -1..1 of the sensor's), sent to the vehicle.
+    void panTiltCommand(quint16 subsystem, quint16 sensorId, double panRate, double tiltRate);
+
 protected:
     void keyPressEvent(QKeyEvent* e) override;
     void keyReleaseEvent(QKeyEvent* e) override;
@@ -69,6 +91,9 @@ private:
     void startSession();
     void endSession(const QString& reason);
     void showDriveProblem(const QString& text);
+    void onWatchdog();
+    void onPanTilt(double pan, double tilt);
+    void releaseAll(const QString& reason);
 
     JausVehicleBridge* m_bridge;
     QPointer<CommandGate> m_gate;
@@ -94,6 +119,12 @@ private:
     // (no new session, and audit line, per 20 Hz demand while the operator still holds the stick).
     bool m_waitForRelease = false;
     QLabel* m_problem;
+    TeleopVideoPane* m_video = nullptr;
+    PanTiltController* m_panTilt = nullptr;
+    QPushButton* m_stickCamera = nullptr;
+    QLabel* m_videoHold = nullptr;
+    QHash<quint16, QVector<JausVideoEndpoint>> m_configuredCameras;
+    bool m_autoSelect = true; // until a vehicle is set (selection or setVehicle)
 };
 
 } // namespace ocu

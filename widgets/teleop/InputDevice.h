@@ -2,6 +2,7 @@
 // Input devices for teleoperation behind one abstraction, so the teleop logic is tested with a fake
 // device and the application uses SDL2 game controllers and joysticks.
 #include <QObject>
+#include <QPoint>
 #include <QString>
 #include <QVector>
 
@@ -86,12 +87,16 @@ public:
     virtual bool supportsMapping() const { return false; }
     virtual AxisMapping mapping() const { return {}; }
     virtual void setMapping(const AxisMapping& m) { (void)m; }
+    // The first hat (POV switch) as x -1 left .. +1 right, y -1 down .. +1 up; (0,0) centred or none. It
+    // drives the camera's pan-tilt (issue 18).
+    virtual QPoint hat() const { return {}; }
 
 signals:
     void axesChanged(ocu::DriveAxes axes);
     void rawAxesChanged(const QVector<double>& raw);
     // false = unplugged or lost: the teleop controller stops the vehicle at once.
     void connectedChanged(bool connected);
+    void hatChanged(QPoint hat);
 };
 
 // A device driven by tests (and by scripted demos): set axes, plug, unplug.
@@ -118,6 +123,11 @@ public:
     bool supportsMapping() const override { return true; }
     AxisMapping mapping() const override { return m_mapping; }
     void setMapping(const AxisMapping& m) override { m_mapping = m; }
+    QPoint hat() const override { return m_hat; }
+    void setHat(QPoint h) {
+        m_hat = h;
+        emit hatChanged(h);
+    }
     void plug() {
         m_connected = true;
         emit connectedChanged(true);
@@ -125,6 +135,7 @@ public:
     void unplug() {
         m_connected = false;
         m_axes = {};
+        m_hat = {};
         emit connectedChanged(false);
     }
 
@@ -134,6 +145,7 @@ private:
     DriveAxes m_axes;
     QVector<double> m_raw;
     AxisMapping m_mapping;
+    QPoint m_hat;
 };
 
 } // namespace ocu

@@ -65,6 +65,10 @@ void SdlJoystickInput::close() {
     m_instanceId = -1;
     m_axes = {};
     m_raw.clear();
+    if (!m_hat.isNull()) {
+        m_hat = {};
+        emit hatChanged(m_hat);
+    }
 }
 
 void SdlJoystickInput::poll() {
@@ -94,6 +98,15 @@ void SdlJoystickInput::poll() {
     if (raw != m_raw) {
         m_raw = raw;
         emit rawAxesChanged(m_raw);
+    }
+    if (SDL_JoystickNumHats(j) > 0) {
+        const Uint8 h = SDL_JoystickGetHat(j, 0);
+        const QPoint hat((h & SDL_HAT_RIGHT ? 1 : 0) - (h & SDL_HAT_LEFT ? 1 : 0),
+                         (h & SDL_HAT_UP ? 1 : 0) - (h & SDL_HAT_DOWN ? 1 : 0));
+        if (hat != m_hat) {
+            m_hat = hat;
+            emit hatChanged(hat);
+        }
     }
     const DriveAxes a = mapAxes(raw, m_mapping);
     if (!(a == m_axes)) {

@@ -28,6 +28,7 @@ public:
     bool supportsMapping() const override { return true; }
     AxisMapping mapping() const override { return m_mapping; }
     void setMapping(const AxisMapping& m) override { m_mapping = m; }
+    QPoint hat() const override { return m_hat; }
 
 private:
     void poll();
@@ -42,6 +43,7 @@ private:
     AxisMapping m_mapping;
     DriveAxes m_axes;
     QVector<double> m_raw;
+    QPoint m_hat;
     QTimer* m_timer = nullptr;
 };
 

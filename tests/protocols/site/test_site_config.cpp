@@ -103,6 +103,22 @@ private slots:
         QVERIFY(
             QString::fromStdString(bad.error()).contains("teleop.joystick.dead_zone: 0.95 is out of range"));
     }
+    // Issue 18: the teleop video watchdog's limit.
+    void videoWatchdogLimit() {
+        auto def = parseSiteConfig(R"({"site": {"origin": {"latitude": 1, "longitude": 2}}})", "d.json");
+        QVERIFY(def.ok());
+        QCOMPARE(def->teleop.videoWatchdogS, 1.0);
+        auto cfg = parseSiteConfig(
+            R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "teleop": {"video_watchdog_s": 0.5}})",
+            "v.json");
+        QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
+        QCOMPARE(cfg->teleop.videoWatchdogS, 0.5);
+        auto bad = parseSiteConfig(
+            R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "teleop": {"video_watchdog_s": 0}})",
+            "w.json");
+        QVERIFY(!bad.ok());
+        QVERIFY(QString::fromStdString(bad.error()).contains("teleop.video_watchdog_s"));
+    }
     void crossFieldCheck() {
         auto cfg = parseSiteConfig(
             R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "fleet": {"stale_after_s": 10, "remove_after_s": 5}})",
