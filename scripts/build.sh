@@ -5,6 +5,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${OCU_BUILD_DIR:-$root/build}"
 jobs="${OCU_JOBS:-$(nproc)}"
 export CCACHE_DIR="${CCACHE_DIR:-$root/.cache/ccache}"
+# The Qt targets use precompiled headers (cmake/OcuPch.cmake); ccache caches their TUs only with this sloppiness.
+export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros}"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
 start=$(date +%s)
 cmake --build "$build" -j "$jobs"
