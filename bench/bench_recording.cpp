@@ -135,6 +135,9 @@ int main(int argc, char** argv) {
                 m.e = 1000 * std::cos(a) + i;
                 m.n = 1000 * std::sin(a);
                 m.u = 10 + std::sin(a * 3);
+                // lat/lon follow e/n (a recorded Position carries both, the doubles exactly).
+                m.lat = 48.2 + m.n / 111320.0;
+                m.lon = 11.4 + m.e / (111320.0 * 0.6665);
                 m.headingDeg = std::fmod(a * 57.3, 360);
                 m.speed = 8 + std::sin(a);
                 m.lastDataMs = clock - 3;
