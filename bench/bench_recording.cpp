@@ -92,6 +92,9 @@ int main(int argc, char** argv) {
         o.path = file;
         o.clock = [&clock] { return clock; };
         o.flushIntervalMs = 200;
+        // The console's default: one run's file limited to record.max_total_mb (2048 MB; its trim check and
+        // incremental vacuum run with every commit).
+        o.maxFileBytes = effectiveMaxFileBytes(0, 2048);
         if (const QString err = rec.start(o); !err.isEmpty()) {
             std::fprintf(stderr, "bench_recording: %s\n", qPrintable(err));
             return 1;
