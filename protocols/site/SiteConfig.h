@@ -78,7 +78,7 @@ struct RecordConfig {
     std::string dir;          // folder of the per-run files; empty = the user's data folder /recordings
     double maxTotalMb = 2048; // the folder's recordings beyond this: the oldest go (0 = no limit)
     double maxAgeDays = 30;   // recordings older than this go (0 = no limit)
-    double maxFileMb = 0;     // one run's file beyond this: its oldest machine data go (0 = max_total_mb)
+    double maxFileMb = 0;     // one run's file beyond this: its oldest machine data go (0 = no limit)
     bool raw = false;         // record.raw: raw frames too
 };
 

@@ -2,6 +2,7 @@
 // (keyframe seek and forward play agree, both directions), alarms and acknowledgements as of the replay time,
 // the bounded queue drops and counts instead of growing, exports (JSON lines, CSV, slice), hostile blobs.
 #include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/FleetBridge.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
@@ -516,6 +517,55 @@ private slots:
         appendMessage(huge, 1, 5, false, "ab", 2);
         huge[3] = char(0x7F); // the length now claims more than the blob holds
         QVERIFY(!decodeMessageChunk(huge, 0, 0, 10000, [](const RecordedMessage&) { return true; }));
+    }
+
+    // attach(): what the console's models and its gate see is what the file holds - machine states and
+    // removals, events, acknowledgements (the shared key, who), and every gate command with its result and
+    // per-target outcome (the audit line).
+    void attachRecordsTheModelsAndTheGate() {
+        FleetContext ctx;
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_dir.filePath(QStringLiteral("attached.sqlite"));
+        QVERIFY(rec.start(o).isEmpty());
+        rec.attach(&ctx);
+        MachineState m = machine(QStringLiteral("iso23725:t1"), 12, 34);
+        m.lastDataMs = QDateTime::currentMSecsSinceEpoch();
+        ctx.fleet()->upsert({m});
+        ctx.fleet()->upsert({machine(QStringLiteral("iso23725:t2"), 1, 2)});
+        ctx.fleet()->remove({QStringLiteral("iso23725:t2")});
+        FleetEvent alarm =
+            makeEvent(EventSeverity::Alarm, EventKind::HealthFault, m.id, QStringLiteral("fault"));
+        ctx.alarms()->add(alarm);
+        ctx.alarms()->acknowledge(0);
+        const QString key = ctx.alarms()->keyAt(0);
+        ctx.gate()->stopMachine(QStringLiteral("no-such-machine"), QStringLiteral("test"));
+        QTRY_VERIFY_WITH_TIMEOUT(rec.stats().queued >= 6, 10000);
+        rec.flush();
+        rec.stop();
+
+        auto r = Recording::open(o.path);
+        QVERIFY(r);
+        const auto end = r->statesAt(r->endMs());
+        QCOMPARE(end.size(), 1);
+        QCOMPARE(end.value(m.id).e, 12.0);
+        QCOMPARE(end.value(m.id).name, m.name);
+        bool sawFault = false;
+        for (const RecordedEvent& e : r->events(r->startMs() - 1, r->endMs()))
+            sawFault |= e.event.text == QLatin1String("fault") && e.key == key && e.event.requiresAck;
+        QVERIFY(sawFault);
+        const auto acks = r->acks(r->startMs() - 1, r->endMs());
+        QCOMPARE(acks.size(), 1);
+        QCOMPARE(acks.first().key, key);
+        QVERIFY(!acks.first().by.isEmpty());
+        const auto cmds = r->commands(r->startMs() - 1, r->endMs());
+        QCOMPARE(cmds.size(), 1);
+        QCOMPARE(cmds.first().origin, QStringLiteral("test"));
+        QCOMPARE(cmds.first().target, QStringLiteral("no-such-machine"));
+        QVERIFY(!cmds.first().ok);
+        const QJsonObject audit = QJsonDocument::fromJson(cmds.first().audit.toUtf8()).object();
+        QCOMPARE(audit.value(QStringLiteral("target")).toString(), QStringLiteral("no-such-machine"));
+        QVERIFY(audit.contains(QStringLiteral("targets")));
     }
 
     // The writer behind: dropped records reach the operator as a warning with the count.
