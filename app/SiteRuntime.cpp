@@ -234,7 +234,11 @@ void SiteRuntime::startRecorder() {
     recording::RecorderOptions o;
     o.path = recording::newRecordingPath(dir);
     o.raw = rc.raw;
-    o.maxFileBytes = qint64(rc.maxFileMb * 1024 * 1024);
+    // A run alone never outgrows the folder's budget, and the folder's older runs give way while it records.
+    o.maxFileBytes = recording::effectiveMaxFileBytes(rc.maxFileMb, rc.maxTotalMb);
+    o.retentionDir = dir;
+    o.maxTotalBytes = qint64(rc.maxTotalMb * 1024 * 1024);
+    o.maxAgeDays = rc.maxAgeDays;
     o.siteName = QString::fromStdString(m_config.name);
     o.originLat = m_config.origin.lat;
     o.originLon = m_config.origin.lon;

@@ -92,6 +92,9 @@ int main(int argc, char** argv) {
         o.path = file;
         o.clock = [&clock] { return clock; };
         o.flushIntervalMs = 200;
+        // The console's default: one run's file limited to record.max_total_mb (2048 MB; its trim check and
+        // incremental vacuum run with every commit).
+        o.maxFileBytes = effectiveMaxFileBytes(0, 2048);
         if (const QString err = rec.start(o); !err.isEmpty()) {
             std::fprintf(stderr, "bench_recording: %s\n", qPrintable(err));
             return 1;
@@ -135,6 +138,9 @@ int main(int argc, char** argv) {
                 m.e = 1000 * std::cos(a) + i;
                 m.n = 1000 * std::sin(a);
                 m.u = 10 + std::sin(a * 3);
+                // lat/lon follow e/n (a recorded Position carries both, the doubles exactly).
+                m.lat = 48.2 + m.n / 111320.0;
+                m.lon = 11.4 + m.e / (111320.0 * 0.6665);
                 m.headingDeg = std::fmod(a * 57.3, 360);
                 m.speed = 8 + std::sin(a);
                 m.lastDataMs = clock - 3;

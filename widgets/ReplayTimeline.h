@@ -39,6 +39,9 @@ public:
 
     QSlider* slider() const { return m_slider; }
     QToolButton* playButton() const { return m_play; }
+    QToolButton* reverseButton() const { return m_reverse; }
+    QToolButton* stepBackButton() const { return m_back; }
+    QToolButton* stepForwardButton() const { return m_fwd; }
     QLineEdit* timeEdit() const { return m_time; }
     QComboBox* speedBox() const { return m_speed; }
     TimelineMarkerStrip* markerStrip() const { return m_strip; }

@@ -24,10 +24,52 @@ void putString(QByteArray& out, const QString& s) {
     out.append(u);
 }
 
+// LEB128 varints; zigzag for signed values.
+void putVar(QByteArray& out, std::uint64_t v) {
+    while (v >= 0x80) {
+        out.append(char(std::uint8_t(v) | 0x80));
+        v >>= 7;
+    }
+    out.append(char(v));
+}
+std::uint64_t zigzag(std::int64_t v) {
+    return (std::uint64_t(v) << 1) ^ std::uint64_t(v >> 63);
+}
+std::int64_t unzigzag(std::uint64_t v) {
+    return std::int64_t(v >> 1) ^ -std::int64_t(v & 1);
+}
+template <typename F, typename U> U bitsOf(F f) {
+    static_assert(sizeof(F) == sizeof(U));
+    U u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+}
+template <typename F, typename U> F fromBits(U u) {
+    F f;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+
 struct Reader {
     const char* p;
     const char* end;
     bool ok = true;
+    std::uint64_t getVar() {
+        std::uint64_t v = 0;
+        for (int shift = 0; shift < 64; shift += 7) {
+            if (p >= end) {
+                ok = false;
+                return 0;
+            }
+            const auto b = std::uint8_t(*p++);
+            v |= std::uint64_t(b & 0x7f) << shift;
+            if (!(b & 0x80))
+                return v;
+        }
+        ok = false; // longer than 10 bytes
+        p = end;
+        return 0;
+    }
     template <typename T> T get() {
         T v{};
         if (end - p < qint64(sizeof(T))) {
@@ -118,6 +160,22 @@ void appendPosition(QByteArray& out, std::uint32_t idx, std::int32_t dtMs, qint6
     put<std::int32_t>(out, messageDelta(s));
 }
 
+void appendDelta(QByteArray& out, std::uint32_t idx, std::int32_t dtMs, qint64 tMs, const MachineState& base,
+                 const MachineState& s) {
+    header(out, RecordType::Delta, idx, dtMs);
+    putVar(out, zigzag(std::int64_t(mm(s.e)) - mm(base.e)));
+    putVar(out, zigzag(std::int64_t(mm(s.n)) - mm(base.n)));
+    putVar(out, zigzag(std::int64_t(mm(s.u)) - mm(base.u)));
+    putVar(out, bitsOf<double, std::uint64_t>(s.lat) ^ bitsOf<double, std::uint64_t>(base.lat));
+    putVar(out, bitsOf<double, std::uint64_t>(s.lon) ^ bitsOf<double, std::uint64_t>(base.lon));
+    putVar(out, bitsOf<float, std::uint32_t>(float(s.headingDeg)) ^
+                    bitsOf<float, std::uint32_t>(float(base.headingDeg)));
+    putVar(out,
+           bitsOf<float, std::uint32_t>(float(s.speed)) ^ bitsOf<float, std::uint32_t>(float(base.speed)));
+    putVar(out, zigzag(s.lastDataMs - tMs));
+    putVar(out, zigzag(messageDelta(s)));
+}
+
 void applyPosition(MachineState& base, const MachineState& in, qint64 tMs) {
     // Exactly what decodeChunk makes of appendPosition's fields.
     base.e = mm(in.e) / 1000.0;
@@ -205,6 +263,35 @@ bool decodeChunk(const QByteArray& blob, qint64 t0Ms, QHash<std::uint32_t, Machi
             s.speed = speed;
             s.lastDataMs = lastData;
             s.lastMessageMs = msg == kNoMessageTime ? 0 : lastData + msg;
+            break;
+        }
+        case RecordType::Delta: {
+            // Position as differences to the machine's state before it (what the recorder's base was).
+            rec.type = RecordType::Position;
+            const std::int64_t de = unzigzag(r.getVar()), dn = unzigzag(r.getVar()),
+                               du = unzigzag(r.getVar());
+            const std::uint64_t lat = r.getVar(), lon = r.getVar(), heading = r.getVar(), speed = r.getVar();
+            const std::int64_t data = unzigzag(r.getVar()), msg = unzigzag(r.getVar());
+            if (!r.ok)
+                return false;
+            if (!apply)
+                break;
+            auto it = states.find(rec.idx);
+            if (it == states.end())
+                break; // no base: nothing to move
+            MachineState& s = *it;
+            // Unsigned arithmetic: hostile differences wrap instead of overflowing.
+            s.e = double(std::int64_t(std::uint64_t(mm(s.e)) + std::uint64_t(de))) / 1000.0;
+            s.n = double(std::int64_t(std::uint64_t(mm(s.n)) + std::uint64_t(dn))) / 1000.0;
+            s.u = double(std::int64_t(std::uint64_t(mm(s.u)) + std::uint64_t(du))) / 1000.0;
+            s.lat = fromBits<double>(bitsOf<double, std::uint64_t>(s.lat) ^ lat);
+            s.lon = fromBits<double>(bitsOf<double, std::uint64_t>(s.lon) ^ lon);
+            s.headingDeg =
+                fromBits<float>(bitsOf<float, std::uint32_t>(float(s.headingDeg)) ^ std::uint32_t(heading));
+            s.speed = fromBits<float>(bitsOf<float, std::uint32_t>(float(s.speed)) ^ std::uint32_t(speed));
+            s.lastDataMs = qint64(std::uint64_t(rec.tMs) + std::uint64_t(data));
+            s.lastMessageMs =
+                msg == kNoMessageTime ? 0 : qint64(std::uint64_t(s.lastDataMs) + std::uint64_t(msg));
             break;
         }
         case RecordType::Removed:

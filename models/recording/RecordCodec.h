@@ -6,6 +6,9 @@
 //            whenever anything but the moving part (position, heading, speed, times) changed;
 //   Position e/n/u in mm (int32), lat/lon as doubles, heading/speed as floats, lastDataMs (delta to the
 //            record time) and lastMessageMs (delta to lastDataMs); applied onto the machine's last Full;
+//   Delta    (schema 3) a Position as differences to the machine's state before it: e/n/u mm and the data
+//            and message time deltas as zigzag varints, lat/lon/heading/speed as varints of the XOR of
+//            their bits with the previous ones (exact, and short when they changed little);
 //   Removed  the machine left the fleet model.
 // Little-endian, fixed-width; decoding checks every length (a truncated or hostile blob ends the chunk with
 // an error, never reads past it).
@@ -20,7 +23,7 @@
 
 namespace ocu::recording {
 
-enum class RecordType : std::uint8_t { Full = 1, Position = 2, Removed = 3 };
+enum class RecordType : std::uint8_t { Full = 1, Position = 2, Removed = 3, Delta = 4 };
 
 // Everything but the moving part is equal (a Position record suffices).
 bool sameStatus(const MachineState& a, const MachineState& b);
@@ -29,6 +32,11 @@ bool positionEncodable(const MachineState& s);
 
 void appendFull(QByteArray& out, std::uint32_t idx, std::int32_t dtMs, const MachineState& s);
 void appendPosition(QByteArray& out, std::uint32_t idx, std::int32_t dtMs, qint64 tMs, const MachineState& s);
+// s's moving part relative to `base` (the machine as the file holds it before this record: a Full or a
+// base after applyPosition); both must be positionEncodable. Decodes like appendPosition (visited as
+// RecordType::Position).
+void appendDelta(QByteArray& out, std::uint32_t idx, std::int32_t dtMs, qint64 tMs, const MachineState& base,
+                 const MachineState& s);
 // base's moving part becomes in's as a Position record written at tMs decodes (quantised).
 void applyPosition(MachineState& base, const MachineState& in, qint64 tMs);
 void appendRemoved(QByteArray& out, std::uint32_t idx, std::int32_t dtMs);

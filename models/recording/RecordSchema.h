@@ -8,7 +8,8 @@
 namespace ocu::recording {
 
 // 2: inbound messages (msg_channels, messages) replace the never-written `raw` table of 1; pass counts.
-constexpr int kSchemaVersion = 2;
+// 3: the `states` and `keyframes` blobs are qCompress'ed (meta states_codec = zlib); 1 and 2 still read.
+constexpr int kSchemaVersion = 3;
 
 inline constexpr const char* kSchemaSql = R"SQL(
 CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT);

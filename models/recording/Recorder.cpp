@@ -93,6 +93,8 @@ struct Recorder::Writer {
     qint64 lastChunkId = 0;
     qint64 lastTrimCheckT = 0;
     qint64 maxFileBytes = 0;
+    qint64 lastRetentionT = 0;
+    QStringList retentionDeleted; // older runs deleted while this one ran
     int keyframeIntervalMs = 10000;
     quint64 stateBytes = 0;
     std::unique_ptr<Stmt> insState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink, insMap,
@@ -178,11 +180,13 @@ struct Recorder::Writer {
         insState->i64(1, t0);
         insState->i64(2, t1);
         insState->i64(3, n);
-        insState->blob(4, chunk);
+        // zlib at its fastest (schema 3): the records' repeated headers, texts and nearby coordinates.
+        const QByteArray packed = qCompress(chunk, 1);
+        insState->blob(4, packed);
         insState->run();
         lastChunkId = sqlite3_last_insert_rowid(db);
         lastChunkT1 = t1;
-        stateBytes += quint64(chunk.size());
+        stateBytes += quint64(packed.size());
         chunk.clear();
     }
 
@@ -193,7 +197,7 @@ struct Recorder::Writer {
         insKeyframe->i64(1, t);
         insKeyframe->i64(2, lastChunkId);
         insKeyframe->i64(3, last.size());
-        insKeyframe->blob(4, data);
+        insKeyframe->blob(4, qCompress(data, 1));
         insKeyframe->run();
         lastKeyframeT = t;
     }
@@ -306,6 +310,7 @@ QString Recorder::start(const RecorderOptions& options) {
         Stmt meta(w->db, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
         const QList<QPair<QString, QString>> kv{
             {QStringLiteral("schema"), QString::number(kSchemaVersion)},
+            {QStringLiteral("states_codec"), QStringLiteral("zlib")},
             {QStringLiteral("start_ms"), QString::number(t)},
             {QStringLiteral("site_name"), options.siteName},
             {QStringLiteral("origin_lat"), QString::number(options.originLat, 'g', 17)},
@@ -321,6 +326,7 @@ QString Recorder::start(const RecorderOptions& options) {
         }
         m_lastT = t;
         w->lastKeyframeT = t;
+        w->lastRetentionT = t;
     }
     m_writer = std::move(w);
     m_stopRequested = false;
@@ -485,7 +491,10 @@ void Recorder::run() {
                     const auto dt = std::int32_t(it.t - t0);
                     auto prev = w.last.find(idx);
                     if (prev != w.last.end() && sameStatus(*prev, it.state) && positionEncodable(it.state)) {
-                        appendPosition(chunk, idx, dt, it.t, it.state);
+                        if (positionEncodable(*prev))
+                            appendDelta(chunk, idx, dt, it.t, *prev, it.state);
+                        else
+                            appendPosition(chunk, idx, dt, it.t, it.state);
                         // What a replay will see: the quantised position (keyframes carry the same).
                         applyPosition(*prev, it.state, it.t);
                     } else {
@@ -590,6 +599,17 @@ void Recorder::run() {
             w.exec("COMMIT");
             if (w.maxFileBytes > 0)
                 w.exec("PRAGMA incremental_vacuum");
+            if (!m_options.retentionDir.isEmpty() &&
+                (m_options.maxTotalBytes > 0 || m_options.maxAgeDays > 0) &&
+                lastT - w.lastRetentionT >= std::max(1000, m_options.retentionIntervalMs)) {
+                w.lastRetentionT = lastT;
+                const QStringList gone = applyRetention(m_options.retentionDir, m_options.maxTotalBytes,
+                                                        m_options.maxAgeDays, m_options.path);
+                if (!gone.isEmpty()) {
+                    std::lock_guard lk(m_mutex);
+                    m_retentionDeleted += gone;
+                }
+            }
             m_commits.fetch_add(1, std::memory_order_relaxed);
             m_stateBytes.store(w.stateBytes, std::memory_order_relaxed);
             m_messages.store(w.messages, std::memory_order_relaxed);
@@ -714,6 +734,16 @@ void Recorder::recordPassCountsNow() {
     it.kind = Item::PassCounts;
     it.blob = encodePassCounts(c);
     push(std::move(it));
+}
+
+QStringList Recorder::deletedByRetention() const {
+    std::lock_guard lk(m_mutex);
+    return m_retentionDeleted;
+}
+
+qint64 effectiveMaxFileBytes(double maxFileMb, double maxTotalMb) {
+    const double mb = maxFileMb > 0 ? maxFileMb : std::max(0.0, maxTotalMb);
+    return qint64(mb * 1024 * 1024);
 }
 
 QString newRecordingPath(const QString& dir) {

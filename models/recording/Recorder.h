@@ -49,7 +49,14 @@ struct RecorderOptions {
     int flushIntervalMs = 200;  // the writer commits at least this often
     int keyframeIntervalMs = 10000;
     qint64 maxFileBytes = 0; // 0 = unlimited; beyond it the oldest machine data of this file is deleted
-    bool raw = false;        // record.raw: raw frames (recordRaw); off by default
+    // Retention while the run lasts (record.max_total_mb / max_age_days): every retentionIntervalMs of
+    // recording time the writer applies applyRetention() to retentionDir, keeping this run's file, so a long
+    // run cannot fill the disk with the folder's older runs. Empty dir = only at start (the caller's job).
+    QString retentionDir;
+    qint64 maxTotalBytes = 0;
+    double maxAgeDays = 0;
+    int retentionIntervalMs = 60000;
+    bool raw = false; // record.raw: raw frames (recordRaw); off by default
     QString siteName;
     double originLat = 0, originLon = 0, originAlt = 0; // the site frame, for replay's map
     std::function<qint64()> clock;                      // ms since the epoch; default: the wall clock
@@ -106,12 +113,14 @@ public:
         quint64 dropped = 0; // refused: queue full
         quint64 written = 0; // committed
         quint64 commits = 0;
-        quint64 stateBytes = 0;   // encoded machine-state bytes
+        quint64 stateBytes = 0;   // machine-state chunk bytes as stored (compressed)
         quint64 messages = 0;     // inbound messages (and raw frames) committed
         quint64 messageBytes = 0; // their encoded chunk bytes
         quint64 writerCpuNs = 0;  // CPU time of the writer thread
     };
     Stats stats() const;
+    // The older recordings the run's retention deleted so far (file names).
+    QStringList deletedByRetention() const;
 
 private:
     struct Item;
@@ -142,7 +151,8 @@ private:
     std::unique_ptr<Tap> m_tap;
     std::atomic<quint64> m_messages{0};
     std::atomic<quint64> m_messageBytes{0};
-    quint64 m_droppedReported = 0; // GUI thread: drops already told to the operator
+    QStringList m_retentionDeleted; // m_mutex
+    quint64 m_droppedReported = 0;  // GUI thread: drops already told to the operator
     // GUI thread: the watched pass-count layer, the revision and grid last recorded.
     const PassCountLayer* m_passLayer = nullptr;
     quint64 m_passRevision = 0;
@@ -157,6 +167,9 @@ private:
 // deleted.
 QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxAgeDays,
                            const QString& keep = {});
+// The limit of one run's file: record.max_file_mb when set, else the folder's record.max_total_mb (a run
+// alone never outgrows the folder's budget); 0 = none. In bytes.
+qint64 effectiveMaxFileBytes(double maxFileMb, double maxTotalMb);
 // ocu-YYYYMMDD-HHMMSS-<pid>.sqlite in dir.
 QString newRecordingPath(const QString& dir);
 

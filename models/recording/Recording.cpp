@@ -129,6 +129,7 @@ std::unique_ptr<Recording> Recording::open(const QString& path, QString* error) 
                             .arg(path)
                             .arg(v));
     }
+    r->m_zlibStates = r->meta(QStringLiteral("states_codec")) == QLatin1String("zlib");
     r->m_startMs = r->meta(QStringLiteral("start_ms")).toLongLong();
     // The end as committed: the newest row of any table (end_ms is updated with every commit too).
     qint64 end = r->meta(QStringLiteral("end_ms")).toLongLong();
@@ -171,7 +172,7 @@ Recording::StateMap Recording::statesAtIdx(qint64 t) const {
         kf.bind(1, t);
         if (kf.next()) {
             afterChunk = kf.i64(0);
-            decodeChunk(kf.blob(1), kf.i64(2), states, kMinT, std::numeric_limits<qint64>::max());
+            decodeChunk(stateBlob(kf.blob(1)), kf.i64(2), states, kMinT, std::numeric_limits<qint64>::max());
         }
     }
     // Chunks are in time order: walk them by id from the keyframe's and stop at the first one after t (a
@@ -179,7 +180,7 @@ Recording::StateMap Recording::statesAtIdx(qint64 t) const {
     Query q(m_db, "SELECT t0, data FROM states WHERE id > ? ORDER BY id");
     q.bind(1, afterChunk);
     while (q.next() && q.i64(0) <= t)
-        decodeChunk(q.blob(1), q.i64(0), states, kMinT, t);
+        decodeChunk(stateBlob(q.blob(1)), q.i64(0), states, kMinT, t);
     return states;
 }
 
@@ -214,22 +215,23 @@ void Recording::walk(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
     q.bind(1, first);
     bool go = true;
     while (go && q.next() && q.i64(0) <= toInclusive) {
-        decodeChunk(q.blob(1), q.i64(0), states, fromExclusive, toInclusive, [&](const DecodedRecord& r) {
-            if (!go || !fn)
-                return;
-            StateChange c;
-            c.t = r.tMs;
-            if (r.type == RecordType::Removed) {
-                c.removed = true;
-                c.state.id = idOf(r.idx);
-            } else {
-                auto it = states.constFind(r.idx);
-                if (it == states.cend())
-                    return;
-                c.state = *it;
-            }
-            go = fn(c);
-        });
+        decodeChunk(stateBlob(q.blob(1)), q.i64(0), states, fromExclusive, toInclusive,
+                    [&](const DecodedRecord& r) {
+                        if (!go || !fn)
+                            return;
+                        StateChange c;
+                        c.t = r.tMs;
+                        if (r.type == RecordType::Removed) {
+                            c.removed = true;
+                            c.state.id = idOf(r.idx);
+                        } else {
+                            auto it = states.constFind(r.idx);
+                            if (it == states.cend())
+                                return;
+                            c.state = *it;
+                        }
+                        go = fn(c);
+                    });
     }
 }
 
@@ -548,7 +550,9 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
         Query q(dst, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
         for (const auto& [k, v] : {std::pair{QStringLiteral("start_ms"), QString::number(from)},
                                    std::pair{QStringLiteral("end_ms"), QString::number(to)},
-                                   std::pair{QStringLiteral("slice_of"), QFileInfo(m_path).fileName()}}) {
+                                   std::pair{QStringLiteral("slice_of"), QFileInfo(m_path).fileName()},
+                                   std::pair{QStringLiteral("schema"), QString::number(kSchemaVersion)},
+                                   std::pair{QStringLiteral("states_codec"), QStringLiteral("zlib")}}) {
             q.bind(1, k).bind(2, v);
             ok = ok && q.run();
         }
@@ -562,7 +566,7 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
     for (auto it = last.cbegin(); it != last.cend(); ++it)
         appendFull(kf, it.key(), 0, *it);
     Query insKf(dst, "INSERT OR REPLACE INTO keyframes(t, chunk, n, data) VALUES(?,?,?,?)");
-    insKf.bind(1, from).bind(2, 0).bind(3, last.size()).bind(4, kf);
+    insKf.bind(1, from).bind(2, 0).bind(3, last.size()).bind(4, qCompress(kf, 1));
     ok = ok && insKf.run();
     Query insState(dst, "INSERT INTO states(t0, t1, n, data) VALUES(?,?,?,?)");
     QByteArray chunk;
@@ -573,7 +577,7 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
     auto flushChunk = [&] {
         if (chunk.isEmpty())
             return;
-        insState.bind(1, t0).bind(2, t1).bind(3, n).bind(4, chunk);
+        insState.bind(1, t0).bind(2, t1).bind(3, n).bind(4, qCompress(chunk, 1));
         ok = ok && insState.run();
         chunkId = sqlite3_last_insert_rowid(dst);
         chunk.clear();
@@ -582,7 +586,7 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
             QByteArray k;
             for (auto it = last.cbegin(); it != last.cend(); ++it)
                 appendFull(k, it.key(), 0, *it);
-            insKf.bind(1, t1).bind(2, chunkId).bind(3, last.size()).bind(4, k);
+            insKf.bind(1, t1).bind(2, chunkId).bind(3, last.size()).bind(4, qCompress(k, 1));
             ok = ok && insKf.run();
             lastKeyframe = t1;
         }
@@ -601,7 +605,10 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
             last.remove(idx);
         } else if (auto p = last.find(idx);
                    p != last.end() && sameStatus(*p, c.state) && positionEncodable(c.state)) {
-            appendPosition(chunk, idx, dt, c.t, c.state);
+            if (positionEncodable(*p))
+                appendDelta(chunk, idx, dt, c.t, *p, c.state);
+            else
+                appendPosition(chunk, idx, dt, c.t, c.state);
             applyPosition(*p, c.state, c.t);
         } else {
             appendFull(chunk, idx, dt, c.state);

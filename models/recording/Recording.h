@@ -125,9 +125,14 @@ private:
     // Decodes the chunks after `fromExclusive` up to `toInclusive` onto `states`.
     void walk(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
               const std::function<bool(const StateChange&)>& fn) const;
+    // A states/keyframes blob as the codec reads it (schema 3: qCompress'ed).
+    QByteArray stateBlob(const QByteArray& stored) const {
+        return m_zlibStates ? qUncompress(stored) : stored;
+    }
     sqlite3* m_db = nullptr;
     QString m_path;
     qint64 m_startMs = 0, m_endMs = 0;
+    bool m_zlibStates = false;
     mutable QHash<std::uint32_t, QString> m_ids;
 };
 

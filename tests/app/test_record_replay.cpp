@@ -18,6 +18,9 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -328,6 +331,160 @@ private slots:
         sqlite3_finalize(st);
         sqlite3_close(db);
         QCOMPARE(verdict, QByteArray("ok"));
+    }
+
+    // Issue 16 §2/§3 on the real binary: `ocu --replay FILE --at T --screenshot out.png` (the window with its
+    // REPLAY banner at the size asked for), `ocu --replay FILE --headless` (the JSON lines of the run, ending
+    // on the recorded end) and the exports (JSON lines, CSV per machine, a slice that replays).
+    void replayAndExportFromTheCommandLine() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString file = dir.filePath(QStringLiteral("cli.sqlite"));
+        const qint64 t0 = 1'700'000'000'000;
+        {
+            // 20 s of two machines at 10 Hz, an alarm at +5 s.
+            qint64 clock = t0;
+            Recorder rec;
+            RecorderOptions o;
+            o.path = file;
+            o.clock = [&clock] { return clock; };
+            QVERIFY(rec.start(o).isEmpty());
+            for (int step = 0; step <= 200; ++step) {
+                clock = t0 + step * 100;
+                for (int k = 0; k < 2; ++k) {
+                    MachineState m;
+                    m.id = QStringLiteral("jaus:%1").arg(100 + k);
+                    m.protocol = Protocol::Jaus;
+                    m.name = QStringLiteral("UGV-%1").arg(100 + k);
+                    m.link = LinkState::Up;
+                    m.hasPosition = true;
+                    m.e = step * 0.5 + k * 10;
+                    m.n = k * 5.0;
+                    m.lastDataMs = clock;
+                    rec.recordStates({m});
+                }
+                if (step == 50) {
+                    FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::ControlLost,
+                                              QStringLiteral("jaus:100"), QStringLiteral("control lost"));
+                    ev.timeMs = clock;
+                    rec.recordEvent(ev);
+                }
+            }
+            rec.stop();
+        }
+        auto run = [&](const QStringList& args, QByteArray* out = nullptr) {
+            QProcess p;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+            env.remove(QStringLiteral("DISPLAY"));
+            env.insert(QStringLiteral("OCU_RECORD_DIR"), dir.filePath(QStringLiteral("rec")));
+            p.setProcessEnvironment(env);
+            p.setProcessChannelMode(QProcess::SeparateChannels);
+            p.start(QStringLiteral(OCU_BINARY), args);
+            if (!p.waitForFinished(120000)) {
+                p.kill();
+                p.waitForFinished();
+                return -1;
+            }
+            if (out)
+                *out = p.readAllStandardOutput();
+            const QByteArray err = p.readAllStandardError();
+            if (p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0)
+                qWarning("ocu %s: %s", qPrintable(args.join(QLatin1Char(' '))), err.constData());
+            return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+        };
+
+        // The window at +10 s, 1366x768: the purple REPLAY banner across the top.
+        const QString png = dir.filePath(QStringLiteral("replay.png"));
+        QCOMPARE(run({QStringLiteral("--replay"), file, QStringLiteral("--at"), QStringLiteral("10"),
+                      QStringLiteral("--screenshot"), png, QStringLiteral("--size"),
+                      QStringLiteral("1366x768"), QStringLiteral("--settle"), QStringLiteral("1")}),
+                 0);
+        QImage img(png);
+        QVERIFY(!img.isNull());
+        QCOMPARE(img.size(), QSize(1366, 768));
+        int purple = 0;
+        for (int y = 0; y < 120; ++y)
+            for (int x = 0; x < img.width(); x += 4)
+                if (img.pixelColor(x, y) == QColor(0x7b, 0x1f, 0xa2))
+                    ++purple;
+        QVERIFY2(purple > 200, qPrintable(QStringLiteral("%1 banner pixels").arg(purple)));
+        // A time that is no time is refused.
+        QVERIFY(run({QStringLiteral("--replay"), file, QStringLiteral("--at"), QStringLiteral("soon"),
+                     QStringLiteral("--headless")}) != 0);
+
+        // Headless: machine lines for both machines, the alarm, replay stamps in time order up to the end;
+        // the last machine line of jaus:100 is its last recorded position.
+        QByteArray out;
+        QCOMPARE(run({QStringLiteral("--replay"), file, QStringLiteral("--headless")}, &out), 0);
+        QSet<QString> ids;
+        qint64 lastStamp = 0;
+        int stamps = 0, alarms = 0;
+        double lastE = -1;
+        for (const QByteArray& line : out.split('\n')) {
+            if (line.isEmpty())
+                continue;
+            QJsonParseError pe;
+            const QJsonObject o = QJsonDocument::fromJson(line, &pe).object();
+            QVERIFY2(pe.error == QJsonParseError::NoError, line.constData());
+            const QString type = o.value(QStringLiteral("type")).toString();
+            if (type == QLatin1String("replay")) {
+                const qint64 t =
+                    QDateTime::fromString(o.value(QStringLiteral("time")).toString(), Qt::ISODateWithMs)
+                        .toMSecsSinceEpoch();
+                QVERIFY(t >= lastStamp);
+                lastStamp = t;
+                ++stamps;
+            } else if (type == QLatin1String("machine")) {
+                ids.insert(o.value(QStringLiteral("id")).toString());
+                if (o.value(QStringLiteral("id")).toString() == QLatin1String("jaus:100"))
+                    lastE = o.value(QStringLiteral("e")).toDouble();
+            } else if (type == QLatin1String("event") &&
+                       o.value(QStringLiteral("text")).toString().contains(QLatin1String("control lost"))) {
+                ++alarms;
+            }
+        }
+        QCOMPARE(ids, (QSet<QString>{QStringLiteral("jaus:100"), QStringLiteral("jaus:101")}));
+        QCOMPARE(alarms, 1);
+        QVERIFY(stamps >= 100); // 20 s in steps of 100 ms
+        QCOMPARE(lastStamp, t0 + 20'000);
+        QCOMPARE(lastE, 100.0);
+
+        // Exports of +5 s .. +15 s.
+        const QString jsonl = dir.filePath(QStringLiteral("w.jsonl")),
+                      csv = dir.filePath(QStringLiteral("w.csv")),
+                      slice = dir.filePath(QStringLiteral("slice.sqlite"));
+        QCOMPARE(run({QStringLiteral("--replay"), file, QStringLiteral("--export-jsonl"), jsonl,
+                      QStringLiteral("--export-csv"), csv, QStringLiteral("--export-slice"), slice,
+                      QStringLiteral("--from"), QStringLiteral("5"), QStringLiteral("--to"),
+                      QStringLiteral("15")}),
+                 0);
+        QFile j(jsonl), c(csv);
+        QVERIFY(j.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
+        int machineLines = 0, eventLines = 0;
+        for (const QByteArray& line : j.readAll().split('\n')) {
+            const QJsonObject o = QJsonDocument::fromJson(line).object();
+            const qint64 t = qint64(o.value(QStringLiteral("t")).toDouble());
+            if (o.isEmpty())
+                continue;
+            QVERIFY2(t >= t0 + 5000 && t <= t0 + 15'000, line.constData());
+            machineLines += o.value(QStringLiteral("type")).toString() == QLatin1String("machine");
+            eventLines += o.value(QStringLiteral("type")).toString() == QLatin1String("event");
+        }
+        QVERIFY2(machineLines >= 190 && machineLines <= 204, qPrintable(QString::number(machineLines)));
+        QCOMPARE(eventLines, 1);
+        const QList<QByteArray> rows = c.readAll().trimmed().split('\n');
+        QVERIFY(rows.first().startsWith("time,t_ms,id,name,protocol,e,n"));
+        int rows100 = 0;
+        for (const QByteArray& row : rows.mid(1))
+            rows100 += row.split(',').value(2) == "jaus:100";
+        QVERIFY2(rows100 >= 95 && rows100 <= 102, qPrintable(QString::number(rows100)));
+        auto part = Recording::open(slice);
+        QVERIFY(part);
+        QCOMPARE(part->startMs(), t0 + 5000);
+        QCOMPARE(part->statesAt(t0 + 12'000).value(QStringLiteral("jaus:100")).e, 60.0);
+        // A slice is never written over.
+        QVERIFY(run({QStringLiteral("--replay"), file, QStringLiteral("--export-slice"), slice}) != 0);
     }
 };
 

@@ -206,6 +206,40 @@ private slots:
         QTRY_VERIFY(c.position() > rec->startMs());
         QTest::keyClick(&window, Qt::Key_Space);
         QVERIFY(!c.playing());
+
+        // The timeline's buttons: step forward / back (1 s, pausing), the speed box from 0.1x to 16x, play
+        // backwards, play / pause.
+        c.seek(m_t0 + 30'000);
+        QTest::mouseClick(timeline->stepForwardButton(), Qt::LeftButton);
+        QCOMPARE(c.position(), m_t0 + 31'000);
+        QCOMPARE(fleet.machine(QStringLiteral("jaus:100"))->e, 155.0);
+        QTest::mouseClick(timeline->stepBackButton(), Qt::LeftButton);
+        QTest::mouseClick(timeline->stepBackButton(), Qt::LeftButton);
+        QCOMPARE(c.position(), m_t0 + 29'000);
+        QCOMPARE(fleet.machine(QStringLiteral("jaus:100"))->e, 145.0);
+        QComboBox* speed = timeline->speedBox();
+        QCOMPARE(speed->count(), 8);
+        QCOMPARE(speed->itemData(0).toDouble(), 0.1);
+        QCOMPARE(speed->itemData(speed->count() - 1).toDouble(), 16.0);
+        speed->activated(0);
+        QCOMPARE(c.speed(), 0.1);
+        speed->activated(speed->count() - 1);
+        QCOMPARE(c.speed(), 16.0);
+        QTest::mouseClick(timeline->reverseButton(), Qt::LeftButton);
+        QVERIFY(c.reverse());
+        QTest::mouseClick(timeline->playButton(), Qt::LeftButton);
+        QVERIFY(c.playing());
+        QTRY_VERIFY(c.position() < m_t0 + 29'000); // backwards, at 16x
+        QTest::mouseClick(timeline->playButton(), Qt::LeftButton);
+        QVERIFY(!c.playing());
+        const qint64 back = c.position();
+        QCOMPARE(timeline->position(), back);
+        QTest::mouseClick(timeline->reverseButton(), Qt::LeftButton);
+        QVERIFY(!c.reverse());
+        QTest::mouseClick(timeline->playButton(), Qt::LeftButton);
+        QTRY_VERIFY(c.position() > back); // forwards again
+        QTest::mouseClick(timeline->playButton(), Qt::LeftButton);
+        QVERIFY(!c.playing());
     }
 };
 

@@ -2,10 +2,12 @@
 // (keyframe seek and forward play agree, both directions), alarms and acknowledgements as of the replay time,
 // the bounded queue drops and counts instead of growing, exports (JSON lines, CSV, slice), hostile blobs.
 #include "models/AlarmModel.h"
+#include "models/CommandGate.h"
 #include "models/FleetBridge.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/recording/RecordCodec.h"
+#include "models/recording/RecordSchema.h"
 #include "models/recording/Recorder.h"
 #include "models/recording/Recording.h"
 #include "models/recording/ReplayController.h"
@@ -16,6 +18,8 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <sqlite3.h>
 
 #include <cmath>
 
@@ -515,6 +519,55 @@ private slots:
         QVERIFY(!decodeMessageChunk(huge, 0, 0, 10000, [](const RecordedMessage&) { return true; }));
     }
 
+    // attach(): what the console's models and its gate see is what the file holds - machine states and
+    // removals, events, acknowledgements (the shared key, who), and every gate command with its result and
+    // per-target outcome (the audit line).
+    void attachRecordsTheModelsAndTheGate() {
+        FleetContext ctx;
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_dir.filePath(QStringLiteral("attached.sqlite"));
+        QVERIFY(rec.start(o).isEmpty());
+        rec.attach(&ctx);
+        MachineState m = machine(QStringLiteral("iso23725:t1"), 12, 34);
+        m.lastDataMs = QDateTime::currentMSecsSinceEpoch();
+        ctx.fleet()->upsert({m});
+        ctx.fleet()->upsert({machine(QStringLiteral("iso23725:t2"), 1, 2)});
+        ctx.fleet()->remove({QStringLiteral("iso23725:t2")});
+        FleetEvent alarm =
+            makeEvent(EventSeverity::Alarm, EventKind::HealthFault, m.id, QStringLiteral("fault"));
+        ctx.alarms()->add(alarm);
+        ctx.alarms()->acknowledge(0);
+        const QString key = ctx.alarms()->keyAt(0);
+        ctx.gate()->stopMachine(QStringLiteral("no-such-machine"), QStringLiteral("test"));
+        QTRY_VERIFY_WITH_TIMEOUT(rec.stats().queued >= 6, 10000);
+        rec.flush();
+        rec.stop();
+
+        auto r = Recording::open(o.path);
+        QVERIFY(r);
+        const auto end = r->statesAt(r->endMs());
+        QCOMPARE(end.size(), 1);
+        QCOMPARE(end.value(m.id).e, 12.0);
+        QCOMPARE(end.value(m.id).name, m.name);
+        bool sawFault = false;
+        for (const RecordedEvent& e : r->events(r->startMs() - 1, r->endMs()))
+            sawFault |= e.event.text == QLatin1String("fault") && e.key == key && e.event.requiresAck;
+        QVERIFY(sawFault);
+        const auto acks = r->acks(r->startMs() - 1, r->endMs());
+        QCOMPARE(acks.size(), 1);
+        QCOMPARE(acks.first().key, key);
+        QVERIFY(!acks.first().by.isEmpty());
+        const auto cmds = r->commands(r->startMs() - 1, r->endMs());
+        QCOMPARE(cmds.size(), 1);
+        QCOMPARE(cmds.first().origin, QStringLiteral("test"));
+        QCOMPARE(cmds.first().target, QStringLiteral("no-such-machine"));
+        QVERIFY(!cmds.first().ok);
+        const QJsonObject audit = QJsonDocument::fromJson(cmds.first().audit.toUtf8()).object();
+        QCOMPARE(audit.value(QStringLiteral("target")).toString(), QStringLiteral("no-such-machine"));
+        QVERIFY(audit.contains(QStringLiteral("targets")));
+    }
+
     // The writer behind: dropped records reach the operator as a warning with the count.
     void dropsAreReportedToTheOperator() {
         FleetContext ctx;
@@ -567,6 +620,46 @@ private slots:
                                         std::numeric_limits<qint64>::max());
             QVERIFY(cut == 0 || !ok || s.size() <= 1);
         }
+        // Delta records (schema 3): exact against applyPosition, every cut ends cleanly.
+        {
+            const MachineState base = machine(QStringLiteral("jaus:1"), 1, 2);
+            MachineState next = machine(QStringLiteral("jaus:1"), 3.2346, -4.5);
+            next.lat += 1.234567e-6;
+            next.headingDeg = 271.3;
+            next.speed = 0.5;
+            next.lastDataMs = 1003;
+            next.lastMessageMs = 990;
+            QByteArray delta;
+            appendFull(delta, 1, 0, base);
+            appendDelta(delta, 1, 5, 1005, base, next);
+            MachineState want = base;
+            applyPosition(want, next, 1005);
+            QHash<std::uint32_t, MachineState> s;
+            QVERIFY(decodeChunk(delta, 1000, s, std::numeric_limits<qint64>::min(),
+                                std::numeric_limits<qint64>::max()));
+            const MachineState& got = s[1];
+            QCOMPARE(got.e, want.e);
+            QCOMPARE(got.n, want.n);
+            QCOMPARE(got.u, want.u);
+            QCOMPARE(got.lat, next.lat);
+            QCOMPARE(got.lon, next.lon);
+            QCOMPARE(got.headingDeg, want.headingDeg);
+            QCOMPARE(got.speed, want.speed);
+            QCOMPARE(got.lastDataMs, qint64(1003));
+            QCOMPARE(got.lastMessageMs, qint64(990));
+            QCOMPARE(got.e, 3.235); // mm
+            for (int cut = 0; cut < delta.size(); ++cut) {
+                QHash<std::uint32_t, MachineState> c;
+                const bool ok = decodeChunk(delta.left(cut), 1000, c, std::numeric_limits<qint64>::min(),
+                                            std::numeric_limits<qint64>::max());
+                QVERIFY(cut == 0 || !ok || c.size() <= 1);
+            }
+            QByteArray junk = delta.left(int(delta.size()) - 20);
+            junk.append(QByteArray(12, '\xff')); // a varint longer than 10 bytes
+            QHash<std::uint32_t, MachineState> c;
+            QVERIFY(!decodeChunk(junk, 1000, c, std::numeric_limits<qint64>::min(),
+                                 std::numeric_limits<qint64>::max()));
+        }
         QByteArray bad = good;
         bad[0] = char(99); // unknown record type
         QHash<std::uint32_t, MachineState> s;
@@ -579,6 +672,41 @@ private slots:
         huge.append(QByteArray("\xff\xff\xff\x7f", 4)); // a string "2 GB long"
         QVERIFY(
             !decodeChunk(huge, 0, s, std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()));
+    }
+
+    // A file of an earlier build (schema 2: plain state chunks of Full and Position records) still reads.
+    void readsSchemaTwoFiles() {
+        const QString path = m_dir.filePath(QStringLiteral("schema2.sqlite"));
+        sqlite3* db = nullptr;
+        QCOMPARE(sqlite3_open(path.toUtf8().constData(), &db), SQLITE_OK);
+        QCOMPARE(sqlite3_exec(db, kSchemaSql, nullptr, nullptr, nullptr), SQLITE_OK);
+        QByteArray chunk;
+        MachineState a = machine(QStringLiteral("jaus:1"), 10, 20);
+        a.lastDataMs = 1'000'000;
+        appendFull(chunk, 1, 0, a);
+        MachineState b = machine(QStringLiteral("jaus:1"), 11.5, 21.25);
+        b.lastDataMs = 1'000'100;
+        appendPosition(chunk, 1, 100, 1'000'100, b);
+        sqlite3_stmt* st = nullptr;
+        QCOMPARE(sqlite3_prepare_v2(db, "INSERT INTO states(t0, t1, n, data) VALUES(1000000, 1000100, 2, ?)",
+                                    -1, &st, nullptr),
+                 SQLITE_OK);
+        sqlite3_bind_blob(st, 1, chunk.constData(), int(chunk.size()), SQLITE_TRANSIENT);
+        QCOMPARE(sqlite3_step(st), SQLITE_DONE);
+        sqlite3_finalize(st);
+        QCOMPARE(sqlite3_exec(
+                     db,
+                     "INSERT INTO meta VALUES('schema','2'); INSERT INTO meta VALUES('start_ms','1000000');"
+                     "INSERT INTO meta VALUES('end_ms','1000100'); INSERT INTO machines VALUES(1,'jaus:1');",
+                     nullptr, nullptr, nullptr),
+                 SQLITE_OK);
+        sqlite3_close(db);
+        QString err;
+        auto r = Recording::open(path, &err);
+        QVERIFY2(r, qPrintable(err));
+        QCOMPARE(r->statesAt(1'000'050).value(QStringLiteral("jaus:1")).e, 10.0);
+        QCOMPARE(r->statesAt(1'000'100).value(QStringLiteral("jaus:1")).e, 11.5);
+        QCOMPARE(r->statesAt(1'000'100).value(QStringLiteral("jaus:1")).lat, b.lat);
     }
 
     void parsesReplayTimes() {
@@ -610,6 +738,84 @@ private slots:
         QCOMPARE(gone, (QStringList{QStringLiteral("ocu-a.sqlite"), QStringLiteral("ocu-b.sqlite")}));
         QVERIFY(QFile::exists(d.filePath(QStringLiteral("ocu-c.sqlite"))));
         QVERIFY(QFile::exists(d.filePath(QStringLiteral("other.sqlite"))));
+    }
+
+    // The default retention keeps a long run from filling the disk: the run's own file stays within its limit
+    // (its oldest machine data go, the picture from then on and the events stay), and the folder's older runs
+    // give way while it records. Fake clock: 20 minutes of 40 machines at 10 Hz.
+    void longRunStaysWithinItsLimits() {
+        QTemporaryDir d;
+        QVERIFY(d.isValid());
+        QCOMPARE(effectiveMaxFileBytes(0, 2048), qint64(2048) * 1024 * 1024); // unset: the folder's budget
+        QCOMPARE(effectiveMaxFileBytes(100, 2048), qint64(100) * 1024 * 1024);
+        QCOMPARE(effectiveMaxFileBytes(0, 0), qint64(0));
+        {
+            QFile old(d.filePath(QStringLiteral("ocu-20260101-000000-1.sqlite"))); // an older run, 600 KB
+            QVERIFY(old.open(QIODevice::WriteOnly));
+            old.write(QByteArray(600 * 1024, 'r'));
+            old.flush();
+            old.setFileTime(QDateTime::currentDateTimeUtc().addDays(-1), QFileDevice::FileModificationTime);
+        }
+        const qint64 limit = 1024 * 1024;
+        const QString file = d.filePath(QStringLiteral("ocu-20260102-000000-2.sqlite"));
+        const qint64 t0 = 1'700'000'000'000;
+        qint64 clock = t0;
+        Recorder rec;
+        RecorderOptions o;
+        o.path = file;
+        o.clock = [&clock] { return clock; };
+        o.maxFileBytes = effectiveMaxFileBytes(0, 1.0);
+        o.retentionDir = d.path();
+        o.maxTotalBytes = limit;
+        o.maxAgeDays = 30;
+        QVERIFY(rec.start(o).isEmpty());
+        const int machines = 40, seconds = 1200;
+        qint64 biggest = 0;
+        QHash<QString, MachineState> last;
+        for (qint64 ms = 0; ms <= seconds * 1000; ms += 100) {
+            clock = t0 + ms;
+            QVector<MachineState> batch;
+            for (int i = 0; i < machines; ++i) {
+                const double a = double(ms) / 1000.0 * 0.05 + i;
+                MachineState m =
+                    machine(QStringLiteral("iso23725:t%1").arg(i), 500 * std::cos(a) + i, 500 * std::sin(a));
+                m.headingDeg = std::fmod(a * 57.3, 360);
+                m.lastDataMs = clock;
+                batch.push_back(m);
+                last.insert(m.id, m);
+            }
+            rec.recordStates(batch);
+            if (ms % 60000 == 0)
+                rec.recordEvent(makeEvent(EventSeverity::Warning, EventKind::Diagnostic, {},
+                                          QStringLiteral("minute %1").arg(ms / 60000)));
+            if (ms % 200 == 0)
+                rec.flush();
+            if (ms % 10000 == 0)
+                biggest = std::max(biggest, QFileInfo(file).size());
+        }
+        rec.stop();
+        const quint64 written = rec.stats().stateBytes;
+        QVERIFY2(written > quint64(3 * limit), qPrintable(QString::number(written))); // it had to trim
+        QVERIFY2(biggest <= limit + limit / 2,
+                 qPrintable(QStringLiteral("file reached %1 bytes").arg(biggest)));
+        QVERIFY(QFileInfo(file).size() <= limit + limit / 2);
+        QCOMPARE(rec.deletedByRetention(), QStringList{QStringLiteral("ocu-20260101-000000-1.sqlite")});
+        QVERIFY(!QFile::exists(d.filePath(QStringLiteral("ocu-20260101-000000-1.sqlite"))));
+
+        auto r = Recording::open(file);
+        QVERIFY(r);
+        const qint64 trimmed = r->meta(QStringLiteral("trimmed_before_ms")).toLongLong();
+        QVERIFY(trimmed > t0 && trimmed < t0 + seconds * 1000);
+        // The end is complete and exact (mm), the picture from the trim on too, and every event stayed.
+        const auto end = r->statesAt(r->endMs());
+        QCOMPARE(end.size(), machines);
+        for (const MachineState& m : last) {
+            QVERIFY(end.contains(m.id));
+            QVERIFY(std::abs(end[m.id].e - m.e) < 0.001 && std::abs(end[m.id].n - m.n) < 0.001);
+            QCOMPARE(end[m.id].lat, m.lat);
+        }
+        QCOMPARE(r->statesAt(trimmed + 1).size(), machines);
+        QCOMPARE(r->events(r->startMs() - 1, r->endMs()).size(), seconds / 60 + 1);
     }
 };
 
