@@ -294,6 +294,7 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     p.setRenderHint(QPainter::Antialiasing, true);
     if ((m_layers & LayerTrails) && !trailsInBase)
         drawTrails(p, world);
+    m_reservedLabels.clear();
     for (SiteMapOverlay* o : std::as_const(m_overlays))
         o->paintOverlay(p, *this);
     m_edges.clear();
