@@ -19,6 +19,7 @@
 #include <QScrollBar>
 #include <QStandardPaths>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QTranslator>
 #include <QtTest>
 
@@ -111,6 +112,9 @@ private slots:
         auto site = loadSite({});
         QVERIFY(site.ok());
         SiteConfig cfg = std::move(site.value());
+        QTemporaryDir recordings; // the run's recording goes here, not into the home directory
+        QVERIFY(recordings.isValid());
+        cfg.record.dir = recordings.path().toStdString();
         SiteRuntime runtime(cfg);
         QVERIFY(runtime.start().isEmpty());
         MainWindow window;
