@@ -61,8 +61,10 @@ public:
     // First start (no saved layout): maximized, or the screen's available size where maximizing is not
     // possible (offscreen).
     void showFirstStart();
-    // Raises the panel and puts the keyboard focus on its first control (Ctrl+1 … Ctrl+7).
+    // Raises the panel and puts the keyboard focus on its first control (Ctrl+1 … Ctrl+8).
     void focusPanel(Panel panel);
+    // Help › Keyboard shortcuts: every Ctrl+N go-to-panel action of the window, modules' ones included.
+    QString keyboardHelpText() const;
 
 signals:
     void stopAllRequested();

@@ -1294,6 +1294,42 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         </translation>
     </message>
     <message>
+        <source>F12 or Ctrl+Shift+Space: STOP ALL</source>
+        <translation>F12 oder Strg+Umschalt+Leertaste: ALLE STOPPEN</translation>
+    </message>
+    <message>
+        <source>Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop</source>
+        <translation>Fernsteuerung: W/A/S/D oder Pfeiltasten bei gehaltener Totmanntaste; Leertaste oder Esc: Not-Halt</translation>
+    </message>
+    <message>
+        <source>Dispatch: F6 next truck needing work, Alt+T task, Alt+D destination, Alt+M pick on map, Ctrl+Enter assign, Alt+R reset</source>
+        <translation>Disposition: F6 nächster Lkw ohne Auftrag, Alt+T Aufgabe, Alt+D Ziel, Alt+M auf der Karte wählen, Strg+Eingabe zuweisen, Alt+R zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Site map: arrows pan, +/- or wheel zoom (about the cursor), F follow the selected machine, Home whole site, Shift+Home the fleet, S the selection, A the area under the cursor, C centre; double-click selects; click an edge arrow to go to machines outside the view</source>
+        <translation>Lageplan: Pfeiltasten verschieben, +/- oder Mausrad zoomen (um den Mauszeiger), F folgt der ausgewählten Maschine, Pos1 ganzes Gelände, Umschalt+Pos1 die Flotte, S die Auswahl, A die Fläche unter dem Mauszeiger, C zentrieren; Doppelklick wählt aus; ein Randpfeil führt zu Maschinen außerhalb der Ansicht</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+N: night palette</source>
+        <translation>Strg+Umschalt+N: Nachtpalette</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+P: save a screenshot</source>
+        <translation>Strg+Umschalt+P: Bildschirmfoto speichern</translation>
+    </message>
+    <message>
+        <source>Go to a panel (raises it and puts the keyboard focus in it):</source>
+        <translation>Zu einem Feld (holt es nach vorn und setzt den Tastaturfokus hinein):</translation>
+    </message>
+    <message>
+        <source>Tab / Shift+Tab: next / previous control in a panel; arrows move in lists and tables; Space or Enter presses the focused button</source>
+        <translation>Tab / Umschalt+Tab: nächstes / vorheriges Bedienelement eines Felds; Pfeiltasten bewegen in Listen und Tabellen; Leertaste oder Eingabe drückt die fokussierte Schaltfläche</translation>
+    </message>
+    <message>
+        <source>See docs/keyboard.md for the full list.</source>
+        <translation>Die vollständige Liste steht in docs/keyboard.md.</translation>
+    </message>
+    <message>
         <source>&amp;Go to panel</source>
         <translation>&amp;Gehe zu Feld</translation>
     </message>

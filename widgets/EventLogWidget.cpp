@@ -16,6 +16,7 @@
 #include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QScrollBar>
 #include <QSplitter>
 #include <QTableView>
@@ -54,38 +55,53 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
         tr("Shelve the selected alarms: hidden and not annunciated until the time runs out"));
     m_showShelved->setToolTip(tr("Show shelved alarms too"));
     m_rateLabel->setToolTip(tr("New alarms in the last 10 minutes (EEMUA 191: more than 10 is a flood)"));
-    auto* bar2 = new QHBoxLayout;
-    bar2->addWidget(m_showShelved);
-    bar2->addWidget(m_shelveFor);
-    bar2->addWidget(m_shelve);
-    bar2->addWidget(m_unshelve);
-    bar2->addWidget(m_export); // on the first row it was cut off in an 800-px dock (1366 x 768)
-    bar2->addStretch(1);
+    auto* shelfRow = new QHBoxLayout;
+    shelfRow->addWidget(m_showShelved);
+    shelfRow->addWidget(m_shelveFor);
+    shelfRow->addWidget(m_shelve);
+    shelfRow->addWidget(m_unshelve);
+    shelfRow->addWidget(m_export); // on the first row it was cut off in an 800-px dock (1366 x 768)
+    shelfRow->addStretch(1);
     // The open-alarm count sits with the rate: on the first row it was cut off at 1366 px (issue 19 §6).
-    bar2->addWidget(m_unackLabel);
-    bar2->addSpacing(12);
-    bar2->addWidget(m_rateLabel);
+    auto* countsRow = new QHBoxLayout;
+    countsRow->addStretch(1);
+    countsRow->addWidget(m_unackLabel);
+    countsRow->addSpacing(12);
+    countsRow->addWidget(m_rateLabel);
+    // Beside the shelving buttons where there is room, on a row of their own in a narrow dock (German texts
+    // in the 1366-px laptop's default layout); resizeEvent() switches.
+    m_bar2 = new QBoxLayout(QBoxLayout::LeftToRight);
+    m_bar2->addLayout(shelfRow, 1);
+    m_bar2->addLayout(countsRow);
     m_details->setReadOnly(true);
     m_details->setPlaceholderText(
         tr("Select an alarm to see its details: the grouped machines, who acknowledged "
            "or shelved it, and when."));
     m_details->setMaximumBlockCount(2000);
-    auto* split = new QSplitter(Qt::Vertical, this);
+    auto* split = m_split = new QSplitter(Qt::Vertical, this);
     split->addWidget(m_view);
     split->addWidget(m_details);
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 0);
     split->setCollapsible(0, false);
-    // The details pane starts small (three lines); the operator drags it taller for a long list.
+    // The details pane opens (four lines) when an alarm is selected and folds away when none is, so the table
+    // keeps the rows of a short bottom dock (1366 x 768: 3 rows were left); the operator drags it taller for
+    // a long list. The hint of what to do is the table's tooltip and the pane's placeholder.
     m_details->setMinimumHeight(m_details->fontMetrics().lineSpacing() * 2);
-    split->setSizes({400, m_details->fontMetrics().lineSpacing() * 4});
+    split->setCollapsible(1, true);
+    split->setSizes({400, 0});
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(0, 0, 0, 0);
     lay->addLayout(bar);
-    lay->addLayout(bar2);
+    lay->addLayout(m_bar2);
     lay->addWidget(split, 1);
+    // The narrow form's width (counts on their own row), so a dock narrower than the one-row form can hold
+    // it.
+    setMinimumWidth(std::max(
+        {bar->minimumSize().width(), shelfRow->minimumSize().width(), countsRow->minimumSize().width()}));
 
     m_view->setModel(m_proxy);
+    m_view->setToolTip(m_details->placeholderText());
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -173,13 +189,36 @@ void EventLogWidget::unshelveSelected() {
         m_alarms->unshelve(k);
 }
 
+bool EventLogWidget::detailsShown() const {
+    return m_split->sizes().value(1) > 0;
+}
+
+void EventLogWidget::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    int oneRow = 0; // the shelving row beside the counts
+    for (QWidget* w : std::initializer_list<QWidget*>{m_showShelved, m_shelveFor, m_shelve, m_unshelve,
+                                                      m_export, m_unackLabel, m_rateLabel})
+        oneRow += w->sizeHint().width() + 6;
+    const auto dir = width() < oneRow + 12 ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight;
+    if (m_bar2->direction() != dir)
+        m_bar2->setDirection(dir);
+}
+
 void EventLogWidget::showDetails() {
     if (!m_alarms)
         return;
     const QModelIndexList rows = m_view->selectionModel()->selectedRows(0);
+    const int total = m_split->sizes().value(0) + m_split->sizes().value(1);
     if (rows.isEmpty()) {
         m_details->clear();
+        if (detailsShown())
+            m_split->setSizes({total, 0});
         return;
+    }
+    if (!detailsShown()) {
+        const int pane = m_details->fontMetrics().lineSpacing() * 4 + 8;
+        m_split->setSizes({std::max(0, total - pane), pane});
+        m_view->scrollTo(rows.front());
     }
     const int row = m_proxy->mapToSource(rows.front()).row();
     if (row < 0 || row >= m_alarms->rowCount())

@@ -12,6 +12,8 @@ class QCheckBox;
 class QLabel;
 class QPushButton;
 class QPlainTextEdit;
+class QSplitter;
+class QBoxLayout;
 
 namespace ocu {
 
@@ -32,6 +34,8 @@ public:
     QLabel* rateLabel() const { return m_rateLabel; }
     QPushButton* shelveButton() const { return m_shelve; }
     QPlainTextEdit* detailsPane() const { return m_details; }
+    // The details pane is open while an alarm is selected (folded away otherwise, issue 19 §6).
+    bool detailsShown() const;
 
     // Shelves the alarms of the selected rows for the duration chosen in the panel (default 15 min).
     void shelveSelected();
@@ -41,6 +45,9 @@ public:
     void acknowledgeSelected();
     // Exports the rows currently shown (after filtering) as CSV.
     bool exportShown(const QString& path) const;
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     QPointer<AlarmModel> m_alarms;
@@ -59,6 +66,8 @@ private:
     QPushButton* m_unshelve;
     QLabel* m_rateLabel;
     QPlainTextEdit* m_details;
+    QSplitter* m_split = nullptr;
+    QBoxLayout* m_bar2 = nullptr; // shelving buttons beside (wide) or above (narrow) the alarm counts
     void showDetails();
     QStringList selectedKeys() const;
 };

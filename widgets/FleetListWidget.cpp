@@ -14,10 +14,13 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPainter>
+#include <QResizeEvent>
 #include <QStyledItemDelegate>
 #include <QTableView>
 #include <QToolButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace ocu {
 
@@ -104,15 +107,21 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_densityButton->setCheckable(true);
     m_densityButton->setToolTip(tr("Switch between dense rows (workstation) and large rows (field laptop)"));
 
-    auto* bar = new QHBoxLayout;
-    bar->addWidget(m_filter, 1);
-    bar->addWidget(m_protocol);
-    bar->addWidget(m_status);
-    bar->addWidget(m_densityButton);
+    // Issue 19 §6: in a narrow dock (the 1366-px laptop's default layout gives the list a quarter of the
+    // width) the filter field goes on its own row above the combos instead of forcing the dock ~480 px wide
+    // and squeezing the map and the JAUS / teleop column; resizeEvent() switches.
+    auto* combos = new QHBoxLayout;
+    combos->addWidget(m_protocol);
+    combos->addWidget(m_status);
+    combos->addWidget(m_densityButton);
+    m_filterBar = new QBoxLayout(QBoxLayout::LeftToRight);
+    m_filterBar->addWidget(m_filter, 1);
+    m_filterBar->addLayout(combos);
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(0, 0, 0, 0);
-    lay->addLayout(bar);
+    lay->addLayout(m_filterBar);
     lay->addWidget(m_view, 1);
+    setMinimumWidth(std::max(m_filter->minimumWidth(), combos->minimumSize().width()));
 
     m_view->setModel(m_proxy);
     m_view->setItemDelegate(new FleetDelegate(m_view));
@@ -263,6 +272,21 @@ void FleetListWidget::showContextMenu(const QString& id, QPoint globalPos) {
         }
     });
     menu.exec(globalPos);
+}
+
+bool FleetListWidget::filterRowWrapped() const {
+    return m_filterBar->direction() == QBoxLayout::TopToBottom;
+}
+
+void FleetListWidget::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    // One row needs the filter's minimum beside the combos' and the button's widths.
+    const int oneRow = m_filter->minimumWidth() + m_protocol->sizeHint().width() +
+                       m_status->sizeHint().width() + m_densityButton->sizeHint().width() +
+                       3 * m_filterBar->spacing();
+    const auto dir = width() < oneRow ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight;
+    if (m_filterBar->direction() != dir)
+        m_filterBar->setDirection(dir);
 }
 
 } // namespace ocu

@@ -9,6 +9,7 @@ class QTableView;
 class QLineEdit;
 class QComboBox;
 class QToolButton;
+class QBoxLayout;
 
 namespace ocu {
 
@@ -36,10 +37,15 @@ public:
     // Opens the per-machine context menu (also used by the map's context menu).
     void showContextMenu(const QString& id, QPoint globalPos);
     static QString describeMachine(const MachineState& m);
+    // True while the filter field sits on its own row above the combos (a narrow dock, issue 19 §6).
+    bool filterRowWrapped() const;
 
 signals:
     void centerOnMapRequested(const QString& id);
     void detailsRequested(const QString& id);
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void syncFromShared();
@@ -55,6 +61,7 @@ private:
     QComboBox* m_protocol;
     QComboBox* m_status;
     QToolButton* m_densityButton;
+    QBoxLayout* m_filterBar = nullptr; // the filter field beside (wide) or above (narrow) the combos
     Density m_density = Density::Dense;
     bool m_syncing = false;
 };

@@ -294,6 +294,7 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     p.setRenderHint(QPainter::Antialiasing, true);
     if ((m_layers & LayerTrails) && !trailsInBase)
         drawTrails(p, world);
+    m_reservedLabels.clear();
     for (SiteMapOverlay* o : std::as_const(m_overlays))
         o->paintOverlay(p, *this);
     m_edges.clear();
@@ -496,10 +497,11 @@ void SiteMapView::drawLegend(QPainter& p, const QSize& size) {
     const int h = lh * (int(labels.size()) + 1) + 8;
     const QRect box(8, size.height() - h - 30, w, h);
     p.setRenderHint(QPainter::Antialiasing, false);
-    p.fillRect(box, QColor(255, 255, 255, 230));
-    p.setPen(QPen(Qt::gray, 0));
+    // Night palette: a dark box with light text like the machine labels (a white box glared at night).
+    p.fillRect(box, m_night ? QColor(30, 30, 34, 235) : QColor(255, 255, 255, 230));
+    p.setPen(QPen(m_night ? QColor(0x90, 0x90, 0x90) : QColor(Qt::gray), 0));
     p.drawRect(box);
-    p.setPen(Qt::black);
+    p.setPen(m_night ? QColor(0xe6, 0xe6, 0xe0) : QColor(Qt::black));
     p.drawText(box.left() + 6, box.top() + 4 + fm.ascent(), title);
     for (int i = 0; i < labels.size(); ++i) {
         const int y = box.top() + 4 + lh * (i + 1);
@@ -514,7 +516,7 @@ void SiteMapView::drawScaleBar(QPainter& p, const QSize& size) {
     const double px = metres * m_scale;
     const QPointF end(size.width() - 16, size.height() - 30);
     const QPointF start = end - QPointF(px, 0);
-    p.setPen(QPen(Qt::black, 2));
+    p.setPen(QPen(m_night ? QColor(0xe6, 0xe6, 0xe0) : QColor(Qt::black), 2)); // legible on the dimmed ground
     p.drawLine(start, end);
     p.drawLine(start, start - QPointF(0, 6));
     p.drawLine(end, end - QPointF(0, 6));
@@ -527,8 +529,8 @@ void SiteMapView::drawNorthArrow(QPainter& p, const QSize& size) {
     const QPointF c(size.width() - 28, 34);
     QPolygonF arrow;
     arrow << c + QPointF(0, -18) << c + QPointF(8, 10) << c + QPointF(0, 4) << c + QPointF(-8, 10);
-    p.setPen(QPen(Qt::black, 0));
-    p.setBrush(QColor(0x30, 0x30, 0x30));
+    p.setPen(QPen(m_night ? QColor(0xe6, 0xe6, 0xe0) : QColor(Qt::black), 0));
+    p.setBrush(m_night ? QColor(0xc8, 0xc8, 0xc4) : QColor(0x30, 0x30, 0x30));
     p.drawPolygon(arrow);
     p.setBrush(Qt::NoBrush);
     p.drawText(QRectF(c.x() - 8, c.y() + 10, 16, 16), Qt::AlignCenter, QStringLiteral("N"));
@@ -546,8 +548,8 @@ void SiteMapView::drawCursor(QPainter& p, const QSize& size) {
                              .arg(g.lon, 0, 'f', 7);
     const QFontMetrics fm(p.font());
     const QRect box(0, size.height() - fm.height() - 6, fm.horizontalAdvance(text) + 12, fm.height() + 6);
-    p.fillRect(box, QColor(255, 255, 255, 210));
-    p.setPen(Qt::black);
+    p.fillRect(box, m_night ? QColor(30, 30, 34, 220) : QColor(255, 255, 255, 210));
+    p.setPen(m_night ? QColor(0xe6, 0xe6, 0xe0) : QColor(Qt::black));
     p.drawText(box.adjusted(6, 3, 0, 0), Qt::AlignLeft | Qt::AlignTop, text);
 }
 

@@ -120,6 +120,11 @@ public:
     // ---- Issue 19 §1: symbols and labels ----
     // Labels placed in the last frame (machine names, road and area names), none overlapping another.
     const QVector<MapLabelLayout::Placed>& labelPlacements() const { return m_labels.placed(); }
+    // For overlays, from paintOverlay(): text the overlay draws at `screenRect` (screen px); the machines'
+    // labels and the road and area names of this frame keep clear of it (issue 19 §1: no two labels overlap —
+    // a station label of the compaction design or the dispatch route's label were covered by machine labels).
+    void reserveLabelArea(const QRectF& screenRect) const { m_reservedLabels.push_back(screenRect); }
+    const QVector<QRectF>& reservedLabelAreas() const { return m_reservedLabels; }
     QString hoveredMachine() const { return m_hoverId; }
     MapSymbolCache& symbolCache() { return m_symbols; }
 
@@ -276,7 +281,8 @@ private:
     bool m_autoFit = true;
     MapSymbolCache m_symbols;
     MapLabelLayout m_labels;
-    QVector<MapLabelCandidate> m_mapLabels; // of the static layer's view
+    mutable QVector<QRectF> m_reservedLabels; // overlays' text of the frame being painted
+    QVector<MapLabelCandidate> m_mapLabels;   // of the static layer's view
     QHash<QString, QImage> m_labelImages;
     QVector<EdgeIndicator> m_edges;
     QString m_hoverId;

@@ -328,6 +328,8 @@ void SiteMapView::layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<Ma
         m_labels.block(QRectF(size.width() - 52, 8, 48, 56));
     if (m_layers & LayerScaleBar)
         m_labels.block(QRectF(size.width() - 170, size.height() - 58, 166, 40));
+    for (const QRectF& r : std::as_const(m_reservedLabels)) // text drawn by overlays this frame
+        m_labels.block(r);
     if (m_layers & LayerLabels) {
         std::stable_sort(machines.begin(), machines.end(), [](const MachineLabel& a, const MachineLabel& b) {
             return a.priority < b.priority;

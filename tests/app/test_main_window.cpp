@@ -235,7 +235,7 @@ private slots:
         QTest::keyClick(w.stopAllButton(), Qt::Key_Space);
         QCOMPARE(spy.count(), 3);
     }
-    // Issue 19 §6: Ctrl+1 … Ctrl+7 raise each panel (also a closed one or a hidden tab) and put the keyboard
+    // Issue 19 §6: Ctrl+1 … Ctrl+8 raise each panel (also a closed one or a hidden tab) and put the keyboard
     // focus in it; the default layout gives the map most of a 1366 x 768 window.
     void keyboardPathToEveryPanel() {
         MainWindow w;
@@ -263,6 +263,30 @@ private slots:
             QTRY_VERIFY2(edits[p]->isVisible(), qPrintable(w.panelTitle(p)));
             QTRY_VERIFY2(edits[p]->hasFocus(), qPrintable(w.panelTitle(p)));
         }
+    }
+    // Issue 19 §6: Help › Keyboard shortcuts names every go-to-panel shortcut the window has, also one a
+    // protocol module adds later (Ctrl+9 Production); it said "Ctrl+1 … Ctrl+7" while Ctrl+8 and Ctrl+9
+    // existed.
+    void helpListsEveryPanelShortcut() {
+        MainWindow w;
+        auto* production = new QAction(QStringLiteral("Production"), &w);
+        production->setObjectName(QStringLiteral("action-go-production"));
+        production->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_9));
+        w.addAction(production);
+        const QString help = w.keyboardHelpText();
+        int n = 1;
+        for (Panel p : MainWindow::panels()) {
+            const QString line =
+                QStringLiteral("%1: %2").arg(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_0 + n++))
+                                                 .toString(QKeySequence::NativeText),
+                                             w.panelTitle(p));
+            QVERIFY2(help.contains(line), qPrintable(line + QStringLiteral(" missing in:\n") + help));
+        }
+        QVERIFY2(help.contains(QKeySequence(Qt::CTRL | Qt::Key_9).toString(QKeySequence::NativeText) +
+                               QStringLiteral(": Production")),
+                 qPrintable(help));
+        QVERIFY(help.contains(QStringLiteral("STOP ALL")));
+        QVERIFY(!help.contains(QStringLiteral("… Ctrl+7"))); // no hard-coded range
     }
     // Issue 19 §6: the first start (no saved layout) opens maximized, at the screen's available size, not
     // at the widgets' size hint (1200 x 720 on a 1920 x 1080 screen).

@@ -4,6 +4,7 @@
 #include "app/Theme.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
+#include "models/PassCountLayer.h"
 #include "widgets/SiteMapView.h"
 
 #include <QApplication>
@@ -117,6 +118,50 @@ private slots:
         applyTheme(*app, Theme::Day);
         QTRY_VERIFY(!v.isNight());
         QCOMPARE(QColor(paint(v).pixel(5, 395)), dayGround);
+    }
+
+    // The pass-count legend, the scale bar and the north arrow drawn on the map follow the palette too: the
+    // legend stayed a white box with black text at night (glare, and the only white area of the map).
+    void legendScaleAndNorthArrowFollowThePalette() {
+        auto* app = qobject_cast<QApplication*>(QCoreApplication::instance());
+        FleetModel fleet;
+        FleetSelection selection(&fleet);
+        GridPassCountLayer pass({-100, -100}, 1.0, 200, 200);
+        pass.fillRect(QRect(90, 90, 20, 20), 4);
+        SiteMapView v;
+        v.resize(600, 400);
+        v.setFleet(&fleet, &selection);
+        v.setPassCountLayer(&pass);
+        v.setLayerVisible(SiteMapView::LayerCursor, false);
+        v.setView(QPointF(0, 0), 2.0);
+        // drawLegend's box: x from 8, bottom edge 30 px above the view's bottom, ten 8-pt lines tall; (10,
+        // 400 - 33) is inside it, left of the colour swatches; x 38..60 over the lower 95 px holds the count
+        // labels ("1" … "9+") and the box between them.
+        const QPoint boxPixel(10, 400 - 33);
+        const QRect titleRow(38, 400 - 130, 22, 95);
+        const QImage day = paint(v);
+        QVERIFY2(QColor(day.pixel(boxPixel)).lightness() > 200,
+                 qPrintable(QColor(day.pixel(boxPixel)).name()));
+        const auto [dlo, dhi] = lightnessRange(day, titleRow);
+        QVERIFY2(dlo < 80 && dhi > 200, qPrintable(QStringLiteral("%1..%2").arg(dlo).arg(dhi)));
+
+        applyTheme(*app, Theme::Night);
+        QTRY_VERIFY(v.isNight());
+        const QImage night = paint(v);
+        QVERIFY2(QColor(night.pixel(boxPixel)).lightness() < 60,
+                 qPrintable(QColor(night.pixel(boxPixel)).name()));
+        const auto [nlo, nhi] = lightnessRange(night, titleRow);
+        QVERIFY2(nlo < 60 && nhi > 190, qPrintable(QStringLiteral("%1..%2").arg(nlo).arg(nhi)));
+        // Scale bar (2 px line ending 16 px left of the right edge, 30 px above the bottom) and north arrow
+        // (its tip area right of centre at the top right): light at night, dark by day.
+        const QPoint scale(600 - 20, 400 - 30);
+        const QPoint north(600 - 28, 34);
+        QVERIFY2(QColor(night.pixel(scale)).lightness() > 180, qPrintable(QColor(night.pixel(scale)).name()));
+        QVERIFY2(QColor(day.pixel(scale)).lightness() < 60, qPrintable(QColor(day.pixel(scale)).name()));
+        QVERIFY2(QColor(night.pixel(north)).lightness() > 150, qPrintable(QColor(night.pixel(north)).name()));
+        QVERIFY2(QColor(day.pixel(north)).lightness() < 80, qPrintable(QColor(day.pixel(north)).name()));
+        applyTheme(*app, Theme::Day);
+        QTRY_VERIFY(!v.isNight());
     }
 };
 

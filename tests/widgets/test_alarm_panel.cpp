@@ -40,13 +40,19 @@ private slots:
         QCOMPARE(log.proxy()->index(0, AlarmModel::ColCount).data().toString(), QStringLiteral("3"));
         QVERIFY(log.rateLabel()->text().contains(QStringLiteral("1 alarms / 10 min")));
 
+        // Issue 19 §6: the details pane is folded while nothing is selected (the table keeps the rows of a
+        // short dock) and opens with the selection.
+        QVERIFY(!log.detailsShown());
         log.tableView()->selectRow(0);
+        QVERIFY(log.detailsShown());
+        QVERIFY(log.detailsPane()->height() >= log.detailsPane()->fontMetrics().lineSpacing() * 3);
         QVERIFY(log.detailsPane()->toPlainText().contains(QStringLiteral("machine T2")));
         QVERIFY(log.detailsPane()->toPlainText().contains(QStringLiteral("fleet.not_in_fms|ahs|iso23725")));
 
         log.shelveSelected(); // default 15 min
         QCOMPARE(alarms.unacknowledgedCount(), 0);
         QCOMPARE(log.proxy()->rowCount(), 0);
+        QTRY_VERIFY(!log.detailsShown()); // nothing selected any more
         QVERIFY(alarms.isKeyShelved(QStringLiteral("fleet.not_in_fms|ahs|iso23725")));
         QCOMPARE(alarms.shelf(QStringLiteral("fleet.not_in_fms|ahs|iso23725")).untilMs, now + 15 * 60 * 1000);
 

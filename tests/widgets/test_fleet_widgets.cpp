@@ -11,6 +11,7 @@
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/PassCountPanel.h"
 
+#include <QComboBox>
 #include <QDateTime>
 #include <QFile>
 #include <QHeaderView>
@@ -87,6 +88,22 @@ private slots:
         QCOMPARE(stopCell.data(FleetModel::StatusColorRole).value<QColor>(),
                  statusColor(StatusCategory::FaultOrStopped));
         QVERIFY(FleetListWidget::describeMachine(stopped).contains(QStringLiteral("stopped")));
+
+        // Issue 19 §6: in a narrow dock (a quarter of a 1366-px screen) the filter field goes above the
+        // combos instead of holding the list ~480 px wide; back beside them when there is room.
+        QVERIFY(!list.filterRowWrapped());
+        QVERIFY2(list.minimumWidth() > 0 && list.minimumWidth() <= 340,
+                 qPrintable(QString::number(list.minimumWidth())));
+        list.resize(330, 400);
+        QTRY_VERIFY(list.filterRowWrapped());
+        auto* combo = list.findChild<QComboBox*>();
+        QVERIFY(combo);
+        QTRY_VERIFY2(
+            list.filterEdit()->geometry().bottom() < combo->geometry().top(),
+            qPrintable(QStringLiteral("filter %1, combo %2").arg(list.filterEdit()->y()).arg(combo->y())));
+        QVERIFY(combo->geometry().right() < 330);
+        list.resize(900, 400);
+        QTRY_VERIFY(!list.filterRowWrapped());
     }
 
     void eventLogAlarmStaysUntilAcknowledged() {

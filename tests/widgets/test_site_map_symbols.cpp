@@ -187,6 +187,42 @@ private slots:
         }
     }
 
+    // Text drawn by an overlay (the dispatch route's label, the compaction design's station labels) is
+    // reserved with the view: the machines' labels of that frame keep clear of it, and still get placed
+    // elsewhere.
+    void overlayTextIsKeptClearOfMachineLabels() {
+        struct TextOverlay : SiteMapOverlay {
+            QRectF rect;
+            void paintOverlay(QPainter& p, const SiteMapView& view) override {
+                p.fillRect(rect, Qt::magenta);
+                view.reserveLabelArea(rect);
+            }
+        } overlay;
+        QVector<MachineState> ms;
+        for (int i = 0; i < 20; ++i)
+            ms.push_back(machine(QStringLiteral("iso23725:T%1").arg(i), -100 + 10.0 * i, 0));
+        fleet->upsert(ms);
+        SiteMapView v;
+        v.setFleet(fleet, selection);
+        v.setView({0, 0}, 4.0);
+        paint(v);
+        QRectF where; // where T10's label goes without the overlay
+        for (const auto& l : v.labelPlacements())
+            if (l.text == QLatin1String("T10"))
+                where = l.rect;
+        QVERIFY(!where.isEmpty());
+        overlay.rect = where.adjusted(-20, -6, 20, 6);
+        v.addOverlay(&overlay);
+        paint(v);
+        QCOMPARE(v.reservedLabelAreas().size(), 1);
+        bool t10 = false;
+        for (const auto& l : v.labelPlacements()) {
+            QVERIFY2(!l.rect.intersects(overlay.rect), qPrintable(l.text));
+            t10 = t10 || l.text == QLatin1String("T10");
+        }
+        QVERIFY(t10); // moved, not dropped
+    }
+
     void rampLaneNamesDoNotOverlapAndFollowTheRoad() {
         SiteMapData map;
         QVector<QPointF> down, up, diag;

@@ -157,6 +157,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
                 p.fillRect(r.translated(at), QColor(255, 255, 255, 200));
                 p.setPen(QColor(0x80, 0x40, 0x00));
                 p.drawText(at, text);
+                view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it (issue 19 §1)
             }
         }
     }
