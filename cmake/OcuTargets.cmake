@@ -23,6 +23,9 @@ function(ocu_add_test)
   add_executable(${T_NAME} ${T_SOURCES})
   target_link_libraries(${T_NAME} PRIVATE Qt6::Test ${T_LIBS})
   ocu_set_warnings(${T_NAME})
+  # Qt's test defines carry the absolute build and source folders; no test uses QFINDTESTDATA. Undefined, the
+  # preprocessed test is the same in every clone or worktree, so ccache can share the objects between them.
+  target_compile_options(${T_NAME} PRIVATE -UQT_TESTCASE_BUILDDIR -UQT_TESTCASE_SOURCEDIR)
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 120)
   endif()
