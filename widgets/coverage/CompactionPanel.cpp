@@ -61,6 +61,8 @@ CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverla
     m_throttle.setInterval(2000);
     connect(&m_throttle, &QTimer::timeout, this, &CompactionPanel::refresh);
     connect(session, &CompactionSession::changed, this, &CompactionPanel::refresh);
+    // The statistics follow the counts (and so the filters: a filter change recounts into a new snapshot).
+    connect(session, &CompactionSession::countsChanged, this, &CompactionPanel::countsChanged);
     connect(m_lift, &QComboBox::currentIndexChanged, this, &CompactionPanel::refresh);
     connect(m_draw, &QPushButton::clicked, this, [this] {
         if (m_overlay->isDrawing())
@@ -86,6 +88,12 @@ CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverla
         m_overlay->setHighlightedArea(row >= 0 ? m_table->item(row, 0)->data(Qt::UserRole).toString()
                                                : QString());
     });
+    // A double click on an area frames it on the map.
+    connect(m_table, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
+        if (auto* it = m_table->item(row, 0))
+            m_overlay->zoomToArea(it->data(Qt::UserRole).toString());
+    });
+    m_table->setToolTip(tr("Double click an area to show it on the map"));
     connect(m_report, &QPushButton::clicked, this, &CompactionPanel::reportAction);
     refresh();
 }
