@@ -67,7 +67,7 @@ QWidget* buildCompactionGui(CompactionSession* session, SiteMapView* map, QWidge
     split->addWidget(new CompactionPanel(session, overlay));
     split->setChildrenCollapsible(false);
     split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 1);
+    split->setStretchFactor(1, 2); // the areas table has six columns
     return split;
 }
 

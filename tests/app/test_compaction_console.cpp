@@ -272,6 +272,13 @@ private slots:
         for (const char* k : {"pdf", "csv", "geotiff"})
             QVERIFY2(written.value(QString::fromLatin1(k)).toBool(), k);
         QVERIFY(res.value(QStringLiteral("csv_rows")).toInt() > 0);
+        // The counted data's time range (the simulated positions are stamped now).
+        const QDateTime from =
+            QDateTime::fromString(res.value(QStringLiteral("data_from")).toString(), Qt::ISODate);
+        const QDateTime to =
+            QDateTime::fromString(res.value(QStringLiteral("data_to")).toString(), Qt::ISODate);
+        QVERIFY2(from.isValid() && to.isValid() && from <= to, line.constData());
+        QVERIFY2(std::abs(to.secsTo(QDateTime::currentDateTimeUtc())) < 600, line.constData());
         bool lotReported = false;
         for (const auto& a : res.value(QStringLiteral("areas")).toArray())
             lotReported |= a.toObject().value(QStringLiteral("name")).toString() == QLatin1String("Lot A");

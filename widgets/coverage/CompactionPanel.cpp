@@ -32,8 +32,17 @@ CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverla
     v->addLayout(liftRow);
     m_table = new QTableWidget(0, 6);
     m_table->setHorizontalHeaderLabels(
-        {tr("Area"), tr("Covered %"), tr("At target %"), tr("Under %"), tr("Over %"), tr("Incomplete")});
+        {tr("Area"), tr("Covered %"), tr("Target %"), tr("Under %"), tr("Over %"), tr("Incompl.")});
+    m_table->horizontalHeaderItem(2)->setToolTip(tr("Covered cells within the target passes, % of the area"));
+    m_table->horizontalHeaderItem(5)->setToolTip(
+        tr("Cells a given-up ribbon gap may have passed over: their counts are lower bounds"));
+    // The numbers as narrow as they are, the name takes the rest (the panel is about 300 px wide at 1366 x
+    // 768).
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_table->horizontalHeader()->setMinimumSectionSize(40);
+    m_table->setWordWrap(false);
+    m_table->setTextElideMode(Qt::ElideRight);
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
