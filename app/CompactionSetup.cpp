@@ -1,6 +1,7 @@
 #include "app/CompactionSetup.h"
 
 #include "app/HeadlessMonitor.h"
+#include "models/FleetBridge.h"
 #include "models/bridges/OsyrisPassCountLayer.h"
 #include "models/coverage/CompactionSession.h"
 #include "widgets/SiteMapView.h"
@@ -50,15 +51,23 @@ void stopCompaction(CompactionSession* session) {
         HeadlessMonitor::setLocalCommand(QStringLiteral("coverage_report"), {});
 }
 
+void watchCompactionCounts(CompactionSession* session, QObject* fleetBridge) {
+    if (auto* b = qobject_cast<FleetBridge*>(fleetBridge); b && session)
+        QObject::connect(b, &FleetBridge::passCountChanged, session, &CompactionSession::countsChanged);
+}
+
 QWidget* buildCompactionGui(CompactionSession* session, SiteMapView* map, QWidget* passPanel) {
     if (!session)
         return passPanel;
     auto* overlay = new CompactionMapOverlay(map, session);
-    auto* split = new QSplitter(Qt::Vertical);
+    // Side by side: the pass-count dock is wide and low at 1366 x 768 (under the map), so the areas table and
+    // its buttons stay in view beside the pass counts (which scroll inside their tab).
+    auto* split = new QSplitter(Qt::Horizontal);
     split->addWidget(passPanel);
     split->addWidget(new CompactionPanel(session, overlay));
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
+    split->setChildrenCollapsible(false);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 2); // the areas table has six columns
     return split;
 }
 
@@ -88,7 +97,7 @@ void attachCompaction3D(CompactionSession* session, QWidget* site3DView) {
         for (const QPolygonF& b : g.boundaries)
             add(b, true, 0.25, 0.25, 0.25, 2);
         for (const auto& a : g.areas)
-            add(a.second, true, 0.1, 0.3, 0.85, 3);
+            add(a.second, true, 0.69, 0.0, 0.43, 3); // the 2D map's area colour
     };
     QObject::connect(session, &CompactionSession::changed, holder, rebuild);
     rebuild();

@@ -19,7 +19,9 @@ class SiteMapView;
 CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& frame,
                                    const PassCountLayer* layer, QObject* parent, QStringList* problems);
 void stopCompaction(CompactionSession* session); // unregisters the headless command
-// The pass-count panel with the areas panel under it (the panel itself when session is nullptr).
+// The session's countsChanged() follows the bridge's passCountChanged() (the areas table refreshes).
+void watchCompactionCounts(CompactionSession* session, QObject* fleetBridge);
+// The pass-count panel with the areas panel beside it (the panel itself when session is nullptr).
 QWidget* buildCompactionGui(CompactionSession* session, SiteMapView* map, QWidget* passPanel);
 // The design's centre line and boundary and the areas in the 3D view (a build with the 3D view).
 void attachCompaction3D(CompactionSession* session, QWidget* site3DView);

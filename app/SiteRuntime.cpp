@@ -33,8 +33,10 @@
 #include <QApplication>
 #include <QDateTime>
 #include <QDir>
+#include <QDockWidget>
 #include <QLabel>
 #include <QPointer>
+#include <QScrollArea>
 #include <QSet>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -350,7 +352,13 @@ void SiteRuntime::populate(MainWindow& window) {
             crewPanel->setCommandGate(ctx->gate());
             crewPanel->setBridge(b, crew);
             auto* tabs = new QTabWidget;
-            tabs->addTab(passPanel, tr("Pass counts"));
+            // The panel (summary, lift, filters, histogram) scrolls inside its tab: beside it the areas panel
+            // stays in view in a low dock (1366 x 768).
+            auto* passScroll = new QScrollArea;
+            passScroll->setFrameShape(QFrame::NoFrame);
+            passScroll->setWidgetResizable(true);
+            passScroll->setWidget(passPanel);
+            tabs->addTab(passScroll, tr("Pass counts"));
             tabs->addTab(crewPanel, tr("Crew messages"));
             passDock = tabs;
         }
@@ -373,6 +381,9 @@ void SiteRuntime::populate(MainWindow& window) {
         FleetBridge* b = module->bridge();
         if (!b)
             continue;
+#ifdef OCU_HAVE_COVERAGE
+        watchCompactionCounts(d.compaction, b); // issue 17: the areas' statistics follow the counts
+#endif
         connect(b, &FleetBridge::siteMapChanged, map, [this, map, feed] {
             const SiteMapData m = m_impl->mergedMap();
             map->setSiteMap(m);
@@ -446,15 +457,22 @@ void SiteRuntime::populate(MainWindow& window) {
 
     // The protocols' own panels; a panel no module of this build fills says so.
     QSet<Panel> filled{Panel::Fleet, Panel::SiteMap, Panel::Site3D, Panel::PassCounts, Panel::EventLog};
+    bool dispatchLive = false;
     for (const auto& m : d.modules) {
         if (m->bridge())
             m->populate({window, ctx, m_config});
         else
             for (Panel p : m->panels())
                 window.setPanelWidget(p, notice(m->notConfiguredText()));
-        for (Panel p : m->panels())
+        for (Panel p : m->panels()) {
             filled.insert(p);
+            dispatchLive |= p == Panel::Dispatch && m->bridge();
+        }
     }
+    // Issue 17: a site with pass counts and no haulage to dispatch shows the pass counts in front of the
+    // Dispatch notice that shares their place (a saved layout still wins, it is restored after this).
+    if (!dispatchLive && d.passLayer())
+        window.dock(Panel::PassCounts)->raise();
     for (Panel p : MainWindow::panels())
         if (!filled.contains(p))
             window.setPanelWidget(

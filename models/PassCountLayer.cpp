@@ -95,28 +95,15 @@ void GridPassCountLayer::clear() {
 }
 
 QColor passCountDiscreteColor(int count) {
-    switch (count) {
-    case 0:
+    // An ordered scale (viridis in 9 steps): lightness rises with every pass, so more passes always read as
+    // "further along" and neighbouring counts stay apart; readable for colour-blind viewers and on the light
+    // map and the grey hillshade alike. (TRex's per-count colours put 2 = red between teal and cyan: no
+    // order.)
+    static const QRgb steps[9] = {0x440154, 0x472d7b, 0x3b528b, 0x2c728e, 0x21918c,
+                                  0x28ae80, 0x5ec962, 0xaddc30, 0xfde725};
+    if (count <= 0)
         return QColor(0, 0, 0, 0);
-    case 1:
-        return QColor(0x00, 0xA4, 0xA4);
-    case 2:
-        return QColor(0xFF, 0x00, 0x00);
-    case 3:
-        return QColor(0x00, 0xFF, 0xFF);
-    case 4:
-        return QColor(0xAE, 0xAE, 0x00);
-    case 5:
-        return QColor(0x00, 0xFF, 0x00);
-    case 6:
-        return QColor(0xFF, 0x00, 0xFF);
-    case 7:
-        return QColor(0xB0, 0x00, 0xB0);
-    case 8:
-        return QColor(0x40, 0x40, 0x40);
-    default:
-        return QColor(0xAC, 0xFD, 0xEB);
-    }
+    return QColor(steps[std::min(count, 9) - 1]);
 }
 
 QColor passCountSummaryColor(int count, PassTarget target) {

@@ -83,8 +83,8 @@ struct PassTarget {
 
 enum class PassPalette { Discrete, Summary };
 
-// TRex PassCountPalette: 1 teal, 2 red, 3 aqua, 4 olive, 5 lime, 6 fuchsia, 7 purple, 8 dark grey, 9+ pale
-// cyan.
+// One colour per count 1..9+ on an ordered scale (viridis steps, dark purple -> blue -> green -> yellow):
+// lightness rises with the count.
 QColor passCountDiscreteColor(int count);
 // Below = DodgerBlue, within = YellowGreen, above = Red.
 QColor passCountSummaryColor(int count, PassTarget target);

@@ -2348,8 +2348,12 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <translation>Überfahren %</translation>
     </message>
     <message>
-        <source>At target %</source>
+        <source>Target %</source>
         <translation>Im Ziel %</translation>
+    </message>
+    <message>
+        <source>Covered cells within the target passes, % of the area</source>
+        <translation>Überfahrene Zellen mit Übergängen im Zielbereich, % der Fläche</translation>
     </message>
     <message>
         <source>Under %</source>
@@ -2360,8 +2364,16 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <translation>Über Ziel %</translation>
     </message>
     <message>
-        <source>Incomplete</source>
-        <translation>Unvollständig</translation>
+        <source>Incompl.</source>
+        <translation>Unvollst.</translation>
+    </message>
+    <message>
+        <source>Cells a given-up ribbon gap may have passed over: their counts are lower bounds</source>
+        <translation>Zellen, über die eine aufgegebene Lücke im Band gegangen sein kann: ihre Zählungen sind Untergrenzen</translation>
+    </message>
+    <message>
+        <source>Double click an area to show it on the map</source>
+        <translation>Doppelklick auf eine Fläche zeigt sie in der Karte</translation>
     </message>
     <message>
         <source>Draw area</source>

@@ -3,6 +3,7 @@
 #include "protocols/site/CrsTransform.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -224,6 +225,10 @@ void CompactionSession::rebuildGeometry() {
 CoverageJob CompactionSession::job() const {
     CoverageJob j;
     j.snapshot = m_snapshot ? m_snapshot() : nullptr;
+    if (j.snapshot && j.snapshot->dataFromMs() > 0) { // the counted positions' time range (UTC)
+        j.dataFrom = QDateTime::fromMSecsSinceEpoch(j.snapshot->dataFromMs(), Qt::UTC);
+        j.dataTo = QDateTime::fromMSecsSinceEpoch(j.snapshot->dataToMs(), Qt::UTC);
+    }
     j.worksiteOrigin = m_haveWorksite ? m_worksite : m_site.origin();
     j.design = m_design;
     j.designPath = m_designPath;

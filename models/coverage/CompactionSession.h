@@ -69,6 +69,9 @@ public:
 
 signals:
     void changed(); // design or areas
+    // The pass counts behind the snapshot source changed (a new snapshot, a recount after a filter change);
+    // emitted by whoever feeds the session (app/CompactionSetup: the OSYRIS bridge's passCountChanged).
+    void countsChanged();
 
 private:
     void rebuildGeometry();

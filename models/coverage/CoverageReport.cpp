@@ -838,8 +838,8 @@ QString writeCoveragePdf(const CoverageJob& job, const CoverageFrames& frames, c
                .arg(job.machines.isEmpty() ? tr("none known") : job.machines.join(QStringLiteral(", ")),
                     job.dataFrom.isValid()
                         ? tr("%1 to %2")
-                              .arg(job.dataFrom.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")),
-                                   job.dataTo.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")))
+                              .arg(job.dataFrom.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")),
+                                   job.dataTo.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss 'UTC'")))
                         : tr("time range not known")));
     w.text(tr("Filters: %1").arg(filtersText(snap.settings())));
     QStringList lifts;
@@ -964,6 +964,10 @@ QJsonObject writeCoverageReport(const CoverageJob& job, const CoverageReportRequ
                              {QStringLiteral("incomplete"), double(a.stats.incomplete)}};
     o[QStringLiteral("areas")] = areas;
     o[QStringLiteral("station_ranges")] = int(t.stations.size());
+    if (job.dataFrom.isValid()) { // the counted data's time range (UTC, ISO 8601)
+        o[QStringLiteral("data_from")] = job.dataFrom.toUTC().toString(Qt::ISODate);
+        o[QStringLiteral("data_to")] = job.dataTo.toUTC().toString(Qt::ISODate);
+    }
     if (!r.csv.isEmpty()) {
         qint64 rows = 0;
         const QString e = writeCoverageCsv(job, frames, lift == -1 ? kAllLifts : lift, r.area, r.csv, &rows);

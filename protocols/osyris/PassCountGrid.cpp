@@ -150,6 +150,7 @@ void PassCountGrid::setSettings(const PassCountSettings& s) {
     m_lastTile = nullptr;
     m_lastTileKey = ~0ull;
     m_dirty = false;
+    m_firstMs = m_lastMs = 0;
     m_clearedAt = m_generation; // snapshots before this one cannot be patched into the next
 }
 
@@ -351,6 +352,13 @@ void PassCountGrid::addPosition(std::uint8_t machine, const CmPos& p) {
         m_lift = &l;
         m_liftIndex = lift;
         sweep(m, m.ax, m.ay, p.x, p.y, w);
+        if (p.time != 0) { // the data time range of the report
+            const std::int64_t t = fileTimeToUnixMillis(p.time);
+            if (t > 0) {
+                m_firstMs = m_firstMs == 0 ? t : std::min(m_firstMs, t);
+                m_lastMs = std::max(m_lastMs, t);
+            }
+        }
     }
     m.ax = p.x;
     m.ay = p.y;
@@ -505,8 +513,9 @@ std::shared_ptr<const PassCountSnapshot> PassCountGrid::snapshot() {
     for (const auto& [machine, slots] : m_givenUp)
         if (!slots.empty())
             givenUp[machine] = slots.ranges();
-    auto snap = std::make_shared<const PassCountSnapshot>(
-        sortedEntries(m_tiles), std::move(lifts), m_settings, m_generation, m_clearedAt, std::move(givenUp));
+    auto snap = std::make_shared<PassCountSnapshot>(sortedEntries(m_tiles), std::move(lifts), m_settings,
+                                                    m_generation, m_clearedAt, std::move(givenUp));
+    snap->setDataTime(m_firstMs, m_lastMs);
     // Every tile is now shared with the snapshot: the next write to each copies it first.
     ++m_generation;
     m_lastTile = nullptr;

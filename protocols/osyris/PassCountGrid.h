@@ -116,6 +116,7 @@ private:
     // a tile of an older generation may be held by a snapshot and is copied before it is written.
     std::uint64_t m_generation = 1;
     std::uint64_t m_clearedAt = 1;
+    std::int64_t m_firstMs = 0, m_lastMs = 0; // Unix ms of the earliest/latest counted position; 0 = none
     std::map<std::uint8_t, std::unique_ptr<MachineState>> m_machines;
     bool m_dirty = false;
     std::uint64_t m_implausible = 0;

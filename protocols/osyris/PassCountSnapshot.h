@@ -177,6 +177,14 @@ public:
     // Per machine, the slot ranges of its ribbon counted without (given up as unobtainable, issue 17 §4).
     const std::map<std::uint8_t, std::vector<SlotRange>>& givenUp() const { return m_givenUp; }
     bool anyIncomplete() const { return m_anyIncomplete; }
+    // Unix ms of the earliest and latest counted position (issue 17 §3: the report's data time range); 0 when
+    // no position with a time was counted. Set by PassCountGrid::snapshot() before the snapshot is shared.
+    std::int64_t dataFromMs() const { return m_dataFromMs; }
+    std::int64_t dataToMs() const { return m_dataToMs; }
+    void setDataTime(std::int64_t fromMs, std::int64_t toMs) {
+        m_dataFromMs = fromMs;
+        m_dataToMs = toMs;
+    }
 
 private:
     std::vector<Entry> m_tiles;
@@ -187,6 +195,7 @@ private:
     bool m_topHasFlags = false; // m_tiles hold PassCountTopTiles
     bool m_anyIncomplete = false;
     std::map<std::uint8_t, std::vector<SlotRange>> m_givenUp;
+    std::int64_t m_dataFromMs = 0, m_dataToMs = 0;
     void init();
 };
 

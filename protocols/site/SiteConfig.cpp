@@ -51,6 +51,8 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
             static_cast<int>(s->integer("osyris_rollers", cfg.simulation.osyrisRollers, 0, 3));
         cfg.simulation.osyrisSpeedUp = s->number("osyris_speed_up", cfg.simulation.osyrisSpeedUp, 1, 1000);
         cfg.simulation.osyrisPavingJob = s->string("osyris_paving_job", cfg.simulation.osyrisPavingJob);
+        if (cfg.simulation.osyrisPavingJob != "built-in" && !cfg.simulation.osyrisPavingJob.empty())
+            cfg.simulation.osyrisPavingJob = resolveSitePath(cfg.simulation.osyrisPavingJob, fileName);
         cfg.simulation.osyrisLifts =
             static_cast<int>(s->integer("osyris_lifts", cfg.simulation.osyrisLifts, 1, 20));
         cfg.simulation.osyrisLiftThickness =

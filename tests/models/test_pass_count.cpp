@@ -42,10 +42,19 @@ private slots:
         QCOMPARE(g.changedCellsSince(g.revision() - 1), QRect(50, 50, 1, 1));
     }
 
-    void palettesFollowTRex() {
-        QCOMPARE(passCountDiscreteColor(1), QColor(0x00, 0xA4, 0xA4));
-        QCOMPARE(passCountDiscreteColor(4), QColor(0xAE, 0xAE, 0x00));
-        QCOMPARE(passCountDiscreteColor(12), QColor(0xAC, 0xFD, 0xEB));
+    void palettes() {
+        // The per-count palette is an ordered scale: every further pass is lighter (relative luminance), by a
+        // visible step, and opaque; 9 and more share the last colour; no pass is transparent.
+        auto luminance = [](QColor c) {
+            return 0.2126 * c.redF() + 0.7152 * c.greenF() + 0.0722 * c.blueF();
+        };
+        for (int c = 2; c <= 9; ++c) {
+            const QColor a = passCountDiscreteColor(c - 1), b = passCountDiscreteColor(c);
+            QVERIFY2(luminance(b) > luminance(a) + 0.03, qPrintable(QString::number(c)));
+            QCOMPARE(b.alpha(), 255);
+        }
+        QCOMPARE(passCountDiscreteColor(1), QColor(0x44, 0x01, 0x54));
+        QCOMPARE(passCountDiscreteColor(12), passCountDiscreteColor(9));
         QCOMPARE(passCountDiscreteColor(0).alpha(), 0);
         const PassTarget t{3, 5};
         QCOMPARE(passCountSummaryColor(2, t), QColor(0x1E, 0x90, 0xFF));

@@ -7,6 +7,8 @@
 #include <QMouseEvent>
 #include <QPainter>
 
+#include <algorithm>
+
 namespace ocu {
 
 CompactionMapOverlay::CompactionMapOverlay(SiteMapView* view, CompactionSession* session)
@@ -27,6 +29,29 @@ void CompactionMapOverlay::setHighlightedArea(const QString& name) {
     m_highlight = name;
     if (m_view)
         m_view->update();
+}
+
+bool CompactionMapOverlay::zoomToArea(const QString& name) {
+    if (!m_view || !m_session)
+        return false;
+    const auto& g = m_session->mapGeometry();
+    QRectF box;
+    if (name.isEmpty()) {
+        for (const QPolygonF& b : g.boundaries)
+            box = box.united(b.boundingRect());
+    } else {
+        for (const auto& [n, ring] : g.areas)
+            if (n == name)
+                box = ring.boundingRect();
+    }
+    if (box.isEmpty() || m_view->width() <= 0 || m_view->height() <= 0)
+        return false;
+    // 10 % margin; at most 50 px/m (an area of a few metres is not blown up to nothing but cells).
+    const double s = std::min({0.9 * m_view->width() / std::max(box.width(), 1.0),
+                               0.9 * m_view->height() / std::max(box.height(), 1.0), 50.0});
+    m_view->panByPixels({0, 0}); // the operator's choice of view: no more auto-fitting, no following
+    m_view->setView(box.center(), s);
+    return true;
 }
 
 void CompactionMapOverlay::startDrawing() {
@@ -132,7 +157,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         const QPolygonF s = toScreen(c);
         if (!s.boundingRect().intersects(screen))
             continue;
-        p.setPen(QPen(QColor(0xe0, 0x70, 0x00), 2));
+        p.setPen(QPen(centreLineColour(), 2));
         p.drawPolyline(s);
     }
     // Station ticks every 100 m; labels when they are at least 60 px apart (else every 500 m or km).
@@ -146,7 +171,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
             const QPointF a = view.worldToScreen(t.left), b = view.worldToScreen(t.right);
             if (!screen.contains(a))
                 continue;
-            p.setPen(QPen(QColor(0xe0, 0x70, 0x00), 2));
+            p.setPen(QPen(centreLineColour(), 2));
             if (pxPer100 >= 8)
                 p.drawLine(a, b);
             const long long k = std::llround(t.station / CompactionSession::kTickSpacing);
@@ -161,14 +186,34 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
             }
         }
     }
-    for (const auto& [name, ring] : g.areas) {
+    // Areas: a deep magenta outline (a colour neither the pass-count scales, the design's orange centre line
+    // nor the machines use) over a white halo, so it reads on pass counts, road and hillshade alike; a light
+    // fill; the name in a white box. The selected area is wider and filled more.
+    const QColor areaColour = CompactionMapOverlay::areaColour();
+    const auto& areas = m_session->areas(); // same order as the geometry's areas
+    for (int i = 0; i < g.areas.size(); ++i) {
+        const auto& [name, ring] = g.areas[i];
         const QPolygonF s = toScreen(ring);
         if (!s.boundingRect().intersects(screen))
             continue;
         const bool hi = name == m_highlight;
-        p.setPen(QPen(hi ? QColor(0x10, 0x50, 0xe0) : QColor(0x30, 0x30, 0xb0), hi ? 3 : 1.5));
-        p.setBrush(hi ? QColor(0x10, 0x50, 0xe0, 30) : QColor(0, 0, 0, 0));
-        p.drawPolygon(s);
+        // A design boundary used as an area (usually the whole job) only gets a thin outline unless selected:
+        // the lots drawn on it must stand out.
+        const bool design = i < areas.size() && areas[i].source == QLatin1String("design");
+        p.setBrush(Qt::NoBrush);
+        if (design && !hi) {
+            p.setPen(QPen(areaColour, 1.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.drawPolygon(s);
+        } else {
+            p.setPen(
+                QPen(QColor(255, 255, 255, 230), hi ? 8 : 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.drawPolygon(s);
+            QColor fill = areaColour;
+            fill.setAlpha(hi ? 60 : 28);
+            p.setBrush(fill);
+            p.setPen(QPen(areaColour, hi ? 4 : 2.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.drawPolygon(s);
+        }
         p.setBrush(Qt::NoBrush);
         QFont f = p.font();
         f.setPixelSize(12);
@@ -178,11 +223,13 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         QPointF at = s.boundingRect().topLeft();
         for (const QPointF& q : s)
             if (q.x() >= 0 && q.y() >= 14 && q.x() < view.width() - 40 && q.y() < view.height()) {
-                at = q + QPointF(4, -4);
+                at = q + QPointF(4, -6);
                 break;
             }
-        const QRectF r = p.fontMetrics().boundingRect(name).adjusted(-2, -1, 2, 1);
-        p.fillRect(r.translated(at), QColor(255, 255, 255, 210));
+        const QRectF r = p.fontMetrics().boundingRect(name).adjusted(-3, -1, 3, 1);
+        p.fillRect(r.translated(at), QColor(255, 255, 255, 230));
+        p.setPen(QPen(areaColour, 1));
+        p.drawRect(r.translated(at));
         p.drawText(at, name);
     }
     if (m_drawing) {

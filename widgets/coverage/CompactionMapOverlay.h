@@ -24,6 +24,11 @@ public:
     bool isDrawing() const { return m_drawing; }
     const QPolygonF& drawnPoints() const { return m_points; } // site ENU
     void setHighlightedArea(const QString& name);
+    // Frames the named area (or the design's boundary when the name is empty) on the map; false if unknown.
+    bool zoomToArea(const QString& name);
+
+    static QColor areaColour() { return QColor(0xb0, 0x00, 0x6e); }
+    static QColor centreLineColour() { return QColor(0xe0, 0x70, 0x00); }
 
 public slots:
     void startDrawing();

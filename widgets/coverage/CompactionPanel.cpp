@@ -32,8 +32,17 @@ CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverla
     v->addLayout(liftRow);
     m_table = new QTableWidget(0, 6);
     m_table->setHorizontalHeaderLabels(
-        {tr("Area"), tr("Covered %"), tr("At target %"), tr("Under %"), tr("Over %"), tr("Incomplete")});
+        {tr("Area"), tr("Covered %"), tr("Target %"), tr("Under %"), tr("Over %"), tr("Incompl.")});
+    m_table->horizontalHeaderItem(2)->setToolTip(tr("Covered cells within the target passes, % of the area"));
+    m_table->horizontalHeaderItem(5)->setToolTip(
+        tr("Cells a given-up ribbon gap may have passed over: their counts are lower bounds"));
+    // The numbers as narrow as they are, the name takes the rest (the panel is about 300 px wide at 1366 x
+    // 768).
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_table->horizontalHeader()->setMinimumSectionSize(40);
+    m_table->setWordWrap(false);
+    m_table->setTextElideMode(Qt::ElideRight);
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -61,6 +70,8 @@ CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverla
     m_throttle.setInterval(2000);
     connect(&m_throttle, &QTimer::timeout, this, &CompactionPanel::refresh);
     connect(session, &CompactionSession::changed, this, &CompactionPanel::refresh);
+    // The statistics follow the counts (and so the filters: a filter change recounts into a new snapshot).
+    connect(session, &CompactionSession::countsChanged, this, &CompactionPanel::countsChanged);
     connect(m_lift, &QComboBox::currentIndexChanged, this, &CompactionPanel::refresh);
     connect(m_draw, &QPushButton::clicked, this, [this] {
         if (m_overlay->isDrawing())
@@ -86,6 +97,12 @@ CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverla
         m_overlay->setHighlightedArea(row >= 0 ? m_table->item(row, 0)->data(Qt::UserRole).toString()
                                                : QString());
     });
+    // A double click on an area frames it on the map.
+    connect(m_table, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
+        if (auto* it = m_table->item(row, 0))
+            m_overlay->zoomToArea(it->data(Qt::UserRole).toString());
+    });
+    m_table->setToolTip(tr("Double click an area to show it on the map"));
     connect(m_report, &QPushButton::clicked, this, &CompactionPanel::reportAction);
     refresh();
 }

@@ -182,6 +182,25 @@ private slots:
         QCOMPARE(g.snapshot()->settings(), g.settings());
     }
 
+    // Issue 17 §3: the report's data time range is that of the counted positions (not of the filtered ones).
+    void dataTimeRangeOfCountedPositions() {
+        PassCountGrid g{PassCountSettings{}};
+        QCOMPARE(g.snapshot()->dataFromMs(), std::int64_t(0));
+        feed(g, 1, run(0, 10, 0, 0, 0, kGood, 2.0, kT0)); // vibrating: counted, kT0 ... kT0 + 20 s
+        feed(g, 1, run(10, 0, 0, 0, 100, kPosValid | kPosAccuracyHigh, 2.0, kT0 + 7200'000)); // static: not
+        auto snap = g.snapshot();
+        QVERIFY2(snap->dataFromMs() >= kT0 && snap->dataFromMs() <= kT0 + 1000,
+                 qPrintable(QString::number(snap->dataFromMs() - kT0)));
+        QCOMPARE(snap->dataToMs(), kT0 + 20'000);
+        // A filter change clears the grid: the range is that of the recount.
+        PassCountSettings any;
+        any.vibration = VibrationFilter::Any;
+        g.setSettings(any);
+        QCOMPARE(g.snapshot()->dataFromMs(), std::int64_t(0));
+        feed(g, 1, run(10, 0, 0, 0, 100, kPosValid | kPosAccuracyHigh, 2.0, kT0 + 7200'000));
+        QCOMPARE(g.snapshot()->dataToMs(), kT0 + 7200'000 + 20'000);
+    }
+
     void givenUpGapIsCountedAfterNeverAcross() {
         auto st = RibbonStore::inMemory();
         auto r = run(0, 20, 0, 0); // slots 0..40, x = slot / 2

@@ -169,6 +169,16 @@ private slots:
         QVERIFY(QString::fromStdString(bad.error()).contains("compaction/areas/0/points") ||
                 QString::fromStdString(bad.error()).contains("points"));
         QVERIFY(QString::fromStdString(bad.error()).contains("name"));
+        // The simulated paving job's LandXML file is next to the configuration, like the design.
+        auto sim = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},
+            "simulation":{"enabled":true,"osyris_paving_job":"../designs/job.xml"}})",
+                                   "/etc/ocu/sites/site.json");
+        QVERIFY2(sim.ok(), sim.ok() ? "" : sim.error().c_str());
+        QCOMPARE(sim->simulation.osyrisPavingJob, std::string("/etc/ocu/designs/job.xml"));
+        sim = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},
+            "simulation":{"enabled":true,"osyris_paving_job":"built-in"}})",
+                              "/etc/ocu/sites/site.json");
+        QCOMPARE(sim->simulation.osyrisPavingJob, std::string("built-in"));
     }
 };
 
