@@ -224,6 +224,8 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
 }
 
 TeleopPanel::~TeleopPanel() {
+    // Closing the window hides the video pane after this object is gone: no more calls into it from there.
+    disconnect(m_video, nullptr, this, nullptr);
     if (!m_subsystem || m_session == Session::Closed)
         return;
     if (m_gate) // no handler: this panel is going away
@@ -281,6 +283,8 @@ void TeleopPanel::setVehicle(std::uint16_t subsystem) {
     if (m_subsystem && m_session != Session::Closed)
         endSession(tr("vehicle changed"));
     m_subsystem = subsystem;
+    // Another vehicle: its video watchdog starts afresh (waits for that vehicle's first frame).
+    m_video->watchdog().reset();
     showDriveProblem({});
     refresh();
 }
@@ -457,11 +461,13 @@ void TeleopPanel::refresh() {
     m_stickCamera->setEnabled(cam && cam->panTilt);
     if (!canDrive && m_session != Session::Closed) {
         // The vehicle's own state ends the session: say why, loudly, and end it through the gate.
+        // The vehicle's own state first (a lost link or an emergency also loses the video, and is the
+        // stronger reason); the video watchdog's reason when the vehicle is fine.
         const QString why =
-            !videoOk ? hold
-            : !up    ? tr("the link to %1 is %2").arg(s->callSign, JausSubsystemModel::linkText(s->link))
+            !up ? tr("the link to %1 is %2").arg(s->callSign, JausSubsystemModel::linkText(s->link))
             : s->emergency ? tr("%1 is in EMERGENCY").arg(s->callSign)
             : !ours        ? tr("this console no longer controls %1").arg(s->callSign)
+            : !videoOk     ? hold
                            : tr("driving is not allowed");
         showDriveProblem(tr("Driving stopped: %1").arg(why));
         m_waitForRelease = true;
