@@ -115,9 +115,13 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     deviceRow->addWidget(m_mapButton);
     settings->addRow(tr("Joystick"), deviceRow);
 
-    auto* inputs = new QHBoxLayout;
+    // Labels wrap above their fields when the panel is narrow.
+    settings->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    auto* inputs = new QBoxLayout(QBoxLayout::LeftToRight);
+    m_inputs = inputs;
     inputs->addWidget(m_stick, 1);
     auto* right = new QVBoxLayout;
+    m_inputsRight = right;
     right->addLayout(settings);
     right->addWidget(m_axes);
     right->addWidget(m_stickCamera);
@@ -141,7 +145,8 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     l->addWidget(m_videoHold);
     l->addWidget(m_video, 3);
     l->addLayout(inputs, 1);
-    auto* stops = new QHBoxLayout;
+    auto* stops = new QBoxLayout(QBoxLayout::LeftToRight);
+    m_stops = stops;
     stops->addWidget(m_estop, 2);
     stops->addWidget(m_clear, 1);
     l->addLayout(stops);
@@ -548,7 +553,45 @@ void TeleopPanel::hideEvent(QHideEvent* e) {
     QWidget::hideEvent(e);
 }
 
+void TeleopPanel::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    // In a scroll area (the main window's docks) the panel is never narrower than it needs: the width it
+    // really has is the viewport's.
+    QWidget* source = parentWidget() ? parentWidget() : this;
+    if (source != m_widthSource) {
+        if (m_widthSource && m_widthSource != this)
+            m_widthSource->removeEventFilter(this);
+        m_widthSource = source;
+        if (source != this)
+            source->installEventFilter(this);
+    }
+    fitToWidth();
+}
+
+void TeleopPanel::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    if (m_widthSource == this)
+        fitToWidth();
+}
+
+void TeleopPanel::fitToWidth() {
+    if (!m_inputs || !m_widthSource)
+        return;
+    const QMargins m = layout()->contentsMargins();
+    const int available = m_widthSource->width() - m.left() - m.right();
+    const int sideBySide =
+        m_stick->minimumSizeHint().width() + m_inputs->spacing() + m_inputsRight->minimumSize().width();
+    const bool narrow = available < sideBySide;
+    const auto dir = narrow ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight;
+    if (m_inputs->direction() != dir)
+        m_inputs->setDirection(dir);
+    if (m_stops->direction() != dir)
+        m_stops->setDirection(dir);
+}
+
 bool TeleopPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_widthSource && watched != this && event->type() == QEvent::Resize)
+        fitToWidth();
     // Keys typed while the stick (or the full-screen video window) has focus drive too.
     const bool fullScreen = watched && watched == m_video->fullScreenWindow();
     if ((watched == m_stick || fullScreen) &&

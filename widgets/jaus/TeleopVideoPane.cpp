@@ -49,6 +49,8 @@ TeleopVideoPane::TeleopVideoPane(QWidget* parent)
       m_resume(new QPushButton(tr("Resume driving"), this)), m_timer(new QTimer(this)) {
     setObjectName(QStringLiteral("teleop-video"));
     m_view->setPlayer(m_player);
+    // In a narrow or short dock the picture keeps 16:9 of the width; the controls below scroll.
+    m_view->setHeightFollowsWidth(true, 480);
     m_view->setPlaceholder(tr("No camera on this vehicle"));
     m_cameraBox->setObjectName(QStringLiteral("combo-camera"));
     m_cameraBox->setToolTip(tr("Camera shown (announced by the vehicle or configured for it)"));
@@ -59,14 +61,18 @@ TeleopVideoPane::TeleopVideoPane(QWidget* parent)
     m_resume->setEnabled(false);
     m_stream->setObjectName(QStringLiteral("label-video-stream"));
 
+    // Narrow docks: the camera names may be cut rather than widen the panel; Resume gets a row of its own
+    // (only while the watchdog holds driving).
+    m_cameraBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_cameraBox->setMinimumContentsLength(8);
     auto* bar = new QHBoxLayout;
     bar->addWidget(new QLabel(tr("Camera"), this));
     bar->addWidget(m_cameraBox, 1);
-    bar->addWidget(m_resume);
     bar->addWidget(m_fullButton);
     auto* l = new QVBoxLayout(this);
     l->setContentsMargins(0, 0, 0, 0);
     l->addLayout(bar);
+    l->addWidget(m_resume);
     l->addWidget(m_view, 1);
     // The stream line (state, resolution, rate, frame age) under the picture, for narrow docks too.
     m_stream->setWordWrap(true);
