@@ -19,6 +19,8 @@
 
 #include <QComboBox>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QVBoxLayout>
 #include <QtTest>
@@ -193,6 +195,30 @@ private slots:
         QTest::keyRelease(&panel, Qt::Key_W, Qt::ShiftModifier);
         QTest::keyRelease(&panel, Qt::Key_Shift);
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(ugv.state().v) < 1e-3, 20000);
+    }
+
+    // A 1366-px laptop's side column (~290 px, the main window's scroll area): the panel fits its width (no
+    // horizontal scrolling), the stick stacks above its settings, the picture keeps 16:9 of the width; in a
+    // wide dock the stick and its settings are side by side again.
+    void narrowDockFits() {
+        Site s;
+        auto* panel = new TeleopPanel(s.bridge.get(), s.ctx.gate(), s.ctx.selection(), nullptr);
+        QScrollArea scroll;
+        scroll.setFrameShape(QFrame::NoFrame);
+        scroll.setWidgetResizable(true);
+        scroll.setWidget(panel);
+        scroll.resize(300, 400);
+        scroll.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&scroll));
+        QTRY_VERIFY(panel->width() <= scroll.viewport()->width());
+        QVERIFY(!scroll.horizontalScrollBar()->isVisible());
+        QVERIFY(panel->stickCameraButton()->y() >= panel->stick()->geometry().bottom());
+        VideoView* view = panel->video()->view();
+        QVERIFY2(view->height() >= view->width() * 9 / 16 - 1,
+                 qPrintable(QStringLiteral("%1x%2").arg(view->width()).arg(view->height())));
+        scroll.resize(1000, 900);
+        QTRY_VERIFY(panel->stickCameraButton()->x() >= panel->stick()->geometry().right());
+        QCOMPARE(panel->width(), scroll.viewport()->width());
     }
 
     // A pane that is not shown receives and decodes nothing (a teleop panel in a hidden tab costs nothing);

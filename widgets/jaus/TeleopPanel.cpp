@@ -465,9 +465,9 @@ void TeleopPanel::refresh() {
     m_panTilt->setEnabled(may && ours && up && !s->emergency && cam && cam->panTilt);
     m_stickCamera->setEnabled(cam && cam->panTilt);
     if (!canDrive && m_session != Session::Closed) {
-        // The vehicle's own state ends the session: say why, loudly, and end it through the gate.
-        // The vehicle's own state first (a lost link or an emergency also loses the video, and is the
-        // stronger reason); the video watchdog's reason when the vehicle is fine.
+        // The vehicle's own state ends the session: say why, loudly, and end it through the gate. The
+        // vehicle's state first (a lost link or an emergency also loses the video, and is the stronger
+        // reason), the video watchdog's reason when the vehicle is fine.
         const QString why =
             !up ? tr("the link to %1 is %2").arg(s->callSign, JausSubsystemModel::linkText(s->link))
             : s->emergency ? tr("%1 is in EMERGENCY").arg(s->callSign)
