@@ -37,7 +37,11 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     QCommandLineOption view(QStringLiteral("view"),
                             QCoreApplication::translate("CommandLine", "What --screenshot captures: all (the "
                                                                        "whole window) or one panel: %1.")
-                                .arg(screenshotViewNames().join(QStringLiteral(", "))),
+                                    .arg(screenshotViewNames().join(QStringLiteral(", "))) +
+                                QLatin1Char(' ') +
+                                QCoreApplication::translate("CommandLine",
+                                                            "all:PANEL: the whole window with that panel in "
+                                                            "front."),
                             QStringLiteral("NAME"), QStringLiteral("all"));
     QCommandLineOption size(QStringLiteral("size"),
                             QCoreApplication::translate("CommandLine", "Window size for the screenshot, e.g. "
@@ -147,7 +151,9 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     o.noSim = p.isSet(noSim);
     o.screenshotFile = p.value(shot);
     o.view = p.value(view).toLower();
-    if (o.view != QLatin1String("all") && !screenshotViewNames().contains(o.view)) {
+    // "all:<panel>" (issue 18): the whole window with that tabbed panel in front.
+    const QString viewPanel = o.view.startsWith(QLatin1String("all:")) ? o.view.mid(4) : o.view;
+    if (o.view != QLatin1String("all") && !screenshotViewNames().contains(viewPanel)) {
         error = QCoreApplication::translate("CommandLine", "--view: unknown view \"%1\"; use all, %2")
                     .arg(o.view, screenshotViewNames().join(QStringLiteral(", ")));
         return false;

@@ -19,10 +19,13 @@ namespace ocu {
 
 QString saveScreenshot(MainWindow& window, const QString& view, const QString& file) {
     QWidget* target = &window;
+    // "all:<panel>": the whole window with that (tabbed) panel brought to the front.
+    const bool whole = view.startsWith(QLatin1String("all:"));
+    const QString panel = whole ? view.mid(4) : view;
     if (view != QLatin1String("all")) {
         target = nullptr;
         for (Panel p : MainWindow::panels()) {
-            if (MainWindow::panelKey(p) == view) {
+            if (MainWindow::panelKey(p) == panel) {
                 QDockWidget* d = window.dock(p);
                 d->show();
                 d->raise(); // a tabbed panel must be the visible tab to be painted
@@ -50,7 +53,7 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
                 };
                 while (pending() && t.elapsed() < 10000)
                     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
-                target = d;
+                target = whole ? static_cast<QWidget*>(&window) : d;
             }
         }
         if (!target)

@@ -5,7 +5,8 @@ namespace ocu {
 
 class MainWindow;
 
-// Grabs the whole window (view "all") or one panel by its key and writes a PNG. Returns an empty
+// Grabs the whole window (view "all"), one panel by its key, or the whole window with one (tabbed) panel
+// brought to the front ("all:<key>"), and writes a PNG. Returns an empty
 // string on success, else the reason.
 QString saveScreenshot(MainWindow& window, const QString& view, const QString& file);
 

@@ -81,9 +81,14 @@ bool VideoWatchdog::resume() {
 
 void VideoWatchdog::reset() {
     m_tripped = false;
-    m_hadGood = false;
     m_tripReason.clear();
+    restartStream();
+}
+
+void VideoWatchdog::restartStream() {
+    m_hadGood = false;
     m_frameTimeMs.reset();
+    m_ageMs.reset();
     m_state = VideoState::Idle;
     m_good = false;
 }

@@ -46,8 +46,11 @@ public:
     // The operator's deliberate resume: clears the trip only while the video is good. Returns whether
     // driving is allowed now.
     bool resume();
-    // A new stream (vehicle or camera changed by the operator): forget the trip, wait for the first frame.
+    // Another vehicle (a new drive session): forget the trip, wait for the first frame.
     void reset();
+    // The same vehicle's stream starts over (another camera, the panel shown again): wait for its first frame
+    // without latching a trip on the way, but keep a trip that is already there (only resume() clears it).
+    void restartStream();
 
 private:
     Clock m_clock;

@@ -40,6 +40,15 @@ private slots:
         QCOMPARE(o.logCategories, QString("ocu.jaus,ocu.iso"));
         QVERIFY(o.resetLayout);
     }
+    // Issue 18: the whole window with a tabbed panel in front (docs/teleop-video-*.png).
+    void wholeWindowWithPanel() {
+        CommandLineOptions o;
+        QString e;
+        QVERIFY2(parse({"--screenshot", "o.png", "--view", "all:teleop"}, o, e), qPrintable(e));
+        QCOMPARE(o.view, QString("all:teleop"));
+        QVERIFY(!parse({"--screenshot", "o.png", "--view", "all:radar"}, o, e));
+        QVERIFY(e.contains("unknown view \"all:radar\""));
+    }
     void headless() {
         CommandLineOptions o;
         QString e;

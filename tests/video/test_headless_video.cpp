@@ -52,8 +52,12 @@ private slots:
         JausVideoHeadless video(&bridge);
         video.attach(mon);
 
+        // The endpoints come from Digital Resource Discovery first, the pan-tilt mount from the Visual
+        // Sensor and Pan Tilt services a little later (under load, seconds later): wait for both.
         QTRY_VERIFY_WITH_TIMEOUT(
-            stream(run(*mon, R"({"cmd":"video_status"})"), 0, 1).contains(QStringLiteral("url")), 30000);
+            stream(run(*mon, R"({"cmd":"video_status"})"), 0, 1).contains(QStringLiteral("url")) &&
+                stream(run(*mon, R"({"cmd":"video_status"})"), 0, 0)[QStringLiteral("pan_tilt")].toBool(),
+            30000);
         QJsonObject st = run(*mon, R"({"cmd":"video_status","req":3})");
         QCOMPARE(st[QStringLiteral("type")].toString(), QStringLiteral("result"));
         QCOMPARE(st[QStringLiteral("req")].toInt(), 3);

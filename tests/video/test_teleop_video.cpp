@@ -19,7 +19,10 @@
 
 #include <QComboBox>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
+#include <QVBoxLayout>
 #include <QtTest>
 
 #include <cmath>
@@ -170,6 +173,11 @@ private slots:
         QVERIFY(!video->resumeButton()->isEnabled()); // video still gone
         QTest::keyRelease(&panel, Qt::Key_W, Qt::ShiftModifier);
         QTest::keyRelease(&panel, Qt::Key_Shift);
+        // Another camera while tripped: the trip stays (only Resume clears it), also once that camera plays.
+        video->selectCamera(0);
+        QCOMPARE(video->player()->url(), video->cameras()[0].url);
+        QVERIFY(video->watchdog().tripped());
+        QVERIFY(!panel.controller()->isEnabled());
 
         // Video back: still held until the operator resumes.
         QVERIFY(server.start());
@@ -187,6 +195,72 @@ private slots:
         QTest::keyRelease(&panel, Qt::Key_W, Qt::ShiftModifier);
         QTest::keyRelease(&panel, Qt::Key_Shift);
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(ugv.state().v) < 1e-3, 20000);
+    }
+
+    // A 1366-px laptop's side column (~290 px, the main window's scroll area): the panel fits its width (no
+    // horizontal scrolling), the stick stacks above its settings, the picture keeps 16:9 of the width; in a
+    // wide dock the stick and its settings are side by side again.
+    void narrowDockFits() {
+        Site s;
+        auto* panel = new TeleopPanel(s.bridge.get(), s.ctx.gate(), s.ctx.selection(), nullptr);
+        QScrollArea scroll;
+        scroll.setFrameShape(QFrame::NoFrame);
+        scroll.setWidgetResizable(true);
+        scroll.setWidget(panel);
+        scroll.resize(300, 400);
+        scroll.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&scroll));
+        QTRY_VERIFY(panel->width() <= scroll.viewport()->width());
+        QVERIFY(!scroll.horizontalScrollBar()->isVisible());
+        QVERIFY(panel->stickCameraButton()->y() >= panel->stick()->geometry().bottom());
+        VideoView* view = panel->video()->view();
+        QVERIFY2(view->height() >= view->width() * 9 / 16 - 1,
+                 qPrintable(QStringLiteral("%1x%2").arg(view->width()).arg(view->height())));
+        scroll.resize(1000, 900);
+        QTRY_VERIFY(panel->stickCameraButton()->x() >= panel->stick()->geometry().right());
+        QCOMPARE(panel->width(), scroll.viewport()->width());
+    }
+
+    // A pane that is not shown receives and decodes nothing (a teleop panel in a hidden tab costs nothing);
+    // shown again, it plays again; the full-screen window keeps it playing while the pane is hidden.
+    void hiddenPaneDecodesNothing() {
+        TestRtspServer server({{"/front", 60}}, 640, 360, 30);
+        QVERIFY(server.start());
+        QWidget host;
+        auto* pane = new TeleopVideoPane(&host);
+        auto* l = new QVBoxLayout(&host);
+        l->addWidget(pane);
+        host.resize(640, 400);
+        // Cameras known before the pane is ever shown: nothing is played.
+        pane->setCameras(
+            {JausVideoEndpoint{1, 1, QString::fromStdString(server.url("/front")), {}, false, true}});
+        QCOMPARE(pane->player()->state(), VideoState::Idle);
+        host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&host));
+        QTRY_VERIFY_WITH_TIMEOUT(pane->player()->state() == VideoState::Playing, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(pane->watchdog().allowsDriving(), 30000);
+
+        pane->hide();
+        QCOMPARE(pane->player()->state(), VideoState::Idle);
+        const quint64 frames = pane->player()->status().frames;
+        QTest::qWait(500);
+        QCOMPARE(pane->player()->status().frames, frames); // nothing decoded meanwhile
+        QVERIFY(!pane->watchdog().tripped());              // hiding is not a video loss
+        QVERIFY(!pane->watchdog().allowsDriving());        // but nothing is driven without the picture
+
+        pane->show();
+        QTRY_VERIFY_WITH_TIMEOUT(pane->player()->state() == VideoState::Playing, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(pane->watchdog().allowsDriving(), 30000);
+        QVERIFY(!pane->watchdog().tripped());
+
+        // Full screen, then the pane's tab goes away: the window keeps the stream; closing it stops it.
+        pane->openFullScreen();
+        QVERIFY(pane->fullScreenWindow());
+        pane->hide();
+        QVERIFY(pane->player()->isActive());
+        pane->closeFullScreen();
+        QTRY_VERIFY(!pane->fullScreenWindow());
+        QCOMPARE(pane->player()->state(), VideoState::Idle);
     }
 
     // The detached full-screen window shows the same stream; Esc returns.

@@ -64,7 +64,30 @@ private slots:
         QVERIFY(!w.check());
         QVERIFY(w.tripped());
 
-        // The operator switches cameras: no latch, wait for the new stream's first frame.
+        // Another camera of the same vehicle (or the panel shown again) while tripped: the trip stays; the
+        // new stream's good frames do not let driving resume by themselves, only the operator's resume.
+        w.restartStream();
+        QVERIFY(w.tripped());
+        QVERIFY(!w.videoGood());
+        QVERIFY(!w.check());
+        QVERIFY(!w.resume()); // no good frame of the new stream yet
+        w.setStream(VideoState::Playing, now);
+        QVERIFY(!w.check());
+        QVERIFY(w.tripped());
+        QVERIFY(w.resume());
+
+        // A new stream before any trip: it waits for the first frame without latching on the way.
+        w.restartStream();
+        w.setStream(VideoState::Connecting, std::nullopt);
+        QVERIFY(!w.check());
+        QVERIFY(!w.tripped());
+        w.setStream(VideoState::Playing, now);
+        QVERIFY(w.check());
+
+        // Another vehicle: the trip is forgotten, wait for that vehicle's first frame.
+        w.setStream(VideoState::Lost, now);
+        QVERIFY(!w.check());
+        QVERIFY(w.tripped());
         w.reset();
         QVERIFY(!w.tripped());
         QVERIFY(!w.check());

@@ -115,9 +115,13 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     deviceRow->addWidget(m_mapButton);
     settings->addRow(tr("Joystick"), deviceRow);
 
-    auto* inputs = new QHBoxLayout;
+    // Labels wrap above their fields when the panel is narrow.
+    settings->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    auto* inputs = new QBoxLayout(QBoxLayout::LeftToRight);
+    m_inputs = inputs;
     inputs->addWidget(m_stick, 1);
     auto* right = new QVBoxLayout;
+    m_inputsRight = right;
     right->addLayout(settings);
     right->addWidget(m_axes);
     right->addWidget(m_stickCamera);
@@ -141,7 +145,8 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     l->addWidget(m_videoHold);
     l->addWidget(m_video, 3);
     l->addLayout(inputs, 1);
-    auto* stops = new QHBoxLayout;
+    auto* stops = new QBoxLayout(QBoxLayout::LeftToRight);
+    m_stops = stops;
     stops->addWidget(m_estop, 2);
     stops->addWidget(m_clear, 1);
     l->addLayout(stops);
@@ -224,6 +229,8 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
 }
 
 TeleopPanel::~TeleopPanel() {
+    // Closing the window hides the video pane after this object is gone: no more calls into it from there.
+    disconnect(m_video, nullptr, this, nullptr);
     if (!m_subsystem || m_session == Session::Closed)
         return;
     if (m_gate) // no handler: this panel is going away
@@ -281,6 +288,8 @@ void TeleopPanel::setVehicle(std::uint16_t subsystem) {
     if (m_subsystem && m_session != Session::Closed)
         endSession(tr("vehicle changed"));
     m_subsystem = subsystem;
+    // Another vehicle: its video watchdog starts afresh (waits for that vehicle's first frame).
+    m_video->watchdog().reset();
     showDriveProblem({});
     refresh();
 }
@@ -456,12 +465,14 @@ void TeleopPanel::refresh() {
     m_panTilt->setEnabled(may && ours && up && !s->emergency && cam && cam->panTilt);
     m_stickCamera->setEnabled(cam && cam->panTilt);
     if (!canDrive && m_session != Session::Closed) {
-        // The vehicle's own state ends the session: say why, loudly, and end it through the gate.
+        // The vehicle's own state ends the session: say why, loudly, and end it through the gate. The
+        // vehicle's state first (a lost link or an emergency also loses the video, and is the stronger
+        // reason), the video watchdog's reason when the vehicle is fine.
         const QString why =
-            !videoOk ? hold
-            : !up    ? tr("the link to %1 is %2").arg(s->callSign, JausSubsystemModel::linkText(s->link))
+            !up ? tr("the link to %1 is %2").arg(s->callSign, JausSubsystemModel::linkText(s->link))
             : s->emergency ? tr("%1 is in EMERGENCY").arg(s->callSign)
             : !ours        ? tr("this console no longer controls %1").arg(s->callSign)
+            : !videoOk     ? hold
                            : tr("driving is not allowed");
         showDriveProblem(tr("Driving stopped: %1").arg(why));
         m_waitForRelease = true;
@@ -542,7 +553,45 @@ void TeleopPanel::hideEvent(QHideEvent* e) {
     QWidget::hideEvent(e);
 }
 
+void TeleopPanel::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    // In a scroll area (the main window's docks) the panel is never narrower than it needs: the width it
+    // really has is the viewport's.
+    QWidget* source = parentWidget() ? parentWidget() : this;
+    if (source != m_widthSource) {
+        if (m_widthSource && m_widthSource != this)
+            m_widthSource->removeEventFilter(this);
+        m_widthSource = source;
+        if (source != this)
+            source->installEventFilter(this);
+    }
+    fitToWidth();
+}
+
+void TeleopPanel::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    if (m_widthSource == this)
+        fitToWidth();
+}
+
+void TeleopPanel::fitToWidth() {
+    if (!m_inputs || !m_widthSource)
+        return;
+    const QMargins m = layout()->contentsMargins();
+    const int available = m_widthSource->width() - m.left() - m.right();
+    const int sideBySide =
+        m_stick->minimumSizeHint().width() + m_inputs->spacing() + m_inputsRight->minimumSize().width();
+    const bool narrow = available < sideBySide;
+    const auto dir = narrow ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight;
+    if (m_inputs->direction() != dir)
+        m_inputs->setDirection(dir);
+    if (m_stops->direction() != dir)
+        m_stops->setDirection(dir);
+}
+
 bool TeleopPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_widthSource && watched != this && event->type() == QEvent::Resize)
+        fitToWidth();
     // Keys typed while the stick (or the full-screen video window) has focus drive too.
     const bool fullScreen = watched && watched == m_video->fullScreenWindow();
     if ((watched == m_stick || fullScreen) &&

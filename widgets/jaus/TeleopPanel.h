@@ -18,6 +18,7 @@ class QLabel;
 class QComboBox;
 class QSlider;
 class QPushButton;
+class QBoxLayout;
 
 namespace ocu {
 
@@ -80,6 +81,8 @@ protected:
     void keyReleaseEvent(QKeyEvent* e) override;
     void focusOutEvent(QFocusEvent* e) override;
     void hideEvent(QHideEvent* e) override;
+    void showEvent(QShowEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
@@ -125,6 +128,13 @@ private:
     QLabel* m_videoHold = nullptr;
     QHash<quint16, QVector<JausVideoEndpoint>> m_configuredCameras;
     bool m_autoSelect = true; // until a vehicle is set (selection or setVehicle)
+    // Narrow docks (a 1366 px laptop's side column): the stick above its settings and the stop buttons
+    // stacked, instead of side by side, so the panel fits the width it has (the video takes that width).
+    void fitToWidth();
+    QBoxLayout* m_inputs = nullptr;
+    QBoxLayout* m_inputsRight = nullptr;
+    QBoxLayout* m_stops = nullptr;
+    QPointer<QWidget> m_widthSource; // whose width is available (the scroll area's viewport, or the panel)
 };
 
 } // namespace ocu

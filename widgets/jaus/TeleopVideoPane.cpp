@@ -49,6 +49,8 @@ TeleopVideoPane::TeleopVideoPane(QWidget* parent)
       m_resume(new QPushButton(tr("Resume driving"), this)), m_timer(new QTimer(this)) {
     setObjectName(QStringLiteral("teleop-video"));
     m_view->setPlayer(m_player);
+    // In a narrow or short dock the picture keeps 16:9 of the width; the controls below scroll.
+    m_view->setHeightFollowsWidth(true, 480);
     m_view->setPlaceholder(tr("No camera on this vehicle"));
     m_cameraBox->setObjectName(QStringLiteral("combo-camera"));
     m_cameraBox->setToolTip(tr("Camera shown (announced by the vehicle or configured for it)"));
@@ -59,14 +61,18 @@ TeleopVideoPane::TeleopVideoPane(QWidget* parent)
     m_resume->setEnabled(false);
     m_stream->setObjectName(QStringLiteral("label-video-stream"));
 
+    // Narrow docks: the camera names may be cut rather than widen the panel; Resume gets a row of its own
+    // (only while the watchdog holds driving).
+    m_cameraBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_cameraBox->setMinimumContentsLength(8);
     auto* bar = new QHBoxLayout;
     bar->addWidget(new QLabel(tr("Camera"), this));
     bar->addWidget(m_cameraBox, 1);
-    bar->addWidget(m_resume);
     bar->addWidget(m_fullButton);
     auto* l = new QVBoxLayout(this);
     l->setContentsMargins(0, 0, 0, 0);
     l->addLayout(bar);
+    l->addWidget(m_resume);
     l->addWidget(m_view, 1);
     // The stream line (state, resolution, rate, frame age) under the picture, for narrow docks too.
     m_stream->setWordWrap(true);
@@ -91,8 +97,10 @@ TeleopVideoPane::TeleopVideoPane(QWidget* parent)
 }
 
 TeleopVideoPane::~TeleopVideoPane() {
-    if (m_window)
+    if (m_window) {
+        disconnect(m_window, nullptr, this, nullptr); // no playback decisions while going away
         delete m_window.data();
+    }
 }
 
 void TeleopVideoPane::setCameras(const QVector<JausVideoEndpoint>& cameras) {
@@ -139,18 +147,45 @@ void TeleopVideoPane::selectCamera(int index) {
 }
 
 void TeleopVideoPane::play() {
-    // A new stream: the watchdog waits for its first frame (the operator chose it; no latch).
-    m_watchdog.reset();
+    // A new stream: the watchdog waits for its first frame without latching on the way; a trip already
+    // there stays until the operator resumes (another camera does not clear it).
+    m_watchdog.restartStream();
     const auto cam = currentCamera();
     if (!cam) {
         m_player->stop();
         m_player->setUrl({});
     } else {
         m_player->setUrl(cam->url);
-        if (!m_player->isActive())
+        if (wantsVideo() && !m_player->isActive())
             m_player->play();
     }
     checkWatchdog();
+}
+
+void TeleopVideoPane::updatePlayback() {
+    const bool want = wantsVideo() && currentCamera();
+    if (want == m_player->isActive())
+        return;
+    // Not shown: nothing received or decoded. Driving is not possible meanwhile (the panel releases its
+    // controls when hidden, and the watchdog waits for video again); an existing trip is kept.
+    m_watchdog.restartStream();
+    if (want)
+        m_player->play();
+    else
+        m_player->stop();
+    checkWatchdog();
+}
+
+void TeleopVideoPane::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    m_shown = true;
+    updatePlayback();
+}
+
+void TeleopVideoPane::hideEvent(QHideEvent* e) {
+    QWidget::hideEvent(e);
+    m_shown = false;
+    updatePlayback();
 }
 
 void TeleopVideoPane::setOverlay(const QStringList& lines) {
@@ -202,8 +237,13 @@ void TeleopVideoPane::openFullScreen() {
     auto* w = new FullScreenVideo(m_windowView, this);
     if (m_keyFilter)
         w->installEventFilter(m_keyFilter);
-    connect(w, &QObject::destroyed, this, [this] { m_windowView = nullptr; });
+    connect(w, &QObject::destroyed, this, [this] {
+        m_windowView = nullptr;
+        m_window = nullptr;
+        updatePlayback();
+    });
     m_window = w;
+    updatePlayback();
     updateStatus();
     w->showFullScreen();
     w->activateWindow();

@@ -27,6 +27,8 @@ public:
     ~TeleopVideoPane() override;
 
     // The vehicle's cameras; the current one keeps playing when it is still among them. Empty = no video.
+    // The stream is played (received and decoded) only while the pane is shown or its full-screen window is
+    // open: a teleop panel in a hidden tab, a closed dock or a minimised window costs nothing.
     void setCameras(const QVector<JausVideoEndpoint>& cameras);
     QVector<JausVideoEndpoint> cameras() const { return m_cameras; }
     // The camera shown (nullopt without cameras); selectCamera switches by index.
@@ -50,6 +52,10 @@ public:
     QWidget* fullScreenWindow() const { return m_window; }
     void setKeyFilter(QObject* filter) { m_keyFilter = filter; }
 
+protected:
+    void showEvent(QShowEvent* e) override;
+    void hideEvent(QHideEvent* e) override;
+
 signals:
     // The watchdog's verdict (allowsDriving, tripped or videoGood) changed.
     void watchdogChanged();
@@ -60,6 +66,9 @@ signals:
 
 private:
     void play();
+    // Starts or stops the player as the pane's visibility (or the full-screen window) asks.
+    void updatePlayback();
+    bool wantsVideo() const { return m_shown || m_window; }
     void updateStatus();
 
     VideoPlayer* m_player;
@@ -76,6 +85,7 @@ private:
     QPointer<QObject> m_keyFilter;
     QStringList m_overlay;
     bool m_lastAllows = true, m_lastTripped = false, m_lastGood = false;
+    bool m_shown = false;
 };
 
 } // namespace ocu

@@ -5,6 +5,8 @@
 #include <QPainter>
 #include <QTimer>
 
+#include <algorithm>
+
 namespace ocu {
 
 VideoView::VideoView(QWidget* parent) : QWidget(parent) {
@@ -15,6 +17,20 @@ VideoView::VideoView(QWidget* parent) : QWidget(parent) {
     auto* t = new QTimer(this);
     connect(t, &QTimer::timeout, this, qOverload<>(&QWidget::update));
     t->start(250);
+}
+
+void VideoView::setHeightFollowsWidth(bool on, int maxHeight) {
+    m_hfwMax = on ? std::max(90, maxHeight) : 0;
+    QSizePolicy p = sizePolicy();
+    p.setHeightForWidth(on);
+    setSizePolicy(p);
+    updateGeometry();
+}
+
+int VideoView::heightForWidth(int w) const {
+    if (m_hfwMax <= 0)
+        return QWidget::heightForWidth(w);
+    return std::clamp(w * 9 / 16, 90, m_hfwMax);
 }
 
 void VideoView::setPlayer(VideoPlayer* player) {
@@ -106,7 +122,14 @@ void VideoView::paintEvent(QPaintEvent*) {
     };
     // Bottom left: the caller's lines (speed, heading, drive state); bottom right: the stream.
     box(m_overlay, false, Qt::white);
-    if (m_player && !f.image.isNull()) {
+    // The stream box only where it does not run into the caller's lines (a narrow dock: the pane shows the
+    // same line under the picture).
+    int overlayWidth = 0;
+    for (const QString& l : m_overlay)
+        overlayWidth = std::max(overlayWidth, fm.horizontalAdvance(l));
+    const bool roomForStream =
+        m_overlay.isEmpty() || overlayWidth + fm.horizontalAdvance(streamText()) + 40 <= area.width();
+    if (m_player && !f.image.isNull() && roomForStream) {
         const bool good = st.state == VideoState::Playing;
         box({streamText()}, true, good ? QColor(140, 255, 140) : QColor(255, 120, 120));
     }

@@ -35,6 +35,12 @@ public:
 
     QSize sizeHint() const override { return {640, 360}; }
     QSize minimumSizeHint() const override { return {160, 90}; }
+    // In a panel (the teleop dock, which may be narrow and scrolls), the picture's height follows its width
+    // (16:9, up to maxHeight) rather than a fixed 360 px hint: no tall black bars in a narrow column, no
+    // postage stamp either. Off by default (a full-screen window takes what it gets).
+    void setHeightFollowsWidth(bool on, int maxHeight = 400);
+    bool hasHeightForWidth() const override { return m_hfwMax > 0; }
+    int heightForWidth(int w) const override;
 
 signals:
     void doubleClicked();
@@ -52,6 +58,7 @@ private:
     QString m_placeholder;
     QRect m_frameRect;
     quint64 m_paintedFrame = 0;
+    int m_hfwMax = 0;
 };
 
 } // namespace ocu
