@@ -19,7 +19,7 @@ namespace ocu {
 
 CompactionSession::CompactionSession(const CompactionConfig& config, const GeoFrame& siteFrame,
                                      QObject* parent)
-    : QObject(parent), m_config(config), m_site(siteFrame) {
+    : CompactionView(parent), m_config(config), m_site(siteFrame) {
     for (const auto& a : m_config.areas) {
         CompactionArea area{QString::fromStdString(a.name), QString::fromStdString(a.source), {}};
         for (const auto& g : a.ring)
@@ -218,8 +218,55 @@ void CompactionSession::rebuildGeometry() {
             poly << QPointF(e.e, e.n);
         }
         g.areas.push_back({a.name, poly});
+        g.areaFromDesign.push_back(a.source == QLatin1String("design"));
     }
     m_geometry = std::move(g);
+}
+
+QString CompactionView::stationText(double station, int decimals) {
+    return QString::fromStdString(landxml::formatStation(station, decimals));
+}
+
+CompactionView::DesignInfo CompactionSession::designInfo() const {
+    DesignInfo d;
+    if (!m_design)
+        return d;
+    d.loaded = true;
+    d.path = m_designPath;
+    d.alignments = int(m_design->alignments.size());
+    d.boundaries = int(m_design->boundaries.size());
+    d.warnings = designWarnings();
+    return d;
+}
+
+CompactionView::CoverageTable CompactionSession::coverageTable(int lift) const {
+    const CoverageJob job = this->job();
+    CoverageTable out;
+    if (job.snapshot)
+        for (int i = 0; i < job.snapshot->liftCount(); ++i)
+            out.lifts.push_back({job.snapshot->liftBottom(i), job.snapshot->liftTop(i)});
+    CoverageTables t;
+    if (job.snapshot && m_haveWorksite) {
+        CoverageFrames frames;
+        if (frames.init(job).isEmpty())
+            t = computeCoverageTables(job, frames, lift);
+    }
+    for (const CompactionArea& a : job.areas) {
+        AreaRow row;
+        row.name = a.name;
+        row.fromDesign = a.source == QLatin1String("design");
+        for (const AreaStats& x : t.areas)
+            if (x.name == a.name && x.stats.cells) {
+                row.hasStats = true;
+                row.coveragePercent = x.stats.coveragePercent();
+                row.atTargetPercent = x.stats.percentOf(x.stats.atTarget);
+                row.underPercent = x.stats.percentOf(x.stats.under);
+                row.overPercent = x.stats.percentOf(x.stats.over);
+                row.incompleteCells = x.stats.incomplete;
+            }
+        out.areas.push_back(row);
+    }
+    return out;
 }
 
 CoverageJob CompactionSession::job() const {

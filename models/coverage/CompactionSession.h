@@ -2,6 +2,7 @@
 // The site manager's compaction job in the console (issue 17): the LandXML design, the named compaction
 // areas (from the design's boundaries or drawn on the map, saved with the site configuration), their
 // geometry in the site frame for the maps, and the coverage report of the current pass counts.
+#include "models/coverage/CompactionView.h"
 #include "models/coverage/CoverageReport.h"
 #include "protocols/site/SiteConfig.h"
 
@@ -14,7 +15,7 @@ namespace ocu {
 
 class CrsTransform;
 
-class CompactionSession : public QObject {
+class CompactionSession : public CompactionView {
     Q_OBJECT
 public:
     CompactionSession(const CompactionConfig& config, const GeoFrame& siteFrame, QObject* parent = nullptr);
@@ -28,28 +29,19 @@ public:
     QStringList designWarnings() const;
 
     const QVector<CompactionArea>& areas() const { return m_areas; }
+    int areaCount() const override { return int(m_areas.size()); }
     // A ring drawn on the map (site ENU metres). Names are unique: an existing area of that name is replaced.
-    QString addArea(const QString& name, const QPolygonF& siteEN);
-    bool removeArea(const QString& name);
+    QString addArea(const QString& name, const QPolygonF& siteEN) override;
+    bool removeArea(const QString& name) override;
     // Writes the drawn areas into the site configuration file's "compaction" section (other keys untouched);
     // a configuration that is not a writable file (the built-in site) saves next to the user's data. Empty
     // string on success.
-    QString saveAreas();
-    QString areasFile() const; // where saveAreas writes
+    QString saveAreas() override;
+    QString areasFile() const override; // where saveAreas writes
 
-    // Geometry in the site frame (ENU metres) for the 2D/3D maps.
-    struct Tick {
-        QPointF left, right; // across the centre line
-        double station = 0;
-    };
-    struct MapGeometry {
-        QVector<QPolygonF> centreLines;
-        QVector<QPolygonF> boundaries;
-        QVector<Tick> ticks; // every tickSpacing m
-        QVector<QPair<QString, QPolygonF>> areas;
-    };
-    const MapGeometry& mapGeometry() const { return m_geometry; }
-    static constexpr double kTickSpacing = 100;
+    const MapGeometry& mapGeometry() const override { return m_geometry; }
+    DesignInfo designInfo() const override;
+    CoverageTable coverageTable(int lift) const override;
 
     // Where the pass counts come from (the OSYRIS layer's snapshot) and who made them.
     void setSnapshotSource(std::function<std::shared_ptr<const osyris::PassCountSnapshot>()> f) {
@@ -59,19 +51,13 @@ public:
         m_worksite = g;
         m_haveWorksite = true;
     }
-    bool hasWorksite() const { return m_haveWorksite; }
+    bool hasWorksite() const override { return m_haveWorksite; }
     void setMachines(const QStringList& names) { m_machines = names; }
     void setSiteName(const QString& n) { m_siteName = n; }
 
     CoverageJob job() const;
     // The headless/CLI command: {"pdf","csv","geotiff","area","lift"} -> the report's result.
-    QJsonObject reportCommand(const QJsonObject& cmd) const;
-
-signals:
-    void changed(); // design or areas
-    // The pass counts behind the snapshot source changed (a new snapshot, a recount after a filter change);
-    // emitted by whoever feeds the session (app/CompactionSetup: the OSYRIS bridge's passCountChanged).
-    void countsChanged();
+    QJsonObject reportCommand(const QJsonObject& cmd) const override;
 
 private:
     void rebuildGeometry();

@@ -1,5 +1,7 @@
 #include "models/coverage/CoverageReport.h"
 
+#include "models/PdfPageWriter.h"
+
 #include "models/PassCountLayer.h"
 #include "protocols/site/CrsTransform.h"
 
@@ -689,71 +691,6 @@ QImage renderCoverageMap(const CoverageJob& job, const CoverageFrames& frames, i
 
 namespace {
 
-class Pages {
-public:
-    Pages(QPdfWriter& pdf, QPainter& p) : m_pdf(pdf), m_p(p) {
-        m_w = p.viewport().width();
-        m_h = p.viewport().height();
-    }
-    int width() const { return m_w; }
-    int& y() { return m_y; }
-    void need(int h) {
-        if (m_y + h > m_h) {
-            m_pdf.newPage();
-            m_y = 0;
-        }
-    }
-    void heading(const QString& t, double pt) {
-        QFont f = m_p.font();
-        f.setPointSizeF(pt);
-        f.setBold(true);
-        m_p.setFont(f);
-        const int h = m_p.fontMetrics().height();
-        need(h * 2);
-        m_p.drawText(QRect(0, m_y, m_w, h), Qt::AlignLeft | Qt::AlignVCenter, t);
-        m_y += h + h / 3;
-        f.setBold(false);
-        f.setPointSizeF(8.5);
-        m_p.setFont(f);
-    }
-    void text(const QString& t) {
-        const QRect r = m_p.fontMetrics().boundingRect(QRect(0, 0, m_w, 10000), Qt::TextWordWrap, t);
-        need(r.height());
-        m_p.drawText(QRect(0, m_y, m_w, r.height()), Qt::TextWordWrap, t);
-        m_y += r.height();
-    }
-    void table(const QStringList& header, const QVector<QStringList>& rows, const QVector<double>& widths) {
-        const int h = m_p.fontMetrics().height() * 13 / 10;
-        auto line = [&](const QStringList& cells, bool bold, bool shade) {
-            need(h);
-            if (shade)
-                m_p.fillRect(QRect(0, m_y, m_w, h), QColor(0xee, 0xf2, 0xf7));
-            QFont f = m_p.font();
-            f.setBold(bold);
-            m_p.setFont(f);
-            int x = 0;
-            for (int i = 0; i < cells.size() && i < widths.size(); ++i) {
-                const int w = int(widths[i] * m_w);
-                m_p.drawText(QRect(x + 3, m_y, w - 6, h),
-                             (i == 0 ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter, cells[i]);
-                x += w;
-            }
-            f.setBold(false);
-            m_p.setFont(f);
-            m_y += h;
-        };
-        line(header, true, true);
-        for (int i = 0; i < rows.size(); ++i)
-            line(rows[i], false, i % 2 == 1);
-        m_y += h / 2;
-    }
-
-private:
-    QPdfWriter& m_pdf;
-    QPainter& m_p;
-    int m_w = 0, m_h = 0, m_y = 0;
-};
-
 QStringList statsRow(const QString& name, const CoverageStats& s) {
     return {name,
             num(s.areaM2(), 0),
@@ -817,7 +754,7 @@ QString writeCoveragePdf(const CoverageJob& job, const CoverageFrames& frames, c
         return tr("cannot write %1").arg(path);
     p.setRenderHint(QPainter::Antialiasing);
     p.setRenderHint(QPainter::SmoothPixmapTransform);
-    Pages w(pdf, p);
+    PdfPageWriter w(pdf, p, 8.5);
     const int W = w.width();
     w.heading(job.siteName.isEmpty() ? tr("Compaction coverage report")
                                      : tr("Compaction coverage report — %1").arg(job.siteName),
@@ -887,7 +824,7 @@ QString writeCoveragePdf(const CoverageJob& job, const CoverageFrames& frames, c
     rows << statsRow(tr("All counted cells"), t.whole);
     for (const AreaStats& a : t.areas)
         rows << statsRow(a.name, a.stats);
-    w.table(header, rows, widths);
+    w.table(header, rows, widths, {3});
     w.text(tr("Cells belong to an area when their centre lies inside it. covered = at least one pass; "
               "under/at/over "
               "the target as % of the area's cells; min/mean/max over covered cells."));
@@ -906,7 +843,7 @@ QString writeCoveragePdf(const CoverageJob& job, const CoverageFrames& frames, c
                 QStringLiteral("%1 – %2").arg(QString::fromStdString(landxml::formatStation(b.from, 0)),
                                               QString::fromStdString(landxml::formatStation(b.to, 0))),
                 b.stats);
-        w.table(sh, srows, widths);
+        w.table(sh, srows, widths, {3});
     }
     p.end();
     return {};

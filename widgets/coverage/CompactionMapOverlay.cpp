@@ -1,7 +1,6 @@
 #include "widgets/coverage/CompactionMapOverlay.h"
 
-#include "models/coverage/CompactionSession.h"
-#include "protocols/site/LandXml.h"
+#include "models/coverage/CompactionView.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -11,13 +10,13 @@
 
 namespace ocu {
 
-CompactionMapOverlay::CompactionMapOverlay(SiteMapView* view, CompactionSession* session)
+CompactionMapOverlay::CompactionMapOverlay(SiteMapView* view, CompactionView* session)
     // A child of the session, not of the view: a child of the view would be deleted inside ~QWidget, after
     // SiteMapView's own members (its overlay list) are gone, while the QPointer still says it is alive.
     : QObject(session), m_view(view), m_session(session) {
     view->addOverlay(this);
     view->installEventFilter(this);
-    connect(session, &CompactionSession::changed, view, qOverload<>(&QWidget::update));
+    connect(session, &CompactionView::changed, view, qOverload<>(&QWidget::update));
 }
 
 CompactionMapOverlay::~CompactionMapOverlay() {
@@ -162,7 +161,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
     }
     // Station ticks every 100 m; labels when they are at least 60 px apart (else every 500 m or km).
     if (g.ticks.size() >= 1) {
-        const double pxPer100 = view.scale() * CompactionSession::kTickSpacing;
+        const double pxPer100 = view.scale() * CompactionView::kTickSpacing;
         const int labelEvery = pxPer100 >= 60 ? 1 : pxPer100 * 5 >= 60 ? 5 : 10;
         QFont f = p.font();
         f.setPixelSize(11);
@@ -174,9 +173,9 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
             p.setPen(QPen(centreLineColour(), 2));
             if (pxPer100 >= 8)
                 p.drawLine(a, b);
-            const long long k = std::llround(t.station / CompactionSession::kTickSpacing);
+            const long long k = std::llround(t.station / CompactionView::kTickSpacing);
             if (k % labelEvery == 0) {
-                const QString text = QString::fromStdString(landxml::formatStation(t.station, 0));
+                const QString text = CompactionView::stationText(t.station, 0);
                 const QRectF r = p.fontMetrics().boundingRect(text).adjusted(-2, -1, 2, 1);
                 const QPointF at = b + QPointF(4, 4);
                 p.fillRect(r.translated(at), QColor(255, 255, 255, 200));
@@ -190,7 +189,6 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
     // nor the machines use) over a white halo, so it reads on pass counts, road and hillshade alike; a light
     // fill; the name in a white box. The selected area is wider and filled more.
     const QColor areaColour = CompactionMapOverlay::areaColour();
-    const auto& areas = m_session->areas(); // same order as the geometry's areas
     for (int i = 0; i < g.areas.size(); ++i) {
         const auto& [name, ring] = g.areas[i];
         const QPolygonF s = toScreen(ring);
@@ -199,7 +197,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         const bool hi = name == m_highlight;
         // A design boundary used as an area (usually the whole job) only gets a thin outline unless selected:
         // the lots drawn on it must stand out.
-        const bool design = i < areas.size() && areas[i].source == QLatin1String("design");
+        const bool design = i < g.areaFromDesign.size() && g.areaFromDesign[i];
         p.setBrush(Qt::NoBrush);
         if (design && !hi) {
             p.setPen(QPen(areaColour, 1.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
@@ -231,6 +229,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         p.setPen(QPen(areaColour, 1));
         p.drawRect(r.translated(at));
         p.drawText(at, name);
+        view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it (issue 19 §1)
     }
     if (m_drawing) {
         QPolygonF s = toScreen(m_points);

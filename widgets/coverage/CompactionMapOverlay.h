@@ -11,12 +11,12 @@
 
 namespace ocu {
 
-class CompactionSession;
+class CompactionView;
 
 class CompactionMapOverlay : public QObject, public SiteMapOverlay {
     Q_OBJECT
 public:
-    CompactionMapOverlay(SiteMapView* view, CompactionSession* session);
+    CompactionMapOverlay(SiteMapView* view, CompactionView* session);
     ~CompactionMapOverlay() override;
 
     void paintOverlay(QPainter& p, const SiteMapView& view) override;
@@ -44,7 +44,7 @@ protected:
 private:
     void finish();
     QPointer<SiteMapView> m_view;
-    QPointer<CompactionSession> m_session;
+    QPointer<CompactionView> m_session;
     bool m_drawing = false;
     QPolygonF m_points;
     QPointF m_hover;

@@ -1,6 +1,6 @@
 #include "widgets/coverage/CompactionPanel.h"
 
-#include "models/coverage/CompactionSession.h"
+#include "models/coverage/CompactionView.h"
 #include "widgets/coverage/CompactionMapOverlay.h"
 
 #include <QComboBox>
@@ -17,7 +17,7 @@
 
 namespace ocu {
 
-CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverlay* overlay, QWidget* parent)
+CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* overlay, QWidget* parent)
     : QWidget(parent), m_session(session), m_overlay(overlay) {
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 4);
@@ -69,9 +69,9 @@ CompactionPanel::CompactionPanel(CompactionSession* session, CompactionMapOverla
     m_throttle.setSingleShot(true);
     m_throttle.setInterval(2000);
     connect(&m_throttle, &QTimer::timeout, this, &CompactionPanel::refresh);
-    connect(session, &CompactionSession::changed, this, &CompactionPanel::refresh);
+    connect(session, &CompactionView::changed, this, &CompactionPanel::refresh);
     // The statistics follow the counts (and so the filters: a filter change recounts into a new snapshot).
-    connect(session, &CompactionSession::countsChanged, this, &CompactionPanel::countsChanged);
+    connect(session, &CompactionView::countsChanged, this, &CompactionPanel::countsChanged);
     connect(m_lift, &QComboBox::currentIndexChanged, this, &CompactionPanel::refresh);
     connect(m_draw, &QPushButton::clicked, this, [this] {
         if (m_overlay->isDrawing())
@@ -113,21 +113,21 @@ void CompactionPanel::countsChanged() {
 }
 
 void CompactionPanel::refresh() {
-    const CoverageJob job = m_session->job();
-    if (m_session->design())
+    const CompactionView::DesignInfo design = m_session->designInfo();
+    if (design.loaded)
         m_design->setText(tr("Design: %1 — %2 alignment(s), %3 boundary(ies)%4")
-                              .arg(QFileInfo(m_session->designPath()).fileName())
-                              .arg(m_session->design()->alignments.size())
-                              .arg(m_session->design()->boundaries.size())
-                              .arg(m_session->designWarnings().isEmpty()
-                                       ? QString()
-                                       : tr(" · %1 warning(s): %2")
-                                             .arg(m_session->designWarnings().size())
-                                             .arg(m_session->designWarnings().first())));
+                              .arg(QFileInfo(design.path).fileName())
+                              .arg(design.alignments)
+                              .arg(design.boundaries)
+                              .arg(design.warnings.isEmpty() ? QString()
+                                                             : tr(" · %1 warning(s): %2")
+                                                                   .arg(design.warnings.size())
+                                                                   .arg(design.warnings.first())));
     else
         m_design->setText(tr("No design loaded (site configuration \"compaction\": {\"design\": …})."));
+    const CompactionView::CoverageTable t = m_session->coverageTable(m_lift->currentData().toInt());
     // Lifts of the data.
-    const int liftCount = job.snapshot ? job.snapshot->liftCount() : 0;
+    const int liftCount = int(t.lifts.size());
     if (m_lift->count() != liftCount + 1) {
         const QSignalBlocker block(m_lift);
         const int keep = m_lift->currentData().toInt();
@@ -136,8 +136,8 @@ void CompactionPanel::refresh() {
         for (int i = 0; i < liftCount; ++i)
             m_lift->addItem(tr("Lift %1 (z %2 … %3 m)")
                                 .arg(i + 1)
-                                .arg(job.snapshot->liftBottom(i), 0, 'f', 2)
-                                .arg(job.snapshot->liftTop(i), 0, 'f', 2),
+                                .arg(t.lifts[i].bottom, 0, 'f', 2)
+                                .arg(t.lifts[i].top, 0, 'f', 2),
                             i);
         const int idx = m_lift->findData(keep);
         m_lift->setCurrentIndex(idx < 0 ? 0 : idx);
@@ -145,19 +145,9 @@ void CompactionPanel::refresh() {
     const QString selected = m_table->currentRow() >= 0
                                  ? m_table->item(m_table->currentRow(), 0)->data(Qt::UserRole).toString()
                                  : QString();
-    CoverageTables t;
-    if (job.snapshot && m_session->hasWorksite()) {
-        CoverageFrames frames;
-        if (frames.init(job).isEmpty())
-            t = computeCoverageTables(job, frames, m_lift->currentData().toInt());
-    }
-    m_table->setRowCount(int(job.areas.size()));
-    for (int r = 0; r < job.areas.size(); ++r) {
-        const CompactionArea& a = job.areas[r];
-        const AreaStats* s = nullptr;
-        for (const AreaStats& x : t.areas)
-            if (x.name == a.name)
-                s = &x;
+    m_table->setRowCount(int(t.areas.size()));
+    for (int r = 0; r < t.areas.size(); ++r) {
+        const CompactionView::AreaRow& a = t.areas[r];
         auto set = [&](int c, const QString& text) {
             auto* it = new QTableWidgetItem(text);
             if (c > 0)
@@ -165,14 +155,14 @@ void CompactionPanel::refresh() {
             m_table->setItem(r, c, it);
             return it;
         };
-        auto* name = set(0, a.source == QLatin1String("design") ? tr("%1 (design)").arg(a.name) : a.name);
+        auto* name = set(0, a.fromDesign ? tr("%1 (design)").arg(a.name) : a.name);
         name->setData(Qt::UserRole, a.name);
-        if (s && s->stats.cells) {
-            set(1, QString::number(s->stats.coveragePercent(), 'f', 1));
-            set(2, QString::number(s->stats.percentOf(s->stats.atTarget), 'f', 1));
-            set(3, QString::number(s->stats.percentOf(s->stats.under), 'f', 1));
-            set(4, QString::number(s->stats.percentOf(s->stats.over), 'f', 1));
-            set(5, QString::number(s->stats.incomplete));
+        if (a.hasStats) {
+            set(1, QString::number(a.coveragePercent, 'f', 1));
+            set(2, QString::number(a.atTargetPercent, 'f', 1));
+            set(3, QString::number(a.underPercent, 'f', 1));
+            set(4, QString::number(a.overPercent, 'f', 1));
+            set(5, QString::number(a.incompleteCells));
         } else {
             for (int c = 1; c < 6; ++c)
                 set(c, QStringLiteral("–"));
@@ -180,7 +170,7 @@ void CompactionPanel::refresh() {
         if (a.name == selected)
             m_table->selectRow(r);
     }
-    m_remove->setEnabled(!job.areas.isEmpty());
+    m_remove->setEnabled(!t.areas.isEmpty());
     m_report->setEnabled(m_session->hasWorksite());
 }
 
@@ -188,7 +178,7 @@ void CompactionPanel::askAreaName(const QPolygonF& siteEN) {
     bool ok = false;
     const QString name =
         QInputDialog::getText(this, tr("New compaction area"), tr("Name of the area:"), QLineEdit::Normal,
-                              tr("Area %1").arg(m_session->areas().size() + 1), &ok);
+                              tr("Area %1").arg(m_session->areaCount() + 1), &ok);
     if (!ok)
         return;
     QString e = m_session->addArea(name, siteEN);

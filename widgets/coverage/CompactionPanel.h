@@ -13,13 +13,13 @@ class QComboBox;
 
 namespace ocu {
 
-class CompactionSession;
+class CompactionView;
 class CompactionMapOverlay;
 
 class CompactionPanel : public QWidget {
     Q_OBJECT
 public:
-    CompactionPanel(CompactionSession* session, CompactionMapOverlay* overlay, QWidget* parent = nullptr);
+    CompactionPanel(CompactionView* session, CompactionMapOverlay* overlay, QWidget* parent = nullptr);
 
     QTableWidget* table() const { return m_table; }
     QLabel* statusLabel() const { return m_status; }
@@ -34,7 +34,7 @@ private:
     void askAreaName(const QPolygonF& siteEN);
     void reportAction();
 
-    CompactionSession* m_session;
+    CompactionView* m_session;
     CompactionMapOverlay* m_overlay;
     QLabel* m_design;
     QTableWidget* m_table;

@@ -1,5 +1,6 @@
 #include "widgets/production/ShiftReport.h"
 
+#include "models/PdfPageWriter.h"
 #include "models/ProductionModel.h"
 #include "models/SiteMapData.h"
 #include "widgets/SiteMapView.h"
@@ -55,78 +56,6 @@ QString minutes(double seconds) {
         .arg(qint64(seconds) / 60)
         .arg(qint64(seconds) % 60, 2, 10, QLatin1Char('0'));
 }
-
-// Draws tables on the PDF's pages, starting a new page when the next row does not fit.
-class PageWriter {
-public:
-    PageWriter(QPdfWriter& pdf, QPainter& p) : m_pdf(pdf), m_p(p) {
-        m_width = p.viewport().width();
-        m_height = p.viewport().height();
-    }
-    int width() const { return m_width; }
-    int& y() { return m_y; }
-    void need(int h) {
-        if (m_y + h > m_height) {
-            m_pdf.newPage();
-            m_y = 0;
-        }
-    }
-    void heading(const QString& text, int size) {
-        QFont f = m_p.font();
-        f.setPointSizeF(size);
-        f.setBold(true);
-        m_p.setFont(f);
-        const int h = m_p.fontMetrics().height();
-        need(h * 2);
-        m_p.drawText(QRect(0, m_y, m_width, h), Qt::AlignLeft | Qt::AlignVCenter, text);
-        m_y += h + h / 3;
-        f.setBold(false);
-        f.setPointSizeF(9);
-        m_p.setFont(f);
-    }
-    void text(const QString& t) {
-        const int h = m_p.fontMetrics().height();
-        need(h);
-        m_p.drawText(QRect(0, m_y, m_width, h), Qt::AlignLeft | Qt::AlignVCenter, t);
-        m_y += h;
-    }
-    // Column widths as fractions of the page; the first column left-aligned, the others right.
-    void table(const QStringList& header, const QVector<QStringList>& rows, const QVector<double>& widths) {
-        const int h = m_p.fontMetrics().height() * 13 / 10;
-        auto line = [&](const QStringList& cells, bool bold, bool shade) {
-            need(h);
-            if (shade)
-                m_p.fillRect(QRect(0, m_y, m_width, h), QColor(0xee, 0xf2, 0xf7));
-            QFont f = m_p.font();
-            f.setBold(bold);
-            m_p.setFont(f);
-            int x = 0;
-            for (int i = 0; i < cells.size() && i < widths.size(); ++i) {
-                const int w = int(widths[i] * m_width);
-                m_p.drawText(QRect(x + 4, m_y, w - 8, h),
-                             (i == 0 ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter, cells[i]);
-                x += w;
-            }
-            f.setBold(false);
-            m_p.setFont(f);
-            m_y += h;
-        };
-        line(header, true, true);
-        m_p.setPen(QColor(0x90, 0x90, 0x90));
-        m_p.drawLine(0, m_y, m_width, m_y);
-        m_p.setPen(Qt::black);
-        for (int i = 0; i < rows.size(); ++i)
-            line(rows[i], i == rows.size() - 1 && rows[i].value(0) == QObject::tr("Shift"), i % 2 == 1);
-        m_y += h / 2;
-    }
-
-private:
-    QPdfWriter& m_pdf;
-    QPainter& m_p;
-    int m_width = 0;
-    int m_height = 0;
-    int m_y = 0;
-};
 
 QVector<QStringList> tableRows(const QVector<ProductionTally>& tallies, const ProductionTally* total) {
     QVector<QStringList> rows;
@@ -210,7 +139,7 @@ QString writeShiftPdf(const ProductionModel& m, const QImage& map, const QString
         return QObject::tr("cannot write %1").arg(file);
     p.setRenderHint(QPainter::Antialiasing);
     p.setRenderHint(QPainter::SmoothPixmapTransform);
-    PageWriter w(pdf, p);
+    PdfPageWriter w(pdf, p, 9);
     const int W = w.width();
 
     const QString site = siteName.isEmpty() ? m.siteName() : siteName;
@@ -268,11 +197,11 @@ QString writeShiftPdf(const ProductionModel& m, const QImage& map, const QString
     ProductionTally total = s;
     total.name = QObject::tr("Shift");
     w.heading(QObject::tr("Trucks (cycle parts: average min:s per cycle)"), 12);
-    w.table(header, tableRows(m.trucks(), &total), widths);
+    w.table(header, tableRows(m.trucks(), &total), widths, {4, true, true}); // the shift's total in bold
     w.heading(QObject::tr("Shovels (load areas)"), 12);
-    w.table(header, tableRows(m.shovels(), nullptr), widths);
+    w.table(header, tableRows(m.shovels(), nullptr), widths, {4, true, false});
     w.heading(QObject::tr("Dumps and crusher"), 12);
-    w.table(header, tableRows(m.dumps(), nullptr), widths);
+    w.table(header, tableRows(m.dumps(), nullptr), widths, {4, true, false});
     if (!p.end())
         return QObject::tr("cannot write %1").arg(file);
     if (QFileInfo(file).size() == 0)
