@@ -380,7 +380,7 @@ void MainWindow::fitDocksToWindow() {
     // Issue 15: on a short screen (a 1366x768 field laptop) the bottom row (event log, dispatch) gets 40 %
     // and the dispatch side half of it, so the dispatch table shows trucks, not two rows.
     const int bottom = h < 900 ? 40 : 30;
-    const int dispatch = w < 1600 ? 50 : 40;
+    const int dispatch = w < 1600 ? 50 : 55; // at 1920: all ten columns of the dispatch table
     resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]},
                 {h * (100 - bottom) / 100, h * bottom / 100}, Qt::Vertical);
     resizeDocks({m_docks[Panel::EventLog], m_docks[Panel::PassCounts]},
