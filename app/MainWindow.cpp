@@ -393,7 +393,7 @@ void MainWindow::fitDocksToWindow() {
     // rows of controls more); 36 % / 42 % give it ten / six rows and the map
     // still ~60 % of the height.
     const int bottom = h < 900 ? 42 : 36;
-    const int dispatch = w < 1600 ? 50 : 40;
+    const int dispatch = w < 1600 ? 50 : 55; // at 1920: all ten columns of the dispatch table (issue 15)
     resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]},
                 {h * (100 - bottom) / 100, h * bottom / 100}, Qt::Vertical);
     resizeDocks({m_docks[Panel::EventLog], m_docks[Panel::PassCounts]},

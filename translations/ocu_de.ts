@@ -121,6 +121,138 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <source>Compaction design not loaded: %1</source>
         <translation>Verdichtungsentwurf nicht geladen: %1</translation>
     </message>
+    <message>
+        <source>Queue</source>
+        <translation>Warten</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Ansetzen</translation>
+    </message>
+    <message>
+        <source>Load</source>
+        <translation>Laden</translation>
+    </message>
+    <message>
+        <source>Haul</source>
+        <translation>Transport</translation>
+    </message>
+    <message>
+        <source>Dump</source>
+        <translation>Kippen</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>Rückfahrt</translation>
+    </message>
+    <message>
+        <source>Other</source>
+        <translation>Sonstiges</translation>
+    </message>
+    <message>
+        <source>Tonnes over the shift: %1 t in %2 loads</source>
+        <translation>Tonnen über die Schicht: %1 t in %2 Ladungen</translation>
+    </message>
+    <message>
+        <source>Dumped (t)</source>
+        <translation>Gekippt (t)</translation>
+    </message>
+    <message>
+        <source>Plan (t, %1 t/shift)</source>
+        <translation>Plan (t, %1 t/Schicht)</translation>
+    </message>
+    <message>
+        <source>t</source>
+        <translation>t</translation>
+    </message>
+    <message>
+        <source>Cycle time breakdown (average minutes per cycle)</source>
+        <translation>Aufteilung der Umlaufzeit (Minuten je Umlauf, Mittelwert)</translation>
+    </message>
+    <message>
+        <source>Shift</source>
+        <translation>Schicht</translation>
+    </message>
+    <message>
+        <source>Shift report</source>
+        <translation>Schichtbericht</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>Shift report — %1</source>
+        <translation>Schichtbericht — %1</translation>
+    </message>
+    <message>
+        <source>Shift %1 to %2 · written %3</source>
+        <translation>Schicht %1 bis %2 · geschrieben %3</translation>
+    </message>
+    <message>
+        <source>plan %1 t for the shift, %2 t due by now (%3 %)</source>
+        <translation>Plan %1 t für die Schicht, %2 t bis jetzt fällig (%3 %)</translation>
+    </message>
+    <message>
+        <source>no plan set</source>
+        <translation>kein Plan gesetzt</translation>
+    </message>
+    <message>
+        <source>%1 loads, %2 t dumped, %3 cycles, average cycle %4 · %5</source>
+        <translation>%1 Ladungen, %2 t gekippt, %3 Umläufe, mittlerer Umlauf %4 · %5</translation>
+    </message>
+    <message>
+        <source>%1 loads were dumped without a reported weight (not in the tonnes)</source>
+        <translation>%1 Ladungen wurden ohne gemeldetes Gewicht gekippt (nicht in den Tonnen)</translation>
+    </message>
+    <message>
+        <source>(no site map available for the snapshot)</source>
+        <translation>(keine Lagekarte für die Momentaufnahme verfügbar)</translation>
+    </message>
+    <message>
+        <source>Loads</source>
+        <translation>Ladungen</translation>
+    </message>
+    <message>
+        <source>Tonnes</source>
+        <translation>Tonnen</translation>
+    </message>
+    <message>
+        <source>t/load</source>
+        <translation>t/Ladung</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Umläufe</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>Umlauf</translation>
+    </message>
+    <message>
+        <source>Trucks (cycle parts: average min:s per cycle)</source>
+        <translation>Lkw (Umlaufteile: Mittelwert min:s je Umlauf)</translation>
+    </message>
+    <message>
+        <source>Shovels (load areas)</source>
+        <translation>Bagger (Ladestellen)</translation>
+    </message>
+    <message>
+        <source>Dumps and crusher</source>
+        <translation>Kippen und Brecher</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
 </context>
 <context>
     <name>Screenshot</name>
@@ -312,6 +444,175 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     <message>
         <source>Queues per shovel and dump: trucks at the area and trucks coming to it</source>
         <translation>Warteschlangen je Bagger und Kippe: Lkw im Bereich und Lkw auf dem Weg dorthin</translation>
+    </message>
+    <message>
+        <source>Dispatch panel keys:
+Up/Down: choose a truck in the table (Alt+K: go to the table)
+F6: next truck that needs an assignment
+Alt+T: task, Alt+D: destination (type to search), Alt+M: pick the destination on the 2D map (click an area; Esc cancels)
+Ctrl+Enter or Alt+A: assign (re-assigning a truck that has a task asks first)
+Alt+R: reset the truck's assignment (asks first)
+Alt+Q: go to the queues per shovel and dump
+Alt+U: auto dispatch on/off (switching on asks first)</source>
+        <translation>Tasten der Disposition:
+Auf/Ab: Lkw in der Tabelle wählen (Alt+L: zur Tabelle)
+F6: nächster Lkw, der einen Auftrag braucht
+Alt+G: Aufgabe, Alt+Z: Ziel (tippen zum Suchen), Alt+K: Ziel auf der 2D-Karte wählen (Bereich anklicken; Esc bricht ab)
+Strg+Eingabe oder Alt+S: zuweisen (ein Lkw mit Auftrag fragt zuerst)
+Alt+R: Auftrag des Lkw zurücksetzen (fragt zuerst)
+Alt+W: zu den Warteschlangen je Bagger und Kippe
+Alt+U: automatische Disposition ein/aus (Einschalten fragt zuerst)</translation>
+    </message>
+    <message>
+        <source>Truc&amp;ks</source>
+        <translation>&amp;Lkw</translation>
+    </message>
+    <message>
+        <source>Next needing work (F6)</source>
+        <translation>Nächster ohne Arbeit (F6)</translation>
+    </message>
+    <message>
+        <source>Select the next truck that asks for work or was handed back to the FMS.</source>
+        <translation>Den nächsten Lkw wählen, der nach Arbeit fragt oder an das FMS zurückgegeben wurde.</translation>
+    </message>
+    <message>
+        <source>&amp;Task</source>
+        <translation>Auf&amp;gabe</translation>
+    </message>
+    <message>
+        <source>&amp;Destination</source>
+        <translation>&amp;Ziel</translation>
+    </message>
+    <message>
+        <source>Pick on &amp;map</source>
+        <translation>Auf der &amp;Karte</translation>
+    </message>
+    <message>
+        <source>Then click a load, dump, crusher, park or fuel area on the 2D map (Esc cancels).</source>
+        <translation>Danach einen Lade-, Kipp-, Brecher-, Park- oder Tankbereich auf der 2D-Karte anklicken (Esc bricht ab).</translation>
+    </message>
+    <message>
+        <source>&amp;Assign</source>
+        <translation>Zuwei&amp;sen</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>Zu&amp;rücksetzen</translation>
+    </message>
+    <message>
+        <source>Reset the truck's assignment (HaulTruckAssignmentResetV1); asks first.</source>
+        <translation>Den Auftrag des Lkw zurücksetzen (HaulTruckAssignmentResetV1); fragt zuerst.</translation>
+    </message>
+    <message>
+        <source>no areas yet (waiting for the road network)</source>
+        <translation>noch keine Bereiche (warte auf das Straßennetz)</translation>
+    </message>
+    <message>
+        <source>no truck needs an assignment</source>
+        <translation>kein Lkw braucht einen Auftrag</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n truck(s) need an assignment</source>
+        <translation>
+            <numerusform>%n Lkw braucht einen Auftrag</numerusform>
+            <numerusform>%n Lkw brauchen einen Auftrag</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No haul truck reports dispatch data yet.</source>
+        <translation>Noch kein Muldenkipper meldet Dispositionsdaten.</translation>
+    </message>
+    <message>
+        <source>no dispatch source</source>
+        <translation>keine Dispositionsquelle</translation>
+    </message>
+    <message>
+        <source>Re-&amp;assign</source>
+        <translation>Neu zuwei&amp;sen</translation>
+    </message>
+    <message>
+        <source>Send %1 to %2 as %3 (Ctrl+Enter)</source>
+        <translation>%1 zu %2 als %3 senden (Strg+Eingabe)</translation>
+    </message>
+    <message>
+        <source>preview: %1 → %2 · %3 m</source>
+        <translation>Vorschau: %1 → %2 · %3 m</translation>
+    </message>
+    <message>
+        <source>Click an area on the 2D map for %1 (Esc cancels).</source>
+        <translation>Einen Bereich auf der 2D-Karte für %1 anklicken (Esc bricht ab).</translation>
+    </message>
+    <message>
+        <source>That map area is not a destination of the road network (no area way %1).</source>
+        <translation>Dieser Kartenbereich ist kein Ziel des Straßennetzes (kein Bereichsweg %1).</translation>
+    </message>
+    <message>
+        <source>Destination picked on the map: %1</source>
+        <translation>Ziel auf der Karte gewählt: %1</translation>
+    </message>
+    <message>
+        <source>%1 to %2 for %3</source>
+        <translation>%1 zu %2 für %3</translation>
+    </message>
+    <message>
+        <source>Re-assign %1?</source>
+        <translation>%1 neu zuweisen?</translation>
+    </message>
+    <message>
+        <source>%1 has a %2 assignment (%3 to %4). Replace it with %5?</source>
+        <translation>%1 hat einen Auftrag im Zustand %2 (%3 zu %4). Durch %5 ersetzen?</translation>
+    </message>
+    <message>
+        <source>Assign %1</source>
+        <translation>%1 zuweisen</translation>
+    </message>
+    <message>
+        <source>Reset %1's assignment?</source>
+        <translation>Auftrag von %1 zurücksetzen?</translation>
+    </message>
+    <message>
+        <source>%1 will drop its %2 assignment (%3) and wait for a new one.</source>
+        <translation>%1 verwirft seinen Auftrag im Zustand %2 (%3) und wartet auf einen neuen.</translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation>aktuell</translation>
+    </message>
+    <message>
+        <source>no task reported</source>
+        <translation>keine Aufgabe gemeldet</translation>
+    </message>
+    <message>
+        <source>Reset %1</source>
+        <translation>%1 zurücksetzen</translation>
+    </message>
+    <message>
+        <source>%1: sent</source>
+        <translation>%1: gesendet</translation>
+    </message>
+    <message>
+        <source>%1: NOT sent — %2</source>
+        <translation>%1: NICHT gesendet — %2</translation>
+    </message>
+    <message>
+        <source>NOT sent — %1</source>
+        <translation>NICHT gesendet — %1</translation>
+    </message>
+    <message>
+        <source>the truck answered Accepted</source>
+        <translation>der Lkw hat mit Accepted geantwortet</translation>
+    </message>
+    <message>
+        <source>the truck answered %1: %2</source>
+        <translation>der Lkw hat mit %1 geantwortet: %2</translation>
+    </message>
+    <message>
+        <source>, assignment %1</source>
+        <translation>, Auftrag %1</translation>
+    </message>
+    <message>
+        <source>way %1</source>
+        <translation>Weg %1</translation>
     </message>
 </context>
 <context>
@@ -1332,6 +1633,10 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>&amp;Go to panel</source>
         <translation>&amp;Gehe zu Feld</translation>
+    </message>
+    <message>
+        <source>Dispatch</source>
+        <translation>Disposition</translation>
     </message>
 </context>
 <context>
@@ -2925,6 +3230,301 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>input released</source>
         <translation>Eingabe losgelassen</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DispatchModel</name>
+    <message>
+        <source>link down</source>
+        <translation>Verbindung getrennt</translation>
+    </message>
+    <message>
+        <source>NEEDS ASSIGNMENT</source>
+        <translation>BRAUCHT AUFTRAG</translation>
+    </message>
+    <message>
+        <source>Reported assignment: %1</source>
+        <translation>Gemeldeter Auftrag: %1</translation>
+    </message>
+    <message>
+        <source>Last request from this console: %1 to way %2 — %3</source>
+        <translation>Letzte Anfrage dieser Konsole: %1 zu Weg %2 — %3</translation>
+    </message>
+    <message>
+        <source>no answer yet</source>
+        <translation>noch keine Antwort</translation>
+    </message>
+    <message>
+        <source>Detail: %1</source>
+        <translation>Detail: %1</translation>
+    </message>
+    <message>
+        <source>The truck asks for work (or was handed back to the FMS).</source>
+        <translation>Der Lkw fragt nach Arbeit (oder wurde an das FMS zurückgegeben).</translation>
+    </message>
+    <message>
+        <source>No route: %1</source>
+        <translation>Keine Route: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 m over %n way(s) (%2); %3</source>
+        <translation>
+            <numerusform>%1 m über %n Weg (%2); %3</numerusform>
+            <numerusform>%1 m über %n Wege (%2); %3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>route of the assignment</source>
+        <translation>Route des Auftrags</translation>
+    </message>
+    <message>
+        <source>shortest path</source>
+        <translation>kürzester Weg</translation>
+    </message>
+    <message>
+        <source>nominal 25 km/h (the truck is slower than 1 m/s)</source>
+        <translation>nominell 25 km/h (der Lkw ist langsamer als 1 m/s)</translation>
+    </message>
+    <message>
+        <source>at the reported speed</source>
+        <translation>bei der gemeldeten Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>DispatchingCustodian: who dispatches this truck (only FMS trucks can be assigned)</source>
+        <translation>DispatchingCustodian: wer diesen Lkw disponiert (nur FMS-Lkw können Aufträge erhalten)</translation>
+    </message>
+    <message>
+        <source>Truck</source>
+        <translation>Lkw</translation>
+    </message>
+    <message>
+        <source>Custodian</source>
+        <translation>Disponent</translation>
+    </message>
+    <message>
+        <source>Assignment</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Aufgabe</translation>
+    </message>
+    <message>
+        <source>Destination</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>ETA</source>
+        <translation>Ankunft</translation>
+    </message>
+    <message>
+        <source>Payload</source>
+        <translation>Nutzlast</translation>
+    </message>
+    <message>
+        <source>In state</source>
+        <translation>Im Zustand</translation>
+    </message>
+    <message>
+        <source>way %1</source>
+        <translation>Weg %1</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Production</source>
+        <translation>Produktion</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DispatchQueueModel</name>
+    <message>
+        <source>at: %1</source>
+        <translation>dort: %1</translation>
+    </message>
+    <message>
+        <source>coming: %1</source>
+        <translation>unterwegs: %1</translation>
+    </message>
+    <message>
+        <source>Shovel (load)</source>
+        <translation>Bagger (Laden)</translation>
+    </message>
+    <message>
+        <source>Dump (offload)</source>
+        <translation>Kippe (Entladen)</translation>
+    </message>
+    <message>
+        <source>Way %1 on %2. Coming: assigned (Pending/Active) and not yet there; at: the truck reports this area as its way (queued, spotting, loading or dumping).</source>
+        <translation>Weg %1 auf %2. Unterwegs: zugewiesen (Pending/Active) und noch nicht dort; dort: der Lkw meldet diesen Bereich als seinen Weg (wartend, ansetzend, ladend oder kippend).</translation>
+    </message>
+    <message>
+        <source>Coming</source>
+        <translation>Unterwegs</translation>
+    </message>
+    <message>
+        <source>At area</source>
+        <translation>Dort</translation>
+    </message>
+    <message>
+        <source>Trucks</source>
+        <translation>Lkw</translation>
+    </message>
+    <message>
+        <source>way %1</source>
+        <translation>Weg %1</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::ProductionModel</name>
+    <message>
+        <source>Shift</source>
+        <translation>Schicht</translation>
+    </message>
+    <message>
+        <source>unknown shovel</source>
+        <translation>unbekannter Bagger</translation>
+    </message>
+    <message>
+        <source>unknown dump</source>
+        <translation>unbekannte Kippe</translation>
+    </message>
+    <message>
+        <source>way %1</source>
+        <translation>Weg %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::ProductionView</name>
+    <message>
+        <source>Plan (t/shift):</source>
+        <translation>Plan (t/Schicht):</translation>
+    </message>
+    <message>
+        <source>Tonnes planned for the shift (0: no plan)</source>
+        <translation>Für die Schicht geplante Tonnen (0: kein Plan)</translation>
+    </message>
+    <message>
+        <source>Shift &amp;report…</source>
+        <translation>Schicht&amp;bericht…</translation>
+    </message>
+    <message>
+        <source>Write the shift report as PDF and CSV</source>
+        <translation>Den Schichtbericht als PDF und CSV schreiben</translation>
+    </message>
+    <message>
+        <source>New shift</source>
+        <translation>Neue Schicht</translation>
+    </message>
+    <message>
+        <source>Start counting a new shift now (the current figures are discarded)</source>
+        <translation>Jetzt eine neue Schicht zu zählen beginnen (die aktuellen Zahlen werden verworfen)</translation>
+    </message>
+    <message>
+        <source>Start a new shift now? The current shift's figures are discarded; write the shift report first.</source>
+        <translation>Jetzt eine neue Schicht beginnen? Die Zahlen der aktuellen Schicht werden verworfen; schreiben Sie zuerst den Schichtbericht.</translation>
+    </message>
+    <message>
+        <source>Trucks</source>
+        <translation>Lkw</translation>
+    </message>
+    <message>
+        <source>Shovels</source>
+        <translation>Bagger</translation>
+    </message>
+    <message>
+        <source>Dumps</source>
+        <translation>Kippen</translation>
+    </message>
+    <message>
+        <source>Truck</source>
+        <translation>Lkw</translation>
+    </message>
+    <message>
+        <source>Loads</source>
+        <translation>Ladungen</translation>
+    </message>
+    <message>
+        <source>Tonnes</source>
+        <translation>Tonnen</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Umläufe</translation>
+    </message>
+    <message>
+        <source>Queue</source>
+        <translation>Warten</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Ansetzen</translation>
+    </message>
+    <message>
+        <source>Load</source>
+        <translation>Laden</translation>
+    </message>
+    <message>
+        <source>Haul</source>
+        <translation>Transport</translation>
+    </message>
+    <message>
+        <source>Dump</source>
+        <translation>Kippen</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>Rückfahrt</translation>
+    </message>
+    <message>
+        <source>Cycle parts: average minutes:seconds per cycle</source>
+        <translation>Umlaufteile: Mittelwert Minuten:Sekunden je Umlauf</translation>
+    </message>
+    <message>
+        <source>%1 % of the %2 t due by now</source>
+        <translation>%1 % der bis jetzt fälligen %2 t</translation>
+    </message>
+    <message>
+        <source>no plan set</source>
+        <translation>kein Plan gesetzt</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 t&lt;/b&gt; in &lt;b&gt;%2 loads&lt;/b&gt; · %3 cycles, average %4 · %5</source>
+        <translation>&lt;b&gt;%1 t&lt;/b&gt; in &lt;b&gt;%2 Ladungen&lt;/b&gt; · %3 Umläufe, Mittelwert %4 · %5</translation>
+    </message>
+    <message>
+        <source>Shift report</source>
+        <translation>Schichtbericht</translation>
+    </message>
+    <message>
+        <source>Written:
+%1
+%2</source>
+        <translation>Geschrieben:
+%1
+%2</translation>
+    </message>
+    <message>
+        <source>The shift report was not written: %1</source>
+        <translation>Der Schichtbericht wurde nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
     </message>
 </context>
 </TS>

@@ -3,6 +3,7 @@
 // model's numbers, row by row. Writing to an impossible place is reported, not crashed on.
 #include "models/ProductionModel.h"
 #include "models/SiteMapData.h"
+#include "widgets/production/ProductionCharts.h"
 #include "widgets/production/ProductionView.h"
 #include "widgets/production/ShiftReport.h"
 
@@ -14,6 +15,8 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <memory>
 
 using namespace ocu;
 
@@ -233,6 +236,39 @@ private slots:
         QCOMPARE(v.writeReport(dir.filePath(QStringLiteral("r.pdf")), dir.filePath(QStringLiteral("r.csv"))),
                  QString());
         QVERIFY(QFileInfo(dir.filePath(QStringLiteral("r.pdf"))).size() > 1000);
+    }
+    // The live charts follow the model (issue 15 §4): a dump reported during the shift raises the tonnes line
+    // (the blue of "Dumped (t)" appears in the upper half of the chart) and a cycle adds its bar (the green
+    // of "Haul") to the breakdown, without anything but the model changing.
+    void liveChartsFollowTheModel() {
+        ProductionModel m;
+        const qint64 start = QDateTime::currentMSecsSinceEpoch() - 150 * kMin;
+        m.setShift(start, start + 12 * 60 * kMin);
+        std::unique_ptr<QWidget> tonnes(createProductionChartView(ProductionChart::TonnesVsPlan, &m));
+        std::unique_ptr<QWidget> cycles(createProductionChartView(ProductionChart::CycleBreakdown, &m));
+        for (QWidget* w : {tonnes.get(), cycles.get()}) {
+            w->resize(600, 400);
+            w->show();
+        }
+        QVERIFY(QTest::qWaitForWindowExposed(tonnes.get()));
+        // Pixels of about `c` in the image's upper half (the tonnes line) or anywhere (the bars).
+        auto count = [](const QImage& img, QColor c, bool upperHalf) {
+            int n = 0;
+            for (int y = 0; y < (upperHalf ? img.height() / 2 : img.height()); ++y)
+                for (int x = 0; x < img.width(); ++x) {
+                    const QColor p = img.pixelColor(x, y);
+                    n += std::abs(p.red() - c.red()) < 30 && std::abs(p.green() - c.green()) < 30 &&
+                         std::abs(p.blue() - c.blue()) < 30;
+                }
+            return n;
+        };
+        const QColor dumped(0x2e, 0x6f, 0xd0), haul(0x2e, 0x9e, 0x5b);
+        QCOMPARE(count(tonnes->grab().toImage(), dumped, true), 0);
+        const int legendOnly = count(cycles->grab().toImage(), haul, false); // the legend's marker
+
+        fill(m, start); // dumps and cycles over the first two hours of the shift
+        QTRY_VERIFY_WITH_TIMEOUT(count(tonnes->grab().toImage(), dumped, true) > 50, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(count(cycles->grab().toImage(), haul, false) > legendOnly + 200, 10000);
     }
 };
 

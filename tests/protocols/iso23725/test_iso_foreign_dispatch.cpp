@@ -129,6 +129,64 @@ private slots:
                      R"({"Protocol":"ISO23725","Version":1,"MapCommandV1":{"Method":"GET","Scope":"/"}})"));
     }
 
+    // Row 21's other members: DestinationSpotId instead of DestinationEquipmentId, AssignmentIds the console
+    // makes (lower-case GUIDs, one per task), RouteV1 computed over the peer's MapConnectivityV1 (the ways in
+    // between, neither the truck's way nor the destination; a future task starts at the previous destination)
+    // and left out when there is no way in between; both destination members together are refused unsent.
+    void spotTaskAndRoutesAsTheTablesSay() {
+        Session s;
+        QVERIFY(s.up());
+        std::vector<AssignmentItem> items{
+            AssignmentItem{"", "Load", 4201, std::nullopt, std::int64_t(7), std::nullopt},
+            AssignmentItem{"", "Offload", 4101, std::nullopt, std::nullopt, std::nullopt},
+            AssignmentItem{"", "Wait", 4101, std::nullopt, std::nullopt, std::nullopt}};
+        auto o = outcome([&](auto done) { s.stack.requestAssignment("ahs", kTruck, items, done); });
+        QVERIFY(o.size() == 1);
+        QVERIFY2(o[0].sent, o[0].reason.c_str());
+        const std::string frame = s.peer.waitFor("HaulTruckAssignmentRequestV2");
+        QVERIFY(!frame.empty());
+        json got = withoutTimestamp(frame);
+        QVERIFY2(got.is_object() && got["HaulTruckAssignmentRequestV2"].is_array() &&
+                     got["HaulTruckAssignmentRequestV2"].size() == 3,
+                 frame.c_str());
+        const std::regex guid("[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}");
+        std::vector<std::string> ids;
+        for (const auto& a : got["HaulTruckAssignmentRequestV2"]) {
+            QVERIFY2(a.contains("AssignmentId") && a["AssignmentId"].is_string(), frame.c_str());
+            ids.push_back(a["AssignmentId"].get<std::string>());
+            QVERIFY2(std::regex_match(ids.back(), guid), ids.back().c_str());
+        }
+        QVERIFY(ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2]);
+        const json expected =
+            json::parse(R"({"Protocol":"ISO23725","Version":1,"EquipmentId":")" + kTruck +
+                        R"(","HaulTruckAssignmentRequestV2":[
+              {"AssignmentId":")" +
+                        ids[0] +
+                        R"(","Task":"Load","DestinationId":4201,"DestinationSpotId":7,
+               "RouteV1":[{"WayId":2001}]},
+              {"AssignmentId":")" +
+                        ids[1] +
+                        R"(","Task":"Offload","DestinationId":4101,"RouteV1":[{"WayId":2001}]},
+              {"AssignmentId":")" +
+                        ids[2] + R"(","Task":"Wait","DestinationId":4101}]})");
+        QVERIFY2(got == expected, frame.c_str());
+        QVERIFY(frame.find("\"DestinationSpotId\":7") != std::string::npos); // an integer, not 7.0 or "7"
+
+        // Both destination members: refused with the rule, nothing more on the wire.
+        const std::size_t before = s.peer.received().size();
+        o = outcome([&](auto done) {
+            s.stack.requestAssignment(
+                "ahs", kTruck, {AssignmentItem{"", "Load", 4201, kShovel, std::int64_t(7), std::nullopt}},
+                done);
+        });
+        QVERIFY(o.size() == 1 && !o[0].sent);
+        QVERIFY2(o[0].reason.find("mutually exclusive") != std::string::npos, o[0].reason.c_str());
+        QTest::qWait(200);
+        const auto after = s.peer.received();
+        for (std::size_t i = before; i < after.size(); ++i)
+            QVERIFY2(after[i].find("HaulTruckAssignmentRequestV2") == std::string::npos, after[i].c_str());
+    }
+
     // Refused before sending, with the reason; the peer receives nothing of it.
     void refusalsPutNothingOnTheWire() {
         {
