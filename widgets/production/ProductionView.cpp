@@ -37,6 +37,9 @@ ProductionView::ProductionView(ProductionModel* model, QWidget* parent) : QWidge
     m_summary = new QLabel(this);
     m_summary->setObjectName(QStringLiteral("production-summary"));
     m_summary->setTextFormat(Qt::RichText);
+    // Wraps in a narrow dock (German at 1366x768) instead of widening the panel past it.
+    m_summary->setWordWrap(true);
+    m_summary->setMinimumWidth(160);
     top->addWidget(m_summary, 1);
     top->addWidget(new QLabel(tr("Plan (t/shift):"), this));
     m_plan = new QDoubleSpinBox(this);
