@@ -55,15 +55,6 @@ QStringList cutOff(MainWindow& w) {
     for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
         if (!d->isVisible() || d->visibleRegion().isEmpty())
             continue;
-        // The teleop panel's content (issue 18's, widgets/jaus/TeleopPanel) needs ~415 px in English and
-        // ~560 px in German, more than its column: it scrolls sideways there; reported, not asserted here.
-        if (d->objectName() == QLatin1String("dock-teleop")) {
-            for (QScrollArea* s : d->findChildren<QScrollArea*>())
-                if (s->isVisible() && s->horizontalScrollBar()->maximum() > 0)
-                    qInfo("teleop panel scrolls sideways by %d px (dock %d px wide)",
-                          s->horizontalScrollBar()->maximum(), d->width());
-            continue;
-        }
         for (QScrollArea* s : d->findChildren<QScrollArea*>()) {
             if (s->objectName() != QLatin1String("panel-scroll") && s->parentWidget() != d)
                 continue;
