@@ -11,6 +11,7 @@
 #include "app/SiteRuntime.h"
 
 #include "widgets/SiteMapView.h"
+#include "widgets/jaus/TeleopVideoPane.h"
 
 #include <QAbstractButton>
 #include <QDockWidget>
@@ -155,6 +156,35 @@ private slots:
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QStringLiteral("\n"))));
         if (!lang.isEmpty())
             QCoreApplication::removeTranslator(&tr);
+    }
+
+    // Issue 18: in the default layout the teleop panel is a tab behind "JAUS control". Nobody sees it there,
+    // so its video pane must want no video (nothing received or decoded) until its tab is raised, and again
+    // none once another tab is raised over it.
+    void teleopTabBehindAnotherWantsNoVideo() {
+        auto site = loadSite({});
+        QVERIFY(site.ok());
+        SiteConfig cfg = std::move(site.value());
+        QTemporaryDir recordings;
+        QVERIFY(recordings.isValid());
+        cfg.record.dir = recordings.path().toStdString();
+        SiteRuntime runtime(cfg);
+        QVERIFY(runtime.start().isEmpty());
+        MainWindow window;
+        runtime.populate(window);
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        settle(500);
+        auto* pane = window.findChild<TeleopVideoPane*>();
+        QVERIFY(pane);
+        window.dock(Panel::JausControl)->raise();
+        settle(300);
+        QVERIFY2(!pane->wantsVideo(), "teleop tab behind JAUS control wants video");
+        window.dock(Panel::Teleop)->raise();
+        QTRY_VERIFY_WITH_TIMEOUT(pane->wantsVideo(), 5000);
+        window.dock(Panel::JausControl)->raise();
+        QTRY_VERIFY_WITH_TIMEOUT(!pane->wantsVideo(), 5000);
     }
 };
 

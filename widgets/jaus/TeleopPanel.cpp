@@ -6,6 +6,7 @@
 #include "models/jaus/JausVehicleBridge.h"
 #include "models/video/VideoPlayer.h"
 #include "widgets/HoldToConfirmButton.h"
+#include "widgets/OnScreenWatcher.h"
 #include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
 #include "widgets/teleop/PanTiltController.h"
@@ -178,6 +179,13 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     connect(m_controller, &TeleopController::stopped, this, [this](const QString& reason) {
         if (m_session != Session::Closed)
             endSession(reason);
+    });
+    // Out of the operator's sight (a dock tab behind another gets no hide event): nothing drives. The
+    // full-screen video window keeps the keys and the stream.
+    m_onScreen = new OnScreenWatcher(this);
+    connect(m_onScreen, &OnScreenWatcher::changed, this, [this](bool on) {
+        if (!on && !m_video->fullScreenWindow())
+            releaseAll(tr("teleop panel hidden"));
     });
     connect(bridge, &JausVehicleBridge::driveProblem, this,
             [this](quint16 subsystem, const QString& text, bool failing) {
@@ -381,7 +389,7 @@ void TeleopPanel::onCommand(DriveAxes axes) {
     case Session::Closed:
         if (axes.isZero())
             m_waitForRelease = false;
-        else if (!m_waitForRelease)
+        else if (!m_waitForRelease && (m_onScreen->onScreen() || m_video->fullScreenWindow()))
             startSession(); // the demand follows once the gate says the session is open
         return;
     case Session::Opening:

@@ -22,6 +22,8 @@ class QBoxLayout;
 
 namespace ocu {
 
+class OnScreenWatcher;
+
 class JausVehicleBridge;
 class CommandGate;
 class FleetSelection;
@@ -135,6 +137,7 @@ private:
     QBoxLayout* m_inputsRight = nullptr;
     QBoxLayout* m_stops = nullptr;
     QPointer<QWidget> m_widthSource; // whose width is available (the scroll area's viewport, or the panel)
+    OnScreenWatcher* m_onScreen = nullptr; // in front of the operator (not a dock tab behind another)
 };
 
 } // namespace ocu

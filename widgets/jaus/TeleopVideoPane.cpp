@@ -1,6 +1,7 @@
 #include "widgets/jaus/TeleopVideoPane.h"
 
 #include "models/video/VideoPlayer.h"
+#include "widgets/OnScreenWatcher.h"
 #include "widgets/video/VideoView.h"
 
 #include <QComboBox>
@@ -49,6 +50,13 @@ TeleopVideoPane::TeleopVideoPane(QWidget* parent)
       m_resume(new QPushButton(tr("Resume driving"), this)), m_timer(new QTimer(this)) {
     setObjectName(QStringLiteral("teleop-video"));
     m_view->setPlayer(m_player);
+    // Played only while in front of the operator: a hidden tab, a closed dock or a minimised window costs
+    // nothing (a dock tab behind another gets no hide event, hence the watcher).
+    auto* onScreen = new OnScreenWatcher(this);
+    connect(onScreen, &OnScreenWatcher::changed, this, [this](bool on) {
+        m_shown = on;
+        updatePlayback();
+    });
     // In a narrow or short dock the picture keeps 16:9 of the width; the controls below scroll.
     m_view->setHeightFollowsWidth(true, 480);
     m_view->setPlaceholder(tr("No camera on this vehicle"));
@@ -174,18 +182,6 @@ void TeleopVideoPane::updatePlayback() {
     else
         m_player->stop();
     checkWatchdog();
-}
-
-void TeleopVideoPane::showEvent(QShowEvent* e) {
-    QWidget::showEvent(e);
-    m_shown = true;
-    updatePlayback();
-}
-
-void TeleopVideoPane::hideEvent(QHideEvent* e) {
-    QWidget::hideEvent(e);
-    m_shown = false;
-    updatePlayback();
 }
 
 void TeleopVideoPane::setOverlay(const QStringList& lines) {

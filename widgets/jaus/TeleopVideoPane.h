@@ -51,10 +51,9 @@ public:
     void closeFullScreen();
     QWidget* fullScreenWindow() const { return m_window; }
     void setKeyFilter(QObject* filter) { m_keyFilter = filter; }
-
-protected:
-    void showEvent(QShowEvent* e) override;
-    void hideEvent(QHideEvent* e) override;
+    // Whether the stream is wanted now: the pane is in front of the operator (shown, and not in a dock tab
+    // behind another: OnScreenWatcher), or its full-screen window is open.
+    bool wantsVideo() const { return m_shown || m_window; }
 
 signals:
     // The watchdog's verdict (allowsDriving, tripped or videoGood) changed.
@@ -68,7 +67,6 @@ private:
     void play();
     // Starts or stops the player as the pane's visibility (or the full-screen window) asks.
     void updatePlayback();
-    bool wantsVideo() const { return m_shown || m_window; }
     void updateStatus();
 
     VideoPlayer* m_player;
