@@ -431,7 +431,46 @@ struct SiteSceneRenderer::Impl {
 
     void beforeFrame() {
         ++renders;
+        applyMinimumSize();
         placeLabels();
+    }
+
+    // Like the 2D map's symbols (issue 19 §1): true size when near, but never smaller on screen than
+    // kMinMachinePx across, so a 15 m truck stays a visible shape when the whole pit is in view.
+    static constexpr double kMinMachinePx = 12.0;
+    void applyMinimumSize() {
+        int w = 0, h = 0;
+        if (!windowSize(w, h) || h <= 0 || scene.machines.empty())
+            return;
+        vtkCamera* cam = renderer->GetActiveCamera();
+        double eye[3];
+        cam->GetPosition(eye);
+        // Metres per pixel at distance 1 (perspective) or everywhere (parallel projection).
+        const double perPx = cam->GetParallelProjection()
+                                 ? 2.0 * cam->GetParallelScale() / h
+                                 : 2.0 * std::tan(cam->GetViewAngle() * kDegToRad / 2.0) / h;
+        bool changed = false;
+        for (std::size_t i = 0; i < scene.machines.size(); ++i) {
+            const Machine3D& m = scene.machines[i];
+            if (!finite(m))
+                continue;
+            const double d =
+                cam->GetParallelProjection() ? 1.0 : std::hypot(m.e - eye[0], m.n - eye[1], m.u - eye[2]);
+            const double size = std::max({m.width, m.length, 0.1});
+            const double k = std::max(1.0, kMinMachinePx * perPx * d / size);
+            double cur[3];
+            machineScale->GetTuple(static_cast<vtkIdType>(i), cur);
+            const double want[3] = {std::max(m.width, 0.1) * k, std::max(m.length, 0.1) * k,
+                                    std::max(m.height, 0.1) * k};
+            if (std::abs(cur[0] - want[0]) > 1e-3 * want[0] || std::abs(cur[2] - want[2]) > 1e-3 * want[2]) {
+                machineScale->SetTuple3(static_cast<vtkIdType>(i), want[0], want[1], want[2]);
+                changed = true;
+            }
+        }
+        if (changed) {
+            machineScale->Modified();
+            machineData->Modified();
+        }
     }
 
     // Name labels above the machines, nearest to the camera first, none overlapping another or the selected
