@@ -35,6 +35,33 @@ void settle(int ms) {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
 }
 
+// The console on the built-in simulated site, shown at `size`; the run's recording goes into a temporary
+// directory, not into the home directory.
+struct BuiltInConsole {
+    QTemporaryDir recordings;
+    std::unique_ptr<SiteRuntime> runtime;
+    std::unique_ptr<MainWindow> window;
+    QString open(QSize size) { // empty on success, else why not
+        auto site = loadSite({});
+        if (!site.ok() || !recordings.isValid())
+            return QStringLiteral("built-in site or temporary directory not available");
+        SiteConfig cfg = std::move(site.value());
+        cfg.record.dir = recordings.path().toStdString();
+        runtime = std::make_unique<SiteRuntime>(cfg);
+        if (const QString e = runtime->start(); !e.isEmpty())
+            return e;
+        window = std::make_unique<MainWindow>();
+        runtime->populate(*window);
+        window->resize(size);
+        window->show();
+        return QTest::qWaitForWindowExposed(window.get()) ? QString() : QStringLiteral("window not exposed");
+    }
+    ~BuiltInConsole() {
+        window.reset(); // before the runtime whose models it shows
+        runtime.reset();
+    }
+};
+
 // The table of a panel: the largest visible QTableView in it.
 QTableView* mainTable(QWidget* panel) {
     QTableView* best = nullptr;
@@ -101,19 +128,10 @@ private slots:
             QVERIFY(tr.load(QStringLiteral(":/i18n/ocu_%1.qm").arg(lang)));
             QCoreApplication::installTranslator(&tr);
         }
-        auto site = loadSite({});
-        QVERIFY(site.ok());
-        SiteConfig cfg = std::move(site.value());
-        QTemporaryDir recordings; // the run's recording goes here, not into the home directory
-        QVERIFY(recordings.isValid());
-        cfg.record.dir = recordings.path().toStdString();
-        SiteRuntime runtime(cfg);
-        QVERIFY(runtime.start().isEmpty());
-        MainWindow window;
-        runtime.populate(window);
-        window.resize(size);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        BuiltInConsole console;
+        const QString opened = console.open(size);
+        QVERIFY2(opened.isEmpty(), qPrintable(opened));
+        MainWindow& window = *console.window;
         settle(1500);
 
         QStringList problems;
@@ -162,19 +180,10 @@ private slots:
     // so its video pane must want no video (nothing received or decoded) until its tab is raised, and again
     // none once another tab is raised over it.
     void teleopTabBehindAnotherWantsNoVideo() {
-        auto site = loadSite({});
-        QVERIFY(site.ok());
-        SiteConfig cfg = std::move(site.value());
-        QTemporaryDir recordings;
-        QVERIFY(recordings.isValid());
-        cfg.record.dir = recordings.path().toStdString();
-        SiteRuntime runtime(cfg);
-        QVERIFY(runtime.start().isEmpty());
-        MainWindow window;
-        runtime.populate(window);
-        window.resize(1366, 768);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        BuiltInConsole console;
+        const QString opened = console.open(QSize(1366, 768));
+        QVERIFY2(opened.isEmpty(), qPrintable(opened));
+        MainWindow& window = *console.window;
         settle(500);
         auto* pane = window.findChild<TeleopVideoPane*>();
         QVERIFY(pane);
