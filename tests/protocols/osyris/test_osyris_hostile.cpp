@@ -253,7 +253,15 @@ class TestOsyrisHostile : public QObject {
         const std::uint16_t port = findFreeUdpPort();
         Console console;
         OsyrisListener quiet;
-        OsyrisStack ocu(stationConfig(port, kConsole, 15), console);
+        osyris::OsyrisConfig ocuCfg = stationConfig(port, kConsole, 15);
+        // This test is about the hostile station (issue 14): the console never gives gaps up here. With the
+        // give-up of issue 17 §4 on (defaults), on a machine loaded by two CPU hogs a gap is given up while
+        // its repair is slow and, although every slot arrives and is recounted, the final counts differ from
+        // the quiet run's (3 of 3 runs, 2026-11-24): an open defect of the give-up/recount path, recorded in
+        // the issue-17 note, not something this test should hide behind a retry.
+        ocuCfg.gapGiveUpNaks = 0;
+        ocuCfg.gapGiveUpMs = 0;
+        OsyrisStack ocu(ocuCfg, console);
         OsyrisStack roller1(stationConfig(port, 1, 7), quiet);
         OsyrisStack roller2(stationConfig(port, 2, 7), quiet);
         std::string err;
@@ -328,11 +336,12 @@ class TestOsyrisHostile : public QObject {
             QTRY_VERIFY_WITH_TIMEOUT(ocu.store()->held(r).containsAll(0, kTrack - 1), 30000);
         QCOMPARE(ocu.store()->count(1), std::uint64_t(kTrack));
         QCOMPARE(ocu.store()->count(2), std::uint64_t(kTrack));
-        // The grid advances over the last slots on its Beats, and recounts given-up slots that arrived late
-        // (issue 17 §4): under load that takes longer than a few Beats, so wait until the counts stop
-        // changing (three equal readings 300 ms apart, at most 30 s) instead of a fixed sleep.
+        // The grid advances over the last slots on its Beats; under load a gap may have been given up as
+        // unobtainable (issue 17 §4) and its slots recounted once they arrived, at most one recount per
+        // StationCore::kRecountGap (5 s). So wait until the counts have not changed for longer than that (6 s
+        // of equal readings 300 ms apart, at most 60 s) instead of a fixed sleep.
         auto tiles = ocu.passCounts()->tileValues();
-        for (int stable = 0, tries = 0; stable < 3 && tries < 100; ++tries) {
+        for (int stable = 0, tries = 0; stable < 20 && tries < 200; ++tries) {
             std::this_thread::sleep_for(milliseconds(300));
             auto now = ocu.passCounts()->tileValues();
             stable = now == tiles ? stable + 1 : 0;
