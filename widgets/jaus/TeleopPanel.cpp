@@ -556,11 +556,6 @@ void TeleopPanel::focusOutEvent(QFocusEvent* e) {
     QWidget::focusOutEvent(e);
 }
 
-void TeleopPanel::hideEvent(QHideEvent* e) {
-    releaseAll(tr("teleop panel hidden"));
-    QWidget::hideEvent(e);
-}
-
 void TeleopPanel::showEvent(QShowEvent* e) {
     QWidget::showEvent(e);
     // In a scroll area (the main window's docks) the panel is never narrower than it needs: the width it
