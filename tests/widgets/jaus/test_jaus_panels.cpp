@@ -404,6 +404,26 @@ private slots:
         QVERIFY(!win.teleop->controller()->isDriving());
     }
 
+    // The panel leaving the operator's sight (hidden, or a dock tab behind another: OnScreenWatcher) sends
+    // the zeros, like a focus loss.
+    void hidingThePanelSendsZeros() {
+        Site s;
+        Window win(s);
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
+        takeControl(win, 127);
+        win.teleop->setVehicle(127);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 10000);
+        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
+        win.teleop->setFocus();
+        QTest::keyPress(win.teleop, Qt::Key_Shift);
+        QTest::keyPress(win.teleop, Qt::Key_Up, Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(127).state().v > 0.3, 10000);
+        win.teleop->hide();
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(127).state().v) < 1e-3, 10000);
+        QVERIFY(!s.ugv(127).state().driveTimedOut); // stopped by the zeros, not by its drive timeout
+        QVERIFY(!win.teleop->controller()->isDriving());
+    }
+
     void spaceStopsTheVehicle() {
         Site s;
         Window win(s);
