@@ -1,6 +1,7 @@
 #include "app/Screenshot.h"
 
 #include "app/MainWindow.h"
+#include "widgets/SiteMapView.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "widgets/view3d/Site3DView.h"
 #endif
@@ -58,6 +59,19 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
         }
         if (!target)
             return QCoreApplication::translate("Screenshot", "unknown view \"%1\"").arg(view);
+    }
+    {
+        // Issue 17 §6: an on-screen map renders its pass-count tiles over several frames (a frame budget);
+        // the picture shows the finished overlay (up to 5 s).
+        const auto maps = target->findChildren<SiteMapView*>();
+        auto owed = [&maps] {
+            return std::any_of(maps.begin(), maps.end(),
+                               [](SiteMapView* m) { return m->isVisible() && !m->passOverlayComplete(); });
+        };
+        QElapsedTimer t;
+        t.start();
+        while (owed() && t.elapsed() < 5000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     }
     const QPixmap pixmap = target->grab();
     if (pixmap.isNull())

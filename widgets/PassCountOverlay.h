@@ -6,8 +6,13 @@
 // whatever the job's size; a change of the counts re-renders only the level-0 tiles it touched and their
 // ancestors. Memory: a tile image is 256 KB; tiles without any count are not kept (one shared "empty"), and
 // the cache is bounded (kMaxCachedBytes: the least recently drawn tiles go first).
+// Frame budget: rendering every level-0 tile of a whole job once (first view, new palette or target) takes
+// hundreds of ms; with a budget a frame renders tiles only until the budget is spent (at least one) and
+// stands in for the rest with what it has (the tile before the change, else a coarser cached ancestor);
+// stats().pending says how many are owed, and the caller paints again until none are.
 #include "models/PassCountLayer.h"
 
+#include <QElapsedTimer>
 #include <QHash>
 #include <QImage>
 #include <QRectF>
@@ -22,14 +27,19 @@ public:
     static constexpr qint64 kMaxCachedBytes = 96ll << 20;
 
     // Draws the layer into `target` (screen pixels) for the world rectangle `world` (E, N) shown in it.
+    // budgetMs <= 0: render everything this frame (reports, screenshots, benchmarks of the cold cost).
     void draw(QPainter& p, const PassCountLayer& layer, PassPalette palette, PassTarget target,
-              const QRectF& world, const QRectF& screen);
+              const QRectF& world, const QRectF& screen, double budgetMs = 0);
     void clear();
+    // Bound of the tile cache (default kMaxCachedBytes); stand-ins are dropped first.
+    void setCacheLimit(qint64 bytes) { m_maxBytes = bytes; }
 
     struct Stats {
         int level = 0;
         int tilesDrawn = 0;
         int tilesRendered = 0; // this frame
+        int pending = 0;       // tiles of this view not rendered for lack of budget (stand-ins drawn)
+        int standIns = 0;      // of which something was drawn in their place
         qint64 cachedBytes = 0;
         int cachedTiles = 0;
     };
@@ -44,11 +54,21 @@ private:
         return (quint64(quint32(level)) << 58) ^ (quint64(quint32(tx) & 0x1FFFFFFF) << 29) ^
                quint64(quint32(ty) & 0x1FFFFFFF);
     }
-    const Tile& tile(const PassCountLayer& layer, int level, int tx, int ty);
+    // nullptr: not cached and the frame's budget is spent.
+    const Tile* tile(const PassCountLayer& layer, int level, int tx, int ty);
+    bool budgetLeft() const;
+    // What is drawn for a tile not rendered yet: its image from before the change, else a part of a
+    // coarser cached tile. Returns false when there is nothing.
+    bool drawStandIn(QPainter& p, int level, int tx, int ty, const QRectF& target);
     void invalidate(const QRect& cells);
+    void retire(); // every tile becomes a stand-in (palette/target changed)
     void trim();
 
     QHash<quint64, Tile> m_tiles;
+    QHash<quint64, Tile> m_stale; // stand-ins: tiles of the previous palette or counts
+    double m_budgetMs = 0;
+    qint64 m_maxBytes = kMaxCachedBytes;
+    QElapsedTimer m_clock;
     const PassCountLayer* m_layer = nullptr;
     quint64 m_revision = 0;
     PassPalette m_palette = PassPalette::Discrete;

@@ -276,7 +276,9 @@ void SiteMapView::paintEvent(QPaintEvent*) {
     ++m_framesPainted;
     m_lastPaint.start();
     QPainter p(this);
+    m_inPaintEvent = true;
     paintScene(p, size());
+    m_inPaintEvent = false;
 }
 
 void SiteMapView::resizeEvent(QResizeEvent*) {
@@ -325,6 +327,8 @@ void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
     if (m_pass && (m_pass->revision() != m_passImageRevision || m_palette != m_passImagePalette ||
                    m_target.min != m_passImageTarget.min || m_target.max != m_passImageTarget.max))
         m_staticValid = false;
+    if (m_passOverlayPending)
+        m_staticValid = false; // owed pass-count tiles: this frame renders more of them
     if (m_staticValid && m_static.size() == px && m_staticCenter == m_center && m_staticScale == m_scale)
         return;
     if (m_static.size() != px)
@@ -332,6 +336,7 @@ void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
     m_static.setDevicePixelRatio(dpr);
     m_static.fill(QColor(0xf4, 0xf1, 0xea)); // light site-plan background
     QPainter sp(&m_static);
+    m_passOverlayPending = false; // drawPassCount says again if tiles are still owed
     drawStatic(sp, size);
     if (m_night)
         dimStaticForNight(sp, size);
@@ -416,7 +421,16 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
 void SiteMapView::drawPassCount(QPainter& p, const QSize& size) {
     // Issue 17 §6: a tile pyramid of cached images (PassCountOverlay), any zoom, only changed tiles redrawn.
     m_passOverlay.draw(p, *m_pass, m_palette, m_target, visibleWorld(size),
-                       QRectF(QPointF(0, 0), QSizeF(size)));
+                       QRectF(QPointF(0, 0), QSizeF(size)), m_inPaintEvent ? m_passBudgetMs : 0);
+    m_passOverlayPending = m_passOverlay.stats().pending > 0;
+    if (m_passOverlayPending && !m_passMoreQueued) {
+        // The next frame at once (not behind the data-rate cap): the operator waits for these tiles.
+        m_passMoreQueued = true;
+        QTimer::singleShot(0, this, [this] {
+            m_passMoreQueued = false;
+            update();
+        });
+    }
     m_passImageRevision = m_pass->revision(); // what the static layer shows (ensureStaticLayer)
     m_passImagePalette = m_palette;
     m_passImageTarget = m_target;

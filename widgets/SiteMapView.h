@@ -163,6 +163,14 @@ public:
     void setMaxDataFrameRate(double hz);
     double maxDataFrameRate() const { return m_maxDataHz; }
     int framesPainted() const { return m_framesPainted; } // paintEvent calls so far
+    // Issue 17 §6: an on-screen frame renders pass-count tiles for at most this long (the rest follow on the
+    // next frames, stand-ins shown meanwhile); 0 = all at once. paintScene() called directly (reports,
+    // benchmarks) always renders everything.
+    void setPassOverlayFrameBudget(double ms) { m_passBudgetMs = ms; }
+    double passOverlayFrameBudget() const { return m_passBudgetMs; }
+    // False while pass-count tiles of the current view are still owed (a repaint is scheduled).
+    bool passOverlayComplete() const { return !m_passOverlayPending; }
+    const PassCountOverlay::Stats& passOverlayStats() const { return m_passOverlay.stats(); }
 
 public slots:
     void passCountChanged();
@@ -264,6 +272,10 @@ private:
     quint64 m_passImageRevision = 0;
     PassPalette m_passImagePalette = PassPalette::Discrete;
     PassTarget m_passImageTarget{-1, -1};
+    double m_passBudgetMs = 8; // half a 60 Hz frame: the rest of the map still fits in 16 ms
+    bool m_inPaintEvent = false;
+    bool m_passOverlayPending = false;
+    bool m_passMoreQueued = false;
 
     QHash<QString, std::deque<QPointF>> m_trails;
     int m_trailMax = 120;

@@ -6,6 +6,7 @@
 #include "models/bridges/OsyrisPassCountLayer.h"
 #include "protocols/osyris/PassCountGrid.h"
 #include "protocols/osyris/RibbonStore.h"
+#include "widgets/PassCountOverlay.h"
 #include "widgets/SiteMapView.h"
 
 #include <QApplication>
@@ -13,6 +14,7 @@
 #include <QImage>
 #include <QPainter>
 #include <QTemporaryDir>
+#include <QWindow>
 
 #include <chrono>
 #include <cmath>
@@ -190,6 +192,69 @@ int main(int argc, char** argv) {
         }
         std::printf("overlay %-17s: cold %.1f ms, warm %.2f ms wall / %.2f ms CPU, after a change %.1f ms\n",
                     z.name, coldMs, warmMs, warmCpu, changed.wallMs());
+    }
+
+    // An on-screen frame renders tiles for at most SiteMapView's budget (8 ms) and stands in for the rest;
+    // the following frames finish the view. The whole job's first view and a palette change, frame by frame.
+    {
+        const double budget = view.passOverlayFrameBudget();
+        const double w = 8200, h = w * 1080 / 1920;
+        const QRectF world(4500 - w / 2, 2000 - h / 2, w, h), screen(0, 0, 1920, 1080);
+        PassCountOverlay ov;
+        auto run = [&](const char* what, PassPalette palette) {
+            int frames = 0;
+            double longest = 0, first = 0;
+            Timer all;
+            do {
+                Timer f;
+                QPainter p(&target);
+                ov.draw(p, layer, palette, {3, 5}, world, screen, budget);
+                p.end();
+                const double ms = f.wallMs();
+                if (frames++ == 0)
+                    first = ms;
+                longest = std::max(longest, ms);
+            } while (ov.stats().pending > 0 && frames < 10000);
+            std::printf(
+                "overlay %s, %.0f ms budget: %d frames until complete, first %.1f ms, longest %.1f ms, "
+                "all %.0f ms\n",
+                what, budget, frames, first, longest, all.wallMs());
+        };
+        run("whole job, first view", PassPalette::Discrete);
+        run("whole job, palette changed", PassPalette::Summary);
+
+        // The same through the map widget on screen (offscreen platform): whole frames (static layer,
+        // overlay, blit), painted synchronously one after the other until the overlay is complete.
+        SiteMapView shown;
+        shown.resize(1920, 1080);
+        for (auto l : {SiteMapView::LayerMachines, SiteMapView::LayerLabels, SiteMapView::LayerTrails,
+                       SiteMapView::LayerOwnPosition, SiteMapView::LayerCursor})
+            shown.setLayerVisible(l, false);
+        shown.setView({4500, 2000}, 1920.0 / 8200);
+        shown.show();
+        for (Timer wait;
+             !(shown.windowHandle() && shown.windowHandle()->isExposed()) && wait.wallMs() < 5000;)
+            QCoreApplication::processEvents();
+        QCoreApplication::processEvents();
+        shown.setPassCountLayer(&layer); // the frames below paint synchronously; no events in between
+        auto frames = [&](const char* what) {
+            int n = 0;
+            double longest = 0;
+            Timer all;
+            do {
+                Timer f;
+                shown.repaint();
+                longest = std::max(longest, f.wallMs());
+                ++n;
+            } while (!shown.passOverlayComplete() && n < 10000);
+            std::printf("map frames at 1920x1080, %s: %d frames, longest %.1f ms, all %.0f ms\n", what, n,
+                        longest, all.wallMs());
+        };
+        frames("whole job, first view");
+        shown.setPassPalette(PassPalette::Summary);
+        frames("whole job, palette changed");
+        shown.setPassTarget({2, 4});
+        frames("whole job, target changed");
     }
 
     // Restart: open the store and recount everything.
