@@ -2,6 +2,7 @@
 
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
+#include "widgets/OnScreenWatcher.h"
 #include "widgets/view3d/Site3DView.h"
 
 #include <QTimer>
@@ -22,37 +23,35 @@ Site3DFeed::Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* sele
     connect(fleet, &FleetModel::machineStaleChanged, this, [this] { m_machinesDirty = true; });
     // On screen, not just visible: a dock in a tab group behind another (the console's default layout) stays
     // isVisible() with nothing of it on screen, and gets no hide event (issue 19 §7: the hidden 3D tab took
-    // ~2 % of a core preparing 1,000 machines 10 times a second). What changed stays dirty until it is seen.
-    auto onScreen = [this] { return m_view->isVisible() && !m_view->visibleRegion().isEmpty(); };
-    connect(m_machineTimer, &QTimer::timeout, this, [this, onScreen] {
-        if (m_machinesDirty && onScreen())
+    // ~2 % of a core preparing 1,000 machines 10 times a second). The same OnScreenWatcher as the video and
+    // teleop panels tells; nothing is prepared while off screen (issue 19 §4), what changed meanwhile stays
+    // dirty and is pushed at once when the panel comes in front. Machines go out at most every 100 ms and
+    // only when the fleet changed, so the view never draws faster than the data arrive.
+    m_onScreen = new OnScreenWatcher(view);
+    connect(m_machineTimer, &QTimer::timeout, this, [this] {
+        if (m_machinesDirty && m_onScreen->onScreen())
             pushMachines();
     });
-    connect(m_passTimer, &QTimer::timeout, this, [this, onScreen] {
-        if (m_passDirty && onScreen())
+    connect(m_passTimer, &QTimer::timeout, this, [this] {
+        if (m_passDirty && m_onScreen->onScreen())
             pushPassCount();
     });
-    // Nothing is prepared for a hidden panel (issue 19 §4: no CPU while hidden): the timers run only while
-    // it is visible; what changed meanwhile stays marked dirty and is pushed at once when it is shown.
-    // Machines go out at most every 100 ms and only when the fleet changed, so the view never draws faster
-    // than the data arrive.
-    connect(view, &Site3DView::visibilityChanged, this, [this, onScreen](bool visible) {
-        if (!visible) {
+    auto follow = [this](bool onScreen) {
+        if (!onScreen) {
             m_machineTimer->stop();
             m_passTimer->stop();
             return;
         }
-        if (m_passDirty && onScreen())
+        if (m_passDirty)
             pushPassCount();
-        if (m_machinesDirty && onScreen())
+        if (m_machinesDirty)
             pushMachines();
         m_machineTimer->start(100);
         m_passTimer->start(1000);
-    });
-    if (view->isVisible()) {
-        m_machineTimer->start(100);
-        m_passTimer->start(1000);
-    }
+    };
+    connect(m_onScreen, &OnScreenWatcher::changed, this, follow);
+    if (m_onScreen->onScreen())
+        follow(true);
     if (selection) {
         connect(view, &Site3DView::machinePicked, selection, &FleetSelection::setCurrent);
         connect(selection, &FleetSelection::currentMachineChanged, view, &Site3DView::setSelectedMachine);

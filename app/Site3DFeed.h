@@ -15,6 +15,7 @@ namespace ocu {
 
 class FleetModel;
 class FleetSelection;
+class OnScreenWatcher;
 class Site3DView;
 
 class Site3DFeed : public QObject {
@@ -45,6 +46,7 @@ private:
     PassTarget m_target;
     QTimer* m_machineTimer;
     QTimer* m_passTimer;
+    OnScreenWatcher* m_onScreen = nullptr; // the view's
     bool m_machinesDirty = true;
     bool m_passDirty = false;
     int m_machinePushes = 0;
