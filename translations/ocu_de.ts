@@ -2768,6 +2768,46 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
+    <message>
+        <source>Covered cells within the target passes, % of the range's band</source>
+        <translation>Überfahrene Zellen mit Übergängen im Zielbereich, % des Streifens</translation>
+    </message>
+    <message>
+        <source>Pick a range to outline it on the map; double click to show it</source>
+        <translation>Einen Abschnitt wählen umrandet ihn in der Karte; Doppelklick zeigt ihn</translation>
+    </message>
+    <message>
+        <source>Areas</source>
+        <translation>Flächen</translation>
+    </message>
+    <message>
+        <source>Stations</source>
+        <translation>Stationen</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Ab</translation>
+    </message>
+    <message>
+        <source>No station ranges: the alignment cannot be placed (no EPSG code or worksite frame).</source>
+        <translation>Keine Stationsabschnitte: die Achse lässt sich nicht platzieren (kein EPSG-Code oder Baustellenrahmen).</translation>
+    </message>
+    <message>
+        <source>No station ranges without a design alignment.</source>
+        <translation>Ohne Achse im Entwurf keine Stationsabschnitte.</translation>
+    </message>
+    <message>
+        <source>Every %1 m along %2 (%3 m left, %4 m right)</source>
+        <translation>Alle %1 m entlang %2 (%3 m links, %4 m rechts)</translation>
+    </message>
+    <message>
+        <source>the alignment</source>
+        <translation>der Achse</translation>
+    </message>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
 </context>
 <context>
     <name>ocu::CompactionMapOverlay</name>

@@ -266,6 +266,36 @@ CompactionView::CoverageTable CompactionSession::coverageTable(int lift) const {
             }
         out.areas.push_back(row);
     }
+    out.alignment = t.alignment;
+    out.stationStep = job.stationStep > 0 ? job.stationStep : 20;
+    out.bandLeft = job.bandLeft;
+    out.bandRight = job.bandRight;
+    const landxml::Alignment* al =
+        m_design && !m_design->alignments.empty() ? &m_design->alignments.front() : nullptr;
+    // The band of each range in the site frame, built like the statistics' (osyris::stationBandRing).
+    const osyris::StationPointFn inSite = [&](double s, double off) -> std::optional<osyris::LocalPoint> {
+        const auto p = al ? al->pointAt(s, off) : std::nullopt;
+        const auto q = p ? designToSite(*p) : std::nullopt;
+        if (!q)
+            return std::nullopt;
+        return osyris::LocalPoint{q->x(), q->y()};
+    };
+    for (const osyris::StationBin& b : t.stations) {
+        StationRow row;
+        row.from = b.from;
+        row.to = b.to;
+        if (b.stats.cells) {
+            row.hasStats = true;
+            row.coveragePercent = b.stats.coveragePercent();
+            row.atTargetPercent = b.stats.percentOf(b.stats.atTarget);
+            row.underPercent = b.stats.percentOf(b.stats.under);
+            row.overPercent = b.stats.percentOf(b.stats.over);
+            row.incompleteCells = b.stats.incomplete;
+        }
+        for (const auto& pt : osyris::stationBandRing(inSite, b.from, b.to, job.bandLeft, job.bandRight, 2.0))
+            row.band << QPointF(pt.x, pt.y);
+        out.stations.push_back(row);
+    }
     return out;
 }
 

@@ -53,9 +53,21 @@ public:
     struct LiftRange {
         double bottom = 0, top = 0; // z, metres
     };
+    // One station range along the design's first alignment (every stationStep m, the band bandLeft m left
+    // to bandRight m right of the centre line), as the report's per-station table.
+    struct StationRow {
+        double from = 0, to = 0; // stations, m
+        bool hasStats = false;   // counts cover part of the band
+        double coveragePercent = 0, atTargetPercent = 0, underPercent = 0, overPercent = 0;
+        quint64 incompleteCells = 0;
+        QPolygonF band; // site ENU, for the map
+    };
     struct CoverageTable {
         QVector<LiftRange> lifts; // of the counted data
         QVector<AreaRow> areas;   // every area, in the session's order
+        QString alignment;        // of the station ranges; empty: no design alignment (or no CRS for it)
+        double stationStep = 0, bandLeft = 0, bandRight = 0;
+        QVector<StationRow> stations;
     };
     virtual CoverageTable coverageTable(int lift) const = 0;
 

@@ -219,6 +219,53 @@ private slots:
         QVERIFY(pc);
         QVERIFY(layerHasCounts(pc));
         qInfo("Lot A covered after %lld ms", clock.elapsed());
+
+        // ---- Per station range (the Stations tab): every 20 m of the 5.4 km alignment, 6 m either side;
+        // the ranges the rollers passed have coverage; a picked range is outlined on the map, a double click
+        // frames it, and leaving the tab takes the outline away.
+        QTableWidget* stations = areasPanel->stationTable();
+        areasPanel->tabs()->setCurrentIndex(1);
+        QVERIFY(stations->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(stations->rowCount() >= 270, 10000);
+        QCOMPARE(stations->item(0, 0)->text(), QStringLiteral("0+000"));
+        QCOMPARE(stations->item(1, 0)->toolTip(), QStringLiteral("0+020 – 0+040"));
+        int coveredRow = -1;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (int r = 0; r < stations->rowCount(); ++r)
+                    if (stations->item(r, 1) && stations->item(r, 1)->text().toDouble() > 0) {
+                        coveredRow = r;
+                        return true;
+                    }
+                return false;
+            }(),
+            30000);
+        const auto table = session->coverageTable(-1);
+        QCOMPARE(table.stations.size(), stations->rowCount());
+        QCOMPARE(table.stationStep, 20.0);
+        stations->selectRow(coveredRow);
+        const QPolygonF band = overlay->highlightedBand();
+        QVERIFY(band.size() >= 4);
+        QCOMPARE(band, table.stations[coveredRow].band);
+        // The band lies across the centre line: its width about 12 m (6 m either side).
+        QVERIFY2(band.boundingRect().width() + band.boundingRect().height() >= 12 &&
+                     band.boundingRect().width() + band.boundingRect().height() <= 12 + 20 + 20,
+                 qPrintable(
+                     QString("%1 x %2").arg(band.boundingRect().width()).arg(band.boundingRect().height())));
+        window.dock(Panel::SiteMap)->raise();
+        QVERIFY(overlay->zoomToBand());
+        QVERIFY(map->scale() > 5.0);
+        img = map->grab().toImage();
+        const QPoint bandCorner = map->worldToScreen(band[0]).toPoint();
+        QVERIFY2(countColour(img, QRect(bandCorner - QPoint(5, 5), QSize(11, 11)),
+                             CompactionMapOverlay::centreLineColour(), 12) > 0,
+                 qPrintable(img.pixelColor(bandCorner).name()));
+        window.dock(Panel::PassCounts)->raise();
+        if (qEnvironmentVariableIsSet("OCU_TEST_SHOTS")) // for the docs: the picked range on the map
+            window.grab().save(QString::fromLocal8Bit(qgetenv("OCU_TEST_SHOTS")) +
+                               "/compaction-stations.png");
+        areasPanel->tabs()->setCurrentIndex(0);
+        QVERIFY(overlay->highlightedBand().isEmpty());
         // ... and the filter: a speed window no roller reaches (at least 25 km/h) leaves nothing counted, in
         // the overlay's layer and in the areas' statistics alike; without it the counts come back.
         QDoubleSpinBox* speedMin = nullptr;

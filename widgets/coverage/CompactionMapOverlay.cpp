@@ -43,7 +43,22 @@ bool CompactionMapOverlay::zoomToArea(const QString& name) {
             if (n == name)
                 box = ring.boundingRect();
     }
-    if (box.isEmpty() || m_view->width() <= 0 || m_view->height() <= 0)
+    return zoomToBox(box);
+}
+
+void CompactionMapOverlay::setHighlightedBand(const QPolygonF& siteEN, const QString& label) {
+    m_band = siteEN;
+    m_bandLabel = label;
+    if (m_view)
+        m_view->update();
+}
+
+bool CompactionMapOverlay::zoomToBand() {
+    return m_band.size() >= 3 && zoomToBox(m_band.boundingRect());
+}
+
+bool CompactionMapOverlay::zoomToBox(const QRectF& box) {
+    if (!m_view || box.isEmpty() || m_view->width() <= 0 || m_view->height() <= 0)
         return false;
     // 10 % margin; at most 50 px/m (an area of a few metres is not blown up to nothing but cells).
     const double s = std::min({0.9 * m_view->width() / std::max(box.width(), 1.0),
@@ -230,6 +245,28 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         p.drawRect(r.translated(at));
         p.drawText(at, name);
         view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it (issue 19 §1)
+    }
+    if (m_band.size() >= 3) {
+        // The station range picked in the panel: dashed, in the centre line's orange (it is a piece of the
+        // alignment's band), over a white halo; its stationing at its first vertex.
+        const QPolygonF s = toScreen(m_band);
+        if (s.boundingRect().intersects(screen)) {
+            p.setBrush(Qt::NoBrush);
+            p.setPen(QPen(QColor(255, 255, 255, 230), 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.drawPolygon(s);
+            p.setPen(QPen(centreLineColour(), 3, Qt::DashLine, Qt::RoundCap, Qt::RoundJoin));
+            p.drawPolygon(s);
+            QFont f = p.font();
+            f.setPixelSize(12);
+            f.setBold(true);
+            p.setFont(f);
+            const QRectF r = p.fontMetrics().boundingRect(m_bandLabel).adjusted(-3, -1, 3, 1);
+            const QPointF at = s.boundingRect().topLeft() + QPointF(0, -6);
+            p.fillRect(r.translated(at), QColor(255, 255, 255, 230));
+            p.setPen(QColor(0x80, 0x40, 0x00));
+            p.drawText(at, m_bandLabel);
+            view.reserveLabelArea(r.translated(at));
+        }
     }
     if (m_drawing) {
         QPolygonF s = toScreen(m_points);

@@ -26,6 +26,10 @@ public:
     void setHighlightedArea(const QString& name);
     // Frames the named area (or the design's boundary when the name is empty) on the map; false if unknown.
     bool zoomToArea(const QString& name);
+    // A station range picked in the panel: outlined on the map (empty: none); zoomToBand frames it.
+    void setHighlightedBand(const QPolygonF& siteEN, const QString& label);
+    const QPolygonF& highlightedBand() const { return m_band; }
+    bool zoomToBand();
 
     static QColor areaColour() { return QColor(0xb0, 0x00, 0x6e); }
     static QColor centreLineColour() { return QColor(0xe0, 0x70, 0x00); }
@@ -50,6 +54,9 @@ private:
     QPointF m_hover;
     bool m_haveHover = false;
     QString m_highlight;
+    QPolygonF m_band;
+    QString m_bandLabel;
+    bool zoomToBox(const QRectF& box);
 };
 
 } // namespace ocu

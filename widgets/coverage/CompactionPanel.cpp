@@ -12,6 +12,7 @@
 #include <QJsonArray>
 #include <QLabel>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -36,18 +37,44 @@ CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* 
     m_table->horizontalHeaderItem(2)->setToolTip(tr("Covered cells within the target passes, % of the area"));
     m_table->horizontalHeaderItem(5)->setToolTip(
         tr("Cells a given-up ribbon gap may have passed over: their counts are lower bounds"));
+    // Per station range along the design's alignment (the report's per-station table, issue 17 §1).
+    auto* stationsPage = new QWidget;
+    auto* sv = new QVBoxLayout(stationsPage);
+    sv->setContentsMargins(0, 2, 0, 0);
+    m_stationsCaption = new QLabel;
+    m_stationsCaption->setWordWrap(true);
+    m_stationsCaption->setMaximumHeight(m_stationsCaption->fontMetrics().lineSpacing() * 2 + 2);
+    sv->addWidget(m_stationsCaption);
+    m_stations = new QTableWidget(0, 6);
+    m_stations->setHorizontalHeaderLabels(
+        {tr("From"), tr("Covered %"), tr("Target %"), tr("Under %"), tr("Over %"), tr("Incompl.")});
+    m_stations->horizontalHeaderItem(2)->setToolTip(
+        tr("Covered cells within the target passes, % of the range's band"));
+    m_stations->horizontalHeaderItem(5)->setToolTip(
+        tr("Cells a given-up ribbon gap may have passed over: their counts are lower bounds"));
     // The numbers as narrow as they are, the name takes the rest (the panel is about 300 px wide at 1366 x
     // 768).
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
-    m_table->horizontalHeader()->setMinimumSectionSize(40);
-    m_table->setWordWrap(false);
-    m_table->setTextElideMode(Qt::ElideRight);
-    m_table->verticalHeader()->hide();
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    v->addWidget(m_table, 1);
+    for (QTableWidget* t : {m_table, m_stations}) {
+        t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+        t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+        t->horizontalHeader()->setMinimumSectionSize(40);
+        t->setWordWrap(false);
+        t->setTextElideMode(Qt::ElideRight);
+        t->verticalHeader()->hide();
+        t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        t->setSelectionBehavior(QAbstractItemView::SelectRows);
+        t->setSelectionMode(QAbstractItemView::SingleSelection);
+    }
+    m_stations->setToolTip(tr("Pick a range to outline it on the map; double click to show it"));
+    // The station must be readable: when the panel is narrow, the incomplete count gives way instead.
+    m_stations->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_stations->horizontalHeader()->setSectionResizeMode(5, QHeaderView::Stretch);
+    sv->addWidget(m_stations, 1);
+    m_tabs = new QTabWidget;
+    m_tabs->setDocumentMode(true);
+    m_tabs->addTab(m_table, tr("Areas"));
+    m_tabs->addTab(stationsPage, tr("Stations"));
+    v->addWidget(m_tabs, 1);
     auto* buttons = new QHBoxLayout;
     m_draw = new QPushButton(tr("Draw area"));
     m_draw->setToolTip(
@@ -103,6 +130,12 @@ CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* 
             m_overlay->zoomToArea(it->data(Qt::UserRole).toString());
     });
     m_table->setToolTip(tr("Double click an area to show it on the map"));
+    connect(m_stations, &QTableWidget::itemSelectionChanged, this, &CompactionPanel::stationPicked);
+    connect(m_tabs, &QTabWidget::currentChanged, this, &CompactionPanel::stationPicked);
+    connect(m_stations, &QTableWidget::cellDoubleClicked, this, [this](int, int) {
+        stationPicked();
+        m_overlay->zoomToBand();
+    });
     connect(m_report, &QPushButton::clicked, this, &CompactionPanel::reportAction);
     refresh();
 }
@@ -170,8 +203,61 @@ void CompactionPanel::refresh() {
         if (a.name == selected)
             m_table->selectRow(r);
     }
+    // Station ranges.
+    if (t.alignment.isEmpty() && t.stations.isEmpty())
+        m_stationsCaption->setText(
+            design.loaded
+                ? tr("No station ranges: the alignment cannot be placed (no EPSG code or worksite frame).")
+                : tr("No station ranges without a design alignment."));
+    else
+        m_stationsCaption->setText(tr("Every %1 m along %2 (%3 m left, %4 m right)")
+                                       .arg(t.stationStep)
+                                       .arg(t.alignment.isEmpty() ? tr("the alignment") : t.alignment)
+                                       .arg(t.bandLeft)
+                                       .arg(t.bandRight));
+    const int stationRow = m_stations->currentRow();
+    m_stations->setRowCount(int(t.stations.size()));
+    m_stationBands.clear();
+    for (int r = 0; r < t.stations.size(); ++r) {
+        const CompactionView::StationRow& st = t.stations[r];
+        auto set = [&](int c, const QString& text) {
+            auto* it = new QTableWidgetItem(text);
+            if (c > 0)
+                it->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            m_stations->setItem(r, c, it);
+        };
+        // The range's start (narrow at 1366 x 768); the whole range in the tooltip and on the map.
+        set(0, CompactionView::stationText(st.from, 0));
+        m_stations->item(r, 0)->setToolTip(tr("%1 – %2").arg(CompactionView::stationText(st.from, 0),
+                                                             CompactionView::stationText(st.to, 0)));
+        if (st.hasStats) {
+            set(1, QString::number(st.coveragePercent, 'f', 1));
+            set(2, QString::number(st.atTargetPercent, 'f', 1));
+            set(3, QString::number(st.underPercent, 'f', 1));
+            set(4, QString::number(st.overPercent, 'f', 1));
+            set(5, QString::number(st.incompleteCells));
+        } else {
+            for (int c = 1; c < 6; ++c)
+                set(c, QStringLiteral("–"));
+        }
+        m_stationBands.push_back(st.band);
+    }
+    if (stationRow >= 0 && stationRow < m_stations->rowCount()) {
+        const QSignalBlocker block(m_stations);
+        m_stations->selectRow(stationRow);
+    }
+    stationPicked();
     m_remove->setEnabled(!t.areas.isEmpty());
     m_report->setEnabled(m_session->hasWorksite());
+}
+
+void CompactionPanel::stationPicked() {
+    // Outlined on the map only while the Stations tab is in front and a range is picked.
+    const int row = m_stations->currentRow();
+    const bool show = m_tabs->currentIndex() == 1 && row >= 0 && row < m_stationBands.size() &&
+                      !m_stations->selectedItems().isEmpty();
+    m_overlay->setHighlightedBand(show ? m_stationBands[row] : QPolygonF(),
+                                  show ? m_stations->item(row, 0)->toolTip() : QString());
 }
 
 void CompactionPanel::askAreaName(const QPolygonF& siteEN) {
