@@ -6,6 +6,10 @@
 #include "models/FleetSelection.h"
 #include "models/PassCountLayer.h"
 #include "widgets/SiteMapView.h"
+#ifdef OCU_HAVE_COVERAGE_WIDGETS
+#include "models/coverage/CompactionView.h"
+#include "widgets/coverage/CompactionMapOverlay.h"
+#endif
 
 #include <QApplication>
 #include <QImage>
@@ -64,6 +68,40 @@ std::pair<int, int> lightnessRange(const QImage& img, QRect r) {
         }
     return {lo, hi};
 }
+
+#ifdef OCU_HAVE_COVERAGE_WIDGETS
+// One drawn area, nothing else: what the compaction overlay draws for it.
+class OneArea : public CompactionView {
+public:
+    OneArea() {
+        m_geometry.areas.push_back(
+            {QStringLiteral("Lot A"), QPolygonF({{-20, -20}, {20, -20}, {20, 20}, {-20, 20}})});
+        m_geometry.areaFromDesign.push_back(false);
+    }
+    const MapGeometry& mapGeometry() const override { return m_geometry; }
+    DesignInfo designInfo() const override { return {}; }
+    CoverageTable coverageTable(int) const override { return {}; }
+    int areaCount() const override { return 1; }
+    QString addArea(const QString&, const QPolygonF&) override { return {}; }
+    bool removeArea(const QString&) override { return false; }
+    QString saveAreas() override { return {}; }
+    QString areasFile() const override { return {}; }
+    bool hasWorksite() const override { return false; }
+    QJsonObject reportCommand(const QJsonObject&) const override { return {}; }
+
+private:
+    MapGeometry m_geometry;
+};
+
+// Share of the pixels of r lighter than 220.
+double lightShare(const QImage& img, QRect r) {
+    int n = 0;
+    for (int y = r.top(); y <= r.bottom(); ++y)
+        for (int x = r.left(); x <= r.right(); ++x)
+            n += QColor(img.pixel(x, y)).lightness() > 220;
+    return double(n) / (r.width() * r.height());
+}
+#endif
 
 } // namespace
 
@@ -163,6 +201,35 @@ private slots:
         applyTheme(*app, Theme::Day);
         QTRY_VERIFY(!v.isNight());
     }
+
+#ifdef OCU_HAVE_COVERAGE_WIDGETS
+    // The compaction overlay's name boxes and halos (issue 17) were white at night.
+    void compactionLabelsFollowThePalette() {
+        auto* app = qobject_cast<QApplication*>(QCoreApplication::instance());
+        SiteMapView v;
+        v.resize(600, 400);
+        for (auto l : {SiteMapView::LayerCursor, SiteMapView::LayerLegend, SiteMapView::LayerScaleBar,
+                       SiteMapView::LayerNorthArrow})
+            v.setLayerVisible(l, false);
+        v.setView(QPointF(0, 0), 2.0);
+        OneArea session;
+        CompactionMapOverlay overlay(&v, &session);
+        // The name's box: right of and above the first vertex (-20, -20) on screen, one text line high.
+        const QImage day = paint(v); // (the view learns its size from the first paint)
+        const QPoint corner = v.worldToScreen(QPointF(-20, -20)).toPoint();
+        const QRect nameBox(corner.x() + 3, corner.y() - 15, 34, 9);
+        QVERIFY2(lightShare(day, nameBox) > 0.5, qPrintable(QString::number(lightShare(day, nameBox))));
+        applyTheme(*app, Theme::Night);
+        QTRY_VERIFY(v.isNight());
+        const QImage night = paint(v);
+        QVERIFY2(lightShare(night, nameBox) < 0.1, qPrintable(QString::number(lightShare(night, nameBox))));
+        // The name itself stays readable: light text in the dark box.
+        const auto [lo, hi] = lightnessRange(night, nameBox);
+        QVERIFY2(lo < 60 && hi > 150, qPrintable(QStringLiteral("%1..%2").arg(lo).arg(hi)));
+        applyTheme(*app, Theme::Day);
+        QTRY_VERIFY(!v.isNight());
+    }
+#endif
 };
 
 QTEST_MAIN(TestNightPalette)

@@ -160,11 +160,17 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     p.setBrush(Qt::NoBrush);
+    // The night palette (issue 19 §6): dark boxes and halos with light text, like the map's own labels, so
+    // nothing glares white in a dark cab.
+    const bool night = view.isNight();
+    const QColor box = night ? QColor(30, 30, 34, 230) : QColor(255, 255, 255, 230);
+    const QColor halo = night ? QColor(20, 20, 22, 230) : QColor(255, 255, 255, 230);
+    const QColor stationInk = night ? QColor(0xf0, 0xa8, 0x60) : QColor(0x80, 0x40, 0x00);
     for (const QPolygonF& b : g.boundaries) {
         const QPolygonF s = toScreen(b);
         if (!s.boundingRect().intersects(screen))
             continue;
-        p.setPen(QPen(QColor(40, 40, 40, 200), 1.5, Qt::DashLine));
+        p.setPen(QPen(night ? QColor(200, 200, 200, 200) : QColor(40, 40, 40, 200), 1.5, Qt::DashLine));
         p.drawPolygon(s);
     }
     for (const QPolygonF& c : g.centreLines) {
@@ -193,8 +199,8 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
                 const QString text = CompactionView::stationText(t.station, 0);
                 const QRectF r = p.fontMetrics().boundingRect(text).adjusted(-2, -1, 2, 1);
                 const QPointF at = b + QPointF(4, 4);
-                p.fillRect(r.translated(at), QColor(255, 255, 255, 200));
-                p.setPen(QColor(0x80, 0x40, 0x00));
+                p.fillRect(r.translated(at), box);
+                p.setPen(stationInk);
                 p.drawText(at, text);
                 view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it (issue 19 §1)
             }
@@ -218,8 +224,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
             p.setPen(QPen(areaColour, 1.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
             p.drawPolygon(s);
         } else {
-            p.setPen(
-                QPen(QColor(255, 255, 255, 230), hi ? 8 : 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.setPen(QPen(halo, hi ? 8 : 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
             p.drawPolygon(s);
             QColor fill = areaColour;
             fill.setAlpha(hi ? 60 : 28);
@@ -240,9 +245,10 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
                 break;
             }
         const QRectF r = p.fontMetrics().boundingRect(name).adjusted(-3, -1, 3, 1);
-        p.fillRect(r.translated(at), QColor(255, 255, 255, 230));
+        p.fillRect(r.translated(at), box);
         p.setPen(QPen(areaColour, 1));
         p.drawRect(r.translated(at));
+        p.setPen(night ? areaColour.lighter(190) : areaColour);
         p.drawText(at, name);
         view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it (issue 19 §1)
     }
@@ -252,7 +258,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         const QPolygonF s = toScreen(m_band);
         if (s.boundingRect().intersects(screen)) {
             p.setBrush(Qt::NoBrush);
-            p.setPen(QPen(QColor(255, 255, 255, 230), 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.setPen(QPen(halo, 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
             p.drawPolygon(s);
             p.setPen(QPen(centreLineColour(), 3, Qt::DashLine, Qt::RoundCap, Qt::RoundJoin));
             p.drawPolygon(s);
@@ -262,8 +268,8 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
             p.setFont(f);
             const QRectF r = p.fontMetrics().boundingRect(m_bandLabel).adjusted(-3, -1, 3, 1);
             const QPointF at = s.boundingRect().topLeft() + QPointF(0, -6);
-            p.fillRect(r.translated(at), QColor(255, 255, 255, 230));
-            p.setPen(QColor(0x80, 0x40, 0x00));
+            p.fillRect(r.translated(at), box);
+            p.setPen(stationInk);
             p.drawText(at, m_bandLabel);
             view.reserveLabelArea(r.translated(at));
         }
@@ -278,7 +284,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         p.setBrush(QColor(0xd0, 0x00, 0x80));
         for (const QPointF& q : toScreen(m_points))
             p.drawEllipse(q, 3.5, 3.5);
-        p.setPen(Qt::black);
+        p.setPen(night ? QColor(0xe6, 0xe6, 0xe0) : QColor(Qt::black));
         QFont f = p.font();
         f.setPixelSize(12);
         f.setBold(false);
@@ -288,7 +294,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
                "Esc cancels");
         const QRectF r = p.fontMetrics().boundingRect(hint).adjusted(-6, -3, 6, 3);
         const QPointF at(12, view.height() - 40.0);
-        p.fillRect(r.translated(at), QColor(255, 255, 230, 235));
+        p.fillRect(r.translated(at), night ? QColor(40, 40, 30, 235) : QColor(255, 255, 230, 235));
         p.drawText(at, hint);
     }
     p.restore();
