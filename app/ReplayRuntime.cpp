@@ -251,6 +251,7 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
                                               "live machines only.");
     window.setPanelWidget(Panel::JausControl, notice(off));
     window.setPanelWidget(Panel::Teleop, notice(off));
+    window.setPanelWidget(Panel::Dispatch, notice(off)); // (it said "Starting…" for the whole replay)
     // The OSYRIS pass counts as they were at the replay time (overlay on the map, the panel's histogram).
     if (rec->hasPassCounts()) {
         auto* passPanel = new PassCountPanel;

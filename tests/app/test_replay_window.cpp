@@ -148,6 +148,19 @@ private slots:
         QVERIFY(!window.stopAllAction()->isEnabled());
         auto* log = qobject_cast<EventLogWidget*>(window.panelWidget(Panel::EventLog));
         QVERIFY(log && !log->ackAllButton()->isEnabled());
+        // Every panel shows what the replay has for it or says why not; none stays on the window's
+        // placeholder ("Starting…", the Dispatch panel did for the whole replay).
+        auto labelOf = [&window](Panel p) {
+            QWidget* w = window.panelWidget(p);
+            auto* l = qobject_cast<QLabel*>(w);
+            return l ? l : (w ? w->findChild<QLabel*>() : nullptr);
+        };
+        for (Panel p : MainWindow::panels()) {
+            const QLabel* l = labelOf(p);
+            QVERIFY2(!l || l->text() != MainWindow::tr("Starting…"), qPrintable(MainWindow::panelKey(p)));
+        }
+        QVERIFY(labelOf(Panel::Dispatch) &&
+                labelOf(Panel::Dispatch)->text().startsWith(QStringLiteral("Replay:")));
 
         auto* timeline = window.findChild<ReplayTimeline*>(QStringLiteral("replayTimeline"));
         QVERIFY(timeline);
