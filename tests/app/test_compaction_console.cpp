@@ -462,7 +462,12 @@ void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapVie
     QMouseEvent hover(QEvent::MouseMove, QPointF(px(lotM[4])), map->mapToGlobal(QPointF(px(lotM[4]))),
                       Qt::NoButton, Qt::NoButton, Qt::NoModifier);
     QApplication::sendEvent(map, &hover);
+    // (The live machines, their labels and the legend may cover a point: hidden for the look.)
+    for (auto l : {SiteMapView::LayerMachines, SiteMapView::LayerLabels, SiteMapView::LayerLegend})
+        map->setLayerVisible(l, false);
     QImage img = map->grab().toImage();
+    for (auto l : {SiteMapView::LayerMachines, SiteMapView::LayerLabels, SiteMapView::LayerLegend})
+        map->setLayerVisible(l, true);
     // (A label over the map: the machines moving about are drawn under it, never over it.)
     QLabel* hintLabel = overlay->drawingHintLabel();
     QVERIFY(hintLabel && hintLabel->isVisible());
