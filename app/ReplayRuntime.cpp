@@ -271,6 +271,17 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
                                  passPanel->layerChanged();
                              }
                          });
+#ifdef OCU_HAVE_OCU_VIEW3D
+        // The 3D surface too, in the 2D map's palette and target.
+        feed->setPassCountLayer(c->passCounts());
+        feed->setPassPalette(map->passPalette());
+        feed->setPassTarget(map->passTarget());
+        QObject::connect(passPanel, &PassCountPanel::paletteChanged, feed, &Site3DFeed::setPassPalette);
+        QObject::connect(passPanel, &PassCountPanel::targetChanged, feed, &Site3DFeed::setPassTarget);
+        QObject::connect(c, &ReplayController::passCountsChanged, feed, [feed](const PassCountLayer* layer) {
+            feed->setPassCountLayer(layer); // marks it dirty; a new revision or grid is pushed
+        });
+#endif
     } else {
         window.setPanelWidget(Panel::PassCounts,
                               notice(QCoreApplication::translate("Replay", "This recording holds no pass "

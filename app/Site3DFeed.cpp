@@ -70,8 +70,26 @@ void Site3DFeed::setTerrain(const TerrainGrid3D& grid) {
 }
 
 void Site3DFeed::setPassCountLayer(const PassCountLayer* layer) {
+    if (layer != m_layer)
+        m_layerRevision = 0; // another grid: its revisions say nothing about the last one pushed
     m_layer = layer;
     m_passDirty = true;
+}
+
+void Site3DFeed::setPassPalette(PassPalette palette) {
+    if (palette == m_palette)
+        return;
+    m_palette = palette;
+    m_layerRevision = 0; // same counts, new colours
+    m_passDirty = m_layer != nullptr;
+}
+
+void Site3DFeed::setPassTarget(PassTarget target) {
+    if (target.min == m_target.min && target.max == m_target.max)
+        return;
+    m_target = target;
+    m_layerRevision = 0;
+    m_passDirty = m_layer != nullptr;
 }
 
 void Site3DFeed::passCountChanged() {
@@ -134,16 +152,24 @@ void Site3DFeed::pushPassCount() {
     for (std::size_t i = 0; i < counts.size() && i * 4 + 3 < r.rgba.size(); ++i) {
         if (counts[i] == 0)
             continue;
-        const QColor c = passCountColor(counts[i], PassPalette::Summary, m_target);
+        const QColor c = passCountColor(counts[i], m_palette, m_target);
         r.rgba[i * 4] = static_cast<std::uint8_t>(c.red());
         r.rgba[i * 4 + 1] = static_cast<std::uint8_t>(c.green());
         r.rgba[i * 4 + 2] = static_cast<std::uint8_t>(c.blue());
         r.rgba[i * 4 + 3] = 255;
     }
-    const std::vector<LegendEntry> legend{
-        {tr("below %1").arg(m_target.min), rgb(passCountSummaryColor(m_target.min - 1, m_target))},
-        {tr("%1–%2").arg(m_target.min).arg(m_target.max), rgb(passCountSummaryColor(m_target.min, m_target))},
-        {tr("above %1").arg(m_target.max), rgb(passCountSummaryColor(m_target.max + 1, m_target))}};
+    // The legend of the 2D map's palette: one swatch per count (9+ for the last), or the three classes.
+    std::vector<LegendEntry> legend;
+    if (m_palette == PassPalette::Discrete) {
+        for (int c = 1; c <= 9; ++c)
+            legend.push_back({c == 9 ? QStringLiteral("9+") : QString::number(c),
+                              rgb(passCountColor(c, m_palette, m_target))});
+    } else {
+        const PassTarget t{2, 3}; // representative counts of the three classes (as the 2D legend)
+        legend = {{tr("below %1").arg(m_target.min), rgb(passCountSummaryColor(1, t))},
+                  {tr("%1–%2").arg(m_target.min).arg(m_target.max), rgb(passCountSummaryColor(2, t))},
+                  {tr("above %1").arg(m_target.max), rgb(passCountSummaryColor(4, t))}};
+    }
     m_view->setPassCount(r, legend);
 }
 

@@ -371,10 +371,12 @@ void SiteRuntime::populate(MainWindow& window) {
     connect(passPanel, &PassCountPanel::paletteChanged, map, &SiteMapView::setPassPalette);
     connect(passPanel, &PassCountPanel::targetChanged, map, &SiteMapView::setPassTarget);
 #ifdef OCU_HAVE_OCU_VIEW3D
-    connect(passPanel, &PassCountPanel::targetChanged, feed, [feed](PassTarget t) {
-        feed->setPassTarget(t);
-        feed->passCountChanged();
-    });
+    // The 3D surface in the 2D map's colours, cell for cell (passCountColor with the same palette and
+    // target).
+    feed->setPassPalette(map->passPalette());
+    feed->setPassTarget(map->passTarget());
+    connect(passPanel, &PassCountPanel::paletteChanged, feed, &Site3DFeed::setPassPalette);
+    connect(passPanel, &PassCountPanel::targetChanged, feed, &Site3DFeed::setPassTarget);
 #endif
 
     for (const auto& module : d.modules) {

@@ -2685,8 +2685,8 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <translation>Fläche zeichnen</translation>
     </message>
     <message>
-        <source>Draw a compaction area on the 2D map: click to add points, Enter closes, Esc cancels</source>
-        <translation>Eine Verdichtungsfläche in der 2D-Karte zeichnen: Klick setzt Punkte, Enter schließt, Esc bricht ab</translation>
+        <source>Draw a compaction area on the 2D map: click to add points; Enter, a double click or a click on the first point closes; Backspace undoes; Esc cancels</source>
+        <translation>Eine Verdichtungsfläche in der 2D-Karte zeichnen: Klick setzt Punkte; Enter, Doppelklick oder Klick auf den ersten Punkt schließt; Rücktaste nimmt zurück; Esc bricht ab</translation>
     </message>
     <message>
         <source>Remove</source>
@@ -2743,6 +2743,18 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
     <message>
         <source>Area "%1" saved to %2.</source>
         <translation>Fläche „%1“ gespeichert in %2.</translation>
+    </message>
+    <message>
+        <source>The drawn area was discarded.</source>
+        <translation>Die gezeichnete Fläche wurde verworfen.</translation>
+    </message>
+    <message>
+        <source>Replace area</source>
+        <translation>Fläche ersetzen</translation>
+    </message>
+    <message>
+        <source>An area named "%1" exists. Replace it with the new outline?</source>
+        <translation>Eine Fläche „%1“ gibt es schon. Durch den neuen Umriss ersetzen?</translation>
     </message>
     <message>
         <source>Coverage report not written.</source>
@@ -2812,8 +2824,16 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
 <context>
     <name>ocu::CompactionMapOverlay</name>
     <message>
-        <source>New area: click to add points · Enter or double click closes · Backspace undoes · Esc cancels</source>
-        <translation>Neue Fläche: Klick setzt Punkte · Enter oder Doppelklick schließt · Rücktaste nimmt zurück · Esc bricht ab</translation>
+        <source>New area: %1 points (3 needed)</source>
+        <translation>Neue Fläche: %1 Punkte (3 nötig)</translation>
+    </message>
+    <message>
+        <source>New area: %1 points, %2 m²</source>
+        <translation>Neue Fläche: %1 Punkte, %2 m²</translation>
+    </message>
+    <message>
+        <source>click adds a point · Enter, double click or the first point closes · Backspace undoes · Esc cancels</source>
+        <translation>Klick setzt einen Punkt · Enter, Doppelklick oder der erste Punkt schließt · Rücktaste nimmt zurück · Esc bricht ab</translation>
     </message>
 </context>
 <context>

@@ -10,8 +10,12 @@
 #include "app/SiteRuntime.h"
 
 #include "models/FleetContext.h"
+#include "models/FleetModel.h"
+#include "models/FleetSelection.h"
 #include "models/PassCountLayer.h"
 #include "models/coverage/CompactionSession.h"
+#include "models/coverage/CoverageReport.h"
+#include "protocols/common/GeoFrame.h"
 #include "widgets/PassCountPanel.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/coverage/CompactionMapOverlay.h"
@@ -28,10 +32,12 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -41,6 +47,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <functional>
 
 using namespace ocu;
 
@@ -74,11 +81,71 @@ bool layerHasCounts(const PassCountLayer* pc) {
                 return true;
     return false;
 }
+
+// Answers the modal dialogs the console opens next, one handler per dialog in order (each closes its
+// dialog). Polls, since the dialogs run their own event loops inside the mouse or key event that opens them.
+class ModalAnswers : public QObject {
+public:
+    using Handler = std::function<void(QWidget*)>;
+    explicit ModalAnswers(QList<Handler> handlers) : m_handlers(std::move(handlers)) {
+        connect(&m_poll, &QTimer::timeout, this, [this] {
+            QWidget* w = QApplication::activeModalWidget();
+            if (!w || !w->isVisible() || m_handlers.isEmpty())
+                return;
+            m_handlers.takeFirst()(w);
+        });
+        m_poll.start(20);
+    }
+    bool done() const { return m_handlers.isEmpty(); }
+
+private:
+    QList<Handler> m_handlers;
+    QTimer m_poll;
+};
+// The area-name dialog: records the name it offers, then answers `name` (OK) or cancels (empty name).
+ModalAnswers::Handler nameDialog(const QString& name, QString* offered) {
+    return [name, offered](QWidget* w) {
+        auto* d = qobject_cast<QInputDialog*>(w);
+        if (!d) {
+            qWarning("expected the area-name dialog, got %s", w->metaObject()->className());
+            w->close();
+            return;
+        }
+        if (offered)
+            *offered = d->textValue();
+        if (name.isEmpty()) {
+            d->reject();
+            return;
+        }
+        d->setTextValue(name);
+        d->accept();
+    };
+}
+ModalAnswers::Handler questionDialog(QMessageBox::StandardButton answer, QString* text) {
+    return [answer, text](QWidget* w) {
+        auto* m = qobject_cast<QMessageBox*>(w);
+        if (!m) {
+            qWarning("expected a question, got %s", w->metaObject()->className());
+            w->close();
+            return;
+        }
+        if (text)
+            *text = m->text();
+        m->button(answer)->click();
+    };
+}
 } // namespace
 
 class TestCompactionConsole : public QObject {
     Q_OBJECT
     QTemporaryDir m_home;
+
+    // The map's polygon tool driven with the mouse and the keyboard like an operator (issue 17 §1): started
+    // from the areas panel's button (which brings the map to the front), vertices clicked at known site
+    // points, Backspace, Esc, Enter, a double click, a click on the first point; the areas it makes in the
+    // table, their rings, statistics and outline on the map.
+    void drawAreasWithTheMouse(MainWindow& window, SiteMapView* map, CompactionSession* session,
+                               CompactionPanel* areasPanel, FleetContext* ctx);
 
 private slots:
     void initTestCase() {
@@ -282,6 +349,11 @@ private slots:
         QVERIFY(layerHasCounts(pc));
         qInfo("filter on and off after %lld ms", clock.elapsed());
 
+        drawAreasWithTheMouse(window, map, session, areasPanel, runtime.findChild<FleetContext*>());
+        if (QTest::currentTestFailed())
+            return;
+        qInfo("areas drawn with the mouse after %lld ms", clock.elapsed());
+
         // ---- The legend's per-count swatches are the overlay's colours (its palette function).
         map->setLayerVisible(SiteMapView::LayerMachines, false);
         map->setView(onLine + QPointF(-4000, -4000), 3.0); // no cells, no design: the legend alone
@@ -333,6 +405,283 @@ private slots:
         runtime.stop();
     }
 };
+
+void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapView* map,
+                                                  CompactionSession* session, CompactionPanel* areasPanel,
+                                                  FleetContext* ctx) {
+    QVERIFY(ctx);
+    auto* overlay = session->findChild<CompactionMapOverlay*>();
+    QVERIFY(overlay);
+    QPushButton* draw = nullptr;
+    for (QPushButton* b : areasPanel->findChildren<QPushButton*>())
+        if (b->text() == QLatin1String("Draw area"))
+            draw = b;
+    QVERIFY(draw);
+    const auto& geo = session->mapGeometry();
+    // Site points across the centre line: `off` metres left (+) or right (-) of it at a 100 m tick.
+    auto at = [&](double station, double off) {
+        for (const auto& t : geo.ticks)
+            if (std::abs(t.station - station) < 1e-6) {
+                const QPointF c = (t.left + t.right) / 2;
+                const QPointF d = t.left - c;
+                return c + d / std::hypot(d.x(), d.y()) * off;
+            }
+        qFatal("no tick at %f", station);
+    };
+    auto areaNames = [&] {
+        QStringList n;
+        for (const auto& a : session->mapGeometry().areas)
+            n << a.first;
+        return n;
+    };
+    auto rowOf = [&](const QString& name) {
+        for (int r = 0; r < areasPanel->table()->rowCount(); ++r)
+            if (areasPanel->table()->item(r, 0)->data(Qt::UserRole).toString() == name)
+                return r;
+        return -1;
+    };
+    const QStringList before = areaNames();
+    const int areasBefore = session->areaCount();
+
+    // ---- The 3D tab is in front of the map: "Draw area" brings the map back and gives it the keyboard.
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    window.dock(Panel::Site3D)->raise();
+    // (A dock behind another tab stays isVisible(), with nothing of it on screen.)
+    QTRY_VERIFY(map->visibleRegion().isEmpty());
+    QTest::mouseClick(draw, Qt::LeftButton);
+    QVERIFY(overlay->isDrawing());
+    QCOMPARE(draw->text(), QStringLiteral("Cancel drawing"));
+    QTRY_VERIFY(!map->visibleRegion().isEmpty());
+    QTRY_VERIFY(map->hasFocus());
+
+    // Frame stations 0+100 ... 0+400 (the rollers have been over 0+100 ... 0+300 by now).
+    const QPolygonF lotM{at(100, 10), at(200, 12), at(300, 10), at(300, -10), at(100, -10)};
+    QRectF box = lotM.boundingRect().united(QRectF(at(400, 10), at(400, -10)).normalized());
+    const double scale = std::min(0.8 * map->width() / box.width(), 0.8 * map->height() / box.height());
+    QVERIFY2(scale > 0.5, qPrintable(QString::number(scale))); // a pixel is at most 2 m
+    map->panByPixels({0, 0}); // the operator's view: no auto-fitting while we click
+    map->setView(box.center(), scale);
+    auto px = [&](QPointF world) { return map->worldToScreen(world).toPoint(); };
+    for (const QPointF& w : lotM)
+        QVERIFY(map->rect().contains(px(w)));
+    const double pixelMetres = 1.0 / scale;
+
+    // A machine is selected: clicks of the tool must not reach the map (a click on empty ground would
+    // clear the selection, a drag would pan).
+    const QString machine = ctx->fleet()->machinesSnapshot().first().id;
+    ctx->selection()->setCurrent(machine);
+    const QPointF centre = map->center();
+
+    // ---- Esc cancels: two points, Enter cannot close yet (the hint says how many are needed), Esc.
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(100, 10)));
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(200, 12)));
+    QCOMPARE(overlay->drawnPoints().size(), 2);
+    QVERIFY2(overlay->drawingHint().startsWith(QStringLiteral("New area: 2 points (3 needed)")),
+             qPrintable(overlay->drawingHint()));
+    QTest::keyClick(map, Qt::Key_Return);
+    QVERIFY(overlay->isDrawing());
+    QCOMPARE(overlay->drawnPoints().size(), 2);
+    QTest::keyClick(map, Qt::Key_Escape);
+    QVERIFY(!overlay->isDrawing());
+    QVERIFY(overlay->drawnPoints().isEmpty());
+    QCOMPARE(draw->text(), QStringLiteral("Draw area"));
+    QCOMPARE(session->areaCount(), areasBefore);
+    QCOMPARE(ctx->selection()->currentId(), machine); // Esc was the tool's, not the map's "clear selection"
+    QCOMPARE(map->center(), centre);
+    QVERIFY(overlay->drawingHint().isEmpty());
+    QVERIFY(!overlay->drawingHintLabel()->isVisible());
+
+    // ---- Draw "Lot M": three points, a stray one taken back with Backspace, the fourth, and a double click
+    // on the fifth (as the platform delivers it: press, release, press, double click, release).
+    QTest::mouseClick(draw, Qt::LeftButton);
+    QTRY_VERIFY(map->hasFocus());
+    for (int i = 0; i < 3; ++i)
+        QTest::mouseClick(map, Qt::LeftButton, {}, px(lotM[i]));
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(200, -14))); // stray
+    QCOMPARE(overlay->drawnPoints().size(), 4);
+    QTest::keyClick(map, Qt::Key_Backspace);
+    QCOMPARE(overlay->drawnPoints().size(), 3);
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(lotM[3]));
+    // Feedback while drawing: the hint with the points and the area so far, the points on the map.
+    QVERIFY2(overlay->drawingHint().startsWith(QStringLiteral("New area: 4 points, ")),
+             qPrintable(overlay->drawingHint()));
+    QMouseEvent hover(QEvent::MouseMove, QPointF(px(lotM[4])), map->mapToGlobal(QPointF(px(lotM[4]))),
+                      Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(map, &hover);
+    // (The live machines, their labels and the legend may cover a point: hidden for the look.)
+    for (auto l : {SiteMapView::LayerMachines, SiteMapView::LayerLabels, SiteMapView::LayerLegend})
+        map->setLayerVisible(l, false);
+    QImage img = map->grab().toImage();
+    for (auto l : {SiteMapView::LayerMachines, SiteMapView::LayerLabels, SiteMapView::LayerLegend})
+        map->setLayerVisible(l, true);
+    // (A label over the map: the machines moving about are drawn under it, never over it.)
+    QLabel* hintLabel = overlay->drawingHintLabel();
+    QVERIFY(hintLabel && hintLabel->isVisible());
+    QCOMPARE(hintLabel->text(), overlay->drawingHint());
+    const QRect hint = hintLabel->geometry();
+    QVERIFY2(map->rect().contains(hint),
+             qPrintable(QStringLiteral("%1 x %2").arg(hint.width()).arg(hint.height())));
+    QVERIFY(countColour(img, hint.adjusted(2, 2, -2, -2), QColor(255, 255, 230), 4) > hint.width() * 2);
+    for (int i = 0; i < 4; ++i)
+        QVERIFY2(countColour(img, QRect(px(lotM[i]) - QPoint(2, 2), QSize(5, 5)), QColor(0xd0, 0x00, 0x80),
+                             30) > 3,
+                 qPrintable(QString::number(i)));
+    QCOMPARE(ctx->selection()->currentId(), machine);
+    QCOMPARE(map->center(), centre);
+
+    QString offered;
+    {
+        ModalAnswers answers({nameDialog(QStringLiteral("Lot M"), &offered)});
+        const QPoint last = px(lotM[4]);
+        QTest::mouseClick(map, Qt::LeftButton, {}, last);
+        QTest::mousePress(map, Qt::LeftButton, {}, last);
+        QTest::mouseDClick(map, Qt::LeftButton, {}, last); // the name dialog runs inside
+        QTest::mouseRelease(map, Qt::LeftButton, {}, last);
+        QVERIFY(answers.done());
+    }
+    QVERIFY(!overlay->isDrawing());
+    QVERIFY2(!before.contains(offered) && offered.startsWith(QStringLiteral("Area ")), qPrintable(offered));
+    QCOMPARE(session->areaCount(), areasBefore + 1);
+    QCOMPARE(ctx->selection()->currentId(), machine);
+    QCOMPARE(map->center(), centre);
+    // In the table, by its name ...
+    const int row = rowOf(QStringLiteral("Lot M"));
+    QVERIFY(row >= 0);
+    QCOMPARE(areasPanel->table()->item(row, 0)->text(), QStringLiteral("Lot M"));
+    QVERIFY2(areasPanel->statusLabel()->text().contains(QStringLiteral("Lot M")),
+             qPrintable(areasPanel->statusLabel()->text()));
+    // ... its ring the clicked points (5: the double click added no second copy of the last), each within
+    // a pixel's worth of metres ...
+    QPolygonF ring;
+    for (const auto& a : session->mapGeometry().areas)
+        if (a.first == QLatin1String("Lot M"))
+            ring = a.second;
+    QCOMPARE(ring.size(), lotM.size());
+    for (int i = 0; i < lotM.size(); ++i)
+        QVERIFY2(std::hypot(ring[i].x() - lotM[i].x(), ring[i].y() - lotM[i].y()) <= pixelMetres,
+                 qPrintable(QStringLiteral("vertex %1 is %2 m off (a pixel is %3 m)")
+                                .arg(i)
+                                .arg(std::hypot(ring[i].x() - lotM[i].x(), ring[i].y() - lotM[i].y()))
+                                .arg(pixelMetres)));
+    // ... and its outline on the map in the area colour, along every edge (the live machines, their labels
+    // and the legend may cover a part of it: they are hidden for the look).
+    for (auto l : {SiteMapView::LayerMachines, SiteMapView::LayerLabels, SiteMapView::LayerLegend})
+        map->setLayerVisible(l, false);
+    img = map->grab().toImage();
+    for (auto l : {SiteMapView::LayerMachines, SiteMapView::LayerLabels, SiteMapView::LayerLegend})
+        map->setLayerVisible(l, true);
+    for (int i = 0; i < lotM.size(); ++i)
+        for (double f : {0.25, 0.5, 0.75}) {
+            const QPoint e = px(lotM[i] + (lotM[(i + 1) % lotM.size()] - lotM[i]) * f);
+            QVERIFY2(
+                countColour(img, QRect(e - QPoint(3, 3), QSize(7, 7)), CompactionMapOverlay::areaColour(),
+                            12) > 0,
+                qPrintable(QStringLiteral("edge %1 at %2: %3").arg(i).arg(f).arg(img.pixelColor(e).name())));
+        }
+
+    // ---- Its statistics: covered % of the top view equals a count of the cells whose centres lie in the
+    // ring, made here from the same pass-count snapshot (the table refreshed with no new snapshot between).
+    QTRY_VERIFY_WITH_TIMEOUT(coveredPercent(areasPanel->table(), QStringLiteral("Lot M")) > 0, 60000);
+    std::shared_ptr<const osyris::PassCountSnapshot> snap;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        snap = session->job().snapshot;
+        areasPanel->refresh();
+        if (session->job().snapshot == snap)
+            break;
+        snap.reset();
+    }
+    QVERIFY(snap);
+    const CoverageJob job = session->job();
+    const GeoFrame worksite(job.worksiteOrigin);
+    QPolygonF local; // the ring in the counts' frame (ENU of the worksite origin)
+    for (const auto& a : session->areas())
+        if (a.name == QLatin1String("Lot M"))
+            for (const GeoPoint& g : a.ring) {
+                const EnuPoint p = worksite.toLocal({g.lat, g.lon, job.worksiteOrigin.alt});
+                local << QPointF(p.e, p.n);
+            }
+    QCOMPARE(local.size(), 5);
+    const double cs = snap->cellSize();
+    const QRectF lb = local.boundingRect();
+    qint64 cells = 0, covered = 0, atTarget = 0;
+    for (auto cy = std::int32_t(std::floor(lb.top() / cs)); cy <= std::int32_t(std::ceil(lb.bottom() / cs));
+         ++cy)
+        for (auto cx = std::int32_t(std::floor(lb.left() / cs));
+             cx <= std::int32_t(std::ceil(lb.right() / cs)); ++cx) {
+            if (!local.containsPoint(QPointF((cx + 0.5) * cs, (cy + 0.5) * cs), Qt::OddEvenFill))
+                continue;
+            ++cells;
+            const int c = snap->countAtCell(cx, cy);
+            covered += c > 0;
+            atTarget += c >= snap->targetMin() && c <= snap->targetMax();
+        }
+    // About 200 m x 20 m.
+    QVERIFY2(std::abs(cells * cs * cs - 4200) < 200, qPrintable(QString::number(cells * cs * cs)));
+    QVERIFY(covered > 0);
+    const double wantCovered = 100.0 * double(covered) / double(cells);
+    const double shown = coveredPercent(areasPanel->table(), QStringLiteral("Lot M"));
+    QVERIFY2(std::abs(shown - wantCovered) <= 0.05 + 1e-9,
+             qPrintable(QStringLiteral("table %1 %, counted %2 of %3 cells = %4 %")
+                            .arg(shown)
+                            .arg(covered)
+                            .arg(cells)
+                            .arg(wantCovered)));
+    const double shownTarget =
+        areasPanel->table()->item(rowOf(QStringLiteral("Lot M")), 2)->text().toDouble();
+    QVERIFY(std::abs(shownTarget - 100.0 * double(atTarget) / double(cells)) <= 0.05 + 1e-9);
+    qInfo("Lot M: %lld of %lld cells covered (%.1f %%), %lld at target", covered, cells, wantCovered,
+          atTarget);
+
+    // ---- A second area closed by a click on its first point; the name the operator types exists: the
+    // console asks before replacing it, "No" goes back to the name.
+    const QPolygonF lotN{at(300, 10), at(400, 10), at(400, -10), at(300, -10)};
+    QTest::mouseClick(draw, Qt::LeftButton);
+    for (const QPointF& w : lotN)
+        QTest::mouseClick(map, Qt::LeftButton, {}, px(w));
+    QCOMPARE(overlay->drawnPoints().size(), 4);
+    QString question;
+    {
+        ModalAnswers answers({nameDialog(QStringLiteral("Lot M"), &offered),
+                              questionDialog(QMessageBox::No, &question),
+                              nameDialog(QStringLiteral("Lot N"), &offered)});
+        QTest::mouseClick(map, Qt::LeftButton, {}, px(lotN[0]) + QPoint(3, -2)); // on the first point
+        QVERIFY(answers.done());
+    }
+    QVERIFY(!overlay->isDrawing());
+    QVERIFY2(question.contains(QStringLiteral("Lot M")), qPrintable(question));
+    QCOMPARE(offered, QStringLiteral("Lot M")); // the second dialog keeps what was typed
+    QCOMPARE(session->areaCount(), areasBefore + 2);
+    QVERIFY(rowOf(QStringLiteral("Lot N")) >= 0);
+    for (const auto& a : session->mapGeometry().areas) {
+        if (a.first == QLatin1String("Lot M"))
+            QCOMPARE(a.second.size(), 5); // not replaced
+        if (a.first == QLatin1String("Lot N"))
+            QCOMPARE(a.second.size(), 4);
+    }
+
+    // ---- Enter closes; cancelling the name discards the outline.
+    QTest::mouseClick(draw, Qt::LeftButton);
+    for (const QPointF& w : {at(100, 4), at(200, 4), at(200, -4)})
+        QTest::mouseClick(map, Qt::LeftButton, {}, px(w));
+    {
+        ModalAnswers answers({nameDialog(QString(), &offered)});
+        QTest::keyClick(map, Qt::Key_Return);
+        QVERIFY(answers.done());
+    }
+    QVERIFY(!overlay->isDrawing());
+    QCOMPARE(session->areaCount(), areasBefore + 2);
+    QCOMPARE(areasPanel->statusLabel()->text(), QStringLiteral("The drawn area was discarded."));
+
+    // ---- The button cancels too.
+    QTest::mouseClick(draw, Qt::LeftButton);
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(100, 4)));
+    QTest::mouseClick(draw, Qt::LeftButton);
+    QVERIFY(!overlay->isDrawing());
+    QCOMPARE(session->areaCount(), areasBefore + 2);
+    QCOMPARE(ctx->selection()->currentId(), machine);
+    QCOMPARE(map->center(), centre);
+}
 
 QTEST_MAIN(TestCompactionConsole)
 #include "test_compaction_console.moc"

@@ -2,11 +2,14 @@
 
 #include "models/coverage/CompactionView.h"
 
+#include <QDockWidget>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QPainter>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ocu {
 
@@ -17,6 +20,11 @@ CompactionMapOverlay::CompactionMapOverlay(SiteMapView* view, CompactionView* se
     view->addOverlay(this);
     view->installEventFilter(this);
     connect(session, &CompactionView::changed, view, qOverload<>(&QWidget::update));
+    m_hint = new QLabel(view);
+    m_hint->setObjectName(QStringLiteral("compactionDrawingHint"));
+    m_hint->setWordWrap(true);
+    m_hint->setAttribute(Qt::WA_TransparentForMouseEvents); // clicks on it still add points
+    m_hint->hide();
 }
 
 CompactionMapOverlay::~CompactionMapOverlay() {
@@ -73,10 +81,19 @@ void CompactionMapOverlay::startDrawing() {
     m_points.clear();
     m_haveHover = false;
     if (m_view) {
+        // The map may be a tab behind the 3D view or a closed dock: bring it to the front, or the button
+        // seems to do nothing.
+        for (QWidget* w = m_view->parentWidget(); w; w = w->parentWidget())
+            if (auto* dock = qobject_cast<QDockWidget*>(w)) {
+                dock->show();
+                dock->raise();
+                break;
+            }
         m_view->setCursor(Qt::CrossCursor);
-        m_view->setFocus();
+        m_view->setFocus(Qt::OtherFocusReason); // Esc, Enter and Backspace go to the tool
         m_view->update();
     }
+    updateHint();
     emit drawingChanged(true);
 }
 
@@ -89,18 +106,65 @@ void CompactionMapOverlay::cancelDrawing() {
         m_view->unsetCursor();
         m_view->update();
     }
+    updateHint();
     emit drawingChanged(false);
+}
+
+QString CompactionMapOverlay::drawingHint() const {
+    if (!m_drawing)
+        return {};
+    const int n = int(m_points.size());
+    QString head;
+    if (n < 3) {
+        head = tr("New area: %1 points (3 needed)").arg(n);
+    } else {
+        double twice = 0; // shoelace
+        for (int i = 0; i < n; ++i) {
+            const QPointF& a = m_points[i];
+            const QPointF& b = m_points[(i + 1) % n];
+            twice += a.x() * b.y() - b.x() * a.y();
+        }
+        head = tr("New area: %1 points, %2 m²").arg(n).arg(std::abs(twice) / 2, 0, 'f', 0);
+    }
+    return head + QStringLiteral(" · ") +
+           tr("click adds a point · Enter, double click or the first point closes · Backspace undoes · Esc "
+              "cancels");
+}
+
+void CompactionMapOverlay::updateHint() {
+    if (!m_hint || !m_view)
+        return;
+    if (!m_drawing) {
+        m_hint->hide();
+        return;
+    }
+    // At the top of the map (the legend, the scale bar and the cursor read-out are at the bottom), in the
+    // night palette's colours when it is on.
+    const bool night = m_view->isNight();
+    m_hint->setStyleSheet(night ? QStringLiteral("QLabel { background: rgba(30,30,34,240); color: #e6e6e0;"
+                                                 " border: 1px solid #d00080; padding: 3px 6px; }")
+                                : QStringLiteral("QLabel { background: rgba(255,255,230,240); color: black;"
+                                                 " border: 1px solid #d00080; padding: 3px 6px; }"));
+    m_hint->setText(drawingHint());
+    const int maxW = std::max(120, m_view->width() - 80);
+    m_hint->setFixedWidth(std::min(maxW, m_hint->fontMetrics().horizontalAdvance(m_hint->text()) + 16));
+    m_hint->setFixedHeight(m_hint->heightForWidth(m_hint->width()));
+    m_hint->move((m_view->width() - m_hint->width()) / 2, 8);
+    m_hint->show();
+    m_hint->raise();
 }
 
 void CompactionMapOverlay::finish() {
     if (m_points.size() < 3)
-        return; // keep drawing: a polygon needs three points
+        return; // keep drawing: a polygon needs three points (the hint says so)
     const QPolygonF done = m_points;
     cancelDrawing();
     emit polygonFinished(done);
 }
 
 bool CompactionMapOverlay::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_view && event->type() == QEvent::Resize)
+        updateHint(); // wrapped and centred to the new width
     if (!m_drawing || watched != m_view)
         return QObject::eventFilter(watched, event);
     switch (event->type()) {
@@ -108,11 +172,26 @@ bool CompactionMapOverlay::eventFilter(QObject* watched, QEvent* event) {
         auto* e = static_cast<QMouseEvent*>(event);
         if (e->button() != Qt::LeftButton)
             return false; // right/middle: the map's own (pan, menu)
-        m_points << m_view->screenToWorld(e->position());
+        const QPointF px = e->position();
+        auto near = [&](const QPointF& world, double r) {
+            const QPointF d = m_view->worldToScreen(world) - px;
+            return std::hypot(d.x(), d.y()) <= r;
+        };
+        if (m_points.size() >= 3 && near(m_points.first(), kClosePx)) {
+            finish(); // a click on the first point closes the ring
+            return true;
+        }
+        // The second press of a double click (or a shaky second click) lands on the last point: a point
+        // twice would be a degenerate edge.
+        if (m_points.isEmpty() || !near(m_points.last(), kSamePointPx))
+            m_points << m_view->screenToWorld(px);
+        updateHint();
         m_view->update();
         return true;
     }
     case QEvent::MouseButtonDblClick:
+        if (static_cast<QMouseEvent*>(event)->button() != Qt::LeftButton)
+            return false;
         finish();
         return true;
     case QEvent::MouseButtonRelease:
@@ -135,6 +214,7 @@ bool CompactionMapOverlay::eventFilter(QObject* watched, QEvent* event) {
         if (k->key() == Qt::Key_Backspace) {
             if (!m_points.isEmpty())
                 m_points.removeLast();
+            updateHint();
             m_view->update();
             return true;
         }
@@ -284,18 +364,12 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         p.setBrush(QColor(0xd0, 0x00, 0x80));
         for (const QPointF& q : toScreen(m_points))
             p.drawEllipse(q, 3.5, 3.5);
-        p.setPen(night ? QColor(0xe6, 0xe6, 0xe0) : QColor(Qt::black));
-        QFont f = p.font();
-        f.setPixelSize(12);
-        f.setBold(false);
-        p.setFont(f);
-        const QString hint =
-            tr("New area: click to add points · Enter or double click closes · Backspace undoes · "
-               "Esc cancels");
-        const QRectF r = p.fontMetrics().boundingRect(hint).adjusted(-6, -3, 6, 3);
-        const QPointF at(12, view.height() - 40.0);
-        p.fillRect(r.translated(at), night ? QColor(40, 40, 30, 235) : QColor(255, 255, 230, 235));
-        p.drawText(at, hint);
+        // The first point grows into a ring once a click on it would close the polygon.
+        if (m_points.size() >= 3) {
+            p.setBrush(Qt::NoBrush);
+            p.setPen(QPen(QColor(0xd0, 0x00, 0x80), 2));
+            p.drawEllipse(view.worldToScreen(m_points.first()), kClosePx, kClosePx);
+        }
     }
     p.restore();
 }

@@ -1,13 +1,16 @@
 #pragma once
 // The compaction job on the 2D map (issue 17): the design's boundary and centre line with station ticks and
 // labels every 100 m, the compaction areas with their names, and the polygon tool that draws a new area
-// (click adds a point, Backspace removes the last, Enter or a double click closes, Esc cancels). A
+// (click adds a point, Backspace removes the last, Enter, a double click or a click on the first point
+// closes, Esc cancels; the wheel, the middle button and the arrow keys still move the map). A
 // SiteMapOverlay plus an event filter on the view: SiteMapView itself is not changed.
 #include "widgets/SiteMapView.h"
 
 #include <QObject>
 #include <QPointer>
 #include <QPolygonF>
+
+class QLabel;
 
 namespace ocu {
 
@@ -23,6 +26,14 @@ public:
 
     bool isDrawing() const { return m_drawing; }
     const QPolygonF& drawnPoints() const { return m_points; } // site ENU
+    // The hint shown on the map while drawing (points so far, the area's size, the keys).
+    QString drawingHint() const;
+    // The hint's label over the map (a child widget, so machines moving under it never cover it); hidden
+    // when not drawing.
+    QLabel* drawingHintLabel() const { return m_hint; }
+    // Clicks closer than this to the last point add none (the second click of a double click); closer than
+    // kClosePx to the first point (with 3 or more points) they close the polygon.
+    static constexpr double kSamePointPx = 4, kClosePx = 8;
     void setHighlightedArea(const QString& name);
     // Frames the named area (or the design's boundary when the name is empty) on the map; false if unknown.
     bool zoomToArea(const QString& name);
@@ -47,6 +58,7 @@ protected:
 
 private:
     void finish();
+    void updateHint();
     QPointer<SiteMapView> m_view;
     QPointer<CompactionView> m_session;
     bool m_drawing = false;
@@ -57,6 +69,7 @@ private:
     QPolygonF m_band;
     QString m_bandLabel;
     bool zoomToBox(const QRectF& box);
+    QPointer<QLabel> m_hint;
 };
 
 } // namespace ocu

@@ -11,6 +11,7 @@
 #include <QInputDialog>
 #include <QJsonArray>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -77,8 +78,9 @@ CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* 
     v->addWidget(m_tabs, 1);
     auto* buttons = new QHBoxLayout;
     m_draw = new QPushButton(tr("Draw area"));
-    m_draw->setToolTip(
-        tr("Draw a compaction area on the 2D map: click to add points, Enter closes, Esc cancels"));
+    m_draw->setToolTip(tr(
+        "Draw a compaction area on the 2D map: click to add points; Enter, a double click or a click on the "
+        "first point closes; Backspace undoes; Esc cancels"));
     m_remove = new QPushButton(tr("Remove"));
     m_report = new QPushButton(tr("Coverage report…"));
     m_report->setToolTip(
@@ -261,17 +263,37 @@ void CompactionPanel::stationPicked() {
 }
 
 void CompactionPanel::askAreaName(const QPolygonF& siteEN) {
-    bool ok = false;
-    const QString name =
-        QInputDialog::getText(this, tr("New compaction area"), tr("Name of the area:"), QLineEdit::Normal,
-                              tr("Area %1").arg(m_session->areaCount() + 1), &ok);
-    if (!ok)
-        return;
+    QStringList taken;
+    for (const auto& a : m_session->mapGeometry().areas)
+        taken << a.first;
+    // The first free "Area N": after a removal, "Area <count + 1>" may exist, and the new outline would
+    // silently replace it.
+    int k = m_session->areaCount() + 1;
+    while (taken.contains(tr("Area %1").arg(k)))
+        ++k;
+    QString name = tr("Area %1").arg(k);
+    for (;;) {
+        bool ok = false;
+        name = QInputDialog::getText(this, tr("New compaction area"), tr("Name of the area:"),
+                                     QLineEdit::Normal, name, &ok)
+                   .trimmed();
+        if (!ok) {
+            m_status->setText(tr("The drawn area was discarded."));
+            return;
+        }
+        if (!taken.contains(name))
+            break;
+        // Names are unique: an existing area is only replaced when the operator says so.
+        if (QMessageBox::question(
+                this, tr("Replace area"),
+                tr("An area named \"%1\" exists. Replace it with the new outline?").arg(name),
+                QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes)
+            break;
+    }
     QString e = m_session->addArea(name, siteEN);
     if (e.isEmpty())
         e = m_session->saveAreas();
-    m_status->setText(e.isEmpty() ? tr("Area \"%1\" saved to %2.").arg(name.trimmed(), m_session->areasFile())
-                                  : e);
+    m_status->setText(e.isEmpty() ? tr("Area \"%1\" saved to %2.").arg(name, m_session->areasFile()) : e);
 }
 
 QString CompactionPanel::writeReport(const QString& pdfPath) {

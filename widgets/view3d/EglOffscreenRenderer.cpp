@@ -298,8 +298,13 @@ QImage EglOffscreenRenderer::render(SiteSceneRenderer& scene, QSize size) {
         d->error = QStringLiteral("reading the rendered pixels failed");
         return {};
     }
+    // RGBX promises 255 in the fourth byte, and some of Qt's copies keep the byte as it is: a screenshot of
+    // the 3D panel alone had a transparent sky. The scene is opaque: the alpha bytes are set.
+    std::uint8_t* px = d->pixels->GetPointer(0);
+    for (std::size_t i = 3, n = std::size_t(w) * std::size_t(h) * 4; i < n; i += 4)
+        px[i] = 255;
     // VTK's origin is bottom-left; mirrored() also makes the deep copy.
-    const QImage wrapped(d->pixels->GetPointer(0), w, h, w * 4, QImage::Format_RGBX8888);
+    const QImage wrapped(px, w, h, w * 4, QImage::Format_RGBX8888);
     return wrapped.mirrored(false, true);
 }
 

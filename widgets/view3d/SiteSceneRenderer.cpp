@@ -1325,4 +1325,18 @@ std::uint64_t SiteSceneRenderer::renderCount() const {
     return d->renders;
 }
 
+std::array<int, 2> SiteSceneRenderer::passTextureSize() const {
+    if (!d->passActor->GetVisibility() || d->passImage->GetScalarPointer() == nullptr)
+        return {0, 0};
+    return {d->passImage->GetDimensions()[0], d->passImage->GetDimensions()[1]};
+}
+
+std::array<std::uint8_t, 4> SiteSceneRenderer::passTexel(int x, int y) const {
+    const auto [w, h] = passTextureSize();
+    if (x < 0 || y < 0 || x >= w || y >= h)
+        return {0, 0, 0, 0};
+    const auto* p = static_cast<const std::uint8_t*>(d->passImage->GetScalarPointer(x, y, 0));
+    return {p[0], p[1], p[2], p[3]};
+}
+
 } // namespace ocu

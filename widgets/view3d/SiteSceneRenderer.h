@@ -8,6 +8,7 @@
 #include <QRectF>
 #include <QString>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -68,6 +69,10 @@ public:
     // Where the machines' name labels were drawn in the last frame (display pixels, origin bottom-left):
     // nearest machines first, at most 40, never overlapping each other or the selected machine's label.
     std::vector<QRectF> nameLabelRects() const;
+    // The pass-count texture as handed to VTK (one texel per cell, row 0 = south; a raster wider than the
+    // GL limit is sampled down). Size (0, 0) when no pass counts are drawn; texel RGBA, zeros outside.
+    std::array<int, 2> passTextureSize() const;
+    std::array<std::uint8_t, 4> passTexel(int x, int y) const;
 
 private:
     struct Impl;

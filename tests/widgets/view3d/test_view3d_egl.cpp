@@ -67,6 +67,16 @@ private slots:
         const QRgb ap = pixelAt(img, *area);
         QVERIFY2(qGreen(ap) > qRed(ap) + 40 && qGreen(ap) > qBlue(ap) + 40, qPrintable(describe(ap)));
 
+        // Opaque everywhere, the sky too (its framebuffer alpha is 0): a picture of the panel alone had a
+        // transparent sky. The bytes, not pixelColor(), which reads RGBX as opaque whatever they hold.
+        const QImage opaque = img.convertToFormat(QImage::Format_RGBX8888);
+        int transparent = 0;
+        for (int y = 0; y < opaque.height(); ++y)
+            for (int x = 0; x < opaque.width(); ++x)
+                transparent += opaque.constScanLine(y)[x * 4 + 3] != 255;
+        QCOMPARE(transparent, 0);
+        QCOMPARE(QImage(img).convertToFormat(QImage::Format_ARGB32).pixelColor(2, 2).alpha(), 255);
+
         // Picking works on the same window: the machine under its pixel, nothing on bare ground.
         QCOMPARE(scene.pick(top->x(), top->y()), QStringLiteral("M1"));
         QCOMPARE(scene.pick(ground->x(), ground->y()), QString());
