@@ -239,6 +239,17 @@ CompactionView::DesignInfo CompactionSession::designInfo() const {
     return d;
 }
 
+static void figures(CompactionView::CoverageFigures& out, const osyris::CoverageStats& stats) {
+    if (!stats.cells)
+        return; // nothing of it is counted: no figures
+    out.hasStats = true;
+    out.coveragePercent = stats.coveragePercent();
+    out.atTargetPercent = stats.percentOf(stats.atTarget);
+    out.underPercent = stats.percentOf(stats.under);
+    out.overPercent = stats.percentOf(stats.over);
+    out.incompleteCells = stats.incomplete;
+}
+
 CompactionView::CoverageTable CompactionSession::coverageTable(int lift) const {
     const CoverageJob job = this->job();
     CoverageTable out;
@@ -256,14 +267,8 @@ CompactionView::CoverageTable CompactionSession::coverageTable(int lift) const {
         row.name = a.name;
         row.fromDesign = a.source == QLatin1String("design");
         for (const AreaStats& x : t.areas)
-            if (x.name == a.name && x.stats.cells) {
-                row.hasStats = true;
-                row.coveragePercent = x.stats.coveragePercent();
-                row.atTargetPercent = x.stats.percentOf(x.stats.atTarget);
-                row.underPercent = x.stats.percentOf(x.stats.under);
-                row.overPercent = x.stats.percentOf(x.stats.over);
-                row.incompleteCells = x.stats.incomplete;
-            }
+            if (x.name == a.name)
+                figures(row, x.stats);
         out.areas.push_back(row);
     }
     out.alignment = t.alignment;
@@ -284,14 +289,7 @@ CompactionView::CoverageTable CompactionSession::coverageTable(int lift) const {
         StationRow row;
         row.from = b.from;
         row.to = b.to;
-        if (b.stats.cells) {
-            row.hasStats = true;
-            row.coveragePercent = b.stats.coveragePercent();
-            row.atTargetPercent = b.stats.percentOf(b.stats.atTarget);
-            row.underPercent = b.stats.percentOf(b.stats.under);
-            row.overPercent = b.stats.percentOf(b.stats.over);
-            row.incompleteCells = b.stats.incomplete;
-        }
+        figures(row, b.stats);
         for (const auto& pt : osyris::stationBandRing(inSite, b.from, b.to, job.bandLeft, job.bandRight, 2.0))
             row.band << QPointF(pt.x, pt.y);
         out.stations.push_back(row);

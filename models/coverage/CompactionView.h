@@ -43,24 +43,24 @@ public:
     virtual DesignInfo designInfo() const = 0;
 
     // The areas' statistics at one lift (-1: the top view), computed from the current pass counts.
-    struct AreaRow {
-        QString name;
-        bool fromDesign = false;
-        bool hasStats = false; // counts cover part of the area
+    // The figures of one area or station range.
+    struct CoverageFigures {
+        bool hasStats = false; // counts cover part of it
         double coveragePercent = 0, atTargetPercent = 0, underPercent = 0, overPercent = 0;
         quint64 incompleteCells = 0;
+    };
+    struct AreaRow : CoverageFigures {
+        QString name;
+        bool fromDesign = false;
     };
     struct LiftRange {
         double bottom = 0, top = 0; // z, metres
     };
     // One station range along the design's first alignment (every stationStep m, the band bandLeft m left
     // to bandRight m right of the centre line), as the report's per-station table.
-    struct StationRow {
+    struct StationRow : CoverageFigures {
         double from = 0, to = 0; // stations, m
-        bool hasStats = false;   // counts cover part of the band
-        double coveragePercent = 0, atTargetPercent = 0, underPercent = 0, overPercent = 0;
-        quint64 incompleteCells = 0;
-        QPolygonF band; // site ENU, for the map
+        QPolygonF band;          // site ENU, for the map
     };
     struct CoverageTable {
         QVector<LiftRange> lifts; // of the counted data

@@ -142,6 +142,21 @@ CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* 
     refresh();
 }
 
+// Columns 1-5 of both tables: covered, at target, under, over (%), incomplete cells; a dash without counts.
+static void setFigureCells(QTableWidget* table, int row, const CompactionView::CoverageFigures& f) {
+    const QStringList texts =
+        f.hasStats
+            ? QStringList{QString::number(f.coveragePercent, 'f', 1),
+                          QString::number(f.atTargetPercent, 'f', 1), QString::number(f.underPercent, 'f', 1),
+                          QString::number(f.overPercent, 'f', 1), QString::number(f.incompleteCells)}
+            : QStringList(5, QStringLiteral("–"));
+    for (int c = 0; c < 5; ++c) {
+        auto* it = new QTableWidgetItem(texts[c]);
+        it->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        table->setItem(row, c + 1, it);
+    }
+}
+
 void CompactionPanel::countsChanged() {
     if (!m_throttle.isActive())
         m_throttle.start();
@@ -192,16 +207,7 @@ void CompactionPanel::refresh() {
         };
         auto* name = set(0, a.fromDesign ? tr("%1 (design)").arg(a.name) : a.name);
         name->setData(Qt::UserRole, a.name);
-        if (a.hasStats) {
-            set(1, QString::number(a.coveragePercent, 'f', 1));
-            set(2, QString::number(a.atTargetPercent, 'f', 1));
-            set(3, QString::number(a.underPercent, 'f', 1));
-            set(4, QString::number(a.overPercent, 'f', 1));
-            set(5, QString::number(a.incompleteCells));
-        } else {
-            for (int c = 1; c < 6; ++c)
-                set(c, QStringLiteral("–"));
-        }
+        setFigureCells(m_table, r, a);
         if (a.name == selected)
             m_table->selectRow(r);
     }
@@ -232,16 +238,7 @@ void CompactionPanel::refresh() {
         set(0, CompactionView::stationText(st.from, 0));
         m_stations->item(r, 0)->setToolTip(tr("%1 – %2").arg(CompactionView::stationText(st.from, 0),
                                                              CompactionView::stationText(st.to, 0)));
-        if (st.hasStats) {
-            set(1, QString::number(st.coveragePercent, 'f', 1));
-            set(2, QString::number(st.atTargetPercent, 'f', 1));
-            set(3, QString::number(st.underPercent, 'f', 1));
-            set(4, QString::number(st.overPercent, 'f', 1));
-            set(5, QString::number(st.incompleteCells));
-        } else {
-            for (int c = 1; c < 6; ++c)
-                set(c, QStringLiteral("–"));
-        }
+        setFigureCells(m_stations, r, st);
         m_stationBands.push_back(st.band);
     }
     if (stationRow >= 0 && stationRow < m_stations->rowCount()) {
