@@ -7,9 +7,10 @@
 namespace ocu {
 
 QStringList screenshotViewNames() {
-    return {QStringLiteral("fleet"), QStringLiteral("map"),    QStringLiteral("3d"),
-            QStringLiteral("jaus"),  QStringLiteral("teleop"), QStringLiteral("passcounts"),
-            QStringLiteral("events")};
+    // MainWindow::panelKey of every panel (test_command_line holds the two lists equal).
+    return {QStringLiteral("fleet"),  QStringLiteral("map"),     QStringLiteral("3d"),
+            QStringLiteral("jaus"),   QStringLiteral("teleop"),  QStringLiteral("passcounts"),
+            QStringLiteral("events"), QStringLiteral("dispatch")};
 }
 
 bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& error, QString& helpText) {

@@ -1,4 +1,5 @@
 #include "app/CommandLine.h"
+#include "app/MainWindow.h"
 
 #include <QtTest>
 
@@ -48,6 +49,17 @@ private slots:
         QCOMPARE(o.view, QString("all:teleop"));
         QVERIFY(!parse({"--screenshot", "o.png", "--view", "all:radar"}, o, e));
         QVERIFY(e.contains("unknown view \"all:radar\""));
+    }
+    // Every panel can be captured: --view all:dispatch was refused (the list had no Dispatch panel).
+    void everyPanelIsAView() {
+        QStringList keys;
+        for (Panel p : MainWindow::panels())
+            keys << MainWindow::panelKey(p);
+        QCOMPARE(screenshotViewNames(), keys);
+        CommandLineOptions o;
+        QString e;
+        QVERIFY2(parse({"--screenshot", "o.png", "--view", "all:dispatch"}, o, e), qPrintable(e));
+        QVERIFY2(parse({"--screenshot", "o.png", "--view", "dispatch"}, o, e), qPrintable(e));
     }
     void headless() {
         CommandLineOptions o;
