@@ -15,6 +15,7 @@
 #include "models/recording/Recorder.h"
 #include "models/recording/Recording.h"
 #include "models/recording/ReplayController.h"
+#include "tests/support/RecordedUgvs.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -349,27 +350,10 @@ private slots:
             o.path = file;
             o.clock = [&clock] { return clock; };
             QVERIFY(rec.start(o).isEmpty());
-            for (int step = 0; step <= 200; ++step) {
-                clock = t0 + step * 100;
-                for (int k = 0; k < 2; ++k) {
-                    MachineState m;
-                    m.id = QStringLiteral("jaus:%1").arg(100 + k);
-                    m.protocol = Protocol::Jaus;
-                    m.name = QStringLiteral("UGV-%1").arg(100 + k);
-                    m.link = LinkState::Up;
-                    m.hasPosition = true;
-                    m.e = step * 0.5 + k * 10;
-                    m.n = k * 5.0;
-                    m.lastDataMs = clock;
-                    rec.recordStates({m});
-                }
-                if (step == 50) {
-                    FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::ControlLost,
-                                              QStringLiteral("jaus:100"), QStringLiteral("control lost"));
-                    ev.timeMs = clock;
-                    rec.recordEvent(ev);
-                }
-            }
+            recordtest::recordTwoUgvs(rec, clock, t0, 200, [&](int step) {
+                if (step == 50)
+                    rec.recordEvent(recordtest::controlLostAlarm(clock));
+            });
             rec.stop();
         }
         auto run = [&](const QStringList& args, QByteArray* out = nullptr) {

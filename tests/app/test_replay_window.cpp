@@ -7,6 +7,7 @@
 #include "models/recording/Recorder.h"
 #include "models/recording/Recording.h"
 #include "models/recording/ReplayController.h"
+#include "tests/support/RecordedUgvs.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/PassCountPanel.h"
 #include "widgets/ReplayTimeline.h"
@@ -46,27 +47,9 @@ private slots:
         grid.setCount(3, 3, 1);
         rec.watchPassCounts(&grid);
         GridPassCountLayer finer(QPointF(-10, -10), 0.5, 40, 40);
-        for (int step = 0; step <= 600; ++step) {
-            clock = m_t0 + step * 100;
-            for (int k = 0; k < 2; ++k) {
-                MachineState m;
-                m.id = QStringLiteral("jaus:%1").arg(100 + k);
-                m.protocol = Protocol::Jaus;
-                m.name = QStringLiteral("UGV-%1").arg(100 + k);
-                m.link = LinkState::Up;
-                m.hasPosition = true;
-                m.e = step * 0.5 + k * 10;
-                m.n = k * 5.0;
-                m.lastDataMs = clock;
-                rec.recordStates({m});
-            }
+        recordtest::recordTwoUgvs(rec, clock, m_t0, 600, [&](int step) {
             if (step == 200) {
-                FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::ControlLost,
-                                          QStringLiteral("jaus:100"), QStringLiteral("control lost"));
-                ev.timeMs = clock;
-                rec.recordEvent(ev);
-            }
-            if (step == 200) {
+                rec.recordEvent(recordtest::controlLostAlarm(clock));
                 for (int col = 0; col < 5; ++col)
                     grid.setCount(col, 7, 2);
                 rec.recordPassCountsNow();
@@ -76,11 +59,10 @@ private slots:
             if (step == 400) {
                 finer.fillRect(QRect(0, 0, 4, 4), 3);
                 rec.watchPassCounts(&finer);
-            }
-            if (step == 400)
                 rec.recordCommand(
                     QStringLiteral(R"({"origin":"gui","action":"stop","target":"jaus:101","ok":true})"));
-        }
+            }
+        });
         rec.stop();
     }
 
