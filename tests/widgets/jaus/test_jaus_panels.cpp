@@ -113,6 +113,19 @@ void takeControl(Window& win, std::uint16_t id) {
 
 class TestJausPanels : public QObject {
     Q_OBJECT
+    // The vehicle under this console's control in the teleop panel, driven ahead with Shift+key held.
+    void driveAheadByKeys(Site& s, Window& win, std::uint16_t id, Qt::Key key) {
+        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
+        takeControl(win, id);
+        win.teleop->setVehicle(id);
+        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 10000);
+        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
+        win.teleop->setFocus();
+        QTest::keyPress(win.teleop, Qt::Key_Shift);
+        QTest::keyPress(win.teleop, key, Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(id).state().v > 0.3, 10000);
+    }
+
 private slots:
     void discoveredRowsWithDetails() {
         Site s;
@@ -385,15 +398,9 @@ private slots:
     void focusLossSendsZeros() {
         Site s;
         Window win(s);
-        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
-        takeControl(win, 127);
-        win.teleop->setVehicle(127);
-        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 10000);
-        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
-        win.teleop->setFocus();
-        QTest::keyPress(win.teleop, Qt::Key_Shift);
-        QTest::keyPress(win.teleop, Qt::Key_Up, Qt::ShiftModifier);
-        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(127).state().v > 0.3, 10000);
+        driveAheadByKeys(s, win, 127, Qt::Key_Up);
+        if (QTest::currentTestFailed())
+            return;
         // The operator clicks elsewhere with the keys still held: the teleop panel loses focus.
         QFocusEvent out(QEvent::FocusOut, Qt::MouseFocusReason);
         QApplication::sendEvent(win.teleop, &out);
@@ -409,15 +416,9 @@ private slots:
     void hidingThePanelSendsZeros() {
         Site s;
         Window win(s);
-        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
-        takeControl(win, 127);
-        win.teleop->setVehicle(127);
-        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 10000);
-        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
-        win.teleop->setFocus();
-        QTest::keyPress(win.teleop, Qt::Key_Shift);
-        QTest::keyPress(win.teleop, Qt::Key_Up, Qt::ShiftModifier);
-        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(127).state().v > 0.3, 10000);
+        driveAheadByKeys(s, win, 127, Qt::Key_Up);
+        if (QTest::currentTestFailed())
+            return;
         win.teleop->hide();
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(127).state().v) < 1e-3, 10000);
         QVERIFY(!s.ugv(127).state().driveTimedOut); // stopped by the zeros, not by its drive timeout
@@ -427,15 +428,9 @@ private slots:
     void spaceStopsTheVehicle() {
         Site s;
         Window win(s);
-        QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
-        takeControl(win, 126);
-        win.teleop->setVehicle(126);
-        QTRY_VERIFY_WITH_TIMEOUT(win.teleop->controller()->isEnabled(), 10000);
-        QVERIFY(QTest::qWaitForWindowExposed(&win.w));
-        win.teleop->setFocus();
-        QTest::keyPress(win.teleop, Qt::Key_Shift);
-        QTest::keyPress(win.teleop, Qt::Key_W, Qt::ShiftModifier);
-        QTRY_VERIFY_WITH_TIMEOUT(s.ugv(126).state().v > 0.3, 10000);
+        driveAheadByKeys(s, win, 126, Qt::Key_W);
+        if (QTest::currentTestFailed())
+            return;
         QTest::keyClick(win.teleop, Qt::Key_Space, Qt::ShiftModifier);
         QTRY_COMPARE_WITH_TIMEOUT(s.ugv(126).state().management, ManagementState::Emergency, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(126).state().v) < 1e-3, 10000);
