@@ -12,6 +12,7 @@
 #include "models/video/VideoPlayer.h"
 #include "protocols/common/Udp.h"
 #include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
+#include "tests/support/JausLoopback.h"
 #include "tests/video/TestRtspServer.h"
 #include "widgets/jaus/TeleopPanel.h"
 #include "widgets/jaus/TeleopVideoPane.h"
@@ -67,13 +68,8 @@ private slots:
         c.callSign = "OCU-200";
         c.role = Role::PrimaryOperator;
         c.authority = 205;
+        c.transport = jaustest::loopback(findFreeUdpPort());
         auto& t = c.transport;
-        t.bindAddress = "127.0.0.1";
-        t.port = 0;
-        t.multicastGroup = "239.255.0.1";
-        t.multicastPort = findFreeUdpPort();
-        t.interfaceAddress = "127.0.0.1";
-        t.multicastTtl = 0;
         t.staticEndpoints.push_back(
             StaticEndpoint{JausId{126, 0xFF, 0xFF}, "127.0.0.1", oddVehicle.port(), false});
         t.staticEndpoints.push_back(

@@ -12,6 +12,7 @@
 #include "protocols/common/GeoFrame.h"
 #include "protocols/common/Udp.h"
 #include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
+#include "tests/support/JausLoopback.h"
 
 #include <QJsonObject>
 #include <QSignalSpy>
@@ -32,13 +33,8 @@ JausConfig consoleConfig(std::uint16_t vehiclePort, std::uint16_t neverHeardPort
     c.statusPollHz = 2;
     c.linkLostS = 1.5;
     c.accessTimeoutS = 3;
+    c.transport = jaustest::loopback(findFreeUdpPort());
     auto& t = c.transport;
-    t.bindAddress = "127.0.0.1";
-    t.port = 0;
-    t.multicastGroup = "239.255.0.1";
-    t.multicastPort = findFreeUdpPort();
-    t.interfaceAddress = "127.0.0.1";
-    t.multicastTtl = 0;
     t.staticEndpoints.push_back(StaticEndpoint{JausId{126, 0xFF, 0xFF}, "127.0.0.1", vehiclePort, false});
     // A configured vehicle that never answers (nobody listens there).
     t.staticEndpoints.push_back(StaticEndpoint{JausId{127, 0xFF, 0xFF}, "127.0.0.1", neverHeardPort, false});

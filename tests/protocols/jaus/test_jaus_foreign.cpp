@@ -18,6 +18,7 @@
 #include "protocols/jaus/JausStack.h"
 #include "protocols/jaus/Messages.h"
 #include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
+#include "tests/support/JausLoopback.h"
 
 using namespace ocu;
 using namespace ocu::jaus;
@@ -80,13 +81,8 @@ JausConfig console(std::uint16_t ss, Role role, std::uint8_t authority, std::uin
     c.linkLostS = 1.5;
     c.discoveryIntervalS = 30; // recovery must not wait for it
     c.accessTimeoutS = 3;
+    c.transport = jaustest::loopback(groupPort());
     auto& t = c.transport;
-    t.bindAddress = "127.0.0.1";
-    t.port = 0;
-    t.multicastGroup = "239.255.0.1";
-    t.multicastPort = groupPort();
-    t.interfaceAddress = "127.0.0.1";
-    t.multicastTtl = 0;
     t.staticEndpoints.push_back(StaticEndpoint{JausId{126, 0xFF, 0xFF}, "127.0.0.1", vehiclePort, false});
     return c;
 }

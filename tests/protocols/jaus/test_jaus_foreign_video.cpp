@@ -12,6 +12,7 @@
 #include "protocols/jaus/JausStack.h"
 #include "protocols/jaus/MessagesVideo.h"
 #include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
+#include "tests/support/JausLoopback.h"
 
 using namespace ocu;
 using namespace ocu::jaus;
@@ -41,13 +42,8 @@ JausConfig console(std::uint16_t vehiclePort) {
     JausConfig c;
     c.subsystemId = 200;
     c.callSign = "OCU-200";
+    c.transport = jaustest::loopback(findFreeUdpPort());
     auto& t = c.transport;
-    t.bindAddress = "127.0.0.1";
-    t.port = 0;
-    t.multicastGroup = "239.255.0.1";
-    t.multicastPort = findFreeUdpPort();
-    t.interfaceAddress = "127.0.0.1";
-    t.multicastTtl = 0;
     t.staticEndpoints.push_back(StaticEndpoint{JausId{126, 0xFF, 0xFF}, "127.0.0.1", vehiclePort, false});
     return c;
 }

@@ -14,6 +14,7 @@
 #include "protocols/common/Udp.h"
 #include "protocols/jaus/JudpTransport.h"
 #include "protocols/jaus/Messages.h"
+#include "tests/support/JausLoopback.h"
 
 using namespace ocu;
 using namespace ocu::jaus;
@@ -40,17 +41,6 @@ struct Node {
     JudpTransport transport;
     std::vector<Rx> got;
 };
-
-TransportSettings loopback(std::uint16_t mcPort) {
-    TransportSettings t;
-    t.bindAddress = "127.0.0.1";
-    t.port = 0;
-    t.multicastGroup = "239.255.0.1";
-    t.multicastPort = mcPort;
-    t.multicastTtl = 0;
-    t.interfaceAddress = "127.0.0.1";
-    return t;
-}
 
 // Runs the io_context until p holds; generous, it returns as soon as p holds.
 template <class Pred> bool runUntil(boost::asio::io_context& io, Pred p, int ms = 10000) {
@@ -80,7 +70,7 @@ private slots:
         asio::ip::udp::socket peer(io, asio::ip::udp::endpoint(asio::ip::make_address_v4("127.0.0.1"), 0));
         peer.set_option(asio::socket_base::receive_buffer_size(4 << 20));
         const std::uint16_t mc = findFreeUdpPort();
-        auto s = loopback(mc);
+        auto s = jaustest::loopback(mc);
         const JausId vehicle{126, 1, 1};
         s.staticEndpoints.push_back(
             {JausId{126, 255, 255}, "127.0.0.1", peer.local_endpoint().port(), false});
@@ -156,8 +146,8 @@ private slots:
     void unknownDestinationGoesMulticastAndAckTeachesTheAddress() {
         boost::asio::io_context io;
         const std::uint16_t mc = findFreeUdpPort();
-        Node a(io, loopback(mc), JausId{126, 1, 1});
-        Node b(io, loopback(mc), JausId{200, 1, 1});
+        Node a(io, jaustest::loopback(mc), JausId{126, 1, 1});
+        Node b(io, jaustest::loopback(mc), JausId{200, 1, 1});
         a.transport.open();
         b.transport.open();
         b.transport.send(b.self, a.self, encodeEmpty(msg::QueryStatus), {});
@@ -185,8 +175,8 @@ private slots:
     void learnedAddressesAreBounded() {
         boost::asio::io_context io;
         const std::uint16_t mc = findFreeUdpPort();
-        Node a(io, loopback(mc), JausId{200, 1, 1});
-        Node vehicle(io, loopback(mc), JausId{126, 1, 1});
+        Node a(io, jaustest::loopback(mc), JausId{200, 1, 1});
+        Node vehicle(io, jaustest::loopback(mc), JausId{126, 1, 1});
         a.transport.open();
         vehicle.transport.open();
         vehicle.transport.send(vehicle.self, a.self, encode(ReportStatus{ManagementState::Ready, 0}), {});
@@ -219,9 +209,9 @@ private slots:
     void staticTableAvoidsTheBroadcast() {
         boost::asio::io_context io;
         const std::uint16_t mc = findFreeUdpPort();
-        Node a(io, loopback(mc), JausId{126, 1, 1});
+        Node a(io, jaustest::loopback(mc), JausId{126, 1, 1});
         a.transport.open();
-        auto s = loopback(mc);
+        auto s = jaustest::loopback(mc);
         s.staticEndpoints.push_back({JausId{126, 255, 255}, "127.0.0.1", a.transport.localPort(), false});
         Node b(io, s, JausId{200, 1, 1});
         b.transport.open();
@@ -233,8 +223,8 @@ private slots:
     void largeMessagesAreFragmentedAndReassembled() {
         boost::asio::io_context io;
         const std::uint16_t mc = findFreeUdpPort();
-        Node a(io, loopback(mc), JausId{126, 1, 1});
-        Node b(io, loopback(mc), JausId{200, 1, 1});
+        Node a(io, jaustest::loopback(mc), JausId{126, 1, 1});
+        Node b(io, jaustest::loopback(mc), JausId{200, 1, 1});
         a.transport.open();
         b.transport.open();
         b.transport.send(b.self, a.self, encodeEmpty(msg::QueryHeartbeatPulse), {});
@@ -262,13 +252,13 @@ private slots:
     void jtcpClientAndServer() {
         boost::asio::io_context io;
         const std::uint16_t mc = findFreeUdpPort();
-        auto sa = loopback(mc);
+        auto sa = jaustest::loopback(mc);
         sa.jtcpServer = true;
         sa.jtcpPort = 0;
         Node a(io, sa, JausId{126, 1, 1});
         a.transport.open();
         QVERIFY(a.transport.localTcpPort() != 0);
-        auto sb = loopback(mc);
+        auto sb = jaustest::loopback(mc);
         sb.staticEndpoints.push_back({JausId{126, 255, 255}, "127.0.0.1", a.transport.localTcpPort(), true});
         Node b(io, sb, JausId{200, 1, 1});
         b.transport.open();
