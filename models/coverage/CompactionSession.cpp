@@ -221,6 +221,7 @@ void CompactionSession::rebuildGeometry() {
         g.areaFromDesign.push_back(a.source == QLatin1String("design"));
     }
     m_geometry = std::move(g);
+    m_stationBands.clear();
 }
 
 QString CompactionView::stationText(double station, int decimals) {
@@ -290,8 +291,15 @@ CompactionView::CoverageTable CompactionSession::coverageTable(int lift) const {
         row.from = b.from;
         row.to = b.to;
         figures(row, b.stats);
-        for (const auto& pt : osyris::stationBandRing(inSite, b.from, b.to, job.bandLeft, job.bandRight, 2.0))
-            row.band << QPointF(pt.x, pt.y);
+        auto band = m_stationBands.find({b.from, b.to});
+        if (band == m_stationBands.end()) {
+            QPolygonF ring;
+            for (const auto& pt :
+                 osyris::stationBandRing(inSite, b.from, b.to, job.bandLeft, job.bandRight, 2.0))
+                ring << QPointF(pt.x, pt.y);
+            band = m_stationBands.insert({b.from, b.to}, ring);
+        }
+        row.band = *band;
         out.stations.push_back(row);
     }
     return out;

@@ -6,6 +6,7 @@
 #include "models/coverage/CoverageReport.h"
 #include "protocols/site/SiteConfig.h"
 
+#include <QHash>
 #include <QObject>
 #include <QPolygonF>
 
@@ -70,6 +71,9 @@ private:
     std::unique_ptr<CrsTransform> m_designCrs;
     QVector<CompactionArea> m_areas;
     MapGeometry m_geometry;
+    // Station-range bands in the site frame by (from, to): they depend on the design only (PROJ per vertex),
+    // not on the counts the table is refreshed for. Cleared with the geometry.
+    mutable QHash<QPair<double, double>, QPolygonF> m_stationBands;
     std::function<std::shared_ptr<const osyris::PassCountSnapshot>()> m_snapshot;
     GeoPoint m_worksite;
     bool m_haveWorksite = false;
