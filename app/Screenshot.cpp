@@ -1,7 +1,6 @@
 #include "app/Screenshot.h"
 
 #include "app/MainWindow.h"
-#include "widgets/SiteMapView.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "widgets/view3d/Site3DView.h"
 #endif
@@ -44,16 +43,6 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
                     while (v3d->renderCount() == 0 && t.elapsed() < 10000)
                         QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
 #endif
-                // Issue 18: a video view still connecting (property "screenshotPending") gets up to 10 s for
-                // its first frame, so --view teleop shows the picture.
-                auto pending = [d] {
-                    const auto widgets = d->findChildren<QWidget*>();
-                    return std::any_of(widgets.begin(), widgets.end(), [](QWidget* w) {
-                        return w->isVisible() && w->property("screenshotPending").toBool();
-                    });
-                };
-                while (pending() && t.elapsed() < 10000)
-                    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
                 target = whole ? static_cast<QWidget*>(&window) : d;
             }
         }
@@ -61,16 +50,18 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
             return QCoreApplication::translate("Screenshot", "unknown view \"%1\"").arg(view);
     }
     {
-        // Issue 17 §6: an on-screen map renders its pass-count tiles over several frames (a frame budget);
-        // the picture shows the finished overlay (up to 5 s).
-        const auto maps = target->findChildren<SiteMapView*>();
-        auto owed = [&maps] {
-            return std::any_of(maps.begin(), maps.end(),
-                               [](SiteMapView* m) { return m->isVisible() && !m->passOverlayComplete(); });
+        // A widget that has not shown what it is about yet sets the property "screenshotPending": a video
+        // view still connecting (issue 18: its first frame), a map whose pass-count tiles are still owed to
+        // its frame budget (issue 17 §6). Up to 10 s for them.
+        const auto widgets = target->findChildren<QWidget*>();
+        auto pending = [&widgets] {
+            return std::any_of(widgets.begin(), widgets.end(), [](QWidget* w) {
+                return w->isVisible() && w->property("screenshotPending").toBool();
+            });
         };
         QElapsedTimer t;
         t.start();
-        while (owed() && t.elapsed() < 5000)
+        while (pending() && t.elapsed() < 10000)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     }
     const QPixmap pixmap = target->grab();

@@ -338,6 +338,8 @@ void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
     QPainter sp(&m_static);
     m_passOverlayPending = false; // drawPassCount says again if tiles are still owed
     drawStatic(sp, size);
+    // Screenshots (app/Screenshot.cpp) wait while tiles are owed, like for a video view's first frame.
+    setProperty("screenshotPending", m_passOverlayPending);
     if (m_night)
         dimStaticForNight(sp, size);
     sp.end();

@@ -172,6 +172,15 @@ private slots:
         }
         QCOMPARE(onScreen, direct);
         QVERIFY(view.passOverlayComplete());
+        // Screenshots wait on the property "screenshotPending" while tiles are owed (app/Screenshot.cpp): a
+        // palette change owes every tile again; one synchronous frame renders one of them.
+        QVERIFY(!view.property("screenshotPending").toBool());
+        view.setPassPalette(PassPalette::Summary);
+        view.repaint();
+        QVERIFY(!view.passOverlayComplete());
+        QVERIFY(view.property("screenshotPending").toBool());
+        QTRY_VERIFY_WITH_TIMEOUT(view.passOverlayComplete(), 10000);
+        QVERIFY(!view.property("screenshotPending").toBool());
     }
 };
 
