@@ -15,7 +15,8 @@ JausCore::JausCore(JausConfig config, JausListener& listener, JausOutput& output
              &m_drive,    &m_pose,      &m_platform, &m_health, &m_video};
     // Timer order within one tick: what discovery found is queried first, commands and streams last.
     m_afterDiscovery = {&m_platform, &m_events, &m_management, &m_access, &m_health, &m_drive, &m_video};
-    // Pan-tilt units hold their own access control (issue 18): their confirmations are the video client's.
+    // Pan-tilt units hold their own access control (IOP pan-tilt services): their confirmations are the video
+    // client's.
     m_access.setOtherControl([this](RemoteSubsystem& r, const JausId& src, std::uint16_t id, ByteSpan p) {
         return m_video.handleControlMessage(r, src, id, p);
     });
@@ -60,7 +61,7 @@ void JausCore::handle(const JausId& src, const JausId& dst, ByteSpan payload) {
         counters.add("rx.ignored.not_for_us");
         return;
     }
-    // The console is a JAUS subsystem too (issue 3 §2): identification, services, heartbeat, events.
+    // The console is a JAUS subsystem too: identification, services, heartbeat, events.
     const bool onlyForUs = m_table.answer(id, src, payload);
     if (src.subsystem == self.subsystem || src.subsystem == 0 || src.subsystem == 0xFFFF || onlyForUs)
         return;
@@ -75,6 +76,7 @@ void JausCore::handle(const JausId& src, const JausId& dst, ByteSpan payload) {
     }
     const bool firstContact = !m_ctx.find(src.subsystem);
     RemoteSubsystem& r = m_ctx.remote(src.subsystem);
+    m_discovery.heardFrom(r, src);
     if (m_liveness.heard(r, firstContact))
         for (ClientService* c : m_all)
             c->onLinkRestored(r); // the platform may have restarted (events subscribe again)
@@ -89,8 +91,10 @@ void JausCore::tick() {
         m_liveness.tick(r, now);
         m_discovery.tick(r, now);
         m_video.heard(r);
-        if (!r.components.known)
+        if (!r.components.known) {
+            m_management.tick(r, now); // a stop sent to every component is repeated like any other
             continue;
+        }
         for (ClientService* c : m_afterDiscovery)
             c->tick(r, now);
     }
@@ -106,7 +110,7 @@ std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code,
     std::set<std::uint16_t> named;
     for (std::uint16_t ss : subsystems()) {
         named.insert(ss);
-        TargetOutcome o = early(ss) ? emergencySent(ss, code) : outcome(ss, setEmergency(ss, code));
+        TargetOutcome o = early(ss) ? emergencySent(ss, code) : emergencyOutcome(ss, setEmergency(ss, code));
         // A vehicle whose link is down still gets the stop at its last address (it may hear us even if we do
         // not hear it); the result says so, and that its confirmation can only come when it is back.
         if (const RemoteSubsystem* r = m_ctx.find(ss); o.sent && r && r->snap.link == LinkState::Down) {
@@ -115,7 +119,8 @@ std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code,
                 m_ctx.endpointOf(r->managementTarget().subsystem ? r->managementTarget() : JausId{ss, 1, 1});
             o.note = "link down (nothing heard for " + std::to_string(downS.count()) +
                      " s): SetEmergency sent to its last address" + (where.empty() ? "" : " " + where) +
-                     "; no answer expected until it is back, confirmation pending";
+                     "; no answer expected until it is back, confirmation pending" +
+                     (o.note.empty() ? "" : "; " + o.note);
         }
         out.push_back(std::move(o));
     }
@@ -140,6 +145,16 @@ std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code,
 
 TargetOutcome JausCore::outcome(std::uint16_t subsystem, bool sent) const {
     return TargetOutcome{targetId(subsystem), sent, sent ? std::string() : m_ctx.lastRefusal()};
+}
+
+TargetOutcome JausCore::emergencyOutcome(std::uint16_t subsystem, bool sent) const {
+    TargetOutcome o = outcome(subsystem, sent);
+    const RemoteSubsystem* r = m_ctx.find(subsystem);
+    if (sent && r && !r->components.known)
+        o.note = "its services are not known (not reported, or reported with no components): SetEmergency "
+                 "sent to every component (" +
+                 std::to_string(subsystem) + ".255.255); confirmation pending";
+    return o;
 }
 
 } // namespace ocu::jaus

@@ -65,7 +65,7 @@ public:
     bool panTilt(std::uint16_t subsystem, std::uint16_t sensorId, double panRate, double tiltRate) {
         return m_video.panTilt(subsystem, sensorId, panRate, tiltRate);
     }
-    // STOP ALL (issue 13 §2): SetEmergency to every discovered subsystem, whether this console controls it
+    // STOP ALL: SetEmergency to every discovered subsystem, whether this console controls it
     // or not; one outcome per subsystem.
     // alreadySent: subsystems whose SetEmergency already left on the caller's thread (JausStack's fast path):
     // they count as sent and the state machine learns it; the others are sent now.
@@ -73,8 +73,11 @@ public:
                                                const std::vector<std::uint16_t>& alreadySent = {});
     // One subsystem whose SetEmergency already left on the caller's thread: the state machine learns it.
     TargetOutcome emergencySent(std::uint16_t subsystem, EmergencyCode code) {
-        return outcome(subsystem, m_management.setEmergency(subsystem, code, true));
+        return emergencyOutcome(subsystem, m_management.setEmergency(subsystem, code, true));
     }
+    // The outcome of a SetEmergency just run: outcome(), noted when it went to every component because the
+    // vehicle's services are not known.
+    TargetOutcome emergencyOutcome(std::uint16_t subsystem, bool sent) const;
     // Where SetEmergency for this subsystem would go now (nullopt: it would be refused). No side effects.
     std::optional<JausId> emergencyTarget(std::uint16_t subsystem) const {
         return m_management.emergencyTarget(subsystem);

@@ -255,7 +255,8 @@ void JausStack::setEmergency(std::uint16_t ss, EmergencyCode code, OutcomeCallba
         return;
     const bool early = !d->sendStopPlans(code, ss).empty();
     d->post([=, done = std::move(done)] {
-        done({early ? d->core.emergencySent(ss, code) : d->core.outcome(ss, d->core.setEmergency(ss, code))});
+        done({early ? d->core.emergencySent(ss, code)
+                    : d->core.emergencyOutcome(ss, d->core.setEmergency(ss, code))});
     });
 }
 void JausStack::clearEmergency(std::uint16_t ss, OutcomeCallback done) {

@@ -152,6 +152,21 @@ struct ReportServiceList {
     };
     std::vector<Subsystem> subsystems;
 };
+// Discovery's configuration (AS5710A): which nodes and components a subsystem has, without their services.
+struct QueryConfiguration {
+    IdQueryType type = IdQueryType::Subsystem;
+};
+struct ReportConfiguration {
+    struct Component {
+        std::uint8_t component = 0;
+        std::uint8_t instance = 0;
+    };
+    struct Node {
+        std::uint8_t node = 0;
+        std::vector<Component> components;
+    };
+    std::vector<Node> nodes;
+};
 struct ReportSubsystemList {
     std::vector<JausId> subsystems;
 };
@@ -257,6 +272,8 @@ Bytes encode(const QueryServices& m);
 Bytes encode(const ReportServices& m);
 Bytes encode(const QueryServiceList& m);
 Bytes encode(const ReportServiceList& m);
+Bytes encode(const QueryConfiguration& m);
+Bytes encode(const ReportConfiguration& m);
 Bytes encode(const ReportSubsystemList& m);
 Bytes encode(const CreateEvent& m);
 Bytes encode(const UpdateEvent& m);
@@ -288,6 +305,7 @@ Result<QueryServices> decodeQueryServices(ByteSpan payload);
 Result<ReportServices> decodeReportServices(ByteSpan payload);
 Result<QueryServiceList> decodeQueryServiceList(ByteSpan payload);
 Result<ReportServiceList> decodeReportServiceList(ByteSpan payload);
+Result<ReportConfiguration> decodeReportConfiguration(ByteSpan payload);
 Result<ReportSubsystemList> decodeReportSubsystemList(ByteSpan payload);
 Result<CreateEvent> decodeCreateEvent(ByteSpan payload);
 Result<UpdateEvent> decodeUpdateEvent(ByteSpan payload);

@@ -230,6 +230,44 @@ Result<ReportServiceList> decodeReportServiceList(ByteSpan p) {
     return finish(*r, m, msg::ReportServiceList);
 }
 
+Bytes encode(const QueryConfiguration& m) {
+    return encodeU8(msg::QueryConfiguration, std::uint8_t(m.type));
+}
+Bytes encode(const ReportConfiguration& m) {
+    Bytes out;
+    auto w = start(out, msg::ReportConfiguration);
+    w.u8(std::uint8_t(std::min<std::size_t>(m.nodes.size(), 255)));
+    for (auto& n : m.nodes) {
+        w.u8(n.node);
+        w.u8(std::uint8_t(std::min<std::size_t>(n.components.size(), 255)));
+        for (std::size_t i = 0; i < n.components.size() && i < 255; ++i) {
+            w.u8(n.components[i].component);
+            w.u8(n.components[i].instance);
+        }
+    }
+    return out;
+}
+Result<ReportConfiguration> decodeReportConfiguration(ByteSpan p) {
+    auto r = open(p, msg::ReportConfiguration);
+    if (!r)
+        return makeError(r.error());
+    ReportConfiguration m;
+    auto nn = r->u8();
+    for (int i = 0; i < nn && r->ok(); ++i) {
+        ReportConfiguration::Node n;
+        n.node = r->u8();
+        auto nc = r->u8();
+        for (int j = 0; j < nc && r->ok(); ++j) {
+            ReportConfiguration::Component c;
+            c.component = r->u8();
+            c.instance = r->u8();
+            n.components.push_back(c);
+        }
+        m.nodes.push_back(std::move(n));
+    }
+    return finish(*r, m, msg::ReportConfiguration);
+}
+
 Bytes encode(const ReportSubsystemList& m) {
     Bytes out;
     auto w = start(out, msg::ReportSubsystemList);

@@ -18,12 +18,17 @@ namespace ocu::jaus {
 // ReportServices); the other clients read it to address their queries and commands. The Core Mobility
 // Component lives in the snapshot (SubsystemSnapshot::mobilityComponent) because the console shows it.
 struct ComponentTable {
-    bool known = false;     // a ReportServices arrived: events, polls and commands may start
+    // A services answer or registration listed a component with services: events, polls and commands may
+    // start. An answer listing no component at all leaves it false (the vehicle has not told us yet).
+    bool known = false;
     JausId platformManager; // identification, services, heartbeat
     JausId globalPoseSensor, localPoseSensor, velocitySensor, healthMonitor, platformSpecs;
-    // The components offering AccessControl and Management directly or by inheritance (ServiceInheritance.h,
-    // issue 13 §3); zero when the subsystem has none.
+    // The components offering AccessControl and Management directly or by inheritance (ServiceInheritance.h);
+    // zero when the subsystem has none.
     JausId accessControl, management;
+    // The demands the mobility component's services accept: SetVelocityCommand (VelocityStateDriver) and
+    // SetWrenchEffort (PrimitiveDriver).
+    bool driverTakesVelocity = false, driverTakesEffort = false;
 };
 
 // One remote subsystem (a vehicle) as the console knows it. Each client writes only its own fields of the

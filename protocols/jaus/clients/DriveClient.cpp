@@ -23,7 +23,7 @@ bool DriveClient::startDriving(std::uint16_t ss) {
     s.active = true;
     s.stopRepeatsLeft = 0;
     s.drive = DriveCommand{};
-    s.drive.mode = m_ctx.config().velocityDrive ? DriveCommand::Mode::Velocity : DriveCommand::Mode::Wrench;
+    s.drive.mode = startMode(*r);
     r->snap.driving = true;
     s.lastSent = TimePoint{};
     s.lastUpdate = m_ctx.now();
@@ -46,6 +46,10 @@ bool DriveClient::setDriveCommand(std::uint16_t ss, DriveCommand c) {
     if (!r || it == m_state.end() || !it->second.active)
         return m_ctx.refuse(ss, "no drive session open for subsystem " + std::to_string(ss));
     State& s = it->second;
+    if (const char* missing = missingDriver(*r, c.mode))
+        return m_ctx.refuse(ss, r->snap.callSign + " offers no " + missing + ": " +
+                                    (c.mode == DriveCommand::Mode::Velocity ? "velocity" : "effort") +
+                                    " demands are not sent to it");
     // Clamp to the platform specifications (AEP-4818 §7.2, §9 item 24).
     if (c.mode == DriveCommand::Mode::Wrench) {
         c.linear = std::clamp(c.linear, -100.0, 100.0);
@@ -73,6 +77,29 @@ bool DriveClient::setDriveCommand(std::uint16_t ss, DriveCommand c) {
     if (!s.lastSendOk)
         return m_ctx.refuse(ss, "drive command for " + r->snap.callSign + " was not sent: " + s.lastError);
     return true;
+}
+
+DriveCommand::Mode DriveClient::startMode(const RemoteSubsystem& r) const {
+    // The configured preference where the driver takes it, else what the driver takes: a vehicle is sent
+    // only demands its services name (a PrimitiveDriver alone never gets SetVelocityCommand).
+    const ComponentTable& t = r.components;
+    const bool velocity = m_ctx.config().velocityDrive;
+    if (velocity && !t.driverTakesVelocity && t.driverTakesEffort)
+        return DriveCommand::Mode::Wrench;
+    if (!velocity && !t.driverTakesEffort && t.driverTakesVelocity)
+        return DriveCommand::Mode::Velocity;
+    return velocity ? DriveCommand::Mode::Velocity : DriveCommand::Mode::Wrench;
+}
+
+const char* DriveClient::missingDriver(const RemoteSubsystem& r, DriveCommand::Mode mode) {
+    const ComponentTable& t = r.components;
+    if (!t.driverTakesVelocity && !t.driverTakesEffort)
+        return nullptr; // nothing known about the driver: the stream's own checks decide
+    if (mode == DriveCommand::Mode::Velocity && !t.driverTakesVelocity)
+        return "VelocityStateDriver";
+    if (mode == DriveCommand::Mode::Wrench && !t.driverTakesEffort)
+        return "PrimitiveDriver";
+    return nullptr;
 }
 
 bool DriveClient::stopDriving(std::uint16_t ss) {

@@ -20,7 +20,7 @@ public:
     void forget(std::uint16_t subsystem) override { m_state.erase(subsystem); }
 
     // Commands; each returns false and emits CommandRefused when not allowed. What they return says what went
-    // on the wire (issue 13 §1): startDriving sends a first zero demand at once and is true when the socket
+    // on the wire: startDriving sends a first zero demand at once and is true when the socket
     // took it; setDriveCommand is true when its demand (sent at once when it changed) or, unchanged, the
     // stream's latest message was taken; stopDriving is true when the first of the zero commands was taken.
     bool startDriving(std::uint16_t subsystem);
@@ -47,6 +47,9 @@ private:
         std::string lastError;        // why not, when it was not
         bool failureReported = false; // one event per failing streak, one when it recovers
     };
+    DriveCommand::Mode startMode(const RemoteSubsystem& remote) const;
+    // The driver service a demand of `mode` needs and the vehicle does not list; nullptr when it may go.
+    static const char* missingDriver(const RemoteSubsystem& remote, DriveCommand::Mode mode);
     // True when the socket took the message; a failure (and the recovery after it) is an event.
     bool send(RemoteSubsystem& remote, State& state, bool zero);
     bool stop(RemoteSubsystem& remote, State& state);

@@ -24,13 +24,20 @@ void EventsClient::registerMessages(MessageTable& table) {
 
 void EventsClient::subscribe(RemoteSubsystem& r, const JausId& target, Bytes query, double rateHz,
                              EventType type) {
+    const std::uint16_t queryId = peekMessageId(query);
+    auto& subs = m_subs[r.id()];
+    // The same subscription again (services learnt in parts call this once per part): kept as it is, so
+    // an event already created is not created twice.
+    if (auto it = subs.find(queryId); it != subs.end() && it->second.target == target &&
+                                      it->second.query == query && it->second.type == type &&
+                                      it->second.rateHz == rateHz)
+        return;
     Subscription s;
     s.type = type;
     s.target = target;
     s.rateHz = rateHz;
-    const std::uint16_t queryId = peekMessageId(query);
     s.query = std::move(query);
-    m_subs[r.id()][queryId] = std::move(s);
+    subs[queryId] = std::move(s);
 }
 
 std::optional<EventsClient::SubscriptionState> EventsClient::state(std::uint16_t ss,

@@ -46,9 +46,10 @@ std::optional<JausId> ManagementClient::emergencyTarget(std::uint16_t ss) const 
     const RemoteSubsystem* r = m_ctx.find(ss);
     if (!r)
         return std::nullopt;
-    // Services not reported yet: the stop still goes out, to every component of the subsystem (ss.255.255),
-    // because a stop must reach the vehicle if anything can. Services known and none offers Management
-    // (directly or by inheritance): nobody there would obey, so the outcome says so instead of "sent".
+    // Services not known (not reported yet, reported with no components, or never learnt at all): the stop
+    // still goes out, to every component of the subsystem (ss.255.255), because a stop must reach the
+    // vehicle if anything can. Services known and none offers Management (directly or by inheritance):
+    // nobody there would obey, so the outcome says so instead of "sent".
     JausId target = r->managementTarget();
     if (!target.subsystem) {
         if (r->components.known)

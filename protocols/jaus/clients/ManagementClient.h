@@ -34,7 +34,7 @@ public:
     // machine learns it (retries, drive session, status query) exactly as if it had sent it itself.
     bool setEmergency(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety,
                       bool alreadySent = false);
-    // STOP ALL to a subsystem configured as a static endpoint and never heard (issue 13 §2/§3): SetEmergency
+    // STOP ALL to a subsystem configured as a static endpoint and never heard: SetEmergency
     // to all of its components (ss.255.255) at the configured address. True when the socket took it.
     bool setEmergencyUnheard(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety);
     // Where setEmergency would send SetEmergency now (nullopt: it would refuse). No side effects.

@@ -144,6 +144,89 @@ private slots:
         QCOMPARE(rig.out.count(msg::QueryServices), n + 2);
     }
 
+    // A vehicle that answers the wildcard QueryServices with no components and registers its services
+    // instead (AS5710A RegisterServices): the empty answer leaves the table unknown (so a stop still goes to
+    // every component), the console asks for the configuration and names each component it has heard;
+    // every registration merges, and the services-known hook runs again when a part adds services.
+    void emptyWildcardAnswerThenRegistrations() {
+        DiscoveryRig rig;
+        RemoteSubsystem& r = rig.ctx.remote(126);
+        QVERIFY(rig.deliver(r, encode(ugvIdent("PUBLIC-126")), JausId{126, 1, 1}));
+        for (std::uint8_t c : {1, 2, 3})
+            rig.discovery.heardFrom(r, JausId{126, 1, c});
+        rig.run(&r, 0.01);
+        QCOMPARE(rig.out.count(msg::QueryServices), 1);
+        QCOMPARE(rig.out.count(msg::QueryConfiguration), 0); // only after an empty answer
+
+        ReportServices empty;
+        empty.nodes.push_back({1, {}});
+        QVERIFY(rig.deliver(r, encode(empty), JausId{126, 1, 1}));
+        QVERIFY(!r.components.known);
+        QCOMPARE(rig.servicesKnown, 0);
+        QCOMPARE(rig.counters.get("discovery.empty_services_answer"), std::uint64_t(1));
+        QCOMPARE(rig.rec.events.back().severity, Severity::Warning);
+        rig.out.sent.clear();
+        rig.run(&r, 0.01);
+        QCOMPARE(rig.out.count(msg::QueryConfiguration), 1);
+        const Sent* qc = rig.out.last(msg::QueryConfiguration);
+        QCOMPARE(qc->destination, (JausId{126, 1, 1}));
+        QCOMPARE(qc->payload, (Bytes{0x01, 0x2B, 0x02})); // AS5710A QueryConfiguration, subsystem level
+        // Named queries: component 1 (the platform manager itself) once, 2 and 3 to the platform manager and
+        // to the component: QueryServices {1 node: node 1, 1 component: c} = 03 2B 01 01 01 c.
+        int toDriver = 0;
+        for (const Sent& m : rig.out.sent)
+            if (m.id() == msg::QueryServices && m.payload.size() == 6) {
+                QCOMPARE(Bytes(m.payload.begin(), m.payload.begin() + 5),
+                         (Bytes{0x03, 0x2B, 0x01, 0x01, 0x01}));
+                toDriver += m.destination == JausId{126, 1, 2} ? 1 : 0;
+            }
+        QCOMPARE(toDriver, 1);
+        QCOMPARE(rig.out.count(msg::QueryServices), 1 + 2 + 2); // the named ones (the wildcard: 1 s apart)
+
+        // The driver registers: the table is known, the driver takes efforts only.
+        QVERIFY(rig.deliver(r, encode(RegisterServices{{{"urn:jaus:jss:mobility:PrimitiveDriver", 1, 1}}}),
+                            JausId{126, 1, 2}));
+        QVERIFY(r.components.known);
+        QCOMPARE(rig.servicesKnown, 1);
+        QCOMPARE(r.snap.mobilityComponent, (JausId{126, 1, 2}));
+        QCOMPARE(r.managementTarget(), (JausId{126, 1, 2}));
+        QVERIFY(r.components.driverTakesEffort);
+        QVERIFY(!r.components.driverTakesVelocity);
+        // The pose sensor registers later: merged, the hook runs again (its subscriptions are new).
+        const Bytes pose = encode(RegisterServices{{{"urn:jaus:jss:mobility:GlobalPoseSensor", 1, 1},
+                                                    {"urn:jaus:jss:mobility:LocalPoseSensor", 1, 1}}});
+        QVERIFY(rig.deliver(r, pose, JausId{126, 1, 3}));
+        QCOMPARE(rig.servicesKnown, 2);
+        QCOMPARE(r.components.globalPoseSensor, (JausId{126, 1, 3}));
+        QVERIFY(rig.deliver(r, pose, JausId{126, 1, 3})); // repeated registrations add nothing
+        QCOMPARE(rig.servicesKnown, 2);
+
+        // A component named by ReportConfiguration and not listed is asked for by name; one that never
+        // answers (here the platform manager, which registers nothing) is asked five times a second apart,
+        // then once per discovery interval.
+        ReportConfiguration conf;
+        conf.nodes.push_back({1, {{1, 0}, {2, 0}, {3, 0}, {4, 0}}});
+        QVERIFY(rig.deliver(r, encode(conf), JausId{126, 1, 1}));
+        rig.out.sent.clear();
+        rig.run(&r, 0.01);
+        int toFour = 0;
+        for (const Sent& m : rig.out.sent)
+            toFour += m.id() == msg::QueryServices && m.destination == JausId{126, 1, 4} ? 1 : 0;
+        QCOMPARE(toFour, 1);
+        rig.run(&r, 10);
+        auto namedTo = [&](JausId c) {
+            int n = 0;
+            for (const Sent& m : rig.out.sent)
+                if (m.id() == msg::QueryServices && m.payload.size() == 6 && m.payload[5] == c.component &&
+                    m.destination == c)
+                    ++n;
+            return n;
+        };
+        QCOMPARE(namedTo(JausId{126, 1, 4}), 5);
+        rig.run(&r, 25);
+        QCOMPARE(namedTo(JausId{126, 1, 4}), 6);
+    }
+
     void serviceListForOurSubsystemOnly() {
         DiscoveryRig rig;
         RemoteSubsystem& r = rig.ctx.remote(126);

@@ -192,12 +192,29 @@ private slots:
         QVERIFY(rig.out.sent.empty());
     }
 
+    // Services learnt in parts call subscribe again with the same subscription: it is kept (one CreateEvent,
+    // its state untouched); a changed one replaces it.
+    void sameSubscriptionIsKept() {
+        EventsRig rig;
+        RemoteSubsystem& r = rig.vehicle();
+        rig.events.subscribe(r, kSensor, poseQuery(), 10);
+        rig.run(r, 0.01);
+        QCOMPARE(rig.out.count(msg::CreateEvent), 1);
+        rig.events.subscribe(r, kSensor, poseQuery(), 10);
+        rig.run(r, 0.5);
+        QCOMPARE(rig.out.count(msg::CreateEvent), 1);
+        rig.events.subscribe(r, kSensor, poseQuery(), 5);
+        rig.run(r, 0.01);
+        QCOMPARE(rig.out.count(msg::CreateEvent), 2);
+    }
+
     void requestIdsNeverZero() {
         EventsRig rig;
         RemoteSubsystem& r = rig.vehicle();
         std::set<int> seen;
         for (int i = 0; i < 300; ++i) {
-            rig.events.subscribe(r, kSensor, poseQuery(), 10);
+            // A changed rate each time: a new subscription, so a new CreateEvent with the next request ID.
+            rig.events.subscribe(r, kSensor, poseQuery(), 10 + i % 2);
             rig.run(r, 0.01);
             seen.insert(rig.lastCreate().requestId);
         }

@@ -5,9 +5,11 @@
 #include <boost/asio/post.hpp>
 #include <boost/asio/steady_timer.hpp>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <set>
 #include <thread>
 
 namespace foreign {
@@ -39,6 +41,14 @@ enum : std::uint16_t {
     ReportControl = 0x400D,
     ReportIdentification = 0x4B00,
     ReportServices = 0x4B03,
+    RegisterServices = 0x0B00,
+    QueryConfiguration = 0x2B01,
+    QueryGlobalPose = 0x2402,
+    QueryLocalPose = 0x2403,
+    QueryVelocityState = 0x2404,
+    ReportGlobalPose = 0x4402,
+    ReportLocalPose = 0x4403,
+    ReportVelocityState = 0x4404,
     // IOP Digital Resource Discovery 1.1 (jaus-services-extra.md §1.1)
     QueryDigitalResourceEndpoint = 0xE702,
     ReportDigitalResourceEndpoint = 0xF702,
@@ -65,6 +75,14 @@ std::uint16_t get16(const std::uint8_t* p) {
 std::uint32_t get32(const std::uint8_t* p) {
     return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
            std::uint32_t(p[3]) << 24;
+}
+
+// AS6009 scaled integers: value in [lo, hi] over the whole unsigned range (jaus-wire.md §3.4).
+std::uint32_t scaled32(double v, double lo, double hi) {
+    return std::uint32_t((v - lo) / (hi - lo) * 4294967295.0 + 0.5);
+}
+std::uint16_t scaled16(double v, double lo, double hi) {
+    return std::uint16_t((v - lo) / (hi - lo) * 65535.0 + 0.5);
 }
 
 // One AS5669A general-transport-header message (no header compression, single fragment).
@@ -127,6 +145,9 @@ struct ForeignJausVehicle::Impl {
         socket.open(udp::v4());
         socket.bind(udp::endpoint(asio::ip::make_address_v4("127.0.0.1"), opt.port));
         self = id(opt.subsystem, opt.node, opt.component);
+        comps.push_back(Comp{opt.component, opt.services, opt.management, opt.accessControl, false});
+        for (const ExtraComponent& e : opt.extraComponents)
+            comps.push_back(Comp{e.component, e.services, e.management, e.accessControl, e.pose});
         started = Clock::now();
         receive();
         tick();
@@ -138,11 +159,18 @@ struct ForeignJausVehicle::Impl {
             thread.join();
     }
 
-    bool forUs(std::uint32_t dst) const {
+    struct Comp {
+        std::uint8_t component = 1;
+        std::vector<std::string> services;
+        bool management = false, accessControl = false, pose = false;
+    };
+    std::uint32_t idOf(const Comp& c) const { return id(opt.subsystem, opt.node, c.component); }
+
+    bool forComp(std::uint32_t dst, const Comp& c) const {
         const std::uint16_t ss = std::uint16_t(dst >> 16);
         const std::uint8_t node = std::uint8_t(dst >> 8), comp = std::uint8_t(dst);
         return (ss == 0xFFFF || ss == opt.subsystem) && (node == 0xFF || node == opt.node) &&
-               (comp == 0xFF || comp == opt.component);
+               (comp == 0xFF || comp == c.component);
     }
 
     void receive() {
@@ -164,25 +192,85 @@ struct ForeignJausVehicle::Impl {
             return;
         }
         for (Message& m : msgs) {
-            if (!forUs(m.destination))
-                continue;
-            endpoints[m.source] = from;
-            if (((m.props >> 4) & 3) == 1 && m.destination == self) // ACK requested: ACK it (same seq)
-                send(from, frame(std::uint8_t(0x30 | (m.props & 3)), m.source, self, {}, m.sequence), false);
-            if (m.payload.size() < 2)
-                continue;
-            const std::uint16_t mid = get16(m.payload.data());
-            ++counts[mid];
-            ++countsFrom[{mid, m.source}];
-            handle(mid, m.source, m.payload.data() + 2, m.payload.size() - 2);
+            bool counted = false;
+            for (const Comp& c : comps) {
+                if (!forComp(m.destination, c))
+                    continue;
+                endpoints[m.source] = from;
+                if (((m.props >> 4) & 3) == 1 && m.destination == idOf(c)) // ACK requested: ACK it (same seq)
+                    send(from, frame(std::uint8_t(0x30 | (m.props & 3)), m.source, idOf(c), {}, m.sequence),
+                         false);
+                if (m.payload.size() < 2)
+                    continue;
+                const std::uint16_t mid = get16(m.payload.data());
+                if (!counted) {
+                    counted = true;
+                    ++counts[mid];
+                    ++countsFrom[{mid, m.source}];
+                }
+                ++countsBy[{mid, c.component}];
+                handle(c, mid, m.source, m.payload.data() + 2, m.payload.size() - 2);
+            }
         }
     }
 
-    void reply(std::uint32_t to, const Buf& payload) {
+    void reply(std::uint32_t to, const Buf& payload, std::uint32_t from = 0) {
         auto it = endpoints.find(to);
         if (it == endpoints.end())
             return;
-        send(it->second, frame(0x01, to, self, payload, seq++), true);
+        send(it->second, frame(0x01, to, from ? from : self, payload, seq++), true);
+    }
+
+    // ReportServices: one node with the given components (none: "0 components").
+    Buf reportServices(const std::vector<const Comp*>& list) const {
+        Buf b = withId(ReportServices);
+        put8(b, 1); // nodes
+        put8(b, opt.node);
+        put8(b, std::uint8_t(list.size()));
+        for (const Comp* c : list) {
+            put8(b, c->component);
+            put8(b, 0); // instance
+            put8(b, std::uint8_t(c->services.size()));
+            for (auto& uri : c->services) {
+                putStr8(b, uri);
+                put8(b, 1);
+                put8(b, 1);
+            }
+        }
+        return b;
+    }
+
+    // The components a QueryServices names: {node u8; list u8 x component u8}, 255 = all (AS5710A).
+    std::vector<const Comp*> named(const std::uint8_t* body, std::size_t len, bool& wildcard) const {
+        std::vector<const Comp*> out;
+        wildcard = false;
+        if (len < 1)
+            return out;
+        std::size_t i = 1;
+        for (int n = 0; n < body[0] && i + 2 <= len; ++n) {
+            const std::uint8_t node = body[i], count = body[i + 1];
+            i += 2;
+            for (int k = 0; k < count && i < len; ++k, ++i) {
+                const std::uint8_t comp = body[i];
+                if (node == 0xFF || comp == 0xFF)
+                    wildcard = true;
+                for (const Comp& c : comps)
+                    if ((node == 0xFF || node == opt.node) && (comp == 0xFF || comp == c.component))
+                        out.push_back(&c);
+            }
+        }
+        return out;
+    }
+
+    Buf registration(const Comp& c) const {
+        Buf b = withId(RegisterServices);
+        put8(b, std::uint8_t(c.services.size()));
+        for (auto& uri : c.services) {
+            putStr8(b, uri);
+            put8(b, 1);
+            put8(b, 1);
+        }
+        return b;
     }
 
     void send(const udp::endpoint& to, Buf datagram, bool delayed) {
@@ -201,43 +289,61 @@ struct ForeignJausVehicle::Impl {
         });
     }
 
-    void handle(std::uint16_t mid, std::uint32_t src, const std::uint8_t* body, std::size_t len) {
+    void handle(const Comp& c, std::uint16_t mid, std::uint32_t src, const std::uint8_t* body,
+                std::size_t len) {
+        const bool first = &c == &comps.front(); // the Discovery component (platform manager)
+        const std::uint32_t me = idOf(c);
         switch (mid) {
         case QueryIdentification: {
-            if (len < 1)
+            if (len < 1 || (!first && !opt.everyComponentIdentifies))
                 return;
             Buf b = withId(ReportIdentification);
             put8(b, body[0]);
             put16(b, body[0] == 2 ? 10001 : body[0] == 3 ? 40001 : 60001); // VEHICLE, NODE, COMPONENT
             putStr8(b, opt.callSign);
-            return reply(src, b);
+            return reply(src, b, me);
         }
         case QueryServices: {
-            Buf b = withId(ReportServices);
-            put8(b, 1); // nodes
-            put8(b, opt.node);
-            put8(b, 1); // components
-            put8(b, opt.component);
-            put8(b, 0); // instance
-            put8(b, std::uint8_t(opt.services.size()));
-            for (auto& uri : opt.services) {
-                putStr8(b, uri);
-                put8(b, 1);
-                put8(b, 1);
+            bool wildcard = false;
+            std::vector<const Comp*> list = named(body, len, wildcard);
+            switch (opt.servicesDialect) {
+            case ServicesDialect::Report:
+                if (!first)
+                    return;
+                return reply(src, reportServices(list), me);
+            case ServicesDialect::EmptyWildcardRegister:
+                registerTo.insert(src);
+                if (wildcard) // "all" answered with nothing, from the Discovery component only
+                    return first ? reply(src, reportServices({}), me) : void();
+                // A named query: answered by the Discovery component and by the named component itself.
+                if (first || std::find(list.begin(), list.end(), &c) != list.end())
+                    return reply(src, reportServices(list), me);
+                return;
+            case ServicesDialect::Silent:
+                if (first && wildcard)
+                    return reply(src, reportServices({}), me);
+                return;
             }
-            return reply(src, b);
+            return;
         }
+        case QueryGlobalPose:
+        case QueryLocalPose:
+        case QueryVelocityState:
+            if (c.pose)
+                reply(src, poseReport(mid), me);
+            return;
         case RequestControl: {
-            if (!opt.accessControl || len < 1)
+            if (!c.accessControl || len < 1)
                 return;
             const std::uint8_t authority = body[0];
             auto confirm = [&](std::uint8_t code) {
                 Buf b = withId(ConfirmControl);
                 put8(b, code);
-                reply(src, b);
+                reply(src, b, me);
             };
             if (controller == 0 || controller == src) {
                 controller = src;
+                controlComponent = me;
                 controllerAuthority = authority;
                 lastRequest = Clock::now();
                 return confirm(0);
@@ -245,61 +351,62 @@ struct ForeignJausVehicle::Impl {
             if (authority > controllerAuthority) { // pre-emption (AS5710A AccessControl)
                 const std::uint32_t old = controller;
                 controller = src;
+                controlComponent = me;
                 controllerAuthority = authority;
                 lastRequest = Clock::now();
                 if (opt.tellOldController)
-                    rejectTo(old, 0);
+                    rejectTo(old, 0, me);
                 if (opt.rejectThenConfirm)
-                    rejectTo(src, 0);
+                    rejectTo(src, 0, me);
                 return confirm(0);
             }
             return confirm(2); // INSUFFICIENT_AUTHORITY
         }
         case ReleaseControl:
-            if (opt.accessControl && src == controller) {
+            if (c.accessControl && src == controller) {
                 controller = 0;
                 controllerAuthority = 0;
-                rejectTo(src, 0); // CONTROL_RELEASED
+                rejectTo(src, 0, me); // CONTROL_RELEASED
             }
             return;
         case QueryControl:
-            if (opt.accessControl && opt.answerQueryControl) {
+            if (c.accessControl && opt.answerQueryControl) {
                 Buf b = withId(ReportControl);
                 put16(b, std::uint16_t(controller >> 16));
                 put8(b, std::uint8_t(controller >> 8));
                 put8(b, std::uint8_t(controller));
                 put8(b, controllerAuthority);
-                reply(src, b);
+                reply(src, b, me);
             }
             return;
         case QueryTimeout:
-            if (opt.accessControl && opt.answerQueryTimeout) {
+            if (c.accessControl && opt.answerQueryTimeout) {
                 Buf b = withId(ReportTimeout);
                 put8(b, opt.accessTimeoutS);
-                reply(src, b);
+                reply(src, b, me);
             }
             return;
         case SetEmergency: // from any client (AS5710A Management)
-            if (opt.management && len >= 2 && status != 5) {
+            if (c.management && len >= 2 && status != 5) {
                 beforeEmergency = status;
                 status = 5;
             }
             return;
         case ClearEmergency:
-            if (opt.management && len >= 2 && status == 5)
+            if (c.management && len >= 2 && status == 5)
                 status = beforeEmergency;
             return;
         case Resume:
         case Standby:
-            if (opt.management && src == controller && status != 5)
+            if (c.management && src == controller && status != 5)
                 status = mid == Resume ? 1 : 2;
             return;
         case QueryStatus:
-            if (opt.management) {
+            if (c.management) {
                 Buf b = withId(ReportStatus);
                 put8(b, status);
                 put32(b, 0);
-                reply(src, b);
+                reply(src, b, me);
             }
             return;
         case QueryDigitalResourceEndpoint: {
@@ -313,21 +420,46 @@ struct ForeignJausVehicle::Impl {
                 put8(b, st.serverType);
                 putStr8(b, st.url);
                 if (st.withHost)
-                    put32(b, self);
+                    put32(b, me);
                 if (st.withResourceId)
                     put16(b, st.resourceId);
             }
-            return reply(src, b);
+            return reply(src, b, me);
         }
         default:
             return; // CreateEvent, QueryHeartbeatPulse, Visual Sensor ...: not offered, not answered
         }
     }
 
-    void rejectTo(std::uint32_t to, std::uint8_t code) {
+    void rejectTo(std::uint32_t to, std::uint8_t code, std::uint32_t from = 0) {
         Buf b = withId(RejectControl);
         put8(b, code);
-        reply(to, b);
+        reply(to, b, from ? from : controlComponent);
+    }
+
+    // The pose reports with every field the query may ask for; peers often ignore the presence vector
+    // (jaus-wire.md §6), and so does this one.
+    Buf poseReport(std::uint16_t query) const {
+        if (query == QueryGlobalPose) {
+            Buf b = withId(ReportGlobalPose);
+            put16(b, 0x0043); // latitude, longitude, yaw
+            put32(b, scaled32(opt.latitude, -90, 90));
+            put32(b, scaled32(opt.longitude, -180, 180));
+            put16(b, scaled16(opt.yaw, -3.14159265358979, 3.14159265358979));
+            return b;
+        }
+        if (query == QueryLocalPose) {
+            Buf b = withId(ReportLocalPose);
+            put16(b, 0x0043); // x, y, yaw
+            put32(b, scaled32(opt.localX, -100000, 100000));
+            put32(b, scaled32(opt.localY, -100000, 100000));
+            put16(b, scaled16(opt.yaw, -3.14159265358979, 3.14159265358979));
+            return b;
+        }
+        Buf b = withId(ReportVelocityState);
+        put16(b, 0x0001); // velocity x
+        put32(b, scaled32(0.0, -327.68, 327.67));
+        return b;
     }
 
     void tick() {
@@ -337,6 +469,15 @@ struct ForeignJausVehicle::Impl {
                 return;
             {
                 std::lock_guard lock(mutex);
+                // Each component (re-)registers its services with every console that asked (AS5710A
+                // RegisterServices; public stacks repeat it until their registration is verified).
+                if (opt.servicesDialect == ServicesDialect::EmptyWildcardRegister && opt.pushRegistrations &&
+                    Clock::now() - lastRegistration > std::chrono::milliseconds(500)) {
+                    lastRegistration = Clock::now();
+                    for (std::uint32_t to : registerTo)
+                        for (const Comp& c : comps)
+                            reply(to, registration(c), idOf(c));
+                }
                 if (controller != 0 &&
                     Clock::now() - lastRequest > std::chrono::seconds(opt.accessTimeoutS)) {
                     if (opt.tellOldController)
@@ -364,6 +505,11 @@ struct ForeignJausVehicle::Impl {
     std::map<std::uint32_t, udp::endpoint> endpoints;
     std::map<std::uint16_t, int> counts;
     std::map<std::pair<std::uint16_t, std::uint32_t>, int> countsFrom;
+    std::map<std::pair<std::uint16_t, std::uint8_t>, int> countsBy;
+    std::vector<Comp> comps;
+    std::set<std::uint32_t> registerTo;
+    Clock::time_point lastRegistration{};
+    std::uint32_t controlComponent = 0; // the component that confirmed the current control
     int malformed = 0;
     std::uint16_t seq = 0;
     std::uint32_t controller = 0;
@@ -400,6 +546,11 @@ int ForeignJausVehicle::receivedFrom(std::uint16_t mid, std::uint32_t src) const
     std::lock_guard lock(m_impl->mutex);
     auto it = m_impl->countsFrom.find({mid, src});
     return it == m_impl->countsFrom.end() ? 0 : it->second;
+}
+int ForeignJausVehicle::receivedBy(std::uint16_t mid, std::uint8_t component) const {
+    std::lock_guard lock(m_impl->mutex);
+    auto it = m_impl->countsBy.find({mid, component});
+    return it == m_impl->countsBy.end() ? 0 : it->second;
 }
 int ForeignJausVehicle::malformed() const {
     std::lock_guard lock(m_impl->mutex);

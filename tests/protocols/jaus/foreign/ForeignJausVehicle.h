@@ -1,5 +1,5 @@
 #pragma once
-// A foreign JAUS vehicle for the OCU's end-to-end tests (issue 13 §7): a minimal, independent JUDP peer
+// A foreign JAUS vehicle for the OCU's end-to-end tests: a minimal, independent JUDP peer
 // written from the JSS texts (AS5669A JUDP framing, AS5710A core services, AS6009 mobility service names)
 // and the IOP notes (shared/research/jaus-wire.md §2-3, jaus-services-extra.md §5). It shares no code with
 // sim/jaus or protocols/jaus (its own tiny encoder and decoder, Boost.Asio only), so it checks our bytes
@@ -20,7 +20,7 @@
 
 namespace foreign {
 
-// A stream this vehicle announces through IOP Digital Resource Discovery (issue 18): its own DRD answers
+// A stream this vehicle announces through IOP Digital Resource Discovery: its own DRD answers
 // QueryDigitalResourceEndpoint (0xE702) with ReportDigitalResourceEndpoint (0xF702).
 struct AnnouncedStream {
     std::string url;
@@ -28,6 +28,23 @@ struct AnnouncedStream {
     bool withResourceId = false; // optional ResourceID field (PV bit 1) sent
     std::uint16_t resourceId = 0;
     std::uint8_t serverType = 0; // 0 RTSP
+};
+
+// How the vehicle tells a console its services (AS5710A Discovery), as public stacks differ:
+// Report: ReportServices to QueryServices, all components in one answer (the common case).
+// EmptyWildcardRegister: the wildcard QueryServices (node 255, component 255) is answered with a
+// ReportServices listing 0 components; a query naming a node and component is answered for that component;
+// each component pushes RegisterServices (0x0B00) with its complete list to every console that asked.
+// Silent: the wildcard answered with 0 components, nothing else ever (its services are never learnt).
+enum class ServicesDialect { Report, EmptyWildcardRegister, Silent };
+
+// A further component on the vehicle's node (the first is VehicleOptions' own component).
+struct ExtraComponent {
+    std::uint8_t component = 2;
+    std::vector<std::string> services;
+    bool management = false;    // SetEmergency, ClearEmergency, QueryStatus, Resume, Standby
+    bool accessControl = false; // RequestControl, ReleaseControl ...
+    bool pose = false;          // answers QueryGlobalPose, QueryLocalPose, QueryVelocityState
 };
 
 struct VehicleOptions {
@@ -52,9 +69,19 @@ struct VehicleOptions {
     int replyDelayMs = 0;
     std::uint8_t accessTimeoutS = 3; // control lapses without a re-request within this time
     std::uint16_t port = 0;          // 127.0.0.1 unicast port; 0 = ephemeral
-    // Issue 18: Digital Resource Discovery (list "urn:jaus:jss:iop:DigitalResourceDiscovery" in services).
+    // Digital Resource Discovery (list "urn:jaus:jss:iop:DigitalResourceDiscovery" in services).
     std::vector<AnnouncedStream> streams;
     int drdSilentFirstMs = 0; // queries within this time after start are ignored (FKIE's server: 5 s)
+    ServicesDialect servicesDialect = ServicesDialect::Report;
+    // EmptyWildcardRegister only: whether the components push RegisterServices (false: they answer only
+    // queries that name them).
+    bool pushRegistrations = true;
+    // More components on the same node (a driver, a pose sensor ...), each answering for itself.
+    std::vector<ExtraComponent> extraComponents;
+    // Whether every component answers a QueryIdentification that reaches it (else only the first).
+    bool everyComponentIdentifies = false;
+    // The pose the pose components report (WGS84 degrees, local metres, yaw radians).
+    double latitude = 48.1, longitude = 11.5, localX = 12.5, localY = -3.25, yaw = 0.5;
 };
 
 class ForeignJausVehicle {
@@ -71,6 +98,8 @@ public:
     // Observed state (thread-safe).
     std::uint32_t controller() const; // JAUS ID as u32 (ss<<16 | node<<8 | comp); 0 when uncontrolled
     std::uint8_t status() const;      // ReportStatus code: 1 READY, 2 STANDBY, 5 EMERGENCY
+    // Messages received with this ID addressed to (or broadcast to) the component `component`.
+    int receivedBy(std::uint16_t messageId, std::uint8_t component) const;
     int received(std::uint16_t messageId) const;
     int receivedFrom(std::uint16_t messageId, std::uint32_t source) const;
     // Datagrams received that did not parse as AS5669A JUDP (must stay 0: our bytes are checked here).
