@@ -1,6 +1,7 @@
 #include "app/MainWindow.h"
 
 #include "app/Theme.h"
+#include "widgets/StopAllButton.h"
 
 #include <QAction>
 #include <QApplication>
@@ -155,9 +156,16 @@ void MainWindow::createToolBar() {
         "Stop every machine this console can reach: JAUS emergency stop to every discovered vehicle, "
         "ISO 23725 all-stop to every AHS link and the OSYRIS stop message (F12 or Ctrl+Shift+Space). "
         "Stopping never asks for confirmation; a stop that does not reach everything shows a red banner."));
+    // A held F12 must not stop again and again (each stop is a command with its own audit line).
+    m_stopAll->setAutoRepeat(false);
     connect(m_stopAll, &QAction::triggered, this, &MainWindow::stopAllRequested);
-    tb->addAction(m_stopAll);
-    m_stopAllButton = qobject_cast<QToolButton*>(tb->widgetForAction(m_stopAll));
+    // The button acts on the press, not on the release (StopAllButton).
+    auto* stopButton = new StopAllButton(tb);
+    stopButton->setDefaultAction(m_stopAll);
+    stopButton->setToolButtonStyle(tb->toolButtonStyle());
+    stopButton->setIconSize(tb->iconSize());
+    tb->addWidget(stopButton);
+    m_stopAllButton = stopButton;
     if (m_stopAllButton) {
         m_stopAllButton->setObjectName(QStringLiteral("button-stop-all"));
         m_stopAllButton->setMinimumSize(150, 40);

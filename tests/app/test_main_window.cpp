@@ -235,6 +235,43 @@ private slots:
         QTest::keyClick(w.stopAllButton(), Qt::Key_Space);
         QCOMPARE(spy.count(), 3);
     }
+    // STOP ALL acts on the press, not on the release: mouse button down, a touch landing, F12 or
+    // Ctrl+Shift+Space going down, Space on the focused button going down. A release, and a held key's
+    // auto-repeat, stop nothing more.
+    void stopAllFiresOnPressAndKeyDown() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QSignalSpy spy(&w, &MainWindow::stopAllRequested);
+        QToolButton* b = w.stopAllButton();
+        QTest::mousePress(b, Qt::LeftButton, {}, b->rect().center());
+        QCOMPARE(spy.count(), 1);
+        QTest::mouseRelease(b, Qt::LeftButton, {}, b->rect().center());
+        QCOMPARE(spy.count(), 1);
+        QTest::keyPress(&w, Qt::Key_F12);
+        QCOMPARE(spy.count(), 2);
+        QTest::keyRelease(&w, Qt::Key_F12);
+        QTest::keyPress(&w, Qt::Key_Space, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(spy.count(), 3);
+        QTest::keyRelease(&w, Qt::Key_Space, Qt::ControlModifier | Qt::ShiftModifier);
+        b->setFocus();
+        QTest::keyPress(b, Qt::Key_Space);
+        QCOMPARE(spy.count(), 4);
+        QKeyEvent repeat(QEvent::KeyPress, Qt::Key_Space, Qt::NoModifier, QStringLiteral(" "), true);
+        QApplication::sendEvent(b, &repeat);
+        QCOMPARE(spy.count(), 4);
+        QTest::keyRelease(b, Qt::Key_Space);
+        QCOMPARE(spy.count(), 4);
+        // A touch: the stop on the touch's landing, nothing on lifting the finger.
+        QPointingDevice* touch = QTest::createTouchDevice();
+        const QPoint at = b->mapTo(&w, b->rect().center());
+        QTest::touchEvent(&w, touch).press(0, at, &w);
+        QTRY_COMPARE(spy.count(), 5);
+        QTest::touchEvent(&w, touch).release(0, at, &w);
+        QCoreApplication::processEvents();
+        QCOMPARE(spy.count(), 5);
+    }
     // Issue 19 §6: Ctrl+1 … Ctrl+8 raise each panel (also a closed one or a hidden tab) and put the keyboard
     // focus in it; the default layout gives the map most of a 1366 x 768 window.
     void keyboardPathToEveryPanel() {
