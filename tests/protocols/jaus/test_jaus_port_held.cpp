@@ -10,6 +10,8 @@
 #include <boost/asio/ip/multicast.hpp>
 #include <boost/asio/ip/udp.hpp>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -205,7 +207,7 @@ private slots:
             QVERIFY2(outcomes[0].sent, outcomes[0].reason.c_str());
         }
         QVERIFY(waitFor([&] { return snap() && snap()->controlledByUs; }));
-        QVERIFY(rec.count(EventKind::ControlAccepted) >= 1);
+        QVERIFY(waitFor([&] { return rec.count(EventKind::ControlAccepted) >= 1; }));
         QVERIFY(waitFor([&] {
             const auto v = demo.find(kVehicle)->state();
             return v.controller.subsystem == kConsole;
