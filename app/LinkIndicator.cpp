@@ -7,13 +7,19 @@
 namespace ocu {
 
 LinkIndicator::LinkIndicator(const QString& protocolName, QWidget* parent)
-    : QWidget(parent), m_protocol(protocolName), m_lamp(new QLabel(this)), m_label(new QLabel(this)) {
+    : QWidget(parent), m_protocol(protocolName), m_lamp(new QLabel(this)), m_label(new QLabel(this)),
+      m_note(new QLabel(this)) {
     auto* l = new QHBoxLayout(this);
     l->setContentsMargins(4, 0, 4, 0);
     l->setSpacing(4);
     m_lamp->setFixedSize(12, 12);
     l->addWidget(m_lamp);
     l->addWidget(m_label);
+    // Amber like a degraded lamp: the stack works, with less than it should have.
+    m_note->setStyleSheet(QStringLiteral("color:#b36b00; font-weight:bold;"));
+    m_note->setObjectName(QStringLiteral("link-note"));
+    m_note->hide();
+    l->addWidget(m_note);
     auto* timer = new QTimer(this);
     connect(timer, &QTimer::timeout, this, [this] {
         if (m_bridge)
@@ -28,6 +34,13 @@ LinkIndicator::LinkIndicator(const QString& protocolName, QWidget* parent)
 void LinkIndicator::setState(State state, const QString& detail) {
     m_state = state;
     m_detail = detail;
+    refresh();
+}
+
+void LinkIndicator::setNote(const QString& note) {
+    m_noteText = note;
+    m_note->setText(note);
+    m_note->setVisible(!note.isEmpty());
     refresh();
 }
 
@@ -93,6 +106,8 @@ void LinkIndicator::refresh() {
     m_lamp->setStyleSheet(
         QStringLiteral("background:%1; border-radius:6px; border:1px solid #333;").arg(colour.name()));
     QString tip = m_detail.isEmpty() ? t : t + QLatin1Char('\n') + m_detail;
+    if (!m_noteText.isEmpty())
+        tip += QLatin1Char('\n') + m_noteText;
     // Rejected input per link and reason: an operator sees a peer misbehave without reading logs.
     for (const LinkCounters& c : std::as_const(m_counters)) {
         if (c.rejected.isEmpty()) {

@@ -33,6 +33,10 @@ public:
     void watchBridge(FleetBridge* bridge);
     // What the tooltip shows: the state, the link's detail and the reject counters.
     QString details() const { return toolTip(); }
+    // A standing condition of the stack shown beside the lamp until cleared (FleetBridge::statusNote, e.g.
+    // "JAUS: no group socket (3794 held by another process)"); empty hides it.
+    void setNote(const QString& note);
+    QString note() const { return m_noteText; }
 
 private:
     void refresh();
@@ -43,8 +47,10 @@ private:
     QPointer<FleetBridge> m_bridge;
     QElapsedTimer m_sinceData;
     qint64 m_ageOffsetMs = -1;
+    QString m_noteText;
     QLabel* m_lamp;
     QLabel* m_label;
+    QLabel* m_note;
 };
 
 } // namespace ocu

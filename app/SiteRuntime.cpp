@@ -403,6 +403,9 @@ void SiteRuntime::populate(MainWindow& window) {
         });
         LinkIndicator* ind = window.linkIndicator(module->displayName());
         ind->watchBridge(b); // reject counters per link in its details (issue 14 §6)
+        // A standing condition of the stack (e.g. JAUS without its group socket); the stacks started in
+        // start(), before the window is filled.
+        ind->setNote(b->statusNote());
         connect(b, &FleetBridge::linkChanged, ind, [ind](const LinkStatus& s) {
             ind->setState(indicatorState(s.state),
                           s.link + (s.detail.isEmpty() ? QString() : ": " + s.detail));

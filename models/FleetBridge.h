@@ -144,6 +144,10 @@ public:
 
     // Per link, what its stack counted so far (link details, headless {"cmd":"counters"}). Any thread.
     virtual QVector<LinkCounters> linkCounters() const { return {}; }
+    // A standing condition of the stack since it started that the operator should see in the status bar
+    // beside the link indicator, in the operator's language (e.g. "JAUS: no group socket (3794 held by
+    // another process)"); empty when there is none. GUI thread.
+    virtual QString statusNote() const { return {}; }
 
     // ---- io-thread watchdog (issue 14 §3), GUI thread ----
     // How long the stack's io thread has not turned; 0 while it turns, when it is not running, or when the

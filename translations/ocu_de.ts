@@ -1110,6 +1110,14 @@ Alt+U: automatische Disposition ein/aus (Einschalten fragt zuerst)</translation>
         <translation>kein Subsystem antwortet</translation>
     </message>
     <message>
+        <source>JAUS: no group socket (%1 held by another process)</source>
+        <translation>JAUS: kein Gruppen-Socket (Port %1 von einem anderen Prozess belegt)</translation>
+    </message>
+    <message>
+        <source>JAUS: no group socket (%1)</source>
+        <translation>JAUS: kein Gruppen-Socket (%1)</translation>
+    </message>
+    <message>
         <source>emergency</source>
         <translation>Not-Halt</translation>
     </message>

@@ -723,6 +723,14 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <translation>aucun sous-système ne répond</translation>
     </message>
     <message>
+        <source>JAUS: no group socket (%1 held by another process)</source>
+        <translation>JAUS : pas de socket de groupe (port %1 occupé par un autre processus)</translation>
+    </message>
+    <message>
+        <source>JAUS: no group socket (%1)</source>
+        <translation>JAUS : pas de socket de groupe (%1)</translation>
+    </message>
+    <message>
         <source>emergency</source>
         <translation>urgence</translation>
     </message>

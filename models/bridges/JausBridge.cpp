@@ -205,6 +205,15 @@ QString JausBridge::start() {
     return {};
 }
 
+QString JausBridge::statusNote() const {
+    const auto group = m_stack->groupSocketProblem();
+    if (!group || !m_stack->running())
+        return {};
+    if (group->heldByOther)
+        return tr("JAUS: no group socket (%1 held by another process)").arg(group->port);
+    return tr("JAUS: no group socket (%1)").arg(QString::fromStdString(group->reason));
+}
+
 void JausBridge::stop() {
     if (!m_stack || !m_stack->running())
         return;

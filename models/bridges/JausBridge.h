@@ -60,6 +60,9 @@ public:
     std::chrono::milliseconds ioStalledFor() const override;
     // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
     void postToIo(std::function<void()> f);
+    // The stack without its group socket (JausStack::groupSocketProblem): "JAUS: no group socket (3794 held
+    // by another process)"; empty otherwise.
+    QString statusNote() const override;
     CommandResult stopDriving(quint16 subsystem) override;
     CommandResult panTilt(quint16 subsystem, quint16 sensorId, double panRate, double tiltRate) override;
 

@@ -108,6 +108,8 @@ struct JausStack::Impl : JausOutput {
     std::atomic<bool> running{false};
     std::atomic<std::uint16_t> port{0};
     MessageTap* tap = nullptr; // issue 16: the flight recorder's
+    mutable std::mutex groupMutex;
+    std::optional<GroupSocketProblem> groupProblem; // as of the last start(), under groupMutex
 };
 
 JausStack::JausStack(JausConfig config, JausListener& listener, Clock& clock)
@@ -152,10 +154,20 @@ void JausStack::start() {
         });
     d->transport.open();
     d->port = d->transport.localPort();
+    const std::optional<GroupSocketProblem> group = d->transport.groupSocketProblem();
+    {
+        std::lock_guard lock(d->groupMutex);
+        d->groupProblem = group;
+    }
     logInfo("ocu.jaus", "JAUS " + d->cfg.ownId().toString() + " (" + d->cfg.callSign + ") on UDP port " +
-                            std::to_string(d->port.load()));
+                            std::to_string(d->port.load()) + (group ? " (no group socket)" : ""));
     d->running = true;
     d->io.start();
+    // The operator learns it once, as the transport logged it; listeners hear events on the io thread only.
+    if (group)
+        d->io.post([d, text = toText(*group)] {
+            d->listener.onEvent(JausEvent{Severity::Warning, EventKind::TransportError, 0, text});
+        });
     d->io.post([d] {
         d->core.tick();
         d->scheduleTick();
@@ -329,6 +341,11 @@ const JausConfig& JausStack::config() const {
 }
 std::uint16_t JausStack::localPort() const {
     return m_impl->port;
+}
+
+std::optional<GroupSocketProblem> JausStack::groupSocketProblem() const {
+    std::lock_guard lock(m_impl->groupMutex);
+    return m_impl->groupProblem;
 }
 
 std::optional<SubsystemSnapshot> JausStack::snapshot(std::uint16_t ss) const {

@@ -90,6 +90,10 @@ public:
     const JausConfig& config() const;
     // The UDP port actually bound (useful with port 0). 0 before start().
     std::uint16_t localPort() const;
+    // Why the stack runs without its group socket since the last start() (the group's port held by another
+    // process without SO_REUSEADDR, the group not joinable), or nullopt when it has one. Said once at start:
+    // a log warning and a Warning TransportError event. Any thread.
+    std::optional<GroupSocketProblem> groupSocketProblem() const;
     // Blocking reads through the io thread (tests, start-up); not for the GUI's hot paths.
     std::optional<SubsystemSnapshot> snapshot(std::uint16_t subsystem) const;
     std::vector<std::uint16_t> subsystems() const;

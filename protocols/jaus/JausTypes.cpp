@@ -72,4 +72,22 @@ const char* toString(EventKind k) {
     return "?";
 }
 
+std::string toText(const GroupSocketProblem& p) {
+    std::string t = "no group socket: ";
+    if (p.heldByOther)
+        t += "UDP port " + std::to_string(p.port) +
+             " is held by another process that does not share it (bound without SO_REUSEADDR, e.g. a JAUS "
+             "node manager; " +
+             p.reason + ")";
+    else
+        t += p.reason;
+    t += ", so nothing sent to " + p.group + " is received; working by unicast from UDP port " +
+         std::to_string(p.unicastPort);
+    if (p.unicastPortHeld != 0)
+        t += " instead of " + std::to_string(p.unicastPortHeld) + " (held too)";
+    t += ": static endpoints, and broadcasts such as QueryIdentification still go out to " + p.group +
+         " (replies come back to port " + std::to_string(p.unicastPort) + ")";
+    return t;
+}
+
 } // namespace ocu::jaus

@@ -113,6 +113,23 @@ struct DriveCommand {
     double brake = 0; // Wrench only: resistive linear X % [0,100]
 };
 
+// The transport runs without its group socket (JudpTransport::open): the group's port is held by another
+// process that bound it without SO_REUSEADDR (public JAUS node managers do), or the group cannot be joined.
+// Only what others send to the group (or, in broadcast mode, to the broadcast port) is not received; the
+// console still sends to the group and works by unicast from its own port, where replies come back (peers
+// answer the source port, AEP-4818 §4.7.2).
+struct GroupSocketProblem {
+    std::string group;                 // "239.255.0.1:3794", or "broadcast port 3794"
+    std::uint16_t port = 0;            // the group's port (multicast_port)
+    bool heldByOther = false;          // the bind failed with EADDRINUSE
+    std::string reason;                // what failed, e.g. "bind: Address already in use"
+    std::uint16_t unicastPort = 0;     // the port the console sends from and receives replies on
+    std::uint16_t unicastPortHeld = 0; // the configured unicast port when it was held too (else 0)
+    bool operator==(const GroupSocketProblem&) const = default;
+};
+// The warning in English (log line and JAUS event): what is missing, why, and how the console goes on.
+std::string toText(const GroupSocketProblem& p);
+
 // Called on the stack's io thread; implementations must not block.
 struct JausListener {
     virtual ~JausListener() = default;

@@ -75,6 +75,9 @@ void multicastAllOff(udp::socket& s) {
 } // namespace
 
 void JudpTransport::open() {
+    m_groupProblem.reset();
+    std::optional<GroupSocketProblem> group; // why there is no group socket, once known
+    std::uint16_t unicastHeld = 0;           // the configured unicast port, when another process holds it
     try {
         m_unicast = std::make_unique<Receiver>(m_io);
         UdpOptions u;
@@ -83,13 +86,10 @@ void JudpTransport::open() {
         u.interfaceAddress = m_cfg.interfaceAddress;
         u.multicastTtl = m_cfg.multicastTtl;
         u.broadcast = !m_cfg.multicast;
-        if (m_cfg.multicast) {
-            // Sharing a host (issue 13 §6): the unicast port is ours alone, so replies meant for us never go
-            // to another console or a node manager on the same port (bound without SO_REUSEADDR, which Linux
-            // checks at bind time); once bound it allows sharing, so group sockets (ours, other consoles',
-            // a node manager's) may use the same port. Held by another process: an ephemeral port instead
-            // (peers learn it from our datagrams, AEP-4818 §4.7.2).
-            u.reuseAddress = false;
+        std::string unicastError;
+        // The configured port held by another process: an ephemeral port instead (peers learn it from our
+        // datagrams, AEP-4818 §4.7.2).
+        auto openUnicast = [&] {
             try {
                 openUdpSocket(m_unicast->socket, u);
             } catch (const boost::system::system_error& e) {
@@ -97,18 +97,36 @@ void JudpTransport::open() {
                     throw;
                 boost::system::error_code ec;
                 m_unicast->socket.close(ec);
-                logWarning(m_log, "UDP port " + std::to_string(u.port) +
-                                      " is held by another process (a JAUS node manager or another console):"
-                                      " using an ephemeral unicast port; peers reply to it");
                 m_counters.add("transport.port_in_use");
+                unicastHeld = u.port;
+                unicastError = e.what();
                 u.port = 0;
                 openUdpSocket(m_unicast->socket, u);
             }
+        };
+        if (m_cfg.multicast) {
+            // Sharing a host (issue 13 §6): the unicast port is ours alone, so replies meant for us never go
+            // to another console or a node manager on the same port (bound without SO_REUSEADDR, which Linux
+            // checks at bind time); once bound it allows sharing, so group sockets (ours, other consoles',
+            // a node manager's) may use the same port.
+            u.reuseAddress = false;
+            openUnicast();
             m_unicast->socket.set_option(asio::socket_base::reuse_address(true));
             m_unicast->socket.set_option(asio::ip::multicast::hops(m_cfg.multicastTtl));
             multicastAllOff(m_unicast->socket);
         } else {
-            openUdpSocket(m_unicast->socket, u); // UDP broadcast mode: broadcasts arrive on this socket
+            // UDP broadcast mode: broadcasts arrive on this socket, so with its port held by another process
+            // the console hears no broadcasts - the same loss as a missing group socket.
+            openUnicast();
+            if (unicastHeld != 0) {
+                GroupSocketProblem p;
+                p.group = "broadcast port " + std::to_string(unicastHeld);
+                p.port = unicastHeld;
+                p.heldByOther = true;
+                p.reason = unicastError;
+                p.unicastPortHeld = unicastHeld;
+                group = std::move(p);
+            }
         }
         m_unicast->options = u;
         if (m_cfg.multicast) {
@@ -123,15 +141,36 @@ void JudpTransport::open() {
             mo.interfaceAddress = m_cfg.interfaceAddress;
             mo.multicastTtl = m_cfg.multicastTtl;
             try {
-                openUdpSocket(m_multicast->socket, mo);
-            } catch (const boost::system::system_error&) {
-                // Systems that cannot bind a group address: the wildcard, still shared.
+                try {
+                    openUdpSocket(m_multicast->socket, mo);
+                } catch (const boost::system::system_error& e) {
+                    // Held by another process: the wildcard would collide with its bind as well.
+                    if (addressInUse(e))
+                        throw;
+                    // Systems that cannot bind a group address: the wildcard, still shared.
+                    boost::system::error_code ec;
+                    m_multicast->socket.close(ec);
+                    mo.bindAddress = "0.0.0.0";
+                    openUdpSocket(m_multicast->socket, mo);
+                }
+                m_multicast->options = mo;
+            } catch (const boost::system::system_error& e) {
+                // Public JAUS node managers (JTS, FKIE) bind the port without SO_REUSEADDR, and Linux lets a
+                // second socket share a UDP port only when both set it; a host may also have no multicast
+                // route. Neither stops the console: what is addressed to it comes by unicast to its own port,
+                // and it still sends to the group from there (discovery, unknown destinations), so only what
+                // others send to the group is missed.
                 boost::system::error_code ec;
                 m_multicast->socket.close(ec);
-                mo.bindAddress = "0.0.0.0";
-                openUdpSocket(m_multicast->socket, mo);
+                m_multicast.reset();
+                GroupSocketProblem p;
+                p.group = m_cfg.multicastGroup + ":" + std::to_string(m_cfg.multicastPort);
+                p.port = m_cfg.multicastPort;
+                p.heldByOther = addressInUse(e);
+                p.reason = e.what();
+                p.unicastPortHeld = unicastHeld;
+                group = std::move(p);
             }
-            m_multicast->options = mo;
         }
     } catch (const boost::system::system_error& e) {
         close();
@@ -150,6 +189,18 @@ void JudpTransport::open() {
             close();
             throw std::runtime_error(std::string("JTCP listen: ") + e.what());
         }
+    }
+    // One warning for the port held by another process: the group socket's (which names the unicast
+    // fallback too), else the unicast port's.
+    if (group) {
+        group->unicastPort = localPort();
+        m_groupProblem = std::move(group);
+        m_counters.add("transport.group_socket_missing");
+        logWarning(m_log, toText(*m_groupProblem));
+    } else if (unicastHeld != 0) {
+        logWarning(m_log, "UDP port " + std::to_string(unicastHeld) +
+                              " is held by another process (a JAUS node manager or another console):"
+                              " using an ephemeral unicast port; peers reply to it");
     }
     m_open = true;
     {

@@ -26,6 +26,7 @@
 #include "protocols/common/Udp.h"
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausOutput.h"
+#include "protocols/jaus/JausTypes.h"
 #include "protocols/jaus/JudpCodec.h"
 
 namespace ocu::jaus {
@@ -57,7 +58,9 @@ public:
     JudpTransport(const JudpTransport&) = delete;
     JudpTransport& operator=(const JudpTransport&) = delete;
 
-    // Opens the sockets; throws std::runtime_error naming what failed.
+    // Opens the sockets; throws std::runtime_error naming what failed. A group socket that cannot be opened
+    // (its port held by another process without SO_REUSEADDR, the group not joinable) is not a failure:
+    // the transport runs without it (groupSocketProblem) and says so in one log warning.
     void open();
     void close();
     void setHandlers(MessageHandler onMessage, ErrorHandler onError);
@@ -82,6 +85,9 @@ public:
     // thread instead). Sequence numbers of datagrams not taken are spent, as for a failed send().
     std::string sendPlanned(const JausId& src, const PlannedDatagram& planned);
     std::uint16_t localPort() const;
+    // Why the last open() runs without a group socket (nothing is received from the group, or in broadcast
+    // mode from the broadcast port); nullopt when it has one. Io thread (or before the io thread runs).
+    const std::optional<GroupSocketProblem>& groupSocketProblem() const { return m_groupProblem; }
     // JAUS IDs whose address was learned from their traffic (AEP-4818 §4.7.2), at most kMaxLearnedAddresses
     // (issue 14 §3): an ID first heard when the table is full is not learned (rx.limited.learned_address; it
     // is still reached by the static table, JTCP or multicast), so a peer inventing source IDs can neither
@@ -125,7 +131,8 @@ private:
     const Clock& m_clock;
     std::string m_log;
     std::unique_ptr<Receiver> m_unicast;
-    std::unique_ptr<Receiver> m_multicast;
+    std::unique_ptr<Receiver> m_multicast; // the group socket; null without one (m_groupProblem says why)
+    std::optional<GroupSocketProblem> m_groupProblem;
     MessageHandler m_onMessage;
     ErrorHandler m_onError;
     RawHandler m_onRaw;

@@ -1,7 +1,9 @@
 #include "app/MainWindow.h"
 #include "app/SiteLoader.h"
 #include "app/SiteRuntime.h"
+#include "models/AlarmModel.h"
 #include "models/CommandGate.h"
+#include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "protocols/osyris/OsyrisStack.h"
 
@@ -15,10 +17,14 @@
 #include <QStandardPaths>
 #include <QToolBar>
 #include <QToolButton>
+#include <QTranslator>
 #include <QVBoxLayout>
 #include <QtTest>
 
 #include <atomic>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/udp.hpp>
 
 using namespace ocu;
 
@@ -381,6 +387,60 @@ private slots:
         w.setNightMode(false);
         QVERIFY(qApp->palette().color(QPalette::Window).lightness() > 150);
     }
+#ifdef OCU_SITE_HAVE_JAUS
+    // The JAUS port held by another process without SO_REUSEADDR (a node manager): the console starts, the
+    // status bar says "JAUS: no group socket (<port> held by another process)" beside the JAUS lamp, and the
+    // event log has the warning with the reason.
+    void heldJausPortIsShownInTheStatusBar() {
+        namespace asio = boost::asio;
+        asio::io_context io;
+        asio::ip::udp::socket nodeManager(io);
+        nodeManager.open(asio::ip::udp::v4());
+        // The wildcard, as node managers bind: only that collides with the console's group-address bind.
+        nodeManager.bind(asio::ip::udp::endpoint(asio::ip::address_v4::any(), 0));
+        const quint16 held = nodeManager.local_endpoint().port();
+        SiteConfig cfg;
+        cfg.simulation.enabled = false;
+        jaus::JausConfig j;
+        j.transport.bindAddress = "127.0.0.1";
+        j.transport.port = 0;
+        j.transport.multicastPort = held;
+        j.transport.multicastTtl = 0;
+        j.transport.interfaceAddress = "127.0.0.1";
+        cfg.jaus = j;
+        SiteRuntime runtime(cfg);
+        QCOMPARE(runtime.start(), QString());
+        MainWindow window;
+        runtime.populate(window);
+        LinkIndicator* ind = window.linkIndicator(QStringLiteral("JAUS"));
+        QVERIFY(ind);
+        QCOMPARE(ind->note(), QStringLiteral("JAUS: no group socket (%1 held by another process)").arg(held));
+        auto* note = ind->findChild<QLabel*>(QStringLiteral("link-note"));
+        QVERIFY(note && !note->isHidden());
+        QCOMPARE(note->text(), ind->note());
+        AlarmModel* alarms = runtime.findChild<FleetContext*>()->alarms();
+        auto warned = [alarms] {
+            int n = 0;
+            for (int r = 0; r < alarms->rowCount(); ++r)
+                n += alarms->eventAt(r).text.contains(QStringLiteral("no group socket")) ? 1 : 0;
+            return n;
+        };
+        QTRY_COMPARE_WITH_TIMEOUT(warned(), 1, 10000);
+        // Translated like the other status texts.
+        auto* bridge = runtime.findChild<FleetBridge*>();
+        QVERIFY(bridge);
+        for (const auto& [lang, text] :
+             {std::pair{"de", "JAUS: kein Gruppen-Socket (Port %1 von einem anderen Prozess belegt)"},
+              std::pair{"fr", "JAUS : pas de socket de groupe (port %1 occupé par un autre processus)"}}) {
+            QTranslator t;
+            QVERIFY(t.load(QStringLiteral(":/i18n/ocu_%1.qm").arg(QLatin1String(lang))));
+            QCoreApplication::installTranslator(&t);
+            QCOMPARE(bridge->statusNote(), QString::fromUtf8(text).arg(held));
+            QCoreApplication::removeTranslator(&t);
+        }
+        runtime.stop();
+    }
+#endif
     void linkDetailsShowRejectCounters() {
         // Issue 14 §6: the link details (the indicator's tooltip) show each link's rejected input by reason,
         // taken from the bridge every second.
@@ -417,6 +477,16 @@ private slots:
         QVERIFY2(j->text().startsWith("JAUS up · 1.5 s"), qPrintable(j->text()));
         j->setState(LinkIndicator::State::Down);
         QVERIFY(j->text().startsWith("JAUS down"));
+        // A standing condition of the stack beside the lamp (FleetBridge::statusNote), until cleared.
+        auto* note = j->findChild<QLabel*>("link-note");
+        QVERIFY(note);
+        QVERIFY(note->isHidden());
+        j->setNote(QStringLiteral("JAUS: no group socket (3794 held by another process)"));
+        QCOMPARE(note->text(), QStringLiteral("JAUS: no group socket (3794 held by another process)"));
+        QVERIFY(!note->isHidden());
+        QVERIFY(j->details().contains(QStringLiteral("no group socket")));
+        j->setNote({});
+        QVERIFY(note->isHidden());
         w.setUnacknowledgedAlarms(3);
         auto* label = w.findChild<QLabel*>("label-alarms");
         QVERIFY(label->text().contains("3"));

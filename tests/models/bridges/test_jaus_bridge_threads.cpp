@@ -12,6 +12,9 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/udp.hpp>
+
 #include <mutex>
 
 using namespace ocu;
@@ -152,6 +155,42 @@ private slots:
         QCoreApplication::processEvents();
         QCOMPARE(events.size(), 1);
         bridge.stop();
+    }
+
+    void heldGroupPortIsAStatusNoteNotAFailure() {
+        // Beside a node manager that holds the JAUS port without SO_REUSEADDR (bound to the wildcard, as node
+        // managers do): the bridge starts, the vehicle comes up through its static endpoint, the status bar
+        // note names the port, and the operator gets one warning event.
+        namespace asio = boost::asio;
+        asio::io_context io;
+        asio::ip::udp::socket nodeManager(io);
+        nodeManager.open(asio::ip::udp::v4());
+        nodeManager.bind(asio::ip::udp::endpoint(asio::ip::address_v4::any(), 0));
+        const quint16 held = nodeManager.local_endpoint().port();
+        sim::JausDemo demo(oneUgv());
+        jaus::JausConfig c = consoleConfig(demo, 60);
+        c.transport.port = held;
+        c.transport.multicastPort = held;
+        JausBridge bridge(c, GeoFrame(oneUgv().origin));
+        QList<FleetEvent> events;
+        connect(&bridge, &FleetBridge::eventRaised, this, [&](const FleetEvent& e) {
+            if (e.text.contains(QStringLiteral("no group socket")))
+                events << e;
+        });
+        QCOMPARE(bridge.statusNote(), QString()); // not started: nothing to say
+        QCOMPARE(bridge.start(), QString());
+        QCOMPARE(bridge.statusNote(),
+                 QStringLiteral("JAUS: no group socket (%1 held by another process)").arg(held));
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.linkStatus(QStringLiteral("jaus")) &&
+                                     bridge.linkStatus(QStringLiteral("jaus"))->state == LinkState::Up,
+                                 20000);
+        QTRY_COMPARE_WITH_TIMEOUT(events.size(), 1, 10000);
+        QCOMPARE(events[0].severity, EventSeverity::Warning);
+        QVERIFY(events[0].requiresAck);
+        QVERIFY2(events[0].text.contains(QString::number(held)), qPrintable(events[0].text));
+        bridge.stop();
+        QCOMPARE(bridge.statusNote(), QString()); // a stopped stack has no group socket to miss
+        QCOMPARE(events.size(), 1);
     }
 
     void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
