@@ -10,7 +10,7 @@
 // the slots sent while the console was down, and the outbox resends what it held to PostgreSQL with no
 // record stored twice and no record of the outbox lost.
 //
-// OCU_CRASH_KILLS sets the number of kills (default 4, one of each kind below; scripts/crash-kills.sh runs
+// OCU_CRASH_KILLS sets the number of kills (default 8, two of each kind below; scripts/crash-kills.sh runs
 // 20), OCU_CRASH_SEED the seed of the random delays (default: from the clock; printed either way, so a
 // failure can be run again).
 #include "models/recording/Recording.h"
@@ -92,6 +92,7 @@ struct TableRead {
     quint64 rows = 0;                         // ribbon
     QString origin;                           // outbox
     QVector<qint64> pending;                  // outbox
+    QSet<QString> pendingEvents;              // outbox: "<at_ms>|<text>" of its events and alarms
     QString error;
 };
 TableRead readTables(const QString& path, const char* table) {
@@ -126,8 +127,15 @@ TableRead readTables(const QString& path, const char* table) {
         each("SELECT v FROM meta WHERE k = 'origin'", [&](sqlite3_stmt* st) {
             out.origin = QString::fromUtf8(reinterpret_cast<const char*>(sqlite3_column_text(st, 0)));
         });
-        each("SELECT seq FROM outbox ORDER BY seq",
-             [&](sqlite3_stmt* st) { out.pending << sqlite3_column_int64(st, 0); });
+        each("SELECT seq, kind, at_ms, text FROM outbox ORDER BY seq", [&](sqlite3_stmt* st) {
+            out.pending << sqlite3_column_int64(st, 0);
+            const QByteArray kind(reinterpret_cast<const char*>(sqlite3_column_text(st, 1)));
+            if (kind == "event" || kind == "alarm")
+                out.pendingEvents.insert(
+                    QStringLiteral("%1|%2")
+                        .arg(sqlite3_column_int64(st, 2))
+                        .arg(QString::fromUtf8(reinterpret_cast<const char*>(sqlite3_column_text(st, 3)))));
+        });
     }
     sqlite3_close(db);
     return out;
@@ -172,6 +180,11 @@ struct Console {
     QByteArray buf;
     QSet<QString> protocols;
     qint64 firstMachineMs = 0; // wall clock when the test read the first machine line
+    struct Event {
+        QString key; // "<time ms>|<text>", as the history stores it
+        qint64 readMs = 0;
+    };
+    QVector<Event> events; // the events and alarms it showed
 
     void pump() {
         buf += proc.readAllStandardOutput();
@@ -183,6 +196,13 @@ struct Console {
                 protocols.insert(o.value(QStringLiteral("protocol")).toString());
                 if (firstMachineMs == 0)
                     firstMachineMs = QDateTime::currentMSecsSinceEpoch();
+            } else if (o.value(QStringLiteral("type")) == QLatin1String("event")) {
+                const QDateTime t =
+                    QDateTime::fromString(o.value(QStringLiteral("time")).toString(), Qt::ISODateWithMs);
+                events.push_back({QStringLiteral("%1|%2")
+                                      .arg(t.toMSecsSinceEpoch())
+                                      .arg(o.value(QStringLiteral("text")).toString()),
+                                  QDateTime::currentMSecsSinceEpoch()});
             }
         }
     }
@@ -206,7 +226,8 @@ bool waitUntil(const std::function<bool()>& cond, int timeoutMs, Console* consol
 
 struct KillResult {
     const char* kind = "";
-    bool early = false; // killed before data flowed, maybe
+    const char* recording = ""; // kept, none (killed before the recorder started), creating (.part only)
+    bool early = false;         // killed before data flowed, maybe
     int delayMs = 0;
     qint64 sinceStartMs = 0;
     qint64 lostMs = -1; // kill time minus the newest machine sample; -1: none recorded yet
@@ -228,7 +249,7 @@ private slots:
 };
 
 void TestCrashSafety::killedConsoleKeepsItsFiles() {
-    const int kills = std::max(1, envInt("OCU_CRASH_KILLS", 4));
+    const int kills = std::max(1, envInt("OCU_CRASH_KILLS", 8));
     const quint32 seed =
         quint32(envInt("OCU_CRASH_SEED", int(QDateTime::currentMSecsSinceEpoch() % 1000000)));
     qInfo("crash safety: %d kills, seed %u (OCU_CRASH_SEED=%u reproduces the delays)", kills, seed, seed);
@@ -305,6 +326,7 @@ void TestCrashSafety::killedConsoleKeepsItsFiles() {
     QVector<qint64> pendingBeforeKill;
     QString origin;
     bool repairOwed = false; // the last kill's repair and resend have not been checked yet
+    QSet<QString> mustKeep;  // events the consoles showed that the shared history must hold
     for (int run = 0; run <= kills; ++run) {
         const bool last = run == kills;
         Kind kind = last ? Kind::Steady : Kind(run % 4);
@@ -435,6 +457,8 @@ void TestCrashSafety::killedConsoleKeepsItsFiles() {
                 QVERIFY(waitUntil([&] { return c.proc.state() == QProcess::NotRunning; }, 30000, &c));
                 QCOMPARE(c.proc.exitStatus(), QProcess::NormalExit);
                 QCOMPARE(c.proc.exitCode(), 0);
+                for (const auto& e : c.events)
+                    mustKeep.insert(e.key);
                 break;
             }
             if (k.pgDown) {
@@ -457,11 +481,20 @@ void TestCrashSafety::killedConsoleKeepsItsFiles() {
         QCOMPARE(c.proc.exitStatus(), QProcess::CrashExit);
         c.pump();
         k.sinceStartMs = sinceStart.elapsed();
+        // What the console showed a second before the kill had time to reach its outbox.
+        for (const auto& e : c.events)
+            if (e.readMs <= killedAt - kLossBoundMs)
+                mustKeep.insert(e.key);
 
         // The recording: intact, opened by the project's reader, cut off (not closed), at most the last
-        // second missing. (A console killed before its recorder started has none.)
+        // second missing. (A console killed before its recorder started has none; one killed while the
+        // recorder created it has only the temporary "<name>.part", which is not a recording.)
         const QStringList files = QDir(recDir).entryList({recPattern}, QDir::Files);
         QVERIFY(files.size() == 1 || (k.early && files.isEmpty()));
+        k.recording = !files.isEmpty() ? "kept"
+                      : QDir(recDir).entryList({recPattern + QStringLiteral(".part")}, QDir::Files).isEmpty()
+                          ? "none"
+                          : "creating";
         if (!files.isEmpty()) {
             const QString recFile = QDir(recDir).filePath(files.first());
             QCOMPARE(integrityCheck(recFile), QByteArray("ok"));
@@ -584,18 +617,37 @@ void TestCrashSafety::killedConsoleKeepsItsFiles() {
               qint64(stored.size()), qint64(outbox.pending.size()), maxSeq);
         QVERIFY(maxSeq > 0);
         QCOMPARE(qint64(seqs.size()), maxSeq);
+        // Every event and alarm the consoles showed (one killed: a second before its kill) is in the history
+        // or still in the outbox.
+        QSet<QString> kept = outbox.pendingEvents;
+        for (const auto& r :
+             pgQuery(pg->conninfo(),
+                     QStringLiteral("SELECT round(extract(epoch FROM at) * 1000)::bigint, text FROM "
+                                    "ocu_history WHERE console = '%1' AND kind IN ('event', 'alarm')")
+                         .arg(console),
+                     &e))
+            kept.insert(r.value(0) + QLatin1Char('|') + r.value(1));
+        QVERIFY2(e.isEmpty(), qPrintable(e));
+        QStringList lost;
+        for (const QString& key : std::as_const(mustKeep))
+            if (!kept.contains(key))
+                lost << key;
+        qInfo("history: %lld events shown by the consoles checked", qint64(mustKeep.size()));
+        QVERIFY2(lost.isEmpty(),
+                 qPrintable(QStringLiteral("not in the history: ") + lost.join(QLatin1String("; "))));
     }
 
     // The table the script prints. "repaired by" and "resent by": found complete that many ms after the start
     // of the run that checked them, the next one that ran until data flowed (a restart killed early checks
     // nothing; the next full run checks the repair and resend owed since); the resend is checked after the
     // repair, so its figure is an upper bound.
-    qInfo("kill | kind        | at ms | recording lost ms | ribbon rows | outbox pending | filled slots | "
-          "repaired by ms | resent by ms");
+    qInfo("kill | kind        | at ms | recording | recording lost ms | ribbon rows | outbox pending | "
+          "filled slots | repaired by ms | resent by ms");
     for (int i = 0; i < results.size(); ++i) {
         const KillResult& k = results[i];
-        qInfo("%4d | %-11s | %5lld | %17lld | %11llu | %14d | %12llu | %14lld | %12lld", i + 1, k.kind,
-              k.sinceStartMs, k.lostMs, k.ribbonRows, k.outboxPending, k.filledSlots, k.repairMs, k.resendMs);
+        qInfo("%4d | %-11s | %5lld | %-9s | %17lld | %11llu | %14d | %12llu | %14lld | %12lld", i + 1, k.kind,
+              k.sinceStartMs, k.recording, k.lostMs, k.ribbonRows, k.outboxPending, k.filledSlots, k.repairMs,
+              k.resendMs);
     }
 
     sim.terminate();
