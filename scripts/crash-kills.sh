@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Kills the console with SIGKILL N times (default 20) at random moments while it records, keeps the OSYRIS
-# ribbon store and sends the control-room history through its outbox, and prints one row per kill (issue 27 §4;
+# ribbon store and sends the control-room history through its outbox, and prints one row per kill (see
 # docs/reliability.md "Crash safety"). It runs tests/app/test_crash_safety, which CI runs with 8 kills:
 #   scripts/crash-kills.sh [N]            OCU_CRASH_SEED=S repeats a run's random delays
 # Builds ocu, ocu-sim and the test into OCU_BUILD_DIR (default build/, configured already); OCU_CRASH_NO_BUILD=1

@@ -43,7 +43,7 @@ using ocu::recording::Recording;
 
 namespace {
 
-// The recorder commits every 200 ms, so a kill loses at most that plus one commit; the bound is one
+// The recorder commits every 200 ms, so a kill loses at most that plus one commit; the promised bound is one
 // second. The tolerance on top is for what is not a loss: the newest sample can only be as new as the newest
 // machine state the fleet model delivered, and states arrive in the GUI thread's drains (the OSYRIS rollers
 // report about 60 times a second, but on a loaded 2-core machine a drain can wait a few hundred ms).
@@ -227,7 +227,7 @@ bool waitUntil(const std::function<bool()>& cond, int timeoutMs, Console* consol
 struct KillResult {
     const char* kind = "";
     const char* recording = ""; // kept, none (killed before the recorder started), creating (.part only)
-    bool early = false;         // killed before data flowed, maybe
+    bool early = false;         // an early or at-creation kill: data may not have flowed yet
     int delayMs = 0;
     qint64 sinceStartMs = 0;
     qint64 lostMs = -1; // kill time minus the newest machine sample; -1: none recorded yet
