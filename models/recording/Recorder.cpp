@@ -95,7 +95,7 @@ QString createFile(const RecorderOptions& options, qint64 startMs, int keyframeI
         QFile::remove(part + suffix);
     sqlite3* db = nullptr;
     auto fail = [&](const QString& what) {
-        const QString e = QCoreApplication::translate("Recorder", "cannot create %1: %2")
+        const QString e = Recorder::tr("cannot create %1: %2")
                               .arg(options.path, db ? QString::fromUtf8(sqlite3_errmsg(db)) : what);
         sqlite3_close(db);
         QFile::remove(part);
