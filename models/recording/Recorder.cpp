@@ -24,6 +24,9 @@
 #include <sqlite3.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <ctime>
 
 namespace ocu::recording {
@@ -79,6 +82,63 @@ struct Stmt {
         return rc == SQLITE_DONE || rc == SQLITE_ROW;
     }
 };
+
+// A recording is created whole or not at all: its schema and meta data are committed in one transaction
+// under a temporary name that neither a reader nor retention takes for a recording, and the file gets its
+// name only then (rename(2) is atomic). A console killed while creating it leaves a stray "<name>.part" of a
+// few kilobytes (retention removes it), never a file named like a recording that does not open. The file is
+// closed before the rename: SQLite names its journals after the path it was opened with.
+QString createFile(const RecorderOptions& options, qint64 startMs, int keyframeIntervalMs) {
+    const QString part = options.path + QStringLiteral(".part");
+    for (const QString& suffix :
+         {QString(), QStringLiteral("-journal"), QStringLiteral("-wal"), QStringLiteral("-shm")})
+        QFile::remove(part + suffix);
+    sqlite3* db = nullptr;
+    auto fail = [&](const QString& what) {
+        const QString e = Recorder::tr("cannot create %1: %2")
+                              .arg(options.path, db ? QString::fromUtf8(sqlite3_errmsg(db)) : what);
+        sqlite3_close(db);
+        QFile::remove(part);
+        return e;
+    };
+    if (sqlite3_open_v2(part.toUtf8().constData(), &db,
+                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+                        nullptr) != SQLITE_OK)
+        return fail(QStringLiteral("out of memory"));
+    auto exec = [&](const char* sql) {
+        return sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK;
+    };
+    // auto_vacuum is fixed when the first table is created, journal_mode=WAL is kept by the file.
+    if (!exec("PRAGMA auto_vacuum=INCREMENTAL") || !exec("BEGIN") || !exec(kSchemaSql))
+        return fail({});
+    {
+        Stmt meta(db, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
+        const QList<QPair<QString, QString>> kv{
+            {QStringLiteral("schema"), QString::number(kSchemaVersion)},
+            {QStringLiteral("states_codec"), QStringLiteral("zlib")},
+            {QStringLiteral("start_ms"), QString::number(startMs)},
+            {QStringLiteral("site_name"), options.siteName},
+            {QStringLiteral("origin_lat"), QString::number(options.originLat, 'g', 17)},
+            {QStringLiteral("origin_lon"), QString::number(options.originLon, 'g', 17)},
+            {QStringLiteral("origin_alt"), QString::number(options.originAlt, 'g', 17)},
+            {QStringLiteral("raw"), options.raw ? QStringLiteral("1") : QStringLiteral("0")},
+            {QStringLiteral("keyframe_interval_ms"), QString::number(keyframeIntervalMs)},
+        };
+        for (const auto& [k, v] : kv) {
+            meta.text(1, k);
+            meta.text(2, v);
+            if (!meta.run())
+                return fail({});
+        }
+    }
+    if (!exec("COMMIT") || !exec("PRAGMA journal_mode=WAL"))
+        return fail({});
+    sqlite3_close(db);
+    db = nullptr;
+    if (::rename(QFile::encodeName(part).constData(), QFile::encodeName(options.path).constData()) != 0)
+        return fail(QString::fromLocal8Bit(std::strerror(errno)));
+    return {};
+}
 
 } // namespace
 
@@ -274,9 +334,12 @@ QString Recorder::start(const RecorderOptions& options) {
         return tr("%1 exists already; a recording is never overwritten").arg(options.path);
     QDir().mkpath(QFileInfo(options.path).absolutePath());
     auto w = std::make_unique<Writer>();
+    w->keyframeIntervalMs = std::max(100, options.keyframeIntervalMs);
+    const qint64 t = now();
+    if (const QString e = createFile(options, t, w->keyframeIntervalMs); !e.isEmpty())
+        return e;
     if (sqlite3_open_v2(options.path.toUtf8().constData(), &w->db,
-                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
-                        nullptr) != SQLITE_OK) {
+                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
         const QString err = w->db ? QString::fromUtf8(sqlite3_errmsg(w->db)) : tr("out of memory");
         return tr("cannot create %1: %2").arg(options.path, err);
     }
@@ -303,31 +366,10 @@ QString Recorder::start(const RecorderOptions& options) {
         w->db, "INSERT OR REPLACE INTO msg_channels(idx, protocol, link, peer, type) VALUES(?,?,?,?,?)");
     w->insMessages = std::make_unique<Stmt>(w->db, "INSERT INTO messages(t0, t1, n, data) VALUES(?,?,?,?)");
     w->insPass = std::make_unique<Stmt>(w->db, "INSERT INTO passcounts(t, data) VALUES(?,?)");
-    w->keyframeIntervalMs = std::max(100, options.keyframeIntervalMs);
     w->maxFileBytes = options.maxFileBytes;
-    {
-        const qint64 t = now();
-        Stmt meta(w->db, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
-        const QList<QPair<QString, QString>> kv{
-            {QStringLiteral("schema"), QString::number(kSchemaVersion)},
-            {QStringLiteral("states_codec"), QStringLiteral("zlib")},
-            {QStringLiteral("start_ms"), QString::number(t)},
-            {QStringLiteral("site_name"), options.siteName},
-            {QStringLiteral("origin_lat"), QString::number(options.originLat, 'g', 17)},
-            {QStringLiteral("origin_lon"), QString::number(options.originLon, 'g', 17)},
-            {QStringLiteral("origin_alt"), QString::number(options.originAlt, 'g', 17)},
-            {QStringLiteral("raw"), options.raw ? QStringLiteral("1") : QStringLiteral("0")},
-            {QStringLiteral("keyframe_interval_ms"), QString::number(w->keyframeIntervalMs)},
-        };
-        for (const auto& [k, v] : kv) {
-            meta.text(1, k);
-            meta.text(2, v);
-            meta.run();
-        }
-        m_lastT = t;
-        w->lastKeyframeT = t;
-        w->lastRetentionT = t;
-    }
+    m_lastT = t;
+    w->lastKeyframeT = t;
+    w->lastRetentionT = t;
     m_writer = std::move(w);
     m_stopRequested = false;
     m_running = true;
@@ -765,6 +807,14 @@ QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxA
     for (const QFileInfo& f : files)
         total += sizeOf(f);
     QStringList deleted;
+    // A recording whose creation was cut off (createFile): not a recording, nothing to keep.
+    for (const QFileInfo& f : d.entryInfoList({QStringLiteral("ocu-*.sqlite.part")}, QDir::Files)) {
+        if (f.lastModified().secsTo(now) < 300)
+            continue;
+        for (const QString& suffix : {QString(), QStringLiteral("-journal")})
+            QFile::remove(f.absoluteFilePath() + suffix);
+        deleted << f.fileName();
+    }
     for (const QFileInfo& f : files) {
         if (f.absoluteFilePath() == keepAbs || f.lastModified().secsTo(now) < 300)
             continue;

@@ -725,6 +725,7 @@ private slots:
             QFile f(d.filePath(name));
             QVERIFY(f.open(QIODevice::WriteOnly));
             f.write(QByteArray(kb * 1024, 'r'));
+            f.flush(); // before the time is set: a write left in the buffer would stamp the file again
             f.setFileTime(QDateTime::currentDateTimeUtc().addDays(-ageDays),
                           QFileDevice::FileModificationTime);
             f.close();
@@ -734,10 +735,15 @@ private slots:
         make(QStringLiteral("ocu-c.sqlite"), 100, 2);
         make(QStringLiteral("ocu-d.sqlite"), 100, 0);  // being written (fresh): kept
         make(QStringLiteral("other.sqlite"), 100, 90); // not ours: kept
+        // A creation cut off by a kill: never a recording, deleted once no console can still be creating it.
+        make(QStringLiteral("ocu-e.sqlite.part"), 8, 1);
+        make(QStringLiteral("ocu-f.sqlite.part"), 8, 0);
         const QStringList gone = applyRetention(d.path(), 250 * 1024, 30);
-        QCOMPARE(gone, (QStringList{QStringLiteral("ocu-a.sqlite"), QStringLiteral("ocu-b.sqlite")}));
+        QCOMPARE(gone, (QStringList{QStringLiteral("ocu-e.sqlite.part"), QStringLiteral("ocu-a.sqlite"),
+                                    QStringLiteral("ocu-b.sqlite")}));
         QVERIFY(QFile::exists(d.filePath(QStringLiteral("ocu-c.sqlite"))));
         QVERIFY(QFile::exists(d.filePath(QStringLiteral("other.sqlite"))));
+        QVERIFY(QFile::exists(d.filePath(QStringLiteral("ocu-f.sqlite.part"))));
     }
 
     // The default retention keeps a long run from filling the disk: the run's own file stays within its limit
