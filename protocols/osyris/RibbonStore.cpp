@@ -4,6 +4,8 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
+
 namespace ocu::osyris {
 
 namespace {
@@ -46,61 +48,166 @@ std::unique_ptr<RibbonStore> RibbonStore::inMemory() {
     return std::unique_ptr<RibbonStore>(new RibbonStore());
 }
 
-Result<std::unique_ptr<RibbonStore>> RibbonStore::open(const std::string& path) {
-    auto store = inMemory();
-    if (path.empty() || path == ":memory:")
-        return store;
-    store->m_path = path;
-    auto fail = [&](const std::string& what) -> Result<std::unique_ptr<RibbonStore>> {
-        std::string msg = "ribbon store " + path + ": " + what;
-        return makeError(msg);
-    };
-    if (sqlite3_open_v2(path.c_str(), &store->m_db,
-                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
-                        nullptr) != SQLITE_OK)
-        return fail(store->m_db ? sqlite3_errmsg(store->m_db) : "cannot open");
-    sqlite3_busy_timeout(store->m_db, 2000);
-    std::string err;
-    // WAL + synchronous=FULL: a committed transaction survives an application or OS crash.
-    if (!exec(store->m_db, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;", err) ||
-        !exec(store->m_db,
+bool RibbonStore::initDb(const std::string& path, bool temporary, std::string& err) {
+    if (sqlite3_open_v2(path.c_str(), &m_db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+                        nullptr) != SQLITE_OK) {
+        err = m_db ? sqlite3_errmsg(m_db) : "cannot open";
+        return false;
+    }
+    sqlite3_busy_timeout(m_db, 2000);
+    // A site file: WAL + synchronous=FULL, a committed transaction survives an application or OS crash.
+    // The temporary database only spills memory: nothing to survive.
+    const char* pragmas = temporary ? "PRAGMA journal_mode=OFF; PRAGMA synchronous=OFF;"
+                                    : "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;";
+    if (!exec(m_db, pragmas, err) ||
+        !exec(m_db,
               "CREATE TABLE IF NOT EXISTS ribbon_pos(idx INTEGER NOT NULL, slot INTEGER NOT NULL, pos BLOB "
               "NOT NULL,"
               " props BLOB, PRIMARY KEY(idx, slot)) WITHOUT ROWID;",
               err))
+        return false;
+    auto prepare = [&](const char* sql, sqlite3_stmt** st) {
+        if (sqlite3_prepare_v2(m_db, sql, -1, st, nullptr) == SQLITE_OK)
+            return true;
+        err = sqlite3_errmsg(m_db);
+        return false;
+    };
+    return prepare("INSERT OR IGNORE INTO ribbon_pos(idx, slot, pos, props) VALUES(?,?,?,?)", &m_insert) &&
+           prepare("UPDATE ribbon_pos SET props=? WHERE idx=? AND slot=?", &m_update) &&
+           prepare("SELECT slot, pos, props FROM ribbon_pos WHERE idx=? AND slot=?", &m_selectOne) &&
+           prepare("SELECT slot, pos, props FROM ribbon_pos WHERE idx=? AND slot>=? ORDER BY slot",
+                   &m_selectFrom);
+}
+
+Result<std::unique_ptr<RibbonStore>> RibbonStore::open(const std::string& path) {
+    auto store = inMemory();
+    if (path == ":memory:")
+        return store;
+    store->m_path = path;
+    auto fail = [&](const std::string& what) -> Result<std::unique_ptr<RibbonStore>> {
+        std::string msg = "ribbon store " + (path.empty() ? std::string("(temporary)") : path) + ": " + what;
+        return makeError(msg);
+    };
+    std::string err;
+    if (!store->initDb(path, path.empty(), err))
         return fail(err);
+    if (path.empty())
+        return store;
+    // Which slots the file holds, and the newest positions of each machine into memory.
     sqlite3_stmt* sel = nullptr;
-    if (sqlite3_prepare_v2(store->m_db, "SELECT idx, slot, pos, props FROM ribbon_pos", -1, &sel, nullptr) !=
+    if (sqlite3_prepare_v2(store->m_db, "SELECT idx, slot, length(pos) FROM ribbon_pos", -1, &sel, nullptr) !=
         SQLITE_OK)
         return fail(sqlite3_errmsg(store->m_db));
     std::uint64_t bad = 0;
     while (sqlite3_step(sel) == SQLITE_ROW) {
         int idx = sqlite3_column_int(sel, 0);
-        auto* blob = static_cast<const std::uint8_t*>(sqlite3_column_blob(sel, 2));
-        int n = sqlite3_column_bytes(sel, 2);
-        if (idx < 0 || idx >= kIdxNobody || !blob || n != static_cast<int>(kPosBodySize)) {
+        if (idx < 0 || idx >= kIdxNobody || sqlite3_column_int(sel, 2) != static_cast<int>(kPosBodySize)) {
             ++bad;
             continue;
         }
-        ByteReader r(ByteSpan(blob, static_cast<std::size_t>(n)));
-        PositionRecord rec;
-        rec.pos = decodePosBody(r);
-        if (auto* pb = static_cast<const std::uint8_t*>(sqlite3_column_blob(sel, 3)))
-            rec.props = decodeProps(ByteSpan(pb, static_cast<std::size_t>(sqlite3_column_bytes(sel, 3))));
-        auto u = static_cast<std::uint8_t>(idx);
-        store->m_held[u].insert(rec.pos.slot);
-        store->m_ribbons[u].emplace(rec.pos.slot, std::move(rec));
+        store->m_held[static_cast<std::uint8_t>(idx)].insert(
+            static_cast<std::uint32_t>(sqlite3_column_int64(sel, 1)));
     }
     sqlite3_finalize(sel);
     if (bad)
         logWarning("osyris", "ribbon store " + path + ": skipped " + std::to_string(bad) + " malformed rows");
-    if (sqlite3_prepare_v2(store->m_db,
-                           "INSERT OR IGNORE INTO ribbon_pos(idx, slot, pos, props) VALUES(?,?,?,?)", -1,
-                           &store->m_insert, nullptr) != SQLITE_OK ||
-        sqlite3_prepare_v2(store->m_db, "UPDATE ribbon_pos SET props=? WHERE idx=? AND slot=?", -1,
-                           &store->m_update, nullptr) != SQLITE_OK)
-        return fail(sqlite3_errmsg(store->m_db));
+    for (auto& [idx, held] : store->m_held) {
+        if (held.empty())
+            continue;
+        const std::uint32_t top = held.max();
+        const std::uint32_t from = top >= store->m_hotSlots ? top - std::uint32_t(store->m_hotSlots) + 1 : 0;
+        auto& rib = store->m_ribbons[idx];
+        bool stopped = false;
+        for (const SlotRange& r : held.intersect(from, top))
+            store->readConsecutive(
+                idx, r.from, std::uint64_t(r.to) + 1,
+                [&](const PositionRecord& rec) {
+                    rib.emplace(rec.pos.slot, rec);
+                    return true;
+                },
+                stopped);
+    }
     return store;
+}
+
+void RibbonStore::setHotSlots(std::size_t slots) {
+    std::lock_guard lock(m_mutex);
+    m_hotSlots = std::max<std::size_t>(16, slots);
+}
+
+std::size_t RibbonStore::hotSlots() const {
+    std::lock_guard lock(m_mutex);
+    return m_hotSlots;
+}
+
+std::uint64_t RibbonStore::cachedCount() const {
+    std::lock_guard lock(m_mutex);
+    std::uint64_t n = 0;
+    for (auto& [i, r] : m_ribbons)
+        n += r.size();
+    return n;
+}
+
+void RibbonStore::evict(std::map<std::uint32_t, PositionRecord>& ribbon) {
+    // Only with SQLite behind: what leaves memory is read back from there.
+    if (!m_db)
+        return;
+    while (ribbon.size() > m_hotSlots)
+        ribbon.erase(ribbon.begin());
+}
+
+namespace {
+
+std::optional<PositionRecord> rowRecord(sqlite3_stmt* st) {
+    auto* blob = static_cast<const std::uint8_t*>(sqlite3_column_blob(st, 1));
+    const int n = sqlite3_column_bytes(st, 1);
+    if (!blob || n != static_cast<int>(kPosBodySize))
+        return std::nullopt;
+    ByteReader r(ByteSpan(blob, static_cast<std::size_t>(n)));
+    PositionRecord rec;
+    rec.pos = decodePosBody(r);
+    if (auto* pb = static_cast<const std::uint8_t*>(sqlite3_column_blob(st, 2)))
+        rec.props = decodeProps(ByteSpan(pb, static_cast<std::size_t>(sqlite3_column_bytes(st, 2))));
+    return rec;
+}
+
+} // namespace
+
+std::optional<PositionRecord> RibbonStore::readRow(std::uint8_t idx, std::uint32_t slot) const {
+    if (!m_db)
+        return std::nullopt;
+    sqlite3_bind_int(m_selectOne, 1, idx);
+    sqlite3_bind_int64(m_selectOne, 2, slot);
+    std::optional<PositionRecord> out;
+    if (sqlite3_step(m_selectOne) == SQLITE_ROW)
+        out = rowRecord(m_selectOne);
+    sqlite3_reset(m_selectOne);
+    return out;
+}
+
+std::uint32_t RibbonStore::readConsecutive(std::uint8_t idx, std::uint32_t slot, std::uint64_t end,
+                                           const std::function<bool(const PositionRecord&)>& fn,
+                                           bool& stopped) const {
+    stopped = false;
+    if (!m_db)
+        return slot;
+    sqlite3_bind_int(m_selectFrom, 1, idx);
+    sqlite3_bind_int64(m_selectFrom, 2, slot);
+    std::uint64_t next = slot;
+    while (next < end && sqlite3_step(m_selectFrom) == SQLITE_ROW) {
+        if (static_cast<std::uint64_t>(sqlite3_column_int64(m_selectFrom, 0)) != next)
+            break;
+        auto rec = rowRecord(m_selectFrom);
+        if (!rec)
+            break;
+        if (!fn(*rec)) {
+            stopped = true;
+            break;
+        }
+        ++next;
+    }
+    sqlite3_reset(m_selectFrom);
+    return static_cast<std::uint32_t>(next);
 }
 
 RibbonStore::~RibbonStore() {
@@ -108,6 +215,8 @@ RibbonStore::~RibbonStore() {
         commit();
         sqlite3_finalize(m_insert);
         sqlite3_finalize(m_update);
+        sqlite3_finalize(m_selectOne);
+        sqlite3_finalize(m_selectFrom);
         sqlite3_close(m_db);
     }
 }
@@ -134,11 +243,13 @@ void RibbonStore::commit() {
 
 bool RibbonStore::put(std::uint8_t idx, const PositionRecord& rec) {
     std::lock_guard lock(m_mutex);
-    auto& rib = m_ribbons[idx];
-    auto [it, inserted] = rib.emplace(rec.pos.slot, rec);
-    if (!inserted)
+    IntervalSet& held = m_held[idx];
+    if (held.contains(rec.pos.slot))
         return false;
-    m_held[idx].insert(rec.pos.slot);
+    held.insert(rec.pos.slot);
+    auto& rib = m_ribbons[idx];
+    rib.emplace(rec.pos.slot, rec);
+    evict(rib);
     if (m_db) {
         beginIfNeeded();
         Bytes body;
@@ -161,13 +272,19 @@ bool RibbonStore::put(std::uint8_t idx, const PositionRecord& rec) {
 
 bool RibbonStore::addProps(std::uint8_t idx, std::uint32_t slot, const std::vector<PosProp>& props) {
     std::lock_guard lock(m_mutex);
-    auto r = m_ribbons.find(idx);
-    if (r == m_ribbons.end())
+    auto h = m_held.find(idx);
+    if (props.empty() || h == m_held.end() || !h->second.contains(slot))
         return false;
-    auto it = r->second.find(slot);
-    if (it == r->second.end() || !it->second.props.empty() || props.empty())
-        return false;
-    it->second.props = props;
+    auto& rib = m_ribbons[idx];
+    if (auto it = rib.find(slot); it != rib.end()) {
+        if (!it->second.props.empty())
+            return false;
+        it->second.props = props;
+    } else {
+        auto old = readRow(idx, slot); // left memory already: its row decides
+        if (!old || !old->props.empty())
+            return false;
+    }
     if (m_db) {
         beginIfNeeded();
         Bytes b = encodeProps(props);
@@ -189,13 +306,13 @@ bool RibbonStore::has(std::uint8_t idx, std::uint32_t slot) const {
 
 std::optional<PositionRecord> RibbonStore::get(std::uint8_t idx, std::uint32_t slot) const {
     std::lock_guard lock(m_mutex);
-    auto r = m_ribbons.find(idx);
-    if (r == m_ribbons.end())
+    if (auto r = m_ribbons.find(idx); r != m_ribbons.end())
+        if (auto it = r->second.find(slot); it != r->second.end())
+            return it->second;
+    auto h = m_held.find(idx);
+    if (h == m_held.end() || !h->second.contains(slot))
         return std::nullopt;
-    auto it = r->second.find(slot);
-    if (it == r->second.end())
-        return std::nullopt;
-    return it->second;
+    return readRow(idx, slot);
 }
 
 std::optional<PositionRecord> RibbonStore::newest(std::uint8_t idx) const {
@@ -214,23 +331,23 @@ IntervalSet RibbonStore::held(std::uint8_t idx) const {
 
 std::uint64_t RibbonStore::count(std::uint8_t idx) const {
     std::lock_guard lock(m_mutex);
-    auto r = m_ribbons.find(idx);
-    return r == m_ribbons.end() ? 0 : r->second.size();
+    auto h = m_held.find(idx);
+    return h == m_held.end() ? 0 : h->second.count();
 }
 
 std::uint64_t RibbonStore::totalCount() const {
     std::lock_guard lock(m_mutex);
     std::uint64_t n = 0;
-    for (auto& [i, r] : m_ribbons)
-        n += r.size();
+    for (auto& [i, h] : m_held)
+        n += h.count();
     return n;
 }
 
 std::vector<std::uint8_t> RibbonStore::machines() const {
     std::lock_guard lock(m_mutex);
     std::vector<std::uint8_t> out;
-    for (auto& [i, r] : m_ribbons)
-        if (!r.empty())
+    for (auto& [i, h] : m_held)
+        if (!h.empty())
             out.push_back(i);
     return out;
 }
@@ -238,19 +355,39 @@ std::vector<std::uint8_t> RibbonStore::machines() const {
 std::uint32_t RibbonStore::forEachConsecutive(std::uint8_t idx, std::uint32_t slot,
                                               const std::function<bool(const PositionRecord&)>& fn) const {
     std::lock_guard lock(m_mutex);
-    auto r = m_ribbons.find(idx);
-    if (r == m_ribbons.end())
+    auto h = m_held.find(idx);
+    if (h == m_held.end())
         return slot;
-    auto it = r->second.find(slot);
-    while (it != r->second.end() && it->first == slot) {
-        if (!fn(it->second))
-            break;
-        ++it;
-        ++slot;
+    auto r = m_ribbons.find(idx);
+    const std::map<std::uint32_t, PositionRecord>* rib = r == m_ribbons.end() ? nullptr : &r->second;
+    for (;;) {
+        if (!h->second.contains(slot))
+            return slot;
+        if (rib) {
+            auto it = rib->find(slot);
+            if (it != rib->end()) {
+                while (it != rib->end() && it->first == slot) {
+                    if (!fn(it->second))
+                        return slot;
+                    ++it;
+                    ++slot;
+                    if (slot == 0)
+                        return slot; // wrapped: end of the slot space
+                }
+                continue;
+            }
+        }
+        // Older than memory holds: from SQLite up to the first slot memory holds.
+        const std::uint64_t end =
+            rib && !rib->empty() && rib->begin()->first > slot ? rib->begin()->first : std::uint64_t(1) << 32;
+        bool stopped = false;
+        const std::uint32_t next = readConsecutive(idx, slot, end, fn, stopped);
+        if (stopped || next == slot)
+            return next;
+        slot = next;
         if (slot == 0)
-            break; // wrapped: end of the slot space
+            return slot;
     }
-    return slot;
 }
 
 } // namespace ocu::osyris

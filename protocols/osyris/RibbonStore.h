@@ -1,8 +1,11 @@
 #pragma once
-// Ribbon store (issue 5 §3): per machine, slot-indexed positions with their properties. Kept in memory
-// and, when a file is given, in SQLite (one file per site, WAL): rows are written inside a transaction
-// that commit() closes, so a crash loses nothing that was committed. Thread-safe (one mutex), so the GUI
-// may read while the station's io thread writes.
+// Ribbon store: per machine, slot-indexed positions with their properties, in SQLite (one file per site,
+// WAL; rows are written inside a transaction that commit() closes, so a crash loses nothing that was
+// committed). Without a file the rows go to a private temporary SQLite database (deleted when the store
+// closes), so that a shift's ribbons live on disk, not in memory: memory holds which slots are held and
+// only the newest hotSlots() positions of each machine; older ones are read back from SQLite when asked
+// for (repairs, recounts). inMemory() keeps everything in memory (tests, benchmarks, fuzzing).
+// Thread-safe (one mutex), so the GUI may read while the station's io thread writes.
 #include "protocols/osyris/IntervalSet.h"
 #include "protocols/osyris/OsyrisCodec.h"
 
@@ -27,7 +30,11 @@ struct PositionRecord {
 
 class RibbonStore {
 public:
-    // path empty or ":memory:" = memory only. Errors name the file and SQLite's message.
+    // How many of each machine's newest positions stay in memory when the store has SQLite behind it.
+    static constexpr std::size_t kDefaultHotSlots = 8192;
+
+    // path empty = a private temporary database; ":memory:" = memory only. Errors name the file and
+    // SQLite's message.
     static Result<std::unique_ptr<RibbonStore>> open(const std::string& path);
     static std::unique_ptr<RibbonStore> inMemory();
     ~RibbonStore();
@@ -54,17 +61,33 @@ public:
                                      const std::function<bool(const PositionRecord&)>& fn) const;
     const std::string& path() const { return m_path; }
 
+    // At least 16; applies from the next put (tests use a small window to read through SQLite).
+    void setHotSlots(std::size_t slots);
+    std::size_t hotSlots() const;
+    // Positions held in memory now (diagnostics and tests: bounded by machines x hotSlots with SQLite).
+    std::uint64_t cachedCount() const;
+
 private:
     RibbonStore() = default;
     void beginIfNeeded();
+    bool initDb(const std::string& path, bool temporary, std::string& err);
+    void evict(std::map<std::uint32_t, PositionRecord>& ribbon);
+    // From SQLite: one slot, or the consecutive slots from `slot` while fn returns true and below `end`.
+    std::optional<PositionRecord> readRow(std::uint8_t idx, std::uint32_t slot) const;
+    std::uint32_t readConsecutive(std::uint8_t idx, std::uint32_t slot, std::uint64_t end,
+                                  const std::function<bool(const PositionRecord&)>& fn, bool& stopped) const;
 
     mutable std::mutex m_mutex;
+    // The newest hotSlots positions of each machine (all of them in memory-only mode).
     std::map<std::uint8_t, std::map<std::uint32_t, PositionRecord>> m_ribbons;
+    std::size_t m_hotSlots = kDefaultHotSlots;
     std::map<std::uint8_t, IntervalSet> m_held;
     std::string m_path;
     sqlite3* m_db = nullptr;
     sqlite3_stmt* m_insert = nullptr;
     sqlite3_stmt* m_update = nullptr;
+    sqlite3_stmt* m_selectOne = nullptr;
+    sqlite3_stmt* m_selectFrom = nullptr;
     bool m_inTransaction = false;
 };
 

@@ -65,6 +65,72 @@ private slots:
         QCOMPARE(st->get(3, 1)->props.at(0).asFloat(), 1.5f);
         QCOMPARE(st->machines(), std::vector<std::uint8_t>{3});
     }
+    // With SQLite behind (a site file, or the private temporary database of a store without one), memory
+    // holds only each machine's newest hotSlots positions; everything older reads back the same through
+    // get, forEachConsecutive, addProps and a reopen, so a shift's ribbons do not grow the process.
+    void memoryIsBoundedWithSqliteBehind() {
+        QTemporaryDir dir;
+        const std::string file = dir.filePath("bounded.osyris.sqlite").toStdString();
+        for (const std::string& path : {std::string(), file}) {
+            auto opened = RibbonStore::open(path);
+            QVERIFY(opened);
+            auto& st = *opened;
+            st->setHotSlots(32);
+            // Two machines, 1,000 slots each; machine 4 has a gap at 500..509, slot 7 has no props yet.
+            for (std::uint32_t i = 0; i < 1000; ++i) {
+                PositionRecord r = rec(i, float(i) * 0.5f);
+                if (i != 7)
+                    r.props = {PosProp::fromFloat(3, float(i))};
+                QVERIFY(st->put(2, r));
+                if (i < 500 || i >= 510)
+                    QVERIFY(st->put(4, r));
+            }
+            QVERIFY(st->cachedCount() <= 64);
+            QVERIFY(!st->put(2, rec(5, 99.f))); // an evicted slot is still held: immutable
+            QCOMPARE(st->count(2), std::uint64_t(1000));
+            QCOMPARE(st->count(4), std::uint64_t(990));
+            QCOMPARE(st->totalCount(), std::uint64_t(1990));
+            QCOMPARE(st->machines(), (std::vector<std::uint8_t>{2, 4}));
+            QCOMPARE(st->newest(4)->pos.slot, 999u);
+            QCOMPARE(st->get(2, 5)->pos.x, 2.5f);
+            QCOMPARE(st->get(2, 5)->props.at(0).asFloat(), 5.f);
+            QVERIFY(!st->get(4, 505));
+            QVERIFY(st->addProps(2, 7, {PosProp::fromFloat(3, 7.f)})); // evicted, without props: added
+            QVERIFY(!st->addProps(2, 7, {PosProp::fromFloat(3, 8.f)}));
+            QCOMPARE(st->get(2, 7)->props.at(0).asFloat(), 7.f);
+            // Consecutive slots across SQLite and memory, stopping at the gap and where fn says.
+            std::uint32_t expect = 0;
+            bool same = true;
+            auto next = st->forEachConsecutive(4, 0, [&](const PositionRecord& r) {
+                same = same && r.pos.slot == expect && r.pos.x == float(expect) * 0.5f;
+                ++expect;
+                return true;
+            });
+            QCOMPARE(next, 500u);
+            QVERIFY(same);
+            expect = 510;
+            next = st->forEachConsecutive(4, 510, [&](const PositionRecord& r) {
+                same = same && r.pos.slot == expect;
+                ++expect;
+                return true;
+            });
+            QCOMPARE(next, 1000u);
+            QVERIFY(same);
+            int visits = 0;
+            next = st->forEachConsecutive(2, 100, [&](const PositionRecord&) { return ++visits < 10; });
+            QCOMPARE(next, 109u);
+            st->commit();
+        }
+        // The file reopened: every slot held, the newest in memory, the rest read back.
+        auto again = RibbonStore::open(file);
+        QVERIFY(again);
+        QCOMPARE((*again)->count(4), std::uint64_t(990));
+        QCOMPARE((*again)->held(4).gaps(0, 999), (std::vector<SlotRange>{{500, 509}}));
+        QCOMPARE((*again)->get(2, 7)->props.at(0).asFloat(), 7.f);
+        QCOMPARE((*again)->get(4, 3)->pos.x, 1.5f);
+        QCOMPARE((*again)->newest(2)->pos.slot, 999u);
+    }
+
     void sqliteSurvivesReopen() {
         QTemporaryDir dir;
         std::string path = dir.filePath("site.osyris.sqlite").toStdString();
