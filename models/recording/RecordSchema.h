@@ -9,7 +9,10 @@ namespace ocu::recording {
 
 // 2: inbound messages (msg_channels, messages) replace the never-written `raw` table of 1; pass counts.
 // 3: the `states` and `keyframes` blobs are qCompress'ed (meta states_codec = zlib); 1 and 2 still read.
-constexpr int kSchemaVersion = 3;
+// 4: compact record headers and Move records (fixed point), blobs compressed with zstd (states_codec = zstd);
+//    decoded inbound messages only with record.messages. 1 to 3 still read.
+constexpr int kSchemaVersion = 4;
+constexpr int kLegacySchemaVersion = 3; // RecorderOptions::legacySchema3
 
 inline constexpr const char* kSchemaSql = R"SQL(
 CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT);
