@@ -41,6 +41,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <random>
 
 #include <sqlite3.h>
@@ -301,20 +302,48 @@ static void seekAndReplay(const QString& file, int seeks, const char* label) {
         ReplayController c(rec.get(), &model);
         std::mt19937_64 rng(16);
         std::uniform_int_distribution<qint64> pos(rec->startMs(), rec->endMs());
-        std::vector<double> ms;
+        std::vector<double> ms, picture, eventsRead, linksRead;
+        qsizetype eventCount = 0;
         for (int i = 0; i < seeks; ++i) {
-            c.seek(pos(rng));
+            const qint64 t = pos(rng);
+            c.seek(t);
             ms.push_back(c.lastSeekMs());
+            QElapsedTimer p;
+            p.start();
+            (void)rec->statesAtIdx(t); // the machine picture alone (keyframe + chunks)
+            picture.push_back(double(p.nsecsElapsed()) / 1e6);
+            p.restart();
+            const auto events =
+                rec->events(std::numeric_limits<qint64>::min(), t); // what an alarm rebuild reads
+            eventsRead.push_back(double(p.nsecsElapsed()) / 1e6);
+            eventCount = std::max(eventCount, qsizetype(events.size()));
+            p.restart();
+            (void)rec->linksAt(t);
+            linksRead.push_back(double(p.nsecsElapsed()) / 1e6);
         }
         std::sort(ms.begin(), ms.end());
-        double sum = 0;
+        std::sort(picture.begin(), picture.end());
+        double sum = 0, pictureSum = 0;
         for (double v : ms)
             sum += v;
+        for (double v : picture)
+            pictureSum += v;
         std::printf(
             "seek (%s): %d random seeks in %.2f h of recording (%.0f MB), %d machines: mean %.1f ms, p50 "
             "%.1f ms, max %.1f ms\n",
             label, seeks, hours, double(QFileInfo(file).size()) / 1e6, int(model.rowCount()),
             sum / double(ms.size()), ms[ms.size() / 2], ms.back());
+        std::printf("  of which the machine picture alone (keyframe + chunks): mean %.1f ms, max %.1f ms\n",
+                    pictureSum / double(picture.size()), picture.back());
+        auto mean = [](const std::vector<double>& v) {
+            double sum = 0;
+            for (double x : v)
+                sum += x;
+            return v.empty() ? 0.0 : sum / double(v.size());
+        };
+        std::printf(
+            "  reading the events up to T (up to %lld of them): mean %.1f ms; the links at T: mean %.1f ms\n",
+            static_cast<long long>(eventCount), mean(eventsRead), mean(linksRead));
     }
     {
         FleetModel model;

@@ -31,6 +31,7 @@ CREATE TABLE IF NOT EXISTS commands(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, 
                                     target TEXT, ok INTEGER, audit TEXT);
 CREATE TABLE IF NOT EXISTS links(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, protocol TEXT, link TEXT,
                                  state INTEGER, age_ms INTEGER, detail TEXT);
+CREATE INDEX IF NOT EXISTS links_key ON links(protocol, link, t);
 CREATE TABLE IF NOT EXISTS sitemaps(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, data BLOB);
 CREATE TABLE IF NOT EXISTS msg_channels(idx INTEGER PRIMARY KEY, protocol TEXT, link TEXT, peer TEXT, type TEXT);
 CREATE TABLE IF NOT EXISTS messages(id INTEGER PRIMARY KEY, t0 INTEGER NOT NULL, t1 INTEGER NOT NULL,

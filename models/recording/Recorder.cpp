@@ -92,6 +92,8 @@ struct Recorder::Writer {
     qint64 lastKeyframeT = 0;
     qint64 lastChunkT1 = 0;
     qint64 lastChunkId = 0;
+    qint64 openChunkId = 0; // the states row still being filled (schema 4)
+    quint64 openChunkBytes = 0, openChunkRawBytes = 0;
     qint64 lastTrimCheckT = 0;
     qint64 maxFileBytes = 0;
     qint64 lastRetentionT = 0;
@@ -106,8 +108,8 @@ struct Recorder::Writer {
     QByteArray legacyChunk;
     qint64 chunkT0 = 0, chunkT1 = 0;
     int chunkN = 0;
-    std::unique_ptr<Stmt> insState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink, insMap,
-        insChannel, insMessages, insPass;
+    std::unique_ptr<Stmt> insState, updState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink,
+        insMap, insChannel, insMessages, insPass;
     // Inbound messages: channel (protocol, link, peer, type) -> index, and the chunk being filled.
     QHash<QByteArray, std::uint32_t> channelOf;
     std::uint32_t nextChannel = 1;
@@ -156,6 +158,7 @@ struct Recorder::Writer {
 
     ~Writer() {
         insState.reset();
+        updState.reset();
         insMachine.reset();
         insKeyframe.reset();
         insEvent.reset();
@@ -191,8 +194,10 @@ struct Recorder::Writer {
 
     // A state record at t: cuts the chunk after 1 s so that a seek decodes little past its target.
     void startRecord(qint64 t) {
-        if (chunkN > 0 && t - chunkT0 > 1000)
+        if (chunkN > 0 && t - chunkT0 > 1000) {
             writeChunk();
+            closeChunk();
+        }
         if (chunkN == 0) {
             chunkT0 = t;
             legacyChunk.clear();
@@ -239,20 +244,45 @@ struct Recorder::Writer {
         last.remove(idx);
     }
 
+    // Writes the chunk being filled: a new row, or (schema 4) the open row again with what came since. Schema
+    // 4 keeps a chunk open over the commits of up to 1 s: every commit still holds everything recorded so
+    // far, and a chunk of 1 s instead of one commit's 200 ms compresses better and loses a fifth as many half
+    // pages.
     void writeChunk() {
         if (chunkN == 0)
             return;
-        const QByteArray& chunk = enc ? enc->data() : legacyChunk;
-        insState->i64(1, chunkT0);
-        insState->i64(2, chunkT1);
-        insState->i64(3, chunkN);
+        const QByteArray chunk = enc ? enc->data() : legacyChunk;
         const QByteArray packed = pack(chunk);
-        insState->blob(4, packed);
-        insState->run();
-        lastChunkId = sqlite3_last_insert_rowid(db);
+        if (openChunkId != 0) {
+            updState->i64(1, chunkT1);
+            updState->i64(2, chunkN);
+            updState->blob(3, packed);
+            updState->i64(4, openChunkId);
+            updState->run();
+            stateBytes -= openChunkBytes;
+            stateRawBytes -= openChunkRawBytes;
+        } else {
+            insState->i64(1, chunkT0);
+            insState->i64(2, chunkT1);
+            insState->i64(3, chunkN);
+            insState->blob(4, packed);
+            insState->run();
+            openChunkId = sqlite3_last_insert_rowid(db);
+        }
+        lastChunkId = openChunkId;
         lastChunkT1 = chunkT1;
-        stateBytes += quint64(packed.size());
-        stateRawBytes += quint64(chunk.size());
+        openChunkBytes = quint64(packed.size());
+        openChunkRawBytes = quint64(chunk.size());
+        stateBytes += openChunkBytes;
+        stateRawBytes += openChunkRawBytes;
+        if (legacy)
+            closeChunk(); // schema 3: one chunk per commit, as that writer did
+    }
+    // The next record starts a new chunk (a keyframe refers to the chunks before it, never to one still
+    // open).
+    void closeChunk() {
+        openChunkId = 0;
+        openChunkBytes = openChunkRawBytes = 0;
         chunkN = 0;
     }
 
@@ -368,6 +398,7 @@ QString Recorder::start(const RecorderOptions& options) {
         return tr("cannot create the recording schema in %1: %2")
             .arg(options.path, QString::fromUtf8(sqlite3_errmsg(w->db)));
     w->insState = std::make_unique<Stmt>(w->db, "INSERT INTO states(t0, t1, n, data) VALUES(?,?,?,?)");
+    w->updState = std::make_unique<Stmt>(w->db, "UPDATE states SET t1 = ?, n = ?, data = ? WHERE id = ?");
     w->insMachine = std::make_unique<Stmt>(w->db, "INSERT OR REPLACE INTO machines(idx, id) VALUES(?,?)");
     w->insKeyframe =
         std::make_unique<Stmt>(w->db, "INSERT OR REPLACE INTO keyframes(t, chunk, n, data) VALUES(?,?,?,?)");
@@ -653,8 +684,10 @@ void Recorder::run() {
             w.writeChunk();
             w.writeMessages();
             const qint64 lastT = batch.back().t;
-            if (lastT - w.lastKeyframeT >= w.keyframeIntervalMs)
+            if (lastT - w.lastKeyframeT >= w.keyframeIntervalMs) {
+                w.closeChunk();
                 w.writeKeyframe(std::max(lastT, w.lastChunkT1));
+            }
             Stmt end(w.db, "INSERT OR REPLACE INTO meta(key, value) VALUES('end_ms', ?)");
             end.text(1, QString::number(lastT));
             end.run();

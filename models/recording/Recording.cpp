@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 
 namespace ocu::recording {
 
@@ -391,12 +390,24 @@ QJsonObject Recording::messageJson(const RecordedMessage& m, const MessageChanne
 }
 
 QVector<RecordedLink> Recording::linksAt(qint64 t) const {
-    std::map<QString, RecordedLink> last;
-    for (RecordedLink& l : links(kMinT, t))
-        last[l.protocol + QLatin1Char('\n') + l.link] = std::move(l);
+    // The newest row of each link at t, looked up per link (index links_key, schema 4), not by reading every
+    // link change since the start: a seek late in a long recording stays as fast as an early one.
     QVector<RecordedLink> out;
-    for (auto& [k, l] : last)
-        out.push_back(l);
+    Query q(m_db, "SELECT l.t, l.protocol, l.link, l.state, l.age_ms, l.detail "
+                  "FROM (SELECT DISTINCT protocol, link FROM links) k JOIN links l ON l.id = "
+                  "(SELECT id FROM links WHERE protocol IS k.protocol AND link IS k.link AND t <= ?1 "
+                  "ORDER BY t DESC, id DESC LIMIT 1) ORDER BY l.protocol, l.link");
+    q.bind(1, t);
+    while (q.next()) {
+        RecordedLink l;
+        l.t = q.i64(0);
+        l.protocol = q.text(1);
+        l.link = q.text(2);
+        l.state = LinkState(std::clamp<qint64>(q.i64(3), 0, int(LinkState::Down)));
+        l.dataAgeMs = q.i64(4);
+        l.detail = q.text(5);
+        out.push_back(std::move(l));
+    }
     return out;
 }
 
