@@ -9,8 +9,9 @@ namespace ocu::recording {
 
 // 2: inbound messages (msg_channels, messages) replace the never-written `raw` table of 1; pass counts.
 // 3: the `states` and `keyframes` blobs are qCompress'ed (meta states_codec = zlib); 1 and 2 still read.
-// 4: compact record headers and Move records (fixed point), blobs compressed with zstd (states_codec = zstd);
-//    decoded inbound messages only with record.messages. 1 to 3 still read.
+// 4: compact record headers and Move records (fixed point) in columns, blobs compressed with zstd
+//    (states_codec, messages_codec = zstd); decoded inbound messages only with record.messages; an index on
+//    links. 1 to 3 still read.
 constexpr int kSchemaVersion = 4;
 constexpr int kLegacySchemaVersion = 3; // RecorderOptions::legacySchema3
 

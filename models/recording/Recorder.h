@@ -58,12 +58,13 @@ struct RecorderOptions {
     int retentionIntervalMs = 60000;
     bool raw = false; // record.raw: raw frames (recordRaw); off by default
     // record.messages: every decoded inbound message (the tap's onDecoded). Off by default: the replay is
-    // driven by the machine states, and the messages would cost far more than they (docs/recording.md).
+    // driven by the machine states alone, and the messages cost several times what the states cost
+    // (docs/recording.md, "What replay needs").
     bool messages = false;
     // Writes the previous format (schema 3: fixed-width headers, exact Delta records, zlib) instead of
     // schema 4: the benchmark's figures before schema 4 and the old-schema fixtures of the tests.
     bool legacySchema3 = false;
-    int zstdLevel = 6; // schema 4's state chunks and keyframes
+    int zstdLevel = 6; // schema 4's state chunks, keyframes and message chunks
     QString siteName;
     double originLat = 0, originLon = 0, originAlt = 0; // the site frame, for replay's map
     std::function<qint64()> clock;                      // ms since the epoch; default: the wall clock
