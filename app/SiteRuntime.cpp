@@ -236,6 +236,7 @@ void SiteRuntime::startRecorder() {
     recording::RecorderOptions o;
     o.path = recording::newRecordingPath(dir);
     o.raw = rc.raw;
+    o.messages = rc.messages;
     // A run alone never outgrows the folder's budget, and the folder's older runs give way while it records.
     o.maxFileBytes = recording::effectiveMaxFileBytes(rc.maxFileMb, rc.maxTotalMb);
     o.retentionDir = dir;

@@ -30,6 +30,8 @@ packages=(
   gstreamer1.0-plugins-ugly gstreamer1.0-libav
   # Issue 18 (the console's video player, h18view): GStreamer core/app/video dev files and h264parse (bad).
   libgstreamer1.0-dev gstreamer1.0-plugins-bad
+  # The flight recorder compresses its machine-state chunks with zstd (docs/recording.md).
+  libzstd-dev
 )
 
 missing=()

@@ -194,19 +194,197 @@ void appendRemoved(QByteArray& out, std::uint32_t idx, std::int32_t dtMs) {
     header(out, RecordType::Removed, idx, dtMs);
 }
 
+namespace {
+
+std::int64_t fixed(double v, double scale) {
+    return std::llround(v * scale);
+}
+
+// Values a Move can carry: finite and far inside int64 after scaling.
+bool moveEncodable(const MachineState& s) {
+    constexpr double lim = 1.0e9;
+    return positionEncodable(s) && std::abs(s.headingDeg) < lim && std::abs(s.speed) < lim &&
+           std::isfinite(s.lat) && std::isfinite(s.lon) && std::abs(s.lat) <= 1000 && std::abs(s.lon) <= 1000;
+}
+
+// Unsigned arithmetic: differences from a hostile blob wrap instead of overflowing.
+std::int64_t wrapAdd(std::int64_t a, std::int64_t b) {
+    return std::int64_t(std::uint64_t(a) + std::uint64_t(b));
+}
+
+} // namespace
+
+void ChunkEncoder::begin(qint64 t0) {
+    for (QByteArray& c : m_cols)
+        c.clear();
+    m_tracks.clear();
+    m_t0 = m_prevT = t0;
+    m_prevIdx = 0;
+}
+
+QByteArray ChunkEncoder::data() const {
+    QByteArray out;
+    qsizetype size = 1 + kColumns * 5;
+    for (const QByteArray& c : m_cols)
+        size += c.size();
+    out.reserve(size);
+    put<std::uint8_t>(out, kColumns);
+    for (const QByteArray& c : m_cols)
+        putVar(out, std::uint64_t(c.size()));
+    for (const QByteArray& c : m_cols)
+        out.append(c);
+    return out;
+}
+
+void ChunkEncoder::header(RecordType type, std::uint32_t idx, qint64 tMs) {
+    QByteArray& out = m_cols[0];
+    put<std::uint8_t>(out, std::uint8_t(type));
+    putVar(out, zigzag(std::int64_t(idx) - std::int64_t(m_prevIdx)));
+    putVar(out, std::uint64_t(std::max<qint64>(0, tMs - m_prevT)));
+    m_prevIdx = idx;
+    m_prevT = std::max(m_prevT, tMs);
+}
+
+void ChunkEncoder::full(std::uint32_t idx, qint64 tMs, const MachineState& s) {
+    header(RecordType::Full, idx, tMs);
+    QByteArray& out = m_cols[0];
+    const qsizetype at = out.size();
+    appendFull(out, idx, 0, s);
+    out.remove(at, kHeader); // the body only: the compact header is written above
+    m_tracks.remove(idx);
+}
+
+void ChunkEncoder::removed(std::uint32_t idx, qint64 tMs) {
+    header(RecordType::Removed, idx, tMs);
+    m_tracks.remove(idx);
+}
+
+bool ChunkEncoder::move(std::uint32_t idx, qint64 tMs, MachineState& base, const MachineState& s) {
+    if (!moveEncodable(s) || !moveEncodable(base))
+        return false;
+    const std::int64_t e = fixed(s.e, kMoveMetre), n = fixed(s.n, kMoveMetre), u = fixed(s.u, kMoveMetre);
+    // Derived lat/lon when the site frame gives them back from the quantised e/n/u (what the bridges did).
+    bool derived = false;
+    GeoPoint g;
+    if (m_frame) {
+        g = m_frame->toGeodetic({double(e) / kMoveMetre, double(n) / kMoveMetre, double(u) / kMoveMetre});
+        derived = std::abs(g.lat - s.lat) <= kDerivedGeoTolerance &&
+                  std::abs(g.lon - s.lon) <= kDerivedGeoTolerance;
+    }
+    Track& tr = m_tracks[idx];
+    header(derived ? RecordType::Move : RecordType::MoveGeodetic, idx, tMs);
+    const std::int64_t de = e - fixed(base.e, kMoveMetre), dn = n - fixed(base.n, kMoveMetre);
+    putVar(m_cols[1], zigzag(de - (tr.moved ? tr.ve : 0)));
+    putVar(m_cols[2], zigzag(dn - (tr.moved ? tr.vn : 0)));
+    putVar(m_cols[3], zigzag(u - fixed(base.u, kMoveMetre)));
+    const std::int64_t heading = fixed(s.headingDeg, kMoveDegree), speed = fixed(s.speed, kMoveSpeed);
+    putVar(m_cols[4], zigzag(heading - fixed(base.headingDeg, kMoveDegree)));
+    putVar(m_cols[5], zigzag(speed - fixed(base.speed, kMoveSpeed)));
+    const std::int64_t dataOffset = s.lastDataMs - tMs, messageOffset = messageDelta(s);
+    putVar(m_cols[6], zigzag(dataOffset - (tr.moved ? tr.dataOffset : 0)));
+    putVar(m_cols[7], zigzag(messageOffset - (tr.moved ? tr.messageOffset : 0)));
+    tr.ve = de;
+    tr.vn = dn;
+    tr.dataOffset = dataOffset;
+    tr.messageOffset = messageOffset;
+    tr.moved = true;
+    base.e = double(e) / kMoveMetre;
+    base.n = double(n) / kMoveMetre;
+    base.u = double(u) / kMoveMetre;
+    base.headingDeg = double(heading) / kMoveDegree;
+    base.speed = double(speed) / kMoveSpeed;
+    base.lastDataMs = tMs + dataOffset;
+    base.lastMessageMs = messageOffset == kNoMessageTime ? 0 : base.lastDataMs + messageOffset;
+    if (derived) {
+        tr.geodetic = false;
+        base.lat = g.lat;
+        base.lon = g.lon;
+    } else {
+        const std::int64_t lat = fixed(s.lat, kMoveGeodetic), lon = fixed(s.lon, kMoveGeodetic);
+        const std::int64_t dlat = lat - fixed(base.lat, kMoveGeodetic),
+                           dlon = lon - fixed(base.lon, kMoveGeodetic);
+        putVar(m_cols[8], zigzag(dlat - (tr.geodetic ? tr.vlat : 0)));
+        putVar(m_cols[9], zigzag(dlon - (tr.geodetic ? tr.vlon : 0)));
+        tr.vlat = dlat;
+        tr.vlon = dlon;
+        tr.geodetic = true;
+        base.lat = double(lat) / kMoveGeodetic;
+        base.lon = double(lon) / kMoveGeodetic;
+    }
+    return true;
+}
+
+void resolveGeodetic(QHash<std::uint32_t, MachineState>& states, QSet<std::uint32_t>& pending,
+                     const GeoFrame& frame) {
+    for (std::uint32_t idx : std::as_const(pending)) {
+        auto it = states.find(idx);
+        if (it == states.end())
+            continue;
+        const GeoPoint g = frame.toGeodetic({it->e, it->n, it->u});
+        it->lat = g.lat;
+        it->lon = g.lon;
+    }
+    pending.clear();
+}
+
 bool decodeChunk(const QByteArray& blob, qint64 t0Ms, QHash<std::uint32_t, MachineState>& states,
-                 qint64 fromExclusiveMs, qint64 untilMs, const RecordVisitor& visit) {
+                 qint64 fromExclusiveMs, qint64 untilMs, const RecordVisitor& visit,
+                 const DecodeOptions& options) {
     Reader r{blob.constData(), blob.constData() + blob.size()};
-    while (r.p < r.end) {
-        if (r.end - r.p < kHeader)
+    const bool compact = options.format == ChunkFormat::Compact;
+    // Compact: r reads the headers column, col[i] the Move fields' columns.
+    Reader col[ChunkEncoder::columns() - 1] = {};
+    if (compact && !blob.isEmpty()) {
+        if (r.get<std::uint8_t>() != ChunkEncoder::columns())
             return false;
+        std::uint64_t len[ChunkEncoder::columns()];
+        for (auto& l : len)
+            l = r.getVar();
+        if (!r.ok)
+            return false;
+        const char* p = r.p;
+        const char* const end = r.end;
+        for (int i = 0; i < ChunkEncoder::columns(); ++i) {
+            if (len[i] > std::uint64_t(end - p))
+                return false;
+            Reader& c = i == 0 ? r : col[i - 1];
+            c = Reader{p, p + len[i]};
+            p += len[i];
+        }
+        if (p != end)
+            return false;
+    }
+    QSet<std::uint32_t>* defer = options.deferGeodetic;
+    // Move records: each machine's previous step in this chunk (from the records alone, applied or not).
+    QHash<std::uint32_t, ChunkEncoder::Track> tracks;
+    std::uint32_t prevIdx = 0;
+    qint64 prevT = t0Ms;
+    while (r.p < r.end) {
         DecodedRecord rec;
-        const auto type = r.get<std::uint8_t>();
-        rec.idx = r.get<std::uint32_t>();
-        rec.tMs = t0Ms + r.get<std::int32_t>();
+        std::uint8_t type = 0;
+        if (compact) {
+            type = r.get<std::uint8_t>();
+            rec.idx = std::uint32_t(wrapAdd(prevIdx, unzigzag(r.getVar())));
+            rec.tMs = wrapAdd(prevT, std::int64_t(r.getVar()));
+            if (!r.ok)
+                return false;
+            prevIdx = rec.idx;
+            prevT = rec.tMs;
+        } else {
+            if (r.end - r.p < kHeader)
+                return false;
+            type = r.get<std::uint8_t>();
+            rec.idx = r.get<std::uint32_t>();
+            rec.tMs = t0Ms + r.get<std::int32_t>();
+        }
         if (rec.tMs > untilMs)
             return true;
         const bool apply = rec.tMs > fromExclusiveMs;
+        // A record that sets lat/lon itself ends a deferred derivation of them.
+        auto settle = [&](std::uint32_t idx) {
+            if (defer && apply)
+                defer->remove(idx);
+        };
         switch (RecordType(type)) {
         case RecordType::Full: {
             rec.type = RecordType::Full;
@@ -231,6 +409,8 @@ bool decodeChunk(const QByteArray& blob, qint64 t0Ms, QHash<std::uint32_t, Machi
                 *str = r.getString();
             if (!r.ok)
                 return false;
+            tracks.remove(rec.idx);
+            settle(rec.idx);
             if (apply)
                 states.insert(rec.idx, std::move(s));
             break;
@@ -253,6 +433,7 @@ bool decodeChunk(const QByteArray& blob, qint64 t0Ms, QHash<std::uint32_t, Machi
             auto it = states.find(rec.idx);
             if (it == states.end())
                 break; // no base (a file trimmed in the middle of nowhere): nothing to move
+            settle(rec.idx);
             MachineState& s = *it;
             s.e = e;
             s.n = n;
@@ -279,6 +460,7 @@ bool decodeChunk(const QByteArray& blob, qint64 t0Ms, QHash<std::uint32_t, Machi
             auto it = states.find(rec.idx);
             if (it == states.end())
                 break; // no base: nothing to move
+            settle(rec.idx);
             MachineState& s = *it;
             // Unsigned arithmetic: hostile differences wrap instead of overflowing.
             s.e = double(std::int64_t(std::uint64_t(mm(s.e)) + std::uint64_t(de))) / 1000.0;
@@ -294,8 +476,74 @@ bool decodeChunk(const QByteArray& blob, qint64 t0Ms, QHash<std::uint32_t, Machi
                 msg == kNoMessageTime ? 0 : qint64(std::uint64_t(s.lastDataMs) + std::uint64_t(msg));
             break;
         }
+        case RecordType::Move:
+        case RecordType::MoveGeodetic: {
+            if (!compact)
+                return false;
+            rec.type = RecordType::Position;
+            const bool geodetic = RecordType(type) == RecordType::MoveGeodetic;
+            const std::int64_t re = unzigzag(col[0].getVar()), rn = unzigzag(col[1].getVar()),
+                               du = unzigzag(col[2].getVar());
+            const std::int64_t dh = unzigzag(col[3].getVar()), ds = unzigzag(col[4].getVar());
+            const std::int64_t rData = unzigzag(col[5].getVar()), rMsg = unzigzag(col[6].getVar());
+            const std::int64_t rLat = geodetic ? unzigzag(col[7].getVar()) : 0;
+            const std::int64_t rLon = geodetic ? unzigzag(col[8].getVar()) : 0;
+            for (const Reader& c : col)
+                if (!c.ok)
+                    return false;
+            // The steps follow from the records alone: kept whether or not this one is applied.
+            ChunkEncoder::Track& tr = tracks[rec.idx];
+            const std::int64_t de = wrapAdd(re, tr.moved ? tr.ve : 0), dn = wrapAdd(rn, tr.moved ? tr.vn : 0);
+            const std::int64_t dataOffset = wrapAdd(rData, tr.moved ? tr.dataOffset : 0);
+            const std::int64_t messageOffset = wrapAdd(rMsg, tr.moved ? tr.messageOffset : 0);
+            tr.ve = de;
+            tr.vn = dn;
+            tr.dataOffset = dataOffset;
+            tr.messageOffset = messageOffset;
+            tr.moved = true;
+            std::int64_t dlat = 0, dlon = 0;
+            if (geodetic) {
+                dlat = wrapAdd(rLat, tr.geodetic ? tr.vlat : 0);
+                dlon = wrapAdd(rLon, tr.geodetic ? tr.vlon : 0);
+                tr.vlat = dlat;
+                tr.vlon = dlon;
+            }
+            tr.geodetic = geodetic;
+            if (!apply)
+                break;
+            auto it = states.find(rec.idx);
+            if (it == states.end())
+                break; // no base: nothing to move
+            MachineState& s = *it;
+            if (geodetic && defer && defer->remove(rec.idx) && options.frame) {
+                // The base's lat/lon were still owed (derived from the position before this record).
+                const GeoPoint g = options.frame->toGeodetic({s.e, s.n, s.u});
+                s.lat = g.lat;
+                s.lon = g.lon;
+            }
+            s.e = double(wrapAdd(fixed(s.e, kMoveMetre), de)) / kMoveMetre;
+            s.n = double(wrapAdd(fixed(s.n, kMoveMetre), dn)) / kMoveMetre;
+            s.u = double(wrapAdd(fixed(s.u, kMoveMetre), du)) / kMoveMetre;
+            s.headingDeg = double(wrapAdd(fixed(s.headingDeg, kMoveDegree), dh)) / kMoveDegree;
+            s.speed = double(wrapAdd(fixed(s.speed, kMoveSpeed), ds)) / kMoveSpeed;
+            s.lastDataMs = wrapAdd(rec.tMs, dataOffset);
+            s.lastMessageMs = messageOffset == kNoMessageTime ? 0 : wrapAdd(s.lastDataMs, messageOffset);
+            if (geodetic) {
+                s.lat = double(wrapAdd(fixed(s.lat, kMoveGeodetic), dlat)) / kMoveGeodetic;
+                s.lon = double(wrapAdd(fixed(s.lon, kMoveGeodetic), dlon)) / kMoveGeodetic;
+            } else if (defer) {
+                defer->insert(rec.idx);
+            } else if (options.frame) {
+                const GeoPoint g = options.frame->toGeodetic({s.e, s.n, s.u});
+                s.lat = g.lat;
+                s.lon = g.lon;
+            }
+            break;
+        }
         case RecordType::Removed:
             rec.type = RecordType::Removed;
+            tracks.remove(rec.idx);
+            settle(rec.idx);
             if (apply)
                 states.remove(rec.idx);
             break;

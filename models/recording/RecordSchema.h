@@ -9,7 +9,11 @@ namespace ocu::recording {
 
 // 2: inbound messages (msg_channels, messages) replace the never-written `raw` table of 1; pass counts.
 // 3: the `states` and `keyframes` blobs are qCompress'ed (meta states_codec = zlib); 1 and 2 still read.
-constexpr int kSchemaVersion = 3;
+// 4: compact record headers and Move records (fixed point) in columns, blobs compressed with zstd
+//    (states_codec, messages_codec = zstd); decoded inbound messages only with record.messages; an index on
+//    links. 1 to 3 still read.
+constexpr int kSchemaVersion = 4;
+constexpr int kLegacySchemaVersion = 3; // RecorderOptions::legacySchema3
 
 inline constexpr const char* kSchemaSql = R"SQL(
 CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT);
@@ -28,6 +32,7 @@ CREATE TABLE IF NOT EXISTS commands(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, 
                                     target TEXT, ok INTEGER, audit TEXT);
 CREATE TABLE IF NOT EXISTS links(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, protocol TEXT, link TEXT,
                                  state INTEGER, age_ms INTEGER, detail TEXT);
+CREATE INDEX IF NOT EXISTS links_key ON links(protocol, link, t);
 CREATE TABLE IF NOT EXISTS sitemaps(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, data BLOB);
 CREATE TABLE IF NOT EXISTS msg_channels(idx INTEGER PRIMARY KEY, protocol TEXT, link TEXT, peer TEXT, type TEXT);
 CREATE TABLE IF NOT EXISTS messages(id INTEGER PRIMARY KEY, t0 INTEGER NOT NULL, t1 INTEGER NOT NULL,

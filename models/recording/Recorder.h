@@ -57,6 +57,14 @@ struct RecorderOptions {
     double maxAgeDays = 0;
     int retentionIntervalMs = 60000;
     bool raw = false; // record.raw: raw frames (recordRaw); off by default
+    // record.messages: every decoded inbound message (the tap's onDecoded). Off by default: the replay is
+    // driven by the machine states alone, and the messages cost several times what the states cost
+    // (docs/recording.md, "What replay needs").
+    bool messages = false;
+    // Writes the previous format (schema 3: fixed-width headers, exact Delta records, zlib) instead of
+    // schema 4: the benchmark's figures before schema 4 and the old-schema fixtures of the tests.
+    bool legacySchema3 = false;
+    int zstdLevel = 6; // schema 4's state chunks, keyframes and message chunks
     QString siteName;
     double originLat = 0, originLon = 0, originAlt = 0; // the site frame, for replay's map
     std::function<qint64()> clock;                      // ms since the epoch; default: the wall clock
@@ -113,10 +121,12 @@ public:
         quint64 dropped = 0; // refused: queue full
         quint64 written = 0; // committed
         quint64 commits = 0;
-        quint64 stateBytes = 0;   // machine-state chunk bytes as stored (compressed)
-        quint64 messages = 0;     // inbound messages (and raw frames) committed
-        quint64 messageBytes = 0; // their encoded chunk bytes
-        quint64 writerCpuNs = 0;  // CPU time of the writer thread
+        quint64 stateBytes = 0;    // machine-state chunk bytes as stored (compressed)
+        quint64 stateRawBytes = 0; // the same before compression
+        quint64 keyframeBytes = 0; // keyframe blobs as stored
+        quint64 messages = 0;      // inbound messages (and raw frames) committed
+        quint64 messageBytes = 0;  // their encoded chunk bytes
+        quint64 writerCpuNs = 0;   // CPU time of the writer thread
     };
     Stats stats() const;
     // The older recordings the run's retention deleted so far (file names).
@@ -144,6 +154,8 @@ private:
     std::atomic<quint64> m_dropped{0};
     std::atomic<quint64> m_commits{0};
     std::atomic<quint64> m_stateBytes{0};
+    std::atomic<quint64> m_stateRawBytes{0};
+    std::atomic<quint64> m_keyframeBytes{0};
     std::atomic<quint64> m_writerCpuNs{0};
     std::atomic<qint64> m_lastT{0};
     QPointer<FleetContext> m_ctx;

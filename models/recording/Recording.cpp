@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 
 namespace ocu::recording {
 
@@ -124,12 +123,19 @@ std::unique_ptr<Recording> Recording::open(const QString& path, QString* error) 
         if (!q.next())
             return fail(QCoreApplication::translate("Recording", "%1 is not an OCU recording").arg(path));
         const int v = q.text(0).toInt();
+        r->m_schema = v;
         if (v < 1 || v > kSchemaVersion)
             return fail(QCoreApplication::translate("Recording", "%1: recording schema %2 is not supported")
                             .arg(path)
                             .arg(v));
     }
-    r->m_zlibStates = r->meta(QStringLiteral("states_codec")) == QLatin1String("zlib");
+    r->m_statesCodec = blobCodecFromName(r->meta(QStringLiteral("states_codec")));
+    // Message chunks were always zlib before schema 4 said otherwise.
+    const QString messagesCodec = r->meta(QStringLiteral("messages_codec"));
+    r->m_messagesCodec = messagesCodec.isEmpty() ? BlobCodec::Zlib : blobCodecFromName(messagesCodec);
+    r->m_frame = GeoFrame(GeoPoint{r->meta(QStringLiteral("origin_lat")).toDouble(),
+                                   r->meta(QStringLiteral("origin_lon")).toDouble(),
+                                   r->meta(QStringLiteral("origin_alt")).toDouble()});
     r->m_startMs = r->meta(QStringLiteral("start_ms")).toLongLong();
     // The end as committed: the newest row of any table (end_ms is updated with every commit too).
     qint64 end = r->meta(QStringLiteral("end_ms")).toLongLong();
@@ -167,12 +173,16 @@ void Recording::loadMachineIds() const {
 Recording::StateMap Recording::statesAtIdx(qint64 t) const {
     StateMap states;
     qint64 afterChunk = 0;
+    // Derived lat/lon once per machine at the end, not once per record.
+    QSet<std::uint32_t> pending;
+    const DecodeOptions options = decodeOptions(&pending);
     {
         Query kf(m_db, "SELECT chunk, data, t FROM keyframes WHERE t <= ? ORDER BY t DESC LIMIT 1");
         kf.bind(1, t);
         if (kf.next()) {
             afterChunk = kf.i64(0);
-            decodeChunk(stateBlob(kf.blob(1)), kf.i64(2), states, kMinT, std::numeric_limits<qint64>::max());
+            decodeChunk(stateBlob(kf.blob(1)), kf.i64(2), states, kMinT, std::numeric_limits<qint64>::max(),
+                        {}, options);
         }
     }
     // Chunks are in time order: walk them by id from the keyframe's and stop at the first one after t (a
@@ -180,7 +190,8 @@ Recording::StateMap Recording::statesAtIdx(qint64 t) const {
     Query q(m_db, "SELECT t0, data FROM states WHERE id > ? ORDER BY id");
     q.bind(1, afterChunk);
     while (q.next() && q.i64(0) <= t)
-        decodeChunk(stateBlob(q.blob(1)), q.i64(0), states, kMinT, t);
+        decodeChunk(stateBlob(q.blob(1)), q.i64(0), states, kMinT, t, {}, options);
+    resolveGeodetic(states, pending, m_frame);
     return states;
 }
 
@@ -201,7 +212,9 @@ QString Recording::idOf(std::uint32_t idx) const {
 }
 
 void Recording::walk(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
-                     const std::function<bool(const StateChange&)>& fn) const {
+                     const std::function<bool(const StateChange&)>& fn,
+                     QSet<std::uint32_t>* deferGeodetic) const {
+    const DecodeOptions options = decodeOptions(deferGeodetic);
     // The first chunk ending after `fromExclusive` (index on t1), then by id until one starts after the end.
     qint64 first = -1;
     {
@@ -215,23 +228,25 @@ void Recording::walk(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
     q.bind(1, first);
     bool go = true;
     while (go && q.next() && q.i64(0) <= toInclusive) {
-        decodeChunk(stateBlob(q.blob(1)), q.i64(0), states, fromExclusive, toInclusive,
-                    [&](const DecodedRecord& r) {
-                        if (!go || !fn)
-                            return;
-                        StateChange c;
-                        c.t = r.tMs;
-                        if (r.type == RecordType::Removed) {
-                            c.removed = true;
-                            c.state.id = idOf(r.idx);
-                        } else {
-                            auto it = states.constFind(r.idx);
-                            if (it == states.cend())
-                                return;
-                            c.state = *it;
-                        }
-                        go = fn(c);
-                    });
+        decodeChunk(
+            stateBlob(q.blob(1)), q.i64(0), states, fromExclusive, toInclusive,
+            [&](const DecodedRecord& r) {
+                if (!go || !fn)
+                    return;
+                StateChange c;
+                c.t = r.tMs;
+                if (r.type == RecordType::Removed) {
+                    c.removed = true;
+                    c.state.id = idOf(r.idx);
+                } else {
+                    auto it = states.constFind(r.idx);
+                    if (it == states.cend())
+                        return;
+                    c.state = *it;
+                }
+                go = fn(c);
+            },
+            options);
     }
 }
 
@@ -246,18 +261,24 @@ QStringList Recording::advance(StateMap& states, qint64 fromExclusive, qint64 to
                                QStringList* removed) const {
     QStringList changed;
     QSet<QString> seen;
-    walk(states, fromExclusive, toInclusive, [&](const StateChange& c) {
-        if (c.removed) {
-            if (removed)
-                removed->push_back(c.state.id);
-            changed.removeAll(c.state.id);
-            seen.remove(c.state.id);
-        } else if (!seen.contains(c.state.id)) {
-            seen.insert(c.state.id);
-            changed << c.state.id;
-        }
-        return true;
-    });
+    // Only the ids are needed per record: derived lat/lon once per machine at the end.
+    QSet<std::uint32_t> pending;
+    walk(
+        states, fromExclusive, toInclusive,
+        [&](const StateChange& c) {
+            if (c.removed) {
+                if (removed)
+                    removed->push_back(c.state.id);
+                changed.removeAll(c.state.id);
+                seen.remove(c.state.id);
+            } else if (!seen.contains(c.state.id)) {
+                seen.insert(c.state.id);
+                changed << c.state.id;
+            }
+            return true;
+        },
+        &pending);
+    resolveGeodetic(states, pending, m_frame);
     return changed;
 }
 
@@ -326,7 +347,7 @@ void Recording::messages(qint64 from, qint64 to,
     q.bind(1, from).bind(2, to);
     bool go = true;
     while (go && q.next())
-        decodeMessageChunk(qUncompress(q.blob(1)), q.i64(0), from, to,
+        decodeMessageChunk(uncompressBlob(q.blob(1), m_messagesCodec), q.i64(0), from, to,
                            [&](const RecordedMessage& m) { return go = fn(m); });
 }
 
@@ -369,12 +390,24 @@ QJsonObject Recording::messageJson(const RecordedMessage& m, const MessageChanne
 }
 
 QVector<RecordedLink> Recording::linksAt(qint64 t) const {
-    std::map<QString, RecordedLink> last;
-    for (RecordedLink& l : links(kMinT, t))
-        last[l.protocol + QLatin1Char('\n') + l.link] = std::move(l);
+    // The newest row of each link at t, looked up per link (index links_key, schema 4), not by reading every
+    // link change since the start: a seek late in a long recording stays as fast as an early one.
     QVector<RecordedLink> out;
-    for (auto& [k, l] : last)
-        out.push_back(l);
+    Query q(m_db, "SELECT l.t, l.protocol, l.link, l.state, l.age_ms, l.detail "
+                  "FROM (SELECT DISTINCT protocol, link FROM links) k JOIN links l ON l.id = "
+                  "(SELECT id FROM links WHERE protocol IS k.protocol AND link IS k.link AND t <= ?1 "
+                  "ORDER BY t DESC, id DESC LIMIT 1) ORDER BY l.protocol, l.link");
+    q.bind(1, t);
+    while (q.next()) {
+        RecordedLink l;
+        l.t = q.i64(0);
+        l.protocol = q.text(1);
+        l.link = q.text(2);
+        l.state = LinkState(std::clamp<qint64>(q.i64(3), 0, int(LinkState::Down)));
+        l.dataAgeMs = q.i64(4);
+        l.detail = q.text(5);
+        out.push_back(std::move(l));
+    }
     return out;
 }
 
@@ -538,7 +571,9 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
     auto exec = [&](const char* sql) {
         return sqlite3_exec(dst, sql, nullptr, nullptr, nullptr) == SQLITE_OK;
     };
-    bool ok = exec("PRAGMA journal_mode=WAL") && exec(kSchemaSql) && exec("BEGIN");
+    // 1-KiB pages as the recorder writes schema 4 (less of each chunk's last overflow page lost).
+    bool ok =
+        exec("PRAGMA page_size=1024") && exec("PRAGMA journal_mode=WAL") && exec(kSchemaSql) && exec("BEGIN");
     {
         Query attach(dst, "ATTACH DATABASE ? AS src");
         attach.bind(1, m_path);
@@ -552,7 +587,7 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
                                    std::pair{QStringLiteral("end_ms"), QString::number(to)},
                                    std::pair{QStringLiteral("slice_of"), QFileInfo(m_path).fileName()},
                                    std::pair{QStringLiteral("schema"), QString::number(kSchemaVersion)},
-                                   std::pair{QStringLiteral("states_codec"), QStringLiteral("zlib")}}) {
+                                   std::pair{QStringLiteral("states_codec"), QStringLiteral("zstd")}}) {
             q.bind(1, k).bind(2, v);
             ok = ok && q.run();
         }
@@ -562,56 +597,55 @@ bool Recording::exportSlice(const QString& path, qint64 from, qint64 to, QString
     QHash<QString, std::uint32_t> idxOf;
     for (auto it = m_ids.cbegin(); it != m_ids.cend(); ++it)
         idxOf.insert(it.value(), it.key());
-    QByteArray kf;
-    for (auto it = last.cbegin(); it != last.cend(); ++it)
-        appendFull(kf, it.key(), 0, *it);
+    // Schema 4, as the recorder writes it (Moves' lat/lon derived through the same site frame).
+    auto keyframe = [&](qint64 t) {
+        ChunkEncoder k(nullptr);
+        k.begin(t);
+        for (auto it = last.cbegin(); it != last.cend(); ++it)
+            k.full(it.key(), t, *it);
+        return compressBlob(k.data(), BlobCodec::Zstd, RecorderOptions().zstdLevel);
+    };
     Query insKf(dst, "INSERT OR REPLACE INTO keyframes(t, chunk, n, data) VALUES(?,?,?,?)");
-    insKf.bind(1, from).bind(2, 0).bind(3, last.size()).bind(4, qCompress(kf, 1));
+    insKf.bind(1, from).bind(2, 0).bind(3, last.size()).bind(4, keyframe(from));
     ok = ok && insKf.run();
     Query insState(dst, "INSERT INTO states(t0, t1, n, data) VALUES(?,?,?,?)");
-    QByteArray chunk;
-    qint64 t0 = 0, t1 = 0, lastKeyframe = from, chunkId = 0;
+    ChunkEncoder chunk(&m_frame);
+    qint64 t1 = 0, lastKeyframe = from, chunkId = 0;
     int n = 0;
     const qint64 kfInterval =
         std::max<qint64>(100, meta(QStringLiteral("keyframe_interval_ms")).toLongLong());
     auto flushChunk = [&] {
-        if (chunk.isEmpty())
+        if (n == 0)
             return;
-        insState.bind(1, t0).bind(2, t1).bind(3, n).bind(4, qCompress(chunk, 1));
+        insState.bind(1, chunk.t0())
+            .bind(2, t1)
+            .bind(3, n)
+            .bind(4, compressBlob(chunk.data(), BlobCodec::Zstd, RecorderOptions().zstdLevel));
         ok = ok && insState.run();
         chunkId = sqlite3_last_insert_rowid(dst);
-        chunk.clear();
         n = 0;
         if (t1 - lastKeyframe >= kfInterval) {
-            QByteArray k;
-            for (auto it = last.cbegin(); it != last.cend(); ++it)
-                appendFull(k, it.key(), 0, *it);
-            insKf.bind(1, t1).bind(2, chunkId).bind(3, last.size()).bind(4, qCompress(k, 1));
+            insKf.bind(1, t1).bind(2, chunkId).bind(3, last.size()).bind(4, keyframe(t1));
             ok = ok && insKf.run();
             lastKeyframe = t1;
         }
     };
     changes(from, to, [&](const StateChange& c) {
-        if (!chunk.isEmpty() && c.t - t0 > 1000)
+        if (n > 0 && c.t - chunk.t0() > 1000)
             flushChunk();
-        if (chunk.isEmpty())
-            t0 = c.t;
+        if (n == 0)
+            chunk.begin(c.t);
         t1 = c.t;
         ++n;
         const std::uint32_t idx = idxOf.value(c.state.id);
-        const auto dt = std::int32_t(c.t - t0);
         if (c.removed) {
-            appendRemoved(chunk, idx, dt);
+            chunk.removed(idx, c.t);
             last.remove(idx);
-        } else if (auto p = last.find(idx);
-                   p != last.end() && sameStatus(*p, c.state) && positionEncodable(c.state)) {
-            if (positionEncodable(*p))
-                appendDelta(chunk, idx, dt, c.t, *p, c.state);
-            else
-                appendPosition(chunk, idx, dt, c.t, c.state);
-            applyPosition(*p, c.state, c.t);
-        } else {
-            appendFull(chunk, idx, dt, c.state);
+            return ok;
+        }
+        auto p = last.find(idx);
+        if (p == last.end() || !sameStatus(*p, c.state) || !chunk.move(idx, c.t, *p, c.state)) {
+            chunk.full(idx, c.t, c.state);
             last.insert(idx, c.state);
         }
         return ok;

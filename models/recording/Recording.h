@@ -4,8 +4,11 @@
 #include "models/FleetEvent.h"
 #include "models/MachineState.h"
 #include "models/SiteMapData.h"
+#include "models/recording/BlobCodec.h"
 #include "models/recording/MessageLog.h"
 #include "models/recording/PassCountLog.h"
+#include "models/recording/RecordCodec.h"
+#include "protocols/common/GeoFrame.h"
 
 #include <QHash>
 #include <QIODevice>
@@ -122,17 +125,23 @@ private:
     Recording() = default;
     void loadMachineIds() const;
     QString idOf(std::uint32_t idx) const;
-    // Decodes the chunks after `fromExclusive` up to `toInclusive` onto `states`.
+    // Decodes the chunks after `fromExclusive` up to `toInclusive` onto `states`. With `deferGeodetic`, the
+    // lat/lon of Move records are left to the caller (resolveGeodetic): fn must not need them.
     void walk(StateMap& states, qint64 fromExclusive, qint64 toInclusive,
-              const std::function<bool(const StateChange&)>& fn) const;
-    // A states/keyframes blob as the codec reads it (schema 3: qCompress'ed).
-    QByteArray stateBlob(const QByteArray& stored) const {
-        return m_zlibStates ? qUncompress(stored) : stored;
+              const std::function<bool(const StateChange&)>& fn,
+              QSet<std::uint32_t>* deferGeodetic = nullptr) const;
+    // A states/keyframes blob as the codec reads it (schema 3: qCompress'ed, 4: zstd).
+    QByteArray stateBlob(const QByteArray& stored) const { return uncompressBlob(stored, m_statesCodec); }
+    DecodeOptions decodeOptions(QSet<std::uint32_t>* defer) const {
+        return {m_schema >= 4 ? ChunkFormat::Compact : ChunkFormat::Fixed, &m_frame, defer};
     }
     sqlite3* m_db = nullptr;
     QString m_path;
     qint64 m_startMs = 0, m_endMs = 0;
-    bool m_zlibStates = false;
+    int m_schema = 0;
+    BlobCodec m_statesCodec = BlobCodec::None;
+    BlobCodec m_messagesCodec = BlobCodec::Zlib;
+    GeoFrame m_frame; // the site frame (meta origin_*): schema 4 derives lat/lon from e/n/u through it
     mutable QHash<std::uint32_t, QString> m_ids;
 };
 

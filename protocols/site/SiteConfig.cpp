@@ -110,6 +110,7 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         c.maxAgeDays = r->number("max_age_days", c.maxAgeDays, 0, 36500);
         c.maxFileMb = r->number("max_file_mb", c.maxFileMb, 0, 1e7);
         c.raw = r->boolean("raw", c.raw);
+        c.messages = r->boolean("messages", c.messages);
         r->finish();
     }
     if (auto b = root.object("background")) {

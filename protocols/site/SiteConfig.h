@@ -80,6 +80,7 @@ struct RecordConfig {
     double maxAgeDays = 30;   // recordings older than this go (0 = no limit)
     double maxFileMb = 0;     // one run's file beyond this: its oldest machine data go (0 = no limit)
     bool raw = false;         // record.raw: raw frames too
+    bool messages = false;    // record.messages: every decoded inbound message (off: the states drive replay)
 };
 
 // Issue 19 §3/§4: the 2D map's background raster (GeoTIFF or .mbtiles) and the 3D view's terrain (a GeoTIFF

@@ -165,7 +165,7 @@ private slots:
     }
 
     // Issue 16 §1: the simulated site's inbound messages of every protocol are in the file with their type,
-    // peer and receive time; with record.raw the raw frames too.
+    // peer and receive time when record.messages is on (off by default); with record.raw the raw frames too.
     void recordsEveryProtocolsMessages() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
@@ -174,6 +174,7 @@ private slots:
         SiteConfig cfg = std::move(site.value());
         cfg.record.dir = dir.path().toStdString();
         cfg.record.raw = true;
+        cfg.record.messages = true;
         QString file;
         qint64 tStart = 0, tEnd = 0;
         {
