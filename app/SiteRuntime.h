@@ -34,10 +34,10 @@ public:
     void populate(MainWindow& window);
     // JSON-lines monitor on stdout, commands on stdin; returns the exit code.
     int runHeadless(QApplication& app, double durationSeconds);
-    // Issue 15 §4: the shift report (PDF and/or CSV, empty = not asked); the result says what was written
+    // The shift report (PDF and/or CSV, empty = not asked); the result says what was written
     // (app/ShiftReportCommand.h).
     QJsonObject writeShiftReport(const QString& pdf, const QString& csv);
-    // The flight recorder of this run (issue 16), or nullptr when recording is off or could not start.
+    // The flight recorder of this run, or nullptr when recording is off or could not start.
     recording::Recorder* recorder() const;
 
 private:

@@ -1,4 +1,5 @@
-// Issue 16 benchmarks (docs/performance.md "Flight recorder and replay"): prints figures, asserts nothing.
+// Flight recorder and replay benchmarks (docs/performance.md "Flight recorder and replay"): prints figures,
+// asserts nothing.
 //   1. Recording cost: N machines x H Hz (default 1,000 x 10) plus other traffic (an event and a link change
 //      per second, a command every 10 s) for S seconds of recording time, pushed as the console does; CPU
 //      time of the whole process (producer + writer thread) per second of traffic = share of one core; file

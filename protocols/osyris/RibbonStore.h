@@ -1,5 +1,5 @@
 #pragma once
-// Ribbon store (issue 5 §3): per machine, slot-indexed positions with their properties. Kept in memory
+// Ribbon store: per machine, slot-indexed positions with their properties. Kept in memory
 // and, when a file is given, in SQLite (one file per site, WAL): rows are written inside a transaction
 // that commit() closes, so a crash loses nothing that was committed. Thread-safe (one mutex), so the GUI
 // may read while the station's io thread writes.

@@ -1,6 +1,6 @@
 // The whole console on the built-in simulated site, in-process: the 2D site map shows the mine roads,
 // machines of the three protocols in their status colours and the OSYRIS pass-count patch, each at its
-// projected position (issue 6 acceptance), and STOP ALL from the window reaches the stacks.
+// projected position, and STOP ALL from the window reaches the stacks.
 #include "app/MainWindow.h"
 #include "app/SiteLoader.h"
 #include "app/SiteRuntime.h"
