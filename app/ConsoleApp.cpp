@@ -160,14 +160,7 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
         config.record.dir = options.recordDir.toStdString();
 
     SiteRuntime runtime(config);
-    QString startError = runtime.start();
-    if (!startError.isEmpty()) {
-        std::fprintf(stderr, "ocu: %s\n", qPrintable(startError));
-        if (interactive(options))
-            QMessageBox::critical(nullptr, QCoreApplication::translate("ConsoleApp", "Operator Control Unit"),
-                                  startError);
-        return 3;
-    }
+    runtime.start();
 
     if (options.headless && (!options.shiftReportPdf.isEmpty() || !options.shiftReportCsv.isEmpty()))
         // Written while the stacks still run (before runHeadless stops them); result on stderr.

@@ -98,7 +98,7 @@ SiteRuntime::~SiteRuntime() {
     stop();
 }
 
-QString SiteRuntime::start() {
+void SiteRuntime::start() {
     Impl& d = *m_impl;
     d.frame = GeoFrame(m_config.origin);
     if (m_config.simulation.enabled) {
@@ -161,7 +161,6 @@ QString SiteRuntime::start() {
         d.ctx->alarms()->add(
             makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, p, QStringLiteral("gui")));
     }
-    return {};
 }
 
 // The shared history on PostgreSQL, when the site configuration names one.

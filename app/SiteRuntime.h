@@ -25,8 +25,9 @@ public:
     explicit SiteRuntime(SiteConfig config, QObject* parent = nullptr);
     ~SiteRuntime() override;
 
-    // Starts simulators and stacks; returns an empty string or the reason it could not.
-    QString start();
+    // Starts simulators and stacks. What cannot start (a port taken, a bad URL) does not stop the console:
+    // its link shows down and the reason is an alarm and a warning on stderr.
+    void start();
     void stop();
     const SiteConfig& config() const { return m_config; }
 

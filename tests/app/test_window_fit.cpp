@@ -48,8 +48,7 @@ struct BuiltInConsole {
         SiteConfig cfg = std::move(site.value());
         cfg.record.dir = recordings.path().toStdString();
         runtime = std::make_unique<SiteRuntime>(cfg);
-        if (const QString e = runtime->start(); !e.isEmpty())
-            return e;
+        runtime->start();
         window = std::make_unique<MainWindow>();
         runtime->populate(*window);
         window->resize(size);
