@@ -80,7 +80,7 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
                              QCoreApplication::translate("CommandLine", "Start with the default panel layout "
                                                                         "instead of the saved one."));
     p.addOptions({config, noSim, shot, view, size, settle, lang, log, headless, duration, reset});
-    // Issue 15 §4: the shift report at the end of a headless run.
+    // The shift report at the end of a headless run.
     QCommandLineOption shiftPdf(QStringLiteral("shift-report"),
                                 QCoreApplication::translate("CommandLine",
                                                             "With --headless: write the shift "
@@ -123,7 +123,7 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     QCommandLineOption to(QStringLiteral("to"), tr("End of the export window (as --at)."),
                           QStringLiteral("T"));
     p.addOptions({record, noRecord, replay, at, speed, exJsonl, exCsv, exSlice, from, to});
-    // Issue 19 §6: the night palette from the start (screenshots of it; the View menu toggles it too).
+    // The night palette from the start (screenshots of it; the View menu toggles it too).
     QCommandLineOption night(QStringLiteral("night"),
                              QCoreApplication::translate("CommandLine", "Start with the night palette."));
     p.addOption(night);
@@ -152,7 +152,7 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     o.noSim = p.isSet(noSim);
     o.screenshotFile = p.value(shot);
     o.view = p.value(view).toLower();
-    // "all:<panel>" (issue 18): the whole window with that tabbed panel in front.
+    // "all:<panel>": the whole window with that tabbed panel in front.
     const QString viewPanel = o.view.startsWith(QLatin1String("all:")) ? o.view.mid(4) : o.view;
     if (o.view != QLatin1String("all") && !screenshotViewNames().contains(viewPanel)) {
         error = QCoreApplication::translate("CommandLine", "--view: unknown view \"%1\"; use all, %2")

@@ -19,10 +19,10 @@ struct CommandLineOptions {
     double durationSeconds = 0; // headless: stop after this long (0 = until stdin closes or SIGINT)
     bool resetLayout = false;
     bool night = false; // --night: start with the night palette
-    // Issue 15 §4: with --headless, the shift report written when the run ends (PDF and/or CSV).
+    // With --headless, the shift report written when the run ends (PDF and/or CSV).
     QString shiftReportPdf;
     QString shiftReportCsv;
-    // Flight recorder and replay (issue 16, docs/recording.md).
+    // Flight recorder and replay (docs/recording.md).
     QString recordDir;      // --record DIR: this run's recording goes there (overrides record.dir)
     bool noRecord = false;  // --no-record
     QString replayFile;     // --replay FILE: replay a recording instead of connecting to a site

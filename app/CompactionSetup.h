@@ -1,5 +1,5 @@
 #pragma once
-// Issue 17: the compaction job of a started site: the session (design, areas, reports) fed by the OSYRIS
+// The compaction job of a started site: the session (design, areas, reports) fed by the OSYRIS
 // pass counts, the headless "coverage_report" command, and in the GUI the map overlay and the areas panel
 // under the pass-count summary. Kept out of SiteRuntime so the runtime's assembly stays small.
 #include "protocols/site/SiteConfig.h"

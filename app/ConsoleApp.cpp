@@ -138,7 +138,7 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
     if (!options.logCategories.isEmpty())
         enableLogCategories(options.logCategories);
     if (!options.replayFile.isEmpty())
-        return runReplay(app, options); // issue 16: no site, no stacks
+        return runReplay(app, options); // no site, no stacks
 
     auto site = loadSite(options.configFile);
     if (!site) {
@@ -160,17 +160,10 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
         config.record.dir = options.recordDir.toStdString();
 
     SiteRuntime runtime(config);
-    QString startError = runtime.start();
-    if (!startError.isEmpty()) {
-        std::fprintf(stderr, "ocu: %s\n", qPrintable(startError));
-        if (interactive(options))
-            QMessageBox::critical(nullptr, QCoreApplication::translate("ConsoleApp", "Operator Control Unit"),
-                                  startError);
-        return 3;
-    }
+    runtime.start();
 
     if (options.headless && (!options.shiftReportPdf.isEmpty() || !options.shiftReportCsv.isEmpty()))
-        // Issue 15 §4: written while the stacks still run (before runHeadless stops them); result on stderr.
+        // Written while the stacks still run (before runHeadless stops them); result on stderr.
         QObject::connect(&app, &QCoreApplication::aboutToQuit, &runtime, [&runtime, &options] {
             const QJsonObject r = runtime.writeShiftReport(options.shiftReportPdf, options.shiftReportCsv);
             std::fprintf(stderr, "ocu: %s\n", qPrintable(r.value(QStringLiteral("message")).toString()));
@@ -187,7 +180,7 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
         window.resize(options.size);
         window.show();
     } else if (options.resetLayout || !window.restoreLayout()) {
-        window.showFirstStart(); // issue 19 §6: maximized, not 1200 x 720 on a 1920 x 1080 screen
+        window.showFirstStart(); // maximized, not 1200 x 720 on a 1920 x 1080 screen
     } else {
         window.show();
     }

@@ -243,7 +243,7 @@ QByteArray HeadlessMonitor::result(const QJsonObject& cmd, const CommandResult& 
         o[QStringLiteral("tasks")] = cmd.value(QStringLiteral("tasks"));
     o[QStringLiteral("ok")] = r.ok;
     if (withTargets) {
-        // What went on the wire, per target (issue 13 §1).
+        // What went on the wire, per target.
         o[QStringLiteral("targets")] = targetsToJson(r.targets);
     }
     o[QStringLiteral("message")] = r.message;
@@ -300,7 +300,7 @@ bool HeadlessMonitor::isStopAll(const QByteArray& raw) {
     return name == QLatin1String("stop_all");
 }
 
-// Issue 17: commands of other parts of the console, by name.
+// Commands of other parts of the console, by name.
 static QHash<QString, HeadlessMonitor::LocalCommand>& localCommands() {
     static QHash<QString, HeadlessMonitor::LocalCommand> commands;
     return commands;
@@ -339,9 +339,9 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
         printAll();
         return result(cmd, true, QStringLiteral("%1 machines").arg(m_fleet ? m_fleet->rowCount() : 0));
     }
-    if (name == QLatin1String("counters")) // issue 14 §6: rejects per link and reason
+    if (name == QLatin1String("counters")) // rejects per link and reason
         return countersResult(cmd);
-    if (auto q = m_queries.constFind(name); q != m_queries.constEnd()) { // issue 18: module queries
+    if (auto q = m_queries.constFind(name); q != m_queries.constEnd()) { // module queries
         QJsonObject o = (*q)(cmd);
         o[QStringLiteral("type")] = QStringLiteral("result");
         o[QStringLiteral("cmd")] = name;
@@ -392,11 +392,11 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
         emit commandHandled(line);
         return line;
     };
-    if (name == QLatin1String("auto_dispatch")) // issue 15 §5 (models/AutoDispatcher.h)
+    if (name == QLatin1String("auto_dispatch")) // models/AutoDispatcher.h
         return localResult(AutoDispatcher::command(m_gate->bridges(), cmd, origin));
-    if (const auto local = localCommands().find(name); local != localCommands().end()) // issue 17
+    if (const auto local = localCommands().find(name); local != localCommands().end())
         return localResult(local.value()(cmd));
-    if (name == QLatin1String("shift_report")) { // issue 15 §4 (app/ShiftReportCommand.h)
+    if (name == QLatin1String("shift_report")) { // app/ShiftReportCommand.h
         ShiftReportRequest r{cmd.value(QStringLiteral("pdf")).toString(),
                              cmd.value(QStringLiteral("csv")).toString(), std::nullopt,
                              cmd.value(QStringLiteral("site")).toString()};
@@ -424,7 +424,7 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
                                  : QStringLiteral("unknown command %1").arg(name));
 }
 
-// ---- issue 15: dispatch (ISO 23725 haul trucks) ----
+// ---- Dispatch (ISO 23725 haul trucks) ----
 // assign / reset_assignment go through the gate to the bridge owning "id" (audited; the result lists the
 // truck as its target, sent only when the socket took the request). production answers from the bridges'
 // dispatch views (what the trucks reported), without touching the wire.
@@ -491,7 +491,7 @@ QByteArray HeadlessMonitor::dispatchCommand(const QString& name, const QJsonObje
                    [&](CommandGate::ResultHandler h) { gate->command(name, args, origin, std::move(h)); });
 }
 
-// ---- {"cmd":"counters"} (issue 14 §6) ----
+// ---- {"cmd":"counters"} ----
 QByteArray HeadlessMonitor::countersResult(const QJsonObject& cmd) {
     QJsonArray links;
     for (const QPointer<FleetBridge>& b : std::as_const(m_bridges)) {

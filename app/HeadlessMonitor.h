@@ -1,5 +1,5 @@
 #pragma once
-// The headless monitor (issue 6 §8): JSON lines on an output device (stdout) for machine changes
+// The headless monitor: JSON lines on an output device (stdout) for machine changes
 // (rate-limited per machine, default 1 Hz; stop/link/mode/control/health/staleness changes are printed at
 // once), link changes and alarm/event entries; JSON-line commands on an input device (stdin) answered with
 // one result line each. Role and authority are enforced by the bridges, exactly as for the GUI, and every
@@ -28,11 +28,11 @@
 //   {"cmd":"shift_report","pdf":"shift.pdf","csv":"shift.csv","plan_tonnes":30000} (either file may be left
 //   out; result "written":{"pdf":true,"csv":true}, "loads", "tonnes", "cycles"; ok only when all were
 //   written)
-//   {"cmd":"auto_dispatch","on":true|false} (without "on": the state): the automatic dispatcher (issue 15
-//   §5, models/AutoDispatcher.h); result "on", "dispatchers":[{"bridge","on","sent","last"}]
+//   {"cmd":"auto_dispatch","on":true|false} (without "on": the state): the automatic dispatcher
+//   (models/AutoDispatcher.h); result "on", "dispatchers":[{"bridge","on","sent","last"}]
 //   {"cmd":"coverage_report","pdf":"c.pdf","csv":"c.csv","geotiff":"c.tif","area":"Lot 1","lift":-1}
-//   (issue 17, models/coverage/CompactionSession; result "written":{"pdf","csv","geotiff"}, "errors")
-//   {"cmd":"counters"}: one result line with every stack's counters per link (issue 14 §6):
+//   (models/coverage/CompactionSession; result "written":{"pdf","csv","geotiff"}, "errors")
+//   {"cmd":"counters"}: one result line with every stack's counters per link:
 //     {"type":"result","cmd":"counters","ok":true,"message":"3 links","links":[{"protocol":"osyris",
 //      "link":"osyris:239.255.0.1:5000","rejected_total":4,"rejected":{"rejected.too_short":3,
 //      "implausible.speed":1},"counters":{"rx.datagrams":120,...}}, ...]}
@@ -82,7 +82,7 @@ public:
     void setRateLimitMs(int ms);
     int rateLimitMs() const { return m_rateMs; }
     void addBridge(FleetBridge* bridge);
-    // Issue 17: commands answered by another part of the console (e.g. "coverage_report" by the compaction
+    // Commands answered by another part of the console (e.g. "coverage_report" by the compaction
     // session): f(cmd) returns the result's fields ("ok", "message", ...). GUI thread; remove when gone.
     using LocalCommand = std::function<QJsonObject(const QJsonObject&)>;
     static void setLocalCommand(const QString& name, LocalCommand f); // an empty f removes it
@@ -90,7 +90,7 @@ public:
     // by "id" (or of the "protocol"), and answered with "missing \"id\"" when both are absent.
     void addProtocolCommands(const QStringList& names);
 
-    // Issue 18: a read-only query a module answers itself (not through the command gate, not audited), e.g.
+    // A read-only query a module answers itself (not through the command gate, not audited), e.g.
     // {"cmd":"video_status"}: the handler returns the result's fields ("ok", "message", ...); the monitor
     // adds "type", "cmd" and "req".
     using QueryHandler = std::function<QJsonObject(const QJsonObject& cmd)>;
@@ -134,7 +134,7 @@ private:
     void consumeInput(const QByteArray& chunk);
     QJsonObject machineJson(const MachineState& m, bool stale, qint64 ageMs) const;
     QByteArray result(const QJsonObject& cmd, bool ok, const QString& message);
-    // Issue 15: assign, reset_assignment, production (ISO 23725 dispatch).
+    // Assign, reset_assignment, production (ISO 23725 dispatch).
     QByteArray dispatchCommand(const QString& name, const QJsonObject& cmd);
     QByteArray result(const QJsonObject& cmd, const CommandResult& r, bool withTargets);
     QByteArray handleLine(const QByteArray& line, std::shared_ptr<EarlyStop> early);
@@ -167,7 +167,7 @@ private:
     int m_pendingResults = 0;
     bool m_inputEnded = false;
     bool m_finishedSignalled = false;
-    QHash<QString, QueryHandler> m_queries; // issue 18
+    QHash<QString, QueryHandler> m_queries;
 };
 
 } // namespace ocu

@@ -1,6 +1,6 @@
 #pragma once
 // One status-bar indicator per protocol link: a coloured lamp, the state in words and the data age; its
-// details (tooltip) add each link's rejected peer input by reason (issue 14 §6).
+// details (tooltip) add each link's rejected peer input by reason.
 #include "models/FleetBridge.h"
 
 #include <QElapsedTimer>

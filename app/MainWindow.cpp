@@ -112,7 +112,7 @@ void MainWindow::setPanelWidget(Panel panel, QWidget* widget) {
     QWidget* old = d->widget();
     QWidget* content = widget;
     // Panels of controls (not a map or a table that scroll by themselves) scroll when their dock is narrower
-    // than they need, instead of forcing the whole column wide and squeezing the map (issue 19 §6: German
+    // than they need, instead of forcing the whole column wide and squeezing the map (German
     // texts at 1366 x 768 left the map a small square).
     if (widget != nullptr &&
         (panel == Panel::JausControl || panel == Panel::Teleop || panel == Panel::PassCounts ||
@@ -179,7 +179,7 @@ void MainWindow::createToolBar() {
     tb->addSeparator();
 
     // The failed-stop banner: a full-width red bar under the safety toolbar, shown only while a stop did not
-    // reach every target (issue 13 §1). Not movable, not closable except by its own Dismiss button.
+    // reach every target. Not movable, not closable except by its own Dismiss button.
     addToolBarBreak(Qt::TopToolBarArea);
     m_bannerBar = new QToolBar(tr("Stop failure"), this);
     m_bannerBar->setObjectName(QStringLiteral("toolbar-stop-banner"));
@@ -315,7 +315,7 @@ void MainWindow::applyDefaultLayout() {
     tabifyDockWidget(m_docks[Panel::SiteMap], m_docks[Panel::Site3D]);
     tabifyDockWidget(m_docks[Panel::JausControl], m_docks[Panel::Teleop]);
     tabifyDockWidget(m_docks[Panel::PassCounts],
-                     m_docks[Panel::Dispatch]); // issue 15: the dispatcher's table
+                     m_docks[Panel::Dispatch]); // the dispatcher's table
     for (QDockWidget* d : std::as_const(m_docks))
         d->show();
     m_docks[Panel::SiteMap]->raise();
@@ -348,7 +348,7 @@ void MainWindow::focusPanel(Panel panel) {
 }
 
 void MainWindow::createPanelShortcuts(QMenu* view) {
-    // Issue 19 §6: a keyboard-only path to every panel (also listed in Help > Keyboard shortcuts and
+    // A keyboard-only path to every panel (also listed in Help > Keyboard shortcuts and
     // docs/keyboard.md).
     QMenu* go = view->addMenu(tr("&Go to panel"));
     int n = 1;
@@ -363,7 +363,7 @@ void MainWindow::createPanelShortcuts(QMenu* view) {
 }
 
 QString MainWindow::keyboardHelpText() const {
-    // Issue 19 §6: the go-to-panel lines come from the window's own Ctrl+N actions (the main panels and the
+    // The go-to-panel lines come from the window's own Ctrl+N actions (the main panels and the
     // ones a protocol module adds, e.g. Ctrl+9 Production), so the help never lists fewer than exist.
     QStringList lines{
         tr("F12 or Ctrl+Shift+Space: STOP ALL"),
@@ -395,13 +395,13 @@ void MainWindow::fitDocksToWindow() {
     // quarter of the height. Minimum sizes of the panels still apply.
     resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]},
                 {w * 24 / 100, w * 50 / 100, w * 26 / 100}, Qt::Horizontal);
-    // Issue 15: on a short screen (a 1366x768 field laptop) the bottom row (event log, dispatch) gets 40 %
+    // On a short screen (a 1366x768 field laptop) the bottom row (event log, dispatch) gets 40 %
     // and the dispatch side half of it, so the dispatch table shows trucks, not two rows.
-    // Issue 19 §6: 30 % left the event log four table rows at 1920x1080 (40 % three at 1366x768, German two
+    // 30 % left the event log four table rows at 1920x1080 (40 % three at 1366x768, German two
     // rows of controls more); 36 % / 42 % give it ten / six rows and the map
     // still ~60 % of the height.
     const int bottom = h < 900 ? 42 : 36;
-    const int dispatch = w < 1600 ? 50 : 55; // at 1920: all ten columns of the dispatch table (issue 15)
+    const int dispatch = w < 1600 ? 50 : 55; // at 1920: all ten columns of the dispatch table
     resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]},
                 {h * (100 - bottom) / 100, h * bottom / 100}, Qt::Vertical);
     resizeDocks({m_docks[Panel::EventLog], m_docks[Panel::PassCounts]},

@@ -54,7 +54,7 @@ public:
     void saveLayout() const;
     bool restoreLayout();
     void resetLayout();
-    // Shares the window's width and height among the default docks in proportion (issue 19 §6: at 1366 x 768
+    // Shares the window's width and height among the default docks in proportion (at 1366 x 768
     // the map must not end up a small square); called on the first show of a default layout and by
     // resetLayout().
     void fitDocksToWindow();

@@ -31,7 +31,7 @@ struct ModuleStart {
     const GeoFrame& frame;
     FleetContext* fleet;       // the bridge is added to it
     QObject* owner;            // owns the bridge
-    MessageTap* tap = nullptr; // issue 16: the flight recorder's tap on inbound messages (nullptr: none)
+    MessageTap* tap = nullptr; // the flight recorder's tap on inbound messages (nullptr: none)
 };
 
 // What a module needs to fill its panels.
@@ -74,7 +74,7 @@ public:
     // Commands of the headless monitor that go to this protocol's bridge (besides stop and clear_stop, which
     // every bridge answers): the monitor asks for an "id" when one of them comes without.
     virtual QStringList headlessCommands() const { return {}; }
-    // Issue 18: once the headless monitor exists, a module may add its own read-only queries to it.
+    // Once the headless monitor exists, a module may add its own read-only queries to it.
     virtual void attachHeadless(HeadlessMonitor* monitor) { (void)monitor; }
 };
 

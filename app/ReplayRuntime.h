@@ -1,5 +1,5 @@
 #pragma once
-// `ocu --replay FILE` (issue 16 §2/§3, docs/recording.md): the console's models and views driven from a
+// `ocu --replay FILE` (docs/recording.md): the console's models and views driven from a
 // flight recording, with no protocol stack and every command disabled; or, headless, the JSON lines of the
 // run; or an export of a time window (JSON lines, CSV, a slice as a new recording).
 #include "app/CommandLine.h"

@@ -51,8 +51,8 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
     }
     {
         // A widget that has not shown what it is about yet sets the property "screenshotPending": a video
-        // view still connecting (issue 18: its first frame), a map whose pass-count tiles are still owed to
-        // its frame budget (issue 17 §6). Up to 10 s for them.
+        // view still connecting (its first frame), a map whose pass-count tiles are still owed to
+        // its frame budget. Up to 10 s for them.
         const auto widgets = target->findChildren<QWidget*>();
         auto pending = [&widgets] {
             return std::any_of(widgets.begin(), widgets.end(), [](QWidget* w) {

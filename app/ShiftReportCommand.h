@@ -1,5 +1,5 @@
 #pragma once
-// The shift report from the command line and the headless monitor (issue 15 §4): writes the production
+// The shift report from the command line and the headless monitor: writes the production
 // model's report (the ISO 23725 bridge's) as PDF and/or CSV and says truthfully what was written.
 #include <QJsonObject>
 #include <QString>

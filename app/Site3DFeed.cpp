@@ -22,9 +22,9 @@ Site3DFeed::Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* sele
     connect(fleet, &FleetModel::machineRemoved, this, [this] { m_machinesDirty = true; });
     connect(fleet, &FleetModel::machineStaleChanged, this, [this] { m_machinesDirty = true; });
     // On screen, not just visible: a dock in a tab group behind another (the console's default layout) stays
-    // isVisible() with nothing of it on screen, and gets no hide event (issue 19 §7: the hidden 3D tab took
+    // isVisible() with nothing of it on screen, and gets no hide event (the hidden 3D tab took
     // ~2 % of a core preparing 1,000 machines 10 times a second). The same OnScreenWatcher as the video and
-    // teleop panels tells; nothing is prepared while off screen (issue 19 §4), what changed meanwhile stays
+    // teleop panels tells; nothing is prepared while off screen, what changed meanwhile stays
     // dirty and is pushed at once when the panel comes in front. Machines go out at most every 100 ms and
     // only when the fleet changed, so the view never draws faster than the data arrive.
     m_onScreen = new OnScreenWatcher(view);

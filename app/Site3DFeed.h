@@ -25,7 +25,7 @@ public:
     Site3DFeed(Site3DView* view, FleetModel* fleet, FleetSelection* selection, QObject* parent = nullptr);
 
     void setSiteMap(const SiteMapData& map);
-    // The ground from the site's DEM (issue 19 §4); an invalid grid = flat ground under the map.
+    // The ground from the site's DEM; an invalid grid = flat ground under the map.
     void setTerrain(const TerrainGrid3D& grid);
     void setPassCountLayer(const PassCountLayer* layer);
     // The 2D map's palette and target (the operator's choice in the pass-count panel): the 3D surface is

@@ -48,7 +48,7 @@
 
 namespace ocu {
 
-class CompactionSession; // issue 17
+class CompactionSession;
 
 struct SiteRuntime::Impl {
     GeoFrame frame;
@@ -56,10 +56,10 @@ struct SiteRuntime::Impl {
     FleetContext* ctx = nullptr;
     OwnPosition* own = nullptr;
     std::vector<std::unique_ptr<ProtocolModule>> modules = makeProtocolModules();
-    recording::Recorder* recorder = nullptr; // issue 16: the flight recorder of this run
+    recording::Recorder* recorder = nullptr; // the flight recorder of this run
     QStringList startProblems;
     bool stopped = false;
-    CompactionSession* compaction = nullptr; // issue 17 (app/CompactionSetup)
+    CompactionSession* compaction = nullptr; // app/CompactionSetup
 
     // The site map: what the bridges offer (today the ISO 23725 AHS map), in module order.
     SiteMapData mergedMap() const {
@@ -98,7 +98,7 @@ SiteRuntime::~SiteRuntime() {
     stop();
 }
 
-QString SiteRuntime::start() {
+void SiteRuntime::start() {
     Impl& d = *m_impl;
     d.frame = GeoFrame(m_config.origin);
     if (m_config.simulation.enabled) {
@@ -161,10 +161,9 @@ QString SiteRuntime::start() {
         d.ctx->alarms()->add(
             makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, p, QStringLiteral("gui")));
     }
-    return {};
 }
 
-// Issue 16 §4: the shared history on PostgreSQL, when the site configuration names one.
+// The shared history on PostgreSQL, when the site configuration names one.
 void SiteRuntime::startControlRoomHistory() {
     Impl& d = *m_impl;
     if (!m_config.historyPostgres)
@@ -305,7 +304,7 @@ void SiteRuntime::populate(MainWindow& window) {
     connect(d.own, &OwnPosition::fixChanged, map, &SiteMapView::setOwnFix);
     // Frame the whole site once the first machines have arrived (unless the operator has taken over).
     QTimer::singleShot(1500, map, [map] { map->refitIfAuto(); });
-    // Issue 19 §3: the background raster named by the site (the simulated pit's hillshade by default).
+    // The background raster named by the site (the simulated pit's hillshade by default).
     if (!m_config.background.raster.empty()) {
         connect(map, &SiteMapView::backgroundFailed, this, [this](const QString& msg) {
             qCWarning(lcApp).noquote() << "map background:" << msg;
@@ -332,7 +331,7 @@ void SiteRuntime::populate(MainWindow& window) {
     }
     window.setPanelWidget(Panel::Site3D, view3d);
 #ifdef OCU_HAVE_COVERAGE
-    attachCompaction3D(d.compaction, view3d); // issue 17
+    attachCompaction3D(d.compaction, view3d);
 #endif
 #else
     QObject* feed = nullptr;
@@ -342,7 +341,7 @@ void SiteRuntime::populate(MainWindow& window) {
 
     auto* passPanel = new PassCountPanel;
     passPanel->setLayer(d.passLayer());
-    // Issue 17 §2/§5: lifts and filters of the layer's source; crew messages beside the pass counts.
+    // Lifts and filters of the layer's source; crew messages beside the pass counts.
     QWidget* passDock = passPanel;
     for (const auto& module : d.modules) {
         FleetBridge* b = module->bridge();
@@ -385,7 +384,7 @@ void SiteRuntime::populate(MainWindow& window) {
         if (!b)
             continue;
 #ifdef OCU_HAVE_COVERAGE
-        watchCompactionCounts(d.compaction, b); // issue 17: the areas' statistics follow the counts
+        watchCompactionCounts(d.compaction, b); // the areas' statistics follow the counts
 #endif
         connect(b, &FleetBridge::siteMapChanged, map, [this, map, feed] {
             const SiteMapData m = m_impl->mergedMap();
@@ -403,7 +402,7 @@ void SiteRuntime::populate(MainWindow& window) {
 #endif
         });
         LinkIndicator* ind = window.linkIndicator(module->displayName());
-        ind->watchBridge(b); // reject counters per link in its details (issue 14 §6)
+        ind->watchBridge(b); // reject counters per link in its details
         // A standing condition of the stack (e.g. JAUS without its group socket); the stacks started in
         // start(), before the window is filled.
         ind->setNote(b->statusNote());
@@ -437,7 +436,7 @@ void SiteRuntime::populate(MainWindow& window) {
     connect(&window, &MainWindow::stopAllRequested, ctx->gate(),
             [ctx] { ctx->gate()->stopAll(QStringLiteral("gui")); });
     // A stop that did not reach every target, or that a machine did not confirm, is shown loudly until the
-    // operator dismisses it or a later STOP ALL reaches everything (issue 13 §1).
+    // operator dismisses it or a later STOP ALL reaches everything.
     QPointer<MainWindow> win(&window);
     connect(ctx->gate(), &CommandGate::stopFinished, &window, [win](const CommandResult& r, const QString&) {
         if (!win)
@@ -475,7 +474,7 @@ void SiteRuntime::populate(MainWindow& window) {
             dispatchLive |= p == Panel::Dispatch && m->bridge();
         }
     }
-    // Issue 17: a site with pass counts and no haulage to dispatch shows the pass counts in front of the
+    // A site with pass counts and no haulage to dispatch shows the pass counts in front of the
     // Dispatch notice that shares their place (a saved layout still wins, it is restored after this).
     if (!dispatchLive && d.passLayer())
         window.dock(Panel::PassCounts)->raise();

@@ -25,8 +25,9 @@ public:
     explicit SiteRuntime(SiteConfig config, QObject* parent = nullptr);
     ~SiteRuntime() override;
 
-    // Starts simulators and stacks; returns an empty string or the reason it could not.
-    QString start();
+    // Starts simulators and stacks. What cannot start (a port taken, a bad URL) does not stop the console:
+    // its link shows down and the reason is an alarm and a warning on stderr.
+    void start();
     void stop();
     const SiteConfig& config() const { return m_config; }
 
@@ -34,10 +35,10 @@ public:
     void populate(MainWindow& window);
     // JSON-lines monitor on stdout, commands on stdin; returns the exit code.
     int runHeadless(QApplication& app, double durationSeconds);
-    // Issue 15 §4: the shift report (PDF and/or CSV, empty = not asked); the result says what was written
+    // The shift report (PDF and/or CSV, empty = not asked); the result says what was written
     // (app/ShiftReportCommand.h).
     QJsonObject writeShiftReport(const QString& pdf, const QString& csv);
-    // The flight recorder of this run (issue 16), or nullptr when recording is off or could not start.
+    // The flight recorder of this run, or nullptr when recording is off or could not start.
     recording::Recorder* recorder() const;
 
 private:

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
     // First, before any thread or library (SDL) installs its own: SIGINT/SIGTERM/SIGHUP quit cleanly.
     ocu::installQuitSignalHandlers();
     // The console's stop-path threads (stacks' io threads, the headless stdin reader) ahead of ordinary
-    // threads where the OS permits (issue 13 §10, docs/architecture.md).
+    // threads where the OS permits (docs/decisions/stop-from-callers-thread.md).
     ocu::enableStopPathPriority();
     // --headless, --help and --version need no display at all, nor does --screenshot when there is none;
     // decide the platform before QApplication exists.

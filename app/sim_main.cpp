@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
                                  QStringLiteral("Positions per second of each simulated haul truck (1-10; "
                                                 "--truck-rate is the older name)."),
                                  QStringLiteral("HZ"));
-    // Issue 17 §7: the simulated paving train on a long job.
+    // The simulated paving train on a long job.
     QCommandLineOption pavingJob(QStringLiteral("paving-job"),
                                  QStringLiteral("The paving train drives a long job: a LandXML file (first "
                                                 "alignment, UTM) or \"built-in\"."),

@@ -1,4 +1,4 @@
-// Issue 17 §6: the coverage report of a 10 km x 12 m job with 0.34 m cells and 3 lifts (about 3.1 M counted
+// The coverage report of a 10 km x 12 m job with 0.34 m cells and 3 lifts (about 3.1 M counted
 // cells): statistics (one area over the whole job, 270 station ranges of the shipped design), the CSV of every
 // lift through PROJ, the GeoTIFF of the top view through GDAL, and the PDF. Prints wall and CPU time per part
 // and in all (target: the whole report in <= 10 s), and the snapshot's memory.

@@ -1,4 +1,4 @@
-// bench_dispatch_panel (issue 15 acceptance): the GUI-thread cost of one dispatch update for 1,000 haul
+// bench_dispatch_panel: the GUI-thread cost of one dispatch update for 1,000 haul
 // trucks.
 //  * BM_DispatchUpdate/N: N of the 1,000 trucks change (production state, payload, way, assignment status
 //    in turn) and are announced in one trucksChanged batch, as IsoBridge delivers them; measured: the

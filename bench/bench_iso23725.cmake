@@ -9,7 +9,7 @@ if(TARGET ocu_sim_iso23725 AND TARGET ocu_bridges)
   ocu_add_bench(NAME bench_iso_bridge SOURCES ${CMAKE_CURRENT_LIST_DIR}/bench_iso_bridge.cpp
                 LIBS ocu_sim_iso23725 ocu_bridges)
 endif()
-# Issue 15: assignment request -> response round trip (p50/p99) with 1,000 trucks at 10 Hz on the same link.
+# Assignment request -> response round trip (p50/p99) with 1,000 trucks at 10 Hz on the same link.
 if(TARGET ocu_sim_iso23725 AND TARGET ocu_bridges)
   ocu_add_bench(NAME bench_iso_assign SOURCES ${CMAKE_CURRENT_LIST_DIR}/bench_iso_assign.cpp
                 LIBS ocu_sim_iso23725 ocu_bridges)

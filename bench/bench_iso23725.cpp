@@ -98,7 +98,7 @@ void BM_ParseMap100kNodes20kWays(benchmark::State& state) {
 }
 BENCHMARK(BM_ParseMap100kNodes20kWays)->Unit(benchmark::kMillisecond)->Iterations(3);
 
-// A generated 20,000-way MapConnectivityV1 (issue 15 §2): a 142 x 141 grid of ways, each connected to its
+// A generated 20,000-way MapConnectivityV1: a 142 x 141 grid of ways, each connected to its
 // four neighbours (one in seven of those connections one-way, so the graph is directed), roads of 50-500 m,
 // every tenth way an area. The route goes corner to corner: the search visits about the whole graph.
 MapConnectivityV1 gridConnectivity(int cols, int rows, std::uint32_t seed) {

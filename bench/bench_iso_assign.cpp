@@ -1,4 +1,4 @@
-// bench_iso_assign (issue 15 acceptance): the assignment round trip on loopback under a full fleet. The
+// bench_iso_assign: the assignment round trip on loopback under a full fleet. The
 // console (IsoBridge, its stack's io thread, this GUI thread) sends HaulTruckAssignmentRequestV2 to one truck
 // at a time while 1,000 simulated trucks report positions at 10 Hz over the same ws:// link (the simulated
 // AHS in this process, its own io thread); the round trip runs from IsoBridge::command("assign") on the GUI

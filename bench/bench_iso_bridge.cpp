@@ -1,4 +1,4 @@
-// bench_iso_bridge: the ISO 23725 positions path end to end on the console's side (issue 12 point 4):
+// bench_iso_bridge: the ISO 23725 positions path end to end on the console's side:
 // 1,000 simulated trucks at 10 Hz over loopback ws:// -> IsoStack io thread (decode, FmsCore) -> IsoBridge
 // -> the bridge's coalescer -> FleetModel on the GUI thread. Reports, per position received:
 //  * io_cpu_us_per_pos: CPU time of the stack's io thread ("iso23725"), all of it (WebSocket, decode, core,

@@ -1,3 +1,3 @@
 ocu_add_bench(NAME bench_jaus SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bench_jaus.cpp LIBS ocu_sim_jaus)
-# Issue 18: the simulated cameras' rendering cost per frame.
+# The simulated cameras' rendering cost per frame.
 ocu_add_bench(NAME bench_sim_camera SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bench_sim_camera.cpp LIBS ocu_sim_jaus)

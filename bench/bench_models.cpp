@@ -1,4 +1,4 @@
-// bench_models: the telemetry path of issue 6 under the acceptance load.
+// bench_models: the telemetry path (stack -> coalescer -> models) under the full fleet's load.
 //  * BM_FleetAt10Hz: a worker thread publishes 1,000 machines every 100 ms (10,000 positions/s) through a
 //    FleetBridge (coalescer) for 5 s while the GUI thread runs the event loop with FleetModel, a sorted
 //    FleetFilterProxy and FleetModel::refresh at 2 Hz. Reports the GUI thread's CPU busy fraction, the

@@ -1,4 +1,4 @@
-// Issue 18: CPU cost of a simulated camera's synthetic view (CameraScene: ground grid in perspective, sky,
+// CPU cost of a simulated camera's synthetic view (CameraScene: ground grid in perspective, sky,
 // boxes, time code) per frame, at the demo's 640x360 and the benchmark's 1280x720. The H.264 encoding
 // (x264enc ultrafast / zerolatency) comes on top and is GStreamer's; the console's decode cost is
 // bench_video's.

@@ -1,5 +1,5 @@
 # 2D site map: full repaint at 1920x1080 offscreen with 1,000 machines, 5,000 ways and a 1 km² pass-count layer;
-# with the ISO 23725 simulator also the simulated pit with its hillshade background (issue 19 §7).
+# with the ISO 23725 simulator also the simulated pit with its hillshade background.
 if(TARGET ocu_widgets)
   set(_sitemap_libs ocu_widgets)
   if(TARGET ocu_sim_iso23725)

@@ -167,7 +167,7 @@ static void BM_PassCountRecolour(benchmark::State& state) {
 BENCHMARK(BM_PassCountRecolour)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 #ifdef OCU_BENCH_HAVE_PIT
-// Issue 19 §7: the simulated pit as an operator sees it at 1920x1080 — 1,000 haul trucks (SVG symbols at the
+// The simulated pit as an operator sees it at 1920x1080 — 1,000 haul trucks (SVG symbols at the
 // minimum legible size, decluttered name labels, trails), the pit's roads and areas with their names, and the
 // pit's hillshade as background raster (GDAL-warped tile pyramid).
 //  * BM_FullRepaintSite: view changed every frame, so the static layer (background tiles, roads, areas) is

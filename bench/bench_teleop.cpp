@@ -1,4 +1,4 @@
-// Teleop latency (issue 7): a joystick axis change -> SetWrenchEffort bytes arriving at the simulated UGV
+// Teleop latency: a joystick axis change -> SetWrenchEffort bytes arriving at the simulated UGV
 // over loopback, while 1,000 other machines update the fleet model at 10 Hz and the fleet list and the 2D
 // map are on screen. A small harness (not Google Benchmark): it prints percentiles of N samples.
 //

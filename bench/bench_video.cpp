@@ -1,4 +1,4 @@
-// bench_video (issue 18): glass-to-glass latency of the console's video on loopback. A loopback RTSP server
+// bench_video: glass-to-glass latency of the console's video on loopback. A loopback RTSP server
 // (tests/video/TestRtspServer: x264 zerolatency/ultrafast, 1280x720, 30 fps) stamps the capture time into
 // each frame (protocols/common/FrameTimeCode.h) just before encoding; the console's VideoPlayer receives,
 // decodes (GStreamer threads) and hands the newest frame to the GUI thread, where the VideoView paints it;

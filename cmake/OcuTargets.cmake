@@ -38,7 +38,7 @@ function(ocu_add_test)
     set_tests_properties(${T_NAME} PROPERTIES ENVIRONMENT "QT_QPA_PLATFORM=offscreen;DISPLAY=")
   endif()
   set_tests_properties(${T_NAME} PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}")
-  # Issue 16: a console started by a test records into the build tree, never into the user's home.
+  # A console started by a test records into the build tree, never into the user's home.
   set_property(TEST ${T_NAME} APPEND PROPERTY ENVIRONMENT
                "OCU_RECORD_DIR=${CMAKE_BINARY_DIR}/test-recordings/${T_NAME}")
   if(T_SERIAL)

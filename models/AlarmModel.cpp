@@ -174,7 +174,7 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
         if (index.column() == ColText && !e.details.isEmpty())
             return e.details.mid(0, 20).join(QLatin1Char('\n')) +
                    (e.details.size() > 20 ? tr("\n… and %1 more").arg(e.details.size() - 20) : QString());
-        // The full text of the columns that may be narrower than their content (issue 19 §6).
+        // The full text of the columns that may be narrower than their content.
         if (index.column() == ColText)
             return e.text;
         if (index.column() == ColMachine)

@@ -1,8 +1,8 @@
 #pragma once
-// Alarms and event log (issue 6 §7): link loss, timeouts, health faults, diagnostics, discrepancies,
+// Alarms and event log: link loss, timeouts, health faults, diagnostics, discrepancies,
 // control lost, text messages, audit entries. Alarms (requiresAck) stay unacknowledged until an operator
 // acknowledges them; the unacknowledged count feeds the status bar.
-// Alarm management (issue 19 §5, EEMUA 191 / ISA-18.2): every alarm has a stable key (alarmKey: cause,
+// Alarm management (EEMUA 191 / ISA-18.2): every alarm has a stable key (alarmKey: cause,
 // machine or group, source) shared by the consoles of a control room; a repeat of an active (unacknowledged)
 // alarm updates it (occurrence count, latest text and details) instead of adding a row; alarms have a
 // priority; an alarm can be shelved for a time (suppressed, returns by itself on expiry); the alarm rate (new

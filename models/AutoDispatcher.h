@@ -1,5 +1,5 @@
 #pragma once
-// The automatic dispatcher (issue 15 §5, optional point): while the operator has it on, every idle haul truck
+// The automatic dispatcher: while the operator has it on, every idle haul truck
 // the FMS dispatches gets its next task without the dispatcher's hand:
 //  * idle = DispatchingCustodian FMS (as the truck reported it), link up (DispatchSource::assignRefusal
 //  empty),

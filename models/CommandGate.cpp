@@ -168,7 +168,7 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
             if (QThread::currentThread() == guiThread) {
                 // Answered while the gate is still calling bridges (a refusal, or a stack that sent from
                 // this thread): recorded after every bridge was called, so no model, alarm or watch work
-                // delays the next bridge's sends (issue 13 §10).
+                // delays the next bridge's sends.
                 if (auto it = m_pending.find(id); it != m_pending.end() && (*it)->issuing) {
                     (*it)->deferred.push_back(
                         [apply, o = std::move(outcomes)]() mutable { apply(std::move(o)); });
@@ -189,8 +189,7 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
         };
         fn(to[i], std::move(done));
     }
-    // The deadline timer after the bridges were called: nothing but the command itself before the sends
-    // (issue 13 §10).
+    // The deadline timer after the bridges were called: nothing but the command itself before the sends.
     p->deadline = new QTimer(this);
     p->deadline->setSingleShot(true);
     connect(p->deadline, &QTimer::timeout, this, [this, id] { finish(id); });

@@ -1,6 +1,6 @@
 #pragma once
-// The one gate every operator command passes (issue 6 §6, issue 13 §1/§9): STOP ALL, per-machine stop, stop
-// release and the protocol commands of every panel and of the headless monitor.
+// The one gate every operator command passes, so each is checked and audited once: STOP ALL, per-machine
+// stop, stop release and the protocol commands of every panel and of the headless monitor.
 //
 // Commands are asynchronous: the gate hands the command to the bridges, collects their per-target outcomes
 // (TargetOutcome, reported by the stacks on their io threads and handed over to the GUI thread here) and,
@@ -62,12 +62,13 @@ public:
     // on the GUI thread, before commandFinished is emitted. It may run before the call returns (every bridge
     // decided at once).
     void stopAll(const QString& origin = QStringLiteral("gui"), ResultHandler onFinal = {});
-    // Issue 13 §10. Any thread (the headless stdin reader): STOP ALL now to the bridges that may be called
-    // from any thread (FleetBridge::stopAllFromAnyThread; those that send from the caller's thread first);
-    // their outcomes wait in the handle. Then, on the
-    // gate's thread, stopAll(origin, onFinal, handle) sends the rest and records every part (audit, result,
-    // confirmation) as one STOP ALL. Every handle must be passed to stopAll once: it is the audit of what
-    // was already sent. Only while the bridges live (the caller stops calling before they are torn down).
+    // The stop path without waiting for the GUI thread (docs/decisions/stop-from-callers-thread.md). Any
+    // thread (the headless stdin reader): STOP ALL now to the bridges that may be called from any thread
+    // (FleetBridge::stopAllFromAnyThread; those that send from the caller's thread first); their outcomes
+    // wait in the handle. Then, on the gate's thread, stopAll(origin, onFinal, handle) sends the rest and
+    // records every part (audit, result, confirmation) as one STOP ALL. Every handle must be passed to
+    // stopAll once: it is the audit of what was already sent. Only while the bridges live (the caller stops
+    // calling before they are torn down).
     std::shared_ptr<EarlyStop> stopAllEarly();
     void stopAll(const QString& origin, ResultHandler onFinal, std::shared_ptr<EarlyStop> early);
     void stopMachine(const QString& id, const QString& origin = QStringLiteral("gui"),

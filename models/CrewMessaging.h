@@ -1,5 +1,5 @@
 #pragma once
-// Crew messages (issue 17 §5): a bridge whose machines take text messages names its recipients here; the
+// Crew messages: a bridge whose machines take text messages names its recipients here; the
 // messages go through the command gate ("send_text", audited) and received ones arrive as TextMessage events.
 #include <QString>
 #include <QVector>

@@ -1,5 +1,5 @@
 #pragma once
-// The dispatch table (issue 15 §3): one row per haul truck with its custodian, autonomy mode, assignment and
+// The dispatch table: one row per haul truck with its custodian, autonomy mode, assignment and
 // the answer to this console's last request, task, destination, ETA, production state, payload and time in
 // state, as the trucks reported them (DispatchSource). Rows that need the dispatcher (the truck asks for
 // work, or its custodian went from AHS to FMS) carry the "needs assignment" cue; a rejected request is marked

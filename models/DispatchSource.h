@@ -1,5 +1,5 @@
 #pragma once
-// Protocol-neutral dispatch data for the dispatch panel (issue 15 §3): one DispatchTruck per haul truck as
+// Protocol-neutral dispatch data for the dispatch panel: one DispatchTruck per haul truck as
 // its fleet-management side last reported it, the areas a truck can be sent to, and the route a truck has
 // left to drive. A protocol adapter (models/bridges/IsoDispatchSource for ISO 23725) fills it; widgets read
 // only this (they include no protocol stack header). Everything here comes from the machines' reports; what

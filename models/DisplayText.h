@@ -1,6 +1,6 @@
 #pragma once
 // Display texts in the operator's language for the stable English keys of events, alarms, links and machine
-// states (issue 19 §6: "event, alarm and link texts translated like the rest"). The stacks and toText() keep
+// states ("event, alarm and link texts translated like the rest"). The stacks and toText() keep
 // the English key for logs, recordings, CSV export and headless JSON; only what a person reads goes through
 // here. Translation context: "ocu::DisplayText".
 #include "models/FleetEvent.h"

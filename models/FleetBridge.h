@@ -9,11 +9,12 @@
 //
 // A concrete bridge implements the four command methods, maps its stack's vocabulary into MachineState
 // (id = protocolPrefix(protocol) + native id) and calls publishMachine/publishRemoval/publishLink/
-// publishEvent from its stack listener. Commands report what went on the wire (issue 13 §1): `done` runs
-// exactly once with one TargetOutcome per target (a machine or a link), sent or refused with the reason -
-// on the GUI thread when the bridge refuses by itself (role, unknown machine, link down: nothing is posted,
-// the stack neither sends it nor keeps it for later), on the stack's io thread when the stack decides. Only
-// the CommandGate calls them; it hands the outcomes over to the GUI thread.
+// publishEvent from its stack listener. Commands report what went on the wire
+// (docs/decisions/command-outcome-per-target.md): `done` runs exactly once with one TargetOutcome per target
+// (a machine or a link), sent or refused with the reason - on the GUI thread when the bridge refuses by
+// itself (role, unknown machine, link down: nothing is posted, the stack neither sends it nor keeps it for
+// later), on the stack's io thread when the stack decides. Only the CommandGate calls them; it hands the
+// outcomes over to the GUI thread.
 #include "models/FleetEvent.h"
 #include "models/MachineState.h"
 #include "models/SiteMapData.h"
@@ -76,7 +77,7 @@ struct LinkStatus {
     QString detail;
 };
 
-// One link's counters (issue 14 §6): rejected peer input by reason (Counters::isReject, names without the
+// One link's counters: rejected peer input by reason (Counters::isReject, names without the
 // leading "rx.": "rejected.too_short", "implausible.speed", "unknown_member") and every counter by name.
 struct LinkCounters {
     QString link;
@@ -111,7 +112,7 @@ public:
     // True when stopAll puts its stop on the wire from the calling thread (no io-thread hop) and may be
     // called from any thread (it reads only constant or atomic state): the gate calls these bridges first, so
     // a woken io thread of another stack never delays them, and CommandGate::stopAllEarly calls them from
-    // the headless stdin reader (issue 13 §10).
+    // the headless stdin reader.
     virtual bool stopsFromCallersThread() const { return false; }
     // True when stopAll may be called from any thread (reads only constant, atomic or locked state) even
     // though its stack sends on its io thread (ISO 23725): CommandGate::stopAllEarly calls these too, after
@@ -130,7 +131,7 @@ public:
     // stop can never be confirmed by the machines; true when the target reports being stopped now.
     virtual bool reportsStopState() const { return true; }
     virtual bool reportsStopped(const QString& /*target*/) const { return false; }
-    // Confirmation of other commands (issue 13 §1: clear_stop, request_control, release_control...): true
+    // Confirmation of other commands (clear_stop, request_control, release_control...): true
     // when this bridge watches `action`'s effect in the machines' own reports (commandReported), and whether
     // `target` shows that effect now.
     virtual bool confirmsCommand(const QString& /*action*/) const { return false; }
@@ -149,7 +150,7 @@ public:
     // another process)"); empty when there is none. GUI thread.
     virtual QString statusNote() const { return {}; }
 
-    // ---- io-thread watchdog (issue 14 §3), GUI thread ----
+    // ---- io-thread watchdog, GUI thread ----
     // How long the stack's io thread has not turned; 0 while it turns, when it is not running, or when the
     // bridge has no io thread of its own (the default). Any thread.
     virtual std::chrono::milliseconds ioStalledFor() const { return std::chrono::milliseconds(0); }
@@ -166,7 +167,7 @@ public:
     void flushPending();
     // GUI thread, after the stack stopped: every link this bridge has published shows down with `detail`
     // ("stack stopped"), delivered at once - the status bar reflects the stack's own state, not its last
-    // report (issue 13).
+    // report.
     void publishStackStopped(const QString& detail);
     // Backlog and counters of the machine coalescer (benchmarks, diagnostics; any thread).
     size_t pendingMachineUpdates() const { return m_machines.pending(); }

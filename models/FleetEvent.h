@@ -32,7 +32,7 @@ struct FleetEvent {
     QString text;
     // Alarms (Warning and above by default) stay unacknowledged until an operator acknowledges them.
     bool requiresAck = false;
-    // Alarm identity and grouping (issue 19 §5). cause: stable identifier of what went wrong
+    // Alarm identity and grouping. cause: stable identifier of what went wrong
     // ("fleet.not_in_fms"); empty = the kind. group: the machine or group the cause applies to (a link, a
     // fleet); empty = machineId. One cause of one group from one source is one alarm: repeats update it.
     QString cause;

@@ -14,7 +14,7 @@ FleetFilterProxy::FleetFilterProxy(QObject* parent) : QSortFilterProxyModel(pare
     connect(&m_changeTimer, &QTimer::timeout, this, &FleetFilterProxy::flushChanges);
 }
 
-// ---- issue 19 §7: throttled data changes ----
+// ---- Throttled data changes ----
 
 void FleetFilterProxy::setChangeIntervalMs(int ms) {
     m_changeIntervalMs = std::max(0, ms);

@@ -20,7 +20,7 @@ public:
     void setProtocols(const QSet<Protocol>& protocols);
     void setStatuses(const QSet<StatusCategory>& statuses);
 
-    // Issue 19 §7: the source's data changes (1,000 machines at 10 Hz) reach the sort/filter and the view at
+    // The source's data changes (1,000 machines at 10 Hz) reach the sort/filter and the view at
     // most every `ms` (0 = at once, the default), merged into one dataChanged of the changed cells' bounds.
     // Rows, resets and layout changes pass at once. Call before or after setSourceModel.
     void setChangeIntervalMs(int ms);

@@ -8,7 +8,7 @@
 
 namespace ocu {
 
-// The link state in the operator's language (issue 19 §6; toText() stays the stable English key).
+// The link state in the operator's language (toText() stays the stable English key).
 static QString linkText(LinkState s) {
     switch (s) {
     case LinkState::Up:

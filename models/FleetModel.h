@@ -1,5 +1,5 @@
 #pragma once
-// One row per machine across all protocols (issue 6 §2). Fed by FleetBridge::machinesUpdated /
+// One row per machine across all protocols. Fed by FleetBridge::machinesUpdated /
 // machinesRemoved; ages, staleness and removal are evaluated by refresh() (a timer, default 500 ms).
 #include "models/MachineState.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The one selection shared by the fleet list, the 2D map and the 3D view (issue 6 §2).
+// The one selection shared by the fleet list, the 2D map and the 3D view.
 // It wraps a QItemSelectionModel on the FleetModel (source rows); views over a proxy map through it with
 // the helpers below. Everything is keyed by machine id, so it survives sorting and filtering.
 #include <QItemSelectionModel>

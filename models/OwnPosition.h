@@ -1,5 +1,5 @@
 #pragma once
-// The console's own position (issue 6 §3) from Qt Positioning: the system source, or an NMEA log / serial
+// The console's own position from Qt Positioning: the system source, or an NMEA log / serial
 // device through QNmeaPositionInfoSource (no plugin needed; toolchain.md §6), converted into the site frame.
 // The app forwards fixes to the ISO bridge as MachinePositionV1 when the site names this console as an
 // FMS machine.

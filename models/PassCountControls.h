@@ -1,5 +1,5 @@
 #pragma once
-// Lifts and filters of a pass-count source (issue 17 §2) for the pass-count panel: which lift the overlay and
+// Lifts and filters of a pass-count source for the pass-count panel: which lift the overlay and
 // the statistics show, and what the engine counts (a change makes the engine recount the whole job from the
 // ribbons). Qt-side values: widgets never see a protocol's settings type.
 #include <QStringList>
@@ -34,7 +34,7 @@ public:
     // The lift the layer shows: -1 = the top-most lift with data per cell.
     virtual int viewLift() const = 0;
     virtual void setViewLift(int lift) = 0;
-    // What the counts lack (issue 17 §4): one line per machine with slots given up as unobtainable.
+    // What the counts lack: one line per machine with slots given up as unobtainable.
     virtual QStringList passCountGaps() const { return {}; }
 };
 

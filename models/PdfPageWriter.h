@@ -1,6 +1,6 @@
 #pragma once
-// Headings, text and tables down the pages of a PDF report (the shift report, issue 15; the coverage report,
-// issue 17): a new page whenever the next piece does not fit.
+// Headings, text and tables down the pages of a PDF report (the shift report, the coverage report): a new
+// page whenever the next piece does not fit.
 #include <QString>
 #include <QStringList>
 #include <QVector>

@@ -1,5 +1,5 @@
 #pragma once
-// Production of the haul fleet over a shift (issue 15 §4), from what the trucks report (ProductionReport:
+// Production of the haul fleet over a shift, from what the trucks report (ProductionReport:
 // production states, payloads, dumps, completed cycles): loads and tonnes per truck, per shovel (load area),
 // per dump (dump area or crusher) and for the shift, the cycle-time breakdown (queue, spot, load, haul, dump,
 // return) from the cycles' state times, and the tonnes over the shift against a plan. Nothing here comes from

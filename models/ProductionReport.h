@@ -1,5 +1,5 @@
 #pragma once
-// One production report of a haul truck as the machine sent it (issue 15 §4), protocol-neutral for the
+// One production report of a haul truck as the machine sent it, protocol-neutral for the
 // production model: a production state, a payload, a dump or a completed cycle (ISO 23725 §12:
 // HaulTruckProductionStateV2, HaulTruckPayloadV1, HaulTruckDumpV1, HaulTruckProductionCycleV1). Every field
 // comes from the report; what the report left out stays unknown (nullopt / empty), never a default.

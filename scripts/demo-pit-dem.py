@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A stand-in DEM of the simulated pit (benches of 10 m, 60 m deep, the haul ramp's slope north to south) for
-the 3D screenshots of issue 19 until the simulated site ships its own pit_dem.tif. Writes an ESRI ASCII grid in
+the 3D screenshots until the simulated site ships its own pit_dem.tif. Writes an ESRI ASCII grid in
 WGS84 degrees around the built-in site origin; convert with
   gdal_translate -a_srs EPSG:4326 pit.asc pit_dem.tif
 Usage: demo-pit-dem.py OUT.asc [LAT LON ALT]"""

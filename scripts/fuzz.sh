@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzing (issue 14 §1; docs/reliability.md): builds the libFuzzer harnesses of tests/fuzz with clang, ASan and
+# Fuzzing (docs/reliability.md): builds the libFuzzer harnesses of tests/fuzz with clang, ASan and
 # UBSan in build-fuzz/, then runs every harness (or those named) for SECONDS each on its corpus.
 #   scripts/fuzz.sh [SECONDS] [HARNESS...]   default 60 s each; exits non-zero when any harness found something
 #   scripts/fuzz.sh --seed                   rewrites the seed corpora from the tests' vectors (then commit them)

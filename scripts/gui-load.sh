@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 19 §7: CPU of the real console window under Xvfb at 1920x1080 with `ocu-sim` driving
+# CPU of the real console window under Xvfb at 1920x1080 with `ocu-sim` driving
 # 1,000 trucks at 10 Hz, 20 UGVs and 3 rollers. Prints CPU % of one core per thread of `ocu` over a window
 # (from /proc/<pid>/task/*/stat), the GUI thread first, plus the load average.
 # Usage: scripts/gui-load.sh [BUILD_DIR] [WARMUP_S] [MEASURE_S]

@@ -12,23 +12,23 @@ packages=(
   libgeographiclib-dev libpugixml-dev libsdl2-dev libsqlite3-dev
   libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-dev libegl-mesa0 libglew-dev
-  # Fuzzing (scripts/fuzz.sh, issue 14): clang 14; -fsanitize=fuzzer needs libclang_rt.fuzzer*.a, which Debian 12
+  # Fuzzing (scripts/fuzz.sh): clang 14; -fsanitize=fuzzer needs libclang_rt.fuzzer*.a, which Debian 12
   # ships in libclang-rt-14-dev (only a Recommends of clang-14, so not installed by --no-install-recommends).
   clang-14 libclang-rt-14-dev
-  # Issue 15 §4: production charts (Qt Charts, widgets/production) and the shift report test renders the PDF
+  # Production charts (Qt Charts, widgets/production) and the shift report test renders the PDF
   # with poppler's pdftoppm.
   qt6-charts-dev poppler-utils
-  # Issue 19: GDAL for the 2D map background rasters, the simulated pit's DEM and hillshade, the 3D terrain.
+  # GDAL for the 2D map background rasters, the simulated pit's DEM and hillshade, the 3D terrain.
   libgdal-dev
-  # Shared control-room history (issue 16 §4): libpq to build; the server for the tests' throwaway instances.
+  # Shared control-room history: libpq to build; the server for the tests' throwaway instances.
   libpq-dev postgresql
-  # Issue 17 §3: PROJ for the coverage report's projected CRS (CSV, GeoTIFF).
+  # PROJ for the coverage report's projected CRS (CSV, GeoTIFF).
   libproj-dev
-  # Issue 18 (simulated cameras, h18sim): RTSP server + appsrc (dev), x264enc (ugly), rtph264pay/rtspsrc/udp
+  # RTSP server + appsrc (dev), x264enc (ugly), rtph264pay/rtspsrc/udp
   # (good), videoconvert (base), avdec_h264 for the tests' RTSP client (libav).
   libgstrtspserver-1.0-dev libgstreamer-plugins-base1.0-dev gstreamer1.0-plugins-base gstreamer1.0-plugins-good
   gstreamer1.0-plugins-ugly gstreamer1.0-libav
-  # Issue 18 (the console's video player, h18view): GStreamer core/app/video dev files and h264parse (bad).
+  # GStreamer core/app/video dev files and h264parse (bad).
   libgstreamer1.0-dev gstreamer1.0-plugins-bad
   # The flight recorder compresses its machine-state chunks with zstd (docs/recording.md).
   libzstd-dev

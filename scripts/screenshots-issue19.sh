@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 19 acceptance screenshots: the 2D map and the 3D view of the built-in simulated site and of `ocu-sim`
+# Screenshots of the 2D map and the 3D view of the built-in simulated site and of `ocu-sim`
 # with 1,000 trucks (10 Hz), 20 UGVs and 3 rollers, at 1366x768 and 1920x1080, written to docs/.
 # Usage: scripts/screenshots-issue19.sh [BUILD_DIR] [SETTLE_S]
 set -euo pipefail

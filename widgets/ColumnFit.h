@@ -1,5 +1,5 @@
 #pragma once
-// Column widths that fit their content (issue 19 §6: no "Link / a", no "2026-11-23 …"): each column is
+// Column widths that fit their content (no "Link / a", no "2026-11-23 …"): each column is
 // made at least as wide as its header text and the cells of the rows in view (the view's own size hints,
 // so delegates and fonts count). Cheap enough for a timer: only the visible rows are measured.
 class QHeaderView;

@@ -62,7 +62,7 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     shelfRow->addWidget(m_unshelve);
     shelfRow->addWidget(m_export); // on the first row it was cut off in an 800-px dock (1366 x 768)
     shelfRow->addStretch(1);
-    // The open-alarm count sits with the rate: on the first row it was cut off at 1366 px (issue 19 §6).
+    // The open-alarm count sits with the rate: on the first row it was cut off at 1366 px.
     auto* countsRow = new QHBoxLayout;
     countsRow->addStretch(1);
     countsRow->addWidget(m_unackLabel);
@@ -110,7 +110,7 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     m_view->verticalHeader()->setDefaultSectionSize(20);
     m_view->horizontalHeader()->setStretchLastSection(false);
     m_view->horizontalHeader()->setSectionResizeMode(AlarmModel::ColText, QHeaderView::Stretch);
-    // Issue 19 §6: the message takes the remaining width; the other columns fit their content from their
+    // The message takes the remaining width; the other columns fit their content from their
     // title up, the long ones capped (the tooltip shows the full text) so a 1366-px laptop keeps the message.
     startColumnsAtHeaderWidth(m_view);
     setColumnFitCap(m_view, AlarmModel::ColKind, 130);

@@ -1,6 +1,6 @@
 #pragma once
-// The alarm list / event log (issue 6 §7): filter, search, acknowledge, CSV export; alarm management
-// (issue 19 §5): priority and count columns, shelving with an expiry, the alarm rate per 10 min with the
+// The alarm list / event log: filter, search, acknowledge, CSV export; alarm management:
+// priority and count columns, shelving with an expiry, the alarm rate per 10 min with the
 // flood indication, a details pane with the grouped items of the selected alarm.
 #include <QPointer>
 #include <QWidget>
@@ -34,7 +34,7 @@ public:
     QLabel* rateLabel() const { return m_rateLabel; }
     QPushButton* shelveButton() const { return m_shelve; }
     QPlainTextEdit* detailsPane() const { return m_details; }
-    // The details pane is open while an alarm is selected (folded away otherwise, issue 19 §6).
+    // The details pane is open while an alarm is selected (folded away otherwise).
     bool detailsShown() const;
 
     // Shelves the alarms of the selected rows for the duration chosen in the panel (default 15 min).

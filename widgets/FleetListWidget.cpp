@@ -81,12 +81,12 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     : QWidget(parent), m_fleet(fleet), m_selection(selection), m_proxy(new FleetFilterProxy(this)),
       m_view(new QTableView(this)), m_filter(new QLineEdit(this)), m_protocol(new QComboBox(this)),
       m_status(new QComboBox(this)), m_densityButton(new QToolButton(this)) {
-    // 1,000 machines at 10 Hz: the table re-sorts and repaints at most 4 times a second (issue 19 §7).
+    // 1,000 machines at 10 Hz: the table re-sorts and repaints at most 4 times a second.
     m_proxy->setChangeIntervalMs(250);
     m_proxy->setSourceModel(fleet);
     m_filter->setPlaceholderText(tr("Filter machines…"));
     m_filter->setClearButtonEnabled(true);
-    // The filter row stays narrow enough for a field laptop (issue 19 §6): the combos shrink to a few
+    // The filter row stays narrow enough for a field laptop: the combos shrink to a few
     // characters, the filter keeps room for its placeholder.
     m_filter->setMinimumWidth(fontMetrics().horizontalAdvance(m_filter->placeholderText()) + 36);
     for (QComboBox* c : {m_protocol, m_status}) {
@@ -107,7 +107,7 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_densityButton->setCheckable(true);
     m_densityButton->setToolTip(tr("Switch between dense rows (workstation) and large rows (field laptop)"));
 
-    // Issue 19 §6: in a narrow dock (the 1366-px laptop's default layout gives the list a quarter of the
+    // In a narrow dock (the 1366-px laptop's default layout gives the list a quarter of the
     // width) the filter field goes on its own row above the combos instead of forcing the dock ~480 px wide
     // and squeezing the map and the JAUS / teleop column; resizeEvent() switches.
     auto* combos = new QHBoxLayout;
@@ -136,7 +136,7 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_view->setTabKeyNavigation(false); // arrows move in the table, Tab leaves it (docs/keyboard.md)
     setDensity(Density::Dense);
-    keepColumnsFitted(m_view); // issue 19 §6: headers and cells in view never elided
+    keepColumnsFitted(m_view); // headers and cells in view never elided
 
     connect(m_filter, &QLineEdit::textChanged, this, &FleetListWidget::applyFilters);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, &FleetListWidget::applyFilters);

@@ -1,5 +1,5 @@
 #pragma once
-// The fleet list (issue 6 §4): a sortable, filterable table of every machine with status colours
+// The fleet list: a sortable, filterable table of every machine with status colours
 // (green OK, amber warning, red fault/stopped, grey no comms/stale, blue autonomous), a data-age badge,
 // a dense/large density switch and a per-machine context menu. Its selection is the shared FleetSelection.
 #include <QPointer>
@@ -37,7 +37,7 @@ public:
     // Opens the per-machine context menu (also used by the map's context menu).
     void showContextMenu(const QString& id, QPoint globalPos);
     static QString describeMachine(const MachineState& m);
-    // True while the filter field sits on its own row above the combos (a narrow dock, issue 19 §6).
+    // True while the filter field sits on its own row above the combos (a narrow dock).
     bool filterRowWrapped() const;
 
 signals:

@@ -1,6 +1,6 @@
 #pragma once
 // A button that confirms only after being held down (mouse or Space) for a deliberate time; releasing
-// early cancels. Used for releasing stops (issue 6 §6; anchors-features.md §8.3: apply is fast, clear is
+// early cancels. Used for releasing stops (anchors-features.md §8.3: apply is fast, clear is
 // deliberate). Stopping itself uses plain buttons that never ask.
 #include <QElapsedTimer>
 #include <QPushButton>

@@ -1,5 +1,5 @@
 #pragma once
-// The 2D map's background raster (issue 19 §3): an orthophoto or hillshade from a GeoTIFF, or an MBTiles
+// The 2D map's background raster: an orthophoto or hillshade from a GeoTIFF, or an MBTiles
 // file, read with GDAL, warped once into the site frame (the local tangent plane at the site origin, i.e.
 // site ENU metres) and cut into a pyramid of 256 px tiles, so a repaint draws only the few visible tiles of
 // the level that matches the zoom. GDAL stays in the .cpp.

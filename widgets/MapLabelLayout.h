@@ -1,5 +1,5 @@
 #pragma once
-// Label decluttering for the 2D map (issue 19 §1): labels are offered in priority order; each takes the first
+// Label decluttering for the 2D map: labels are offered in priority order; each takes the first
 // of its candidate rectangles that overlaps no label placed before it, or yields (is not drawn). A uniform
 // grid of buckets keeps this linear in the number of labels (1,000 machines per frame).
 #include <QRectF>

@@ -1,5 +1,5 @@
 #pragma once
-// Machine symbols of the 2D map (issue 19 §1): one SVG per machine type (resources/symbols/), coloured by
+// Machine symbols of the 2D map: one SVG per machine type (resources/symbols/), coloured by
 // state, rotated to heading, rendered once per type/size/state/heading bucket into a cached image so a frame
 // with 1,000 machines is a series of small blits.
 #include "models/MachineState.h"

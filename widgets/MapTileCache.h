@@ -1,6 +1,6 @@
 #pragma once
-// Disk cache of the 2D map's warped background tiles (issue 19 §3 "warped into the site frame and cached as
-// tiles"): a restart does not warp the GeoTIFF/MBTiles again. One entry per source file and site frame, keyed
+// Disk cache of the 2D map's warped background tiles (warped into the site frame and cached as tiles): a
+// restart does not warp the GeoTIFF/MBTiles again. One entry per source file and site frame, keyed
 // by the file's canonical path, size and modification time, the site origin and the pyramid's size limit;
 // inside it one PNG per tile and zoom level plus meta.json (written last, the entry is renamed into place
 // whole). The cache is bounded (least recently used entries go first); an entry that does not read back

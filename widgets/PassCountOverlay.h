@@ -1,5 +1,5 @@
 #pragma once
-// The pass-count overlay of the 2D map at any zoom (issue 17 §6): a tile pyramid of cached images.
+// The pass-count overlay of the 2D map at any zoom: a tile pyramid of cached images.
 // Level 0 tiles hold 256 x 256 cells, one pixel per cell; a tile of level L covers 256 * 2^L cells a side at
 // one pixel per 2^L cells, rendered once from its four children (nearest neighbour). A frame draws only the
 // tiles of the level whose pixel is about one screen pixel, so a redraw costs about the screen's pixels,

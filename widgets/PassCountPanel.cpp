@@ -55,7 +55,7 @@ PassCountPanel::HistogramAxis PassCountPanel::histogramAxis() const {
 }
 
 // Bars per pass count with a y axis (area, m² or ha), the area of each bar above it and the pass counts and
-// an axis title below (issue 19 §6).
+// an axis title below.
 class PassCountPanel::Histogram : public QWidget {
 public:
     explicit Histogram(PassCountPanel* panel) : QWidget(panel), m_panel(panel) { setMinimumHeight(150); }
@@ -132,7 +132,7 @@ PassCountPanel::PassCountPanel(QWidget* parent)
     form->addRow(tr("Target passes"), targetRow);
     form->addRow(tr("Lift"), m_lift);
 
-    // Lifts and filters (issue 17 §2): what the engine counts; the overlay and the statistics follow.
+    // Lifts and filters: what the engine counts; the overlay and the statistics follow.
     static_cast<QGroupBox*>(m_filters)->setTitle(tr("Filters"));
     m_vibration->addItem(tr("Vibrating only"), int(PassCountFilter::Vibration::On));
     m_vibration->addItem(tr("Static only"), int(PassCountFilter::Vibration::Off));

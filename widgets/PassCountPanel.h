@@ -1,5 +1,5 @@
 #pragma once
-// Pass-count summary (issue 6 §5; anchors-features.md §4.3-4.4): % of the covered area below / within /
+// Pass-count summary (anchors-features.md §4.3-4.4): % of the covered area below / within /
 // above the target range, covered area, a histogram per pass count, palette choice and target range.
 // The summary is recomputed at most once per second while the layer changes.
 #include "models/PassCountControls.h"
@@ -26,7 +26,7 @@ public:
 
     // Not owned.
     void setLayer(const PassCountLayer* layer);
-    // Lifts and filters of the layer's source (issue 17 §2); null hides the controls. Not owned.
+    // Lifts and filters of the layer's source; null hides the controls. Not owned.
     void setControls(PassCountControls* controls);
     // The filter the controls show (applied to the source after a short pause in editing).
     PassCountFilter filter() const;
@@ -40,7 +40,7 @@ public:
 
     QLabel* summaryLabel() const { return m_summaryLabel; }
 
-    // What the histogram draws (issue 19 §6): the area per pass count 1..9+ (m²), the y axis end and its
+    // What the histogram draws: the area per pass count 1..9+ (m²), the y axis end and its
     // tick texts (0, half, top), the text above each bar (empty for no area) and the axis titles.
     struct HistogramAxis {
         QVector<double> values;

@@ -1,5 +1,5 @@
 #pragma once
-// The replay timeline (issue 16 §2): play/pause, reverse, step, speed 0.1x-16x, a slider over the whole
+// The replay timeline: play/pause, reverse, step, speed 0.1x-16x, a slider over the whole
 // recording with markers for alarms and commands (click one to jump there; hover for its text), and an exact
 // time entry (HH:MM:SS[.mmm] UTC, seconds after the start, or ISO 8601). Keys (also when the window has the
 // focus elsewhere, via the replay window's shortcuts): Space play/pause, + / - speed, Left/Right step,

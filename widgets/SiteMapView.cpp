@@ -421,7 +421,7 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
 }
 
 void SiteMapView::drawPassCount(QPainter& p, const QSize& size) {
-    // Issue 17 §6: a tile pyramid of cached images (PassCountOverlay), any zoom, only changed tiles redrawn.
+    // A tile pyramid of cached images (PassCountOverlay), any zoom, only changed tiles redrawn.
     m_passOverlay.draw(p, *m_pass, m_palette, m_target, visibleWorld(size),
                        QRectF(QPointF(0, 0), QSizeF(size)), m_inPaintEvent ? m_passBudgetMs : 0);
     m_passOverlayPending = m_passOverlay.stats().pending > 0;

@@ -1,5 +1,5 @@
 #pragma once
-// The live 2D site map (issue 6 §5), drawn with QPainter on the raster engine.
+// The live 2D site map, drawn with QPainter on the raster engine.
 //
 // Performance design (perf-anchors.md §4): everything that does not move with the machines (map roads,
 // lanes, areas, names, pass-count overlay) is rendered into a cached static layer that is rebuilt only when
@@ -95,7 +95,7 @@ public:
     // Topmost machine under the pixel (footprint or 8 px pick radius), or empty.
     QString machineAt(QPointF px) const;
 
-    // ---- Issue 19 §2: navigation ----
+    // ---- Navigation ----
     void zoomToFleet();                        // every positioned machine (Home)
     void zoomToSelection();                    // the selected machines (S); nothing selected: the fleet
     bool zoomToArea(const QString& featureId); // a map feature (area, road) by id; false when unknown
@@ -117,25 +117,25 @@ public:
     };
     const QVector<EdgeIndicator>& edgeIndicators() const { return m_edges; }
 
-    // ---- Issue 19 §1: symbols and labels ----
+    // ---- Symbols and labels ----
     // Labels placed in the last frame (machine names, road and area names), none overlapping another.
     const QVector<MapLabelLayout::Placed>& labelPlacements() const { return m_labels.placed(); }
     // For overlays, from paintOverlay(): text the overlay draws at `screenRect` (screen px); the machines'
-    // labels and the road and area names of this frame keep clear of it (issue 19 §1: no two labels overlap —
+    // labels and the road and area names of this frame keep clear of it (no two labels overlap —
     // a station label of the compaction design or the dispatch route's label were covered by machine labels).
     void reserveLabelArea(const QRectF& screenRect) const { m_reservedLabels.push_back(screenRect); }
     const QVector<QRectF>& reservedLabelAreas() const { return m_reservedLabels; }
     QString hoveredMachine() const { return m_hoverId; }
     MapSymbolCache& symbolCache() { return m_symbols; }
 
-    // ---- Issue 19 §3: background raster ----
+    // ---- Background raster ----
     void setBackground(std::shared_ptr<const MapBackground> background);
     std::shared_ptr<const MapBackground> background() const { return m_background; }
     // Loads a GeoTIFF/MBTiles file off the GUI thread; ends in backgroundLoaded or backgroundFailed.
     void loadBackground(const QString& path);
     void setBackgroundVisible(bool visible);
     bool isBackgroundVisible() const { return m_backgroundVisible; }
-    // Issue 19 §6: the night palette (a dark window palette) dims the site plan and background and draws
+    // The night palette (a dark window palette) dims the site plan and background and draws
     // dark labels with light text, so the map does not glare in a dark cab. Follows the palette by itself.
     bool isNight() const { return m_night; }
 
@@ -156,16 +156,16 @@ public:
     };
     FrameStats lastFrame() const { return m_stats; }
 
-    // ---- Issue 19 §7: load (SiteMapViewPerf.cpp) ----
+    // ---- Load (SiteMapViewPerf.cpp) ----
     // Repaints caused by data (positions, staleness, own fix, pass counts) are coalesced to at most this
     // rate (default 10 Hz: the fastest data rate); the operator's own actions (pan, zoom, hover, selection)
     // repaint at once. 0 = no cap.
     void setMaxDataFrameRate(double hz);
     double maxDataFrameRate() const { return m_maxDataHz; }
     int framesPainted() const { return m_framesPainted; } // paintEvent calls so far
-    // Issue 17 §6: an on-screen frame renders pass-count tiles for at most this long (the rest follow on the
+    // An on-screen frame renders pass-count tiles for at most this long (the rest follow on the
     // next frames, stand-ins shown meanwhile); 0 = all at once. paintScene() called directly (reports,
-    // benchmarks) always renders everything.
+    // benchmarks) always renders everything. See docs/decisions/pass-count-frame-budget.md.
     void setPassOverlayFrameBudget(double ms) { m_passBudgetMs = ms; }
     double passOverlayFrameBudget() const { return m_passBudgetMs; }
     // False while pass-count tiles of the current view are still owed (a repaint is scheduled).
@@ -214,7 +214,7 @@ private:
     void drawCursor(QPainter& p, const QSize& size);
     QRectF visibleWorld(const QSize& size) const;
     void invalidateStatic() { m_staticValid = false; }
-    // Issue 19 (SiteMapViewSymbols.cpp).
+    // Symbols, labels, navigation (SiteMapViewSymbols.cpp).
     struct MachineLabel {
         QPointF centre;
         double radius = 0; // half the symbol's larger side (px)
@@ -237,7 +237,7 @@ private:
     void userTookOver() { m_autoFit = false; }
     bool clickEdgeIndicator(QPointF px);
     void drawBackgroundRaster(QPainter& p, const QSize& size);
-    // Issue 19 §7 (SiteMapViewPerf.cpp).
+    // Load: capped repaints, per-frame caches (SiteMapViewPerf.cpp).
     void requestDataRepaint();
     const QImage& machineLabelImage(const QString& text, qreal dpr);
     // Many trails (aliased 1 px): rasterised straight into a copy of the static layer, which is then blitted
@@ -268,7 +268,7 @@ private:
     QPointF m_staticCenter;
     double m_staticScale = 0;
     // Pass-count colour image (one pixel per cell, row 0 = southernmost at the bottom).
-    PassCountOverlay m_passOverlay; // issue 17 §6: tile pyramid (widgets/PassCountOverlay.h)
+    PassCountOverlay m_passOverlay; // tile pyramid (widgets/PassCountOverlay.h)
     quint64 m_passImageRevision = 0;
     PassPalette m_passImagePalette = PassPalette::Discrete;
     PassTarget m_passImageTarget{-1, -1};
@@ -289,7 +289,7 @@ private:
     QVector<SiteMapOverlay*> m_overlays;
     bool m_areaPicking = false;
 
-    // Issue 19.
+    // Symbols, labels, navigation, background, night palette.
     bool m_autoFit = true;
     MapSymbolCache m_symbols;
     MapLabelLayout m_labels;
@@ -304,7 +304,7 @@ private:
     bool m_night = false;
     void dimStaticForNight(QPainter& p, const QSize& size);
 
-    // Issue 19 §7.
+    // Load: capped data-driven repaints, per-frame caches.
     double m_maxDataHz = 10.0;
     QTimer m_dataRepaint; // single shot: the next data-driven repaint when one came too soon
     QElapsedTimer m_lastPaint;

@@ -1,4 +1,4 @@
-// SiteMapView, issue 19 §7 (load): data-driven repaints coalesced to a capped rate, and the per-frame caches
+// SiteMapView under load: data-driven repaints coalesced to a capped rate, and the per-frame caches
 // that keep a frame with 1,000 machines free of string building and allocation. The rest of the view is in
 // SiteMapView.cpp and SiteMapViewSymbols.cpp.
 #include "widgets/SiteMapView.h"

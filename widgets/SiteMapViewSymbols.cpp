@@ -1,4 +1,4 @@
-// SiteMapView, issue 19: machine symbols, decluttered labels, edge indicators, the hover card, navigation
+// SiteMapView: machine symbols, decluttered labels, edge indicators, the hover card, navigation
 // (zoom to fleet / selection / area) and the background raster. The rest of the view is in SiteMapView.cpp.
 #include "models/DisplayText.h"
 #include "models/FleetModel.h"
@@ -359,8 +359,8 @@ void SiteMapView::layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<Ma
             }
         }
     }
-    // Road and area names are drawn after the machines: they also keep off the machine symbols (issue 19 §7
-    // screenshots: "Dumproad 2" was written across a truck).
+    // Road and area names are drawn after the machines: they also keep off the machine symbols (in
+    // the load screenshots "Dumproad 2" was written across a truck).
     for (const MachineLabel& ml : std::as_const(machines))
         m_labels.block(
             QRectF(ml.centre - QPointF(ml.radius, ml.radius), QSizeF(2 * ml.radius, 2 * ml.radius)));
@@ -639,7 +639,7 @@ void SiteMapView::drawBackgroundRaster(QPainter& p, const QSize& size) {
     m_background->draw(p, m_center, m_scale, QSizeF(size));
 }
 
-// ---- night palette (issue 19 §6) ----
+// ---- night palette ----
 
 void SiteMapView::changeEvent(QEvent* e) {
     if (e->type() == QEvent::PaletteChange) {

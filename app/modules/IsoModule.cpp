@@ -34,9 +34,9 @@ public:
             return {};
         m_bridge = new IsoBridge(*s.config.iso23725, s.frame, s.owner);
         m_bridge->setMessageTap(s.tap);
-        attachProductionModel(m_bridge)->setSiteName(QString::fromStdString(s.config.name)); // issue 15 §4
+        attachProductionModel(m_bridge)->setSiteName(QString::fromStdString(s.config.name));
         s.fleet->addBridge(m_bridge);
-        // Issue 15 §5: the automatic dispatcher (off until the operator or a script switches it on), owned by
+        // The automatic dispatcher (off until the operator or a script switches it on), owned by
         // the bridge like its dispatch source, so the panel and the headless monitor find it.
         auto* source = new IsoDispatchSource(m_bridge, m_bridge);
         auto* autoDispatch = new AutoDispatcher(source, s.fleet->gate(), m_bridge);
@@ -60,15 +60,14 @@ public:
             });
     }
 
-    // Issue 15 §3: the dispatch panel over this bridge; the selected truck's route on the 2D map and in 3D.
+    // The dispatch panel over this bridge; the selected truck's route on the 2D map and in 3D.
     QList<Panel> panels() const override { return {Panel::Dispatch}; }
     QString notConfiguredText() const override {
         return QCoreApplication::translate(
             "IsoModule", "Dispatch needs an ISO 23725 AHS link (site configuration \"iso23725\").");
     }
     void populate(const ModulePanels& ui) override {
-        addProductionDock(ui.window, ui.fleet, m_bridge,
-                          QString::fromStdString(ui.config.name)); // issue 15 §4
+        addProductionDock(ui.window, ui.fleet, m_bridge, QString::fromStdString(ui.config.name));
         auto* autoDispatch = m_bridge->findChild<AutoDispatcher*>();
         auto* source = autoDispatch ? autoDispatch->source() : new IsoDispatchSource(m_bridge, m_bridge);
         auto* panel = new DispatchPanel(source, ui.fleet->gate(), ui.fleet->selection());

@@ -41,7 +41,7 @@ void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridg
     dock->setObjectName(QStringLiteral("dock-production"));
     // Not closable: it has no entry in the View menu to bring it back.
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
-    // Scrolls rather than forcing the bottom row wider than a 1366 px screen (issue 19 §6).
+    // Scrolls rather than forcing the bottom row wider than a 1366 px screen.
     auto* scroll = new QScrollArea;
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidgetResizable(true);
@@ -52,7 +52,7 @@ void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridg
         window.tabifyDockWidget(events, dock);
         events->raise();
     }
-    // Issue 19 §6: a keyboard path here too (Ctrl+9, after the Ctrl+1 … Ctrl+8 panels; docs/keyboard.md):
+    // A keyboard path here too (Ctrl+9, after the Ctrl+1 … Ctrl+8 panels; docs/keyboard.md):
     // raises the panel and puts the focus on its first control.
     auto* go = new QAction(QObject::tr("Production"), dock);
     go->setObjectName(QStringLiteral("action-go-production"));

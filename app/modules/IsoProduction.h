@@ -1,5 +1,5 @@
 #pragma once
-// The ISO 23725 module's production part (issue 15 §4): the production model fed by the bridge's production
+// The ISO 23725 module's production part: the production model fed by the bridge's production
 // reports (area names from its MapConnectivityV1), and its dock in the main window (tabbed with the event
 // log) with the live charts and the shift report button.
 #include <QString>

@@ -1,5 +1,5 @@
 #pragma once
-// Headless video of the JAUS vehicles (issue 18 §4): queries of the headless monitor, answered from what is
+// Headless video of the JAUS vehicles: queries of the headless monitor, answered from what is
 // actually decoded here.
 //   {"cmd":"video_play","id":"jaus:126","sensor":1000}  plays a camera (no "sensor": the first one; no "id":
 //                                                       the first camera of every vehicle)

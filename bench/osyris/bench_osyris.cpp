@@ -1,5 +1,5 @@
-// bench_osyris: CmPos decode rate and pass-count ingest rate (issue 5 acceptance: >= 5 M/s and >= 1 M/s);
-// the cost of pass-count snapshots on the io thread and of the GUI's read of one (issue 12).
+// bench_osyris: CmPos decode rate and pass-count ingest rate (>= 5 M/s and >= 1 M/s);
+// the cost of pass-count snapshots on the io thread and of the GUI's read of one.
 #include "protocols/osyris/OsyrisCodec.h"
 #include "protocols/osyris/PassCountGrid.h"
 

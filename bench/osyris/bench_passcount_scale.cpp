@@ -1,7 +1,7 @@
-// Issue 17 §6, engine side: a 10 km x 12 m paving job with 0.34 m cells and 3 lifts (~3 M cells). Prints
-// (never asserts) the figures: ingest, memory of the counts, snapshot cost, the 2D map's pass-count overlay
-// redraw at 1920x1080 at several zooms (cold: tiles rendered; warm: cached tiles; after a change), and the
-// restart from the ribbon store (SQLite file: open + recount). Wall and process CPU time.
+// A whole job's pass counts, engine side: a 10 km x 12 m paving job with 0.34 m cells and 3 lifts (~3 M
+// cells). Prints (never asserts) the figures: ingest, memory of the counts, snapshot cost, the 2D map's
+// pass-count overlay redraw at 1920x1080 at several zooms (cold: tiles rendered; warm: cached tiles; after a
+// change), and the restart from the ribbon store (SQLite file: open + recount). Wall and process CPU time.
 //   QT_QPA_PLATFORM=offscreen ./build/bench/bench_passcount_scale
 #include "models/bridges/OsyrisPassCountLayer.h"
 #include "protocols/osyris/PassCountGrid.h"

@@ -1,5 +1,5 @@
 #pragma once
-// ISO 23725 fleet discrepancies as alarms (issue 19 §5, EEMUA 191 / ISA-18.2): one alarm per cause and link,
+// ISO 23725 fleet discrepancies as alarms (EEMUA 191 / ISA-18.2): one alarm per cause and link,
 // not one per machine. 1,000 machines of the AHS missing from the FMS fleet make one alarm "1,000 machines of
 // the AHS are not in the FMS fleet on <link>" whose details list the machines. Its key (cause, link, source)
 // is the same on every console and on every re-check, so a repeat updates the alarm instead of adding one.

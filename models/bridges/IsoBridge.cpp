@@ -270,7 +270,7 @@ void IsoBridge::onMapChanged(const std::string& link, const MapModel& map) {
 
 void IsoBridge::onFleetDiscrepancies(const std::string& link,
                                      const std::vector<iso23725::FleetDiscrepancy>& items) {
-    // One alarm per cause and link, the machines in its details (issue 19 §5).
+    // One alarm per cause and link, the machines in its details.
     for (const FleetEvent& ev : fleetDiscrepancyAlarms(link, items))
         publishEvent(ev);
 }

@@ -34,7 +34,7 @@ public:
     ~IsoBridge() override;
 
     QString start();
-    // Issue 16: the flight recorder's tap on the stack's inbound messages (before start()).
+    // The flight recorder's tap on the stack's inbound messages (before start()).
     void setMessageTap(MessageTap* tap);
     void stop();
     QStringList linkNames() const;
@@ -56,7 +56,7 @@ public:
     bool confirmsCommand(const QString& action) const override;
     bool reportsConfirmed(const QString& action, const QString& target) const override;
     SiteMapData siteMap() const override { return m_map; }
-    // Watchdog (issue 14 §3): the stack's io thread.
+    // Watchdog: the stack's io thread.
     QVector<LinkCounters> linkCounters() const override;
     std::chrono::milliseconds ioStalledFor() const override;
     // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
@@ -65,7 +65,7 @@ public:
     // GUI thread: the all-stop status per link as the AHS reported it.
     iso23725::AllStopState allStopState(const QString& link) const;
 
-    // ---- dispatch (issue 15), GUI thread ----
+    // ---- dispatch, GUI thread ----
     // Every ISO 23725 machine's dispatch view, in id order; one machine's, or nullopt.
     QVector<IsoDispatchState> dispatchStates() const;
     std::optional<IsoDispatchState> dispatchState(const QString& id) const;
@@ -139,8 +139,8 @@ private:
     };
     // The row of a machine as published: derived from its snapshot, marked implausible when it is.
     MachineState rowOf(const IoMachine& io, iso23725::AllStopState stop) const;
-    // io thread, issue 14 §2: true when `p` may be drawn (it becomes the machine's position); otherwise the
-    // cause is counted on the link (rx.implausible.<cause>), a warning raised once per machine and cause
+    // io thread, plausibility gate: true when `p` may be drawn (it becomes the machine's position); otherwise
+    // the cause is counted on the link (rx.implausible.<cause>), a warning raised once per machine and cause
     // every 30 s, and io.implausible says why.
     bool admitPosition(const std::string& link, const std::string& key, IoMachine& io,
                        const iso23725::IsoPosition& p);

@@ -1,5 +1,5 @@
 #pragma once
-// The dispatch view of an ISO 23725 haul truck on the Qt side (issue 15 §1/§3), as value types a dispatch
+// The dispatch view of an ISO 23725 haul truck on the Qt side, as value types a dispatch
 // panel and the headless monitor read: who dispatches it (DispatchingCustodian), whether it asked for work,
 // the assignment the AHS reports (HaulTruckAssignmentV1) and the responses to this console's last request,
 // the production state and payload as last reported. Everything here comes from the AHS's reports, never from

@@ -1,5 +1,5 @@
 // IsoBridge: the ISO 23725 production reports (§12) as protocol-neutral ProductionReports for the production
-// model (issue 15 §4), one signal per report as it arrived.
+// model, one signal per report as it arrived.
 #include "models/bridges/IsoBridge.h"
 
 namespace ocu {

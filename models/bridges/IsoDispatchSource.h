@@ -1,5 +1,5 @@
 #pragma once
-// The ISO 23725 face of the dispatch panel (issue 15 §3): IsoBridge's dispatch views as protocol-neutral
+// The ISO 23725 face of the dispatch panel: IsoBridge's dispatch views as protocol-neutral
 // DispatchTrucks, its MapConnectivityV1 areas as DispatchAreas, and each truck's remaining route over the
 // AHS's road network (the assignment's own route when it sent one, else the shortest path from the truck's
 // reported way), so the panel and the map overlays include no stack header.

@@ -62,7 +62,7 @@ osyris::PassCountSummary OsyrisBridge::passCountSummary() const {
 void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
     m_heard = true;
     if (!s.implausible.empty()) {
-        // The station's plausibility gate refused this position (issue 14 §2): keep what was good, say why.
+        // The station's plausibility gate refused this position: keep what was good, say why.
         auto it = m_lastGoodIo.find(s.idx);
         MachineState m;
         if (it != m_lastGoodIo.end()) {

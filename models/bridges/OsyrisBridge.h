@@ -30,12 +30,12 @@ public:
     ~OsyrisBridge() override;
 
     QString start();
-    // Issue 16: the flight recorder's tap on the stack's inbound messages (before start()).
+    // The flight recorder's tap on the stack's inbound messages (before start()).
     void setMessageTap(MessageTap* tap);
     void stop();
 
     void stopAll(OutcomeCallback done) override;
-    bool stopsFromCallersThread() const override { return true; } // the stack's fast path (issue 13 §10)
+    bool stopsFromCallersThread() const override { return true; } // the stack's fast path
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
     // send_text {"text"} to every station, or {"id": "osyris:<idx>", "text"} to one (CmMsg IdxWhose; the
@@ -45,12 +45,12 @@ public:
     bool reportsStopState() const override { return false; }
     const PassCountLayer* passCountLayer() const override { return m_layer.get(); }
     osyris::PassCountSummary passCountSummary() const;
-    // Watchdog (issue 14 §3): the stack's io thread.
+    // Watchdog: the stack's io thread.
     QVector<LinkCounters> linkCounters() const override;
     std::chrono::milliseconds ioStalledFor() const override;
     // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
     void postToIo(std::function<void()> f);
-    // Lifts and filters (issue 17 §2; GUI thread): a new filter makes the station recount from the ribbons.
+    // Lifts and filters (GUI thread): a new filter makes the station recount from the ribbons.
     PassCountFilter passCountFilter() const override;
     void setPassCountFilter(const PassCountFilter& filter) override;
     QVector<PassCountLiftInfo> passCountLifts() const override;
@@ -59,7 +59,7 @@ public:
     QStringList passCountGaps() const override;
     const osyris::PassCountSettings& passCountSettings() const { return m_config.passCount; }
 
-    // Crew messages (issue 17 §5): the configured machines (relays excepted) and every station that wrote.
+    // Crew messages: the configured machines (relays excepted) and every station that wrote.
     QVector<CrewRecipient> crewRecipients() const override;
     int crewMessageMaxBytes() const override { return 79; }
 

@@ -4,7 +4,7 @@
 // over (copy-on-write tiles, protocols/osyris/PassCountSnapshot.h) and shares no lock with the io thread,
 // which keeps counting into its own grid meanwhile.
 //
-// It shows one lift (issue 17 §2): the top-most lift with data per cell (default) or a chosen one. Its
+// It shows one lift: the top-most lift with data per cell (default) or a chosen one. Its
 // summary is incremental: a histogram per tile, cached by the tile's identity (an unchanged tile is the same
 // immutable object in the next snapshot), so a new snapshot costs only its changed tiles.
 #include "models/PassCountLayer.h"

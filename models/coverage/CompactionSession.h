@@ -1,5 +1,5 @@
 #pragma once
-// The site manager's compaction job in the console (issue 17): the LandXML design, the named compaction
+// The site manager's compaction job in the console: the LandXML design, the named compaction
 // areas (from the design's boundaries or drawn on the map, saved with the site configuration), their
 // geometry in the site frame for the maps, and the coverage report of the current pass counts.
 #include "models/coverage/CompactionView.h"

@@ -1,5 +1,5 @@
 #pragma once
-// What the compaction widgets see of the site manager's job (issue 17): Qt types only, so widgets/ never
+// What the compaction widgets see of the site manager's job: Qt types only, so widgets/ never
 // reach a stack header through it (house plan, tests/test_include_rules). CompactionSession implements it
 // over the LandXML design, the OSYRIS pass-count snapshot and the coverage report.
 #include <QJsonObject>

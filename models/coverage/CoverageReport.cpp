@@ -30,9 +30,13 @@ using osyris::LocalPoint;
 using osyris::LocalRing;
 using osyris::PassCountSnapshot;
 
-static QString tr(const char* s) {
-    return QCoreApplication::translate("ocu::CoverageReport", s);
-}
+namespace {
+// The report's texts in the translation context "ocu::CoverageReport"; a class, so that lupdate sees the
+// context and no free tr() shadows QObject::tr.
+struct ReportText {
+    Q_DECLARE_TR_FUNCTIONS(ocu::CoverageReport)
+};
+} // namespace
 
 struct CoverageFrames::Crs {
     CrsTransform t;
@@ -58,7 +62,7 @@ QString CoverageFrames::init(const CoverageJob& job) {
         } else {
             auto d = CrsTransform::fromWgs84To(job.design->epsg);
             if (!d)
-                return tr("design CRS: %1").arg(QString::fromStdString(d.error()));
+                return ReportText::tr("design CRS: %1").arg(QString::fromStdString(d.error()));
             m_designCrs = std::make_shared<Crs>(Crs{std::move(d.value())});
         }
     }
@@ -142,10 +146,10 @@ const CompactionArea* findArea(const CoverageJob& job, const QString& name) {
 
 QString liftName(const PassCountSnapshot& s, int lift) {
     if (lift == kAllLifts)
-        return tr("every lift");
+        return ReportText::tr("every lift");
     if (lift < 0 || lift >= s.liftCount())
-        return tr("top view (top-most lift per cell)");
-    return tr("lift %1 (z %2 … %3 m)")
+        return ReportText::tr("top view (top-most lift per cell)");
+    return ReportText::tr("lift %1 (z %2 … %3 m)")
         .arg(lift + 1)
         .arg(s.liftBottom(lift), 0, 'f', 2)
         .arg(s.liftTop(lift), 0, 'f', 2);
@@ -163,7 +167,7 @@ CoverageTables computeCoverageTables(const CoverageJob& job, const CoverageFrame
     t.epsg = frames.epsg();
     t.crsName = frames.crsName();
     if (!job.snapshot) {
-        t.problems << tr("no pass counts yet");
+        t.problems << ReportText::tr("no pass counts yet");
         return t;
     }
     const PassCountSnapshot& snap = *job.snapshot;
@@ -199,17 +203,17 @@ CoverageTables computeCoverageTables(const CoverageJob& job, const CoverageFrame
             continue;
         const LocalRing ring = areaRing(frames, a);
         if (ring.size() < 3) {
-            t.problems << tr("area \"%1\" has fewer than 3 usable vertices").arg(a.name);
+            t.problems << ReportText::tr("area \"%1\" has fewer than 3 usable vertices").arg(a.name);
             continue;
         }
         t.areas.push_back({a.name, a.source, osyris::coverageInRings(snap, {ring}, l)});
     }
     if (!area.isEmpty() && t.areas.isEmpty() && !findArea(job, area))
-        t.problems << tr("no area named \"%1\"").arg(area);
+        t.problems << ReportText::tr("no area named \"%1\"").arg(area);
 
     if (job.design && !job.design->alignments.empty()) {
         if (!frames.hasDesignCrs()) {
-            t.problems << tr("the design names no EPSG code: station ranges cannot be placed");
+            t.problems << ReportText::tr("the design names no EPSG code: station ranges cannot be placed");
         } else {
             const landxml::Alignment& al = job.design->alignments.front();
             t.alignment = QString::fromStdString(al.name);
@@ -235,16 +239,16 @@ CoverageTables computeCoverageTables(const CoverageJob& job, const CoverageFrame
 QString writeCoverageCsv(const CoverageJob& job, const CoverageFrames& frames, int lift, const QString& area,
                          const QString& path, qint64* rowsOut) {
     if (!job.snapshot)
-        return tr("no pass counts yet");
+        return ReportText::tr("no pass counts yet");
     const PassCountSnapshot& snap = *job.snapshot;
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly))
-        return tr("cannot write %1: %2").arg(path, f.errorString());
+        return ReportText::tr("cannot write %1: %2").arg(path, f.errorString());
     LocalRing ring;
     if (!area.isEmpty()) {
         const CompactionArea* a = findArea(job, area);
         if (!a)
-            return tr("no area named \"%1\"").arg(area);
+            return ReportText::tr("no area named \"%1\"").arg(area);
         ring = areaRing(frames, *a);
     }
     const double cs = snap.cellSize();
@@ -364,7 +368,7 @@ QString writeCoverageCsv(const CoverageJob& job, const CoverageFrames& frames, i
             ys[k] = (y0 + (idx[k] >> osyris::kTileBits) + 0.5) * cs;
         }
         if (!frames.localToProjected(xs.data(), ys.data(), n, es.data(), ns.data(), lats.data(), lons.data()))
-            return tr("PROJ could not convert a cell to EPSG:%1").arg(frames.epsg());
+            return ReportText::tr("PROJ could not convert a cell to EPSG:%1").arg(frames.epsg());
         block.clear();
         for (std::size_t k = 0; k < n; ++k) {
             const int i = idx[k];
@@ -395,10 +399,10 @@ QString writeCoverageCsv(const CoverageJob& job, const CoverageFrames& frames, i
             }
         }
         if (f.write(block) != block.size())
-            return tr("cannot write %1: %2").arg(path, f.errorString());
+            return ReportText::tr("cannot write %1: %2").arg(path, f.errorString());
     }
     if (!f.commit())
-        return tr("cannot write %1: %2").arg(path, f.errorString());
+        return ReportText::tr("cannot write %1: %2").arg(path, f.errorString());
     if (rowsOut)
         *rowsOut = rows;
     return {};
@@ -409,18 +413,18 @@ QString writeCoverageCsv(const CoverageJob& job, const CoverageFrames& frames, i
 QString writeCoverageGeoTiff(const CoverageJob& job, const CoverageFrames& frames, int lift,
                              const QString& path, double* maxDeviationM) {
     if (!job.snapshot || job.snapshot->empty())
-        return tr("no pass counts yet");
+        return ReportText::tr("no pass counts yet");
     const PassCountSnapshot& snap = *job.snapshot;
     const int l = lift == kAllLifts ? -1 : lift;
     static std::once_flag once;
     std::call_once(once, [] { GDALAllRegister(); });
     GDALDriver* drv = GetGDALDriverManager()->GetDriverByName("GTiff");
     if (!drv)
-        return tr("GDAL has no GTiff driver");
+        return ReportText::tr("GDAL has no GTiff driver");
     const osyris::CellBox box = snap.extent();
     const int cols = box.cx1 - box.cx0 + 1, rows = box.cy1 - box.cy0 + 1;
     if (cols <= 0 || rows <= 0)
-        return tr("no pass counts yet");
+        return ReportText::tr("no pass counts yet");
     const double cs = snap.cellSize();
     // Raster row 0 is the northernmost row of cells (cy1); column 0 is cx0. The local grid is not aligned
     // with the projected grid (meridian convergence): an affine geotransform from three corners, and its
@@ -429,7 +433,7 @@ QString writeCoverageGeoTiff(const CoverageJob& job, const CoverageFrames& frame
     double e00, n00, e10, n10, e01, n01;
     if (!frames.localToProjected(xw, yn, e00, n00) || !frames.localToProjected(xe, yn, e10, n10) ||
         !frames.localToProjected(xw, ys, e01, n01))
-        return tr("PROJ could not convert the raster's corners");
+        return ReportText::tr("PROJ could not convert the raster's corners");
     double gt[6] = {e00, (e10 - e00) / cols, (e01 - e00) / rows, n00, (n10 - n00) / cols, (n01 - n00) / rows};
     double dev = 0;
     for (auto [px, py] : {std::pair{double(cols), double(rows)}, std::pair{cols / 2.0, rows / 2.0}}) {
@@ -451,12 +455,12 @@ QString writeCoverageGeoTiff(const CoverageJob& job, const CoverageFrames& frame
     GDALDataset* ds = drv->Create(file.constData(), cols, rows, 1, GDT_UInt16, opts);
     CSLDestroy(opts);
     if (!ds)
-        return tr("GDAL cannot create %1: %2").arg(path, QString::fromUtf8(CPLGetLastErrorMsg()));
+        return ReportText::tr("GDAL cannot create %1: %2").arg(path, QString::fromUtf8(CPLGetLastErrorMsg()));
     ds->SetGeoTransform(gt);
     OGRSpatialReference srs;
     QString err;
     if (srs.importFromEPSG(frames.epsg()) != OGRERR_NONE) {
-        err = tr("GDAL does not know EPSG:%1").arg(frames.epsg());
+        err = ReportText::tr("GDAL does not know EPSG:%1").arg(frames.epsg());
     } else {
         char* wkt = nullptr;
         srs.exportToWkt(&wkt);
@@ -478,7 +482,8 @@ QString writeCoverageGeoTiff(const CoverageJob& job, const CoverageFrames& frame
         if (err.isEmpty() &&
             band->RasterIO(GF_Write, col, row, osyris::kTileSize, osyris::kTileSize, buf.data(),
                            osyris::kTileSize, osyris::kTileSize, GDT_UInt16, 0, 0) != CE_None)
-            err = tr("GDAL cannot write %1: %2").arg(path, QString::fromUtf8(CPLGetLastErrorMsg()));
+            err =
+                ReportText::tr("GDAL cannot write %1: %2").arg(path, QString::fromUtf8(CPLGetLastErrorMsg()));
     }
     GDALClose(ds);
     if (!err.isEmpty())
@@ -653,19 +658,20 @@ QImage renderCoverageMap(const CoverageJob& job, const CoverageFrames& frames, i
     p.setBrush(Qt::NoBrush);
     p.setPen(Qt::black);
     p.drawText(QRect(legend.left() + 6, legend.top() + 2, lw, lh), Qt::AlignLeft | Qt::AlignVCenter,
-               tr("Passes"));
+               ReportText::tr("Passes"));
     for (int i = 0; i < labels.size(); ++i) {
         const QRect sw(legend.left() + 6, legend.top() + lh * (i + 1) + 4, lh - 2, lh - 4);
         p.fillRect(sw, passCountColor(i + 1, PassPalette::Discrete, target));
         p.drawRect(sw);
         p.drawText(QRect(sw.right() + 6, sw.top() - 2, lw, lh), Qt::AlignLeft | Qt::AlignVCenter,
-                   labels[i] + ((i + 1 >= target.min && i + 1 <= target.max) ? tr(" (target)") : QString()));
+                   labels[i] + ((i + 1 >= target.min && i + 1 <= target.max) ? ReportText::tr(" (target)")
+                                                                             : QString()));
     }
     const QRect inc(legend.left() + 6, legend.top() + lh * (labels.size() + 1) + 6, lh - 2, lh - 4);
     p.fillRect(inc, QColor(0x80, 0x80, 0x80, 120));
     p.drawRect(inc);
     p.drawText(QRect(inc.right() + 6, inc.top() - 2, lw, lh), Qt::AlignLeft | Qt::AlignVCenter,
-               tr("incomplete"));
+               ReportText::tr("incomplete"));
     // Scale bar: a round length about a fifth of the width.
     const double target_m = size.width() / 5.0 / scale;
     const double pow10 = std::pow(10, std::floor(std::log10(target_m)));
@@ -706,18 +712,18 @@ QStringList statsRow(const QString& name, const CoverageStats& s) {
 
 QString filtersText(const osyris::PassCountSettings& st) {
     QStringList f;
-    f << (st.vibration == osyris::VibrationFilter::On    ? tr("vibration on only")
-          : st.vibration == osyris::VibrationFilter::Off ? tr("vibration off only")
-                                                         : tr("vibration on or off"));
-    f << (st.direction == osyris::DirectionFilter::Forward    ? tr("forward passes only")
-          : st.direction == osyris::DirectionFilter::Backward ? tr("backward passes only")
-                                                              : tr("both directions"));
+    f << (st.vibration == osyris::VibrationFilter::On    ? ReportText::tr("vibration on only")
+          : st.vibration == osyris::VibrationFilter::Off ? ReportText::tr("vibration off only")
+                                                         : ReportText::tr("vibration on or off"));
+    f << (st.direction == osyris::DirectionFilter::Forward    ? ReportText::tr("forward passes only")
+          : st.direction == osyris::DirectionFilter::Backward ? ReportText::tr("backward passes only")
+                                                              : ReportText::tr("both directions"));
     if (st.speedMin || st.speedMax)
-        f << tr("speed %1 … %2 m/s")
+        f << ReportText::tr("speed %1 … %2 m/s")
                  .arg(st.speedMin ? num(*st.speedMin, 2) : QStringLiteral("0"),
                       st.speedMax ? num(*st.speedMax, 2) : QStringLiteral("∞"));
     if (st.timeFrom || st.timeTo)
-        f << tr("time %1 … %2")
+        f << ReportText::tr("time %1 … %2")
                  .arg(st.timeFrom ? QDateTime::fromMSecsSinceEpoch(*st.timeFrom).toString(Qt::ISODate)
                                   : QStringLiteral("–"),
                       st.timeTo ? QDateTime::fromMSecsSinceEpoch(*st.timeTo).toString(Qt::ISODate)
@@ -726,7 +732,7 @@ QString filtersText(const osyris::PassCountSettings& st) {
         QStringList m;
         for (auto i : st.machines)
             m << QString::number(i);
-        f << tr("machines %1 only").arg(m.join(QStringLiteral(", ")));
+        f << ReportText::tr("machines %1 only").arg(m.join(QStringLiteral(", ")));
     }
     return f.join(QStringLiteral(" · "));
 }
@@ -736,76 +742,77 @@ QString filtersText(const osyris::PassCountSettings& st) {
 QString writeCoveragePdf(const CoverageJob& job, const CoverageFrames& frames, const CoverageTables& t,
                          int lift, const QString& area, const QString& path, QSize mapSize) {
     if (!job.snapshot)
-        return tr("no pass counts yet");
+        return ReportText::tr("no pass counts yet");
     const PassCountSnapshot& snap = *job.snapshot;
     {
         QFile probe(path);
         if (!probe.open(QIODevice::WriteOnly))
-            return tr("cannot write %1: %2").arg(path, probe.errorString());
+            return ReportText::tr("cannot write %1: %2").arg(path, probe.errorString());
     }
     QPdfWriter pdf(path);
     pdf.setPageSize(QPageSize(QPageSize::A4));
     pdf.setResolution(150);
     pdf.setPageMargins(QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter);
-    pdf.setTitle(tr("Compaction coverage report"));
+    pdf.setTitle(ReportText::tr("Compaction coverage report"));
     pdf.setCreator(QStringLiteral("OCU"));
     QPainter p;
     if (!p.begin(&pdf))
-        return tr("cannot write %1").arg(path);
+        return ReportText::tr("cannot write %1").arg(path);
     p.setRenderHint(QPainter::Antialiasing);
     p.setRenderHint(QPainter::SmoothPixmapTransform);
     PdfPageWriter w(pdf, p, 8.5);
     const int W = w.width();
-    w.heading(job.siteName.isEmpty() ? tr("Compaction coverage report")
-                                     : tr("Compaction coverage report — %1").arg(job.siteName),
+    w.heading(job.siteName.isEmpty() ? ReportText::tr("Compaction coverage report")
+                                     : ReportText::tr("Compaction coverage report — %1").arg(job.siteName),
               15);
-    w.text(tr("Written %1 · %2 · cell %3 m · target %4–%5 passes")
+    w.text(ReportText::tr("Written %1 · %2 · cell %3 m · target %4–%5 passes")
                .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
                     liftName(snap, lift), num(snap.cellSize(), 2))
                .arg(snap.targetMin())
                .arg(snap.targetMax()));
-    w.text(tr("CRS: EPSG:%1 (%2) · design: %3")
+    w.text(ReportText::tr("CRS: EPSG:%1 (%2) · design: %3")
                .arg(t.epsg)
                .arg(t.crsName, job.design ? QStringLiteral("%1 (%2 alignments, %3 boundaries)")
                                                 .arg(job.designPath)
                                                 .arg(job.design->alignments.size())
                                                 .arg(job.design->boundaries.size())
-                                          : tr("none")));
-    w.text(tr("Machines: %1 · data %2")
-               .arg(job.machines.isEmpty() ? tr("none known") : job.machines.join(QStringLiteral(", ")),
+                                          : ReportText::tr("none")));
+    w.text(ReportText::tr("Machines: %1 · data %2")
+               .arg(job.machines.isEmpty() ? ReportText::tr("none known")
+                                           : job.machines.join(QStringLiteral(", ")),
                     job.dataFrom.isValid()
-                        ? tr("%1 to %2")
+                        ? ReportText::tr("%1 to %2")
                               .arg(job.dataFrom.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")),
                                    job.dataTo.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss 'UTC'")))
-                        : tr("time range not known")));
-    w.text(tr("Filters: %1").arg(filtersText(snap.settings())));
+                        : ReportText::tr("time range not known")));
+    w.text(ReportText::tr("Filters: %1").arg(filtersText(snap.settings())));
     QStringList lifts;
     for (int i = 0; i < snap.liftCount(); ++i)
-        lifts << tr("%1: z %2 … %3 m")
+        lifts << ReportText::tr("%1: z %2 … %3 m")
                      .arg(i + 1)
                      .arg(snap.liftBottom(i), 0, 'f', 2)
                      .arg(snap.liftTop(i), 0, 'f', 2);
-    w.text(tr("Lifts (thickness %1): %2")
+    w.text(ReportText::tr("Lifts (thickness %1): %2")
                .arg(snap.settings().liftThickness > 0
                         ? QStringLiteral("%1 m").arg(snap.settings().liftThickness)
-                        : tr("off"),
-                    lifts.isEmpty() ? tr("none") : lifts.join(QStringLiteral("; "))));
+                        : ReportText::tr("off"),
+                    lifts.isEmpty() ? ReportText::tr("none") : lifts.join(QStringLiteral("; "))));
     // The incomplete statement: always said, one way or the other.
     if (snap.anyIncomplete() || t.whole.incomplete) {
         QStringList gaps;
         for (const auto& [idx, ranges] : snap.givenUp())
-            gaps << tr("machine %1: %2 slot ranges").arg(idx).arg(ranges.size());
-        w.text(
-            tr("INCOMPLETE: %1 cells may be under-counted: ribbon data that never arrived was given up (%2). "
-               "Their counts are lower bounds.")
-                .arg(t.whole.incomplete)
-                .arg(gaps.join(QStringLiteral(", "))));
+            gaps << ReportText::tr("machine %1: %2 slot ranges").arg(idx).arg(ranges.size());
+        w.text(ReportText::tr("INCOMPLETE: %1 cells may be under-counted: ribbon data that never arrived was "
+                              "given up (%2). "
+                              "Their counts are lower bounds.")
+                   .arg(t.whole.incomplete)
+                   .arg(gaps.join(QStringLiteral(", "))));
     } else {
-        w.text(
-            tr("Complete: every ribbon slot of every machine was received; no cell is marked incomplete."));
+        w.text(ReportText::tr(
+            "Complete: every ribbon slot of every machine was received; no cell is marked incomplete."));
     }
     for (const QString& prob : t.problems)
-        w.text(tr("Note: %1").arg(prob));
+        w.text(ReportText::tr("Note: %1").arg(prob));
     w.y() += 8;
     const QImage map = renderCoverageMap(job, frames, lift, area, mapSize);
     const QImage scaled = map.scaled(W, W * 5 / 8, Qt::KeepAspectRatio, Qt::SmoothTransformation);
@@ -816,28 +823,32 @@ QString writeCoveragePdf(const CoverageJob& job, const CoverageFrames& frames, c
     p.setPen(Qt::black);
     w.y() += scaled.height() + 10;
 
-    const QStringList header{tr("Area"),   tr("m²"),  tr("covered %"), tr("under %"), tr("at %"),
-                             tr("over %"), tr("min"), tr("mean"),      tr("max"),     tr("incomplete")};
+    const QStringList header{ReportText::tr("Area"),      ReportText::tr("m²"),   ReportText::tr("covered %"),
+                             ReportText::tr("under %"),   ReportText::tr("at %"), ReportText::tr("over %"),
+                             ReportText::tr("min"),       ReportText::tr("mean"), ReportText::tr("max"),
+                             ReportText::tr("incomplete")};
     const QVector<double> widths{0.19, 0.08, 0.11, 0.09, 0.08, 0.09, 0.06, 0.08, 0.06, 0.13};
-    w.heading(tr("Statistics per area"), 11);
+    w.heading(ReportText::tr("Statistics per area"), 11);
     QVector<QStringList> rows;
-    rows << statsRow(tr("All counted cells"), t.whole);
+    rows << statsRow(ReportText::tr("All counted cells"), t.whole);
     for (const AreaStats& a : t.areas)
         rows << statsRow(a.name, a.stats);
     w.table(header, rows, widths, {3});
-    w.text(tr("Cells belong to an area when their centre lies inside it. covered = at least one pass; "
-              "under/at/over "
-              "the target as % of the area's cells; min/mean/max over covered cells."));
+    w.text(ReportText::tr(
+        "Cells belong to an area when their centre lies inside it. covered = at least one pass; "
+        "under/at/over "
+        "the target as % of the area's cells; min/mean/max over covered cells."));
     if (!t.stations.isEmpty()) {
         w.y() += 6;
-        w.heading(tr("Statistics per station range — %1, %2 m left to %3 m right of the centre line")
-                      .arg(t.alignment)
-                      .arg(job.bandLeft)
-                      .arg(job.bandRight),
-                  11);
+        w.heading(
+            ReportText::tr("Statistics per station range — %1, %2 m left to %3 m right of the centre line")
+                .arg(t.alignment)
+                .arg(job.bandLeft)
+                .arg(job.bandRight),
+            11);
         QVector<QStringList> srows;
         QStringList sh = header;
-        sh[0] = tr("Stations");
+        sh[0] = ReportText::tr("Stations");
         for (const auto& b : t.stations)
             srows << statsRow(
                 QStringLiteral("%1 – %2").arg(QString::fromStdString(landxml::formatStation(b.from, 0)),
@@ -862,14 +873,15 @@ QJsonObject writeCoverageReport(const CoverageJob& job, const CoverageReportRequ
         const bool asked = !r.pdf.isEmpty() || !r.csv.isEmpty() || !r.geotiff.isEmpty();
         o[QStringLiteral("ok")] = asked && errors.isEmpty();
         o[QStringLiteral("message")] =
-            msg.isEmpty() ? (errors.isEmpty() ? tr("coverage report written") : errors.first().toString())
-                          : msg;
+            msg.isEmpty()
+                ? (errors.isEmpty() ? ReportText::tr("coverage report written") : errors.first().toString())
+                : msg;
         return o;
     };
     if (r.pdf.isEmpty() && r.csv.isEmpty() && r.geotiff.isEmpty())
-        errors << tr("give \"pdf\", \"csv\" and/or \"geotiff\" (file names)");
+        errors << ReportText::tr("give \"pdf\", \"csv\" and/or \"geotiff\" (file names)");
     if (!job.snapshot) {
-        errors << tr("no pass counts yet (no OSYRIS station, or nothing counted)");
+        errors << ReportText::tr("no pass counts yet (no OSYRIS station, or nothing counted)");
         return finish({});
     }
     CoverageFrames frames;
@@ -878,12 +890,12 @@ QJsonObject writeCoverageReport(const CoverageJob& job, const CoverageReportRequ
         return finish({});
     }
     if (!r.area.isEmpty() && !findArea(job, r.area)) {
-        errors << tr("no area named \"%1\"").arg(r.area);
+        errors << ReportText::tr("no area named \"%1\"").arg(r.area);
         return finish({});
     }
     const int lift = r.lift;
     if (lift != -1 && lift != kAllLifts && (lift < 0 || lift >= job.snapshot->liftCount())) {
-        errors << tr("no lift %1 (the data has %2)").arg(lift + 1).arg(job.snapshot->liftCount());
+        errors << ReportText::tr("no lift %1 (the data has %2)").arg(lift + 1).arg(job.snapshot->liftCount());
         return finish({});
     }
     const CoverageTables t = computeCoverageTables(job, frames, lift, r.area);

@@ -1,5 +1,5 @@
 #pragma once
-// The coverage report of a compaction job (issue 17 §3): statistics per area and per station range, a PDF
+// The coverage report of a compaction job: statistics per area and per station range, a PDF
 // (map snapshot with legend and scale bar, targets, statistics, lifts, machines, time range, filters, CRS,
 // the "incomplete" statement), a CSV in Veta-style columns in an EPSG-coded projected CRS (PROJ), and a
 // GeoTIFF of the pass-count raster (GDAL). docs/coverage-report.md describes the files.

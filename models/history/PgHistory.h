@@ -1,5 +1,5 @@
 #pragma once
-// The shared control-room history on PostgreSQL (issue 16 §4). Every console writes its events, alarms,
+// The shared control-room history on PostgreSQL. Every console writes its events, alarms,
 // acknowledgements, shelvings and command audit to one database; acknowledgements and shelvings made at
 // another console reach this console's AlarmModel within a second (LISTEN/NOTIFY). All database work runs on
 // a worker thread of its own, never on the GUI thread. Every record goes first into a local SQLite outbox

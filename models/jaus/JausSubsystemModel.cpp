@@ -49,7 +49,7 @@ int JausSubsystemModel::rowOf(std::uint16_t subsystem) const {
 void JausSubsystemModel::onVehicle(const JausVehicle& s) {
     const int row = rowOf(s.subsystem);
     if (row >= 0) {
-        // Only the cells that show something new (issue 19 §7): a pose report changes no cell here, and each
+        // Only the cells that show something new: a pose report changes no cell here, and each
         // dataChanged makes the table re-measure every row for its ResizeToContents columns.
         const JausVehicle& o = m_rows[row];
         const bool colour = rowColour(o) != rowColour(s);

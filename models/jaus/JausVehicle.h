@@ -64,7 +64,7 @@ struct JausComponentServices {
     int component = 0;
     QVector<JausService> services;
 };
-// A camera of the vehicle (issue 18): announced through its IOP services or configured per vehicle.
+// A camera of the vehicle: announced through its IOP services or configured per vehicle.
 struct JausVideoEndpoint {
     quint16 resourceId = 0;
     quint16 sensorId = 0;
@@ -107,7 +107,7 @@ struct JausVehicle {
 
     JausAddress mobilityComponent; // zero until discovered
     QVector<JausNodeServices> services;
-    QVector<JausVideoEndpoint> videoEndpoints; // issue 18; empty until announced or configured
+    QVector<JausVideoEndpoint> videoEndpoints; // empty until announced or configured
 };
 
 enum class JausEventSeverity { Info, Warning, Error };

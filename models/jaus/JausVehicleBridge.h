@@ -40,7 +40,7 @@ public:
     // Closes the session with zero demands, several times, without the gate (last resort when the gate is
     // gone, e.g. while the window is destroyed).
     virtual CommandResult stopDriving(quint16 subsystem) = 0;
-    // Pan-tilt of a camera (issue 18; AEP-4818 §9.3.3), GUI thread: rates in rad/s (+ pan = right, + tilt =
+    // Pan-tilt of a camera (AEP-4818 §9.3.3), GUI thread: rates in rad/s (+ pan = right, + tilt =
     // up), zero = stop. Refused like drive() without control of the vehicle, a running stack or a link;
     // ok = the demand was handed to the stack, which streams it while it is refreshed (a demand not refreshed
     // within the drive command timeout goes to zero) and reports a refusal as an event. The default: this

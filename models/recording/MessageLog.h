@@ -1,5 +1,5 @@
 #pragma once
-// Inbound protocol messages in a flight recording (issue 16 §1, docs/recording.md "Schema"): what the stacks
+// Inbound protocol messages in a flight recording (docs/recording.md "Schema"): what the stacks
 // handed to the recorder's tap (protocols/common/MessageTap.h). A chunk is one BLOB of the `messages` table
 // (qCompress'ed: zlib with Qt's 4-byte length prefix), records back to back:
 //   varint channel   index into `msg_channels` (protocol, link, peer, type)

@@ -1,5 +1,5 @@
 #pragma once
-// OSYRIS pass counts in a flight recording (issue 16; docs/recording.md "Schema"): the layer's changed cells,
+// OSYRIS pass counts in a flight recording (docs/recording.md "Schema"): the layer's changed cells,
 // at most once a second, as absolute counts. One row of the `passcounts` table is one change, qCompress'ed:
 //   f64 origin E, f64 origin N, f64 cell size, i32 columns, i32 rows (the grid then),
 //   i32 x, i32 y, i32 w, i32 h (the changed cells), then w*h u16 counts, row-major (little-endian).

@@ -1,5 +1,5 @@
 #pragma once
-// The flight recorder (issue 16 §1, docs/recording.md): everything the console's models received - every
+// The flight recorder (docs/recording.md): everything the console's models received - every
 // machine state as delivered to the fleet model, every removal, every link change, every event and alarm,
 // every acknowledgement, every operator command with its result and targets (the CommandGate's audit) and
 // the site map - into one SQLite file per run.
@@ -101,7 +101,7 @@ public:
     void recordSiteMap(const SiteMapData& map);
     // record.raw: one raw frame/datagram as received on `link` (ignored when raw is off).
     void recordRaw(const QString& link, const QByteArray& frame);
-    // The stacks' tap (issue 16 §1): every decoded inbound message with its receive time, protocol, link,
+    // The stacks' tap: every decoded inbound message with its receive time, protocol, link,
     // peer and type, and with record.raw every raw frame. Its calls only pack the message into one buffer and
     // queue it (io threads never wait for the writer); valid while the recorder lives.
     MessageTap* messageTap() const;

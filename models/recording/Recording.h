@@ -109,7 +109,7 @@ public:
     // bytes as hex and, for ISO 23725 (JSON text on the wire), the message itself under "json".
     static QJsonObject messageJson(const RecordedMessage& m, const MessageChannel& channel);
 
-    // ---- export (issue 16 §3) ----
+    // ---- export ----
     // JSON lines in time order: {"type":"machine",...} per state change (the headless monitor's fields plus
     // "t"), {"type":"machine_removed"}, {"type":"event"}, {"type":"ack"}, {"type":"command"},
     // {"type":"link"}.

@@ -1,5 +1,5 @@
 #pragma once
-// Drives the console's models from a recording (issue 16 §2): the fleet model (machines, staleness by the
+// Drives the console's models from a recording: the fleet model (machines, staleness by the
 // replay clock), an alarm model (events and acknowledgements as they were at the replay time), the links and
 // the site map. Play, pause, speed 0.1x-16x, reverse, step and seek; seeking anywhere rebuilds the picture
 // from the newest keyframe before the target plus the records after it (Recording::statesAtIdx), and

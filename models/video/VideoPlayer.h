@@ -1,5 +1,5 @@
 #pragma once
-// One H.264 video stream (RTSP) played for the operator (issue 18 §2): GStreamer decodes on its own streaming
+// One H.264 video stream (RTSP) played for the operator: GStreamer decodes on its own streaming
 // threads (rtspsrc ! rtph264depay ! h264parse ! avdec_h264 ! videoconvert ! appsink, latency-minded: no
 // jitter buffer beyond what is needed, appsink keeps only the newest frame and never waits for a clock); the
 // GUI thread gets the latest frame as a QImage (latest wins: no queue grows when the GUI is slow). The player

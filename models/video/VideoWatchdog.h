@@ -1,5 +1,5 @@
 #pragma once
-// The video watchdog of teleoperation (issue 18 §3; AEP-4818 lists video loss among the watchdog
+// The video watchdog of teleoperation (AEP-4818 lists video loss among the watchdog
 // contingencies): while a vehicle with cameras is driven, its video must be playing and the current frame
 // younger than a limit (default 1 s). When that stops holding the watchdog trips: the drive stream goes to
 // zero at once and stays there, and driving resumes only when the operator deliberately asks (resume()) once

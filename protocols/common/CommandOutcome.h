@@ -1,8 +1,9 @@
 #pragma once
-// What one command did for one target, as far as the wire is concerned (issue 13 §1): sent = the message
+// What one command did for one target, as far as the wire is concerned: sent = the message
 // was handed to the socket by this process; not sent = refused, with a reason an operator can act on.
 // A stack reports the outcomes of one command exactly once, on its io thread, through an OutcomeCallback.
 // Confirmation (the machine reporting the new state) is a separate, later matter.
+// See docs/decisions/command-outcome-per-target.md.
 #include <functional>
 #include <string>
 #include <utility>

@@ -47,7 +47,7 @@ public:
                 s += v;
         return s;
     }
-    // Peer input rejected, ignored as implausible or answered no more (issue 14 §6): rx.rejected.<reason>,
+    // Peer input rejected, ignored as implausible or answered no more: rx.rejected.<reason>,
     // rx.implausible.<cause>, rx.limited.<request>, rx.unknown_member, rx.out_of_standard.
     static bool isReject(std::string_view name) {
         for (std::string_view p : {"rx.rejected.", "rx.implausible.", "rx.limited."})

@@ -1,5 +1,5 @@
 #pragma once
-// A capture time stamped into a video frame's pixels (issue 18): the simulated cameras draw it, the console's
+// A capture time stamped into a video frame's pixels: the simulated cameras draw it, the console's
 // glass-to-glass benchmark reads it back from the rendered image. It survives H.264 because each bit is a
 // large flat cell and readers sample only the cell's centre.
 //

@@ -1,7 +1,7 @@
 #pragma once
 // One Boost.Asio io_context on its own thread: every protocol stack owns one. Commands enter with post();
 // the stack's handlers run only on this thread, so stack state needs no locks.
-// Watchdog (issue 14 §3): a heartbeat timer on the loop stamps an atomic time at every turn; any other thread
+// Watchdog: a heartbeat timer on the loop stamps an atomic time at every turn; any other thread
 // reads how long the loop has not turned (sinceLastTurn) and can tell a stuck handler from an idle stack.
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>

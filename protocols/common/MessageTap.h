@@ -1,5 +1,5 @@
 #pragma once
-// What a stack received, handed to an observer on the io thread (issue 16 §1: the console's flight recorder
+// What a stack received, handed to an observer on the io thread (the console's flight recorder
 // keeps every decoded inbound message and, with record.raw, every raw frame). Plain C++: the stacks know
 // nothing of the recorder; models/recording implements the tap.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Plausibility gate for machine poses of ISO 23725 and JAUS (issue 14 §2; OSYRIS has its own in
+// Plausibility gate for machine poses of ISO 23725 and JAUS (OSYRIS has its own in
 // protocols/osyris/Plausibility.h): a pose that cannot be a machine on this site is not drawn. Without it NaN
 // coordinates were shown as "no position" with health "ok" and x = 10^30 m as a position on another
 // continent. The caller keeps the last good pose, marks the machine implausible, counts the cause

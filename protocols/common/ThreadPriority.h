@@ -1,5 +1,5 @@
 #pragma once
-// Scheduling priority for the threads on the stop path (issue 13 §10): the protocol stacks' io threads and
+// Scheduling priority for the threads on the stop path: the protocol stacks' io threads and
 // the headless monitor's stdin reader. On a loaded machine their wake-up latency, not their work, decides how
 // soon a STOP ALL is on the wire, so they ask the OS to run them ahead of ordinary threads:
 //   1. SCHED_RR (real-time round robin) at a low real-time priority, when permitted (root, CAP_SYS_NICE or

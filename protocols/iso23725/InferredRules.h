@@ -24,7 +24,7 @@ struct InferredRules {
     // Q6: negative WayIds in RouteV1 (traverse against node order) are not emitted unless enabled.
     bool emitNegativeWayIds = false;
     // §5 #21: RouteV1 is optional; when set, an assignment without a route gets the shortest one over
-    // MapConnectivityV1 (issue 15 §2). Off: the AHS plans the route itself.
+    // MapConnectivityV1. Off: the AHS plans the route itself.
     bool sendRoutes = true;
     // §4.2: Protocol values other than ISO23725 are kept as out-of-standard messages (never fatal).
     std::string protocol = "ISO23725";

@@ -25,7 +25,7 @@ IsoConfig parseIsoConfig(ConfigObject& section) {
     c.allStopAckTimeout = ms(section, "allStopAckTimeoutMs", c.allStopAckTimeout, 100, 60000);
     c.allStopStatusTimeout = ms(section, "allStopStatusTimeoutMs", c.allStopStatusTimeout, 100, 120000);
     c.dimensionTolerance = section.number("dimensionTolerance", 0.05, 0.0, 10.0);
-    // Plausibility gate for machine positions (issue 14 §2): outside these a position is not drawn.
+    // Plausibility gate for machine positions: outside these a position is not drawn.
     c.plausibility.extentM = section.number("plausibleExtentM", c.plausibility.extentM, 10, 1e6);
     c.plausibility.maxSpeedMps =
         section.number("plausibleSpeedMaxMps", c.plausibility.maxSpeedMps, 0.1, 1000);

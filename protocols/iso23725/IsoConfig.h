@@ -44,7 +44,7 @@ struct IsoConfig {
     std::chrono::milliseconds errorDiagnosticInterval{1000};
     InferredRules rules;
     // Positions outside these are not drawn: the machine is marked implausible, its last good position kept
-    // (issue 14 §2; checked by the console's bridge in the site frame).
+    // (checked by the console's bridge in the site frame).
     PoseLimits plausibility;
 };
 

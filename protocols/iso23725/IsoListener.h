@@ -114,7 +114,7 @@ public:
         (void)link, (void)connectivity;
     }
     // Fleet discrepancies (AHS list vs configured FMS fleet), each with its cause; empty list = consistent.
-    // This is the only report of them (no onEvent per item: one event per cause, issue 19 §5).
+    // This is the only report of them (no onEvent per item: one event per cause).
     virtual void onFleetDiscrepancies(const std::string& link, const std::vector<FleetDiscrepancy>& items) {
         (void)link, (void)items;
     }

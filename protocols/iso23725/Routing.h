@@ -1,5 +1,5 @@
 #pragma once
-// Routing for dispatch (issue 15 §2): shortest paths over MapConnectivityV1 (§9.1), pure code. The graph is
+// Routing for dispatch: shortest paths over MapConnectivityV1 (§9.1), pure code. The graph is
 // directed (a way's Connection lists the ways reachable from it), entering a road costs its Length (m),
 // entering an area costs nothing. A route is computed from the truck's current way
 // (HaulTruckProductionStateV2.WayId) to a destination way or to the nearest of several (an area's ways); no

@@ -61,7 +61,7 @@ JausConfig parseJausConfig(ConfigObject& s) {
         se.address = checkedAddress(e, "address", "127.0.0.1");
         se.port = std::uint16_t(e.integer("port", 3794, 1, 65535));
         se.tcp = e.choice("transport", "udp", {"udp", "tcp"}) == "tcp";
-        // Issue 18: cameras of a vehicle that announces none through Digital Resource Discovery.
+        // Cameras of a vehicle that announces none through Digital Resource Discovery.
         for (auto& v : e.objectList("video")) {
             VideoEndpoint ve;
             ve.url = v.string("url", "");
@@ -92,7 +92,7 @@ JausConfig parseJausConfig(ConfigObject& s) {
     c.eventConfirmTimeoutS = s.number("event_confirm_timeout_s", c.eventConfirmTimeoutS, 0.2, 30);
     c.stopRepeats = int(s.integer("stop_repeats", c.stopRepeats, 2, 50));
     c.driveCommandTimeoutS = s.number("drive_command_timeout_s", c.driveCommandTimeoutS, 0, 10);
-    // Plausibility gate for poses (issue 14 §2): outside these a pose is not drawn.
+    // Plausibility gate for poses: outside these a pose is not drawn.
     c.plausibility.extentM = s.number("plausible_extent_m", c.plausibility.extentM, 10, 1e6);
     c.plausibility.maxSpeedMps = s.number("plausible_speed_max_mps", c.plausibility.maxSpeedMps, 0.1, 1000);
     c.plausibility.jumpSlackM = s.number("plausible_jump_slack_m", c.plausibility.jumpSlackM, 0, 1e5);

@@ -62,16 +62,16 @@ struct JausConfig {
     // GUI or script must not keep a vehicle moving on its last command. 0 disables.
     double driveCommandTimeoutS = 0.5;
     bool velocityDrive = true; // default drive mode when a platform offers both drivers
-    // Poses outside these are not drawn: the vehicle is marked implausible, its last good pose kept (issue 14
-    // §2; checked by the console's bridge in the site frame).
+    // Poses outside these are not drawn: the vehicle is marked implausible, its last good pose kept
+    // (checked by the console's bridge in the site frame).
     PoseLimits plausibility;
-    // Video streams per subsystem for vehicles that announce none (issue 18): the "video" list of a
+    // Video streams per subsystem for vehicles that announce none: the "video" list of a
     // static_endpoints entry. Published with configured = true beside what the vehicle announces.
     std::map<std::uint16_t, std::vector<VideoEndpoint>> configuredVideo;
 
     JausId ownId() const { return JausId{subsystemId, nodeId, componentId}; }
     bool mayControl() const { return role != Role::Monitor && authority > 0; }
-    // The stop rule, decided here only (issue 13 §2; the bridge, panels and headless ask it): every role may
+    // The stop rule, decided here only (the bridge, panels and headless ask it): every role may
     // set an emergency (the Management service accepts SetEmergency from any client, AS6009 Management),
     // only roles with command rights may clear one.
     bool mayStop() const { return true; }

@@ -22,8 +22,8 @@ public:
         (void)source;
         send(destination, payload, options);
     }
-    // The same, saying whether the message was handed to a socket: empty when it was, else why not (issue 13
-    // §1: a command counts as sent only then). The default cannot tell and reports success.
+    // The same, saying whether the message was handed to a socket: empty when it was, else why not (a
+    // command counts as sent only then). The default cannot tell and reports success.
     virtual std::string sendOrWhy(const JausId& destination, const Bytes& payload, SendOptions options) {
         send(destination, payload, options);
         return {};

@@ -35,7 +35,7 @@ struct NodeInfo {
     std::vector<ComponentInfo> components;
 };
 
-// A pan-tilt unit of a vehicle (AS6057A, AEP-4818 §9.3.3) as its position sensor reports it (issue 18).
+// A pan-tilt unit of a vehicle (AS6057A, AEP-4818 §9.3.3) as its position sensor reports it.
 struct PanTiltState {
     JausId component;
     bool controlledByUs = false;     // its own access control confirmed our RequestControl
@@ -70,7 +70,7 @@ struct SubsystemSnapshot {
     JausId mobilityComponent; // zero until discovered
     std::vector<NodeInfo> services;
 
-    // Issue 18: the vehicle's video streams (Digital Resource Discovery + Visual Sensor names, or configured
+    // The vehicle's video streams (Digital Resource Discovery + Visual Sensor names, or configured
     // per vehicle) and its pan-tilt units.
     std::vector<VideoEndpoint> videoEndpoints;
     std::vector<PanTiltState> panTilts;
@@ -93,7 +93,7 @@ enum class EventKind {
     DecodeError,
     CommandRefused,
     TransportError,
-    DriveNotSent // a drive stream message was not taken by the socket (issue 13 §9), or the stream recovered
+    DriveNotSent // a drive stream message was not taken by the socket, or the stream recovered
 };
 const char* toString(EventKind k);
 

@@ -103,7 +103,7 @@ std::vector<JudpMessage> fragmentPayload(const JudpHeader& header, ByteSpan payl
 
 // Reassembles First/Middle/Last sets by (source, sequence chain). Accepts the JAUS++ variant that repeats
 // the message ID in every fragment. Stale sets are dropped after a timeout (JTS OldMsgTimeout = 3 s).
-// Bounded per peer and in total (issue 14 §3, docs/reliability.md "Bounds"): a source holds at most
+// Bounded per peer and in total (docs/reliability.md "Bounds"): a source holds at most
 // maxSetsPerSource partial sets (a new one evicts that source's own oldest), and when all sources together
 // hold maxSets, a new set evicts the oldest set of the source holding the most (ties: the newcomer's own
 // first, then the oldest set), so a flooding peer loses its own sets before anybody else's.

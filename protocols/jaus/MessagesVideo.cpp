@@ -1,4 +1,4 @@
-// Video messages (issue 18): Digital Resource Discovery, Visual Sensor, Digital Video, pan-tilt joints.
+// Video messages: Digital Resource Discovery, Visual Sensor, Digital Video, pan-tilt joints.
 // Layouts: shared/research/jaus-services-extra.md §1.2, §2.2, §4 (JSIDL).
 #include "protocols/jaus/MessagesVideo.h"
 

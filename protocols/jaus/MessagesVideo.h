@@ -1,5 +1,5 @@
 #pragma once
-// JAUS video messages (issue 18, AEP-4818 §9.1.2-9.1.8, §9.3.3): the IOP Digital Resource Discovery service
+// JAUS video messages (AEP-4818 §9.1.2-9.1.8, §9.3.3): the IOP Digital Resource Discovery service
 // (urn:jaus:jss:iop:DigitalResourceDiscovery 1.1), the AS6060 Visual Sensor and Digital Video services
 // (environmentSensing 1.0) and the AS6057A pan-tilt joint position / velocity services (manipulator 2.0).
 // Layouts and IDs from shared/research/jaus-services-extra.md §1, §2, §4 (JSIDL). Same rules as Messages.h:

@@ -1,5 +1,5 @@
 #pragma once
-// JSS service inheritance (issue 13 §3): which service each JAUS service directly inherits from, so that a
+// JSS service inheritance: which service each JAUS service directly inherits from, so that a
 // component listing only a derived service (e.g. LocalWaypointListDriver) is known to offer AccessControl and
 // Management too. A peer may or may not list the parent URIs in ReportServices (FKIE's how-to asks
 // integrators to, many do not), so the console decides with this table, never with the list alone.

@@ -1,5 +1,5 @@
 #pragma once
-// Pass statistics of compaction areas and station ranges (issue 17 §1, §3): pure functions over a
+// Pass statistics of compaction areas and station ranges: pure functions over a
 // PassCountSnapshot, for the pass-count panel, the coverage report and tests.
 //
 // A cell belongs to a polygon when its centre lies inside (even-odd rule over all rings, so a second ring

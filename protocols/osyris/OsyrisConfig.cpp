@@ -67,14 +67,14 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
     o.passCount.vibration = vib == "on"    ? VibrationFilter::On
                             : vib == "off" ? VibrationFilter::Off
                                            : VibrationFilter::Any;
-    // Lifts and filters (issue 17 §2).
+    // Lifts and filters.
     o.passCount.liftThickness = c.number("liftThicknessM", 0, 0, 100);
     o.passCount.liftBase = c.number("liftBaseM", 0, -20000, 20000);
     if (c.has("speedMinMps"))
         o.passCount.speedMin = c.number("speedMinMps", 0, 0, 1000);
     if (c.has("speedMaxMps"))
         o.passCount.speedMax = c.number("speedMaxMps", 0, 0, 1000);
-    // Late join and gaps (issue 17 §4).
+    // Late join and gaps.
     o.gapGiveUpNaks = static_cast<int>(c.integer("gapGiveUpNaks", o.gapGiveUpNaks, 0, 1000));
     o.gapGiveUpMs = static_cast<int>(c.number("gapGiveUpSeconds", o.gapGiveUpMs / 1000.0, 0, 86400) * 1000);
     std::string dir = c.choice("direction", "any", {"any", "forward", "backward"});
@@ -82,7 +82,7 @@ OsyrisConfig parseOsyrisConfig(ConfigObject& c) {
                             : dir == "backward" ? DirectionFilter::Backward
                                                 : DirectionFilter::Any;
     o.passCount.minMove = c.number("minMove", 0.25, 0, 10);
-    // Plausibility gate (issue 14 §2): positions outside these never reach the grid or the models.
+    // Plausibility gate: positions outside these never reach the grid or the models.
     auto& pl = o.passCount.plausibility;
     pl.extentM = c.number("plausibleExtentM", pl.extentM, 10, 1e6);
     pl.minWidthM = c.number("plausibleWidthMinM", pl.minWidthM, 0.05, 50);

@@ -50,10 +50,10 @@ struct OsyrisConfig {
     // Engine tuning (not in §7)
     int lossWaitBeats = 3; // wait before requesting a gap (§5: until the loss can be estimated)
     int maxNakSlots = 256; // slots per NAK
-    // NAK rounds (issue 14 §7, NORM-like): a station sends its NAKs in rounds at least nakRoundBeats apart,
-    // every gap due by then in one datagram (at most maxNaksPerBeat NAK messages), after a random back-off
-    // of up to nakBackoffBeats (truncated exponential over the number of stations heard, RFC 5740 §5.5.1)
-    // during which overheard NAKs, NCFs and repairs suppress the same wishes.
+    // NAK rounds (after NORM, RFC 5740 §5.5.1): a station sends its NAKs in rounds at least nakRoundBeats
+    // apart, every gap due by then in one datagram (at most maxNaksPerBeat NAK messages), after a random
+    // back-off of up to nakBackoffBeats (truncated exponential over the number of stations heard, RFC 5740
+    // §5.5.1) during which overheard NAKs, NCFs and repairs suppress the same wishes.
     int maxNaksPerBeat = 64;
     int nakRoundBeats = 30;
     int nakBackoffBeats = 4;
@@ -61,13 +61,13 @@ struct OsyrisConfig {
     int maxRetxPerBeat = 200;         // positions re-sent per beat
     int maxDatagramsPerBeat = 16;
     int answerHoldBeats = 3; // a slot re-sent this recently is not re-sent for another NAK
-    // Ribbon store bounds (issue 14 §3, docs/reliability.md "Bounds"): positions of another station beyond
+    // Ribbon store bounds (docs/reliability.md "Bounds"): positions of another station beyond
     // these are refused (rx.rejected.ribbon_full / store_full, a warning a minute) and their gaps are not
     // NAKed; nothing held is ever dropped (it is in the pass counts already). 2^22 slots are 116 h of one
     // machine at 10 Hz, the widest range an ALIVE may announce; 2^24 = four such ribbons.
     std::uint64_t maxRibbonSlots = std::uint64_t(1) << 22;
     std::uint64_t maxStoreSlots = std::uint64_t(1) << 24;
-    // Late join and gaps (issue 17 §4): the slots a ribbon's pass counting waits for are given up as
+    // Late join and gaps: the slots a ribbon's pass counting waits for are given up as
     // unobtainable (counted without, their cells marked incomplete) once this station asked for them
     // gapGiveUpNaks times, or gapGiveUpMs after counting first stopped at them, whichever comes first
     // (0 = that rule off).

@@ -24,11 +24,11 @@ struct OsyrisStack::Impl {
     std::chrono::steady_clock::time_point nextBeat;
     int beatMs = 100;
     std::atomic<std::int64_t> maxHandlerNs{0};
-    MessageTap* tap = nullptr; // issue 16: the flight recorder's
+    MessageTap* tap = nullptr; // the flight recorder's
     std::string tapLink;
     OsyrisConfig tapCfg; // checksum, MaxLen and our own index, as the station decodes
 
-    // Issue 16: the datagram to the tap, before the station handles it - raw as received, and each message
+    // The datagram to the tap, before the station handles it - raw as received, and each message
     // the codec accepts (with the station's checksum and MaxLen) as its own bytes. Our own looped-back
     // datagrams are not inbound.
     void tapDatagram(ByteSpan d) {
@@ -233,8 +233,9 @@ void OsyrisStack::sendText(std::string text, std::uint8_t to, OutcomeCallback do
         done({TargetOutcome{target, false, "the OSYRIS station is not running"}});
         return;
     }
-    // From the calling thread at once (issue 13 §10: the STOP text does not wait for the io thread to wake
-    // up); the io thread sends it instead when the socket would not take it without waiting.
+    // From the calling thread at once (the STOP text does not wait for the io thread to wake
+    // up, docs/decisions/stop-from-callers-thread.md); the io thread sends it instead when the socket would
+    // not take it without waiting.
     if (StationCore* c = m_impl->core.get(); c && m_impl->transport) {
         const Bytes d = c->textDatagram(text, to);
         std::string why;

@@ -34,13 +34,13 @@ public:
     // with the reason in *error (also reported through onEvent, on the calling thread).
     bool start(std::string* error = nullptr);
     void stop();
-    // Issue 16: every message of another station that the codec accepts (and, when the tap wants them, every
+    // Every message of another station that the codec accepts (and, when the tap wants them, every
     // datagram as received) goes to `tap` on the io thread. Set before start(); the tap outlives the run.
     void setMessageTap(MessageTap* tap);
     bool running() const;
 
     void sendText(std::string text, std::uint8_t to = kIdxAll);
-    // The text as its own datagram at once (not with the next Beat), with its outcome (issue 13 §1): `done`
+    // The text as its own datagram at once (not with the next Beat), with its outcome: `done`
     // runs once with one TargetOutcome for the group (target groupTarget()): sent when the socket took the
     // datagram for every destination, otherwise the reason. Sent from the calling thread (and `done` run
     // there) when the socket takes it at once; otherwise on the io thread (and `done` there).
@@ -60,12 +60,12 @@ public:
     // For stations that are machines (simulated rollers): write a position into the own ribbon.
     void publishOwnPosition(CmPos p, std::vector<PosProp> props = {});
     void setImpairment(const RxImpairment& imp);
-    // Filters, lifts (issue 17 §2): the io thread recounts the whole job from the ribbons.
+    // Filters, lifts: the io thread recounts the whole job from the ribbons.
     void setPassCountSettings(const PassCountSettings& s);
 
     const OsyrisConfig& config() const { return m_cfg; }
     Counters& counters();
-    // Watchdog (issue 14 §3): how long the io thread has not turned (0 while it turns or is not running).
+    // Watchdog: how long the io thread has not turned (0 while it turns or is not running).
     std::chrono::milliseconds ioStalledFor() const;
     // Runs f on the io thread without waiting (diagnostics; tests block the thread with it on purpose).
     void postToIo(std::function<void()> f);
@@ -76,7 +76,7 @@ public:
     std::shared_ptr<const PassCountSnapshot> passCounts();
     std::uint16_t localPort() const { return m_localPort; }
     // The longest a single io-thread handler (one received datagram, one Beat) has run since start or the
-    // last reset (issue 14 §3, §5: no single input may stall the io thread). Thread-safe.
+    // last reset (no single input may stall the io thread). Thread-safe.
     std::chrono::nanoseconds maxHandlerDuration() const;
     void resetMaxHandlerDuration();
     // Runs f(core) on the io thread and returns its result (tests, diagnostics).

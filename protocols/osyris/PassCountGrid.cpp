@@ -69,7 +69,7 @@ std::uint64_t cellKey(std::int32_t cx, std::int32_t cy) {
 }
 
 bool usable(const CmPos& p) {
-    // Only valid positions with at least medium accuracy and not in a GPS shadow (issue 5 §5).
+    // Only valid positions with at least medium accuracy and not in a GPS shadow.
     return (p.flags & kPosValid) && !(p.flags & kPosGpsShadow) &&
            (p.flags & (kPosAccuracyMed | kPosAccuracyHigh)) && std::isfinite(p.x) && std::isfinite(p.y);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Pass-count engine (issue 5 §5, rules from research/anchors-features.md §4.2): a sparse tiled grid;
+// Pass-count engine (rules from research/anchors-features.md §4.2): a sparse tiled grid;
 // the drum footprint is swept between consecutive counted positions of one machine's ribbon, processed
 // strictly in slot order. Counts are a sum over machines of a function of each ribbon alone, so the
 // grid depends only on the ribbons, never on the order datagrams arrived in.
@@ -42,7 +42,7 @@ public:
     std::uint64_t advanceAll(const RibbonStore& store);
     std::uint32_t nextSlot(std::uint8_t machine) const;
 
-    // Late join and gaps (issue 17 §4): slots [from, to] of machine's ribbon are given up as unobtainable.
+    // Late join and gaps: slots [from, to] of machine's ribbon are given up as unobtainable.
     // advance() then continues after them without sweeping across the gap (a new traversal starts at the
     // next held position) and marks the cells the gap may have covered incomplete: the drum-wide corridor
     // from the last counted position before the gap to the first one after it, or, with nothing before it
@@ -74,7 +74,7 @@ public:
     // Bounding box of cells changed since the last call, if any.
     std::optional<GridRect> takeDirty();
 
-    // Bounded work (issue 14 §3): one position sweeps at most this many cells of its bounding box. With the
+    // Bounded work: one position sweeps at most this many cells of its bounding box. With the
     // plausibility limits (width <= 6 m, step <= maxJump) a sweep touches at most ((10+6)/0.34)^2 ~ 2,200
     // cells; the cap only guards odd settings (a tiny cell size with a long maxJump): such a step is not
     // counted.

@@ -7,10 +7,10 @@
 // no lock shared with the io thread, and consecutive snapshots share every tile that did not change between
 // them (a snapshot costs one pointer per tile plus a copy of each changed tile).
 //
-// Lifts (issue 17 §2): the grid keeps one tile set per lift (an elevation band of the positions' z, of
+// Lifts: the grid keeps one tile set per lift (an elevation band of the positions' z, of
 // PassCountSettings::liftThickness above liftBase) plus a composite "top" tile set: per cell the count of the
 // top-most lift with data there and the cell's flags (incomplete: a given-up gap of a ribbon may have passed
-// over it, issue 17 §4). tiles()/countAtCell(cx, cy)/countsInRect() without a lift read the top view.
+// over it). tiles()/countAtCell(cx, cy)/countsInRect() without a lift read the top view.
 #include "protocols/osyris/IntervalSet.h"
 #include "protocols/osyris/Plausibility.h"
 
@@ -35,7 +35,7 @@ constexpr int kTileCells = kTileSize * kTileSize;
 enum class DirectionFilter { Any, Forward, Backward };
 enum class VibrationFilter { Any, On, Off };
 
-// What is counted and how (issue 5 §5, issue 17 §2). A change clears the grid, which is then re-fed from the
+// What is counted and how. A change clears the grid, which is then re-fed from the
 // ribbons, so every filter applies to the whole job.
 struct PassCountSettings {
     double cellSize = 0.34;                          // m (TRex default)
@@ -126,7 +126,7 @@ public:
     PassCountSnapshot(std::vector<Entry> tiles, double cellSize, int targetMin, int targetMax,
                       std::uint64_t sequence, std::uint64_t clearedAt);
     // The grid's picture: the top view (PassCountTopTiles), the lifts lowest first, the settings in force,
-    // and per machine the slots given up as unobtainable (issue 17 §4).
+    // and per machine the slots given up as unobtainable.
     PassCountSnapshot(std::vector<Entry> top, std::vector<Lift> lifts, const PassCountSettings& settings,
                       std::uint64_t sequence, std::uint64_t clearedAt,
                       std::map<std::uint8_t, std::vector<SlotRange>> givenUp);
@@ -174,10 +174,10 @@ public:
     // when none was. Only meaningful when sequence >= clearedAt() (otherwise everything changed).
     std::optional<CellBox> changedSince(std::uint64_t sequence, int lift = -1) const;
     std::vector<TileSnapshot> tileValues(int lift = -1) const; // sorted by (ty, tx)
-    // Per machine, the slot ranges of its ribbon counted without (given up as unobtainable, issue 17 §4).
+    // Per machine, the slot ranges of its ribbon counted without (given up as unobtainable).
     const std::map<std::uint8_t, std::vector<SlotRange>>& givenUp() const { return m_givenUp; }
     bool anyIncomplete() const { return m_anyIncomplete; }
-    // Unix ms of the earliest and latest counted position (issue 17 §3: the report's data time range); 0 when
+    // Unix ms of the earliest and latest counted position (the report's data time range); 0 when
     // no position with a time was counted. Set by PassCountGrid::snapshot() before the snapshot is shared.
     std::int64_t dataFromMs() const { return m_dataFromMs; }
     std::int64_t dataToMs() const { return m_dataToMs; }

@@ -1,5 +1,5 @@
 #pragma once
-// Plausibility gate for OSYRIS positions (issue 14 §2): a position that cannot be a roller or paver on this
+// Plausibility gate for OSYRIS positions: a position that cannot be a roller or paver on this
 // site is kept in its ribbon (so the slot stays complete for everyone's repair) but never reaches the
 // pass-count grid or a model. Without it one CmPos with a drum width of 10^6 m made the grid sweep ~10^13
 // cells on the io thread, and x = 10^30 m was drawn on another continent.

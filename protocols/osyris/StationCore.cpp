@@ -100,7 +100,7 @@ void StationCore::reject(const std::string& reason, const std::string& text) {
     if (n++ < 5 || n % 1000 == 0) // bounded logging: a noisy radio must not flood the log
         logWarning("osyris",
                    "station " + std::to_string(idx()) + ": datagram rejected (" + reason + "): " + text);
-    // The operator sees it too (issue 14 §6): one warning per cause and minute, with the count since.
+    // The operator sees it too: one warning per cause and minute, with the count since.
     auto [it, first] = m_rejectEventAt.try_emplace(reason, m_clock.now());
     if (!first && m_clock.now() - it->second < std::chrono::seconds(60))
         return;
@@ -438,7 +438,7 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
         return;
     }
     if (owner != idx() && storeFull(owner) && !m_store.has(owner, p.slot)) {
-        // Bounded store (issue 14 §3): refused, never room made by dropping a held slot (it is counted).
+        // Bounded store: refused, never room made by dropping a held slot (it is counted).
         const bool ribbon = m_store.count(owner) >= m_cfg.maxRibbonSlots;
         reject(ribbon ? "ribbon_full" : "store_full",
                "position of slot " + std::to_string(p.slot) + " of station " + std::to_string(owner) +
@@ -470,7 +470,7 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
             }
         }
         if (m_grid && p.slot < m_grid->nextSlot(owner))
-            m_gridRecount = true; // a slot given up as unobtainable came after all (issue 17 §4)
+            m_gridRecount = true; // a slot given up as unobtainable came after all
     } else {
         m_counters.add("rx.pos.duplicate");
     }
@@ -495,7 +495,7 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
         rs.reported = true;
         rs.lastReported = p.slot;
         // Implausible positions stay in the ribbon (the slot is complete for everyone's repair) but reach
-        // neither the grid (PassCountGrid applies the same limits) nor a model (issue 14 §2).
+        // neither the grid (PassCountGrid applies the same limits) nor a model.
         const PositionFault fault = checkPosition(p, m_cfg.passCount.plausibility);
         if (fault != PositionFault::None)
             implausible(owner, p, fault, now);
@@ -523,7 +523,7 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
 }
 
 bool StationCore::answerAllowed(std::uint8_t requester, std::uint8_t whose, RequestType type, TimePoint now) {
-    // Amplification bound (issue 14 §4): one answer per requester, addressed ribbon and type per Beat. 50
+    // Amplification bound: one answer per requester, addressed ribbon and type per Beat. 50
     // ALLs in one datagram made the console send 206 messages; now one requester's datagram costs at most one
     // ALL answer for all ribbons (newest position + ALIVE per ribbon held) plus one per ribbon addressed
     // singly, i.e. at most 4 messages per ribbon held, and one PONG. Bounded table: 255 x 256 x 2 entries at
@@ -603,7 +603,7 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
             return;
         }
         const bool all = have.count() == std::uint64_t(to) - r.from + 1;
-        // Bounded work (issue 14 §3, §4): never look at more slots than the answer budget could pay for.
+        // Bounded work: never look at more slots than the answer budget could pay for.
         have = newestOf(have, m_answerBudget / kPosSize + 1);
         if (owner != idx()) {
             // Soft relay (§5): a non-owner answers a NAK only when it is repeated after TTL/2, i.e. the owner
@@ -760,7 +760,7 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
             hasRange = false;
         }
         if (owner < kIdxNobody && hasRange) {
-            // Phantom ranges (issue 14 §4): too wide to be a machine's ribbon, or (from a third station) far
+            // Phantom ranges: too wide to be a machine's ribbon, or (from a third station) far
             // beyond anything the owner itself showed. Ignored with a counter; NAKing them cost endless
             // datagrams.
             auto shown = m_ownerShown.find(owner);
@@ -789,7 +789,7 @@ void StationCore::handleRequest(const CmHeader& h, const CmRequest& r, TimePoint
 // ---- the Beat ----
 
 void StationCore::checkGridBlocks(TimePoint now) {
-    // Issue 17 §4: counting a ribbon waits at its first missing slot; when the gap stays unobtainable (asked
+    // Counting a ribbon waits at its first missing slot; when the gap stays unobtainable (asked
     // for gapGiveUpNaks times without any answer for the ribbon and the last request's TTL passed, or for
     // gapGiveUpMs), it is given up: the
     // grid counts on after it, never across it, and marks the cells it may have covered incomplete.

@@ -48,7 +48,7 @@ struct MachineSnapshot {
     int accuracy = 0;             // 0 none, 1 low, 2 medium, 3 high
     std::int64_t timestampMs = 0; // Unix ms from the FILETIME
     std::uint32_t slot = 0;
-    // Set when the position broke a plausibility rule (issue 14 §2): the reason for the operator; position,
+    // Set when the position broke a plausibility rule: the reason for the operator; position,
     // speed and width are then not filled in (the machine keeps its last good position in the models).
     std::string implausible;
 };
@@ -77,11 +77,11 @@ MachineSnapshot makeSnapshot(std::uint8_t idx, const CmPos& p, const GeoFrame* f
 class StationCore {
 public:
     // Stations not named in the configuration (machineNames/machineTypes) nor held in the store at start
-    // that get per-station state, first come first served (issue 14 §4). §4 expects at most 10 stations in
+    // that get per-station state, first come first served. OSYRIS §4 expects at most 10 stations in
     // one network; beyond this cap a datagram from (or a message about) yet another station is counted in
     // rx.rejected.station_cap and ignored before anything is allocated for it.
     static constexpr int kMaxUnknownStations = 16;
-    // Amplification bound (issue 14 §4): everything one received datagram makes this station send on its
+    // Amplification bound: everything one received datagram makes this station send on its
     // behalf (PONG, the ALL answer, retransmissions and NCFs for its NAKs) is charged to a budget of
     // kAnswerBudgetDatagrams x MaxLen bytes; what is over it is not answered (rx.limited.budget), the
     // requester asks again after TTL. Packed greedily into datagrams of MaxLen, that is at most
@@ -126,7 +126,7 @@ public:
     // due.
     void updateGrid();
     // New pass-count settings (filters, lifts, cell size): the grid is cleared and every ribbon recounted,
-    // keeping the slots given up as unobtainable (issue 17 §2, §4).
+    // keeping the slots given up as unobtainable.
     void setPassCountSettings(const PassCountSettings& s);
 
 private:
@@ -220,12 +220,12 @@ private:
     std::map<std::pair<std::uint8_t, PositionFault>, TimePoint> m_implausibleEventAt;
     bool answerAllowed(std::uint8_t requester, std::uint8_t whose, RequestType type, TimePoint now);
     std::map<std::tuple<std::uint8_t, std::uint8_t, RequestType>, TimePoint> m_answeredAt;
-    // NAK rounds (issue 14 §7): when the next round may go out (nullopt: none planned) and when the last did.
+    // NAK rounds: when the next round may go out (nullopt: none planned) and when the last did.
     std::optional<TimePoint> m_nakRoundAt;
     TimePoint m_lastNakRound{};
     Duration nakBackoff();
     std::uint8_t m_nakTurn = 0xFF; // the ribbon whose gaps were asked for first on the last Beat (fairness)
-    // ALIVE ranges wider than this are not believed (issue 14 §4): 2^22 slots are 116 h of a machine at 10
+    // ALIVE ranges wider than this are not believed: 2^22 slots are 116 h of a machine at 10
     // Hz.
     static constexpr std::uint32_t kMaxAnnouncedSpan = 1u << 22;
     // A third station may announce another's ribbon at most this far beyond what that owner itself showed.
@@ -245,7 +245,7 @@ private:
     bool m_receivedPositions = false;
     std::uint32_t m_nextOwnSlot = 0;
     std::set<std::uint8_t> m_gridDirty;
-    // Late join and gaps (issue 17 §4): where the grid waits for each ribbon, since when, and how many NAKs
+    // Late join and gaps: where the grid waits for each ribbon, since when, and how many NAKs
     // asked for that gap without an answer for the ribbon since; a late given-up slot asks for a recount.
     struct GridBlock {
         std::uint32_t slot = 0;
@@ -268,7 +268,7 @@ private:
     // First time a NAK for (ribbon, slot) was overheard: a non-owner answers only a repeated NAK, i.e. when
     // the owner evidently did not (out of range, or its answer was lost).
     // A relay that hears the owner itself answers only the second repetition (the owner hears the requester
-    // most likely, and only this relay missed its answer); one that does not, the first (issue 14 §7).
+    // most likely, and only this relay missed its answer); one that does not, the first.
     struct NakSeen {
         TimePoint at;
         int repeats = 0;

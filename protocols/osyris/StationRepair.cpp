@@ -59,7 +59,7 @@ void StationCore::processWishes(TimePoint now) {
     for (auto& [owner, rs] : m_ribbons) {
         if (owner == idx() || !rs.knownMax)
             continue;
-        if (storeFull(owner)) { // its positions would be refused (issue 14 §3): asking would loop forever
+        if (storeFull(owner)) { // its positions would be refused: asking would loop forever
             rs.holds.clear();
             continue;
         }
@@ -91,7 +91,7 @@ void StationCore::processWishes(TimePoint now) {
             if (h.until <= now)
                 cands.push_back({owner, h.from, h.to});
     }
-    // NAK rounds (issue 14 §7): the first requestable wish plans a round after the rest of the round
+    // NAK rounds: the first requestable wish plans a round after the rest of the round
     // interval and a random back-off; until then overheard NAKs, NCFs and repairs take wishes off (they are
     // held), and what is still due when the round comes goes out together, aggregated in one datagram.
     if (cands.empty())
@@ -117,7 +117,7 @@ void StationCore::processWishes(TimePoint now) {
             return a.to > b.to;
         return (a.to - a.from) > (b.to - b.from);
     });
-    // Fair between ribbons (issue 14 §4): one candidate of each ribbon per round, the ribbons in turn from a
+    // Fair between ribbons: one candidate of each ribbon per round, the ribbons in turn from a
     // start that moves on every Beat. Sorting all ribbons newest first let one station announcing slots up to
     // 0xFFFFFFFE take every NAK of every Beat, and the real rollers' gaps were never asked for again.
     std::map<std::uint8_t, std::vector<Cand>> perOwner;
@@ -149,7 +149,7 @@ void StationCore::processWishes(TimePoint now) {
         enqueueRequest(c.owner, {RequestType::Nak, from, c.to, 0, 0});
         if (auto b = m_gridBlocks.find(c.owner);
             b != m_gridBlocks.end() && b->second.slot >= c.from && b->second.slot <= c.to) {
-            ++b->second.naks; // a request for the gap the pass counts wait at (issue 17 §4)
+            ++b->second.naks; // a request for the gap the pass counts wait at
             b->second.lastNak = now;
         }
         setHold(m_ribbons[c.owner], from, c.to, now + beats(m_cfg.ttlBeats));

@@ -1,5 +1,5 @@
 #pragma once
-// WGS 84 geographic <-> an EPSG-coded projected CRS through PROJ (issue 17 §3: "coordinate conversion by a
+// WGS 84 geographic <-> an EPSG-coded projected CRS through PROJ ("coordinate conversion by a
 // library, not by hand"). Plain C++, no Qt. One object per thread (it owns its PROJ context).
 #include "protocols/common/Result.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// LandXML 1.2 design import (issue 17 §1): alignments (CoordGeom Line / Curve / Spiral, stationing) and
+// LandXML 1.2 design import: alignments (CoordGeom Line / Curve / Spiral, stationing) and
 // surfaces (Definition Pnts/Faces, SourceData Boundaries) plus closed PlanFeatures, with the projected CRS
 // from CoordinateSystem/@epsgCode. Plain C++ (pugixml), no Qt.
 //

@@ -98,7 +98,7 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
                 j->error("turn_axis", "must differ from forward_axis");
             j->finish();
         }
-        // Issue 18: the video watchdog's frame age limit (seconds).
+        // The video watchdog's frame age limit (seconds).
         cfg.teleop.videoWatchdogS = t->number("video_watchdog_s", cfg.teleop.videoWatchdogS, 0.1, 10);
         t->finish();
     }
@@ -122,7 +122,7 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         t->finish();
     }
     cfg.compaction.configFile = fileName;
-    if (auto c = root.object("compaction")) { // issue 17
+    if (auto c = root.object("compaction")) {
         auto& k = cfg.compaction;
         k.design = resolveSitePath(c->string("design", k.design), fileName);
         k.stationStep = c->number("station_step", k.stationStep, 0.5, 10000);

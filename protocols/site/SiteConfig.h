@@ -35,7 +35,7 @@ struct SimulationConfig {
     bool ahsSeparateMapService = false;
     int osyrisRollers = 2;
     double osyrisSpeedUp = 30.0; // paver pace multiplied for demos
-    // Issue 17 §7: the simulated paving train drives a long job: "built-in" or a LandXML file (its first
+    // The simulated paving train drives a long job: "built-in" or a LandXML file (its first
     // alignment, UTM), in osyrisLifts lifts of osyrisLiftThickness m. Empty = the short test road.
     std::string osyrisPavingJob;
     int osyrisLifts = 3;
@@ -51,7 +51,7 @@ struct FleetConfig {
     double monitorRateHz = 1.0;        // headless monitor: lines per machine per second
     std::string auditLog;              // append-only audit file; empty = none
     // A stop not confirmed by the machine's own report (JAUS emergency, ISO 23725 all-stop) within this
-    // time raises an alarm (issue 13 §1).
+    // time raises an alarm.
     double stopConfirmTimeoutSeconds = 3.0;
 };
 
@@ -68,11 +68,11 @@ struct TeleopInputConfig {
     bool invertForward = true; // SDL reports a stick pushed away as negative
     bool invertTurn = false;
     double deadZone = 0.12;
-    // Issue 18: driving is held when the teleop video is lost or its frame older than this (seconds).
+    // Driving is held when the teleop video is lost or its frame older than this (seconds).
     double videoWatchdogS = 1.0;
 };
 
-// The flight recorder (issue 16, docs/recording.md): always on unless enabled is false.
+// The flight recorder (docs/recording.md): always on unless enabled is false.
 struct RecordConfig {
     bool enabled = true;
     std::string dir;          // folder of the per-run files; empty = the user's data folder /recordings
@@ -83,7 +83,7 @@ struct RecordConfig {
     bool messages = false;    // record.messages: every decoded inbound message (off: the states drive replay)
 };
 
-// Issue 19 §3/§4: the 2D map's background raster (GeoTIFF or .mbtiles) and the 3D view's terrain (a GeoTIFF
+// The 2D map's background raster (GeoTIFF or .mbtiles) and the 3D view's terrain (a GeoTIFF
 // DEM; empty = flat ground). Relative paths are resolved against the configuration file's folder; empty =
 // none.
 struct MapBackgroundConfig {
@@ -93,14 +93,14 @@ struct TerrainConfig {
     std::string dem;
 };
 
-// The shared control-room history on PostgreSQL (issue 16 §4): "history": {"postgres": {...}}.
+// The shared control-room history on PostgreSQL: "history": {"postgres": {...}}.
 struct PostgresHistoryConfig {
     std::string conninfo; // libpq connection string, e.g. "host=ocu-db dbname=ocu user=ocu"
     std::string console;  // this console's name in the shared history; empty = the host name
     std::string outbox;   // the local SQLite outbox; empty = history-outbox-<console>.sqlite in the data dir
 };
 
-// Issue 17: the compaction job: its LandXML design and its named areas (rings of WGS 84 points), saved with
+// The compaction job: its LandXML design and its named areas (rings of WGS 84 points), saved with
 // the site ("compaction": {"design": "job.xml", "areas": [{"name": "Lot 1", "points": [[lat, lon], ...]}],
 // "station_step": 20, "band_left": 6, "band_right": 6, "epsg": 0}).
 struct CompactionAreaConfig {

@@ -1,5 +1,5 @@
 #pragma once
-// Terrain of the simulated open pit (issue 19 §3/§4): a DEM consistent with the generated map
+// Terrain of the simulated open pit: a DEM consistent with the generated map
 // (PitMapGenerator) — the pit floor at the loading areas' level, benches of 10 m stepping up to the surface
 // around it, the haul ramp cut through the benches along its lanes — and its hillshade, written as
 // georeferenced GeoTIFFs `pit_dem.tif` (Float32, metres above the ellipsoid) and `pit_hillshade.tif` (Byte).

@@ -95,7 +95,7 @@ public:
     void freezeFor(std::chrono::milliseconds d);
     void setTruckManual(int index, bool manual); // autonomy mode change
     std::vector<double> truckSpeedsKmh();        // current speeds
-    // Dispatch (issue 15 §5): who dispatches a truck ("AHS" or "FMS"; AHS -> FMS asks the FMS for work), and
+    // Dispatch: who dispatches a truck ("AHS" or "FMS"; AHS -> FMS asks the FMS for work), and
     // a way closed by the AHS (connectivity re-sent, impossible accepted tasks given up with a Rejected).
     void setTruckCustodian(int index, const std::string& actor);
     void setWayClosed(std::int64_t wayId, bool closed);

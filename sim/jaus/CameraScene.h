@@ -1,5 +1,5 @@
 #pragma once
-// The synthetic view of a simulated UGV camera (issue 18): a ground grid in perspective (2 m cells, 10 m
+// The synthetic view of a simulated UGV camera: a ground grid in perspective (2 m cells, 10 m
 // lines stronger), horizon and sky, the other machines as boxes, rendered from the vehicle's pose and the
 // camera's mount and pan/tilt into an I420 frame, with the capture time stamped by ocu::timecode
 // (protocols/common/FrameTimeCode.h) into the top rows. Plain C++, no GStreamer: the camera server

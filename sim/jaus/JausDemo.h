@@ -20,7 +20,7 @@ struct JausDemoOptions {
     double driveTimeoutS = 1;
     // 127.0.0.1 keeps everything on the host (TTL 0); another address serves consoles on other hosts.
     std::string interfaceAddress = "127.0.0.1";
-    // Issue 18: every UGV serves a front camera on a pan-tilt (sensor 1000) and a rear camera (1001) over
+    // Every UGV serves a front camera on a pan-tilt (sensor 1000) and a rear camera (1001) over
     // RTSP on 127.0.0.1, announced through Digital Resource Discovery. Off by default (tests that need no
     // video start no GStreamer); the simulated site turns it on.
     bool video = false;

@@ -1,5 +1,5 @@
 #pragma once
-// The RTSP server of a simulated UGV's cameras (issue 18): gst-rtsp-server bound to 127.0.0.1 (port 0 =
+// The RTSP server of a simulated UGV's cameras: gst-rtsp-server bound to 127.0.0.1 (port 0 =
 // free port), one mount point per camera, H.264 (x264enc tune=zerolatency speed-preset=ultrafast, a key
 // frame every second) over RTP, from an appsrc that renders CameraScene frames at the camera's rate. One
 // media per camera is shared by every client; frames are rendered only while a client plays (nothing is

@@ -113,7 +113,7 @@ struct SimulatedUgv::Impl : JausOutput {
     std::shared_ptr<const SimulatedUgv::MessageTap> tap;
     std::atomic<std::uint16_t> port{0};
     std::atomic<std::uint16_t> tcpPort{0};
-    // Cameras (issue 18).
+    // Cameras.
     std::unique_ptr<SimCameraServer> cameras;
     mutable std::mutex sceneMutex; // below
     SceneBox scene;

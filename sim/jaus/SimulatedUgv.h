@@ -48,7 +48,7 @@ public:
     using MessageTap = std::function<void(ByteSpan payload)>;
     void setMessageTap(MessageTap tap);
 
-    // Issue 18: the cameras (config().cameras) served over RTSP on 127.0.0.1 by a SimCameraServer started
+    // The cameras (config().cameras) served over RTSP on 127.0.0.1 by a SimCameraServer started
     // with the UGV and registered through Digital Resource Discovery. Stopping the server (loss drills and
     // tests) keeps the registration, as a camera whose server fails would; starting it again keeps the URL.
     void stopCameras();

@@ -150,7 +150,7 @@ void UgvCore::handle(const JausId& src, const JausId& dst, ByteSpan payload) {
         if (!dst.matches(c))
             continue;
         if (c == platformManager() && m_video.handle(c, src, id, payload)) {
-            any = true; // Digital Resource Discovery (issue 18)
+            any = true; // Digital Resource Discovery
             continue;
         }
         if (!serves(c, id))

@@ -55,7 +55,7 @@ struct SimulatedUgvConfig {
     double length = 1.2, width = 0.8, height = 0.9;
     double physicsRateHz = 50;
     UgvFaults faults;
-    // Issue 18: cameras served over RTSP by SimulatedUgv and announced through Digital Resource Discovery
+    // Cameras served over RTSP by SimulatedUgv and announced through Digital Resource Discovery
     // (UgvVideo); empty = no video services.
     std::vector<SimCameraConfig> cameras;
 };

@@ -1,5 +1,5 @@
 #pragma once
-// The simulated UGV's video services (issue 18; AEP-4818 §9.1.2-9.1.8, §9.3.3; layouts in
+// The simulated UGV's video services (AEP-4818 §9.1.2-9.1.8, §9.3.3; layouts in
 // shared/research/jaus-services-extra.md): a socket-free state machine beside UgvCore.
 //  * platform manager ss.1.1: urn:jaus:jss:iop:DigitalResourceDiscovery 1.1 (Query/Register/Remove, IDs
 //    1..254, re-registering the same (JAUS_ID, ResourceID) keeps its ID; no Confirm for an unknown Remove);

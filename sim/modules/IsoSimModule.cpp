@@ -34,7 +34,7 @@ public:
         else
             config.iso23725 = demo->config;
         m_demo = std::move(demo);
-        // Issue 19 §3/§4: the pit's DEM and hillshade, consistent with the map the AHS serves; the site uses
+        // The pit's DEM and hillshade, consistent with the map the AHS serves; the site uses
         // them as map background and 3D terrain unless its configuration names others.
         m_terrain = {};
         if (config.background.raster.empty() || config.terrain.dem.empty()) {
@@ -83,8 +83,8 @@ public:
             links.push_back(link);
         }
         // The FMS fleet too (the manned machines and the trucks it expects from the AHS): a console
-        // configured from this file must not report its own simulator's trucks as fleet discrepancies (issue
-        // 19 §5).
+        // configured from this file must not report its own simulator's trucks as fleet
+        // discrepancies.
         json fleet = json::array();
         for (const auto& e : config.iso23725->fleet) {
             json m = {{"equipmentId", e.equipmentId},

@@ -26,7 +26,7 @@ public:
             o.count = s.jausUgvs;
             o.origin = site.toGeodetic({SimulatedSite::kUgvAreaE, SimulatedSite::kUgvAreaN, 0});
             o.interfaceAddress = s.interfaceAddress;
-            o.video = true; // issue 18: simulated cameras over RTSP, announced through the IOP services
+            o.video = true; // simulated cameras over RTSP, announced through the IOP services
             m_demo = std::make_unique<JausDemo>(o);
             if (!config.jaus)
                 config.jaus = jaus::JausConfig{};
@@ -54,7 +54,7 @@ public:
             lines.push_back("  " + u->config().callSign + " subsystem " +
                             std::to_string(u->config().subsystemId) +
                             ", unicast 127.0.0.1:" + std::to_string(u->localPort()));
-        for (auto& u : m_demo->ugvs()) // issue 18: the cameras (also announced through the IOP services)
+        for (auto& u : m_demo->ugvs()) // the cameras (also announced through the IOP services)
             for (const SimCameraConfig& c : u->config().cameras)
                 if (std::string url = u->cameraUrl(c.sensorId); !url.empty())
                     lines.push_back("  " + u->config().callSign + " camera " + std::to_string(c.sensorId) +

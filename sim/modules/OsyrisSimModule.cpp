@@ -25,7 +25,7 @@ public:
         o.speedUp = s.osyrisSpeedUp;
         o.interfaceAddress = s.interfaceAddress;
         const GeoPoint road = site.toGeodetic({SimulatedSite::kRoadAreaE, SimulatedSite::kRoadAreaN, 0});
-        if (!s.osyrisPavingJob.empty()) { // issue 17 §7: the paving train on a long job
+        if (!s.osyrisPavingJob.empty()) { // the paving train on a long job
             osyris::PavingJob job;
             if (s.osyrisPavingJob == "built-in") {
                 job = osyris::builtInPavingJob();

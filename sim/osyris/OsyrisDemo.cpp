@@ -34,7 +34,7 @@ std::uint16_t freeDynamicPort() {
 
 using namespace ocu::osyris;
 
-// A simulated driver's display (issue 17 §5): a message from the console to this machine or to all is
+// A simulated driver's display: a message from the console to this machine or to all is
 // acknowledged to its sender; messages from other machines are only read. Runs on the station's io thread.
 struct CrewListener : OsyrisListener {
     CrewListener(std::uint8_t ocu, std::optional<SimulatedMachine> m)

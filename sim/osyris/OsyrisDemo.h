@@ -18,7 +18,7 @@ struct OsyrisDemoOptions {
     double speedUp = 10;            // simulated seconds per real second
     double positionPeriodS = 0.5;   // simulated seconds between positions of one machine
     double crewMessageEveryS = 600; // simulated seconds between a driver's own reports (0 = never)
-    // Issue 17 §7: a long paving job (several lifts) instead of the straight test road; the paver starts at
+    // A long paving job (several lifts) instead of the straight test road; the paver starts at
     // station 0 and the positions come at most 40 per real second per machine whatever the speed-up.
     std::shared_ptr<const PavingJob> pavingJob;
     std::string group = "233.1.1.1";

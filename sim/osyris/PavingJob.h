@@ -1,5 +1,5 @@
 #pragma once
-// A long paving job for the simulated paving train (issue 17 §7): the centre line of the road as a polyline
+// A long paving job for the simulated paving train: the centre line of the road as a polyline
 // in the worksite's local frame (x east, y north, metres), paved in several lifts, each lift's height
 // liftThickness above the one before. The paver goes along the line at paverSpeed, the rollers follow behind
 // it; after the last station of a lift the train starts the next lift at station 0.

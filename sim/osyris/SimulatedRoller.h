@@ -1,5 +1,5 @@
 #pragma once
-// Simulated OSYRIS machines (issue 5 §4): a paver advancing at paver pace along a straight road section
+// Simulated OSYRIS machines: a paver advancing at paver pace along a straight road section
 // (+x = east, lane centre y = 0) and tandem rollers doing forward/backward passes in a window behind it,
 // with vibration switched on and off, accuracy flags and an occasional GPS shadow. Pure functions of the
 // simulated time, so runs are reproducible.
@@ -33,9 +33,9 @@ struct MachineSpec {
     // Relay: moves back and forth between (x0,y0) and (x1,y1) at speed (speed 0 = static at x0,y0)
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     std::uint32_t seed = 1;
-    // Crew messages (issue 17 §5): the driver reports every this many simulated seconds (0 = never).
+    // Crew messages: the driver reports every this many simulated seconds (0 = never).
     double crewMessageEveryS = 600;
-    // Issue 17 §7: drive a long job instead of the straight test road: the straight-road pose (x along,
+    // Drive a long job instead of the straight test road: the straight-road pose (x along,
     // y lateral) is laid onto the job's centre line, lift after lift (z rises by the lift thickness).
     std::shared_ptr<const PavingJob> job;
 };

@@ -41,7 +41,7 @@ private slots:
         QCOMPARE(o.logCategories, QString("ocu.jaus,ocu.iso"));
         QVERIFY(o.resetLayout);
     }
-    // Issue 18: the whole window with a tabbed panel in front (docs/teleop-video-*.png).
+    // The whole window with a tabbed panel in front (docs/teleop-video-*.png).
     void wholeWindowWithPanel() {
         CommandLineOptions o;
         QString e;
@@ -110,7 +110,7 @@ private slots:
                                 "--lang", "--log", "--headless", "--duration", "--reset-layout"})
             QVERIFY2(help.contains(QLatin1String(opt)), opt);
     }
-    // Issue 16: recording and replay options.
+    // Recording and replay options.
     void recordAndReplay() {
         CommandLineOptions o;
         QString e;

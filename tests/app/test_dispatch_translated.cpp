@@ -1,4 +1,4 @@
-// Issue 15: the dispatch and production panels in German. Loads the console's own German .qm (embedded in
+// The dispatch and production panels in German. Loads the console's own German .qm (embedded in
 // ocu_app) and builds the panels as the console does: every label, button and column header the operator
 // reads is German (no English source text left), the cue of a truck asking for work, the panel's own
 // mnemonics unique within the panel, and the shift report's texts.

@@ -34,7 +34,7 @@ MachineState machine(const QString& id, double e) {
     return m;
 }
 
-// A bridge with two links whose stacks counted rejects (issue 14 §6).
+// A bridge with two links whose stacks counted rejects.
 struct CountingBridge : FakeFleetBridge {
     using FakeFleetBridge::FakeFleetBridge;
     Counters first, second;

@@ -1,4 +1,4 @@
-// `ocu --headless` on the built-in simulated site (issue 6 acceptance): machines of all three protocols
+// `ocu --headless` on the built-in simulated site: machines of all three protocols
 // are printed, and a stop_all line on stdin leads to the simulated machines reporting their stop (measured
 // and printed; the goal is 2 s).
 #include <QElapsedTimer>
@@ -122,7 +122,7 @@ private slots:
         QCOMPARE(result(10).value("ok").toBool(), false);
     }
     void stopAllStopsEveryMachineWithinTwoSeconds() {
-        // Issue 13 §2: STOP ALL reaches every discovered JAUS vehicle, controlled by this console or not, so
+        // STOP ALL reaches every discovered JAUS vehicle, controlled by this console or not, so
         // no control is taken here. Both vehicles must be known first.
         QVERIFY(waitFor(
             [&] {
@@ -155,7 +155,7 @@ private slots:
             if (o.value("protocol") != "osyris") // OSYRIS carries no stop: the machines are manned
                 targets << o.value("id").toString();
         QVERIFY(targets.size() >= 8);
-        // The 2 s of issue 6 is a figure to report, not to assert (issue 20: a busy CI machine must not fail
+        // The 2 s stop target is a figure to report, not to assert (a busy CI machine must not fail
         // the suite on a scheduler delay): wait generously, print the measured time.
         QVERIFY2(waitFor([&] { return std::all_of(targets.begin(), targets.end(), stoppedAfter); }, 20000),
                  qPrintable(QString("not stopped after %1 ms").arg(t.elapsed())));
@@ -189,8 +189,8 @@ private slots:
             },
             20000));
     }
-    // Issue 13 acceptance: every link down -> "ok": false, one target per link, a reason each.
-    // Issue 13 acceptance: with every link down, stop_all answers ok:false with one target per machine /
+    // Every link down -> "ok": false, one target per link, a reason each.
+    // With every link down, stop_all answers ok:false with one target per machine /
     // link, each saying what happened. JAUS names every vehicle it knows: FOREIGN-126 (a foreign vehicle
     // heard, then out of range: SetEmergency still goes to its last address, sent, with a note that its
     // confirmation is pending) and subsystem 127 (a static endpoint never heard: sent to the configured

@@ -1,4 +1,4 @@
-// Issue 19 §6 "the night palette legible": the night palette's text/background pairs keep a contrast the
+// The night palette legible: the night palette's text/background pairs keep a contrast the
 // WCAG calls readable (>= 7:1 for body text, 4.5:1 for buttons and selections), and the 2D map follows the
 // palette by itself: dim ground, dark machine labels with light text; back to the day look when switched off.
 #include "app/Theme.h"
@@ -203,7 +203,7 @@ private slots:
     }
 
 #ifdef OCU_HAVE_COVERAGE_WIDGETS
-    // The compaction overlay's name boxes and halos (issue 17) were white at night.
+    // The compaction overlay's name boxes and halos were white at night.
     void compactionLabelsFollowThePalette() {
         auto* app = qobject_cast<QApplication*>(QCoreApplication::instance());
         SiteMapView v;

@@ -1,4 +1,4 @@
-// `ocu --screenshot 3d.png --view 3d` on the built-in simulated site (issue 8 acceptance), twice: with no X
+// `ocu --screenshot 3d.png --view 3d` on the built-in simulated site, twice: with no X
 // server at all (offscreen platform, EGL surfaceless) and under Xvfb (xcb platform, QOpenGLWidget). The
 // picture must show terrain, the haul roads and machines, found by their colours.
 #include <QImage>
@@ -56,7 +56,7 @@ class TestOcu3dScreenshot : public QObject {
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.remove("DISPLAY");
         env.insert("XDG_CONFIG_HOME", m_dir.path());
-        env.insert("XDG_CACHE_HOME", m_dir.path()); // the map tile cache (issue 19 §3)
+        env.insert("XDG_CACHE_HOME", m_dir.path()); // the map tile cache
         // The simulated site's data is on screen well before the window is (0.3 s of settling suffices even
         // at nice 10 beside two CPU hogs); 2 s leaves a wide margin without a 6 s wait per picture.
         const QStringList args{"--screenshot", png, "--view", "3d", "--size", "1280x900", "--settle", "2"};

@@ -18,7 +18,7 @@ class TestOcuBinary : public QObject {
         env.remove("DISPLAY"); // headless: no X server at all
         env.insert("QT_QPA_PLATFORM", "offscreen");
         env.insert("XDG_CONFIG_HOME", m_dir.path()); // never touch the user's saved layout
-        env.insert("XDG_CACHE_HOME", m_dir.path());  // the map tile cache (issue 19 §3) too
+        env.insert("XDG_CACHE_HOME", m_dir.path());  // the map tile cache too
         p.setProcessEnvironment(env);
         p.start(OCU_BINARY, args);
         Run r;
@@ -96,7 +96,7 @@ private slots:
             QVERIFY2(!img.isNull() && img.width() > 100 && img.height() > 100, view);
         }
     }
-    // Issue 15 §4: the shift report from the command line, written when a headless run ends (the built-in
+    // The shift report from the command line, written when a headless run ends (the built-in
     // site), and said so on stderr; the CSV has its header and the shift row.
     void headlessShiftReportFromTheCommandLine() {
         const QString pdf = m_dir.filePath("shift.pdf"), csv = m_dir.filePath("shift.csv");

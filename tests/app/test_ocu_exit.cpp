@@ -1,4 +1,4 @@
-// Issue 13 §8: SIGTERM and SIGINT end the real `ocu` binary (the window on the offscreen platform, and the
+// SIGTERM and SIGINT end the real `ocu` binary (the window on the offscreen platform, and the
 // headless monitor) with exit status 0, and the ISO 23725 AHS sees an orderly WebSocket close with code 1001
 // ("going away", RFC 6455 §7.4.1) instead of a dropped connection (1006). The acceptance bound is 2 s; the
 // test prints the measured time and asserts only a generous bound, so it holds beside a CPU hog.

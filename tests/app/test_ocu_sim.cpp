@@ -36,7 +36,7 @@ private slots:
         const QJsonObject link = std::as_const(site)["iso23725"]["links"][0].toObject();
         QVERIFY(link["mapUrl"].toString().startsWith("ws://127.0.0.1:"));
         QVERIFY(link["mapUrl"].toString() != link["url"].toString());
-        // The FMS fleet is written too (issue 19 §5): the manned shovel and light vehicle plus the 3 trucks.
+        // The FMS fleet is written too: the manned shovel and light vehicle plus the 3 trucks.
         const QJsonArray fleet = std::as_const(site)["iso23725"]["fleet"].toArray();
         QCOMPARE(fleet.size(), 2 + 3);
         int autonomous = 0;

@@ -1,4 +1,4 @@
-// Issue 16 §2: the replay window - REPLAY banner, commands disabled, the timeline (markers that jump, exact
+// The replay window - REPLAY banner, commands disabled, the timeline (markers that jump, exact
 // time entry, slider) and the keys (Space, + / -, arrows, Home / End) driving the replay controller.
 #include "app/MainWindow.h"
 #include "app/ReplayRuntime.h"

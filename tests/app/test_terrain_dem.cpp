@@ -1,4 +1,4 @@
-// Issue 19 §4: the 3D terrain from a DEM read with GDAL. The test writes its own small GeoTIFF (WGS84
+// The 3D terrain from a DEM read with GDAL. The test writes its own small GeoTIFF (WGS84
 // degrees around the site origin: a pit cut into a sloping plain, with a NoData hole), loads it into the
 // site frame and checks the heights of the grid and of the 3D scene built from it.
 #include "app/TerrainDem.h"

@@ -1,4 +1,4 @@
-// Issue 19 §6: event, alarm and link texts translated like the rest. The stacks and toText() give stable
+// Event, alarm and link texts translated like the rest. The stacks and toText() give stable
 // English keys (logs, recordings, CSV, headless JSON); what the operator reads comes from DisplayText in the
 // language of the loaded translator. This test loads the console's own .qm files (embedded in ocu_app).
 #include "app/ConsoleApp.h"

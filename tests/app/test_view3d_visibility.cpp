@@ -1,4 +1,4 @@
-// Issue 19 §4: the 3D view draws only while it is visible and never faster than the data arrive. The panel
+// The 3D view draws only while it is visible and never faster than the data arrive. The panel
 // sits in a tab behind another one (as in the console's default layout) while the fleet keeps moving; its
 // render counter (VTK StartEvent of the scene's renderer) must not move until the tab is raised.
 #include "app/Site3DFeed.h"
@@ -70,7 +70,7 @@ private slots:
         QTest::qWait(500);
         QCOMPARE(view->renderCount(), idle);
 
-        // Machines are type-specific shapes with decluttered name labels (issue 19 §4).
+        // Machines are type-specific shapes with decluttered name labels.
         QCOMPARE(view->sceneRenderer().machine(QStringLiteral("iso23725:HT3"))->shape,
                  MachineShape::HaulTruck);
         const std::vector<QRectF> labels = view->sceneRenderer().nameLabelRects();

@@ -1,7 +1,7 @@
 // Writes the binary seed corpora of the fuzz harnesses (tests/fuzz/corpus/<harness>/) from the test vectors:
 // the JUDP byte vectors of shared/research/jaus-wire.md §4-§5 (captured and computed), messages made by the
 // project's own encoders (fragments, every OSYRIS message type and checksum), and OSYRIS station sessions
-// (late join, positions with gaps, NAK/NCF/ALL/ALIVE/PING, absurd values from issue 14).
+// (late join, positions with gaps, NAK/NCF/ALL/ALIVE/PING, absurd values of a hostile station).
 // Usage: fuzz_make_seeds <corpus dir>. Text corpora (ISO frames, OSM, site configs, headless commands) are
 // copied from the tests' data by scripts/fuzz.sh --seed.
 #include "protocols/jaus/JudpCodec.h"
@@ -205,7 +205,7 @@ void osyrisSeeds() {
     step(s, 2);
     write("osyris_station", "late_join_gap_repair", s);
 
-    // Issue 14's hostile inputs: a huge drum, NaN, far away, a phantom ALIVE range, a flood of ALL.
+    // Hostile inputs: a huge drum, NaN, far away, a phantom ALIVE range, a flood of ALL.
     s.clear();
     d.clear();
     encodePos(d, 9, 9, pos(0, 1, 1, 1e6f));

@@ -1,4 +1,4 @@
-// Fuzz harness: the JAUS video message decoders (issue 18, protocols/jaus/MessagesVideo.h). The first input
+// Fuzz harness: the JAUS video message decoders (protocols/jaus/MessagesVideo.h). The first input
 // byte picks the decoder, the rest is the body behind that decoder's message ID. Invariant as for
 // jaus_messages: a message that decodes re-encodes to bytes that decode again and re-encode identically.
 #include "protocols/jaus/MessagesVideo.h"

@@ -1,4 +1,4 @@
-// Alarm management in AlarmModel (issue 19 §5, EEMUA 191 / ISA-18.2): a repeat of an active alarm updates it
+// Alarm management in AlarmModel (EEMUA 191 / ISA-18.2): a repeat of an active alarm updates it
 // (one row, occurrence count) instead of flooding; stable keys; acknowledgement by key with who and when;
 // priorities; shelving that expires by itself (fake clock); the alarm rate per 10 minutes and the flood flag.
 #include "models/AlarmModel.h"

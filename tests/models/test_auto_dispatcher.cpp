@@ -1,4 +1,4 @@
-// Issue 15 §5 (optional point): the automatic dispatcher on a hand-made dispatch source, through a real
+// The automatic dispatcher on a hand-made dispatch source, through a real
 // CommandGate to a fake bridge. Who is idle (custodian FMS, link up, no Pending/Active task or asking for
 // work), where it goes (empty: the shovel with the shortest queue; loaded: the dump with the shortest queue;
 // ties by route length; unreachable areas skipped), every assignment through the gate (audited, origin

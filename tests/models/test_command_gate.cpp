@@ -98,7 +98,7 @@ private slots:
         QCOMPARE(o.value(QStringLiteral("targets")).toArray().size(), 3);
     }
 
-    // Issue 13 §10: the headless stdin reader's STOP ALL. stopAllEarly() on another thread calls at once the
+    // The headless stdin reader's STOP ALL. stopAllEarly() on another thread calls at once the
     // bridges that send from the caller's thread (and only those); stopAll(origin, h, early) on the gate's
     // thread calls the others and records it all as one STOP ALL: every target, one audit line, no bridge
     // called twice. Bridges that send from the caller's thread come first in a plain stopAll too.
@@ -163,7 +163,7 @@ private slots:
         QVERIFY(alarms.unacknowledgedCount() >= 1);
     }
 
-    // Issue 13 §1: a stack that never answers is a target not sent once the deadline passed, never a success.
+    // A stack that never answers is a target not sent once the deadline passed, never a success.
     void silentStackIsNotSentAfterTheDeadline() {
         AlarmModel alarms;
         CommandGate stop(&alarms);
@@ -230,7 +230,7 @@ private slots:
         QVERIFY(stop.awaitingConfirmation().isEmpty());
     }
 
-    // Issue 13 §1 beyond stops: a confirmed command is watched until the machine's own report answers it
+    // Confirmation beyond stops: a confirmed command is watched until the machine's own report answers it
     // (an event with the latency); none within the confirmation time raises a Timeout alarm. A command the
     // bridge does not confirm (drive_start) is not watched.
     void commandConfirmationLatencyAndAlarm() {

@@ -1,4 +1,4 @@
-// Issue 15 §3: the dispatch table model. Rows in id order from the source, incremental updates (dataChanged
+// The dispatch table model. Rows in id order from the source, incremental updates (dataChanged
 // only over the cells that changed, inserts and removals), the "needs assignment" cue, the assignment column
 // telling the reported status apart from the answer to this console's request, the ETA (route length over the
 // reported speed, the nominal speed below 1 m/s), the route cache, "in state" from the report time, and the

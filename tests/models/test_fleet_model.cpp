@@ -239,7 +239,7 @@ private slots:
         QCOMPARE(proxy.index(0, 0).data(FleetModel::IdRole).toString(), b.id);
     }
 
-    // Issue 19 §7: with a change interval, bursts of source changes reach the sort and the view as one merged
+    // With a change interval, bursts of source changes reach the sort and the view as one merged
     // dataChanged; the order follows the data once the merged change is handed over; rows pass at once.
     void proxyThrottlesDataChangesIntoOneMergedBatch() {
         FleetModel model;

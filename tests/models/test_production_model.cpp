@@ -1,4 +1,4 @@
-// Issue 15 §4: the production model counts what the trucks report. A load counts at the dump (its weight,
+// The production model counts what the trucks report. A load counts at the dump (its weight,
 // else the payload reported at loading, else unknown), attributed to the truck, the shovel it was loaded at
 // and the dump; a cycle without a dump counts as the load; the cycle breakdown sums the cycles' state times
 // by part; reports before the shift are not counted; tonnes over the shift stay in time order with late

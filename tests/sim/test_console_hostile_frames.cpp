@@ -1,4 +1,4 @@
-// Issue 14 acceptance 2 for the other two protocols: a running console core (the three stacks together, as
+// Hostile peers for the other two protocols: a running console core (the three stacks together, as
 // the headless site runs them: IsoStack against the simulated AHS with two trucks, JausStack against two
 // simulated UGVs, OsyrisStack with a real roller) receives malformed ISO 23725 frames from the AHS's
 // connection and malformed JUDP datagrams on the JAUS group, one at a time. After every single frame or
@@ -330,7 +330,7 @@ private slots:
             for (int attempt = 0; attempt < 3 && !(best && *best < kPongBoundMs); ++attempt) {
                 if (attempt > 0)
                     ++repeated;
-                // One PING per requester and Beat is answered (issue 14 §4): a Beat since the last one.
+                // One PING per requester and Beat is answered: a Beat since the last one.
                 std::this_thread::sleep_until(lastPing + milliseconds(110));
                 auto ms = probe.ping(kProbe, milliseconds(1000));
                 lastPing = steady_clock::now();

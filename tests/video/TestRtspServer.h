@@ -1,5 +1,5 @@
 #pragma once
-// A small RTSP server for the console's video tests and bench_video (issue 18), independent of sim/: each
+// A small RTSP server for the console's video tests and bench_video, independent of sim/: each
 // mount serves H.264 (x264, zero-latency) from an appsrc that draws a flat background of the camera's own
 // grey level, a moving bar and the capture time (protocols/common/FrameTimeCode.h) at the given size and
 // rate. Runs its own GLib main loop thread; binds 127.0.0.1 only. stop() drops every client (the stream is

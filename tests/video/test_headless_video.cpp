@@ -1,4 +1,4 @@
-// Headless video status (issue 18 §4): {"cmd":"video_status"} lists each JAUS vehicle's announced cameras,
+// Headless video status: {"cmd":"video_status"} lists each JAUS vehicle's announced cameras,
 // idle until played; {"cmd":"video_play"} decodes one, and the status then reports what is actually decoded
 // (state, resolution, fps, frame age from the time code); {"cmd":"video_stop"} ends it. Simulated UGV with
 // its cameras on loopback.

@@ -1,4 +1,4 @@
-// The pan-tilt demand stream (issue 18 §2): keys J/L/I/K, the on-screen stick's camera mode and a joystick
+// The pan-tilt demand stream: keys J/L/I/K, the on-screen stick's camera mode and a joystick
 // hat give rate demands; a change goes out at once, is repeated while it lasts, and release, focus loss,
 // unplugging or disabling send a zero at once, repeated a few periods.
 #include "widgets/teleop/PanTiltController.h"

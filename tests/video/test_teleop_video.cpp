@@ -1,4 +1,4 @@
-// Teleoperation with video end to end on loopback (issue 18 §2/§3/§5): a simulated UGV driven through the
+// Teleoperation with video end to end on loopback: a simulated UGV driven through the
 // teleop panel (JausBridge, real JAUS on loopback) while the panel plays the vehicle's configured cameras
 // from a loopback RTSP server. Receive frames, switch cameras, stop the server -> the video watchdog zeroes
 // the drive stream at once (seen by the controller and at the vehicle: it stops on zeros, not by its drive

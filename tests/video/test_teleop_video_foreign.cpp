@@ -1,6 +1,6 @@
-// Issue 18 against foreign vehicles (tests/protocols/jaus/foreign: an independent JAUS peer sharing no code
-// with sim/ or protocols/jaus), end to end through JausBridge into the teleop panel, with the pictures from
-// the loopback test RTSP server (tests/video):
+// Teleop video against foreign vehicles (tests/protocols/jaus/foreign: an independent JAUS peer sharing no
+// code with sim/ or protocols/jaus), end to end through JausBridge into the teleop panel, with the pictures
+// from the loopback test RTSP server (tests/video):
 //  * a vehicle whose Digital Resource Discovery behaves like other vendors' (silent for its first seconds,
 //    every answer late, no optional fields, an HTTP snapshot URL beside the RTSP stream, no Visual Sensor
 //    service): its RTSP stream is found and played; the HTTP one is not offered;

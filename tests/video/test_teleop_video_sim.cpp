@@ -1,4 +1,4 @@
-// Issue 18 acceptance on loopback, against the simulated UGV's own cameras (sim/jaus, h18sim): the console
+// Teleop video on loopback, against the simulated UGV's own cameras (sim/jaus): the console
 // discovers the cameras through the IOP services (Digital Resource Discovery, Visual Sensor), plays the front
 // one in the teleop panel, pans it from the keyboard (the unit's joint moves), switches to the rear camera,
 // drives; the UGV's RTSP server stops -> the watchdog zeroes the drive (the UGV stops on zeros, not by its

@@ -1,4 +1,4 @@
-// The video player against a loopback RTSP server (issue 18 §2): frames arrive off the GUI thread and are
+// The video player against a loopback RTSP server: frames arrive off the GUI thread and are
 // handed over as the latest QImage with the capture time read back; switching cameras; the server stopped ->
 // lost, then reconnecting with backoff; the server back -> playing again. Bad URLs never crash.
 #include "models/video/VideoPlayer.h"

@@ -1,4 +1,4 @@
-// The video watchdog with a fake clock (issue 18 §3): it waits for the first good frame without latching,
+// The video watchdog with a fake clock: it waits for the first good frame without latching,
 // trips when the stream is lost or the frame grows older than the limit, stays tripped while the video is
 // back until the operator resumes, and refuses a resume while the video is still bad.
 #include "models/video/VideoWatchdog.h"

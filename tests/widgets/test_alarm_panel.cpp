@@ -1,4 +1,4 @@
-// The alarm panel's alarm management (issue 19 §5): a grouped alarm shows its count and, selected, its items
+// The alarm panel's alarm management: a grouped alarm shows its count and, selected, its items
 // in the details pane; shelving the selected alarm hides it (until shown on purpose) and takes it out of the
 // unacknowledged count; the alarm-rate label counts new alarms per 10 minutes and says FLOOD above 10.
 #include "models/AlarmModel.h"
@@ -40,7 +40,7 @@ private slots:
         QCOMPARE(log.proxy()->index(0, AlarmModel::ColCount).data().toString(), QStringLiteral("3"));
         QVERIFY(log.rateLabel()->text().contains(QStringLiteral("1 alarms / 10 min")));
 
-        // Issue 19 §6: the details pane is folded while nothing is selected (the table keeps the rows of a
+        // The details pane is folded while nothing is selected (the table keeps the rows of a
         // short dock) and opens with the selection.
         QVERIFY(!log.detailsShown());
         log.tableView()->selectRow(0);
@@ -63,7 +63,7 @@ private slots:
         QVERIFY(log.rateLabel()->text().contains(QStringLiteral("12 alarms / 10 min")));
     }
 
-    // Issue 19 §6 at 1366 x 768 (the event log dock is about 800 px wide): the message takes the width the
+    // At 1366 x 768 (the event log dock is about 800 px wide): the message takes the width the
     // fitted columns leave; a long machine id is capped, its full text in the tooltip; nothing else is cut.
     void messageTakesTheRemainingWidth() {
         AlarmModel alarms;

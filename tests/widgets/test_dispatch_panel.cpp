@@ -1,4 +1,4 @@
-// Issue 15 §2/§3: the dispatch panel and the route on the 2D map, with a hand-made dispatch source and a fake
+// The dispatch panel and the route on the 2D map, with a hand-made dispatch source and a fake
 // bridge behind a real CommandGate. The keyboard path (F6 to the truck asking for work, Alt+D destination,
 // Ctrl+Enter assign, re-assign and reset asking first, Alt+R), what reaches the gate and the per-target
 // result shown; picking the destination by clicking an area on the map (selection untouched); the route's
@@ -168,7 +168,7 @@ private slots:
         QVERIFY(delegate->cachedTexts() > cached); // the elided "NEEDS ASSIGNMENT" is its own layout
     }
 
-    // Issue 15 §5: the automatic dispatcher's switch in the panel: hidden without one; switching on asks
+    // The automatic dispatcher's switch in the panel: hidden without one; switching on asks
     // first (No leaves it off); on, the line says so and what it did last; the state follows a switch from
     // elsewhere (the headless command); off stops it.
     void autoDispatchSwitch() {

@@ -1,4 +1,4 @@
-// Issue 15 acceptance through the GUI: the dispatch panel over IsoBridge and the CommandGate against the
+// Dispatch through the GUI: the dispatch panel over IsoBridge and the CommandGate against the
 // simulated AHS on loopback. Assign from the panel: the result line says the truck got it (sent), then the
 // truck's answer (Accepted) and the Active assignment it reports; the route and ETA of the active task and
 // the shovel's queue follow. A truck the AHS dispatches (custodian AHS) cannot be assigned: Assign is

@@ -89,7 +89,7 @@ private slots:
                  statusColor(StatusCategory::FaultOrStopped));
         QVERIFY(FleetListWidget::describeMachine(stopped).contains(QStringLiteral("stopped")));
 
-        // Issue 19 §6: in a narrow dock (a quarter of a 1366-px screen) the filter field goes above the
+        // In a narrow dock (a quarter of a 1366-px screen) the filter field goes above the
         // combos instead of holding the list ~480 px wide; back beside them when there is room.
         QVERIFY(!list.filterRowWrapped());
         QVERIFY2(list.minimumWidth() > 0 && list.minimumWidth() <= 340,
@@ -154,7 +154,7 @@ private slots:
         QCOMPARE(palette.count(), 1);
         QCOMPARE(panel.palette(), PassPalette::Summary);
 
-        // Issue 19 §6: the histogram has a scale (area ticks 0 / half / top), the area on each bar and
+        // The histogram has a scale (area ticks 0 / half / top), the area on each bar and
         // titles.
         const PassCountPanel::HistogramAxis a = panel.histogramAxis();
         QCOMPARE(a.values.size(), 9);
@@ -170,7 +170,7 @@ private slots:
         QVERIFY(!a.yTitle.isEmpty());
     }
 
-    // Issue 19 §6: in a fixed-size window no header and no cell in view is elided ("Link / a",
+    // In a fixed-size window no header and no cell in view is elided ("Link / a",
     // "2026-11-23 …"): every column is at least as wide as what its header and visible cells need.
     void columnsFitTheirContent() {
         Rig rig;

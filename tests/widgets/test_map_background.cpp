@@ -1,4 +1,4 @@
-// Issue 19 §3: the 2D map's background raster. Small rasters written here with GDAL (a GeoTIFF in WGS84, one
+// The 2D map's background raster. Small rasters written here with GDAL (a GeoTIFF in WGS84, one
 // in UTM, an MBTiles file in Web Mercator) must land at the right site position; bad or missing files give a
 // message naming the file and the reason, a failure signal, and keep the background that was good.
 #include "models/FleetModel.h"
@@ -266,7 +266,7 @@ private slots:
         v.paintScene(p, img.size()); // still paints
     }
 
-    // Issue 19 §3 "warped ... and cached as tiles": the second load (a restart) reads the tiles back from the
+    // Warped once and cached as tiles: the second load (a restart) reads the tiles back from the
     // disk cache, identical to the warped ones; a changed file, another site origin or a corrupt entry warps
     // again (and a corrupt entry is replaced, never a crash); the cache stays within its size bound.
     void tilesAreCachedOnDisk() {

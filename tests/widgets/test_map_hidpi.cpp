@@ -1,4 +1,4 @@
-// Issue 19 §6 "high-DPI icons": at a device pixel ratio of 2 (QT_SCALE_FACTOR=2, a 4K laptop) the map's
+// High-DPI symbols: at a device pixel ratio of 2 (QT_SCALE_FACTOR=2, a 4K laptop) the map's
 // SVG symbols are rendered at twice the pixels, not a 1x picture scaled up; the whole scene paints into a
 // dpr-2 surface with the machine at the right device pixels.
 #include "models/FleetModel.h"

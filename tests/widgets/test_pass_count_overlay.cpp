@@ -1,8 +1,9 @@
-// The 2D pass-count overlay's frame budget (issue 17 §6: the map redrawn in <= 16 ms at any zoom, also right
-// after the whole job appears or the palette changes). With a budget a frame renders only some tiles and
-// stands in for the rest; the frames that follow finish the view, and the finished view is pixel for pixel
-// the one a single unbudgeted frame draws. The budget here is a nanosecond, so that every frame renders
-// exactly one level-0 tile whatever the machine's speed (the overlay always renders at least one).
+// The 2D pass-count overlay's frame budget (docs/decisions/pass-count-frame-budget.md: the map redrawn in <=
+// 16 ms at any zoom, also right after the whole job appears or the palette changes). With a budget a frame
+// renders only some tiles and stands in for the rest; the frames that follow finish the view, and the
+// finished view is pixel for pixel the one a single unbudgeted frame draws. The budget here is a nanosecond,
+// so that every frame renders exactly one level-0 tile whatever the machine's speed (the overlay always
+// renders at least one).
 #include "models/PassCountLayer.h"
 #include "widgets/PassCountOverlay.h"
 #include "widgets/SiteMapView.h"

@@ -1,4 +1,4 @@
-// Issue 15 §4: the shift report. The PDF's first page, rendered by poppler's pdftoppm (a reader that is not
+// The shift report. The PDF's first page, rendered by poppler's pdftoppm (a reader that is not
 // ours), is not blank: it carries text, the map snapshot and the charts' colours. The CSV read back gives the
 // model's numbers, row by row. Writing to an impossible place is reported, not crashed on.
 #include "models/ProductionModel.h"
@@ -237,7 +237,7 @@ private slots:
                  QString());
         QVERIFY(QFileInfo(dir.filePath(QStringLiteral("r.pdf"))).size() > 1000);
     }
-    // The live charts follow the model (issue 15 §4): a dump reported during the shift raises the tonnes line
+    // The live charts follow the model: a dump reported during the shift raises the tonnes line
     // (the blue of "Dumped (t)" appears in the upper half of the chart) and a cycle adds its bar (the green
     // of "Haul") to the breakdown, without anything but the model changing.
     void liveChartsFollowTheModel() {

@@ -155,13 +155,13 @@ private slots:
         now += 10000;
         fleet->refresh();
         img = view.grab().toImage();
-        // Stale: the symbol turns grey and is drawn faded (issue 19 §1).
+        // Stale: the symbol turns grey and is drawn faded.
         QVERIFY2(img.pixelColor(p).hsvSaturation() < 40 &&
                      !near(img.pixelColor(p), statusColor(StatusCategory::Ok), 40),
                  qPrintable(describe(img.pixelColor(p))));
     }
 
-    // Issue 19 §7: repaints caused by data are coalesced to the capped rate; the operator's own actions
+    // Repaints caused by data are coalesced to the capped rate; the operator's own actions
     // repaint at once.
     void dataRepaintsAreCoalescedToTheCappedRate() {
         fleet->upsert({machine(QStringLiteral("jaus:1"), 0, 0)});
@@ -193,7 +193,7 @@ private slots:
         QTRY_VERIFY(view.framesPainted() > f1);
     }
 
-    // Issue 19 §7: hundreds of trails are rasterised straight into a copy of the static layer; they are where
+    // Hundreds of trails are rasterised straight into a copy of the static layer; they are where
     // the machines drove, and the static layer itself stays clean (they vanish with their machines).
     void manyTrailsAreDrawnWhereTheMachinesDrove() {
         SiteMapView view;
@@ -258,7 +258,7 @@ private slots:
         QCOMPARE(selection->selectedIds(), QStringList{QStringLiteral("jaus:1")});
         const QImage img = view.grab().toImage();
         const QPointF c = view.worldToScreen({20, 0});
-        // The 10 x 5 m symbol is 40 x 20 px; the ring (issue 19) is at half its diagonal + 7 px = 29.4 px.
+        // The 10 x 5 m symbol is 40 x 20 px; the ring is at half its diagonal + 7 px = 29.4 px.
         bool gold = false;
         for (int dx = 26; dx <= 30; ++dx)
             gold = gold || near(img.pixelColor(c.toPoint() + QPoint(dx, 0)), QColor(0xff, 0xd7, 0x00), 40);
@@ -333,7 +333,7 @@ private slots:
         SiteMapView view;
         view.resize(400, 300);
         view.setFleet(fleet, selection);
-        view.setView({0, 0}, 0.2); // 10 m machines would be 2 px: drawn at the legible minimum (issue 19)
+        view.setView({0, 0}, 0.2); // 10 m machines would be 2 px: drawn at the legible minimum
         QImage img = view.grab().toImage();
         QCOMPARE(view.lastFrame().machinesDrawn, 500);
         const QPoint p = view.worldToScreen({400, 400}).toPoint();

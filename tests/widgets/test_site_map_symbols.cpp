@@ -1,6 +1,7 @@
-// Issue 19 §1/§2 on the 2D map, offscreen: machine symbols (SVG per type, true size vs minimum size), label
-// decluttering checked from the view's own placement data, road labels along their road, follow, edge
-// indicators, the start-up fit that keeps including machines, zoom to selection/area, hover, double-click.
+// Symbols, labels and navigation of the 2D map, offscreen: machine symbols (SVG per type, true size vs
+// minimum size), label decluttering checked from the view's own placement data, road labels along their road,
+// follow, edge indicators, the start-up fit that keeps including machines, zoom to selection/area, hover,
+// double-click.
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "widgets/MapSymbols.h"

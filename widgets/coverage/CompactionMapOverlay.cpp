@@ -240,7 +240,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     p.setBrush(Qt::NoBrush);
-    // The night palette (issue 19 §6): dark boxes and halos with light text, like the map's own labels, so
+    // The night palette: dark boxes and halos with light text, like the map's own labels, so
     // nothing glares white in a dark cab.
     const bool night = view.isNight();
     const QColor box = night ? QColor(30, 30, 34, 230) : QColor(255, 255, 255, 230);
@@ -282,7 +282,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
                 p.fillRect(r.translated(at), box);
                 p.setPen(stationInk);
                 p.drawText(at, text);
-                view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it (issue 19 §1)
+                view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it
             }
         }
     }
@@ -330,7 +330,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
         p.drawRect(r.translated(at));
         p.setPen(night ? areaColour.lighter(190) : areaColour);
         p.drawText(at, name);
-        view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it (issue 19 §1)
+        view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it
     }
     if (m_band.size() >= 3) {
         // The station range picked in the panel: dashed, in the centre line's orange (it is a piece of the

@@ -1,5 +1,5 @@
 #pragma once
-// The compaction job on the 2D map (issue 17): the design's boundary and centre line with station ticks and
+// The compaction job on the 2D map: the design's boundary and centre line with station ticks and
 // labels every 100 m, the compaction areas with their names, and the polygon tool that draws a new area
 // (click adds a point, Backspace removes the last, Enter, a double click or a click on the first point
 // closes, Esc cancels; the wheel, the middle button and the arrow keys still move the map). A

@@ -38,7 +38,7 @@ CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* 
     m_table->horizontalHeaderItem(2)->setToolTip(tr("Covered cells within the target passes, % of the area"));
     m_table->horizontalHeaderItem(5)->setToolTip(
         tr("Cells a given-up ribbon gap may have passed over: their counts are lower bounds"));
-    // Per station range along the design's alignment (the report's per-station table, issue 17 §1).
+    // Per station range along the design's alignment (the report's per-station table).
     auto* stationsPage = new QWidget;
     auto* sv = new QVBoxLayout(stationsPage);
     sv->setContentsMargins(0, 2, 0, 0);

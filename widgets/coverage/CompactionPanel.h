@@ -1,5 +1,5 @@
 #pragma once
-// The compaction areas under the pass-count summary (issue 17): the design in use, one row per area with
+// The compaction areas under the pass-count summary: the design in use, one row per area with
 // its coverage (covered %, at/under/over target %, incomplete cells) of the current pass counts, and one row
 // per station range along the design's alignment (a tab; a picked range is outlined on the map, a double
 // click frames it), refreshed at most every 2 s while counts change; "Draw area" (the map's polygon tool),

@@ -1,5 +1,5 @@
 #pragma once
-// A cell delegate for large, often-updated tables (the dispatch table with 1,000 trucks, issue 15 §3): it
+// A cell delegate for large, often-updated tables (the dispatch table with 1,000 trucks): it
 // paints what QStyledItemDelegate paints for a plain text cell — background or selection, text in the
 // model's alignment and foreground colour, elided at the right, the focus frame — but lays each distinct
 // text out once (a QStaticText kept per text and per elision width) instead of running the style's text

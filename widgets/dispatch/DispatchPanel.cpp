@@ -86,7 +86,7 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     next->setToolTip(tr("Select the next truck that asks for work or was handed back to the FMS."));
     connect(next, &QPushButton::clicked, this, &DispatchPanel::selectNextNeedingAssignment);
     head->addWidget(next);
-    // Issue 15 §5: the automatic dispatcher's switch (shown when there is one, see setAutoDispatcher).
+    // The automatic dispatcher's switch (shown when there is one, see setAutoDispatcher).
     m_auto = new QPushButton(tr("A&uto dispatch"), this);
     m_auto->setObjectName(QStringLiteral("button-auto-dispatch"));
     m_auto->setCheckable(true);

@@ -1,5 +1,5 @@
 #pragma once
-// The dispatch panel (issue 15 §3): the dispatch table (DispatchModel, one row per haul truck), the assign
+// The dispatch panel: the dispatch table (DispatchModel, one row per haul truck), the assign
 // controls (task, destination picked from the areas of the road network or by clicking an area on the 2D
 // map, Assign / Re-assign, Reset) and the queues per shovel and per dump. Every command goes through the
 // CommandGate (audited); the line under the controls says per target what went on the wire, then the truck's

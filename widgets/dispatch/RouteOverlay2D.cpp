@@ -163,7 +163,7 @@ void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
         p.drawRoundedRect(at, 3, 3);
         p.setPen(Qt::white);
         p.drawText(at, Qt::AlignCenter, m_label);
-        view.reserveLabelArea(at); // machine labels keep clear of it (issue 19 §1)
+        view.reserveLabelArea(at); // machine labels keep clear of it
     }
     p.restore();
 }

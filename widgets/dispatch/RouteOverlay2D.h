@@ -1,5 +1,5 @@
 #pragma once
-// The selected truck's route on the 2D site map (issue 15 §2): the ways of its route (way ids from its
+// The selected truck's route on the 2D site map: the ways of its route (way ids from its
 // assignment or the console's router) looked up in the map by feature id ("<link>/<way id>"), chained into
 // one path (each road turned so it continues where the previous one ended; areas by their centroid), drawn as
 // a cased line with an arrow at the destination and the destination area outlined. A hook of SiteMapView

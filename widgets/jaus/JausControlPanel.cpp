@@ -56,11 +56,11 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->verticalHeader()->setDefaultSectionSize(30);
-    // Keyboard-only path (issue 19 §6, docs/keyboard.md): arrows move between vehicles, Tab leaves the table
+    // Keyboard-only path (docs/keyboard.md): arrows move between vehicles, Tab leaves the table
     // for the row's Monitor / Control / Release buttons (with tab navigation on, Tab cycled the cells).
     m_table->setTabKeyNavigation(false);
 
-    // The details pane (issue 19 §6): what to do when nothing is selected, the JAUS details of a JAUS
+    // The details pane: what to do when nothing is selected, the JAUS details of a JAUS
     // vehicle, the fleet picture's details of a machine of any other protocol.
     m_hint->setObjectName(QStringLiteral("details-hint"));
     m_hint->setText(tr("No machine selected.\nSelect one in the fleet list, in the table above or on the map "

@@ -1,5 +1,5 @@
 #pragma once
-// Access-control panel (issue 7 §1): one row per discovered subsystem with monitor / control / release,
+// Access-control panel: one row per discovered subsystem with monitor / control / release,
 // who controls it, the access state in words and the row colours of the FKIE IOP panels; below it the
 // details of the selected vehicle.
 #include <QJsonObject>

@@ -1,9 +1,9 @@
 #pragma once
-// Teleop panel (issue 7 §2) for the selected vehicle this console controls: on-screen stick, keyboard
+// Teleop panel for the selected vehicle this console controls: on-screen stick, keyboard
 // (W/A/S/D or arrows with the dead-man key), SDL2 joysticks; wrench effort or velocity as the platform
 // offers; a speed limit within the platform specifications; zero on release, focus loss and joystick
 // loss; a large E-STOP (Space, Esc) and clear-emergency only by holding a confirm button.
-// Issue 18: the vehicle's video above the controls (TeleopVideoPane: cameras, overlays, full-screen window),
+// The vehicle's video above the controls (TeleopVideoPane: cameras, overlays, full-screen window),
 // the video watchdog (driving is held while the video is lost or too old, and resumes only by the
 // operator's Resume once it is back), and the camera's pan-tilt from J/L/I/K, the stick's camera mode and
 // a joystick hat.
@@ -65,7 +65,7 @@ public:
 
     // Pan-tilt rate (rad/s) at full stick deflection (AEP-4818 §9.3.3 rates; the unit clamps to its own).
     static constexpr double kPanTiltFullRate = 1.0;
-    // Issue 18: the video pane, the pan-tilt stream, cameras configured for vehicles that announce none.
+    // The video pane, the pan-tilt stream, cameras configured for vehicles that announce none.
     TeleopVideoPane* video() const { return m_video; }
     PanTiltController* panTilt() const { return m_panTilt; }
     // The on-screen stick drives the camera's pan-tilt instead of the vehicle while checked.
@@ -90,7 +90,7 @@ private:
     void refresh();
     void emergencyStop();
     void onCommand(DriveAxes axes);
-    // Drive sessions go through the command gate (issue 13 §9): start at the first demand, end on release,
+    // Drive sessions go through the command gate: start at the first demand, end on release,
     // focus loss, joystick loss, vehicle change, a refused demand; one audit line each.
     void startSession();
     void endSession(const QString& reason);

@@ -1,5 +1,5 @@
 #pragma once
-// The teleop panel's video (issue 18 §2/§3): the selected vehicle's cameras (announced through its IOP
+// The teleop panel's video: the selected vehicle's cameras (announced through its IOP
 // services or configured) with a switcher, the picture with its overlays, a detachable full-screen window
 // (Esc returns), and the video watchdog that holds driving while the video is lost or too old, until the
 // operator deliberately resumes.

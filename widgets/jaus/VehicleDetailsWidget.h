@@ -1,5 +1,5 @@
 #pragma once
-// Vehicle details (issue 7 §3): platform specifications, mode and state, health, the services tree
+// Vehicle details: platform specifications, mode and state, health, the services tree
 // subsystem → node → component [s.n.c] → service URI and version, and the vehicle's last messages.
 #include "models/jaus/JausVehicle.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Crew messages panel (issue 17 §5): the history of messages both ways, a recipient picker (all machines or
+// Crew messages panel: the history of messages both ways, a recipient picker (all machines or
 // one), a text entry that sends on Enter. Sending goes through the command gate (audited); the history shows
 // what went on the wire (the gate's result per target), received messages show their sender.
 #include "models/CrewMessaging.h"

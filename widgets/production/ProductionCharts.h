@@ -1,5 +1,5 @@
 #pragma once
-// The production charts (issue 15 §4), built from a ProductionModel and used by the live view and the shift
+// The production charts, built from a ProductionModel and used by the live view and the shift
 // report alike: tonnes over the shift against the plan, and the cycle-time breakdown per truck. Qt Charts
 // stays behind this header.
 #include <QImage>

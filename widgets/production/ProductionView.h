@@ -1,5 +1,5 @@
 #pragma once
-// The production view (issue 15 §4): the shift's figures against the plan, live charts (tonnes over the shift
+// The production view: the shift's figures against the plan, live charts (tonnes over the shift
 // vs the plan, cycle-time breakdown per truck), tables per truck, shovel and dump, and the shift report (PDF
 // and CSV) on a button.
 #include <QImage>

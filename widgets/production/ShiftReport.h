@@ -1,5 +1,5 @@
 #pragma once
-// The shift report (issue 15 §4): the production model as a PDF (a map snapshot, the shift's figures, the
+// The shift report: the production model as a PDF (a map snapshot, the shift's figures, the
 // tonnes-vs-plan and cycle-breakdown charts, then tables per truck, shovel and dump) and as CSV (one row per
 // truck, shovel, dump and the shift: loads, tonnes, cycles and the average cycle breakdown in seconds).
 #include <QImage>

@@ -88,7 +88,7 @@ public:
     virtual AxisMapping mapping() const { return {}; }
     virtual void setMapping(const AxisMapping& m) { (void)m; }
     // The first hat (POV switch) as x -1 left .. +1 right, y -1 down .. +1 up; (0,0) centred or none. It
-    // drives the camera's pan-tilt (issue 18).
+    // drives the camera's pan-tilt.
     virtual QPoint hat() const { return {}; }
 
 signals:

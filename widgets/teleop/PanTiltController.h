@@ -1,6 +1,6 @@
 #pragma once
 // Pan-tilt of a vehicle's camera from the keyboard (J/L pan, I/K tilt), the on-screen stick in its camera
-// mode and a joystick hat (issue 18 §2), as a stream of rate demands (-1..1 of the sensor's rates) like the
+// mode and a joystick hat, as a stream of rate demands (-1..1 of the sensor's rates) like the
 // drive stream: a change goes out at once, a demand is repeated every period while it lasts, and on
 // release, focus loss or device loss a zero goes out at once and is repeated a few periods.
 #include "widgets/teleop/InputDevice.h"

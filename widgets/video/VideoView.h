@@ -1,5 +1,5 @@
 #pragma once
-// Shows a VideoPlayer's current frame (issue 18 §2), scaled to fit with its aspect kept, with the stream's
+// Shows a VideoPlayer's current frame, scaled to fit with its aspect kept, with the stream's
 // state and the measured age of the frame, the caller's overlay lines (speed, heading, drive state) and an
 // alert banner (the video watchdog). Painting only copies a reference to the newest QImage: decoding stays
 // on GStreamer's threads. The overlays keep clear of the frame's top rows (the capture time code, read back

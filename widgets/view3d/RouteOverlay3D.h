@@ -1,5 +1,5 @@
 #pragma once
-// The selected truck's route in the 3D view (issue 15 §2): a thick line a little above the terrain along the
+// The selected truck's route in the 3D view: a thick line a little above the terrain along the
 // route's path (site ENU metres, computed from the map like the 2D overlay). It adds one actor to the view's
 // renderer and asks the view to redraw; nothing else of the 3D scene is touched. VTK stays in the .cpp.
 #include <QObject>
@@ -22,7 +22,7 @@ public:
 
     // Empty: nothing drawn.
     void setPath(const QVector<QPointF>& pathEN);
-    // Issue 17 (the compaction design and areas reuse this overlay): line colour (0..1) and width (px).
+    // Line colour (0..1) and width (px).
     void setStyle(double r, double g, double b, float width);
     // The drawn polyline in ENU (x = E, y = N, z = height on the terrain + kLift), for tests.
     QVector<QVector3D> drawnPoints() const;

@@ -61,7 +61,7 @@ struct Way3D {
     double width = 6.0;
 };
 
-// Simple type-specific 3D shapes (issue 19 §4): told apart at a glance, the front recognisable (heading).
+// Simple type-specific 3D shapes: told apart at a glance, the front recognisable (heading).
 enum class MachineShape { Unknown, HaulTruck, Ugv, Roller, Paver, Loader, LightVehicle };
 
 struct Machine3D {

@@ -32,7 +32,7 @@ class ImageView : public QWidget {
 public:
     std::function<QImage(QSize)> render;
     std::function<void(QPointF)> clicked;
-    std::function<void(QPointF)> doubleClicked; // issue 19 §2: double-click selects (and follows)
+    std::function<void(QPointF)> doubleClicked; // double-click selects (and follows)
     std::function<void(QPointF)> dragged;       // left-button drag, device pixels since the last move
     std::function<void(double)> wheeled;        // wheel steps (+ = away from the user = zoom in)
     QString message;
@@ -127,7 +127,7 @@ public:
         int w = 0;
         for (const LegendEntry& e : m_entries)
             w = qMax(w, fm.horizontalAdvance(e.label));
-        // The title too ("Überfahrten" is wider than any entry): nothing cut off (issue 19 §6).
+        // The title too ("Überfahrten" is wider than any entry): nothing cut off.
         w = qMax(w, fm.horizontalAdvance(title()) - kSwatch - kGap);
         resize(w + 2 * kPad + kSwatch + kGap, static_cast<int>(m_entries.size()) * kRow + 2 * kPad + kRow);
         setVisible(!m_entries.empty());
@@ -258,7 +258,7 @@ Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Im
     } else {
         // The QOpenGLWidget is created when the panel is first shown (ensureCanvas): a window that has never
         // held one composes its widgets without OpenGL, so a console whose 3D tab stays closed pays nothing
-        // for it (issue 19 §4/§7).
+        // for it.
         d->backend = Backend::OpenGLWidget;
         d->placeholder = new CanvasPlaceholder(this, [this] { ensureCanvas(); });
         layout->addWidget(d->placeholder, 1);
@@ -444,7 +444,7 @@ QWidget* Site3DView::viewWidget() const {
 }
 
 void Site3DView::activateMachine(const QString& id) {
-    // Issue 19 §2 "double-click selects in every view": as on the 2D map (select and centre), the machine
+    // A double-click selects in every view: as on the 2D map (select and centre), the machine
     // becomes the selection and the camera follows it.
     if (id.isEmpty())
         return;

@@ -435,7 +435,7 @@ struct SiteSceneRenderer::Impl {
         placeLabels();
     }
 
-    // Like the 2D map's symbols (issue 19 §1): true size when near, but never smaller on screen than
+    // Like the 2D map's symbols: true size when near, but never smaller on screen than
     // kMinMachinePx across, so a 15 m truck stays a visible shape when the whole pit is in view.
     static constexpr double kMinMachinePx = 12.0;
     void applyMinimumSize() {

@@ -64,7 +64,7 @@ public:
     std::uint64_t sceneBuildCount() const;    // number of full rebuilds (setScene calls)
     std::uint64_t machineLayoutCount() const; // number of times the machine arrays were re-laid out
     // Frames drawn by any window this renderer is attached to (VTK StartEvent of the renderer): a hidden
-    // view must not move it (issue 19 §4).
+    // view must not move it.
     std::uint64_t renderCount() const;
     // Where the machines' name labels were drawn in the last frame (display pixels, origin bottom-left):
     // nearest machines first, at most 40, never overlapping each other or the selected machine's label.

@@ -7,7 +7,7 @@ namespace ocu::jaus {
 
 namespace {
 // Our own ID in the snapshot's controller field only while we hold control: otherwise the console would
-// show itself as "another" controller (issue 13 §4). Unknown until the vehicle reports who it is.
+// show itself as "another" controller. Unknown until the vehicle reports who it is.
 void dropSelfAsController(RemoteSubsystem& r, const JausId& self) {
     if (!r.snap.controlledByUs && r.snap.controller == self) {
         r.snap.controller = JausId{};
@@ -15,7 +15,7 @@ void dropSelfAsController(RemoteSubsystem& r, const JausId& self) {
     }
 }
 // How long a RejectControl to an outstanding request waits for a ConfirmControl(accepted) to the same
-// request before it counts (issue 13 §4: stacks that answer a pre-empting request with both).
+// request before it counts (stacks that answer a pre-empting request with both).
 constexpr auto kRejectGrace = std::chrono::milliseconds(1500);
 } // namespace
 

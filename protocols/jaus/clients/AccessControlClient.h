@@ -33,7 +33,7 @@ public:
     void releaseAll();
     // True between requestControl and its refusal, loss or release.
     bool wantsControl(std::uint16_t subsystem) const;
-    // ConfirmControl / RejectControl from components another client holds control of (issue 18: the
+    // ConfirmControl / RejectControl from components another client holds control of (the
     // pan-tilt units): the filter returns true when it handled the message, which then is not the vehicle's.
     using OtherControl = std::function<bool(RemoteSubsystem&, const JausId&, std::uint16_t, ByteSpan)>;
     void setOtherControl(OtherControl filter) { m_other = std::move(filter); }

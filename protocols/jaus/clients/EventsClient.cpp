@@ -106,7 +106,7 @@ void EventsClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteSpan p) 
     for (auto& [k, s] : it->second) {
         if (s.state == SubscriptionState::Pending && s.requestId == m->requestId) {
             s.eventId = m->eventId;
-            // Accepted at a much lower rate than asked: poll instead (issue 3 §3, events).
+            // Accepted at a much lower rate than asked (ConfirmEventRequest's confirmed rate): poll instead.
             if (s.type == EventType::Periodic && m->rateHz + 1e-6 < s.rateHz * 0.5) {
                 m_ctx.send(s.target, encode(CancelEvent{s.requestId, s.eventId}));
                 s.state = SubscriptionState::Polling;

@@ -45,8 +45,8 @@ void LivenessClient::tick(RemoteSubsystem& r, TimePoint now) {
                            : age > degraded ? LinkState::Degraded
                                             : LinkState::Up;
     // A subsystem whose link is down is probed at 1 Hz at its last address (the transport remembers it), so
-    // the link is back within about a second of the peer's return, not at the next discovery broadcast
-    // (issue 13 §5). QueryIdentification: every JAUS component answers it (AS5710A Discovery).
+    // the link is back within about a second of the peer's return, not at the next discovery broadcast.
+    // QueryIdentification: every JAUS component answers it (AS5710A Discovery).
     if (link == LinkState::Down) {
         TimePoint& probe = m_lastProbe[r.id()];
         if (now - probe >= std::chrono::seconds(1)) {

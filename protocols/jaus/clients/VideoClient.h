@@ -1,5 +1,5 @@
 #pragma once
-// Video and pan-tilt of a vehicle (issue 18; AEP-4818 §9.1.2-9.1.8, §9.3.3; procedure in
+// Video and pan-tilt of a vehicle (AEP-4818 §9.1.2-9.1.8, §9.3.3; procedure in
 // shared/research/jaus-services-extra.md §2.3):
 //  * Digital Resource Discovery: QueryDigitalResourceEndpoint to the component offering
 //    urn:jaus:jss:iop:DigitalResourceDiscovery every second until a report arrives (FKIE servers stay silent

@@ -101,7 +101,7 @@ struct Deliveries {
     QVector<QThread*> threads;
 };
 
-// Issue 14 §3: blocks the bridge's io thread on purpose (a handler waiting on a latch, `post` runs it there)
+// Blocks the bridge's io thread on purpose (a handler waiting on a latch, `post` runs it there)
 // and expects the watchdog's alarm and `link` shown degraded, then, with the latch released, the thread
 // turning again: an info event and the link as the stack reports it (`upAgain`). The handler gives up by
 // itself after 120 s so a failing test still ends.

@@ -1,4 +1,4 @@
-// Issue 15 §5 (optional point), end to end over loopback against the simulated AHS: the automatic dispatcher
+// The automatic dispatcher end to end over loopback against the simulated AHS: the automatic dispatcher
 // switched on by the headless command {"cmd":"auto_dispatch","on":true} assigns the idle FMS trucks through
 // the CommandGate (audited, origin "auto-dispatch"); a truck it sent to a shovel reports the assignment
 // Active and completes a load-haul-dump cycle counted by the production model; a truck the AHS dispatches

@@ -1,4 +1,4 @@
-// Fleet discrepancies reach the operator as one alarm per cause (issue 19 §5): the real FmsCore (fake clock,
+// Fleet discrepancies reach the operator as one alarm per cause: the real FmsCore (fake clock,
 // no sockets) checks an AHS fleet of 1,000 trucks the FMS does not know plus one with a different type; the
 // console shows two alarms, "1,000 machines of the AHS are not in the FMS fleet" with the 1,000 machines in
 // its details, and nothing else (before, every discrepancy came twice: as "discrepancy" and as "info").

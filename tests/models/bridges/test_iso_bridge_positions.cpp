@@ -1,4 +1,4 @@
-// IsoBridge's positions path end to end over loopback (issue 12 point 4): the simulated AHS (100 trucks at
+// IsoBridge's positions path end to end over loopback: the simulated AHS (100 trucks at
 // 10 Hz) -> IsoStack -> IsoBridge -> FleetModel. Positions reach the model (the trucks move) in batched
 // hand-overs, far fewer than the positions (one coalescer lock each), and patch the rows without losing
 // what was derived from slower data (mode, work text); an all-stop re-derives every row, and the positions

@@ -135,7 +135,7 @@ private slots:
     }
 
     void implausiblePositionsKeepTheLastGoodOne() {
-        // Issue 14 §2: positions beyond the site extent, too fast or jumping are not drawn: the machine keeps
+        // Positions beyond the site extent, too fast or jumping are not drawn: the machine keeps
         // its last good position and is marked implausible; each cause is counted on the link and warned
         // once per machine; a good position afterwards is drawn again.
         sim::SimulatedAhs ahs(quietAhs());
@@ -196,7 +196,7 @@ private slots:
     }
 
     void rejectedInputIsCountedPerLink() {
-        // Issue 14 §6: what the AHS sent and the console rejected, per link and reason (link details,
+        // What the AHS sent and the console rejected, per link and reason (link details,
         // headless counters); the stack's totals count it as well.
         sim::SimulatedAhs ahs(quietAhs());
         QVERIFY(ahs.start());
@@ -219,7 +219,7 @@ private slots:
     }
 
     void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
-        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        // The io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
         sim::SimulatedAhs ahs(quietAhs());
         QVERIFY(ahs.start());
         IsoBridge bridge(consoleConfig(ahs.url()), GeoFrame(quietAhs().origin));
@@ -282,7 +282,7 @@ private slots:
         second.stop();
     }
 
-    // Issue 13 §1 beyond stops: the all-stop release (clear_stop through the gate) is confirmed by the AHS's
+    // Confirmation beyond stops: the all-stop release (clear_stop through the gate) is confirmed by the AHS's
     // own report (all-stop inactive), logged with its latency.
     void clearStopConfirmedByTheAhs() {
         sim::SimulatedAhs ahs(quietAhs());

@@ -1,4 +1,4 @@
-// Issue 15 acceptance, end to end over loopback: the console (IsoBridge behind the CommandGate, driven by the
+// Dispatch end to end over loopback: the console (IsoBridge behind the CommandGate, driven by the
 // headless monitor's JSON commands) against the simulated AHS. A load task is sent (the result names the
 // truck as a target sent), Accepted and Active as the AHS reports; a task the AHS cannot do comes back
 // Rejected with its detail; a truck dispatched by the AHS cannot be assigned (refused before sending, with

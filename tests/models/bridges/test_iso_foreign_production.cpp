@@ -1,4 +1,4 @@
-// Issue 15 acceptance, production and dispatch against a foreign AHS (tests/protocols/iso23725/foreign,
+// Production and dispatch against a foreign AHS (tests/protocols/iso23725/foreign,
 // written from the research note's tables, sharing no code with sim/): one load-haul-dump cycle of production
 // state, payload, sensor, dump and production cycle messages plus dispatch availability and map
 // connectivity, in four dialects (as the tables' examples; every optional field left out; unknown extra

@@ -1,4 +1,4 @@
-// Issue 15 acceptance (§4/§5), end to end over loopback against the simulated AHS: a load task (and the dump
+// Production and dispatch end to end over loopback against the simulated AHS: a load task (and the dump
 // after it) assigned through the headless monitor is Accepted and Active as the AHS reports; the truck drives
 // the route the console sent (every position it reports while driving empty lies on the ways of that route,
 // and it moves); the cycle completes with a payload that the production model counts for that truck, its

@@ -1,9 +1,9 @@
 // JausBridge + CommandGate against the foreign JAUS vehicle (tests/protocols/jaus/foreign), end to end over
-// loopback (issue 13):
-// - §1 confirmation beyond stops: request_control, clear_stop and release_control are confirmed by the
+// loopback:
+// - confirmation beyond stops: request_control, clear_stop and release_control are confirmed by the
 //   vehicle's own reports (an event with the latency), and a command the vehicle never answers raises a
 //   Timeout alarm after the confirmation time;
-// - §3 targets per machine: with the stack stopped, stop_all names every vehicle the console knows (heard
+// - targets per machine: with the stack stopped, stop_all names every vehicle the console knows (heard
 //   earlier, or a configured static endpoint), each with its reason, and the JAUS link shows stopped.
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
@@ -119,7 +119,7 @@ private slots:
         bridge.stop();
     }
 
-    // Issue 13 §1: the drive commands' results say what went on the wire: refused without control; the
+    // The drive commands' results say what went on the wire: refused without control; the
     // session start and the demand sent when the socket took them (the vehicle receives them); the session
     // end noted with its reason; with the stack stopped, nothing is sent and the result says why.
     void driveReportsWhatWentOnTheWire() {

@@ -119,7 +119,7 @@ private slots:
     }
 
     void implausiblePoseIsNotDrawnButCountedAndWarnedOnce() {
-        // Issue 14 §2: a UGV whose poses are 220 km from the site origin (beyond the default 50 km extent) is
+        // A UGV whose poses are 220 km from the site origin (beyond the default 50 km extent) is
         // marked implausible and not drawn; the cause is counted on the link, one warning is raised.
         sim::JausDemo demo(oneUgv());
         GeoPoint elsewhere = oneUgv().origin;
@@ -194,7 +194,7 @@ private slots:
     }
 
     void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
-        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        // The io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
         sim::JausDemo demo(oneUgv());
         JausBridge bridge(consoleConfig(demo, 60), GeoFrame(oneUgv().origin));
         QVERIFY(bridge.start().isEmpty());

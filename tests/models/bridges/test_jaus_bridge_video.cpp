@@ -1,4 +1,4 @@
-// Issue 18 at the bridge: a simulated UGV's cameras, discovered through the IOP services by the JAUS stack,
+// Video at the bridge: a simulated UGV's cameras, discovered through the IOP services by the JAUS stack,
 // reach the panels' view (JausVehicle::videoEndpoints: sensor ID, name, RTSP URL, pan-tilt flag), a stream
 // configured for the vehicle is listed beside them, and JausVehicleBridge::panTilt follows the rules of
 // driving (refused without control, with the reason; handed to the stack with control, and the UGV's pan-tilt

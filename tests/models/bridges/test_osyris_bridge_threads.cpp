@@ -119,7 +119,7 @@ private slots:
     }
 
     void stalledIoThreadRaisesAnAlarmAndDegradesTheLink() {
-        // Issue 14 §3: the io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
+        // The io thread blocked on purpose (a handler waiting on a latch) for more than 1 s.
         sim::osyris::OsyrisDemo demo(oneRoller());
         std::string err;
         QVERIFY2(demo.start(&err), err.c_str());
@@ -184,7 +184,7 @@ private slots:
     }
 
     void implausiblePositionKeepsTheLastGoodOneAndWarns() {
-        // Issue 14 §2: one CmPos with a drum of 10^6 m must neither move the machine nor hang the io thread.
+        // One CmPos with a drum of 10^6 m must neither move the machine nor hang the io thread.
         sim::osyris::OsyrisDemo demo(oneRoller());
         std::string err;
         QVERIFY2(demo.start(&err), err.c_str());
@@ -209,7 +209,7 @@ private slots:
             std::any_of(events.begin(), events.end(),
                         [](const FleetEvent& e) { return e.text.contains(QStringLiteral("drum width")); }),
             20000);
-        // Counted per link and cause (issue 14 §6: link details, headless counters).
+        // Counted per link and cause (link details, headless counters).
         QTRY_VERIFY_WITH_TIMEOUT(
             !bridge.linkCounters().isEmpty() &&
                 bridge.linkCounters()[0].rejected.value(QStringLiteral("implausible.drum_width")) >= 1,

@@ -1,4 +1,4 @@
-// Crew messages both ways (issue 17 §5) over loopback multicast (interface 127.0.0.1) against the simulated
+// Crew messages both ways over loopback multicast (interface 127.0.0.1) against the simulated
 // rollers: the console's message through the command gate (audited; the result names what went on the wire)
 // to one machine reaches only that machine's driver, to all reaches every driver, and their answers and their
 // own reports come back as events with the sender. A foreign OSYRIS peer (raw socket, its own encoding, CmMsg

@@ -90,7 +90,7 @@ private slots:
         QCOMPARE(layer.revision(), r2);
         QCOMPARE(layer.count(bCol, bRow), 2);
 
-        // The extent grows (issue 17 §6): only the new stripe's tiles count as changed, in the new frame.
+        // The extent grows: only the new stripe's tiles count as changed, in the new frame.
         stripe(g, 3, -200, -190, -2);
         layer.setSnapshot(g.snapshot());
         QVERIFY(layer.columns() > e.cx1 - e.cx0 + 1);

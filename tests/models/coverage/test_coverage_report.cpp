@@ -1,4 +1,4 @@
-// The coverage report (issue 17 §3) of a hand-made three-lift job on the simulated road with the shipped
+// The coverage report of a hand-made three-lift job on the simulated road with the shipped
 // design: the CSV re-read with every coordinate taken back through the CRS (PROJ, a separate instance) and
 // the worksite frame to its cell centre within 1 mm; the GeoTIFF read back with GDAL (size, geotransform,
 // EPSG, known cell values, nodata); the PDF's first page rendered with pdftoppm and checked for content;
@@ -259,7 +259,7 @@ private slots:
             }
         QVERIFY2(dark > 2000, qPrintable(QString::number(dark)));
         QVERIFY2(coloured > 500, qPrintable(QString::number(coloured)));
-        // Issue 17 §4: the report states the incomplete cells (the hand job has 5 x 18 of them), in the
+        // The report states the incomplete cells (the hand job has 5 x 18 of them), in the
         // result and on the first page.
         QCOMPARE(res.value(QStringLiteral("incomplete_cells")).toInt(), 5 * 18);
         QProcess text;

@@ -1,4 +1,4 @@
-// The shared control-room history (issue 16 §4) against a throwaway PostgreSQL server: two console cores
+// The shared control-room history against a throwaway PostgreSQL server: two console cores
 // (AlarmModel + PgHistory each); an acknowledgement and a shelving at one console reach the other through
 // LISTEN/NOTIFY; the database stopped for OCU_PG_TEST_OUTAGE_S seconds (default 30) and restarted loses and
 // duplicates nothing (rows counted per console against what each console recorded); a record sent twice

@@ -1,4 +1,4 @@
-// Flight recorder and recording reader (issue 16 §1-§3): what is recorded reads back as it was at any time
+// Flight recorder and recording reader: what is recorded reads back as it was at any time
 // (keyframe seek and forward play agree, both directions), alarms and acknowledgements as of the replay time,
 // the bounded queue drops and counts instead of growing, exports (JSON lines, CSV, slice), hostile blobs.
 #include "models/AlarmModel.h"
@@ -438,7 +438,7 @@ private slots:
         QCOMPARE(r->statesAt(r->endMs()).size(), 10);
     }
 
-    // Issue 16 §1: what the stacks hand to the tap is in the file - protocol, link, peer, type, receive time
+    // What the stacks hand to the tap is in the file - protocol, link, peer, type, receive time
     // and the bytes - readable by time window, exported as JSON lines (ISO 23725 decoded), copied by a slice.
     // record.raw off: raw frames are not kept; on: they are, flagged raw, undecodable ones included.
     void tappedMessagesAreRecorded() {

@@ -78,7 +78,7 @@ private slots:
         t.stop(); // idempotent
     }
     void ioThreadWatchdogSeesABlockedLoop() {
-        // Issue 14 §3: the heartbeat stamps every turn; a handler that blocks the loop makes the age grow
+        // The heartbeat stamps every turn; a handler that blocks the loop makes the age grow
         // past the watchdog's 1 s, and it falls back once the loop turns again.
         IoThread t("test-watchdog");
         QCOMPARE(t.sinceLastTurn().count(), 0); // not running
@@ -98,7 +98,7 @@ private slots:
         t.stop();
     }
     void poseGateCausesAndRateLimitedWarnings() {
-        // Issue 14 §2 (ISO 23725 and JAUS poses): the first rule broken, counted per peer, one warning per
+        // The first rule broken, counted per peer, one warning per
         // peer and cause every 30 s.
         PoseGate g; // defaults: 50 km, 30 m/s, 50 m slack
         const TimePoint t0 = TimePoint{} + std::chrono::hours(1);

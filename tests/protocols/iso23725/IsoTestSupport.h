@@ -73,7 +73,7 @@ struct Recorder : IsoListener {
                 return true;
         return false;
     }
-    // Fleet discrepancies come once, through onFleetDiscrepancies (no event per item, issue 19 §5).
+    // Fleet discrepancies come once, through onFleetDiscrepancies (no event per item).
     bool hasDiscrepancy(const std::string& needle) const {
         std::lock_guard l(mu);
         for (auto& t : discrepancies)

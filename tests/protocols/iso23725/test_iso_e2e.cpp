@@ -217,7 +217,7 @@ private slots:
         QVERIFY(waitFor([&] { return stack.counters().get("rx.rejected.invalid_json") == 1; }));
         ahs.sendRawBinary(std::string("\x00\x01\x02", 3));
         QVERIFY(waitFor([&] { return stack.counters().get("rx.rejected.binary") == 1; }));
-        // ... and the operator sees it (issue 14 §6), after its counter on the io thread: wait for it.
+        // ... and the operator sees it, after its counter on the io thread: wait for it.
         QVERIFY(waitFor([&] { return rec.hasEvent("binary WebSocket frame of 3 bytes from ahs ignored"); }));
         ahs.sendRaw(
             R"({"Protocol":"ISO23725","Version":1,"Timestamp":"2025-03-14T02:17:42.210Z","EquipmentId":")" +

@@ -159,7 +159,7 @@ private slots:
         QCOMPARE(f.listener.discrepancies.front().size(), std::size_t(1));
         QCOMPARE(f.listener.discrepancies.front().front(),
                  std::string("machine " + kTruck + ": type WaterCart at the AHS, HaulTruck at the FMS"));
-        // One report per discrepancy, not two: no event mentions it (issue 19 §5).
+        // One report per discrepancy, not two: no event mentions it.
         QCOMPARE(f.listener.count(IsoSeverity::Warning, "WaterCart"), 0);
         QCOMPARE(f.listener.count(IsoSeverity::Info, "WaterCart"), 0);
     }
@@ -178,7 +178,7 @@ private slots:
         QCOMPARE(f.listener.count(IsoSeverity::Warning, "all-stop Apply refused: link 'ahs' is DOWN"), 1);
     }
 
-    // Issue 13 §1: up, but the socket does not take the frame (closing under us): not sent, with the reason.
+    // Up, but the socket does not take the frame (closing under us): not sent, with the reason.
     void allStopNotTakenBySocketIsNotSent() {
         Fixture f;
         f.connect();
@@ -193,7 +193,7 @@ private slots:
         QCOMPARE(allOf<MachineAllStopRequestV1>(f.out.main).size(), std::size_t(1));
     }
 
-    // Issue 15 §1: assignments only while the AHS lets the FMS dispatch the truck; AHS -> FMS asks for work.
+    // Assignments only while the AHS lets the FMS dispatch the truck; AHS -> FMS asks for work.
     void assignmentOnlyWhileCustodianIsFms() {
         Fixture f;
         f.connect();
@@ -231,7 +231,7 @@ private slots:
         QCOMPARE(allOf<HaulTruckAssignmentRequestV2>(f.out.main).size(), std::size_t(1));
     }
 
-    // Issue 15 §2: once MapConnectivityV1 is known, destinations are routed from the truck's current way; an
+    // Once MapConnectivityV1 is known, destinations are routed from the truck's current way; an
     // unreachable or unknown one is refused before sending.
     void unreachableDestinationRefusedAndRoutesFilledIn() {
         Fixture f;
@@ -297,7 +297,7 @@ private slots:
         QCOMPARE(f.counters.get("assignment.withdrawn"), std::uint64_t(1));
     }
 
-    // Issue 13 §1 for assignment, reset and map fetch: up, but the socket does not take the frame.
+    // What went on the wire, for assignment, reset and map fetch: up, but the socket does not take the frame.
     void assignmentResetAndFetchNotTakenBySocketAreNotSent() {
         Fixture f;
         f.connect();
@@ -498,7 +498,7 @@ private slots:
         QCOMPARE(f.counters.get("rx.rejected.wrong_direction"), std::uint64_t(1));
     }
 
-    // Issue 14 §6: unknown members, binary frames and out-of-standard protocol names are warnings the
+    // Unknown members, binary frames and out-of-standard protocol names are warnings the
     // operator sees, at most one per cause and minute per link, each counted.
     void peerMisbehaviourIsVisibleAndRateLimited() {
         Fixture f;

@@ -1,4 +1,4 @@
-// Issue 15 acceptance: the console's dispatch frames as a foreign AHS receives them. The peer
+// The console's dispatch frames as a foreign AHS receives them. The peer
 // (foreign/ForeignAhs, written from the research note's tables, no code shared with sim/) records the frames
 // verbatim; each is compared with the JSON the tables prescribe, written out by hand here: member names,
 // value types (integers as integers), nothing more and nothing less. Refusals (custodian not FMS or not

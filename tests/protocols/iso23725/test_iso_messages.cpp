@@ -78,7 +78,7 @@ private slots:
             QVERIFY2(names.count(n), n);
     }
 
-    // Issue 15 §1: the assignment messages (§5 rows 21-24, §6 examples 21-24) byte for byte. The codec writes
+    // The assignment messages (§5 rows 21-24, §6 examples 21-24) byte for byte. The codec writes
     // members in name order (one canonical form); these vectors pin every byte, and the examples as the note
     // writes them (its member order) decode to the same values.
     void assignmentVectorsByteExact() {

@@ -1,4 +1,4 @@
-// FmsCore's positions path on a fake clock, no sockets (issue 12 point 4): a machine whose state is known
+// FmsCore's positions path on a fake clock, no sockets: a machine whose state is known
 // only moves, so its MachinePositionV1 is not a whole-snapshot change; positions wait for flushPositions()
 // and leave as one onMachinePositions batch, latest per machine, in arrival order; anything else about a
 // machine is still delivered at once, whole. Unavailable and late positions are not queued; a removed
@@ -196,7 +196,7 @@ private slots:
         QCOMPARE(c.listener.calls.size(), std::size_t(2));
     }
 
-    // Issue 14 §3: every GUID an AHS named became a machine for good; machines outside the fleet definition
+    // Every GUID an AHS named became a machine for good; machines outside the fleet definition
     // are capped per link, the rest is counted, warned about once a minute and allocates nothing.
     void machinesOutsideTheFleetAreCapped() {
         Core<BatchListener> c;

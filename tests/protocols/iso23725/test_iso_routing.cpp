@@ -1,4 +1,4 @@
-// Routing over MapConnectivityV1 (issue 15 §2): directed, by road Length, to a way or the nearest of an
+// Routing over MapConnectivityV1: directed, by road Length, to a way or the nearest of an
 // area's ways; unreachable and unknown destinations say why; an operator's route is checked link by link.
 #include "protocols/iso23725/Routing.h"
 

@@ -1,4 +1,4 @@
-// The all-stop frame never waits behind queued frames (issue 13 §10): WsEndpoint::sendUrgent puts a frame
+// The all-stop frame never waits behind queued frames: WsEndpoint::sendUrgent puts a frame
 // after the one being written (a Beast stream writes one message at a time) and ahead of everything else
 // queued; urgent frames keep their own order. Over a real loopback WebSocket (service and client endpoints on
 // one io_context, 127.0.0.1, free port).

@@ -644,7 +644,7 @@ private slots:
         QVERIFY(r.ok() && r->has_value());
         QCOMPARE((*r)->payload, (Bytes{0x03, 0x4B, 1, 2, 3, 4, 5}));
     }
-    // Issue 14 §3: partial sets are bounded per peer and in total, and a flooding peer loses its own first:
+    // Partial sets are bounded per peer and in total, and a flooding peer loses its own first:
     // however many first fragments one peer sends, another peer's partial message still completes.
     void floodingPeerCannotEvictAnotherPeersSet() {
         auto frag = [](JausId src, std::uint16_t seq, DataFlags flags, Bytes payload) {

@@ -81,7 +81,7 @@ private slots:
         QCOMPARE(c.plausibility, (PoseLimits{2000, 4, 5}));
         QCOMPARE(JausConfig{}.plausibility, (PoseLimits{50000, 30, 50})); // the safe defaults
     }
-    // Issue 18: streams configured for a vehicle that announces none.
+    // Streams configured for a vehicle that announces none.
     void configuredVideo() {
         // Plain literals: moc's scanner mistakes "//" inside a raw string for a comment.
         auto p = parse("{\"jaus\": {\"static_endpoints\": [{\"subsystem\": 127, \"address\": \"127.0.0.1\", "

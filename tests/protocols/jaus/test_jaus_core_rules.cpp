@@ -1,7 +1,6 @@
-// Issue 13 on a FakeClock, JausCore whole (every client composed) with the vehicle played message by message:
-// the JSS inheritance table (§3), the stop rule for the monitor (§2), targets found by inheritance (§3),
-// status polling without events (§4), Reject-then-Confirm and the controller field (§4), static endpoints
-// and the link-down probe (§5).
+// JausCore whole (every client composed) on a FakeClock, with the vehicle played message by message:
+// the JSS inheritance table, the stop rule for the monitor, targets found by inheritance, status polling
+// without events, Reject-then-Confirm and the controller field, static endpoints and the link-down probe.
 #include <QtTest>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Issue 18 over loopback: the OCU's JausStack discovers the video streams of ForeignJausVehicle, an
+// Video discovery over loopback: the OCU's JausStack discovers the video streams of ForeignJausVehicle, an
 // independent peer (its own encoder, nothing from protocols/jaus or sim/jaus) whose Digital Resource
 // Discovery behaves like other vendors' (FKIE's server ignores queries for its first seconds, answers late,
 // leaves out the optional JAUS_ID / ResourceID fields, and the vehicle offers no Visual Sensor service). And

@@ -1,5 +1,5 @@
 // End to end over real loopback sockets (127.0.0.1, free ports, multicast TTL 0): the OCU JausStack against
-// two SimulatedUgvs started by JausDemo (issue 3 acceptance list). Every wait here is generous and ends as
+// two SimulatedUgvs started by JausDemo. Every wait here is generous and ends as
 // soon as its condition holds; the time bounds themselves (discovery within 3 s, drive timeout, access
 // timeout, 5 m at 1 m/s) are proven on a FakeClock in tests/sim/jaus/test_jaus_services.cpp, because on a
 // loaded machine a wall clock measures the scheduler, not the protocol.
@@ -193,7 +193,7 @@ private slots:
         QCOMPARE(f.demo.find(126)->state().x, x); // still stopped: nothing drives it
     }
 
-    // STOP ALL leaves from the caller's thread (issue 13 §10): once the io thread planned both vehicles'
+    // STOP ALL leaves from the caller's thread: once the io thread planned both vehicles'
     // SetEmergency, setEmergencyAll sends them before it returns, and the core still learns them: both
     // targets reported sent, the driving vehicle stops, its drive session ends, both report EMERGENCY.
     void stopAllFromTheCallersThreadIsLearntByTheCore() {
@@ -381,7 +381,7 @@ private slots:
         ugv.stop();
     }
 
-    // Issue 16: the flight recorder's tap sees every delivered message with its type (the message code) and
+    // The flight recorder's tap sees every delivered message with its type (the message code) and
     // sender, and, when it wants raw frames, every datagram as received - undecodable ones included.
     void tapSeesDecodedMessagesAndRawDatagrams() {
         struct CollectTap : MessageTap {

@@ -61,7 +61,7 @@ class TestJausTransport : public QObject {
 private slots:
     void initTestCase() { setLogThreshold(LogLevel::Warning); }
 
-    // The STOP ALL fast path (issue 13 §10): a datagram planned on the io thread and sent from another thread
+    // The STOP ALL fast path: a datagram planned on the io thread and sent from another thread
     // while the io thread sends too. Every datagram arrives byte-exact (the planned one equals what send()
     // encodes with its sequence number) and the source's sequence numbers stay unique and consecutive.
     void plannedSendFromAnotherThreadIsByteExactAndSharesTheSequence() {
@@ -170,7 +170,7 @@ private slots:
         QCOMPARE(a.got.back().dst, kBroadcastAll);
     }
 
-    // Issue 14 §3: every source ID a datagram named became a learned address for good; a peer inventing IDs
+    // Every source ID a datagram named became a learned address for good; a peer inventing IDs
     // grew the table without end. Bounded, and the addresses learned first (the real vehicles) stay.
     void learnedAddressesAreBounded() {
         boost::asio::io_context io;

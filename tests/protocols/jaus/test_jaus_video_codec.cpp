@@ -1,4 +1,4 @@
-// Issue 18: the video message codecs (Digital Resource Discovery, Visual Sensor, Digital Video, pan-tilt)
+// The video message codecs (Digital Resource Discovery, Visual Sensor, Digital Video, pan-tilt)
 // against the byte vectors of shared/research/jaus-services-extra.md §1.2, §2.2, §2.3, §4, in both
 // directions, plus records with missing optional fields and malformed input.
 #include <QtTest>

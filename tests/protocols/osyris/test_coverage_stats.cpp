@@ -1,4 +1,4 @@
-// Pass statistics per area and per station range (issue 17 §1) on hand-made grids (1 m cells), with every
+// Pass statistics per area and per station range on hand-made grids (1 m cells), with every
 // expected figure counted by hand in the comments.
 #include "protocols/osyris/CoverageStats.h"
 

@@ -1,4 +1,4 @@
-// Late join and gaps at the station (issue 17 §4), with a fake clock: a machine whose early slots are never
+// Late join and gaps at the station, with a fake clock: a machine whose early slots are never
 // answered is counted after the gap once this station asked for them gapGiveUpNaks times (or waited
 // gapGiveUpMs), the cells are marked incomplete, an operator event names the slots, and a late arrival is
 // recounted. A gap that is being repaired is not given up. At the grid: whatever gaps were given up and in

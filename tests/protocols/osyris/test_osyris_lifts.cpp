@@ -1,4 +1,4 @@
-// Lifts, filters and gaps of the pass-count engine (issue 17 §2, §4) on synthetic tracks with known answers:
+// Lifts, filters and gaps of the pass-count engine on synthetic tracks with known answers:
 // counts per elevation band and the top-most lift per cell, the vibration/direction/speed/time/machine
 // filters, the snapshot's reader API (the seam the reports build on), and the given-up gap: counted after it,
 // never swept across it, its cells marked incomplete, a late arrival recounted.
@@ -182,7 +182,7 @@ private slots:
         QCOMPARE(g.snapshot()->settings(), g.settings());
     }
 
-    // Issue 17 §3: the report's data time range is that of the counted positions (not of the filtered ones).
+    // The report's data time range is that of the counted positions (not of the filtered ones).
     void dataTimeRangeOfCountedPositions() {
         PassCountGrid g{PassCountSettings{}};
         QCOMPARE(g.snapshot()->dataFromMs(), std::int64_t(0));

@@ -1,4 +1,4 @@
-// Plausibility gate and bounded sweep (issue 14 §2, §3): one hostile CmPos (a drum of 10^6 m, x = 10^30 m,
+// Plausibility gate and bounded sweep: one hostile CmPos (a drum of 10^6 m, x = 10^30 m,
 // NaN) used to hang the io thread in PassCountGrid::sweep or be drawn on another continent.
 #include "protocols/common/Clock.h"
 #include "protocols/osyris/OsyrisCodec.h"
@@ -143,7 +143,7 @@ private slots:
     }
 
     void phantomRangesNeitherWinNorStarveTheRealRibbons() {
-        // Issue 14 §4: one ALIVE announcing slots 0..0xFFFFFFFE made the console NAK that phantom gap for
+        // One ALIVE announcing slots 0..0xFFFFFFFE made the console NAK that phantom gap for
         // ever and, after ~12 s, no real roller's gap was asked for again. Two real rollers with a gap each,
         // a phantom station with an absurd range and another with a wide but believable one.
         FakeClock clock;
@@ -196,7 +196,7 @@ private slots:
     }
 
     void oneDatagramCostsABoundedAnswer() {
-        // Issue 14 §4: one 1,250-byte datagram of 50 ALL requests made the console send 206 messages.
+        // One 1,250-byte datagram of 50 ALL requests made the console send 206 messages.
         FakeClock clock;
         auto store = RibbonStore::inMemory();
         OsyrisConfig cfg;
@@ -231,7 +231,7 @@ private slots:
     }
 
     void rejectedInputIsAWarningOncePerMinute() {
-        // Issue 14 §6: rejected OSYRIS datagrams went to stderr only.
+        // Rejected OSYRIS datagrams went to stderr only.
         FakeClock clock;
         auto store = RibbonStore::inMemory();
         OsyrisConfig cfg;
@@ -260,7 +260,7 @@ private slots:
     }
 
     void unknownStationsAreCapped() {
-        // Issue 14 §4: every station index a datagram names used to get ribbons, timers and rate-limit
+        // Every station index a datagram names used to get ribbons, timers and rate-limit
         // entries.
         FakeClock clock;
         auto store = RibbonStore::inMemory();
@@ -309,7 +309,7 @@ private slots:
     }
 
     void ribbonStoreIsBounded() {
-        // Issue 14 §3: the ribbon of an admitted station grew without a bound (one station could fill the
+        // The ribbon of an admitted station grew without a bound (one station could fill the
         // memory with positions). Beyond the bound a position is refused, counted and warned about; what is
         // held stays (it is in the pass counts) and the ribbon's gaps are no longer NAKed (they would be
         // refused). The store-wide bound likewise; other ribbons keep working below it.
@@ -371,7 +371,7 @@ private slots:
                     << owner << QString(f);
     }
     void oneDatagramCausesAtMostKDatagramsSent() {
-        // Issue 14 §4: "one received datagram causes at most a documented constant number of datagrams sent".
+        // "one received datagram causes at most a documented constant number of datagrams sent".
         // The worst datagrams a hostile station can send (MaxLen full of ALL, PING or NAK for everything) fed
         // to a StationCore holding three ribbons whose positions carry enough properties that no two answers
         // fit one datagram; the datagrams sent afterwards are compared with the same run without that

@@ -94,7 +94,7 @@ std::uint64_t siteCount(OsyrisDemo& demo) {
 class TestOsyrisLoopback : public QObject {
     Q_OBJECT
 private slots:
-    // Issue 13 §10: the operator's text (the console's STOP) leaves at once, not at the station's next Beat
+    // The operator's text (the console's STOP) leaves at once, not at the station's next Beat
     // (OSYRIS spec §6 binds only Alive to the timer; concatenation is recommended, not required).
     void textLeavesAtOnceNotAtTheBeat() {
         FakeClock clock;
@@ -124,7 +124,7 @@ private slots:
                 QVERIFY(!std::holds_alternative<CmMsg>(m.body));
     }
 
-    // Issue 13 §1: the operator's ping leaves at once as its own datagram, so its outcome is this request's.
+    // The operator's ping leaves at once as its own datagram, so its outcome is this request's.
     void pingLeavesAtOnce() {
         FakeClock clock;
         auto store = RibbonStore::inMemory();
@@ -147,7 +147,7 @@ private slots:
         QVERIFY(found);
     }
 
-    // Issue 13 §10: the STOP text leaves from the caller's thread (no wait for the io thread), `done` runs
+    // The STOP text leaves from the caller's thread (no wait for the io thread), `done` runs
     // there before sendText returns, and another station receives the text byte-exact.
     void stopTextLeavesFromTheCallersThread() {
         OsyrisDemoOptions o;

@@ -1,4 +1,4 @@
-// LandXML 1.2 import (issue 17 §1): the shipped design of the simulated paving job, stationing against points
+// LandXML 1.2 import: the shipped design of the simulated paving job, stationing against points
 // computed by hand (from the file's own Start/Center numbers with plain trigonometry, or from the generator's
 // unrounded geometry, written here as literals), spirals against the clothoid series, units, and hostile
 // input.

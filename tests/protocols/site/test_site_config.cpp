@@ -14,7 +14,7 @@ private slots:
         QCOMPARE(cfg->origin.lat, 48.2085);
         QCOMPARE(cfg->origin.lon, 11.4702);
     }
-    // Issue 16: the flight recorder's section.
+    // The flight recorder's section.
     void recordSection() {
         auto def = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}}})", "d.json");
         QVERIFY(def.ok());
@@ -103,7 +103,7 @@ private slots:
         QVERIFY(
             QString::fromStdString(bad.error()).contains("teleop.joystick.dead_zone: 0.95 is out of range"));
     }
-    // Issue 18: the teleop video watchdog's limit.
+    // The teleop video watchdog's limit.
     void videoWatchdogLimit() {
         auto def = parseSiteConfig(R"({"site": {"origin": {"latitude": 1, "longitude": 2}}})", "d.json");
         QVERIFY(def.ok());
@@ -147,7 +147,7 @@ private slots:
         QVERIFY(QString::fromStdString(bad.error()).contains("conninfo"));
         QVERIFY(QString::fromStdString(bad.error()).contains("consle"));
     }
-    // Issue 17: the compaction section (design next to the file, areas as [lat, lon] rings).
+    // The compaction section (design next to the file, areas as [lat, lon] rings).
     void compactionSection() {
         auto cfg = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},
             "compaction":{"design":"job.xml","station_step":25,"band_left":5,"band_right":7,"epsg":32632,

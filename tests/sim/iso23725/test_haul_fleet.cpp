@@ -219,7 +219,7 @@ private slots:
         }
     }
 
-    // Issue 15 §5: one truck at a time under a shovel and on a tip; the others queue at the entry (reported
+    // One truck at a time under a shovel and on a tip; the others queue at the entry (reported
     // Queued) and spot in arrival order when it leaves.
     void trucksQueueAtShovelsAndDumps() {
         Site s(10, 4, false);
@@ -248,7 +248,7 @@ private slots:
         QVERIFY(queued > 0);
     }
 
-    // Issue 15 §5: an assigned task is driven along its RouteV1 from where the truck is: the drive's ways are
+    // An assigned task is driven along its RouteV1 from where the truck is: the drive's ways are
     // the truck's way, the route's ways and the destination's, and every position lies on those ways.
     void assignedRouteIsDriven() {
         Site s(1, 1, false);
@@ -418,7 +418,7 @@ private slots:
         QVERIFY(s.fleet.trucks()[0].assignments.empty());
     }
 
-    // Issue 15 §5: a truck the AHS dispatches itself (custodian AHS) rejects the FMS's tasks with the reason;
+    // A truck the AHS dispatches itself (custodian AHS) rejects the FMS's tasks with the reason;
     // handed back (AHS -> FMS) it takes them again.
     void custodianAhsRejects() {
         Site s(2, 1, false);
@@ -441,7 +441,7 @@ private slots:
                  std::string("Accepted"));
     }
 
-    // Issue 15 §5: a closed way makes destinations behind it unreachable: new tasks are rejected with the
+    // A closed way makes destinations behind it unreachable: new tasks are rejected with the
     // reason, accepted ones are given up with an unsolicited Rejected and the current one Cancelled, and the
     // AHS's MapConnectivityV1 goes out again without the connections into the closed way.
     void closedWayRejectsAndWithdraws() {
@@ -488,7 +488,7 @@ private slots:
         QCOMPARE(s.emitted<MapConnectivityV1>().back().first, s.pit.connectivity);
     }
 
-    // Issue 15 §5: when the FMS's work runs out the AHS parks the truck (custodian AHS meanwhile), then hands
+    // When the FMS's work runs out the AHS parks the truck (custodian AHS meanwhile), then hands
     // it back (custodian FMS: "send me an assignment", §8.3.4) and it waits parked for the next task.
     void idleTruckAsksForWork() {
         Site s(1, 1, false);

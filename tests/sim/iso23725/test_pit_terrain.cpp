@@ -1,4 +1,4 @@
-// Issue 19 §3/§4: the simulated pit's DEM agrees with the map the AHS serves (every road and area node lies
+// The simulated pit's DEM agrees with the map the AHS serves (every road and area node lies
 // on the ground), has benches and a ramp, and is written as georeferenced GeoTIFFs (DEM and hillshade) that
 // GDAL reads back at the right place.
 #include "sim/iso23725/PitTerrain.h"

@@ -1,8 +1,8 @@
-// Issue 18 on loopback: the console's JAUS stack discovers a simulated UGV's cameras through the IOP services
-// (Digital Resource Discovery → RTSP URL, Visual Sensor → names, geometry → the pan-tilt camera), a GStreamer
-// RTSP client (this test's own pipeline) receives H.264 frames and reads the capture time stamped in them,
-// a pan-tilt command moves the reported joint position, and stopping the UGV's RTSP server loses the stream
-// until it is started again. Plus the synthetic view on its own (time code, the view follows the pan).
+// Simulated cameras on loopback: the console's JAUS stack discovers a simulated UGV's cameras through the IOP
+// services (Digital Resource Discovery → RTSP URL, Visual Sensor → names, geometry → the pan-tilt camera), a
+// GStreamer RTSP client (this test's own pipeline) receives H.264 frames and reads the capture time stamped
+// in them, a pan-tilt command moves the reported joint position, and stopping the UGV's RTSP server loses the
+// stream until it is started again. Plus the synthetic view on its own (time code, the view follows the pan).
 #include <QtTest>
 
 #include <gst/app/gstappsink.h>

@@ -212,7 +212,7 @@ private slots:
         // Deterministic run (fixed seed, fake clock). NORM's pure ARQ needs 1.03 here and the per-message ARQ
         // floor is 1.02 (research/norm-anchor.md); more than ~1.2 would mean duplicate answers leak.
         QVERIFY(perLoss > 0.5 && perLoss < 1.2);
-        // NAK rounds (issue 14 §7): a NAK datagram carries the gaps of a round together, as NORM's NACK does.
+        // NAK rounds: a NAK datagram carries the gaps of a round together, as NORM's NACK does.
         if (loss > 0.2)
             QVERIFY2(double(nakDatagrams) / double(lostPositions) <= 0.2, "NAK datagrams per lost position");
         // Same ribbons -> same pass counts at every station (live or recovered).

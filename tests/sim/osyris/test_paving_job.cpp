@@ -1,4 +1,4 @@
-// The simulated paving train on a long job (issue 17 §7): the built-in line/arc/line path, the shipped
+// The simulated paving train on a long job: the built-in line/arc/line path, the shipped
 // LandXML design converted from UTM to the worksite frame, machines following the centre line lift after lift
 // (z rises by the lift thickness), the drivers' "lift n done" messages, and the pass counts of a simulated
 // run falling into the job's lifts.

@@ -1,4 +1,4 @@
-// The JAUS access-control and teleop panels against two simulated UGVs on loopback (issue 7).
+// The JAUS access-control and teleop panels against two simulated UGVs on loopback.
 #include "models/AlarmModel.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
@@ -151,7 +151,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(hasService(), 10000);
     }
 
-    // Issue 19 §7: a pose report changes no cell of the table, so it must not make the table re-measure its
+    // A pose report changes no cell of the table, so it must not make the table re-measure its
     // rows (ResizeToContents): the model signals only cells that show something new.
     void poseReportsChangeNoCell() {
         Site s;
@@ -174,7 +174,7 @@ private slots:
         QCOMPARE(win.control->model()->index(0, JausSubsystemModel::Access).data().toString(), before);
     }
 
-    // Issue 19 §6: the details pane says what to do when nothing is selected and shows the selected machine
+    // The details pane says what to do when nothing is selected and shows the selected machine
     // of any protocol (JAUS: the vehicle details; others: the fleet picture's details).
     void detailsPaneHintAndAnyProtocol() {
         Site s;
@@ -198,7 +198,7 @@ private slots:
         s.ctx.selection()->clear();
         QVERIFY(w.control->detailsText().contains("No machine selected"));
     }
-    // Issue 19 §6 / docs/keyboard.md: keyboard only, from the vehicle table Tab reaches the row's Control
+    // Keyboard only (docs/keyboard.md): from the vehicle table Tab reaches the row's Control
     // button and Space presses it (control is taken, as with the mouse).
     void keyboardReachesTheRowButtons() {
         Site s;
@@ -271,7 +271,7 @@ private slots:
         QTest::keyRelease(win.teleop, Qt::Key_Shift);
     }
 
-    // Issue 13 §9: the teleop drive session goes through the command gate - one audited drive_start and one
+    // The teleop drive session goes through the command gate - one audited drive_start and one
     // drive_stop (with why it ended) per session, not one line per 20 Hz message; a session the vehicle's
     // link ends is shown in the panel, in red, and audited.
     void driveSessionGoesThroughTheGate() {
@@ -439,7 +439,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(win.teleop->clearEmergencyButton()->isEnabled(), 10000);
         QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::OursWarning,
                                   10000);
-        // Issue 13 §9: the hold clears through the command gate, with its token, and both are audited.
+        // The hold clears through the command gate, with its token, and both are audited.
         win.teleop->clearEmergencyButton()->setHoldDurationMs(100);
         QSignalSpy confirmed(win.teleop->clearEmergencyButton(), &HoldToConfirmButton::confirmed);
         QTest::mousePress(win.teleop->clearEmergencyButton(), Qt::LeftButton);
@@ -511,7 +511,7 @@ private slots:
         QVERIFY(r.message.contains("MONITOR"));
         QTest::qWait(500);
         QCOMPARE(s.ugv(126).state().controller.subsystem, std::uint16_t(0));
-        // Issue 13 §2: the monitor role may stop (SetEmergency on the wire) but not clear.
+        // The monitor role may stop (SetEmergency on the wire) but not clear.
         win.teleop->setVehicle(126);
         QTRY_VERIFY_WITH_TIMEOUT(win.teleop->emergencyButton()->isEnabled(), 10000);
         QTest::mouseClick(win.teleop->emergencyButton(), Qt::LeftButton);

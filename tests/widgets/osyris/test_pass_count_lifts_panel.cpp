@@ -1,4 +1,4 @@
-// The pass-count panel's lifts and filters (issue 17 §2, §6) and the crew messages panel (§5):
+// The pass-count panel's lifts and filters and the crew messages panel:
 // - filters edited in the panel reach the source (after the editing pause), the lift picker lists the
 //   source's lifts and sets the lift the layer shows, the summary follows the lift shown, given-up gaps are
 //   stated;

@@ -1,4 +1,4 @@
-// Issue 15 §2: the selected truck's route in the 3D view (RouteOverlay3D), headless (offscreen platform,
+// The selected truck's route in the 3D view (RouteOverlay3D), headless (offscreen platform,
 // EGL). The drawn polyline follows the path on the terrain (1.5 m above it, no segment longer than 10 m), the
 // view shows it in the route colour where there was ground before, and an empty path takes it away again.
 #include "tests/widgets/view3d/SyntheticSite.h"

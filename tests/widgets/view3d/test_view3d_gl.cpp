@@ -92,7 +92,7 @@ private slots:
         QVERIFY2(isMagenta(pixelAt(shot, inWindow)), qPrintable(describe(pixelAt(shot, inWindow))));
     }
 
-    // Issue 19 §2: a double-click on a machine in the GL view selects it and the camera follows it.
+    // A double-click on a machine in the GL view selects it and the camera follows it.
     void doubleClickSelectsAndFollows() {
         frame();
         SiteSceneRenderer& scene = m_view->sceneRenderer();
@@ -177,7 +177,7 @@ private slots:
     }
 
     // Headless fallback when EGL is unavailable but an X server is: VTK's own offscreen X window.
-    // Issue 19 §4: a 3D panel in a tab that is not raised creates no QOpenGLWidget (a window holding one is
+    // A 3D panel in a tab that is not raised creates no QOpenGLWidget (a window holding one is
     // composed through OpenGL on every repaint, which cost the GUI thread and Mesa's threads with the 2D map
     // shown); raising the tab creates it and draws.
     void noGlWidgetUntilTheTabIsRaised() {

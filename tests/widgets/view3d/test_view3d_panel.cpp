@@ -105,7 +105,7 @@ private slots:
                  qPrintable(describe(pixelAt(shot, *moved + offset))));
     }
 
-    // Issue 19 §2 "double-click selects in every view": in the 3D panel too, and the camera follows it.
+    // A double-click selects in every view: in the 3D panel too, and the camera follows it.
     void doubleClickSelectsAndFollows() {
         Site3DView view;
         view.resize(640, 480);

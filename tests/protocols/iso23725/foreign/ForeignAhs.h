@@ -1,5 +1,5 @@
 #pragma once
-// A foreign AHS for the dispatch tests (issue 15 acceptance): written from the message tables of
+// A foreign AHS for the dispatch tests: written from the message tables of
 // shared/research/iso23725.md (§5 rows 8, 10, 17, 21-24; §6 examples), sharing no code with sim/ or with the
 // console's codec. Its own minimal WebSocket server (Boost.Beast, synchronous, one FMS at a time, 127.0.0.1,
 // port 0) sends hand-written frames and records every text frame the FMS sends, verbatim. Behaviours as other

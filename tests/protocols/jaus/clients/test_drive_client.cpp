@@ -94,7 +94,7 @@ private slots:
         QCOMPARE(rig.counters.get("tx.drive"), std::uint64_t(22));
     }
 
-    // Issue 13 §1/§9: what the drive commands return says whether the socket took the message; a stream
+    // What the drive commands return says whether the socket took the message; a stream
     // that stops reaching the socket is one error event per failing streak (not one per 20 Hz message) and
     // one when it goes out again.
     void driveCommandsSayWhatWentOnTheWire() {

@@ -1,4 +1,4 @@
-// VideoClient on its own with a FakeClock (issue 18): Digital Resource Discovery is queried every second
+// VideoClient on its own with a FakeClock: Digital Resource Discovery is queried every second
 // until a report arrives, then every 10 s; RTSP entries become endpoints, others are left out; names come
 // from the host's Visual Sensor capabilities and the pan-tilt mount from its geometry; configured streams are
 // published beside them. Pan-tilt: control of the unit follows control of the vehicle (RequestControl,
