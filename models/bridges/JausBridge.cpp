@@ -128,7 +128,7 @@ JausVehicle toVehicle(const SubsystemSnapshot& s) {
         }
         v.services.push_back(node);
     }
-    for (const jaus::VideoEndpoint& e : s.videoEndpoints) // issue 18
+    for (const jaus::VideoEndpoint& e : s.videoEndpoints)
         v.videoEndpoints.push_back({e.resourceId, e.sensorId, QString::fromStdString(e.url),
                                     QString::fromStdString(e.name), e.panTilt, e.configured});
     return v;
@@ -163,7 +163,7 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
                   const QString name = v.callSign.isEmpty() ? machineId(id) : v.callSign;
                   if (v.emergency && !wasStopped) // the vehicle's own report (ReportStatus: Emergency)
                       emit stopReported(machineId(id), tr("%1 reports EMERGENCY").arg(name));
-                  // Confirmations of other commands come from the vehicle's own reports too (issue 13 §1).
+                  // Confirmations of other commands come from the vehicle's own reports too.
                   if (!v.emergency && wasStopped)
                       emit commandReported(
                           QStringLiteral("clear_stop"), machineId(id),
@@ -250,7 +250,7 @@ std::optional<JausVehicle> JausBridge::subsystem(quint16 id) const {
 // ---- io thread ----
 
 void JausBridge::onSubsystemChanged(const SubsystemSnapshot& reported) {
-    // The plausibility gate first (issue 14 §2): neither the fleet nor the vehicle panels see a pose that
+    // The plausibility gate first: neither the fleet nor the vehicle panels see a pose that
     // cannot be on this site.
     SubsystemSnapshot snapshot = reported;
     const QString implausible = admitPose(snapshot);
@@ -534,7 +534,7 @@ void JausBridge::stopAll(OutcomeCallback done) {
     }
     if (!m_stack->running()) {
         // Nothing can go out; the result names every vehicle the console knows (heard earlier, or configured
-        // as a static endpoint), each with the reason (issue 13 acceptance: one target per machine).
+        // as a static endpoint), each with the reason (one target per machine).
         std::vector<TargetOutcome> out;
         for (quint16 ss : knownSubsystems())
             out.push_back(refusal(machineId(ss), tr("the JAUS stack is not running; nothing sent")));
@@ -680,7 +680,7 @@ CommandResult JausBridge::stopDriving(quint16 subsystem) {
 }
 
 CommandResult JausBridge::panTilt(quint16 subsystem, quint16 sensorId, double panRate, double tiltRate) {
-    // Same rules as driving (issue 18): role, running stack, link, control of the vehicle.
+    // Same rules as driving: role, running stack, link, control of the vehicle.
     if (auto r = refuseIfMonitor(tr("pan-tilt")); !r.ok)
         return r;
     if (!m_stack->running())
@@ -792,7 +792,7 @@ void JausBridge::command(const QString& name, const QJsonObject& args, OutcomeCa
         return;
     }
     if (name == QLatin1String("drive_start")) {
-        // A teleop session (issue 13 §9): one gate command (and audit line) per session, not per message.
+        // A teleop session: one gate command (and audit line) per session, not per message.
         if (auto r = refuseDriving(*sub); !r.ok)
             return refuse(r.message);
         startSession(*sub, std::move(done));

@@ -32,7 +32,7 @@ public:
 
     // Starts the stack; returns an empty string or why it could not (e.g. the UDP port is taken).
     QString start();
-    // Issue 16: the flight recorder's tap on the stack's inbound messages (before start()).
+    // The flight recorder's tap on the stack's inbound messages (before start()).
     void setMessageTap(MessageTap* tap);
     void stop();
     const jaus::JausConfig& config() const { return m_config; }
@@ -43,7 +43,7 @@ public:
     std::optional<JausVehicle> subsystem(quint16 id) const override;
 
     void stopAll(OutcomeCallback done) override;
-    bool stopsFromCallersThread() const override { return true; } // the stack's fast path (issue 13 §10)
+    bool stopsFromCallersThread() const override { return true; } // the stack's fast path
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
     // request_control, release_control, release_all, drive, drive_stop, resume, standby, shutdown, reset.
@@ -55,7 +55,7 @@ public:
     bool reportsConfirmed(const QString& action, const QString& target) const override;
 
     CommandResult drive(quint16 subsystem, const JausDrive& command) override;
-    // Watchdog (issue 14 §3): the stack's io thread.
+    // Watchdog: the stack's io thread.
     QVector<LinkCounters> linkCounters() const override;
     std::chrono::milliseconds ioStalledFor() const override;
     // Runs f on the stack's io thread without waiting (diagnostics; the watchdog tests block it on purpose).
@@ -89,7 +89,7 @@ private:
     QHash<std::uint16_t, JausVehicle> m_latest;
     QHash<std::uint16_t, QTimer*> m_driveTimers;
     QSet<quint16> m_sessions; // drive sessions opened through the gate (or a headless "drive")
-    // io thread, issue 14 §2: why the snapshot's pose may not be drawn (empty when it may). Then its pose and
+    // io thread: why the snapshot's pose may not be drawn (empty when it may). Then its pose and
     // velocity are replaced by the last plausible ones, the cause counted (rx.implausible.<cause>) and a
     // warning raised once per vehicle and cause every 30 s.
     QString admitPose(jaus::SubsystemSnapshot& snapshot);

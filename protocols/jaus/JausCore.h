@@ -61,7 +61,7 @@ public:
         return m_drive.setDriveCommand(subsystem, command);
     }
     bool stopDriving(std::uint16_t subsystem) { return m_drive.stopDriving(subsystem); }
-    // Issue 18: pan-tilt rates (rad/s) for a camera of the subsystem; zero stops (VideoClient).
+    // Pan-tilt rates (rad/s) for a camera of the subsystem; zero stops (VideoClient).
     bool panTilt(std::uint16_t subsystem, std::uint16_t sensorId, double panRate, double tiltRate) {
         return m_video.panTilt(subsystem, sensorId, panRate, tiltRate);
     }

@@ -42,7 +42,7 @@ struct JausStack::Impl : JausOutput {
         });
     }
 
-    // ---- STOP ALL fast path (issue 13 §10) ----
+    // ---- STOP ALL fast path (docs/decisions/stop-from-callers-thread.md) ----
     // The io thread keeps, per discovered subsystem, the SetEmergency datagram the core would send now
     // (routed and encoded; refreshed every tick). A stop sends these from the caller's thread at once, then
     // tells the core on the io thread, which learns them as sent (retries, drive session, status query) and
@@ -107,7 +107,7 @@ struct JausStack::Impl : JausOutput {
     std::vector<StopPlan> stopPlans; // written on the io thread only
     std::atomic<bool> running{false};
     std::atomic<std::uint16_t> port{0};
-    MessageTap* tap = nullptr; // issue 16: the flight recorder's
+    MessageTap* tap = nullptr; // the flight recorder's
     mutable std::mutex groupMutex;
     std::optional<GroupSocketProblem> groupProblem; // as of the last start(), under groupMutex
 };

@@ -27,8 +27,9 @@ public:
     JausStack(const JausStack&) = delete;
     JausStack& operator=(const JausStack&) = delete;
 
-    // Issue 16: every message the transport delivers (and, when the tap wants them, every raw datagram and
-    // JTCP read) goes to `tap` on the io thread. Set before start(); the tap outlives the stack's run.
+    // The flight recorder: every message the transport delivers (and, when the tap wants them, every raw
+    // datagram and JTCP read) goes to `tap` on the io thread. Set before start(); the tap outlives the
+    // stack's run.
     void setMessageTap(MessageTap* tap);
     // Opens the sockets and starts the io thread; throws std::runtime_error when a socket cannot be opened.
     void start();
@@ -50,7 +51,7 @@ public:
     void stopDriving(std::uint16_t subsystem);
     void discoverNow();
 
-    // The same commands with their outcome (issue 13 §1): `done` runs once on the io thread with one
+    // The same commands with their outcome: `done` runs once on the io thread with one
     // TargetOutcome per subsystem addressed (sent, or the reason it was refused). If the stack is not
     // running, `done` never runs: the caller's deadline decides.
     void requestControl(std::uint16_t subsystem, OutcomeCallback done);
@@ -71,7 +72,7 @@ public:
     void startDriving(std::uint16_t subsystem, OutcomeCallback done);
     void setDriveCommand(std::uint16_t subsystem, DriveCommand command, OutcomeCallback done);
     void stopDriving(std::uint16_t subsystem, OutcomeCallback done);
-    // Issue 18: pan-tilt rates (rad/s, + pan right, + tilt up; zero stops) for the camera `sensorId`; needs
+    // Pan-tilt rates (rad/s, + pan right, + tilt up; zero stops) for the camera `sensorId`; needs
     // control of the vehicle. `done` says whether SetPanTiltJointVelocity went out (or why not).
     void panTilt(std::uint16_t subsystem, std::uint16_t sensorId, double panRate, double tiltRate,
                  OutcomeCallback done);
@@ -83,7 +84,7 @@ public:
     void setTransmitFaults(double loss, int delayMs = 0);
 
     Counters& counters();
-    // Watchdog (issue 14 §3): how long the io thread has not turned (0 while it turns or is not running).
+    // Watchdog: how long the io thread has not turned (0 while it turns or is not running).
     std::chrono::milliseconds ioStalledFor() const;
     // Runs f on the io thread without waiting (diagnostics; tests block the thread with it on purpose).
     void postToIo(std::function<void()> f);

@@ -105,7 +105,7 @@ void JudpTransport::open() {
             }
         };
         if (m_cfg.multicast) {
-            // Sharing a host (issue 13 §6): the unicast port is ours alone, so replies meant for us never go
+            // Sharing a host: the unicast port is ours alone, so replies meant for us never go
             // to another console or a node manager on the same port (bound without SO_REUSEADDR, which Linux
             // checks at bind time); once bound it allows sharing, so group sockets (ours, other consoles',
             // a node manager's) may use the same port.

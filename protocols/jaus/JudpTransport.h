@@ -40,7 +40,7 @@ struct NetFaults {
 
 // One datagram routed and encoded ahead of time on the io thread, sent later from any thread
 // (JudpTransport::sendPlanned): the STOP ALL path leaves from the operator's thread without waiting for the
-// io thread to wake up (issue 13 §10).
+// io thread to wake up (docs/decisions/stop-from-callers-thread.md).
 struct PlannedDatagram {
     Bytes datagram; // one message, encoded with sequence number 0: sendPlanned writes the real one
     std::vector<boost::asio::ip::udp::endpoint> to;
@@ -64,8 +64,8 @@ public:
     void open();
     void close();
     void setHandlers(MessageHandler onMessage, ErrorHandler onError);
-    // Issue 16 record.raw: every datagram and every JTCP read as received (peer "address:port"), before any
-    // check.
+    // The flight recorder's record.raw: every datagram and every JTCP read as received (peer "address:port"),
+    // before any check.
     using RawHandler = std::function<void(ByteSpan data, const std::string& peer)>;
     void setRawHandler(RawHandler onRaw) { m_onRaw = std::move(onRaw); }
     // Which destination IDs are ours (for ACK answering).
@@ -89,9 +89,10 @@ public:
     // mode from the broadcast port); nullopt when it has one. Io thread (or before the io thread runs).
     const std::optional<GroupSocketProblem>& groupSocketProblem() const { return m_groupProblem; }
     // JAUS IDs whose address was learned from their traffic (AEP-4818 §4.7.2), at most kMaxLearnedAddresses
-    // (issue 14 §3): an ID first heard when the table is full is not learned (rx.limited.learned_address; it
-    // is still reached by the static table, JTCP or multicast), so a peer inventing source IDs can neither
-    // grow the table nor push out the addresses of the vehicles already known. Io thread.
+    // (a bound against address floods): an ID first heard when the table is full is not learned
+    // (rx.limited.learned_address; it is still reached by the static table, JTCP or multicast), so a peer
+    // inventing source IDs can neither grow the table nor push out the addresses of the vehicles already
+    // known. Io thread.
     static constexpr std::size_t kMaxLearnedAddresses = 1024;
     std::size_t learnedAddresses() const { return m_learned.size(); }
     std::uint16_t localTcpPort() const; // JTCP server port, 0 when not listening

@@ -2,7 +2,7 @@
 // JausStack against ForeignJausVehicle, an independent JAUS peer that does less than our simulator (only
 // derived services listed, no events, no heartbeat, no QueryControl / QueryTimeout answers, Reject-then-
 // Confirm on pre-emption) and listens on unicast only, so consoles reach it through static endpoints.
-// Issue 13 §2-§6. Waits are generous and end as soon as their condition holds; time bounds themselves (poll
+// Waits are generous and end as soon as their condition holds; time bounds themselves (poll
 // period, 1 Hz probe, reject grace) are proven on a FakeClock in test_jaus_core_rules.
 #include <QtTest>
 
