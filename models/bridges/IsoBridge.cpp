@@ -185,14 +185,21 @@ void IsoBridge::onMachineRemoved(const std::string& link, const Guid& equipmentI
 }
 
 void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& status) {
+    // A machine's row depends on the all-stop state only: a new request id or status of the same state (every
+    // Apply, and the AHS's answer to it) leaves every row as it is, so the io thread does not rebuild and
+    // publish the whole fleet then.
+    const auto known = m_allStopIo.find(link);
+    const AllStopState before = known != m_allStopIo.end() ? known->second : AllStopState::Unknown;
     m_allStopIo[link] = status.state;
-    std::vector<MachineState> rows;
-    for (auto& [key, io] : m_machinesIo)
-        if (io.snapshot.link == link) {
-            io.row = rowOf(io, status.state);
-            rows.push_back(io.row);
-        }
-    publishMachines(std::move(rows));
+    if (before != status.state) {
+        std::vector<MachineState> rows;
+        for (auto& [key, io] : m_machinesIo)
+            if (io.snapshot.link == link) {
+                io.row = rowOf(io, status.state);
+                rows.push_back(io.row);
+            }
+        publishMachines(std::move(rows));
+    }
     const QString l = q(link);
     const int st = static_cast<int>(status.state);
     QMetaObject::invokeMethod(

@@ -437,13 +437,23 @@ void FmsCore::dropQueuedPosition(const IsoMachineSnapshot& m) {
         m_positionBatch.erase(std::find(m_positionBatch.begin(), m_positionBatch.end(), &m));
 }
 
-void FmsCore::flushPositions() {
-    if (m_positionBatch.empty())
+void FmsCore::flushPositions(std::size_t maxMachines) {
+    if (m_positionBatch.empty() || maxMachines == 0)
         return;
     m_counters.add("rx.position_batches");
-    m_listener.onMachinePositions(m_link.name, m_positionBatch);
-    m_positionBatch.clear();
-    m_positionQueued.clear();
+    if (maxMachines >= m_positionBatch.size()) {
+        m_listener.onMachinePositions(m_link.name, m_positionBatch);
+        m_positionBatch.clear();
+        m_positionQueued.clear();
+        return;
+    }
+    // The earliest arrivals go first; a machine handed over here that moves again joins the end of the batch.
+    const auto end = m_positionBatch.begin() + static_cast<std::ptrdiff_t>(maxMachines);
+    const std::vector<const IsoMachineSnapshot*> step(m_positionBatch.begin(), end);
+    for (const IsoMachineSnapshot* m : step)
+        m_positionQueued.erase(m);
+    m_positionBatch.erase(m_positionBatch.begin(), end);
+    m_listener.onMachinePositions(m_link.name, step);
 }
 
 template <class T> void FmsCore::machineMember(IsoMachineSnapshot& m, const T& b, std::int64_t hdrMs) {

@@ -79,9 +79,12 @@ public:
     void sendOwnPositions(const std::map<Guid, IsoPosition>& positions);
 
     // Positions received since the last call, one IsoListener::onMachinePositions batch (latest per machine).
-    // The owner calls it shortly after frames arrive (IsoStack: within kPositionBatchInterval).
-    void flushPositions();
+    // The owner calls it shortly after frames arrive (IsoStack: within kPositionBatchInterval). With
+    // `maxMachines` the batch holds at most that many (the earliest arrivals) and the rest stay pending, so
+    // the owner can hand a large backlog over in short steps and run a command between two of them.
+    void flushPositions(std::size_t maxMachines = SIZE_MAX);
     bool positionsPending() const { return !m_positionBatch.empty(); }
+    std::size_t pendingPositions() const { return m_positionBatch.size(); }
 
     // Timeouts and periodic sending due at clock.now(): all-stop acknowledgement and status confirmation,
     // the periodic interface diagnostic, the flush of rate-limited error diagnostics.

@@ -7,10 +7,12 @@
 
 #include <boost/asio/steady_timer.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace ocu::iso23725 {
@@ -21,26 +23,81 @@ static constexpr std::chrono::milliseconds kPollInterval{100};
 // Positions reach the listener in batches (FmsCore::flushPositions), at most this long after they arrived:
 // the console's bridge hands them to the GUI thread once per batch instead of once per message.
 static constexpr std::chrono::milliseconds kPositionBatchInterval{5};
+// At most this many machines per listener call and io-thread handler: a burst of 1,000 trucks' positions is
+// handed over in short steps (under 0.3 ms each in the console's bridge: bench_iso_bridge measures 8 us of
+// io-thread time per position, decoding included), so an all-stop requested meanwhile waits for one step,
+// not for the whole burst (ISO 23725 §7.6: the all-stop is the FMS's safety command).
+static constexpr std::size_t kPositionStep = 32;
 
 namespace {
 
-// Arms one timer when positions are waiting and flushes every link's batch when it fires.
+// Commands that must not wait behind telemetry: all-stop Apply and Remove (§7.6). They keep their own order
+// (a Remove never overtakes the Apply before it). Any thread hands one in; the io thread runs them at its
+// next turn (a posted handler), and before every received frame and between two steps of a position batch, so
+// a backlog of queued handlers or of buffered frames does not delay them. A Beast stream is written by the io
+// thread only: the job runs there and its frame goes next on the socket (WsEndpoint::sendUrgent).
+struct UrgentLane {
+    explicit UrgentLane(boost::asio::io_context& io) : io(io) {}
+    void push(std::function<void()> job) {
+        {
+            std::lock_guard lock(mutex);
+            jobs.push_back(std::move(job));
+            pending.store(true, std::memory_order_release);
+        }
+        boost::asio::post(io, [this] { run(); });
+    }
+    // Io thread only.
+    void run() {
+        while (pending.load(std::memory_order_acquire)) {
+            std::vector<std::function<void()>> now;
+            {
+                std::lock_guard lock(mutex);
+                now.swap(jobs);
+                pending.store(false, std::memory_order_relaxed);
+            }
+            for (auto& job : now)
+                job();
+        }
+    }
+    boost::asio::io_context& io;
+    std::mutex mutex;
+    std::vector<std::function<void()>> jobs;
+    std::atomic<bool> pending{false};
+};
+
+// Arms one timer when positions are waiting; when it fires, hands every link's batch to the listener in steps
+// of kPositionStep machines, one io-thread handler each (re-posted while positions wait), with the urgent
+// commands run before each step.
 struct PositionFlush {
-    explicit PositionFlush(boost::asio::io_context& io) : timer(io) {}
+    PositionFlush(boost::asio::io_context& io, UrgentLane& urgent) : timer(io), urgent(urgent) {}
     void arm() {
-        if (armed)
+        if (armed || stepping || stopped)
             return;
         armed = true;
         timer.expires_after(kPositionBatchInterval);
         timer.async_wait([this](boost::system::error_code ec) {
             armed = false;
             if (!ec)
-                flushAll();
+                step();
         });
     }
+    void step() {
+        stepping = false;
+        if (stopped)
+            return;
+        urgent.run();
+        if (!flushStep())
+            return;
+        stepping = true;
+        boost::asio::post(timer.get_executor(), [this] { step(); });
+    }
     boost::asio::steady_timer timer;
+    UrgentLane& urgent;
     bool armed = false;
-    std::function<void()> flushAll;
+    bool stepping = false; // a step is posted: the rest of the batch follows without the timer
+    bool stopped = false;
+    // One step over every link; true while positions are still waiting.
+    std::function<bool()> flushStep;
 };
 
 // One link: the FMS session (all behaviour) and the sockets it talks through.
@@ -49,6 +106,7 @@ struct Link final : FmsOutbound {
         Link* link = nullptr;
         void onOpen(SessionId id, const std::string& peer) override { link->mainOpened(id, peer); }
         void onText(SessionId id, std::string text) override {
+            link->urgent.run(); // before the frame: a stop requested meanwhile goes first
             if (link->mainSession != id)
                 return;
             link->session->text(text);
@@ -76,6 +134,7 @@ struct Link final : FmsOutbound {
             link->session->mapOpened(peer);
         }
         void onText(SessionId id, std::string text) override {
+            link->urgent.run(); // a map chunk can take long to check: a stop requested meanwhile goes first
             if (link->mapSession == id)
                 link->session->mapText(text);
         }
@@ -88,9 +147,9 @@ struct Link final : FmsOutbound {
     };
 
     Link(const IsoConfig& cfg, const IsoLinkConfig& lc, IsoListener& listener, Counters& counters,
-         boost::asio::io_context& io, PositionFlush& flush)
+         boost::asio::io_context& io, PositionFlush& flush, UrgentLane& urgent)
         : session(std::make_unique<FmsCore>(cfg, lc, listener, counters, SteadyClock::instance(), *this)),
-          positionFlush(flush) {
+          positionFlush(flush), urgent(urgent) {
         mainHandler.link = this;
         mapHandler.link = this;
         main = std::make_unique<WsEndpoint>(io, lc.ws, mainHandler, counters);
@@ -123,6 +182,7 @@ struct Link final : FmsOutbound {
 
     std::unique_ptr<FmsCore> session;
     PositionFlush& positionFlush;
+    UrgentLane& urgent;
     MainHandler mainHandler;
     MapHandler mapHandler;
     std::unique_ptr<WsEndpoint> main;
@@ -136,14 +196,20 @@ struct Link final : FmsOutbound {
 struct IsoStack::Impl {
     Impl(IsoConfig c, IsoListener& l, Counters& counters)
         : cfg(std::move(c)), listener(l), counters(counters), io("iso23725", true),
-          positionTimer(io.context()), pollTimer(io.context()), positionFlush(io.context()) {
+          positionTimer(io.context()), pollTimer(io.context()), urgent(io.context()),
+          positionFlush(io.context(), urgent) {
         // One set of counters per link, feeding the stack's totals; never changed after construction, so
         // any thread may read them (issue 14 §6).
         for (auto& lc : cfg.links)
             linkCounters.try_emplace(lc.name, std::make_unique<Counters>(&counters));
-        positionFlush.flushAll = [this] {
-            for (auto& [name, l] : links)
-                l->session->flushPositions();
+        positionFlush.flushStep = [this] {
+            bool more = false;
+            for (auto& [name, l] : links) {
+                urgent.run();
+                l->session->flushPositions(kPositionStep);
+                more = more || l->session->positionsPending();
+            }
+            return more;
         };
     }
 
@@ -156,6 +222,7 @@ struct IsoStack::Impl {
     std::map<Guid, IsoPosition> ownPositions;
     boost::asio::steady_timer positionTimer;
     boost::asio::steady_timer pollTimer;
+    UrgentLane urgent;
     PositionFlush positionFlush;
     MessageTap* tap = nullptr; // issue 16: the flight recorder's
 
@@ -215,10 +282,11 @@ bool IsoStack::start() {
         return true;
     d.io.start();
     return d.io.call([&] {
+        d.positionFlush.armed = d.positionFlush.stepping = d.positionFlush.stopped = false;
         bool ok = true;
         for (auto& lc : d.cfg.links) {
             auto l = std::make_unique<Link>(d.cfg, lc, d.listener, *d.linkCounters.at(lc.name),
-                                            d.io.context(), d.positionFlush);
+                                            d.io.context(), d.positionFlush, d.urgent);
             l->session->setMessageTap(d.tap);
             auto r = l->main->start();
             if (r && l->map)
@@ -252,6 +320,7 @@ void IsoStack::stop() {
         d.positionTimer.cancel();
         d.pollTimer.cancel();
         d.positionFlush.timer.cancel();
+        d.positionFlush.stopped = true;
         std::vector<WsEndpoint*> endpoints;
         for (auto& [n, l] : d.links) {
             endpoints.push_back(l->main.get());
@@ -275,21 +344,21 @@ void IsoStack::stop() {
 }
 
 void IsoStack::allStopApply(const std::string& link) {
-    m_impl->io.post([d = m_impl.get(), link] {
+    m_impl->urgent.push([d = m_impl.get(), link] {
         if (auto* s = d->session(link, "all-stop Apply"))
             s->allStopApply();
     });
 }
 
 void IsoStack::allStopRemove(const std::string& link) {
-    m_impl->io.post([d = m_impl.get(), link] {
+    m_impl->urgent.push([d = m_impl.get(), link] {
         if (auto* s = d->session(link, "all-stop Remove"))
             s->allStopRemove();
     });
 }
 
 void IsoStack::allStopApply(const std::string& link, OutcomeCallback done) {
-    m_impl->io.post([d = m_impl.get(), link, done = std::move(done)] {
+    m_impl->urgent.push([d = m_impl.get(), link, done = std::move(done)] {
         TargetOutcome o{linkTarget(link), false, "no ISO 23725 link named " + link};
         if (auto* s = d->session(link, "all-stop Apply")) {
             o.sent = s->allStopApply();
@@ -300,7 +369,7 @@ void IsoStack::allStopApply(const std::string& link, OutcomeCallback done) {
 }
 
 void IsoStack::allStopRemove(const std::string& link, OutcomeCallback done) {
-    m_impl->io.post([d = m_impl.get(), link, done = std::move(done)] {
+    m_impl->urgent.push([d = m_impl.get(), link, done = std::move(done)] {
         TargetOutcome o{linkTarget(link), false, "no ISO 23725 link named " + link};
         if (auto* s = d->session(link, "all-stop Remove")) {
             o.sent = s->allStopRemove();

@@ -455,6 +455,12 @@ void WsEndpoint::Impl::connect() {
                                                     std::to_string(self->url.port) + ": " + ec.message());
                             return;
                         }
+                        // Each frame leaves when written, as on the service side (accept): with Nagle's
+                        // algorithm (RFC 896) a small frame such as the all-stop waits while an earlier small
+                        // segment is unacknowledged, up to the peer's delayed ACK (RFC 1122 §4.2.3.2: 40 ms
+                        // on Linux).
+                        error_code ignored;
+                        beast::get_lowest_layer(*ws).socket().set_option(tcp::no_delay(true), ignored);
                         afterTcp(ws);
                     });
             };

@@ -224,6 +224,48 @@ private slots:
         QCOMPARE(c.session.machines().at(kTruck1).position->latitude, -23.3);
     }
 
+    // A large batch leaves in steps (IsoStack hands a burst over in short io-thread handlers, ISO 23725 §7.6:
+    // an all-stop requested meanwhile goes between two steps): the earliest arrivals first, the rest stays
+    // pending; a pending machine that moves again keeps its place with its newest position, one already
+    // handed over joins the end.
+    void largeBatchLeavesInSteps() {
+        Core<BatchListener> c;
+        std::vector<Guid> ids{kTruck1, kTruck2};
+        for (int i = 0; i < 98; ++i) {
+            char id[40];
+            std::snprintf(id, sizeof id, "00000000-0000-4000-8000-%012d", i);
+            ids.emplace_back(id);
+        }
+        c.session.text(encodeMessage(fleet(ids)));
+        for (std::size_t i = 2; i < ids.size(); ++i)
+            c.session.text(encodeMessage(MachineAutonomyModeV1{"Autonomous"}, ids[i]));
+        c.listener.calls.clear();
+        for (std::size_t i = 0; i < ids.size(); ++i)
+            c.session.text(position(ids[i], -23.0 - 0.001 * double(i), kT0));
+        QCOMPARE(c.session.pendingPositions(), std::size_t(100));
+
+        c.session.flushPositions(32);
+        QCOMPARE(c.listener.calls, (std::vector<std::string>{"batch:32"}));
+        QCOMPARE(c.session.pendingPositions(), std::size_t(68));
+        for (std::size_t k = 0; k < 32; ++k)
+            QCOMPARE(c.listener.batches[0][k].id, ids[k]);
+
+        c.session.text(position(ids[0], -24.0, kT0 + 100));  // handed over already: joins the end
+        c.session.text(position(ids[40], -24.1, kT0 + 100)); // still pending: keeps its place
+        QCOMPARE(c.session.pendingPositions(), std::size_t(69));
+        while (c.session.positionsPending())
+            c.session.flushPositions(32);
+        QCOMPARE(c.listener.calls, (std::vector<std::string>{"batch:32", "batch:32", "batch:32", "batch:5"}));
+        QCOMPARE(c.listener.batches[1][0].id, ids[32]);
+        QCOMPARE(c.listener.batches[1][8].id, ids[40]);
+        QCOMPARE(c.listener.batches[1][8].latitude, -24.1);
+        QCOMPARE(c.listener.batches[3].back().id, ids[0]);
+        QCOMPARE(c.listener.batches[3].back().latitude, -24.0);
+        QCOMPARE(c.counters.get("rx.position_batches"), std::uint64_t(4));
+        c.session.flushPositions(0); // nothing handed over
+        QCOMPARE(c.listener.calls.size(), std::size_t(4));
+    }
+
     // A listener that takes no batches sees each moved machine through onMachineChanged, at the flush.
     void defaultListenerSeesWholeMachines() {
         Core<PlainListener> c;
