@@ -1,4 +1,4 @@
-// STOP ALL latency at the wire (issue 13 §10): from the trigger to the first byte of each protocol's stop
+// STOP ALL latency at the wire (docs/decisions/stop-from-callers-thread.md): from the trigger to the first byte of each protocol's stop
 // message on the loopback interface, timed by the kernel (AF_PACKET socket on "lo" with SO_TIMESTAMPNS: the
 // realtime stamp each packet gets when lo passes it on, in the same call as its transmission), so the figure
 // does not depend on how the console reports results.
@@ -528,9 +528,9 @@ int main(int argc, char** argv) {
                     return 3;
                 }
                 const std::string before = loadAverage();
-                // JAUS: SetEmergency goes only to vehicles this console controls until issue 13 §2 lands (the
-                // bridge's STOP ALL); this console controls none here, so JAUS is recorded when seen, not
-                // awaited.
+                // JAUS is recorded when seen, not awaited: the window trials measure the ISO 23725 and OSYRIS
+                // stops (STOP ALL reaches every discovered UGV, controlled or not; the headless trials below
+                // take control first, as their warm-up always did).
                 const unsigned mask = (1u << Iso) | (1u << Osyris);
                 if (trials(
                         sn, s, n, true, mask, [stopAll] { stopAll->trigger(); }, [] {}))
@@ -550,8 +550,8 @@ int main(int argc, char** argv) {
             static const char kLine[] = "{\"cmd\":\"stop_all\"}\n";
             Samples s;
             const std::string before = loadAverage();
-            // Today's bridge sends SetEmergency only to vehicles this console controls (issue 13 §2 is being
-            // fixed beside this): the warm-up takes control of every UGV so JAUS is measured too.
+            // The warm-up takes control of every UGV (as a UGV operator's console would), and JAUS is measured
+            // too.
             std::string control;
             for (const auto& e : site["jaus"]["static_endpoints"].toArray())
                 control += "{\"cmd\":\"request_control\",\"id\":\"jaus:" +

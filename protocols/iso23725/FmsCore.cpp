@@ -548,7 +548,7 @@ void FmsCore::checkDiscrepancies() {
     const auto items = checkFleet(*m_ahsFleet, m_cfg.fleet, m_cfg.dimensionTolerance);
     m_counters.add("fleet.discrepancies", items.size());
     // Reported once, through onFleetDiscrepancies only: an onEvent per item as well made every discrepancy
-    // appear twice in the console (once as "discrepancy", once as "info") and flooded it (issue 19 §5).
+    // appear twice in the console (once as "discrepancy", once as "info") and flooded it.
     m_listener.onFleetDiscrepancies(m_link.name, items);
 }
 

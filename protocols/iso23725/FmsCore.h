@@ -101,8 +101,8 @@ public:
     const RouteGraph& routes() const { return m_routes; }
     const std::optional<FleetDefinitionV2>& ahsFleet() const { return m_ahsFleet; }
 
-    // Issue 16: every decoded frame (and, when the tap wants them, every text frame as received) goes to
-    // `tap` (the io thread). Set before the link opens.
+    // The flight recorder: every decoded frame (and, when the tap wants them, every text frame as received)
+    // goes to `tap` (the io thread). Set before the link opens.
     void setMessageTap(MessageTap* tap) { m_tap = tap; }
 
 private:
@@ -115,7 +115,7 @@ private:
 
     void event(IsoSeverity severity, const std::string& text);
     bool socketRefused(const char* what); // counter, reason, event; returns false
-    // A peer's misbehaviour the operator should see (issue 14 §6): always counted by the caller; a warning
+    // A peer's misbehaviour the operator should see: always counted by the caller; a warning
     // event at most once per cause and link every kPeerWarningGap, saying how many were seen since the last
     // one.
     void peerWarning(const std::string& cause, const std::string& text);
@@ -127,10 +127,10 @@ private:
     };
     std::map<std::string, PeerWarning> m_peerWarnings; // bounded: a handful of fixed causes
 public:
-    // Machines not in the AHS's fleet definition that get a snapshot, per link (issue 14 §3): beyond this a
-    // frame about yet another unknown machine is counted (rx.rejected.machine_cap), warned about once a
-    // minute and dropped before anything is allocated for it. Without it every GUID an AHS sent became a
-    // machine row for good.
+    // Machines not in the AHS's fleet definition that get a snapshot, per link (a bound against invented
+    // IDs): beyond this a frame about yet another unknown machine is counted (rx.rejected.machine_cap),
+    // warned about once a minute and dropped before anything is allocated for it. Without it every GUID an
+    // AHS sent became a machine row for good.
     static constexpr std::size_t kMaxMachinesOutsideFleet = 64;
 
 private:

@@ -199,7 +199,7 @@ struct IsoStack::Impl {
           positionTimer(io.context()), pollTimer(io.context()), urgent(io.context()),
           positionFlush(io.context(), urgent) {
         // One set of counters per link, feeding the stack's totals; never changed after construction, so
-        // any thread may read them (issue 14 §6).
+        // any thread may read them.
         for (auto& lc : cfg.links)
             linkCounters.try_emplace(lc.name, std::make_unique<Counters>(&counters));
         positionFlush.flushStep = [this] {
@@ -224,7 +224,7 @@ struct IsoStack::Impl {
     boost::asio::steady_timer pollTimer;
     UrgentLane urgent;
     PositionFlush positionFlush;
-    MessageTap* tap = nullptr; // issue 16: the flight recorder's
+    MessageTap* tap = nullptr; // the flight recorder's
 
     FmsCore* session(const std::string& name, const char* what) {
         auto it = links.find(name);

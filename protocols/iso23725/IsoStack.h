@@ -32,15 +32,15 @@ public:
     // Starts the io thread and every link; false (with events) when a link cannot start (bad URL, TLS files).
     bool start();
     void stop();
-    // Issue 16: every decoded frame of every link (and, when the tap wants them, every text frame) goes to
-    // `tap` on the io thread. Set before start(); the tap outlives the stack's run.
+    // The flight recorder: every decoded frame of every link (and, when the tap wants them, every text frame)
+    // goes to `tap` on the io thread. Set before start(); the tap outlives the stack's run.
     void setMessageTap(MessageTap* tap);
 
     // ---- commands (thread-safe, posted to the io thread; refused with an event while the link is down) ----
     void allStopApply(const std::string& link);
     // Removes with the id of the active stop (ours or, after operator confirmation, an external one).
     void allStopRemove(const std::string& link);
-    // The same with their outcome (issue 13 §1): `done` runs once on the io thread with one TargetOutcome for
+    // The same with their outcome: `done` runs once on the io thread with one TargetOutcome for
     // the link (target linkTarget(link)); never when the stack is not running.
     void allStopApply(const std::string& link, OutcomeCallback done);
     void allStopRemove(const std::string& link, OutcomeCallback done);
@@ -54,7 +54,7 @@ public:
                         double speedKmh);
     // MapCommandV1 GET "/" (summary then all chunks).
     void fetchMap(const std::string& link);
-    // The same three with their outcome (issue 13 §1, issue 15 §1): `done` runs once on the io thread with
+    // The same three with their outcome: `done` runs once on the io thread with
     // one TargetOutcome, sent only when the socket took the frame. Assignment and reset name the truck
     // (machineTarget), the map fetch the link (linkTarget). Never when the stack is not running.
     void requestAssignment(const std::string& link, const Guid& equipmentId,
@@ -67,7 +67,7 @@ public:
     Counters& counters() { return m_counters; }
     // One link's counters (they also count into counters()); nullptr for an unknown link. Any thread.
     Counters* linkCounters(const std::string& link) const;
-    // Watchdog (issue 14 §3): how long the io thread has not turned (0 while it turns or is not running).
+    // Watchdog: how long the io thread has not turned (0 while it turns or is not running).
     std::chrono::milliseconds ioStalledFor() const;
     // Runs f on the io thread without waiting (diagnostics; tests block the thread with it on purpose).
     void postToIo(std::function<void()> f);
