@@ -23,11 +23,9 @@ public:
         send(destination, payload, options);
     }
     // The same, saying whether the message was handed to a socket: empty when it was, else why not (a
-    // command counts as sent only then). The default cannot tell and reports success.
-    virtual std::string sendOrWhy(const JausId& destination, const Bytes& payload, SendOptions options) {
-        send(destination, payload, options);
-        return {};
-    }
+    // command counts as sent only then). No default: only the output knows what its socket did, and a
+    // default that reported success would make every command "sent".
+    virtual std::string sendOrWhy(const JausId& destination, const Bytes& payload, SendOptions options) = 0;
     // "ip:port" last learned for a JAUS ID (for the console), empty when unknown.
     virtual std::string endpointOf(const JausId&) const { return {}; }
 };

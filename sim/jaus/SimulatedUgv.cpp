@@ -26,6 +26,9 @@ struct SimulatedUgv::Impl : JausOutput {
     void sendFrom(const JausId& src, const JausId& dst, const Bytes& payload, SendOptions o) override {
         transport.send(src, dst, payload, o);
     }
+    std::string sendOrWhy(const JausId& dst, const Bytes& payload, SendOptions o) override {
+        return transport.send(core.platformManager(), dst, payload, o);
+    }
     std::string endpointOf(const JausId& id) const override { return transport.endpointOf(id); }
 
     void applyNetFaults() {

@@ -38,6 +38,10 @@ struct Capture : JausOutput {
     void send(const JausId& d, const Bytes& p, SendOptions o) override {
         sent.push_back({d, p, o, clock->now()});
     }
+    std::string sendOrWhy(const JausId& d, const Bytes& p, SendOptions o) override {
+        send(d, p, o); // the captured "socket" takes everything
+        return {};
+    }
     int count(std::uint16_t id, JausId to = {}) const {
         return int(std::count_if(sent.begin(), sent.end(), [&](const Sent& s) {
             return s.id() == id && (to.subsystem == 0 || s.destination == to);
