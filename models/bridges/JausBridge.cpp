@@ -663,7 +663,7 @@ CommandResult JausBridge::drive(quint16 subsystem, const JausDrive& demand) {
         return CommandResult::failure(tr("drive refused: no drive session open for %1 (a session starts "
                                          "through the command gate)")
                                           .arg(machineId(subsystem)));
-    m_stack->setDriveCommand(subsystem, toDriveCommand(demand));
+    m_stack->setDriveCommand(subsystem, toDriveCommand(demand), {}); // the stream: failures are events
     return CommandResult::success(tr("drive demand handed to the drive stream"));
 }
 
@@ -675,7 +675,7 @@ CommandResult JausBridge::stopDriving(quint16 subsystem) {
     }
     if (!m_stack->running())
         return CommandResult::failure(tr("the JAUS stack is not running; no zero drive commands sent"));
-    m_stack->stopDriving(subsystem); // zeros, several times
+    m_stack->stopDriving(subsystem, {}); // zeros, several times
     return CommandResult::success(tr("zero drive commands handed to the stack"));
 }
 

@@ -209,41 +209,8 @@ bool JausStack::running() const {
         d->post([=] { (void)(expr); });                                                                      \
     } while (0)
 
-void JausStack::requestControl(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.requestControl(ss));
-}
-void JausStack::releaseControl(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.releaseControl(ss));
-}
 void JausStack::releaseAll() {
     OCU_JAUS_POST((d->core.releaseAll(), 0));
-}
-void JausStack::setEmergency(std::uint16_t ss, EmergencyCode code) {
-    OCU_JAUS_POST(d->core.setEmergency(ss, code));
-}
-void JausStack::clearEmergency(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.clearEmergency(ss));
-}
-void JausStack::resume(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.resume(ss));
-}
-void JausStack::standby(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.standby(ss));
-}
-void JausStack::shutdown(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.shutdown(ss));
-}
-void JausStack::reset(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.reset(ss));
-}
-void JausStack::startDriving(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.startDriving(ss));
-}
-void JausStack::setDriveCommand(std::uint16_t ss, DriveCommand c) {
-    OCU_JAUS_POST(d->core.setDriveCommand(ss, c));
-}
-void JausStack::stopDriving(std::uint16_t ss) {
-    OCU_JAUS_POST(d->core.stopDriving(ss));
 }
 void JausStack::discoverNow() {
     OCU_JAUS_POST((d->core.discoverNow(), 0));
@@ -252,7 +219,11 @@ void JausStack::discoverNow() {
 #define OCU_JAUS_OUTCOME(ss, expr)                                                                           \
     do {                                                                                                     \
         Impl* d = m_impl.get();                                                                              \
-        d->post([=, done = std::move(done)] { done({d->core.outcome(ss, (expr))}); });                       \
+        d->post([=, done = std::move(done)] {                                                                \
+            TargetOutcome o = d->core.outcome(ss, (expr));                                                   \
+            if (done)                                                                                        \
+                done({std::move(o)});                                                                        \
+        });                                                                                                  \
     } while (0)
 
 void JausStack::requestControl(std::uint16_t ss, OutcomeCallback done) {
@@ -267,8 +238,10 @@ void JausStack::setEmergency(std::uint16_t ss, EmergencyCode code, OutcomeCallba
         return;
     const bool early = !d->sendStopPlans(code, ss).empty();
     d->post([=, done = std::move(done)] {
-        done({early ? d->core.emergencySent(ss, code)
-                    : d->core.emergencyOutcome(ss, d->core.setEmergency(ss, code))});
+        TargetOutcome o = early ? d->core.emergencySent(ss, code)
+                                : d->core.emergencyOutcome(ss, d->core.setEmergency(ss, code));
+        if (done)
+            done({std::move(o)});
     });
 }
 void JausStack::clearEmergency(std::uint16_t ss, OutcomeCallback done) {
@@ -305,7 +278,9 @@ void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
         return;
     auto early = d->sendStopPlans(code, std::nullopt);
     d->post([=, done = std::move(done), early = std::move(early)] {
-        done(d->core.setEmergencyAll(code, early));
+        auto outcomes = d->core.setEmergencyAll(code, early);
+        if (done)
+            done(std::move(outcomes));
     });
 }
 

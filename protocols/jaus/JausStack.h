@@ -37,23 +37,13 @@ public:
     void stop();
     bool running() const;
 
-    void requestControl(std::uint16_t subsystem);
-    void releaseControl(std::uint16_t subsystem);
     void releaseAll();
-    void setEmergency(std::uint16_t subsystem, EmergencyCode code = EmergencyCode::Safety);
-    void clearEmergency(std::uint16_t subsystem);
-    void resume(std::uint16_t subsystem);
-    void standby(std::uint16_t subsystem);
-    void shutdown(std::uint16_t subsystem);
-    void reset(std::uint16_t subsystem);
-    void startDriving(std::uint16_t subsystem);
-    void setDriveCommand(std::uint16_t subsystem, DriveCommand command);
-    void stopDriving(std::uint16_t subsystem);
     void discoverNow();
 
-    // The same commands with their outcome: `done` runs once on the io thread with one
-    // TargetOutcome per subsystem addressed (sent, or the reason it was refused). If the stack is not
-    // running, `done` never runs: the caller's deadline decides.
+    // The commands, each with its outcome: `done` runs once on the io thread with one TargetOutcome per
+    // subsystem addressed (sent, or the reason it was refused). If the stack is not running, `done` never
+    // runs: the caller's deadline decides. An empty `done` keeps no result (the drive stream, whose
+    // failures are events of their own); there is no second way to send the same command.
     void requestControl(std::uint16_t subsystem, OutcomeCallback done);
     void releaseControl(std::uint16_t subsystem, OutcomeCallback done);
     void setEmergency(std::uint16_t subsystem, EmergencyCode code, OutcomeCallback done);

@@ -226,9 +226,9 @@ private slots:
         QVERIFY(waitFor([&] { return watcher.discovered() && other.discovered(); }));
         QVERIFY(waitFor([&] { return watcher.snap()->management.has_value(); }));
         QVERIFY(!watcher.snap()->emergency);
-        other.stack.setEmergency(126);
+        other.stack.setEmergency(126, EmergencyCode::Safety, {});
         QVERIFY(waitFor([&] { return watcher.snap()->emergency; }));
-        other.stack.clearEmergency(126);
+        other.stack.clearEmergency(126, {});
         QVERIFY(waitFor([&] { return !watcher.snap()->emergency; }));
         QCOMPARE(v.received(msg::CreateEvent) > 0, true); // it asked for events; none came
     }
@@ -241,9 +241,9 @@ private slots:
         Console low(202, Role::PrimaryOperator, 205, v.port());
         Console high(203, Role::SafetyCritical, 240, v.port());
         QVERIFY(waitFor([&] { return low.discovered() && high.discovered(); }));
-        low.stack.requestControl(126);
+        low.stack.requestControl(126, {});
         QVERIFY(waitFor([&] { return low.snap()->controlledByUs && v.controller() == low.id(); }));
-        high.stack.requestControl(126);
+        high.stack.requestControl(126, {});
         QVERIFY(waitFor([&] { return high.snap()->controlledByUs && v.controller() == high.id(); }));
         // Beyond the reject grace and a re-request: still ours, never handed back.
         QVERIFY(waitFor([&] { return v.receivedFrom(msg::RequestControl, high.id()) >= 3; }));
@@ -264,9 +264,9 @@ private slots:
         ForeignJausVehicle v(o);
         Console ocu(200, Role::PrimaryOperator, 205, v.port());
         QVERIFY(waitFor([&] { return ocu.discovered(); }));
-        ocu.stack.requestControl(126);
+        ocu.stack.requestControl(126, {});
         QVERIFY(waitFor([&] { return ocu.snap()->controlledByUs; }));
-        ocu.stack.setEmergency(126);
+        ocu.stack.setEmergency(126, EmergencyCode::Safety, {});
         QVERIFY(waitFor([&] { return ocu.snap()->emergency; }));
         QVERIFY(waitFor([&] { return v.receivedFrom(msg::RequestControl, ocu.id()) >= 3; }));
         QVERIFY(ocu.snap()->controlledByUs);

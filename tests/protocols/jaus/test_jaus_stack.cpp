@@ -84,14 +84,14 @@ struct Fixture {
     bool takeControl(std::uint16_t ss) {
         if (!waitFor([&] { return ready(ss); }))
             return false;
-        stack.requestControl(ss);
+        stack.requestControl(ss, {});
         return waitFor([&] { return snap(ss) && snap(ss)->controlledByUs; });
     }
     void drive(std::uint16_t ss, double v) {
-        stack.startDriving(ss);
+        stack.startDriving(ss, {});
         DriveCommand c;
         c.linear = v;
-        stack.setDriveCommand(ss, c);
+        stack.setDriveCommand(ss, c, {});
     }
     JausDemo demo;
     Recorder rec;
@@ -147,7 +147,7 @@ private slots:
         f.drive(126, 2.0); // the platform's top speed: 5 m in about 3 s
         QVERIFY(waitFor([&] { return f.snap(126)->management == ManagementState::Ready; }));
         QVERIFY(waitFor([&] { return f.demo.find(126)->state().x >= 5.0; }));
-        f.stack.stopDriving(126);
+        f.stack.stopDriving(126, {});
         QVERIFY(waitFor([&] { return std::abs(f.demo.find(126)->state().v) < 1e-6; }));
         const auto truth = f.demo.find(126)->state();
         QVERIFY2(truth.x >= 5.0 && std::abs(truth.y) < 0.05, qPrintable(QString::number(truth.x)));
@@ -176,7 +176,7 @@ private slots:
         QVERIFY(f.takeControl(126));
         f.drive(126, 1.0);
         QVERIFY(waitFor([&] { return f.demo.find(126)->state().v > 0.9; }));
-        f.stack.setEmergency(126);
+        f.stack.setEmergency(126, EmergencyCode::Safety, {});
         QVERIFY(waitFor([&] { return f.demo.find(126)->state().management == ManagementState::Emergency; }));
         QCOMPARE(f.demo.find(126)->state().v, 0.0);
         QVERIFY(waitFor([&] { return f.snap(126)->emergency; }));
@@ -186,7 +186,7 @@ private slots:
         QVERIFY(waitFor([&] { return f.rec.count(EventKind::CommandRefused, 126) >= 1; }));
         std::this_thread::sleep_for(std::chrono::milliseconds(500)); // ten drive periods: nothing moves
         QCOMPARE(f.demo.find(126)->state().x, x);
-        f.stack.clearEmergency(126);
+        f.stack.clearEmergency(126, {});
         QVERIFY(waitFor([&] { return !f.snap(126)->emergency; }));
         QCOMPARE(f.rec.count(EventKind::EmergencyCleared, 126), 1);
         std::this_thread::sleep_for(std::chrono::milliseconds(500));
@@ -275,7 +275,7 @@ private slots:
             auto s = second.snapshot(126);
             return s && s->mobilityComponent.subsystem != 0;
         }));
-        second.requestControl(126);
+        second.requestControl(126, {});
         QVERIFY(waitFor([&] { return second.snapshot(126)->controlledByUs; }));
         QVERIFY(waitFor([&] { return f.rec.count(EventKind::ControlPreempted, 126) == 1; }));
         QCOMPARE(f.snap(126)->access, AccessState::Preempted);
@@ -333,7 +333,7 @@ private slots:
         QVERIFY(waitFor([&] { return stack.snapshot(126)->management == ManagementState::Failure; }));
         ugv->clearFailure();
         ugv->setRejectControl(true);
-        stack.requestControl(126);
+        stack.requestControl(126, {});
         QVERIFY(waitFor([&] { return stack.snapshot(126)->access == AccessState::NotAvailable; }));
         QCOMPARE(rec.count(EventKind::ControlRejected, 126), 1);
         stack.stop();
@@ -374,7 +374,7 @@ private slots:
         QCOMPARE(stack.snapshot(140)->callSign, std::string("TCP-UGV"));
         QVERIFY(stack.counters().get("tx.jtcp.messages") > 0);
         QVERIFY(stack.counters().get("rx.jtcp.messages") > 0);
-        stack.requestControl(140);
+        stack.requestControl(140, {});
         QVERIFY(waitFor([&] { return stack.snapshot(140)->controlledByUs; }));
         stack.stop();
         QVERIFY(waitFor([&] { return ugv.state().controller.subsystem == 0; }));

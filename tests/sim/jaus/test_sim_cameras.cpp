@@ -236,7 +236,7 @@ private slots:
 
             // 3. Pan-tilt: control of the vehicle, then of the pan-tilt unit, then rates; the reported
             // joint position (ReportPanTiltJointPositions) moves.
-            stack.requestControl(126);
+            stack.requestControl(126, {});
             QVERIFY2(waitFor([&] {
                          auto s = stack.snapshot(126);
                          return s && s->controlledByUs && !s->panTilts.empty() &&

@@ -486,7 +486,7 @@ private slots:
         second.start();
         QTRY_VERIFY_WITH_TIMEOUT(
             second.snapshot(126).has_value() && second.snapshot(126)->mobilityComponent.subsystem, 10000);
-        second.requestControl(126);
+        second.requestControl(126, {});
         QTRY_COMPARE_WITH_TIMEOUT(accessOf(win.control, 126), QString("PREEMPTED"), 10000);
         QTRY_COMPARE_WITH_TIMEOUT(colourOf(win.control, 126), JausSubsystemModel::RowColour::Other, 10000);
         const int row = win.control->model()->rowOf(126);
