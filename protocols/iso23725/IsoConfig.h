@@ -2,7 +2,7 @@
 // Configuration of the ISO 23725 stack: the site configuration's `iso23725` object (docs/iso23725.md).
 #include "protocols/iso23725/InferredRules.h"
 #include "protocols/iso23725/Messages.h"
-#include "protocols/iso23725/WsTransport.h"
+#include "protocols/iso23725/WsEndpoint.h"
 
 #include "protocols/common/PosePlausibility.h"
 

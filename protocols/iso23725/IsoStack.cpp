@@ -1,6 +1,6 @@
 #include "protocols/iso23725/IsoStack.h"
 
-#include "protocols/iso23725/WsTransport.h"
+#include "protocols/iso23725/WsEndpoint.h"
 
 #include "protocols/common/IoThread.h"
 #include "protocols/common/Log.h"

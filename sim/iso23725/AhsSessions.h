@@ -10,7 +10,7 @@
 #include "sim/iso23725/SimulatedAhs.h"
 
 #include "protocols/iso23725/Messages.h"
-#include "protocols/iso23725/WsTransport.h"
+#include "protocols/iso23725/WsEndpoint.h"
 
 #include "protocols/common/Counters.h"
 

@@ -4,7 +4,7 @@
 // all-stop and assignments honoured, production-state sensors on change, interface diagnostics (periodic and
 // on rejected input), the map service on the main socket or its own. No Qt. Runs on its own io thread.
 #include "protocols/iso23725/Messages.h"
-#include "protocols/iso23725/WsTransport.h"
+#include "protocols/iso23725/WsEndpoint.h"
 
 #include "protocols/common/Counters.h"
 #include "protocols/common/GeoFrame.h"

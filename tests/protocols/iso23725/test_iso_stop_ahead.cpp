@@ -9,7 +9,7 @@
 #include "protocols/common/IoThread.h"
 #include "protocols/common/Log.h"
 #include "protocols/iso23725/IsoStack.h"
-#include "protocols/iso23725/WsTransport.h"
+#include "protocols/iso23725/WsEndpoint.h"
 
 #include <atomic>
 #include <mutex>

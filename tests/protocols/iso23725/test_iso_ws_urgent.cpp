@@ -8,7 +8,7 @@
 
 #include "protocols/common/Counters.h"
 #include "protocols/common/Log.h"
-#include "protocols/iso23725/WsTransport.h"
+#include "protocols/iso23725/WsEndpoint.h"
 
 using namespace ocu;
 using namespace ocu::iso23725;

@@ -1,5 +1,5 @@
 // The only translation unit with Boost.Beast (~12 s to compile): keep it that way.
-#include "protocols/iso23725/WsTransport.h"
+#include "protocols/iso23725/WsEndpoint.h"
 
 #include "protocols/iso23725/LinkTiming.h"
 

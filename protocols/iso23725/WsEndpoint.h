@@ -1,6 +1,6 @@
 #pragma once
 // WebSocket transport for ISO 23725 (research note §2): client (default) or service role, ws:// or wss://,
-// one text frame = one JSON container or one XML map chunk. Boost.Beast stays inside WsTransport.cpp.
+// one text frame = one JSON container or one XML map chunk. Boost.Beast stays inside WsEndpoint.cpp.
 // Every callback runs on the io_context's thread; every method must be called on that thread.
 #include "protocols/common/Counters.h"
 #include "protocols/common/Result.h"
