@@ -281,8 +281,12 @@ void CommandGate::stopMachine(const QString& id, const QString& origin, ResultHa
         std::move(onFinal));
 }
 
+qint64 CommandGate::nowMs() const {
+    return std::chrono::duration_cast<std::chrono::milliseconds>(m_clock->now().time_since_epoch()).count();
+}
+
 QString CommandGate::requestClearToken(const QString& id) {
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const qint64 now = nowMs();
     // Forget expired tokens.
     for (auto it = m_tokens.begin(); it != m_tokens.end();)
         it = it->expiresMs < now ? m_tokens.erase(it) : std::next(it);
@@ -294,8 +298,7 @@ QString CommandGate::requestClearToken(const QString& id) {
 void CommandGate::clearStop(const QString& id, const QString& token, const QString& origin,
                             ResultHandler onFinal) {
     auto it = m_tokens.find(token);
-    if (token.isEmpty() || it == m_tokens.end() || it->id != id ||
-        it->expiresMs < QDateTime::currentMSecsSinceEpoch()) {
+    if (token.isEmpty() || it == m_tokens.end() || it->id != id || it->expiresMs < nowMs()) {
         finishNow(QStringLiteral("clear_stop"), id, origin,
                   CommandResult::fromTargets({{id, false, tr("release needs a deliberate confirmation")}}),
                   onFinal);

@@ -318,13 +318,31 @@ private slots:
                  }).ok);
         QCOMPARE(iso.calls().size(), 2);
 
+        // A token expires on the gate's steady clock: valid until its lifetime has passed, whatever the
+        // wall clock does.
+        FakeClock clock;
+        stop.setClock(clock);
+        stop.setTokenLifetimeMs(10000);
+        const QString aging = stop.requestClearToken(QStringLiteral("iso23725:T1"));
+        clock.advance(std::chrono::milliseconds(10001));
+        QVERIFY(!gateResult([&](auto h) {
+                     stop.clearStop(QStringLiteral("iso23725:T1"), aging, QStringLiteral("gui"), h);
+                 }).ok);
+        QCOMPARE(iso.calls().size(), 2);
+        const QString fresh = stop.requestClearToken(QStringLiteral("iso23725:T1"));
+        clock.advance(std::chrono::milliseconds(9999));
+        QVERIFY(gateResult([&](auto h) {
+                    stop.clearStop(QStringLiteral("iso23725:T1"), fresh, QStringLiteral("gui"), h);
+                }).ok);
+        QCOMPARE(iso.calls().size(), 3);
+
         // Expired token.
         stop.setTokenLifetimeMs(-1);
         const QString expired = stop.requestClearToken(QStringLiteral("iso23725:T1"));
         QVERIFY(!gateResult([&](auto h) {
                      stop.clearStop(QStringLiteral("iso23725:T1"), expired, QStringLiteral("gui"), h);
                  }).ok);
-        QCOMPARE(iso.calls().size(), 2);
+        QCOMPARE(iso.calls().size(), 3);
     }
 
     void alarmStaysUntilAcknowledged() {
