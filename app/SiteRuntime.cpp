@@ -359,7 +359,12 @@ void SiteRuntime::populate(MainWindow& window) {
             passScroll->setWidgetResizable(true);
             passScroll->setWidget(passPanel);
             tabs->addTab(passScroll, tr("Pass counts"));
-            tabs->addTab(crewPanel, tr("Crew messages"));
+            const int crewTab = tabs->addTab(crewPanel, tr("Crew messages"));
+            // Unread messages in the tab's title: seen from any tab of the panel.
+            connect(crewPanel, &CrewMessagesPanel::unreadChanged, tabs, [tabs, crewTab](int unread) {
+                tabs->setTabText(crewTab,
+                                 unread > 0 ? tr("Crew messages (%1)").arg(unread) : tr("Crew messages"));
+            });
             passDock = tabs;
         }
     }

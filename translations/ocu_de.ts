@@ -2038,6 +2038,10 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 und OSYRIS auf einer Konsole.</t
         <source>Crew messages</source>
         <translation>Nachrichten an die Mannschaft</translation>
     </message>
+    <message>
+        <source>Crew messages (%1)</source>
+        <translation>Nachrichten an die Mannschaft (%1)</translation>
+    </message>
 </context>
 <context>
     <name>ocu::StopAllButton</name>

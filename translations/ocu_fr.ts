@@ -1460,6 +1460,14 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
 <context>
     <name>ocu::SiteRuntime</name>
     <message>
+        <source>Crew messages</source>
+        <translation>Messages à l’équipe</translation>
+    </message>
+    <message>
+        <source>Crew messages (%1)</source>
+        <translation>Messages à l’équipe (%1)</translation>
+    </message>
+    <message>
         <source>Simulated site: %1</source>
         <translation>Site simulé : %1</translation>
     </message>

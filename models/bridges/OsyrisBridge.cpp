@@ -242,7 +242,10 @@ void OsyrisBridge::onText(std::uint8_t idx, const std::string& text) {
     const QString name = stationName(idx);
     FleetEvent e = makeEvent(EventSeverity::Info, ocu::EventKind::TextMessage, id,
                              tr("Message from %1 (%2): %3").arg(name, id, q(text)), QStringLiteral("osyris"));
-    e.requiresAck = true; // an operator should read messages from the machines
+    // A message, not an alarm (EEMUA 191: an alarm is a condition that needs an operator's action): it goes
+    // to the crew messages panel (unread count, notification) and to the event log as information, never
+    // into the alarm list, its counts or its flood indicator.
+    e.requiresAck = false;
     publishEvent(e);
     QMetaObject::invokeMethod(
         this,

@@ -42,7 +42,7 @@ struct OsyrisConfig {
     double maxRange = 0;                      // MaxRange [m]; 0 = unlimited
     Checksum checksum = Checksum::None;
     std::uint8_t stationIndex = 200;                    // this station's Idx (0..253)
-    std::string sqlitePath;                             // empty = memory only
+    std::string sqlitePath;                             // empty = a private temporary database
     double originLat = 0, originLon = 0, originAlt = 0; // worksite centre (local x/y are ENU around it)
     PassCountSettings passCount;
     std::map<std::uint8_t, std::string> machineNames; // Idx -> display name (the wire carries only Idx)

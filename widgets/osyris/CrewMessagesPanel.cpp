@@ -2,7 +2,9 @@
 
 #include "models/CommandGate.h"
 #include "models/FleetBridge.h"
+#include "widgets/OnScreenWatcher.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDateTime>
 #include <QHBoxLayout>
@@ -16,8 +18,15 @@
 namespace ocu {
 
 CrewMessagesPanel::CrewMessagesPanel(QWidget* parent)
-    : QWidget(parent), m_history(new QListWidget(this)), m_to(new QComboBox(this)), m_entry(new QLineEdit(this)),
-      m_send(new QPushButton(tr("Send"), this)), m_bytes(new QLabel(this)) {
+    : QWidget(parent), m_history(new QListWidget(this)), m_to(new QComboBox(this)),
+      m_entry(new QLineEdit(this)), m_send(new QPushButton(tr("Send"), this)), m_bytes(new QLabel(this)),
+      m_onScreen(new OnScreenWatcher(this)) {
+    connect(m_onScreen, &OnScreenWatcher::changed, this, [this](bool onScreen) {
+        if (onScreen && m_unread > 0) {
+            m_unread = 0;
+            emit unreadChanged(0);
+        }
+    });
     m_history->setWordWrap(true);
     m_history->setAlternatingRowColors(true);
     m_entry->setPlaceholderText(tr("Message to the crew (Enter sends)"));
@@ -82,10 +91,18 @@ void CrewMessagesPanel::append(const QString& text, const QString& tooltip) {
 void CrewMessagesPanel::onEvent(const FleetEvent& e) {
     if (e.kind != EventKind::TextMessage)
         return;
-    append(QStringLiteral("%1  ← %2").arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")), e.text),
+    append(QStringLiteral("%1  ← %2")
+               .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")), e.text),
            e.machineId);
     if (!e.machineId.isEmpty() && m_to->findData(e.machineId) < 0)
         refreshRecipients();
+    if (!m_onScreen->onScreen()) {
+        ++m_unread;
+        emit unreadChanged(m_unread);
+        // The desktop's notification sound, where it has one: a message is not an alarm, but the crew
+        // expects it to be read.
+        QApplication::beep();
+    }
 }
 
 void CrewMessagesPanel::send() {
@@ -109,8 +126,9 @@ void CrewMessagesPanel::send() {
                         if (!list)
                             return;
                         // What went on the wire, per target (the gate's truthful result).
-                        item->setText(r.ok ? tr("%1  → %2: %3 (sent)").arg(stamp, toName, text)
-                                           : tr("%1  → %2: %3 (NOT sent: %4)").arg(stamp, toName, text, r.message));
+                        item->setText(
+                            r.ok ? tr("%1  → %2: %3 (sent)").arg(stamp, toName, text)
+                                 : tr("%1  → %2: %3 (NOT sent: %4)").arg(stamp, toName, text, r.message));
                         item->setToolTip(r.message);
                     });
 }

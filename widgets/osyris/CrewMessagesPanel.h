@@ -18,6 +18,7 @@ namespace ocu {
 
 class CommandGate;
 class FleetBridge;
+class OnScreenWatcher;
 struct CommandResult;
 struct FleetEvent;
 
@@ -31,12 +32,19 @@ public:
     void setBridge(FleetBridge* bridge, CrewMessaging* crew);
 
     QStringList history() const; // oldest first, as shown
+    // Messages from the machines that arrived while the panel was not in front of the operator; cleared
+    // when it comes in front.
+    int unreadCount() const { return m_unread; }
     QComboBox* recipientPicker() const { return m_to; }
     QLineEdit* entry() const { return m_entry; }
 
 public slots:
     void refreshRecipients();
     void send();
+
+signals:
+    // The unread count changed (a message arrived unseen, or the panel came in front).
+    void unreadChanged(int unread);
 
 private:
     void onEvent(const FleetEvent& e);
@@ -51,6 +59,8 @@ private:
     QLineEdit* m_entry;
     QPushButton* m_send;
     QLabel* m_bytes;
+    OnScreenWatcher* m_onScreen;
+    int m_unread = 0;
 };
 
 } // namespace ocu

@@ -3,10 +3,12 @@
 // to one machine reaches only that machine's driver, to all reaches every driver, and their answers and their
 // own reports come back as events with the sender. A foreign OSYRIS peer (raw socket, its own encoding, CmMsg
 // numbered WType 3 as a vendor that resolved the table's clash would) exchanges CmMsg with the console too.
+#include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/bridges/OsyrisBridge.h"
 #include "models/testing/CommandWait.h"
 #include "protocols/common/Udp.h"
+#include "protocols/osyris/OsyrisStack.h"
 #include "sim/osyris/OsyrisDemo.h"
 
 #include <QtTest>
@@ -192,6 +194,52 @@ private slots:
             30000);
         bridge.stop();
         demo.stop();
+    }
+
+    // Crew text messages are messages, not alarms (EEMUA 191: an alarm needs an operator's action): 100 of
+    // them from a machine reach the console as information events, and the alarm list, its unacknowledged
+    // count and its flood indicator stay as they were.
+    void hundredMessagesRaiseNoAlarm() {
+        sim::osyris::OsyrisDemoOptions opts;
+        opts.rollers = 1;
+        opts.paver = false;
+        opts.relay = false;
+        opts.crewMessageEveryS = 0;
+        sim::osyris::OsyrisDemo demo(opts);
+        std::string err;
+        QVERIFY2(demo.start(&err), err.c_str());
+        osyris::OsyrisConfig cfg = demo.ocuConfig();
+        OsyrisBridge bridge(cfg, GeoFrame(kOrigin));
+        AlarmModel alarms;
+        alarms.addBridge(&bridge);
+        int texts = 0;
+        QList<FleetEvent> events;
+        connect(&bridge, &OsyrisBridge::textReceived, this, [&] { ++texts; });
+        connect(&bridge, &FleetBridge::eventRaised, this, [&](const FleetEvent& e) {
+            if (e.kind == EventKind::TextMessage)
+                events << e;
+        });
+        QVERIFY(bridge.start().isEmpty());
+        // A machine's station on the same group that sends the texts.
+        osyris::OsyrisConfig machine = cfg;
+        machine.stationIndex = 9;
+        machine.sqlitePath.clear();
+        osyris::OsyrisListener quiet;
+        osyris::OsyrisStack sender(machine, quiet);
+        QVERIFY2(sender.start(&err), err.c_str());
+        for (int i = 0; i < 100; ++i)
+            sender.sendText("lane " + std::to_string(i) + " done");
+        QTRY_COMPARE_WITH_TIMEOUT(texts, 100, 60000);
+        QTRY_COMPARE_WITH_TIMEOUT(events.size(), 100, 10000);
+        for (const FleetEvent& e : std::as_const(events)) {
+            QVERIFY(!e.requiresAck);
+            QCOMPARE(e.severity, EventSeverity::Info);
+        }
+        QCOMPARE(alarms.unacknowledgedCount(), 0);
+        QCOMPARE(alarms.alarmRate(), 0);
+        QVERIFY(!alarms.isFlood());
+        sender.stop();
+        bridge.stop();
     }
 };
 

@@ -150,6 +150,14 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(
             panel.history().join(QLatin1Char('\n')).contains(QStringLiteral("Roller 1: OK, lift 2 done?")), 30000);
         QCOMPARE(demo.crewMessagesReceived(0), 1);
+        // The answer arrived while the panel was not in front of anyone: unread until it is shown.
+        QSignalSpy unread(&panel, &CrewMessagesPanel::unreadChanged);
+        QVERIFY(panel.unreadCount() >= 1);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QTRY_COMPARE(panel.unreadCount(), 0);
+        QVERIFY(!unread.isEmpty());
+        QCOMPARE(unread.last().at(0).toInt(), 0);
         bridge.stop();
         demo.stop();
     }
