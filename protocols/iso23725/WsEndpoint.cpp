@@ -162,6 +162,16 @@ public:
     void send(std::string text, bool binary, bool urgent) override {
         if (m_closing)
             return;
+        if (!urgent && m_queuedBytes + text.size() > m_ep->options.maxQueueBytes) {
+            m_ep->counters.add("ws.tx.overloaded");
+            std::string msg = "the peer does not read: " + std::to_string(m_queuedBytes) +
+                              " bytes queued and the write queue limit is " +
+                              std::to_string(m_ep->options.maxQueueBytes) +
+                              ": connection closed as overloaded";
+            logWarning(kLog, msg);
+            fail(msg);
+            return;
+        }
         m_queuedBytes += text.size();
         if (urgent) {
             // Ahead of every queued frame but the one being written (a Beast stream writes one message at a

@@ -39,6 +39,11 @@ struct WsOptions {
     double backoffJitter = 0.2; // +-20 %
     std::chrono::milliseconds connectTimeout{5000};
     std::size_t maxFrameBytes = 16u * 1024u * 1024u;
+    // Outgoing bytes a session may hold queued (not yet taken by the socket). Beyond it the peer is not
+    // reading: the session is closed as overloaded (counter "ws.tx.overloaded", the reason in onClose) and
+    // the client reconnects, instead of memory growing without bound. Urgent frames (the all-stop) are never
+    // refused by it.
+    std::size_t maxQueueBytes = 32u * 1024u * 1024u;
     std::string
         subprotocol; // Sec-WebSocket-Protocol offered (client) / accepted (service); none by default (Q1)
 };
