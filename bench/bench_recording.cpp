@@ -213,8 +213,9 @@ static bool record(const Setup& setup, const QString& file, bool legacy, bool me
         producerCpu += threadCpuSeconds() - c1;
         fig.updates += quint64(machines);
         if (ms % 1000 == 0) {
-            const FleetEvent ev = makeEvent(EventSeverity::Warning, EventKind::Diagnostic, fleet[0].id,
-                                            QStringLiteral("diagnostic %1").arg(ms));
+            FleetEvent ev = makeEvent(EventSeverity::Warning, EventKind::Diagnostic, fleet[0].id,
+                                      QStringLiteral("diagnostic %1").arg(ms));
+            ev.timeMs = clock; // the recording's time: an acknowledgement covers what was raised before it
             rec.recordEvent(ev);
             if (ackAfterMs >= 0)
                 pendingAcks.push_back({ms + ackAfterMs, alarmKey(ev)});
