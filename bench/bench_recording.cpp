@@ -10,7 +10,8 @@
 //      the site frame, as the bridges derive one from the other. Then the "after" state chunks compressed
 //      again with zlib and zstd at several levels (size and time).
 //   2. Seek: random positions in the recording; wall time per seek (picture rebuilt: keyframe + records after
-//      it, pushed into a FleetModel).
+//      it, pushed into a FleetModel; the alarm list: the rows alive at T, at most the list's cap), and the
+//      walk over the events that opening the replay costs once.
 //   3. Replay at 16x: advancing through the recording in 40 ms ticks of 16x (640 ms of recording per tick)
 //   into a
 //      FleetModel; keeps up when a tick's work takes less than its 40 ms.
@@ -19,11 +20,16 @@
 //   bytes), as the io threads hand them over (--no-messages leaves them out).
 // Usage: bench_recording [--machines N] [--hz H] [--seconds S] [--seeks K] [--keep FILE] [--no-messages]
 //                        [--only before|after] [--noise-cm C] [--seek-only FILE] [--after-messages]
+//                        [--ack-after S]
 //   --no-messages: the "before" run without the message log; --seek-only: seeks (and 16x) in an existing
 //   recording (e.g. a 12-hour one kept with --keep) without recording anything; --after-messages: one more
-//   schema 4 run with record.messages on (what the message log costs now).
+//   schema 4 run with record.messages on (what the message log costs now); --ack-after: every event (an
+//   alarm: a warning) acknowledged S seconds after it, as an operator would (default: never, so that the
+//   alarm list holds every event of the file).
+#include "models/AlarmModel.h"
 #include "models/FleetBridge.h"
 #include "models/FleetModel.h"
+#include "models/recording/AlarmHistory.h"
 #include "models/recording/BlobCodec.h"
 #include "models/recording/Recorder.h"
 #include "models/recording/Recording.h"
@@ -41,6 +47,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <limits>
 #include <random>
 
@@ -67,7 +74,8 @@ static double threadCpuSeconds() {
 struct Setup {
     int machines = 1000, hz = 10, seconds = 60;
     double noiseCm = 1;
-    bool messages = true; // the "before" run's message log
+    bool messages = true;   // the "before" run's message log
+    qint64 ackAfterMs = -1; // --ack-after: each event's alarm acknowledged this long after it (-1: never)
 };
 
 struct RunFigures {
@@ -151,8 +159,14 @@ static bool record(const Setup& setup, const QString& file, bool legacy, bool me
     double producerCpu = 0;
     QVector<MachineState> batch;
     batch.reserve(machines);
+    const qint64 ackAfterMs = setup.ackAfterMs;
+    std::deque<std::pair<qint64, QString>> pendingAcks; // (when, the alarm's key)
     for (qint64 ms = 0; ms < qint64(setup.seconds) * 1000; ms += stepMs) {
         clock = t0 + ms;
+        while (!pendingAcks.empty() && pendingAcks.front().first <= ms) {
+            rec.recordAck(pendingAcks.front().second, QStringLiteral("op"), clock);
+            pendingAcks.pop_front();
+        }
         batch.clear();
         for (int i = 0; i < machines; ++i) {
             MachineState& m = fleet[size_t(i)];
@@ -199,8 +213,12 @@ static bool record(const Setup& setup, const QString& file, bool legacy, bool me
         producerCpu += threadCpuSeconds() - c1;
         fig.updates += quint64(machines);
         if (ms % 1000 == 0) {
-            rec.recordEvent(makeEvent(EventSeverity::Warning, EventKind::Diagnostic, fleet[0].id,
-                                      QStringLiteral("diagnostic %1").arg(ms)));
+            FleetEvent ev = makeEvent(EventSeverity::Warning, EventKind::Diagnostic, fleet[0].id,
+                                      QStringLiteral("diagnostic %1").arg(ms));
+            ev.timeMs = clock; // the recording's time: an acknowledgement covers what was raised before it
+            rec.recordEvent(ev);
+            if (ackAfterMs >= 0)
+                pendingAcks.push_back({ms + ackAfterMs, alarmKey(ev)});
             LinkStatus l;
             l.link = QStringLiteral("iso23725:ahs");
             l.state = LinkState::Up;
@@ -299,11 +317,16 @@ static void seekAndReplay(const QString& file, int seeks, const char* label) {
     const double hours = double(rec->endMs() - rec->startMs()) / 3.6e6;
     {
         FleetModel model;
-        ReplayController c(rec.get(), &model);
+        QElapsedTimer opening;
+        opening.start();
+        ReplayController c(rec.get(), &model); // walks the events once (AlarmHistory)
+        const double openMs = double(opening.nsecsElapsed()) / 1e6;
+        const AlarmHistory history(rec.get(), c.maxAlarmEntries());
+        AlarmModel restored;
         std::mt19937_64 rng(16);
         std::uniform_int_distribution<qint64> pos(rec->startMs(), rec->endMs());
-        std::vector<double> ms, picture, eventsRead, linksRead;
-        qsizetype eventCount = 0;
+        std::vector<double> ms, picture, alarmList, linksRead;
+        int alarmRows = 0;
         for (int i = 0; i < seeks; ++i) {
             const qint64 t = pos(rng);
             c.seek(t);
@@ -313,10 +336,9 @@ static void seekAndReplay(const QString& file, int seeks, const char* label) {
             (void)rec->statesAtIdx(t); // the machine picture alone (keyframe + chunks)
             picture.push_back(double(p.nsecsElapsed()) / 1e6);
             p.restart();
-            const auto events =
-                rec->events(std::numeric_limits<qint64>::min(), t); // what an alarm rebuild reads
-            eventsRead.push_back(double(p.nsecsElapsed()) / 1e6);
-            eventCount = std::max(eventCount, qsizetype(events.size()));
+            restored.restore(history.rowsAt(t)); // the alarm list at T: the rows alive then, read by id
+            alarmList.push_back(double(p.nsecsElapsed()) / 1e6);
+            alarmRows = std::max(alarmRows, restored.rowCount());
             p.restart();
             (void)rec->linksAt(t);
             linksRead.push_back(double(p.nsecsElapsed()) / 1e6);
@@ -341,9 +363,18 @@ static void seekAndReplay(const QString& file, int seeks, const char* label) {
                 sum += x;
             return v.empty() ? 0.0 : sum / double(v.size());
         };
+        std::sort(alarmList.begin(), alarmList.end());
         std::printf(
-            "  reading the events up to T (up to %lld of them): mean %.1f ms; the links at T: mean %.1f ms\n",
-            static_cast<long long>(eventCount), mean(eventsRead), mean(linksRead));
+            "  the alarm list at T (up to %d rows, cap %d): mean %.1f ms, max %.1f ms; the links at T: mean "
+            "%.1f ms\n",
+            alarmRows, c.maxAlarmEntries(), mean(alarmList), alarmList.back(), mean(linksRead));
+        std::printf(
+            "  opening the replay (one walk over %lld events and %lld acknowledgements): %.1f ms\n",
+            static_cast<long long>(
+                rec->events(std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()).size()),
+            static_cast<long long>(
+                rec->acks(std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()).size()),
+            openMs);
     }
     {
         FleetModel model;
@@ -392,6 +423,8 @@ int main(int argc, char** argv) {
             keep = args[++i];
         else if (args[i] == QLatin1String("--only"))
             only = args[++i];
+        else if (args[i] == QLatin1String("--ack-after"))
+            setup.ackAfterMs = qint64(args[++i].toDouble() * 1000);
         else if (args[i] == QLatin1String("--noise-cm"))
             setup.noiseCm = args[++i].toDouble();
         else if (args[i] == QLatin1String("--seek-only"))

@@ -15,12 +15,6 @@
 
 namespace ocu {
 
-namespace {
-// Consoles of one control room run NTP-synchronised clocks; an acknowledgement made elsewhere covers the
-// alarm occurrences raised up to this much after its stamp.
-constexpr qint64 kAckSkewMs = 5000;
-} // namespace
-
 AlarmModel::AlarmModel(QObject* parent)
     : QAbstractTableModel(parent), m_clock([] { return QDateTime::currentMSecsSinceEpoch(); }),
       m_operator(QStringLiteral("local")), m_timer(new QTimer(this)) {
@@ -259,6 +253,18 @@ void AlarmModel::add(const FleetEvent& event) {
     }
     emit eventAdded(ev);
     trim();
+}
+
+void AlarmModel::restore(const QVector<RestoredRow>& rows) {
+    beginResetModel();
+    m_rows.clear();
+    m_rows.reserve(rows.size());
+    for (const RestoredRow& r : rows)
+        m_rows.push_back(
+            Row{r.event, r.acked, r.ackedMs, alarmKey(r.event), r.ackedBy, r.occurrences, r.firstMs});
+    rebuildActive();
+    endResetModel();
+    recount();
 }
 
 void AlarmModel::trim() {

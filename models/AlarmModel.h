@@ -55,6 +55,10 @@ public:
     };
     static constexpr qint64 kRateWindowMs = 10 * 60 * 1000; // EEMUA 191: alarms per 10 minutes
     static constexpr int kFloodThreshold = 10;              // more than this per 10 min = flood
+    static constexpr int kDefaultMaxEntries = 20000;        // setMaxEntries
+    // Consoles of one control room run NTP-synchronised clocks; an acknowledgement made elsewhere covers the
+    // alarm occurrences raised up to this much after its stamp (acknowledgeKey).
+    static constexpr qint64 kAckSkewMs = 5000;
 
     explicit AlarmModel(QObject* parent = nullptr);
 
@@ -104,6 +108,21 @@ public:
     // Entries are kept up to this many; the oldest acknowledged ones go first, unacknowledged alarms are
     // never dropped.
     void setMaxEntries(int n) { m_maxEntries = n; }
+    int maxEntries() const { return m_maxEntries; }
+
+    // One row as a replay restores it (the list at a replay time, built without adding every event since the
+    // start): the event as the row shows it (the latest occurrence's time and text, the highest severity),
+    // how often it was raised, when it was first raised, and its acknowledgement.
+    struct RestoredRow {
+        FleetEvent event;
+        bool acked = false;
+        qint64 ackedMs = 0;
+        QString ackedBy;
+        int occurrences = 1;
+        qint64 firstMs = 0;
+    };
+    // Replaces every row (a model reset; shelvings and the alarm rate are kept).
+    void restore(const QVector<RestoredRow>& rows);
 
     // CSV (RFC 4180 quoting): time (ISO 8601 UTC), severity, kind, machine, source, text, acknowledged.
     bool exportCsv(QIODevice* out, const QVector<int>& rows = {}) const;
@@ -162,7 +181,7 @@ private:
     QString m_operator;
     QTimer* m_timer = nullptr;
     int m_unacked = 0;
-    int m_maxEntries = 20000;
+    int m_maxEntries = kDefaultMaxEntries;
     QHash<QString, int> m_linkDown; // link name -> 1 while down (dedupe)
     QHash<QString, int> m_health;   // machine id -> last health level
 };

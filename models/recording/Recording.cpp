@@ -282,23 +282,64 @@ QStringList Recording::advance(StateMap& states, qint64 fromExclusive, qint64 to
     return changed;
 }
 
+namespace {
+constexpr const char* kEventColumns =
+    "SELECT id, t, time_ms, severity, kind, machine, source, text, requires_ack, key "
+    "FROM events ";
+
+RecordedEvent eventRow(const Query& q) {
+    RecordedEvent e;
+    e.id = q.i64(0);
+    e.t = q.i64(1);
+    e.event.timeMs = q.i64(2);
+    e.event.severity = EventSeverity(std::clamp<qint64>(q.i64(3), 0, int(EventSeverity::Critical)));
+    e.event.kind = EventKind(std::clamp<qint64>(q.i64(4), 0, int(EventKind::Info)));
+    e.event.machineId = q.text(5);
+    e.event.source = q.text(6);
+    e.event.text = q.text(7);
+    e.event.requiresAck = q.i64(8) != 0;
+    e.key = q.text(9);
+    return e;
+}
+} // namespace
+
 QVector<RecordedEvent> Recording::events(qint64 fromExclusive, qint64 toInclusive) const {
     QVector<RecordedEvent> out;
-    Query q(m_db, "SELECT t, time_ms, severity, kind, machine, source, text, requires_ack, key FROM events "
-                  "WHERE t > ? AND t <= ? ORDER BY id");
+    Query q(m_db, (QByteArray(kEventColumns) + "WHERE t > ? AND t <= ? ORDER BY id").constData());
     q.bind(1, fromExclusive).bind(2, toInclusive);
-    while (q.next()) {
-        RecordedEvent e;
-        e.t = q.i64(0);
-        e.event.timeMs = q.i64(1);
-        e.event.severity = EventSeverity(std::clamp<qint64>(q.i64(2), 0, int(EventSeverity::Critical)));
-        e.event.kind = EventKind(std::clamp<qint64>(q.i64(3), 0, int(EventKind::Info)));
-        e.event.machineId = q.text(4);
-        e.event.source = q.text(5);
-        e.event.text = q.text(6);
-        e.event.requiresAck = q.i64(7) != 0;
-        e.key = q.text(8);
-        out.push_back(std::move(e));
+    while (q.next())
+        out.push_back(eventRow(q));
+    return out;
+}
+
+QVector<RecordedEvent> Recording::eventsById(const QVector<qint64>& ids) const {
+    QVector<RecordedEvent> out(ids.size());
+    if (ids.isEmpty())
+        return out;
+    const auto [lo, hi] = std::minmax_element(ids.cbegin(), ids.cend());
+    if (*hi - *lo < 4 * qint64(ids.size())) {
+        // Most of a stretch of rows: read it in order, decoding only the rows asked for (a lookup per row
+        // costs more than stepping over the few others).
+        QHash<qint64, qsizetype> where;
+        where.reserve(ids.size());
+        for (qsizetype i = 0; i < ids.size(); ++i)
+            where.insert(ids[i], i);
+        Query q(m_db, (QByteArray(kEventColumns) + "WHERE id >= ? AND id <= ? ORDER BY id").constData());
+        q.bind(1, *lo).bind(2, *hi);
+        while (q.next())
+            if (const auto it = where.constFind(q.i64(0)); it != where.constEnd())
+                out[it.value()] = eventRow(q);
+        return out;
+    }
+    // A few rows spread over the file: one prepared statement, looked up by row id.
+    Query q(m_db, (QByteArray(kEventColumns) + "WHERE id = ?").constData());
+    if (!q.s)
+        return out;
+    for (qsizetype i = 0; i < ids.size(); ++i) {
+        sqlite3_reset(q.s);
+        q.bind(1, ids[i]);
+        if (q.next())
+            out[i] = eventRow(q);
     }
     return out;
 }

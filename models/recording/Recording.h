@@ -25,7 +25,8 @@ struct sqlite3;
 namespace ocu::recording {
 
 struct RecordedEvent {
-    qint64 t = 0; // when the console received it
+    qint64 id = 0; // the row in the file (events are numbered in the order they were recorded)
+    qint64 t = 0;  // when the console received it
     FleetEvent event;
     QString key; // alarmKey(event)
 };
@@ -88,6 +89,8 @@ public:
                         QStringList* removed) const;
 
     QVector<RecordedEvent> events(qint64 fromExclusive, qint64 toInclusive) const;
+    // The events of these rows (RecordedEvent::id), in the same order; a row not in the file gives id 0.
+    QVector<RecordedEvent> eventsById(const QVector<qint64>& ids) const;
     QVector<RecordedAck> acks(qint64 fromExclusive, qint64 toInclusive) const;
     QVector<RecordedCommand> commands(qint64 fromExclusive, qint64 toInclusive) const;
     QVector<RecordedLink> links(qint64 fromExclusive, qint64 toInclusive) const;

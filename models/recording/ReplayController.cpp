@@ -12,14 +12,16 @@ namespace ocu::recording {
 constexpr qint64 kContinueLimitMs = 20000;
 
 ReplayController::ReplayController(const Recording* recording, FleetModel* fleet, QObject* parent)
-    : QObject(parent), m_rec(recording), m_fleet(fleet), m_t(recording->startMs()) {
+    : QObject(parent), m_rec(recording), m_fleet(fleet), m_alarmCap(AlarmModel::kDefaultMaxEntries),
+      m_t(recording->startMs()) {
     fleet->setRefreshIntervalMs(0);
     fleet->setRemoveAfterMs(0); // removals are in the recording
     for (auto it = m_rec->staleAfterMs().cbegin(), end = m_rec->staleAfterMs().cend(); it != end; ++it)
         fleet->setStaleAfterMs(it.key(), it.value());
     fleet->setClock([this] { return m_t; });
     m_alarms = new AlarmModel(this);
-    m_alarms->setMaxEntries(0);
+    m_alarms->setMaxEntries(m_alarmCap);
+    m_history = std::make_unique<AlarmHistory>(m_rec, m_alarmCap);
     m_timer.setInterval(40);
     connect(&m_timer, &QTimer::timeout, this, &ReplayController::tick);
 }
@@ -52,17 +54,12 @@ void ReplayController::seek(qint64 t) {
         m_fleet->upsert(all);
         m_fleet->refresh();
     }
-    if (wasLoaded && t >= before) {
+    // A short step forward adds the few events since the current position; anything else restores the rows
+    // alive at t (at most the list's cap plus its open alarms), whatever the number of events before t.
+    if (wasLoaded && t >= before && t - before <= kContinueLimitMs)
         applyAlarms(before, t);
-    } else {
-        auto* fresh = new AlarmModel(this);
-        fresh->setMaxEntries(0);
-        AlarmModel* old = m_alarms;
-        m_alarms = fresh;
-        applyAlarms(std::numeric_limits<qint64>::min(), t);
-        emit alarmsReplaced(m_alarms);
-        old->deleteLater();
-    }
+    else
+        restoreAlarms(t, !wasLoaded || t < before);
     emit linksReset(m_rec->linksAt(t));
     updateSiteMap(t);
     updatePassCounts(t);
@@ -72,12 +69,40 @@ void ReplayController::seek(qint64 t) {
 }
 
 void ReplayController::applyAlarms(qint64 fromExclusive, qint64 toInclusive) {
-    for (const RecordedEvent& e : m_rec->events(fromExclusive, toInclusive))
-        m_alarms->add(e.event);
     // A repeat of an open alarm is one row (AlarmModel groups by key); an acknowledgement closes the open
-    // one.
-    for (const RecordedAck& a : m_rec->acks(fromExclusive, toInclusive))
-        m_alarms->acknowledgeKey(a.key, a.by, a.t);
+    // one. In the order the console took them, so that an alarm raised again after its acknowledgement is a
+    // new row, as it was live.
+    forEachInOrder(
+        m_rec->events(fromExclusive, toInclusive), m_rec->acks(fromExclusive, toInclusive),
+        [this](const RecordedEvent& e) { m_alarms->add(e.event); },
+        [this](const RecordedAck& a) { m_alarms->acknowledgeKey(a.key, a.by, a.t); });
+}
+
+void ReplayController::restoreAlarms(qint64 t, bool backwards) {
+    const QVector<AlarmModel::RestoredRow> rows = m_history->rowsAt(t);
+    if (!backwards) {
+        m_alarms->restore(rows);
+        return;
+    }
+    // Backwards: a new model, as alarms() promises (alarmsReplaced); whoever shows the list takes it.
+    auto* fresh = new AlarmModel(this);
+    fresh->setMaxEntries(m_alarmCap);
+    fresh->restore(rows);
+    AlarmModel* old = m_alarms;
+    m_alarms = fresh;
+    emit alarmsReplaced(m_alarms);
+    old->deleteLater();
+}
+
+void ReplayController::setMaxAlarmEntries(int n) {
+    n = std::max(0, n);
+    if (n == m_alarmCap)
+        return;
+    m_alarmCap = n;
+    m_alarms->setMaxEntries(n);
+    m_history = std::make_unique<AlarmHistory>(m_rec, n);
+    if (m_loaded)
+        restoreAlarms(m_t, true);
 }
 
 // Forward: the changes since the last time applied; backwards: rebuilt from the start (changes are rects of

@@ -2,9 +2,11 @@
 // Drives the console's models from a recording: the fleet model (machines, staleness by the
 // replay clock), an alarm model (events and acknowledgements as they were at the replay time), the links and
 // the site map. Play, pause, speed 0.1x-16x, reverse, step and seek; seeking anywhere rebuilds the picture
-// from the newest keyframe before the target plus the records after it (Recording::statesAtIdx), and
-// playing forward continues from the current picture without a new seek.
+// from the newest keyframe before the target plus the records after it (Recording::statesAtIdx) and the alarm
+// list from the rows alive at the target (AlarmHistory), and playing forward continues from the current
+// picture and list without a new seek.
 #include "models/FleetModel.h"
+#include "models/recording/AlarmHistory.h"
 #include "models/recording/Recording.h"
 
 #include <QElapsedTimer>
@@ -14,6 +16,7 @@
 #include <QTimer>
 
 #include <limits>
+#include <memory>
 
 namespace ocu {
 
@@ -32,6 +35,10 @@ public:
     FleetModel* fleet() const { return m_fleet; }
     // The alarm model of the current picture; replaced (alarmsReplaced) when seeking backwards.
     AlarmModel* alarms() const { return m_alarms; }
+    // The alarm list's cap, the live console's (AlarmModel::kDefaultMaxEntries) unless set: the replayed list
+    // drops the rows the live one dropped. 0 = none. Setting it rebuilds the list at the current position.
+    void setMaxAlarmEntries(int n);
+    int maxAlarmEntries() const { return m_alarmCap; }
     QHash<QString, MachineState> links() const;
     // The OSYRIS pass counts at the replay time (nullptr before the first recorded grid).
     const PassCountLayer* passCounts() const { return m_pass.layer(); }
@@ -82,12 +89,15 @@ private:
     void tick();
     void advanceTo(qint64 t);
     void applyAlarms(qint64 fromExclusive, qint64 toInclusive);
+    void restoreAlarms(qint64 t, bool backwards);
     void updateSiteMap(qint64 t);
     void updatePassCounts(qint64 t);
 
     const Recording* m_rec;
     QPointer<FleetModel> m_fleet;
     AlarmModel* m_alarms = nullptr;
+    int m_alarmCap;
+    std::unique_ptr<AlarmHistory> m_history;
     Recording::StateMap m_states;
     qint64 m_t = 0;
     bool m_loaded = false;

@@ -345,6 +345,176 @@ private slots:
         QCOMPARE(c.alarms()->unacknowledgedCount(), 1);
     }
 
+    // The replayed alarm list at any instant is the live one of that instant, whether the replay seeks there
+    // (the rows alive then, AlarmHistory) or plays forward from the start (every event added in turn): a live
+    // AlarmModel recorded as the console records it (eventAdded, alarmAcknowledged) for 20 minutes, alarms of
+    // a few keys raised again while open and after their acknowledgement, entries without acknowledgement,
+    // acknowledgements by key and by row, one of them before an alarm whose own clock is well ahead (not
+    // covered: AlarmModel's skew), and a cap small enough that the live list dropped rows many times.
+    void alarmListAtSeekEqualsPlayingForward_data() {
+        QTest::addColumn<int>("cap");
+        QTest::newRow("cap 40 (rows dropped)") << 40;
+        QTest::newRow("the console's cap") << AlarmModel::kDefaultMaxEntries;
+    }
+    void alarmListAtSeekEqualsPlayingForward() {
+        QFETCH(int, cap);
+        struct Seen {
+            FleetEvent event;
+            QString key, ackedBy;
+            bool acked = false;
+            qint64 ackedMs = 0;
+            int occurrences = 0;
+        };
+        auto picture = [](const AlarmModel& m) {
+            QVector<Seen> rows;
+            for (int i = 0; i < m.rowCount(); ++i)
+                rows.push_back({m.eventAt(i), m.keyAt(i), m.acknowledgedByAt(i), m.isAcknowledged(i),
+                                m.acknowledgedAtMs(i), m.occurrencesAt(i)});
+            return rows;
+        };
+        auto same = [](const QVector<Seen>& a, const QVector<Seen>& b, const QString& where) {
+            if (a.size() != b.size())
+                return QStringLiteral("%1: %2 rows, live %3").arg(where).arg(a.size()).arg(b.size());
+            for (qsizetype i = 0; i < a.size(); ++i) {
+                const Seen &x = a[i], &y = b[i];
+                if (x.key != y.key || x.event.timeMs != y.event.timeMs ||
+                    x.event.severity != y.event.severity || x.event.kind != y.event.kind ||
+                    x.event.machineId != y.event.machineId || x.event.source != y.event.source ||
+                    x.event.text != y.event.text || x.event.requiresAck != y.event.requiresAck ||
+                    x.acked != y.acked || x.ackedMs != y.ackedMs || x.ackedBy != y.ackedBy ||
+                    x.occurrences != y.occurrences)
+                    return QStringLiteral("%1: row %2 (%3) differs from the live one (%4)")
+                        .arg(where)
+                        .arg(i)
+                        .arg(x.key + QLatin1Char('/') + QString::number(x.occurrences) +
+                                 (x.acked ? QStringLiteral(" acked") : QString()),
+                             y.key + QLatin1Char('/') + QString::number(y.occurrences) +
+                                 (y.acked ? QStringLiteral(" acked") : QString()));
+            }
+            return QString();
+        };
+
+        qint64 clock = 1'700'000'000'000;
+        const qint64 start = clock;
+        Recorder rec;
+        RecorderOptions o;
+        o.path = m_dir.filePath(QStringLiteral("alarms-%1.sqlite").arg(cap));
+        o.flushIntervalMs = 5;
+        o.clock = [&clock] { return clock; };
+        QVERIFY(rec.start(o).isEmpty());
+        AlarmModel live;
+        live.setClock([&clock] { return clock; });
+        live.setOperatorName(QStringLiteral("op"));
+        live.setMaxEntries(cap);
+        connect(&live, &AlarmModel::eventAdded, &rec, &Recorder::recordEvent);
+        connect(&live, &AlarmModel::alarmAcknowledged, &rec, &Recorder::recordAck);
+
+        std::mt19937_64 rng(27);
+        auto pick = [&rng](int n) { return int(std::uniform_int_distribution<int>(0, n - 1)(rng)); };
+        QMap<qint64, QVector<Seen>> truth; // instant -> the live list after everything recorded up to it
+        for (int step = 0; step < 2400; ++step) { // 20 minutes, a step every 500 ms
+            clock = start + step * 500;
+            const int what = pick(11);
+            if (what < 5) {
+                // An alarm of one of a few keys (a repeat while open, a new row once acknowledged).
+                const QString machineId = QStringLiteral("iso23725:t%1").arg(pick(4));
+                FleetEvent ev = makeEvent(EventSeverity(1 + pick(3)),
+                                          pick(2) ? EventKind::Timeout : EventKind::HealthFault, machineId,
+                                          QStringLiteral("fault %1").arg(step), QStringLiteral("iso23725"));
+                ev.timeMs = clock;
+                live.add(ev);
+            } else if (what == 5) {
+                // A machine whose own clock is a minute ahead: the acknowledgements by key in the next minute
+                // do not cover it (AlarmModel::kAckSkewMs).
+                FleetEvent ev =
+                    makeEvent(EventSeverity::Alarm, EventKind::Timeout, QStringLiteral("iso23725:t4"),
+                              QStringLiteral("ahead"), QStringLiteral("iso23725"));
+                ev.timeMs = clock + 60'000;
+                live.add(ev);
+            } else if (what < 8) {
+                // An entry that needs no acknowledgement.
+                FleetEvent ev = makeEvent(EventSeverity::Info, EventKind::Info, {},
+                                          QStringLiteral("note %1").arg(pick(50)), QStringLiteral("gui"));
+                ev.timeMs = clock;
+                live.add(ev);
+            } else if (what == 8 && live.rowCount() > 0) {
+                // The operator acknowledges a row (perhaps one acknowledged already). Not the machine whose
+                // clock is ahead: the file keeps the acknowledgement by key, which the replay applies as
+                // acknowledgeKey does, with the skew.
+                const int row = pick(live.rowCount());
+                if (live.eventAt(row).machineId != QLatin1String("iso23725:t4"))
+                    live.acknowledge(row);
+            } else {
+                // An acknowledgement by key (another console's), perhaps of a key not open.
+                const QString machineId = QStringLiteral("iso23725:t%1").arg(pick(5));
+                FleetEvent ev =
+                    makeEvent(EventSeverity::Alarm, pick(2) ? EventKind::Timeout : EventKind::HealthFault,
+                              machineId, {}, QStringLiteral("iso23725"));
+                live.acknowledgeKey(alarmKey(ev), QStringLiteral("console-2"), clock);
+            }
+            truth.insert(clock, picture(live));
+            if (pick(4) == 0) {
+                // Two things in one millisecond: an event, then its acknowledgement (the file keeps no order
+                // across events and acknowledgements within a millisecond; the replay takes the events
+                // first).
+                ++clock;
+                FleetEvent ev =
+                    makeEvent(EventSeverity::Warning, EventKind::Timeout, QStringLiteral("iso23725:t9"),
+                              QStringLiteral("late"), QStringLiteral("iso23725"));
+                ev.timeMs = clock;
+                live.add(ev);
+                live.acknowledgeKey(alarmKey(ev), QStringLiteral("op"), clock);
+                truth.insert(clock, picture(live));
+            }
+            if (step % 50 == 0)
+                rec.flush();
+        }
+        rec.stop();
+        QCOMPARE(rec.stats().dropped, 0u);
+        if (cap < 1000)
+            QVERIFY2(live.rowCount() <= cap + 8, "the live list was capped"); // (its open alarms stay)
+
+        auto r = Recording::open(o.path);
+        QVERIFY(r);
+        // 200 random instants of the recording (and the ends), in a random order.
+        QVector<qint64> instants{start - 1, start, clock};
+        for (int i = 0; i < 200; ++i)
+            instants.push_back(start + std::uniform_int_distribution<qint64>(0, clock - start)(rng));
+        // The replay's times are the file's (up to its last commit).
+        auto liveAt = [&truth, &r](qint64 t) {
+            const auto it = truth.upperBound(std::clamp(t, r->startMs(), r->endMs()));
+            return it == truth.begin() ? QVector<Seen>() : std::prev(it).value();
+        };
+
+        FleetModel seekFleet;
+        ReplayController seeking(r.get(), &seekFleet);
+        seeking.setMaxAlarmEntries(cap);
+        QCOMPARE(seeking.maxAlarmEntries(), cap);
+        for (qint64 t : std::as_const(instants)) {
+            seeking.seek(t);
+            const QString diff =
+                same(picture(*seeking.alarms()), liveAt(t), QStringLiteral("seek to +%1 ms").arg(t - start));
+            QVERIFY2(diff.isEmpty(), qPrintable(diff));
+            QCOMPARE(seeking.alarms()->unacknowledgedCount(),
+                     int(std::count_if(liveAt(t).cbegin(), liveAt(t).cend(),
+                                       [](const Seen& s) { return !s.acked; })));
+        }
+
+        // Playing forward from the start, in steps short enough to add the events one after the other.
+        std::sort(instants.begin(), instants.end());
+        FleetModel playFleet;
+        ReplayController playing(r.get(), &playFleet);
+        playing.setMaxAlarmEntries(cap);
+        playing.seek(start);
+        for (qint64 t : std::as_const(instants)) {
+            while (playing.position() < std::min(t, r->endMs()))
+                playing.moveTo(std::min(t, playing.position() + 3000));
+            const QString diff =
+                same(picture(*playing.alarms()), liveAt(t), QStringLiteral("play to +%1 ms").arg(t - start));
+            QVERIFY2(diff.isEmpty(), qPrintable(diff));
+        }
+    }
+
     void playsAtTheChosenSpeedInBothDirections() {
         auto rec = Recording::open(m_file);
         QVERIFY(rec);
