@@ -17,6 +17,7 @@
 #include "protocols/jaus/Messages.h"
 #include "tests/protocols/jaus/foreign/ForeignJausVehicle.h"
 #include "tests/support/JausLoopback.h"
+#include "tests/support/StackWaits.h"
 
 using namespace ocu;
 using namespace ocu::jaus;
@@ -24,45 +25,14 @@ using foreign::ExtraComponent;
 using foreign::ForeignJausVehicle;
 using foreign::ServicesDialect;
 using foreign::VehicleOptions;
-using Clk = std::chrono::steady_clock;
+using stacktest::Outcomes;
+using stacktest::waitFor;
 
 namespace {
-
-constexpr double kWait = 15; // generous: a loaded machine; every wait ends when its condition holds
-
-template <class Pred> bool waitFor(Pred p, double seconds = kWait) {
-    const auto end =
-        Clk::now() + std::chrono::duration_cast<Clk::duration>(std::chrono::duration<double>(seconds));
-    while (Clk::now() < end) {
-        if (p())
-            return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return p();
-}
 
 struct Quiet : JausListener {
     void onSubsystemChanged(const SubsystemSnapshot&) override {}
     void onEvent(const JausEvent&) override {}
-};
-
-struct Outcomes {
-    std::mutex mutex;
-    std::optional<std::vector<TargetOutcome>> value;
-    OutcomeCallback callback() {
-        return [this](std::vector<TargetOutcome> v) {
-            std::lock_guard lock(mutex);
-            value = std::move(v);
-        };
-    }
-    std::optional<std::vector<TargetOutcome>> get() {
-        waitFor([&] {
-            std::lock_guard lock(mutex);
-            return value.has_value();
-        });
-        std::lock_guard lock(mutex);
-        return value;
-    }
 };
 
 VehicleOptions publicStack(ServicesDialect dialect) {

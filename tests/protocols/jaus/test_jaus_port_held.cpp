@@ -26,29 +26,18 @@
 #include "protocols/jaus/Messages.h"
 #include "sim/jaus/JausDemo.h"
 #include "tests/support/JausLoopback.h"
+#include "tests/support/StackWaits.h"
 
 using namespace ocu;
 using namespace ocu::jaus;
 namespace asio = boost::asio;
 using asio::ip::udp;
-using Clk = std::chrono::steady_clock;
+using stacktest::waitFor;
 
 namespace {
 
 constexpr std::uint16_t kVehicle = 126;
 constexpr std::uint16_t kConsole = 200;
-
-// Generous: on an idle machine every condition below holds within a fraction of this.
-template <class Pred> bool waitFor(Pred p, double seconds = 20) {
-    const auto end =
-        Clk::now() + std::chrono::duration_cast<Clk::duration>(std::chrono::duration<double>(seconds));
-    while (Clk::now() < end) {
-        if (p())
-            return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return p();
-}
 
 // A node manager's socket: the JAUS port bound to the wildcard address WITHOUT SO_REUSEADDR, in the JAUS
 // group on loopback. The wildcard is deliberate (not 127.0.0.1): that is how node managers bind, and only a
