@@ -2,6 +2,7 @@
 // Test support: JAUS UDP settings on loopback only (DEVELOPERS.md: bind 127.0.0.1, an ephemeral unicast
 // port, the multicast group sent on 127.0.0.1 with TTL 0), for the console and the tests' own peers.
 #include "protocols/jaus/JausConfig.h"
+#include "protocols/jaus/JausTypes.h"
 
 #include <cstdint>
 
@@ -17,5 +18,11 @@ inline ocu::jaus::TransportSettings loopback(std::uint16_t multicastPort) {
     t.interfaceAddress = "127.0.0.1";
     return t;
 }
+
+// A console's listener for tests that read the stack's state through snapshot() only.
+struct QuietListener : ocu::jaus::JausListener {
+    void onSubsystemChanged(const ocu::jaus::SubsystemSnapshot&) override {}
+    void onEvent(const ocu::jaus::JausEvent&) override {}
+};
 
 } // namespace jaustest

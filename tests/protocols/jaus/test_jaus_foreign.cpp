@@ -30,10 +30,7 @@ using stacktest::waitFor;
 
 namespace {
 
-struct Quiet : JausListener {
-    void onSubsystemChanged(const SubsystemSnapshot&) override {}
-    void onEvent(const JausEvent&) override {}
-};
+using Quiet = jaustest::QuietListener;
 
 std::uint16_t groupPort() {
     static const std::uint16_t port = findFreeUdpPort(); // one group per test process

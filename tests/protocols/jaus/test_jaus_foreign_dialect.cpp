@@ -30,10 +30,7 @@ using stacktest::waitFor;
 
 namespace {
 
-struct Quiet : JausListener {
-    void onSubsystemChanged(const SubsystemSnapshot&) override {}
-    void onEvent(const JausEvent&) override {}
-};
+using Quiet = jaustest::QuietListener;
 
 VehicleOptions publicStack(ServicesDialect dialect) {
     VehicleOptions o;
