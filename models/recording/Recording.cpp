@@ -363,21 +363,29 @@ QVector<RecordedCommand> Recording::commands(qint64 fromExclusive, qint64 toIncl
     return out;
 }
 
+namespace {
+
+// One row of SELECT t, protocol, link, state, age_ms, detail FROM links.
+RecordedLink linkRow(Query& q) {
+    RecordedLink l;
+    l.t = q.i64(0);
+    l.protocol = q.text(1);
+    l.link = q.text(2);
+    l.state = LinkState(std::clamp<qint64>(q.i64(3), 0, int(LinkState::Down)));
+    l.dataAgeMs = q.i64(4);
+    l.detail = q.text(5);
+    return l;
+}
+
+} // namespace
+
 QVector<RecordedLink> Recording::links(qint64 fromExclusive, qint64 toInclusive) const {
     QVector<RecordedLink> out;
     Query q(m_db,
             "SELECT t, protocol, link, state, age_ms, detail FROM links WHERE t > ? AND t <= ? ORDER BY id");
     q.bind(1, fromExclusive).bind(2, toInclusive);
-    while (q.next()) {
-        RecordedLink l;
-        l.t = q.i64(0);
-        l.protocol = q.text(1);
-        l.link = q.text(2);
-        l.state = LinkState(std::clamp<qint64>(q.i64(3), 0, int(LinkState::Down)));
-        l.dataAgeMs = q.i64(4);
-        l.detail = q.text(5);
-        out.push_back(std::move(l));
-    }
+    while (q.next())
+        out.push_back(linkRow(q));
     return out;
 }
 
@@ -439,16 +447,8 @@ QVector<RecordedLink> Recording::linksAt(qint64 t) const {
                   "(SELECT id FROM links WHERE protocol IS k.protocol AND link IS k.link AND t <= ?1 "
                   "ORDER BY t DESC, id DESC LIMIT 1) ORDER BY l.protocol, l.link");
     q.bind(1, t);
-    while (q.next()) {
-        RecordedLink l;
-        l.t = q.i64(0);
-        l.protocol = q.text(1);
-        l.link = q.text(2);
-        l.state = LinkState(std::clamp<qint64>(q.i64(3), 0, int(LinkState::Down)));
-        l.dataAgeMs = q.i64(4);
-        l.detail = q.text(5);
-        out.push_back(std::move(l));
-    }
+    while (q.next())
+        out.push_back(linkRow(q));
     return out;
 }
 
