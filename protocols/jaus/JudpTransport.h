@@ -106,6 +106,11 @@ private:
     struct TcpConn;
     using TcpPtr = std::shared_ptr<TcpConn>;
 
+    // open(), in steps: the unicast socket (its problem in broadcast mode, where it receives the broadcasts),
+    // the group socket (its problem, when there is none) and the JTCP listener (throws).
+    std::optional<GroupSocketProblem> openUnicastSocket(std::uint16_t& unicastHeld);
+    std::optional<GroupSocketProblem> openGroupSocket(std::uint16_t unicastHeld);
+    void openJtcpServer();
     void startReceive(Receiver& r);
     void onDatagram(ByteSpan data, const Endpoint& from);
     std::optional<Endpoint> resolve(const JausId& dst) const;

@@ -33,24 +33,37 @@ double toLine(double v, double cell) {
     return std::abs(f) * cell;
 }
 
-} // namespace
+// The camera's basis and projection for one frame.
+struct View {
+    int w = 0, h = 0;
+    V3 fwd0, right, up, fwd, eye; // fwd0: the heading without tilt
+    double fpx = 0;               // focal length in pixels
+    double cx = 0, cy = 0;        // image centre
+};
 
-void renderCameraView(const I420Frame& f, const CameraPose& c, const std::vector<SceneBox>& others,
-                      std::uint64_t captureUnixUs) {
-    const int w = f.width, h = f.height;
-    if (w < 2 || h < 2 || !f.y || !f.u || !f.v)
-        return;
+View viewOf(const I420Frame& f, const CameraPose& c) {
+    View v;
+    v.w = f.width;
+    v.h = f.height;
     // Camera basis: forward (heading + tilt), right, up.
     const double psi = c.yaw + c.yawOffset + c.pan;
-    const V3 fwd0{std::cos(psi), std::sin(psi), 0};
-    const V3 right{-std::sin(psi), std::cos(psi), 0};
+    v.fwd0 = V3{std::cos(psi), std::sin(psi), 0};
+    v.right = V3{-std::sin(psi), std::cos(psi), 0};
     const V3 up0{0, 0, 1};
-    const V3 fwd = std::cos(c.tilt) * fwd0 + std::sin(c.tilt) * up0;
-    const V3 up = -std::sin(c.tilt) * fwd0 + std::cos(c.tilt) * up0;
-    const V3 eye{c.x + c.forwardOffset * std::cos(c.yaw), c.y + c.forwardOffset * std::sin(c.yaw), c.height};
-    const double fpx = (w / 2.0) / std::tan(std::clamp(c.horizontalFov, 0.1, 3.0) / 2);
-    const double cx = w / 2.0, cy = h / 2.0;
+    v.fwd = std::cos(c.tilt) * v.fwd0 + std::sin(c.tilt) * up0;
+    v.up = -std::sin(c.tilt) * v.fwd0 + std::cos(c.tilt) * up0;
+    v.eye = V3{c.x + c.forwardOffset * std::cos(c.yaw), c.y + c.forwardOffset * std::sin(c.yaw), c.height};
+    v.fpx = (v.w / 2.0) / std::tan(std::clamp(c.horizontalFov, 0.1, 3.0) / 2);
+    v.cx = v.w / 2.0;
+    v.cy = v.h / 2.0;
+    return v;
+}
 
+// Sky and the ground grid, luma and chroma.
+void drawGround(const I420Frame& f, const CameraPose& c, const View& v) {
+    const int w = v.w, h = v.h;
+    const V3 fwd = v.fwd, right = v.right, up = v.up, eye = v.eye, fwd0 = v.fwd0;
+    const double fpx = v.fpx, cx = v.cx, cy = v.cy;
     // Per row the ray's vertical component is constant (no roll): sky or ground, and the ground hit point
     // moves linearly along the row.
     std::vector<std::uint8_t> rowChroma(std::size_t(h / 2 + 1), 0); // 0 sky, 1 ground
@@ -102,8 +115,13 @@ void renderCameraView(const I420Frame& f, const CameraPose& c, const std::vector
         std::memset(f.u + std::ptrdiff_t(py) * f.strideU, ground ? 112 : 150, std::size_t(w / 2));
         std::memset(f.v + std::ptrdiff_t(py) * f.strideV, ground ? 130 : 112, std::size_t(w / 2));
     }
+}
 
-    // Other machines: boxes, far ones first, drawn as their projected bounding rectangles with an outline.
+// Other machines: boxes, far ones first, drawn as their projected bounding rectangles with an outline.
+void drawBoxes(const I420Frame& f, const View& v, const std::vector<SceneBox>& others) {
+    const int w = v.w, h = v.h;
+    const V3 fwd = v.fwd, right = v.right, up = v.up, eye = v.eye;
+    const double fpx = v.fpx, cx = v.cx, cy = v.cy;
     struct Proj {
         double depth;
         int x0, y0, x1, y1;
@@ -150,8 +168,12 @@ void renderCameraView(const I420Frame& f, const CameraPose& c, const std::vector
                         std::size_t(b.x1 / 2 - b.x0 / 2 + 1));
         }
     }
+}
 
-    // Centre mark (where the camera points).
+// Centre mark (where the camera points).
+void drawCentreMark(const I420Frame& f, const View& v) {
+    const int w = v.w, h = v.h;
+    const double cx = v.cx, cy = v.cy;
     for (int i = -8; i <= 8; ++i) {
         const int x = int(cx) + i, y = int(cy) + i;
         if (x >= 0 && x < w)
@@ -159,8 +181,11 @@ void renderCameraView(const I420Frame& f, const CameraPose& c, const std::vector
         if (y >= 0 && y < h)
             f.y[std::ptrdiff_t(y) * f.strideY + int(cx)] = 235;
     }
+}
 
-    // The capture time, on neutral chroma so colour conversion leaves the cells' luma intact.
+// The capture time, on neutral chroma so colour conversion leaves the cells' luma intact.
+void stampCaptureTime(const I420Frame& f, std::uint64_t captureUnixUs) {
+    const int w = f.width, h = f.height;
     if (timecode::stamp(f.y, w, h, f.strideY, captureUnixUs)) {
         const int rows = 2 * timecode::cellSize(w);
         for (int py = 0; py < (rows + 1) / 2 && py < h / 2; ++py) {
@@ -168,6 +193,19 @@ void renderCameraView(const I420Frame& f, const CameraPose& c, const std::vector
             std::memset(f.v + std::ptrdiff_t(py) * f.strideV, 128, std::size_t(w / 2));
         }
     }
+}
+
+} // namespace
+
+void renderCameraView(const I420Frame& f, const CameraPose& c, const std::vector<SceneBox>& others,
+                      std::uint64_t captureUnixUs) {
+    if (f.width < 2 || f.height < 2 || !f.y || !f.u || !f.v)
+        return;
+    const View view = viewOf(f, c);
+    drawGround(f, c, view);
+    drawBoxes(f, view, others);
+    drawCentreMark(f, view);
+    stampCaptureTime(f, captureUnixUs);
 }
 
 } // namespace ocu::sim

@@ -4,7 +4,9 @@
 // Component 3.1 (AccessControl, Management, PrimitiveDriver, VelocityStateDriver, PlatformSpecifications),
 // pose/velocity sensor component 3.2 (GlobalPoseSensor, LocalPoseSensor, VelocityStateSensor), events on
 // every component, and a kinematic model. Driven by handle()/tick() with an ocu::Clock, so tests can use a
-// FakeClock.
+// FakeClock. Messages reach the services through a table keyed by message ID (UgvMessageTable); each service
+// registers its messages from its own file: UgvDiscovery.cpp, UgvEvents.cpp, UgvAccessControl.cpp,
+// UgvManagement.cpp, UgvDrive.cpp, UgvPoseSensors.cpp.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -17,6 +19,7 @@
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausOutput.h"
 #include "protocols/jaus/Messages.h"
+#include "sim/jaus/UgvMessageTable.h"
 #include "sim/jaus/UgvVideo.h"
 
 namespace ocu::sim {
@@ -112,17 +115,46 @@ private:
 
     void send(const jaus::JausId& from, const jaus::JausId& to, const Bytes& payload,
               jaus::Priority prio = jaus::Priority::Standard);
-    bool serves(const jaus::JausId& comp, std::uint16_t id) const;
+    // A malformed message: counted by reason and logged.
+    void rejectMalformed(const std::string& error);
+    bool serves(const jaus::JausId& comp, std::uint16_t id) const { return m_table.serves(comp, id); }
+    std::optional<Bytes> report(const jaus::JausId& comp, ByteSpan query) {
+        return m_table.report(comp, query);
+    }
+
+    // The services: each registers its messages in m_table.
+    void registerDiscovery();     // Discovery, Liveness, HealthMonitor (platform manager)
+    void registerEvents();        // Events (every component)
+    void registerAccessControl(); // AccessControl (Core Mobility Component)
+    void registerManagement();    // Management (Core Mobility Component)
+    void registerDriving();       // PrimitiveDriver, VelocityStateDriver (Core Mobility Component)
+    void registerPoseSensors();   // pose and velocity sensors, PlatformSpecifications
+
+    // Discovery
     std::vector<jaus::ServiceRecord> servicesOf(const jaus::JausId& comp) const;
-    void handleAt(const jaus::JausId& comp, const jaus::JausId& src, const jaus::JausId& dst,
-                  std::uint16_t id, ByteSpan p);
-    std::optional<Bytes> report(const jaus::JausId& comp, ByteSpan query);
+    void answerIdentification(const jaus::JausId& comp, const jaus::JausId& src, ByteSpan p);
+    void answerServices(const jaus::JausId& comp, const jaus::JausId& src, std::uint16_t id);
+    // Events
+    void createEvent(const jaus::JausId& comp, const jaus::JausId& src, const jaus::CreateEvent& ce);
+    void updateEvent(const jaus::JausId& comp, const jaus::JausId& src, ByteSpan p);
+    void cancelEvent(const jaus::JausId& comp, const jaus::JausId& src, ByteSpan p);
+    void tickEvents(TimePoint now);
+    // Access control and management
     void accessRequest(const jaus::JausId& src, std::uint8_t authority);
     void releaseController(jaus::RejectControlCode code);
     bool isController(const jaus::JausId& src) const { return m_s.controller == src && src.subsystem != 0; }
+    void tickAccessTimeout(TimePoint now);
+    void managementCommand(const jaus::JausId& src, std::uint16_t id);
+    // Driving
+    void setWrenchEffort(const jaus::JausId& src, ByteSpan p);
+    void setVelocityCommand(const jaus::JausId& src, ByteSpan p);
     void driveMessage(TimePoint now);
     void physics(TimePoint now);
-    void createEvent(const jaus::JausId& comp, const jaus::JausId& src, const jaus::CreateEvent& ce);
+    // Pose sensors and platform specifications
+    Bytes reportGlobalPose(ByteSpan query) const;
+    Bytes reportLocalPose(ByteSpan query) const;
+    Bytes reportVelocityState(ByteSpan query) const;
+    Bytes reportPlatformSpecifications() const;
 
     SimulatedUgvConfig m_cfg;
     jaus::JausOutput& m_out;
@@ -143,6 +175,7 @@ private:
     std::map<std::uint8_t, EventSub> m_events;
     std::uint8_t m_nextEventId = 1;
     UgvVideo m_video;
+    UgvMessageTable m_table;
 };
 
 } // namespace ocu::sim

@@ -31,6 +31,115 @@ std::uint8_t frameSizeOf(int w, int h) {
         return kFrameSize1920x1080;
     return 0xFF; // not an AS6060 frame size: the field is left out
 }
+
+// The presence vector asked for `sensor` (a query for sensor 0 asks for every sensor); nullopt: not asked.
+std::optional<std::uint16_t> wanted(std::uint16_t sensor, const QuerySensors& q) {
+    for (const SensorQuery& s : q.sensors)
+        if (s.sensorId == 0 || s.sensorId == sensor)
+            return s.presence;
+    return std::nullopt;
+}
+
+ReportVisualSensorCapabilities visualCapabilities(const std::vector<SimCameraConfig>& cameras,
+                                                  const QuerySensors& q) {
+    ReportVisualSensorCapabilities r;
+    for (const SimCameraConfig& c : cameras)
+        if (auto pv = wanted(c.sensorId, q)) {
+            VisualSensorCapabilities v;
+            v.sensorId = c.sensorId;
+            v.name = c.name;
+            if (*pv & 0x01)
+                v.supportedStates = 0x01; // Active only
+            if (*pv & 0x10)
+                v.imagingModes = 0x01; // Color
+            r.sensors.push_back(v);
+        }
+    return r;
+}
+
+ReportVisualSensorConfiguration visualConfiguration(const std::vector<SimCameraConfig>& cameras,
+                                                    const QuerySensors& q) {
+    ReportVisualSensorConfiguration r;
+    for (const SimCameraConfig& c : cameras)
+        if (auto pv = wanted(c.sensorId, q)) {
+            VisualSensorConfiguration v;
+            v.sensorId = c.sensorId;
+            if (*pv & 0x01)
+                v.sensorState = std::uint8_t(SensorState::Active);
+            if (*pv & 0x10)
+                v.horizontalFov = c.horizontalFov;
+            if (*pv & 0x20)
+                v.verticalFov = 2 * std::atan(std::tan(c.horizontalFov / 2) * c.height_px / c.width);
+            if (*pv & 0x200)
+                v.imagingMode = 0;
+            r.sensors.push_back(v);
+        }
+    return r;
+}
+
+ReportDigitalVideoCapabilities videoCapabilities(const std::vector<SimCameraConfig>& cameras,
+                                                 const QuerySensors& q) {
+    ReportDigitalVideoCapabilities r;
+    for (const SimCameraConfig& c : cameras)
+        if (auto pv = wanted(c.sensorId, q)) {
+            DigitalVideoCapabilities v;
+            v.sensorId = c.sensorId;
+            if (*pv & 0x02)
+                v.maxBitRate = 4000;
+            if (*pv & 0x08)
+                v.maxFrameRate = 30;
+            if (*pv & 0x10)
+                v.supportedFrameSizes = (1u << kFrameSize640x480) | (1u << kFrameSize1280x720);
+            if (*pv & 0x20)
+                v.supportedFormats = 1u << kFormatH264;
+            r.sensors.push_back(v);
+        }
+    return r;
+}
+
+ReportDigitalVideoConfiguration videoConfiguration(const std::vector<SimCameraConfig>& cameras,
+                                                   const QuerySensors& q) {
+    ReportDigitalVideoConfiguration r;
+    for (const SimCameraConfig& c : cameras)
+        if (auto pv = wanted(c.sensorId, q)) {
+            DigitalVideoConfiguration v;
+            v.sensorId = c.sensorId;
+            if (*pv & 0x04)
+                v.frameRate = std::uint8_t(c.fps);
+            if (const auto fs = frameSizeOf(c.width, c.height_px); (*pv & 0x08) && fs != 0xFF)
+                v.frameSize = fs;
+            if (*pv & 0x10)
+                v.format = kFormatH264;
+            r.sensors.push_back(v);
+        }
+    return r;
+}
+
+ReportSensorGeometricProperties geometry(const std::vector<SimCameraConfig>& cameras,
+                                         const QuerySensorGeometricProperties& q, const JausId& panTiltUnit) {
+    ReportSensorGeometricProperties r;
+    for (const SimCameraConfig& c : cameras) {
+        if (std::none_of(q.sensorIds.begin(), q.sensorIds.end(),
+                         [&](std::uint16_t s) { return s == 0 || s == c.sensorId; }))
+            continue;
+        SensorGeometry g;
+        g.sensorId = c.sensorId;
+        if (c.panTilt) {
+            g.kind = 2; // on the pan-tilt's tilt joint (V1.JAUS-57)
+            g.manipulator = panTiltUnit;
+            g.joint = 2;
+            g.z = 0.1;
+        } else {
+            g.kind = 1;
+            g.x = c.forwardOffset;
+            g.z = c.height;
+            g.qd = std::cos(c.yawOffset / 2);
+            g.qc = std::sin(c.yawOffset / 2);
+        }
+        r.sensors.push_back(g);
+    }
+    return r;
+}
 } // namespace
 
 UgvVideo::UgvVideo(std::uint16_t subsystem, std::vector<SimCameraConfig> cameras, Send send,
@@ -188,124 +297,27 @@ bool UgvVideo::handle(const JausId& to, const JausId& src, std::uint16_t id, Byt
 }
 
 bool UgvVideo::handleCamera(const JausId& src, std::uint16_t id, ByteSpan p) {
-    auto wanted = [&](std::uint16_t sensor, const QuerySensors& q) -> std::optional<std::uint16_t> {
-        for (const SensorQuery& s : q.sensors)
-            if (s.sensorId == 0 || s.sensorId == sensor)
-                return s.presence;
-        return std::nullopt;
-    };
     switch (id) {
-    case msg::QueryVisualSensorCapabilities: {
-        auto q = decodeSensorQuery(p, id);
-        if (!q)
-            return true;
-        ReportVisualSensorCapabilities r;
-        for (const SimCameraConfig& c : m_cameras)
-            if (auto pv = wanted(c.sensorId, *q)) {
-                VisualSensorCapabilities v;
-                v.sensorId = c.sensorId;
-                v.name = c.name;
-                if (*pv & 0x01)
-                    v.supportedStates = 0x01; // Active only
-                if (*pv & 0x10)
-                    v.imagingModes = 0x01; // Color
-                r.sensors.push_back(v);
-            }
-        send(camera(), src, encode(r));
+    case msg::QueryVisualSensorCapabilities:
+        if (auto q = decodeSensorQuery(p, id))
+            send(camera(), src, encode(visualCapabilities(m_cameras, *q)));
         return true;
-    }
-    case msg::QueryVisualSensorConfiguration: {
-        auto q = decodeSensorQuery(p, id);
-        if (!q)
-            return true;
-        ReportVisualSensorConfiguration r;
-        for (const SimCameraConfig& c : m_cameras)
-            if (auto pv = wanted(c.sensorId, *q)) {
-                VisualSensorConfiguration v;
-                v.sensorId = c.sensorId;
-                if (*pv & 0x01)
-                    v.sensorState = std::uint8_t(SensorState::Active);
-                if (*pv & 0x10)
-                    v.horizontalFov = c.horizontalFov;
-                if (*pv & 0x20)
-                    v.verticalFov = 2 * std::atan(std::tan(c.horizontalFov / 2) * c.height_px / c.width);
-                if (*pv & 0x200)
-                    v.imagingMode = 0;
-                r.sensors.push_back(v);
-            }
-        send(camera(), src, encode(r));
+    case msg::QueryVisualSensorConfiguration:
+        if (auto q = decodeSensorQuery(p, id))
+            send(camera(), src, encode(visualConfiguration(m_cameras, *q)));
         return true;
-    }
-    case msg::QueryDigitalVideoSensorCapabilities: {
-        auto q = decodeSensorQuery(p, id);
-        if (!q)
-            return true;
-        ReportDigitalVideoCapabilities r;
-        for (const SimCameraConfig& c : m_cameras)
-            if (auto pv = wanted(c.sensorId, *q)) {
-                DigitalVideoCapabilities v;
-                v.sensorId = c.sensorId;
-                if (*pv & 0x02)
-                    v.maxBitRate = 4000;
-                if (*pv & 0x08)
-                    v.maxFrameRate = 30;
-                if (*pv & 0x10)
-                    v.supportedFrameSizes = (1u << kFrameSize640x480) | (1u << kFrameSize1280x720);
-                if (*pv & 0x20)
-                    v.supportedFormats = 1u << kFormatH264;
-                r.sensors.push_back(v);
-            }
-        send(camera(), src, encode(r));
+    case msg::QueryDigitalVideoSensorCapabilities:
+        if (auto q = decodeSensorQuery(p, id))
+            send(camera(), src, encode(videoCapabilities(m_cameras, *q)));
         return true;
-    }
-    case msg::QueryDigitalVideoSensorConfiguration: {
-        auto q = decodeSensorQuery(p, id);
-        if (!q)
-            return true;
-        ReportDigitalVideoConfiguration r;
-        for (const SimCameraConfig& c : m_cameras)
-            if (auto pv = wanted(c.sensorId, *q)) {
-                DigitalVideoConfiguration v;
-                v.sensorId = c.sensorId;
-                if (*pv & 0x04)
-                    v.frameRate = std::uint8_t(c.fps);
-                if (const auto fs = frameSizeOf(c.width, c.height_px); (*pv & 0x08) && fs != 0xFF)
-                    v.frameSize = fs;
-                if (*pv & 0x10)
-                    v.format = kFormatH264;
-                r.sensors.push_back(v);
-            }
-        send(camera(), src, encode(r));
+    case msg::QueryDigitalVideoSensorConfiguration:
+        if (auto q = decodeSensorQuery(p, id))
+            send(camera(), src, encode(videoConfiguration(m_cameras, *q)));
         return true;
-    }
-    case msg::QuerySensorGeometricProperties: {
-        auto q = decodeQuerySensorGeometricProperties(p);
-        if (!q)
-            return true;
-        ReportSensorGeometricProperties r;
-        for (const SimCameraConfig& c : m_cameras) {
-            if (std::none_of(q->sensorIds.begin(), q->sensorIds.end(),
-                             [&](std::uint16_t s) { return s == 0 || s == c.sensorId; }))
-                continue;
-            SensorGeometry g;
-            g.sensorId = c.sensorId;
-            if (c.panTilt) {
-                g.kind = 2; // on the pan-tilt's tilt joint (V1.JAUS-57)
-                g.manipulator = panTiltUnit();
-                g.joint = 2;
-                g.z = 0.1;
-            } else {
-                g.kind = 1;
-                g.x = c.forwardOffset;
-                g.z = c.height;
-                g.qd = std::cos(c.yawOffset / 2);
-                g.qc = std::sin(c.yawOffset / 2);
-            }
-            r.sensors.push_back(g);
-        }
-        send(camera(), src, encode(r));
+    case msg::QuerySensorGeometricProperties:
+        if (auto q = decodeQuerySensorGeometricProperties(p))
+            send(camera(), src, encode(geometry(m_cameras, *q, panTiltUnit())));
         return true;
-    }
     case msg::ControlDigitalVideoSensorStream:
         // RTSP controls the stream: the message may be ignored (AEP-4818 §9.1.3).
         m_counters.add("rx.ignored.stream_control");

@@ -46,7 +46,7 @@ void AccessControlClient::registerMessages(MessageTable& table) {
 
 bool AccessControlClient::wantsControl(std::uint16_t ss) const {
     auto it = m_state.find(ss);
-    return it != m_state.end() && it->second.wantControl;
+    return it != m_state.end() && it->second.wants();
 }
 
 double AccessControlClient::timeoutS(const RemoteSubsystem& r) const {
@@ -66,10 +66,8 @@ bool AccessControlClient::requestControl(std::uint16_t ss) {
     if (!m_ctx.send(r->controlTarget(), encodeU8(msg::RequestControl, cfg.authority)))
         return m_ctx.sendFailed(ss, "RequestControl");
     State& s = m_state[ss];
-    s.wantControl = true;
-    s.releasing = false;
-    s.classifyLoss = false;
-    s.rejectPending = false;
+    s.phase = Phase::Requesting;
+    s.lossCheckUntil.reset();
     s.lastRequest = m_ctx.now();
     if (!s.timeoutQueried) {
         s.timeoutQueried = true;
@@ -84,11 +82,9 @@ bool AccessControlClient::releaseControl(std::uint16_t ss) {
         return m_ctx.refuse(ss, m_ctx.noTarget(ss, "AccessControl"));
     m_drive.beforeRelease(*r);
     State& s = m_state[ss];
-    s.wantControl = false;
-    s.releasing = r->snap.controlledByUs;
-    if (!s.releasing && r->snap.access == AccessState::ControlAccepted)
+    s.phase = r->snap.controlledByUs ? Phase::Releasing : Phase::Idle;
+    if (s.phase != Phase::Releasing && r->snap.access == AccessState::ControlAccepted)
         r->snap.access = AccessState::ControlReleased;
-    s.rejectPending = false;
     s.releaseDeadline = m_ctx.now() + secondsD(timeoutS(*r));
     s.lastReleaseSent = m_ctx.now();
     if (!m_ctx.send(r->controlTarget(), encodeEmpty(msg::ReleaseControl)))
@@ -113,8 +109,9 @@ void AccessControlClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteS
     const std::uint8_t authority = m_ctx.config().authority;
     s.lastConfirm = m_ctx.now();
     if (*m == std::uint8_t(ConfirmControlCode::Accepted)) {
-        s.rejectPending = false; // Reject-then-Confirm to the same request: accepted
-        if (!s.wantControl) {
+        if (s.phase == Phase::RefusalPending)
+            s.phase = Phase::Requesting; // Reject-then-Confirm to the same request: accepted
+        if (!s.wants()) {
             // A late accept after we gave up: hand it back.
             m_ctx.send(src, encodeEmpty(msg::ReleaseControl));
             return;
@@ -132,8 +129,7 @@ void AccessControlClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteS
         return;
     }
     const bool had = r.snap.controlledByUs;
-    s.wantControl = false;
-    s.rejectPending = false;
+    s.giveUp();
     r.snap.controlledByUs = false;
     dropSelfAsController(r, m_ctx.self());
     m_drive.endSession(r, false);
@@ -157,8 +153,8 @@ void AccessControlClient::onReject(RemoteSubsystem& r, const JausId& src, ByteSp
     if (!m)
         return m_ctx.rejected(src, m.error());
     State& s = m_state[r.id()];
-    if (s.releasing) {
-        s.releasing = false;
+    if (s.phase == Phase::Releasing) {
+        s.phase = Phase::Idle;
         r.snap.controlledByUs = false;
         dropSelfAsController(r, m_ctx.self());
         r.snap.access = AccessState::ControlReleased;
@@ -167,10 +163,10 @@ void AccessControlClient::onReject(RemoteSubsystem& r, const JausId& src, ByteSp
         m_ctx.changed(r);
         return;
     }
-    if (!r.snap.controlledByUs && s.wantControl) {
+    if (!r.snap.controlledByUs && s.wants()) {
         // Not final yet: a ConfirmControl(accepted) to the same request may follow (see kRejectGrace).
-        if (!s.rejectPending) {
-            s.rejectPending = true;
+        if (s.phase != Phase::RefusalPending) {
+            s.phase = Phase::RefusalPending;
             s.rejectDeadline = m_ctx.now() + kRejectGrace;
             s.rejectCode = *m;
         }
@@ -189,36 +185,35 @@ void AccessControlClient::onReport(RemoteSubsystem& r, const JausId& src, ByteSp
     r.snap.controllerAuthority = m->authority;
     const bool ours = m->controller == m_ctx.self();
     if (ours && !r.snap.controlledByUs) {
-        if (s.wantControl) {
+        if (s.wants()) {
             // The vehicle lists us as its controller: accepted, whatever answers were lost on the way.
-            s.rejectPending = false;
+            s.phase = Phase::Requesting;
             s.lastConfirm = m_ctx.now();
             r.snap.controlledByUs = true;
             r.snap.access = AccessState::ControlAccepted;
             m_ctx.notify(Severity::Info, EventKind::ControlAccepted, r.id(),
                          "control of " + r.snap.callSign + " accepted (reported by the vehicle)");
-        } else if (s.releasing || m_ctx.now() - s.lastReleaseSent < std::chrono::seconds(2)) {
+        } else if (s.phase == Phase::Releasing || m_ctx.now() - s.lastReleaseSent < std::chrono::seconds(2)) {
             // Our release is on its way, or this report left the vehicle before it arrived.
             dropSelfAsController(r, m_ctx.self());
         } else {
             // We hold control we do not want (a late accept, a lost release): say so and hand it back.
             r.snap.controlledByUs = true;
             r.snap.access = AccessState::ControlAccepted;
-            s.releasing = true;
+            s.phase = Phase::Releasing;
             s.releaseDeadline = m_ctx.now() + secondsD(timeoutS(r));
             m_ctx.send(src, encodeEmpty(msg::ReleaseControl));
         }
         m_ctx.changed(r);
         return;
     }
-    if (s.classifyLoss) {
+    if (s.lossCheckUntil) {
         classify(r, s, *m);
     } else if (r.snap.controlledByUs && !ours && m->controller.subsystem != 0 &&
                m_ctx.now() - s.lastConfirm > std::chrono::milliseconds(500)) {
         // Someone else holds control although we think we do (a missed RejectControl).
-        s.classifyLoss = true;
         classify(r, s, *m);
-    } else if (!r.snap.controlledByUs && !s.wantControl &&
+    } else if (!r.snap.controlledByUs && !s.wants() &&
                (r.snap.access == AccessState::Monitoring || r.snap.access == AccessState::NotControlled)) {
         r.snap.access = m->controller.subsystem == 0 ? AccessState::NotControlled : AccessState::Monitoring;
     }
@@ -226,14 +221,12 @@ void AccessControlClient::onReport(RemoteSubsystem& r, const JausId& src, ByteSp
 }
 
 void AccessControlClient::onControlLost(RemoteSubsystem& r, State& s, const std::string& why) {
-    s.wantControl = false;
-    s.rejectPending = false;
+    s.giveUp();
     r.snap.controlledByUs = false;
     dropSelfAsController(r, m_ctx.self());
     m_drive.endSession(r, true);
     // Find out who holds control now to tell pre-emption from a timeout (AEP-4818 §9 item 14).
-    s.classifyLoss = true;
-    s.classifyDeadline = m_ctx.now() + std::chrono::seconds(1);
+    s.lossCheckUntil = m_ctx.now() + std::chrono::seconds(1);
     r.snap.access = AccessState::ControlReleased;
     if (r.controlTarget().subsystem)
         m_ctx.send(r.controlTarget(), encodeEmpty(msg::QueryControl));
@@ -242,9 +235,9 @@ void AccessControlClient::onControlLost(RemoteSubsystem& r, State& s, const std:
 }
 
 void AccessControlClient::classify(RemoteSubsystem& r, State& s, const ReportControl& rc) {
-    s.classifyLoss = false;
+    s.lossCheckUntil.reset();
     r.snap.controlledByUs = false;
-    s.wantControl = false;
+    s.giveUp();
     dropSelfAsController(r, m_ctx.self());
     m_drive.endSession(r, false);
     if (rc.controller.subsystem != 0 && !(rc.controller == m_ctx.self()) &&
@@ -273,7 +266,7 @@ void AccessControlClient::tick(RemoteSubsystem& r, TimePoint now) {
         m_ctx.send(mob, encodeEmpty(msg::QueryControl));
     }
     // Keep re-requesting inside the timeout; notice silence.
-    if (s.wantControl && mob.subsystem) {
+    if (s.wants() && mob.subsystem) {
         const double timeout = timeoutS(r);
         // Re-request well inside the timeout (AEP-4818 §4.3.4): 40 % of it, i.e. at most half.
         const Duration period = r.snap.controlledByUs ? secondsD(timeout * 0.4) : std::chrono::seconds(1);
@@ -282,7 +275,7 @@ void AccessControlClient::tick(RemoteSubsystem& r, TimePoint now) {
             m_ctx.send(mob, encodeU8(msg::RequestControl, m_ctx.config().authority));
         }
         if (r.snap.controlledByUs && now - s.lastConfirm > secondsD(timeout)) {
-            s.wantControl = false;
+            s.giveUp();
             r.snap.controlledByUs = false;
             dropSelfAsController(r, m_ctx.self());
             m_drive.endSession(r, false);
@@ -293,11 +286,10 @@ void AccessControlClient::tick(RemoteSubsystem& r, TimePoint now) {
             m_ctx.changed(r);
         }
     }
-    if (s.classifyLoss && now > s.classifyDeadline)
+    if (s.lossCheckUntil && now > *s.lossCheckUntil)
         classify(r, s, ReportControl{});
-    if (s.rejectPending && now > s.rejectDeadline) {
-        s.rejectPending = false;
-        s.wantControl = false;
+    if (s.phase == Phase::RefusalPending && now > s.rejectDeadline) {
+        s.phase = Phase::Idle;
         r.snap.access = s.rejectCode == std::uint8_t(RejectControlCode::Released)
                             ? AccessState::ControlReleased
                             : AccessState::NotAvailable;
@@ -308,8 +300,8 @@ void AccessControlClient::tick(RemoteSubsystem& r, TimePoint now) {
     }
     // A release the vehicle never answered (no RejectControl, no QueryControl): it has dropped us by its own
     // access timeout, since we stopped re-requesting (AS5710A AccessControl timeout).
-    if (s.releasing && now > s.releaseDeadline) {
-        s.releasing = false;
+    if (s.phase == Phase::Releasing && now > s.releaseDeadline) {
+        s.phase = Phase::Idle;
         r.snap.controlledByUs = false;
         dropSelfAsController(r, m_ctx.self());
         r.snap.access = AccessState::ControlReleased;

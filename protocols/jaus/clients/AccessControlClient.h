@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "protocols/jaus/Messages.h"
@@ -39,17 +40,30 @@ public:
     void setOtherControl(OtherControl filter) { m_other = std::move(filter); }
 
 private:
+    // Where our wish for control of one vehicle stands (AS5710A AccessControl, client side). Whether the
+    // vehicle granted it is the snapshot's controlledByUs.
+    enum class Phase {
+        Idle,       // control not wanted
+        Requesting, // control wanted: requested, and once accepted held and re-requested inside the timeout
+        // A RejectControl answered our outstanding request: some stacks answer a pre-empting request with
+        // RejectControl and then ConfirmControl(accepted); the reject counts only if no accept follows.
+        RefusalPending,
+        Releasing, // ReleaseControl sent while in control: RejectControl(0) is the answer
+    };
     struct State {
-        bool wantControl = false;
-        bool releasing = false;    // ReleaseControl sent while in control: RejectControl(0) is the answer
-        bool classifyLoss = false; // control ended: the next ReportControl says pre-empted or timed out
-        TimePoint classifyDeadline{};
+        Phase phase = Phase::Idle;
+        bool wants() const { return phase == Phase::Requesting || phase == Phase::RefusalPending; }
+        // Control no longer wanted (a release under way stays one).
+        void giveUp() {
+            if (wants())
+                phase = Phase::Idle;
+        }
+        // Control ended: until this deadline the next ReportControl tells pre-emption from a timeout. Apart
+        // from the phase: a control handed back meanwhile (Releasing) does not cancel the check.
+        std::optional<TimePoint> lossCheckUntil;
         TimePoint lastRequest{}, lastConfirm{}, lastControlPoll{};
         bool timeoutQueried = false;
-        // A RejectControl while our request is outstanding: some stacks answer a pre-empting request with
-        // RejectControl and then ConfirmControl(accepted); the reject counts only if no accept follows.
-        bool rejectPending = false;
-        TimePoint rejectDeadline{};
+        TimePoint rejectDeadline{}; // RefusalPending
         std::uint8_t rejectCode = 0;
         TimePoint releaseDeadline{}, lastReleaseSent{};
     };

@@ -20,14 +20,13 @@ bool DriveClient::startDriving(std::uint16_t ss) {
         m_ctx.send(r->mobility(), encodeEmpty(msg::QueryStatus));
     }
     State& s = m_state[ss];
-    s.active = true;
+    s.session = Session::Driving;
     s.stopRepeatsLeft = 0;
     s.drive = DriveCommand{};
     s.drive.mode = startMode(*r);
     r->snap.driving = true;
     s.lastSent = TimePoint{};
     s.lastUpdate = m_ctx.now();
-    s.stale = false;
     s.failureReported = false;
     m_ctx.changed(*r);
     // The session's first message, a zero demand, goes out at once: the session is open on the wire when the
@@ -43,7 +42,7 @@ bool DriveClient::startDriving(std::uint16_t ss) {
 bool DriveClient::setDriveCommand(std::uint16_t ss, DriveCommand c) {
     RemoteSubsystem* r = m_ctx.find(ss);
     auto it = m_state.find(ss);
-    if (!r || it == m_state.end() || !it->second.active)
+    if (!r || it == m_state.end() || it->second.session == Session::Closed)
         return m_ctx.refuse(ss, "no drive session open for subsystem " + std::to_string(ss));
     State& s = it->second;
     if (const char* missing = missingDriver(*r, c.mode))
@@ -65,10 +64,11 @@ bool DriveClient::setDriveCommand(std::uint16_t ss, DriveCommand c) {
             c.angular = std::clamp(c.angular, -*p.maxRotationalSpeed, *p.maxRotationalSpeed);
     }
     const bool changed = c.mode != s.drive.mode || c.linear != s.drive.linear ||
-                         c.angular != s.drive.angular || c.brake != s.drive.brake || s.stale;
+                         c.angular != s.drive.angular || c.brake != s.drive.brake ||
+                         s.session == Session::Stale;
     s.drive = c;
     s.lastUpdate = m_ctx.now();
-    s.stale = false;
+    s.session = Session::Driving;
     // A new demand goes out at once (teleop latency); the periodic stream repeats it.
     if (changed && r->mobility().subsystem)
         send(*r, s, false);
@@ -118,7 +118,7 @@ bool DriveClient::stopDriving(std::uint16_t ss) {
 }
 
 bool DriveClient::stop(RemoteSubsystem& r, State& s) {
-    s.active = false;
+    s.session = Session::Closed;
     // Several zero commands, never a single message (AEP-4818 §9 item 21).
     s.stopRepeatsLeft = r.snap.controlledByUs ? m_ctx.config().stopRepeats : 0;
     s.drive.linear = s.drive.angular = 0;
@@ -134,7 +134,7 @@ bool DriveClient::stop(RemoteSubsystem& r, State& s) {
 
 void DriveClient::endSession(RemoteSubsystem& r, bool dropZeroTail) {
     State& s = m_state[r.id()];
-    s.active = false;
+    s.session = Session::Closed;
     if (dropZeroTail)
         s.stopRepeatsLeft = 0;
     r.snap.driving = false;
@@ -142,7 +142,7 @@ void DriveClient::endSession(RemoteSubsystem& r, bool dropZeroTail) {
 
 void DriveClient::beforeRelease(RemoteSubsystem& r) {
     State& s = m_state[r.id()];
-    if (s.active)
+    if (s.session != Session::Closed)
         stop(r, s);
     // Zero drive commands go out before the release in the same tick order.
     for (int i = 0; i < 2 && r.snap.controlledByUs; ++i)
@@ -153,7 +153,7 @@ void DriveClient::beforeRelease(RemoteSubsystem& r) {
 
 bool DriveClient::anyActive() const {
     for (auto& [ss, s] : m_state)
-        if (s.active || s.stopRepeatsLeft > 0)
+        if (s.session != Session::Closed || s.stopRepeatsLeft > 0)
             return true;
     return false;
 }
@@ -202,17 +202,18 @@ void DriveClient::tick(RemoteSubsystem& r, TimePoint now) {
     State& s = it->second;
     const JausConfig& cfg = m_ctx.config();
     // Drive command watchdog: the stream carries the console's demand only while the console refreshes it.
-    if (s.active && !s.stale && cfg.driveCommandTimeoutS > 0 &&
+    if (s.session == Session::Driving && cfg.driveCommandTimeoutS > 0 &&
         now - s.lastUpdate > secondsD(cfg.driveCommandTimeoutS) &&
         (s.drive.linear != 0 || s.drive.angular != 0)) {
-        s.stale = true;
+        s.session = Session::Stale;
         s.drive.linear = s.drive.angular = 0;
         m_ctx.notify(Severity::Warning, EventKind::CommandRefused, r.id(),
                      "drive demand for " + r.snap.callSign + " not refreshed within " +
                          std::to_string(cfg.driveCommandTimeoutS) + " s: streaming zero");
     }
-    if ((s.active || s.stopRepeatsLeft > 0) && now - s.lastSent >= periodOf(cfg.driveRateHz)) {
-        if (s.active) {
+    if ((s.session != Session::Closed || s.stopRepeatsLeft > 0) &&
+        now - s.lastSent >= periodOf(cfg.driveRateHz)) {
+        if (s.session != Session::Closed) {
             send(r, s, false);
         } else {
             send(r, s, true);

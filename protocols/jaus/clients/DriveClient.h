@@ -36,13 +36,17 @@ public:
     bool anyActive() const;
 
 private:
+    enum class Session {
+        Closed,  // no drive session (the zero commands of a stop may still be repeating: stopRepeatsLeft)
+        Driving, // the operator's demand, streamed at the drive rate
+        Stale,   // open, but the demand was not refreshed within the drive command timeout: zero streamed
+    };
     struct State {
-        bool active = false;
+        Session session = Session::Closed;
         int stopRepeatsLeft = 0;
         DriveCommand drive;
         TimePoint lastSent{};
-        TimePoint lastUpdate{}; // last setDriveCommand (drive command watchdog)
-        bool stale = false;
+        TimePoint lastUpdate{};       // last setDriveCommand (drive command watchdog)
         bool lastSendOk = true;       // the latest drive message was taken by the socket
         std::string lastError;        // why not, when it was not
         bool failureReported = false; // one event per failing streak, one when it recovers

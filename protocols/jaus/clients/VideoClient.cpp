@@ -153,7 +153,7 @@ void VideoClient::onLinkRestored(RemoteSubsystem& r) {
     s.capsAnswered.clear();
     s.lastNameQuery.clear();
     for (PanTilt& u : s.panTilts) {
-        u.requested = u.confirmed = false;
+        u.control = PanTiltControl::None;
         u.report.controlledByUs = false;
     }
 }
@@ -252,15 +252,16 @@ void VideoClient::tickPanTilt(RemoteSubsystem& r, PanTilt& u, TimePoint now) {
     const bool want = r.snap.controlledByUs && cfg.mayControl() && !r.snap.emergency;
     // Control of the pan-tilt component follows control of the vehicle; re-requested within its timeout.
     if (want && now >= u.refusedUntil &&
-        (!u.requested || now - u.lastRequest > secondsD(0.4 * cfg.accessTimeoutS))) {
-        u.requested = true;
+        (u.control == PanTiltControl::None || now - u.lastRequest > secondsD(0.4 * cfg.accessTimeoutS))) {
+        if (u.control == PanTiltControl::None)
+            u.control = PanTiltControl::Requested;
         u.lastRequest = now;
         m_ctx.send(u.component, encodeU8(msg::RequestControl, cfg.authority));
-    } else if (!want && u.requested) {
-        if (u.confirmed)
+    } else if (!want && u.control != PanTiltControl::None) {
+        if (u.control == PanTiltControl::Controlled)
             m_ctx.send(u.component, encodePanTiltVelocities(msg::SetPanTiltJointVelocity, {}));
         m_ctx.send(u.component, encodeEmpty(msg::ReleaseControl));
-        u.requested = u.confirmed = false;
+        u.control = PanTiltControl::None;
         u.pan = u.tilt = 0;
         u.zerosLeft = 0;
         u.report.controlledByUs = false;
@@ -272,7 +273,8 @@ void VideoClient::tickPanTilt(RemoteSubsystem& r, PanTilt& u, TimePoint now) {
         u.pan = u.tilt = 0;
         u.zerosLeft = kZeroRepeats;
     }
-    if (u.confirmed && (moving || u.zerosLeft > 0) && now - u.lastSent >= kStreamPeriod) {
+    if (u.control == PanTiltControl::Controlled && (moving || u.zerosLeft > 0) &&
+        now - u.lastSent >= kStreamPeriod) {
         u.lastSent = now;
         m_ctx.send(u.component, encodePanTiltVelocities(msg::SetPanTiltJointVelocity, {u.pan, u.tilt}));
         if (!moving)
@@ -302,35 +304,33 @@ bool VideoClient::handleControlMessage(RemoteSubsystem& r, const JausId& src, st
             return true;
         }
         if (*m == std::uint8_t(ConfirmControlCode::Accepted)) {
-            if (!u->requested) {
+            if (u->control == PanTiltControl::None) {
                 m_ctx.send(src, encodeEmpty(msg::ReleaseControl)); // late accept after we gave up
                 return true;
             }
-            if (!u->confirmed) {
-                u->confirmed = true;
+            if (u->control == PanTiltControl::Requested) {
+                u->control = PanTiltControl::Controlled;
                 // The drivers obey only in READY (AS6057A via core:Management).
                 m_ctx.send(src, encodeEmpty(msg::Resume));
             }
         } else {
-            u->confirmed = false;
-            u->requested = false;
+            u->control = PanTiltControl::None;
             u->refusedUntil = m_ctx.now() + std::chrono::seconds(5);
             m_ctx.notify(Severity::Warning, EventKind::ControlRejected, r.id(),
                          r.snap.callSign + ": pan-tilt " + src.toString() + " refused control (code " +
                              std::to_string(*m) + ")");
         }
     } else if (id == msg::RejectControl) {
-        if (u->confirmed)
+        if (u->control == PanTiltControl::Controlled)
             m_ctx.notify(Severity::Warning, EventKind::ControlLost, r.id(),
                          r.snap.callSign + ": control of pan-tilt " + src.toString() + " lost");
-        u->confirmed = false;
-        u->requested = false;
+        u->control = PanTiltControl::None;
         u->pan = u->tilt = 0;
         u->zerosLeft = 0;
     } else {
         return false; // ReportControl etc.: not asked for by this client
     }
-    u->report.controlledByUs = u->confirmed;
+    u->report.controlledByUs = u->control == PanTiltControl::Controlled;
     publish(r, s);
     return true;
 }
@@ -376,7 +376,7 @@ bool VideoClient::panTilt(std::uint16_t ss, std::uint16_t sensorId, double panRa
     if (!u)
         return refusePanTilt(ss, r->snap.callSign + ": camera " + std::to_string(sensorId) +
                                      " is not on a pan-tilt");
-    if (!u->confirmed)
+    if (u->control != PanTiltControl::Controlled)
         return refusePanTilt(ss, r->snap.callSign + ": control of pan-tilt " + u->component.toString() +
                                      " is not confirmed yet (RequestControl pending)");
     // Clamped to the message range (±10π rad/s); the unit clamps to its own limits.

@@ -49,9 +49,15 @@ public:
                               ByteSpan payload);
 
 private:
+    // Our control of a pan-tilt component (AS5710A AccessControl, client side).
+    enum class PanTiltControl {
+        None,      // not requested (or given up, refused, lost)
+        Requested, // RequestControl sent, no ConfirmControl(accepted) yet
+        Controlled // accepted: re-requested within its timeout, velocities streamed
+    };
     struct PanTilt {
         JausId component;
-        bool requested = false, confirmed = false;
+        PanTiltControl control = PanTiltControl::None;
         TimePoint lastRequest{}, lastPoll{}, lastSent{}, lastDemand{}, refusedUntil{};
         double pan = 0, tilt = 0; // current demand (rad/s)
         int zerosLeft = 0;

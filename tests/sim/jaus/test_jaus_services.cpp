@@ -4,6 +4,7 @@
 // authority 0), discovery, events with polling fallback, management/emergency, driving, drive timeout.
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 
@@ -576,6 +577,60 @@ private slots:
         auto rs = decodeReportServices(got[1].payload);
         QVERIFY(rs && rs->nodes.size() == 1 && rs->nodes[0].components[0].services.size() >= 3);
         QCOMPARE(peekMessageId(got[2].payload), msg::ReportHeartbeatPulse);
+    }
+    // The UGV's message table routes each message to the component whose service handles it: every other
+    // (component, message) pair is ignored, as the services listed in ReportServices say.
+    void messagesReachOnlyTheComponentsServingThem() {
+        World w;
+        const JausId pm{126, 1, 1}, mob{126, 3, 1}, sen{126, 3, 2};
+        const std::vector<std::uint16_t> everywhere{msg::QueryHeartbeatPulse, msg::CreateEvent,
+                                                    msg::UpdateEvent, msg::CancelEvent, msg::QueryEvents};
+        const std::vector<std::uint16_t> atPm{msg::QueryIdentification, msg::QueryServices,
+                                              msg::QueryServiceList,    msg::QuerySubsystemList,
+                                              msg::RegisterServices,    msg::QueryHealthSummary,
+                                              msg::UpdateHealthSummary};
+        const std::vector<std::uint16_t> atMobility{msg::RequestControl,
+                                                    msg::ReleaseControl,
+                                                    msg::QueryControl,
+                                                    msg::QueryAuthority,
+                                                    msg::SetAuthority,
+                                                    msg::QueryTimeout,
+                                                    msg::QueryStatus,
+                                                    msg::Shutdown,
+                                                    msg::Standby,
+                                                    msg::Resume,
+                                                    msg::Reset,
+                                                    msg::SetEmergency,
+                                                    msg::ClearEmergency,
+                                                    msg::SetWrenchEffort,
+                                                    msg::QueryWrenchEffort,
+                                                    msg::SetVelocityCommand,
+                                                    msg::QueryVelocityCommand,
+                                                    msg::QueryPlatformSpecifications};
+        const std::vector<std::uint16_t> atSensors{msg::QueryGlobalPose, msg::QueryLocalPose,
+                                                   msg::QueryVelocityState};
+        const std::vector<std::uint16_t> nowhere{msg::ReportStatus, msg::ReportControl, msg::ConfirmControl,
+                                                 msg::ReportGlobalPose};
+        auto served = [&](const JausId& c, std::uint16_t id) {
+            auto in = [id](const std::vector<std::uint16_t>& v) {
+                return std::find(v.begin(), v.end(), id) != v.end();
+            };
+            return in(everywhere) || (c == pm && in(atPm)) || (c == mob && in(atMobility)) ||
+                   (c == sen && in(atSensors));
+        };
+        const JausId asker{300, 1, 1};
+        for (const auto* list : {&everywhere, &atPm, &atMobility, &atSensors, &nowhere})
+            for (std::uint16_t id : *list)
+                for (const JausId& c : {pm, mob, sen}) {
+                    const std::uint64_t before = w.ugvCounters.get("rx.ignored");
+                    w.ugv->handle(asker, c, encodeEmpty(id));
+                    const bool ignored = w.ugvCounters.get("rx.ignored") != before;
+                    if (ignored == served(c, id))
+                        QFAIL(qPrintable(QString("%1 at %2: %3")
+                                             .arg(messageName(id))
+                                             .arg(QString::fromStdString(c.toString()))
+                                             .arg(ignored ? "ignored" : "handled")));
+                }
     }
 };
 
