@@ -34,7 +34,7 @@ QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxA
     for (const QFileInfo& f : files)
         total += sizeOf(f);
     QStringList deleted;
-    // A recording whose creation was cut off (createFile): not a recording, nothing to keep.
+    // A recording whose creation was cut off (createRecordingFile): not a recording, nothing to keep.
     for (const QFileInfo& f : d.entryInfoList({QStringLiteral("ocu-*.sqlite.part")}, QDir::Files)) {
         if (f.lastModified().secsTo(now) < 300)
             continue;
