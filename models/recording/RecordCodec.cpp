@@ -327,229 +327,269 @@ void resolveGeodetic(QHash<std::uint32_t, MachineState>& states, QSet<std::uint3
     pending.clear();
 }
 
+namespace {
+
+using Tracks = QHash<std::uint32_t, ChunkEncoder::Track>;
+
+// What decodeChunk applies records to.
+struct DecodeTarget {
+    QHash<std::uint32_t, MachineState>& states;
+    QSet<std::uint32_t>* defer; // DecodeOptions::deferGeodetic
+    const GeoFrame* frame;      // DecodeOptions::frame
+    // A record that sets lat/lon itself ends a deferred derivation of them.
+    void settle(std::uint32_t idx, bool apply) {
+        if (defer && apply)
+            defer->remove(idx);
+    }
+};
+
+// Compact chunks: the column table; r then reads the headers column, col[i] the Move fields' columns.
+bool openColumns(Reader& r, Reader (&col)[ChunkEncoder::columns() - 1]) {
+    if (r.get<std::uint8_t>() != ChunkEncoder::columns())
+        return false;
+    std::uint64_t len[ChunkEncoder::columns()];
+    for (auto& l : len)
+        l = r.getVar();
+    if (!r.ok)
+        return false;
+    const char* p = r.p;
+    const char* const end = r.end;
+    for (int i = 0; i < ChunkEncoder::columns(); ++i) {
+        if (len[i] > std::uint64_t(end - p))
+            return false;
+        Reader& c = i == 0 ? r : col[i - 1];
+        c = Reader{p, p + len[i]};
+        p += len[i];
+    }
+    return p == end;
+}
+
+// A record's header: type, machine index and time (compact: differences to the record before).
+bool readHeader(Reader& r, bool compact, qint64 t0Ms, std::uint32_t& prevIdx, qint64& prevT,
+                DecodedRecord& rec, std::uint8_t& type) {
+    if (compact) {
+        type = r.get<std::uint8_t>();
+        rec.idx = std::uint32_t(wrapAdd(prevIdx, unzigzag(r.getVar())));
+        rec.tMs = wrapAdd(prevT, std::int64_t(r.getVar()));
+        if (!r.ok)
+            return false;
+        prevIdx = rec.idx;
+        prevT = rec.tMs;
+        return true;
+    }
+    if (r.end - r.p < kHeader)
+        return false;
+    type = r.get<std::uint8_t>();
+    rec.idx = r.get<std::uint32_t>();
+    rec.tMs = t0Ms + r.get<std::int32_t>();
+    return true;
+}
+
+bool decodeFull(Reader& r, DecodedRecord& rec, bool apply, DecodeTarget& to, Tracks& tracks) {
+    rec.type = RecordType::Full;
+    MachineState s;
+    std::uint8_t e[7];
+    for (auto& v : e)
+        v = r.get<std::uint8_t>();
+    s.protocol = enumOf(e[0], Protocol::Other);
+    s.link = enumOf(e[1], LinkState::Down);
+    s.mode = enumOf(e[2], ModeCategory::Shutdown);
+    s.stop = enumOf(e[3], StopState::Stopped);
+    s.control = enumOf(e[4], ControlState::Denied);
+    s.health = enumOf(e[5], HealthLevel::Fault);
+    s.hasPosition = e[6] != 0;
+    for (double* d :
+         {&s.e, &s.n, &s.u, &s.lat, &s.lon, &s.headingDeg, &s.speed, &s.length, &s.width, &s.height})
+        *d = r.get<double>();
+    s.lastDataMs = r.get<std::int64_t>();
+    s.lastMessageMs = r.get<std::int64_t>();
+    for (QString* str :
+         {&s.id, &s.name, &s.type, &s.modeText, &s.stopText, &s.controller, &s.healthText, &s.workText})
+        *str = r.getString();
+    if (!r.ok)
+        return false;
+    tracks.remove(rec.idx);
+    to.settle(rec.idx, apply);
+    if (apply)
+        to.states.insert(rec.idx, std::move(s));
+    return true;
+}
+
+bool decodePosition(Reader& r, DecodedRecord& rec, bool apply, DecodeTarget& to) {
+    rec.type = RecordType::Position;
+    const double e = r.get<std::int32_t>() / 1000.0;
+    const double n = r.get<std::int32_t>() / 1000.0;
+    const double u = r.get<std::int32_t>() / 1000.0;
+    const double lat = r.get<double>();
+    const double lon = r.get<double>();
+    const float heading = r.get<float>();
+    const float speed = r.get<float>();
+    const qint64 lastData = rec.tMs + r.get<std::int64_t>();
+    const std::int32_t msg = r.get<std::int32_t>();
+    if (!r.ok)
+        return false;
+    if (!apply)
+        return true;
+    auto it = to.states.find(rec.idx);
+    if (it == to.states.end())
+        return true; // no base (a file trimmed in the middle of nowhere): nothing to move
+    to.settle(rec.idx, apply);
+    MachineState& s = *it;
+    s.e = e;
+    s.n = n;
+    s.u = u;
+    s.lat = lat;
+    s.lon = lon;
+    s.headingDeg = heading;
+    s.speed = speed;
+    s.lastDataMs = lastData;
+    s.lastMessageMs = msg == kNoMessageTime ? 0 : lastData + msg;
+    return true;
+}
+
+// A Position as differences to the machine's state before it (what the recorder's base was).
+bool decodeDelta(Reader& r, DecodedRecord& rec, bool apply, DecodeTarget& to) {
+    rec.type = RecordType::Position;
+    const std::int64_t de = unzigzag(r.getVar()), dn = unzigzag(r.getVar()), du = unzigzag(r.getVar());
+    const std::uint64_t lat = r.getVar(), lon = r.getVar(), heading = r.getVar(), speed = r.getVar();
+    const std::int64_t data = unzigzag(r.getVar()), msg = unzigzag(r.getVar());
+    if (!r.ok)
+        return false;
+    if (!apply)
+        return true;
+    auto it = to.states.find(rec.idx);
+    if (it == to.states.end())
+        return true; // no base: nothing to move
+    to.settle(rec.idx, apply);
+    MachineState& s = *it;
+    // Unsigned arithmetic: hostile differences wrap instead of overflowing.
+    s.e = double(std::int64_t(std::uint64_t(mm(s.e)) + std::uint64_t(de))) / 1000.0;
+    s.n = double(std::int64_t(std::uint64_t(mm(s.n)) + std::uint64_t(dn))) / 1000.0;
+    s.u = double(std::int64_t(std::uint64_t(mm(s.u)) + std::uint64_t(du))) / 1000.0;
+    s.lat = fromBits<double>(bitsOf<double, std::uint64_t>(s.lat) ^ lat);
+    s.lon = fromBits<double>(bitsOf<double, std::uint64_t>(s.lon) ^ lon);
+    s.headingDeg =
+        fromBits<float>(bitsOf<float, std::uint32_t>(float(s.headingDeg)) ^ std::uint32_t(heading));
+    s.speed = fromBits<float>(bitsOf<float, std::uint32_t>(float(s.speed)) ^ std::uint32_t(speed));
+    s.lastDataMs = qint64(std::uint64_t(rec.tMs) + std::uint64_t(data));
+    s.lastMessageMs = msg == kNoMessageTime ? 0 : qint64(std::uint64_t(s.lastDataMs) + std::uint64_t(msg));
+    return true;
+}
+
+// A Move (compact chunks): the moving part as differences to the machine's previous step in this chunk.
+bool decodeMove(Reader (&col)[ChunkEncoder::columns() - 1], DecodedRecord& rec, bool geodetic, bool apply,
+                DecodeTarget& to, Tracks& tracks) {
+    rec.type = RecordType::Position;
+    const std::int64_t re = unzigzag(col[0].getVar()), rn = unzigzag(col[1].getVar()),
+                       du = unzigzag(col[2].getVar());
+    const std::int64_t dh = unzigzag(col[3].getVar()), ds = unzigzag(col[4].getVar());
+    const std::int64_t rData = unzigzag(col[5].getVar()), rMsg = unzigzag(col[6].getVar());
+    const std::int64_t rLat = geodetic ? unzigzag(col[7].getVar()) : 0;
+    const std::int64_t rLon = geodetic ? unzigzag(col[8].getVar()) : 0;
+    for (const Reader& c : col)
+        if (!c.ok)
+            return false;
+    // The steps follow from the records alone: kept whether or not this one is applied.
+    ChunkEncoder::Track& tr = tracks[rec.idx];
+    const std::int64_t de = wrapAdd(re, tr.moved ? tr.ve : 0), dn = wrapAdd(rn, tr.moved ? tr.vn : 0);
+    const std::int64_t dataOffset = wrapAdd(rData, tr.moved ? tr.dataOffset : 0);
+    const std::int64_t messageOffset = wrapAdd(rMsg, tr.moved ? tr.messageOffset : 0);
+    tr.ve = de;
+    tr.vn = dn;
+    tr.dataOffset = dataOffset;
+    tr.messageOffset = messageOffset;
+    tr.moved = true;
+    std::int64_t dlat = 0, dlon = 0;
+    if (geodetic) {
+        dlat = wrapAdd(rLat, tr.geodetic ? tr.vlat : 0);
+        dlon = wrapAdd(rLon, tr.geodetic ? tr.vlon : 0);
+        tr.vlat = dlat;
+        tr.vlon = dlon;
+    }
+    tr.geodetic = geodetic;
+    if (!apply)
+        return true;
+    auto it = to.states.find(rec.idx);
+    if (it == to.states.end())
+        return true; // no base: nothing to move
+    MachineState& s = *it;
+    if (geodetic && to.defer && to.defer->remove(rec.idx) && to.frame) {
+        // The base's lat/lon were still owed (derived from the position before this record).
+        const GeoPoint g = to.frame->toGeodetic({s.e, s.n, s.u});
+        s.lat = g.lat;
+        s.lon = g.lon;
+    }
+    s.e = double(wrapAdd(fixed(s.e, kMoveMetre), de)) / kMoveMetre;
+    s.n = double(wrapAdd(fixed(s.n, kMoveMetre), dn)) / kMoveMetre;
+    s.u = double(wrapAdd(fixed(s.u, kMoveMetre), du)) / kMoveMetre;
+    s.headingDeg = double(wrapAdd(fixed(s.headingDeg, kMoveDegree), dh)) / kMoveDegree;
+    s.speed = double(wrapAdd(fixed(s.speed, kMoveSpeed), ds)) / kMoveSpeed;
+    s.lastDataMs = wrapAdd(rec.tMs, dataOffset);
+    s.lastMessageMs = messageOffset == kNoMessageTime ? 0 : wrapAdd(s.lastDataMs, messageOffset);
+    if (geodetic) {
+        s.lat = double(wrapAdd(fixed(s.lat, kMoveGeodetic), dlat)) / kMoveGeodetic;
+        s.lon = double(wrapAdd(fixed(s.lon, kMoveGeodetic), dlon)) / kMoveGeodetic;
+    } else if (to.defer) {
+        to.defer->insert(rec.idx);
+    } else if (to.frame) {
+        const GeoPoint g = to.frame->toGeodetic({s.e, s.n, s.u});
+        s.lat = g.lat;
+        s.lon = g.lon;
+    }
+    return true;
+}
+
+} // namespace
+
 bool decodeChunk(const QByteArray& blob, qint64 t0Ms, QHash<std::uint32_t, MachineState>& states,
                  qint64 fromExclusiveMs, qint64 untilMs, const RecordVisitor& visit,
                  const DecodeOptions& options) {
     Reader r{blob.constData(), blob.constData() + blob.size()};
     const bool compact = options.format == ChunkFormat::Compact;
-    // Compact: r reads the headers column, col[i] the Move fields' columns.
     Reader col[ChunkEncoder::columns() - 1] = {};
-    if (compact && !blob.isEmpty()) {
-        if (r.get<std::uint8_t>() != ChunkEncoder::columns())
-            return false;
-        std::uint64_t len[ChunkEncoder::columns()];
-        for (auto& l : len)
-            l = r.getVar();
-        if (!r.ok)
-            return false;
-        const char* p = r.p;
-        const char* const end = r.end;
-        for (int i = 0; i < ChunkEncoder::columns(); ++i) {
-            if (len[i] > std::uint64_t(end - p))
-                return false;
-            Reader& c = i == 0 ? r : col[i - 1];
-            c = Reader{p, p + len[i]};
-            p += len[i];
-        }
-        if (p != end)
-            return false;
-    }
-    QSet<std::uint32_t>* defer = options.deferGeodetic;
+    if (compact && !blob.isEmpty() && !openColumns(r, col))
+        return false;
+    DecodeTarget to{states, options.deferGeodetic, options.frame};
     // Move records: each machine's previous step in this chunk (from the records alone, applied or not).
-    QHash<std::uint32_t, ChunkEncoder::Track> tracks;
+    Tracks tracks;
     std::uint32_t prevIdx = 0;
     qint64 prevT = t0Ms;
     while (r.p < r.end) {
         DecodedRecord rec;
         std::uint8_t type = 0;
-        if (compact) {
-            type = r.get<std::uint8_t>();
-            rec.idx = std::uint32_t(wrapAdd(prevIdx, unzigzag(r.getVar())));
-            rec.tMs = wrapAdd(prevT, std::int64_t(r.getVar()));
-            if (!r.ok)
-                return false;
-            prevIdx = rec.idx;
-            prevT = rec.tMs;
-        } else {
-            if (r.end - r.p < kHeader)
-                return false;
-            type = r.get<std::uint8_t>();
-            rec.idx = r.get<std::uint32_t>();
-            rec.tMs = t0Ms + r.get<std::int32_t>();
-        }
+        if (!readHeader(r, compact, t0Ms, prevIdx, prevT, rec, type))
+            return false;
         if (rec.tMs > untilMs)
             return true;
         const bool apply = rec.tMs > fromExclusiveMs;
-        // A record that sets lat/lon itself ends a deferred derivation of them.
-        auto settle = [&](std::uint32_t idx) {
-            if (defer && apply)
-                defer->remove(idx);
-        };
+        bool ok = true;
         switch (RecordType(type)) {
-        case RecordType::Full: {
-            rec.type = RecordType::Full;
-            MachineState s;
-            std::uint8_t e[7];
-            for (auto& v : e)
-                v = r.get<std::uint8_t>();
-            s.protocol = enumOf(e[0], Protocol::Other);
-            s.link = enumOf(e[1], LinkState::Down);
-            s.mode = enumOf(e[2], ModeCategory::Shutdown);
-            s.stop = enumOf(e[3], StopState::Stopped);
-            s.control = enumOf(e[4], ControlState::Denied);
-            s.health = enumOf(e[5], HealthLevel::Fault);
-            s.hasPosition = e[6] != 0;
-            for (double* d :
-                 {&s.e, &s.n, &s.u, &s.lat, &s.lon, &s.headingDeg, &s.speed, &s.length, &s.width, &s.height})
-                *d = r.get<double>();
-            s.lastDataMs = r.get<std::int64_t>();
-            s.lastMessageMs = r.get<std::int64_t>();
-            for (QString* str : {&s.id, &s.name, &s.type, &s.modeText, &s.stopText, &s.controller,
-                                 &s.healthText, &s.workText})
-                *str = r.getString();
-            if (!r.ok)
-                return false;
-            tracks.remove(rec.idx);
-            settle(rec.idx);
-            if (apply)
-                states.insert(rec.idx, std::move(s));
+        case RecordType::Full:
+            ok = decodeFull(r, rec, apply, to, tracks);
             break;
-        }
-        case RecordType::Position: {
-            rec.type = RecordType::Position;
-            const double e = r.get<std::int32_t>() / 1000.0;
-            const double n = r.get<std::int32_t>() / 1000.0;
-            const double u = r.get<std::int32_t>() / 1000.0;
-            const double lat = r.get<double>();
-            const double lon = r.get<double>();
-            const float heading = r.get<float>();
-            const float speed = r.get<float>();
-            const qint64 lastData = rec.tMs + r.get<std::int64_t>();
-            const std::int32_t msg = r.get<std::int32_t>();
-            if (!r.ok)
-                return false;
-            if (!apply)
-                break;
-            auto it = states.find(rec.idx);
-            if (it == states.end())
-                break; // no base (a file trimmed in the middle of nowhere): nothing to move
-            settle(rec.idx);
-            MachineState& s = *it;
-            s.e = e;
-            s.n = n;
-            s.u = u;
-            s.lat = lat;
-            s.lon = lon;
-            s.headingDeg = heading;
-            s.speed = speed;
-            s.lastDataMs = lastData;
-            s.lastMessageMs = msg == kNoMessageTime ? 0 : lastData + msg;
+        case RecordType::Position:
+            ok = decodePosition(r, rec, apply, to);
             break;
-        }
-        case RecordType::Delta: {
-            // Position as differences to the machine's state before it (what the recorder's base was).
-            rec.type = RecordType::Position;
-            const std::int64_t de = unzigzag(r.getVar()), dn = unzigzag(r.getVar()),
-                               du = unzigzag(r.getVar());
-            const std::uint64_t lat = r.getVar(), lon = r.getVar(), heading = r.getVar(), speed = r.getVar();
-            const std::int64_t data = unzigzag(r.getVar()), msg = unzigzag(r.getVar());
-            if (!r.ok)
-                return false;
-            if (!apply)
-                break;
-            auto it = states.find(rec.idx);
-            if (it == states.end())
-                break; // no base: nothing to move
-            settle(rec.idx);
-            MachineState& s = *it;
-            // Unsigned arithmetic: hostile differences wrap instead of overflowing.
-            s.e = double(std::int64_t(std::uint64_t(mm(s.e)) + std::uint64_t(de))) / 1000.0;
-            s.n = double(std::int64_t(std::uint64_t(mm(s.n)) + std::uint64_t(dn))) / 1000.0;
-            s.u = double(std::int64_t(std::uint64_t(mm(s.u)) + std::uint64_t(du))) / 1000.0;
-            s.lat = fromBits<double>(bitsOf<double, std::uint64_t>(s.lat) ^ lat);
-            s.lon = fromBits<double>(bitsOf<double, std::uint64_t>(s.lon) ^ lon);
-            s.headingDeg =
-                fromBits<float>(bitsOf<float, std::uint32_t>(float(s.headingDeg)) ^ std::uint32_t(heading));
-            s.speed = fromBits<float>(bitsOf<float, std::uint32_t>(float(s.speed)) ^ std::uint32_t(speed));
-            s.lastDataMs = qint64(std::uint64_t(rec.tMs) + std::uint64_t(data));
-            s.lastMessageMs =
-                msg == kNoMessageTime ? 0 : qint64(std::uint64_t(s.lastDataMs) + std::uint64_t(msg));
+        case RecordType::Delta:
+            ok = decodeDelta(r, rec, apply, to);
             break;
-        }
         case RecordType::Move:
-        case RecordType::MoveGeodetic: {
-            if (!compact)
-                return false;
-            rec.type = RecordType::Position;
-            const bool geodetic = RecordType(type) == RecordType::MoveGeodetic;
-            const std::int64_t re = unzigzag(col[0].getVar()), rn = unzigzag(col[1].getVar()),
-                               du = unzigzag(col[2].getVar());
-            const std::int64_t dh = unzigzag(col[3].getVar()), ds = unzigzag(col[4].getVar());
-            const std::int64_t rData = unzigzag(col[5].getVar()), rMsg = unzigzag(col[6].getVar());
-            const std::int64_t rLat = geodetic ? unzigzag(col[7].getVar()) : 0;
-            const std::int64_t rLon = geodetic ? unzigzag(col[8].getVar()) : 0;
-            for (const Reader& c : col)
-                if (!c.ok)
-                    return false;
-            // The steps follow from the records alone: kept whether or not this one is applied.
-            ChunkEncoder::Track& tr = tracks[rec.idx];
-            const std::int64_t de = wrapAdd(re, tr.moved ? tr.ve : 0), dn = wrapAdd(rn, tr.moved ? tr.vn : 0);
-            const std::int64_t dataOffset = wrapAdd(rData, tr.moved ? tr.dataOffset : 0);
-            const std::int64_t messageOffset = wrapAdd(rMsg, tr.moved ? tr.messageOffset : 0);
-            tr.ve = de;
-            tr.vn = dn;
-            tr.dataOffset = dataOffset;
-            tr.messageOffset = messageOffset;
-            tr.moved = true;
-            std::int64_t dlat = 0, dlon = 0;
-            if (geodetic) {
-                dlat = wrapAdd(rLat, tr.geodetic ? tr.vlat : 0);
-                dlon = wrapAdd(rLon, tr.geodetic ? tr.vlon : 0);
-                tr.vlat = dlat;
-                tr.vlon = dlon;
-            }
-            tr.geodetic = geodetic;
-            if (!apply)
-                break;
-            auto it = states.find(rec.idx);
-            if (it == states.end())
-                break; // no base: nothing to move
-            MachineState& s = *it;
-            if (geodetic && defer && defer->remove(rec.idx) && options.frame) {
-                // The base's lat/lon were still owed (derived from the position before this record).
-                const GeoPoint g = options.frame->toGeodetic({s.e, s.n, s.u});
-                s.lat = g.lat;
-                s.lon = g.lon;
-            }
-            s.e = double(wrapAdd(fixed(s.e, kMoveMetre), de)) / kMoveMetre;
-            s.n = double(wrapAdd(fixed(s.n, kMoveMetre), dn)) / kMoveMetre;
-            s.u = double(wrapAdd(fixed(s.u, kMoveMetre), du)) / kMoveMetre;
-            s.headingDeg = double(wrapAdd(fixed(s.headingDeg, kMoveDegree), dh)) / kMoveDegree;
-            s.speed = double(wrapAdd(fixed(s.speed, kMoveSpeed), ds)) / kMoveSpeed;
-            s.lastDataMs = wrapAdd(rec.tMs, dataOffset);
-            s.lastMessageMs = messageOffset == kNoMessageTime ? 0 : wrapAdd(s.lastDataMs, messageOffset);
-            if (geodetic) {
-                s.lat = double(wrapAdd(fixed(s.lat, kMoveGeodetic), dlat)) / kMoveGeodetic;
-                s.lon = double(wrapAdd(fixed(s.lon, kMoveGeodetic), dlon)) / kMoveGeodetic;
-            } else if (defer) {
-                defer->insert(rec.idx);
-            } else if (options.frame) {
-                const GeoPoint g = options.frame->toGeodetic({s.e, s.n, s.u});
-                s.lat = g.lat;
-                s.lon = g.lon;
-            }
+        case RecordType::MoveGeodetic:
+            ok = compact &&
+                 decodeMove(col, rec, RecordType(type) == RecordType::MoveGeodetic, apply, to, tracks);
             break;
-        }
         case RecordType::Removed:
             rec.type = RecordType::Removed;
             tracks.remove(rec.idx);
-            settle(rec.idx);
+            to.settle(rec.idx, apply);
             if (apply)
                 states.remove(rec.idx);
             break;
         default:
             return false;
         }
+        if (!ok)
+            return false;
         if (apply && visit)
             visit(rec);
     }

@@ -13,6 +13,7 @@
 #include "models/FleetEvent.h"
 #include "models/MachineState.h"
 #include "models/SiteMapData.h"
+#include "models/recording/Retention.h"
 
 #include <QObject>
 #include <QPointer>
@@ -136,7 +137,10 @@ private:
     struct Item;
     struct Writer;
     bool push(Item&& item);
+    // The writer thread (RecorderWriter.cpp): commits what is queued every flushIntervalMs until stopped.
     void run();
+    void commit(const std::vector<Item>& batch);
+    void retainDuringRun(qint64 t);
     qint64 now() const;
 
     RecorderOptions m_options;
@@ -172,18 +176,6 @@ private:
     QSize m_passSize;
     QTimer* m_passTimer = nullptr;
 };
-
-// Retention (record.max_total_mb, record.max_age_days): deletes recordings (ocu-*.sqlite and their -wal/-shm)
-// in `dir` older than maxAgeDays, then the oldest while the folder holds more than maxTotalBytes. `keep` and
-// files written to within the last 5 minutes (another console's run) are never deleted. Returns the names
-// deleted.
-QStringList applyRetention(const QString& dir, qint64 maxTotalBytes, double maxAgeDays,
-                           const QString& keep = {});
-// The limit of one run's file: record.max_file_mb when set, else the folder's record.max_total_mb (a run
-// alone never outgrows the folder's budget); 0 = none. In bytes.
-qint64 effectiveMaxFileBytes(double maxFileMb, double maxTotalMb);
-// ocu-YYYYMMDD-HHMMSS-<pid>.sqlite in dir.
-QString newRecordingPath(const QString& dir);
 
 } // namespace recording
 } // namespace ocu

@@ -127,6 +127,9 @@ public:
 private:
     Recording() = default;
     void loadMachineIds() const;
+    // exportSlice: the keyframe at `from` and the machine changes up to `to` into `dst` (ok false on a
+    // fault).
+    void writeSliceStates(sqlite3* dst, qint64 from, qint64 to, bool& ok) const;
     QString idOf(std::uint32_t idx) const;
     // Decodes the chunks after `fromExclusive` up to `toInclusive` onto `states`. With `deferGeodetic`, the
     // lat/lon of Move records are left to the caller (resolveGeodetic): fn must not need them.

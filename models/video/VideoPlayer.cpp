@@ -120,7 +120,44 @@ struct VideoPlayer::Shared {
         if (owner)
             QMetaObject::invokeMethod(owner, std::forward<F>(f), Qt::QueuedConnection);
     }
+    // Streaming threads: a frame of pipeline `gen` decoded (kept as the latest, the rates updated, the owner
+    // told unless a notification is pending); an error or end of stream of pipeline `gen`.
+    void frameDecoded(std::uint64_t gen, QImage img, std::int64_t arrivalUs,
+                      std::optional<std::int64_t> captureUs, std::int64_t cpuNs);
+    void busProblem(std::uint64_t gen, const QString& text);
 };
+
+void VideoPlayer::Shared::frameDecoded(std::uint64_t gen, QImage img, std::int64_t arrivalUs,
+                                       std::optional<std::int64_t> captureUs, std::int64_t cpuNs) {
+    std::lock_guard lock(mutex);
+    if (generation != gen)
+        return; // an old pipeline on its way down
+    latest.image = std::move(img);
+    latest.arrivalUs = arrivalUs;
+    latest.captureUs = captureUs;
+    ++latest.number;
+    arrivals.push_back(arrivalUs);
+    while (!arrivals.empty() && arrivals.front() < arrivalUs - 2000000)
+        arrivals.pop_front();
+    if (cpuNs >= 0) {
+        decodeNs.push_back(cpuNs);
+        while (decodeNs.size() > 60)
+            decodeNs.pop_front();
+    }
+    if (!notifyPending && owner) {
+        notifyPending = true;
+        VideoPlayer* o = owner;
+        post([o, gen] { o->onFrame(gen); });
+    }
+}
+
+void VideoPlayer::Shared::busProblem(std::uint64_t gen, const QString& text) {
+    std::lock_guard lock(mutex);
+    if (owner && generation == gen) {
+        VideoPlayer* o = owner;
+        post([o, gen, text] { o->onBusProblem(gen, text); });
+    }
+}
 
 namespace {
 
@@ -132,6 +169,157 @@ struct PipelineContext {
 
 void destroyContext(gpointer p) {
     delete static_cast<PipelineContext*>(p);
+}
+
+// The elements of one pipeline: rtspsrc ! rtph264depay ! h264parse ! avdec_h264 ! videoconvert ! appsink.
+struct Elements {
+    GstElement *pipe, *src, *depay, *parse, *dec, *conv, *sink;
+};
+
+// False when one is missing (the others are released).
+bool makeElements(Elements& e) {
+    e.pipe = gst_pipeline_new("ocu-video");
+    e.src = gst_element_factory_make("rtspsrc", "src");
+    e.depay = gst_element_factory_make("rtph264depay", "depay");
+    e.parse = gst_element_factory_make("h264parse", "parse");
+    e.dec = gst_element_factory_make("avdec_h264", "dec");
+    e.conv = gst_element_factory_make("videoconvert", "conv");
+    e.sink = gst_element_factory_make("appsink", "sink");
+    if (e.pipe && e.src && e.depay && e.parse && e.dec && e.conv && e.sink)
+        return true;
+    for (GstElement* x : {e.pipe, e.src, e.depay, e.parse, e.dec, e.conv, e.sink})
+        if (x)
+            gst_object_unref(x);
+    return false;
+}
+
+void configureElements(const Elements& e, const QByteArray& url, int latencyMs,
+                       VideoPlayer::Transport transport) {
+    g_object_set(e.src, "location", url.constData(), "latency", guint(std::max(0, latencyMs)),
+                 "drop-on-latency", TRUE, "do-retransmission", FALSE, "tcp-timeout", guint64(2000000),
+                 "timeout", guint64(2000000), nullptr);
+    if (transport == VideoPlayer::Transport::Tcp)
+        gst_util_set_object_arg(G_OBJECT(e.src), "protocols", "tcp");
+    else if (transport == VideoPlayer::Transport::Udp)
+        gst_util_set_object_arg(G_OBJECT(e.src), "protocols", "udp");
+    // One decoder thread: no frame-threading delay (each frame comes out as its access unit goes in), and
+    // its CPU time is measurable on the streaming thread. Corrupt frames (before the first key frame after
+    // a loss) are dropped rather than shown.
+    g_object_set(e.dec, "max-threads", 1, "output-corrupt", FALSE, nullptr);
+    GstCaps* caps = gst_caps_new_simple("video/x-raw", "format", G_TYPE_STRING, "BGRx", nullptr);
+    g_object_set(e.sink, "caps", caps, "drop", TRUE, "max-buffers", guint(1), "sync", FALSE, "emit-signals",
+                 FALSE, "enable-last-sample", FALSE, nullptr);
+    gst_caps_unref(caps);
+}
+
+// rtspsrc's pads appear once the stream is described: link the H.264 video one.
+void onPadAdded(GstElement*, GstPad* pad, gpointer p) {
+    auto* c = static_cast<PipelineContext*>(p);
+    GstCaps* pc = gst_pad_get_current_caps(pad);
+    if (!pc)
+        pc = gst_pad_query_caps(pad, nullptr);
+    bool h264 = false;
+    QString encoding;
+    if (pc && gst_caps_get_size(pc) > 0) {
+        const GstStructure* st = gst_caps_get_structure(pc, 0);
+        const gchar* media = gst_structure_get_string(st, "media");
+        const gchar* enc = gst_structure_get_string(st, "encoding-name");
+        encoding = QString::fromUtf8(enc ? enc : "?");
+        h264 = media && g_str_equal(media, "video") && enc && g_ascii_strcasecmp(enc, "H264") == 0;
+    }
+    if (pc)
+        gst_caps_unref(pc);
+    if (!h264) {
+        std::lock_guard lock(c->shared->mutex);
+        c->shared->lastError = QStringLiteral("stream encoding %1 is not H.264").arg(encoding);
+        return;
+    }
+    GstPad* sinkPad = gst_element_get_static_pad(c->depay, "sink");
+    if (!gst_pad_is_linked(sinkPad))
+        gst_pad_link(pad, sinkPad);
+    gst_object_unref(sinkPad);
+}
+
+// Decode CPU time: mark the thread's CPU clock as an access unit enters the decoder.
+GstPadProbeReturn onDecoderInput(GstPad*, GstPadProbeInfo*, gpointer) {
+    t_decodeStartNs = threadCpuNs();
+    return GST_PAD_PROBE_OK;
+}
+
+// A decoded frame: copied into a QImage, its capture time code read, handed to the shared state.
+GstFlowReturn onNewSample(GstAppSink* appsink, gpointer p) {
+    auto* c = static_cast<PipelineContext*>(p);
+    GstSample* sample = gst_app_sink_pull_sample(appsink);
+    if (!sample)
+        return GST_FLOW_OK;
+    GstBuffer* buf = gst_sample_get_buffer(sample);
+    GstVideoInfo info;
+    GstMapInfo map;
+    if (!buf || !gst_video_info_from_caps(&info, gst_sample_get_caps(sample)) ||
+        !gst_buffer_map(buf, &map, GST_MAP_READ)) {
+        gst_sample_unref(sample);
+        return GST_FLOW_OK;
+    }
+    const int w = GST_VIDEO_INFO_WIDTH(&info), h = GST_VIDEO_INFO_HEIGHT(&info);
+    const int stride = GST_VIDEO_INFO_PLANE_STRIDE(&info, 0);
+    QImage img(w, h, QImage::Format_RGB32);
+    if (!img.isNull() && std::size_t(stride) * std::size_t(h) <= map.size) {
+        for (int y = 0; y < h; ++y)
+            std::memcpy(img.scanLine(y), map.data + std::size_t(y) * stride, std::size_t(w) * 4);
+    }
+    gst_buffer_unmap(buf, &map);
+    gst_sample_unref(sample);
+    if (img.isNull())
+        return GST_FLOW_OK;
+    const std::int64_t arrival = systemNowUs();
+    // The time code is drawn in luma; in BGRx every channel carries it (green is the one least
+    // disturbed by chroma).
+    std::optional<std::int64_t> capture;
+    if (auto v = timecode::read(img.constBits() + 1, w, h, img.bytesPerLine(), 4))
+        capture = static_cast<std::int64_t>(*v);
+    const std::int64_t cpu = t_decodeStartNs >= 0 ? threadCpuNs() - t_decodeStartNs : -1;
+    t_decodeStartNs = -1;
+    c->shared->frameDecoded(c->generation, std::move(img), arrival, capture, cpu);
+    return GST_FLOW_OK;
+}
+
+// Errors and end of stream come from the streaming threads: handed to the GUI thread, never queued on the
+// bus (nobody pops it).
+GstBusSyncReply onBusMessage(GstBus*, GstMessage* msg, gpointer p) {
+    auto* c = static_cast<PipelineContext*>(p);
+    QString text;
+    if (GST_MESSAGE_TYPE(msg) == GST_MESSAGE_ERROR) {
+        GError* err = nullptr;
+        gst_message_parse_error(msg, &err, nullptr);
+        text = err ? QString::fromUtf8(err->message) : QStringLiteral("error");
+        if (err)
+            g_error_free(err);
+    } else if (GST_MESSAGE_TYPE(msg) == GST_MESSAGE_EOS) {
+        text = QStringLiteral("end of stream");
+    } else {
+        return GST_BUS_DROP;
+    }
+    c->shared->busProblem(c->generation, text);
+    return GST_BUS_DROP;
+}
+
+// The callbacks of pipeline `generation`, each with its own context (freed with the callback).
+void connectCallbacks(const Elements& e, const std::shared_ptr<VideoPlayer::Shared>& shared,
+                      std::uint64_t generation) {
+    g_signal_connect_data(
+        e.src, "pad-added", G_CALLBACK(onPadAdded), new PipelineContext{shared, generation, e.depay},
+        +[](gpointer p, GClosure*) { destroyContext(p); }, GConnectFlags(0));
+    GstPad* decSink = gst_element_get_static_pad(e.dec, "sink");
+    gst_pad_add_probe(decSink, GST_PAD_PROBE_TYPE_BUFFER, onDecoderInput, nullptr, nullptr);
+    gst_object_unref(decSink);
+    GstAppSinkCallbacks cbs{};
+    cbs.new_sample = onNewSample;
+    gst_app_sink_set_callbacks(GST_APP_SINK(e.sink), &cbs, new PipelineContext{shared, generation, e.depay},
+                               destroyContext);
+    GstBus* bus = gst_element_get_bus(e.pipe);
+    gst_bus_set_sync_handler(bus, onBusMessage, new PipelineContext{shared, generation, e.depay},
+                             destroyContext);
+    gst_object_unref(bus);
 }
 
 } // namespace
@@ -238,181 +426,24 @@ void VideoPlayer::startPipeline() {
         m_shared->lastError.clear();
     }
 
-    GstElement* pipe = gst_pipeline_new("ocu-video");
-    GstElement* src = gst_element_factory_make("rtspsrc", "src");
-    GstElement* depay = gst_element_factory_make("rtph264depay", "depay");
-    GstElement* parse = gst_element_factory_make("h264parse", "parse");
-    GstElement* dec = gst_element_factory_make("avdec_h264", "dec");
-    GstElement* conv = gst_element_factory_make("videoconvert", "conv");
-    GstElement* sink = gst_element_factory_make("appsink", "sink");
-    if (!pipe || !src || !depay || !parse || !dec || !conv || !sink) {
-        for (GstElement* e : {pipe, src, depay, parse, dec, conv, sink})
-            if (e)
-                gst_object_unref(e);
+    Elements e{};
+    if (!makeElements(e)) {
         m_error = tr("GStreamer elements missing");
         lose(m_error);
         return;
     }
-    const QByteArray url = m_url.toUtf8();
-    g_object_set(src, "location", url.constData(), "latency", guint(std::max(0, m_latencyMs)),
-                 "drop-on-latency", TRUE, "do-retransmission", FALSE, "tcp-timeout", guint64(2000000),
-                 "timeout", guint64(2000000), nullptr);
-    if (m_transport == Transport::Tcp)
-        gst_util_set_object_arg(G_OBJECT(src), "protocols", "tcp");
-    else if (m_transport == Transport::Udp)
-        gst_util_set_object_arg(G_OBJECT(src), "protocols", "udp");
-    // One decoder thread: no frame-threading delay (each frame comes out as its access unit goes in), and
-    // its CPU time is measurable on the streaming thread. Corrupt frames (before the first key frame after
-    // a loss) are dropped rather than shown.
-    g_object_set(dec, "max-threads", 1, "output-corrupt", FALSE, nullptr);
-    GstCaps* caps = gst_caps_new_simple("video/x-raw", "format", G_TYPE_STRING, "BGRx", nullptr);
-    g_object_set(sink, "caps", caps, "drop", TRUE, "max-buffers", guint(1), "sync", FALSE, "emit-signals",
-                 FALSE, "enable-last-sample", FALSE, nullptr);
-    gst_caps_unref(caps);
-    gst_bin_add_many(GST_BIN(pipe), src, depay, parse, dec, conv, sink, nullptr);
-    if (!gst_element_link_many(depay, parse, dec, conv, sink, nullptr)) {
-        gst_object_unref(pipe);
+    configureElements(e, m_url.toUtf8(), m_latencyMs, m_transport);
+    gst_bin_add_many(GST_BIN(e.pipe), e.src, e.depay, e.parse, e.dec, e.conv, e.sink, nullptr);
+    if (!gst_element_link_many(e.depay, e.parse, e.dec, e.conv, e.sink, nullptr)) {
+        gst_object_unref(e.pipe);
         m_error = tr("cannot link the video pipeline");
         lose(m_error);
         return;
     }
-
-    // rtspsrc's pads appear once the stream is described: link the H.264 video one.
-    auto* padCtx = new PipelineContext{m_shared, generation, depay};
-    g_signal_connect_data(
-        src, "pad-added", G_CALLBACK(+[](GstElement*, GstPad* pad, gpointer p) {
-            auto* c = static_cast<PipelineContext*>(p);
-            GstCaps* pc = gst_pad_get_current_caps(pad);
-            if (!pc)
-                pc = gst_pad_query_caps(pad, nullptr);
-            bool h264 = false;
-            QString encoding;
-            if (pc && gst_caps_get_size(pc) > 0) {
-                const GstStructure* st = gst_caps_get_structure(pc, 0);
-                const gchar* media = gst_structure_get_string(st, "media");
-                const gchar* enc = gst_structure_get_string(st, "encoding-name");
-                encoding = QString::fromUtf8(enc ? enc : "?");
-                h264 = media && g_str_equal(media, "video") && enc && g_ascii_strcasecmp(enc, "H264") == 0;
-            }
-            if (pc)
-                gst_caps_unref(pc);
-            if (!h264) {
-                std::lock_guard lock(c->shared->mutex);
-                c->shared->lastError = QStringLiteral("stream encoding %1 is not H.264").arg(encoding);
-                return;
-            }
-            GstPad* sinkPad = gst_element_get_static_pad(c->depay, "sink");
-            if (!gst_pad_is_linked(sinkPad))
-                gst_pad_link(pad, sinkPad);
-            gst_object_unref(sinkPad);
-        }),
-        padCtx, +[](gpointer p, GClosure*) { destroyContext(p); }, GConnectFlags(0));
-
-    // Decode CPU time: mark the thread's CPU clock as an access unit enters the decoder.
-    GstPad* decSink = gst_element_get_static_pad(dec, "sink");
-    gst_pad_add_probe(
-        decSink, GST_PAD_PROBE_TYPE_BUFFER,
-        +[](GstPad*, GstPadProbeInfo*, gpointer) -> GstPadProbeReturn {
-            t_decodeStartNs = threadCpuNs();
-            return GST_PAD_PROBE_OK;
-        },
-        nullptr, nullptr);
-    gst_object_unref(decSink);
-
-    GstAppSinkCallbacks cbs{};
-    cbs.new_sample = +[](GstAppSink* appsink, gpointer p) -> GstFlowReturn {
-        auto* c = static_cast<PipelineContext*>(p);
-        GstSample* sample = gst_app_sink_pull_sample(appsink);
-        if (!sample)
-            return GST_FLOW_OK;
-        GstBuffer* buf = gst_sample_get_buffer(sample);
-        GstVideoInfo info;
-        GstMapInfo map;
-        if (!buf || !gst_video_info_from_caps(&info, gst_sample_get_caps(sample)) ||
-            !gst_buffer_map(buf, &map, GST_MAP_READ)) {
-            gst_sample_unref(sample);
-            return GST_FLOW_OK;
-        }
-        const int w = GST_VIDEO_INFO_WIDTH(&info), h = GST_VIDEO_INFO_HEIGHT(&info);
-        const int stride = GST_VIDEO_INFO_PLANE_STRIDE(&info, 0);
-        QImage img(w, h, QImage::Format_RGB32);
-        if (!img.isNull() && std::size_t(stride) * std::size_t(h) <= map.size) {
-            for (int y = 0; y < h; ++y)
-                std::memcpy(img.scanLine(y), map.data + std::size_t(y) * stride, std::size_t(w) * 4);
-        }
-        gst_buffer_unmap(buf, &map);
-        gst_sample_unref(sample);
-        if (img.isNull())
-            return GST_FLOW_OK;
-        const std::int64_t arrival = systemNowUs();
-        // The time code is drawn in luma; in BGRx every channel carries it (green is the one least
-        // disturbed by chroma).
-        std::optional<std::int64_t> capture;
-        if (auto v = timecode::read(img.constBits() + 1, w, h, img.bytesPerLine(), 4))
-            capture = static_cast<std::int64_t>(*v);
-        const std::int64_t cpu = t_decodeStartNs >= 0 ? threadCpuNs() - t_decodeStartNs : -1;
-        t_decodeStartNs = -1;
-
-        std::lock_guard lock(c->shared->mutex);
-        Shared& s = *c->shared;
-        if (s.generation != c->generation)
-            return GST_FLOW_OK; // an old pipeline on its way down
-        s.latest.image = std::move(img);
-        s.latest.arrivalUs = arrival;
-        s.latest.captureUs = capture;
-        ++s.latest.number;
-        s.arrivals.push_back(arrival);
-        while (!s.arrivals.empty() && s.arrivals.front() < arrival - 2000000)
-            s.arrivals.pop_front();
-        if (cpu >= 0) {
-            s.decodeNs.push_back(cpu);
-            while (s.decodeNs.size() > 60)
-                s.decodeNs.pop_front();
-        }
-        if (!s.notifyPending && s.owner) {
-            s.notifyPending = true;
-            const std::uint64_t g = c->generation;
-            VideoPlayer* owner = s.owner;
-            s.post([owner, g] { owner->onFrame(g); });
-        }
-        return GST_FLOW_OK;
-    };
-    gst_app_sink_set_callbacks(GST_APP_SINK(sink), &cbs, new PipelineContext{m_shared, generation, depay},
-                               destroyContext);
-
-    // Errors and end of stream come from the streaming threads: handed to the GUI thread, never queued on
-    // the bus (nobody pops it).
-    GstBus* bus = gst_element_get_bus(pipe);
-    gst_bus_set_sync_handler(
-        bus,
-        +[](GstBus*, GstMessage* msg, gpointer p) -> GstBusSyncReply {
-            auto* c = static_cast<PipelineContext*>(p);
-            QString text;
-            if (GST_MESSAGE_TYPE(msg) == GST_MESSAGE_ERROR) {
-                GError* err = nullptr;
-                gst_message_parse_error(msg, &err, nullptr);
-                text = err ? QString::fromUtf8(err->message) : QStringLiteral("error");
-                if (err)
-                    g_error_free(err);
-            } else if (GST_MESSAGE_TYPE(msg) == GST_MESSAGE_EOS) {
-                text = QStringLiteral("end of stream");
-            } else {
-                return GST_BUS_DROP;
-            }
-            std::lock_guard lock(c->shared->mutex);
-            if (c->shared->owner && c->shared->generation == c->generation) {
-                VideoPlayer* owner = c->shared->owner;
-                const std::uint64_t g = c->generation;
-                c->shared->post([owner, g, text] { owner->onBusProblem(g, text); });
-            }
-            return GST_BUS_DROP;
-        },
-        new PipelineContext{m_shared, generation, depay}, destroyContext);
-    gst_object_unref(bus);
-
-    m_pipeline = pipe;
+    connectCallbacks(e, m_shared, generation);
+    m_pipeline = e.pipe;
     // Asynchronous: rtspsrc connects on its own thread; the GUI thread does not wait for the server.
-    if (gst_element_set_state(pipe, GST_STATE_PLAYING) == GST_STATE_CHANGE_FAILURE) {
+    if (gst_element_set_state(e.pipe, GST_STATE_PLAYING) == GST_STATE_CHANGE_FAILURE) {
         m_error = tr("the video pipeline did not start");
         lose(m_error);
     }
