@@ -1,6 +1,6 @@
 #include "app/CompactionSetup.h"
 
-#include "app/HeadlessMonitor.h"
+#include "app/HeadlessCommands.h"
 #include "models/FleetBridge.h"
 #include "models/bridges/OsyrisPassCountLayer.h"
 #include "models/coverage/CompactionSession.h"
@@ -8,6 +8,7 @@
 #include "widgets/coverage/CompactionMapOverlay.h"
 #include "widgets/coverage/CompactionPanel.h"
 
+#include <QPointer>
 #include <QSplitter>
 
 #ifdef OCU_HAVE_OCU_VIEW3D
@@ -41,14 +42,18 @@ CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& fra
         if (!e.isEmpty() && problems)
             *problems << QObject::tr("Compaction design not loaded: %1").arg(e);
     }
-    HeadlessMonitor::setLocalCommand(QStringLiteral("coverage_report"),
-                                     [s](const QJsonObject& cmd) { return s->reportCommand(cmd); });
     return s;
 }
 
-void stopCompaction(CompactionSession* session) {
-    if (session)
-        HeadlessMonitor::setLocalCommand(QStringLiteral("coverage_report"), {});
+void registerCompactionHeadless(HeadlessCommands& table, CompactionSession* session) {
+    if (!session)
+        return;
+    QPointer<CompactionSession> s(session);
+    table.addLocal(QStringLiteral("coverage_report"), [s](const QJsonObject& cmd) {
+        return s ? s->reportCommand(cmd)
+                 : QJsonObject{{QStringLiteral("ok"), false},
+                               {QStringLiteral("message"), QStringLiteral("the compaction job has ended")}};
+    });
 }
 
 void watchCompactionCounts(CompactionSession* session, QObject* fleetBridge) {

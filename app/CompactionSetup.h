@@ -12,13 +12,15 @@ class QWidget;
 namespace ocu {
 
 class CompactionSession;
+class HeadlessCommands;
 class PassCountLayer;
 class SiteMapView;
 
 // nullptr in a build without the coverage module. Problems (design not readable) are appended to problems.
 CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& frame,
                                    const PassCountLayer* layer, QObject* parent, QStringList* problems);
-void stopCompaction(CompactionSession* session); // unregisters the headless command
+// The headless "coverage_report" command of the session (nothing when session is nullptr).
+void registerCompactionHeadless(HeadlessCommands& table, CompactionSession* session);
 // The session's countsChanged() follows the bridge's passCountChanged() (the areas table refreshes).
 void watchCompactionCounts(CompactionSession* session, QObject* fleetBridge);
 // The pass-count panel with the areas panel beside it (the panel itself when session is nullptr).

@@ -1,15 +1,10 @@
 #include "app/HeadlessMonitor.h"
-#include "app/ShiftReportCommand.h"
-#include "models/MachineJson.h"
 
 #include "models/AlarmModel.h"
-#include "models/AutoDispatcher.h"
-#include "models/CommandGate.h"
-
 #include "models/FleetBridge.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
-#include <QJsonArray>
+#include "models/MachineJson.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -17,8 +12,6 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonParseError>
-#include <QSocketNotifier>
-#include <QUuid>
 
 #include "protocols/common/ThreadPriority.h"
 
@@ -29,8 +22,19 @@
 namespace ocu {
 
 HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, CommandGate* stop, QObject* parent)
-    : QObject(parent), m_fleet(fleet), m_alarms(alarms), m_gate(stop) {
+    : QObject(parent), m_fleet(fleet), m_alarms(alarms), m_gate(stop),
+      m_commands(stop, [this](const QByteArray& line) { writeResultLine(line); }) {
     m_clock.start();
+    m_commands.setSettledHandler([this] { maybeFinishInput(); });
+    m_commands.addLocal(QStringLiteral("list"), [this](const QJsonObject&) {
+        printAll();
+        return QJsonObject{{QStringLiteral("ok"), true},
+                           {QStringLiteral("message"),
+                            QStringLiteral("%1 machines").arg(m_fleet ? m_fleet->rowCount() : 0)}};
+    });
+    // Rejects per link and reason.
+    m_commands.addLocal(QStringLiteral("counters"),
+                        [this](const QJsonObject&) { return linkCountersFields(m_bridges); });
     if (fleet) {
         connect(fleet, &FleetModel::machinesChanged, this, &HeadlessMonitor::onMachinesChanged);
         connect(fleet, &FleetModel::machineStaleChanged, this,
@@ -105,8 +109,10 @@ void HeadlessMonitor::addBridge(FleetBridge* bridge) {
 }
 
 void HeadlessMonitor::writeLine(const QJsonObject& o) {
-    QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
-    line += '\n';
+    writeRaw(QJsonDocument(o).toJson(QJsonDocument::Compact) + '\n');
+}
+
+void HeadlessMonitor::writeRaw(const QByteArray& line) {
     QIODevice* out = m_out.data();
     if (!out) {
         if (!m_stdout) {
@@ -119,6 +125,11 @@ void HeadlessMonitor::writeLine(const QJsonObject& o) {
     out->write(line);
     if (auto* f = qobject_cast<QFile*>(out))
         f->flush();
+}
+
+void HeadlessMonitor::writeResultLine(const QByteArray& line) {
+    writeRaw(line + '\n');
+    emit commandHandled(line);
 }
 
 QJsonObject HeadlessMonitor::machineJson(const MachineState& m, bool stale, qint64 ageMs) const {
@@ -221,68 +232,8 @@ void HeadlessMonitor::onEvent(const FleetEvent& e) {
     writeLine(o);
 }
 
-QByteArray HeadlessMonitor::result(const QJsonObject& cmd, bool ok, const QString& message) {
-    CommandResult r;
-    r.ok = ok;
-    r.message = message;
-    return result(cmd, r, false);
-}
-
-QByteArray HeadlessMonitor::result(const QJsonObject& cmd, const CommandResult& r, bool withTargets) {
-    QJsonObject o;
-    o[QStringLiteral("type")] = QStringLiteral("result");
-    QString name = cmd.value(QStringLiteral("cmd")).toString();
-    if (name.isEmpty())
-        name = cmd.value(QStringLiteral("command")).toString();
-    o[QStringLiteral("cmd")] = name;
-    if (cmd.contains(QStringLiteral("req")))
-        o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
-    if (cmd.contains(QStringLiteral("id")))
-        o[QStringLiteral("id")] = cmd.value(QStringLiteral("id"));
-    if (cmd.value(QStringLiteral("tasks")).isArray()) // assign: the tasks with their AssignmentIds
-        o[QStringLiteral("tasks")] = cmd.value(QStringLiteral("tasks"));
-    o[QStringLiteral("ok")] = r.ok;
-    if (withTargets) {
-        // What went on the wire, per target.
-        o[QStringLiteral("targets")] = targetsToJson(r.targets);
-    }
-    o[QStringLiteral("message")] = r.message;
-    writeLine(o);
-    QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
-    emit commandHandled(line);
-    return line;
-}
-
-QByteArray HeadlessMonitor::viaGate(const QJsonObject& cmd,
-                                    const std::function<void(CommandGate::ResultHandler)>& issue,
-                                    const QString& suffix) {
-    // The gate answers when every stack reported its outcome (or its deadline passed): the result line is
-    // written then. When every bridge decided at once, the line is also returned here.
-    struct Call {
-        bool inCall = true;
-        QByteArray line;
-    };
-    auto call = std::make_shared<Call>();
-    ++m_pendingResults;
-    QPointer<HeadlessMonitor> self(this);
-    issue([self, call, cmd, suffix](const CommandResult& r) {
-        if (!self)
-            return;
-        CommandResult shown = r;
-        if (!r.ok && !suffix.isEmpty())
-            shown.message += suffix;
-        const QByteArray line = self->result(cmd, shown, true);
-        if (call->inCall)
-            call->line = line;
-        --self->m_pendingResults;
-        self->maybeFinishInput();
-    });
-    call->inCall = false;
-    return call->line;
-}
-
 void HeadlessMonitor::maybeFinishInput() {
-    if (m_inputEnded && m_pendingResults == 0 && !m_finishedSignalled) {
+    if (m_inputEnded && m_commands.pendingResults() == 0 && !m_finishedSignalled) {
         m_finishedSignalled = true;
         emit inputFinished();
     }
@@ -293,24 +244,7 @@ bool HeadlessMonitor::isStopAll(const QByteArray& raw) {
     const QJsonDocument doc = QJsonDocument::fromJson(raw.trimmed());
     if (!doc.isObject())
         return false;
-    const QJsonObject cmd = doc.object();
-    QString name = cmd.value(QStringLiteral("cmd")).toString();
-    if (name.isEmpty())
-        name = cmd.value(QStringLiteral("command")).toString();
-    return name == QLatin1String("stop_all");
-}
-
-// Commands of other parts of the console, by name.
-static QHash<QString, HeadlessMonitor::LocalCommand>& localCommands() {
-    static QHash<QString, HeadlessMonitor::LocalCommand> commands;
-    return commands;
-}
-
-void HeadlessMonitor::setLocalCommand(const QString& name, LocalCommand f) {
-    if (f)
-        localCommands().insert(name, std::move(f));
-    else
-        localCommands().remove(name);
+    return HeadlessCommands::nameOf(doc.object()) == QLatin1String("stop_all");
 }
 
 QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
@@ -318,213 +252,16 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw) {
 }
 
 QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<EarlyStop> early) {
-    if (early && !isStopAll(raw))
-        early.reset(); // cannot happen (the reader asked the same question): never attach it elsewhere
     const QByteArray line = raw.trimmed();
     if (line.isEmpty())
         return {};
     QJsonParseError err{};
     const QJsonDocument doc = QJsonDocument::fromJson(line, &err);
     if (err.error != QJsonParseError::NoError || !doc.isObject())
-        return result({}, false,
-                      err.error != QJsonParseError::NoError
-                          ? QStringLiteral("invalid JSON: %1").arg(err.errorString())
-                          : QStringLiteral("a command must be a JSON object"));
-    const QJsonObject cmd = doc.object();
-    QString name = cmd.value(QStringLiteral("cmd")).toString();
-    if (name.isEmpty())
-        name = cmd.value(QStringLiteral("command")).toString();
-    const QString id = cmd.value(QStringLiteral("id")).toString();
-    if (name == QLatin1String("list")) {
-        printAll();
-        return result(cmd, true, QStringLiteral("%1 machines").arg(m_fleet ? m_fleet->rowCount() : 0));
-    }
-    if (name == QLatin1String("counters")) // rejects per link and reason
-        return countersResult(cmd);
-    if (auto q = m_queries.constFind(name); q != m_queries.constEnd()) { // module queries
-        QJsonObject o = (*q)(cmd);
-        o[QStringLiteral("type")] = QStringLiteral("result");
-        o[QStringLiteral("cmd")] = name;
-        if (cmd.contains(QStringLiteral("req")))
-            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
-        writeLine(o);
-        QByteArray out = QJsonDocument(o).toJson(QJsonDocument::Compact);
-        emit commandHandled(out);
-        return out;
-    }
-    if (!m_gate)
-        return result(cmd, false, QStringLiteral("no stop controller"));
-    const QString origin = QStringLiteral("headless");
-    CommandGate* gate = m_gate;
-    if (name == QLatin1String("stop_all"))
-        return viaGate(cmd,
-                       [&](CommandGate::ResultHandler h) { gate->stopAll(origin, std::move(h), early); });
-    if (name == QLatin1String("stop")) {
-        if (id.isEmpty())
-            return result(cmd, false, QStringLiteral("missing \"id\""));
-        return viaGate(cmd,
-                       [&](CommandGate::ResultHandler h) { gate->stopMachine(id, origin, std::move(h)); });
-    }
-    if (name == QLatin1String("clear_stop")) {
-        if (id.isEmpty())
-            return result(cmd, false, QStringLiteral("missing \"id\""));
-        // The scripted equivalent of the GUI's deliberate hold: an explicit "confirm": true.
-        if (cmd.value(QStringLiteral("confirm")).toBool(false) != true)
-            return viaGate(
-                cmd,
-                [&](CommandGate::ResultHandler h) { gate->clearStop(id, QString(), origin, std::move(h)); },
-                QStringLiteral(" (add \"confirm\": true)")); // audited refusal
-        return viaGate(cmd, [&](CommandGate::ResultHandler h) {
-            gate->clearStop(id, gate->requestClearToken(id), origin, std::move(h));
-        });
-    }
-    if (name == QLatin1String("assign") || name == QLatin1String("reset_assignment") ||
-        name == QLatin1String("production"))
-        return dispatchCommand(name, cmd);
-    // Commands answered in this process (no gate round trip): the result line as the command's reply.
-    const auto localResult = [&](QJsonObject o) {
-        o[QStringLiteral("type")] = QStringLiteral("result");
-        o[QStringLiteral("cmd")] = name;
-        if (cmd.contains(QStringLiteral("req")))
-            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
-        writeLine(o);
-        QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
-        emit commandHandled(line);
-        return line;
-    };
-    if (name == QLatin1String("auto_dispatch")) // models/AutoDispatcher.h
-        return localResult(AutoDispatcher::command(m_gate->bridges(), cmd, origin));
-    if (const auto local = localCommands().find(name); local != localCommands().end())
-        return localResult(local.value()(cmd));
-    if (name == QLatin1String("shift_report")) { // app/ShiftReportCommand.h
-        ShiftReportRequest r{cmd.value(QStringLiteral("pdf")).toString(),
-                             cmd.value(QStringLiteral("csv")).toString(), std::nullopt,
-                             cmd.value(QStringLiteral("site")).toString()};
-        if (cmd.contains(QStringLiteral("plan_tonnes")))
-            r.planTonnes = cmd.value(QStringLiteral("plan_tonnes")).toDouble();
-        QJsonObject o = writeShiftReport(m_gate->bridges(), m_fleet, r);
-        o[QStringLiteral("type")] = QStringLiteral("result");
-        o[QStringLiteral("cmd")] = name;
-        if (cmd.contains(QStringLiteral("req")))
-            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
-        writeLine(o);
-        QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
-        emit commandHandled(line);
-        return line;
-    }
-    const bool forProtocol = id.isEmpty() && cmd.contains(QStringLiteral("protocol"));
-    if (m_protocolCommands.contains(name) || (!name.isEmpty() && (m_gate->bridgeFor(id) || forProtocol))) {
-        if (id.isEmpty() && !forProtocol)
-            return result(cmd, false, QStringLiteral("missing \"id\""));
-        return viaGate(cmd,
-                       [&](CommandGate::ResultHandler h) { gate->command(name, cmd, origin, std::move(h)); });
-    }
-    return result(cmd, false,
-                  name.isEmpty() ? QStringLiteral("missing \"cmd\"")
-                                 : QStringLiteral("unknown command %1").arg(name));
-}
-
-// ---- Dispatch (ISO 23725 haul trucks) ----
-// assign / reset_assignment go through the gate to the bridge owning "id" (audited; the result lists the
-// truck as its target, sent only when the socket took the request). production answers from the bridges'
-// dispatch views (what the trucks reported), without touching the wire.
-QByteArray HeadlessMonitor::dispatchCommand(const QString& name, const QJsonObject& cmd) {
-    const QString id = cmd.value(QStringLiteral("id")).toString();
-    if (name == QLatin1String("production")) {
-        QJsonArray trucks;
-        int sources = 0;
-        for (FleetBridge* b : m_gate->bridges()) {
-            QJsonArray part;
-            if (!b || b->metaObject()->indexOfMethod("productionJson()") < 0 ||
-                !QMetaObject::invokeMethod(b, "productionJson", Qt::DirectConnection,
-                                           Q_RETURN_ARG(QJsonArray, part)))
-                continue;
-            ++sources;
-            for (const auto& t : part)
-                if (id.isEmpty() || t.toObject().value(QStringLiteral("id")).toString() == id)
-                    trucks << t;
-        }
-        QJsonObject o;
-        o[QStringLiteral("type")] = QStringLiteral("result");
-        o[QStringLiteral("cmd")] = name;
-        if (cmd.contains(QStringLiteral("req")))
-            o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
-        o[QStringLiteral("ok")] = sources > 0;
-        o[QStringLiteral("trucks")] = trucks;
-        o[QStringLiteral("message")] = sources > 0 ? QStringLiteral("%1 trucks").arg(trucks.size())
-                                                   : QStringLiteral("no ISO 23725 bridge in this console");
-        writeLine(o);
-        QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
-        emit commandHandled(line);
-        return line;
-    }
-    if (id.isEmpty())
-        return result(cmd, false, QStringLiteral("missing \"id\""));
-    QJsonObject args = cmd;
-    if (name == QLatin1String("assign")) {
-        // The shorthand (one task at the top level) becomes "tasks"; every task gets its AssignmentId here so
-        // the result line names them.
-        QJsonArray tasks = cmd.value(QStringLiteral("tasks")).isArray()
-                               ? cmd.value(QStringLiteral("tasks")).toArray()
-                               : QJsonArray();
-        if (!cmd.contains(QStringLiteral("tasks"))) {
-            QJsonObject one;
-            for (const char* k : {"task", "destination", "equipment", "spot", "route", "assignment_id"})
-                if (cmd.contains(QLatin1String(k)))
-                    one[QLatin1String(k)] = cmd.value(QLatin1String(k));
-            tasks << one;
-        }
-        for (int i = 0; i < tasks.size(); ++i)
-            if (tasks[i].isObject() && !tasks[i].toObject().contains(QStringLiteral("assignment_id"))) {
-                QJsonObject t = tasks[i].toObject();
-                t[QStringLiteral("assignment_id")] = QUuid::createUuid().toString(QUuid::WithoutBraces);
-                tasks[i] = t;
-            }
-        if (cmd.contains(QStringLiteral("tasks")) && !cmd.value(QStringLiteral("tasks")).isArray())
-            args[QStringLiteral("tasks")] = cmd.value(QStringLiteral("tasks")); // the bridge says why
-        else
-            args[QStringLiteral("tasks")] = tasks;
-    }
-    CommandGate* gate = m_gate;
-    const QString origin = QStringLiteral("headless");
-    return viaGate(args,
-                   [&](CommandGate::ResultHandler h) { gate->command(name, args, origin, std::move(h)); });
-}
-
-// ---- {"cmd":"counters"} ----
-QByteArray HeadlessMonitor::countersResult(const QJsonObject& cmd) {
-    QJsonArray links;
-    for (const QPointer<FleetBridge>& b : std::as_const(m_bridges)) {
-        if (!b)
-            continue;
-        for (const LinkCounters& c : b->linkCounters()) {
-            QJsonObject rejected;
-            for (auto it = c.rejected.begin(); it != c.rejected.end(); ++it)
-                rejected[it.key()] = double(it.value());
-            QJsonObject all;
-            for (auto it = c.all.begin(); it != c.all.end(); ++it)
-                all[it.key()] = double(it.value());
-            QJsonObject l;
-            l[QStringLiteral("protocol")] = toText(b->protocol());
-            l[QStringLiteral("link")] = c.link;
-            l[QStringLiteral("rejected_total")] = double(c.rejectedTotal());
-            l[QStringLiteral("rejected")] = rejected;
-            l[QStringLiteral("counters")] = all;
-            links.append(l);
-        }
-    }
-    QJsonObject o;
-    o[QStringLiteral("type")] = QStringLiteral("result");
-    o[QStringLiteral("cmd")] = QStringLiteral("counters");
-    if (cmd.contains(QStringLiteral("req")))
-        o[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
-    o[QStringLiteral("ok")] = true;
-    o[QStringLiteral("message")] = QStringLiteral("%1 links").arg(links.size());
-    o[QStringLiteral("links")] = links;
-    writeLine(o);
-    const QByteArray line = QJsonDocument(o).toJson(QJsonDocument::Compact);
-    emit commandHandled(line);
-    return line;
+        return m_commands.refuse({}, err.error != QJsonParseError::NoError
+                                         ? QStringLiteral("invalid JSON: %1").arg(err.errorString())
+                                         : QStringLiteral("a command must be a JSON object"));
+    return m_commands.execute(doc.object(), std::move(early));
 }
 
 void HeadlessMonitor::consumeInput(const QByteArray& chunk) {
@@ -537,13 +274,8 @@ void HeadlessMonitor::consumeInput(const QByteArray& chunk) {
     }
     if (m_inBuf.size() > 1 << 20) { // a runaway line without newline: drop it, say so
         m_inBuf.clear();
-        result({}, false, QStringLiteral("input line too long (over 1 MiB), dropped"));
+        m_commands.refuse({}, QStringLiteral("input line too long (over 1 MiB), dropped"));
     }
-}
-
-void HeadlessMonitor::addProtocolCommands(const QStringList& names) {
-    for (const QString& n : names)
-        m_protocolCommands.insert(n);
 }
 
 bool HeadlessMonitor::startStdin() {
@@ -603,7 +335,7 @@ bool HeadlessMonitor::event(QEvent* e) {
         handleLine(in->line, std::move(in->early));
         break;
     case StdinEvent::TooLong:
-        result({}, false, QStringLiteral("input line too long (over 1 MiB), dropped"));
+        m_commands.refuse({}, QStringLiteral("input line too long (over 1 MiB), dropped"));
         break;
     case StdinEvent::End:
         m_inputEnded = true;
@@ -622,10 +354,6 @@ void HeadlessMonitor::setInput(QIODevice* in) {
         m_inputEnded = true;
         maybeFinishInput();
     });
-}
-
-void HeadlessMonitor::addQuery(const QString& name, QueryHandler handler) {
-    m_queries.insert(name, std::move(handler));
 }
 
 } // namespace ocu

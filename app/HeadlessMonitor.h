@@ -12,31 +12,21 @@
 //   {"type":"machine_removed","id":..}
 //   {"type":"link","protocol":..,"link":..,"state":..,"age_ms":..,"detail":..}
 //   {"type":"event","time":..,"severity":..,"kind":..,"machine":..,"source":..,"text":..}
-//   {"type":"result","cmd":..,"req":<echoed>,"ok":true|false,"targets":[{"id":"jaus:126","sent":true},
-//    {"id":"iso23725 link ahs","sent":false,"reason":"link ahs is down"}],"message":..}
+//   {"type":"result","cmd":..,"req":<echoed>,"id":<echoed>,"ok":true|false,"targets":[{"id":"jaus:126",
+//    "sent":true},{"id":"iso23725 link ahs","sent":false,"reason":"link ahs is down"}],"message":..}
 //   Commands that reach the command gate carry "targets" (what went on the wire, per machine or link) and are
 //   answered when final: once every stack reported, or after the gate's deadline ("stack did not answer").
 //   "ok" only when there was a target and every target was sent.
-// Commands ("cmd" or "command" key; optional "req" is echoed):
-//   {"cmd":"stop_all"}  {"cmd":"stop","id":..}  {"cmd":"clear_stop","id":..,"confirm":true}
-//   {"cmd":"request_control","id":..}  {"cmd":"release_control","id":..}
-//   {"cmd":"drive","id":..,"mode":"velocity|effort","linear":..,"angular":..,"duration":..}  {"cmd":"list"}
-//   {"cmd":"drive_start","id":..}  {"cmd":"drive_stop","id":..,"reason":..} (JAUS drive session)
-//   {"cmd":"assign","id":"iso23725:<guid>","tasks":[{"task":"Load","destination":4201,"route":[2001]},..]}
-//   (or one task's keys at the top level; the result echoes "tasks" with their "assignment_id")
-//   {"cmd":"reset_assignment","id":"iso23725:<guid>"}  {"cmd":"production"} (result "trucks": dispatch views)
-//   {"cmd":"shift_report","pdf":"shift.pdf","csv":"shift.csv","plan_tonnes":30000} (either file may be left
-//   out; result "written":{"pdf":true,"csv":true}, "loads", "tonnes", "cycles"; ok only when all were
-//   written)
-//   {"cmd":"auto_dispatch","on":true|false} (without "on": the state): the automatic dispatcher
-//   (models/AutoDispatcher.h); result "on", "dispatchers":[{"bridge","on","sent","last"}]
-//   {"cmd":"coverage_report","pdf":"c.pdf","csv":"c.csv","geotiff":"c.tif","area":"Lot 1","lift":-1}
-//   (models/coverage/CompactionSession; result "written":{"pdf","csv","geotiff"}, "errors")
+// Commands ("cmd" or "command" key; optional "req" is echoed), in the table of app/HeadlessCommands.h:
+//   {"cmd":"stop_all"}  {"cmd":"stop","id":..}  {"cmd":"clear_stop","id":..,"confirm":true}  {"cmd":"list"}
 //   {"cmd":"counters"}: one result line with every stack's counters per link:
 //     {"type":"result","cmd":"counters","ok":true,"message":"3 links","links":[{"protocol":"osyris",
 //      "link":"osyris:239.255.0.1:5000","rejected_total":4,"rejected":{"rejected.too_short":3,
 //      "implausible.speed":1},"counters":{"rx.datagrams":120,...}}, ...]}
-#include "models/CommandGate.h"
+//   and those the protocol modules register (ProtocolModule::registerHeadless, e.g.
+//   app/modules/IsoHeadless.h, app/modules/JausVideoHeadless.h) and the compaction job ("coverage_report",
+//   app/CompactionSetup.h).
+#include "app/HeadlessCommands.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
@@ -82,19 +72,8 @@ public:
     void setRateLimitMs(int ms);
     int rateLimitMs() const { return m_rateMs; }
     void addBridge(FleetBridge* bridge);
-    // Commands answered by another part of the console (e.g. "coverage_report" by the compaction
-    // session): f(cmd) returns the result's fields ("ok", "message", ...). GUI thread; remove when gone.
-    using LocalCommand = std::function<QJsonObject(const QJsonObject&)>;
-    static void setLocalCommand(const QString& name, LocalCommand f); // an empty f removes it
-    // Commands a protocol module adds (e.g. JAUS request_control): routed to the bridge of the machine named
-    // by "id" (or of the "protocol"), and answered with "missing \"id\"" when both are absent.
-    void addProtocolCommands(const QStringList& names);
-
-    // A read-only query a module answers itself (not through the command gate, not audited), e.g.
-    // {"cmd":"video_status"}: the handler returns the result's fields ("ok", "message", ...); the monitor
-    // adds "type", "cmd" and "req".
-    using QueryHandler = std::function<QJsonObject(const QJsonObject& cmd)>;
-    void addQuery(const QString& name, QueryHandler handler);
+    // The command table (app/HeadlessCommands.h): modules add their commands and queries to it.
+    HeadlessCommands& commands() { return m_commands; }
 
     // Read commands from stdin; inputFinished() at end of input. A reader thread (raised priority where the
     // console enabled it, ThreadPriority.h) hands what it reads to this object as high-priority events, so a
@@ -111,7 +90,7 @@ public:
     // is also returned when it was final at once (otherwise an empty array).
     QByteArray handleLine(const QByteArray& line);
     // Gate commands whose result line is not written yet.
-    int pendingResults() const { return m_pendingResults; }
+    int pendingResults() const { return m_commands.pendingResults(); }
 
     // Prints one line for every machine now.
     void printAll();
@@ -131,18 +110,13 @@ private:
     void flushPending();
     void printMachine(const QString& id);
     void writeLine(const QJsonObject& o);
+    void writeRaw(const QByteArray& line); // one line with its newline
+    void writeResultLine(const QByteArray& line);
     void consumeInput(const QByteArray& chunk);
     QJsonObject machineJson(const MachineState& m, bool stale, qint64 ageMs) const;
-    QByteArray result(const QJsonObject& cmd, bool ok, const QString& message);
-    // Assign, reset_assignment, production (ISO 23725 dispatch).
-    QByteArray dispatchCommand(const QString& name, const QJsonObject& cmd);
-    QByteArray result(const QJsonObject& cmd, const CommandResult& r, bool withTargets);
     QByteArray handleLine(const QByteArray& line, std::shared_ptr<EarlyStop> early);
     static bool isStopAll(const QByteArray& line);
-    QByteArray viaGate(const QJsonObject& cmd, const std::function<void(CommandGate::ResultHandler)>& issue,
-                       const QString& suffix = {});
     void maybeFinishInput();
-    QByteArray countersResult(const QJsonObject& cmd);
 
     QPointer<FleetModel> m_fleet;
     QPointer<AlarmModel> m_alarms;
@@ -159,15 +133,13 @@ private:
     QHash<QString, Printed> m_printed;
     QSet<QString> m_pending;
     QHash<QString, QString> m_linkSig;
-    QSet<QString> m_protocolCommands;
     QList<QPointer<FleetBridge>> m_bridges; // for {"cmd":"counters"}
     QByteArray m_inBuf;
     std::thread m_stdinThread;
     std::atomic<bool> m_stdinStop{false};
-    int m_pendingResults = 0;
     bool m_inputEnded = false;
     bool m_finishedSignalled = false;
-    QHash<QString, QueryHandler> m_queries;
+    HeadlessCommands m_commands;
 };
 
 } // namespace ocu

@@ -8,16 +8,9 @@
 
 namespace ocu {
 
-QJsonObject writeShiftReport(const QVector<FleetBridge*>& bridges, FleetModel* fleet,
+QJsonObject writeShiftReport(ProductionModel* model, const FleetBridge* mapSource, FleetModel* fleet,
                              const ShiftReportRequest& r) {
     QJsonObject o;
-    ProductionModel* model = nullptr;
-    FleetBridge* owner = nullptr;
-    for (FleetBridge* b : bridges)
-        if (b && (model = b->findChild<ProductionModel*>())) {
-            owner = b;
-            break;
-        }
     QJsonObject written{{QStringLiteral("pdf"), false}, {QStringLiteral("csv"), false}};
     QJsonArray errors;
     if (!model) {
@@ -32,7 +25,8 @@ QJsonObject writeShiftReport(const QVector<FleetBridge*>& bridges, FleetModel* f
     if (r.planTonnes)
         model->setPlanTonnes(*r.planTonnes);
     if (!r.pdf.isEmpty()) {
-        const QImage map = renderSiteSnapshot(fleet, owner->siteMap(), QSize(1100, 500));
+        const QImage map =
+            renderSiteSnapshot(fleet, mapSource ? mapSource->siteMap() : SiteMapData{}, QSize(1100, 500));
         const QString e = writeShiftPdf(*model, map, r.siteName, r.pdf);
         if (e.isEmpty())
             written[QStringLiteral("pdf")] = true;

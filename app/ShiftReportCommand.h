@@ -1,9 +1,9 @@
 #pragma once
 // The shift report from the command line and the headless monitor: writes the production
-// model's report (the ISO 23725 bridge's) as PDF and/or CSV and says truthfully what was written.
+// model's report (the one a protocol module offers, ProtocolModule::production()) as PDF and/or CSV and says
+// truthfully what was written.
 #include <QJsonObject>
 #include <QString>
-#include <QVector>
 
 #include <optional>
 
@@ -11,6 +11,7 @@ namespace ocu {
 
 class FleetBridge;
 class FleetModel;
+class ProductionModel;
 
 struct ShiftReportRequest {
     QString pdf; // empty: no PDF
@@ -20,8 +21,9 @@ struct ShiftReportRequest {
 };
 
 // {"ok":..,"message":..,"written":{"pdf":true,"csv":true},"errors":[..],"loads":..,"tonnes":..,"cycles":..}:
-// ok only when a file was asked for and every file asked for was written.
-QJsonObject writeShiftReport(const QVector<FleetBridge*>& bridges, FleetModel* fleet,
+// ok only when a file was asked for and every file asked for was written. model nullptr: none in this
+// console; the PDF's map is mapSource's site map with the fleet's machines.
+QJsonObject writeShiftReport(ProductionModel* model, const FleetBridge* mapSource, FleetModel* fleet,
                              const ShiftReportRequest& r);
 
 } // namespace ocu

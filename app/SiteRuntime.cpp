@@ -202,9 +202,6 @@ void SiteRuntime::stop() {
     if (d.stopped)
         return;
     d.stopped = true;
-#ifdef OCU_HAVE_COVERAGE
-    stopCompaction(d.compaction);
-#endif
     // Stacks first (JAUS releases control after zero drive commands), then the simulators.
     for (const auto& m : d.modules)
         m->stop();
@@ -492,13 +489,19 @@ void SiteRuntime::populate(MainWindow& window) {
         window.statusBar()->showMessage(p, 15000);
 }
 
-int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
+HeadlessMonitor* SiteRuntime::attachHeadless(QIODevice* out) {
     Impl& d = *m_impl;
-    HeadlessMonitor* mon = HeadlessMonitor::attach(d.ctx);
-    for (const auto& m : d.modules) {
-        mon->addProtocolCommands(m->headlessCommands());
-        m->attachHeadless(mon);
-    }
+    HeadlessMonitor* mon = HeadlessMonitor::attach(d.ctx, out);
+    for (const auto& m : d.modules)
+        m->registerHeadless(mon->commands());
+#ifdef OCU_HAVE_COVERAGE
+    registerCompactionHeadless(mon->commands(), d.compaction);
+#endif
+    return mon;
+}
+
+int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
+    HeadlessMonitor* mon = attachHeadless();
     mon->setRateLimitMs(static_cast<int>(1000.0 / m_config.fleet.monitorRateHz));
     if (!mon->startStdin() && durationSeconds <= 0) {
         std::fputs("ocu: --headless reads commands from stdin, which is not readable; give --duration\n",
@@ -516,8 +519,12 @@ int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
 }
 
 QJsonObject SiteRuntime::writeShiftReport(const QString& pdf, const QString& csv) {
-    return ocu::writeShiftReport(m_impl->ctx->gate()->bridges(), m_impl->ctx->fleet(),
-                                 {pdf, csv, std::nullopt, QString::fromStdString(m_config.name)});
+    // The first module with a production model (ProtocolModule::production()).
+    for (const auto& m : m_impl->modules)
+        if (ProductionModel* model = m->production())
+            return ocu::writeShiftReport(model, m->bridge(), m_impl->ctx->fleet(),
+                                         {pdf, csv, std::nullopt, QString::fromStdString(m_config.name)});
+    return ocu::writeShiftReport(nullptr, nullptr, m_impl->ctx->fleet(), {pdf, csv, std::nullopt, {}});
 }
 
 } // namespace ocu

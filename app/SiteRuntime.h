@@ -11,9 +11,11 @@
 #include <memory>
 
 class QApplication;
+class QIODevice;
 
 namespace ocu {
 
+class HeadlessMonitor;
 class MainWindow;
 namespace recording {
 class Recorder;
@@ -35,6 +37,9 @@ public:
     void populate(MainWindow& window);
     // JSON-lines monitor on stdout, commands on stdin; returns the exit code.
     int runHeadless(QApplication& app, double durationSeconds);
+    // A headless monitor over the started site (owned by it) with every module's commands and queries;
+    // out = nullptr: stdout.
+    HeadlessMonitor* attachHeadless(QIODevice* out = nullptr);
     // The shift report (PDF and/or CSV, empty = not asked); the result says what was written
     // (app/ShiftReportCommand.h).
     QJsonObject writeShiftReport(const QString& pdf, const QString& csv);

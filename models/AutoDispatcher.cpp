@@ -4,7 +4,6 @@
 #include "models/CommandGate.h"
 
 #include <QDateTime>
-#include <QJsonArray>
 
 #include <algorithm>
 #include <cmath>
@@ -227,40 +226,6 @@ void AutoDispatcher::step() {
                                 self->onResult(truckId, what, r);
                         });
     }
-}
-
-QJsonObject AutoDispatcher::command(const QVector<FleetBridge*>& bridges, const QJsonObject& cmd,
-                                    const QString& origin) {
-    QJsonObject o;
-    const QJsonValue on = cmd.value(QStringLiteral("on"));
-    if (!on.isUndefined() && !on.isBool()) {
-        o[QStringLiteral("ok")] = false;
-        o[QStringLiteral("message")] = QStringLiteral("\"on\" must be true or false");
-        return o;
-    }
-    QJsonArray list;
-    bool allOn = true;
-    for (FleetBridge* b : bridges) {
-        if (!b)
-            continue;
-        for (AutoDispatcher* d : b->findChildren<AutoDispatcher*>()) {
-            if (on.isBool())
-                d->setOn(on.toBool(), origin);
-            allOn = allOn && d->isOn();
-            list.append(QJsonObject{{QStringLiteral("bridge"), toText(b->protocol())},
-                                    {QStringLiteral("on"), d->isOn()},
-                                    {QStringLiteral("sent"), d->assignmentsSent()},
-                                    {QStringLiteral("last"), d->lastAction()}});
-        }
-    }
-    o[QStringLiteral("ok")] = !list.isEmpty();
-    o[QStringLiteral("on")] = !list.isEmpty() && allOn;
-    o[QStringLiteral("dispatchers")] = list;
-    o[QStringLiteral("message")] =
-        list.isEmpty()
-            ? QStringLiteral("no dispatch source in this console (ISO 23725 haul trucks)")
-            : QStringLiteral("auto dispatch %1").arg(allOn ? QStringLiteral("ON") : QStringLiteral("OFF"));
-    return o;
 }
 
 void AutoDispatcher::onResult(const QString& truckId, const QString& what, const CommandResult& r) {

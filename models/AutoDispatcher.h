@@ -52,13 +52,6 @@ public:
     QString lastAction() const { return m_last; }
     int assignmentsSent() const { return m_sent; }
 
-    // The headless command {"cmd":"auto_dispatch","on":true|false} (without "on": the state) over the
-    // dispatchers owned by these bridges (children of a bridge):
-    // {"ok","on","message","dispatchers":[{"bridge", "on","sent","last"}]}; ok when there is a dispatcher and
-    // "on" (when given) is a boolean.
-    static QJsonObject command(const QVector<FleetBridge*>& bridges, const QJsonObject& cmd,
-                               const QString& origin);
-
     struct Decision {
         QString truckId;
         QString truckName;

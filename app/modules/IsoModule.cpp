@@ -2,6 +2,7 @@
 // site map, the "ISO 23725" link indicator, and the console's own position sent to the AHS as one of the
 // FMS's machines when the site configuration names it (own_position.fms_machine_id).
 #include "app/ProtocolModule.h"
+#include "app/modules/IsoHeadless.h"
 #include "app/modules/IsoProduction.h"
 
 #include <QCoreApplication>
@@ -30,17 +31,19 @@ public:
     Protocol protocol() const override { return Protocol::Iso23725; }
 
     QString start(const ModuleStart& s) override {
+        m_fleet = s.fleet;
         if (!s.config.iso23725)
             return {};
         m_bridge = new IsoBridge(*s.config.iso23725, s.frame, s.owner);
         m_bridge->setMessageTap(s.tap);
-        attachProductionModel(m_bridge)->setSiteName(QString::fromStdString(s.config.name));
+        m_production = attachProductionModel(m_bridge);
+        m_production->setSiteName(QString::fromStdString(s.config.name));
         s.fleet->addBridge(m_bridge);
         // The automatic dispatcher (off until the operator or a script switches it on), owned by
-        // the bridge like its dispatch source, so the panel and the headless monitor find it.
+        // the bridge like its dispatch source (the panel finds it there).
         auto* source = new IsoDispatchSource(m_bridge, m_bridge);
-        auto* autoDispatch = new AutoDispatcher(source, s.fleet->gate(), m_bridge);
-        autoDispatch->setAlarms(s.fleet->alarms());
+        m_autoDispatch = new AutoDispatcher(source, s.fleet->gate(), m_bridge);
+        m_autoDispatch->setAlarms(s.fleet->alarms());
         return m_bridge->start();
     }
     void stop() override {
@@ -48,6 +51,7 @@ public:
             m_bridge->stop();
     }
     FleetBridge* bridge() const override { return m_bridge; }
+    ProductionModel* production() const override { return m_production; }
 
     void attachOwnPosition(OwnPosition* own, const SiteConfig& config) override {
         if (!m_bridge || config.ownPosition.fmsMachineId.empty())
@@ -86,8 +90,17 @@ public:
 #endif
     }
 
+    // assign, reset_assignment, production, auto_dispatch, shift_report (app/modules/IsoHeadless.h).
+    void registerHeadless(HeadlessCommands& table) override {
+        registerIsoHeadless(table,
+                            {m_bridge, m_production, m_autoDispatch, m_fleet ? m_fleet->fleet() : nullptr});
+    }
+
 private:
     IsoBridge* m_bridge = nullptr;
+    FleetContext* m_fleet = nullptr;
+    ProductionModel* m_production = nullptr;  // owned by the bridge
+    AutoDispatcher* m_autoDispatch = nullptr; // owned by the bridge
 };
 
 } // namespace

@@ -1,6 +1,7 @@
 // The JAUS module of the console: the JausBridge over the JAUS stack, the access-control and teleop panels
 // (with the SDL2 joystick mapped as the site configuration says), the "JAUS" link indicator and the headless
 // commands request_control, release_control and drive.
+#include "app/HeadlessCommands.h"
 #include "app/ProtocolModule.h"
 #include "app/modules/JausVideoHeadless.h"
 
@@ -58,16 +59,13 @@ public:
             "ocu::SiteRuntime", "No JAUS section in the site configuration: no JAUS vehicles on this site.");
     }
 
-    QStringList headlessCommands() const override {
-        return {QStringLiteral("request_control"), QStringLiteral("release_control"), QStringLiteral("drive"),
-                QStringLiteral("drive_start"), QStringLiteral("drive_stop")};
-    }
-
-    void attachHeadless(HeadlessMonitor* monitor) override {
-        if (!m_bridge)
-            return;
-        auto* video = new JausVideoHeadless(m_bridge, m_bridge); // video_status, video_play, video_stop
-        video->attach(monitor);
+    // To the bridge of the machine named by "id" (asked for when missing); video_status, video_play and
+    // video_stop when the site has JAUS vehicles.
+    void registerHeadless(HeadlessCommands& table) override {
+        for (const char* name : {"request_control", "release_control", "drive", "drive_start", "drive_stop"})
+            table.addGateCommand(QLatin1String(name));
+        if (m_bridge)
+            (new JausVideoHeadless(m_bridge, m_bridge))->registerIn(table);
     }
 
 private:

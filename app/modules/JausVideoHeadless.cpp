@@ -1,6 +1,6 @@
 #include "app/modules/JausVideoHeadless.h"
 
-#include "app/HeadlessMonitor.h"
+#include "app/HeadlessCommands.h"
 #include "models/jaus/JausVehicleBridge.h"
 #include "models/video/VideoPlayer.h"
 
@@ -17,10 +17,15 @@ QJsonObject failure(const QString& message) {
 JausVideoHeadless::JausVideoHeadless(JausVehicleBridge* bridge, QObject* parent)
     : QObject(parent), m_bridge(bridge) {}
 
-void JausVideoHeadless::attach(HeadlessMonitor* monitor) {
-    monitor->addQuery(QStringLiteral("video_status"), [this](const QJsonObject& c) { return status(c); });
-    monitor->addQuery(QStringLiteral("video_play"), [this](const QJsonObject& c) { return play(c); });
-    monitor->addQuery(QStringLiteral("video_stop"), [this](const QJsonObject& c) { return stop(c); });
+void JausVideoHeadless::registerIn(HeadlessCommands& table) {
+    QPointer<JausVideoHeadless> self(this);
+    const auto gone = [] { return failure(QStringLiteral("no JAUS bridge")); };
+    table.addLocal(QStringLiteral("video_status"),
+                   [self, gone](const QJsonObject& c) { return self ? self->status(c) : gone(); });
+    table.addLocal(QStringLiteral("video_play"),
+                   [self, gone](const QJsonObject& c) { return self ? self->play(c) : gone(); });
+    table.addLocal(QStringLiteral("video_stop"),
+                   [self, gone](const QJsonObject& c) { return self ? self->stop(c) : gone(); });
 }
 
 QJsonObject JausVideoHeadless::status(const QJsonObject& cmd) const {

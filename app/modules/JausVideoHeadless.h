@@ -1,6 +1,6 @@
 #pragma once
-// Headless video of the JAUS vehicles: queries of the headless monitor, answered from what is
-// actually decoded here.
+// Headless video of the JAUS vehicles: local entries of the headless monitor's table
+// (app/HeadlessCommands.h), answered from what is actually decoded here.
 //   {"cmd":"video_play","id":"jaus:126","sensor":1000}  plays a camera (no "sensor": the first one; no "id":
 //                                                       the first camera of every vehicle)
 //   {"cmd":"video_stop","id":..,"sensor":..}             stops (no "id": all)
@@ -16,7 +16,7 @@
 
 namespace ocu {
 
-class HeadlessMonitor;
+class HeadlessCommands;
 class JausVehicleBridge;
 class VideoPlayer;
 
@@ -24,7 +24,8 @@ class JausVideoHeadless : public QObject {
     Q_OBJECT
 public:
     JausVideoHeadless(JausVehicleBridge* bridge, QObject* parent = nullptr);
-    void attach(HeadlessMonitor* monitor);
+    // Adds video_status, video_play and video_stop.
+    void registerIn(HeadlessCommands& table);
 
     QJsonObject status(const QJsonObject& cmd) const;
     QJsonObject play(const QJsonObject& cmd);

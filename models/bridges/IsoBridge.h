@@ -78,7 +78,7 @@ public:
     static QJsonObject assignArgs(const QString& id, const QVector<IsoTask>& tasks);
     // The headless "production" answer: dispatchToJson of every truck that reported a custodian, an
     // assignment or production (HaulTruck), in id order.
-    Q_INVOKABLE QJsonArray productionJson() const;
+    QJsonArray productionJson() const;
     // The link's MapConnectivityV1 as a route graph (for the dispatch panel's routes and ETAs), or null.
     std::shared_ptr<const iso23725::RouteGraph> routeGraph(const QString& link) const {
         return m_routeGraphs.value(link);

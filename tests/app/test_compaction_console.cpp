@@ -380,11 +380,9 @@ private slots:
         for (const char* f : {"gui.pdf", "gui.csv", "gui.tif"})
             QVERIFY2(QFileInfo(out.filePath(QString::fromLatin1(f))).size() > 1000, f);
         // ... and by the headless command.
-        auto* ctx = runtime.findChild<FleetContext*>();
-        QVERIFY(ctx);
         QBuffer sink;
         sink.open(QIODevice::WriteOnly);
-        HeadlessMonitor* mon = HeadlessMonitor::attach(ctx, &sink);
+        HeadlessMonitor* mon = runtime.attachHeadless(&sink);
         const QJsonObject cmd{{QStringLiteral("cmd"), QStringLiteral("coverage_report")},
                               {QStringLiteral("req"), 7},
                               {QStringLiteral("pdf"), out.filePath(QStringLiteral("h.pdf"))},

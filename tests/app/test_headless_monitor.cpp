@@ -1,5 +1,6 @@
 // HeadlessMonitor: machine/link/event lines, per-machine rate limit, commands and their results.
 #include "app/HeadlessMonitor.h"
+#include "app/ProtocolModule.h"
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/FleetContext.h"
@@ -42,6 +43,38 @@ struct CountingBridge : FakeFleetBridge {
         return {LinkCounters::of(QStringLiteral("iso23725:ahs-1"), first),
                 LinkCounters::of(QStringLiteral("iso23725:ahs-2"), second)};
     }
+};
+
+// A protocol module with one query and one gate command, registered as the real modules do.
+class FakeModule final : public ProtocolModule {
+public:
+    QString displayName() const override { return QStringLiteral("FAKE"); }
+    Protocol protocol() const override { return Protocol::Jaus; }
+    QString start(const ModuleStart&) override { return {}; }
+    void stop() override {}
+    FleetBridge* bridge() const override { return nullptr; }
+    void registerHeadless(HeadlessCommands& table) override {
+        table.addLocal(QStringLiteral("fake_status"), [this](const QJsonObject& cmd) {
+            ++queries;
+            return QJsonObject{{QStringLiteral("ok"), true},
+                               {QStringLiteral("message"), QStringLiteral("fine")},
+                               {QStringLiteral("asked"), cmd.value(QStringLiteral("what"))}};
+        });
+        // km/h in, m/s to the bridge; refused without a speed.
+        table.addGateCommand(QStringLiteral("fake_move"), [](const QJsonObject& cmd) {
+            HeadlessCommands::GateRequest r;
+            if (!cmd.contains(QStringLiteral("kmh"))) {
+                r.refusal = QStringLiteral("missing \"kmh\"");
+                return r;
+            }
+            r.args = cmd;
+            r.args[QStringLiteral("mps")] = cmd.value(QStringLiteral("kmh")).toDouble() / 3.6;
+            r.echo[QStringLiteral("mps")] = r.args.value(QStringLiteral("mps"));
+            return r;
+        });
+        table.addGateCommand(QStringLiteral("fake_hold"));
+    }
+    int queries = 0;
 };
 
 struct Rig {
@@ -249,6 +282,71 @@ private slots:
         r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd": "stop_all")")).object();
         QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
         QVERIFY(r.value(QStringLiteral("message")).toString().startsWith(QStringLiteral("invalid JSON")));
+    }
+
+    void moduleRegisteredCommandsAndQueriesWorkThroughTheMonitor() {
+        Rig rig;
+        FakeModule module;
+        module.registerHeadless(rig.monitor.commands());
+        // The query: answered here, not through the gate, in the one result-line shape.
+        QJsonObject r =
+            QJsonDocument::fromJson(
+                rig.monitor.handleLine(R"({"cmd":"fake_status","req":"a","what":"all","id":"jaus:7"})"))
+                .object();
+        QCOMPARE(module.queries, 1);
+        QCOMPARE(r.value(QStringLiteral("type")).toString(), QStringLiteral("result"));
+        QCOMPARE(r.value(QStringLiteral("cmd")).toString(), QStringLiteral("fake_status"));
+        QCOMPARE(r.value(QStringLiteral("req")).toString(), QStringLiteral("a"));
+        QCOMPARE(r.value(QStringLiteral("id")).toString(), QStringLiteral("jaus:7"));
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), true);
+        QCOMPARE(r.value(QStringLiteral("asked")).toString(), QStringLiteral("all"));
+        QCOMPARE(rig.jaus.calls().size(), 0);
+        // The gate command: prepared, forwarded to the machine's bridge, audited, answered with its targets.
+        QSignalSpy handled(&rig.monitor, &HeadlessMonitor::commandHandled);
+        r = QJsonDocument::fromJson(
+                rig.monitor.handleLine(R"({"command":"fake_move","id":"jaus:7","kmh":18,"req":2})"))
+                .object();
+        QCOMPARE(handled.size(), 1);
+        QCOMPARE(r.value(QStringLiteral("cmd")).toString(), QStringLiteral("fake_move"));
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), true);
+        QCOMPARE(r.value(QStringLiteral("req")).toInt(), 2);
+        QCOMPARE(r.value(QStringLiteral("id")).toString(), QStringLiteral("jaus:7"));
+        QCOMPARE(r.value(QStringLiteral("mps")).toDouble(), 5.0);
+        QCOMPARE(r.value(QStringLiteral("targets")).toArray().size(), 1);
+        QCOMPARE(rig.jaus.calls().size(), 1);
+        QCOMPARE(rig.jaus.calls()[0].name, QStringLiteral("fake_move"));
+        QCOMPARE(rig.jaus.calls()[0].args.value(QStringLiteral("mps")).toDouble(), 5.0);
+        // Refused by its prepare step: nothing sent, the result says why.
+        r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"fake_move","id":"jaus:7"})")).object();
+        QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
+        QCOMPARE(r.value(QStringLiteral("message")).toString(), QStringLiteral("missing \"kmh\""));
+        QCOMPARE(rig.jaus.calls().size(), 1);
+        // A gate command without a prepare step asks for the machine.
+        QCOMPARE(rig.monitor.handleLine(R"({"cmd":"fake_hold"})"),
+                 QByteArray("{\"cmd\":\"fake_hold\",\"message\":\"missing "
+                            "\\\"id\\\"\",\"ok\":false,\"type\":\"result\"}"));
+        QCOMPARE(rig.jaus.calls().size(), 1);
+        // Another monitor has its own table: the module's commands are unknown there.
+        Rig other;
+        QCOMPARE(QJsonDocument::fromJson(other.monitor.handleLine(R"({"cmd":"fake_status"})"))
+                     .object()
+                     .value(QStringLiteral("message"))
+                     .toString(),
+                 QStringLiteral("unknown command fake_status"));
+    }
+
+    void unknownCommandGivesTheSameErrorLineAsBefore() {
+        Rig rig;
+        const QByteArray expected =
+            R"({"cmd":"fly","id":"nope:1","message":"unknown command fly","ok":false,"req":5,"type":"result"})";
+        QCOMPARE(rig.monitor.handleLine(R"({"cmd":"fly","req":5,"id":"nope:1"})"), expected);
+        QCOMPARE(rig.take().size(), 1);
+        QCOMPARE(rig.monitor.handleLine(R"({"req":1})"),
+                 QByteArray("{\"cmd\":\"\",\"message\":\"missing "
+                            "\\\"cmd\\\"\",\"ok\":false,\"req\":1,\"type\":\"result\"}"));
+        QCOMPARE(rig.monitor.handleLine("[1]"),
+                 QByteArray(
+                     R"({"cmd":"","message":"a command must be a JSON object","ok":false,"type":"result"})"));
     }
 
     void linkAndAlarmEventsArePrinted() {

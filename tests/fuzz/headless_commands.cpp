@@ -58,8 +58,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     out.open(QIODevice::ReadWrite);
     monitor.setOutput(&out);
     monitor.setRateLimitMs(0);
-    monitor.addProtocolCommands(
-        {QStringLiteral("request_control"), QStringLiteral("release_control"), QStringLiteral("drive")});
+    for (const char* name : {"request_control", "release_control", "drive"})
+        monitor.commands().addGateCommand(QLatin1String(name));
     fleet.setRefreshIntervalMs(0);
     for (FakeFleetBridge* b : {&jaus, &iso, &osy}) {
         fleet.addBridge(b);

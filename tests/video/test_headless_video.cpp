@@ -50,7 +50,7 @@ private slots:
         out.open(QIODevice::WriteOnly);
         HeadlessMonitor* mon = HeadlessMonitor::attach(&ctx, &out);
         JausVideoHeadless video(&bridge);
-        video.attach(mon);
+        video.registerIn(mon->commands());
 
         // The endpoints come from Digital Resource Discovery first, the pan-tilt mount from the Visual
         // Sensor and Pan Tilt services a little later (under load, seconds later): wait for both.

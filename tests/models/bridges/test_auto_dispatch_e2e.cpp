@@ -4,6 +4,7 @@
 // Active and completes a load-haul-dump cycle counted by the production model; a truck the AHS dispatches
 // (custodian AHS) is never assigned; switched off, no request leaves the console any more.
 #include "app/HeadlessMonitor.h"
+#include "app/modules/IsoHeadless.h"
 #include "app/modules/IsoProduction.h"
 #include "models/AlarmModel.h"
 #include "models/AutoDispatcher.h"
@@ -57,6 +58,8 @@ private slots:
         out.open(QIODevice::ReadWrite);
         HeadlessMonitor monitor{nullptr, &alarms, &gate};
         monitor.setOutput(&out);
+        registerIsoHeadless(monitor.commands(),
+                            {&bridge, production, dispatcher, nullptr}); // as the ISO module does
         auto run = [&](const QJsonObject& cmd) {
             QSignalSpy spy(&monitor, &HeadlessMonitor::commandHandled);
             monitor.handleLine(QJsonDocument(cmd).toJson(QJsonDocument::Compact));

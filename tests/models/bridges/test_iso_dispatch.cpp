@@ -5,6 +5,7 @@
 // the reason) and asks for work when handed back; an accepted task the AHS gives up shows the unsolicited
 // Rejected; with the link down assignments are refused, never queued.
 #include "app/HeadlessMonitor.h"
+#include "app/modules/IsoHeadless.h"
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/bridges/IsoBridge.h"
@@ -37,6 +38,8 @@ struct Console {
         alarms.addBridge(&bridge);
         out.open(QIODevice::ReadWrite);
         monitor.setOutput(&out);
+        registerIsoHeadless(monitor.commands(),
+                            {&bridge, nullptr, nullptr, nullptr}); // as the ISO module does
     }
     AlarmModel alarms;
     CommandGate gate{&alarms};

@@ -4,6 +4,7 @@
 // and it moves); the cycle completes with a payload that the production model counts for that truck, its
 // shovel and its dump; the headless shift report writes both files and says so.
 #include "app/HeadlessMonitor.h"
+#include "app/modules/IsoHeadless.h"
 #include "app/modules/IsoProduction.h"
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
@@ -70,6 +71,8 @@ private slots:
         out.open(QIODevice::ReadWrite);
         HeadlessMonitor monitor{nullptr, &alarms, &gate};
         monitor.setOutput(&out);
+        registerIsoHeadless(monitor.commands(),
+                            {&bridge, production, nullptr, nullptr}); // as the ISO module does
         auto run = [&](const QJsonObject& cmd) {
             QSignalSpy spy(&monitor, &HeadlessMonitor::commandHandled);
             monitor.handleLine(QJsonDocument(cmd).toJson(QJsonDocument::Compact));

@@ -1,0 +1,97 @@
+#pragma once
+// The headless monitor's command table: what a JSON command line does, by name. One table per monitor (no
+// process-wide state); each entry maps a name to its handler, of one of two kinds:
+//   local — answered here at once, without the command gate: a read-only query ("video_status",
+//           "production", "counters") or an action of this process ("auto_dispatch", "shift_report",
+//           "coverage_report"). The handler returns the result's fields ("ok", "message", and its own).
+//   gate  — forwarded through the CommandGate to the bridge of the machine named by "id" (or of the
+//           "protocol"): audited, answered when every target reported (or at the gate's deadline). An
+//           optional prepare step checks and completes the arguments (assign gives each task its
+//           AssignmentId) and names the fields the result echoes; without it, a command with neither "id" nor
+//           "protocol" is answered "missing \"id\"".
+// Besides the entries: stop_all, stop and clear_stop (the stop path, CommandGate), and any other command
+// naming a machine or protocol a bridge answers (FleetBridge::command) go to the gate too.
+// A protocol module registers its entries in ProtocolModule::registerHeadless(); the monitor its own
+// ("list", "counters"). Every result line comes from reply():
+//   {"type":"result","cmd":<name>,"req":<echoed>,"id":<echoed>, ...fields}
+// a gate command's fields being "ok", "targets" (what went on the wire, per target) and "message".
+#include "models/CommandGate.h"
+
+#include <QByteArray>
+#include <QHash>
+#include <QJsonObject>
+#include <QList>
+#include <QObject>
+#include <QPointer>
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+namespace ocu {
+
+class HeadlessCommands : public QObject {
+public:
+    // Writes one finished result line (compact JSON, no newline).
+    using LineSink = std::function<void(const QByteArray& line)>;
+    HeadlessCommands(CommandGate* gate, LineSink sink, QObject* parent = nullptr);
+
+    // A local entry: returns the result's fields for the command.
+    using Answer = std::function<QJsonObject(const QJsonObject& cmd)>;
+    // What a gate entry's prepare step makes of the command: the arguments for the bridge and the fields the
+    // result echoes, or a refusal (nothing is sent, the result says why).
+    struct GateRequest {
+        QJsonObject args;
+        QJsonObject echo;
+        QString refusal;
+    };
+    using Prepare = std::function<GateRequest(const QJsonObject& cmd)>;
+
+    // A later entry of the same name replaces the earlier one.
+    void addLocal(const QString& name, Answer answer);
+    void addGateCommand(const QString& name, Prepare prepare = {});
+    void remove(const QString& name);
+    bool contains(const QString& name) const;
+
+    // Executes one command (a parsed line). The result line is written when final; it is also returned when
+    // it was final at once (otherwise an empty array). `early`: the STOP ALL the stdin reader already sent.
+    QByteArray execute(const QJsonObject& cmd, std::shared_ptr<EarlyStop> early = {});
+    // The result line for cmd with these fields: written and returned.
+    QByteArray reply(const QJsonObject& cmd, QJsonObject fields);
+    QByteArray refuse(const QJsonObject& cmd, const QString& message);
+
+    // Gate commands whose result line is not written yet; settled() runs when the last one is.
+    int pendingResults() const { return m_pendingResults; }
+    void setSettledHandler(std::function<void()> settled) { m_settled = std::move(settled); }
+
+    // The command's name: its "cmd" key, or "command".
+    static QString nameOf(const QJsonObject& cmd);
+    // The origin of every command of this table in the audit ("headless").
+    static QString origin() { return QStringLiteral("headless"); }
+
+private:
+    struct Entry {
+        Answer answer;   // local
+        Prepare prepare; // gate (may be empty)
+        bool gate = false;
+    };
+    QByteArray stopCommand(const QString& name, const QJsonObject& cmd, std::shared_ptr<EarlyStop> early);
+    QByteArray gateEntry(const QString& name, const Entry& entry, const QJsonObject& cmd);
+    // The one place a command leaves for a bridge through the gate; the result answers cmd.
+    QByteArray forwardToGate(const QJsonObject& cmd, const QString& name, const QJsonObject& args,
+                             const QJsonObject& echo = {});
+    QByteArray viaGate(const QJsonObject& cmd, const QJsonObject& echo,
+                       const std::function<void(CommandGate::ResultHandler)>& issue,
+                       const QString& suffix = {});
+
+    QPointer<CommandGate> m_gate;
+    LineSink m_sink;
+    QHash<QString, Entry> m_entries;
+    int m_pendingResults = 0;
+    std::function<void()> m_settled;
+};
+
+// The "counters" answer: every bridge's stack counters per link, its rejects per reason.
+QJsonObject linkCountersFields(const QList<QPointer<FleetBridge>>& bridges);
+
+} // namespace ocu
