@@ -3,7 +3,8 @@
 // fleet discrepancy check, all-stop with its acknowledgement and status timeouts, assignments, the map
 // service, interface diagnostics. Frames come in as text and leave through FmsOutbound; every timeout is
 // measured on an ocu::Clock and checked by poll(), so the whole session runs on a FakeClock in tests.
-// Not thread-safe: IsoStack calls it on its io thread only.
+// Not thread-safe: IsoStack calls it on its io thread only. FmsCore.cpp holds the link's life, the incoming
+// frames and the interface diagnostic; FmsMachines.cpp the machines' state; FmsCommands.cpp the commands.
 #include "protocols/iso23725/IsoConfig.h"
 #include "protocols/iso23725/IsoListener.h"
 #include "protocols/iso23725/MapModel.h"
@@ -144,7 +145,8 @@ private:
     bool sendMapBody(const Body& body);
     void handleFrame(std::string_view frame, bool mapChannel);
     void handle(const Envelope& env, bool mapChannel);
-    template <class T> void machineMember(IsoMachineSnapshot& m, const T& body, std::int64_t headerMs);
+    // A per-machine member other than the position (the hot one: applyPosition).
+    void machineMember(IsoMachineSnapshot& m, const Body& member, std::int64_t headerMs);
     bool applyPosition(IsoMachineSnapshot& m,
                        const MachinePositionV1& position); // false: unavailable or late
     void queuePosition(const IsoMachineSnapshot& m);

@@ -147,14 +147,14 @@ struct Link final : FmsOutbound {
     };
 
     Link(const IsoConfig& cfg, const IsoLinkConfig& lc, IsoListener& listener, Counters& counters,
-         boost::asio::io_context& io, PositionFlush& flush, UrgentLane& urgent)
-        : session(std::make_unique<FmsCore>(cfg, lc, listener, counters, SteadyClock::instance(), *this)),
-          positionFlush(flush), urgent(urgent) {
+         Clock& clock, boost::asio::io_context& io, PositionFlush& flush, UrgentLane& urgent)
+        : session(std::make_unique<FmsCore>(cfg, lc, listener, counters, clock, *this)), positionFlush(flush),
+          urgent(urgent) {
         mainHandler.link = this;
         mapHandler.link = this;
-        main = std::make_unique<WsEndpoint>(io, lc.ws, mainHandler, counters);
+        main = std::make_unique<WsEndpoint>(io, lc.ws, mainHandler, counters, clock);
         if (!lc.mapWs.url.empty())
-            map = std::make_unique<WsEndpoint>(io, lc.mapWs, mapHandler, counters);
+            map = std::make_unique<WsEndpoint>(io, lc.mapWs, mapHandler, counters, clock);
     }
 
     void mainOpened(SessionId id, const std::string& peer) {
@@ -194,8 +194,8 @@ struct Link final : FmsOutbound {
 } // namespace
 
 struct IsoStack::Impl {
-    Impl(IsoConfig c, IsoListener& l, Counters& counters)
-        : cfg(std::move(c)), listener(l), counters(counters), io("iso23725", true),
+    Impl(IsoConfig c, IsoListener& l, Counters& counters, Clock& clock)
+        : cfg(std::move(c)), listener(l), counters(counters), clock(clock), io("iso23725", true),
           positionTimer(io.context()), pollTimer(io.context()), urgent(io.context()),
           positionFlush(io.context(), urgent) {
         // One set of counters per link, feeding the stack's totals; never changed after construction, so
@@ -216,6 +216,7 @@ struct IsoStack::Impl {
     IsoConfig cfg;
     IsoListener& listener;
     Counters& counters;
+    Clock& clock; // every session's and socket's timeouts are measured on it
     IoThread io;
     std::map<std::string, std::unique_ptr<Link>> links;
     std::map<std::string, std::unique_ptr<Counters>> linkCounters;
@@ -265,8 +266,8 @@ struct IsoStack::Impl {
 
 // ---------------------------------------------------------------- IsoStack
 
-IsoStack::IsoStack(IsoConfig config, IsoListener& listener)
-    : m_impl(std::make_unique<Impl>(std::move(config), listener, m_counters)) {}
+IsoStack::IsoStack(IsoConfig config, IsoListener& listener, Clock& clock)
+    : m_impl(std::make_unique<Impl>(std::move(config), listener, m_counters, clock)) {}
 
 IsoStack::~IsoStack() {
     stop();
@@ -285,7 +286,7 @@ bool IsoStack::start() {
         d.positionFlush.armed = d.positionFlush.stepping = d.positionFlush.stopped = false;
         bool ok = true;
         for (auto& lc : d.cfg.links) {
-            auto l = std::make_unique<Link>(d.cfg, lc, d.listener, *d.linkCounters.at(lc.name),
+            auto l = std::make_unique<Link>(d.cfg, lc, d.listener, *d.linkCounters.at(lc.name), d.clock,
                                             d.io.context(), d.positionFlush, d.urgent);
             l->session->setMessageTap(d.tap);
             auto r = l->main->start();

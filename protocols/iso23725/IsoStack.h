@@ -5,6 +5,7 @@
 // batches (IsoListener::onMachinePositions) at most 5 ms after they arrived.
 #include "protocols/iso23725/FmsCore.h"
 
+#include "protocols/common/Clock.h"
 #include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 
@@ -24,7 +25,9 @@ namespace ocu::iso23725 {
 
 class IsoStack {
 public:
-    IsoStack(IsoConfig config, IsoListener& listener);
+    // Every timeout (all-stop acknowledgement, status, map service, diagnostics, WebSocket keepalive) is
+    // measured on `clock`, which must outlive the stack.
+    IsoStack(IsoConfig config, IsoListener& listener, Clock& clock = SteadyClock::instance());
     ~IsoStack();
     IsoStack(const IsoStack&) = delete;
     IsoStack& operator=(const IsoStack&) = delete;

@@ -31,52 +31,6 @@ using beast::error_code;
 
 static constexpr const char* kLog = "ocu.iso";
 
-Result<WsUrl> parseWsUrl(const std::string& url) {
-    WsUrl u;
-    std::string rest;
-    if (url.rfind("ws://", 0) == 0) {
-        rest = url.substr(5);
-    } else if (url.rfind("wss://", 0) == 0) {
-        u.tls = true;
-        rest = url.substr(6);
-    } else {
-        return makeError("URL '" + url + "' must start with ws:// or wss://");
-    }
-    auto slash = rest.find('/');
-    std::string hostPort = rest.substr(0, slash);
-    u.target = slash == std::string::npos ? "/" : rest.substr(slash);
-    std::string portText;
-    if (!hostPort.empty() && hostPort[0] == '[') {
-        auto close = hostPort.find(']');
-        if (close == std::string::npos)
-            return makeError("URL '" + url + "': unterminated IPv6 address");
-        u.host = hostPort.substr(1, close - 1);
-        if (close + 1 < hostPort.size() && hostPort[close + 1] == ':')
-            portText = hostPort.substr(close + 2);
-    } else {
-        auto colon = hostPort.rfind(':');
-        u.host = hostPort.substr(0, colon);
-        if (colon != std::string::npos)
-            portText = hostPort.substr(colon + 1);
-    }
-    if (u.host.empty())
-        return makeError("URL '" + url + "': missing host");
-    if (portText.empty()) {
-        u.port = u.tls ? 443 : 80;
-    } else {
-        try {
-            std::size_t used = 0;
-            int p = std::stoi(portText, &used);
-            if (used != portText.size() || p < 0 || p > 65535)
-                throw std::out_of_range("port");
-            u.port = static_cast<std::uint16_t>(p);
-        } catch (const std::exception&) {
-            return makeError("URL '" + url + "': bad port '" + portText + "'");
-        }
-    }
-    return u;
-}
-
 namespace {
 
 class SessionBase {
@@ -92,14 +46,16 @@ public:
 } // namespace
 
 struct WsEndpoint::Impl : std::enable_shared_from_this<WsEndpoint::Impl> {
-    Impl(asio::io_context& io, WsOptions o, WsHandler& h, Counters& c)
-        : io(io), options(std::move(o)), handler(&h), counters(c), reconnectTimer(io), acceptor(io),
-          sslCtx(ssl::context::tls), backoff(options.backoffMin, options.backoffMax, options.backoffJitter) {}
+    Impl(asio::io_context& io, WsOptions o, WsHandler& h, Counters& c, Clock& clk)
+        : io(io), options(std::move(o)), handler(&h), counters(c), clock(clk), reconnectTimer(io),
+          acceptor(io), sslCtx(ssl::context::tls),
+          backoff(options.backoffMin, options.backoffMax, options.backoffJitter) {}
 
     asio::io_context& io;
     WsOptions options;
     WsHandler* handler; // null after stop(): late completions must not call back
     Counters& counters;
+    Clock& clock; // every keepalive decision is measured on it
     WsUrl url;
     asio::steady_timer reconnectTimer;
     tcp::acceptor acceptor;
@@ -149,11 +105,11 @@ public:
         m_ws->read_message_max(m_ep->options.maxFrameBytes);
         m_ws->auto_fragment(false);
         m_ws->binary(false);
-        m_keepAlive.start(SteadyClock::instance().now());
+        m_keepAlive.start(m_ep->clock.now());
         std::weak_ptr<Session> weak = this->shared_from_this();
         m_ws->control_callback([weak](websocket::frame_type, beast::string_view) {
             if (auto s = weak.lock())
-                s->m_keepAlive.received(SteadyClock::instance().now());
+                s->m_keepAlive.received(s->m_ep->clock.now());
         });
         read();
         tick();
@@ -239,7 +195,7 @@ private:
             }
             return;
         }
-        m_keepAlive.received(SteadyClock::instance().now());
+        m_keepAlive.received(m_ep->clock.now());
         m_ep->counters.add("ws.rx.frames");
         if (!m_ws->got_text()) {
             // §2: binary frames are logged and ignored; the link stays up.
@@ -292,14 +248,15 @@ private:
         write();
     }
 
-    // Keepalive [I] §2: the timing decisions are KeepAlive's (LinkTiming.h); this only sleeps until they are
-    // due.
+    // Keepalive [I] §2: the timing decisions are KeepAlive's (LinkTiming.h), on the endpoint's Clock; the
+    // timer only sleeps until they are due, for the time the Clock says is left (it may be a test's
+    // FakeClock).
     void tick() {
-        m_timer.expires_at(m_keepAlive.deadline());
+        m_timer.expires_after(std::max(Duration::zero(), m_keepAlive.deadline() - m_ep->clock.now()));
         m_timer.async_wait([self = this->shared_from_this()](error_code ec) {
             if (ec || self->m_closing)
                 return;
-            const auto now = SteadyClock::instance().now();
+            const auto now = self->m_ep->clock.now();
             switch (self->m_keepAlive.poll(now)) {
             case KeepAlive::Action::Dead: {
                 self->m_ep->counters.add("ws.dead");
@@ -588,8 +545,9 @@ void WsEndpoint::Impl::accept() {
     });
 }
 
-WsEndpoint::WsEndpoint(asio::io_context& io, WsOptions options, WsHandler& handler, Counters& counters)
-    : m_impl(std::make_shared<Impl>(io, std::move(options), handler, counters)) {}
+WsEndpoint::WsEndpoint(asio::io_context& io, WsOptions options, WsHandler& handler, Counters& counters,
+                       Clock& clock)
+    : m_impl(std::make_shared<Impl>(io, std::move(options), handler, counters, clock)) {}
 
 WsEndpoint::~WsEndpoint() {
     stop();

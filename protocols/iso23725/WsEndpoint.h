@@ -2,6 +2,9 @@
 // WebSocket transport for ISO 23725 (research note §2): client (default) or service role, ws:// or wss://,
 // one text frame = one JSON container or one XML map chunk. Boost.Beast stays inside WsEndpoint.cpp.
 // Every callback runs on the io_context's thread; every method must be called on that thread.
+#include "protocols/iso23725/WsUrl.h"
+
+#include "protocols/common/Clock.h"
 #include "protocols/common/Counters.h"
 #include "protocols/common/Result.h"
 
@@ -48,14 +51,6 @@ struct WsOptions {
         subprotocol; // Sec-WebSocket-Protocol offered (client) / accepted (service); none by default (Q1)
 };
 
-struct WsUrl {
-    bool tls = false;
-    std::string host;
-    std::uint16_t port = 0;
-    std::string target = "/";
-};
-Result<WsUrl> parseWsUrl(const std::string& url);
-
 using SessionId = std::uint64_t;
 
 class WsHandler {
@@ -81,7 +76,9 @@ class WsEndpoint {
 public:
     // counters: "ws.rx.frames", "ws.tx.frames", "ws.rx.close.<code>" (close frames received, by code),
     // "rx.rejected.binary", "rx.rejected.too_big", "ws.connect.failed", "ws.dead" ... are added there.
-    WsEndpoint(boost::asio::io_context& io, WsOptions options, WsHandler& handler, Counters& counters);
+    // Keepalive deadlines (ping, dead link) are measured on `clock`, which must outlive the endpoint.
+    WsEndpoint(boost::asio::io_context& io, WsOptions options, WsHandler& handler, Counters& counters,
+               Clock& clock = SteadyClock::instance());
     ~WsEndpoint();
     WsEndpoint(const WsEndpoint&) = delete;
     WsEndpoint& operator=(const WsEndpoint&) = delete;

@@ -218,6 +218,53 @@ struct Failure {
     std::string text;
 };
 
+// The PosProp table filling the rest of a message (§6).
+CmPosProps readPropTable(ByteReader& r) {
+    CmPosProps pp;
+    while (r.remaining() >= kPosPropSize) {
+        PosProp p;
+        p.value = r.u32();
+        p.id = r.u32();
+        pp.props.push_back(p);
+    }
+    return pp;
+}
+
+// A CmRequest body of `body` bytes after its length was checked, in each of its readings on the wire (§6).
+bool decodeRequest(ByteReader& r, std::size_t body, CmRequest& q, Failure& f) {
+    std::uint8_t t = r.u8();
+    if (t > static_cast<std::uint8_t>(RequestType::Alive)) {
+        f = {"bad_request_type", "CmRequest bType " + std::to_string(t)};
+        return false;
+    }
+    q.type = static_cast<RequestType>(t);
+    bool xy = q.type == RequestType::Ping || q.type == RequestType::Pong;
+    if (body == 1) {
+        // Only ALL, PING and PONG make sense without fields (other reading: no fields when unused).
+        if (q.type != RequestType::All && !xy) {
+            f = {"bad_length", std::string("CmRequest ") + toString(q.type) + " without From/To"};
+            return false;
+        }
+        if (q.type == RequestType::All)
+            q.to = kSlotLast;
+    } else if (body == kRequestBodySize) {
+        if (xy) {
+            q.x = r.f32();
+            q.y = r.f32();
+        } else {
+            q.from = r.u32();
+            q.to = r.u32();
+        }
+    } else {
+        // Other reading: every field on the wire (From, To, X, Y).
+        q.from = r.u32();
+        q.to = r.u32();
+        q.x = r.f32();
+        q.y = r.f32();
+    }
+    return true;
+}
+
 // Decodes one message occupying exactly bytes; appends one or two messages (a CmPos with an appended
 // PosProp table yields CmPos + CmPosProps). Returns false with reason/text on error.
 bool decodeOne(ByteSpan bytes, Checksum cs, std::vector<Message>& out, Failure& f) {
@@ -268,14 +315,7 @@ bool decodeOne(ByteSpan bytes, Checksum cs, std::vector<Message>& out, Failure& 
             Message pm;
             pm.header = h;
             pm.header.type = static_cast<std::uint16_t>(MsgType::PosProps);
-            CmPosProps pp;
-            while (r.remaining() >= kPosPropSize) {
-                PosProp p;
-                p.value = r.u32();
-                p.id = r.u32();
-                pp.props.push_back(p);
-            }
-            pm.body = std::move(pp);
+            pm.body = readPropTable(r);
             out.push_back(std::move(pm));
         }
         return true;
@@ -290,14 +330,7 @@ bool decodeOne(ByteSpan bytes, Checksum cs, std::vector<Message>& out, Failure& 
             f = {"bad_index", "CmPosProps for reserved IdxWhose " + std::to_string(h.whose)};
             return false;
         }
-        CmPosProps pp;
-        while (r.remaining() >= kPosPropSize) {
-            PosProp p;
-            p.value = r.u32();
-            p.id = r.u32();
-            pp.props.push_back(p);
-        }
-        m.body = std::move(pp);
+        m.body = readPropTable(r);
         out.push_back(std::move(m));
         return true;
     }
@@ -307,36 +340,8 @@ bool decodeOne(ByteSpan bytes, Checksum cs, std::vector<Message>& out, Failure& 
             return false;
         }
         CmRequest q;
-        std::uint8_t t = r.u8();
-        if (t > static_cast<std::uint8_t>(RequestType::Alive)) {
-            f = {"bad_request_type", "CmRequest bType " + std::to_string(t)};
+        if (!decodeRequest(r, body, q, f))
             return false;
-        }
-        q.type = static_cast<RequestType>(t);
-        bool xy = q.type == RequestType::Ping || q.type == RequestType::Pong;
-        if (body == 1) {
-            // Only ALL, PING and PONG make sense without fields (other reading: no fields when unused).
-            if (q.type != RequestType::All && !xy) {
-                f = {"bad_length", std::string("CmRequest ") + toString(q.type) + " without From/To"};
-                return false;
-            }
-            if (q.type == RequestType::All)
-                q.to = kSlotLast;
-        } else if (body == kRequestBodySize) {
-            if (xy) {
-                q.x = r.f32();
-                q.y = r.f32();
-            } else {
-                q.from = r.u32();
-                q.to = r.u32();
-            }
-        } else {
-            // Other reading: every field on the wire (From, To, X, Y).
-            q.from = r.u32();
-            q.to = r.u32();
-            q.x = r.f32();
-            q.y = r.f32();
-        }
         m.body = q;
         out.push_back(std::move(m));
         return true;

@@ -6,6 +6,7 @@
 
 #include <boost/asio/steady_timer.hpp>
 
+#include <algorithm>
 #include <atomic>
 
 namespace ocu::osyris {
@@ -13,6 +14,8 @@ namespace ocu::osyris {
 namespace asio = boost::asio;
 
 struct OsyrisStack::Impl {
+    explicit Impl(Clock& clk) : clock(clk) {}
+    Clock& clock; // the Beat and the station's timeouts are measured on it
     IoThread io{"osyris", true};
     asio::steady_timer beat{io.context()};
     std::unique_ptr<RibbonStore> store;
@@ -21,7 +24,7 @@ struct OsyrisStack::Impl {
     RxImpairment imp;
     std::atomic<bool> running{false};
     bool lastSendOk = false; // io thread: the last datagram went to every destination
-    std::chrono::steady_clock::time_point nextBeat;
+    TimePoint nextBeat;
     int beatMs = 100;
     std::atomic<std::int64_t> maxHandlerNs{0};
     MessageTap* tap = nullptr; // the flight recorder's
@@ -71,7 +74,8 @@ struct OsyrisStack::Impl {
         }
     }
 
-    // Runs one io-thread handler and keeps the longest duration seen.
+    // Runs one io-thread handler and keeps the longest duration seen: the io thread's real work, so on the
+    // steady clock, not on the stack's Clock (a test's FakeClock would measure nothing).
     template <class F> void timed(F&& f) {
         const auto t0 = std::chrono::steady_clock::now();
         f();
@@ -83,14 +87,17 @@ struct OsyrisStack::Impl {
         }
     }
 
+    // The Beat is due at nextBeat on the stack's Clock; the timer sleeps for what is left of it, at most one
+    // Beat (a FakeClock that does not move still gets a Beat per beatMs of real time).
     void scheduleBeat() {
-        beat.expires_at(nextBeat);
+        beat.expires_after(std::clamp(nextBeat - clock.now(), Duration::zero(),
+                                      Duration(std::chrono::milliseconds(beatMs))));
         beat.async_wait([this](boost::system::error_code ec) {
             if (ec || !running)
                 return;
             timed([this] { core->tick(); });
             nextBeat += std::chrono::milliseconds(beatMs);
-            auto now = std::chrono::steady_clock::now();
+            auto now = clock.now();
             if (nextBeat < now)
                 nextBeat = now; // never burst to catch up after a stall
             scheduleBeat();
@@ -98,8 +105,9 @@ struct OsyrisStack::Impl {
     }
 };
 
-OsyrisStack::OsyrisStack(OsyrisConfig cfg, OsyrisListener& listener)
-    : m_cfg(std::move(cfg)), m_listener(listener), m_grid(m_cfg.passCount), m_impl(std::make_unique<Impl>()) {
+OsyrisStack::OsyrisStack(OsyrisConfig cfg, OsyrisListener& listener, Clock& clock)
+    : m_cfg(std::move(cfg)), m_listener(listener), m_grid(m_cfg.passCount),
+      m_impl(std::make_unique<Impl>(clock)) {
     m_impl->beatMs = m_cfg.beatMs;
 }
 
@@ -171,7 +179,7 @@ bool OsyrisStack::start(std::string* error) {
     m_impl->transport.reset(); // a restart: the old transport counted into the old core's counters
     Impl* impl = m_impl.get();
     m_impl->core = std::make_unique<StationCore>(
-        m_cfg, SteadyClock::instance(), *m_impl->store, &m_grid, &m_listener,
+        m_cfg, m_impl->clock, *m_impl->store, &m_grid, &m_listener,
         [impl](const Bytes& d) { impl->lastSendOk = impl->transport->send(d); },
         static_cast<std::uint32_t>(m_cfg.stationIndex) * 7919u + 17u);
     m_impl->transport = std::make_unique<OsyrisTransport>(m_impl->io.context(), m_impl->core->counters());
@@ -196,7 +204,7 @@ bool OsyrisStack::start(std::string* error) {
                 impl->core->receive(d);
             });
         });
-        impl->nextBeat = std::chrono::steady_clock::now() + std::chrono::milliseconds(impl->beatMs);
+        impl->nextBeat = impl->clock.now() + std::chrono::milliseconds(impl->beatMs);
         impl->scheduleBeat();
     });
     return true;

@@ -8,6 +8,7 @@
 #include "protocols/osyris/RibbonStore.h"
 #include "protocols/osyris/StationCore.h"
 
+#include "protocols/common/Clock.h"
 #include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 
@@ -25,7 +26,8 @@ namespace ocu::osyris {
 
 class OsyrisStack {
 public:
-    OsyrisStack(OsyrisConfig cfg, OsyrisListener& listener);
+    // The Beat and every timeout of the station are measured on `clock`, which must outlive the stack.
+    OsyrisStack(OsyrisConfig cfg, OsyrisListener& listener, Clock& clock = SteadyClock::instance());
     ~OsyrisStack();
     OsyrisStack(const OsyrisStack&) = delete;
     OsyrisStack& operator=(const OsyrisStack&) = delete;

@@ -2,7 +2,9 @@
 // The OSYRIS station state machine (seed 004 §4-§6), free of sockets and threads: datagrams enter through
 // receive(), time advances through tick() (once per Beat), datagrams leave through the send function.
 // OsyrisStack runs it on an io thread with an OsyrisTransport; tests drive it with a FakeClock and an
-// in-memory network. StationCore.cpp holds the station's life (start, receive, send, Beat, pass counts);
+// in-memory network. StationCore.cpp holds the station's life (start, receive, send, Beat);
+// StationPositions.cpp the intake of positions; StationRequests.cpp the answers to other stations' requests
+// (NAK, NCF, ALL, PING/PONG, ALIVE); StationPassCounts.cpp the pass-count grid's upkeep and publication;
 // StationRepair.cpp the §5 repair engine (list of wishes, list of assets).
 //
 // Reliability (§5): a "list of wishes" (gaps of every ribbon, requested with NAK) and a "list of assets"
@@ -174,6 +176,12 @@ private:
     void flush(TimePoint now, bool force);
     void handlePosition(const CmHeader& h, const CmPos& p, const std::vector<PosProp>* props, TimePoint now);
     void handleRequest(const CmHeader& h, const CmRequest& r, TimePoint now);
+    void handleNak(const CmHeader& h, const CmRequest& r, TimePoint now);
+    void handleNcf(const CmHeader& h, const CmRequest& r, TimePoint now);
+    void handleAll(const CmHeader& h, const CmRequest& r, TimePoint now);
+    void handlePing(const CmHeader& h, const CmRequest& r, TimePoint now);
+    void handlePong(const CmHeader& h, const CmRequest& r, TimePoint now);
+    void handleAlive(const CmHeader& h, const CmRequest& r, TimePoint now);
     void noteKnown(std::uint8_t owner, std::uint32_t from, std::uint32_t to);
     void setHold(RibbonState& rs, std::uint32_t a, std::uint32_t b, TimePoint until);
     void addAsset(std::uint8_t owner, IntervalSet slots, int priority, TimePoint notBefore);

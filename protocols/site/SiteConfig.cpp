@@ -21,11 +21,8 @@ static std::string resolveSitePath(const std::string& path, const std::string& c
     return (std::filesystem::path(configFile).parent_path() / p).lexically_normal().string();
 }
 
-static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, const std::string& fileName) {
-    SiteConfig cfg;
-    ConfigObject root(doc, "", errors);
-    if (!root.valid())
-        return cfg;
+// The site's name and its origin (the local frame of every map).
+static void readSiteSection(ConfigObject& root, SiteConfig& cfg) {
     if (auto site = root.object("site")) {
         cfg.name = site->string("name", cfg.name);
         if (auto o = site->object("origin")) {
@@ -40,6 +37,10 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
     } else {
         root.error("site", "required object is missing");
     }
+}
+
+// The built-in simulators: how many machines of each protocol, and their options.
+static void readSimulation(ConfigObject& root, SiteConfig& cfg, const std::string& fileName) {
     if (auto s = root.object("simulation")) {
         cfg.simulation.enabled = s->boolean("enabled", cfg.simulation.enabled);
         cfg.simulation.jausUgvs = static_cast<int>(s->integer("jaus_ugvs", cfg.simulation.jausUgvs, 0, 50));
@@ -64,6 +65,10 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
             s->error("interface", "\"" + cfg.simulation.interfaceAddress + "\" is not an IPv4 address");
         s->finish();
     }
+}
+
+// When machines go stale and are removed, the monitor rate, the audit log, the stop confirmation.
+static void readFleet(ConfigObject& root, SiteConfig& cfg) {
     if (auto f = root.object("fleet")) {
         cfg.fleet.staleAfterSeconds = f->number("stale_after_s", cfg.fleet.staleAfterSeconds, 0.5, 3600);
         cfg.fleet.removeAfterSeconds =
@@ -76,6 +81,10 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
             f->error("remove_after_s", "must not be shorter than stale_after_s");
         f->finish();
     }
+}
+
+// Where the console's own position comes from.
+static void readOwnPosition(ConfigObject& root, SiteConfig& cfg) {
     if (auto p = root.object("own_position")) {
         cfg.ownPosition.source =
             p->choice("source", cfg.ownPosition.source, {"none", "system", "nmea-file", "nmea-serial"});
@@ -86,6 +95,10 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
             p->error("path", "required when source is \"" + cfg.ownPosition.source + "\"");
         p->finish();
     }
+}
+
+// The joystick mapping and the video watchdog.
+static void readTeleop(ConfigObject& root, SiteConfig& cfg) {
     if (auto t = root.object("teleop")) {
         if (auto j = t->object("joystick")) {
             auto& c = cfg.teleop;
@@ -102,6 +115,10 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         cfg.teleop.videoWatchdogS = t->number("video_watchdog_s", cfg.teleop.videoWatchdogS, 0.1, 10);
         t->finish();
     }
+}
+
+// The flight recorder and its retention.
+static void readRecord(ConfigObject& root, SiteConfig& cfg) {
     if (auto r = root.object("record")) {
         auto& c = cfg.record;
         c.enabled = r->boolean("enabled", c.enabled);
@@ -113,15 +130,10 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         c.messages = r->boolean("messages", c.messages);
         r->finish();
     }
-    if (auto b = root.object("background")) {
-        cfg.background.raster = resolveSitePath(b->string("raster", cfg.background.raster), fileName);
-        b->finish();
-    }
-    if (auto t = root.object("terrain")) {
-        cfg.terrain.dem = resolveSitePath(t->string("dem", cfg.terrain.dem), fileName);
-        t->finish();
-    }
-    cfg.compaction.configFile = fileName;
+}
+
+// The compaction job: design file, stationing, bands, CRS and the areas to compact.
+static void readCompaction(ConfigObject& root, SiteConfig& cfg, const std::string& fileName) {
     if (auto c = root.object("compaction")) {
         auto& k = cfg.compaction;
         k.design = resolveSitePath(c->string("design", k.design), fileName);
@@ -155,6 +167,10 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         }
         c->finish();
     }
+}
+
+// The control-room history database.
+static void readHistory(ConfigObject& root, SiteConfig& cfg) {
     if (auto h = root.object("history")) {
         if (auto pg = h->object("postgres")) {
             PostgresHistoryConfig c;
@@ -168,6 +184,30 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
         }
         h->finish();
     }
+}
+
+static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, const std::string& fileName) {
+    SiteConfig cfg;
+    ConfigObject root(doc, "", errors);
+    if (!root.valid())
+        return cfg;
+    readSiteSection(root, cfg);
+    readSimulation(root, cfg, fileName);
+    readFleet(root, cfg);
+    readOwnPosition(root, cfg);
+    readTeleop(root, cfg);
+    readRecord(root, cfg);
+    if (auto b = root.object("background")) {
+        cfg.background.raster = resolveSitePath(b->string("raster", cfg.background.raster), fileName);
+        b->finish();
+    }
+    if (auto t = root.object("terrain")) {
+        cfg.terrain.dem = resolveSitePath(t->string("dem", cfg.terrain.dem), fileName);
+        t->finish();
+    }
+    cfg.compaction.configFile = fileName;
+    readCompaction(root, cfg, fileName);
+    readHistory(root, cfg);
 #ifdef OCU_SITE_HAVE_JAUS
     if (auto s = root.object("jaus"))
         cfg.jaus = jaus::parseJausConfig(*s);

@@ -7,6 +7,8 @@
 // production cycles, periodic health with occasional diagnostics. Advanced by tick(dt) in simulated seconds;
 // what the trucks report leaves through an emit callback as ISO 23725 members, never through a socket, so
 // the fleet runs in tests on a fake clock.
+// HaulFleet.cpp drives the trucks through their cycles; HaulFleetCommands.cpp takes what the AHS is asked to
+// do.
 #include "sim/iso23725/PitMapGenerator.h"
 #include "sim/iso23725/TruckKinematics.h"
 
