@@ -71,8 +71,7 @@ void ScenePassTexture::build(const PassCountRaster& r, const SceneTerrain& terra
 void ScenePassTexture::buildMesh(const PassCountRaster& r, const SceneTerrain& terrain) {
     const double e0 = r.originE, n0 = r.originN;
     const double we = r.cols * r.cellSize, wn = r.rows * r.cellSize;
-    // Flat ground needs one quad; on terrain the mesh follows it every terrain.drapeStep() (at most 128 x 128
-    // quads).
+    // Flat ground needs one quad; on terrain the mesh follows it every drape step (at most 128 x 128 quads).
     const int nx =
         terrain.flat() ? 1 : std::clamp(static_cast<int>(std::ceil(we / terrain.drapeStep())), 1, 128);
     const int ny =

@@ -14,10 +14,6 @@
 
 #include <cmath>
 
-// The renderer composes the parts of the scene, each in its own file: SceneTerrain (the ground and its
-// heights), SceneWays (roads, lanes, areas), ScenePassTexture (the pass-count raster), SceneMachines (machine
-// glyphs, selection box, picking), SceneLabels (name labels) and SceneCamera (framing, follow, orbit).
-
 namespace ocu {
 
 using namespace scene3d;
