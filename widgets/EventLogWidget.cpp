@@ -36,6 +36,13 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
       m_shelve(new QPushButton(tr("Shelve"), this)), m_unshelve(new QPushButton(tr("Unshelve"), this)),
       m_rateLabel(new QLabel(this)), m_details(new QPlainTextEdit(this)) {
     m_proxy->setSourceModel(alarms);
+    buildLayout();
+    setupTable();
+    connectSignals(alarms);
+}
+
+// Filter bar, alarm management row (shelving, counts, rate), the table over the details pane.
+void EventLogWidget::buildLayout() {
     m_search->setPlaceholderText(tr("Search events…"));
     m_search->setClearButtonEnabled(true);
     m_severity->addItem(tr("All severities"), int(EventSeverity::Info));
@@ -99,7 +106,9 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     // it.
     setMinimumWidth(std::max(
         {bar->minimumSize().width(), shelfRow->minimumSize().width(), countsRow->minimumSize().width()}));
+}
 
+void EventLogWidget::setupTable() {
     m_view->setModel(m_proxy);
     m_view->setToolTip(m_details->placeholderText());
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -117,7 +126,9 @@ EventLogWidget::EventLogWidget(AlarmModel* alarms, QWidget* parent)
     setColumnFitCap(m_view, AlarmModel::ColMachine, 120);
     setColumnFitCap(m_view, AlarmModel::ColAck, 130);
     keepColumnsFitted(m_view);
+}
 
+void EventLogWidget::connectSignals(AlarmModel* alarms) {
     connect(m_search, &QLineEdit::textChanged, m_proxy, &AlarmFilterProxy::setText);
     connect(m_severity, &QComboBox::currentIndexChanged, this,
             [this] { m_proxy->setMinimumSeverity(EventSeverity(m_severity->currentData().toInt())); });

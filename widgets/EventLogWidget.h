@@ -50,6 +50,10 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    // Construction.
+    void buildLayout();
+    void setupTable();
+    void connectSignals(AlarmModel* alarms);
     QPointer<AlarmModel> m_alarms;
     AlarmFilterProxy* m_proxy;
     QTableView* m_view;

@@ -50,6 +50,96 @@ std::string siteSrs(const GeoFrame& frame) {
     return buf;
 }
 
+// gdalwarp into an in-memory dataset of outW x outH pixels covering `extent` (minx, miny, maxx, maxy in site
+// metres) in the site frame `dstSrs`; an alpha band is added when the source has none. Null when it fails.
+Dataset warpIntoSite(GDALDatasetH src, const std::string& dst, const double extent[4], int outW, int outH,
+                     bool nearest, bool srcAlpha) {
+    std::vector<std::string> args = {"-of",
+                                     "MEM",
+                                     "-t_srs",
+                                     dst,
+                                     "-r",
+                                     nearest ? "near" : "bilinear",
+                                     "-te",
+                                     std::to_string(extent[0]),
+                                     std::to_string(extent[1]),
+                                     std::to_string(extent[2]),
+                                     std::to_string(extent[3]),
+                                     "-ts",
+                                     std::to_string(outW),
+                                     std::to_string(outH)};
+    if (!srcAlpha)
+        args.push_back("-dstalpha");
+    std::vector<char*> argv;
+    for (auto& a : args)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    GDALWarpAppOptions* wo = GDALWarpAppOptionsNew(argv.data(), nullptr);
+    GDALDatasetH srcs[] = {src};
+    int usageError = 0;
+    Dataset out(GDALWarp("", nullptr, 1, srcs, wo, &usageError));
+    GDALWarpAppOptionsFree(wo);
+    return out;
+}
+
+// The warped bands as one premultiplied ARGB image: colours through the palette, RGB bands, or grey (8 bit
+// as is, other grey data stretched over its range). A null image when a band cannot be read.
+QImage readWarped(GDALDatasetH out, int outW, int outH, int dataBands, GDALColorTableH palette,
+                  GDALDataType type) {
+    const int n = outW * outH;
+    auto readBand = [&](int band, std::vector<double>& v) {
+        v.resize(size_t(n));
+        return GDALRasterIO(GDALGetRasterBand(out, band), GF_Read, 0, 0, outW, outH, v.data(), outW, outH,
+                            GDT_Float64, 0, 0) == CE_None;
+    };
+    std::vector<double> r, g, b, a;
+    const int alphaBand = dataBands + 1;
+    bool ok = readBand(1, r) && readBand(alphaBand, a);
+    if (ok && dataBands >= 3)
+        ok = readBand(2, g) && readBand(3, b);
+    if (!ok)
+        return {};
+    // Grey data that is not 8 bit (e.g. a DEM given as background): stretched over its range.
+    double lo = 0, hi = 255;
+    if (!palette && type != GDT_Byte) {
+        lo = 1e300;
+        hi = -1e300;
+        for (int i = 0; i < n; ++i)
+            if (a[size_t(i)] > 0 && std::isfinite(r[size_t(i)])) {
+                lo = std::min(lo, r[size_t(i)]);
+                hi = std::max(hi, r[size_t(i)]);
+            }
+        if (!(hi > lo)) {
+            lo = 0;
+            hi = 1;
+        }
+    }
+    auto to8 = [&](double v) { return std::clamp(int(std::lround((v - lo) * 255.0 / (hi - lo))), 0, 255); };
+    QImage img(outW, outH, QImage::Format_ARGB32_Premultiplied);
+    for (int y = 0; y < outH; ++y) {
+        auto* line = reinterpret_cast<QRgb*>(img.scanLine(y));
+        for (int x = 0; x < outW; ++x) {
+            const size_t i = size_t(y) * size_t(outW) + size_t(x);
+            const int alpha = std::clamp(int(std::lround(a[i])), 0, 255);
+            int cr, cg, cb;
+            if (palette) {
+                const GDALColorEntry* e = GDALGetColorEntry(palette, int(r[i]));
+                cr = e ? e->c1 : 0;
+                cg = e ? e->c2 : 0;
+                cb = e ? e->c3 : 0;
+            } else if (dataBands >= 3) {
+                cr = to8(r[i]);
+                cg = to8(g[i]);
+                cb = to8(b[i]);
+            } else {
+                cr = cg = cb = to8(r[i]);
+            }
+            line[x] = qPremultiply(qRgba(cr, cg, cb, alpha));
+        }
+    }
+    return img;
+}
+
 } // namespace
 
 MapBackground::LoadResult MapBackground::load(const QString& path, const GeoFrame& frame) {
@@ -157,87 +247,13 @@ MapBackground::LoadResult MapBackground::warp(const QString& path, const GeoFram
     const int outW = std::max(1, int(std::lround(px / shrink))),
               outH = std::max(1, int(std::lround(lines / shrink)));
 
-    std::vector<std::string> args = {"-of",
-                                     "MEM",
-                                     "-t_srs",
-                                     dst,
-                                     "-r",
-                                     palette ? "near" : "bilinear",
-                                     "-te",
-                                     std::to_string(extent[0]),
-                                     std::to_string(extent[1]),
-                                     std::to_string(extent[2]),
-                                     std::to_string(extent[3]),
-                                     "-ts",
-                                     std::to_string(outW),
-                                     std::to_string(outH)};
-    if (!srcAlpha)
-        args.push_back("-dstalpha");
-    std::vector<char*> argv;
-    for (auto& a : args)
-        argv.push_back(a.data());
-    argv.push_back(nullptr);
-    GDALWarpAppOptions* wo = GDALWarpAppOptionsNew(argv.data(), nullptr);
-    GDALDatasetH srcs[] = {src.get()};
-    int usageError = 0;
-    Dataset out(GDALWarp("", nullptr, 1, srcs, wo, &usageError));
-    GDALWarpAppOptionsFree(wo);
+    Dataset out = warpIntoSite(src.get(), dst, extent, outW, outH, palette != nullptr, srcAlpha);
     if (!out)
         return fail(QStringLiteral("warping into the site frame failed (%1)").arg(errors.text()));
 
-    // Read the warped bands into one ARGB image.
-    const int n = outW * outH;
-    auto readBand = [&](int band, std::vector<double>& v) {
-        v.resize(size_t(n));
-        return GDALRasterIO(GDALGetRasterBand(out.get(), band), GF_Read, 0, 0, outW, outH, v.data(), outW,
-                            outH, GDT_Float64, 0, 0) == CE_None;
-    };
-    std::vector<double> r, g, b, a;
-    const int alphaBand = dataBands + 1;
-    bool ok = readBand(1, r) && readBand(alphaBand, a);
-    if (ok && dataBands >= 3)
-        ok = readBand(2, g) && readBand(3, b);
-    if (!ok)
+    const QImage img = readWarped(out.get(), outW, outH, dataBands, palette, GDALGetRasterDataType(b1));
+    if (img.isNull())
         return fail(QStringLiteral("cannot read the warped raster (%1)").arg(errors.text()));
-    // Grey data that is not 8 bit (e.g. a DEM given as background): stretched over its range.
-    double lo = 0, hi = 255;
-    const GDALDataType type = GDALGetRasterDataType(b1);
-    if (!palette && type != GDT_Byte) {
-        lo = 1e300;
-        hi = -1e300;
-        for (int i = 0; i < n; ++i)
-            if (a[size_t(i)] > 0 && std::isfinite(r[size_t(i)])) {
-                lo = std::min(lo, r[size_t(i)]);
-                hi = std::max(hi, r[size_t(i)]);
-            }
-        if (!(hi > lo)) {
-            lo = 0;
-            hi = 1;
-        }
-    }
-    auto to8 = [&](double v) { return std::clamp(int(std::lround((v - lo) * 255.0 / (hi - lo))), 0, 255); };
-    QImage img(outW, outH, QImage::Format_ARGB32_Premultiplied);
-    for (int y = 0; y < outH; ++y) {
-        auto* line = reinterpret_cast<QRgb*>(img.scanLine(y));
-        for (int x = 0; x < outW; ++x) {
-            const size_t i = size_t(y) * size_t(outW) + size_t(x);
-            const int alpha = std::clamp(int(std::lround(a[i])), 0, 255);
-            int cr, cg, cb;
-            if (palette) {
-                const GDALColorEntry* e = GDALGetColorEntry(palette, int(r[i]));
-                cr = e ? e->c1 : 0;
-                cg = e ? e->c2 : 0;
-                cb = e ? e->c3 : 0;
-            } else if (dataBands >= 3) {
-                cr = to8(r[i]);
-                cg = to8(g[i]);
-                cb = to8(b[i]);
-            } else {
-                cr = cg = cb = to8(r[i]);
-            }
-            line[x] = qPremultiply(qRgba(cr, cg, cb, alpha));
-        }
-    }
 
     auto bg = std::make_shared<MapBackground>();
     bg->m_path = path;

@@ -199,22 +199,26 @@ protected:
     void changeEvent(QEvent* e) override;
 
 private:
+    // Size drawn for a machine that reports none (m).
+    static constexpr double kDefaultLength = 4.0;
+    static constexpr double kDefaultWidth = 2.0;
+    static constexpr double kFitRadius = 50000.0; // m from the site origin: machines beyond are not fitted
+
+    // Data (SiteMapView.cpp).
     void onMachinesChanged(const QStringList& ids);
     void onMachineRemoved(const QString& id);
+    // View transform and input (SiteMapViewInput.cpp).
     void followCurrent();
+    QRectF visibleWorld(const QSize& size) const;
+    void userTookOver() { m_autoFit = false; }
+    bool clickEdgeIndicator(QPointF px);
+    // Static layer: background raster, site map features, night dimming (SiteMapViewLayers.cpp).
     void ensureStaticLayer(const QSize& size, qreal dpr);
     void drawStatic(QPainter& p, const QSize& size);
-    void drawPassCount(QPainter& p, const QSize& size);
-    void drawTrails(QPainter& p, const QRectF& visibleWorld);
-    void drawMachines(QPainter& p, const QRectF& visibleWorld);
-    void drawOwnPosition(QPainter& p);
-    void drawLegend(QPainter& p, const QSize& size);
-    void drawScaleBar(QPainter& p, const QSize& size);
-    void drawNorthArrow(QPainter& p, const QSize& size);
-    void drawCursor(QPainter& p, const QSize& size);
-    QRectF visibleWorld(const QSize& size) const;
     void invalidateStatic() { m_staticValid = false; }
-    // Symbols, labels, navigation (SiteMapViewSymbols.cpp).
+    void drawBackgroundRaster(QPainter& p, const QSize& size);
+    void dimStaticForNight(QPainter& p, const QSize& size);
+    // Symbols and labels (SiteMapViewSymbols.cpp).
     struct MachineLabel {
         QPointF centre;
         double radius = 0; // half the symbol's larger side (px)
@@ -228,15 +232,21 @@ private:
         QColor colour;
         int priority = 0;
     };
+    void drawTrails(QPainter& p, const QRectF& visibleWorld);
+    void drawMachines(QPainter& p, const QRectF& visibleWorld);
+    void drawOwnPosition(QPainter& p);
+    void drawEdgeIndicators(QPainter& p);
     void collectMapLabels(const QSize& size);
     void layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<MachineLabel>& machines);
-    void drawEdgeIndicators(QPainter& p);
-    void drawHoverCard(QPainter& p, const QSize& size);
     QImage labelImage(const QString& text, MapLabelLayout::Kind kind, const QColor& colour, qreal dpr);
+    void drawHoverCard(QPainter& p, const QSize& size);
+    // Overlays: pass counts, legend, scale bar, north arrow, cursor (SiteMapViewOverlays.cpp).
+    void drawPassCount(QPainter& p, const QSize& size);
+    void drawLegend(QPainter& p, const QSize& size);
     QRectF legendRect(const QSize& size) const;
-    void userTookOver() { m_autoFit = false; }
-    bool clickEdgeIndicator(QPointF px);
-    void drawBackgroundRaster(QPainter& p, const QSize& size);
+    void drawScaleBar(QPainter& p, const QSize& size);
+    void drawNorthArrow(QPainter& p, const QSize& size);
+    void drawCursor(QPainter& p, const QSize& size);
     // Load: capped repaints, per-frame caches (SiteMapViewPerf.cpp).
     void requestDataRepaint();
     const QImage& machineLabelImage(const QString& text, qreal dpr);
@@ -302,7 +312,6 @@ private:
     bool m_backgroundVisible = true;
     quint64 m_backgroundRequest = 0;
     bool m_night = false;
-    void dimStaticForNight(QPainter& p, const QSize& size);
 
     // Load: capped data-driven repaints, per-frame caches.
     double m_maxDataHz = 10.0;

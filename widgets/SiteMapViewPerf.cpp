@@ -1,6 +1,6 @@
 // SiteMapView under load: data-driven repaints coalesced to a capped rate, and the per-frame caches
-// that keep a frame with 1,000 machines free of string building and allocation. The rest of the view is in
-// SiteMapView.cpp and SiteMapViewSymbols.cpp.
+// that keep a frame with 1,000 machines free of string building and allocation. SiteMapView.cpp lists where
+// the rest of the view is.
 #include "widgets/SiteMapView.h"
 
 #include <algorithm>

@@ -1,27 +1,21 @@
-// SiteMapView: machine symbols, decluttered labels, edge indicators, the hover card, navigation
-// (zoom to fleet / selection / area) and the background raster. The rest of the view is in SiteMapView.cpp.
+// SiteMapView: machine symbols and trails, the own position, edge indicators for machines outside the view,
+// the decluttered labels (machine names, road and area names) and the hover card.
 #include "models/DisplayText.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
-#include "widgets/MapBackground.h"
 #include "widgets/SiteMapView.h"
 
-#include <QApplication>
 #include <QDateTime>
-#include <QEvent>
 #include <QPainter>
 #include <QPainterPath>
-#include <QPointer>
 #include <QSet>
-#include <QThreadPool>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace ocu {
 
 namespace {
-constexpr double kDefaultLength = 4.0;
-constexpr double kDefaultWidth = 2.0;
 constexpr double kEdgeMargin = 14.0; // px from the view's edge to an edge indicator's tip
 constexpr double kEdgeBin = 32.0;    // px of edge per indicator group
 
@@ -66,7 +60,35 @@ QRectF rotatedBounds(QPointF centre, QSizeF size, double angleDeg) {
 }
 } // namespace
 
-// ---- machines ----
+void SiteMapView::drawTrails(QPainter& p, const QRectF& world) {
+    if (m_trails.isEmpty())
+        return;
+    const double s = m_scale;
+    const double cx = m_viewSize.width() / 2.0, cy = m_viewSize.height() / 2.0;
+    p.setPen(QPen(QColor(0x55, 0x55, 0x88), 0)); // 1 px cosmetic opaque pen: the fast path
+    QPolygonF poly;
+    const QRectF grown = world.adjusted(-50, -50, 50, 50);
+    // Trail points are ~1 m apart; zoomed out, segments shorter than ~4 px add cost but no information, so
+    // only every step-th point is drawn (the newest always).
+    const int step = std::max(1, int(std::ceil(4.0 / s)));
+    // Hundreds of trails: aliased 1 px lines (about 3x cheaper, perf-anchors.md §4); a few: antialiased.
+    p.setRenderHint(QPainter::Antialiasing, m_trails.size() < 200);
+    for (auto it = m_trails.cbegin(); it != m_trails.cend(); ++it) {
+        const auto& t = it.value();
+        const int n = int(t.size());
+        if (n < 2 || !grown.contains(t.back()))
+            continue;
+        poly.resize(0);
+        poly.reserve(n / step + 2);
+        for (int k = (n - 1) % step; k < n; k += step) {
+            const QPointF& q = t[size_t(k)];
+            poly.push_back(QPointF(cx + (q.x() - m_center.x()) * s, cy - (q.y() - m_center.y()) * s));
+        }
+        if (poly.size() >= 2)
+            p.drawPolyline(poly);
+    }
+    p.setRenderHint(QPainter::Antialiasing, true);
+}
 
 void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
     m_labels.reset(QRectF(QPointF(0, 0), QSizeF(m_viewSize)));
@@ -182,7 +204,60 @@ void SiteMapView::drawMachines(QPainter& p, const QRectF& world) {
     layoutAndDrawLabels(p, m_viewSize, labels);
 }
 
-// ---- labels ----
+void SiteMapView::drawOwnPosition(QPainter& p) {
+    if (!m_own.valid)
+        return;
+    const QPointF c = worldToScreen({m_own.e, m_own.n});
+    const QColor col(0xc0, 0x00, 0xc0);
+    p.setPen(QPen(col, 2));
+    p.setBrush(Qt::white);
+    p.drawEllipse(c, 7, 7);
+    p.drawLine(c + QPointF(-11, 0), c + QPointF(11, 0));
+    p.drawLine(c + QPointF(0, -11), c + QPointF(0, 11));
+    if (m_own.hasHeading) {
+        const double h = m_own.headingDeg * std::numbers::pi / 180.0;
+        p.drawLine(c, c + QPointF(std::sin(h), -std::cos(h)) * 20);
+    }
+    p.setBrush(Qt::NoBrush);
+}
+
+void SiteMapView::drawEdgeIndicators(QPainter& p) {
+    if (m_edges.isEmpty())
+        return;
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QFont font = this->font();
+    font.setPointSizeF(7.5);
+    font.setBold(true);
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    const QString current = m_selection ? m_selection->currentId() : QString();
+    for (const EdgeIndicator& ind : std::as_const(m_edges)) {
+        p.save();
+        p.translate(ind.pos);
+        p.rotate(ind.angleDeg);
+        QPolygonF arrow;
+        arrow << QPointF(10, 0) << QPointF(-4, -8) << QPointF(-1, 0) << QPointF(-4, 8);
+        const bool cur = !current.isEmpty() && ind.firstId == current;
+        p.setPen(QPen(cur ? QColor(0xff, 0xd7, 0x00) : QColor(0x20, 0x20, 0x20), cur ? 2.5 : 1.2));
+        p.setBrush(statusColor(ind.worst));
+        p.drawPolygon(arrow);
+        p.restore();
+        if (ind.count > 1) {
+            const QString t = QString::number(ind.count);
+            // The count on the inner side of the arrow.
+            const double a = ind.angleDeg * M_PI / 180.0;
+            const QPointF at = ind.pos - QPointF(std::cos(a), std::sin(a)) * 16;
+            const QRectF box(at.x() - fm.horizontalAdvance(t) / 2 - 3, at.y() - fm.height() / 2,
+                             fm.horizontalAdvance(t) + 6, fm.height());
+            p.setPen(Qt::NoPen);
+            p.setBrush(QColor(255, 255, 255, 220));
+            p.drawRoundedRect(box, 3, 3);
+            p.setPen(QColor(0x10, 0x10, 0x10));
+            p.drawText(box, Qt::AlignCenter, t);
+        }
+    }
+    p.setBrush(Qt::NoBrush);
+}
 
 QImage SiteMapView::labelImage(const QString& text, MapLabelLayout::Kind kind, const QColor& colour,
                                qreal dpr) {
@@ -390,68 +465,6 @@ void SiteMapView::layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<Ma
     }
 }
 
-QRectF SiteMapView::legendRect(const QSize& size) const {
-    // Mirrors drawLegend's box (title + 9 or 3 rows at 8 pt).
-    QFont font = this->font();
-    font.setPointSizeF(8);
-    const QFontMetrics fm(font);
-    const int lh = fm.height() + 2;
-    const int rows = m_palette == PassPalette::Discrete ? 9 : 3;
-    const int h = lh * (rows + 1) + 8;
-    return QRectF(8, size.height() - h - 30, 200, h);
-}
-
-// ---- edge indicators ----
-
-void SiteMapView::drawEdgeIndicators(QPainter& p) {
-    if (m_edges.isEmpty())
-        return;
-    p.setRenderHint(QPainter::Antialiasing, true);
-    QFont font = this->font();
-    font.setPointSizeF(7.5);
-    font.setBold(true);
-    p.setFont(font);
-    const QFontMetricsF fm(font);
-    const QString current = m_selection ? m_selection->currentId() : QString();
-    for (const EdgeIndicator& ind : std::as_const(m_edges)) {
-        p.save();
-        p.translate(ind.pos);
-        p.rotate(ind.angleDeg);
-        QPolygonF arrow;
-        arrow << QPointF(10, 0) << QPointF(-4, -8) << QPointF(-1, 0) << QPointF(-4, 8);
-        const bool cur = !current.isEmpty() && ind.firstId == current;
-        p.setPen(QPen(cur ? QColor(0xff, 0xd7, 0x00) : QColor(0x20, 0x20, 0x20), cur ? 2.5 : 1.2));
-        p.setBrush(statusColor(ind.worst));
-        p.drawPolygon(arrow);
-        p.restore();
-        if (ind.count > 1) {
-            const QString t = QString::number(ind.count);
-            // The count on the inner side of the arrow.
-            const double a = ind.angleDeg * M_PI / 180.0;
-            const QPointF at = ind.pos - QPointF(std::cos(a), std::sin(a)) * 16;
-            const QRectF box(at.x() - fm.horizontalAdvance(t) / 2 - 3, at.y() - fm.height() / 2,
-                             fm.horizontalAdvance(t) + 6, fm.height());
-            p.setPen(Qt::NoPen);
-            p.setBrush(QColor(255, 255, 255, 220));
-            p.drawRoundedRect(box, 3, 3);
-            p.setPen(QColor(0x10, 0x10, 0x10));
-            p.drawText(box, Qt::AlignCenter, t);
-        }
-    }
-    p.setBrush(Qt::NoBrush);
-}
-
-bool SiteMapView::clickEdgeIndicator(QPointF px) {
-    for (const EdgeIndicator& ind : std::as_const(m_edges))
-        if (std::hypot(ind.pos.x() - px.x(), ind.pos.y() - px.y()) <= 14) {
-            centerOnMachine(ind.firstId);
-            return true;
-        }
-    return false;
-}
-
-// ---- hover card ----
-
 void SiteMapView::drawHoverCard(QPainter& p, const QSize& size) {
     if (m_hoverId.isEmpty() || m_cursorPx.x() < 0 || !m_fleet)
         return;
@@ -512,156 +525,6 @@ void SiteMapView::drawHoverCard(QPainter& p, const QSize& size) {
         p.drawText(QPointF(box.left() + 8, y), l);
         y += fn.height();
     }
-}
-
-// ---- navigation ----
-
-static void fitRect(SiteMapView& v, QRectF r, QSize view, double minHalfM) {
-    if (r.isNull() || !r.isValid())
-        return;
-    const QPointF c = r.center();
-    const double hw = std::max(r.width() / 2, minHalfM), hh = std::max(r.height() / 2, minHalfM);
-    const double s = 0.9 * std::min(view.width() / (2 * hw), view.height() / (2 * hh));
-    v.setView(c, s);
-}
-
-void SiteMapView::zoomToFleet() {
-    userTookOver();
-    setFollow(false);
-    QRectF r;
-    if (m_fleet)
-        for (int i = 0; i < m_fleet->rowCount(); ++i) {
-            const MachineState& m = m_fleet->machineAt(i);
-            if (!m.hasPosition || std::abs(m.e) > 50000 || std::abs(m.n) > 50000)
-                continue;
-            const QRectF one(m.e - 5, m.n - 5, 10, 10);
-            r = r.isNull() ? one : r.united(one);
-        }
-    if (r.isNull()) {
-        fitToContent();
-        return;
-    }
-    fitRect(*this, r, m_viewSize, 40);
-}
-
-void SiteMapView::zoomToSelection() {
-    userTookOver();
-    QRectF r;
-    if (m_fleet && m_selection)
-        for (const QString& id : m_selection->selectedIds()) {
-            const MachineState* m = m_fleet->machine(id);
-            if (!m || !m->hasPosition)
-                continue;
-            const QRectF one(m->e - 5, m->n - 5, 10, 10);
-            r = r.isNull() ? one : r.united(one);
-        }
-    if (r.isNull()) {
-        zoomToFleet();
-        return;
-    }
-    fitRect(*this, r, m_viewSize, 40); // one machine: 80 m across
-}
-
-bool SiteMapView::zoomToArea(const QString& featureId) {
-    for (int i = 0; i < m_map.features.size(); ++i)
-        if (m_map.features[i].id == featureId && i < m_featureBounds.size()) {
-            userTookOver();
-            setFollow(false);
-            fitRect(*this, m_featureBounds[i], m_viewSize, 20);
-            return true;
-        }
-    return false;
-}
-
-QString SiteMapView::areaAt(QPointF px) const {
-    const QPointF w = screenToWorld(px);
-    QString best;
-    double bestArea = 1e300;
-    for (int i = 0; i < m_map.features.size(); ++i) {
-        const MapFeature& f = m_map.features[i];
-        if (f.kind != MapFeatureKind::Area || i >= m_featureBounds.size() || !m_featureBounds[i].contains(w))
-            continue;
-        if (!QPolygonF(f.points).containsPoint(w, Qt::OddEvenFill))
-            continue;
-        const double a = m_featureBounds[i].width() * m_featureBounds[i].height();
-        if (a < bestArea) { // the innermost (smallest) area
-            bestArea = a;
-            best = f.id;
-        }
-    }
-    return best;
-}
-
-// ---- background ----
-
-void SiteMapView::setBackground(std::shared_ptr<const MapBackground> background) {
-    m_background = std::move(background);
-    ++m_backgroundRequest; // a pending load must not replace what was set since
-    invalidateStatic();
-    update();
-}
-
-void SiteMapView::setBackgroundVisible(bool visible) {
-    if (m_backgroundVisible == visible)
-        return;
-    m_backgroundVisible = visible;
-    invalidateStatic();
-    update();
-}
-
-void SiteMapView::loadBackground(const QString& path) {
-    const quint64 request = ++m_backgroundRequest;
-    QPointer<SiteMapView> self(this);
-    const GeoFrame frame = m_frame;
-    QThreadPool::globalInstance()->start([self, request, path, frame] {
-        MapBackground::LoadResult r = MapBackground::load(path, frame);
-        QMetaObject::invokeMethod(
-            qApp,
-            [self, request, r] {
-                if (!self || self->m_backgroundRequest != request)
-                    return; // the view is gone, or another background was asked for since
-                if (!r.background) {
-                    emit self->backgroundFailed(r.error);
-                    return;
-                }
-                self->m_background = r.background;
-                self->invalidateStatic();
-                self->update();
-                emit self->backgroundLoaded(r.background->path());
-            },
-            Qt::QueuedConnection);
-    });
-}
-
-void SiteMapView::drawBackgroundRaster(QPainter& p, const QSize& size) {
-    if (!m_background || !m_backgroundVisible)
-        return;
-    m_background->draw(p, m_center, m_scale, QSizeF(size));
-}
-
-// ---- night palette ----
-
-void SiteMapView::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::PaletteChange) {
-        const bool night = palette().color(QPalette::Window).lightness() < 110;
-        if (night != m_night) {
-            m_night = night;
-            m_labelImages.clear();
-            m_machineLabels.clear(); // keyed by text only: their colours follow the palette
-            invalidateStatic();
-            update();
-        }
-    }
-    QWidget::changeEvent(e);
-}
-
-void SiteMapView::dimStaticForNight(QPainter& p, const QSize& size) {
-    // Multiplying keeps every hue of the plan, the background raster and the pass-count layer apart while
-    // taking the light site-plan ground (#f4f1ea) down to about #5c5a58.
-    p.save();
-    p.setCompositionMode(QPainter::CompositionMode_Multiply);
-    p.fillRect(QRect(QPoint(0, 0), size), QColor(0x60, 0x60, 0x64));
-    p.restore();
 }
 
 } // namespace ocu

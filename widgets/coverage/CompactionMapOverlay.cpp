@@ -13,6 +13,16 @@
 
 namespace ocu {
 
+namespace {
+QPolygonF toScreen(const SiteMapView& view, const QPolygonF& w) {
+    QPolygonF s;
+    s.reserve(w.size());
+    for (const QPointF& q : w)
+        s << view.worldToScreen(q);
+    return s;
+}
+} // namespace
+
 CompactionMapOverlay::CompactionMapOverlay(SiteMapView* view, CompactionView* session)
     // A child of the session, not of the view: a child of the view would be deleted inside ~QWidget, after
     // SiteMapView's own members (its overlay list) are gone, while the QPointer still says it is alive.
@@ -228,33 +238,39 @@ bool CompactionMapOverlay::eventFilter(QObject* watched, QEvent* event) {
 void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
     if (!m_session)
         return;
-    const auto& g = m_session->mapGeometry();
     const QRectF screen(QPointF(-50, -50), QSizeF(view.width() + 100, view.height() + 100));
-    auto toScreen = [&](const QPolygonF& w) {
-        QPolygonF s;
-        s.reserve(w.size());
-        for (const QPointF& q : w)
-            s << view.worldToScreen(q);
-        return s;
-    };
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     p.setBrush(Qt::NoBrush);
     // The night palette: dark boxes and halos with light text, like the map's own labels, so
     // nothing glares white in a dark cab.
-    const bool night = view.isNight();
-    const QColor box = night ? QColor(30, 30, 34, 230) : QColor(255, 255, 255, 230);
-    const QColor halo = night ? QColor(20, 20, 22, 230) : QColor(255, 255, 255, 230);
-    const QColor stationInk = night ? QColor(0xf0, 0xa8, 0x60) : QColor(0x80, 0x40, 0x00);
+    Ink ink;
+    ink.night = view.isNight();
+    ink.box = ink.night ? QColor(30, 30, 34, 230) : QColor(255, 255, 255, 230);
+    ink.halo = ink.night ? QColor(20, 20, 22, 230) : QColor(255, 255, 255, 230);
+    ink.station = ink.night ? QColor(0xf0, 0xa8, 0x60) : QColor(0x80, 0x40, 0x00);
+    paintDesign(p, view, screen, ink);
+    paintAreas(p, view, screen, ink);
+    if (m_band.size() >= 3)
+        paintBand(p, view, screen, ink);
+    if (m_drawing)
+        paintDrawing(p, view);
+    p.restore();
+}
+
+// The design: boundaries, centre lines, station ticks and their labels.
+void CompactionMapOverlay::paintDesign(QPainter& p, const SiteMapView& view, const QRectF& screen,
+                                       const Ink& ink) const {
+    const auto& g = m_session->mapGeometry();
     for (const QPolygonF& b : g.boundaries) {
-        const QPolygonF s = toScreen(b);
+        const QPolygonF s = toScreen(view, b);
         if (!s.boundingRect().intersects(screen))
             continue;
-        p.setPen(QPen(night ? QColor(200, 200, 200, 200) : QColor(40, 40, 40, 200), 1.5, Qt::DashLine));
+        p.setPen(QPen(ink.night ? QColor(200, 200, 200, 200) : QColor(40, 40, 40, 200), 1.5, Qt::DashLine));
         p.drawPolygon(s);
     }
     for (const QPolygonF& c : g.centreLines) {
-        const QPolygonF s = toScreen(c);
+        const QPolygonF s = toScreen(view, c);
         if (!s.boundingRect().intersects(screen))
             continue;
         p.setPen(QPen(centreLineColour(), 2));
@@ -279,20 +295,25 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
                 const QString text = CompactionView::stationText(t.station, 0);
                 const QRectF r = p.fontMetrics().boundingRect(text).adjusted(-2, -1, 2, 1);
                 const QPointF at = b + QPointF(4, 4);
-                p.fillRect(r.translated(at), box);
-                p.setPen(stationInk);
+                p.fillRect(r.translated(at), ink.box);
+                p.setPen(ink.station);
                 p.drawText(at, text);
                 view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it
             }
         }
     }
-    // Areas: a deep magenta outline (a colour neither the pass-count scales, the design's orange centre line
-    // nor the machines use) over a white halo, so it reads on pass counts, road and hillshade alike; a light
-    // fill; the name in a white box. The selected area is wider and filled more.
+}
+
+// Areas: a deep magenta outline (a colour neither the pass-count scales, the design's orange centre line
+// nor the machines use) over a white halo, so it reads on pass counts, road and hillshade alike; a light
+// fill; the name in a white box. The selected area is wider and filled more.
+void CompactionMapOverlay::paintAreas(QPainter& p, const SiteMapView& view, const QRectF& screen,
+                                      const Ink& ink) const {
+    const auto& g = m_session->mapGeometry();
     const QColor areaColour = CompactionMapOverlay::areaColour();
     for (int i = 0; i < g.areas.size(); ++i) {
         const auto& [name, ring] = g.areas[i];
-        const QPolygonF s = toScreen(ring);
+        const QPolygonF s = toScreen(view, ring);
         if (!s.boundingRect().intersects(screen))
             continue;
         const bool hi = name == m_highlight;
@@ -304,7 +325,7 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
             p.setPen(QPen(areaColour, 1.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
             p.drawPolygon(s);
         } else {
-            p.setPen(QPen(halo, hi ? 8 : 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.setPen(QPen(ink.halo, hi ? 8 : 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
             p.drawPolygon(s);
             QColor fill = areaColour;
             fill.setAlpha(hi ? 60 : 28);
@@ -325,53 +346,56 @@ void CompactionMapOverlay::paintOverlay(QPainter& p, const SiteMapView& view) {
                 break;
             }
         const QRectF r = p.fontMetrics().boundingRect(name).adjusted(-3, -1, 3, 1);
-        p.fillRect(r.translated(at), box);
+        p.fillRect(r.translated(at), ink.box);
         p.setPen(QPen(areaColour, 1));
         p.drawRect(r.translated(at));
-        p.setPen(night ? areaColour.lighter(190) : areaColour);
+        p.setPen(ink.night ? areaColour.lighter(190) : areaColour);
         p.drawText(at, name);
         view.reserveLabelArea(r.translated(at)); // machine labels keep clear of it
     }
-    if (m_band.size() >= 3) {
-        // The station range picked in the panel: dashed, in the centre line's orange (it is a piece of the
-        // alignment's band), over a white halo; its stationing at its first vertex.
-        const QPolygonF s = toScreen(m_band);
-        if (s.boundingRect().intersects(screen)) {
-            p.setBrush(Qt::NoBrush);
-            p.setPen(QPen(halo, 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-            p.drawPolygon(s);
-            p.setPen(QPen(centreLineColour(), 3, Qt::DashLine, Qt::RoundCap, Qt::RoundJoin));
-            p.drawPolygon(s);
-            QFont f = p.font();
-            f.setPixelSize(12);
-            f.setBold(true);
-            p.setFont(f);
-            const QRectF r = p.fontMetrics().boundingRect(m_bandLabel).adjusted(-3, -1, 3, 1);
-            const QPointF at = s.boundingRect().topLeft() + QPointF(0, -6);
-            p.fillRect(r.translated(at), box);
-            p.setPen(stationInk);
-            p.drawText(at, m_bandLabel);
-            view.reserveLabelArea(r.translated(at));
-        }
-    }
-    if (m_drawing) {
-        QPolygonF s = toScreen(m_points);
-        if (m_haveHover)
-            s << view.worldToScreen(m_hover);
-        p.setPen(QPen(QColor(0xd0, 0x00, 0x80), 2, Qt::DashLine));
-        p.setBrush(QColor(0xd0, 0x00, 0x80, 40));
+}
+
+void CompactionMapOverlay::paintBand(QPainter& p, const SiteMapView& view, const QRectF& screen,
+                                     const Ink& ink) const {
+    // The station range picked in the panel: dashed, in the centre line's orange (it is a piece of the
+    // alignment's band), over a white halo; its stationing at its first vertex.
+    const QPolygonF s = toScreen(view, m_band);
+    if (s.boundingRect().intersects(screen)) {
+        p.setBrush(Qt::NoBrush);
+        p.setPen(QPen(ink.halo, 6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         p.drawPolygon(s);
-        p.setBrush(QColor(0xd0, 0x00, 0x80));
-        for (const QPointF& q : toScreen(m_points))
-            p.drawEllipse(q, 3.5, 3.5);
-        // The first point grows into a ring once a click on it would close the polygon.
-        if (m_points.size() >= 3) {
-            p.setBrush(Qt::NoBrush);
-            p.setPen(QPen(QColor(0xd0, 0x00, 0x80), 2));
-            p.drawEllipse(view.worldToScreen(m_points.first()), kClosePx, kClosePx);
-        }
+        p.setPen(QPen(centreLineColour(), 3, Qt::DashLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawPolygon(s);
+        QFont f = p.font();
+        f.setPixelSize(12);
+        f.setBold(true);
+        p.setFont(f);
+        const QRectF r = p.fontMetrics().boundingRect(m_bandLabel).adjusted(-3, -1, 3, 1);
+        const QPointF at = s.boundingRect().topLeft() + QPointF(0, -6);
+        p.fillRect(r.translated(at), ink.box);
+        p.setPen(ink.station);
+        p.drawText(at, m_bandLabel);
+        view.reserveLabelArea(r.translated(at));
     }
-    p.restore();
+}
+
+// The polygon being drawn, its points, and the ring that closes it.
+void CompactionMapOverlay::paintDrawing(QPainter& p, const SiteMapView& view) const {
+    QPolygonF s = toScreen(view, m_points);
+    if (m_haveHover)
+        s << view.worldToScreen(m_hover);
+    p.setPen(QPen(QColor(0xd0, 0x00, 0x80), 2, Qt::DashLine));
+    p.setBrush(QColor(0xd0, 0x00, 0x80, 40));
+    p.drawPolygon(s);
+    p.setBrush(QColor(0xd0, 0x00, 0x80));
+    for (const QPointF& q : toScreen(view, m_points))
+        p.drawEllipse(q, 3.5, 3.5);
+    // The first point grows into a ring once a click on it would close the polygon.
+    if (m_points.size() >= 3) {
+        p.setBrush(Qt::NoBrush);
+        p.setPen(QPen(QColor(0xd0, 0x00, 0x80), 2));
+        p.drawEllipse(view.worldToScreen(m_points.first()), kClosePx, kClosePx);
+    }
 }
 
 } // namespace ocu

@@ -57,6 +57,15 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    // Colours of one paint: the night palette gets dark boxes and halos with light text.
+    struct Ink {
+        bool night = false;
+        QColor box, halo, station;
+    };
+    void paintDesign(QPainter& p, const SiteMapView& view, const QRectF& screen, const Ink& ink) const;
+    void paintAreas(QPainter& p, const SiteMapView& view, const QRectF& screen, const Ink& ink) const;
+    void paintBand(QPainter& p, const SiteMapView& view, const QRectF& screen, const Ink& ink) const;
+    void paintDrawing(QPainter& p, const SiteMapView& view) const;
     void finish();
     void updateHint();
     QPointer<SiteMapView> m_view;

@@ -32,6 +32,37 @@ CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* 
     m_lift->addItem(tr("Top view"), -1);
     liftRow->addWidget(m_lift, 1);
     v->addLayout(liftRow);
+    QWidget* stationsPage = buildTables();
+    m_tabs = new QTabWidget;
+    m_tabs->setDocumentMode(true);
+    m_tabs->addTab(m_table, tr("Areas"));
+    m_tabs->addTab(stationsPage, tr("Stations"));
+    v->addWidget(m_tabs, 1);
+    auto* buttons = new QHBoxLayout;
+    m_draw = new QPushButton(tr("Draw area"));
+    m_draw->setToolTip(tr(
+        "Draw a compaction area on the 2D map: click to add points; Enter, a double click or a click on the "
+        "first point closes; Backspace undoes; Esc cancels"));
+    m_remove = new QPushButton(tr("Remove"));
+    m_report = new QPushButton(tr("Coverage report…"));
+    m_report->setToolTip(
+        tr("PDF, Veta-style CSV and GeoTIFF of the pass counts, in the site's projected CRS"));
+    buttons->addWidget(m_draw);
+    buttons->addWidget(m_remove);
+    buttons->addStretch(1);
+    buttons->addWidget(m_report);
+    v->addLayout(buttons);
+    m_status = new QLabel;
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    v->addWidget(m_status);
+
+    connectSignals(session);
+    refresh();
+}
+
+// The per-area table and the page of the per-station table (returned); both as narrow as their numbers.
+QWidget* CompactionPanel::buildTables() {
     m_table = new QTableWidget(0, 6);
     m_table->setHorizontalHeaderLabels(
         {tr("Area"), tr("Covered %"), tr("Target %"), tr("Under %"), tr("Over %"), tr("Incompl.")});
@@ -71,30 +102,10 @@ CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* 
     m_stations->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_stations->horizontalHeader()->setSectionResizeMode(5, QHeaderView::Stretch);
     sv->addWidget(m_stations, 1);
-    m_tabs = new QTabWidget;
-    m_tabs->setDocumentMode(true);
-    m_tabs->addTab(m_table, tr("Areas"));
-    m_tabs->addTab(stationsPage, tr("Stations"));
-    v->addWidget(m_tabs, 1);
-    auto* buttons = new QHBoxLayout;
-    m_draw = new QPushButton(tr("Draw area"));
-    m_draw->setToolTip(tr(
-        "Draw a compaction area on the 2D map: click to add points; Enter, a double click or a click on the "
-        "first point closes; Backspace undoes; Esc cancels"));
-    m_remove = new QPushButton(tr("Remove"));
-    m_report = new QPushButton(tr("Coverage report…"));
-    m_report->setToolTip(
-        tr("PDF, Veta-style CSV and GeoTIFF of the pass counts, in the site's projected CRS"));
-    buttons->addWidget(m_draw);
-    buttons->addWidget(m_remove);
-    buttons->addStretch(1);
-    buttons->addWidget(m_report);
-    v->addLayout(buttons);
-    m_status = new QLabel;
-    m_status->setWordWrap(true);
-    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    v->addWidget(m_status);
+    return stationsPage;
+}
 
+void CompactionPanel::connectSignals(CompactionView* session) {
     m_throttle.setSingleShot(true);
     m_throttle.setInterval(2000);
     connect(&m_throttle, &QTimer::timeout, this, &CompactionPanel::refresh);
@@ -139,7 +150,6 @@ CompactionPanel::CompactionPanel(CompactionView* session, CompactionMapOverlay* 
         m_overlay->zoomToBand();
     });
     connect(m_report, &QPushButton::clicked, this, &CompactionPanel::reportAction);
-    refresh();
 }
 
 // Columns 1-5 of both tables: covered, at target, under, over (%), incomplete cells; a dash without counts.

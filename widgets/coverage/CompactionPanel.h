@@ -38,6 +38,9 @@ public slots:
     void refresh();
 
 private:
+    // Construction.
+    QWidget* buildTables();
+    void connectSignals(CompactionView* session);
     void askAreaName(const QPolygonF& siteEN);
     void reportAction();
     void stationPicked();

@@ -68,6 +68,23 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     top->setSpacing(2);
 
     auto* split = new QSplitter(Qt::Horizontal, this);
+    QWidget* left = buildTruckList(split);
+    QWidget* queues = buildQueueList(split);
+    split->addWidget(left);
+    split->addWidget(queues);
+    split->setStretchFactor(0, 4);
+    split->setStretchFactor(1, 1);
+    split->setChildrenCollapsible(true); // the queues can be dragged away on a narrow screen
+    top->addWidget(split, 1);
+
+    buildControls(top);
+    connectControls(source, selection);
+    rebuildDestinations();
+    onTrucksUpdated({});
+}
+
+// The trucks: a header row (needs-assignment count, next, auto dispatch) over the truck table.
+QWidget* DispatchPanel::buildTruckList(QSplitter* split) {
     auto* left = new QWidget(split);
     auto* leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 0, 0);
@@ -135,6 +152,11 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
             m_table->setColumnWidth(c, w[c] + 16);
     }
 
+    return left;
+}
+
+// The queues per shovel and dump, beside the trucks.
+QWidget* DispatchPanel::buildQueueList(QSplitter* split) {
     auto* queues = new QWidget(split);
     auto* queueLayout = new QVBoxLayout(queues);
     queueLayout->setContentsMargins(0, 0, 0, 0);
@@ -169,13 +191,11 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     }
     queueLabel->setBuddy(m_queueTable);
     queueLayout->addWidget(m_queueTable, 1);
-    split->addWidget(left);
-    split->addWidget(queues);
-    split->setStretchFactor(0, 4);
-    split->setStretchFactor(1, 1);
-    split->setChildrenCollapsible(true); // the queues can be dragged away on a narrow screen
-    top->addWidget(split, 1);
+    return queues;
+}
 
+// Task, destination, pick on map, assign and reset, then the refusal and result lines.
+void DispatchPanel::buildControls(QVBoxLayout* top) {
     auto* controls = new QHBoxLayout;
     auto* taskLabel = new QLabel(tr("&Task"), this);
     m_task = new QComboBox(this);
@@ -222,7 +242,9 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     top->addWidget(m_result);
     m_refusal->hide();
     m_result->hide();
+}
 
+void DispatchPanel::connectControls(DispatchSource* source, FleetSelection* selection) {
     // Keyboard (within the panel).
     auto shortcut = [this](const QKeySequence& k, auto slot) {
         auto* s = new QShortcut(k, this);
@@ -271,8 +293,6 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     connect(m_model, &DispatchModel::trucksUpdated, this, &DispatchPanel::onTrucksUpdated);
     if (source)
         connect(source, &DispatchSource::areasChanged, this, &DispatchPanel::rebuildDestinations);
-    rebuildDestinations();
-    onTrucksUpdated({});
 }
 
 DispatchPanel::~DispatchPanel() {

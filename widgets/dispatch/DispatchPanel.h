@@ -16,7 +16,9 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QPushButton;
+class QSplitter;
 class QTableView;
+class QVBoxLayout;
 
 namespace ocu {
 
@@ -75,6 +77,11 @@ public slots:
     void pickArea(const QString& featureId); // a map area was clicked
 
 private:
+    // Construction, in the order the panel is laid out.
+    QWidget* buildTruckList(QSplitter* split);
+    QWidget* buildQueueList(QSplitter* split);
+    void buildControls(QVBoxLayout* top);
+    void connectControls(DispatchSource* source, FleetSelection* selection);
     void onTrucksUpdated(const QStringList& ids);
     void rebuildDestinations();
     void updateControls();

@@ -42,6 +42,67 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     setObjectName(QStringLiteral("teleop-panel"));
     setFocusPolicy(Qt::StrongFocus);
     m_controller->setRateHz(bridge->identity().driveRateHz);
+    buildVideoAndLabels();
+    buildStopButtons();
+    connect(m_clear, &HoldToConfirmButton::confirmed, this, [this] {
+        // The hold is the deliberate confirmation: it buys the gate's one-time token, and the gate audits.
+        if (m_subsystem && m_gate) {
+            const QString id = JausVehicleBridge::machineId(m_subsystem);
+            m_gate->clearStop(id, m_gate->requestClearToken(id), QStringLiteral("teleop"));
+        }
+    });
+
+    buildLayout(buildInputs());
+    connectStickAndVideo();
+    connect(m_controller, &TeleopController::command, this, &TeleopPanel::onCommand);
+    connect(m_controller, &TeleopController::command, m_axes, &AxisDisplay::setMapped);
+    // Zero on release, focus loss, joystick loss...: the controller sends the zero demand at once, then the
+    // session ends through the gate (the stack sends zeros several times).
+    connect(m_controller, &TeleopController::stopped, this, [this](const QString& reason) {
+        if (m_session != Session::Closed)
+            endSession(reason);
+    });
+    // Out of the operator's sight (a dock tab behind another gets no hide event): nothing drives. The
+    // full-screen video window keeps the keys and the stream.
+    m_onScreen = new OnScreenWatcher(this);
+    connect(m_onScreen, &OnScreenWatcher::changed, this, [this](bool on) {
+        if (!on && !m_video->fullScreenWindow())
+            releaseAll(tr("teleop panel hidden"));
+    });
+    connect(bridge, &JausVehicleBridge::driveProblem, this,
+            [this](quint16 subsystem, const QString& text, bool failing) {
+                if (subsystem != m_subsystem)
+                    return;
+                if (failing)
+                    showDriveProblem(text);
+                else
+                    showDriveProblem({});
+            });
+    connectInputDevice(device);
+    connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& s) {
+        // Nothing selected yet: show the first vehicle heard of (its video and state; driving still needs
+        // control of it), rather than an empty panel.
+        if (!m_subsystem && m_autoSelect)
+            setVehicle(s.subsystem);
+        if (s.subsystem == m_subsystem)
+            refresh();
+    });
+    if (selection)
+        connect(selection, &FleetSelection::currentMachineChanged, this, [this](const QString& id) {
+            if (auto sub = JausVehicleBridge::subsystemOf(id))
+                setVehicle(*sub);
+        });
+    // Window focus loss (another application, a dialog): stop driving at once.
+    connect(qApp, &QApplication::applicationStateChanged, this, [this](Qt::ApplicationState st) {
+        if (st != Qt::ApplicationActive)
+            releaseAll(tr("window lost focus"));
+    });
+    m_stick->installEventFilter(this);
+    refresh();
+}
+
+// The video pane, the camera pan-tilt and the status lines above it.
+void TeleopPanel::buildVideoAndLabels() {
     m_video = new TeleopVideoPane(this);
     m_video->setKeyFilter(this);
     m_panTilt = new PanTiltController(this);
@@ -62,7 +123,10 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     // Long state lines wrap rather than widen the panel beyond its dock (the video needs the width).
     m_state->setWordWrap(true);
     m_live->setWordWrap(true);
+}
 
+// E-STOP (button, Space, Esc) and the hold-to-clear button.
+void TeleopPanel::buildStopButtons() {
     m_estop->setObjectName(QStringLiteral("button-estop"));
     m_estop->setMinimumHeight(64);
     m_estop->setStyleSheet(QStringLiteral("QPushButton { background:#c81e1e; color:white; font-size:22px;"
@@ -81,14 +145,10 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     }
     m_clear->setObjectName(QStringLiteral("button-clear-emergency"));
     m_clear->setHoldDurationMs(1500);
-    connect(m_clear, &HoldToConfirmButton::confirmed, this, [this] {
-        // The hold is the deliberate confirmation: it buys the gate's one-time token, and the gate audits.
-        if (m_subsystem && m_gate) {
-            const QString id = JausVehicleBridge::machineId(m_subsystem);
-            m_gate->clearStop(id, m_gate->requestClearToken(id), QStringLiteral("teleop"));
-        }
-    });
+}
 
+// The on-screen stick beside the drive settings (mode, speed limit, joystick), the axes and the key hint.
+QBoxLayout* TeleopPanel::buildInputs() {
     m_mode->setObjectName(QStringLiteral("combo-drive-mode"));
     m_mode->addItem(tr("Velocity (m/s, rad/s)"), QStringLiteral("velocity"));
     m_mode->addItem(tr("Wrench effort (%)"), QStringLiteral("effort"));
@@ -133,7 +193,10 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     right->addWidget(keysHint);
     right->addStretch(1);
     inputs->addLayout(right, 1);
+    return inputs;
+}
 
+void TeleopPanel::buildLayout(QBoxLayout* inputs) {
     auto* l = new QVBoxLayout(this);
     l->addWidget(m_title);
     l->addWidget(m_state);
@@ -151,7 +214,10 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     stops->addWidget(m_estop, 2);
     stops->addWidget(m_clear, 1);
     l->addLayout(stops);
+}
 
+// The on-screen stick drives or moves the camera; the video pane reports its watchdog and camera changes.
+void TeleopPanel::connectStickAndVideo() {
     connect(m_stick, &VirtualStick::axesChanged, this, [this](DriveAxes a) {
         if (m_stickCamera->isChecked())
             m_panTilt->setStick(a);
@@ -172,30 +238,9 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
         m_panTilt->releaseAll(tr("camera changed"));
         refresh();
     });
-    connect(m_controller, &TeleopController::command, this, &TeleopPanel::onCommand);
-    connect(m_controller, &TeleopController::command, m_axes, &AxisDisplay::setMapped);
-    // Zero on release, focus loss, joystick loss...: the controller sends the zero demand at once, then the
-    // session ends through the gate (the stack sends zeros several times).
-    connect(m_controller, &TeleopController::stopped, this, [this](const QString& reason) {
-        if (m_session != Session::Closed)
-            endSession(reason);
-    });
-    // Out of the operator's sight (a dock tab behind another gets no hide event): nothing drives. The
-    // full-screen video window keeps the keys and the stream.
-    m_onScreen = new OnScreenWatcher(this);
-    connect(m_onScreen, &OnScreenWatcher::changed, this, [this](bool on) {
-        if (!on && !m_video->fullScreenWindow())
-            releaseAll(tr("teleop panel hidden"));
-    });
-    connect(bridge, &JausVehicleBridge::driveProblem, this,
-            [this](quint16 subsystem, const QString& text, bool failing) {
-                if (subsystem != m_subsystem)
-                    return;
-                if (failing)
-                    showDriveProblem(text);
-                else
-                    showDriveProblem({});
-            });
+}
+
+void TeleopPanel::connectInputDevice(InputDevice* device) {
     m_inputDevice = device;
     if (device) {
         m_controller->setDevice(device);
@@ -214,26 +259,6 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
         });
         connect(device, &InputDevice::rawAxesChanged, m_axes, &AxisDisplay::setAxes);
     }
-    connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& s) {
-        // Nothing selected yet: show the first vehicle heard of (its video and state; driving still needs
-        // control of it), rather than an empty panel.
-        if (!m_subsystem && m_autoSelect)
-            setVehicle(s.subsystem);
-        if (s.subsystem == m_subsystem)
-            refresh();
-    });
-    if (selection)
-        connect(selection, &FleetSelection::currentMachineChanged, this, [this](const QString& id) {
-            if (auto sub = JausVehicleBridge::subsystemOf(id))
-                setVehicle(*sub);
-        });
-    // Window focus loss (another application, a dialog): stop driving at once.
-    connect(qApp, &QApplication::applicationStateChanged, this, [this](Qt::ApplicationState st) {
-        if (st != Qt::ApplicationActive)
-            releaseAll(tr("window lost focus"));
-    });
-    m_stick->installEventFilter(this);
-    refresh();
 }
 
 TeleopPanel::~TeleopPanel() {

@@ -87,6 +87,13 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    // Construction, in the order the panel is laid out.
+    void buildVideoAndLabels();
+    void buildStopButtons();
+    QBoxLayout* buildInputs();
+    void buildLayout(QBoxLayout* inputs);
+    void connectStickAndVideo();
+    void connectInputDevice(InputDevice* device);
     void refresh();
     void emergencyStop();
     void onCommand(DriveAxes axes);

@@ -1,7 +1,10 @@
 #pragma once
-// Builds and updates the VTK scene of the 3D site view from a Scene3D. VTK stays in the .cpp (pimpl);
+// Builds and updates the VTK scene of the 3D site view from a Scene3D. VTK stays behind the pimpl;
 // only a forward declaration of vtkRenderer is visible here. The renderer is attached to a window by
 // VtkOpenGLWidget (GUI) or EglOffscreenRenderer (headless); both call only renderer().
+// It composes the parts of the scene, one class and file each: SceneTerrain (the ground and its heights),
+// SceneWays (roads, lanes, areas), ScenePassTexture (the pass-count raster), SceneMachines (machine glyphs,
+// selection box, picking), SceneLabels (name labels) and SceneCamera (framing, follow, orbit, projection).
 #include "widgets/view3d/Scene3D.h"
 
 #include <QPointF>
