@@ -22,27 +22,27 @@ Result<CrsTransform> CrsTransform::fromWgs84To(int epsg) {
     if (epsg <= 0 || epsg > 999999)
         return makeError("EPSG code " + std::to_string(epsg) + " is not valid");
     CrsTransform t;
-    t.d = std::make_unique<Impl>();
+    t.m_impl = std::make_unique<Impl>();
     t.m_epsg = epsg;
-    t.d->ctx = proj_context_create();
-    proj_log_level(t.d->ctx, PJ_LOG_NONE);
+    t.m_impl->ctx = proj_context_create();
+    proj_log_level(t.m_impl->ctx, PJ_LOG_NONE);
     const std::string target = "EPSG:" + std::to_string(epsg);
-    PJ* crs = proj_create(t.d->ctx, target.c_str());
+    PJ* crs = proj_create(t.m_impl->ctx, target.c_str());
     if (!crs)
         return makeError("PROJ does not know " + target);
     const PJ_TYPE type = proj_get_type(crs);
     if (const char* n = proj_get_name(crs))
-        t.d->name = n;
+        t.m_impl->name = n;
     proj_destroy(crs);
     if (type != PJ_TYPE_PROJECTED_CRS)
-        return makeError(target + " (" + t.d->name + ") is not a projected CRS");
-    PJ* raw = proj_create_crs_to_crs(t.d->ctx, "EPSG:4326", target.c_str(), nullptr);
+        return makeError(target + " (" + t.m_impl->name + ") is not a projected CRS");
+    PJ* raw = proj_create_crs_to_crs(t.m_impl->ctx, "EPSG:4326", target.c_str(), nullptr);
     if (!raw)
         return makeError("PROJ cannot convert between EPSG:4326 and " + target);
     // Axis order lon/lat in, easting/northing out, whatever the CRS definitions say.
-    t.d->pj = proj_normalize_for_visualization(t.d->ctx, raw);
+    t.m_impl->pj = proj_normalize_for_visualization(t.m_impl->ctx, raw);
     proj_destroy(raw);
-    if (!t.d->pj)
+    if (!t.m_impl->pj)
         return makeError("PROJ cannot normalise the conversion to " + target);
     return t;
 }
@@ -52,13 +52,13 @@ CrsTransform& CrsTransform::operator=(CrsTransform&&) noexcept = default;
 CrsTransform::~CrsTransform() = default;
 
 std::string CrsTransform::name() const {
-    return d ? d->name : std::string();
+    return m_impl ? m_impl->name : std::string();
 }
 
 bool CrsTransform::toProjected(double lat, double lon, double& e, double& n) const {
-    if (!d || !std::isfinite(lat) || !std::isfinite(lon))
+    if (!m_impl || !std::isfinite(lat) || !std::isfinite(lon))
         return false;
-    const PJ_COORD c = proj_trans(d->pj, PJ_FWD, proj_coord(lon, lat, 0, 0));
+    const PJ_COORD c = proj_trans(m_impl->pj, PJ_FWD, proj_coord(lon, lat, 0, 0));
     if (!std::isfinite(c.xy.x) || !std::isfinite(c.xy.y))
         return false;
     e = c.xy.x;
@@ -67,9 +67,9 @@ bool CrsTransform::toProjected(double lat, double lon, double& e, double& n) con
 }
 
 bool CrsTransform::toGeographic(double e, double n, double& lat, double& lon) const {
-    if (!d || !std::isfinite(e) || !std::isfinite(n))
+    if (!m_impl || !std::isfinite(e) || !std::isfinite(n))
         return false;
-    const PJ_COORD c = proj_trans(d->pj, PJ_INV, proj_coord(e, n, 0, 0));
+    const PJ_COORD c = proj_trans(m_impl->pj, PJ_INV, proj_coord(e, n, 0, 0));
     if (!std::isfinite(c.lp.lam) || !std::isfinite(c.lp.phi))
         return false;
     lon = c.lp.lam;
@@ -78,10 +78,10 @@ bool CrsTransform::toGeographic(double e, double n, double& lat, double& lon) co
 }
 
 bool CrsTransform::toProjected(double* latE, double* lonN, std::size_t n) const {
-    if (!d)
+    if (!m_impl)
         return false;
     // proj_trans_generic takes x = lon, y = lat (normalised): pass the longitude array first.
-    proj_trans_generic(d->pj, PJ_FWD, lonN, sizeof(double), n, latE, sizeof(double), n, nullptr, 0, 0,
+    proj_trans_generic(m_impl->pj, PJ_FWD, lonN, sizeof(double), n, latE, sizeof(double), n, nullptr, 0, 0,
                        nullptr, 0, 0);
     bool ok = true;
     for (std::size_t i = 0; i < n; ++i) {
@@ -92,9 +92,9 @@ bool CrsTransform::toProjected(double* latE, double* lonN, std::size_t n) const 
 }
 
 bool CrsTransform::toGeographic(double* eLat, double* nLon, std::size_t n) const {
-    if (!d)
+    if (!m_impl)
         return false;
-    proj_trans_generic(d->pj, PJ_INV, eLat, sizeof(double), n, nLon, sizeof(double), n, nullptr, 0, 0,
+    proj_trans_generic(m_impl->pj, PJ_INV, eLat, sizeof(double), n, nLon, sizeof(double), n, nullptr, 0, 0,
                        nullptr, 0, 0);
     bool ok = true;
     for (std::size_t i = 0; i < n; ++i) {

@@ -31,7 +31,7 @@ public:
 private:
     CrsTransform() = default;
     struct Impl;
-    std::unique_ptr<Impl> d;
+    std::unique_ptr<Impl> m_impl;
     int m_epsg = 0;
 };
 

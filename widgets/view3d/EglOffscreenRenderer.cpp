@@ -232,38 +232,38 @@ struct EglOffscreenRenderer::Impl {
     }
 };
 
-EglOffscreenRenderer::EglOffscreenRenderer() : d(std::make_unique<Impl>()) {}
+EglOffscreenRenderer::EglOffscreenRenderer() : m_impl(std::make_unique<Impl>()) {}
 EglOffscreenRenderer::~EglOffscreenRenderer() = default;
 
 bool EglOffscreenRenderer::initialize() {
-    if (d->tried)
-        return d->backend != Backend::None;
-    d->tried = true;
+    if (m_impl->tried)
+        return m_impl->backend != Backend::None;
+    m_impl->tried = true;
     // OCU_VIEW3D_NO_EGL=1 skips EGL (diagnosis, and tests of the fallback paths).
     if (qEnvironmentVariableIntValue("OCU_VIEW3D_NO_EGL") == 1)
-        d->error = QStringLiteral("EGL disabled by OCU_VIEW3D_NO_EGL=1");
-    else if (d->initEgl())
+        m_impl->error = QStringLiteral("EGL disabled by OCU_VIEW3D_NO_EGL=1");
+    else if (m_impl->initEgl())
         return true;
-    const QString eglError = d->error;
-    d->window = nullptr;
-    d->releaseEgl();
-    if (d->initX()) {
-        d->error.clear();
+    const QString eglError = m_impl->error;
+    m_impl->window = nullptr;
+    m_impl->releaseEgl();
+    if (m_impl->initX()) {
+        m_impl->error.clear();
         return true;
     }
-    d->error = eglError + (qEnvironmentVariable("DISPLAY").isEmpty()
-                               ? QStringLiteral("; no X server for the fallback (DISPLAY is not set)")
-                               : QStringLiteral("; the X server in DISPLAY is not reachable"));
-    logWarning("ocu.view3d", d->error.toStdString());
+    m_impl->error = eglError + (qEnvironmentVariable("DISPLAY").isEmpty()
+                                    ? QStringLiteral("; no X server for the fallback (DISPLAY is not set)")
+                                    : QStringLiteral("; the X server in DISPLAY is not reachable"));
+    logWarning("ocu.view3d", m_impl->error.toStdString());
     return false;
 }
 
 EglOffscreenRenderer::Backend EglOffscreenRenderer::backend() const {
-    return d->backend;
+    return m_impl->backend;
 }
 
 QString EglOffscreenRenderer::backendName() const {
-    switch (d->backend) {
+    switch (m_impl->backend) {
     case Backend::EglSurfaceless:
         return QStringLiteral("EGL surfaceless");
     case Backend::XOffscreen:
@@ -275,13 +275,13 @@ QString EglOffscreenRenderer::backendName() const {
 }
 
 QString EglOffscreenRenderer::errorString() const {
-    return d->error;
+    return m_impl->error;
 }
 
 QImage EglOffscreenRenderer::render(SiteSceneRenderer& scene, QSize size) {
     if (!initialize() || size.isEmpty())
         return {};
-    vtkRenderWindow* rw = d->window;
+    vtkRenderWindow* rw = m_impl->window;
     vtkRenderer* renderer = scene.renderer();
     if (!rw->HasRenderer(renderer)) {
         if (vtkRenderWindow* other = renderer->GetRenderWindow(); other != nullptr && other != rw)
@@ -294,13 +294,13 @@ QImage EglOffscreenRenderer::render(SiteSceneRenderer& scene, QSize size) {
     const int w = size.width(), h = size.height();
     // RGBA is the framebuffer's own layout (a plain copy in Mesa; RGB would be converted pixel by pixel).
     // The background's alpha is 0 (toolchain.md pitfall), so the image format ignores alpha.
-    if (rw->GetRGBACharPixelData(0, 0, w - 1, h - 1, 0, d->pixels) != 1 /* VTK_OK */) {
-        d->error = QStringLiteral("reading the rendered pixels failed");
+    if (rw->GetRGBACharPixelData(0, 0, w - 1, h - 1, 0, m_impl->pixels) != 1 /* VTK_OK */) {
+        m_impl->error = QStringLiteral("reading the rendered pixels failed");
         return {};
     }
     // RGBX promises 255 in the fourth byte, and some of Qt's copies keep the byte as it is: a screenshot of
     // the 3D panel alone had a transparent sky. The scene is opaque: the alpha bytes are set.
-    std::uint8_t* px = d->pixels->GetPointer(0);
+    std::uint8_t* px = m_impl->pixels->GetPointer(0);
     for (std::size_t i = 3, n = std::size_t(w) * std::size_t(h) * 4; i < n; i += 4)
         px[i] = 255;
     // VTK's origin is bottom-left; mirrored() also makes the deep copy.

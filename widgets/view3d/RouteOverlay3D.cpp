@@ -27,33 +27,33 @@ struct RouteOverlay3D::Impl {
     QVector<QVector3D> points;
 };
 
-RouteOverlay3D::RouteOverlay3D(Site3DView* view) : QObject(view), d(std::make_unique<Impl>()) {
-    d->view = view;
-    d->mapper->SetInputData(d->poly);
-    d->actor->SetMapper(d->mapper);
-    d->actor->GetProperty()->SetColor(0.56, 0.14, 0.67);
-    d->actor->GetProperty()->SetLineWidth(6);
-    d->actor->GetProperty()->SetRenderLinesAsTubes(true);
-    d->actor->GetProperty()->LightingOff();
-    d->actor->PickableOff();
-    d->actor->VisibilityOff();
-    view->sceneRenderer().renderer()->AddActor(d->actor); // the renderer holds it from now on
+RouteOverlay3D::RouteOverlay3D(Site3DView* view) : QObject(view), m_impl(std::make_unique<Impl>()) {
+    m_impl->view = view;
+    m_impl->mapper->SetInputData(m_impl->poly);
+    m_impl->actor->SetMapper(m_impl->mapper);
+    m_impl->actor->GetProperty()->SetColor(0.56, 0.14, 0.67);
+    m_impl->actor->GetProperty()->SetLineWidth(6);
+    m_impl->actor->GetProperty()->SetRenderLinesAsTubes(true);
+    m_impl->actor->GetProperty()->LightingOff();
+    m_impl->actor->PickableOff();
+    m_impl->actor->VisibilityOff();
+    view->sceneRenderer().renderer()->AddActor(m_impl->actor); // the renderer holds it from now on
 }
 
 // The renderer is not touched here: as a child of the view this runs after the view's renderer and its window
 // are gone (the renderer keeps a reference to the actor and releases it with itself); hiding our own actor
 // covers an overlay deleted before its view.
 RouteOverlay3D::~RouteOverlay3D() {
-    d->actor->VisibilityOff();
+    m_impl->actor->VisibilityOff();
 }
 
 void RouteOverlay3D::setPath(const QVector<QPointF>& path) {
-    d->points.clear();
-    if (d->view) {
-        const SiteSceneRenderer& scene = d->view->sceneRenderer();
+    m_impl->points.clear();
+    if (m_impl->view) {
+        const SiteSceneRenderer& scene = m_impl->view->sceneRenderer();
         auto add = [&](QPointF p) {
-            d->points << QVector3D(float(p.x()), float(p.y()),
-                                   float(scene.terrainHeight(p.x(), p.y()) + kLift));
+            m_impl->points << QVector3D(float(p.x()), float(p.y()),
+                                        float(scene.terrainHeight(p.x(), p.y()) + kLift));
         };
         for (int i = 0; i < path.size(); ++i) {
             if (i > 0) {
@@ -68,28 +68,28 @@ void RouteOverlay3D::setPath(const QVector<QPointF>& path) {
     }
     vtkNew<vtkPoints> pts;
     vtkNew<vtkCellArray> lines;
-    if (d->points.size() >= 2) {
-        lines->InsertNextCell(vtkIdType(d->points.size()));
-        for (const auto& p : d->points)
+    if (m_impl->points.size() >= 2) {
+        lines->InsertNextCell(vtkIdType(m_impl->points.size()));
+        for (const auto& p : m_impl->points)
             lines->InsertCellPoint(pts->InsertNextPoint(p.x(), p.y(), p.z()));
     }
-    d->poly->SetPoints(pts);
-    d->poly->SetLines(lines);
-    d->poly->Modified();
-    d->actor->SetVisibility(d->points.size() >= 2);
-    if (d->view)
-        d->view->refresh();
+    m_impl->poly->SetPoints(pts);
+    m_impl->poly->SetLines(lines);
+    m_impl->poly->Modified();
+    m_impl->actor->SetVisibility(m_impl->points.size() >= 2);
+    if (m_impl->view)
+        m_impl->view->refresh();
 }
 
 void RouteOverlay3D::setStyle(double r, double g, double b, float width) {
-    d->actor->GetProperty()->SetColor(r, g, b);
-    d->actor->GetProperty()->SetLineWidth(width);
-    if (d->view)
-        d->view->refresh();
+    m_impl->actor->GetProperty()->SetColor(r, g, b);
+    m_impl->actor->GetProperty()->SetLineWidth(width);
+    if (m_impl->view)
+        m_impl->view->refresh();
 }
 
 QVector<QVector3D> RouteOverlay3D::drawnPoints() const {
-    return d->points;
+    return m_impl->points;
 }
 
 } // namespace ocu

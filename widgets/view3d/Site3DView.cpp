@@ -189,7 +189,7 @@ struct Site3DView::Impl {
     QString status;
 };
 
-Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Impl>()) {
+Site3DView::Site3DView(QWidget* parent) : QWidget(parent), m_impl(std::make_unique<Impl>()) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
@@ -197,108 +197,111 @@ Site3DView::Site3DView(QWidget* parent) : QWidget(parent), d(std::make_unique<Im
     auto* toolbar = new QToolBar(this);
     toolbar->setObjectName(QStringLiteral("view3dToolbar"));
     auto* group = new QActionGroup(this);
-    d->orbit = toolbar->addAction(tr("Orbit"));
-    d->orbit->setToolTip(tr("Free orbit camera (drag to rotate, wheel to zoom)"));
-    d->follow = toolbar->addAction(tr("Follow"));
-    d->follow->setToolTip(tr("Keep the selected machine in the centre"));
-    d->top = toolbar->addAction(tr("Top"));
-    d->top->setToolTip(tr("Top-down view, north up"));
-    for (QAction* a : {d->orbit, d->follow, d->top}) {
+    m_impl->orbit = toolbar->addAction(tr("Orbit"));
+    m_impl->orbit->setToolTip(tr("Free orbit camera (drag to rotate, wheel to zoom)"));
+    m_impl->follow = toolbar->addAction(tr("Follow"));
+    m_impl->follow->setToolTip(tr("Keep the selected machine in the centre"));
+    m_impl->top = toolbar->addAction(tr("Top"));
+    m_impl->top->setToolTip(tr("Top-down view, north up"));
+    for (QAction* a : {m_impl->orbit, m_impl->follow, m_impl->top}) {
         a->setCheckable(true);
         group->addAction(a);
     }
-    d->orbit->setChecked(true);
+    m_impl->orbit->setChecked(true);
     toolbar->addSeparator();
     QAction* reset = toolbar->addAction(tr("Reset view"));
-    connect(d->orbit, &QAction::triggered, this, [this] { setCameraMode(CameraMode::FreeOrbit); });
-    connect(d->follow, &QAction::triggered, this, [this] { setCameraMode(CameraMode::FollowSelected); });
-    connect(d->top, &QAction::triggered, this, [this] { setCameraMode(CameraMode::TopDown); });
+    connect(m_impl->orbit, &QAction::triggered, this, [this] { setCameraMode(CameraMode::FreeOrbit); });
+    connect(m_impl->follow, &QAction::triggered, this, [this] { setCameraMode(CameraMode::FollowSelected); });
+    connect(m_impl->top, &QAction::triggered, this, [this] { setCameraMode(CameraMode::TopDown); });
     connect(reset, &QAction::triggered, this, [this] { resetCamera(); });
     layout->addWidget(toolbar);
 
-    d->layout = layout;
+    m_impl->layout = layout;
     if (useOffscreenImage()) {
-        d->backend = Backend::OffscreenImage;
-        d->egl = std::make_unique<EglOffscreenRenderer>();
-        d->image = new ImageView(this);
-        d->image->render = [this](QSize size) {
-            QImage img = d->egl->render(d->scene, size);
-            d->status = img.isNull() ? tr("3D view unavailable: %1").arg(d->egl->errorString()) : QString();
-            d->image->message = d->status;
+        m_impl->backend = Backend::OffscreenImage;
+        m_impl->egl = std::make_unique<EglOffscreenRenderer>();
+        m_impl->image = new ImageView(this);
+        m_impl->image->render = [this](QSize size) {
+            QImage img = m_impl->egl->render(m_impl->scene, size);
+            m_impl->status =
+                img.isNull() ? tr("3D view unavailable: %1").arg(m_impl->egl->errorString()) : QString();
+            m_impl->image->message = m_impl->status;
             return img;
         };
-        d->image->clicked = [this](QPointF px) {
-            const QString id = d->scene.pick(px.x(), px.y());
+        m_impl->image->clicked = [this](QPointF px) {
+            const QString id = m_impl->scene.pick(px.x(), px.y());
             if (!id.isEmpty()) {
                 setSelectedMachine(id);
                 emit machinePicked(id);
             }
         };
-        d->image->doubleClicked = [this](QPointF px) { activateMachine(d->scene.pick(px.x(), px.y())); };
+        m_impl->image->doubleClicked = [this](QPointF px) {
+            activateMachine(m_impl->scene.pick(px.x(), px.y()));
+        };
         // Same feel as the GL widget's trackball: a quarter degree per pixel, 10 % per wheel step.
-        d->image->dragged = [this](QPointF delta) {
-            d->scene.orbit(-delta.x() * 0.25, delta.y() * 0.25);
+        m_impl->image->dragged = [this](QPointF delta) {
+            m_impl->scene.orbit(-delta.x() * 0.25, delta.y() * 0.25);
             scheduleRender();
         };
-        d->image->wheeled = [this](double steps) {
-            d->scene.zoom(std::pow(1.1, steps));
+        m_impl->image->wheeled = [this](double steps) {
+            m_impl->scene.zoom(std::pow(1.1, steps));
             scheduleRender();
         };
-        if (!d->egl->initialize()) {
-            d->status = tr("3D view unavailable: %1").arg(d->egl->errorString());
-            d->image->message = d->status;
+        if (!m_impl->egl->initialize()) {
+            m_impl->status = tr("3D view unavailable: %1").arg(m_impl->egl->errorString());
+            m_impl->image->message = m_impl->status;
         }
         // Throttle: scene changes within 50 ms are drawn once (at most 20 renders per second).
-        d->renderTimer.setSingleShot(true);
-        d->renderTimer.setInterval(50);
-        connect(&d->renderTimer, &QTimer::timeout, d->image, qOverload<>(&QWidget::update));
-        d->image->setObjectName(QStringLiteral("view3dCanvas"));
-        layout->addWidget(d->image, 1);
-        d->legend = new LegendOverlay(d->image);
+        m_impl->renderTimer.setSingleShot(true);
+        m_impl->renderTimer.setInterval(50);
+        connect(&m_impl->renderTimer, &QTimer::timeout, m_impl->image, qOverload<>(&QWidget::update));
+        m_impl->image->setObjectName(QStringLiteral("view3dCanvas"));
+        layout->addWidget(m_impl->image, 1);
+        m_impl->legend = new LegendOverlay(m_impl->image);
     } else {
         // The QOpenGLWidget is created when the panel is first shown (ensureCanvas): a window that has never
         // held one composes its widgets without OpenGL, so a console whose 3D tab stays closed pays nothing
         // for it.
-        d->backend = Backend::OpenGLWidget;
-        d->placeholder = new CanvasPlaceholder(this, [this] { ensureCanvas(); });
-        layout->addWidget(d->placeholder, 1);
+        m_impl->backend = Backend::OpenGLWidget;
+        m_impl->placeholder = new CanvasPlaceholder(this, [this] { ensureCanvas(); });
+        layout->addWidget(m_impl->placeholder, 1);
     }
 }
 
 QWidget* Site3DView::ensureCanvas() const {
-    if (d->image != nullptr)
-        return d->image;
-    if (d->gl == nullptr) {
+    if (m_impl->image != nullptr)
+        return m_impl->image;
+    if (m_impl->gl == nullptr) {
         auto* self = const_cast<Site3DView*>(this);
-        d->gl = new VtkOpenGLWidget(&d->scene, self);
-        connect(d->gl, &VtkOpenGLWidget::machinePicked, self, [self](const QString& id) {
+        m_impl->gl = new VtkOpenGLWidget(&m_impl->scene, self);
+        connect(m_impl->gl, &VtkOpenGLWidget::machinePicked, self, [self](const QString& id) {
             self->setSelectedMachine(id);
             emit self->machinePicked(id);
         });
-        connect(d->gl, &VtkOpenGLWidget::machineDoubleClicked, self, &Site3DView::activateMachine);
-        d->gl->setObjectName(QStringLiteral("view3dCanvas"));
-        d->layout->replaceWidget(d->placeholder, d->gl);
-        d->placeholder->deleteLater();
-        d->placeholder = nullptr;
-        d->legend = new LegendOverlay(d->gl);
-        d->legend->setEntries(d->legendEntries);
+        connect(m_impl->gl, &VtkOpenGLWidget::machineDoubleClicked, self, &Site3DView::activateMachine);
+        m_impl->gl->setObjectName(QStringLiteral("view3dCanvas"));
+        m_impl->layout->replaceWidget(m_impl->placeholder, m_impl->gl);
+        m_impl->placeholder->deleteLater();
+        m_impl->placeholder = nullptr;
+        m_impl->legend = new LegendOverlay(m_impl->gl);
+        m_impl->legend->setEntries(m_impl->legendEntries);
     }
-    return d->gl;
+    return m_impl->gl;
 }
 
 void Site3DView::showEvent(QShowEvent* event) {
     // Not at once: a QMainWindow shows every dock when it is first shown and only then hides the tabs that
     // are not current; the GL widget is made once the panel is still shown after that (and then at once
     // when it is really raised).
-    if (d->image == nullptr && d->gl == nullptr)
+    if (m_impl->image == nullptr && m_impl->gl == nullptr)
         QTimer::singleShot(0, this, [this] {
             if (isVisible() && !visibleRegion().isEmpty())
                 ensureCanvas();
         });
     QWidget::showEvent(event);
     // Changes that arrived while hidden were not drawn: draw the current state once.
-    if (d->image != nullptr)
-        d->image->markDirty();
+    if (m_impl->image != nullptr)
+        m_impl->image->markDirty();
     emit visibilityChanged(true);
 }
 
@@ -308,13 +311,13 @@ void Site3DView::hideEvent(QHideEvent* event) {
 }
 
 std::uint64_t Site3DView::renderCount() const {
-    return d->scene.renderCount();
+    return m_impl->scene.renderCount();
 }
 
 Site3DView::~Site3DView() {
-    // The GL widget holds the scene's renderer; delete it before the scene (a member of d) goes away.
-    delete d->gl;
-    d->gl = nullptr;
+    // The GL widget holds the scene's renderer; delete it before the scene (a member of m_impl) goes away.
+    delete m_impl->gl;
+    m_impl->gl = nullptr;
 }
 
 void Site3DView::prepareDefaultFormat() {
@@ -329,61 +332,61 @@ bool Site3DView::useOffscreenImage() {
 }
 
 Site3DView::Backend Site3DView::backend() const {
-    return d->backend;
+    return m_impl->backend;
 }
 
 QString Site3DView::statusMessage() const {
-    return d->status;
+    return m_impl->status;
 }
 
 void Site3DView::scheduleRender() {
-    if (d->gl != nullptr) {
+    if (m_impl->gl != nullptr) {
         if (isVisible())
-            d->gl->requestRender(); // Qt coalesces repaints
+            m_impl->gl->requestRender(); // Qt coalesces repaints
         return;
     }
-    if (d->image == nullptr)
+    if (m_impl->image == nullptr)
         return; // no canvas yet: the first show draws the current scene
-    d->image->markDirty();
-    if (isVisible() && !d->renderTimer.isActive())
-        d->renderTimer.start();
+    m_impl->image->markDirty();
+    if (isVisible() && !m_impl->renderTimer.isActive())
+        m_impl->renderTimer.start();
 }
 
 void Site3DView::setScene(const Scene3D& scene) {
-    d->scene.setScene(scene);
-    d->legendEntries = scene.legend;
-    if (d->legend != nullptr)
-        d->legend->setEntries(scene.legend);
+    m_impl->scene.setScene(scene);
+    m_impl->legendEntries = scene.legend;
+    if (m_impl->legend != nullptr)
+        m_impl->legend->setEntries(scene.legend);
     scheduleRender();
 }
 
 void Site3DView::updateMachines(const std::vector<Machine3D>& machines) {
-    d->scene.updateMachines(machines);
+    m_impl->scene.updateMachines(machines);
     scheduleRender();
 }
 
 void Site3DView::setPassCount(const PassCountRaster& raster, const std::vector<LegendEntry>& legend) {
-    d->scene.setPassCount(raster, legend);
-    d->legendEntries = legend;
-    if (d->legend != nullptr)
-        d->legend->setEntries(legend);
+    m_impl->scene.setPassCount(raster, legend);
+    m_impl->legendEntries = legend;
+    if (m_impl->legend != nullptr)
+        m_impl->legend->setEntries(legend);
     scheduleRender();
 }
 
 void Site3DView::setSelectedMachine(const QString& id) {
-    if (id == d->scene.selectedMachine())
+    if (id == m_impl->scene.selectedMachine())
         return;
-    d->scene.setSelectedMachine(id);
+    m_impl->scene.setSelectedMachine(id);
     scheduleRender();
 }
 
 QString Site3DView::selectedMachine() const {
-    return d->scene.selectedMachine();
+    return m_impl->scene.selectedMachine();
 }
 
 void Site3DView::setCameraMode(CameraMode mode) {
-    const bool changed = mode != d->scene.cameraMode();
-    d->scene.setCameraMode(mode);
+    const bool changed = mode != m_impl->scene.cameraMode();
+    m_impl->scene.setCameraMode(mode);
     syncModeButtons();
     scheduleRender();
     if (changed)
@@ -391,24 +394,24 @@ void Site3DView::setCameraMode(CameraMode mode) {
 }
 
 CameraMode Site3DView::cameraMode() const {
-    return d->scene.cameraMode();
+    return m_impl->scene.cameraMode();
 }
 
 void Site3DView::resetCamera() {
-    d->scene.resetCamera();
+    m_impl->scene.resetCamera();
     scheduleRender();
 }
 
 void Site3DView::syncModeButtons() {
-    switch (d->scene.cameraMode()) {
+    switch (m_impl->scene.cameraMode()) {
     case CameraMode::FreeOrbit:
-        d->orbit->setChecked(true);
+        m_impl->orbit->setChecked(true);
         break;
     case CameraMode::FollowSelected:
-        d->follow->setChecked(true);
+        m_impl->follow->setChecked(true);
         break;
     case CameraMode::TopDown:
-        d->top->setChecked(true);
+        m_impl->top->setChecked(true);
         break;
     }
 }
@@ -416,21 +419,21 @@ void Site3DView::syncModeButtons() {
 QImage Site3DView::renderImage(QSize size) {
     if (size.isEmpty())
         size = viewPixelSize();
-    if (d->egl) {
-        QImage img = d->egl->render(d->scene, size);
-        d->image->markDirty(); // the shared window now has `size`; repaint the panel at its own size
-        d->image->update();
+    if (m_impl->egl) {
+        QImage img = m_impl->egl->render(m_impl->scene, size);
+        m_impl->image->markDirty(); // the shared window now has `size`; repaint the panel at its own size
+        m_impl->image->update();
         return img;
     }
     ensureCanvas();
-    const QImage frame = d->gl->grabFramebuffer();
+    const QImage frame = m_impl->gl->grabFramebuffer();
     if (frame.isNull() || frame.size() == size)
         return frame;
     return frame.scaled(size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
 }
 
 SiteSceneRenderer& Site3DView::sceneRenderer() {
-    return d->scene;
+    return m_impl->scene;
 }
 
 QSize Site3DView::viewPixelSize() const {

@@ -81,7 +81,7 @@ private:
     void syncModeButtons();
     QWidget* ensureCanvas() const;
     struct Impl;
-    std::unique_ptr<Impl> d;
+    std::unique_ptr<Impl> m_impl;
 };
 
 } // namespace ocu

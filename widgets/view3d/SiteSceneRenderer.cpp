@@ -91,130 +91,130 @@ struct SiteSceneRenderer::Impl {
     }
 };
 
-SiteSceneRenderer::SiteSceneRenderer() : d(std::make_unique<Impl>()) {}
+SiteSceneRenderer::SiteSceneRenderer() : m_impl(std::make_unique<Impl>()) {}
 SiteSceneRenderer::~SiteSceneRenderer() = default;
 
 vtkRenderer* SiteSceneRenderer::renderer() const {
-    return d->renderer;
+    return m_impl->renderer;
 }
 
 void SiteSceneRenderer::setScene(const Scene3D& scene) {
     const std::vector<Machine3D> machines = scene.machines;
-    d->scene = scene;
-    d->scene.machines = {};
-    d->machines.forgetIds();
-    d->renderer->SetBackground(scene.background.r / 255.0, scene.background.g / 255.0,
-                               scene.background.b / 255.0);
-    d->terrain.build(d->scene.terrain);
-    d->ways.build(d->scene.ways, d->terrain);
-    d->passTexture.invalidateMesh(); // the terrain may have changed: re-drape the raster mesh
-    d->passTexture.build(d->scene.passCount, d->terrain);
-    d->applyMachines(machines);
-    ++d->buildCount;
+    m_impl->scene = scene;
+    m_impl->scene.machines = {};
+    m_impl->machines.forgetIds();
+    m_impl->renderer->SetBackground(scene.background.r / 255.0, scene.background.g / 255.0,
+                                    scene.background.b / 255.0);
+    m_impl->terrain.build(m_impl->scene.terrain);
+    m_impl->ways.build(m_impl->scene.ways, m_impl->terrain);
+    m_impl->passTexture.invalidateMesh(); // the terrain may have changed: re-drape the raster mesh
+    m_impl->passTexture.build(m_impl->scene.passCount, m_impl->terrain);
+    m_impl->applyMachines(machines);
+    ++m_impl->buildCount;
     double b[6];
-    d->terrain.bounds(d->scene.terrain, b);
-    d->camera.frame(b, d->machines.find(d->selected));
+    m_impl->terrain.bounds(m_impl->scene.terrain, b);
+    m_impl->camera.frame(b, m_impl->machines.find(m_impl->selected));
 }
 
 void SiteSceneRenderer::updateMachines(const std::vector<Machine3D>& machines) {
-    d->applyMachines(machines);
-    d->renderer->ResetCameraClippingRange();
+    m_impl->applyMachines(machines);
+    m_impl->renderer->ResetCameraClippingRange();
 }
 
 void SiteSceneRenderer::setPassCount(const PassCountRaster& raster, const std::vector<LegendEntry>& legend) {
-    d->scene.passCount = raster;
-    d->scene.legend = legend;
-    d->passTexture.build(d->scene.passCount, d->terrain);
+    m_impl->scene.passCount = raster;
+    m_impl->scene.legend = legend;
+    m_impl->passTexture.build(m_impl->scene.passCount, m_impl->terrain);
 }
 
 void SiteSceneRenderer::setSelectedMachine(const QString& id) {
-    if (id != d->selected)
-        d->camera.forgetFollow();
-    d->selected = id;
-    for (Machine3D& m : d->scene.machines)
+    if (id != m_impl->selected)
+        m_impl->camera.forgetFollow();
+    m_impl->selected = id;
+    for (Machine3D& m : m_impl->scene.machines)
         m.selected = (m.id == id);
-    d->updateSelection();
+    m_impl->updateSelection();
 }
 
 QString SiteSceneRenderer::selectedMachine() const {
-    return d->selected;
+    return m_impl->selected;
 }
 
 void SiteSceneRenderer::setCameraMode(CameraMode mode) {
-    if (mode == d->camera.mode())
+    if (mode == m_impl->camera.mode())
         return;
-    d->camera.setMode(mode);
-    d->resetCamera();
+    m_impl->camera.setMode(mode);
+    m_impl->resetCamera();
 }
 
 CameraMode SiteSceneRenderer::cameraMode() const {
-    return d->camera.mode();
+    return m_impl->camera.mode();
 }
 
 void SiteSceneRenderer::resetCamera() {
-    d->resetCamera();
+    m_impl->resetCamera();
 }
 
 double SiteSceneRenderer::viewElevationDeg() const {
-    return d->camera.viewElevationDeg();
+    return m_impl->camera.viewElevationDeg();
 }
 
 void SiteSceneRenderer::orbit(double azimuthDeg, double elevationDeg) {
-    d->camera.orbit(azimuthDeg, elevationDeg);
+    m_impl->camera.orbit(azimuthDeg, elevationDeg);
 }
 
 void SiteSceneRenderer::zoom(double factor) {
-    d->camera.zoom(factor);
+    m_impl->camera.zoom(factor);
 }
 
 double SiteSceneRenderer::terrainHeight(double e, double n) const {
-    return d->terrain.height(e, n);
+    return m_impl->terrain.height(e, n);
 }
 
 QString SiteSceneRenderer::pick(double x, double y) const {
     double ray[2][3];
-    if (!d->camera.ray(x, y, ray))
+    if (!m_impl->camera.ray(x, y, ray))
         return {};
-    return d->machines.pick(ray);
+    return m_impl->machines.pick(ray);
 }
 
 std::optional<QPointF> SiteSceneRenderer::project(double e, double n, double u) const {
-    return d->camera.project(e, n, u);
+    return m_impl->camera.project(e, n, u);
 }
 
 const Scene3D& SiteSceneRenderer::scene() const {
-    return d->scene;
+    return m_impl->scene;
 }
 
 std::optional<Machine3D> SiteSceneRenderer::machine(const QString& id) const {
-    const Machine3D* m = d->machines.find(id);
+    const Machine3D* m = m_impl->machines.find(id);
     if (m == nullptr)
         return std::nullopt;
     return *m;
 }
 
 std::uint64_t SiteSceneRenderer::sceneBuildCount() const {
-    return d->buildCount;
+    return m_impl->buildCount;
 }
 
 std::uint64_t SiteSceneRenderer::machineLayoutCount() const {
-    return d->machines.layoutCount();
+    return m_impl->machines.layoutCount();
 }
 
 std::vector<QRectF> SiteSceneRenderer::nameLabelRects() const {
-    return d->labels.rects();
+    return m_impl->labels.rects();
 }
 
 std::uint64_t SiteSceneRenderer::renderCount() const {
-    return d->renders;
+    return m_impl->renders;
 }
 
 std::array<int, 2> SiteSceneRenderer::passTextureSize() const {
-    return d->passTexture.textureSize();
+    return m_impl->passTexture.textureSize();
 }
 
 std::array<std::uint8_t, 4> SiteSceneRenderer::passTexel(int x, int y) const {
-    return d->passTexture.texel(x, y);
+    return m_impl->passTexture.texel(x, y);
 }
 
 } // namespace ocu

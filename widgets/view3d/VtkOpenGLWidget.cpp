@@ -61,42 +61,43 @@ struct VtkOpenGLWidget::Impl {
 };
 
 VtkOpenGLWidget::VtkOpenGLWidget(SiteSceneRenderer* scene, QWidget* parent)
-    : QOpenGLWidget(parent), d(std::make_unique<Impl>()) {
-    d->q = this;
-    d->scene = scene;
+    : QOpenGLWidget(parent), m_impl(std::make_unique<Impl>()) {
+    m_impl->q = this;
+    m_impl->scene = scene;
     setFormat(defaultFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(64, 64);
 
-    d->makeCurrentCmd->SetCallback(&Impl::onMakeCurrent);
-    d->makeCurrentCmd->SetClientData(d.get());
-    d->isCurrentCmd->SetCallback(&Impl::onIsCurrent);
-    d->isCurrentCmd->SetClientData(d.get());
-    d->frameCmd->SetCallback(&Impl::onFrame);
-    d->frameCmd->SetClientData(d.get());
-    d->window->AddObserver(vtkCommand::WindowMakeCurrentEvent, d->makeCurrentCmd);
-    d->window->AddObserver(vtkCommand::WindowIsCurrentEvent, d->isCurrentCmd);
-    d->window->AddObserver(vtkCommand::WindowFrameEvent, d->frameCmd);
-    d->window->SetMultiSamples(0);
-    d->window->AddRenderer(scene->renderer());
+    m_impl->makeCurrentCmd->SetCallback(&Impl::onMakeCurrent);
+    m_impl->makeCurrentCmd->SetClientData(m_impl.get());
+    m_impl->isCurrentCmd->SetCallback(&Impl::onIsCurrent);
+    m_impl->isCurrentCmd->SetClientData(m_impl.get());
+    m_impl->frameCmd->SetCallback(&Impl::onFrame);
+    m_impl->frameCmd->SetClientData(m_impl.get());
+    m_impl->window->AddObserver(vtkCommand::WindowMakeCurrentEvent, m_impl->makeCurrentCmd);
+    m_impl->window->AddObserver(vtkCommand::WindowIsCurrentEvent, m_impl->isCurrentCmd);
+    m_impl->window->AddObserver(vtkCommand::WindowFrameEvent, m_impl->frameCmd);
+    m_impl->window->SetMultiSamples(0);
+    m_impl->window->AddRenderer(scene->renderer());
 
-    d->interactor->SetRenderWindow(d->window);
-    d->interactor->SetInteractorStyle(d->style);
+    m_impl->interactor->SetRenderWindow(m_impl->window);
+    m_impl->interactor->SetInteractorStyle(m_impl->style);
     // Enable(), never Initialize(): Initialize() renders before Qt has a context (segfault, toolchain.md
     // §4(a)).
-    d->interactor->Enable();
+    m_impl->interactor->Enable();
     // The style's own Render() calls are suppressed; every forwarded event schedules a Qt repaint instead.
-    d->interactor->EnableRenderOff();
+    m_impl->interactor->EnableRenderOff();
 }
 
 VtkOpenGLWidget::~VtkOpenGLWidget() {
-    d->finalize();
-    // QOpenGLWidget's destructor (which runs after d is gone) destroys the context; its aboutToBeDestroyed
-    // must not reach releaseVtkGraphics then (a crash seen 1 in 5 runs of test_view3d_gl under load).
+    m_impl->finalize();
+    // QOpenGLWidget's destructor (which runs after m_impl is gone) destroys the context; its
+    // aboutToBeDestroyed must not reach releaseVtkGraphics then (a crash seen 1 in 5 runs of test_view3d_gl
+    // under load).
     if (QOpenGLContext* c = context())
         disconnect(c, nullptr, this, nullptr);
-    d->window->RemoveRenderer(d->scene->renderer());
-    d->window->RemoveAllObservers();
+    m_impl->window->RemoveRenderer(m_impl->scene->renderer());
+    m_impl->window->RemoveAllObservers();
 }
 
 QSurfaceFormat VtkOpenGLWidget::defaultFormat() {
@@ -120,21 +121,21 @@ void VtkOpenGLWidget::requestRender() {
 }
 
 void VtkOpenGLWidget::releaseVtkGraphics() {
-    d->finalize();
+    m_impl->finalize();
 }
 
 bool VtkOpenGLWidget::isInitialized() const {
-    return d->initialized;
+    return m_impl->initialized;
 }
 
 void VtkOpenGLWidget::initializeGL() {
-    vtkGenericOpenGLRenderWindow* rw = d->window;
+    vtkGenericOpenGLRenderWindow* rw = m_impl->window;
     rw->SetOwnContext(0);
     rw->SetReadyForRendering(true);
     rw->SetForceMaximumHardwareLineWidth(1);
     // Default blit mode (BlitToCurrent): VTK copies its result into the FBO Qt has bound for paintGL.
     rw->OpenGLInitContext(); // glewInit inside Qt's context
-    d->initialized = true;
+    m_impl->initialized = true;
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &VtkOpenGLWidget::releaseVtkGraphics,
             Qt::UniqueConnection);
     resizeGL(width(), height());
@@ -144,17 +145,17 @@ void VtkOpenGLWidget::resizeGL(int, int) {
     const qreal dpr = devicePixelRatioF();
     const int w = qMax(1, qRound(width() * dpr));
     const int h = qMax(1, qRound(height() * dpr));
-    d->interactor->UpdateSize(w, h); // also sets the render window size
-    d->window->SetSize(w, h);
+    m_impl->interactor->UpdateSize(w, h); // also sets the render window size
+    m_impl->window->SetSize(w, h);
 }
 
 void VtkOpenGLWidget::paintGL() {
-    if (!d->initialized)
+    if (!m_impl->initialized)
         return;
-    d->inPaint = true;
-    d->scene->renderer()->ResetCameraClippingRange();
-    d->window->Render(); // pushes/pops VTK's GL state cache itself
-    d->inPaint = false;
+    m_impl->inPaint = true;
+    m_impl->scene->renderer()->ResetCameraClippingRange();
+    m_impl->window->Render(); // pushes/pops VTK's GL state cache itself
+    m_impl->inPaint = false;
     // Force alpha to 1 like VTK's own adapter does, or grabs under Mesa come out transparent.
     QOpenGLFunctions* f = context()->functions();
     f->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
@@ -189,9 +190,9 @@ unsigned long buttonEvent(Qt::MouseButton b, bool press) {
 } // namespace
 
 void VtkOpenGLWidget::mousePressEvent(QMouseEvent* event) {
-    setEventInfo(d->interactor, event->position(), devicePixelRatioF(), event->modifiers());
+    setEventInfo(m_impl->interactor, event->position(), devicePixelRatioF(), event->modifiers());
     if (const unsigned long e = buttonEvent(event->button(), true); e != vtkCommand::NoEvent)
-        d->interactor->InvokeEvent(e);
+        m_impl->interactor->InvokeEvent(e);
     if (event->button() == Qt::LeftButton) {
         m_pressPos = event->position().toPoint();
         m_pressed = true;
@@ -200,14 +201,14 @@ void VtkOpenGLWidget::mousePressEvent(QMouseEvent* event) {
 }
 
 void VtkOpenGLWidget::mouseReleaseEvent(QMouseEvent* event) {
-    setEventInfo(d->interactor, event->position(), devicePixelRatioF(), event->modifiers());
+    setEventInfo(m_impl->interactor, event->position(), devicePixelRatioF(), event->modifiers());
     if (const unsigned long e = buttonEvent(event->button(), false); e != vtkCommand::NoEvent)
-        d->interactor->InvokeEvent(e);
+        m_impl->interactor->InvokeEvent(e);
     if (event->button() == Qt::LeftButton && m_pressed) {
         m_pressed = false;
         if ((event->position().toPoint() - m_pressPos).manhattanLength() <= 4) {
             const qreal dpr = devicePixelRatioF();
-            const QString id = d->scene->pick(event->position().x() * dpr, event->position().y() * dpr);
+            const QString id = m_impl->scene->pick(event->position().x() * dpr, event->position().y() * dpr);
             if (!id.isEmpty())
                 emit machinePicked(id);
         } else {
@@ -219,20 +220,20 @@ void VtkOpenGLWidget::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void VtkOpenGLWidget::mouseMoveEvent(QMouseEvent* event) {
-    setEventInfo(d->interactor, event->position(), devicePixelRatioF(), event->modifiers());
-    d->interactor->InvokeEvent(vtkCommand::MouseMoveEvent);
+    setEventInfo(m_impl->interactor, event->position(), devicePixelRatioF(), event->modifiers());
+    m_impl->interactor->InvokeEvent(vtkCommand::MouseMoveEvent);
     if (event->buttons() != Qt::NoButton)
         update();
     event->accept();
 }
 
 void VtkOpenGLWidget::mouseDoubleClickEvent(QMouseEvent* event) {
-    setEventInfo(d->interactor, event->position(), devicePixelRatioF(), event->modifiers(), 1);
+    setEventInfo(m_impl->interactor, event->position(), devicePixelRatioF(), event->modifiers(), 1);
     if (const unsigned long e = buttonEvent(event->button(), true); e != vtkCommand::NoEvent)
-        d->interactor->InvokeEvent(e);
+        m_impl->interactor->InvokeEvent(e);
     if (event->button() == Qt::LeftButton) {
         const qreal dpr = devicePixelRatioF();
-        const QString id = d->scene->pick(event->position().x() * dpr, event->position().y() * dpr);
+        const QString id = m_impl->scene->pick(event->position().x() * dpr, event->position().y() * dpr);
         if (!id.isEmpty())
             emit machineDoubleClicked(id);
     }
@@ -240,12 +241,12 @@ void VtkOpenGLWidget::mouseDoubleClickEvent(QMouseEvent* event) {
 }
 
 void VtkOpenGLWidget::wheelEvent(QWheelEvent* event) {
-    setEventInfo(d->interactor, event->position(), devicePixelRatioF(), event->modifiers());
+    setEventInfo(m_impl->interactor, event->position(), devicePixelRatioF(), event->modifiers());
     const int delta = event->angleDelta().y();
     if (delta > 0)
-        d->interactor->InvokeEvent(vtkCommand::MouseWheelForwardEvent);
+        m_impl->interactor->InvokeEvent(vtkCommand::MouseWheelForwardEvent);
     else if (delta < 0)
-        d->interactor->InvokeEvent(vtkCommand::MouseWheelBackwardEvent);
+        m_impl->interactor->InvokeEvent(vtkCommand::MouseWheelBackwardEvent);
     emit cameraInteracted();
     update();
     event->accept();
@@ -257,11 +258,11 @@ void VtkOpenGLWidget::keyPressEvent(QKeyEvent* event) {
     const QString text = event->text().toLower();
     if (text == QLatin1String("r")) {
         const QByteArray key = text.toLatin1();
-        d->interactor->SetKeyEventInformation((event->modifiers() & Qt::ControlModifier) ? 1 : 0,
-                                              (event->modifiers() & Qt::ShiftModifier) ? 1 : 0, key[0],
-                                              event->isAutoRepeat() ? 1 : 0, key.constData());
-        d->interactor->InvokeEvent(vtkCommand::KeyPressEvent);
-        d->interactor->InvokeEvent(vtkCommand::CharEvent);
+        m_impl->interactor->SetKeyEventInformation((event->modifiers() & Qt::ControlModifier) ? 1 : 0,
+                                                   (event->modifiers() & Qt::ShiftModifier) ? 1 : 0, key[0],
+                                                   event->isAutoRepeat() ? 1 : 0, key.constData());
+        m_impl->interactor->InvokeEvent(vtkCommand::KeyPressEvent);
+        m_impl->interactor->InvokeEvent(vtkCommand::CharEvent);
         emit cameraInteracted();
         update();
         event->accept();
@@ -272,7 +273,7 @@ void VtkOpenGLWidget::keyPressEvent(QKeyEvent* event) {
 
 void VtkOpenGLWidget::keyReleaseEvent(QKeyEvent* event) {
     if (event->text().toLower() == QLatin1String("r")) {
-        d->interactor->InvokeEvent(vtkCommand::KeyReleaseEvent);
+        m_impl->interactor->InvokeEvent(vtkCommand::KeyReleaseEvent);
         event->accept();
         return;
     }

@@ -49,7 +49,7 @@ protected:
 private:
     void releaseVtkGraphics(); // Qt's context is about to go: free VTK's GL objects first
     struct Impl;
-    std::unique_ptr<Impl> d;
+    std::unique_ptr<Impl> m_impl;
     QPoint m_pressPos;
     bool m_pressed = false;
 };
