@@ -412,16 +412,33 @@ QByteArray HeadlessMonitor::handleLine(const QByteArray& raw, std::shared_ptr<Ea
         emit commandHandled(line);
         return line;
     }
-    const bool forProtocol = id.isEmpty() && cmd.contains(QStringLiteral("protocol"));
-    if (m_protocolCommands.contains(name) || (!name.isEmpty() && (m_gate->bridgeFor(id) || forProtocol))) {
-        if (id.isEmpty() && !forProtocol)
-            return result(cmd, false, QStringLiteral("missing \"id\""));
-        return viaGate(cmd,
-                       [&](CommandGate::ResultHandler h) { gate->command(name, cmd, origin, std::move(h)); });
+    return operatorCommand(name, cmd);
+}
+
+// Every other operator command is read into its typed value here, once (models/commands/OperatorCommand.h):
+// the gate checks, sends and audits that value, and the result line names the command as read.
+QByteArray HeadlessMonitor::operatorCommand(const QString& name, const QJsonObject& cmd) {
+    ParsedCommand parsed = parseOperatorCommand(name, cmd);
+    CommandGate* gate = m_gate;
+    const QString origin = QStringLiteral("headless");
+    if (!parsed.command) {
+        if (parsed.target.isEmpty())
+            return result(cmd, false, parsed.error);
+        // A malformed argument of a command naming a machine: audited as not sent to it.
+        return viaGate(cmd, [&](CommandGate::ResultHandler h) {
+            gate->refuse(name, parsed.target, OutcomeReason::InvalidArgument, parsed.error, origin, std::move(h));
+        });
     }
-    return result(cmd, false,
-                  name.isEmpty() ? QStringLiteral("missing \"cmd\"")
-                                 : QStringLiteral("unknown command %1").arg(name));
+    // Every assignment task gets its AssignmentId here, so the result line names them.
+    if (auto* assign = std::get_if<Assign>(&*parsed.command))
+        for (AssignTask& t : assign->tasks)
+            if (t.assignmentId.isEmpty())
+                t.assignmentId = QUuid::createUuid().toString(QUuid::WithoutBraces);
+    const OperatorCommand command = *parsed.command;
+    QJsonObject shown = toJson(command);
+    if (cmd.contains(QStringLiteral("req")))
+        shown[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
+    return viaGate(shown, [&](CommandGate::ResultHandler h) { gate->command(command, origin, std::move(h)); });
 }
 
 // ---- Dispatch (ISO 23725 haul trucks) ----
@@ -458,37 +475,7 @@ QByteArray HeadlessMonitor::dispatchCommand(const QString& name, const QJsonObje
         emit commandHandled(line);
         return line;
     }
-    if (id.isEmpty())
-        return result(cmd, false, QStringLiteral("missing \"id\""));
-    QJsonObject args = cmd;
-    if (name == QLatin1String("assign")) {
-        // The shorthand (one task at the top level) becomes "tasks"; every task gets its AssignmentId here so
-        // the result line names them.
-        QJsonArray tasks = cmd.value(QStringLiteral("tasks")).isArray()
-                               ? cmd.value(QStringLiteral("tasks")).toArray()
-                               : QJsonArray();
-        if (!cmd.contains(QStringLiteral("tasks"))) {
-            QJsonObject one;
-            for (const char* k : {"task", "destination", "equipment", "spot", "route", "assignment_id"})
-                if (cmd.contains(QLatin1String(k)))
-                    one[QLatin1String(k)] = cmd.value(QLatin1String(k));
-            tasks << one;
-        }
-        for (int i = 0; i < tasks.size(); ++i)
-            if (tasks[i].isObject() && !tasks[i].toObject().contains(QStringLiteral("assignment_id"))) {
-                QJsonObject t = tasks[i].toObject();
-                t[QStringLiteral("assignment_id")] = QUuid::createUuid().toString(QUuid::WithoutBraces);
-                tasks[i] = t;
-            }
-        if (cmd.contains(QStringLiteral("tasks")) && !cmd.value(QStringLiteral("tasks")).isArray())
-            args[QStringLiteral("tasks")] = cmd.value(QStringLiteral("tasks")); // the bridge says why
-        else
-            args[QStringLiteral("tasks")] = tasks;
-    }
-    CommandGate* gate = m_gate;
-    const QString origin = QStringLiteral("headless");
-    return viaGate(args,
-                   [&](CommandGate::ResultHandler h) { gate->command(name, args, origin, std::move(h)); });
+    return operatorCommand(name, cmd); // assign, reset_assignment
 }
 
 // ---- {"cmd":"counters"} ----

@@ -136,6 +136,8 @@ private:
     QByteArray result(const QJsonObject& cmd, bool ok, const QString& message);
     // Assign, reset_assignment, production (ISO 23725 dispatch).
     QByteArray dispatchCommand(const QString& name, const QJsonObject& cmd);
+    // An operator command through the gate, parsed here once (parseOperatorCommand).
+    QByteArray operatorCommand(const QString& name, const QJsonObject& cmd);
     QByteArray result(const QJsonObject& cmd, const CommandResult& r, bool withTargets);
     QByteArray handleLine(const QByteArray& line, std::shared_ptr<EarlyStop> early);
     static bool isStopAll(const QByteArray& line);

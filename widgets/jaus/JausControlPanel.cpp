@@ -44,7 +44,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
     m_releaseAll->setEnabled(me.mayControl);
     connect(m_releaseAll, &QPushButton::clicked, this, [this] {
-        send(QStringLiteral("release_all"), {{QStringLiteral("protocol"), QStringLiteral("jaus")}});
+        send(ReleaseAll{});
     });
     top->addWidget(m_releaseAll);
 
@@ -195,12 +195,10 @@ void JausControlPanel::installRowButtons(int first, int last) {
         });
         connect(control, &QPushButton::clicked, this, [this, sub] {
             selectSubsystem(sub);
-            send(QStringLiteral("request_control"),
-                 {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
+            send(RequestControl{JausVehicleBridge::machineId(sub)});
         });
         connect(release, &QPushButton::clicked, this, [this, sub] {
-            send(QStringLiteral("release_control"),
-                 {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
+            send(ReleaseControl{JausVehicleBridge::machineId(sub)});
         });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
         // Index widgets do not take part in ResizeToContents: size the column for the buttons.
@@ -243,10 +241,10 @@ void JausControlPanel::refreshButtons() {
     }
 }
 
-void JausControlPanel::send(const QString& name, const QJsonObject& args) {
+void JausControlPanel::send(const OperatorCommand& command) {
     // Through the command gate: audited, and its result (targets sent or not) lands in the event log.
     if (m_gate)
-        m_gate->command(name, args, QStringLiteral("gui"));
+        m_gate->command(command, QStringLiteral("gui"));
 }
 
 } // namespace ocu

@@ -111,17 +111,12 @@ void CrewMessagesPanel::send() {
         return;
     const QString to = m_to->currentData().toString();
     const QString toName = m_to->currentText();
-    QJsonObject args{{QStringLiteral("text"), text}};
-    if (to.isEmpty())
-        args.insert(QStringLiteral("protocol"), protocolName());
-    else
-        args.insert(QStringLiteral("id"), to);
     const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss"));
     auto* item = new QListWidgetItem(tr("%1  → %2: %3 (sending…)").arg(stamp, toName, text), m_history);
     m_history->scrollToBottom();
     m_entry->clear();
     QPointer<QListWidget> list = m_history;
-    m_gate->command(QStringLiteral("send_text"), args, QStringLiteral("gui"),
+    m_gate->command(SendText{to, text}, QStringLiteral("gui"),
                     [list, item, stamp, toName, text](const CommandResult& r) {
                         if (!list)
                             return;

@@ -167,10 +167,10 @@ private slots:
                                                              {QStringLiteral("assignment_id"),
                                                               QString::fromLatin1(P::loadAssignment)}}}}};
         const CommandResult r = testing::gateResult(
-            [&](auto h) { c.gate.command(QStringLiteral("assign"), args, QStringLiteral("test"), h); });
+            [&](auto h) { c.gate.command(*parseOperatorCommand(QStringLiteral("assign"), args).command, QStringLiteral("test"), h); });
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(r.targets.size(), 1);
-        QCOMPARE(r.targets[0].id, kTruck);
+        QCOMPARE(targetId(r.targets[0]), kTruck);
         const std::string frame = c.peer.waitFor("HaulTruckAssignmentRequestV2");
         QVERIFY(!frame.empty());
         // Row 21: from way 2001 the shovel is the next way: no way in between, so no RouteV1 (optional).
@@ -195,8 +195,7 @@ private slots:
 
         // Row 23: the reset.
         const CommandResult reset = testing::gateResult([&](auto h) {
-            c.gate.command(QStringLiteral("reset_assignment"), QJsonObject{{QStringLiteral("id"), kTruck}},
-                           QStringLiteral("test"), h);
+            c.gate.command(ResetAssignment{kTruck}, QStringLiteral("test"), h);
         });
         QVERIFY2(reset.ok, qPrintable(reset.message));
         const std::string rf = c.peer.waitFor("HaulTruckAssignmentResetV1");

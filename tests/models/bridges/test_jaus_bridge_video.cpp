@@ -78,8 +78,7 @@ private slots:
 
         // With control: the demands go out (refreshed like a held key) and the unit turns.
         const CommandResult rc = testing::bridgeResult([&](OutcomeCallback d) {
-            bridge.command(QStringLiteral("request_control"),
-                           {{QStringLiteral("id"), QStringLiteral("jaus:126")}}, d);
+            bridge.command(RequestControl{QStringLiteral("jaus:126")}, d);
         });
         QVERIFY2(rc.ok, qPrintable(rc.message));
         QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(126) && bridge.subsystem(126)->controlledByUs, 20000);

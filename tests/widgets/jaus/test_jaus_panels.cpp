@@ -505,7 +505,7 @@ private slots:
         QVERIFY(win.control->controlButton(126));
         QVERIFY(!win.control->controlButton(126)->isEnabled());
         const auto r = ocu::testing::bridgeResult([&](auto d) {
-            s.bridge->command("request_control", {{"id", "jaus:126"}}, d);
+            s.bridge->command(RequestControl{QStringLiteral("jaus:126")}, d);
         });
         QVERIFY(!r.ok);
         QVERIFY(r.message.contains("MONITOR"));
