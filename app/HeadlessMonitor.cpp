@@ -426,7 +426,8 @@ QByteArray HeadlessMonitor::operatorCommand(const QString& name, const QJsonObje
             return result(cmd, false, parsed.error);
         // A malformed argument of a command naming a machine: audited as not sent to it.
         return viaGate(cmd, [&](CommandGate::ResultHandler h) {
-            gate->refuse(name, parsed.target, OutcomeReason::InvalidArgument, parsed.error, origin, std::move(h));
+            gate->refuse(name, parsed.target, OutcomeReason::InvalidArgument, parsed.error, origin,
+                         std::move(h));
         });
     }
     // Every assignment task gets its AssignmentId here, so the result line names them.
@@ -438,7 +439,8 @@ QByteArray HeadlessMonitor::operatorCommand(const QString& name, const QJsonObje
     QJsonObject shown = toJson(command);
     if (cmd.contains(QStringLiteral("req")))
         shown[QStringLiteral("req")] = cmd.value(QStringLiteral("req"));
-    return viaGate(shown, [&](CommandGate::ResultHandler h) { gate->command(command, origin, std::move(h)); });
+    return viaGate(shown,
+                   [&](CommandGate::ResultHandler h) { gate->command(command, origin, std::move(h)); });
 }
 
 // ---- Dispatch (ISO 23725 haul trucks) ----

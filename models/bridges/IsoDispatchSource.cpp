@@ -169,7 +169,7 @@ DispatchRoute IsoDispatchSource::routeTo(const QString& id, const DispatchArea& 
 }
 
 Assign IsoDispatchSource::assignCommand(const QString& id, const QString& task, const DispatchArea& area,
-                                       QString* assignmentId) const {
+                                        QString* assignmentId) const {
     IsoTask t;
     t.assignmentId = QUuid::createUuid().toString(QUuid::WithoutBraces);
     if (assignmentId)

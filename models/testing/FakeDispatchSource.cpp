@@ -55,7 +55,7 @@ DispatchRoute FakeDispatchSource::routeTo(const QString& id, const DispatchArea&
 }
 
 Assign FakeDispatchSource::assignCommand(const QString& id, const QString& task, const DispatchArea& area,
-                                        QString* assignmentId) const {
+                                         QString* assignmentId) const {
     const QString aid = QStringLiteral("assignment-%1").arg(m_nextAssignment++);
     if (assignmentId)
         *assignmentId = aid;

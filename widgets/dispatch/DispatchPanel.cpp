@@ -551,11 +551,10 @@ void DispatchPanel::assignCurrent() {
     m_followAssignment = assignmentId;
     m_followText.clear();
     QPointer<DispatchPanel> self(this);
-    m_gate->command(assign, QStringLiteral("gui"),
-                    [self, what](const CommandResult& r) {
-                        if (self)
-                            self->showResult(tr("Assign %1").arg(what), r);
-                    });
+    m_gate->command(assign, QStringLiteral("gui"), [self, what](const CommandResult& r) {
+        if (self)
+            self->showResult(tr("Assign %1").arg(what), r);
+    });
 }
 
 void DispatchPanel::resetCurrent() {
@@ -571,11 +570,10 @@ void DispatchPanel::resetCurrent() {
     m_followTruck.clear();
     QPointer<DispatchPanel> self(this);
     const QString what = t.name;
-    m_gate->command(ResetAssignment{t.id},
-                    QStringLiteral("gui"), [self, what](const CommandResult& r) {
-                        if (self)
-                            self->showResult(tr("Reset %1").arg(what), r);
-                    });
+    m_gate->command(ResetAssignment{t.id}, QStringLiteral("gui"), [self, what](const CommandResult& r) {
+        if (self)
+            self->showResult(tr("Reset %1").arg(what), r);
+    });
 }
 
 void DispatchPanel::showResult(const QString& what, const CommandResult& r) {

@@ -43,9 +43,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
     m_releaseAll->setEnabled(me.mayControl);
-    connect(m_releaseAll, &QPushButton::clicked, this, [this] {
-        send(ReleaseAll{});
-    });
+    connect(m_releaseAll, &QPushButton::clicked, this, [this] { send(ReleaseAll{}); });
     top->addWidget(m_releaseAll);
 
     m_table->setModel(m_model);
@@ -197,9 +195,8 @@ void JausControlPanel::installRowButtons(int first, int last) {
             selectSubsystem(sub);
             send(RequestControl{JausVehicleBridge::machineId(sub)});
         });
-        connect(release, &QPushButton::clicked, this, [this, sub] {
-            send(ReleaseControl{JausVehicleBridge::machineId(sub)});
-        });
+        connect(release, &QPushButton::clicked, this,
+                [this, sub] { send(ReleaseControl{JausVehicleBridge::machineId(sub)}); });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
         // Index widgets do not take part in ResizeToContents: size the column for the buttons.
         m_table->horizontalHeader()->setSectionResizeMode(JausSubsystemModel::Actions, QHeaderView::Fixed);

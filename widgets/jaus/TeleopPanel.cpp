@@ -317,8 +317,8 @@ void TeleopPanel::startSession() {
     m_session = Session::Opening;
     const quint16 sub = m_subsystem;
     QPointer<TeleopPanel> self(this);
-    m_gate->command(DriveStart{JausVehicleBridge::machineId(sub), tr("teleop input")}, QStringLiteral("teleop"),
-                    [self, sub](const CommandResult& r) {
+    m_gate->command(DriveStart{JausVehicleBridge::machineId(sub), tr("teleop input")},
+                    QStringLiteral("teleop"), [self, sub](const CommandResult& r) {
                         if (!self || self->m_subsystem != sub || self->m_session != Session::Opening)
                             return; // ended (and closed through the gate) before the start's result came
                         if (!r.ok) {
@@ -344,13 +344,12 @@ void TeleopPanel::endSession(const QString& reason) {
     }
     QPointer<TeleopPanel> self(this);
     const quint16 sub = m_subsystem;
-    m_gate->command(
-        DriveStop{JausVehicleBridge::machineId(sub), reason}, QStringLiteral("teleop"),
-        [self, sub](const CommandResult& r) {
-            if (self && !r.ok && self->m_subsystem == sub)
-                self->showDriveProblem(tr("Drive session end: zero commands NOT sent: %1")
-                                           .arg(r.notSent().join(QStringLiteral("; "))));
-        });
+    m_gate->command(DriveStop{JausVehicleBridge::machineId(sub), reason}, QStringLiteral("teleop"),
+                    [self, sub](const CommandResult& r) {
+                        if (self && !r.ok && self->m_subsystem == sub)
+                            self->showDriveProblem(tr("Drive session end: zero commands NOT sent: %1")
+                                                       .arg(r.notSent().join(QStringLiteral("; "))));
+                    });
 }
 
 bool TeleopPanel::velocityMode() const {

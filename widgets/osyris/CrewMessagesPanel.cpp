@@ -116,16 +116,15 @@ void CrewMessagesPanel::send() {
     m_history->scrollToBottom();
     m_entry->clear();
     QPointer<QListWidget> list = m_history;
-    m_gate->command(SendText{to, text}, QStringLiteral("gui"),
-                    [list, item, stamp, toName, text](const CommandResult& r) {
-                        if (!list)
-                            return;
-                        // What went on the wire, per target (the gate's truthful result).
-                        item->setText(
-                            r.ok ? tr("%1  → %2: %3 (sent)").arg(stamp, toName, text)
-                                 : tr("%1  → %2: %3 (NOT sent: %4)").arg(stamp, toName, text, r.message));
-                        item->setToolTip(r.message);
-                    });
+    m_gate->command(
+        SendText{to, text}, QStringLiteral("gui"), [list, item, stamp, toName, text](const CommandResult& r) {
+            if (!list)
+                return;
+            // What went on the wire, per target (the gate's truthful result).
+            item->setText(r.ok ? tr("%1  → %2: %3 (sent)").arg(stamp, toName, text)
+                               : tr("%1  → %2: %3 (NOT sent: %4)").arg(stamp, toName, text, r.message));
+            item->setToolTip(r.message);
+        });
 }
 
 QStringList CrewMessagesPanel::history() const {

@@ -166,8 +166,10 @@ private slots:
                                                              {QStringLiteral("destination"), 4201},
                                                              {QStringLiteral("assignment_id"),
                                                               QString::fromLatin1(P::loadAssignment)}}}}};
-        const CommandResult r = testing::gateResult(
-            [&](auto h) { c.gate.command(*parseOperatorCommand(QStringLiteral("assign"), args).command, QStringLiteral("test"), h); });
+        const CommandResult r = testing::gateResult([&](auto h) {
+            c.gate.command(*parseOperatorCommand(QStringLiteral("assign"), args).command,
+                           QStringLiteral("test"), h);
+        });
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(r.targets.size(), 1);
         QCOMPARE(targetId(r.targets[0]), kTruck);
@@ -194,9 +196,8 @@ private slots:
         QCOMPARE(row.lastResponseDetail, QStringLiteral("Pit 3 Bench 480 closed by AHS"));
 
         // Row 23: the reset.
-        const CommandResult reset = testing::gateResult([&](auto h) {
-            c.gate.command(ResetAssignment{kTruck}, QStringLiteral("test"), h);
-        });
+        const CommandResult reset = testing::gateResult(
+            [&](auto h) { c.gate.command(ResetAssignment{kTruck}, QStringLiteral("test"), h); });
         QVERIFY2(reset.ok, qPrintable(reset.message));
         const std::string rf = c.peer.waitFor("HaulTruckAssignmentResetV1");
         QVERIFY(!rf.empty());

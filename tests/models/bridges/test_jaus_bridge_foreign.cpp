@@ -77,9 +77,7 @@ private slots:
         };
 
         // request_control: confirmed by the vehicle's ConfirmControl (it answers no QueryControl).
-        QVERIFY(gateResult([&](auto h) {
-                    gate.command(RequestControl{id}, QStringLiteral("test"), h);
-                }).ok);
+        QVERIFY(gateResult([&](auto h) { gate.command(RequestControl{id}, QStringLiteral("test"), h); }).ok);
         QTRY_VERIFY_WITH_TIMEOUT(!confirmedText("request_control").isEmpty(), 10000);
         QVERIFY2(confirmedText("request_control").contains(QLatin1String("confirms control")) &&
                      confirmedText("request_control").contains(QLatin1String("ms after the command")),
@@ -98,9 +96,7 @@ private slots:
         QVERIFY(vehicle.status() != 5); // out of EMERGENCY (STANDBY after ClearEmergency, JSS Management)
 
         // release_control: confirmed by the vehicle's answer.
-        QVERIFY(gateResult([&](auto h) {
-                    gate.command(ReleaseControl{id}, QStringLiteral("test"), h);
-                }).ok);
+        QVERIFY(gateResult([&](auto h) { gate.command(ReleaseControl{id}, QStringLiteral("test"), h); }).ok);
         QTRY_VERIFY_WITH_TIMEOUT(!confirmedText("release_control").isEmpty(), 10000);
         QCOMPARE(unconfirmed.count(), 0);
         QVERIFY(gate.awaitingCommandConfirmation().isEmpty());
@@ -108,9 +104,8 @@ private slots:
         // A vehicle that hears nothing any more: the request leaves (sent), no answer comes, and the
         // confirmation time raises a Timeout alarm naming it.
         vehicle.setOffline(true);
-        const CommandResult r = gateResult([&](auto h) {
-            gate.command(RequestControl{id}, QStringLiteral("test"), h);
-        });
+        const CommandResult r =
+            gateResult([&](auto h) { gate.command(RequestControl{id}, QStringLiteral("test"), h); });
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(gate.awaitingCommandConfirmation(), QStringList{QStringLiteral("request_control jaus:126")});
         QTRY_COMPARE_WITH_TIMEOUT(unconfirmed.count(), 1, 20000);
@@ -165,7 +160,8 @@ private slots:
         for (const char* name : {"drive_start", "drive", "drive_stop"}) {
             r = cmd(name, {{"linear", 0.1}});
             QVERIFY(!r.ok);
-            QVERIFY2(reasonText(r.targets.value(0)).contains(QLatin1String("not running")), qPrintable(r.message));
+            QVERIFY2(reasonText(r.targets.value(0)).contains(QLatin1String("not running")),
+                     qPrintable(r.message));
         }
     }
 
@@ -186,7 +182,8 @@ private slots:
         QCOMPARE(r.targets.size(), 2);
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(targetId(r.targets[1]), QStringLiteral("jaus:127"));
-        QVERIFY2(noteText(r.targets[1]).contains(QLatin1String("never heard")), qPrintable(noteText(r.targets[1])));
+        QVERIFY2(noteText(r.targets[1]).contains(QLatin1String("never heard")),
+                 qPrintable(noteText(r.targets[1])));
         QTRY_VERIFY_WITH_TIMEOUT(vehicle.status() == 5, 10000); // EMERGENCY
 
         // Stopped: nothing can go out, and the result names each vehicle with the reason.

@@ -214,9 +214,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(vehicle().link == JausLink::Up && vehicle().mobilityComponent.subsystem != 0,
                                  20000);
         // Control first, so that the refusals below are about the link and not about access.
-        QVERIFY(ocu::testing::bridgeResult([&](auto d) {
-                    bridge.command(RequestControl{kVehicle}, d);
-                }).ok);
+        QVERIFY(ocu::testing::bridgeResult([&](auto d) { bridge.command(RequestControl{kVehicle}, d); }).ok);
         QTRY_VERIFY_WITH_TIMEOUT(vehicle().controlledByUs, 10000);
 
         // The vehicle falls silent (it still hears us): after 1.5 s its link is down.
@@ -225,9 +223,7 @@ private slots:
         const QList<CommandResult> refused{
             ocu::testing::bridgeResult([&](auto d) { bridge.stopMachine(kVehicle, d); }),
             ocu::testing::bridgeResult([&](auto d) { bridge.clearStop(kVehicle, d); }),
-            ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(RequestControl{kVehicle}, d);
-            }),
+            ocu::testing::bridgeResult([&](auto d) { bridge.command(RequestControl{kVehicle}, d); }),
             ocu::testing::bridgeResult([&](auto d) {
                 bridge.command(Management{kVehicle, ManagementAction::Resume}, d);
             }),

@@ -145,9 +145,7 @@ private slots:
             ocu::testing::bridgeResult([&](auto d) {
                 bridge.command(SendText{{}, QStringLiteral("hello")}, d);
             }),
-            ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(PingStation{1}, d);
-            })};
+            ocu::testing::bridgeResult([&](auto d) { bridge.command(PingStation{1}, d); })};
         for (const CommandResult& r : refused) {
             QVERIFY2(!r.ok, qPrintable(r.message));
             QVERIFY2(r.message.contains(QStringLiteral("no OSYRIS station heard")) &&
