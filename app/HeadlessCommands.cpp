@@ -63,11 +63,8 @@ QByteArray HeadlessCommands::execute(const QJsonObject& cmd, std::shared_ptr<Ear
         return stopCommand(name, cmd, std::move(early));
     if (entry != m_entries.constEnd())
         return gateEntry(name, *entry, cmd);
-    // A command a bridge answers for the machine (or the protocol) it names, e.g. release_all.
-    const QString id = cmd.value(QStringLiteral("id")).toString();
-    if (!name.isEmpty() &&
-        (m_gate->bridgeFor(id) || (id.isEmpty() && cmd.contains(QStringLiteral("protocol")))))
-        return forwardToGate(cmd, name, cmd);
+    if (isOperatorCommand(name)) // e.g. release_all, ping, send_text
+        return forwardToGate(cmd, name, read(name, cmd));
     return refuse(cmd, name.isEmpty() ? QStringLiteral("missing \"cmd\"")
                                       : QStringLiteral("unknown command %1").arg(name));
 }
@@ -96,26 +93,43 @@ QByteArray HeadlessCommands::stopCommand(const QString& name, const QJsonObject&
 }
 
 QByteArray HeadlessCommands::gateEntry(const QString& name, const Entry& entry, const QJsonObject& cmd) {
-    if (!entry.prepare) {
-        if (!cmd.contains(QStringLiteral("protocol")) && cmd.value(QStringLiteral("id")).toString().isEmpty())
-            return refuse(cmd, QStringLiteral("missing \"id\""));
-        return forwardToGate(cmd, name, cmd);
-    }
-    const GateRequest r = entry.prepare(cmd);
-    if (!r.refusal.isEmpty()) {
-        QJsonObject fields = r.echo;
-        fields[QStringLiteral("ok")] = false;
-        fields[QStringLiteral("message")] = r.refusal;
-        return reply(cmd, fields);
-    }
-    return forwardToGate(cmd, name, r.args, r.echo);
+    return forwardToGate(cmd, name, entry.prepare ? entry.prepare(cmd) : read(name, cmd));
+}
+
+HeadlessCommands::GateRequest HeadlessCommands::read(const QString& name, const QJsonObject& cmd) {
+    ParsedCommand parsed = parseOperatorCommand(name, cmd);
+    GateRequest r;
+    r.command = std::move(parsed.command);
+    r.refusal = parsed.error;
+    r.refusalTarget = parsed.target;
+    return r;
 }
 
 QByteArray HeadlessCommands::forwardToGate(const QJsonObject& cmd, const QString& name,
-                                           const QJsonObject& args, const QJsonObject& echo) {
+                                           const GateRequest& request) {
     CommandGate* gate = m_gate;
+    if (!request.command) {
+        if (request.refusalTarget.isEmpty()) {
+            QJsonObject fields = request.echo;
+            fields[QStringLiteral("ok")] = false;
+            fields[QStringLiteral("message")] = request.refusal;
+            return reply(cmd, fields);
+        }
+        // A malformed argument of a command naming a machine: audited as not sent to it.
+        return viaGate(cmd, request.echo, [&](CommandGate::ResultHandler h) {
+            gate->refuse(name, request.refusalTarget, OutcomeReason::InvalidArgument, request.refusal,
+                         origin(), std::move(h));
+        });
+    }
+    // The echoed fields as the typed value says them (e.g. assign's tasks with their AssignmentIds).
+    const OperatorCommand& command = *request.command;
+    const QJsonObject asSent = toJson(command);
+    QJsonObject echo = request.echo;
+    for (auto it = echo.begin(); it != echo.end(); ++it)
+        if (asSent.contains(it.key()))
+            it.value() = asSent.value(it.key());
     return viaGate(cmd, echo,
-                   [&](CommandGate::ResultHandler h) { gate->command(name, args, origin(), std::move(h)); });
+                   [&](CommandGate::ResultHandler h) { gate->command(command, origin(), std::move(h)); });
 }
 
 QByteArray HeadlessCommands::viaGate(const QJsonObject& cmd, const QJsonObject& echo,

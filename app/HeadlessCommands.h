@@ -4,18 +4,19 @@
 //   local — answered here at once, without the command gate: a read-only query ("video_status",
 //           "production", "counters") or an action of this process ("auto_dispatch", "shift_report",
 //           "coverage_report"). The handler returns the result's fields ("ok", "message", and its own).
-//   gate  — forwarded through the CommandGate to the bridge of the machine named by "id" (or of the
-//           "protocol"): audited, answered when every target reported (or at the gate's deadline). An
-//           optional prepare step checks and completes the arguments (assign gives each task its
-//           AssignmentId) and names the fields the result echoes; without it, a command with neither "id" nor
-//           "protocol" is answered "missing \"id\"".
-// Besides the entries: stop_all, stop and clear_stop (the stop path, CommandGate), and any other command
-// naming a machine or protocol a bridge answers (FleetBridge::command) go to the gate too.
+//   gate  — read into its typed OperatorCommand here, once (models/commands/OperatorCommand.h), and forwarded
+//           through the CommandGate to the bridge of the machine it names (or of its protocol): audited,
+//           answered when every target reported (or at the gate's deadline). An optional prepare step
+//           builds the typed command itself (assign gives each task its AssignmentId first) and names the
+//           fields the result echoes; without it the JSON is read by parseOperatorCommand.
+// Besides the entries: stop_all, stop and clear_stop (the stop path, CommandGate), and every other operator
+// command parseOperatorCommand knows go to the gate the same way.
 // A protocol module registers its entries in ProtocolModule::registerHeadless(); the monitor its own
 // ("list", "counters"). Every result line comes from reply():
 //   {"type":"result","cmd":<name>,"req":<echoed>,"id":<echoed>, ...fields}
 // a gate command's fields being "ok", "targets" (what went on the wire, per target) and "message".
 #include "models/CommandGate.h"
+#include "models/commands/OperatorCommand.h"
 
 #include <QByteArray>
 #include <QHash>
@@ -38,14 +39,18 @@ public:
 
     // A local entry: returns the result's fields for the command.
     using Answer = std::function<QJsonObject(const QJsonObject& cmd)>;
-    // What a gate entry's prepare step makes of the command: the arguments for the bridge and the fields the
-    // result echoes, or a refusal (nothing is sent, the result says why).
+    // What a gate entry's prepare step makes of the command: the typed command for the gate and the fields
+    // the result echoes, or a refusal (nothing is sent, the result says why). A refusal naming a machine
+    // (`refusalTarget`) is audited against it by the gate, like a bridge's own refusal.
     struct GateRequest {
-        QJsonObject args;
+        std::optional<OperatorCommand> command;
         QJsonObject echo;
         QString refusal;
+        QString refusalTarget;
     };
     using Prepare = std::function<GateRequest(const QJsonObject& cmd)>;
+    // The JSON command read by parseOperatorCommand under `name`: the default prepare step.
+    static GateRequest read(const QString& name, const QJsonObject& cmd);
 
     // A later entry of the same name replaces the earlier one.
     void addLocal(const QString& name, Answer answer);
@@ -78,8 +83,7 @@ private:
     QByteArray stopCommand(const QString& name, const QJsonObject& cmd, std::shared_ptr<EarlyStop> early);
     QByteArray gateEntry(const QString& name, const Entry& entry, const QJsonObject& cmd);
     // The one place a command leaves for a bridge through the gate; the result answers cmd.
-    QByteArray forwardToGate(const QJsonObject& cmd, const QString& name, const QJsonObject& args,
-                             const QJsonObject& echo = {});
+    QByteArray forwardToGate(const QJsonObject& cmd, const QString& name, const GateRequest& request);
     QByteArray viaGate(const QJsonObject& cmd, const QJsonObject& echo,
                        const std::function<void(CommandGate::ResultHandler)>& issue,
                        const QString& suffix = {});

@@ -1,7 +1,7 @@
 // bench_iso_assign: the assignment round trip on loopback under a full fleet. The
 // console (IsoBridge, its stack's io thread, this GUI thread) sends HaulTruckAssignmentRequestV2 to one truck
 // at a time while 1,000 simulated trucks report positions at 10 Hz over the same ws:// link (the simulated
-// AHS in this process, its own io thread); the round trip runs from IsoBridge::command("assign") on the GUI
+// AHS in this process, its own io thread); the round trip runs from IsoBridge::command(Assign) on the GUI
 // thread to the truck's HaulTruckAssignmentResponseV1 being visible in the bridge's dispatch view on the GUI
 // thread (dispatchChanged). One request outstanding at a time. Prints p50, p99 and max in ms, the requests,
 // the positions per second received meanwhile, and the CPU time of the GUI thread per request.
@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
         QTimer::singleShot(10000, &loop, &QEventLoop::quit);
         QElapsedTimer t;
         t.start();
-        bridge.command(QStringLiteral("assign"), IsoBridge::assignArgs(id, {task}),
+        bridge.command(IsoBridge::assignCommand(id, {task}),
                        [&wasSent](std::vector<TargetOutcome> o) { wasSent = allSent(o); });
         check();
         if (!answered)

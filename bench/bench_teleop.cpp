@@ -115,8 +115,7 @@ int main(int argc, char** argv) {
     if (!waitUntil([&] { return jaus.subsystem(ugv) && jaus.subsystem(ugv)->mobilityComponent.subsystem; },
                    10000))
         return 2;
-    jaus.command(QStringLiteral("request_control"), {{QStringLiteral("id"), JausBridge::machineId(ugv)}},
-                 [](std::vector<TargetOutcome>) {});
+    jaus.command(RequestControl{JausBridge::machineId(ugv)}, [](std::vector<TargetOutcome>) {});
     if (!waitUntil([&] { return jaus.subsystem(ugv)->controlledByUs; }, 5000))
         return 3;
     ctx.selection()->setCurrent(JausBridge::machineId(ugv));

@@ -214,13 +214,13 @@ void AutoDispatcher::step() {
         if (!m_on)
             break;
         QString assignmentId;
-        const QJsonObject args = m_source->assignArgs(d.truckId, d.task, d.area, &assignmentId);
+        const Assign assign = m_source->assignCommand(d.truckId, d.task, d.area, &assignmentId);
         m_inFlight.insert(d.truckId, InFlight{assignmentId, d.area.wayId, d.area.link, m_now(), false});
         const QString what =
             tr("%1: %2 at %3 (queue %4)").arg(d.truckName, d.task, areaName(d.area)).arg(d.queue);
         QPointer<AutoDispatcher> self(this);
         const QString truckId = d.truckId;
-        m_gate->command(QStringLiteral("assign"), args, QStringLiteral("auto-dispatch"),
+        m_gate->command(assign, QStringLiteral("auto-dispatch"),
                         [self, truckId, what](const CommandResult& r) {
                             if (self)
                                 self->onResult(truckId, what, r);

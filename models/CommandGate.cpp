@@ -67,7 +67,8 @@ struct EarlyStop {
 
 struct CommandGate::Pending {
     QString action;
-    QString target; // the machine (or empty for STOP ALL)
+    QString target;      // the machine (or empty for STOP ALL)
+    QJsonObject command; // the typed command as JSON (the audit line's "command")
     QString origin;
     QVector<QPointer<FleetBridge>> bridges;
     std::vector<std::optional<std::vector<TargetOutcome>>> outcomes; // per bridge; nullopt = not answered
@@ -120,14 +121,15 @@ FleetBridge* CommandGate::bridgeFor(const QString& machineId) const {
     return nullptr;
 }
 
-void CommandGate::dispatch(const QString& action, const QString& target, const QString& origin,
+void CommandGate::dispatch(const OperatorCommand& command, const QString& origin,
                            const QVector<FleetBridge*>& to,
                            const std::function<void(FleetBridge*, OutcomeCallback)>& fn,
                            ResultHandler onFinal) {
     const quint64 id = m_nextId++;
     auto p = std::make_shared<Pending>();
-    p->action = action;
-    p->target = target;
+    p->action = commandName(command);
+    p->target = commandTarget(command);
+    p->command = toJson(command);
     p->origin = origin;
     p->onFinal = std::move(onFinal);
     p->since.start();
@@ -150,17 +152,10 @@ void CommandGate::dispatch(const QString& action, const QString& target, const Q
                     return; // a second call: the first one counts
                 // Watch each sent stop target from now on: its machine's report may come before the other
                 // bridges answered.
-                if (pend.action == QLatin1String("stop_all") || pend.action == QLatin1String("stop")) {
-                    QVector<CommandTarget> t;
-                    for (const TargetOutcome& x : o)
-                        t.push_back(toCommandTarget(x));
-                    watchStops(pend.bridges[i].data(), t, pend.since);
-                } else if (FleetBridge* b = pend.bridges[i].data(); b && b->confirmsCommand(pend.action)) {
-                    QVector<CommandTarget> t;
-                    for (const TargetOutcome& x : o)
-                        t.push_back(toCommandTarget(x));
-                    watchCommand(pend.action, b, t, pend.since);
-                }
+                if (pend.action == QLatin1String("stop_all") || pend.action == QLatin1String("stop"))
+                    watchStops(pend.bridges[i].data(), o, pend.since);
+                else if (FleetBridge* b = pend.bridges[i].data(); b && b->confirmsCommand(pend.action))
+                    watchCommand(pend.action, b, o, pend.since);
                 pend.outcomes[size_t(i)] = std::move(o);
                 if (++pend.answered == int(pend.outcomes.size()) && !pend.issuing)
                     finish(id);
@@ -207,26 +202,32 @@ void CommandGate::finish(quint64 id) {
         return;
     p->deadline->stop();
     p->deadline->deleteLater();
-    QVector<CommandTarget> targets;
+    QVector<TargetOutcome> targets;
     for (size_t i = 0; i < p->outcomes.size(); ++i) {
         if (p->outcomes[i]) {
-            for (const TargetOutcome& o : *p->outcomes[i])
-                targets.push_back(toCommandTarget(o));
+            for (TargetOutcome& o : *p->outcomes[i])
+                targets.push_back(std::move(o));
         } else {
             const FleetBridge* b = p->bridges[int(i)];
-            targets.push_back({b ? toText(b->protocol()) : tr("protocol stack"), false,
-                               tr("stack did not answer within %1 ms").arg(m_answerDeadlineMs)});
+            targets.push_back(refusal(b ? toText(b->protocol()) : tr("protocol stack"),
+                                      OutcomeReason::NoAnswer,
+                                      tr("stack did not answer within %1 ms").arg(m_answerDeadlineMs)));
         }
     }
-    finishNow(p->action, p->target, p->origin,
+    finishNow(p->action, p->target, p->command, p->origin,
               CommandResult::fromTargets(targets, tr("no protocol bridge registered: nothing sent")),
               p->onFinal);
 }
 
-void CommandGate::finishNow(const QString& action, const QString& target, const QString& origin,
-                            CommandResult r, const ResultHandler& onFinal) {
+void CommandGate::finishNow(const OperatorCommand& command, const QString& origin, CommandResult r,
+                            const ResultHandler& onFinal) {
+    finishNow(commandName(command), commandTarget(command), toJson(command), origin, std::move(r), onFinal);
+}
+
+void CommandGate::finishNow(const QString& action, const QString& target, const QJsonObject& command,
+                            const QString& origin, CommandResult r, const ResultHandler& onFinal) {
     r.action = action;
-    audit(origin, action, target, r);
+    audit(origin, action, target, command, r);
     const bool isStop = action == QLatin1String("stop_all") || action == QLatin1String("stop");
     if (onFinal)
         onFinal(r);
@@ -258,7 +259,7 @@ void CommandGate::stopAll(const QString& origin, ResultHandler onFinal, std::sha
     QVector<FleetBridge*> to = bridges();
     std::stable_partition(to.begin(), to.end(), [](FleetBridge* b) { return b->stopsFromCallersThread(); });
     dispatch(
-        QStringLiteral("stop_all"), QString(), origin, to,
+        StopAll{}, origin, to,
         [early](FleetBridge* b, OutcomeCallback done) {
             if (early && early->covers(b))
                 early->attach(b, std::move(done)); // sent already: its outcome, now or when it comes
@@ -269,14 +270,17 @@ void CommandGate::stopAll(const QString& origin, ResultHandler onFinal, std::sha
 }
 
 void CommandGate::stopMachine(const QString& id, const QString& origin, ResultHandler onFinal) {
+    const StopMachine stop{id};
     FleetBridge* b = bridgeFor(id);
     if (!b) {
-        finishNow(QStringLiteral("stop"), id, origin,
-                  CommandResult::fromTargets({{id, false, tr("unknown machine %1").arg(id)}}), onFinal);
+        finishNow(stop, origin,
+                  CommandResult::fromTargets(
+                      {refusal(id, OutcomeReason::UnknownTarget, tr("unknown machine %1").arg(id))}),
+                  onFinal);
         return;
     }
     dispatch(
-        QStringLiteral("stop"), id, origin, {b},
+        stop, origin, {b},
         [id](FleetBridge* br, OutcomeCallback done) { br->stopMachine(id, std::move(done)); },
         std::move(onFinal));
 }
@@ -297,80 +301,108 @@ QString CommandGate::requestClearToken(const QString& id) {
 
 void CommandGate::clearStop(const QString& id, const QString& token, const QString& origin,
                             ResultHandler onFinal) {
+    const ClearStop clear{id, false, {}}; // the token is never audited
     auto it = m_tokens.find(token);
     if (token.isEmpty() || it == m_tokens.end() || it->id != id || it->expiresMs < nowMs()) {
-        finishNow(QStringLiteral("clear_stop"), id, origin,
-                  CommandResult::fromTargets({{id, false, tr("release needs a deliberate confirmation")}}),
+        finishNow(clear, origin,
+                  CommandResult::fromTargets({refusal(id, OutcomeReason::NotPermitted,
+                                                      tr("release needs a deliberate confirmation"))}),
                   onFinal);
         return;
     }
     m_tokens.erase(it); // single use
     FleetBridge* b = bridgeFor(id);
     if (!b) {
-        finishNow(QStringLiteral("clear_stop"), id, origin,
-                  CommandResult::fromTargets({{id, false, tr("unknown machine %1").arg(id)}}), onFinal);
+        finishNow(clear, origin,
+                  CommandResult::fromTargets(
+                      {refusal(id, OutcomeReason::UnknownTarget, tr("unknown machine %1").arg(id))}),
+                  onFinal);
         return;
     }
     dispatch(
-        QStringLiteral("clear_stop"), id, origin, {b},
+        ClearStop{id, true, {}}, origin, {b},
         [id](FleetBridge* br, OutcomeCallback done) { br->clearStop(id, std::move(done)); },
         std::move(onFinal));
 }
 
-void CommandGate::command(const QString& name, const QJsonObject& args, const QString& origin,
-                          ResultHandler onFinal) {
-    const QString id = args.value(QStringLiteral("id")).toString();
-    FleetBridge* b = bridgeFor(id);
-    if (id.isEmpty() && args.contains(QStringLiteral("protocol"))) {
-        // Commands for a whole stack (e.g. JAUS release_all) name the protocol instead of a machine.
-        const Protocol p = protocolFromString(args.value(QStringLiteral("protocol")).toString());
-        for (FleetBridge* candidate : bridges())
-            if (candidate->protocol() == p)
-                b = candidate;
-    }
+FleetBridge* CommandGate::bridgeOf(Protocol protocol) const {
+    for (FleetBridge* b : bridges())
+        if (b->protocol() == protocol)
+            return b;
+    return nullptr;
+}
+
+void CommandGate::command(const OperatorCommand& command, const QString& origin, ResultHandler onFinal) {
+    if (std::holds_alternative<StopAll>(command))
+        return stopAll(origin, std::move(onFinal));
+    if (const auto* stop = std::get_if<StopMachine>(&command))
+        return stopMachine(stop->id, origin, std::move(onFinal));
+    if (const auto* clear = std::get_if<ClearStop>(&command))
+        return clearStop(clear->id, clear->token, origin, std::move(onFinal));
+    // The bridge owning the machine, else (commands for a whole stack: JAUS release_all, an OSYRIS text
+    // to every station) the bridge of the command's protocol.
+    const CommandRoute route = commandRoute(command);
+    FleetBridge* b = route.machine.isEmpty() ? (route.protocol ? bridgeOf(*route.protocol) : nullptr)
+                                             : bridgeFor(route.machine);
     if (!b) {
         CommandResult r =
-            id.isEmpty()
-                ? CommandResult::fromTargets({}, tr("missing \"id\" (or \"protocol\"): nothing sent"))
-                : CommandResult::fromTargets({{id, false, tr("unknown machine %1").arg(id)}});
-        finishNow(name, id, origin, r, onFinal);
+            route.machine.isEmpty()
+                ? CommandResult::fromTargets(
+                      {refusal(route.protocol ? toText(*route.protocol) : commandName(command),
+                               OutcomeReason::UnknownTarget,
+                               tr("no %1 bridge in this console: nothing sent")
+                                   .arg(route.protocol ? toText(*route.protocol) : QString()))})
+                : CommandResult::fromTargets({refusal(route.machine, OutcomeReason::UnknownTarget,
+                                                      tr("unknown machine %1").arg(route.machine))});
+        finishNow(command, origin, r, onFinal);
         return;
     }
     dispatch(
-        name, id, origin, {b},
-        [name, args](FleetBridge* br, OutcomeCallback done) { br->command(name, args, std::move(done)); },
+        command, origin, {b},
+        [command](FleetBridge* br, OutcomeCallback done) { br->command(command, std::move(done)); },
         std::move(onFinal));
+}
+
+void CommandGate::refuse(const QString& action, const QString& target, OutcomeReason cause,
+                         const QString& reason, const QString& origin, ResultHandler onFinal) {
+    QJsonObject command{{QStringLiteral("cmd"), action}};
+    if (!target.isEmpty())
+        command[QStringLiteral("id")] = target;
+    finishNow(action, target, command, origin,
+              CommandResult::fromTargets({refusal(target.isEmpty() ? action : target, cause, reason)}),
+              onFinal);
 }
 
 QStringList CommandGate::awaitingConfirmation() const {
     return m_watches.keys();
 }
 
-void CommandGate::watchStops(FleetBridge* b, const QVector<CommandTarget>& targets,
+void CommandGate::watchStops(FleetBridge* b, const std::vector<TargetOutcome>& outcomes,
                              const QElapsedTimer& since) {
     // The bridge that answered for the targets is known: no guessing the owner from the target's name.
     QStringList noStopState;
-    for (const CommandTarget& t : targets) {
-        if (!t.sent)
+    for (const TargetOutcome& o : outcomes) {
+        if (!o.sent)
             continue;
+        const QString id = targetId(o);
         if (b && !b->reportsStopState()) {
-            noStopState << t.id;
+            noStopState << id;
             continue;
         }
-        if (b && b->reportsStopped(t.id)) {
-            emit stopConfirmed(t.id, tr("%1 already reports being stopped").arg(t.id), 0);
+        if (b && b->reportsStopped(id)) {
+            emit stopConfirmed(id, tr("%1 already reports being stopped").arg(id), 0);
             if (m_alarms)
-                m_alarms->add(makeEvent(EventSeverity::Info, EventKind::Audit, t.id,
-                                        tr("%1 already reports being stopped").arg(t.id),
+                m_alarms->add(makeEvent(EventSeverity::Info, EventKind::Audit, id,
+                                        tr("%1 already reports being stopped").arg(id),
                                         QStringLiteral("gate")));
             continue;
         }
-        Watch& w = m_watches[t.id];
+        Watch& w = m_watches[id];
         w.since = since;
         if (!w.timer) {
             w.timer = new QTimer(this);
             w.timer->setSingleShot(true);
-            const QString target = t.id;
+            const QString target = id;
             connect(w.timer, &QTimer::timeout, this, [this, target] {
                 auto it = m_watches.find(target);
                 if (it == m_watches.end())
@@ -419,26 +451,27 @@ QStringList CommandGate::awaitingCommandConfirmation() const {
     return out;
 }
 
-void CommandGate::watchCommand(const QString& action, FleetBridge* b, const QVector<CommandTarget>& targets,
-                               const QElapsedTimer& since) {
-    for (const CommandTarget& t : targets) {
-        if (!t.sent)
+void CommandGate::watchCommand(const QString& action, FleetBridge* b,
+                               const std::vector<TargetOutcome>& outcomes, const QElapsedTimer& since) {
+    for (const TargetOutcome& o : outcomes) {
+        if (!o.sent)
             continue;
-        if (b->reportsConfirmed(action, t.id)) {
-            const QString text = tr("%1 already reports the effect of %2").arg(t.id, action);
+        const QString id = targetId(o);
+        if (b->reportsConfirmed(action, id)) {
+            const QString text = tr("%1 already reports the effect of %2").arg(id, action);
             if (m_alarms)
                 m_alarms->add(
-                    makeEvent(EventSeverity::Info, EventKind::Audit, t.id, text, QStringLiteral("gate")));
-            emit commandConfirmed(action, t.id, text, 0);
+                    makeEvent(EventSeverity::Info, EventKind::Audit, id, text, QStringLiteral("gate")));
+            emit commandConfirmed(action, id, text, 0);
             continue;
         }
-        const QString key = action + QLatin1Char('\n') + t.id;
+        const QString key = action + QLatin1Char('\n') + id;
         Watch& w = m_commandWatches[key];
         w.since = since;
         if (!w.timer) {
             w.timer = new QTimer(this);
             w.timer->setSingleShot(true);
-            const QString target = t.id;
+            const QString target = id;
             connect(w.timer, &QTimer::timeout, this, [this, key, action, target] {
                 auto it = m_commandWatches.find(key);
                 if (it == m_commandWatches.end())
@@ -473,7 +506,7 @@ void CommandGate::onCommandReported(const QString& action, const QString& target
 }
 
 void CommandGate::audit(const QString& origin, const QString& action, const QString& target,
-                        const CommandResult& result) {
+                        const QJsonObject& command, const CommandResult& result) {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     QJsonObject o;
     o[QStringLiteral("time")] = QDateTime::fromMSecsSinceEpoch(now, Qt::UTC).toString(Qt::ISODateWithMs);
@@ -481,6 +514,7 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
     o[QStringLiteral("action")] = action;
     if (!target.isEmpty())
         o[QStringLiteral("target")] = target;
+    o[QStringLiteral("command")] = command;
     o[QStringLiteral("ok")] = result.ok;
     o[QStringLiteral("targets")] = targetsToJson(result.targets);
     o[QStringLiteral("message")] = result.message;

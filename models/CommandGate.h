@@ -83,11 +83,15 @@ public:
     void clearStop(const QString& id, const QString& token, const QString& origin = QStringLiteral("gui"),
                    ResultHandler onFinal = {});
 
-    // Protocol-specific commands routed to the bridge owning args["id"] (request_control, release_control,
-    // drive, ...), or, without an id, to the bridge of args["protocol"] (e.g. {"protocol":"jaus"} for
-    // release_all).
-    void command(const QString& name, const QJsonObject& args, const QString& origin = QStringLiteral("gui"),
+    // Any operator command (models/commands/OperatorCommand.h): STOP ALL, stop and release as above (a
+    // ClearStop carries its token), every other command to the bridge owning its machine, or, for a command
+    // without one (JAUS release_all, an OSYRIS text to every station), to the bridge of its protocol.
+    void command(const OperatorCommand& command, const QString& origin = QStringLiteral("gui"),
                  ResultHandler onFinal = {});
+    // A command that could not be read (the headless edge: a malformed argument of a command naming a
+    // machine): audited as not sent to `target` with the reason, like a bridge's own refusal.
+    void refuse(const QString& action, const QString& target, OutcomeReason cause, const QString& reason,
+                const QString& origin, ResultHandler onFinal = {});
 
     // Commands whose final result is not in yet.
     int pendingCommands() const { return int(m_pending.size()); }
@@ -114,21 +118,24 @@ signals:
 private:
     struct Pending;
     // Issues `fn(bridge, done)` to each bridge and finalises when all answered or at the deadline.
-    void dispatch(const QString& action, const QString& target, const QString& origin,
-                  const QVector<FleetBridge*>& to,
+    void dispatch(const OperatorCommand& command, const QString& origin, const QVector<FleetBridge*>& to,
                   const std::function<void(FleetBridge*, OutcomeCallback)>& fn, ResultHandler onFinal);
     void finish(quint64 id);
-    void finishNow(const QString& action, const QString& target, const QString& origin, CommandResult r,
+    void finishNow(const OperatorCommand& command, const QString& origin, CommandResult r,
                    const ResultHandler& onFinal);
+    void finishNow(const QString& action, const QString& target, const QJsonObject& command,
+                   const QString& origin, CommandResult r, const ResultHandler& onFinal);
+    FleetBridge* bridgeOf(Protocol protocol) const;
     // `bridge` answered for these targets (null when it is gone): it says whether it can confirm a stop.
-    void watchStops(FleetBridge* bridge, const QVector<CommandTarget>& targets, const QElapsedTimer& since);
+    void watchStops(FleetBridge* bridge, const std::vector<TargetOutcome>& outcomes,
+                    const QElapsedTimer& since);
     void onStopReported(const QString& target, const QString& text);
     // Other confirmed commands: watched per (action, target) until the bridge reports the effect.
-    void watchCommand(const QString& action, FleetBridge* bridge, const QVector<CommandTarget>& targets,
+    void watchCommand(const QString& action, FleetBridge* bridge, const std::vector<TargetOutcome>& outcomes,
                       const QElapsedTimer& since);
     void onCommandReported(const QString& action, const QString& target, const QString& text);
     void audit(const QString& origin, const QString& action, const QString& target,
-               const CommandResult& result);
+               const QJsonObject& command, const CommandResult& result);
 
     QVector<QPointer<FleetBridge>> m_bridges;
     std::mutex m_earlyMutex;                  // stopAllEarly() from another thread

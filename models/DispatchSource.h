@@ -4,6 +4,8 @@
 // left to drive. A protocol adapter (models/bridges/IsoDispatchSource for ISO 23725) fills it; widgets read
 // only this (they include no protocol stack header). Everything here comes from the machines' reports; what
 // this console asked is kept apart (requestedTask/requestedDestination, lastResponse).
+#include "models/commands/OperatorCommand.h"
+
 #include <QJsonObject>
 #include <QMetaType>
 #include <QObject>
@@ -82,10 +84,10 @@ public:
     virtual DispatchRoute route(const QString& id) const = 0;
     // The route the truck would drive to `area` from its reported way (the preview before assigning).
     virtual DispatchRoute routeTo(const QString& id, const DispatchArea& area) const = 0;
-    // The arguments of CommandGate::command("assign", ...) for one task to `area`; the request's assignment
-    // id (generated here) in `assignmentId`, to follow the truck's answer (DispatchTruck::lastResponse).
-    virtual QJsonObject assignArgs(const QString& id, const QString& task, const DispatchArea& area,
-                                   QString* assignmentId = nullptr) const = 0;
+    // The assign command (CommandGate::command) for one task to `area`; the request's assignment id
+    // (generated here) in `assignmentId`, to follow the truck's answer (DispatchTruck::lastResponse).
+    virtual Assign assignCommand(const QString& id, const QString& task, const DispatchArea& area,
+                                 QString* assignmentId = nullptr) const = 0;
 
 signals:
     void trucksChanged(const QStringList& ids); // changed or removed

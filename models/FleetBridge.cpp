@@ -6,16 +6,18 @@
 
 namespace ocu {
 
-QJsonArray targetsToJson(const QVector<CommandTarget>& targets) {
+QJsonArray targetsToJson(const QVector<TargetOutcome>& targets) {
     QJsonArray out;
-    for (const CommandTarget& t : targets) {
+    for (const TargetOutcome& t : targets) {
         QJsonObject j;
-        j[QStringLiteral("id")] = t.id;
+        j[QStringLiteral("id")] = targetId(t);
         j[QStringLiteral("sent")] = t.sent;
-        if (!t.sent)
-            j[QStringLiteral("reason")] = t.reason;
-        if (!t.note.isEmpty())
-            j[QStringLiteral("note")] = t.note;
+        if (!t.sent) {
+            j[QStringLiteral("cause")] = QLatin1String(toString(t.cause));
+            j[QStringLiteral("reason")] = reasonText(t);
+        }
+        if (!t.note.empty())
+            j[QStringLiteral("note")] = noteText(t);
         out.append(j);
     }
     return out;
@@ -90,7 +92,7 @@ void FleetBridge::publishEvent(const FleetEvent& event) {
         this, [this, ev] { emit eventRaised(ev); }, Qt::QueuedConnection);
 }
 
-CommandResult CommandResult::fromTargets(QVector<CommandTarget> targets, const QString& whenEmpty) {
+CommandResult CommandResult::fromTargets(QVector<TargetOutcome> targets, const QString& whenEmpty) {
     CommandResult r;
     r.targets = std::move(targets);
     if (r.targets.isEmpty()) {
@@ -101,9 +103,9 @@ CommandResult CommandResult::fromTargets(QVector<CommandTarget> targets, const Q
         return r;
     }
     QStringList sent;
-    for (const CommandTarget& t : std::as_const(r.targets))
+    for (const TargetOutcome& t : std::as_const(r.targets))
         if (t.sent)
-            sent << (t.note.isEmpty() ? t.id : QStringLiteral("%1 (%2)").arg(t.id, t.note));
+            sent << (t.note.empty() ? targetId(t) : QStringLiteral("%1 (%2)").arg(targetId(t), noteText(t)));
     const QStringList failed = r.notSent();
     r.ok = failed.isEmpty();
     if (r.ok)
@@ -120,26 +122,23 @@ CommandResult CommandResult::fromTargets(QVector<CommandTarget> targets, const Q
 
 QStringList CommandResult::notSent() const {
     QStringList out;
-    for (const CommandTarget& t : targets)
+    for (const TargetOutcome& t : targets)
         if (!t.sent)
-            out << (t.reason.isEmpty() ? t.id : QStringLiteral("%1: %2").arg(t.id, t.reason));
+            out << (t.reason.empty() ? targetId(t)
+                                     : QStringLiteral("%1: %2").arg(targetId(t), reasonText(t)));
     return out;
 }
 
-CommandTarget toCommandTarget(const TargetOutcome& o) {
-    return {QString::fromStdString(o.target), o.sent, QString::fromStdString(o.reason),
-            QString::fromStdString(o.note)};
+TargetOutcome refusal(const QString& target, OutcomeReason cause, const QString& reason) {
+    return TargetOutcome::refused(target.toStdString(), cause, reason.toStdString());
 }
 
-TargetOutcome refusal(const QString& target, const QString& reason) {
-    return TargetOutcome{target.toStdString(), false, reason.toStdString()};
-}
-
-void FleetBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
-    QString target = args.value(QStringLiteral("id")).toString();
+void FleetBridge::command(const OperatorCommand& command, OutcomeCallback done) {
+    QString target = commandTarget(command);
     if (target.isEmpty())
         target = toText(m_protocol);
-    done({refusal(target, tr("command '%1' not supported by %2").arg(name, toText(m_protocol)))});
+    done({refusal(target, OutcomeReason::NotSupported,
+                  tr("command '%1' not supported by %2").arg(commandName(command), toText(m_protocol)))});
 }
 
 QVector<LinkStatus> FleetBridge::links() const {

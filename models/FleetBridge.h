@@ -19,6 +19,7 @@
 #include "models/MachineState.h"
 #include "models/SiteMapData.h"
 #include "models/TelemetryCoalescer.h"
+#include "models/commands/OperatorCommand.h"
 
 #include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
@@ -38,37 +39,37 @@ namespace ocu {
 
 class PassCountLayer;
 
-// One target of a command as the GUI thread sees it (TargetOutcome in Qt types).
-struct CommandTarget {
-    CommandTarget() = default;
-    CommandTarget(QString id_, bool sent_, QString reason_ = {}, QString note_ = {})
-        : id(std::move(id_)), sent(sent_), reason(std::move(reason_)), note(std::move(note_)) {}
-    QString id; // "jaus:126", "iso23725 link ahs", "osyris group 239.255.0.1:5000", ...
-    bool sent = false;
-    QString reason; // why not sent; empty when sent
-    QString note;   // TargetOutcome::note (e.g. sent to a vehicle whose link is down); empty: nothing
-};
+// [{"id":…,"sent":…,"cause":… and "reason":… (only when not sent),"note":… (only when there is one)}, …]: the
+// same in headless results and audit lines.
+QJsonArray targetsToJson(const QVector<TargetOutcome>& targets);
 
-// [{"id":…,"sent":…,"reason":… (only when not sent),"note":… (only when there is one)}, …]: the same in
-// headless results and audit lines.
-QJsonArray targetsToJson(const QVector<CommandTarget>& targets);
+// A target's name, reason and note as the GUI shows them.
+inline QString targetId(const TargetOutcome& t) {
+    return QString::fromStdString(t.target);
+}
+inline QString reasonText(const TargetOutcome& t) {
+    return QString::fromStdString(t.reason);
+}
+inline QString noteText(const TargetOutcome& t) {
+    return QString::fromStdString(t.note);
+}
 
 // The final result of one operator command: ok only when there was at least one target and every target
 // was sent; `message` summarises for people (and carries the refusal when there is no target at all).
 struct CommandResult {
     bool ok = false;
     QString message;
-    QVector<CommandTarget> targets;
+    QVector<TargetOutcome> targets;
     QString action; // "stop_all", "stop", "clear_stop" or the command name (set by the CommandGate)
     static CommandResult success(const QString& msg = QStringLiteral("sent")) { return {true, msg, {}, {}}; }
     static CommandResult failure(const QString& msg) { return {false, msg, {}, {}}; }
     // ok = every target sent (and at least one); message = what was sent and what was not.
-    static CommandResult fromTargets(QVector<CommandTarget> targets, const QString& whenEmpty = {});
+    static CommandResult fromTargets(QVector<TargetOutcome> targets, const QString& whenEmpty = {});
     QStringList notSent() const; // "target: reason" for every target not sent
 };
 
-CommandTarget toCommandTarget(const TargetOutcome& o);
-TargetOutcome refusal(const QString& target, const QString& reason);
+// A target not sent: the kind of refusal and the words for people.
+TargetOutcome refusal(const QString& target, OutcomeReason cause, const QString& reason);
 
 struct LinkStatus {
     QString link; // e.g. "jaus", "iso23725:ahs-1", "osyris:239.255.0.1"
@@ -122,10 +123,10 @@ public:
     // Release a stop (JAUS ClearEmergency, ISO all-stop Remove). The CommandGate has already checked the
     // operator's deliberate confirmation before calling this.
     virtual void clearStop(const QString& id, OutcomeCallback done) = 0;
-    // Protocol-specific commands: "request_control", "release_control", "drive" (JAUS) ... with arguments
-    // such as {"id": "jaus:101", "linear": 0.5, "angular": 0.1, "duration": 2.0, "mode": "velocity"}.
-    // Default: unsupported (one refused target named after the command).
-    virtual void command(const QString& name, const QJsonObject& args, OutcomeCallback done);
+    // The other operator commands (models/commands/OperatorCommand.h): each bridge acts on those of its
+    // protocol (RequestControl, TimedDrive... for JAUS) and refuses the rest. The default refuses every
+    // command as not supported (one target: the command's machine, else the protocol).
+    virtual void command(const OperatorCommand& command, OutcomeCallback done);
 
     // Stop confirmation (GUI thread): false when the protocol carries no stop state at all (OSYRIS), so a
     // stop can never be confirmed by the machines; true when the target reports being stopped now.

@@ -18,13 +18,15 @@ namespace {
 // assign and reset_assignment: a truck to address; assign's shorthand (one task at the top level) becomes
 // "tasks", and every task gets its AssignmentId here so the result line names them.
 HeadlessCommands::GateRequest dispatchRequest(const QString& name, const QJsonObject& cmd) {
-    HeadlessCommands::GateRequest r;
-    r.args = cmd;
-    if (cmd.value(QStringLiteral("id")).toString().isEmpty())
+    if (cmd.value(QStringLiteral("id")).toString().isEmpty()) {
+        HeadlessCommands::GateRequest r;
         r.refusal = QStringLiteral("missing \"id\"");
-    else if (name == QLatin1String("assign") &&
-             !(cmd.contains(QStringLiteral("tasks")) && !cmd.value(QStringLiteral("tasks")).isArray())) {
-        // (tasks that are not an array go as they are: the bridge says why)
+        return r;
+    }
+    QJsonObject args = cmd;
+    if (name == QLatin1String("assign") &&
+        !(cmd.contains(QStringLiteral("tasks")) && !cmd.value(QStringLiteral("tasks")).isArray())) {
+        // (tasks that are not an array are read as they are: the reader says why)
         QJsonArray tasks = cmd.value(QStringLiteral("tasks")).toArray();
         if (!cmd.contains(QStringLiteral("tasks"))) {
             QJsonObject one;
@@ -39,10 +41,11 @@ HeadlessCommands::GateRequest dispatchRequest(const QString& name, const QJsonOb
                 t[QStringLiteral("assignment_id")] = QUuid::createUuid().toString(QUuid::WithoutBraces);
                 tasks[i] = t;
             }
-        r.args[QStringLiteral("tasks")] = tasks;
+        args[QStringLiteral("tasks")] = tasks;
     }
-    if (r.args.value(QStringLiteral("tasks")).isArray())
-        r.echo[QStringLiteral("tasks")] = r.args.value(QStringLiteral("tasks"));
+    HeadlessCommands::GateRequest r = HeadlessCommands::read(name, args);
+    if (args.value(QStringLiteral("tasks")).isArray())
+        r.echo[QStringLiteral("tasks")] = args.value(QStringLiteral("tasks"));
     return r;
 }
 

@@ -47,10 +47,10 @@ public:
     bool stopAllFromAnyThread() const override { return true; } // link state and running flag are locked
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
-    // all_stop_apply / all_stop_remove {"link"}, fetch_map {"link"}, reset_assignment {"id"},
-    // assign {"id", "tasks":[...]} (IsoBridgeDispatch.h: tasksFromJson). Assign and reset name the truck as
-    // their target, the others the link; each is sent only when the socket took it.
-    void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
+    // AllStopApply / AllStopRemove, FetchMap (the link by name, else the machine's, else the only one),
+    // ResetAssignment, Assign. Assign and reset name the truck as their target, the others the link; each is
+    // sent only when the socket took it. Every other command is not supported.
+    void command(const OperatorCommand& command, OutcomeCallback done) override;
     bool reportsStopped(const QString& target) const override;
     // clear_stop / all_stop_remove: confirmed when the AHS reports all-stop inactive (MachineAllStop off).
     bool confirmsCommand(const QString& action) const override;
@@ -74,8 +74,8 @@ public:
     // Why an assignment to this truck would be refused now (link down, custodian not FMS, unknown truck), or
     // empty: for enabling the assign control. The stack checks again when the command is sent.
     QString assignRefusal(const QString& id) const;
-    // The arguments of CommandGate::command("assign", ...) for these tasks (first = current, then future).
-    static QJsonObject assignArgs(const QString& id, const QVector<IsoTask>& tasks);
+    // The assign command for these tasks (first = current, then future).
+    static Assign assignCommand(const QString& id, const QVector<IsoTask>& tasks);
     // The headless "production" answer: dispatchToJson of every truck that reported a custodian, an
     // assignment or production (HaulTruck), in id order.
     QJsonArray productionJson() const;
@@ -122,6 +122,17 @@ private:
     QString linkRefusal(const QString& link, const QString& what) const;
     // All-stop Apply/Remove on one link with its outcome (target IsoStack::linkTarget(link)).
     void applyOrRefuse(const QString& link, bool apply, OutcomeCallback done);
+    // The link a command names: by name, else the link of machine `id`, else the only link.
+    QString commandLink(const QString& link, const QString& id) const;
+    // True (and `done` called with the refusal naming `shown`) when `what` cannot go on `link` now: unknown
+    // link, link not up, stack not running.
+    bool refuseLink(const QString& what, const QString& link, const QString& shown,
+                    OutcomeCallback& done) const;
+    // A command for one truck (assign, reset): refused unless `id` names an ISO 23725 machine on an up link;
+    // else `send(link, equipment id, done)` posts it.
+    void
+    truckCommand(const QString& what, const QString& id, OutcomeCallback done,
+                 const std::function<void(const std::string&, const std::string&, OutcomeCallback)>& send);
     std::atomic<bool> m_running{false};
     mutable std::mutex m_linkNowMutex;
     QHash<QString, LinkStatus> m_linkNow; // every link's latest state (io thread; start() first)

@@ -12,9 +12,6 @@ namespace {
 QString q(const std::string& s) {
     return QString::fromStdString(s);
 }
-QString tr(const char* text) {
-    return QCoreApplication::translate("IsoDispatch", text);
-}
 } // namespace
 
 const IsoAssignmentResponse* IsoDispatchState::response(const QString& assignmentId) const {
@@ -114,100 +111,6 @@ QJsonObject dispatchToJson(const IsoDispatchState& s) {
     o[QStringLiteral("way")] = s.wayId ? QJsonValue(double(*s.wayId)) : QJsonValue();
     o[QStringLiteral("payload_t")] = s.payloadTonnes ? QJsonValue(*s.payloadTonnes) : QJsonValue();
     return o;
-}
-
-QJsonArray tasksToJson(const QVector<IsoTask>& tasks) {
-    QJsonArray out;
-    for (const auto& t : tasks) {
-        QJsonObject o;
-        if (!t.assignmentId.isEmpty())
-            o[QStringLiteral("assignment_id")] = t.assignmentId;
-        o[QStringLiteral("task")] = t.task;
-        o[QStringLiteral("destination")] = double(t.destinationId);
-        if (!t.destinationEquipmentId.isEmpty())
-            o[QStringLiteral("equipment")] = t.destinationEquipmentId;
-        if (t.destinationSpotId)
-            o[QStringLiteral("spot")] = double(*t.destinationSpotId);
-        if (t.route) {
-            QJsonArray r;
-            for (qint64 w : *t.route)
-                r << double(w);
-            o[QStringLiteral("route")] = r;
-        }
-        out << o;
-    }
-    return out;
-}
-
-namespace {
-// A JSON number that is an integer way/spot id within ±2^53.
-std::optional<qint64> wholeNumber(const QJsonValue& v) {
-    if (!v.isDouble())
-        return std::nullopt;
-    const double d = v.toDouble();
-    if (!std::isfinite(d) || std::floor(d) != d || std::fabs(d) > 9007199254740992.0)
-        return std::nullopt;
-    return static_cast<qint64>(d);
-}
-} // namespace
-
-std::optional<QVector<IsoTask>> tasksFromJson(const QJsonObject& args, QString* error) {
-    auto fail = [&](const QString& why) -> std::optional<QVector<IsoTask>> {
-        if (error)
-            *error = why;
-        return std::nullopt;
-    };
-    QJsonArray list;
-    if (args.contains(QStringLiteral("tasks"))) {
-        if (!args.value(QStringLiteral("tasks")).isArray())
-            return fail(tr("\"tasks\" must be an array of tasks"));
-        list = args.value(QStringLiteral("tasks")).toArray();
-    } else {
-        list << args; // single-task shorthand
-    }
-    if (list.isEmpty())
-        return fail(tr("no task given"));
-    if (list.size() > 64)
-        return fail(tr("at most 64 tasks per request"));
-    QVector<IsoTask> out;
-    for (int i = 0; i < list.size(); ++i) {
-        const QString where = list.size() > 1 || args.contains(QStringLiteral("tasks"))
-                                  ? tr("task %1: ").arg(i + 1)
-                                  : QString();
-        if (!list[i].isObject())
-            return fail(where + tr("must be an object"));
-        const QJsonObject o = list[i].toObject();
-        IsoTask t;
-        t.task = o.value(QStringLiteral("task")).toString();
-        if (t.task.isEmpty())
-            return fail(where + tr("\"task\" missing (Load, Offload, Fuel, Park or Wait)"));
-        const auto dest = wholeNumber(o.value(QStringLiteral("destination")));
-        if (!dest)
-            return fail(where + tr("\"destination\" must be a way id (integer)"));
-        t.destinationId = *dest;
-        t.assignmentId = o.value(QStringLiteral("assignment_id")).toString();
-        t.destinationEquipmentId = o.value(QStringLiteral("equipment")).toString();
-        if (o.contains(QStringLiteral("spot"))) {
-            const auto spot = wholeNumber(o.value(QStringLiteral("spot")));
-            if (!spot)
-                return fail(where + tr("\"spot\" must be an integer"));
-            t.destinationSpotId = *spot;
-        }
-        if (o.contains(QStringLiteral("route"))) {
-            if (!o.value(QStringLiteral("route")).isArray())
-                return fail(where + tr("\"route\" must be an array of way ids"));
-            QVector<qint64> r;
-            for (const auto& w : o.value(QStringLiteral("route")).toArray()) {
-                const auto id = wholeNumber(w);
-                if (!id)
-                    return fail(where + tr("\"route\" must be an array of way ids"));
-                r << *id;
-            }
-            t.route = r;
-        }
-        out << t;
-    }
-    return out;
 }
 
 std::vector<AssignmentItem> toAssignmentItems(const QVector<IsoTask>& tasks) {

@@ -4,6 +4,7 @@
 // the assignment the AHS reports (HaulTruckAssignmentV1) and the responses to this console's last request,
 // the production state and payload as last reported. Everything here comes from the AHS's reports, never from
 // what the console asked (the requested tasks are kept apart, labelled as such).
+#include "models/commands/OperatorCommand.h"
 #include "protocols/iso23725/IsoListener.h"
 
 #include <QJsonArray>
@@ -16,16 +17,8 @@
 
 namespace ocu {
 
-// One task of an assignment request (§5 #21): Load, Offload, Fuel, Park or Wait at a destination way,
-// optionally at a piece of equipment (a shovel) or a spot, optionally along a route of way ids.
-struct IsoTask {
-    QString assignmentId; // empty: generated when sent
-    QString task;
-    qint64 destinationId = 0;
-    QString destinationEquipmentId; // empty = none
-    std::optional<qint64> destinationSpotId;
-    std::optional<QVector<qint64>> route; // none: the console routes it (or the AHS)
-};
+// One task of an assignment request (models/commands/OperatorCommand.h).
+using IsoTask = AssignTask;
 
 struct IsoAssignmentResponse {
     QString assignmentId;
@@ -76,11 +69,6 @@ IsoDispatchState toDispatchState(const iso23725::IsoMachineSnapshot& m);
 // {"id":..,"name":..,"custodian":..,"needs_assignment":..,"assignment":{..}|null,"production_state":..,...}
 QJsonObject dispatchToJson(const IsoDispatchState& s);
 
-// The "tasks" argument of the assign command: [{"task":"Load","destination":4201,"equipment":"<guid>",
-// "spot":3,"route":[2001],"assignment_id":"<guid>"}]; the single-task shorthand puts those keys at the top.
-QJsonArray tasksToJson(const QVector<IsoTask>& tasks);
-// An error text (and no tasks) when the arguments do not describe at least one well-formed task.
-std::optional<QVector<IsoTask>> tasksFromJson(const QJsonObject& args, QString* error);
 std::vector<iso23725::AssignmentItem> toAssignmentItems(const QVector<IsoTask>& tasks);
 
 } // namespace ocu

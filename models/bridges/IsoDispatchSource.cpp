@@ -168,15 +168,15 @@ DispatchRoute IsoDispatchSource::routeTo(const QString& id, const DispatchArea& 
     return r;
 }
 
-QJsonObject IsoDispatchSource::assignArgs(const QString& id, const QString& task, const DispatchArea& area,
-                                          QString* assignmentId) const {
+Assign IsoDispatchSource::assignCommand(const QString& id, const QString& task, const DispatchArea& area,
+                                        QString* assignmentId) const {
     IsoTask t;
     t.assignmentId = QUuid::createUuid().toString(QUuid::WithoutBraces);
     if (assignmentId)
         *assignmentId = t.assignmentId;
     t.task = task;
     t.destinationId = area.wayId;
-    return IsoBridge::assignArgs(id, {t});
+    return IsoBridge::assignCommand(id, {t});
 }
 
 } // namespace ocu

@@ -26,8 +26,8 @@ public:
     QString assignRefusal(const QString& id) const override;
     DispatchRoute route(const QString& id) const override;
     DispatchRoute routeTo(const QString& id, const DispatchArea& area) const override;
-    QJsonObject assignArgs(const QString& id, const QString& task, const DispatchArea& area,
-                           QString* assignmentId = nullptr) const override;
+    Assign assignCommand(const QString& id, const QString& task, const DispatchArea& area,
+                         QString* assignmentId = nullptr) const override;
 
 private:
     QPointer<IsoBridge> m_bridge;

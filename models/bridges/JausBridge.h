@@ -3,6 +3,9 @@
 // become fleet events, and console commands are posted to the stack. Also keeps the Qt-typed view of every
 // subsystem (models/jaus/JausVehicle.h) for the access-control, teleop and details panels, which see it only
 // through JausVehicleBridge.
+// One job per file: JausBridge.cpp the stack's life and its reports, JausBridgeRows.cpp the pure row
+// mapping, JausPoseAdmission.cpp the pose plausibility gate, JausBridgeCommands.cpp the operator commands,
+// JausDriveSessions.cpp the drive sessions and streams.
 #include "models/jaus/JausVehicleBridge.h"
 
 #include "protocols/common/GeoFrame.h"
@@ -46,8 +49,9 @@ public:
     bool stopsFromCallersThread() const override { return true; } // the stack's fast path
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
-    // request_control, release_control, release_all, drive, drive_stop, resume, standby, shutdown, reset.
-    void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
+    // RequestControl, ReleaseControl, ReleaseAll, Management (resume, standby, shutdown, reset), DriveStart,
+    // DriveStop and TimedDrive; every other command is not supported.
+    void command(const OperatorCommand& command, OutcomeCallback done) override;
     bool reportsStopped(const QString& target) const override;
     // clear_stop (the vehicle reports no EMERGENCY), request_control / release_control (ReportControl /
     // ConfirmControl as the vehicle reports them).
@@ -70,15 +74,30 @@ private:
     void onSubsystemChanged(const jaus::SubsystemSnapshot& snapshot) override;
     void onEvent(const jaus::JausEvent& event) override;
     MachineState toMachine(const jaus::SubsystemSnapshot& s) const;
-    CommandResult refuseIfMonitor(const QString& what) const;
+    // GUI thread: the refusal of `what` to `target` when this console's role is MONITOR; none when it may.
+    std::optional<TargetOutcome> refuseIfMonitor(const QString& target, const QString& what) const;
     // GUI thread: a refusal when the subsystem was never heard or its link is down (nothing is posted then).
-    CommandResult refuseIfUnreachable(quint16 subsystem, const QString& what) const;
+    std::optional<TargetOutcome> refuseIfUnreachable(quint16 subsystem, const QString& what) const;
     // True (and `done` called with the refusal) when the stack is not running: it would never answer.
     bool refuseIfNotRunning(const QString& target, OutcomeCallback& done) const;
-    // Why the console may not drive `subsystem` now (role, stack, link, control); ok when it may.
-    CommandResult refuseDriving(quint16 subsystem) const;
+    // Why the console may not drive `subsystem` now (role, stack, link, control); none when it may.
+    std::optional<TargetOutcome> refuseDriving(quint16 subsystem) const;
+    // The subsystem `id` names, or none (and `done` called with the refusal of `what`).
+    std::optional<quint16> vehicleOf(const QString& id, const QString& what, OutcomeCallback& done) const;
+    // A command over the link to one vehicle (request control, management): refused for the monitor role, a
+    // vehicle not heard or whose link is down, a stopped stack; else `send` posts it.
+    void sendToVehicle(const QString& id, const QString& what, OutcomeCallback done,
+                       const std::function<void(quint16, OutcomeCallback)>& send);
+    void releaseAll(OutcomeCallback done);
+    void timedDrive(const TimedDrive& command, OutcomeCallback done);
     // Opens a drive session in the stack (its first zero demand): `done` says whether it left.
     void startSession(quint16 subsystem, OutcomeCallback done);
+    // A timed drive (headless "drive"): opens the session if needed, hands the demand to the stack (`done`
+    // says whether the socket took it), refreshes it at the drive rate and ends with zeros after durationS.
+    void startTimedDrive(quint16 subsystem, const JausDrive& demand, double durationS, OutcomeCallback done);
+    // Ends a drive session (release, focus loss, joystick loss...): zeros, several times; `done` says whether
+    // the first one left, with `why` as the note of the sent targets.
+    void endSession(quint16 subsystem, const QString& why, OutcomeCallback done);
     // Every vehicle this console knows: heard (now or earlier) or configured as a static endpoint.
     QList<quint16> knownSubsystems() const;
 

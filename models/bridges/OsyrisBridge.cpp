@@ -297,7 +297,7 @@ QString OsyrisBridge::linkRefusal(const QString& what) const {
 void OsyrisBridge::stopAll(OutcomeCallback done) {
     const QString target = q(m_station->groupTarget());
     if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty()) {
-        done({refusal(target, why)});
+        done({refusal(target, linkCause(), why)});
         return;
     }
     // OSYRIS has no stop command (manned machines); the stop reaches every driver's display as a message,
@@ -307,11 +307,11 @@ void OsyrisBridge::stopAll(OutcomeCallback done) {
 
 void OsyrisBridge::stopMachine(const QString& id, OutcomeCallback done) {
     if (!id.startsWith(protocolPrefix(Protocol::Osyris))) {
-        done({refusal(id, tr("not an OSYRIS machine"))});
+        done({refusal(id, OutcomeReason::UnknownTarget, tr("not an OSYRIS machine"))});
         return;
     }
     if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty()) {
-        done({refusal(id, why)});
+        done({refusal(id, linkCause(), why)});
         return;
     }
     m_station->sendText("STOP " + id.mid(protocolPrefix(Protocol::Osyris).size()).toStdString() +
@@ -320,44 +320,52 @@ void OsyrisBridge::stopMachine(const QString& id, OutcomeCallback done) {
 }
 
 void OsyrisBridge::clearStop(const QString& id, OutcomeCallback done) {
-    done({refusal(id, tr("OSYRIS machines carry no stop state to clear"))});
+    done({refusal(id, OutcomeReason::NotSupported, tr("OSYRIS machines carry no stop state to clear"))});
 }
 
-void OsyrisBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
+OutcomeReason OsyrisBridge::linkCause() const {
+    return m_running ? OutcomeReason::LinkDown : OutcomeReason::NotRunning;
+}
+
+void OsyrisBridge::sendText(const SendText& c, OutcomeCallback done) {
     const QString target = q(m_station->groupTarget());
-    if (name == QLatin1String("send_text")) {
-        const QString text = args.value(QStringLiteral("text")).toString();
-        // To one machine (its id) or to all (no id).
-        const QString id = args.value(QStringLiteral("id")).toString();
-        int to = osyris::kIdxAll;
-        if (!id.isEmpty()) {
-            bool ok = false;
-            to = id.startsWith(protocolPrefix(Protocol::Osyris))
-                     ? id.mid(protocolPrefix(Protocol::Osyris).size()).toInt(&ok)
-                     : -1;
-            if (!ok || to < 0 || to > 253)
-                return done({refusal(id, tr("send_text: \"%1\" is not an OSYRIS station").arg(id))});
-        }
-        const QString shown = id.isEmpty() ? target : id;
-        if (text.isEmpty() || text.toUtf8().size() > 79) // §6: 80 bytes NUL-padded, so C peers find a NUL
-            return done({refusal(shown, tr("send_text: \"text\" must be 1 to 79 bytes (CmMsg)"))});
-        if (const QString why = linkRefusal(name); !why.isEmpty())
-            return done({refusal(shown, why)});
-        m_station->sendText(text.toStdString(), static_cast<std::uint8_t>(to), std::move(done));
-        return;
+    // To one machine (its id) or to all (no id).
+    int to = osyris::kIdxAll;
+    if (!c.id.isEmpty()) {
+        bool ok = false;
+        to = c.id.startsWith(protocolPrefix(Protocol::Osyris))
+                 ? c.id.mid(protocolPrefix(Protocol::Osyris).size()).toInt(&ok)
+                 : -1;
+        if (!ok || to < 0 || to > 253)
+            return done({refusal(c.id, OutcomeReason::UnknownTarget,
+                                 tr("send_text: \"%1\" is not an OSYRIS station").arg(c.id))});
     }
-    if (name == QLatin1String("ping")) {
-        const int idx = args.value(QStringLiteral("idx")).toInt(-1);
-        if (idx < 0 || idx > 253)
-            return done({refusal(target, tr("ping: \"idx\" must be a station index 0-253"))});
-        if (const QString why = linkRefusal(name); !why.isEmpty())
-            return done({refusal(target, why)});
-        // Sent at once as its own datagram; the outcome says whether the socket took it, the PONG (an event
-        // with the round trip) shows the effect.
-        m_station->ping(static_cast<std::uint8_t>(idx), std::move(done));
-        return;
-    }
-    FleetBridge::command(name, args, std::move(done));
+    const QString shown = c.id.isEmpty() ? target : c.id;
+    if (c.text.isEmpty() || c.text.toUtf8().size() > 79) // §6: 80 bytes NUL-padded, so C peers find a NUL
+        return done({refusal(shown, OutcomeReason::InvalidArgument,
+                             tr("send_text: \"text\" must be 1 to 79 bytes (CmMsg)"))});
+    if (const QString why = linkRefusal(QStringLiteral("send_text")); !why.isEmpty())
+        return done({refusal(shown, linkCause(), why)});
+    m_station->sendText(c.text.toStdString(), static_cast<std::uint8_t>(to), std::move(done));
+}
+
+void OsyrisBridge::command(const OperatorCommand& command, OutcomeCallback done) {
+    std::visit(Overloaded{
+                   [&](const SendText& c) { sendText(c, std::move(done)); },
+                   [&](const PingStation& c) {
+                       const QString target = q(m_station->groupTarget());
+                       if (c.idx < 0 || c.idx > 253)
+                           return done({refusal(target, OutcomeReason::InvalidArgument,
+                                                tr("ping: \"idx\" must be a station index 0-253"))});
+                       if (const QString why = linkRefusal(QStringLiteral("ping")); !why.isEmpty())
+                           return done({refusal(target, linkCause(), why)});
+                       // Sent at once as its own datagram; the outcome says whether the socket took it, the
+                       // PONG (an event with the round trip) shows the effect.
+                       m_station->ping(static_cast<std::uint8_t>(c.idx), std::move(done));
+                   },
+                   [&](const auto&) { FleetBridge::command(command, std::move(done)); },
+               },
+               command);
 }
 
 std::chrono::milliseconds OsyrisBridge::ioStalledFor() const {

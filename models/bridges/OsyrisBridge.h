@@ -40,7 +40,7 @@ public:
     void clearStop(const QString& id, OutcomeCallback done) override;
     // send_text {"text"} to every station, or {"id": "osyris:<idx>", "text"} to one (CmMsg IdxWhose; the
     // result's target is then that machine); ping {"idx"}.
-    void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
+    void command(const OperatorCommand& command, OutcomeCallback done) override;
     // OSYRIS carries no stop state: a stop can never be confirmed by the machines.
     bool reportsStopState() const override { return false; }
     const PassCountLayer* passCountLayer() const override { return m_layer.get(); }
@@ -91,6 +91,9 @@ private:
     std::set<int> m_textSenders; // GUI thread
     // Why a message cannot go out now (no station heard, station not running), or an empty string.
     QString linkRefusal(const QString& what) const;
+    // The kind of linkRefusal's refusal: the station not running, or no station heard yet.
+    OutcomeReason linkCause() const;
+    void sendText(const SendText& command, OutcomeCallback done);
 };
 
 } // namespace ocu

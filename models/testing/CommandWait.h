@@ -37,12 +37,8 @@ template <class Issue> CommandResult bridgeResult(Issue&& issue, int timeoutMs =
     for (;;) {
         {
             std::lock_guard lock(box->m);
-            if (box->out) {
-                QVector<CommandTarget> t;
-                for (const auto& o : *box->out)
-                    t.push_back(toCommandTarget(o));
-                return CommandResult::fromTargets(t);
-            }
+            if (box->out)
+                return CommandResult::fromTargets(QVector<TargetOutcome>(box->out->begin(), box->out->end()));
         }
         if (deadline.hasExpired())
             return CommandResult::failure(QStringLiteral("no result"));

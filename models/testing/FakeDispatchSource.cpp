@@ -54,15 +54,16 @@ DispatchRoute FakeDispatchSource::routeTo(const QString& id, const DispatchArea&
     return previews.value(id + QLatin1Char('/') + QString::number(area.wayId));
 }
 
-QJsonObject FakeDispatchSource::assignArgs(const QString& id, const QString& task, const DispatchArea& area,
-                                           QString* assignmentId) const {
+Assign FakeDispatchSource::assignCommand(const QString& id, const QString& task, const DispatchArea& area,
+                                         QString* assignmentId) const {
     const QString aid = QStringLiteral("assignment-%1").arg(m_nextAssignment++);
     if (assignmentId)
         *assignmentId = aid;
-    QJsonObject t{{QStringLiteral("task"), task},
-                  {QStringLiteral("destination"), double(area.wayId)},
-                  {QStringLiteral("assignment_id"), aid}};
-    return QJsonObject{{QStringLiteral("id"), id}, {QStringLiteral("tasks"), QJsonArray{t}}};
+    AssignTask t;
+    t.assignmentId = aid;
+    t.task = task;
+    t.destinationId = area.wayId;
+    return Assign{id, {t}};
 }
 
 } // namespace ocu

@@ -1,6 +1,6 @@
 #pragma once
 // A dispatch source without a protocol, for tests and benchmarks: trucks, areas and routes are set by hand;
-// assignArgs builds the same {"id","tasks":[{"task","destination","assignment_id"}]} as the ISO adapter.
+// assignCommand builds the same Assign (one task with its assignment id) as the ISO adapter.
 #include "models/DispatchSource.h"
 
 #include <QHash>
@@ -28,8 +28,8 @@ public:
     QString assignRefusal(const QString& id) const override { return refusals.value(id); }
     DispatchRoute route(const QString& id) const override;
     DispatchRoute routeTo(const QString& id, const DispatchArea& area) const override;
-    QJsonObject assignArgs(const QString& id, const QString& task, const DispatchArea& area,
-                           QString* assignmentId = nullptr) const override;
+    Assign assignCommand(const QString& id, const QString& task, const DispatchArea& area,
+                         QString* assignmentId = nullptr) const override;
 
 private:
     QHash<QString, DispatchTruck> m_trucks;

@@ -58,7 +58,8 @@ void FakeFleetBridge::stopAll(OutcomeCallback done) {
         m_stopAllThread = std::this_thread::get_id();
     }
     if (refusedCommands.contains(QStringLiteral("stop_all")))
-        return answer(std::move(done), {refusal(toText(protocol()), QStringLiteral("refused"))});
+        return answer(std::move(done),
+                      {refusal(toText(protocol()), OutcomeReason::Refused, QStringLiteral("refused"))});
     QStringList ids;
     {
         std::lock_guard lock(m_mutex);
@@ -68,7 +69,7 @@ void FakeFleetBridge::stopAll(OutcomeCallback done) {
     std::vector<TargetOutcome> out;
     for (const QString& id : ids) {
         setStop(id, StopState::Stopped);
-        out.push_back({id.toStdString(), true, {}});
+        out.push_back(TargetOutcome::sentTo(id.toStdString()));
     }
     answer(std::move(done), std::move(out));
 }
@@ -76,26 +77,28 @@ void FakeFleetBridge::stopAll(OutcomeCallback done) {
 void FakeFleetBridge::stopMachine(const QString& id, OutcomeCallback done) {
     record(QStringLiteral("stop"), id);
     if (refusedCommands.contains(QStringLiteral("stop")))
-        return answer(std::move(done), {refusal(id, QStringLiteral("refused"))});
+        return answer(std::move(done), {refusal(id, OutcomeReason::Refused, QStringLiteral("refused"))});
     setStop(id, StopState::Stopped);
-    answer(std::move(done), {TargetOutcome{id.toStdString(), true, {}}});
+    answer(std::move(done), {TargetOutcome::sentTo(id.toStdString())});
 }
 
 void FakeFleetBridge::clearStop(const QString& id, OutcomeCallback done) {
     record(QStringLiteral("clear_stop"), id);
     if (refusedCommands.contains(QStringLiteral("clear_stop")))
-        return answer(std::move(done), {refusal(id, QStringLiteral("refused"))});
+        return answer(std::move(done), {refusal(id, OutcomeReason::Refused, QStringLiteral("refused"))});
     setStop(id, StopState::None);
-    answer(std::move(done), {TargetOutcome{id.toStdString(), true, {}}});
+    answer(std::move(done), {TargetOutcome::sentTo(id.toStdString())});
 }
 
-void FakeFleetBridge::command(const QString& name, const QJsonObject& args, OutcomeCallback done) {
-    const QString id = args.value(QStringLiteral("id")).toString();
-    record(name, id, args);
+void FakeFleetBridge::command(const OperatorCommand& command, OutcomeCallback done) {
+    const QString name = commandName(command);
+    const QString id = commandTarget(command);
+    record(name, id, toJson(command));
     const QString target = id.isEmpty() ? toText(protocol()) : id;
     if (refusedCommands.contains(name))
-        return answer(std::move(done), {refusal(target, QStringLiteral("insufficient authority"))});
-    answer(std::move(done), {TargetOutcome{target.toStdString(), true, {}}});
+        return answer(std::move(done), {refusal(target, OutcomeReason::NotPermitted,
+                                                QStringLiteral("insufficient authority"))});
+    answer(std::move(done), {TargetOutcome::sentTo(target.toStdString())});
 }
 
 QVector<FakeFleetBridge::Call> FakeFleetBridge::calls() const {

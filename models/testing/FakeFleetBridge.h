@@ -18,9 +18,9 @@ public:
     explicit FakeFleetBridge(Protocol protocol, QObject* parent = nullptr);
 
     struct Call {
-        QString name; // "stop_all", "stop", "clear_stop", or the command() name
+        QString name; // "stop_all", "stop", "clear_stop", or the command's name (commandName)
         QString id;
-        QJsonObject args;
+        QJsonObject args; // command(): the command as JSON (toJson)
     };
 
     // Thread-safe: stores the machine (for the simulated stop reports) and publishes it.
@@ -31,7 +31,8 @@ public:
     void stopAll(OutcomeCallback done) override;
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
-    void command(const QString& name, const QJsonObject& args, OutcomeCallback done) override;
+    // Every command is sent to its target (the machine, else the protocol), unless refusedCommands names it.
+    void command(const OperatorCommand& command, OutcomeCallback done) override;
 
     QVector<Call> calls() const;
     void clearCalls();

@@ -360,10 +360,11 @@ void IsoStack::allStopRemove(const std::string& link) {
 
 void IsoStack::allStopApply(const std::string& link, OutcomeCallback done) {
     m_impl->urgent.push([d = m_impl.get(), link, done = std::move(done)] {
-        TargetOutcome o{linkTarget(link), false, "no ISO 23725 link named " + link};
+        TargetOutcome o = TargetOutcome::refused(linkTarget(link), OutcomeReason::UnknownTarget,
+                                                 "no ISO 23725 link named " + link);
         if (auto* s = d->session(link, "all-stop Apply")) {
-            o.sent = s->allStopApply();
-            o.reason = o.sent ? std::string() : s->lastRefusal();
+            o = s->allStopApply() ? TargetOutcome::sentTo(o.target)
+                                  : TargetOutcome(o.target, false, s->lastRefusal());
         }
         done({std::move(o)});
     });
@@ -371,10 +372,11 @@ void IsoStack::allStopApply(const std::string& link, OutcomeCallback done) {
 
 void IsoStack::allStopRemove(const std::string& link, OutcomeCallback done) {
     m_impl->urgent.push([d = m_impl.get(), link, done = std::move(done)] {
-        TargetOutcome o{linkTarget(link), false, "no ISO 23725 link named " + link};
+        TargetOutcome o = TargetOutcome::refused(linkTarget(link), OutcomeReason::UnknownTarget,
+                                                 "no ISO 23725 link named " + link);
         if (auto* s = d->session(link, "all-stop Remove")) {
-            o.sent = s->allStopRemove();
-            o.reason = o.sent ? std::string() : s->lastRefusal();
+            o = s->allStopRemove() ? TargetOutcome::sentTo(o.target)
+                                   : TargetOutcome(o.target, false, s->lastRefusal());
         }
         done({std::move(o)});
     });
@@ -420,10 +422,12 @@ void IsoStack::requestAssignment(const std::string& link, const Guid& equipmentI
                                  std::vector<AssignmentItem> items, OutcomeCallback done) {
     m_impl->io.post(
         [d = m_impl.get(), link, equipmentId, items = std::move(items), done = std::move(done)]() mutable {
-            TargetOutcome o{machineTarget(equipmentId), false, "no ISO 23725 link named " + link};
+            TargetOutcome o = TargetOutcome::refused(machineTarget(equipmentId), OutcomeReason::UnknownTarget,
+                                                     "no ISO 23725 link named " + link);
             if (auto* s = d->session(link, "assignment request")) {
-                o.sent = s->requestAssignment(equipmentId, std::move(items));
-                o.reason = o.sent ? std::string() : s->lastRefusal();
+                o = s->requestAssignment(equipmentId, std::move(items))
+                        ? TargetOutcome::sentTo(o.target)
+                        : TargetOutcome(o.target, false, s->lastRefusal());
             }
             done({std::move(o)});
         });
@@ -431,10 +435,11 @@ void IsoStack::requestAssignment(const std::string& link, const Guid& equipmentI
 
 void IsoStack::resetAssignment(const std::string& link, const Guid& equipmentId, OutcomeCallback done) {
     m_impl->io.post([d = m_impl.get(), link, equipmentId, done = std::move(done)] {
-        TargetOutcome o{machineTarget(equipmentId), false, "no ISO 23725 link named " + link};
+        TargetOutcome o = TargetOutcome::refused(machineTarget(equipmentId), OutcomeReason::UnknownTarget,
+                                                 "no ISO 23725 link named " + link);
         if (auto* s = d->session(link, "assignment reset")) {
-            o.sent = s->resetAssignment(equipmentId);
-            o.reason = o.sent ? std::string() : s->lastRefusal();
+            o = s->resetAssignment(equipmentId) ? TargetOutcome::sentTo(o.target)
+                                                : TargetOutcome(o.target, false, s->lastRefusal());
         }
         done({std::move(o)});
     });
@@ -442,10 +447,11 @@ void IsoStack::resetAssignment(const std::string& link, const Guid& equipmentId,
 
 void IsoStack::fetchMap(const std::string& link, OutcomeCallback done) {
     m_impl->io.post([d = m_impl.get(), link, done = std::move(done)] {
-        TargetOutcome o{linkTarget(link), false, "no ISO 23725 link named " + link};
+        TargetOutcome o = TargetOutcome::refused(linkTarget(link), OutcomeReason::UnknownTarget,
+                                                 "no ISO 23725 link named " + link);
         if (auto* s = d->session(link, "map fetch")) {
-            o.sent = s->fetchMap();
-            o.reason = o.sent ? std::string() : s->lastRefusal();
+            o = s->fetchMap() ? TargetOutcome::sentTo(o.target)
+                              : TargetOutcome(o.target, false, s->lastRefusal());
         }
         done({std::move(o)});
     });

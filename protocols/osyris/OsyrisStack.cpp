@@ -238,7 +238,8 @@ void OsyrisStack::sendText(std::string text, std::uint8_t to) {
 void OsyrisStack::sendText(std::string text, std::uint8_t to, OutcomeCallback done) {
     const std::string target = to == kIdxAll ? groupTarget() : "osyris:" + std::to_string(to);
     if (!m_impl->running) {
-        done({TargetOutcome{target, false, "the OSYRIS station is not running"}});
+        done(
+            {TargetOutcome::refused(target, OutcomeReason::NotRunning, "the OSYRIS station is not running")});
         return;
     }
     // From the calling thread at once (the STOP text does not wait for the io thread to wake
@@ -256,18 +257,20 @@ void OsyrisStack::sendText(std::string text, std::uint8_t to, OutcomeCallback do
             return;
         }
         if (taken > 0) { // some destinations have it: sending again would show it twice there
-            done({TargetOutcome{target, false, "socket error: " + why}});
+            done({TargetOutcome::refused(target, OutcomeReason::SendFailed, "socket error: " + why)});
             return;
         }
     }
     m_impl->io.post([this, t = std::move(text), to, target, done = std::move(done)] {
-        TargetOutcome o{target, false, "the OSYRIS station is not running"};
+        TargetOutcome o =
+            TargetOutcome::refused(target, OutcomeReason::NotRunning, "the OSYRIS station is not running");
         if (m_impl->running && m_impl->transport) {
             m_impl->lastSendOk = false;
             m_impl->core->sendText(t, to);
-            o.sent = m_impl->lastSendOk;
-            if (!o.sent)
-                o.reason = "socket error: " + m_impl->transport->lastError();
+            o = m_impl->lastSendOk
+                    ? TargetOutcome::sentTo(target)
+                    : TargetOutcome::refused(target, OutcomeReason::SendFailed,
+                                             "socket error: " + m_impl->transport->lastError());
         }
         done({std::move(o)});
     });
@@ -282,16 +285,20 @@ void OsyrisStack::ping(std::uint8_t idx) {
 void OsyrisStack::ping(std::uint8_t idx, OutcomeCallback done) {
     const std::string target = "osyris:" + std::to_string(idx);
     if (!m_impl->running) {
-        done({TargetOutcome{target, false, "the OSYRIS station is not running"}});
+        done(
+            {TargetOutcome::refused(target, OutcomeReason::NotRunning, "the OSYRIS station is not running")});
         return;
     }
     m_impl->io.post([this, idx, target, done = std::move(done)] {
-        TargetOutcome o{target, false, "the OSYRIS station is not running"};
+        TargetOutcome o =
+            TargetOutcome::refused(target, OutcomeReason::NotRunning, "the OSYRIS station is not running");
         if (m_impl->running && m_impl->transport) {
             m_impl->lastSendOk = false;
             m_impl->core->pingNow(idx);
-            o.sent = m_impl->lastSendOk;
-            o.reason = o.sent ? std::string() : "socket error: " + m_impl->transport->lastError();
+            o = m_impl->lastSendOk
+                    ? TargetOutcome::sentTo(target)
+                    : TargetOutcome::refused(target, OutcomeReason::SendFailed,
+                                             "socket error: " + m_impl->transport->lastError());
         }
         done({std::move(o)});
     });

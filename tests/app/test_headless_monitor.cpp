@@ -60,19 +60,22 @@ public:
                                {QStringLiteral("message"), QStringLiteral("fine")},
                                {QStringLiteral("asked"), cmd.value(QStringLiteral("what"))}};
         });
-        // km/h in, m/s to the bridge; refused without a speed.
+        // km/h in, a typed one-second drive at m/s to the bridge; refused without a speed.
         table.addGateCommand(QStringLiteral("fake_move"), [](const QJsonObject& cmd) {
             HeadlessCommands::GateRequest r;
             if (!cmd.contains(QStringLiteral("kmh"))) {
                 r.refusal = QStringLiteral("missing \"kmh\"");
                 return r;
             }
-            r.args = cmd;
-            r.args[QStringLiteral("mps")] = cmd.value(QStringLiteral("kmh")).toDouble() / 3.6;
-            r.echo[QStringLiteral("mps")] = r.args.value(QStringLiteral("mps"));
+            TimedDrive drive;
+            drive.id = cmd.value(QStringLiteral("id")).toString();
+            drive.linear = cmd.value(QStringLiteral("kmh")).toDouble() / 3.6;
+            r.command = drive;
+            r.echo[QStringLiteral("mps")] = drive.linear;
             return r;
         });
-        table.addGateCommand(QStringLiteral("fake_hold"));
+        // Without a prepare step the JSON is read as the operator command of that name.
+        table.addGateCommand(QStringLiteral("request_control"));
     }
     int queries = 0;
 };
@@ -314,16 +317,16 @@ private slots:
         QCOMPARE(r.value(QStringLiteral("mps")).toDouble(), 5.0);
         QCOMPARE(r.value(QStringLiteral("targets")).toArray().size(), 1);
         QCOMPARE(rig.jaus.calls().size(), 1);
-        QCOMPARE(rig.jaus.calls()[0].name, QStringLiteral("fake_move"));
-        QCOMPARE(rig.jaus.calls()[0].args.value(QStringLiteral("mps")).toDouble(), 5.0);
+        QCOMPARE(rig.jaus.calls()[0].name, QStringLiteral("drive"));
+        QCOMPARE(rig.jaus.calls()[0].args.value(QStringLiteral("linear")).toDouble(), 5.0);
         // Refused by its prepare step: nothing sent, the result says why.
         r = QJsonDocument::fromJson(rig.monitor.handleLine(R"({"cmd":"fake_move","id":"jaus:7"})")).object();
         QCOMPARE(r.value(QStringLiteral("ok")).toBool(), false);
         QCOMPARE(r.value(QStringLiteral("message")).toString(), QStringLiteral("missing \"kmh\""));
         QCOMPARE(rig.jaus.calls().size(), 1);
         // A gate command without a prepare step asks for the machine.
-        QCOMPARE(rig.monitor.handleLine(R"({"cmd":"fake_hold"})"),
-                 QByteArray("{\"cmd\":\"fake_hold\",\"message\":\"missing "
+        QCOMPARE(rig.monitor.handleLine(R"({"cmd":"request_control"})"),
+                 QByteArray("{\"cmd\":\"request_control\",\"message\":\"missing "
                             "\\\"id\\\"\",\"ok\":false,\"type\":\"result\"}"));
         QCOMPARE(rig.jaus.calls().size(), 1);
         // Another monitor has its own table: the module's commands are unknown there.

@@ -82,7 +82,7 @@ private slots:
 
         // One target per machine, each sent.
         QCOMPARE(r.targets.size(), 3);
-        for (const CommandTarget& t : r.targets)
+        for (const TargetOutcome& t : r.targets)
             QVERIFY(t.sent);
         // Audited: an event-log entry and one JSON line in the audit file.
         QCOMPARE(alarms.eventAt(0).kind, EventKind::Audit);
@@ -145,7 +145,7 @@ private slots:
         // A plain STOP ALL: the caller's-thread bridges first, whatever the order they were added in.
         const CommandResult r2 = gateResult([&](auto h) { stop.stopAll(QStringLiteral("gui"), h); });
         QCOMPARE(r2.targets.size(), 3);
-        QCOMPARE(r2.targets.last().id, QStringLiteral("iso23725:1"));
+        QCOMPARE(targetId(r2.targets.last()), QStringLiteral("iso23725:1"));
     }
 
     void stopAllStillReachesOthersWhenOneRefuses() {
@@ -178,9 +178,9 @@ private slots:
         const CommandResult r = gateResult([&](auto h) { stop.stopAll(QStringLiteral("gui"), h); });
         QVERIFY(!r.ok);
         QCOMPARE(r.targets.size(), 2);
-        QCOMPARE(r.targets[0].id, QStringLiteral("jaus"));
+        QCOMPARE(targetId(r.targets[0]), QStringLiteral("jaus"));
         QVERIFY(!r.targets[0].sent);
-        QVERIFY(r.targets[0].reason.contains(QStringLiteral("did not answer")));
+        QVERIFY(reasonText(r.targets[0]).contains(QStringLiteral("did not answer")));
         QVERIFY(r.targets[1].sent);
         QCOMPARE(finished.count(), 1);
         QCOMPARE(stop.pendingCommands(), 0);
@@ -246,11 +246,10 @@ private slots:
         QSignalSpy unconfirmed(&gate, &CommandGate::commandUnconfirmed);
         for (const char* id : {"jaus:1", "jaus:2"})
             QVERIFY(gateResult([&](auto h) {
-                        gate.command(QStringLiteral("request_control"), {{"id", QString::fromLatin1(id)}},
-                                     QStringLiteral("gui"), h);
+                        gate.command(RequestControl{QString::fromLatin1(id)}, QStringLiteral("gui"), h);
                     }).ok);
         QVERIFY(gateResult([&](auto h) {
-                    gate.command(QStringLiteral("drive_start"), {{"id", "jaus:1"}}, QStringLiteral("gui"), h);
+                    gate.command(DriveStart{QStringLiteral("jaus:1"), {}}, QStringLiteral("gui"), h);
                 }).ok);
         QCOMPARE(gate.awaitingCommandConfirmation().size(), 2);
         emit jaus.commandReported(QStringLiteral("request_control"), QStringLiteral("jaus:1"),

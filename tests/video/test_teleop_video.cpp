@@ -79,8 +79,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(s.bridge->subsystem(id) && !s.bridge->subsystem(id)->services.isEmpty(),
                                  20000);
         const CommandResult rc = ocu::testing::gateResult([&](CommandGate::ResultHandler h) {
-            s.ctx.gate()->command(QStringLiteral("request_control"), {{QStringLiteral("id"), machine}},
-                                  QStringLiteral("test"), h);
+            s.ctx.gate()->command(RequestControl{machine}, QStringLiteral("test"), h);
         });
         QVERIFY2(rc.ok, qPrintable(rc.message));
 

@@ -68,9 +68,7 @@ private slots:
 
         QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(id) && !bridge.subsystem(id)->services.isEmpty(), 20000);
         const CommandResult rc = ocu::testing::gateResult([&](CommandGate::ResultHandler h) {
-            ctx.gate()->command(QStringLiteral("request_control"),
-                                {{QStringLiteral("id"), JausVehicleBridge::machineId(id)}},
-                                QStringLiteral("test"), h);
+            ctx.gate()->command(RequestControl{JausVehicleBridge::machineId(id)}, QStringLiteral("test"), h);
         });
         QVERIFY2(rc.ok, qPrintable(rc.message));
         QTRY_VERIFY_WITH_TIMEOUT(panel.controller()->isEnabled(), 30000);

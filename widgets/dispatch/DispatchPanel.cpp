@@ -566,16 +566,15 @@ void DispatchPanel::assignCurrent() {
                           what)))
         return;
     QString assignmentId;
-    const QJsonObject args = m_source->assignArgs(t.id, task, area, &assignmentId);
+    const Assign assign = m_source->assignCommand(t.id, task, area, &assignmentId);
     m_followTruck = t.id;
     m_followAssignment = assignmentId;
     m_followText.clear();
     QPointer<DispatchPanel> self(this);
-    m_gate->command(QStringLiteral("assign"), args, QStringLiteral("gui"),
-                    [self, what](const CommandResult& r) {
-                        if (self)
-                            self->showResult(tr("Assign %1").arg(what), r);
-                    });
+    m_gate->command(assign, QStringLiteral("gui"), [self, what](const CommandResult& r) {
+        if (self)
+            self->showResult(tr("Assign %1").arg(what), r);
+    });
 }
 
 void DispatchPanel::resetCurrent() {
@@ -591,19 +590,18 @@ void DispatchPanel::resetCurrent() {
     m_followTruck.clear();
     QPointer<DispatchPanel> self(this);
     const QString what = t.name;
-    m_gate->command(QStringLiteral("reset_assignment"), QJsonObject{{QStringLiteral("id"), t.id}},
-                    QStringLiteral("gui"), [self, what](const CommandResult& r) {
-                        if (self)
-                            self->showResult(tr("Reset %1").arg(what), r);
-                    });
+    m_gate->command(ResetAssignment{t.id}, QStringLiteral("gui"), [self, what](const CommandResult& r) {
+        if (self)
+            self->showResult(tr("Reset %1").arg(what), r);
+    });
 }
 
 void DispatchPanel::showResult(const QString& what, const CommandResult& r) {
     QStringList parts;
-    for (const CommandTarget& t : r.targets) {
-        const int row = m_model->rowOf(t.id);
-        const QString name = row >= 0 ? m_model->truckAt(row).name : t.id;
-        parts << (t.sent ? tr("%1: sent").arg(name) : tr("%1: NOT sent — %2").arg(name, t.reason));
+    for (const TargetOutcome& t : r.targets) {
+        const int row = m_model->rowOf(targetId(t));
+        const QString name = row >= 0 ? m_model->truckAt(row).name : targetId(t);
+        parts << (t.sent ? tr("%1: sent").arg(name) : tr("%1: NOT sent — %2").arg(name, reasonText(t)));
     }
     if (parts.isEmpty())
         parts << (r.ok ? r.message : tr("NOT sent — %1").arg(r.message));

@@ -43,9 +43,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
     m_releaseAll->setEnabled(me.mayControl);
-    connect(m_releaseAll, &QPushButton::clicked, this, [this] {
-        send(QStringLiteral("release_all"), {{QStringLiteral("protocol"), QStringLiteral("jaus")}});
-    });
+    connect(m_releaseAll, &QPushButton::clicked, this, [this] { send(ReleaseAll{}); });
     top->addWidget(m_releaseAll);
 
     m_table->setModel(m_model);
@@ -195,13 +193,10 @@ void JausControlPanel::installRowButtons(int first, int last) {
         });
         connect(control, &QPushButton::clicked, this, [this, sub] {
             selectSubsystem(sub);
-            send(QStringLiteral("request_control"),
-                 {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
+            send(RequestControl{JausVehicleBridge::machineId(sub)});
         });
-        connect(release, &QPushButton::clicked, this, [this, sub] {
-            send(QStringLiteral("release_control"),
-                 {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}});
-        });
+        connect(release, &QPushButton::clicked, this,
+                [this, sub] { send(ReleaseControl{JausVehicleBridge::machineId(sub)}); });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
         // Index widgets do not take part in ResizeToContents: size the column for the buttons.
         m_table->horizontalHeader()->setSectionResizeMode(JausSubsystemModel::Actions, QHeaderView::Fixed);
@@ -243,10 +238,10 @@ void JausControlPanel::refreshButtons() {
     }
 }
 
-void JausControlPanel::send(const QString& name, const QJsonObject& args) {
+void JausControlPanel::send(const OperatorCommand& command) {
     // Through the command gate: audited, and its result (targets sent or not) lands in the event log.
     if (m_gate)
-        m_gate->command(name, args, QStringLiteral("gui"));
+        m_gate->command(command, QStringLiteral("gui"));
 }
 
 } // namespace ocu

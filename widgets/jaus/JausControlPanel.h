@@ -2,6 +2,8 @@
 // Access-control panel: one row per discovered subsystem with monitor / control / release,
 // who controls it, the access state in words and the row colours of the FKIE IOP panels; below it the
 // details of the selected vehicle.
+#include "models/commands/OperatorCommand.h"
+
 #include <QJsonObject>
 #include <QPointer>
 #include <QWidget>
@@ -44,7 +46,7 @@ private:
     void selectSubsystem(std::uint16_t subsystem);
     void showMachineDetails(const QString& id);
 
-    void send(const QString& name, const QJsonObject& args);
+    void send(const OperatorCommand& command);
     JausVehicleBridge* m_bridge;
     QPointer<CommandGate> m_gate;
     FleetSelection* m_selection;

@@ -267,9 +267,7 @@ TeleopPanel::~TeleopPanel() {
     if (!m_subsystem || m_session == Session::Closed)
         return;
     if (m_gate) // no handler: this panel is going away
-        m_gate->command(QStringLiteral("drive_stop"),
-                        {{QStringLiteral("id"), JausVehicleBridge::machineId(m_subsystem)},
-                         {QStringLiteral("reason"), tr("teleop panel closed")}},
+        m_gate->command(DriveStop{JausVehicleBridge::machineId(m_subsystem), tr("teleop panel closed")},
                         QStringLiteral("teleop"));
     else
         m_bridge->stopDriving(m_subsystem);
@@ -344,9 +342,7 @@ void TeleopPanel::startSession() {
     m_session = Session::Opening;
     const quint16 sub = m_subsystem;
     QPointer<TeleopPanel> self(this);
-    m_gate->command(QStringLiteral("drive_start"),
-                    {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)},
-                     {QStringLiteral("reason"), tr("teleop input")}},
+    m_gate->command(DriveStart{JausVehicleBridge::machineId(sub), tr("teleop input")},
                     QStringLiteral("teleop"), [self, sub](const CommandResult& r) {
                         if (!self || self->m_subsystem != sub || self->m_session != Session::Opening)
                             return; // ended (and closed through the gate) before the start's result came
@@ -373,14 +369,12 @@ void TeleopPanel::endSession(const QString& reason) {
     }
     QPointer<TeleopPanel> self(this);
     const quint16 sub = m_subsystem;
-    m_gate->command(
-        QStringLiteral("drive_stop"),
-        {{QStringLiteral("id"), JausVehicleBridge::machineId(sub)}, {QStringLiteral("reason"), reason}},
-        QStringLiteral("teleop"), [self, sub](const CommandResult& r) {
-            if (self && !r.ok && self->m_subsystem == sub)
-                self->showDriveProblem(tr("Drive session end: zero commands NOT sent: %1")
-                                           .arg(r.notSent().join(QStringLiteral("; "))));
-        });
+    m_gate->command(DriveStop{JausVehicleBridge::machineId(sub), reason}, QStringLiteral("teleop"),
+                    [self, sub](const CommandResult& r) {
+                        if (self && !r.ok && self->m_subsystem == sub)
+                            self->showDriveProblem(tr("Drive session end: zero commands NOT sent: %1")
+                                                       .arg(r.notSent().join(QStringLiteral("; "))));
+                    });
 }
 
 bool TeleopPanel::velocityMode() const {

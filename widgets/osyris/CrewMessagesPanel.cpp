@@ -111,26 +111,20 @@ void CrewMessagesPanel::send() {
         return;
     const QString to = m_to->currentData().toString();
     const QString toName = m_to->currentText();
-    QJsonObject args{{QStringLiteral("text"), text}};
-    if (to.isEmpty())
-        args.insert(QStringLiteral("protocol"), protocolName());
-    else
-        args.insert(QStringLiteral("id"), to);
     const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss"));
     auto* item = new QListWidgetItem(tr("%1  → %2: %3 (sending…)").arg(stamp, toName, text), m_history);
     m_history->scrollToBottom();
     m_entry->clear();
     QPointer<QListWidget> list = m_history;
-    m_gate->command(QStringLiteral("send_text"), args, QStringLiteral("gui"),
-                    [list, item, stamp, toName, text](const CommandResult& r) {
-                        if (!list)
-                            return;
-                        // What went on the wire, per target (the gate's truthful result).
-                        item->setText(
-                            r.ok ? tr("%1  → %2: %3 (sent)").arg(stamp, toName, text)
-                                 : tr("%1  → %2: %3 (NOT sent: %4)").arg(stamp, toName, text, r.message));
-                        item->setToolTip(r.message);
-                    });
+    m_gate->command(
+        SendText{to, text}, QStringLiteral("gui"), [list, item, stamp, toName, text](const CommandResult& r) {
+            if (!list)
+                return;
+            // What went on the wire, per target (the gate's truthful result).
+            item->setText(r.ok ? tr("%1  → %2: %3 (sent)").arg(stamp, toName, text)
+                               : tr("%1  → %2: %3 (NOT sent: %4)").arg(stamp, toName, text, r.message));
+            item->setToolTip(r.message);
+        });
 }
 
 QStringList CrewMessagesPanel::history() const {

@@ -76,9 +76,9 @@ private slots:
                         return;
                     for (const auto& t : r.targets)
                         if (origin == QLatin1String("auto-dispatch"))
-                            autoAssigns[t.id] += 1;
+                            autoAssigns[targetId(t)] += 1;
                         else
-                            otherAssigns << t.id;
+                            otherAssigns << targetId(t);
                 });
         QVERIFY(bridge.start().isEmpty());
 

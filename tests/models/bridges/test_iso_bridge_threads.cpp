@@ -250,12 +250,10 @@ private slots:
             ocu::testing::bridgeResult([&](auto d) { bridge.stopMachine(idOf(kMachineA), d); }),
             ocu::testing::bridgeResult([&](auto d) { bridge.clearStop(idOf(kMachineA), d); }),
             ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(QStringLiteral("all_stop_apply"),
-                               {{QStringLiteral("link"), QStringLiteral("ahs")}}, d);
+                bridge.command(AllStopApply{QStringLiteral("ahs"), {}}, d);
             }),
             ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(QStringLiteral("fetch_map"), {{QStringLiteral("link"), QStringLiteral("ahs")}},
-                               d);
+                bridge.command(FetchMap{QStringLiteral("ahs"), {}}, d);
             })};
         for (const CommandResult& r : refused) {
             QVERIFY2(!r.ok, qPrintable(r.message));

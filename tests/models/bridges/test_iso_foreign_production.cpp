@@ -166,11 +166,13 @@ private slots:
                                                              {QStringLiteral("destination"), 4201},
                                                              {QStringLiteral("assignment_id"),
                                                               QString::fromLatin1(P::loadAssignment)}}}}};
-        const CommandResult r = testing::gateResult(
-            [&](auto h) { c.gate.command(QStringLiteral("assign"), args, QStringLiteral("test"), h); });
+        const CommandResult r = testing::gateResult([&](auto h) {
+            c.gate.command(*parseOperatorCommand(QStringLiteral("assign"), args).command,
+                           QStringLiteral("test"), h);
+        });
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(r.targets.size(), 1);
-        QCOMPARE(r.targets[0].id, kTruck);
+        QCOMPARE(targetId(r.targets[0]), kTruck);
         const std::string frame = c.peer.waitFor("HaulTruckAssignmentRequestV2");
         QVERIFY(!frame.empty());
         // Row 21: from way 2001 the shovel is the next way: no way in between, so no RouteV1 (optional).
@@ -194,10 +196,8 @@ private slots:
         QCOMPARE(row.lastResponseDetail, QStringLiteral("Pit 3 Bench 480 closed by AHS"));
 
         // Row 23: the reset.
-        const CommandResult reset = testing::gateResult([&](auto h) {
-            c.gate.command(QStringLiteral("reset_assignment"), QJsonObject{{QStringLiteral("id"), kTruck}},
-                           QStringLiteral("test"), h);
-        });
+        const CommandResult reset = testing::gateResult(
+            [&](auto h) { c.gate.command(ResetAssignment{kTruck}, QStringLiteral("test"), h); });
         QVERIFY2(reset.ok, qPrintable(reset.message));
         const std::string rf = c.peer.waitFor("HaulTruckAssignmentResetV1");
         QVERIFY(!rf.empty());

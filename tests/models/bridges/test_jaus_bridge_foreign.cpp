@@ -77,9 +77,7 @@ private slots:
         };
 
         // request_control: confirmed by the vehicle's ConfirmControl (it answers no QueryControl).
-        QVERIFY(gateResult([&](auto h) {
-                    gate.command(QStringLiteral("request_control"), {{"id", id}}, QStringLiteral("test"), h);
-                }).ok);
+        QVERIFY(gateResult([&](auto h) { gate.command(RequestControl{id}, QStringLiteral("test"), h); }).ok);
         QTRY_VERIFY_WITH_TIMEOUT(!confirmedText("request_control").isEmpty(), 10000);
         QVERIFY2(confirmedText("request_control").contains(QLatin1String("confirms control")) &&
                      confirmedText("request_control").contains(QLatin1String("ms after the command")),
@@ -98,9 +96,7 @@ private slots:
         QVERIFY(vehicle.status() != 5); // out of EMERGENCY (STANDBY after ClearEmergency, JSS Management)
 
         // release_control: confirmed by the vehicle's answer.
-        QVERIFY(gateResult([&](auto h) {
-                    gate.command(QStringLiteral("release_control"), {{"id", id}}, QStringLiteral("test"), h);
-                }).ok);
+        QVERIFY(gateResult([&](auto h) { gate.command(ReleaseControl{id}, QStringLiteral("test"), h); }).ok);
         QTRY_VERIFY_WITH_TIMEOUT(!confirmedText("release_control").isEmpty(), 10000);
         QCOMPARE(unconfirmed.count(), 0);
         QVERIFY(gate.awaitingCommandConfirmation().isEmpty());
@@ -108,9 +104,8 @@ private slots:
         // A vehicle that hears nothing any more: the request leaves (sent), no answer comes, and the
         // confirmation time raises a Timeout alarm naming it.
         vehicle.setOffline(true);
-        const CommandResult r = gateResult([&](auto h) {
-            gate.command(QStringLiteral("request_control"), {{"id", id}}, QStringLiteral("test"), h);
-        });
+        const CommandResult r =
+            gateResult([&](auto h) { gate.command(RequestControl{id}, QStringLiteral("test"), h); });
         QVERIFY2(r.ok, qPrintable(r.message));
         QCOMPARE(gate.awaitingCommandConfirmation(), QStringList{QStringLiteral("request_control jaus:126")});
         QTRY_COMPARE_WITH_TIMEOUT(unconfirmed.count(), 1, 20000);
@@ -138,12 +133,14 @@ private slots:
                                  20000);
         auto cmd = [&](const char* name, QJsonObject args) {
             args.insert(QStringLiteral("id"), id);
-            return gateResult(
-                [&](auto h) { gate.command(QString::fromLatin1(name), args, QStringLiteral("test"), h); });
+            const ParsedCommand parsed = parseOperatorCommand(QString::fromLatin1(name), args);
+            if (!parsed.command)
+                return CommandResult::failure(parsed.error);
+            return gateResult([&](auto h) { gate.command(*parsed.command, QStringLiteral("test"), h); });
         };
         CommandResult r = cmd("drive", {{"linear", 0.5}, {"duration", 1.0}});
         QVERIFY(!r.ok);
-        QVERIFY2(r.targets.value(0).reason.contains(QLatin1String("does not control")),
+        QVERIFY2(reasonText(r.targets.value(0)).contains(QLatin1String("does not control")),
                  qPrintable(r.message));
         QCOMPARE(vehicle.received(0x0415), 0); // SetVelocityCommand: nothing went out
 
@@ -157,13 +154,14 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(vehicle.received(0x0415) >= 5, 10000); // streamed at the drive rate
         r = cmd("drive_stop", {{"reason", "operator released the stick"}});
         QVERIFY2(r.ok, qPrintable(r.message));
-        QCOMPARE(r.targets.value(0).note, QStringLiteral("session ended: operator released the stick"));
+        QCOMPARE(noteText(r.targets.value(0)), QStringLiteral("session ended: operator released the stick"));
 
         bridge.stop();
         for (const char* name : {"drive_start", "drive", "drive_stop"}) {
             r = cmd(name, {{"linear", 0.1}});
             QVERIFY(!r.ok);
-            QVERIFY2(r.targets.value(0).reason.contains(QLatin1String("not running")), qPrintable(r.message));
+            QVERIFY2(reasonText(r.targets.value(0)).contains(QLatin1String("not running")),
+                     qPrintable(r.message));
         }
     }
 
@@ -183,8 +181,9 @@ private slots:
         CommandResult r = gateResult([&](auto h) { gate.stopAll(QStringLiteral("test"), h); });
         QCOMPARE(r.targets.size(), 2);
         QVERIFY2(r.ok, qPrintable(r.message));
-        QCOMPARE(r.targets[1].id, QStringLiteral("jaus:127"));
-        QVERIFY2(r.targets[1].note.contains(QLatin1String("never heard")), qPrintable(r.targets[1].note));
+        QCOMPARE(targetId(r.targets[1]), QStringLiteral("jaus:127"));
+        QVERIFY2(noteText(r.targets[1]).contains(QLatin1String("never heard")),
+                 qPrintable(noteText(r.targets[1])));
         QTRY_VERIFY_WITH_TIMEOUT(vehicle.status() == 5, 10000); // EMERGENCY
 
         // Stopped: nothing can go out, and the result names each vehicle with the reason.
@@ -194,11 +193,11 @@ private slots:
         r = gateResult([&](auto h) { gate.stopAll(QStringLiteral("test"), h); });
         QVERIFY(!r.ok);
         QCOMPARE(r.targets.size(), 2);
-        QCOMPARE(r.targets[0].id, QStringLiteral("jaus:126"));
-        QCOMPARE(r.targets[1].id, QStringLiteral("jaus:127"));
-        for (const CommandTarget& t : r.targets) {
+        QCOMPARE(targetId(r.targets[0]), QStringLiteral("jaus:126"));
+        QCOMPARE(targetId(r.targets[1]), QStringLiteral("jaus:127"));
+        for (const TargetOutcome& t : r.targets) {
             QVERIFY(!t.sent);
-            QVERIFY2(t.reason.contains(QLatin1String("not running")), qPrintable(t.reason));
+            QVERIFY2(reasonText(t).contains(QLatin1String("not running")), qPrintable(reasonText(t)));
         }
     }
 };

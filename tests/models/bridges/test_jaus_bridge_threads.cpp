@@ -214,9 +214,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(vehicle().link == JausLink::Up && vehicle().mobilityComponent.subsystem != 0,
                                  20000);
         // Control first, so that the refusals below are about the link and not about access.
-        QVERIFY(ocu::testing::bridgeResult([&](auto d) {
-                    bridge.command(QStringLiteral("request_control"), {{QStringLiteral("id"), kVehicle}}, d);
-                }).ok);
+        QVERIFY(ocu::testing::bridgeResult([&](auto d) { bridge.command(RequestControl{kVehicle}, d); }).ok);
         QTRY_VERIFY_WITH_TIMEOUT(vehicle().controlledByUs, 10000);
 
         // The vehicle falls silent (it still hears us): after 1.5 s its link is down.
@@ -225,15 +223,15 @@ private slots:
         const QList<CommandResult> refused{
             ocu::testing::bridgeResult([&](auto d) { bridge.stopMachine(kVehicle, d); }),
             ocu::testing::bridgeResult([&](auto d) { bridge.clearStop(kVehicle, d); }),
+            ocu::testing::bridgeResult([&](auto d) { bridge.command(RequestControl{kVehicle}, d); }),
             ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(QStringLiteral("request_control"), {{QStringLiteral("id"), kVehicle}}, d);
+                bridge.command(Management{kVehicle, ManagementAction::Resume}, d);
             }),
             ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(QStringLiteral("resume"), {{QStringLiteral("id"), kVehicle}}, d);
-            }),
-            ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(QStringLiteral("drive"),
-                               {{QStringLiteral("id"), kVehicle}, {QStringLiteral("linear"), 0.5}}, d);
+                TimedDrive drive;
+                drive.id = kVehicle;
+                drive.linear = 0.5;
+                bridge.command(drive, d);
             }),
             bridge.drive(126, JausDrive{JausDrive::Mode::Velocity, 0.5, 0, 0})};
         for (const CommandResult& r : refused) {
@@ -266,7 +264,7 @@ private slots:
         const int before = received.count(jaus::msg::SetEmergency);
         const CommandResult all = ocu::testing::bridgeResult([&](auto d) { bridge.stopAll(d); });
         QCOMPARE(all.targets.size(), 1);
-        QCOMPARE(all.targets[0].id, QStringLiteral("jaus:126"));
+        QCOMPARE(targetId(all.targets[0]), QStringLiteral("jaus:126"));
         QVERIFY2(all.targets[0].sent, qPrintable(all.message));
         QTRY_VERIFY_WITH_TIMEOUT(received.count(jaus::msg::SetEmergency) > before, 10000);
         bridge.stop();

@@ -77,10 +77,8 @@ private slots:
         QVERIFY2(refused.message.contains(QStringLiteral("does not control")), qPrintable(refused.message));
 
         // With control: the demands go out (refreshed like a held key) and the unit turns.
-        const CommandResult rc = testing::bridgeResult([&](OutcomeCallback d) {
-            bridge.command(QStringLiteral("request_control"),
-                           {{QStringLiteral("id"), QStringLiteral("jaus:126")}}, d);
-        });
+        const CommandResult rc = testing::bridgeResult(
+            [&](OutcomeCallback d) { bridge.command(RequestControl{QStringLiteral("jaus:126")}, d); });
         QVERIFY2(rc.ok, qPrintable(rc.message));
         QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(126) && bridge.subsystem(126)->controlledByUs, 20000);
         QTRY_VERIFY_WITH_TIMEOUT((bridge.panTilt(126, 1000, -0.6, 0.2).ok && ugv->panTilt().pan < -0.3),

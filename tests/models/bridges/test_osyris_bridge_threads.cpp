@@ -143,12 +143,9 @@ private slots:
             ocu::testing::bridgeResult([&](auto d) { bridge.stopAll(d); }),
             ocu::testing::bridgeResult([&](auto d) { bridge.stopMachine(QStringLiteral("osyris:1"), d); }),
             ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(QStringLiteral("send_text"),
-                               {{QStringLiteral("text"), QStringLiteral("hello")}}, d);
+                bridge.command(SendText{{}, QStringLiteral("hello")}, d);
             }),
-            ocu::testing::bridgeResult([&](auto d) {
-                bridge.command(QStringLiteral("ping"), {{QStringLiteral("idx"), 1}}, d);
-            })};
+            ocu::testing::bridgeResult([&](auto d) { bridge.command(PingStation{1}, d); })};
         for (const CommandResult& r : refused) {
             QVERIFY2(!r.ok, qPrintable(r.message));
             QVERIFY2(r.message.contains(QStringLiteral("no OSYRIS station heard")) &&
@@ -176,7 +173,7 @@ private slots:
         const CommandResult stop = ocu::testing::bridgeResult([&](auto d) { bridge.stopAll(d); });
         QVERIFY2(stop.ok, qPrintable(stop.message));
         QCOMPARE(stop.targets.size(), 1);
-        QCOMPARE(stop.targets[0].id,
+        QCOMPARE(targetId(stop.targets[0]),
                  QStringLiteral("osyris group %1:%2").arg(QString::fromStdString(cfg.group)).arg(cfg.port));
         QTRY_COMPARE_WITH_TIMEOUT(texts.count(), 1, 10000);
         bridge.stop();

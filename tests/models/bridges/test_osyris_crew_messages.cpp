@@ -134,14 +134,11 @@ private slots:
 
         // To one machine: only its driver gets it and answers; the result names that machine.
         const CommandResult one = testing::gateResult([&](auto done) {
-            gate.command(
-                QStringLiteral("send_text"),
-                {{QStringLiteral("id"), r2}, {QStringLiteral("text"), QStringLiteral("lift 2 next")}},
-                QStringLiteral("test"), done);
+            gate.command(SendText{r2, QStringLiteral("lift 2 next")}, QStringLiteral("test"), done);
         });
         QVERIFY2(one.ok, qPrintable(one.message));
         QCOMPARE(one.targets.size(), 1);
-        QCOMPARE(one.targets[0].id, r2);
+        QCOMPARE(targetId(one.targets[0]), r2);
         QTRY_VERIFY_WITH_TIMEOUT(has(r2, QStringLiteral("Roller 2: OK, lift 2 next")), 30000);
         QCOMPARE(received.last().fromName, QStringLiteral("Roller 2"));
         QTest::qWait(500);
@@ -153,23 +150,17 @@ private slots:
 
         // To all: every driver answers.
         const CommandResult all = testing::gateResult([&](auto done) {
-            gate.command(QStringLiteral("send_text"),
-                         {{QStringLiteral("protocol"), QStringLiteral("osyris")},
-                          {QStringLiteral("text"), QStringLiteral("break at 12:00")}},
-                         QStringLiteral("test"), done);
+            gate.command(SendText{{}, QStringLiteral("break at 12:00")}, QStringLiteral("test"), done);
         });
         QVERIFY2(all.ok, qPrintable(all.message));
-        QVERIFY(all.targets[0].id.startsWith(QStringLiteral("osyris group")));
+        QVERIFY(targetId(all.targets[0]).startsWith(QStringLiteral("osyris group")));
         QTRY_VERIFY_WITH_TIMEOUT(has(r1, QStringLiteral("Roller 1: OK, break at 12:00")) &&
                                      has(r2, QStringLiteral("Roller 2: OK, break at 12:00")),
                                  30000);
 
         // Refused with the reason, nothing sent: too long, not an OSYRIS station.
         const CommandResult tooLong = testing::gateResult([&](auto done) {
-            gate.command(
-                QStringLiteral("send_text"),
-                {{QStringLiteral("id"), r1}, {QStringLiteral("text"), QString(80, QLatin1Char('x'))}},
-                QStringLiteral("test"), done);
+            gate.command(SendText{r1, QString(80, QLatin1Char('x'))}, QStringLiteral("test"), done);
         });
         QVERIFY(!tooLong.ok);
         QVERIFY2(tooLong.message.contains(QStringLiteral("79 bytes")), qPrintable(tooLong.message));
@@ -180,10 +171,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(has(QStringLiteral("osyris:77"), QStringLiteral("asphalt truck 4 arriving")),
                                  30000);
         const CommandResult toPeer = testing::gateResult([&](auto done) {
-            gate.command(QStringLiteral("send_text"),
-                         {{QStringLiteral("protocol"), QStringLiteral("osyris")},
-                          {QStringLiteral("text"), QStringLiteral("truck 4 to lane 2")}},
-                         QStringLiteral("test"), done);
+            gate.command(SendText{{}, QStringLiteral("truck 4 to lane 2")}, QStringLiteral("test"), done);
         });
         QVERIFY2(toPeer.ok, qPrintable(toPeer.message));
         QTRY_VERIFY_WITH_TIMEOUT(

@@ -504,9 +504,8 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(win.control->model()->rowCount(), 2, 10000);
         QVERIFY(win.control->controlButton(126));
         QVERIFY(!win.control->controlButton(126)->isEnabled());
-        const auto r = ocu::testing::bridgeResult([&](auto d) {
-            s.bridge->command("request_control", {{"id", "jaus:126"}}, d);
-        });
+        const auto r = ocu::testing::bridgeResult(
+            [&](auto d) { s.bridge->command(RequestControl{QStringLiteral("jaus:126")}, d); });
         QVERIFY(!r.ok);
         QVERIFY(r.message.contains("MONITOR"));
         QTest::qWait(500);

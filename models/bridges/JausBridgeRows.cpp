@@ -1,0 +1,260 @@
+#include "models/bridges/JausBridgeRows.h"
+#include "models/bridges/JausBridge.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ocu {
+
+using namespace jaus;
+
+namespace jausrow {
+
+JausAddress toAddress(const JausId& id) {
+    return {id.subsystem, id.node, id.component};
+}
+
+JausAccess toAccess(AccessState a) {
+    switch (a) {
+    case AccessState::NotAvailable:
+        return JausAccess::NotAvailable;
+    case AccessState::NotControlled:
+        return JausAccess::NotControlled;
+    case AccessState::Monitoring:
+        return JausAccess::Monitoring;
+    case AccessState::ControlAccepted:
+        return JausAccess::ControlAccepted;
+    case AccessState::ControlReleased:
+        return JausAccess::ControlReleased;
+    case AccessState::Timeout:
+        return JausAccess::Timeout;
+    case AccessState::InsufficientAuthority:
+        return JausAccess::InsufficientAuthority;
+    case AccessState::Preempted:
+        return JausAccess::Preempted;
+    }
+    return JausAccess::NotAvailable;
+}
+
+JausManagement toManagement(ManagementState m) {
+    switch (m) {
+    case ManagementState::Init:
+        return JausManagement::Init;
+    case ManagementState::Ready:
+        return JausManagement::Ready;
+    case ManagementState::Standby:
+        return JausManagement::Standby;
+    case ManagementState::Shutdown:
+        return JausManagement::Shutdown;
+    case ManagementState::Failure:
+        return JausManagement::Failure;
+    case ManagementState::Emergency:
+        return JausManagement::Emergency;
+    }
+    return JausManagement::Failure;
+}
+
+namespace {
+template <class T, class F>
+auto mapOptional(const std::optional<T>& v, F&& f) -> std::optional<decltype(f(*v))> {
+    if (!v)
+        return std::nullopt;
+    return f(*v);
+}
+} // namespace
+
+// The panels' view of a subsystem (GUI thread, only for the snapshots the coalescer delivers).
+JausVehicle toVehicle(const SubsystemSnapshot& s) {
+    JausVehicle v;
+    v.subsystem = s.subsystem;
+    v.callSign = QString::fromStdString(s.callSign);
+    v.endpoint = QString::fromStdString(s.endpoint);
+    v.link = s.link == jaus::LinkState::Up         ? JausLink::Up
+             : s.link == jaus::LinkState::Degraded ? JausLink::Degraded
+                                                   : JausLink::Down;
+    v.linkText = QString::fromUtf8(jaus::toString(s.link));
+    v.lastMessageUnixMs = s.lastMessageUnixMs;
+    v.access = toAccess(s.access);
+    v.controller = toAddress(s.controller);
+    v.controllerAuthority = s.controllerAuthority;
+    v.controlledByUs = s.controlledByUs;
+    v.accessTimeoutS = s.accessTimeoutS;
+    if (s.management) {
+        v.management = toManagement(*s.management);
+        v.managementText = QString::fromUtf8(jaus::toString(*s.management));
+    }
+    v.emergency = s.emergency;
+    v.driving = s.driving;
+    v.globalPose = mapOptional(s.globalPose, [](const GlobalPose& p) {
+        return JausGlobalPose{p.lat, p.lon, p.alt, p.yaw};
+    });
+    v.localPose = mapOptional(s.localPose, [](const LocalPose& p) { return JausLocalPose{p.x, p.y, p.yaw}; });
+    v.velocity = mapOptional(s.velocity, [](const VelocityState& p) {
+        return JausVelocity{p.vx, p.vy, p.yawRate};
+    });
+    v.platform = mapOptional(s.platform, [](const PlatformSpecifications& p) {
+        return JausPlatform{QString::fromStdString(p.name),
+                            p.steeringType,
+                            p.front,
+                            p.back,
+                            p.left,
+                            p.right,
+                            p.top,
+                            p.bottom,
+                            p.maxForwardSpeed,
+                            p.maxReverseSpeed,
+                            p.maxRotationalSpeed};
+    });
+    v.health = mapOptional(s.health, [](const HealthSummary& h) {
+        JausHealth out;
+        out.severity = h.severity;
+        for (auto [node, severity] : h.nodes)
+            out.nodes.push_back({node, severity});
+        return out;
+    });
+    v.mobilityComponent = toAddress(s.mobilityComponent);
+    for (const NodeInfo& n : s.services) {
+        JausNodeServices node{n.node, {}};
+        for (const ComponentInfo& c : n.components) {
+            JausComponentServices comp{c.component, {}};
+            for (const ServiceRecord& r : c.services)
+                comp.services.push_back({QString::fromStdString(r.uri), r.major, r.minor});
+            node.components.push_back(comp);
+        }
+        v.services.push_back(node);
+    }
+    for (const jaus::VideoEndpoint& e : s.videoEndpoints)
+        v.videoEndpoints.push_back({e.resourceId, e.sensorId, QString::fromStdString(e.url),
+                                    QString::fromStdString(e.name), e.panTilt, e.configured});
+    return v;
+}
+
+JausVehicleEvent toVehicleEvent(const JausEvent& e) {
+    JausVehicleEvent v;
+    v.severity = e.severity == Severity::Error     ? JausEventSeverity::Error
+                 : e.severity == Severity::Warning ? JausEventSeverity::Warning
+                                                   : JausEventSeverity::Info;
+    v.kindText = QString::fromUtf8(jaus::toString(e.kind));
+    v.subsystem = e.subsystem;
+    v.text = QString::fromStdString(e.text);
+    return v;
+}
+
+} // namespace jausrow
+
+MachineState JausBridge::toMachine(const SubsystemSnapshot& s) const {
+    MachineState m;
+    m.id = machineId(s.subsystem);
+    m.protocol = Protocol::Jaus;
+    m.name =
+        s.callSign.empty() ? QStringLiteral("UGV %1").arg(s.subsystem) : QString::fromStdString(s.callSign);
+    m.type = QStringLiteral("UGV");
+    m.link = s.link == jaus::LinkState::Up         ? ocu::LinkState::Up
+             : s.link == jaus::LinkState::Degraded ? ocu::LinkState::Degraded
+                                                   : ocu::LinkState::Down;
+    m.lastDataMs = s.lastMessageUnixMs;
+    m.lastMessageMs = s.lastMessageUnixMs;
+    if (s.globalPose && s.globalPose->lat && s.globalPose->lon) {
+        const GeoPoint g{*s.globalPose->lat, *s.globalPose->lon,
+                         s.globalPose->alt.value_or(m_frame.origin().alt)};
+        const EnuPoint p = m_frame.toLocal(g);
+        m.hasPosition = true;
+        m.e = p.e;
+        m.n = p.n;
+        m.u = p.u;
+        m.lat = g.lat;
+        m.lon = g.lon;
+        if (s.globalPose->yaw) // JAUS yaw: from north, positive clockwise (NED), radians
+            m.headingDeg = std::fmod(*s.globalPose->yaw * 180.0 / M_PI + 360.0, 360.0);
+    } else if (s.localPose && s.localPose->x && s.localPose->y) {
+        // Local pose is in the vehicle's NED-like frame: x north, y east.
+        const EnuPoint p{*s.localPose->y, *s.localPose->x, 0};
+        const GeoPoint g = m_frame.toGeodetic(p);
+        m.hasPosition = true;
+        m.e = p.e;
+        m.n = p.n;
+        m.lat = g.lat;
+        m.lon = g.lon;
+        if (s.localPose->yaw)
+            m.headingDeg = std::fmod(*s.localPose->yaw * 180.0 / M_PI + 360.0, 360.0);
+    }
+    if (s.velocity && s.velocity->vx)
+        m.speed = std::hypot(*s.velocity->vx, s.velocity->vy.value_or(0));
+    if (s.platform) {
+        const auto& p = *s.platform;
+        if (p.front && p.back)
+            m.length = *p.front + *p.back;
+        if (p.left && p.right)
+            m.width = *p.left + *p.right;
+        if (p.top)
+            m.height = *p.top + p.bottom.value_or(0);
+    }
+    if (m.length <= 0)
+        m.length = 1.2;
+    if (m.width <= 0)
+        m.width = 0.8;
+    if (s.management) {
+        m.modeText = QString::fromUtf8(jaus::toString(*s.management));
+        switch (*s.management) {
+        case ManagementState::Ready:
+            m.mode = s.controlledByUs || s.controller.subsystem ? ModeCategory::Remote : ModeCategory::Idle;
+            break;
+        case ManagementState::Standby:
+        case ManagementState::Init:
+            m.mode = ModeCategory::Idle;
+            break;
+        case ManagementState::Shutdown:
+            m.mode = ModeCategory::Shutdown;
+            break;
+        case ManagementState::Failure:
+            m.mode = ModeCategory::Fault;
+            break;
+        case ManagementState::Emergency:
+            m.mode = ModeCategory::Stopped;
+            break;
+        }
+        m.stop = s.emergency ? StopState::Stopped : StopState::None;
+    } else {
+        m.stop = s.emergency ? StopState::Stopped : StopState::Unknown;
+    }
+    if (s.emergency)
+        m.stopText = tr("emergency");
+    if (s.controlledByUs) {
+        m.control = ControlState::ControlledByMe;
+        m.controller = tr("this console (%1)").arg(s.controllerAuthority);
+    } else if (s.controller.subsystem != 0) {
+        m.control = ControlState::ControlledByOther;
+        m.controller = QStringLiteral("%1.%2.%3 (%4)")
+                           .arg(s.controller.subsystem)
+                           .arg(s.controller.node)
+                           .arg(s.controller.component)
+                           .arg(s.controllerAuthority);
+    } else if (s.access == AccessState::InsufficientAuthority) {
+        m.control = ControlState::Denied;
+    } else {
+        m.control = ControlState::Monitoring;
+    }
+    if (s.health) {
+        switch (s.health->severity) {
+        case 0:
+        case 1:
+            m.health = HealthLevel::Ok;
+            break;
+        case 2:
+            m.health = HealthLevel::Warning;
+            break;
+        default:
+            m.health = HealthLevel::Fault;
+            break;
+        }
+        static const char* names[] = {"none", "info", "warning", "error", "failure"};
+        m.healthText = QString::fromLatin1(names[std::min<int>(s.health->severity, 4)]);
+    } else if (s.management == ManagementState::Failure) {
+        m.health = HealthLevel::Fault;
+    }
+    return m;
+}
+
+} // namespace ocu

@@ -1,0 +1,15 @@
+#pragma once
+// Pure mapping of the JAUS stack's reports to the Qt side: a subsystem snapshot becomes the panels'
+// JausVehicle and a JAUS event their JausVehicleEvent (JausBridge::toMachine, in JausBridgeRows.cpp, makes
+// the fleet row). No state, no threads: any thread may call them.
+#include "models/jaus/JausVehicleBridge.h"
+
+#include "protocols/jaus/JausTypes.h"
+
+namespace ocu::jausrow {
+
+JausAddress toAddress(const jaus::JausId& id);
+JausVehicle toVehicle(const jaus::SubsystemSnapshot& s);
+JausVehicleEvent toVehicleEvent(const jaus::JausEvent& e);
+
+} // namespace ocu::jausrow

@@ -1,0 +1,399 @@
+#include "models/commands/OperatorCommand.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+
+namespace ocu {
+
+namespace {
+
+QString text(const char* source) {
+    return QCoreApplication::translate("OperatorCommand", source);
+}
+QString
+dispatchText(const char* source) { // the assign arguments' texts, as the dispatch translations name them
+    return QCoreApplication::translate("IsoDispatch", source);
+}
+
+const char* managementName(ManagementAction a) {
+    switch (a) {
+    case ManagementAction::Resume:
+        return "resume";
+    case ManagementAction::Standby:
+        return "standby";
+    case ManagementAction::Shutdown:
+        return "shutdown";
+    case ManagementAction::Reset:
+        return "reset";
+    }
+    return "resume";
+}
+
+QString modeName(TimedDrive::Mode m) {
+    return m == TimedDrive::Mode::Effort ? QStringLiteral("effort") : QStringLiteral("velocity");
+}
+
+// A JSON number that is an integer way/spot id within ±2^53.
+std::optional<qint64> wholeNumber(const QJsonValue& v) {
+    if (!v.isDouble())
+        return std::nullopt;
+    const double d = v.toDouble();
+    if (!std::isfinite(d) || std::floor(d) != d || std::fabs(d) > 9007199254740992.0)
+        return std::nullopt;
+    return static_cast<qint64>(d);
+}
+
+void putIfSet(QJsonObject& o, const char* key, const QString& value) {
+    if (!value.isEmpty())
+        o[QLatin1String(key)] = value;
+}
+
+// Reads the JSON arguments of one command; the first problem wins.
+class Args {
+public:
+    Args(const QString& name, const QJsonObject& args) : m_name(name), m_args(args) {}
+
+    // A string argument; absent = empty. Not a string: a problem.
+    QString string(const char* key) {
+        const QJsonValue v = m_args.value(QLatin1String(key));
+        if (v.isUndefined() || v.isNull())
+            return {};
+        if (!v.isString())
+            fail(text("%1: \"%2\" must be a string").arg(m_name, QLatin1String(key)));
+        return v.toString();
+    }
+    // The machine id every per-machine command needs.
+    QString id() {
+        const QString id = string("id");
+        if (id.isEmpty() && m_error.isEmpty())
+            m_error = QStringLiteral("missing \"id\"");
+        return id;
+    }
+    // A number argument; absent = `otherwise`.
+    double number(const char* key, double otherwise) {
+        const QJsonValue v = m_args.value(QLatin1String(key));
+        if (v.isUndefined() || v.isNull())
+            return otherwise;
+        if (!v.isDouble()) {
+            fail(text("%1: \"%2\" must be a number").arg(m_name, QLatin1String(key)));
+            return otherwise;
+        }
+        return v.toDouble();
+    }
+    void fail(const QString& why) {
+        if (m_error.isEmpty())
+            m_error = why;
+    }
+    // The command, or why not (with the machine it named, when it named one).
+    ParsedCommand done(OperatorCommand command) const {
+        if (m_error.isEmpty())
+            return {std::move(command), {}, {}};
+        return {std::nullopt, m_error, m_args.value(QStringLiteral("id")).toString()};
+    }
+
+private:
+    QString m_name;
+    const QJsonObject& m_args;
+    QString m_error;
+};
+
+ParsedCommand parseDrive(const QString& name, const QJsonObject& json) {
+    Args a(name, json);
+    TimedDrive d;
+    d.id = a.id();
+    const QString mode = a.string("mode");
+    if (mode == QLatin1String("effort"))
+        d.mode = TimedDrive::Mode::Effort;
+    else if (!mode.isEmpty() && mode != QLatin1String("velocity"))
+        a.fail(text("drive: \"mode\" must be \"velocity\" or \"effort\""));
+    d.linear = a.number("linear", 0);
+    d.angular = a.number("angular", 0);
+    d.durationS = a.number("duration", 1.0);
+    return a.done(d);
+}
+
+ParsedCommand parseAssign(const QString& name, const QJsonObject& json) {
+    Args a(name, json);
+    Assign c;
+    c.id = a.id();
+    QString why;
+    if (auto tasks = tasksFromJson(json, &why))
+        c.tasks = *tasks;
+    else
+        a.fail(dispatchText("assign refused: %1; nothing sent").arg(why));
+    return a.done(c);
+}
+
+template <class LinkCommand> ParsedCommand parseLinkCommand(const QString& name, const QJsonObject& json) {
+    Args a(name, json);
+    LinkCommand c;
+    c.link = a.string("link");
+    c.id = a.string("id");
+    return a.done(c);
+}
+
+} // namespace
+
+QString commandName(const OperatorCommand& command) {
+    return std::visit(Overloaded{
+                          [](const StopAll&) { return QStringLiteral("stop_all"); },
+                          [](const StopMachine&) { return QStringLiteral("stop"); },
+                          [](const ClearStop&) { return QStringLiteral("clear_stop"); },
+                          [](const RequestControl&) { return QStringLiteral("request_control"); },
+                          [](const ReleaseControl&) { return QStringLiteral("release_control"); },
+                          [](const ReleaseAll&) { return QStringLiteral("release_all"); },
+                          [](const Management& m) { return QString::fromLatin1(managementName(m.action)); },
+                          [](const DriveStart&) { return QStringLiteral("drive_start"); },
+                          [](const DriveStop&) { return QStringLiteral("drive_stop"); },
+                          [](const TimedDrive&) { return QStringLiteral("drive"); },
+                          [](const AllStopApply&) { return QStringLiteral("all_stop_apply"); },
+                          [](const AllStopRemove&) { return QStringLiteral("all_stop_remove"); },
+                          [](const FetchMap&) { return QStringLiteral("fetch_map"); },
+                          [](const Assign&) { return QStringLiteral("assign"); },
+                          [](const ResetAssignment&) { return QStringLiteral("reset_assignment"); },
+                          [](const SendText&) { return QStringLiteral("send_text"); },
+                          [](const PingStation&) { return QStringLiteral("ping"); },
+                      },
+                      command);
+}
+
+CommandRoute commandRoute(const OperatorCommand& command) {
+    auto machineOr = [](const QString& id, Protocol p) {
+        return id.isEmpty() ? CommandRoute{false, {}, p} : CommandRoute{false, id, std::nullopt};
+    };
+    return std::visit(Overloaded{
+                          [](const StopAll&) {
+                              return CommandRoute{true, {}, std::nullopt};
+                          },
+                          [](const ReleaseAll&) {
+                              return CommandRoute{false, {}, Protocol::Jaus};
+                          },
+                          [&](const AllStopApply& c) { return machineOr(c.id, Protocol::Iso23725); },
+                          [&](const AllStopRemove& c) { return machineOr(c.id, Protocol::Iso23725); },
+                          [&](const FetchMap& c) { return machineOr(c.id, Protocol::Iso23725); },
+                          [&](const SendText& c) { return machineOr(c.id, Protocol::Osyris); },
+                          [](const PingStation&) {
+                              return CommandRoute{false, {}, Protocol::Osyris};
+                          },
+                          [](const auto& c) {
+                              return CommandRoute{false, c.id, std::nullopt};
+                          },
+                      },
+                      command);
+}
+
+QJsonObject toJson(const OperatorCommand& command) {
+    QJsonObject o;
+    o[QStringLiteral("cmd")] = commandName(command);
+    std::visit(Overloaded{
+                   [](const StopAll&) {},
+                   [&](const ClearStop& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       o[QStringLiteral("confirm")] = c.confirm;
+                   },
+                   [&](const ReleaseAll&) { o[QStringLiteral("protocol")] = toText(Protocol::Jaus); },
+                   [&](const DriveStart& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       putIfSet(o, "reason", c.reason);
+                   },
+                   [&](const DriveStop& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       putIfSet(o, "reason", c.reason);
+                   },
+                   [&](const TimedDrive& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       o[QStringLiteral("mode")] = modeName(c.mode);
+                       o[QStringLiteral("linear")] = c.linear;
+                       o[QStringLiteral("angular")] = c.angular;
+                       o[QStringLiteral("duration")] = c.durationS;
+                   },
+                   [&](const AllStopApply& c) {
+                       putIfSet(o, "link", c.link);
+                       putIfSet(o, "id", c.id);
+                   },
+                   [&](const AllStopRemove& c) {
+                       putIfSet(o, "link", c.link);
+                       putIfSet(o, "id", c.id);
+                   },
+                   [&](const FetchMap& c) {
+                       putIfSet(o, "link", c.link);
+                       putIfSet(o, "id", c.id);
+                   },
+                   [&](const Assign& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       o[QStringLiteral("tasks")] = tasksToJson(c.tasks);
+                   },
+                   [&](const SendText& c) {
+                       putIfSet(o, "id", c.id);
+                       if (c.id.isEmpty())
+                           o[QStringLiteral("protocol")] = toText(Protocol::Osyris);
+                       o[QStringLiteral("text")] = c.text;
+                   },
+                   [&](const PingStation& c) { o[QStringLiteral("idx")] = c.idx; },
+                   [&](const auto& c) { o[QStringLiteral("id")] = c.id; }, // machine commands
+               },
+               command);
+    return o;
+}
+
+bool isOperatorCommand(const QString& name) {
+    static const QStringList names{QStringLiteral("stop_all"),        QStringLiteral("stop"),
+                                   QStringLiteral("clear_stop"),      QStringLiteral("request_control"),
+                                   QStringLiteral("release_control"), QStringLiteral("release_all"),
+                                   QStringLiteral("resume"),          QStringLiteral("standby"),
+                                   QStringLiteral("shutdown"),        QStringLiteral("reset"),
+                                   QStringLiteral("drive_start"),     QStringLiteral("drive_stop"),
+                                   QStringLiteral("drive"),           QStringLiteral("all_stop_apply"),
+                                   QStringLiteral("all_stop_remove"), QStringLiteral("fetch_map"),
+                                   QStringLiteral("assign"),          QStringLiteral("reset_assignment"),
+                                   QStringLiteral("send_text"),       QStringLiteral("ping")};
+    return names.contains(name);
+}
+
+ParsedCommand parseOperatorCommand(const QString& name, const QJsonObject& json) {
+    Args a(name, json);
+    if (name == QLatin1String("stop_all"))
+        return a.done(StopAll{});
+    if (name == QLatin1String("stop"))
+        return a.done(StopMachine{a.id()});
+    if (name == QLatin1String("clear_stop")) {
+        ClearStop c{a.id(), false, {}};
+        const QJsonValue confirm = json.value(QStringLiteral("confirm"));
+        if (!confirm.isUndefined() && !confirm.isBool())
+            a.fail(text("clear_stop: \"confirm\" must be true or false"));
+        c.confirm = confirm.toBool(false);
+        return a.done(c);
+    }
+    if (name == QLatin1String("request_control"))
+        return a.done(RequestControl{a.id()});
+    if (name == QLatin1String("release_control"))
+        return a.done(ReleaseControl{a.id()});
+    if (name == QLatin1String("release_all")) {
+        const QString protocol = a.string("protocol");
+        if (!protocol.isEmpty() && protocolFromString(protocol) != Protocol::Jaus)
+            a.fail(text("release_all: only JAUS vehicles are controlled (\"protocol\": \"jaus\")"));
+        return a.done(ReleaseAll{});
+    }
+    for (ManagementAction m : {ManagementAction::Resume, ManagementAction::Standby,
+                               ManagementAction::Shutdown, ManagementAction::Reset})
+        if (name == QLatin1String(managementName(m)))
+            return a.done(Management{a.id(), m});
+    if (name == QLatin1String("drive_start") || name == QLatin1String("drive_stop")) {
+        const QString id = a.id();
+        const QString reason = a.string("reason");
+        return name == QLatin1String("drive_start") ? a.done(DriveStart{id, reason})
+                                                    : a.done(DriveStop{id, reason});
+    }
+    if (name == QLatin1String("drive"))
+        return parseDrive(name, json);
+    if (name == QLatin1String("all_stop_apply"))
+        return parseLinkCommand<AllStopApply>(name, json);
+    if (name == QLatin1String("all_stop_remove"))
+        return parseLinkCommand<AllStopRemove>(name, json);
+    if (name == QLatin1String("fetch_map"))
+        return parseLinkCommand<FetchMap>(name, json);
+    if (name == QLatin1String("assign"))
+        return parseAssign(name, json);
+    if (name == QLatin1String("reset_assignment"))
+        return a.done(ResetAssignment{a.id()});
+    if (name == QLatin1String("send_text")) {
+        SendText c;
+        c.id = a.string("id");
+        c.text = a.string("text");
+        return a.done(c);
+    }
+    if (name == QLatin1String("ping")) {
+        const double idx = a.number("idx", -1);
+        if (!(idx >= 0 && idx <= 253 && std::floor(idx) == idx))
+            a.fail(text("ping: \"idx\" must be a station index 0-253"));
+        return a.done(PingStation{int(idx)});
+    }
+    if (name.isEmpty())
+        return {std::nullopt, QStringLiteral("missing \"cmd\""), {}};
+    return {std::nullopt, QStringLiteral("unknown command %1").arg(name), {}};
+}
+
+QJsonArray tasksToJson(const QVector<AssignTask>& tasks) {
+    QJsonArray out;
+    for (const auto& t : tasks) {
+        QJsonObject o;
+        if (!t.assignmentId.isEmpty())
+            o[QStringLiteral("assignment_id")] = t.assignmentId;
+        o[QStringLiteral("task")] = t.task;
+        o[QStringLiteral("destination")] = double(t.destinationId);
+        if (!t.destinationEquipmentId.isEmpty())
+            o[QStringLiteral("equipment")] = t.destinationEquipmentId;
+        if (t.destinationSpotId)
+            o[QStringLiteral("spot")] = double(*t.destinationSpotId);
+        if (t.route) {
+            QJsonArray r;
+            for (qint64 w : *t.route)
+                r << double(w);
+            o[QStringLiteral("route")] = r;
+        }
+        out << o;
+    }
+    return out;
+}
+
+std::optional<QVector<AssignTask>> tasksFromJson(const QJsonObject& args, QString* error) {
+    auto fail = [&](const QString& why) -> std::optional<QVector<AssignTask>> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    QJsonArray list;
+    if (args.contains(QStringLiteral("tasks"))) {
+        if (!args.value(QStringLiteral("tasks")).isArray())
+            return fail(dispatchText("\"tasks\" must be an array of tasks"));
+        list = args.value(QStringLiteral("tasks")).toArray();
+    } else {
+        list << args; // single-task shorthand
+    }
+    if (list.isEmpty())
+        return fail(dispatchText("no task given"));
+    if (list.size() > 64)
+        return fail(dispatchText("at most 64 tasks per request"));
+    QVector<AssignTask> out;
+    for (int i = 0; i < list.size(); ++i) {
+        const QString where = list.size() > 1 || args.contains(QStringLiteral("tasks"))
+                                  ? dispatchText("task %1: ").arg(i + 1)
+                                  : QString();
+        if (!list[i].isObject())
+            return fail(where + dispatchText("must be an object"));
+        const QJsonObject o = list[i].toObject();
+        AssignTask t;
+        t.task = o.value(QStringLiteral("task")).toString();
+        if (t.task.isEmpty())
+            return fail(where + dispatchText("\"task\" missing (Load, Offload, Fuel, Park or Wait)"));
+        const auto dest = wholeNumber(o.value(QStringLiteral("destination")));
+        if (!dest)
+            return fail(where + dispatchText("\"destination\" must be a way id (integer)"));
+        t.destinationId = *dest;
+        t.assignmentId = o.value(QStringLiteral("assignment_id")).toString();
+        t.destinationEquipmentId = o.value(QStringLiteral("equipment")).toString();
+        if (o.contains(QStringLiteral("spot"))) {
+            const auto spot = wholeNumber(o.value(QStringLiteral("spot")));
+            if (!spot)
+                return fail(where + dispatchText("\"spot\" must be an integer"));
+            t.destinationSpotId = *spot;
+        }
+        if (o.contains(QStringLiteral("route"))) {
+            if (!o.value(QStringLiteral("route")).isArray())
+                return fail(where + dispatchText("\"route\" must be an array of way ids"));
+            QVector<qint64> r;
+            for (const auto& w : o.value(QStringLiteral("route")).toArray()) {
+                const auto id = wholeNumber(w);
+                if (!id)
+                    return fail(where + dispatchText("\"route\" must be an array of way ids"));
+                r << *id;
+            }
+            t.route = r;
+        }
+        out << t;
+    }
+    return out;
+}
+
+} // namespace ocu
