@@ -1,7 +1,7 @@
 #pragma once
 // The compaction job of a started site: the session (design, areas, reports) fed by the OSYRIS
 // pass counts, the headless "coverage_report" command, and in the GUI the map overlay and the areas panel
-// under the pass-count summary. Kept out of SiteRuntime so the runtime's assembly stays small.
+// beside the pass-count summary. The OSYRIS module (app/modules/OsyrisModule.cpp) owns it.
 #include "protocols/site/SiteConfig.h"
 
 #include <QObject>
@@ -12,12 +12,12 @@ class QWidget;
 namespace ocu {
 
 class CompactionSession;
-class PassCountLayer;
+class OsyrisPassCountLayer;
 class SiteMapView;
 
 // nullptr in a build without the coverage module. Problems (design not readable) are appended to problems.
 CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& frame,
-                                   const PassCountLayer* layer, QObject* parent, QStringList* problems);
+                                   const OsyrisPassCountLayer* layer, QObject* parent, QStringList* problems);
 void stopCompaction(CompactionSession* session); // unregisters the headless command
 // The session's countsChanged() follows the bridge's passCountChanged() (the areas table refreshes).
 void watchCompactionCounts(CompactionSession* session, QObject* fleetBridge);

@@ -10,20 +10,21 @@ namespace ocu {
 
 QJsonObject writeShiftReport(const QVector<FleetBridge*>& bridges, FleetModel* fleet,
                              const ShiftReportRequest& r) {
-    QJsonObject o;
-    ProductionModel* model = nullptr;
-    FleetBridge* owner = nullptr;
     for (FleetBridge* b : bridges)
-        if (b && (model = b->findChild<ProductionModel*>())) {
-            owner = b;
-            break;
-        }
+        if (auto* model = b ? b->findChild<ProductionModel*>() : nullptr)
+            return writeShiftReport(model, b, fleet, r);
+    return writeShiftReport(nullptr, nullptr, fleet, r);
+}
+
+QJsonObject writeShiftReport(ProductionModel* model, const FleetBridge* mapSource, FleetModel* fleet,
+                             const ShiftReportRequest& r) {
+    QJsonObject o;
     QJsonObject written{{QStringLiteral("pdf"), false}, {QStringLiteral("csv"), false}};
     QJsonArray errors;
     if (!model) {
         o[QStringLiteral("ok")] = false;
         o[QStringLiteral("message")] =
-            QStringLiteral("no production model in this console (no ISO 23725 link)");
+            QStringLiteral("no production model in this console (no link reports production)");
         o[QStringLiteral("written")] = written;
         return o;
     }
@@ -32,7 +33,8 @@ QJsonObject writeShiftReport(const QVector<FleetBridge*>& bridges, FleetModel* f
     if (r.planTonnes)
         model->setPlanTonnes(*r.planTonnes);
     if (!r.pdf.isEmpty()) {
-        const QImage map = renderSiteSnapshot(fleet, owner->siteMap(), QSize(1100, 500));
+        const QImage map =
+            renderSiteSnapshot(fleet, mapSource ? mapSource->siteMap() : SiteMapData{}, QSize(1100, 500));
         const QString e = writeShiftPdf(*model, map, r.siteName, r.pdf);
         if (e.isEmpty())
             written[QStringLiteral("pdf")] = true;
