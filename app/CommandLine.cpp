@@ -1,4 +1,5 @@
 #include "app/CommandLine.h"
+#include "app/ProtocolModule.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -7,21 +8,17 @@
 namespace ocu {
 
 QStringList screenshotViewNames() {
-    // MainWindow::panelKey of every panel (test_command_line holds the two lists equal).
-    return {QStringLiteral("fleet"),  QStringLiteral("map"),     QStringLiteral("3d"),
-            QStringLiteral("jaus"),   QStringLiteral("teleop"),  QStringLiteral("passcounts"),
-            QStringLiteral("events"), QStringLiteral("dispatch")};
+    // The panels of the console's window: the main ones and those of the protocol modules of this build.
+    QList<PanelSpec> modulePanels;
+    for (const auto& m : makeProtocolModules())
+        modulePanels += m->panels();
+    return MainWindow::panelKeysWith(modulePanels);
 }
 
-bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& error, QString& helpText) {
-    QCommandLineParser p;
-    p.setApplicationDescription(QCoreApplication::translate(
-        "CommandLine",
-        "Mixed-fleet Operator Control Unit: JAUS ground vehicles, ISO 23725 autonomous haulage "
-        "and OSYRIS rollers and pavers on one console.\nWithout --config it starts on the built-in "
-        "simulated site."));
-    auto help = p.addHelpOption();
-    auto version = p.addVersionOption();
+namespace {
+
+// --config … --reset-layout: the site, the window and its screenshot, language, logging, headless.
+QList<QCommandLineOption> consoleOptions() {
     QCommandLineOption config({QStringLiteral("c"), QStringLiteral("config")},
                               QCoreApplication::translate("CommandLine", "Site configuration (JSON, see "
                                                                          "docs/site-config.md). Default: the "
@@ -79,7 +76,11 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
     QCommandLineOption reset(QStringLiteral("reset-layout"),
                              QCoreApplication::translate("CommandLine", "Start with the default panel layout "
                                                                         "instead of the saved one."));
-    p.addOptions({config, noSim, shot, view, size, settle, lang, log, headless, duration, reset});
+    return {config, noSim, shot, view, size, settle, lang, log, headless, duration, reset};
+}
+
+// The shift report, the flight recorder, the replay and its exports, the night palette.
+QList<QCommandLineOption> runOptions() {
     // The shift report at the end of a headless run.
     QCommandLineOption shiftPdf(QStringLiteral("shift-report"),
                                 QCoreApplication::translate("CommandLine",
@@ -91,7 +92,6 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
                                                             "With --headless: write the shift "
                                                             "report as CSV to FILE when the run ends."),
                                 QStringLiteral("FILE"));
-    p.addOptions({shiftPdf, shiftCsv});
     const auto tr = [](const char* text) { return QCoreApplication::translate("CommandLine", text); };
     QCommandLineOption record(QStringLiteral("record"),
                               tr("Folder for this run's flight recording (default: record.dir of the site "
@@ -122,12 +122,137 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
                             QStringLiteral("T"));
     QCommandLineOption to(QStringLiteral("to"), tr("End of the export window (as --at)."),
                           QStringLiteral("T"));
-    p.addOptions({record, noRecord, replay, at, speed, exJsonl, exCsv, exSlice, from, to});
     // The night palette from the start (screenshots of it; the View menu toggles it too).
     QCommandLineOption night(QStringLiteral("night"),
                              QCoreApplication::translate("CommandLine", "Start with the night palette."));
-    p.addOption(night);
+    return {shiftPdf, shiftCsv, record,  noRecord, replay, at,   speed,
+            exJsonl,  exCsv,    exSlice, from,     to,     night};
+}
 
+QString name(const char* option) {
+    return QString::fromLatin1(option);
+}
+
+// --view, --size, --settle, --lang.
+bool readWindowOptions(const QCommandLineParser& p, CommandLineOptions& o, QString& error) {
+    o.configFile = p.value(name("config"));
+    o.noSim = p.isSet(name("no-sim"));
+    o.screenshotFile = p.value(name("screenshot"));
+    o.view = p.value(name("view")).toLower();
+    // "all:<panel>": the whole window with that tabbed panel in front.
+    const QString viewPanel = o.view.startsWith(QLatin1String("all:")) ? o.view.mid(4) : o.view;
+    if (o.view != QLatin1String("all") && !screenshotViewNames().contains(viewPanel)) {
+        error = QCoreApplication::translate("CommandLine", "--view: unknown view \"%1\"; use all, %2")
+                    .arg(o.view, screenshotViewNames().join(QStringLiteral(", ")));
+        return false;
+    }
+    const QString size = p.value(name("size"));
+    static const QRegularExpression sizeRe(QStringLiteral("^(\\d{2,5})x(\\d{2,5})$"));
+    auto m = sizeRe.match(size);
+    if (!m.hasMatch()) {
+        error =
+            QCoreApplication::translate("CommandLine", "--size: expected WxH such as 1600x1000, got \"%1\"")
+                .arg(size);
+        return false;
+    }
+    o.size = QSize(m.captured(1).toInt(), m.captured(2).toInt());
+    if (o.size.width() < 320 || o.size.height() < 240 || o.size.width() > 8192 || o.size.height() > 8192) {
+        error = QCoreApplication::translate("CommandLine", "--size: %1 is outside 320x240 .. 8192x8192")
+                    .arg(size);
+        return false;
+    }
+    bool ok = false;
+    o.settleSeconds = p.value(name("settle")).toDouble(&ok);
+    if (!ok || o.settleSeconds < 0 || o.settleSeconds > 3600) {
+        error =
+            QCoreApplication::translate("CommandLine", "--settle: expected seconds between 0 and 3600, got "
+                                                       "\"%1\"")
+                .arg(p.value(name("settle")));
+        return false;
+    }
+    o.language = p.value(name("lang")).toLower();
+    if (!o.language.isEmpty() && o.language != QLatin1String("en") && o.language != QLatin1String("de") &&
+        o.language != QLatin1String("fr")) {
+        error = QCoreApplication::translate("CommandLine", "--lang: \"%1\" is not one of en, de, fr")
+                    .arg(o.language);
+        return false;
+    }
+    o.resetLayout = p.isSet(name("reset-layout"));
+    o.night = p.isSet(name("night"));
+    return true;
+}
+
+// --log, --headless, --duration and the shift report.
+bool readRunOptions(const QCommandLineParser& p, CommandLineOptions& o, QString& error) {
+    o.logCategories = p.value(name("log"));
+    o.headless = p.isSet(name("headless"));
+    bool ok = false;
+    o.durationSeconds = p.value(name("duration")).toDouble(&ok);
+    if (!ok || o.durationSeconds < 0) {
+        error = QCoreApplication::translate("CommandLine", "--duration: expected seconds >= 0, got \"%1\"")
+                    .arg(p.value(name("duration")));
+        return false;
+    }
+    if (o.headless && !o.screenshotFile.isEmpty()) {
+        error = QCoreApplication::translate("CommandLine", "--headless and --screenshot cannot be combined");
+        return false;
+    }
+    o.shiftReportPdf = p.value(name("shift-report"));
+    o.shiftReportCsv = p.value(name("shift-csv"));
+    if ((!o.shiftReportPdf.isEmpty() || !o.shiftReportCsv.isEmpty()) && !o.headless) {
+        error = QCoreApplication::translate(
+            "CommandLine", "--shift-report/--shift-csv need --headless (in the window: Production "
+                           "panel, Shift report)");
+        return false;
+    }
+    return true;
+}
+
+// The recorder, --replay and its exports.
+bool readReplayOptions(const QCommandLineParser& p, CommandLineOptions& o, QString& error) {
+    const auto tr = [](const char* text) { return QCoreApplication::translate("CommandLine", text); };
+    o.recordDir = p.value(name("record"));
+    o.noRecord = p.isSet(name("no-record"));
+    o.replayFile = p.value(name("replay"));
+    o.replayAt = p.value(name("at"));
+    o.exportJsonl = p.value(name("export-jsonl"));
+    o.exportCsv = p.value(name("export-csv"));
+    o.exportSlice = p.value(name("export-slice"));
+    o.exportFrom = p.value(name("from"));
+    o.exportTo = p.value(name("to"));
+    const bool speedSet = p.isSet(name("speed"));
+    if (speedSet) {
+        bool ok = false;
+        o.replaySpeed = p.value(name("speed")).toDouble(&ok);
+        if (!ok || o.replaySpeed < 0 || o.replaySpeed > 16) {
+            error = tr("--speed: expected 0.1 to 16, got \"%1\"").arg(p.value(name("speed")));
+            return false;
+        }
+        o.replaySpeedSet = true;
+    }
+    const bool replayOnly = !o.replayAt.isEmpty() || speedSet || !o.exportJsonl.isEmpty() ||
+                            !o.exportCsv.isEmpty() || !o.exportSlice.isEmpty() || !o.exportFrom.isEmpty() ||
+                            !o.exportTo.isEmpty();
+    if (replayOnly && o.replayFile.isEmpty()) {
+        error = tr("--at, --speed, --export-* and --from/--to need --replay FILE");
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& error, QString& helpText) {
+    QCommandLineParser p;
+    p.setApplicationDescription(QCoreApplication::translate(
+        "CommandLine",
+        "Mixed-fleet Operator Control Unit: JAUS ground vehicles, ISO 23725 autonomous haulage "
+        "and OSYRIS rollers and pavers on one console.\nWithout --config it starts on the built-in "
+        "simulated site."));
+    auto help = p.addHelpOption();
+    auto version = p.addVersionOption();
+    p.addOptions(consoleOptions());
+    p.addOptions(runOptions());
     if (!p.parse(args)) {
         error = p.errorText();
         return false;
@@ -148,94 +273,7 @@ bool parseCommandLine(const QStringList& args, CommandLineOptions& o, QString& e
                     .arg(p.positionalArguments().first());
         return false;
     }
-    o.configFile = p.value(config);
-    o.noSim = p.isSet(noSim);
-    o.screenshotFile = p.value(shot);
-    o.view = p.value(view).toLower();
-    // "all:<panel>": the whole window with that tabbed panel in front.
-    const QString viewPanel = o.view.startsWith(QLatin1String("all:")) ? o.view.mid(4) : o.view;
-    if (o.view != QLatin1String("all") && !screenshotViewNames().contains(viewPanel)) {
-        error = QCoreApplication::translate("CommandLine", "--view: unknown view \"%1\"; use all, %2")
-                    .arg(o.view, screenshotViewNames().join(QStringLiteral(", ")));
-        return false;
-    }
-    static const QRegularExpression sizeRe(QStringLiteral("^(\\d{2,5})x(\\d{2,5})$"));
-    auto m = sizeRe.match(p.value(size));
-    if (!m.hasMatch()) {
-        error =
-            QCoreApplication::translate("CommandLine", "--size: expected WxH such as 1600x1000, got \"%1\"")
-                .arg(p.value(size));
-        return false;
-    }
-    o.size = QSize(m.captured(1).toInt(), m.captured(2).toInt());
-    if (o.size.width() < 320 || o.size.height() < 240 || o.size.width() > 8192 || o.size.height() > 8192) {
-        error = QCoreApplication::translate("CommandLine", "--size: %1 is outside 320x240 .. 8192x8192")
-                    .arg(p.value(size));
-        return false;
-    }
-    bool ok = false;
-    o.settleSeconds = p.value(settle).toDouble(&ok);
-    if (!ok || o.settleSeconds < 0 || o.settleSeconds > 3600) {
-        error =
-            QCoreApplication::translate("CommandLine", "--settle: expected seconds between 0 and 3600, got "
-                                                       "\"%1\"")
-                .arg(p.value(settle));
-        return false;
-    }
-    o.language = p.value(lang).toLower();
-    if (!o.language.isEmpty() && o.language != QLatin1String("en") && o.language != QLatin1String("de") &&
-        o.language != QLatin1String("fr")) {
-        error = QCoreApplication::translate("CommandLine", "--lang: \"%1\" is not one of en, de, fr")
-                    .arg(o.language);
-        return false;
-    }
-    o.logCategories = p.value(log);
-    o.headless = p.isSet(headless);
-    o.durationSeconds = p.value(duration).toDouble(&ok);
-    if (!ok || o.durationSeconds < 0) {
-        error = QCoreApplication::translate("CommandLine", "--duration: expected seconds >= 0, got \"%1\"")
-                    .arg(p.value(duration));
-        return false;
-    }
-    if (o.headless && !o.screenshotFile.isEmpty()) {
-        error = QCoreApplication::translate("CommandLine", "--headless and --screenshot cannot be combined");
-        return false;
-    }
-    o.resetLayout = p.isSet(reset);
-    o.night = p.isSet(night);
-    o.shiftReportPdf = p.value(shiftPdf);
-    o.shiftReportCsv = p.value(shiftCsv);
-    if ((!o.shiftReportPdf.isEmpty() || !o.shiftReportCsv.isEmpty()) && !o.headless) {
-        error = QCoreApplication::translate(
-            "CommandLine", "--shift-report/--shift-csv need --headless (in the window: Production "
-                           "panel, Shift report)");
-        return false;
-    }
-    o.recordDir = p.value(record);
-    o.noRecord = p.isSet(noRecord);
-    o.replayFile = p.value(replay);
-    o.replayAt = p.value(at);
-    o.exportJsonl = p.value(exJsonl);
-    o.exportCsv = p.value(exCsv);
-    o.exportSlice = p.value(exSlice);
-    o.exportFrom = p.value(from);
-    o.exportTo = p.value(to);
-    if (p.isSet(speed)) {
-        o.replaySpeed = p.value(speed).toDouble(&ok);
-        if (!ok || o.replaySpeed < 0 || o.replaySpeed > 16) {
-            error = tr("--speed: expected 0.1 to 16, got \"%1\"").arg(p.value(speed));
-            return false;
-        }
-        o.replaySpeedSet = true;
-    }
-    const bool replayOnly = !o.replayAt.isEmpty() || p.isSet(speed) || !o.exportJsonl.isEmpty() ||
-                            !o.exportCsv.isEmpty() || !o.exportSlice.isEmpty() || !o.exportFrom.isEmpty() ||
-                            !o.exportTo.isEmpty();
-    if (replayOnly && o.replayFile.isEmpty()) {
-        error = tr("--at, --speed, --export-* and --from/--to need --replay FILE");
-        return false;
-    }
-    return true;
+    return readWindowOptions(p, o, error) && readRunOptions(p, o, error) && readReplayOptions(p, o, error);
 }
 
 } // namespace ocu

@@ -19,7 +19,8 @@
 namespace ocu {
 
 CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& frame,
-                                   const PassCountLayer* layer, QObject* parent, QStringList* problems) {
+                                   const OsyrisPassCountLayer* layer, QObject* parent,
+                                   QStringList* problems) {
     auto* s = new CompactionSession(config.compaction, frame, parent);
     s->setSiteName(QString::fromStdString(config.name));
 #ifdef OCU_SITE_HAVE_OSYRIS
@@ -31,8 +32,8 @@ CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& fra
         s->setMachines(names);
     }
 #endif
-    if (auto* osy = dynamic_cast<const OsyrisPassCountLayer*>(layer))
-        s->setSnapshotSource([osy] { return osy->snapshot(); });
+    if (layer)
+        s->setSnapshotSource([layer] { return layer->snapshot(); });
     // The built-in simulated site paves the shipped design's road.
     QString design = QString::fromStdString(config.compaction.design);
     if (design.isEmpty() && config.simulation.enabled && config.simulation.osyrisRollers > 0)

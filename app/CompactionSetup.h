@@ -1,7 +1,7 @@
 #pragma once
 // The compaction job of a started site: the session (design, areas, reports) fed by the OSYRIS
 // pass counts, the headless "coverage_report" command, and in the GUI the map overlay and the areas panel
-// under the pass-count summary. Kept out of SiteRuntime so the runtime's assembly stays small.
+// beside the pass-count summary. The OSYRIS module (app/modules/OsyrisModule.cpp) owns it.
 #include "protocols/site/SiteConfig.h"
 
 #include <QObject>
@@ -13,12 +13,12 @@ namespace ocu {
 
 class CompactionSession;
 class HeadlessCommands;
-class PassCountLayer;
+class OsyrisPassCountLayer;
 class SiteMapView;
 
 // nullptr in a build without the coverage module. Problems (design not readable) are appended to problems.
 CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& frame,
-                                   const PassCountLayer* layer, QObject* parent, QStringList* problems);
+                                   const OsyrisPassCountLayer* layer, QObject* parent, QStringList* problems);
 // The headless "coverage_report" command of the session (nothing when session is nullptr).
 void registerCompactionHeadless(HeadlessCommands& table, CompactionSession* session);
 // The session's countsChanged() follows the bridge's passCountChanged() (the areas table refreshes).

@@ -1,13 +1,13 @@
 #pragma once
 // The headless monitor's command table: what a JSON command line does, by name. One table per monitor (no
 // process-wide state); each entry maps a name to its handler, of one of two kinds:
-//   local — answered here at once, without the command gate: a read-only query ("video_status",
-//           "production", "counters") or an action of this process ("auto_dispatch", "shift_report",
-//           "coverage_report"). The handler returns the result's fields ("ok", "message", and its own).
+//   local — answered here at once, without the command gate: a read-only query ("list", "counters", a
+//           module's status query) or an action of this process (a module's report writer). The handler
+//           returns the result's fields ("ok", "message", and its own).
 //   gate  — read into its typed OperatorCommand here, once (models/commands/OperatorCommand.h), and forwarded
 //           through the CommandGate to the bridge of the machine it names (or of its protocol): audited,
 //           answered when every target reported (or at the gate's deadline). An optional prepare step
-//           builds the typed command itself (assign gives each task its AssignmentId first) and names the
+//           builds the typed command itself (e.g. completes missing identifiers first) and names the
 //           fields the result echoes; without it the JSON is read by parseOperatorCommand.
 // Besides the entries: stop_all, stop and clear_stop (the stop path, CommandGate), and every other operator
 // command parseOperatorCommand knows go to the gate the same way.

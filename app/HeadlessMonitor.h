@@ -6,26 +6,24 @@
 // command is audited by the CommandGate.
 //
 // Output lines:
-//   {"type":"machine","id":"jaus:101","protocol":"jaus","name":..,"machine_type":..,"lat":..,"lon":..,"e":..,
+//   {"type":"machine","id":"<protocol>:<id>","protocol":..,"name":..,"machine_type":..,"lat":..,"lon":..,"e":..,
 //    "n":..,"u":..,"heading":..,"speed":..,"state":..,"mode":..,"stop":"none|stopped|unknown","stop_text":..,
 //    "controller":..,"control":..,"health":..,"link":..,"stale":false,"age_ms":..,"status":..}
 //   {"type":"machine_removed","id":..}
 //   {"type":"link","protocol":..,"link":..,"state":..,"age_ms":..,"detail":..}
 //   {"type":"event","time":..,"severity":..,"kind":..,"machine":..,"source":..,"text":..}
-//   {"type":"result","cmd":..,"req":<echoed>,"id":<echoed>,"ok":true|false,"targets":[{"id":"jaus:126",
-//    "sent":true},{"id":"iso23725 link ahs","sent":false,"reason":"link ahs is down"}],"message":..}
+//   {"type":"result","cmd":..,"req":<echoed>,"id":<echoed>,"ok":true|false,"targets":[{"id":<machine>,
+//    "sent":true},{"id":<link>,"sent":false,"reason":"link ... is down","cause":..}],"message":..}
 //   Commands that reach the command gate carry "targets" (what went on the wire, per machine or link) and are
 //   answered when final: once every stack reported, or after the gate's deadline ("stack did not answer").
 //   "ok" only when there was a target and every target was sent.
 // Commands ("cmd" or "command" key; optional "req" is echoed), in the table of app/HeadlessCommands.h:
 //   {"cmd":"stop_all"}  {"cmd":"stop","id":..}  {"cmd":"clear_stop","id":..,"confirm":true}  {"cmd":"list"}
 //   {"cmd":"counters"}: one result line with every stack's counters per link:
-//     {"type":"result","cmd":"counters","ok":true,"message":"3 links","links":[{"protocol":"osyris",
-//      "link":"osyris:239.255.0.1:5000","rejected_total":4,"rejected":{"rejected.too_short":3,
+//     {"type":"result","cmd":"counters","ok":true,"message":"3 links","links":[{"protocol":..,
+//      "link":..,"rejected_total":4,"rejected":{"rejected.too_short":3,
 //      "implausible.speed":1},"counters":{"rx.datagrams":120,...}}, ...]}
-//   and those the protocol modules register (ProtocolModule::registerHeadless, e.g.
-//   app/modules/IsoHeadless.h, app/modules/JausVideoHeadless.h) and the compaction job ("coverage_report",
-//   app/CompactionSetup.h).
+//   and those the protocol modules register (ProtocolModule::registerHeadless; see app/modules/).
 #include "app/HeadlessCommands.h"
 
 #include <QByteArray>

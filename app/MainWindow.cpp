@@ -27,7 +27,40 @@ namespace ocu {
 
 namespace {
 constexpr int kLayoutVersion = 1;
+
+// The main panels with their Ctrl+N (docs/keyboard.md); the protocol modules' panels have 4, 5 and 8.
+QList<PanelSpec> mainPanels() {
+    const PanelPlace none = PanelPlace::SideColumn; // the main panels have their own places
+    return {
+        {MainWindow::panelKey(Panel::Fleet), MainWindow::tr("Fleet"), none, 1, false, false, {}},
+        {MainWindow::panelKey(Panel::SiteMap), MainWindow::tr("Site map (2D)"), none, 2, false, false, {}},
+        {MainWindow::panelKey(Panel::Site3D), MainWindow::tr("Site 3D"), none, 3, false, false, {}},
+        {MainWindow::panelKey(Panel::PassCounts), MainWindow::tr("Pass counts"), none, 6, false, true, {}},
+        {MainWindow::panelKey(Panel::EventLog), MainWindow::tr("Event log"), none, 7, false, true, {}}};
 }
+
+bool isMainPanel(const QString& key) {
+    for (const PanelSpec& p : mainPanels())
+        if (p.key == key)
+            return true;
+    return false;
+}
+
+// Shortcut order (the View menu, Ctrl+N); panels without a shortcut last, in the order given.
+void sortPanels(QList<PanelSpec>& panels) {
+    std::stable_sort(panels.begin(), panels.end(), [](const PanelSpec& a, const PanelSpec& b) {
+        return (a.shortcutDigit ? a.shortcutDigit : 100) < (b.shortcutDigit ? b.shortcutDigit : 100);
+    });
+}
+
+// "a, b and c".
+QString listText(const QStringList& items) {
+    if (items.size() < 2)
+        return items.value(0);
+    return MainWindow::tr("%1 and %2")
+        .arg(items.mid(0, items.size() - 1).join(QStringLiteral(", ")), items.last());
+}
+} // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("OcuMainWindow"));
@@ -35,7 +68,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setDockNestingEnabled(true);
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowNestedDocks |
                    QMainWindow::AllowTabbedDocks | QMainWindow::GroupedDragging);
-    createDocks();
+    m_panels = mainPanels();
+    for (const PanelSpec& p : std::as_const(m_panels))
+        createDock(p);
     createToolBar();
     createMenus();
     createStatusBar();
@@ -45,11 +80,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 MainWindow::~MainWindow() = default;
 
-QList<Panel> MainWindow::panels() {
-    return {Panel::Fleet,  Panel::SiteMap,    Panel::Site3D,   Panel::JausControl,
-            Panel::Teleop, Panel::PassCounts, Panel::EventLog, Panel::Dispatch};
-}
-
 QString MainWindow::panelKey(Panel panel) {
     switch (panel) {
     case Panel::Fleet:
@@ -58,65 +88,86 @@ QString MainWindow::panelKey(Panel panel) {
         return QStringLiteral("map");
     case Panel::Site3D:
         return QStringLiteral("3d");
-    case Panel::JausControl:
-        return QStringLiteral("jaus");
-    case Panel::Teleop:
-        return QStringLiteral("teleop");
     case Panel::PassCounts:
         return QStringLiteral("passcounts");
     case Panel::EventLog:
         return QStringLiteral("events");
-    case Panel::Dispatch:
-        return QStringLiteral("dispatch");
     }
     return {};
 }
 
-QString MainWindow::panelTitle(Panel panel) const {
-    switch (panel) {
-    case Panel::Fleet:
-        return tr("Fleet");
-    case Panel::SiteMap:
-        return tr("Site map (2D)");
-    case Panel::Site3D:
-        return tr("Site 3D");
-    case Panel::JausControl:
-        return tr("JAUS control");
-    case Panel::Teleop:
-        return tr("Teleop");
-    case Panel::PassCounts:
-        return tr("Pass counts");
-    case Panel::EventLog:
-        return tr("Event log");
-    case Panel::Dispatch:
-        return tr("Dispatch");
-    }
+QStringList MainWindow::panelKeys() const {
+    QStringList keys;
+    for (const PanelSpec& p : m_panels)
+        keys << p.key;
+    return keys;
+}
+
+QStringList MainWindow::panelKeysWith(const QList<PanelSpec>& modulePanels) {
+    QList<PanelSpec> all = mainPanels() + modulePanels;
+    sortPanels(all);
+    QStringList keys;
+    for (const PanelSpec& p : all)
+        keys << p.key;
+    return keys;
+}
+
+QString MainWindow::panelTitle(const QString& key) const {
+    for (const PanelSpec& p : m_panels)
+        if (p.key == key)
+            return p.title;
     return {};
 }
 
-void MainWindow::createDocks() {
-    for (Panel p : panels()) {
-        auto* dock = new QDockWidget(panelTitle(p), this);
-        dock->setObjectName(QStringLiteral("dock-") + panelKey(p));
-        dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
-                          QDockWidget::DockWidgetFloatable);
-        auto* empty = new QLabel(tr("Starting…"), dock);
-        empty->setAlignment(Qt::AlignCenter);
-        dock->setWidget(empty);
-        m_docks.insert(p, dock);
-    }
+void MainWindow::createDock(const PanelSpec& spec) {
+    auto* dock = new QDockWidget(spec.title, this);
+    dock->setObjectName(QStringLiteral("dock-") + spec.key);
+    dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
+                      QDockWidget::DockWidgetFloatable);
+    auto* empty = new QLabel(tr("Starting…"), dock);
+    empty->setAlignment(Qt::AlignCenter);
+    dock->setWidget(empty);
+    m_docks.insert(spec.key, dock);
 }
 
-void MainWindow::setPanelWidget(Panel panel, QWidget* widget) {
-    QDockWidget* d = m_docks.value(panel);
+void MainWindow::addPanels(const QList<PanelSpec>& panels) {
+    bool added = false;
+    for (const PanelSpec& p : panels) {
+        if (m_docks.contains(p.key))
+            continue;
+        createDock(p);
+        m_panels << p;
+        if (p.place == PanelPlace::SideColumn && !m_sideColumn)
+            m_sideColumn = m_docks.value(p.key);
+        added = true;
+    }
+    if (!added)
+        return;
+    sortPanels(m_panels);
+    fillPanelMenus();
+    // The default layout again with them: splits before tabs (a split beside a tabbed dock only adds a tab).
+    for (QDockWidget* d : std::as_const(m_docks))
+        removeDockWidget(d);
+    applyDefaultLayout();
+    m_defaultState = saveState(kLayoutVersion);
+    m_fitPending = true;
+    m_raisePending = true; // a tab group laid out again keeps its first tab in front until shown
+}
+
+void MainWindow::setPanelWidget(const QString& key, QWidget* widget) {
+    QDockWidget* d = m_docks.value(key);
+    if (!d)
+        return;
     QWidget* old = d->widget();
     QWidget* content = widget;
+    bool scrolls = false;
+    for (const PanelSpec& p : std::as_const(m_panels))
+        if (p.key == key)
+            scrolls = p.scrolls;
     // Panels of controls (not a map or a table that scroll by themselves) scroll when their dock is narrower
     // than they need, instead of forcing the whole column wide and squeezing the map (German
     // texts at 1366 x 768 left the map a small square).
-    if (widget != nullptr &&
-        (panel == Panel::JausControl || panel == Panel::Teleop || panel == Panel::PassCounts ||
-         panel == Panel::Dispatch || panel == Panel::EventLog)) {
+    if (widget != nullptr && scrolls) {
         auto* scroll = new QScrollArea;
         scroll->setObjectName(QStringLiteral("panel-scroll"));
         scroll->setFrameShape(QFrame::NoFrame);
@@ -129,8 +180,11 @@ void MainWindow::setPanelWidget(Panel panel, QWidget* widget) {
         old->deleteLater();
 }
 
-QWidget* MainWindow::panelWidget(Panel panel) const {
-    QWidget* w = m_docks.value(panel)->widget();
+QWidget* MainWindow::panelWidget(const QString& key) const {
+    QDockWidget* d = m_docks.value(key);
+    if (!d)
+        return nullptr;
+    QWidget* w = d->widget();
     if (auto* scroll = qobject_cast<QScrollArea*>(w);
         scroll && scroll->objectName() == QLatin1String("panel-scroll"))
         return scroll->widget();
@@ -152,10 +206,7 @@ void MainWindow::createToolBar() {
     m_stopAll->setObjectName(QStringLiteral("action-stop-all"));
     m_stopAll->setShortcuts({QKeySequence(Qt::Key_F12), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Space)});
     m_stopAll->setShortcutContext(Qt::ApplicationShortcut); // also from floating panels
-    m_stopAll->setToolTip(tr(
-        "Stop every machine this console can reach: JAUS emergency stop to every discovered vehicle, "
-        "ISO 23725 all-stop to every AHS link and the OSYRIS stop message (F12 or Ctrl+Shift+Space). "
-        "Stopping never asks for confirmation; a stop that does not reach everything shows a red banner."));
+    setStopAllReach({});
     // A held F12 must not stop again and again (each stop is a command with its own audit line).
     m_stopAll->setAutoRepeat(false);
     connect(m_stopAll, &QAction::triggered, this, &MainWindow::stopAllRequested);
@@ -237,22 +288,19 @@ void MainWindow::createMenus() {
     quit->setShortcut(QKeySequence::Quit);
     connect(quit, &QAction::triggered, this, &QWidget::close);
 
-    QMenu* view = menuBar()->addMenu(tr("&View"));
-    for (Panel p : panels()) {
-        QAction* a = m_docks.value(p)->toggleViewAction();
-        view->addAction(a);
-    }
-    view->addSeparator();
-    QAction* reset = view->addAction(tr("&Reset layout"));
-    reset->setObjectName(QStringLiteral("action-reset-layout"));
-    connect(reset, &QAction::triggered, this, &MainWindow::resetLayout);
-    m_nightAction = view->addAction(tr("&Night palette"));
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_resetAction = new QAction(tr("&Reset layout"), this);
+    m_resetAction->setObjectName(QStringLiteral("action-reset-layout"));
+    connect(m_resetAction, &QAction::triggered, this, &MainWindow::resetLayout);
+    m_nightAction = new QAction(tr("&Night palette"), this);
     m_nightAction->setObjectName(QStringLiteral("action-night"));
     m_nightAction->setCheckable(true);
     m_nightAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     connect(m_nightAction, &QAction::toggled, this, &MainWindow::setNightMode);
-
-    createPanelShortcuts(view);
+    // A keyboard-only path to every panel (also listed in Help > Keyboard shortcuts and
+    // docs/keyboard.md).
+    m_goMenu = new QMenu(tr("&Go to panel"), this);
+    fillPanelMenus();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard shortcuts"));
@@ -261,10 +309,55 @@ void MainWindow::createMenus() {
     QAction* about = help->addAction(tr("&About"));
     connect(about, &QAction::triggered, this, [this] {
         QMessageBox::about(this, tr("About the Operator Control Unit"),
-                           tr("Operator Control Unit %1\nJAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 "
-                              "and OSYRIS on one console.")
-                               .arg(QApplication::applicationVersion()));
+                           tr("Operator Control Unit %1\n%2 on one console.")
+                               .arg(QApplication::applicationVersion(), listText(m_aboutProtocols)));
     });
+}
+
+// The View menu and its Go to panel submenu, in the panels' order (again when a module adds panels).
+void MainWindow::fillPanelMenus() {
+    m_viewMenu->clear();
+    m_goMenu->clear();
+    for (const PanelSpec& p : std::as_const(m_panels)) {
+        m_viewMenu->addAction(m_docks.value(p.key)->toggleViewAction());
+        QAction* go = m_goActions.value(p.key);
+        if (!go) {
+            go = new QAction(p.title, this);
+            go->setObjectName(QStringLiteral("action-go-") + p.key);
+            if (p.shortcutDigit > 0)
+                go->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_0 + p.shortcutDigit)));
+            go->setShortcutContext(Qt::ApplicationShortcut);
+            connect(go, &QAction::triggered, this, [this, key = p.key] { focusPanel(key); });
+            addAction(go); // active even when the menu bar is hidden
+            m_goActions.insert(p.key, go);
+        }
+        m_goMenu->addAction(go);
+    }
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_resetAction);
+    m_viewMenu->addAction(m_nightAction);
+    m_viewMenu->addMenu(m_goMenu);
+}
+
+void MainWindow::raisePanel(const QString& key) {
+    if (QDockWidget* d = dock(key)) {
+        d->raise();
+        m_raisedPanels << key;
+    }
+}
+
+void MainWindow::setStopAllReach(const QStringList& reach) {
+    const QString what = reach.isEmpty()
+                             ? tr("Stop every machine this console can reach")
+                             : tr("Stop every machine this console can reach: %1").arg(listText(reach));
+    m_stopAll->setToolTip(
+        tr("%1 (F12 or Ctrl+Shift+Space). Stopping never asks for confirmation; a stop that does not reach "
+           "everything shows a red banner.")
+            .arg(what));
+}
+
+void MainWindow::setAboutProtocols(const QStringList& protocols) {
+    m_aboutProtocols = protocols;
 }
 
 void MainWindow::createStatusBar() {
@@ -302,37 +395,54 @@ void MainWindow::setNightMode(bool night) {
         applyTheme(*app, night ? Theme::Night : Theme::Day);
 }
 
-void MainWindow::applyDefaultLayout() {
-    // Dispatcher layout: fleet list left, map in the middle with 3D as a tab, JAUS and teleop right,
-    // event log and pass counts along the bottom.
-    // Splits first, tabs last: tabifying before a split drags the whole tab group along.
-    addDockWidget(Qt::LeftDockWidgetArea, m_docks[Panel::Fleet]);
-    addDockWidget(Qt::LeftDockWidgetArea, m_docks[Panel::SiteMap]);
-    splitDockWidget(m_docks[Panel::Fleet], m_docks[Panel::SiteMap], Qt::Horizontal);
-    splitDockWidget(m_docks[Panel::SiteMap], m_docks[Panel::JausControl], Qt::Horizontal);
-    addDockWidget(Qt::BottomDockWidgetArea, m_docks[Panel::EventLog]);
-    splitDockWidget(m_docks[Panel::EventLog], m_docks[Panel::PassCounts], Qt::Horizontal);
-    tabifyDockWidget(m_docks[Panel::SiteMap], m_docks[Panel::Site3D]);
-    tabifyDockWidget(m_docks[Panel::JausControl], m_docks[Panel::Teleop]);
-    tabifyDockWidget(m_docks[Panel::PassCounts],
-                     m_docks[Panel::Dispatch]); // the dispatcher's table
-    for (QDockWidget* d : std::as_const(m_docks))
-        d->show();
-    m_docks[Panel::SiteMap]->raise();
-    m_docks[Panel::JausControl]->raise();
-    m_docks[Panel::Dispatch]->raise();
-    resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]},
-                {420, 900, 380}, Qt::Horizontal);
-    resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]}, {700, 220}, Qt::Vertical);
+QList<QDockWidget*> MainWindow::frontDocks() const {
+    QList<QDockWidget*> out{m_docks.value(panelKey(Panel::SiteMap))};
+    for (const PanelSpec& p : m_panels)
+        if (p.front && !isMainPanel(p.key))
+            out << m_docks.value(p.key);
+    return out;
 }
 
-void MainWindow::focusPanel(Panel panel) {
-    QDockWidget* d = m_docks.value(panel);
+void MainWindow::applyDefaultLayout() {
+    // The default layout: fleet list left, map in the middle with 3D as a tab, the modules' side column
+    // right, event log and pass counts (with the modules' panels beside them) along the bottom. Splits first,
+    // tabs last: tabifying before a split drags the whole tab group along.
+    QDockWidget* fleet = dock(Panel::Fleet);
+    QDockWidget* map = dock(Panel::SiteMap);
+    QDockWidget* events = dock(Panel::EventLog);
+    QDockWidget* passCounts = dock(Panel::PassCounts);
+    QDockWidget* side = m_sideColumn;
+    addDockWidget(Qt::LeftDockWidgetArea, fleet);
+    addDockWidget(Qt::LeftDockWidgetArea, map);
+    splitDockWidget(fleet, map, Qt::Horizontal);
+    if (side)
+        splitDockWidget(map, side, Qt::Horizontal);
+    addDockWidget(Qt::BottomDockWidgetArea, events);
+    splitDockWidget(events, passCounts, Qt::Horizontal);
+    tabifyDockWidget(map, dock(Panel::Site3D));
+    for (const PanelSpec& p : std::as_const(m_panels)) {
+        if (isMainPanel(p.key) || m_docks.value(p.key) == side)
+            continue;
+        tabifyDockWidget(p.place == PanelPlace::SideColumn ? side : passCounts, m_docks.value(p.key));
+    }
+    for (QDockWidget* d : std::as_const(m_docks))
+        d->show();
+    for (QDockWidget* d : frontDocks())
+        d->raise();
+    if (side)
+        resizeDocks({fleet, map, side}, {420, 900, 380}, Qt::Horizontal);
+    else
+        resizeDocks({fleet, map}, {420, 1280}, Qt::Horizontal);
+    resizeDocks({map, events}, {700, 220}, Qt::Vertical);
+}
+
+void MainWindow::focusPanel(const QString& key) {
+    QDockWidget* d = m_docks.value(key);
     if (d == nullptr)
         return;
     d->show();
     d->raise();
-    QWidget* w = panelWidget(panel);
+    QWidget* w = panelWidget(key);
     if (w == nullptr)
         return;
     // The panel's first control that takes the keyboard (or the panel itself).
@@ -347,40 +457,27 @@ void MainWindow::focusPanel(Panel panel) {
     target->setFocus(Qt::ShortcutFocusReason);
 }
 
-void MainWindow::createPanelShortcuts(QMenu* view) {
-    // A keyboard-only path to every panel (also listed in Help > Keyboard shortcuts and
-    // docs/keyboard.md).
-    QMenu* go = view->addMenu(tr("&Go to panel"));
-    int n = 1;
-    for (Panel p : panels()) {
-        QAction* a = go->addAction(panelTitle(p));
-        a->setObjectName(QStringLiteral("action-go-") + panelKey(p));
-        a->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_0 + n++)));
-        a->setShortcutContext(Qt::ApplicationShortcut);
-        connect(a, &QAction::triggered, this, [this, p] { focusPanel(p); });
-        addAction(a); // active even when the menu bar is hidden
-    }
-}
-
 QString MainWindow::keyboardHelpText() const {
     // The go-to-panel lines come from the window's own Ctrl+N actions (the main panels and the
     // ones a protocol module adds, e.g. Ctrl+9 Production), so the help never lists fewer than exist.
-    QStringList lines{
-        tr("F12 or Ctrl+Shift+Space: STOP ALL"),
-        tr("Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop"),
-        tr("Dispatch: F6 next truck needing work, Alt+T task, Alt+D destination, Alt+M pick on map, "
-           "Ctrl+Enter assign, Alt+R reset"),
+    QStringList lines{tr("F12 or Ctrl+Shift+Space: STOP ALL")};
+    for (const PanelSpec& p : m_panels)
+        if (!p.keyboardHelp.isEmpty())
+            lines << p.keyboardHelp;
+    lines << QStringList{
         tr("Site map: arrows pan, +/- or wheel zoom (about the cursor), F follow the selected machine, Home "
            "whole site, Shift+Home the fleet, S the selection, A the area under the cursor, C centre; "
            "double-click selects; click an edge arrow to go to machines outside the view"),
-        tr("Ctrl+Shift+N: night palette"),
-        tr("Ctrl+Shift+P: save a screenshot"),
+        tr("Ctrl+Shift+N: night palette"), tr("Ctrl+Shift+P: save a screenshot"),
         tr("Go to a panel (raises it and puts the keyboard focus in it):")};
+    QStringList go;
     for (const QAction* a : actions())
         if (a->objectName().startsWith(QLatin1String("action-go-")) && !a->shortcut().isEmpty())
-            lines << QStringLiteral("    %1: %2")
-                         .arg(a->shortcut().toString(QKeySequence::NativeText),
-                              QString(a->text()).remove(QLatin1Char('&')));
+            go << QStringLiteral("    %1: %2")
+                      .arg(a->shortcut().toString(QKeySequence::NativeText),
+                           QString(a->text()).remove(QLatin1Char('&')));
+    go.sort(); // Ctrl+1 … Ctrl+9, whichever module added its panel when
+    lines << go;
     lines << tr("Tab / Shift+Tab: next / previous control in a panel; arrows move in lists and tables; Space "
                 "or Enter presses the focused button")
           << tr("See docs/keyboard.md for the full list.");
@@ -391,21 +488,24 @@ void MainWindow::fitDocksToWindow() {
     const int w = width(), h = height();
     if (w < 200 || h < 200)
         return;
-    // Fleet list a quarter, the map the most, the JAUS/teleop column about a quarter; the bottom row a
+    // Fleet list a quarter, the map the most, the modules' side column about a quarter; the bottom row a
     // quarter of the height. Minimum sizes of the panels still apply.
-    resizeDocks({m_docks[Panel::Fleet], m_docks[Panel::SiteMap], m_docks[Panel::JausControl]},
-                {w * 24 / 100, w * 50 / 100, w * 26 / 100}, Qt::Horizontal);
-    // On a short screen (a 1366x768 field laptop) the bottom row (event log, dispatch) gets 40 %
-    // and the dispatch side half of it, so the dispatch table shows trucks, not two rows.
+    if (QDockWidget* side = m_sideColumn)
+        resizeDocks({dock(Panel::Fleet), dock(Panel::SiteMap), side},
+                    {w * 24 / 100, w * 50 / 100, w * 26 / 100}, Qt::Horizontal);
+    else
+        resizeDocks({dock(Panel::Fleet), dock(Panel::SiteMap)}, {w * 24 / 100, w * 76 / 100}, Qt::Horizontal);
+    // On a short screen (a 1366x768 field laptop) the bottom row (event log, the tables beside the pass
+    // counts) gets 40 % and its right side half of it, so a table there shows its rows, not two.
     // 30 % left the event log four table rows at 1920x1080 (40 % three at 1366x768, German two
     // rows of controls more); 36 % / 42 % give it ten / six rows and the map
     // still ~60 % of the height.
     const int bottom = h < 900 ? 42 : 36;
-    const int dispatch = w < 1600 ? 50 : 55; // at 1920: all ten columns of the dispatch table
-    resizeDocks({m_docks[Panel::SiteMap], m_docks[Panel::EventLog]},
-                {h * (100 - bottom) / 100, h * bottom / 100}, Qt::Vertical);
-    resizeDocks({m_docks[Panel::EventLog], m_docks[Panel::PassCounts]},
-                {w * (100 - dispatch) / 100, w * dispatch / 100}, Qt::Horizontal);
+    const int right = w < 1600 ? 50 : 55; // at 1920: all ten columns of a table of ten
+    resizeDocks({dock(Panel::SiteMap), dock(Panel::EventLog)}, {h * (100 - bottom) / 100, h * bottom / 100},
+                Qt::Vertical);
+    resizeDocks({dock(Panel::EventLog), dock(Panel::PassCounts)}, {w * (100 - right) / 100, w * right / 100},
+                Qt::Horizontal);
     m_fitPending = false;
 }
 
@@ -423,6 +523,14 @@ void MainWindow::resizeEvent(QResizeEvent* event) {
 
 void MainWindow::showEvent(QShowEvent* event) {
     QMainWindow::showEvent(event);
+    if (m_raisePending) {
+        m_raisePending = false;
+        for (QDockWidget* d : frontDocks())
+            d->raise();
+        for (const QString& key : std::as_const(m_raisedPanels))
+            if (QDockWidget* d = dock(key))
+                d->raise();
+    }
     if (m_fitPending) // the size was set before show (screenshot, restored geometry without a state)
         fitDocksToWindow();
 }
@@ -435,9 +543,8 @@ void MainWindow::resetLayout() {
     if (!restoreState(m_defaultState, kLayoutVersion))
         applyDefaultLayout();
     fitDocksToWindow();
-    m_docks[Panel::SiteMap]->raise();
-    m_docks[Panel::JausControl]->raise();
-    m_docks[Panel::Dispatch]->raise();
+    for (QDockWidget* d : frontDocks())
+        d->raise();
     m_bannerBar->setVisible(!m_bannerText.isEmpty()); // a saved layout never hides a failed stop
 }
 
@@ -457,7 +564,9 @@ bool MainWindow::restoreLayout() {
         return false;
     restoreGeometry(geometry);
     const bool ok = restoreState(state, kLayoutVersion);
-    m_fitPending = !ok;                               // the operator's own sizes stay
+    // The operator's own sizes and the tabs they had in front stay.
+    m_fitPending = !ok;
+    m_raisePending = m_raisePending && !ok;
     m_bannerBar->setVisible(!m_bannerText.isEmpty()); // a saved layout never hides a failed stop
     return ok;
 }

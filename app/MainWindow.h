@@ -3,6 +3,7 @@
 // STOP ALL is always visible, and a status bar with one indicator per protocol link.
 #include <QMainWindow>
 #include <QMap>
+#include <QStringList>
 
 #include "app/LinkIndicator.h"
 
@@ -14,7 +15,25 @@ class QToolButton;
 
 namespace ocu {
 
-enum class Panel { Fleet, SiteMap, Site3D, JausControl, Teleop, PassCounts, EventLog, Dispatch };
+// The panels every console has. A protocol module adds its own (addPanels(), app/ProtocolModule.h).
+enum class Panel { Fleet, SiteMap, Site3D, PassCounts, EventLog };
+
+// Where a module's panel goes in the default layout.
+enum class PanelPlace {
+    SideColumn,       // right of the map: the first such panel splits off a column, the others tab into it
+    BesidePassCounts, // a tab beside the pass counts along the bottom
+};
+
+// A panel contributed by a protocol module.
+struct PanelSpec {
+    QString key;   // stable name: the dock's object name "dock-<key>" (saved layouts) and `--view <key>`
+    QString title; // the dock's title, the View menu's and the go-to action's text
+    PanelPlace place = PanelPlace::SideColumn;
+    int shortcutDigit = 0; // Ctrl+<digit> raises it and focuses its first control (docs/keyboard.md); 0: none
+    bool front = false;    // the visible tab of its group in the default layout
+    bool scrolls = true;   // a panel of controls scrolls in a dock narrower than it needs
+    QString keyboardHelp;  // its line in Help › Keyboard shortcuts (empty: none)
+};
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -22,15 +41,36 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    static QList<Panel> panels();
-    static QString
-    panelKey(Panel panel); // stable name: fleet, map, 3d, jaus, teleop, passcounts, events, dispatch
-    QString panelTitle(Panel panel) const;
+    // Stable names of the main panels: fleet, map, 3d, passcounts, events.
+    static QString panelKey(Panel panel);
+    // Every panel of this window, the modules' ones included, in the order of their Ctrl+N shortcuts.
+    QStringList panelKeys() const;
+    // The same for a window that has the main panels and these of the modules (the command line's --view).
+    static QStringList panelKeysWith(const QList<PanelSpec>& modulePanels);
+    QString panelTitle(Panel panel) const { return panelTitle(panelKey(panel)); }
+    QString panelTitle(const QString& key) const;
 
-    QDockWidget* dock(Panel panel) const { return m_docks.value(panel); }
+    // Adds the docks of a protocol module's panels (before the window is shown or a layout restored) and lays
+    // the default layout out again with them.
+    void addPanels(const QList<PanelSpec>& panels);
+
+    QDockWidget* dock(Panel panel) const { return dock(panelKey(panel)); }
+    QDockWidget* dock(const QString& key) const { return m_docks.value(key); }
     // Replaces the panel's content; the window takes ownership.
-    void setPanelWidget(Panel panel, QWidget* widget);
-    QWidget* panelWidget(Panel panel) const;
+    void setPanelWidget(Panel panel, QWidget* widget) { setPanelWidget(panelKey(panel), widget); }
+    void setPanelWidget(const QString& key, QWidget* widget);
+    QWidget* panelWidget(Panel panel) const { return panelWidget(panelKey(panel)); }
+    QWidget* panelWidget(const QString& key) const;
+
+    // Brings the panel to the front of its tab group, also over the default layout's front tabs on the first
+    // show (a saved layout restored later still wins).
+    void raisePanel(Panel panel) { raisePanel(panelKey(panel)); }
+    void raisePanel(const QString& key);
+
+    // What STOP ALL reaches, one phrase per protocol module, for its tooltip; the protocols of this build for
+    // Help › About.
+    void setStopAllReach(const QStringList& reach);
+    void setAboutProtocols(const QStringList& protocols);
 
     QAction* stopAllAction() const { return m_stopAll; }
     QToolButton* stopAllButton() const { return m_stopAllButton; }
@@ -62,7 +102,8 @@ public:
     // possible (offscreen).
     void showFirstStart();
     // Raises the panel and puts the keyboard focus on its first control (Ctrl+1 … Ctrl+8).
-    void focusPanel(Panel panel);
+    void focusPanel(Panel panel) { focusPanel(panelKey(panel)); }
+    void focusPanel(const QString& key);
     // Help › Keyboard shortcuts: every Ctrl+N go-to-panel action of the window, modules' ones included.
     QString keyboardHelpText() const;
 
@@ -77,14 +118,23 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
-    void createDocks();
+    void createDock(const PanelSpec& spec);
     void createToolBar();
     void createMenus();
+    void fillPanelMenus();
     void createStatusBar();
     void applyDefaultLayout();
-    void createPanelShortcuts(QMenu* view);
+    QList<QDockWidget*> frontDocks() const;
 
-    QMap<Panel, QDockWidget*> m_docks;
+    QList<PanelSpec> m_panels; // every panel, in the order of their shortcuts
+    QMap<QString, QDockWidget*> m_docks;
+    QMap<QString, QAction*> m_goActions;
+    QDockWidget* m_sideColumn = nullptr; // the first module panel right of the map
+    QMenu* m_viewMenu = nullptr;
+    QMenu* m_goMenu = nullptr;
+    QAction* m_resetAction = nullptr;
+    QStringList m_aboutProtocols;
+    QStringList m_raisedPanels; // raisePanel() before the first show
     QMap<QString, LinkIndicator*> m_links;
     QAction* m_stopAll = nullptr;
     QToolButton* m_stopAllButton = nullptr;
@@ -96,7 +146,8 @@ private:
     QByteArray m_defaultState;
     int m_unacked = 0;
     bool m_night = false;
-    bool m_fitPending = true; // default layout not yet shared out for the real window size
+    bool m_fitPending = true;    // default layout not yet shared out for the real window size
+    bool m_raisePending = false; // the default layout's front tabs to raise on the first show
 };
 
 } // namespace ocu

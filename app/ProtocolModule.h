@@ -1,10 +1,11 @@
 #pragma once
-// One protocol as the console sees it: its bridge, the panels it fills, the name of its link indicator and
-// the headless commands it adds. SiteRuntime holds one module per protocol of this build and iterates over
-// them; it names no protocol itself. The modules live in app/modules/ (they may include a bridge and its
-// widgets) and are listed by CMake in the generated makeProtocolModules(): a protocol left out of the build
-// (OCU_SKIP_DIRS) has no module. Map and 3D layers come through the module's bridge (FleetBridge::siteMap,
-// passCountLayer); the protocol's simulators are the sim-side modules (sim/SimModule.h).
+// One protocol as the console sees it: its bridge, the panels it adds and fills, the name of its link
+// indicator, the headless commands it adds and the capabilities it offers (typed accessors, never a cast or a
+// lookup by name). SiteRuntime holds one module per protocol of this build and iterates over them; it names
+// no protocol itself. The modules live in app/modules/ (they may include a bridge and its widgets) and are
+// listed by CMake in the generated makeProtocolModules(): a protocol left out of the build (OCU_SKIP_DIRS)
+// has no module. Map and 3D layers come through the module's bridge (FleetBridge::siteMap, passCountLayer);
+// the protocol's simulators are the sim-side modules (sim/SimModule.h).
 #include "app/MainWindow.h"
 #include "models/MachineState.h"
 #include "protocols/common/GeoFrame.h"
@@ -21,6 +22,8 @@ namespace ocu {
 
 class FleetBridge;
 class HeadlessCommands;
+class PassCountDock;
+class ProductionModel;
 class MessageTap;
 class FleetContext;
 class OwnPosition;
@@ -30,16 +33,18 @@ class ProductionModel;
 struct ModuleStart {
     const SiteConfig& config;
     const GeoFrame& frame;
-    FleetContext* fleet;       // the bridge is added to it
-    QObject* owner;            // owns the bridge
-    MessageTap* tap = nullptr; // the flight recorder's tap on inbound messages (nullptr: none)
+    FleetContext* fleet;             // the bridge is added to it
+    QObject* owner;                  // owns the bridge
+    MessageTap* tap = nullptr;       // the flight recorder's tap on inbound messages (nullptr: none)
+    QStringList* problems = nullptr; // what else did not start (each becomes an alarm)
 };
 
 // What a module needs to fill its panels.
 struct ModulePanels {
-    MainWindow& window;
+    MainWindow& window; // the main panels are filled (map, 3D) when a module populates
     FleetContext* fleet;
     const SiteConfig& config;
+    PassCountDock& passCounts; // the pass-count panel and what a module adds beside it
 };
 
 class ProtocolModule {
@@ -66,13 +71,17 @@ public:
         (void)config;
     }
 
-    // The main window's panels this module fills, with populate() when its bridge exists, and else with
-    // notConfiguredText().
-    virtual QList<Panel> panels() const { return {}; }
+    // The panels this module adds to the main window, filled by populate() when its bridge exists, and else
+    // with notConfiguredText().
+    virtual QList<PanelSpec> panels() const { return {}; }
     virtual void populate(const ModulePanels& ui) { (void)ui; }
     virtual QString notConfiguredText() const { return {}; }
+    // What STOP ALL does on this protocol, for its tooltip ("JAUS emergency stop to every ...").
+    virtual QString stopAllReach() const { return {}; }
+    // The protocol for Help › About, with its standards.
+    virtual QString aboutName() const { return displayName(); }
 
-    // The production model fed by the protocol's production reports (the shift report), or nullptr.
+    // Capabilities. The production (tonnes, loads) of the machines this module's bridge reports, or nullptr.
     virtual ProductionModel* production() const { return nullptr; }
 
     // Once started: the headless monitor's commands and queries this protocol adds (app/HeadlessCommands.h),

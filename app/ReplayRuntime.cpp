@@ -3,6 +3,7 @@
 #include "app/ConsoleApp.h"
 #include "app/HeadlessMonitor.h"
 #include "app/MainWindow.h"
+#include "app/ProtocolModule.h"
 #include "app/Screenshot.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "app/Site3DFeed.h"
@@ -67,17 +68,11 @@ LinkIndicator::State indicatorState(LinkState s) {
     return LinkIndicator::State::Down;
 }
 
+// The protocol's name for the operator, as its module says it (the recording's key when this build has none).
 QString protocolLabel(const QString& protocol) {
-    switch (protocolFromString(protocol)) {
-    case Protocol::Jaus:
-        return QStringLiteral("JAUS");
-    case Protocol::Iso23725:
-        return QStringLiteral("ISO 23725");
-    case Protocol::Osyris:
-        return QStringLiteral("OSYRIS");
-    case Protocol::Other:
-        break;
-    }
+    for (const auto& m : makeProtocolModules())
+        if (toText(m->protocol()) == protocol)
+            return m->displayName();
     return protocol;
 }
 
@@ -98,12 +93,10 @@ EventLogWidget* eventLog(AlarmModel* alarms) {
 
 } // namespace
 
-void populateReplayWindow(MainWindow& window, ReplayController* c) {
-    const Recording* rec = c->recording();
-    FleetModel* fleet = c->fleet();
-    auto* selection = new FleetSelection(fleet, &window);
+namespace {
 
-    // The banner: impossible to mistake a replay for the live site.
+// The banner, impossible to mistake a replay for the live site, and STOP ALL greyed out.
+void addReplayBanner(MainWindow& window, const Recording* rec) {
     auto* banner = new QToolBar(QCoreApplication::translate("Replay", "Replay"), &window);
     banner->setObjectName(QStringLiteral("replayBanner"));
     banner->setMovable(false);
@@ -130,8 +123,11 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
         window.stopAllButton()->setStyleSheet(
             QStringLiteral("QToolButton { background: #9e9e9e; color: #eeeeee; }"));
     }
+}
 
-    // Timeline.
+// The timeline under the panels, and its keys.
+void addTimeline(MainWindow& window, ReplayController* c) {
+    const Recording* rec = c->recording();
     auto* bar = new QToolBar(QCoreApplication::translate("Replay", "Timeline"), &window);
     bar->setObjectName(QStringLiteral("replayTimelineBar"));
     bar->setMovable(false);
@@ -181,8 +177,11 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     });
     key(QKeySequence(Qt::Key_Home), [c] { c->seek(c->startMs()); });
     key(QKeySequence(Qt::Key_End), [c] { c->seek(c->endMs()); });
+}
 
-    // Link indicators: one per protocol the recording has links of.
+// Link indicators: one per protocol the recording has links of.
+void addLinkIndicators(MainWindow& window, ReplayController* c) {
+    const Recording* rec = c->recording();
     QHash<QString, LinkIndicator*> indicators;
     for (const recording::RecordedLink& l : rec->links(std::numeric_limits<qint64>::min(), rec->endMs()))
         if (!indicators.contains(l.protocol))
@@ -202,8 +201,20 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     };
     QObject::connect(c, &ReplayController::linksReset, &window, showLinks);
     showLinks(rec->linksAt(c->position()));
+}
 
-    // The views, on the replayed models.
+struct ReplayViews {
+    SiteMapView* map = nullptr;
+#ifdef OCU_HAVE_OCU_VIEW3D
+    Site3DFeed* feed = nullptr;
+#endif
+};
+
+// The fleet list, the 2D map, the 3D view and the event log, on the replayed models.
+ReplayViews addViews(MainWindow& window, ReplayController* c) {
+    const Recording* rec = c->recording();
+    FleetModel* fleet = c->fleet();
+    auto* selection = new FleetSelection(fleet, &window);
     auto* list = new FleetListWidget(fleet, selection); // no command gate: no commands
     window.setPanelWidget(Panel::Fleet, list);
     GeoPoint origin;
@@ -246,13 +257,21 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     QObject::connect(c->alarms(), &AlarmModel::unacknowledgedCountChanged, &window,
                      &MainWindow::setUnacknowledgedAlarms);
     window.setUnacknowledgedAlarms(c->alarms()->unacknowledgedCount());
-    const QString off =
-        QCoreApplication::translate("Replay", "Replay: commands are disabled. This panel acts on "
-                                              "live machines only.");
-    window.setPanelWidget(Panel::JausControl, notice(off));
-    window.setPanelWidget(Panel::Teleop, notice(off));
-    window.setPanelWidget(Panel::Dispatch, notice(off)); // (it said "Starting…" for the whole replay)
-    // The OSYRIS pass counts as they were at the replay time (overlay on the map, the panel's histogram).
+#ifdef OCU_HAVE_OCU_VIEW3D
+    return {map, feed};
+#else
+    return {map};
+#endif
+}
+
+// The pass counts as they were at the replay time (overlay on the map, the panel's histogram, the 3D
+// surface).
+void addPassCounts(MainWindow& window, ReplayController* c, const ReplayViews& v) {
+    const Recording* rec = c->recording();
+    SiteMapView* map = v.map;
+#ifdef OCU_HAVE_OCU_VIEW3D
+    Site3DFeed* feed = v.feed;
+#endif
     if (rec->hasPassCounts()) {
         auto* passPanel = new PassCountPanel;
         passPanel->setLayer(c->passCounts());
@@ -285,8 +304,26 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     } else {
         window.setPanelWidget(Panel::PassCounts,
                               notice(QCoreApplication::translate("Replay", "This recording holds no pass "
-                                                                           "counts (no OSYRIS station).")));
+                                                                           "counts.")));
     }
+}
+
+} // namespace
+
+void populateReplayWindow(MainWindow& window, ReplayController* c) {
+    // The protocol modules' panels, as in the live console, each saying that commands are off.
+    const QString off =
+        QCoreApplication::translate("Replay", "Replay: commands are disabled. This panel acts on "
+                                              "live machines only.");
+    for (const auto& m : makeProtocolModules()) {
+        window.addPanels(m->panels());
+        for (const PanelSpec& p : m->panels())
+            window.setPanelWidget(p.key, notice(off));
+    }
+    addReplayBanner(window, c->recording());
+    addTimeline(window, c);
+    addLinkIndicators(window, c);
+    addPassCounts(window, c, addViews(window, c));
 }
 
 static int runExports(const Recording& rec, const CommandLineOptions& o) {

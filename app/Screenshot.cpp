@@ -24,9 +24,9 @@ QString saveScreenshot(MainWindow& window, const QString& view, const QString& f
     const QString panel = whole ? view.mid(4) : view;
     if (view != QLatin1String("all")) {
         target = nullptr;
-        for (Panel p : MainWindow::panels()) {
-            if (MainWindow::panelKey(p) == panel) {
-                QDockWidget* d = window.dock(p);
+        for (const QString& key : window.panelKeys()) {
+            if (key == panel) {
+                QDockWidget* d = window.dock(key);
                 d->show();
                 d->raise(); // a tabbed panel must be the visible tab to be painted
                 // A little event loop: a panel may build its content on its first paint (the 3D view makes

@@ -16,7 +16,7 @@ QJsonObject writeShiftReport(ProductionModel* model, const FleetBridge* mapSourc
     if (!model) {
         o[QStringLiteral("ok")] = false;
         o[QStringLiteral("message")] =
-            QStringLiteral("no production model in this console (no ISO 23725 link)");
+            QStringLiteral("no production model in this console (no link reports production)");
         o[QStringLiteral("written")] = written;
         return o;
     }

@@ -2,11 +2,9 @@
 #include "app/ShiftReportCommand.h"
 
 #include "app/ConsoleApp.h"
-#ifdef OCU_HAVE_COVERAGE
-#include "app/CompactionSetup.h"
-#endif
 #include "app/LogRouting.h"
 #include "app/MainWindow.h"
+#include "app/PassCountDock.h"
 #include "app/ProtocolModule.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "app/Site3DFeed.h"
@@ -28,7 +26,6 @@
 #include "widgets/FleetListWidget.h"
 #include "widgets/PassCountPanel.h"
 #include "widgets/SiteMapView.h"
-#include "widgets/osyris/CrewMessagesPanel.h"
 
 #include <QApplication>
 #include <QDateTime>
@@ -36,19 +33,14 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QPointer>
-#include <QScrollArea>
-#include <QSet>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QSysInfo>
-#include <QTabWidget>
 #include <QTime>
 #include <QTimer>
 #include <QVBoxLayout>
 
 namespace ocu {
-
-class CompactionSession;
 
 struct SiteRuntime::Impl {
     GeoFrame frame;
@@ -59,9 +51,8 @@ struct SiteRuntime::Impl {
     recording::Recorder* recorder = nullptr; // the flight recorder of this run
     QStringList startProblems;
     bool stopped = false;
-    CompactionSession* compaction = nullptr; // app/CompactionSetup
 
-    // The site map: what the bridges offer (today the ISO 23725 AHS map), in module order.
+    // The site map: what the bridges offer, in module order.
     SiteMapData mergedMap() const {
         SiteMapData out;
         bool first = true;
@@ -82,13 +73,23 @@ struct SiteRuntime::Impl {
         }
         return out;
     }
-    // The pass-count layer: the first bridge that offers one (today the OSYRIS station's).
+    // The pass-count layer: the first bridge that offers one.
     const PassCountLayer* passLayer() const {
         for (const auto& m : modules)
             if (FleetBridge* b = m->bridge(); b && b->passCountLayer())
                 return b->passCountLayer();
         return nullptr;
     }
+
+    // populate(), in its steps.
+    void addModulePanels(MainWindow& window) const;
+    SiteMapView* populateFleetAndMap(MainWindow& window, const SiteConfig& config, SiteRuntime* q) const;
+    QObject* populate3D(MainWindow& window, const SiteConfig& config) const;
+    void populateModules(MainWindow& window, const SiteConfig& config, PassCountDock& passCounts) const;
+    void connectPassCounts(PassCountPanel* panel, SiteMapView* map, QObject* feed) const;
+    void connectBridges(MainWindow& window, SiteMapView* map, PassCountPanel* passPanel, QObject* feed,
+                        SiteRuntime* q) const;
+    void connectAlarmsAndStops(MainWindow& window) const;
 };
 
 SiteRuntime::SiteRuntime(SiteConfig config, QObject* parent)
@@ -119,14 +120,11 @@ void SiteRuntime::start() {
     // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down and the
     // reason is an alarm.
     for (const auto& m : d.modules) {
-        const QString e =
-            m->start({m_config, d.frame, d.ctx, this, d.recorder ? d.recorder->messageTap() : nullptr});
+        const QString e = m->start({m_config, d.frame, d.ctx, this,
+                                    d.recorder ? d.recorder->messageTap() : nullptr, &d.startProblems});
         if (!e.isEmpty())
             d.startProblems << e;
     }
-#ifdef OCU_HAVE_COVERAGE
-    d.compaction = startCompaction(m_config, d.frame, d.passLayer(), this, &d.startProblems);
-#endif
     d.own = new OwnPosition(d.frame, this);
     const auto& op = m_config.ownPosition;
     if (op.source == "system")
@@ -147,7 +145,7 @@ void SiteRuntime::start() {
                 connect(b, &FleetBridge::siteMapChanged, d.recorder,
                         [this] { m_impl->recorder->recordSiteMap(m_impl->mergedMap()); });
         d.recorder->recordSiteMap(d.mergedMap());
-        // The OSYRIS pass counts: the grid now, then its changes (at most once a second).
+        // The pass counts: the grid now, then its changes (at most once a second).
         if (const PassCountLayer* layer = d.passLayer()) {
             d.recorder->watchPassCounts(layer);
             for (const auto& m : d.modules)
@@ -202,7 +200,7 @@ void SiteRuntime::stop() {
     if (d.stopped)
         return;
     d.stopped = true;
-    // Stacks first (JAUS releases control after zero drive commands), then the simulators.
+    // Stacks first (a stack may still send, e.g. release its control), then the simulators.
     for (const auto& m : d.modules)
         m->stop();
     if (d.sim)
@@ -280,44 +278,75 @@ static LinkIndicator::State indicatorState(LinkState s) {
 
 void SiteRuntime::populate(MainWindow& window) {
     Impl& d = *m_impl;
-    FleetContext* ctx = d.ctx;
+    d.addModulePanels(window);
+    SiteMapView* map = d.populateFleetAndMap(window, m_config, this);
+    QObject* feed = d.populate3D(window, m_config);
 
-    // One link indicator per protocol of this build, in module order.
-    for (const auto& m : d.modules)
+    auto* passPanel = new PassCountPanel;
+    passPanel->setLayer(d.passLayer());
+    PassCountDock passCounts(passPanel);
+    d.populateModules(window, m_config, passCounts);
+    window.setPanelWidget(Panel::PassCounts, passCounts.content());
+    d.connectPassCounts(passPanel, map, feed);
+    d.connectBridges(window, map, passPanel, feed, this);
+    d.connectAlarmsAndStops(window);
+    for (const QString& p : std::as_const(d.startProblems))
+        window.statusBar()->showMessage(p, 15000);
+}
+
+// The modules' panels, one link indicator per module (in module order), what STOP ALL reaches and the
+// protocols for Help › About.
+void SiteRuntime::Impl::addModulePanels(MainWindow& window) const {
+    QStringList reach, about;
+    for (const auto& m : modules) {
+        window.addPanels(m->panels());
         window.addLinkIndicator(m->displayName());
+        if (const QString r = m->stopAllReach(); !r.isEmpty())
+            reach << r;
+        about << m->aboutName();
+    }
+    window.setStopAllReach(reach);
+    window.setAboutProtocols(about);
+}
 
+SiteMapView* SiteRuntime::Impl::populateFleetAndMap(MainWindow& window, const SiteConfig& config,
+                                                    SiteRuntime* q) const {
     auto* list = new FleetListWidget(ctx->fleet(), ctx->selection());
     list->setCommandGate(ctx->gate());
     window.setPanelWidget(Panel::Fleet, list);
 
     auto* map = new SiteMapView;
     map->setFleet(ctx->fleet(), ctx->selection());
-    map->setGeoFrame(d.frame);
-    map->setSiteMap(d.mergedMap());
-    map->setPassCountLayer(d.passLayer());
+    map->setGeoFrame(frame);
+    map->setSiteMap(mergedMap());
+    map->setPassCountLayer(passLayer());
     window.setPanelWidget(Panel::SiteMap, map);
     connect(list, &FleetListWidget::centerOnMapRequested, map, &SiteMapView::centerOnMachine);
     connect(map, &SiteMapView::contextMenuRequested, list, &FleetListWidget::showContextMenu);
-    connect(d.own, &OwnPosition::fixChanged, map, &SiteMapView::setOwnFix);
+    connect(own, &OwnPosition::fixChanged, map, &SiteMapView::setOwnFix);
     // Frame the whole site once the first machines have arrived (unless the operator has taken over).
     QTimer::singleShot(1500, map, [map] { map->refitIfAuto(); });
     // The background raster named by the site (the simulated pit's hillshade by default).
-    if (!m_config.background.raster.empty()) {
-        connect(map, &SiteMapView::backgroundFailed, this, [this](const QString& msg) {
+    if (!config.background.raster.empty()) {
+        AlarmModel* alarms = ctx->alarms();
+        connect(map, &SiteMapView::backgroundFailed, q, [alarms](const QString& msg) {
             qCWarning(lcApp).noquote() << "map background:" << msg;
-            m_impl->ctx->alarms()->add(makeEvent(EventSeverity::Warning, EventKind::Info, {},
-                                                 tr("Map background not shown: %1").arg(msg),
-                                                 QStringLiteral("gui")));
+            alarms->add(makeEvent(EventSeverity::Warning, EventKind::Info, {},
+                                  tr("Map background not shown: %1").arg(msg), QStringLiteral("gui")));
         });
-        map->loadBackground(QString::fromStdString(m_config.background.raster));
+        map->loadBackground(QString::fromStdString(config.background.raster));
     }
+    return map;
+}
 
+// The 3D view and its feed (nullptr without the 3D view).
+QObject* SiteRuntime::Impl::populate3D(MainWindow& window, const SiteConfig& config) const {
 #ifdef OCU_HAVE_OCU_VIEW3D
     auto* view3d = new Site3DView;
     auto* feed = new Site3DFeed(view3d, ctx->fleet(), ctx->selection(), view3d);
-    feed->setPassCountLayer(d.passLayer());
-    if (!m_config.terrain.dem.empty()) {
-        auto dem = loadTerrainDem(m_config.terrain.dem, d.frame);
+    feed->setPassCountLayer(passLayer());
+    if (!config.terrain.dem.empty()) {
+        auto dem = loadTerrainDem(config.terrain.dem, frame);
         if (dem)
             feed->setTerrain(dem.value());
         else
@@ -327,69 +356,59 @@ void SiteRuntime::populate(MainWindow& window) {
                           QStringLiteral("gui")));
     }
     window.setPanelWidget(Panel::Site3D, view3d);
-#ifdef OCU_HAVE_COVERAGE
-    attachCompaction3D(d.compaction, view3d);
-#endif
+    return feed;
 #else
-    QObject* feed = nullptr;
+    (void)config;
     window.setPanelWidget(Panel::Site3D,
                           notice(tr("This build has no 3D view (configured with OCU_WITH_VTK=OFF).")));
+    return nullptr;
 #endif
+}
 
-    auto* passPanel = new PassCountPanel;
-    passPanel->setLayer(d.passLayer());
-    // Lifts and filters of the layer's source; crew messages beside the pass counts.
-    QWidget* passDock = passPanel;
-    for (const auto& module : d.modules) {
-        FleetBridge* b = module->bridge();
-        if (auto* c = dynamic_cast<PassCountControls*>(b); c && b->passCountLayer() == d.passLayer())
-            passPanel->setControls(c);
-        if (auto* crew = dynamic_cast<CrewMessaging*>(b); crew && passDock == passPanel) {
-            auto* crewPanel = new CrewMessagesPanel;
-            crewPanel->setCommandGate(ctx->gate());
-            crewPanel->setBridge(b, crew);
-            auto* tabs = new QTabWidget;
-            // The panel (summary, lift, filters, histogram) scrolls inside its tab: beside it the areas panel
-            // stays in view in a low dock (1366 x 768).
-            auto* passScroll = new QScrollArea;
-            passScroll->setFrameShape(QFrame::NoFrame);
-            passScroll->setWidgetResizable(true);
-            passScroll->setWidget(passPanel);
-            tabs->addTab(passScroll, tr("Pass counts"));
-            const int crewTab = tabs->addTab(crewPanel, tr("Crew messages"));
-            // Unread messages in the tab's title: seen from any tab of the panel.
-            connect(crewPanel, &CrewMessagesPanel::unreadChanged, tabs, [tabs, crewTab](int unread) {
-                tabs->setTabText(crewTab,
-                                 unread > 0 ? tr("Crew messages (%1)").arg(unread) : tr("Crew messages"));
-            });
-            passDock = tabs;
-        }
+// The protocols' own panels (a module without its site section says so in them) and what they add beside the
+// pass counts.
+void SiteRuntime::Impl::populateModules(MainWindow& window, const SiteConfig& config,
+                                        PassCountDock& passCounts) const {
+    bool liveBesidePassCounts = false;
+    for (const auto& m : modules) {
+        if (m->bridge())
+            m->populate({window, ctx, config, passCounts});
+        else
+            for (const PanelSpec& p : m->panels())
+                window.setPanelWidget(p.key, notice(m->notConfiguredText()));
+        for (const PanelSpec& p : m->panels())
+            liveBesidePassCounts |= p.place == PanelPlace::BesidePassCounts && m->bridge();
     }
-#ifdef OCU_HAVE_COVERAGE
-    window.setPanelWidget(Panel::PassCounts, buildCompactionGui(d.compaction, map, passDock));
-#else
-    window.setPanelWidget(Panel::PassCounts, passDock);
-#endif
-    connect(passPanel, &PassCountPanel::paletteChanged, map, &SiteMapView::setPassPalette);
-    connect(passPanel, &PassCountPanel::targetChanged, map, &SiteMapView::setPassTarget);
-#ifdef OCU_HAVE_OCU_VIEW3D
-    // The 3D surface in the 2D map's colours, cell for cell (passCountColor with the same palette and
-    // target).
-    feed->setPassPalette(map->passPalette());
-    feed->setPassTarget(map->passTarget());
-    connect(passPanel, &PassCountPanel::paletteChanged, feed, &Site3DFeed::setPassPalette);
-    connect(passPanel, &PassCountPanel::targetChanged, feed, &Site3DFeed::setPassTarget);
-#endif
+    // A site with pass counts shows them in front of a module's notice that shares their place (a saved
+    // layout still wins, it is restored after this).
+    if (!liveBesidePassCounts && passLayer())
+        window.raisePanel(Panel::PassCounts);
+}
 
-    for (const auto& module : d.modules) {
+// The pass-count panel's palette and target on the 2D map, and on the 3D surface cell for cell.
+void SiteRuntime::Impl::connectPassCounts(PassCountPanel* panel, SiteMapView* map, QObject* feed) const {
+    connect(panel, &PassCountPanel::paletteChanged, map, &SiteMapView::setPassPalette);
+    connect(panel, &PassCountPanel::targetChanged, map, &SiteMapView::setPassTarget);
+#ifdef OCU_HAVE_OCU_VIEW3D
+    auto* f = static_cast<Site3DFeed*>(feed);
+    f->setPassPalette(map->passPalette());
+    f->setPassTarget(map->passTarget());
+    connect(panel, &PassCountPanel::paletteChanged, f, &Site3DFeed::setPassPalette);
+    connect(panel, &PassCountPanel::targetChanged, f, &Site3DFeed::setPassTarget);
+#else
+    (void)feed;
+#endif
+}
+
+// Each bridge's site map and pass counts into the views, its link into its indicator; data age per protocol.
+void SiteRuntime::Impl::connectBridges(MainWindow& window, SiteMapView* map, PassCountPanel* passPanel,
+                                       QObject* feed, SiteRuntime* q) const {
+    for (const auto& module : modules) {
         FleetBridge* b = module->bridge();
         if (!b)
             continue;
-#ifdef OCU_HAVE_COVERAGE
-        watchCompactionCounts(d.compaction, b); // the areas' statistics follow the counts
-#endif
-        connect(b, &FleetBridge::siteMapChanged, map, [this, map, feed] {
-            const SiteMapData m = m_impl->mergedMap();
+        connect(b, &FleetBridge::siteMapChanged, map, [q, map, feed] {
+            const SiteMapData m = q->m_impl->mergedMap();
             map->setSiteMap(m);
 #ifdef OCU_HAVE_OCU_VIEW3D
             static_cast<Site3DFeed*>(feed)->setSiteMap(m);
@@ -405,8 +424,8 @@ void SiteRuntime::populate(MainWindow& window) {
         });
         LinkIndicator* ind = window.linkIndicator(module->displayName());
         ind->watchBridge(b); // reject counters per link in its details
-        // A standing condition of the stack (e.g. JAUS without its group socket); the stacks started in
-        // start(), before the window is filled.
+        // A standing condition of the stack (e.g. a missing group socket); the stacks started in start(),
+        // before the window is filled.
         ind->setNote(b->statusNote());
         connect(b, &FleetBridge::linkChanged, ind, [ind](const LinkStatus& s) {
             ind->setState(indicatorState(s.state),
@@ -415,14 +434,18 @@ void SiteRuntime::populate(MainWindow& window) {
                 ind->setDataAgeMs(s.dataAgeMs);
         });
     }
+#ifndef OCU_HAVE_OCU_VIEW3D
+    (void)feed;
+#endif
     // Data age per protocol from the newest machine data, refreshed every second.
     auto* ages = new QTimer(&window);
     QHash<Protocol, LinkIndicator*> indicators;
-    for (const auto& m : d.modules)
+    for (const auto& m : modules)
         indicators.insert(m->protocol(), window.linkIndicator(m->displayName()));
-    connect(ages, &QTimer::timeout, &window, [ctx, indicators] {
+    FleetContext* fleetContext = ctx;
+    connect(ages, &QTimer::timeout, &window, [fleetContext, indicators] {
         QHash<Protocol, qint64> newest;
-        for (const MachineState& m : ctx->fleet()->machinesSnapshot())
+        for (const MachineState& m : fleetContext->fleet()->machinesSnapshot())
             newest[m.protocol] = std::max(newest.value(m.protocol, 0), m.lastDataMs);
         const qint64 now = QDateTime::currentMSecsSinceEpoch();
         for (auto it = newest.begin(); it != newest.end(); ++it)
@@ -430,17 +453,21 @@ void SiteRuntime::populate(MainWindow& window) {
                 ind->setDataAgeMs(std::max<qint64>(0, now - it.value()));
     });
     ages->start(1000);
+}
 
-    window.setPanelWidget(Panel::EventLog, new EventLogWidget(ctx->alarms()));
-    connect(ctx->alarms(), &AlarmModel::unacknowledgedCountChanged, &window,
+// The event log and the alarm count, STOP ALL, and the red banner of a stop that did not reach everything.
+void SiteRuntime::Impl::connectAlarmsAndStops(MainWindow& window) const {
+    FleetContext* c = ctx;
+    window.setPanelWidget(Panel::EventLog, new EventLogWidget(c->alarms()));
+    connect(c->alarms(), &AlarmModel::unacknowledgedCountChanged, &window,
             &MainWindow::setUnacknowledgedAlarms);
-    window.setUnacknowledgedAlarms(ctx->alarms()->unacknowledgedCount());
-    connect(&window, &MainWindow::stopAllRequested, ctx->gate(),
-            [ctx] { ctx->gate()->stopAll(QStringLiteral("gui")); });
+    window.setUnacknowledgedAlarms(c->alarms()->unacknowledgedCount());
+    connect(&window, &MainWindow::stopAllRequested, c->gate(),
+            [c] { c->gate()->stopAll(QStringLiteral("gui")); });
     // A stop that did not reach every target, or that a machine did not confirm, is shown loudly until the
     // operator dismisses it or a later STOP ALL reaches everything.
     QPointer<MainWindow> win(&window);
-    connect(ctx->gate(), &CommandGate::stopFinished, &window, [win](const CommandResult& r, const QString&) {
+    connect(c->gate(), &CommandGate::stopFinished, &window, [win](const CommandResult& r, const QString&) {
         if (!win)
             return;
         if (r.ok) {
@@ -454,39 +481,13 @@ void SiteRuntime::populate(MainWindow& window) {
                                 ? MainWindow::tr("%1 STOP ALL did NOT reach: %2").arg(when, what)
                                 : MainWindow::tr("%1 STOP did NOT reach: %2").arg(when, what));
     });
-    connect(ctx->gate(), &CommandGate::stopUnconfirmed, &window, [win](const QString&, const QString& text) {
+    connect(c->gate(), &CommandGate::stopUnconfirmed, &window, [win](const QString&, const QString& text) {
         if (!win)
             return;
         const QString line = QTime::currentTime().toString(QStringLiteral("HH:mm:ss ")) + text;
         win->showStopBanner(win->stopBannerVisible() ? win->stopBannerText() + QLatin1Char('\n') + line
                                                      : line);
     });
-
-    // The protocols' own panels; a panel no module of this build fills says so.
-    QSet<Panel> filled{Panel::Fleet, Panel::SiteMap, Panel::Site3D, Panel::PassCounts, Panel::EventLog};
-    bool dispatchLive = false;
-    for (const auto& m : d.modules) {
-        if (m->bridge())
-            m->populate({window, ctx, m_config});
-        else
-            for (Panel p : m->panels())
-                window.setPanelWidget(p, notice(m->notConfiguredText()));
-        for (Panel p : m->panels()) {
-            filled.insert(p);
-            dispatchLive |= p == Panel::Dispatch && m->bridge();
-        }
-    }
-    // A site with pass counts and no haulage to dispatch shows the pass counts in front of the
-    // Dispatch notice that shares their place (a saved layout still wins, it is restored after this).
-    if (!dispatchLive && d.passLayer())
-        window.dock(Panel::PassCounts)->raise();
-    for (Panel p : MainWindow::panels())
-        if (!filled.contains(p))
-            window.setPanelWidget(
-                p,
-                notice(tr("This build has no protocol module for the %1 panel.").arg(window.panelTitle(p))));
-    for (const QString& p : std::as_const(d.startProblems))
-        window.statusBar()->showMessage(p, 15000);
 }
 
 HeadlessMonitor* SiteRuntime::attachHeadless(QIODevice* out) {
@@ -494,9 +495,6 @@ HeadlessMonitor* SiteRuntime::attachHeadless(QIODevice* out) {
     HeadlessMonitor* mon = HeadlessMonitor::attach(d.ctx, out);
     for (const auto& m : d.modules)
         m->registerHeadless(mon->commands());
-#ifdef OCU_HAVE_COVERAGE
-    registerCompactionHeadless(mon->commands(), d.compaction);
-#endif
     return mon;
 }
 
@@ -519,12 +517,11 @@ int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
 }
 
 QJsonObject SiteRuntime::writeShiftReport(const QString& pdf, const QString& csv) {
-    // The first module with a production model (ProtocolModule::production()).
+    const ShiftReportRequest r{pdf, csv, std::nullopt, QString::fromStdString(m_config.name)};
     for (const auto& m : m_impl->modules)
         if (ProductionModel* model = m->production())
-            return ocu::writeShiftReport(model, m->bridge(), m_impl->ctx->fleet(),
-                                         {pdf, csv, std::nullopt, QString::fromStdString(m_config.name)});
-    return ocu::writeShiftReport(nullptr, nullptr, m_impl->ctx->fleet(), {pdf, csv, std::nullopt, {}});
+            return ocu::writeShiftReport(model, m->bridge(), m_impl->ctx->fleet(), r);
+    return ocu::writeShiftReport(nullptr, nullptr, m_impl->ctx->fleet(), r);
 }
 
 } // namespace ocu

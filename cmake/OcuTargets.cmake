@@ -1,14 +1,19 @@
 # Helpers shared by every folder's CMakeLists.txt.
 
-# Adds a source folder when its CMakeLists.txt exists (protocol stacks land one by one).
-# OCU_SKIP_DIRS (cache list) leaves folders out, for working on one part while others are in flux.
-set(OCU_SKIP_DIRS "" CACHE STRING "Source folders to leave out of the build (development aid)")
-macro(ocu_optional_subdirectory dir)
-  file(RELATIVE_PATH _ocu_rel ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/${dir})
-  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${dir}/CMakeLists.txt AND NOT _ocu_rel IN_LIST OCU_SKIP_DIRS)
-    add_subdirectory(${dir})
-  endif()
-endmacro()
+# ocu_protocol_subdirectories(LAYER): the folders of LAYER (STACK, MODELS, WIDGETS, TESTS) of every protocol
+# of this build, as the top-level CMakeLists.txt lists them (OCU_PROTOCOL_<p>_<LAYER>, relative to the source
+# root; TESTS: tests/<layer>/<p> for each existing layer folder). A listed folder without a CMakeLists.txt is an
+# error: a protocol is never left out by accident.
+function(ocu_protocol_subdirectories layer)
+  foreach(p IN LISTS OCU_PROTOCOLS)
+    foreach(dir IN LISTS OCU_PROTOCOL_${p}_${layer})
+      if(NOT EXISTS ${CMAKE_SOURCE_DIR}/${dir}/CMakeLists.txt)
+        message(FATAL_ERROR "${dir} is listed for the protocol ${p} but has no CMakeLists.txt")
+      endif()
+      add_subdirectory(${CMAKE_SOURCE_DIR}/${dir} ${CMAKE_BINARY_DIR}/${dir})
+    endforeach()
+  endforeach()
+endfunction()
 
 # Warnings as errors on our own code only (never on third-party headers, which come in as SYSTEM).
 function(ocu_set_warnings target)
@@ -20,6 +25,13 @@ endfunction()
 # XVFB tests (OpenGL/VTK) run under xvfb-run with the xcb platform.
 function(ocu_add_test)
   cmake_parse_arguments(T "XVFB;SERIAL" "NAME;TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  # A build that leaves a protocol out (OCU_PROTOCOLS) leaves out the tests of its libraries.
+  foreach(l IN LISTS T_LIBS)
+    if(l MATCHES "^ocu_" AND NOT TARGET ${l})
+      message(STATUS "${T_NAME} left out: ${l} is not part of this build")
+      return()
+    endif()
+  endforeach()
   add_executable(${T_NAME} ${T_SOURCES})
   target_link_libraries(${T_NAME} PRIVATE Qt6::Test ${T_LIBS})
   ocu_set_warnings(${T_NAME})
@@ -49,7 +61,7 @@ endfunction()
 # ocu_add_bench(NAME n SOURCES s... [LIBS l...]): a Google Benchmark (or harness) executable under bench/.
 function(ocu_add_bench)
   cmake_parse_arguments(B "" "NAME" "SOURCES;LIBS" ${ARGN})
-  # A build that leaves a protocol out (OCU_SKIP_DIRS) leaves out its benchmarks too.
+  # A build that leaves a protocol out (OCU_PROTOCOLS) leaves out its benchmarks too.
   foreach(l IN LISTS B_LIBS)
     if(l MATCHES "^ocu_" AND NOT TARGET ${l})
       message(STATUS "${B_NAME} left out: ${l} is not part of this build")

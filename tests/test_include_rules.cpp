@@ -1,6 +1,8 @@
-// The dependency rule of the source tree (tests/IncludeRules.h, docs/architecture.md): this repository
-// follows it, and the checker finds each kind of violation in a synthetic tree.
+// The dependency rule of the source tree (tests/IncludeRules.h, docs/architecture.md) and the protocol seam
+// (tests/ProtocolNames.h): this repository follows them, and the checkers find each kind of violation in a
+// synthetic tree.
 #include "tests/IncludeRules.h"
+#include "tests/ProtocolNames.h"
 
 #include <QDir>
 #include <QFile>
@@ -188,6 +190,35 @@ private slots:
                                             "// #include <QString> in a comment is no include\n"));
         const auto v = check(tree);
         QVERIFY2(v.isEmpty(), qPrintable(describe(v)));
+    }
+
+    // The shared app files name no protocol: everything a protocol adds comes through its module.
+    void sharedAppFilesNameNoProtocol() {
+        const auto uses = findProtocolNames(QStringLiteral(OCU_SOURCE_DIR), protocolNeutralFiles());
+        QStringList lines;
+        for (const auto& u : uses)
+            lines << u.toString();
+        QVERIFY2(uses.isEmpty(), qPrintable(lines.join(QLatin1Char('\n'))));
+    }
+
+    void protocolNameInASharedFileIsFound() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QDir().mkpath(dir.filePath(QStringLiteral("app")));
+        QFile f(dir.filePath(QStringLiteral("app/SiteRuntime.cpp")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("#include \"app/SiteRuntime.h\"\n// the map of the fleet\n"
+                "#include \"widgets/osyris/CrewMessagesPanel.h\"\nauto* b = findBridge(\"ISO 23725\");\n");
+        f.close();
+        const auto uses = findProtocolNames(dir.path(), {QStringLiteral("app/SiteRuntime.cpp")});
+        QCOMPARE(uses.size(), 3);
+        QCOMPARE(uses[0].line, 3);
+        QCOMPARE(uses[0].word, QStringLiteral("osyris"));
+        QCOMPARE(uses[1].word, QStringLiteral("Crew"));
+        QCOMPARE(uses[2].line, 4);
+        QCOMPARE(uses[2].word, QStringLiteral("ISO 23725"));
+        // A file that is not there is reported, not passed.
+        QCOMPARE(findProtocolNames(dir.path(), {QStringLiteral("app/Gone.cpp")}).size(), 1);
     }
 };
 

@@ -26,6 +26,7 @@ public:
 
     // Not owned.
     void setLayer(const PassCountLayer* layer);
+    const PassCountLayer* layer() const { return m_layer; }
     // Lifts and filters of the layer's source; null hides the controls. Not owned.
     void setControls(PassCountControls* controls);
     // The filter the controls show (applied to the source after a short pause in editing).

@@ -25,6 +25,8 @@ namespace ocu {
 
 namespace {
 
+const QString kDispatchPanel = QStringLiteral("dispatch"); // its --view name and saved-layout key
+
 class IsoModule final : public ProtocolModule {
 public:
     QString displayName() const override { return QStringLiteral("ISO 23725"); }
@@ -40,7 +42,7 @@ public:
         m_production->setSiteName(QString::fromStdString(s.config.name));
         s.fleet->addBridge(m_bridge);
         // The automatic dispatcher (off until the operator or a script switches it on), owned by
-        // the bridge like its dispatch source (the panel finds it there).
+        // the bridge like its dispatch source; the panel and the headless monitor get it from this module.
         auto* source = new IsoDispatchSource(m_bridge, m_bridge);
         m_autoDispatch = new AutoDispatcher(source, s.fleet->gate(), m_bridge);
         m_autoDispatch->setAlarms(s.fleet->alarms());
@@ -65,20 +67,29 @@ public:
     }
 
     // The dispatch panel over this bridge; the selected truck's route on the 2D map and in 3D.
-    QList<Panel> panels() const override { return {Panel::Dispatch}; }
+    // The dispatcher's table beside the pass counts, in front (Ctrl+8).
+    QList<PanelSpec> panels() const override {
+        return {{kDispatchPanel, QCoreApplication::translate("ocu::MainWindow", "Dispatch"),
+                 PanelPlace::BesidePassCounts, 8, true, true,
+                 QCoreApplication::translate(
+                     "ocu::MainWindow", "Dispatch: F6 next truck needing work, Alt+T task, Alt+D "
+                                        "destination, Alt+M pick on map, Ctrl+Enter assign, Alt+R reset")}};
+    }
+    QString stopAllReach() const override {
+        return QCoreApplication::translate("ocu::MainWindow", "ISO 23725 all-stop to every AHS link");
+    }
     QString notConfiguredText() const override {
         return QCoreApplication::translate(
             "IsoModule", "Dispatch needs an ISO 23725 AHS link (site configuration \"iso23725\").");
     }
     void populate(const ModulePanels& ui) override {
-        addProductionDock(ui.window, ui.fleet, m_bridge, QString::fromStdString(ui.config.name));
-        auto* autoDispatch = m_bridge->findChild<AutoDispatcher*>();
-        auto* source = autoDispatch ? autoDispatch->source() : new IsoDispatchSource(m_bridge, m_bridge);
-        auto* panel = new DispatchPanel(source, ui.fleet->gate(), ui.fleet->selection());
-        panel->setAutoDispatcher(autoDispatch);
+        addProductionDock(ui.window, ui.fleet, m_bridge, m_production,
+                          QString::fromStdString(ui.config.name));
+        auto* panel = new DispatchPanel(m_autoDispatch->source(), ui.fleet->gate(), ui.fleet->selection());
+        panel->setAutoDispatcher(m_autoDispatch);
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
         panel->setMap(map);
-        ui.window.setPanelWidget(Panel::Dispatch, panel);
+        ui.window.setPanelWidget(kDispatchPanel, panel);
 #ifdef OCU_HAVE_OCU_VIEW3D
         if (auto* view3d = qobject_cast<Site3DView*>(ui.window.panelWidget(Panel::Site3D)); view3d && map) {
             auto* route3d = new RouteOverlay3D(view3d);

@@ -27,8 +27,8 @@ ProductionModel* attachProductionModel(IsoBridge* bridge) {
     return model;
 }
 
-void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridge, const QString& siteName) {
-    auto* model = bridge->findChild<ProductionModel*>();
+void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridge, ProductionModel* model,
+                       const QString& siteName) {
     if (!model)
         return;
     auto* view = new ProductionView(model);

@@ -11,8 +11,9 @@ class IsoBridge;
 class MainWindow;
 class ProductionModel;
 
-// Owned by the bridge (found again with bridge->findChild<ProductionModel*>()).
+// Owned by the bridge; the module keeps it and offers it (ProtocolModule::production()).
 ProductionModel* attachProductionModel(IsoBridge* bridge);
-void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridge, const QString& siteName);
+void addProductionDock(MainWindow& window, FleetContext* fleet, IsoBridge* bridge, ProductionModel* model,
+                       const QString& siteName);
 
 } // namespace ocu

@@ -18,6 +18,10 @@ namespace ocu {
 
 namespace {
 
+// Their --view names and saved-layout keys.
+const QString kControlPanel = QStringLiteral("jaus");
+const QString kTeleopPanel = QStringLiteral("teleop");
+
 class JausModule final : public ProtocolModule {
 public:
     QString displayName() const override { return QStringLiteral("JAUS"); }
@@ -37,9 +41,29 @@ public:
     }
     FleetBridge* bridge() const override { return m_bridge; }
 
-    QList<Panel> panels() const override { return {Panel::JausControl, Panel::Teleop}; }
+    // The access-control column right of the map, teleop as its second tab (Ctrl+4, Ctrl+5).
+    QList<PanelSpec> panels() const override {
+        return {{kControlPanel,
+                 QCoreApplication::translate("ocu::MainWindow", "JAUS control"),
+                 PanelPlace::SideColumn,
+                 4,
+                 true,
+                 true,
+                 {}},
+                {kTeleopPanel, QCoreApplication::translate("ocu::MainWindow", "Teleop"),
+                 PanelPlace::SideColumn, 5, false, true,
+                 QCoreApplication::translate("ocu::MainWindow", "Teleop panel: W/A/S/D or arrows with the "
+                                                                "dead-man key held; Space or Esc: emergency "
+                                                                "stop")}};
+    }
+    QString stopAllReach() const override {
+        return QCoreApplication::translate("ocu::MainWindow",
+                                           "JAUS emergency stop to every discovered vehicle");
+    }
+    QString aboutName() const override { return QStringLiteral("JAUS (AS5669A/AS5710A, AEP-4818 IOP)"); }
+
     void populate(const ModulePanels& ui) override {
-        ui.window.setPanelWidget(Panel::JausControl,
+        ui.window.setPanelWidget(kControlPanel,
                                  new JausControlPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection()));
         auto* joystick = new SdlJoystickInput(&ui.window);
         const TeleopInputConfig& t = ui.config.teleop;
@@ -52,7 +76,7 @@ public:
         joystick->setMapping(mapping);
         auto* teleop = new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick);
         teleop->video()->watchdog().setLimitMs(static_cast<int>(t.videoWatchdogS * 1000));
-        ui.window.setPanelWidget(Panel::Teleop, teleop);
+        ui.window.setPanelWidget(kTeleopPanel, teleop);
     }
     QString notConfiguredText() const override {
         return QCoreApplication::translate(

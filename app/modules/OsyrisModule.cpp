@@ -1,35 +1,96 @@
 // The OSYRIS module of the console: the OsyrisBridge over the OCU's OSYRIS station, whose pass counts are the
-// pass-count layer of the 2D map, the 3D view and the pass-count panel, and the "OSYRIS" link indicator.
+// pass-count layer of the 2D map, the 3D view and the pass-count panel (with the station's lifts and
+// filters), the crew messages in a tab beside the pass counts, the compaction job fed by the counts, and the
+// "OSYRIS" link indicator.
 #include "app/ProtocolModule.h"
 
+#include "app/PassCountDock.h"
 #include "models/FleetContext.h"
 #include "models/bridges/OsyrisBridge.h"
+#include "widgets/PassCountPanel.h"
+#include "widgets/osyris/CrewMessagesPanel.h"
+#ifdef OCU_HAVE_COVERAGE
+#include "app/CompactionSetup.h"
+#include "widgets/SiteMapView.h"
+#endif
+
+#include <QCoreApplication>
+#include <QTabWidget>
 
 namespace ocu {
 
 namespace {
 
+QString crewTitle(int unread) {
+    return unread > 0 ? QCoreApplication::translate("ocu::SiteRuntime", "Crew messages (%1)").arg(unread)
+                      : QCoreApplication::translate("ocu::SiteRuntime", "Crew messages");
+}
+
 class OsyrisModule final : public ProtocolModule {
 public:
     QString displayName() const override { return QStringLiteral("OSYRIS"); }
     Protocol protocol() const override { return Protocol::Osyris; }
+    QString stopAllReach() const override {
+        return QCoreApplication::translate("ocu::MainWindow", "the OSYRIS stop message");
+    }
 
     QString start(const ModuleStart& s) override {
-        if (!s.config.osyris)
-            return {};
-        m_bridge = new OsyrisBridge(*s.config.osyris, s.frame, s.owner);
-        m_bridge->setMessageTap(s.tap);
-        s.fleet->addBridge(m_bridge);
-        return m_bridge->start();
+        QString error;
+        if (s.config.osyris) {
+            m_bridge = new OsyrisBridge(*s.config.osyris, s.frame, s.owner);
+            m_bridge->setMessageTap(s.tap);
+            s.fleet->addBridge(m_bridge);
+            error = m_bridge->start();
+        }
+#ifdef OCU_HAVE_COVERAGE
+        // The compaction job (design, areas, the headless coverage report) also on a site whose station is
+        // not configured yet: its design and areas are the job's, the counts come once the station does.
+        m_compaction = startCompaction(
+            s.config, s.frame, m_bridge ? m_bridge->osyrisPassCountLayer() : nullptr, s.owner, s.problems);
+#endif
+        return error;
     }
     void stop() override {
         if (m_bridge)
             m_bridge->stop();
     }
-    FleetBridge* bridge() const override { return m_bridge; }
+    FleetBridge* bridge() const override {
+        return m_bridge;
+    }
+
+#ifdef OCU_HAVE_COVERAGE
+    // The compaction job's "coverage_report".
+    void registerHeadless(HeadlessCommands& table) override {
+        registerCompactionHeadless(table, m_compaction);
+    }
+#endif
+
+    void populate(const ModulePanels& ui) override {
+        // The station's lifts and filters when the panel shows its counts.
+        if (ui.passCounts.panel()->layer() == m_bridge->passCountLayer())
+            ui.passCounts.panel()->setControls(m_bridge);
+        auto* crew = new CrewMessagesPanel;
+        crew->setCommandGate(ui.fleet->gate());
+        crew->setBridge(m_bridge, m_bridge);
+        const int tab = ui.passCounts.addTab(crew, crewTitle(0));
+        // Unread messages in the tab's title: seen from any tab of the panel.
+        QTabWidget* tabs = ui.passCounts.tabs();
+        QObject::connect(crew, &CrewMessagesPanel::unreadChanged, tabs,
+                         [tabs, tab](int unread) { tabs->setTabText(tab, crewTitle(unread)); });
+#ifdef OCU_HAVE_COVERAGE
+        auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
+        ui.passCounts.wrap(
+            [this, map](QWidget* content) { return buildCompactionGui(m_compaction, map, content); });
+        attachCompaction3D(m_compaction, ui.window.panelWidget(Panel::Site3D));
+        watchCompactionCounts(m_compaction, m_bridge); // the areas' statistics follow the counts
+#endif
+    }
 
 private:
     OsyrisBridge* m_bridge = nullptr;
+#ifdef OCU_HAVE_COVERAGE
+    CompactionSession* m_compaction = nullptr;
+#endif
 };
 
 } // namespace

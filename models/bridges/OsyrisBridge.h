@@ -44,6 +44,7 @@ public:
     // OSYRIS carries no stop state: a stop can never be confirmed by the machines.
     bool reportsStopState() const override { return false; }
     const PassCountLayer* passCountLayer() const override { return m_layer.get(); }
+    const OsyrisPassCountLayer* osyrisPassCountLayer() const { return m_layer.get(); } // with its snapshots
     osyris::PassCountSummary passCountSummary() const;
     // Watchdog: the stack's io thread.
     QVector<LinkCounters> linkCounters() const override;

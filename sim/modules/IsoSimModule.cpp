@@ -14,6 +14,30 @@ namespace {
 class IsoSimModule final : public SimModule {
 public:
     std::string displayName() const override { return "ISO 23725"; }
+    std::string summary() const override { return "an ISO 23725 AHS with haul trucks"; }
+    std::vector<SimOption> options() const override {
+        return {{{"trucks"},
+                 "N",
+                 "Number of simulated haul trucks (≤ 1000).",
+                 [](const std::string& v, SiteConfig& c) {
+                     return intOption("trucks", v, c.simulation.ahsTrucks, 1000);
+                 }},
+                {{"separate-map-service"},
+                 "",
+                 "The AHS serves its ISO 23725 map service on a socket of its own (the written configuration "
+                 "gets "
+                 "its mapUrl).",
+                 [](const std::string&, SiteConfig& c) {
+                     c.simulation.ahsSeparateMapService = true;
+                     return std::string();
+                 }},
+                {{"position-rate", "truck-rate"},
+                 "HZ",
+                 "Positions per second of each simulated haul truck (1-10; --truck-rate is the older name).",
+                 [](const std::string& v, SiteConfig& c) {
+                     return numberOption("position-rate", v, c.simulation.ahsPositionRateHz, 1, 10, "1..10");
+                 }}};
+    }
 
     std::string start(SiteConfig& config, const GeoFrame&) override {
         const auto& s = config.simulation;

@@ -16,6 +16,12 @@ namespace {
 class JausSimModule final : public SimModule {
 public:
     std::string displayName() const override { return "JAUS"; }
+    std::string summary() const override { return "JAUS UGVs"; }
+    std::vector<SimOption> options() const override {
+        return {{{"ugvs"}, "N", "Number of simulated JAUS UGVs.", [](const std::string& v, SiteConfig& c) {
+                     return intOption("ugvs", v, c.simulation.jausUgvs, 50);
+                 }}};
+    }
 
     std::string start(SiteConfig& config, const GeoFrame& site) override {
         const auto& s = config.simulation;

@@ -15,6 +15,35 @@ namespace {
 class OsyrisSimModule final : public SimModule {
 public:
     std::string displayName() const override { return "OSYRIS"; }
+    std::string summary() const override { return "an OSYRIS paving train"; }
+    std::vector<SimOption> options() const override {
+        return {{{"rollers"},
+                 "N",
+                 "Number of simulated rollers (0-3).",
+                 [](const std::string& v, SiteConfig& c) {
+                     return intOption("rollers", v, c.simulation.osyrisRollers, 3);
+                 }},
+                // The simulated paving train on a long job.
+                {{"paving-job"},
+                 "file",
+                 "The paving train drives a long job: a LandXML file (first alignment, UTM) or \"built-in\".",
+                 [](const std::string& v, SiteConfig& c) {
+                     c.simulation.osyrisPavingJob = v;
+                     return std::string();
+                 }},
+                {{"speedup"},
+                 "factor",
+                 "Simulated seconds per real second for the rollers (1-1000).",
+                 [](const std::string& v, SiteConfig& c) {
+                     return numberOption("speedup", v, c.simulation.osyrisSpeedUp, 1, 1000, "1..1000");
+                 }},
+                {{"lifts"}, "n", "Lifts of the paving job (1-20).", [](const std::string& v, SiteConfig& c) {
+                     return intOption("lifts", v, c.simulation.osyrisLifts, 20);
+                 }}};
+    }
+    std::string checkSimulation(const SiteConfig& config) const override {
+        return config.simulation.osyrisLifts < 1 ? "--lifts must be 1..20" : std::string();
+    }
 
     std::string start(SiteConfig& config, const GeoFrame& site) override {
         const auto& s = config.simulation;

@@ -1,5 +1,6 @@
 #include "app/CommandLine.h"
 #include "app/MainWindow.h"
+#include "app/ProtocolModule.h"
 
 #include <QtTest>
 
@@ -45,21 +46,31 @@ private slots:
     void wholeWindowWithPanel() {
         CommandLineOptions o;
         QString e;
-        QVERIFY2(parse({"--screenshot", "o.png", "--view", "all:teleop"}, o, e), qPrintable(e));
-        QCOMPARE(o.view, QString("all:teleop"));
+        QVERIFY2(parse({"--screenshot", "o.png", "--view", "all:3d"}, o, e), qPrintable(e));
+        QCOMPARE(o.view, QString("all:3d"));
         QVERIFY(!parse({"--screenshot", "o.png", "--view", "all:radar"}, o, e));
         QVERIFY(e.contains("unknown view \"all:radar\""));
     }
     // Every panel can be captured: --view all:dispatch was refused (the list had no Dispatch panel).
     void everyPanelIsAView() {
-        QStringList keys;
-        for (Panel p : MainWindow::panels())
-            keys << MainWindow::panelKey(p);
-        QCOMPARE(screenshotViewNames(), keys);
-        CommandLineOptions o;
-        QString e;
-        QVERIFY2(parse({"--screenshot", "o.png", "--view", "all:dispatch"}, o, e), qPrintable(e));
-        QVERIFY2(parse({"--screenshot", "o.png", "--view", "dispatch"}, o, e), qPrintable(e));
+        // The main panels and every protocol module's, in the window's order.
+        QList<PanelSpec> modulePanels;
+        for (const auto& m : makeProtocolModules())
+            modulePanels += m->panels();
+        const QStringList names = screenshotViewNames();
+        QCOMPARE(names, MainWindow::panelKeysWith(modulePanels));
+        QCOMPARE(names.mid(0, 3), QStringList({"fleet", "map", "3d"}));
+        QVERIFY(names.contains("passcounts") && names.contains("events"));
+        for (const PanelSpec& p : modulePanels) {
+            QVERIFY2(names.contains(p.key), qPrintable(p.key));
+            CommandLineOptions o;
+            QString e;
+            QVERIFY2(parse({"--screenshot", "o.png", "--view", "all:" + p.key}, o, e), qPrintable(e));
+            QVERIFY2(parse({"--screenshot", "o.png", "--view", p.key}, o, e), qPrintable(e));
+        }
+        if (makeProtocolModules().size() == 3) // every protocol of today
+            QCOMPARE(names, QStringList({"fleet", "map", "3d", "jaus", "teleop", "passcounts", "events",
+                                         "dispatch"}));
     }
     void headless() {
         CommandLineOptions o;

@@ -1,4 +1,5 @@
 #include "app/MainWindow.h"
+#include "app/ProtocolModule.h"
 #include "app/SiteLoader.h"
 #include "app/SiteRuntime.h"
 #include "models/AlarmModel.h"
@@ -37,6 +38,20 @@ struct StopTexts : osyris::OsyrisListener {
             ++stops;
     }
 };
+
+// The panels the protocol modules of this build add to the window.
+QList<PanelSpec> modulePanels() {
+    QList<PanelSpec> out;
+    for (const auto& m : makeProtocolModules())
+        out += m->panels();
+    return out;
+}
+
+// The Ctrl+N of a panel, from its go-to action.
+QKeySequence goShortcut(const MainWindow& w, const QString& key) {
+    auto* a = w.findChild<QAction*>(QStringLiteral("action-go-") + key);
+    return a ? a->shortcut() : QKeySequence();
+}
 } // namespace
 
 namespace {
@@ -205,17 +220,21 @@ private slots:
 
     void everyPanelIsADock() {
         MainWindow w;
-        QCOMPARE(MainWindow::panels().size(), 8);
+        QCOMPARE(w.panelKeys(), QStringList({"fleet", "map", "3d", "passcounts", "events"}));
+        w.addPanels(modulePanels());
+        QCOMPARE(w.panelKeys().size(), 5 + modulePanels().size());
         QStringList titles;
-        for (Panel p : MainWindow::panels()) {
-            QDockWidget* d = w.dock(p);
+        for (const QString& key : w.panelKeys()) {
+            QDockWidget* d = w.dock(key);
             QVERIFY(d);
+            QCOMPARE(d->objectName(), QStringLiteral("dock-") + key); // the name saved layouts keep
             QVERIFY(d->features() & QDockWidget::DockWidgetClosable);
             QVERIFY(d->features() & QDockWidget::DockWidgetMovable);
             titles << d->windowTitle();
         }
-        QCOMPARE(titles, QStringList({"Fleet", "Site map (2D)", "Site 3D", "JAUS control", "Teleop",
-                                      "Pass counts", "Event log", "Dispatch"}));
+        if (makeProtocolModules().size() == 3) // every protocol: the panels in their Ctrl+N order
+            QCOMPARE(titles, QStringList({"Fleet", "Site map (2D)", "Site 3D", "JAUS control", "Teleop",
+                                          "Pass counts", "Event log", "Dispatch"}));
     }
     void stopAllAlwaysVisibleWithShortcut() {
         MainWindow w;
@@ -282,8 +301,9 @@ private slots:
     // focus in it; the default layout gives the map most of a 1366 x 768 window.
     void keyboardPathToEveryPanel() {
         MainWindow w;
-        QMap<Panel, QLineEdit*> edits;
-        for (Panel p : MainWindow::panels()) {
+        w.addPanels(modulePanels());
+        QMap<QString, QLineEdit*> edits;
+        for (const QString& p : w.panelKeys()) {
             auto* box = new QWidget;
             auto* l = new QVBoxLayout(box);
             auto* label = new QLabel(w.panelTitle(p)); // takes no focus: the edit below gets it
@@ -300,9 +320,10 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QTRY_VERIFY(w.dock(Panel::SiteMap)->width() >= 1366 * 40 / 100);
         w.dock(Panel::EventLog)->close();
-        int n = 1;
-        for (Panel p : MainWindow::panels()) {
-            QTest::keyClick(&w, static_cast<Qt::Key>(Qt::Key_0 + n++), Qt::ControlModifier);
+        for (const QString& p : w.panelKeys()) {
+            const QKeySequence go = goShortcut(w, p);
+            QVERIFY2(go.count() == 1 && (go[0].keyboardModifiers() & Qt::ControlModifier), qPrintable(p));
+            QTest::keyClick(&w, go[0].key(), Qt::ControlModifier);
             QTRY_VERIFY2(edits[p]->isVisible(), qPrintable(w.panelTitle(p)));
             QTRY_VERIFY2(edits[p]->hasFocus(), qPrintable(w.panelTitle(p)));
         }
@@ -312,17 +333,15 @@ private slots:
     // existed.
     void helpListsEveryPanelShortcut() {
         MainWindow w;
+        w.addPanels(modulePanels());
         auto* production = new QAction(QStringLiteral("Production"), &w);
         production->setObjectName(QStringLiteral("action-go-production"));
         production->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_9));
         w.addAction(production);
         const QString help = w.keyboardHelpText();
-        int n = 1;
-        for (Panel p : MainWindow::panels()) {
-            const QString line =
-                QStringLiteral("%1: %2").arg(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_0 + n++))
-                                                 .toString(QKeySequence::NativeText),
-                                             w.panelTitle(p));
+        for (const QString& p : w.panelKeys()) {
+            const QString line = QStringLiteral("%1: %2").arg(
+                goShortcut(w, p).toString(QKeySequence::NativeText), w.panelTitle(p));
             QVERIFY2(help.contains(line), qPrintable(line + QStringLiteral(" missing in:\n") + help));
         }
         QVERIFY2(help.contains(QKeySequence(Qt::CTRL | Qt::Key_9).toString(QKeySequence::NativeText) +
@@ -359,23 +378,33 @@ private slots:
         QVERIFY(d->isVisible());
     }
     void layoutIsSavedAndRestored() {
+        // A module's panel too: its dock is added before the layout is restored, under the same name.
+        const QString modulePanel = modulePanels().isEmpty() ? QString() : modulePanels().first().key;
         {
             MainWindow w;
+            w.addPanels(modulePanels());
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             w.dock(Panel::PassCounts)->close();
             w.dock(Panel::Fleet)->setFloating(true);
+            if (!modulePanel.isEmpty())
+                w.dock(modulePanel)->close();
             w.saveLayout();
         }
         MainWindow w2;
+        w2.addPanels(modulePanels());
         QVERIFY(w2.restoreLayout());
         w2.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w2));
         QVERIFY(!w2.dock(Panel::PassCounts)->isVisible());
         QVERIFY(w2.dock(Panel::Fleet)->isFloating());
+        if (!modulePanel.isEmpty())
+            QVERIFY(!w2.dock(modulePanel)->isVisible());
         w2.resetLayout();
         QVERIFY(w2.dock(Panel::PassCounts)->isVisible());
         QVERIFY(!w2.dock(Panel::Fleet)->isFloating());
+        if (!modulePanel.isEmpty())
+            QVERIFY(w2.dock(modulePanel)->isVisible());
     }
     void nightPalette() {
         MainWindow w;

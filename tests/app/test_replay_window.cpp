@@ -1,6 +1,7 @@
 // The replay window - REPLAY banner, commands disabled, the timeline (markers that jump, exact
 // time entry, slider) and the keys (Space, + / -, arrows, Home / End) driving the replay controller.
 #include "app/MainWindow.h"
+#include "app/ProtocolModule.h"
 #include "app/ReplayRuntime.h"
 #include "models/AlarmModel.h"
 #include "models/FleetModel.h"
@@ -132,17 +133,20 @@ private slots:
         QVERIFY(log && !log->ackAllButton()->isEnabled());
         // Every panel shows what the replay has for it or says why not; none stays on the window's
         // placeholder ("Starting…", the Dispatch panel did for the whole replay).
-        auto labelOf = [&window](Panel p) {
-            QWidget* w = window.panelWidget(p);
+        auto labelOf = [&window](const QString& key) {
+            QWidget* w = window.panelWidget(key);
             auto* l = qobject_cast<QLabel*>(w);
             return l ? l : (w ? w->findChild<QLabel*>() : nullptr);
         };
-        for (Panel p : MainWindow::panels()) {
+        for (const QString& p : window.panelKeys()) {
             const QLabel* l = labelOf(p);
-            QVERIFY2(!l || l->text() != MainWindow::tr("Starting…"), qPrintable(MainWindow::panelKey(p)));
+            QVERIFY2(!l || l->text() != MainWindow::tr("Starting…"), qPrintable(p));
         }
-        QVERIFY(labelOf(Panel::Dispatch) &&
-                labelOf(Panel::Dispatch)->text().startsWith(QStringLiteral("Replay:")));
+        // The protocol modules' panels are there, as live, and say commands are off.
+        for (const auto& m : makeProtocolModules())
+            for (const PanelSpec& p : m->panels())
+                QVERIFY2(labelOf(p.key) && labelOf(p.key)->text().startsWith(QStringLiteral("Replay:")),
+                         qPrintable(p.key));
 
         auto* timeline = window.findChild<ReplayTimeline*>(QStringLiteral("replayTimeline"));
         QVERIFY(timeline);

@@ -138,10 +138,10 @@ private slots:
         QVERIFY(map);
         QTableView* events = mainTable(window.panelWidget(Panel::EventLog));
         QVERIFY(events);
-        QTableView* dispatch = mainTable(window.panelWidget(Panel::Dispatch));
+        QTableView* dispatch = mainTable(window.panelWidget(QStringLiteral("dispatch")));
         const int eventRows = visibleRows(events);
         const int dispatchRows = dispatch ? visibleRows(dispatch) : -1;
-        const int jausWidth = window.dock(Panel::JausControl)->width();
+        const int jausWidth = window.dock(QStringLiteral("jaus"))->width();
         qInfo("%dx%d %s: map %dx%d, event rows %d, dispatch rows %d, fleet %d px, JAUS column %d px",
               size.width(), size.height(), qPrintable(lang.isEmpty() ? QStringLiteral("en") : lang),
               map->width(), map->height(), eventRows, dispatchRows, window.dock(Panel::Fleet)->width(),
@@ -158,8 +158,8 @@ private slots:
 
         // Every tab of every tabbed dock, raised in turn.
         problems << cutOff(window);
-        for (Panel p : {Panel::Site3D, Panel::Teleop, Panel::PassCounts}) {
-            window.dock(p)->raise();
+        for (const char* p : {"3d", "teleop", "passcounts"}) {
+            window.dock(QLatin1String(p))->raise();
             settle(300);
             problems << cutOff(window);
         }
@@ -186,12 +186,12 @@ private slots:
         settle(500);
         auto* pane = window.findChild<TeleopVideoPane*>();
         QVERIFY(pane);
-        window.dock(Panel::JausControl)->raise();
+        window.dock(QStringLiteral("jaus"))->raise();
         settle(300);
         QVERIFY2(!pane->wantsVideo(), "teleop tab behind JAUS control wants video");
-        window.dock(Panel::Teleop)->raise();
+        window.dock(QStringLiteral("teleop"))->raise();
         QTRY_VERIFY_WITH_TIMEOUT(pane->wantsVideo(), 5000);
-        window.dock(Panel::JausControl)->raise();
+        window.dock(QStringLiteral("jaus"))->raise();
         QTRY_VERIFY_WITH_TIMEOUT(!pane->wantsVideo(), 5000);
     }
 };
