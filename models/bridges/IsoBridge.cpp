@@ -1,4 +1,5 @@
 #include "models/bridges/IsoBridge.h"
+#include "models/QtStrings.h"
 
 #include "models/bridges/FleetDiscrepancyAlarms.h"
 
@@ -12,10 +13,6 @@
 namespace ocu {
 
 using namespace iso23725;
-
-static QString q(const std::string& s) {
-    return QString::fromStdString(s);
-}
 
 IsoBridge::IsoBridge(const IsoConfig& config, const GeoFrame& frame, QObject* parent)
     : FleetBridge(Protocol::Iso23725, parent), m_config(config), m_frame(frame),
@@ -33,7 +30,7 @@ void IsoBridge::setMessageTap(MessageTap* tap) {
 
 QString IsoBridge::start() {
     for (const auto& l : m_config.links) {
-        const LinkStatus s{QStringLiteral("iso23725:") + q(l.name), ocu::LinkState::Unknown, -1,
+        const LinkStatus s{QStringLiteral("iso23725:") + toQString(l.name), ocu::LinkState::Unknown, -1,
                            tr("connecting")};
         {
             std::lock_guard lock(m_linkNowMutex);
@@ -60,7 +57,7 @@ void IsoBridge::stop() {
 QStringList IsoBridge::linkNames() const {
     QStringList out;
     for (const auto& l : m_config.links)
-        out << q(l.name);
+        out << toQString(l.name);
     return out;
 }
 
@@ -77,12 +74,12 @@ AllStopState IsoBridge::allStopState(const QString& link) const {
 
 void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, const std::string& reason) {
     LinkStatus s;
-    s.link = QStringLiteral("iso23725:") + q(link);
+    s.link = QStringLiteral("iso23725:") + toQString(link);
     s.state = state == iso23725::LinkState::Up     ? ocu::LinkState::Up
               : state == iso23725::LinkState::Down ? ocu::LinkState::Down
                                                    : ocu::LinkState::Unknown;
     s.dataAgeMs = state == iso23725::LinkState::Up ? 0 : -1;
-    s.detail = q(reason);
+    s.detail = toQString(reason);
     if (state == iso23725::LinkState::Up)
         m_everUp.insert(link);
     // Before the first connection the link is "connecting", not lost: no alarm for that.
@@ -97,7 +94,7 @@ void IsoBridge::onLinkState(const std::string& link, iso23725::LinkState state, 
         // §2.1: while the link is down nothing about its machines is known.
         m_allStopIo[link] = AllStopState::Unknown;
         publishEvent(makeEvent(EventSeverity::Warning, ocu::EventKind::LinkLoss, {},
-                               tr("ISO 23725 link %1 down: %2").arg(q(link), q(reason)),
+                               tr("ISO 23725 link %1 down: %2").arg(toQString(link), toQString(reason)),
                                QStringLiteral("iso23725")));
         std::vector<MachineState> rows;
         for (auto& [key, io] : m_machinesIo) {
@@ -139,7 +136,7 @@ void IsoBridge::onMachineChanged(const IsoMachineSnapshot& machine) {
     io.row = rowOf(io, m_allStopIo.count(machine.link) ? m_allStopIo[machine.link] : AllStopState::Unknown);
     if (added) {
         std::lock_guard lock(m_machineLinksMutex);
-        m_machineLinks.insert(io.row.id, q(machine.link));
+        m_machineLinks.insert(io.row.id, toQString(machine.link));
     }
     publishMachine(io.row);
     publishDispatch(io.row.id, toDispatchState(machine));
@@ -180,8 +177,8 @@ void IsoBridge::onMachinePositions(const std::string& link,
 void IsoBridge::onMachineRemoved(const std::string& link, const Guid& equipmentId) {
     m_poseGate.forget(keyOf(link, equipmentId));
     m_machinesIo.erase(m_key);
-    publishRemoval(protocolPrefix(Protocol::Iso23725) + q(equipmentId));
-    publishDispatch(protocolPrefix(Protocol::Iso23725) + q(equipmentId), std::nullopt);
+    publishRemoval(protocolPrefix(Protocol::Iso23725) + toQString(equipmentId));
+    publishDispatch(protocolPrefix(Protocol::Iso23725) + toQString(equipmentId), std::nullopt);
 }
 
 void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& status) {
@@ -200,19 +197,19 @@ void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& s
             }
         publishMachines(std::move(rows));
     }
-    const QString l = q(link);
+    const QString l = toQString(link);
     const int st = static_cast<int>(status.state);
     QMetaObject::invokeMethod(
         this,
         [this, l, st] {
             m_allStop.insert(l, st);
             if (static_cast<AllStopState>(st) == AllStopState::On) // MachineAllStopV1 from the AHS
-                emit stopReported(q(IsoStack::linkTarget(l.toStdString())),
+                emit stopReported(toQString(IsoStack::linkTarget(l.toStdString())),
                                   tr("AHS %1 reports all-stop active").arg(l));
             else if (static_cast<AllStopState>(st) == AllStopState::Off) // the release, confirmed by the AHS
                 for (const char* action : {"clear_stop", "all_stop_remove"})
                     emit commandReported(QString::fromLatin1(action),
-                                         q(IsoStack::linkTarget(l.toStdString())),
+                                         toQString(IsoStack::linkTarget(l.toStdString())),
                                          tr("AHS %1 reports all-stop inactive").arg(l));
         },
         Qt::QueuedConnection);
@@ -225,7 +222,7 @@ void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& s
 }
 
 void IsoBridge::onMapProgress(const std::string& link, const MapProgress& progress) {
-    const QString l = q(link);
+    const QString l = toQString(link);
     const int r = progress.received, t = progress.total;
     QMetaObject::invokeMethod(
         this, [this, l, r, t] { emit mapProgress(l, r, t); }, Qt::QueuedConnection);
@@ -238,12 +235,12 @@ void IsoBridge::onMapChanged(const std::string& link, const MapModel& map) {
     data.features.reserve(static_cast<qsizetype>(map.ways.size()));
     for (const auto& [id, way] : map.ways) {
         MapFeature f;
-        f.id = QStringLiteral("%1/%2").arg(q(link)).arg(id);
-        f.name = q(way.name());
+        f.id = QStringLiteral("%1/%2").arg(toQString(link)).arg(id);
+        f.name = toQString(way.name());
         f.kind = way.kind == WayKind::Area   ? MapFeatureKind::Area
                  : way.kind == WayKind::Lane ? MapFeatureKind::Lane
                                              : MapFeatureKind::Road;
-        f.defaultTask = q(way.defaultTask());
+        f.defaultTask = toQString(way.defaultTask());
         if (f.defaultTask.isEmpty() && f.kind != MapFeatureKind::Area)
             f.defaultTask = QStringLiteral("haul");
         const std::string autonomy = way.tag(f.kind == MapFeatureKind::Area ? "autonomy:area" : "autonomy");
@@ -286,9 +283,10 @@ void IsoBridge::onConnectivity(const std::string& link, const MapConnectivityV1&
     QHash<qint64, IsoDestination> areas;
     for (const auto& item : connectivity.items)
         if (item.wayType == "Area")
-            areas.insert(item.wayId, IsoDestination{q(link), item.wayId, q(item.areaName.value_or("")),
-                                                    q(item.areaDefaultTask.value_or(""))});
-    const QString l = q(link);
+            areas.insert(item.wayId,
+                         IsoDestination{toQString(link), item.wayId, toQString(item.areaName.value_or("")),
+                                        toQString(item.areaDefaultTask.value_or(""))});
+    const QString l = toQString(link);
     auto graph = std::make_shared<const RouteGraph>(connectivity); // indexed here, off the GUI thread
     QMetaObject::invokeMethod(
         this,
@@ -404,7 +402,7 @@ void IsoBridge::onEvent(IsoSeverity severity, const std::string& text) {
     const EventSeverity s = severity == IsoSeverity::Error     ? EventSeverity::Alarm
                             : severity == IsoSeverity::Warning ? EventSeverity::Warning
                                                                : EventSeverity::Info;
-    publishEvent(makeEvent(s, ocu::EventKind::Info, {}, q(text), QStringLiteral("iso23725")));
+    publishEvent(makeEvent(s, ocu::EventKind::Info, {}, toQString(text), QStringLiteral("iso23725")));
 }
 
 static ModeCategory modeCategory(const std::string& mode) {
@@ -430,8 +428,8 @@ QString isoWorkText(const IsoMachineSnapshot& s) {
     QStringList parts;
     if (s.production) {
         const auto& p = *s.production;
-        parts << (p.wayId ? IsoBridge::tr("%1 on way %2").arg(q(p.productionState)).arg(*p.wayId)
-                          : q(p.productionState));
+        parts << (p.wayId ? IsoBridge::tr("%1 on way %2").arg(toQString(p.productionState)).arg(*p.wayId)
+                          : toQString(p.productionState));
     }
     if (s.payload && s.payload->payloadWeight) // null = unavailable, never shown as 0 t
         parts << IsoBridge::tr("payload %1 t").arg(*s.payload->payloadWeight);
@@ -446,9 +444,9 @@ QString isoWorkText(const IsoMachineSnapshot& s) {
     }
     if (s.assignment) {
         const auto& a = *s.assignment;
-        QString text = IsoBridge::tr("assignment %1").arg(q(a.status));
+        QString text = IsoBridge::tr("assignment %1").arg(toQString(a.status));
         if (a.task && a.destinationId)
-            text += IsoBridge::tr(" (%1 at way %2)").arg(q(*a.task)).arg(*a.destinationId);
+            text += IsoBridge::tr(" (%1 at way %2)").arg(toQString(*a.task)).arg(*a.destinationId);
         parts << text;
     }
     if (s.lastDump)
@@ -461,10 +459,10 @@ QString isoWorkText(const IsoMachineSnapshot& s) {
 
 MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop) const {
     MachineState m;
-    m.id = protocolPrefix(Protocol::Iso23725) + q(s.equipmentId);
+    m.id = protocolPrefix(Protocol::Iso23725) + toQString(s.equipmentId);
     m.protocol = Protocol::Iso23725;
-    m.name = s.hid.empty() ? q(s.equipmentId).left(8) : q(s.hid);
-    m.type = q(s.type);
+    m.name = s.hid.empty() ? toQString(s.equipmentId).left(8) : toQString(s.hid);
+    m.type = toQString(s.type);
     m.link = s.stateKnown ? ocu::LinkState::Up : ocu::LinkState::Unknown;
     if (s.position)
         setPosition(m, *s.position);
@@ -485,7 +483,7 @@ MachineState IsoBridge::toMachine(const IsoMachineSnapshot& s, AllStopState stop
         m.height = 2.2;
     }
     m.workText = isoWorkText(s);
-    m.modeText = q(s.autonomyMode);
+    m.modeText = toQString(s.autonomyMode);
     m.mode = s.stateKnown ? modeCategory(s.autonomyMode) : ModeCategory::Unknown;
     if (!s.stateKnown || !s.autonomous) {
         m.stop = s.autonomous ? StopState::Unknown : StopState::None;
@@ -543,16 +541,16 @@ bool IsoBridge::admitPosition(const std::string& link, const std::string& key, I
     const char* cause = toString(v.fault);
     if (Counters* c = m_stack->linkCounters(link))
         c->add(std::string("rx.implausible.") + cause);
-    const QString why = q(describe(v.fault, m_poseGate.limits()));
+    const QString why = toQString(describe(v.fault, m_poseGate.limits()));
     io.implausible = tr("implausible position ignored (%1 so far): %2").arg(v.peerCount).arg(why);
     if (v.warn) {
-        const QString id = protocolPrefix(Protocol::Iso23725) + q(io.snapshot.equipmentId);
+        const QString id = protocolPrefix(Protocol::Iso23725) + toQString(io.snapshot.equipmentId);
         publishEvent(
             makeEvent(EventSeverity::Warning, ocu::EventKind::Diagnostic, id,
                       tr("ISO 23725 link %1, machine %2: position ignored, %3 (lat %4, lon %5, speed "
                          "%6 km/h); last good position kept (counted in rx.implausible.%7; one "
                          "warning per machine and cause every 30 s)")
-                          .arg(q(link), id, why)
+                          .arg(toQString(link), id, why)
                           .arg(lat, 0, 'g', 10)
                           .arg(lon, 0, 'g', 10)
                           .arg(p.speedKmh.value_or(0))
@@ -589,7 +587,7 @@ QVector<LinkCounters> IsoBridge::linkCounters() const {
     QVector<LinkCounters> out;
     for (const auto& l : m_config.links)
         if (const Counters* c = m_stack->linkCounters(l.name))
-            out.push_back(LinkCounters::of(QStringLiteral("iso23725:") + q(l.name), *c));
+            out.push_back(LinkCounters::of(QStringLiteral("iso23725:") + toQString(l.name), *c));
     return out;
 }
 

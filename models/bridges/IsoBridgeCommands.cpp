@@ -1,3 +1,4 @@
+#include "models/QtStrings.h"
 #include "models/bridges/IsoBridge.h"
 
 #include "protocols/common/OutcomeCollector.h"
@@ -7,12 +8,6 @@
 namespace ocu {
 
 using namespace iso23725;
-
-namespace {
-QString q(const std::string& s) {
-    return QString::fromStdString(s);
-}
-} // namespace
 
 // ---- GUI thread: commands ----
 
@@ -64,7 +59,7 @@ void IsoBridge::stopAll(OutcomeCallback done) {
     }
     auto collector = OutcomeCollector::create(int(m_config.links.size()), std::move(done));
     for (const auto& l : m_config.links)
-        applyOrRefuse(q(l.name), true, collector->part());
+        applyOrRefuse(toQString(l.name), true, collector->part());
 }
 
 void IsoBridge::stopMachine(const QString& id, OutcomeCallback done) {
@@ -95,15 +90,15 @@ bool IsoBridge::reportsConfirmed(const QString& action, const QString& target) c
     if (!confirmsCommand(action))
         return false;
     for (const auto& l : m_config.links)
-        if (q(IsoStack::linkTarget(l.name)) == target)
-            return allStopState(q(l.name)) == AllStopState::Off;
+        if (toQString(IsoStack::linkTarget(l.name)) == target)
+            return allStopState(toQString(l.name)) == AllStopState::Off;
     return false;
 }
 
 bool IsoBridge::reportsStopped(const QString& target) const {
     for (const auto& l : m_config.links)
-        if (q(IsoStack::linkTarget(l.name)) == target)
-            return allStopState(q(l.name)) == AllStopState::On;
+        if (toQString(IsoStack::linkTarget(l.name)) == target)
+            return allStopState(toQString(l.name)) == AllStopState::On;
     return false;
 }
 
@@ -112,7 +107,7 @@ QString IsoBridge::commandLink(const QString& link, const QString& id) const {
     if (out.isEmpty() && !id.isEmpty())
         out = linkOf(id);
     if (out.isEmpty() && m_config.links.size() == 1)
-        out = q(m_config.links.front().name);
+        out = toQString(m_config.links.front().name);
     return out;
 }
 
@@ -168,7 +163,7 @@ void IsoBridge::command(const OperatorCommand& command, OutcomeCallback done) {
                           tr("%1: unknown ISO 23725 link \"%2\"").arg(what, link))});
             return;
         }
-        if (refuseFirst && refuseLink(what, link, q(IsoStack::linkTarget(link.toStdString())), done))
+        if (refuseFirst && refuseLink(what, link, toQString(IsoStack::linkTarget(link.toStdString())), done))
             return;
         send(link);
     };

@@ -1,4 +1,5 @@
 #include "models/bridges/IsoBridgeDispatch.h"
+#include "models/QtStrings.h"
 
 #include <QCoreApplication>
 
@@ -7,12 +8,6 @@
 namespace ocu {
 
 using namespace iso23725;
-
-namespace {
-QString q(const std::string& s) {
-    return QString::fromStdString(s);
-}
-} // namespace
 
 const IsoAssignmentResponse* IsoDispatchState::response(const QString& assignmentId) const {
     for (auto it = responses.crbegin(); it != responses.crend(); ++it)
@@ -23,26 +18,27 @@ const IsoAssignmentResponse* IsoDispatchState::response(const QString& assignmen
 
 IsoDispatchState toDispatchState(const IsoMachineSnapshot& m) {
     IsoDispatchState s;
-    s.id = QStringLiteral("iso23725:") + q(m.equipmentId);
-    s.link = q(m.link);
-    s.name = m.hid.empty() ? q(m.equipmentId).left(8) : q(m.hid);
+    s.id = QStringLiteral("iso23725:") + toQString(m.equipmentId);
+    s.link = toQString(m.link);
+    s.name = m.hid.empty() ? toQString(m.equipmentId).left(8) : toQString(m.hid);
     s.stateKnown = m.stateKnown;
-    s.custodian = q(m.dispatchingCustodian);
+    s.custodian = toQString(m.dispatchingCustodian);
     s.needsAssignment = m.needsAssignment;
-    s.autonomyMode = q(m.autonomyMode);
+    s.autonomyMode = toQString(m.autonomyMode);
     if (m.assignment) {
-        s.assignmentId = m.assignment->assignmentId ? q(*m.assignment->assignmentId) : QString();
-        s.assignmentStatus = q(m.assignment->status);
-        s.task = m.assignment->task ? q(*m.assignment->task) : QString();
+        s.assignmentId = m.assignment->assignmentId ? toQString(*m.assignment->assignmentId) : QString();
+        s.assignmentStatus = toQString(m.assignment->status);
+        s.task = m.assignment->task ? toQString(*m.assignment->task) : QString();
         if (m.assignment->destinationId)
             s.destinationId = *m.assignment->destinationId;
     }
     for (const auto& a : m.requestedAssignments) {
         IsoTask t;
-        t.assignmentId = q(a.assignmentId);
-        t.task = q(a.task);
+        t.assignmentId = toQString(a.assignmentId);
+        t.task = toQString(a.task);
         t.destinationId = a.destinationId;
-        t.destinationEquipmentId = a.destinationEquipmentId ? q(*a.destinationEquipmentId) : QString();
+        t.destinationEquipmentId =
+            a.destinationEquipmentId ? toQString(*a.destinationEquipmentId) : QString();
         t.destinationSpotId = a.destinationSpotId;
         if (a.route) {
             QVector<qint64> r;
@@ -53,10 +49,10 @@ IsoDispatchState toDispatchState(const IsoMachineSnapshot& m) {
         s.requested << t;
     }
     for (const auto& r : m.assignmentResponses)
-        s.responses << IsoAssignmentResponse{q(r.assignmentId), q(r.response),
-                                             r.detail ? q(*r.detail) : QString()};
+        s.responses << IsoAssignmentResponse{toQString(r.assignmentId), toQString(r.response),
+                                             r.detail ? toQString(*r.detail) : QString()};
     if (m.production) {
-        s.productionState = q(m.production->productionState);
+        s.productionState = toQString(m.production->productionState);
         if (m.production->wayId)
             s.wayId = *m.production->wayId;
         s.productionSinceMs = m.productionUnixMs;

@@ -1,4 +1,5 @@
 #include "models/bridges/OsyrisBridge.h"
+#include "models/QtStrings.h"
 
 #include <QDateTime>
 #include <QJsonObject>
@@ -9,10 +10,6 @@
 namespace ocu {
 
 using namespace osyris;
-
-static QString q(const std::string& s) {
-    return QString::fromStdString(s);
-}
 
 OsyrisBridge::OsyrisBridge(const OsyrisConfig& config, const GeoFrame& siteFrame, QObject* parent)
     : FleetBridge(Protocol::Osyris, parent), m_config(config), m_frame(siteFrame) {
@@ -31,10 +28,10 @@ void OsyrisBridge::setMessageTap(MessageTap* tap) {
 
 QString OsyrisBridge::start() {
     std::string error;
-    const QString link = QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port);
+    const QString link = QStringLiteral("osyris:%1:%2").arg(toQString(m_config.group)).arg(m_config.port);
     if (!m_station->start(&error)) {
-        publishLink({link, ocu::LinkState::Down, -1, q(error)});
-        return tr("OSYRIS: %1").arg(q(error));
+        publishLink({link, ocu::LinkState::Down, -1, toQString(error)});
+        return tr("OSYRIS: %1").arg(toQString(error));
     }
     m_running = true;
     publishLink({link, ocu::LinkState::Degraded, -1, tr("joined, waiting for stations")});
@@ -70,21 +67,22 @@ void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
         } else {
             m.id = protocolPrefix(Protocol::Osyris) + QString::number(s.idx);
             m.protocol = Protocol::Osyris;
-            m.name = s.name.empty() ? tr("Machine %1").arg(s.idx) : q(s.name);
+            m.name = s.name.empty() ? tr("Machine %1").arg(s.idx) : toQString(s.name);
             m.type = QStringLiteral("roller");
             m.hasPosition = false;
         }
         m.link = ocu::LinkState::Up;
         m.lastDataMs = QDateTime::currentMSecsSinceEpoch();
         m.health = HealthLevel::Warning;
-        m.healthText = tr("implausible position ignored (slot %1): %2").arg(s.slot).arg(q(s.implausible));
+        m.healthText =
+            tr("implausible position ignored (slot %1): %2").arg(s.slot).arg(toQString(s.implausible));
         publishMachine(m);
         return;
     }
     MachineState m;
     m.id = protocolPrefix(Protocol::Osyris) + QString::number(s.idx);
     m.protocol = Protocol::Osyris;
-    m.name = s.name.empty() ? tr("Machine %1").arg(s.idx) : q(s.name);
+    m.name = s.name.empty() ? tr("Machine %1").arg(s.idx) : toQString(s.name);
     const QString lower = m.name.toLower();
     const bool paver = lower.contains(QLatin1String("paver")) || lower.contains(QLatin1String("fertiger"));
     m.type = paver ? QStringLiteral("paver") : QStringLiteral("roller");
@@ -134,8 +132,8 @@ void OsyrisBridge::onStationAlive(std::uint8_t idx, std::optional<SlotRange>) {
     m_heard = true;
     if (m_linkUp.exchange(true))
         return; // published once; positions keep the data age fresh
-    publishLink({QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port), ocu::LinkState::Up,
-                 0, tr("stations heard")});
+    publishLink({QStringLiteral("osyris:%1:%2").arg(toQString(m_config.group)).arg(m_config.port),
+                 ocu::LinkState::Up, 0, tr("stations heard")});
 }
 
 PassCountFilter OsyrisBridge::passCountFilter() const {
@@ -233,15 +231,16 @@ QVector<CrewRecipient> OsyrisBridge::crewRecipients() const {
 QString OsyrisBridge::stationName(int idx) const {
     if (auto it = m_config.machineNames.find(static_cast<std::uint8_t>(idx));
         it != m_config.machineNames.end())
-        return q(it->second);
+        return toQString(it->second);
     return tr("station %1").arg(idx);
 }
 
 void OsyrisBridge::onText(std::uint8_t idx, const std::string& text) {
     const QString id = protocolPrefix(Protocol::Osyris) + QString::number(idx);
     const QString name = stationName(idx);
-    FleetEvent e = makeEvent(EventSeverity::Info, ocu::EventKind::TextMessage, id,
-                             tr("Message from %1 (%2): %3").arg(name, id, q(text)), QStringLiteral("osyris"));
+    FleetEvent e =
+        makeEvent(EventSeverity::Info, ocu::EventKind::TextMessage, id,
+                  tr("Message from %1 (%2): %3").arg(name, id, toQString(text)), QStringLiteral("osyris"));
     // A message, not an alarm (EEMUA 191: an alarm is a condition that needs an operator's action): it goes
     // to the crew messages panel (unread count, notification) and to the event log as information, never
     // into the alarm list, its counts or its flood indicator.
@@ -249,7 +248,7 @@ void OsyrisBridge::onText(std::uint8_t idx, const std::string& text) {
     publishEvent(e);
     QMetaObject::invokeMethod(
         this,
-        [this, idx, id, name, t = q(text)] {
+        [this, idx, id, name, t = toQString(text)] {
             m_textSenders.insert(idx);
             emit textReceived(id, name, t);
         },
@@ -278,7 +277,7 @@ void OsyrisBridge::onEvent(Severity severity, const std::string& text) {
     const EventSeverity s = severity == Severity::Error     ? EventSeverity::Alarm
                             : severity == Severity::Warning ? EventSeverity::Warning
                                                             : EventSeverity::Info;
-    publishEvent(makeEvent(s, ocu::EventKind::Info, {}, q(text), QStringLiteral("osyris")));
+    publishEvent(makeEvent(s, ocu::EventKind::Info, {}, toQString(text), QStringLiteral("osyris")));
 }
 
 // ---- GUI thread ----
@@ -289,13 +288,13 @@ QString OsyrisBridge::linkRefusal(const QString& what) const {
         return tr("%1 refused: the OSYRIS station is not running; nothing sent").arg(what);
     if (!m_heard)
         return tr("%1 refused: no OSYRIS station heard on %2:%3 yet; nothing sent")
-            .arg(what, q(m_config.group))
+            .arg(what, toQString(m_config.group))
             .arg(m_config.port);
     return {};
 }
 
 void OsyrisBridge::stopAll(OutcomeCallback done) {
-    const QString target = q(m_station->groupTarget());
+    const QString target = toQString(m_station->groupTarget());
     if (const QString why = linkRefusal(tr("STOP message")); !why.isEmpty()) {
         done({refusal(target, linkCause(), why)});
         return;
@@ -328,7 +327,7 @@ OutcomeReason OsyrisBridge::linkCause() const {
 }
 
 void OsyrisBridge::sendText(const SendText& c, OutcomeCallback done) {
-    const QString target = q(m_station->groupTarget());
+    const QString target = toQString(m_station->groupTarget());
     // To one machine (its id) or to all (no id).
     int to = osyris::kIdxAll;
     if (!c.id.isEmpty()) {
@@ -353,7 +352,7 @@ void OsyrisBridge::command(const OperatorCommand& command, OutcomeCallback done)
     std::visit(Overloaded{
                    [&](const SendText& c) { sendText(c, std::move(done)); },
                    [&](const PingStation& c) {
-                       const QString target = q(m_station->groupTarget());
+                       const QString target = toQString(m_station->groupTarget());
                        if (c.idx < 0 || c.idx > 253)
                            return done({refusal(target, OutcomeReason::InvalidArgument,
                                                 tr("ping: \"idx\" must be a station index 0-253"))});
@@ -378,7 +377,7 @@ void OsyrisBridge::postToIo(std::function<void()> f) {
 }
 
 QVector<LinkCounters> OsyrisBridge::linkCounters() const {
-    return {LinkCounters::of(QStringLiteral("osyris:%1:%2").arg(q(m_config.group)).arg(m_config.port),
+    return {LinkCounters::of(QStringLiteral("osyris:%1:%2").arg(toQString(m_config.group)).arg(m_config.port),
                              m_station->counters())};
 }
 
