@@ -1,8 +1,8 @@
 #include "models/bridges/JausBridge.h"
 
+#include "protocols/common/Clock.h"
 #include "protocols/jaus/JausStack.h"
 
-#include <QDateTime>
 #include <QPointer>
 
 #include <cmath>
@@ -114,9 +114,11 @@ void JausBridge::startTimedDrive(quint16 subsystem, const JausDrive& c, double d
     }
     t->disconnect();
     const std::uint16_t s = subsystem;
-    const qint64 until = QDateTime::currentMSecsSinceEpoch() + static_cast<qint64>(durationS * 1000);
+    // On the steady clock: a wall-clock step (NTP, a time zone change) must not lengthen a timed drive.
+    const TimePoint until = SteadyClock::instance().now() +
+                            std::chrono::duration_cast<Duration>(std::chrono::duration<double>(durationS));
     connect(t, &QTimer::timeout, this, [this, s, c, until] {
-        if (QDateTime::currentMSecsSinceEpoch() >= until || !drive(s, c).ok)
+        if (SteadyClock::instance().now() >= until || !drive(s, c).ok)
             stopDriving(s);
     });
     t->start(static_cast<int>(1000.0 / std::max(1.0, m_config.driveRateHz)));
