@@ -1,6 +1,7 @@
 // The WebSocket keepalive (research note §2 [I]: dead after 15 s without any frame) decided on the endpoint's
 // Clock: with a FakeClock, 16 s of a silent peer are declared dead within a fraction of a real second, and
 // 14 s are not. Over a real loopback socket whose peer completes the opening handshake and then stays silent.
+#include "tests/support/IoContextWaits.h"
 #include <QtTest>
 
 #include <boost/asio/io_context.hpp>
@@ -28,15 +29,7 @@ struct Recorder : WsHandler {
     }
 };
 
-template <class Pred> bool runUntil(boost::asio::io_context& io, Pred p, int ms) {
-    for (int i = 0; i < ms / 10; ++i) {
-        if (p())
-            return true;
-        io.restart();
-        io.run_for(std::chrono::milliseconds(10));
-    }
-    return p();
-}
+using ocu::testing::runUntil;
 
 } // namespace
 

@@ -2,6 +2,7 @@
 // after the one being written (a Beast stream writes one message at a time) and ahead of everything else
 // queued; urgent frames keep their own order. Over a real loopback WebSocket (service and client endpoints on
 // one io_context, 127.0.0.1, free port).
+#include "tests/support/IoContextWaits.h"
 #include <QtTest>
 
 #include <boost/asio/io_context.hpp>
@@ -29,15 +30,7 @@ struct Recorder : WsHandler {
     }
 };
 
-template <class Pred> bool runUntil(boost::asio::io_context& io, Pred p, int ms = 20000) {
-    for (int i = 0; i < ms / 10; ++i) {
-        if (p())
-            return true;
-        io.restart();
-        io.run_for(std::chrono::milliseconds(10));
-    }
-    return p();
-}
+using ocu::testing::runUntil;
 
 } // namespace
 

@@ -1,6 +1,7 @@
 // JudpTransport over real loopback sockets: multicast for unknown destinations with an ACK request and
 // endpoint learning from the ACK (jaus-wire.md §2.2), unicast replies, static table, fragmentation of a
 // large message across datagrams, and JTCP client/server with route learning.
+#include "tests/support/IoContextWaits.h"
 #include <QtTest>
 
 #include <boost/asio/io_context.hpp>
@@ -42,16 +43,7 @@ struct Node {
     std::vector<Rx> got;
 };
 
-// Runs the io_context until p holds; generous, it returns as soon as p holds.
-template <class Pred> bool runUntil(boost::asio::io_context& io, Pred p, int ms = 10000) {
-    for (int i = 0; i < ms / 10; ++i) {
-        if (p())
-            return true;
-        io.restart();
-        io.run_for(std::chrono::milliseconds(10));
-    }
-    return p();
-}
+using ocu::testing::runUntil;
 
 } // namespace
 
