@@ -22,6 +22,7 @@
 #include "protocols/jaus/JausStack.h"
 #include "protocols/jaus/Messages.h"
 #include "sim/jaus/JausDemo.h"
+#include "tests/support/StackWaits.h"
 
 using namespace ocu;
 using namespace ocu::jaus;
@@ -45,19 +46,7 @@ struct Recorder : JausListener {
     }
 };
 
-// Generous: on an idle machine every condition below holds within a fraction of this.
-constexpr double kWait = 10;
-
-template <class Pred> bool waitFor(Pred p, double seconds = kWait) {
-    const auto end =
-        Clk::now() + std::chrono::duration_cast<Clk::duration>(std::chrono::duration<double>(seconds));
-    while (Clk::now() < end) {
-        if (p())
-            return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return p();
-}
+using stacktest::waitFor;
 
 JausConfig ocuConfig(const JausDemo& demo, std::uint16_t ss = 200, std::uint8_t authority = 205) {
     JausConfig c;
