@@ -65,7 +65,7 @@ bool FmsCore::allStopRemove() {
     // "Same ID used in apply must be used when removing" [OA-iso].
     std::optional<Guid> id = m_allStop.activeId ? m_allStop.activeId : m_allStop.pendingId;
     if (!id) {
-        m_lastRefusal = "no active all-stop id on link " + m_link.name;
+        setRefusal(OutcomeReason::Refused, "no active all-stop id on link " + m_link.name);
         event(IsoSeverity::Warning, "all-stop Remove refused on " + m_link.name + ": no active all-stop id");
         return false;
     }
@@ -85,7 +85,8 @@ bool FmsCore::requestAssignment(const Guid& equipmentId, std::vector<AssignmentI
         return false;
     auto it = m_machines.find(equipmentId);
     if (it == m_machines.end())
-        return refuse("assignment request", "machine " + equipmentId + " is unknown on link " + m_link.name);
+        return refuse("assignment request", "machine " + equipmentId + " is unknown on link " + m_link.name,
+                      OutcomeReason::UnknownTarget);
     auto& m = it->second;
     // §8.3 [I]: only a truck the AHS handed to the FMS is dispatched by the FMS.
     if (m.dispatchingCustodian != "FMS")
@@ -95,19 +96,23 @@ bool FmsCore::requestAssignment(const Guid& equipmentId, std::vector<AssignmentI
                                       : " is dispatched by the " + m.dispatchingCustodian +
                                             " (DispatchingCustodian " + m.dispatchingCustodian + ")"));
     if (items.empty())
-        return refuse("assignment request", "no task given");
+        return refuse("assignment request", "no task given", OutcomeReason::InvalidArgument);
     for (auto& a : items) {
         if (std::find(enums::haulTask.begin(), enums::haulTask.end(), a.task) == enums::haulTask.end())
             return refuse("assignment request",
-                          "task '" + a.task + "' is not one of Load, Offload, Fuel, Park, Wait");
+                          "task '" + a.task + "' is not one of Load, Offload, Fuel, Park, Wait",
+                          OutcomeReason::InvalidArgument);
         if (a.destinationEquipmentId && a.destinationSpotId)
             return refuse("assignment request",
-                          "DestinationEquipmentId and DestinationSpotId are mutually exclusive (§5 #21)");
+                          "DestinationEquipmentId and DestinationSpotId are mutually exclusive (§5 #21)",
+                          OutcomeReason::InvalidArgument);
         if (a.destinationEquipmentId && !isGuid(*a.destinationEquipmentId))
             return refuse("assignment request",
-                          "DestinationEquipmentId '" + *a.destinationEquipmentId + "' is not a GUID");
+                          "DestinationEquipmentId '" + *a.destinationEquipmentId + "' is not a GUID",
+                          OutcomeReason::InvalidArgument);
         if (!a.assignmentId.empty() && !isGuid(a.assignmentId))
-            return refuse("assignment request", "AssignmentId '" + a.assignmentId + "' is not a GUID");
+            return refuse("assignment request", "AssignmentId '" + a.assignmentId + "' is not a GUID",
+                          OutcomeReason::InvalidArgument);
     }
     if (std::string why = routeAssignment(m, items); !why.empty())
         return refuse("assignment request", why);
@@ -165,7 +170,8 @@ bool FmsCore::resetAssignment(const Guid& equipmentId) {
         return false;
     auto it = m_machines.find(equipmentId);
     if (it == m_machines.end())
-        return refuse("assignment reset", "machine " + equipmentId + " is unknown on link " + m_link.name);
+        return refuse("assignment reset", "machine " + equipmentId + " is unknown on link " + m_link.name,
+                      OutcomeReason::UnknownTarget);
     if (!sendBody(HaulTruckAssignmentResetV1{newGuid()}, equipmentId))
         return socketRefused("assignment reset");
     m_counters.add("assignment.reset");
@@ -205,10 +211,12 @@ bool FmsCore::fetchMap() {
         return false;
     if (m_mapService.fetch())
         return true;
-    m_lastRefusal =
-        separateMapService() && m_mapService.channelState() != LinkState::Up
-            ? "the map service of link " + m_link.name + " is " + toString(m_mapService.channelState())
-            : "the WebSocket of link " + m_link.name + " did not take the frame (closing)";
+    if (separateMapService() && m_mapService.channelState() != LinkState::Up)
+        setRefusal(OutcomeReason::LinkDown,
+                   "the map service of link " + m_link.name + " is " + toString(m_mapService.channelState()));
+    else
+        setRefusal(OutcomeReason::SendFailed,
+                   "the WebSocket of link " + m_link.name + " did not take the frame (closing)");
     return false;
 }
 

@@ -72,7 +72,8 @@ void FmsCore::event(IsoSeverity s, const std::string& text) {
 bool FmsCore::socketRefused(const char* what) {
     // The link was up but its WebSocket did not take the frame (closing under us): not sent, and said so.
     m_counters.add("cmd.refused.socket");
-    m_lastRefusal = "the WebSocket of link " + m_link.name + " did not take the frame (closing)";
+    setRefusal(OutcomeReason::SendFailed,
+               "the WebSocket of link " + m_link.name + " did not take the frame (closing)");
     event(IsoSeverity::Warning, std::string(what) + " not sent: " + m_lastRefusal);
     return false;
 }
@@ -97,9 +98,14 @@ void FmsCore::peerWarning(const std::string& cause, const std::string& text) {
               "; at most one such warning per minute");
 }
 
-bool FmsCore::refuse(const std::string& what, const std::string& reason) {
+void FmsCore::setRefusal(OutcomeReason cause, std::string reason) {
+    m_lastRefusalCause = cause;
+    m_lastRefusal = std::move(reason);
+}
+
+bool FmsCore::refuse(const std::string& what, const std::string& reason, OutcomeReason cause) {
     m_counters.add("cmd.refused");
-    m_lastRefusal = reason;
+    setRefusal(cause, reason);
     event(IsoSeverity::Warning, what + " refused: " + reason + " (nothing sent)");
     return false;
 }
@@ -108,7 +114,7 @@ bool FmsCore::upOrRefuse(const char* what) {
     if (m_state != LinkState::Up) {
         // §2.1 rule 1: commands are never queued while the link is down.
         m_counters.add("cmd.refused.link_down");
-        m_lastRefusal = "link " + m_link.name + " is " + toString(m_state);
+        setRefusal(OutcomeReason::LinkDown, "link " + m_link.name + " is " + toString(m_state));
         event(IsoSeverity::Warning, std::string(what) + " refused: link '" + m_link.name + "' is " +
                                         toString(m_state) + " (commands are not queued)");
         return false;

@@ -13,6 +13,7 @@
 #include "protocols/iso23725/Routing.h"
 
 #include "protocols/common/Clock.h"
+#include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 #include "protocols/common/MessageTap.h"
 
@@ -96,6 +97,11 @@ public:
     const AllStopStatus& allStop() const { return m_allStop; }
     // The reason of the latest refused command (a command outcome's reason).
     const std::string& lastRefusal() const { return m_lastRefusal; }
+    OutcomeReason lastRefusalCause() const { return m_lastRefusalCause; }
+    // The latest refusal as the outcome of a command for `target`.
+    TargetOutcome refusalFor(std::string target) const {
+        return TargetOutcome::refused(std::move(target), m_lastRefusalCause, m_lastRefusal);
+    }
     const std::map<Guid, IsoMachineSnapshot>& machines() const { return m_machines; }
     std::shared_ptr<const MapModel> map() const { return m_mapService.map(); }
     // The AHS's MapConnectivityV1, indexed for routing (empty until received).
@@ -136,7 +142,10 @@ public:
 
 private:
     bool upOrRefuse(const char* what);
-    bool refuse(const std::string& what, const std::string& reason); // counter, reason, event; false
+    // Counter, reason, event; false. `cause` Refused: the standard's rules (the reason says which).
+    bool refuse(const std::string& what, const std::string& reason,
+                OutcomeReason cause = OutcomeReason::Refused);
+    void setRefusal(OutcomeReason cause, std::string reason);
     // The routes of an assignment request (see requestAssignment); an error when one cannot be driven.
     std::string routeAssignment(const IsoMachineSnapshot& m, std::vector<AssignmentItem>& items) const;
     void onAssignmentResponse(IsoMachineSnapshot& m, const HaulTruckAssignmentResponseV1& r);
@@ -177,6 +186,7 @@ private:
     std::map<Guid, IsoMachineSnapshot> m_machines;
     AllStopStatus m_allStop;
     std::string m_lastRefusal;
+    OutcomeReason m_lastRefusalCause = OutcomeReason::None;
     std::set<Guid> m_issuedIds;
     Deadline m_ackDeadline;
     Deadline m_statusDeadline;

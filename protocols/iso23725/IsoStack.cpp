@@ -344,27 +344,12 @@ void IsoStack::stop() {
     d.links.clear();
 }
 
-void IsoStack::allStopApply(const std::string& link) {
-    m_impl->urgent.push([d = m_impl.get(), link] {
-        if (auto* s = d->session(link, "all-stop Apply"))
-            s->allStopApply();
-    });
-}
-
-void IsoStack::allStopRemove(const std::string& link) {
-    m_impl->urgent.push([d = m_impl.get(), link] {
-        if (auto* s = d->session(link, "all-stop Remove"))
-            s->allStopRemove();
-    });
-}
-
 void IsoStack::allStopApply(const std::string& link, OutcomeCallback done) {
     m_impl->urgent.push([d = m_impl.get(), link, done = std::move(done)] {
         TargetOutcome o = TargetOutcome::refused(linkTarget(link), OutcomeReason::UnknownTarget,
                                                  "no ISO 23725 link named " + link);
         if (auto* s = d->session(link, "all-stop Apply")) {
-            o = s->allStopApply() ? TargetOutcome::sentTo(o.target)
-                                  : TargetOutcome(o.target, false, s->lastRefusal());
+            o = s->allStopApply() ? TargetOutcome::sentTo(o.target) : s->refusalFor(o.target);
         }
         done({std::move(o)});
     });
@@ -375,25 +360,9 @@ void IsoStack::allStopRemove(const std::string& link, OutcomeCallback done) {
         TargetOutcome o = TargetOutcome::refused(linkTarget(link), OutcomeReason::UnknownTarget,
                                                  "no ISO 23725 link named " + link);
         if (auto* s = d->session(link, "all-stop Remove")) {
-            o = s->allStopRemove() ? TargetOutcome::sentTo(o.target)
-                                   : TargetOutcome(o.target, false, s->lastRefusal());
+            o = s->allStopRemove() ? TargetOutcome::sentTo(o.target) : s->refusalFor(o.target);
         }
         done({std::move(o)});
-    });
-}
-
-void IsoStack::requestAssignment(const std::string& link, const Guid& equipmentId,
-                                 std::vector<AssignmentItem> items) {
-    m_impl->io.post([d = m_impl.get(), link, equipmentId, items = std::move(items)]() mutable {
-        if (auto* s = d->session(link, "assignment request"))
-            s->requestAssignment(equipmentId, std::move(items));
-    });
-}
-
-void IsoStack::resetAssignment(const std::string& link, const Guid& equipmentId) {
-    m_impl->io.post([d = m_impl.get(), link, equipmentId] {
-        if (auto* s = d->session(link, "assignment reset"))
-            s->resetAssignment(equipmentId);
     });
 }
 
@@ -411,13 +380,6 @@ void IsoStack::setOwnPosition(const Guid& equipmentId, double lat, double lon, d
     });
 }
 
-void IsoStack::fetchMap(const std::string& link) {
-    m_impl->io.post([d = m_impl.get(), link] {
-        if (auto* s = d->session(link, "map fetch"))
-            s->fetchMap();
-    });
-}
-
 void IsoStack::requestAssignment(const std::string& link, const Guid& equipmentId,
                                  std::vector<AssignmentItem> items, OutcomeCallback done) {
     m_impl->io.post(
@@ -425,9 +387,8 @@ void IsoStack::requestAssignment(const std::string& link, const Guid& equipmentI
             TargetOutcome o = TargetOutcome::refused(machineTarget(equipmentId), OutcomeReason::UnknownTarget,
                                                      "no ISO 23725 link named " + link);
             if (auto* s = d->session(link, "assignment request")) {
-                o = s->requestAssignment(equipmentId, std::move(items))
-                        ? TargetOutcome::sentTo(o.target)
-                        : TargetOutcome(o.target, false, s->lastRefusal());
+                o = s->requestAssignment(equipmentId, std::move(items)) ? TargetOutcome::sentTo(o.target)
+                                                                        : s->refusalFor(o.target);
             }
             done({std::move(o)});
         });
@@ -438,8 +399,7 @@ void IsoStack::resetAssignment(const std::string& link, const Guid& equipmentId,
         TargetOutcome o = TargetOutcome::refused(machineTarget(equipmentId), OutcomeReason::UnknownTarget,
                                                  "no ISO 23725 link named " + link);
         if (auto* s = d->session(link, "assignment reset")) {
-            o = s->resetAssignment(equipmentId) ? TargetOutcome::sentTo(o.target)
-                                                : TargetOutcome(o.target, false, s->lastRefusal());
+            o = s->resetAssignment(equipmentId) ? TargetOutcome::sentTo(o.target) : s->refusalFor(o.target);
         }
         done({std::move(o)});
     });
@@ -450,8 +410,7 @@ void IsoStack::fetchMap(const std::string& link, OutcomeCallback done) {
         TargetOutcome o = TargetOutcome::refused(linkTarget(link), OutcomeReason::UnknownTarget,
                                                  "no ISO 23725 link named " + link);
         if (auto* s = d->session(link, "map fetch")) {
-            o = s->fetchMap() ? TargetOutcome::sentTo(o.target)
-                              : TargetOutcome(o.target, false, s->lastRefusal());
+            o = s->fetchMap() ? TargetOutcome::sentTo(o.target) : s->refusalFor(o.target);
         }
         done({std::move(o)});
     });

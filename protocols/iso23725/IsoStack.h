@@ -40,29 +40,21 @@ public:
     void setMessageTap(MessageTap* tap);
 
     // ---- commands (thread-safe, posted to the io thread; refused with an event while the link is down) ----
-    void allStopApply(const std::string& link);
-    // Removes with the id of the active stop (ours or, after operator confirmation, an external one).
-    void allStopRemove(const std::string& link);
-    // The same with their outcome: `done` runs once on the io thread with one TargetOutcome for
-    // the link (target linkTarget(link)); never when the stack is not running.
+    // Every command reports its outcome: `done` runs once on the io thread with one TargetOutcome (sent only
+    // when the socket took the frame; never when the stack is not running). All-stop and the map fetch name
+    // the link (linkTarget), assignment and reset the truck (machineTarget).
     void allStopApply(const std::string& link, OutcomeCallback done);
+    // Removes with the id of the active stop (ours or, after operator confirmation, an external one).
     void allStopRemove(const std::string& link, OutcomeCallback done);
     static std::string linkTarget(const std::string& link) { return "iso23725 link " + link; }
-    // Sends HaulTruckAssignmentRequestV2 (first = current, then future); empty AssignmentIds are generated.
-    void requestAssignment(const std::string& link, const Guid& equipmentId,
-                           std::vector<AssignmentItem> items);
-    void resetAssignment(const std::string& link, const Guid& equipmentId);
     // Position of one of the FMS's own (manned) machines, sent at positionRateHz when sendPositions is on.
     void setOwnPosition(const Guid& equipmentId, double lat, double lon, double elevation, double headingDeg,
                         double speedKmh);
-    // MapCommandV1 GET "/" (summary then all chunks).
-    void fetchMap(const std::string& link);
-    // The same three with their outcome: `done` runs once on the io thread with
-    // one TargetOutcome, sent only when the socket took the frame. Assignment and reset name the truck
-    // (machineTarget), the map fetch the link (linkTarget). Never when the stack is not running.
+    // Sends HaulTruckAssignmentRequestV2 (first = current, then future); empty AssignmentIds are generated.
     void requestAssignment(const std::string& link, const Guid& equipmentId,
                            std::vector<AssignmentItem> items, OutcomeCallback done);
     void resetAssignment(const std::string& link, const Guid& equipmentId, OutcomeCallback done);
+    // MapCommandV1 GET "/" (summary then all chunks).
     void fetchMap(const std::string& link, OutcomeCallback done);
     static std::string machineTarget(const Guid& equipmentId) { return "iso23725:" + equipmentId; }
 

@@ -144,7 +144,8 @@ std::vector<TargetOutcome> JausCore::setEmergencyAll(EmergencyCode code,
 }
 
 TargetOutcome JausCore::outcome(std::uint16_t subsystem, bool sent) const {
-    return TargetOutcome{targetId(subsystem), sent, sent ? std::string() : m_ctx.lastRefusal()};
+    return sent ? TargetOutcome::sentTo(targetId(subsystem))
+                : TargetOutcome::refused(targetId(subsystem), m_ctx.lastRefusalCause(), m_ctx.lastRefusal());
 }
 
 TargetOutcome JausCore::emergencyOutcome(std::uint16_t subsystem, bool sent) const {

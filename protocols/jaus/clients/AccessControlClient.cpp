@@ -59,10 +59,11 @@ double AccessControlClient::timeoutS(const RemoteSubsystem& r) const {
 bool AccessControlClient::requestControl(std::uint16_t ss) {
     const JausConfig& cfg = m_ctx.config();
     if (!cfg.mayControl())
-        return m_ctx.refuse(ss, "the monitor role (authority 0) never requests control");
+        return m_ctx.refuse(ss, "the monitor role (authority 0) never requests control",
+                            OutcomeReason::NotPermitted);
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r || !r->controlTarget().subsystem)
-        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "AccessControl"));
+        return m_ctx.refuseNoTarget(ss, "AccessControl");
     if (!m_ctx.send(r->controlTarget(), encodeU8(msg::RequestControl, cfg.authority)))
         return m_ctx.sendFailed(ss, "RequestControl");
     State& s = m_state[ss];
@@ -79,7 +80,7 @@ bool AccessControlClient::requestControl(std::uint16_t ss) {
 bool AccessControlClient::releaseControl(std::uint16_t ss) {
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r || !r->controlTarget().subsystem)
-        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "AccessControl"));
+        return m_ctx.refuseNoTarget(ss, "AccessControl");
     m_drive.beforeRelease(*r);
     State& s = m_state[ss];
     s.phase = r->snap.controlledByUs ? Phase::Releasing : Phase::Idle;

@@ -41,16 +41,18 @@ void ClientContext::changed(const RemoteSubsystem& r) {
     m_listener.onSubsystemChanged(r.snap);
 }
 
-bool ClientContext::refuse(std::uint16_t ss, const std::string& why) {
+bool ClientContext::refuse(std::uint16_t ss, const std::string& why, OutcomeReason cause) {
     m_counters.add("cmd.refused");
     m_lastRefusal = why;
+    m_lastRefusalCause = cause;
     notify(Severity::Warning, EventKind::CommandRefused, ss, why);
     return false;
 }
 
-bool ClientContext::refuseQuietly(const std::string& why) {
+bool ClientContext::refuseQuietly(const std::string& why, OutcomeReason cause) {
     m_counters.add("cmd.refused");
     m_lastRefusal = why;
+    m_lastRefusalCause = cause;
     return false;
 }
 
@@ -64,9 +66,18 @@ std::string ClientContext::noTarget(std::uint16_t ss, const char* service) const
     return "no component of " + name + " offers " + service + " (directly or by inheritance)";
 }
 
+bool ClientContext::refuseNoTarget(std::uint16_t ss, const char* service) {
+    const RemoteSubsystem* r = find(ss);
+    const OutcomeReason cause = !r                    ? OutcomeReason::UnknownTarget
+                                : r->components.known ? OutcomeReason::NotSupported
+                                                      : OutcomeReason::Refused;
+    return refuse(ss, noTarget(ss, service), cause);
+}
+
 bool ClientContext::sendFailed(std::uint16_t ss, const char* what) {
-    return refuse(ss, std::string(what) + " for subsystem " + std::to_string(ss) +
-                          " was not sent: " + m_lastSendError);
+    return refuse(
+        ss, std::string(what) + " for subsystem " + std::to_string(ss) + " was not sent: " + m_lastSendError,
+        OutcomeReason::SendFailed);
 }
 
 void ClientContext::rejected(const JausId& src, const std::string& error) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "protocols/common/Clock.h"
+#include "protocols/common/CommandOutcome.h"
 #include "protocols/common/Counters.h"
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausOutput.h"
@@ -68,18 +69,24 @@ public:
     void notify(Severity severity, EventKind kind, std::uint16_t subsystem, std::string text);
     // The subsystem's snapshot changed: hand it to the listener.
     void changed(const RemoteSubsystem& remote);
-    // A command the console does not send: counter, CommandRefused event; returns false.
-    bool refuse(std::uint16_t subsystem, const std::string& why);
+    // A command the console does not send: counter, CommandRefused event; returns false. `cause` is the
+    // outcome's kind; Refused means the service's own rules (the text says which).
+    bool refuse(std::uint16_t subsystem, const std::string& why,
+                OutcomeReason cause = OutcomeReason::Refused);
     // The same without the event (a refusal repeated at a stream's rate, e.g. a held pan-tilt key: the
     // first one was an event already); counted and the outcome's reason all the same.
-    bool refuseQuietly(const std::string& why);
+    bool refuseQuietly(const std::string& why, OutcomeReason cause = OutcomeReason::Refused);
+    // refuse() for a command with no component to go to (noTarget's words): UnknownTarget while the
+    // subsystem was never heard, NotSupported when none of its components offers `service`.
+    bool refuseNoTarget(std::uint16_t subsystem, const char* service);
     // Why a command for a subsystem has no component to go to, in words an operator can act on: not
     // discovered, services not reported yet, or no component offering `service` (directly or by inheritance).
     std::string noTarget(std::uint16_t subsystem, const char* service) const;
     // A command whose message could not be handed to a socket: refuse() with the transport's reason.
     bool sendFailed(std::uint16_t subsystem, const char* what);
-    // The reason given by the latest refuse() (the command outcome's reason).
+    // The reason given by the latest refuse() (the command outcome's reason) and its kind.
     const std::string& lastRefusal() const { return m_lastRefusal; }
+    OutcomeReason lastRefusalCause() const { return m_lastRefusalCause; }
     // A message that did not decode: counter rx.rejected.<reason> and a log line.
     void rejected(const JausId& source, const std::string& error);
 
@@ -98,6 +105,7 @@ private:
     const Clock& m_clock;
     Counters& m_counters;
     std::string m_lastRefusal;
+    OutcomeReason m_lastRefusalCause = OutcomeReason::None;
     std::string m_lastSendError;
     JausId m_self;
     std::map<std::uint16_t, RemoteSubsystem> m_remotes;

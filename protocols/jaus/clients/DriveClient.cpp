@@ -8,10 +8,11 @@ namespace ocu::jaus {
 
 bool DriveClient::startDriving(std::uint16_t ss) {
     if (!m_ctx.config().mayControl())
-        return m_ctx.refuse(ss, "the monitor role may not drive");
+        return m_ctx.refuse(ss, "the monitor role may not drive", OutcomeReason::NotPermitted);
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r || !r->snap.controlledByUs)
-        return m_ctx.refuse(ss, "driving needs control of subsystem " + std::to_string(ss));
+        return m_ctx.refuse(ss, "driving needs control of subsystem " + std::to_string(ss),
+                            OutcomeReason::NotControlled);
     if (r->snap.emergency)
         return m_ctx.refuse(ss, r->snap.callSign + " is in EMERGENCY");
     // Drivers obey only in READY (AEP-4818 §4.2.2, §9 item 18).
@@ -32,10 +33,12 @@ bool DriveClient::startDriving(std::uint16_t ss) {
     // The session's first message, a zero demand, goes out at once: the session is open on the wire when the
     // socket took it (the periodic stream follows at the drive rate).
     if (!r->mobility().subsystem)
-        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "a driver (PrimitiveDriver / VelocityStateDriver)"));
+        return m_ctx.refuseNoTarget(ss, "a driver (PrimitiveDriver / VelocityStateDriver)");
     if (!send(*r, s, true))
-        return m_ctx.refuse(ss, "drive session for " + r->snap.callSign +
-                                    ": the first drive command was not sent: " + s.lastError);
+        return m_ctx.refuse(ss,
+                            "drive session for " + r->snap.callSign +
+                                ": the first drive command was not sent: " + s.lastError,
+                            OutcomeReason::SendFailed);
     return true;
 }
 
@@ -73,9 +76,10 @@ bool DriveClient::setDriveCommand(std::uint16_t ss, DriveCommand c) {
     if (changed && r->mobility().subsystem)
         send(*r, s, false);
     if (!r->mobility().subsystem)
-        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "a driver (PrimitiveDriver / VelocityStateDriver)"));
+        return m_ctx.refuseNoTarget(ss, "a driver (PrimitiveDriver / VelocityStateDriver)");
     if (!s.lastSendOk)
-        return m_ctx.refuse(ss, "drive command for " + r->snap.callSign + " was not sent: " + s.lastError);
+        return m_ctx.refuse(ss, "drive command for " + r->snap.callSign + " was not sent: " + s.lastError,
+                            OutcomeReason::SendFailed);
     return true;
 }
 
@@ -105,15 +109,18 @@ const char* DriveClient::missingDriver(const RemoteSubsystem& r, DriveCommand::M
 bool DriveClient::stopDriving(std::uint16_t ss) {
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r)
-        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown");
+        return m_ctx.refuse(ss, "subsystem " + std::to_string(ss) + " is unknown",
+                            OutcomeReason::UnknownTarget);
     State& s = m_state[ss];
     if (!stop(*r, s))
-        return m_ctx.refuse(ss, r->snap.controlledByUs
-                                    ? "the zero drive command for " + r->snap.callSign +
-                                          " was not sent: " + s.lastError
-                                    : "this console does not control " + r->snap.callSign +
-                                          ": no zero drive commands sent (the vehicle's own drive "
-                                          "timeout stops it)");
+        return m_ctx.refuse(
+            ss,
+            r->snap.controlledByUs
+                ? "the zero drive command for " + r->snap.callSign + " was not sent: " + s.lastError
+                : "this console does not control " + r->snap.callSign +
+                      ": no zero drive commands sent (the vehicle's own drive "
+                      "timeout stops it)",
+            r->snap.controlledByUs ? OutcomeReason::SendFailed : OutcomeReason::NotControlled);
     return true;
 }
 

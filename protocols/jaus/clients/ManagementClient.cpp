@@ -20,13 +20,14 @@ void ManagementClient::onServicesKnown(RemoteSubsystem& r) {
 
 bool ManagementClient::command(std::uint16_t ss, std::uint16_t id, const char* what) {
     if (!m_ctx.config().mayControl())
-        return m_ctx.refuse(ss, std::string("the monitor role may not ") + what);
+        return m_ctx.refuse(ss, std::string("the monitor role may not ") + what, OutcomeReason::NotPermitted);
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r || !r->managementTarget().subsystem)
-        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
+        return m_ctx.refuseNoTarget(ss, "Management");
     if (!r->snap.controlledByUs)
-        return m_ctx.refuse(ss, std::string(what) + " needs control of " + r->snap.callSign +
-                                    " (request control first)");
+        return m_ctx.refuse(
+            ss, std::string(what) + " needs control of " + r->snap.callSign + " (request control first)",
+            OutcomeReason::NotControlled);
     if (!m_ctx.send(r->managementTarget(), encodeEmpty(id)))
         return m_ctx.sendFailed(ss, what);
     m_ctx.send(r->managementTarget(), encodeEmpty(msg::QueryStatus));
@@ -64,7 +65,7 @@ bool ManagementClient::setEmergency(std::uint16_t ss, EmergencyCode code, bool a
     const auto target = emergencyTarget(ss);
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!target || !r)
-        return alreadySent ? true : m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
+        return alreadySent ? true : m_ctx.refuseNoTarget(ss, "Management");
     State& s = m_state[ss];
     s.emergencyCode = code;
     m_drive.endSession(*r, true);
@@ -90,10 +91,11 @@ bool ManagementClient::clearEmergency(std::uint16_t ss) {
     if (!m_ctx.config().mayClearStop())
         return m_ctx.refuse(ss,
                             "this console's role (monitor, authority 0) may stop but not clear an emergency;"
-                            " clear it from a console with command rights");
+                            " clear it from a console with command rights",
+                            OutcomeReason::NotPermitted);
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r || !r->managementTarget().subsystem)
-        return m_ctx.refuse(ss, m_ctx.noTarget(ss, "Management"));
+        return m_ctx.refuseNoTarget(ss, "Management");
     State& s = m_state[ss];
     s.emergencyRetries = 0;
     if (!m_ctx.send(r->managementTarget(), encodeU16(msg::ClearEmergency, std::uint16_t(s.emergencyCode)),

@@ -4,7 +4,9 @@
 
 #include <chrono>
 #include <functional>
+#include <future>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -105,6 +107,24 @@ inline bool waitFor(const std::function<bool()>& pred,
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     return pred();
+}
+
+// The outcome of one command, waited for: `issue` is given the callback to pass to the stack's command.
+template <class Issue> std::vector<ocu::TargetOutcome> outcome(Issue&& issue) {
+    auto p = std::make_shared<std::promise<std::vector<ocu::TargetOutcome>>>();
+    auto f = p->get_future();
+    issue([p](std::vector<ocu::TargetOutcome> o) { p->set_value(std::move(o)); });
+    if (f.wait_for(std::chrono::seconds(30)) != std::future_status::ready)
+        return {};
+    return f.get();
+}
+
+// The single outcome of a command for one target: sent, or refused with `cause`.
+inline bool sentOne(const std::vector<ocu::TargetOutcome>& o) {
+    return o.size() == 1 && o[0].sent;
+}
+inline bool refusedOne(const std::vector<ocu::TargetOutcome>& o, ocu::OutcomeReason cause) {
+    return o.size() == 1 && !o[0].sent && o[0].cause == cause && !o[0].reason.empty();
 }
 
 } // namespace isotest

@@ -100,7 +100,7 @@ private slots:
 
         // All-stop Apply: status On (only from MachineAllStopV1), and every truck comes to rest.
         QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::Off; })); // the AHS's status first
-        stack.allStopApply("ahs");
+        QVERIFY(sentOne(outcome([&](auto done) { stack.allStopApply("ahs", done); })));
         QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::On; }));
         auto st = stack.allStop("ahs");
         QVERIFY(!st.external);
@@ -115,7 +115,7 @@ private slots:
             return rec.machinesWith([](auto& m) { return m.position && m.position->speedKmh == 0.0; }) == 6;
         }));
         // Remove with the same id: Off, and the trucks resume.
-        stack.allStopRemove("ahs");
+        QVERIFY(sentOne(outcome([&](auto done) { stack.allStopRemove("ahs", done); })));
         QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::Off; }));
         QVERIFY(waitFor([&] { return ahs.counters().get("sim.allstop.off") == 1u; }));
         QVERIFY(waitFor([&] { return ahs.stats().movingTrucks > 0; }));
@@ -126,8 +126,10 @@ private slots:
         for (auto id : map->areas)
             if (map->way(id)->defaultTask() == "load")
                 loadArea = id;
-        stack.requestAssignment("ahs", fleet[0].equipmentId,
-                                {AssignmentItem{"", "Load", loadArea, {}, {}, {}}});
+        QVERIFY(sentOne(outcome([&](auto done) {
+            stack.requestAssignment("ahs", fleet[0].equipmentId,
+                                    {AssignmentItem{"", "Load", loadArea, {}, {}, {}}}, done);
+        })));
         QVERIFY(waitFor([&] {
             return rec.machinesWith([&](auto& m) {
                 return m.equipmentId == fleet[0].equipmentId && m.assignment &&
@@ -135,10 +137,14 @@ private slots:
             }) == 1;
         }));
         QVERIFY(waitFor([&] { return rec.hasEvent("Accepted"); })); // the response is its own message
-        stack.requestAssignment("ahs", fleet[1].equipmentId,
-                                {AssignmentItem{"", "Offload", loadArea, {}, {}, {}}});
+        // Sent (the console checks form, the AHS the area's kind) and rejected by the AHS.
+        QVERIFY(sentOne(outcome([&](auto done) {
+            stack.requestAssignment("ahs", fleet[1].equipmentId,
+                                    {AssignmentItem{"", "Offload", loadArea, {}, {}, {}}}, done);
+        })));
         QVERIFY(waitFor([&] { return rec.hasEvent("is not a dump area"); }));
-        stack.resetAssignment("ahs", fleet[0].equipmentId);
+        QVERIFY(
+            sentOne(outcome([&](auto done) { stack.resetAssignment("ahs", fleet[0].equipmentId, done); })));
         QVERIFY(waitFor([&] {
             return rec.machinesWith([&](auto& m) {
                 return m.equipmentId == fleet[0].equipmentId && m.assignment &&
@@ -180,7 +186,8 @@ private slots:
         QCOMPARE(rec.allStop(), AllStopState::Unknown);
         QCOMPARE(rec.machinesWith([](auto& m) { return m.stateKnown; }), 0);
         // Commands are refused while down, never queued.
-        stack.allStopApply("ahs");
+        QVERIFY(refusedOne(outcome([&](auto done) { stack.allStopApply("ahs", done); }),
+                           ocu::OutcomeReason::LinkDown));
         QVERIFY(waitFor([&] { return rec.hasEvent("all-stop Apply refused: link 'ahs' is DOWN"); }));
         QCOMPARE(stack.counters().get("cmd.refused.link_down"), 1u);
         ahs.reset();
@@ -327,10 +334,13 @@ private slots:
         QVERIFY(stack.start());
         QVERIFY(waitFor([&] { return stack.counters().get("link.connect_failed") >= 3; }));
         QCOMPARE(rec.link("nowhere"), LinkState::Down);
-        stack.fetchMap("nowhere");
-        stack.allStopRemove("nowhere");
-        QVERIFY(waitFor([&] { return stack.counters().get("cmd.refused.link_down") == 2; }));
-        stack.allStopApply("other");
+        QVERIFY(refusedOne(outcome([&](auto done) { stack.fetchMap("nowhere", done); }),
+                           ocu::OutcomeReason::LinkDown));
+        QVERIFY(refusedOne(outcome([&](auto done) { stack.allStopRemove("nowhere", done); }),
+                           ocu::OutcomeReason::LinkDown));
+        QCOMPARE(stack.counters().get("cmd.refused.link_down"), 2u);
+        QVERIFY(refusedOne(outcome([&](auto done) { stack.allStopApply("other", done); }),
+                           ocu::OutcomeReason::UnknownTarget));
         QVERIFY(waitFor([&] { return rec.hasEvent("no ISO 23725 link named 'other'"); }));
         stack.stop();
     }

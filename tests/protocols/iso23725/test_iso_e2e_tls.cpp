@@ -105,10 +105,10 @@ private slots:
             waitFor([&] { return rec.machinesWith([](auto& m) { return m.position.has_value(); }) == 4; }));
         QVERIFY(waitFor([&] { return rec.with([&] { return rec.maps; }) == 1; }));
         QVERIFY(stack.map("ahs")->summary.documentCount >= 3);
-        stack.allStopApply("ahs");
+        QVERIFY(sentOne(outcome([&](auto done) { stack.allStopApply("ahs", done); })));
         QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::On; }));
         QVERIFY(waitFor([&] { return ahs->stats().movingTrucks == 0; }));
-        stack.allStopRemove("ahs");
+        QVERIFY(sentOne(outcome([&](auto done) { stack.allStopRemove("ahs", done); })));
         QVERIFY(waitFor([&] { return rec.allStop() == AllStopState::Off; }));
         QCOMPARE(stack.counters().get("ws.tls.failed"), 0u);
 
@@ -117,7 +117,8 @@ private slots:
         QVERIFY(waitFor([&] { return rec.link("ahs") == LinkState::Down; }));
         QCOMPARE(rec.allStop(), AllStopState::Unknown);
         QCOMPARE(rec.machinesWith([](auto& m) { return m.stateKnown; }), 0);
-        stack.allStopApply("ahs");
+        QVERIFY(refusedOne(outcome([&](auto done) { stack.allStopApply("ahs", done); }),
+                           ocu::OutcomeReason::LinkDown));
         QVERIFY(waitFor([&] { return rec.hasEvent("all-stop Apply refused: link 'ahs' is DOWN"); }));
         ahs.reset();
         cfg.port = port;

@@ -41,16 +41,6 @@ IsoConfig consoleConfig(const std::string& url) {
     return c;
 }
 
-// The outcome of one command, waited for.
-template <class Issue> std::vector<ocu::TargetOutcome> outcome(Issue&& issue) {
-    auto p = std::make_shared<std::promise<std::vector<ocu::TargetOutcome>>>();
-    auto f = p->get_future();
-    issue([p](std::vector<ocu::TargetOutcome> o) { p->set_value(std::move(o)); });
-    if (f.wait_for(std::chrono::seconds(30)) != std::future_status::ready)
-        return {};
-    return f.get();
-}
-
 struct Session {
     explicit Session(foreign::ForeignAhsOptions o = {})
         : peer(std::move(o)), stack(consoleConfig(peer.url()), rec) {}
