@@ -33,6 +33,22 @@ function(ocu_libraries_in_build out name)
   set(${out} TRUE PARENT_SCOPE)
 endfunction()
 
+# Test and benchmark executables link without the libraries' debug info: reading and recompressing their line
+# tables is three quarters of such a link (test_main_window 1.5 -> 0.35 s CPU, ~160 executables). A failing
+# test reports file:line through Qt Test's macros; sanitizer builds and OCU_TEST_DEBUG_INFO=ON keep it for
+# symbolised reports and debugger sessions. The console and the simulator always keep theirs.
+function(ocu_link_without_debug_info target)
+  if(NOT OCU_TEST_DEBUG_INFO AND NOT OCU_SANITIZE AND NOT OCU_FUZZ)
+    target_link_options(${target} PRIVATE $<$<CONFIG:RelWithDebInfo>:-Wl,--strip-debug>)
+  endif()
+endfunction()
+
+# Test code (tests, foreign peers, test servers) at -O1; the code under test keeps its -O2. A sixth less
+# compile time per test TU (test_main_window.cpp 9.6 -> 8.1 s CPU), and the precompiled headers stay valid.
+function(ocu_compile_as_test_code target)
+  target_compile_options(${target} PRIVATE $<$<CONFIG:RelWithDebInfo,Release>:-O1>)
+endfunction()
+
 # ocu_add_test(NAME n SOURCES s... [LIBS l...] [XVFB] [TIMEOUT sec] [LABELS l...])
 # A Qt Test executable registered in CTest. GUI tests run on the offscreen platform with DISPLAY unset;
 # XVFB tests (OpenGL/VTK) run under xvfb-run with the xcb platform.
@@ -49,6 +65,8 @@ function(ocu_add_test)
   # Qt's test defines carry the absolute build and source folders; no test uses QFINDTESTDATA. Undefined, the
   # preprocessed test is the same in every clone or worktree, so ccache can share the objects between them.
   target_compile_options(${T_NAME} PRIVATE -UQT_TESTCASE_BUILDDIR -UQT_TESTCASE_SOURCEDIR)
+  ocu_compile_as_test_code(${T_NAME})
+  ocu_link_without_debug_info(${T_NAME})
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 120)
   endif()
@@ -80,6 +98,7 @@ function(ocu_add_bench)
   add_executable(${B_NAME} ${B_SOURCES})
   target_link_libraries(${B_NAME} PRIVATE benchmark::benchmark ${B_LIBS})
   ocu_set_warnings(${B_NAME})
+  ocu_link_without_debug_info(${B_NAME})
 endfunction()
 
 # ocu_module_registry(TARGET t HEADER h INTERFACE cls NAMESPACE ns FUNCTION fn FACTORIES f...)
