@@ -76,6 +76,7 @@ public:
     // The clock of frame arrivals and ages, the loss and connect timeouts and the reconnect back-off (null:
     // the system clock); a frame's time code (the camera's wall clock) is taken onto it as the frame arrives.
     void setClock(std::shared_ptr<const ModelClock> clock);
+    std::shared_ptr<const ModelClock> clock() const { return m_clock; }
     std::int64_t nowUs() const;
 
     void play();
