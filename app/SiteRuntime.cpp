@@ -28,7 +28,6 @@
 #include "widgets/SiteMapView.h"
 
 #include <QApplication>
-#include <QDateTime>
 #include <QDir>
 #include <QDockWidget>
 #include <QLabel>
@@ -447,7 +446,7 @@ void SiteRuntime::Impl::connectBridges(MainWindow& window, SiteMapView* map, Pas
         QHash<Protocol, qint64> newest;
         for (const MachineState& m : fleetContext->fleet()->machinesSnapshot())
             newest[m.protocol] = std::max(newest.value(m.protocol, 0), m.lastDataMs);
-        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        const qint64 now = fleetContext->fleet()->nowMs();
         for (auto it = newest.begin(); it != newest.end(); ++it)
             if (LinkIndicator* ind = indicators.value(it.key()); ind && it.value() > 0)
                 ind->setDataAgeMs(std::max<qint64>(0, now - it.value()));

@@ -92,7 +92,7 @@ static const GeoPoint kOrigin{48.2, 11.4, 480};
 static bool record(const Setup& setup, const QString& file, bool legacy, bool messages, RunFigures& fig) {
     const int machines = setup.machines;
     const qint64 t0 = 1'700'000'000'000;
-    qint64 clock = t0;
+    auto clock = std::make_shared<ManualModelClock>(t0);
     const GeoFrame frame(kOrigin);
     std::vector<MachineState> fleet;
     fleet.resize(size_t(machines));
@@ -112,7 +112,7 @@ static bool record(const Setup& setup, const QString& file, bool legacy, bool me
     Recorder rec;
     RecorderOptions o;
     o.path = file;
-    o.clock = [&clock] { return clock; };
+    o.clock = clock;
     o.flushIntervalMs = 200;
     o.legacySchema3 = legacy;
     o.messages = messages;
@@ -162,9 +162,9 @@ static bool record(const Setup& setup, const QString& file, bool legacy, bool me
     const qint64 ackAfterMs = setup.ackAfterMs;
     std::deque<std::pair<qint64, QString>> pendingAcks; // (when, the alarm's key)
     for (qint64 ms = 0; ms < qint64(setup.seconds) * 1000; ms += stepMs) {
-        clock = t0 + ms;
+        clock->set(t0 + ms);
         while (!pendingAcks.empty() && pendingAcks.front().first <= ms) {
-            rec.recordAck(pendingAcks.front().second, QStringLiteral("op"), clock);
+            rec.recordAck(pendingAcks.front().second, QStringLiteral("op"), clock->nowMs());
             pendingAcks.pop_front();
         }
         batch.clear();
@@ -181,8 +181,8 @@ static bool record(const Setup& setup, const QString& file, bool legacy, bool me
             const GeoPoint g = frame.toGeodetic({m.e, m.n, m.u});
             m.lat = g.lat;
             m.lon = g.lon;
-            m.lastDataMs = clock - 3;
-            m.lastMessageMs = clock - 20;
+            m.lastDataMs = clock->nowMs() - 3;
+            m.lastMessageMs = clock->nowMs() - 20;
             if (ms % 30000 == 0 && i % 10 == 0) // a status change now and then (Full records)
                 m.healthText = m.healthText.isEmpty() ? QStringLiteral("tyre pressure") : QString();
             batch.push_back(m);
@@ -215,7 +215,8 @@ static bool record(const Setup& setup, const QString& file, bool legacy, bool me
         if (ms % 1000 == 0) {
             FleetEvent ev = makeEvent(EventSeverity::Warning, EventKind::Diagnostic, fleet[0].id,
                                       QStringLiteral("diagnostic %1").arg(ms));
-            ev.timeMs = clock; // the recording's time: an acknowledgement covers what was raised before it
+            ev.timeMs =
+                clock->nowMs(); // the recording's time: an acknowledgement covers what was raised before it
             rec.recordEvent(ev);
             if (ackAfterMs >= 0)
                 pendingAcks.push_back({ms + ackAfterMs, alarmKey(ev)});

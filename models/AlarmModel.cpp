@@ -16,17 +16,12 @@
 namespace ocu {
 
 AlarmModel::AlarmModel(QObject* parent)
-    : QAbstractTableModel(parent), m_clock([] { return QDateTime::currentMSecsSinceEpoch(); }),
-      m_operator(QStringLiteral("local")), m_timer(new QTimer(this)) {
+    : QAbstractTableModel(parent), m_operator(QStringLiteral("local")), m_timer(new QTimer(this)) {
     m_timer->setInterval(1000);
     connect(m_timer, &QTimer::timeout, this, [this] {
         expireShelving();
         pruneRate(true);
     });
-}
-
-void AlarmModel::setClock(std::function<qint64()> nowMs) {
-    m_clock = nowMs ? std::move(nowMs) : [] { return QDateTime::currentMSecsSinceEpoch(); };
 }
 
 int AlarmModel::rowOfKey(const QString& key) const {
@@ -214,7 +209,7 @@ QVariant AlarmModel::data(const QModelIndex& index, int role) const {
 
 void AlarmModel::add(const FleetEvent& event) {
     FleetEvent ev = event;
-    const qint64 now = m_clock();
+    const qint64 now = nowMs();
     if (ev.timeMs == 0)
         ev.timeMs = now;
     const QString key = alarmKey(ev);
@@ -320,7 +315,7 @@ void AlarmModel::ackRow(int row, const QString& by, qint64 atMs, bool notify) {
 void AlarmModel::acknowledge(int row) {
     if (row < 0 || row >= m_rows.size() || m_rows[row].acked)
         return;
-    const qint64 now = m_clock();
+    const qint64 now = nowMs();
     const QString key = m_rows[row].key;
     ackRow(row, m_operator, now);
     recount();
@@ -328,7 +323,7 @@ void AlarmModel::acknowledge(int row) {
 }
 
 void AlarmModel::acknowledgeAll() {
-    const qint64 now = m_clock();
+    const qint64 now = nowMs();
     QStringList keys;
     for (int i = 0; i < m_rows.size(); ++i) {
         if (!m_rows[i].acked) {
@@ -362,14 +357,14 @@ bool AlarmModel::acknowledgeKey(const QString& key, const QString& by, qint64 at
 void AlarmModel::shelve(const QString& key, qint64 durationMs, const QString& reason) {
     if (key.isEmpty() || durationMs <= 0)
         return;
-    const qint64 now = m_clock();
+    const qint64 now = nowMs();
     const QString by =
         reason.isEmpty() ? m_operator : m_operator + QStringLiteral(" (") + reason + QLatin1Char(')');
     applyShelve(key, by, now, now + durationMs);
 }
 
 bool AlarmModel::applyShelve(const QString& key, const QString& by, qint64 atMs, qint64 untilMs) {
-    if (key.isEmpty() || untilMs <= m_clock())
+    if (key.isEmpty() || untilMs <= nowMs())
         return false;
     m_shelves.insert(key, Shelf{by, atMs, untilMs});
     recount();
@@ -387,12 +382,12 @@ bool AlarmModel::unshelve(const QString& key, const QString& by) {
     if (rowCount() > 0)
         emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
     updateTimer();
-    emit alarmUnshelved(key, by.isEmpty() ? m_operator : by, m_clock());
+    emit alarmUnshelved(key, by.isEmpty() ? m_operator : by, nowMs());
     return true;
 }
 
 void AlarmModel::expireShelving() {
-    const qint64 now = m_clock();
+    const qint64 now = nowMs();
     QStringList expired;
     for (auto it = m_shelves.constBegin(); it != m_shelves.constEnd(); ++it)
         if (it->untilMs <= now)
@@ -402,7 +397,7 @@ void AlarmModel::expireShelving() {
 }
 
 void AlarmModel::pruneRate(bool notify) {
-    const qint64 from = m_clock() - kRateWindowMs;
+    const qint64 from = nowMs() - kRateWindowMs;
     while (!m_annunciations.empty() && m_annunciations.front() <= from)
         m_annunciations.pop_front();
     if (notify && int(m_annunciations.size()) != m_lastRate) {
@@ -414,7 +409,7 @@ void AlarmModel::pruneRate(bool notify) {
 }
 
 int AlarmModel::alarmRate() const {
-    const qint64 from = m_clock() - kRateWindowMs;
+    const qint64 from = nowMs() - kRateWindowMs;
     int n = 0;
     for (auto it = m_annunciations.rbegin(); it != m_annunciations.rend() && *it > from; ++it)
         ++n;

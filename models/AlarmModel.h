@@ -8,6 +8,7 @@
 // priority; an alarm can be shelved for a time (suppressed, returns by itself on expiry); the alarm rate (new
 // alarms in the last 10 min) and a flood flag (> 10 per 10 min, EEMUA 191 table 30) are kept.
 #include "models/FleetEvent.h"
+#include "models/ModelClock.h"
 
 #include <QAbstractTableModel>
 #include <QHash>
@@ -85,9 +86,9 @@ public:
     // The newest row of an alarm key, or -1.
     int rowOfKey(const QString& key) const;
 
-    // The clock of stamps, shelving expiry and the rate (ms since the epoch); tests inject a fake one.
-    void setClock(std::function<qint64()> nowMs);
-    qint64 nowMs() const { return m_clock(); }
+    // The clock of stamps, shelving expiry and the rate (null: the system clock); tests give a manual one.
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
+    qint64 nowMs() const { return m_clock->nowMs(); }
     // Who acknowledges and shelves at this console ("dispatcher", an operator's name).
     void setOperatorName(const QString& name) { m_operator = name; }
     QString operatorName() const { return m_operator; }
@@ -177,7 +178,7 @@ private:
     QHash<QString, Shelf> m_shelves;
     std::deque<qint64> m_annunciations; // times of new alarms, for the rate
     int m_lastRate = 0;
-    std::function<qint64()> m_clock;
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
     QString m_operator;
     QTimer* m_timer = nullptr;
     int m_unacked = 0;

@@ -24,8 +24,7 @@ QString areaKey(const QString& link, qint64 way) {
 } // namespace
 
 AutoDispatcher::AutoDispatcher(DispatchSource* source, CommandGate* gate, QObject* parent)
-    : QObject(parent), m_source(source), m_gate(gate),
-      m_now([] { return QDateTime::currentMSecsSinceEpoch(); }) {
+    : QObject(parent), m_source(source), m_gate(gate) {
     setObjectName(QStringLiteral("auto-dispatcher"));
     m_soon.setSingleShot(true);
     m_soon.setInterval(0);
@@ -71,7 +70,7 @@ QString AutoDispatcher::key(const QString& truckId, const DispatchArea& a) const
 
 void AutoDispatcher::say(const QString& line, EventSeverity severity, const QString& machine) {
     m_last = QStringLiteral("%1 %2").arg(
-        QDateTime::fromMSecsSinceEpoch(m_now()).toString(QStringLiteral("HH:mm:ss")), line);
+        QDateTime::fromMSecsSinceEpoch(m_clock->nowMs()).toString(QStringLiteral("HH:mm:ss")), line);
     emit acted(line);
     if (m_alarms) {
         FleetEvent e = makeEvent(severity, EventKind::Info, machine, tr("Auto dispatch: %1").arg(line),
@@ -83,7 +82,7 @@ void AutoDispatcher::say(const QString& line, EventSeverity severity, const QStr
 
 // A request out is settled when the truck reports that assignment, answers Rejected, or the answer is late.
 void AutoDispatcher::followAnswers(const QVector<DispatchTruck>& trucks) {
-    const qint64 now = m_now();
+    const qint64 now = m_clock->nowMs();
     QHash<QString, const DispatchTruck*> byId;
     for (const auto& t : trucks)
         byId.insert(t.id, &t);
@@ -156,7 +155,7 @@ QVector<AutoDispatcher::Decision> AutoDispatcher::plan() const {
             if (auto to = queue.find(areaKey(t.link, *dest)); to != queue.end())
                 ++*to;
     }
-    const qint64 now = m_now();
+    const qint64 now = m_clock->nowMs();
     for (const DispatchTruck& t : trucks) {
         if (out.size() >= kMaxPerStep)
             break;
@@ -215,7 +214,8 @@ void AutoDispatcher::step() {
             break;
         QString assignmentId;
         const Assign assign = m_source->assignCommand(d.truckId, d.task, d.area, &assignmentId);
-        m_inFlight.insert(d.truckId, InFlight{assignmentId, d.area.wayId, d.area.link, m_now(), false});
+        m_inFlight.insert(d.truckId,
+                          InFlight{assignmentId, d.area.wayId, d.area.link, m_clock->nowMs(), false});
         const QString what =
             tr("%1: %2 at %3 (queue %4)").arg(d.truckName, d.task, areaName(d.area)).arg(d.queue);
         QPointer<AutoDispatcher> self(this);
@@ -240,7 +240,7 @@ void AutoDispatcher::onResult(const QString& truckId, const QString& what, const
     // Nothing on the wire: no answer to wait for. The truck is left alone for kRetryMs (a refused command is
     // an alarm of the gate: never one per second).
     m_inFlight.remove(truckId);
-    m_avoidUntil.insert(truckId, m_now() + kRetryMs);
+    m_avoidUntil.insert(truckId, m_clock->nowMs() + kRetryMs);
     say(tr("%1 — NOT sent: %2").arg(what, notSent.isEmpty() ? r.message : notSent.join(QStringLiteral("; "))),
         EventSeverity::Info, truckId);
 }

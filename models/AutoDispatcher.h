@@ -20,6 +20,7 @@
 #include "models/DispatchSource.h"
 #include "models/FleetBridge.h"
 #include "models/FleetEvent.h"
+#include "models/ModelClock.h"
 
 #include <QHash>
 #include <QPointer>
@@ -43,7 +44,8 @@ public:
     AutoDispatcher(DispatchSource* source, CommandGate* gate, QObject* parent = nullptr);
 
     void setAlarms(AlarmModel* alarms);
-    void setClock(std::function<qint64()> nowMs) { m_now = std::move(nowMs); }
+    // The clock of answer deadlines and retry back-offs (null: the system clock).
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
     DispatchSource* source() const { return m_source; }
 
     bool isOn() const { return m_on; }
@@ -87,7 +89,7 @@ private:
     QPointer<DispatchSource> m_source;
     QPointer<CommandGate> m_gate;
     QPointer<AlarmModel> m_alarms;
-    std::function<qint64()> m_now;
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
     bool m_on = false;
     QTimer m_soon;                       // coalesces the trucks' reports into one step
     QTimer m_every;                      // retries (back-off ends, late answers) while on

@@ -285,12 +285,8 @@ void CommandGate::stopMachine(const QString& id, const QString& origin, ResultHa
         std::move(onFinal));
 }
 
-qint64 CommandGate::nowMs() const {
-    return std::chrono::duration_cast<std::chrono::milliseconds>(m_clock->now().time_since_epoch()).count();
-}
-
 QString CommandGate::requestClearToken(const QString& id) {
-    const qint64 now = nowMs();
+    const qint64 now = m_clock->nowMs();
     // Forget expired tokens.
     for (auto it = m_tokens.begin(); it != m_tokens.end();)
         it = it->expiresMs < now ? m_tokens.erase(it) : std::next(it);
@@ -303,7 +299,7 @@ void CommandGate::clearStop(const QString& id, const QString& token, const QStri
                             ResultHandler onFinal) {
     const ClearStop clear{id, false, {}}; // the token is never audited
     auto it = m_tokens.find(token);
-    if (token.isEmpty() || it == m_tokens.end() || it->id != id || it->expiresMs < nowMs()) {
+    if (token.isEmpty() || it == m_tokens.end() || it->id != id || it->expiresMs < m_clock->nowMs()) {
         finishNow(clear, origin,
                   CommandResult::fromTargets({refusal(id, OutcomeReason::NotPermitted,
                                                       tr("release needs a deliberate confirmation"))}),

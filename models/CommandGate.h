@@ -16,7 +16,7 @@
 // bridge reports it stopped (FleetBridge::stopReported); the latency is logged as an event, and no report
 // within the confirmation time raises an alarm. Protocols without a stop state (OSYRIS) are said to be so.
 #include "models/FleetBridge.h"
-#include "protocols/common/Clock.h"
+#include "models/ModelClock.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -53,9 +53,9 @@ public:
     void setAuditLogPath(const QString& path) { m_auditPath = path; }
     QString auditLogPath() const { return m_auditPath; }
     void setTokenLifetimeMs(qint64 ms) { m_tokenLifetimeMs = ms; }
-    // The clock clear tokens expire on: steady time, so a wall-clock step (NTP, a changed time zone) neither
-    // expires a token early nor keeps one alive. Tests give a FakeClock; it must outlive the gate.
-    void setClock(const Clock& clock) { m_clock = &clock; }
+    // The clock clear tokens expire on (null: the system clock, which a wall-clock step does not move, so a
+    // step neither expires a token early nor keeps one alive). Tests give a manual one.
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
     // How long the gate waits for the stacks' outcomes before it calls the missing ones not sent.
     void setAnswerDeadlineMs(int ms) { m_answerDeadlineMs = ms; }
     // How long a sent stop may wait for the machine's report before the gate raises an alarm.
@@ -143,8 +143,7 @@ private:
     QPointer<AlarmModel> m_alarms;
     QString m_auditPath;
     qint64 m_tokenLifetimeMs = 10000;
-    const Clock* m_clock = &SteadyClock::instance();
-    qint64 nowMs() const;
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
     int m_answerDeadlineMs = 1000;
     int m_confirmTimeoutMs = 3000;
     struct Token {

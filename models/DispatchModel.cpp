@@ -28,8 +28,7 @@ QString duration(qint64 seconds) {
 }
 } // namespace
 
-DispatchModel::DispatchModel(QObject* parent)
-    : QAbstractTableModel(parent), m_now([] { return QDateTime::currentMSecsSinceEpoch(); }) {
+DispatchModel::DispatchModel(QObject* parent) : QAbstractTableModel(parent) {
     m_clockTimer.setInterval(1000);
     connect(&m_clockTimer, &QTimer::timeout, this, &DispatchModel::refreshTimes);
     m_clockTimer.start();
@@ -285,7 +284,7 @@ QVariant DispatchModel::data(const QModelIndex& index, int role) const {
             return etaText(index.row());
         case ColInState:
             return t.productionSinceMs > 0
-                       ? duration(std::max<qint64>(0, (m_now() - t.productionSinceMs) / 1000))
+                       ? duration(std::max<qint64>(0, (m_clock->nowMs() - t.productionSinceMs) / 1000))
                        : QStringLiteral("—");
         default:
             return m_rows[index.row()].text[col]; // formatted when the report came (formatRow)

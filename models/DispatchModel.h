@@ -18,6 +18,7 @@
 // rows scrolled out of sight). Rows are kept in truck-name order; the "in state" and "ETA" columns (time and
 // reported speed) are refreshed once a second.
 #include "models/DispatchSource.h"
+#include "models/ModelClock.h"
 
 #include <QAbstractTableModel>
 #include <QHash>
@@ -56,7 +57,8 @@ public:
     void setSource(DispatchSource* source);
     DispatchSource* source() const { return m_source; }
     void setFleet(FleetModel* fleet);
-    void setClock(std::function<qint64()> nowMs) { m_now = std::move(nowMs); }
+    // The clock times in production are counted on (null: the system clock).
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -104,7 +106,7 @@ private:
     QVector<Row> m_rows;
     QHash<QString, int> m_index;
     QTimer m_clockTimer;
-    std::function<qint64()> m_now;
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
 };
 
 // Per load area (shovel) and per dump area (dump, crusher): the trucks assigned to it (Pending/Active, still

@@ -17,6 +17,7 @@
 // outcomes over to the GUI thread.
 #include "models/FleetEvent.h"
 #include "models/MachineState.h"
+#include "models/ModelClock.h"
 #include "models/SiteMapData.h"
 #include "models/TelemetryCoalescer.h"
 #include "models/commands/OperatorCommand.h"
@@ -97,6 +98,13 @@ public:
     Protocol protocol() const { return m_protocol; }
     // True when this bridge is responsible for the machine id (default: the protocol prefix matches).
     virtual bool ownsMachine(const QString& id) const;
+
+    // The clock the bridge's data times (MachineState::lastDataMs) are on, the fleet model's (null: the
+    // system clock). Set it before the stack runs: the io thread reads it unlocked.
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
+    const ModelClock& clock() const { return *m_clock; }
+    // A stack's wall-clock receive time on the bridge's clock (wallStampToModelMs); any thread.
+    qint64 modelTimeOfWallMs(qint64 wallMs) const { return wallStampToModelMs(*m_clock, wallMs); }
 
     // ---- thread-safe, called from the stack's io thread ----
     void publishMachine(const MachineState& state);
@@ -199,6 +207,7 @@ private:
     LinkStatus shownLink(const LinkStatus& reported) const;
 
     Protocol m_protocol;
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
     std::chrono::milliseconds m_watchdogLimit{1000};
     bool m_ioStalled = false;
     QHash<QString, LinkStatus> m_reportedLinks; // as the stack reported them (m_linkState: as shown)

@@ -23,8 +23,7 @@ static QString linkText(LinkState s) {
     return FleetModel::tr("unknown");
 }
 
-FleetModel::FleetModel(QObject* parent)
-    : QAbstractTableModel(parent), m_now([] { return QDateTime::currentMSecsSinceEpoch(); }) {
+FleetModel::FleetModel(QObject* parent) : QAbstractTableModel(parent) {
     connect(&m_timer, &QTimer::timeout, this, &FleetModel::refresh);
     m_timer.start(500);
 }
@@ -46,10 +45,6 @@ void FleetModel::setStaleAfterMs(Protocol protocol, qint64 ms) {
         m_staleByProtocol.remove(int(protocol));
     else
         m_staleByProtocol.insert(int(protocol), ms);
-}
-
-void FleetModel::setClock(std::function<qint64()> nowMs) {
-    m_now = std::move(nowMs);
 }
 
 int FleetModel::rowCount(const QModelIndex& parent) const {
@@ -105,7 +100,7 @@ QVariant FleetModel::headerData(int section, Qt::Orientation orientation, int ro
 
 qint64 FleetModel::ageMsAt(int row) const {
     const qint64 t = m_rows[row].state.lastDataMs;
-    return t > 0 ? std::max<qint64>(0, m_now() - t) : -1;
+    return t > 0 ? std::max<qint64>(0, nowMs() - t) : -1;
 }
 
 static QString ageText(qint64 ms) {
@@ -286,7 +281,7 @@ const QVector<MachineState>& FleetModel::machinesSnapshot() const {
 void FleetModel::upsert(const QVector<MachineState>& machines) {
     if (machines.isEmpty())
         return;
-    const qint64 now = m_now();
+    const qint64 now = nowMs();
     int minRow = INT_MAX, maxRow = -1;
     QVector<MachineState> added;
     QStringList changed;
@@ -379,7 +374,7 @@ void FleetModel::remove(const QStringList& ids) {
 }
 
 void FleetModel::refresh() {
-    const qint64 now = m_now();
+    const qint64 now = nowMs();
     QStringList expired;
     QStringList staleFlips;
     for (int i = 0; i < m_rows.size(); ++i) {

@@ -2,13 +2,15 @@
 // One row per machine across all protocols. Fed by FleetBridge::machinesUpdated /
 // machinesRemoved; ages, staleness and removal are evaluated by refresh() (a timer, default 500 ms).
 #include "models/MachineState.h"
+#include "models/ModelClock.h"
 
 #include <QAbstractTableModel>
 #include <QHash>
 #include <QPointer>
 #include <QTimer>
 #include <QVector>
-#include <functional>
+
+#include <memory>
 
 namespace ocu {
 
@@ -84,9 +86,9 @@ public:
     void setRemoveAfterMs(qint64 ms) { m_removeAfterMs = ms; }
     qint64 removeAfterMs() const { return m_removeAfterMs; }
     void setRefreshIntervalMs(int ms); // 0 stops the timer (tests call refresh() themselves)
-    // Time source (ms since the Unix epoch); tests inject a fake.
-    void setClock(std::function<qint64()> nowMs);
-    qint64 nowMs() const { return m_now(); }
+    // The clock ages and staleness are measured on (null: the system clock); tests give a manual one.
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
+    qint64 nowMs() const { return m_clock->nowMs(); }
 
     static QString columnName(int column);
 
@@ -117,7 +119,7 @@ private:
     qint64 m_staleAfterMs = 5000;
     QHash<int, qint64> m_staleByProtocol;
     qint64 m_removeAfterMs = 60000;
-    std::function<qint64()> m_now;
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
     QTimer m_timer;
 };
 

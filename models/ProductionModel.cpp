@@ -1,7 +1,5 @@
 #include "models/ProductionModel.h"
 
-#include <QDateTime>
-
 #include <algorithm>
 
 namespace ocu {
@@ -46,7 +44,7 @@ double CycleBreakdown::total() const {
 }
 
 ProductionModel::ProductionModel(QObject* parent) : QObject(parent) {
-    m_shiftStart = QDateTime::currentMSecsSinceEpoch();
+    m_shiftStart = nowMs();
     m_shiftEnd = m_shiftStart + kDefaultShiftMs;
     m_shift.key = QStringLiteral("shift");
     m_shift.name = tr("Shift");
@@ -197,7 +195,7 @@ void ProductionModel::addReport(const ProductionReport& r) {
 
 void ProductionModel::clear() {
     const qint64 length = m_shiftEnd - m_shiftStart;
-    m_shiftStart = QDateTime::currentMSecsSinceEpoch();
+    m_shiftStart = nowMs();
     m_shiftEnd = m_shiftStart + length;
     m_truckStates.clear();
     m_shift = ProductionTally{QStringLiteral("shift"), tr("Shift"), 0, 0, 0, {}};

@@ -12,6 +12,7 @@
 // the truck's Loading state was not seen. Only whole cycles (with Loading and Dumping among their states)
 // enter the breakdown: a cycle the AHS saw only part of (it started mid-cycle) would distort the averages.
 // Reports timed before the shift's start are not counted.
+#include "models/ModelClock.h"
 #include "models/ProductionReport.h"
 
 #include <QHash>
@@ -53,6 +54,9 @@ public:
     // The shift: reports from `startUnixMs` on are counted; the plan is spread evenly over [start, end).
     void setShift(qint64 startUnixMs, qint64 endUnixMs);
     qint64 shiftStart() const { return m_shiftStart; }
+    // The clock a new shift starts on (clear()) and the charts' "now" (null: the system clock).
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
+    qint64 nowMs() const { return m_clock->nowMs(); }
     qint64 shiftEnd() const { return m_shiftEnd; }
     void setPlanTonnes(double tonnesPerShift); // 0 = no plan
     double planTonnes() const { return m_planTonnes; }
@@ -101,6 +105,7 @@ private:
                    std::optional<qint64> dumpWay, std::optional<double> tonnes);
     static QVector<ProductionTally> sorted(const QHash<QString, ProductionTally>& in);
 
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
     qint64 m_shiftStart = 0;
     qint64 m_shiftEnd = 0;
     double m_planTonnes = 0;

@@ -570,7 +570,7 @@ void IsoBridge::setPosition(MachineState& m, const IsoPosition& p) const {
     m.lon = p.longitude;
     m.headingDeg = p.heading.value_or(0);
     m.speed = p.speedKmh.value_or(0) / 3.6;
-    m.lastDataMs = p.receivedUnixMs;
+    m.lastDataMs = modelTimeOfWallMs(p.receivedUnixMs);
     m.lastMessageMs = p.measuredUnixMs.value_or(0);
 }
 

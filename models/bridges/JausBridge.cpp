@@ -22,7 +22,8 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
           this,
           [this](auto&& batch) {
               for (auto& [id, snap] : batch) {
-                  const JausVehicle v = jausrow::toVehicle(snap);
+                  JausVehicle v = jausrow::toVehicle(snap);
+                  v.lastMessageUnixMs = modelTimeOfWallMs(v.lastMessageUnixMs); // ages on the models' clock
                   JausVehicle& latest = m_latest[id]; // a new vehicle starts default: not in emergency
                   const bool wasStopped = latest.emergency;
                   const bool wasOurs = latest.controlledByUs;

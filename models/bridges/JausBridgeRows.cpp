@@ -154,7 +154,7 @@ MachineState JausBridge::toMachine(const SubsystemSnapshot& s) const {
     m.link = s.link == jaus::LinkState::Up         ? ocu::LinkState::Up
              : s.link == jaus::LinkState::Degraded ? ocu::LinkState::Degraded
                                                    : ocu::LinkState::Down;
-    m.lastDataMs = s.lastMessageUnixMs;
+    m.lastDataMs = modelTimeOfWallMs(s.lastMessageUnixMs);
     m.lastMessageMs = s.lastMessageUnixMs;
     if (s.globalPose && s.globalPose->lat && s.globalPose->lon) {
         const GeoPoint g{*s.globalPose->lat, *s.globalPose->lon,

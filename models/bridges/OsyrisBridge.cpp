@@ -1,7 +1,6 @@
 #include "models/bridges/OsyrisBridge.h"
 #include "models/QtStrings.h"
 
-#include <QDateTime>
 #include <QJsonObject>
 #include <QMetaObject>
 
@@ -72,7 +71,7 @@ void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
             m.hasPosition = false;
         }
         m.link = ocu::LinkState::Up;
-        m.lastDataMs = QDateTime::currentMSecsSinceEpoch();
+        m.lastDataMs = clock().nowMs();
         m.health = HealthLevel::Warning;
         m.healthText =
             tr("implausible position ignored (slot %1): %2").arg(s.slot).arg(toQString(s.implausible));
@@ -87,7 +86,7 @@ void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
     const bool paver = lower.contains(QLatin1String("paver")) || lower.contains(QLatin1String("fertiger"));
     m.type = paver ? QStringLiteral("paver") : QStringLiteral("roller");
     m.link = ocu::LinkState::Up;
-    m.lastDataMs = QDateTime::currentMSecsSinceEpoch();
+    m.lastDataMs = clock().nowMs();
     m.lastMessageMs = s.timestampMs;
     // Positions are geo-referenced by the station through the worksite origin; place them in the site frame.
     const EnuPoint p = m_frame.toLocal({s.lat, s.lon, m_config.originAlt + s.z});

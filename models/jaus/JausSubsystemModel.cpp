@@ -4,7 +4,6 @@
 
 #include <QBrush>
 #include <QColor>
-#include <QDateTime>
 #include <QTimer>
 
 namespace ocu {
@@ -166,7 +165,7 @@ QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
         const QString state = linkText(s.link);
         if (s.lastMessageUnixMs <= 0)
             return state;
-        const qint64 age = std::max<qint64>(0, QDateTime::currentMSecsSinceEpoch() - s.lastMessageUnixMs);
+        const qint64 age = std::max<qint64>(0, m_clock->nowMs() - s.lastMessageUnixMs);
         return tr("%1 · %2 s").arg(state).arg(age / 1000.0, 0, 'f', 1);
     }
     case Access:

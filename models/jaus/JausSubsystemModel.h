@@ -1,5 +1,6 @@
 #pragma once
 // One row per discovered JAUS subsystem, fed by the JAUS bridge's vehicle views (GUI thread).
+#include "models/ModelClock.h"
 #include "models/jaus/JausVehicleBridge.h"
 
 #include <QAbstractTableModel>
@@ -29,12 +30,15 @@ public:
     // The link state in the operator's language (JausVehicle::linkText keeps the stack's English word).
     static QString linkText(JausLink s);
     RowColour rowColour(const JausVehicle& s) const;
+    // The clock data ages are measured on, the bridge's (null: the system clock).
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
 
 private:
     void onVehicle(const JausVehicle& s);
     JausVehicleBridge* m_bridge;
     JausAddress m_ownId; // this console's component: our own ID in a report is not another controller
     QVector<JausVehicle> m_rows;
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
 };
 
 } // namespace ocu

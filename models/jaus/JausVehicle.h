@@ -85,8 +85,8 @@ struct JausVehicle {
     QString callSign;
     QString endpoint; // "ip:port" of the platform manager, empty when unknown
     JausLink link = JausLink::Down;
-    QString linkText; // the stack's word for the link state
-    qint64 lastMessageUnixMs = 0;
+    QString linkText;             // the stack's word for the link state
+    qint64 lastMessageUnixMs = 0; // on the models' clock (models/ModelClock.h)
 
     JausAccess access = JausAccess::Monitoring;
     JausAddress controller; // all zero when uncontrolled

@@ -31,7 +31,7 @@ Recorder::~Recorder() {
 }
 
 qint64 Recorder::now() const {
-    return m_options.clock ? m_options.clock() : QDateTime::currentMSecsSinceEpoch();
+    return m_options.clock ? m_options.clock->nowMs() : systemModelClock()->nowMs();
 }
 
 QString Recorder::start(const RecorderOptions& options) {

@@ -12,6 +12,7 @@
 // of every machine) so a replay can seek anywhere quickly.
 #include "models/FleetEvent.h"
 #include "models/MachineState.h"
+#include "models/ModelClock.h"
 #include "models/SiteMapData.h"
 #include "models/recording/Retention.h"
 
@@ -68,7 +69,9 @@ struct RecorderOptions {
     int zstdLevel = 6; // schema 4's state chunks, keyframes and message chunks
     QString siteName;
     double originLat = 0, originLon = 0, originAlt = 0; // the site frame, for replay's map
-    std::function<qint64()> clock;                      // ms since the epoch; default: the wall clock
+    // Record times: the models' clock, so a state's data age is the one the fleet model saw (null: the
+    // system clock).
+    std::shared_ptr<const ModelClock> clock;
 };
 
 // An acknowledgement names its alarm by ocu::alarmKey (models/FleetEvent.h), the key AlarmModel and the

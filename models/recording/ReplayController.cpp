@@ -13,12 +13,12 @@ constexpr qint64 kContinueLimitMs = 20000;
 
 ReplayController::ReplayController(const Recording* recording, FleetModel* fleet, QObject* parent)
     : QObject(parent), m_rec(recording), m_fleet(fleet), m_alarmCap(AlarmModel::kDefaultMaxEntries),
-      m_t(recording->startMs()) {
+      m_t(recording->startMs()), m_clock(std::make_shared<ManualModelClock>(m_t)) {
     fleet->setRefreshIntervalMs(0);
     fleet->setRemoveAfterMs(0); // removals are in the recording
     for (auto it = m_rec->staleAfterMs().cbegin(), end = m_rec->staleAfterMs().cend(); it != end; ++it)
         fleet->setStaleAfterMs(it.key(), it.value());
-    fleet->setClock([this] { return m_t; });
+    fleet->setClock(m_clock);
     m_alarms = new AlarmModel(this);
     m_alarms->setMaxEntries(m_alarmCap);
     m_history = std::make_unique<AlarmHistory>(m_rec, m_alarmCap);
@@ -37,6 +37,7 @@ void ReplayController::seek(qint64 t) {
     const qint64 before = m_t;
     const bool wasLoaded = m_loaded;
     m_t = t;
+    m_clock->set(t);
     m_states = m_rec->statesAtIdx(t);
     QSet<QString> ids;
     QVector<MachineState> all;
@@ -141,6 +142,7 @@ void ReplayController::advanceTo(qint64 t) {
         return;
     const qint64 from = m_t;
     m_t = t;
+    m_clock->set(t);
     QStringList removed;
     const QStringList changed = m_rec->advance(m_states, from, t, &removed);
     if (m_fleet) {

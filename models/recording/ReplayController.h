@@ -6,6 +6,7 @@
 // list from the rows alive at the target (AlarmHistory), and playing forward continues from the current
 // picture and list without a new seek.
 #include "models/FleetModel.h"
+#include "models/ModelClock.h"
 #include "models/recording/AlarmHistory.h"
 #include "models/recording/Recording.h"
 
@@ -28,7 +29,7 @@ class ReplayController : public QObject {
     Q_OBJECT
 public:
     // `fleet` is driven (its clock becomes the replay clock, its own refresh timer and expiry are turned
-    // off).
+    // off). The replay clock is shared, so the fleet may outlive the controller.
     ReplayController(const Recording* recording, FleetModel* fleet, QObject* parent = nullptr);
 
     const Recording* recording() const { return m_rec; }
@@ -46,6 +47,8 @@ public:
     qint64 startMs() const { return m_rec->startMs(); }
     qint64 endMs() const { return m_rec->endMs(); }
     qint64 position() const { return m_t; }
+    // The clock that reads the replay cursor, for any model that measures ages on replayed time.
+    std::shared_ptr<const ModelClock> clock() const { return m_clock; }
     bool playing() const { return m_timer.isActive(); }
     double speed() const { return m_speed; }
     bool reverse() const { return m_reverse; }
@@ -100,6 +103,7 @@ private:
     std::unique_ptr<AlarmHistory> m_history;
     Recording::StateMap m_states;
     qint64 m_t = 0;
+    std::shared_ptr<ManualModelClock> m_clock; // follows m_t
     bool m_loaded = false;
     double m_speed = 1.0;
     bool m_reverse = false;

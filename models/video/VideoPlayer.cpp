@@ -21,12 +21,6 @@ namespace ocu {
 
 namespace {
 
-std::int64_t systemNowUs() {
-    return std::chrono::duration_cast<std::chrono::microseconds>(
-               std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-
 std::int64_t threadCpuNs() {
     timespec ts{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
@@ -113,6 +107,7 @@ struct VideoPlayer::Shared {
     std::deque<std::int64_t> arrivals; // µs, last 2 s
     std::deque<std::int64_t> decodeNs; // per frame, last 60
     QString lastError;
+    std::shared_ptr<const ModelClock> clock = systemModelClock(); // the player's, under the mutex
 
     // Posts f to the owner's thread while the owner lives.
     template <typename F> void post(F&& f) {
@@ -121,20 +116,24 @@ struct VideoPlayer::Shared {
             QMetaObject::invokeMethod(owner, std::forward<F>(f), Qt::QueuedConnection);
     }
     // Streaming threads: a frame of pipeline `gen` decoded (kept as the latest, the rates updated, the owner
-    // told unless a notification is pending); an error or end of stream of pipeline `gen`.
-    void frameDecoded(std::uint64_t gen, QImage img, std::int64_t arrivalUs,
-                      std::optional<std::int64_t> captureUs, std::int64_t cpuNs);
+    // told unless a notification is pending; arrival now on the clock, the time code's wall-clock capture
+    // time taken onto it); an error or end of stream of pipeline `gen`.
+    void frameDecoded(std::uint64_t gen, QImage img, std::optional<std::int64_t> captureWallUs,
+                      std::int64_t cpuNs);
     void busProblem(std::uint64_t gen, const QString& text);
 };
 
-void VideoPlayer::Shared::frameDecoded(std::uint64_t gen, QImage img, std::int64_t arrivalUs,
-                                       std::optional<std::int64_t> captureUs, std::int64_t cpuNs) {
+void VideoPlayer::Shared::frameDecoded(std::uint64_t gen, QImage img,
+                                       std::optional<std::int64_t> captureWallUs, std::int64_t cpuNs) {
     std::lock_guard lock(mutex);
     if (generation != gen)
         return; // an old pipeline on its way down
+    const std::int64_t arrivalUs = clock->nowUs();
     latest.image = std::move(img);
     latest.arrivalUs = arrivalUs;
-    latest.captureUs = captureUs;
+    latest.captureUs.reset();
+    if (captureWallUs)
+        latest.captureUs = wallStampToModelUs(*clock, *captureWallUs);
     ++latest.number;
     arrivals.push_back(arrivalUs);
     while (!arrivals.empty() && arrivals.front() < arrivalUs - 2000000)
@@ -271,7 +270,6 @@ GstFlowReturn onNewSample(GstAppSink* appsink, gpointer p) {
     gst_sample_unref(sample);
     if (img.isNull())
         return GST_FLOW_OK;
-    const std::int64_t arrival = systemNowUs();
     // The time code is drawn in luma; in BGRx every channel carries it (green is the one least
     // disturbed by chroma).
     std::optional<std::int64_t> capture;
@@ -279,7 +277,7 @@ GstFlowReturn onNewSample(GstAppSink* appsink, gpointer p) {
         capture = static_cast<std::int64_t>(*v);
     const std::int64_t cpu = t_decodeStartNs >= 0 ? threadCpuNs() - t_decodeStartNs : -1;
     t_decodeStartNs = -1;
-    c->shared->frameDecoded(c->generation, std::move(img), arrival, capture, cpu);
+    c->shared->frameDecoded(c->generation, std::move(img), capture, cpu);
     return GST_FLOW_OK;
 }
 
@@ -325,7 +323,7 @@ void connectCallbacks(const Elements& e, const std::shared_ptr<VideoPlayer::Shar
 } // namespace
 
 VideoPlayer::VideoPlayer(QObject* parent)
-    : QObject(parent), m_shared(std::make_shared<Shared>()), m_clock(systemNowUs), m_timer(new QTimer(this)) {
+    : QObject(parent), m_shared(std::make_shared<Shared>()), m_timer(new QTimer(this)) {
     m_shared->owner = this;
     m_timer->setInterval(100);
     connect(m_timer, &QTimer::timeout, this, &VideoPlayer::tick);
@@ -363,12 +361,14 @@ void VideoPlayer::setReconnectBackoff(int firstMs, int maxMs) {
     m_backoffMs = m_backoffFirstMs;
 }
 
-void VideoPlayer::setClock(std::function<std::int64_t()> nowUs) {
-    m_clock = nowUs ? std::move(nowUs) : std::function<std::int64_t()>(systemNowUs);
+void VideoPlayer::setClock(std::shared_ptr<const ModelClock> clock) {
+    m_clock = clockOrSystem(std::move(clock));
+    std::lock_guard lock(m_shared->mutex);
+    m_shared->clock = m_clock;
 }
 
 std::int64_t VideoPlayer::nowUs() const {
-    return m_clock();
+    return m_clock->nowUs();
 }
 
 void VideoPlayer::play() {
@@ -403,7 +403,7 @@ void VideoPlayer::setState(VideoState s) {
 
 void VideoPlayer::startPipeline() {
     m_reconnectAtUs = 0;
-    m_attemptStartUs = m_clock();
+    m_attemptStartUs = m_clock->nowUs();
     setState(m_everPlayed || m_reconnects > 0 ? VideoState::Reconnecting : VideoState::Connecting);
     QString why;
     if (!initGst(&why)) {
@@ -496,12 +496,12 @@ void VideoPlayer::lose(const QString& why) {
     m_error = why;
     teardown();
     setState(VideoState::Lost);
-    m_reconnectAtUs = m_clock() + std::int64_t(m_backoffMs) * 1000;
+    m_reconnectAtUs = m_clock->nowUs() + std::int64_t(m_backoffMs) * 1000;
     m_backoffMs = std::min(m_backoffMaxMs, m_backoffMs * 2);
 }
 
 void VideoPlayer::tick() {
-    const std::int64_t now = m_clock();
+    const std::int64_t now = m_clock->nowUs();
     switch (m_state) {
     case VideoState::Idle:
         return;
@@ -528,8 +528,7 @@ void VideoPlayer::tick() {
             std::lock_guard lock(m_shared->mutex);
             last = m_shared->latest.arrivalUs;
         }
-        // Arrival times are system clock; the loss timer compares like with like.
-        if (systemNowUs() - last > std::int64_t(m_lossTimeoutMs) * 1000)
+        if (m_clock->nowUs() - last > std::int64_t(m_lossTimeoutMs) * 1000)
             lose(tr("no frame for %1 ms").arg(m_lossTimeoutMs));
         return;
     }
@@ -550,7 +549,7 @@ std::optional<std::int64_t> VideoPlayer::frameAgeMs() const {
         f.arrivalUs = m_shared->latest.arrivalUs;
         f.captureUs = m_shared->latest.captureUs;
     }
-    const std::int64_t now = m_clock();
+    const std::int64_t now = m_clock->nowUs();
     return std::max<std::int64_t>(0, (now - f.captureUs.value_or(f.arrivalUs)) / 1000);
 }
 
@@ -560,7 +559,7 @@ VideoStatus VideoPlayer::status() const {
     s.state = m_state;
     s.reconnects = m_reconnects;
     s.error = m_error;
-    const std::int64_t now = systemNowUs();
+    const std::int64_t now = m_clock->nowUs();
     {
         std::lock_guard lock(m_shared->mutex);
         const VideoFrame& f = m_shared->latest;

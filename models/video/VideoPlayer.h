@@ -8,6 +8,8 @@
 // protocols/common/FrameTimeCode.h, when there is one; else the time since it arrived).
 //
 // The GStreamer C API stays in VideoPlayer.cpp; this header is plain Qt.
+#include "models/ModelClock.h"
+
 #include <QImage>
 #include <QObject>
 #include <QSize>
@@ -30,8 +32,8 @@ QString videoStateText(VideoState s);
 
 struct VideoFrame {
     QImage image;                          // RGB32; null before the first frame
-    std::int64_t arrivalUs = 0;            // system clock, when the decoded frame reached the appsink
-    std::optional<std::int64_t> captureUs; // system clock, read from the frame's time code
+    std::int64_t arrivalUs = 0;            // the player's clock, when the decoded frame reached the appsink
+    std::optional<std::int64_t> captureUs; // the frame's time code, on the player's clock
     std::uint64_t number = 0;              // frames decoded since play()
 };
 
@@ -71,8 +73,10 @@ public:
     void setConnectTimeoutMs(int ms) { m_connectTimeoutMs = ms; }
     // First reconnect delay; it doubles up to maxMs while attempts fail. Defaults 500 / 8000 ms.
     void setReconnectBackoff(int firstMs, int maxMs);
-    // The clock frame ages are measured with (system clock µs; tests and the benchmark may replace it).
-    void setClock(std::function<std::int64_t()> nowUs);
+    // The clock of frame arrivals and ages, the loss and connect timeouts and the reconnect back-off (null:
+    // the system clock); a frame's time code (the camera's wall clock) is taken onto it as the frame arrives.
+    void setClock(std::shared_ptr<const ModelClock> clock);
+    std::shared_ptr<const ModelClock> clock() const { return m_clock; }
     std::int64_t nowUs() const;
 
     void play();
@@ -117,7 +121,7 @@ private:
     int m_reconnects = 0;
     bool m_everPlayed = false;
     QString m_error;
-    std::function<std::int64_t()> m_clock;
+    std::shared_ptr<const ModelClock> m_clock = systemModelClock();
     QTimer* m_timer;
 };
 

@@ -2,18 +2,10 @@
 
 #include <QCoreApplication>
 
-#include <chrono>
-
 namespace ocu {
 
-VideoWatchdog::VideoWatchdog(Clock clock) : m_clock(std::move(clock)) {
-    if (!m_clock)
-        m_clock = [] {
-            return std::chrono::duration_cast<std::chrono::milliseconds>(
-                       std::chrono::system_clock::now().time_since_epoch())
-                .count();
-        };
-}
+VideoWatchdog::VideoWatchdog(std::shared_ptr<const ModelClock> clock)
+    : m_clock(clockOrSystem(std::move(clock))) {}
 
 void VideoWatchdog::setLimitMs(int ms) {
     m_limitMs = std::max(50, ms);
@@ -37,7 +29,7 @@ void VideoWatchdog::setStream(VideoState state, std::optional<std::int64_t> fram
 bool VideoWatchdog::check() {
     m_ageMs.reset();
     if (m_frameTimeMs)
-        m_ageMs = std::max<std::int64_t>(0, m_clock() - *m_frameTimeMs);
+        m_ageMs = std::max<std::int64_t>(0, m_clock->nowMs() - *m_frameTimeMs);
     m_good = m_state == VideoState::Playing && m_ageMs && *m_ageMs <= m_limitMs;
     if (!m_required)
         return true;

@@ -6,23 +6,24 @@
 // the video is back, never by itself. Before the first good frame of a stream (a vehicle just selected, a
 // camera just switched) driving waits for the video without latching.
 //
-// Pure logic with an injectable clock (ms), so tests drive it with a fake clock.
+// Pure logic on a model clock (models/ModelClock.h), so tests drive it with a manual one.
 #include "models/video/VideoPlayer.h"
 
 #include <QString>
 
 #include <cstdint>
-#include <functional>
+#include <memory>
 #include <optional>
 
 namespace ocu {
 
 class VideoWatchdog {
 public:
-    using Clock = std::function<std::int64_t()>; // ms, the same base as the frame times given
     static constexpr int kDefaultLimitMs = 1000;
 
-    explicit VideoWatchdog(Clock clock = {});
+    // `clock` (null: the system clock) must be the one the frame times given are on: the player's.
+    explicit VideoWatchdog(std::shared_ptr<const ModelClock> clock = nullptr);
+    void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
 
     void setLimitMs(int ms);
     int limitMs() const { return m_limitMs; }
@@ -53,7 +54,7 @@ public:
     void restartStream();
 
 private:
-    Clock m_clock;
+    std::shared_ptr<const ModelClock> m_clock;
     int m_limitMs = kDefaultLimitMs;
     bool m_required = false;
     VideoState m_state = VideoState::Idle;

@@ -125,7 +125,7 @@ private slots:
     void mapFollowsThePalette() {
         auto* app = qobject_cast<QApplication*>(QCoreApplication::instance());
         FleetModel fleet;
-        fleet.setClock([] { return qint64(1500); });
+        fleet.setClock(std::make_shared<ManualModelClock>(1500));
         FleetSelection selection(&fleet);
         fleet.upsert({truck()});
         SiteMapView v;

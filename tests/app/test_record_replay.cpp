@@ -345,15 +345,15 @@ private slots:
         const qint64 t0 = 1'700'000'000'000;
         {
             // 20 s of two machines at 10 Hz, an alarm at +5 s.
-            qint64 clock = t0;
+            auto clock = std::make_shared<ManualModelClock>(t0);
             Recorder rec;
             RecorderOptions o;
             o.path = file;
-            o.clock = [&clock] { return clock; };
+            o.clock = clock;
             QVERIFY(rec.start(o).isEmpty());
-            recordtest::recordTwoUgvs(rec, clock, t0, 200, [&](int step) {
+            recordtest::recordTwoUgvs(rec, *clock, t0, 200, [&](int step) {
                 if (step == 50)
-                    rec.recordEvent(recordtest::controlLostAlarm(clock));
+                    rec.recordEvent(recordtest::controlLostAlarm(clock->nowMs()));
             });
             rec.stop();
         }

@@ -36,11 +36,11 @@ private slots:
     void initTestCase() {
         // 60 s of two machines at 10 Hz; an alarm at +20 s, a command at +40 s.
         m_file = m_dir.filePath(QStringLiteral("w.sqlite"));
-        qint64 clock = m_t0;
+        auto clock = std::make_shared<ManualModelClock>(m_t0);
         Recorder rec;
         RecorderOptions o;
         o.path = m_file;
-        o.clock = [&clock] { return clock; };
+        o.clock = clock;
         QVERIFY(rec.start(o).isEmpty());
         // Pass counts (OSYRIS): one cell passed once at the start, a strip of 5 cells twice at +20 s, a
         // second grid (finer, after a re-layout) at +40 s.
@@ -48,9 +48,9 @@ private slots:
         grid.setCount(3, 3, 1);
         rec.watchPassCounts(&grid);
         GridPassCountLayer finer(QPointF(-10, -10), 0.5, 40, 40);
-        recordtest::recordTwoUgvs(rec, clock, m_t0, 600, [&](int step) {
+        recordtest::recordTwoUgvs(rec, *clock, m_t0, 600, [&](int step) {
             if (step == 200) {
-                rec.recordEvent(recordtest::controlLostAlarm(clock));
+                rec.recordEvent(recordtest::controlLostAlarm(clock->nowMs()));
                 for (int col = 0; col < 5; ++col)
                     grid.setCount(col, 7, 2);
                 rec.recordPassCountsNow();

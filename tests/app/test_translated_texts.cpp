@@ -133,7 +133,7 @@ void TestTranslatedTexts::germanInPanels() {
 
     // Fleet list: the link state word, the health and mode texts, and the details pane.
     FleetModel fleet;
-    fleet.setClock([] { return qint64(1500); });
+    fleet.setClock(std::make_shared<ManualModelClock>(1500));
     fleet.upsert({degradedTruck()});
     QCOMPARE(fleet.rowCount(), 1);
     QVERIFY2(

@@ -21,11 +21,9 @@ FleetEvent alarm(const QString& machine, const QString& text, EventKind kind = E
 }
 
 struct Fixture {
-    qint64 now = kStart;
+    std::shared_ptr<ManualModelClock> clock = std::make_shared<ManualModelClock>(kStart);
     AlarmModel model;
-    Fixture() {
-        model.setClock([this] { return now; });
-    }
+    Fixture() { model.setClock(clock); }
 };
 
 } // namespace
@@ -89,7 +87,7 @@ private slots:
         f.model.setOperatorName(QStringLiteral("dispatcher"));
         QSignalSpy acks(&f.model, &AlarmModel::alarmAcknowledged);
         f.model.add(alarm(QStringLiteral("HT01"), QStringLiteral("no data")));
-        f.now += 5000;
+        f.clock->advance(5000);
         f.model.acknowledge(0);
         QCOMPARE(acks.count(), 1);
         QCOMPARE(acks[0][0].toString(), QStringLiteral("timeout|HT01|test"));
@@ -100,16 +98,17 @@ private slots:
         f.model.acknowledge(0);
         QCOMPARE(acks.count(), 1);
         f.model.add(alarm(QStringLiteral("HT02"), QStringLiteral("no data")));
-        QVERIFY(!f.model.acknowledgeKey(QStringLiteral("timeout|HT09|test"), QStringLiteral("x"), f.now));
+        QVERIFY(!f.model.acknowledgeKey(QStringLiteral("timeout|HT09|test"), QStringLiteral("x"),
+                                        f.clock->nowMs()));
         QVERIFY(f.model.acknowledgeKey(QStringLiteral("timeout|HT02|test"), QStringLiteral("site manager"),
-                                       f.now));
+                                       f.clock->nowMs()));
         QCOMPARE(f.model.unacknowledgedCount(), 0);
         QCOMPARE(f.model.acknowledgedByAt(1), QStringLiteral("site manager"));
         QCOMPARE(acks.count(), 2);
         // An acknowledgement made before an occurrence was raised does not cover it.
         f.model.add(alarm(QStringLiteral("HT03"), QStringLiteral("no data")));
         QVERIFY(!f.model.acknowledgeKey(QStringLiteral("timeout|HT03|test"), QStringLiteral("x"),
-                                        f.now - kMinute));
+                                        f.clock->nowMs() - kMinute));
         QCOMPARE(f.model.unacknowledgedCount(), 1);
     }
 
@@ -138,11 +137,11 @@ private slots:
         // A repeat while shelved is not annunciated.
         f.model.add(alarm(QStringLiteral("HT01"), QStringLiteral("no data")));
         QCOMPARE(f.model.unacknowledgedCount(), 1);
-        f.now += 15 * kMinute - 1;
+        f.clock->advance(15 * kMinute - 1);
         f.model.expireShelving();
         QVERIFY(f.model.isShelved(0));
         QCOMPARE(unshelved.count(), 0);
-        f.now += 1;
+        f.clock->advance(1);
         f.model.expireShelving();
         QVERIFY(!f.model.isShelved(0));
         QCOMPARE(unshelved.count(), 1);
@@ -153,8 +152,9 @@ private slots:
         QCOMPARE(f.model.unacknowledgedCount(), 2);
         QCOMPARE(proxy.rowCount(), 2);
         // Shelving from another console that already expired is ignored; unshelve by hand works.
-        QVERIFY(!f.model.applyShelve(key, QStringLiteral("x"), f.now - 2 * kMinute, f.now - kMinute));
-        QVERIFY(f.model.applyShelve(key, QStringLiteral("x"), f.now, f.now + kMinute));
+        QVERIFY(!f.model.applyShelve(key, QStringLiteral("x"), f.clock->nowMs() - 2 * kMinute,
+                                     f.clock->nowMs() - kMinute));
+        QVERIFY(f.model.applyShelve(key, QStringLiteral("x"), f.clock->nowMs(), f.clock->nowMs() + kMinute));
         QVERIFY(f.model.unshelve(key));
         QCOMPARE(unshelved.count(), 2);
     }
@@ -165,7 +165,7 @@ private slots:
         f.model.add(alarm(QStringLiteral("HT01"), QStringLiteral("no data")));
         QSignalSpy unshelved(&f.model, &AlarmModel::alarmUnshelved);
         f.model.shelve(f.model.keyAt(0), kMinute);
-        f.now += kMinute;
+        f.clock->advance(kMinute);
         QTRY_COMPARE_WITH_TIMEOUT(unshelved.count(), 1, 10000);
     }
 
@@ -174,7 +174,7 @@ private slots:
         QSignalSpy rate(&f.model, &AlarmModel::alarmRateChanged);
         for (int i = 0; i < 10; ++i) {
             f.model.add(alarm(QStringLiteral("HT%1").arg(i), QStringLiteral("no data")));
-            f.now += 30'000;
+            f.clock->advance(30'000);
         }
         QCOMPARE(f.model.alarmRate(), 10);
         QVERIFY(!f.model.isFlood()); // 10 per 10 min is the limit, not a flood
@@ -188,10 +188,10 @@ private slots:
         QCOMPARE(rate.last()[0].toInt(), 11);
         QCOMPARE(rate.last()[1].toBool(), true);
         // The window slides: the first alarm (at kStart) leaves it 10 minutes later.
-        f.now = kStart + AlarmModel::kRateWindowMs;
+        f.clock->set(kStart + AlarmModel::kRateWindowMs);
         QCOMPARE(f.model.alarmRate(), 10);
         QVERIFY(!f.model.isFlood());
-        f.now = kStart + 2 * AlarmModel::kRateWindowMs;
+        f.clock->set(kStart + 2 * AlarmModel::kRateWindowMs);
         QCOMPARE(f.model.alarmRate(), 0);
         QTRY_COMPARE_WITH_TIMEOUT(rate.last()[0].toInt(), 0, 10000); // the timer tells the panel
     }

@@ -51,7 +51,7 @@ struct Rig {
                       {kLink, 21, QStringLiteral("Dump North"), QStringLiteral("Offload")},
                       {kLink, 30, QStringLiteral("Park"), QStringLiteral("Park")}});
         auto_.setAlarms(&alarms);
-        auto_.setClock([this] { return now; });
+        auto_.setClock(clock);
     }
     // The assign calls that reached the bridge: "truck name -> way".
     QStringList assigned() const {
@@ -82,7 +82,7 @@ struct Rig {
     CommandGate gate{&alarms};
     FakeFleetBridge bridge{Protocol::Iso23725};
     FakeDispatchSource src;
-    qint64 now = 1'000'000;
+    std::shared_ptr<ManualModelClock> clock = std::make_shared<ManualModelClock>(1'000'000);
     AutoDispatcher auto_{&src, &gate};
 };
 
@@ -190,7 +190,7 @@ private slots:
         going.requestedAssignmentId = second;
         going.lastResponse = QStringLiteral("Accepted");
         r.src.setTrucks({going});
-        r.now += 60'000;
+        r.clock->advance(60'000);
         r.auto_.step();
         QCOMPARE(r.assigned().size(), 2);
 
@@ -203,7 +203,7 @@ private slots:
         QCOMPARE(r.assigned().last(), QStringLiteral("E1 Offload 20"));
 
         // No answer at all: after the answer timeout the truck is free again, that dump avoided.
-        r.now += AutoDispatcher::kAnswerTimeoutMs + 1;
+        r.clock->advance(AutoDispatcher::kAnswerTimeoutMs + 1);
         r.auto_.step();
         QCOMPARE(r.assigned().size(), 4);
         QCOMPARE(r.assigned().last(), QStringLiteral("E1 Offload 21"));
@@ -214,7 +214,7 @@ private slots:
         QCOMPARE(state.size(), 1);
         QCOMPARE(state[0][0].toBool(), false);
         r.src.setTrucks({truck("E2")});
-        r.now += 120'000;
+        r.clock->advance(120'000);
         QTest::qWait(50);
         r.auto_.step();
         QCOMPARE(r.assigned().size(), 4);
@@ -245,7 +245,7 @@ private slots:
         r.bridge.refusedCommands.clear();
         r.auto_.step();
         QCOMPARE(r.assigned().size(), 1);
-        r.now += AutoDispatcher::kRetryMs + 1;
+        r.clock->advance(AutoDispatcher::kRetryMs + 1);
         r.auto_.step();
         QTRY_COMPARE(r.auto_.assignmentsSent(), 1);
         QCOMPARE(r.assigned().size(), 2);

@@ -317,19 +317,19 @@ private slots:
                  }).ok);
         QCOMPARE(iso.calls().size(), 2);
 
-        // A token expires on the gate's steady clock: valid until its lifetime has passed, whatever the
-        // wall clock does.
-        FakeClock clock;
+        // A token expires on the gate's clock: valid until its lifetime has passed on it (the system clock
+        // advances with steady time, whatever the wall clock does).
+        auto clock = std::make_shared<ManualModelClock>(3'600'000);
         stop.setClock(clock);
         stop.setTokenLifetimeMs(10000);
         const QString aging = stop.requestClearToken(QStringLiteral("iso23725:T1"));
-        clock.advance(std::chrono::milliseconds(10001));
+        clock->advance(10001);
         QVERIFY(!gateResult([&](auto h) {
                      stop.clearStop(QStringLiteral("iso23725:T1"), aging, QStringLiteral("gui"), h);
                  }).ok);
         QCOMPARE(iso.calls().size(), 2);
         const QString fresh = stop.requestClearToken(QStringLiteral("iso23725:T1"));
-        clock.advance(std::chrono::milliseconds(9999));
+        clock->advance(9999);
         QVERIFY(gateResult([&](auto h) {
                     stop.clearStop(QStringLiteral("iso23725:T1"), fresh, QStringLiteral("gui"), h);
                 }).ok);
@@ -379,8 +379,8 @@ private slots:
         FakeFleetBridge bridge(Protocol::Iso23725);
         FleetModel fleet;
         fleet.setRefreshIntervalMs(0);
-        qint64 now = 5'000'000;
-        fleet.setClock([&] { return now; });
+        auto clock = std::make_shared<ManualModelClock>(5'000'000);
+        fleet.setClock(clock);
         fleet.addBridge(&bridge);
         AlarmModel alarms;
         alarms.addBridge(&bridge);
@@ -395,7 +395,7 @@ private slots:
         QCOMPARE(alarms.eventAt(0).kind, EventKind::LinkLoss);
 
         MachineState m = machine(QStringLiteral("iso23725:T1"));
-        m.lastDataMs = now;
+        m.lastDataMs = clock->nowMs();
         m.health = HealthLevel::Fault;
         m.healthText = QStringLiteral("tyre pressure");
         bridge.publishMachine(m);
@@ -407,7 +407,7 @@ private slots:
         QCoreApplication::processEvents();
         QCOMPARE(alarms.unacknowledgedCount(), 2);
 
-        now += 60000;
+        clock->advance(60000);
         fleet.setRemoveAfterMs(0);
         fleet.refresh();
         QCOMPARE(alarms.unacknowledgedCount(), 3);

@@ -169,12 +169,12 @@ private slots:
         t.productionSinceMs = 1'000'000;
         src.setTrucks({t}, false);
         DispatchModel m;
-        qint64 now = 1'000'000 + 125'000;
-        m.setClock([&now] { return now; });
+        auto clock = std::make_shared<ManualModelClock>(1'000'000 + 125'000);
+        m.setClock(clock);
         m.setSource(&src);
         QCOMPARE(cell(m, 0, DispatchModel::ColInState), QStringLiteral("2:05"));
         QSignalSpy changed(&m, &QAbstractItemModel::dataChanged);
-        now += 3'600'000;
+        clock->advance(3'600'000);
         m.refreshTimes();
         // Two columns depend on the clock or the reported speed: in state and ETA, each over all rows.
         QCOMPARE(changed.size(), 2);

@@ -100,11 +100,11 @@ private slots:
     }
 
     void machineAppearsUpdatesGoesStaleAndDisappears() {
-        qint64 now = 1'000'000;
+        auto clock = std::make_shared<ManualModelClock>(1'000'000);
         FakeFleetBridge bridge(Protocol::Iso23725);
         FleetModel model;
         model.setRefreshIntervalMs(0);
-        model.setClock([&] { return now; });
+        model.setClock(clock);
         model.setStaleAfterMs(3000);
         model.setRemoveAfterMs(20000);
         model.addBridge(&bridge);
@@ -113,7 +113,7 @@ private slots:
         QSignalSpy stale(&model, &FleetModel::machineStaleChanged);
 
         MachineState m = machine(QStringLiteral("iso23725:HT-01"), 10, 20);
-        m.lastDataMs = now;
+        m.lastDataMs = clock->nowMs();
         bridge.publishMachine(m);
         QCoreApplication::processEvents();
         QCOMPARE(added.count(), 1);
@@ -124,9 +124,9 @@ private slots:
         QCOMPARE(model.index(0, FleetModel::ColProtocol).data().toString(), QStringLiteral("ISO 23725"));
 
         // Update
-        now += 1000;
+        clock->advance(1000);
         m.e = 15;
-        m.lastDataMs = now;
+        m.lastDataMs = clock->nowMs();
         bridge.publishMachine(m);
         QCoreApplication::processEvents();
         QCOMPARE(model.rowCount(), 1);
@@ -134,10 +134,10 @@ private slots:
         QCOMPARE(model.data(model.index(0, 0), FleetModel::StatusRole).toInt(), int(StatusCategory::Ok));
 
         // Goes stale after 3 s without data
-        now += 2500;
+        clock->advance(2500);
         model.refresh();
         QVERIFY(!model.isStale(m.id));
-        now += 1000;
+        clock->advance(1000);
         model.refresh();
         QVERIFY(model.isStale(m.id));
         QCOMPARE(stale.count(), 1);
@@ -145,17 +145,17 @@ private slots:
         QCOMPARE(model.data(model.index(0, 0), FleetModel::AgeMsRole).toLongLong(), qint64(3500));
 
         // Fresh data un-stales it
-        m.lastDataMs = now;
+        m.lastDataMs = clock->nowMs();
         bridge.publishMachine(m);
         QCoreApplication::processEvents();
         QVERIFY(!model.isStale(m.id));
         QCOMPARE(stale.count(), 2);
 
         // Disappears after the configured time without data
-        now += 19000;
+        clock->advance(19000);
         model.refresh();
         QCOMPARE(model.rowCount(), 1);
-        now += 2000;
+        clock->advance(2000);
         model.refresh();
         QCOMPARE(model.rowCount(), 0);
         QCOMPARE(removed.count(), 1);
@@ -163,17 +163,17 @@ private slots:
     }
 
     void staleThresholdPerProtocol() {
-        qint64 now = 2'000'000;
+        auto clock = std::make_shared<ManualModelClock>(2'000'000);
         FleetModel model;
         model.setRefreshIntervalMs(0);
-        model.setClock([&] { return now; });
+        model.setClock(clock);
         model.setStaleAfterMs(5000);
         model.setStaleAfterMs(Protocol::Osyris, 1000);
         MachineState a = machine(QStringLiteral("jaus:1"));
         MachineState b = machine(QStringLiteral("osyris:1"));
-        a.lastDataMs = b.lastDataMs = now;
+        a.lastDataMs = b.lastDataMs = clock->nowMs();
         model.upsert({a, b});
-        now += 2000;
+        clock->advance(2000);
         model.refresh();
         QVERIFY(!model.isStale(a.id));
         QVERIFY(model.isStale(b.id));

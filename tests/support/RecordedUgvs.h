@@ -30,14 +30,15 @@ inline ocu::FleetEvent controlLostAlarm(qint64 clockMs) {
     return ev;
 }
 
-// Steps 0..lastStep, 100 ms apart from t0 (clock follows, for the recorder's clock function): both UGVs
+// Steps 0..lastStep, 100 ms apart from t0 (the recorder's clock set to each): both UGVs
 // recorded, then each(step) for what else the test records at that step.
 template <class Each>
-void recordTwoUgvs(ocu::recording::Recorder& rec, qint64& clock, qint64 t0, int lastStep, Each&& each) {
+void recordTwoUgvs(ocu::recording::Recorder& rec, ocu::ManualModelClock& clock, qint64 t0, int lastStep,
+                   Each&& each) {
     for (int step = 0; step <= lastStep; ++step) {
-        clock = t0 + step * 100;
+        clock.set(t0 + step * 100);
         for (int k = 0; k < 2; ++k)
-            rec.recordStates({ugvAt(k, step, clock)});
+            rec.recordStates({ugvAt(k, step, clock.nowMs())});
         each(step);
     }
 }

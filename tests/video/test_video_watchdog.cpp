@@ -11,8 +11,8 @@ class TestVideoWatchdog : public QObject {
     Q_OBJECT
 private slots:
     void tripsAndResumesOnlyDeliberately() {
-        std::int64_t now = 100000;
-        VideoWatchdog w([&] { return now; });
+        auto clock = std::make_shared<ManualModelClock>(100000);
+        VideoWatchdog w(clock);
         QCOMPARE(w.limitMs(), 1000);
         // No camera: nothing is watched.
         QVERIFY(w.check());
@@ -25,21 +25,21 @@ private slots:
         QVERIFY(w.reason().contains(QLatin1String("waits")));
 
         // First frame, 80 ms old: driving allowed without any resume.
-        w.setStream(VideoState::Playing, now - 80);
+        w.setStream(VideoState::Playing, clock->nowMs() - 80);
         QVERIFY(w.check());
         QCOMPARE(*w.frameAgeMs(), 80);
 
         // The frame ages: at 1000 ms still fine, at 1001 ms the watchdog trips.
-        const std::int64_t frame = now - 80;
-        now = frame + 1000;
+        const std::int64_t frame = clock->nowMs() - 80;
+        clock->set(frame + 1000);
         QVERIFY(w.check());
-        now = frame + 1001;
+        clock->set(frame + 1001);
         QVERIFY(!w.check());
         QVERIFY(w.tripped());
         QVERIFY(w.reason().contains(QLatin1String("1001 ms")));
 
         // Fresh frames again: still held until the operator resumes.
-        w.setStream(VideoState::Playing, now - 30);
+        w.setStream(VideoState::Playing, clock->nowMs() - 30);
         QVERIFY(!w.check());
         QVERIFY(w.videoGood());
         QVERIFY(w.reason().contains(QLatin1String("Resume")));
@@ -47,20 +47,20 @@ private slots:
         QVERIFY(w.check());
 
         // Stream lost: trips at once (the frame itself is still young).
-        w.setStream(VideoState::Lost, now - 10);
+        w.setStream(VideoState::Lost, clock->nowMs() - 10);
         QVERIFY(!w.check());
         QVERIFY(w.reason().contains(QLatin1String("LOST")));
         // A resume while the video is bad is refused.
         QVERIFY(!w.resume());
         QVERIFY(w.tripped());
-        w.setStream(VideoState::Reconnecting, now - 10);
+        w.setStream(VideoState::Reconnecting, clock->nowMs() - 10);
         QVERIFY(!w.resume());
-        w.setStream(VideoState::Playing, now);
+        w.setStream(VideoState::Playing, clock->nowMs());
         QVERIFY(w.resume());
 
         // A configurable limit.
         w.setLimitMs(300);
-        w.setStream(VideoState::Playing, now - 301);
+        w.setStream(VideoState::Playing, clock->nowMs() - 301);
         QVERIFY(!w.check());
         QVERIFY(w.tripped());
 
@@ -71,7 +71,7 @@ private slots:
         QVERIFY(!w.videoGood());
         QVERIFY(!w.check());
         QVERIFY(!w.resume()); // no good frame of the new stream yet
-        w.setStream(VideoState::Playing, now);
+        w.setStream(VideoState::Playing, clock->nowMs());
         QVERIFY(!w.check());
         QVERIFY(w.tripped());
         QVERIFY(w.resume());
@@ -81,17 +81,17 @@ private slots:
         w.setStream(VideoState::Connecting, std::nullopt);
         QVERIFY(!w.check());
         QVERIFY(!w.tripped());
-        w.setStream(VideoState::Playing, now);
+        w.setStream(VideoState::Playing, clock->nowMs());
         QVERIFY(w.check());
 
         // Another vehicle: the trip is forgotten, wait for that vehicle's first frame.
-        w.setStream(VideoState::Lost, now);
+        w.setStream(VideoState::Lost, clock->nowMs());
         QVERIFY(!w.check());
         QVERIFY(w.tripped());
         w.reset();
         QVERIFY(!w.tripped());
         QVERIFY(!w.check());
-        w.setStream(VideoState::Playing, now);
+        w.setStream(VideoState::Playing, clock->nowMs());
         QVERIFY(w.check());
     }
 };

@@ -18,9 +18,9 @@ class TestAlarmPanel : public QObject {
     Q_OBJECT
 private slots:
     void groupedAlarmShelvingAndRate() {
-        qint64 now = 1'800'000'000'000;
+        auto clock = std::make_shared<ManualModelClock>(1'800'000'000'000);
         AlarmModel alarms;
-        alarms.setClock([&] { return now; });
+        alarms.setClock(clock);
         EventLogWidget log(&alarms);
         log.resize(1200, 600);
         log.show();
@@ -54,7 +54,8 @@ private slots:
         QCOMPARE(log.proxy()->rowCount(), 0);
         QTRY_VERIFY(!log.detailsShown()); // nothing selected any more
         QVERIFY(alarms.isKeyShelved(QStringLiteral("fleet.not_in_fms|ahs|iso23725")));
-        QCOMPARE(alarms.shelf(QStringLiteral("fleet.not_in_fms|ahs|iso23725")).untilMs, now + 15 * 60 * 1000);
+        QCOMPARE(alarms.shelf(QStringLiteral("fleet.not_in_fms|ahs|iso23725")).untilMs,
+                 clock->nowMs() + 15 * 60 * 1000);
 
         for (int i = 0; i < 11; ++i)
             alarms.add(makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, QStringLiteral("lost"),

@@ -62,7 +62,7 @@ private slots:
 
     void sceneAtDevicePixelRatio2() {
         FleetModel fleet;
-        fleet.setClock([] { return qint64(1500); });
+        fleet.setClock(std::make_shared<ManualModelClock>(1500));
         FleetSelection selection(&fleet);
         MachineState m;
         m.id = QStringLiteral("iso23725:t1");

@@ -140,10 +140,10 @@ private slots:
     }
 
     void staleMachineTurnsGreyOnTheMap() {
-        qint64 now = 10'000'000;
-        fleet->setClock([&] { return now; });
+        auto clock = std::make_shared<ManualModelClock>(10'000'000);
+        fleet->setClock(clock);
         MachineState m = machine(QStringLiteral("jaus:9"), 0, 0);
-        m.lastDataMs = now;
+        m.lastDataMs = clock->nowMs();
         fleet->upsert({m});
         SiteMapView view;
         view.resize(400, 300);
@@ -152,7 +152,7 @@ private slots:
         QImage img = view.grab().toImage();
         QPoint p = view.worldToScreen({0, 0}).toPoint() + QPoint(0, 12);
         QVERIFY(near(img.pixelColor(p), statusColor(StatusCategory::Ok)));
-        now += 10000;
+        clock->advance(10000);
         fleet->refresh();
         img = view.grab().toImage();
         // Stale: the symbol turns grey and is drawn faded.

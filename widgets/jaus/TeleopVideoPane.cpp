@@ -197,6 +197,7 @@ void TeleopVideoPane::checkWatchdog() {
     std::optional<std::int64_t> frameMs;
     if (f.number)
         frameMs = f.captureUs.value_or(f.arrivalUs) / 1000;
+    m_watchdog.setClock(m_player->clock()); // the frame times are on the player's clock
     m_watchdog.setStream(m_player->state(), frameMs);
     m_watchdog.check();
     const bool allows = m_watchdog.allowsDriving(), tripped = m_watchdog.tripped(),

@@ -60,7 +60,7 @@ void build(ProductionChart kind, QChart* chart, const ProductionModel& m) {
         chart->setTitle(QObject::tr("Tonnes over the shift: %1 t in %2 loads")
                             .arg(m.shift().tonnes, 0, 'f', 0)
                             .arg(m.shift().loads));
-        const qint64 now = std::clamp(QDateTime::currentMSecsSinceEpoch(), m.shiftStart(), m.shiftEnd());
+        const qint64 now = std::clamp(m.nowMs(), m.shiftStart(), m.shiftEnd());
         qint64 last = m.tonnesOverShift().isEmpty() ? m.shiftStart() : qint64(m.tonnesOverShift().last().x());
         const qint64 xEnd = std::max({now, last, m.shiftStart() + 60'000});
         auto* actual = new QLineSeries;

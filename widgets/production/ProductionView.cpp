@@ -141,8 +141,7 @@ void ProductionView::fill(QTableWidget* t, const QVector<ProductionTally>& rows)
 void ProductionView::refresh() {
     m_refreshQueued = false;
     const auto& s = m_model->shift();
-    const qint64 now =
-        std::clamp(QDateTime::currentMSecsSinceEpoch(), m_model->shiftStart(), m_model->shiftEnd());
+    const qint64 now = std::clamp(m_model->nowMs(), m_model->shiftStart(), m_model->shiftEnd());
     const double due = m_model->plannedTonnesAt(now);
     QString plan = m_model->planTonnes() > 0 ? tr("%1 % of the %2 t due by now")
                                                    .arg(due > 0 ? 100 * s.tonnes / due : 0, 0, 'f', 0)

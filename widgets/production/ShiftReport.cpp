@@ -148,7 +148,7 @@ QString writeShiftPdf(const ProductionModel& m, const QImage& map, const QString
                .arg(when(m.shiftStart()), when(m.shiftEnd()),
                     QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
     const auto& s = m.shift();
-    const qint64 now = std::clamp(QDateTime::currentMSecsSinceEpoch(), m.shiftStart(), m.shiftEnd());
+    const qint64 now = std::clamp(m.nowMs(), m.shiftStart(), m.shiftEnd());
     QString planText =
         m.planTonnes() > 0
             ? QObject::tr("plan %1 t for the shift, %2 t due by now (%3 %)")

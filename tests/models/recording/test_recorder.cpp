@@ -159,7 +159,7 @@ class TestRecorder : public QObject {
     Q_OBJECT
 
     QTemporaryDir m_dir;
-    qint64 m_clock = 0;
+    std::shared_ptr<ManualModelClock> m_clock = std::make_shared<ManualModelClock>();
     Truth m_truth;
     QString m_file;
     qint64 m_t0 = 0;
@@ -175,45 +175,46 @@ class TestRecorder : public QObject {
         o.legacySchema3 = legacy;
         o.keyframeIntervalMs = 5000;
         o.flushIntervalMs = 5;
-        o.clock = [this] { return m_clock; };
-        m_clock = m_t0 = 1'700'000'000'000;
+        o.clock = m_clock;
+        m_t0 = 1'700'000'000'000;
+        m_clock->set(m_t0);
         QVERIFY(rec.start(o).isEmpty());
         LinkStatus up;
         up.link = QStringLiteral("iso23725:ahs");
         up.state = LinkState::Up;
         rec.recordLink(QStringLiteral("iso23725"), up);
         for (int step = 0; step <= 600; ++step) {
-            m_clock = m_t0 + step * 100;
+            m_clock->set(m_t0 + step * 100);
             for (int k = 0; k < 3; ++k) {
                 const QString id = QStringLiteral("iso23725:t%1").arg(k);
                 if (k == 2 && step >= 200 && step < 300) {
                     if (step == 200) {
                         rec.recordRemoval(id);
-                        m_truth.remove(m_clock, id);
+                        m_truth.remove(m_clock->nowMs(), id);
                     }
                     continue;
                 }
                 MachineState m = machine(id, 100.0 * k + step * 0.8333, -50.0 + step * 0.01234);
-                m.lastDataMs = m_clock - 7;
-                m.lastMessageMs = k == 1 ? 0 : m_clock - 20;
+                m.lastDataMs = m_clock->nowMs() - 7;
+                m.lastMessageMs = k == 1 ? 0 : m_clock->nowMs() - 20;
                 if (k == 1 && step >= 150)
                     m.stop = StopState::Stopped, m.stopText = QStringLiteral("all-stop");
                 if (k == 0 && (step / 50) % 2 == 1)
                     m.health = HealthLevel::Warning, m.healthText = QStringLiteral("tyre pressure");
                 rec.recordStates({m});
                 MachineState expected = m;
-                applyPosition(expected, m, m_clock); // the file keeps millimetres
+                applyPosition(expected, m, m_clock->nowMs()); // the file keeps millimetres
                 if (!m_truth.now.contains(id) || !sameStatus(m_truth.now.value(id), m))
                     expected = m; // a Full record: exact
-                m_truth.set(m_clock, expected);
+                m_truth.set(m_clock->nowMs(), expected);
             }
             if (step == 150) {
                 FleetEvent ev =
                     makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("iso23725:t1"),
                               QStringLiteral("stopped"), QStringLiteral("iso23725"));
-                ev.timeMs = m_clock;
+                ev.timeMs = m_clock->nowMs();
                 rec.recordEvent(ev);
-                m_alarmT = m_clock;
+                m_alarmT = m_clock->nowMs();
                 rec.recordCommand(
                     QStringLiteral(R"({"origin":"gui","action":"stop_all","ok":false,"targets":[]})"));
             }
@@ -222,8 +223,8 @@ class TestRecorder : public QObject {
                     makeEvent(EventSeverity::Alarm, EventKind::HealthFault, QStringLiteral("iso23725:t1"),
                               QStringLiteral("stopped"), QStringLiteral("iso23725"));
                 ev.timeMs = m_alarmT;
-                rec.recordAck(alarmKey(ev), QStringLiteral("op"), m_clock);
-                m_ackT = m_clock;
+                rec.recordAck(alarmKey(ev), QStringLiteral("op"), m_clock->nowMs());
+                m_ackT = m_clock->nowMs();
                 up.state = LinkState::Down;
                 rec.recordLink(QStringLiteral("iso23725"), up);
             }
@@ -315,21 +316,21 @@ private slots:
     }
 
     void repeatedAlarmIsOneRowUntilAcknowledged() {
-        qint64 clock = 1'000'000;
+        auto clock = std::make_shared<ManualModelClock>(1'000'000);
         Recorder rec;
         RecorderOptions o;
         o.path = m_dir.filePath(QStringLiteral("twins.sqlite"));
-        o.clock = [&clock] { return clock; };
+        o.clock = clock;
         QVERIFY(rec.start(o).isEmpty());
         FleetEvent ev = makeEvent(EventSeverity::Alarm, EventKind::LinkLoss, {}, QStringLiteral("link lost"));
         ev.timeMs = 1'000'100;
-        clock = 1'000'100;
+        clock->set(1'000'100);
         rec.recordEvent(ev);
         rec.recordEvent(ev); // a repeat of an open alarm: one key, one row (AlarmModel groups, EEMUA 191)
-        clock = 1'000'200;
-        rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock);
-        clock = 1'000'300;
-        rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock);
+        clock->set(1'000'200);
+        rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock->nowMs());
+        clock->set(1'000'300);
+        rec.recordAck(alarmKey(ev), QStringLiteral("op"), clock->nowMs());
         rec.stop();
         auto r = Recording::open(o.path);
         QVERIFY(r);
@@ -394,16 +395,16 @@ private slots:
             return QString();
         };
 
-        qint64 clock = 1'700'000'000'000;
-        const qint64 start = clock;
+        auto clock = std::make_shared<ManualModelClock>(1'700'000'000'000);
+        const qint64 start = clock->nowMs();
         Recorder rec;
         RecorderOptions o;
         o.path = m_dir.filePath(QStringLiteral("alarms-%1.sqlite").arg(cap));
         o.flushIntervalMs = 5;
-        o.clock = [&clock] { return clock; };
+        o.clock = clock;
         QVERIFY(rec.start(o).isEmpty());
         AlarmModel live;
-        live.setClock([&clock] { return clock; });
+        live.setClock(clock);
         live.setOperatorName(QStringLiteral("op"));
         live.setMaxEntries(cap);
         connect(&live, &AlarmModel::eventAdded, &rec, &Recorder::recordEvent);
@@ -413,7 +414,7 @@ private slots:
         auto pick = [&rng](int n) { return int(std::uniform_int_distribution<int>(0, n - 1)(rng)); };
         QMap<qint64, QVector<Seen>> truth; // instant -> the live list after everything recorded up to it
         for (int step = 0; step < 2400; ++step) { // 20 minutes, a step every 500 ms
-            clock = start + step * 500;
+            clock->set(start + step * 500);
             const int what = pick(11);
             if (what < 5) {
                 // An alarm of one of a few keys (a repeat while open, a new row once acknowledged).
@@ -421,7 +422,7 @@ private slots:
                 FleetEvent ev = makeEvent(EventSeverity(1 + pick(3)),
                                           pick(2) ? EventKind::Timeout : EventKind::HealthFault, machineId,
                                           QStringLiteral("fault %1").arg(step), QStringLiteral("iso23725"));
-                ev.timeMs = clock;
+                ev.timeMs = clock->nowMs();
                 live.add(ev);
             } else if (what == 5) {
                 // A machine whose own clock is a minute ahead: the acknowledgements by key in the next minute
@@ -429,13 +430,13 @@ private slots:
                 FleetEvent ev =
                     makeEvent(EventSeverity::Alarm, EventKind::Timeout, QStringLiteral("iso23725:t4"),
                               QStringLiteral("ahead"), QStringLiteral("iso23725"));
-                ev.timeMs = clock + 60'000;
+                ev.timeMs = clock->nowMs() + 60'000;
                 live.add(ev);
             } else if (what < 8) {
                 // An entry that needs no acknowledgement.
                 FleetEvent ev = makeEvent(EventSeverity::Info, EventKind::Info, {},
                                           QStringLiteral("note %1").arg(pick(50)), QStringLiteral("gui"));
-                ev.timeMs = clock;
+                ev.timeMs = clock->nowMs();
                 live.add(ev);
             } else if (what == 8 && live.rowCount() > 0) {
                 // The operator acknowledges a row (perhaps one acknowledged already). Not the machine whose
@@ -450,21 +451,21 @@ private slots:
                 FleetEvent ev =
                     makeEvent(EventSeverity::Alarm, pick(2) ? EventKind::Timeout : EventKind::HealthFault,
                               machineId, {}, QStringLiteral("iso23725"));
-                live.acknowledgeKey(alarmKey(ev), QStringLiteral("console-2"), clock);
+                live.acknowledgeKey(alarmKey(ev), QStringLiteral("console-2"), clock->nowMs());
             }
-            truth.insert(clock, picture(live));
+            truth.insert(clock->nowMs(), picture(live));
             if (pick(4) == 0) {
                 // Two things in one millisecond: an event, then its acknowledgement (the file keeps no order
                 // across events and acknowledgements within a millisecond; the replay takes the events
                 // first).
-                ++clock;
+                clock->advance(1);
                 FleetEvent ev =
                     makeEvent(EventSeverity::Warning, EventKind::Timeout, QStringLiteral("iso23725:t9"),
                               QStringLiteral("late"), QStringLiteral("iso23725"));
-                ev.timeMs = clock;
+                ev.timeMs = clock->nowMs();
                 live.add(ev);
-                live.acknowledgeKey(alarmKey(ev), QStringLiteral("op"), clock);
-                truth.insert(clock, picture(live));
+                live.acknowledgeKey(alarmKey(ev), QStringLiteral("op"), clock->nowMs());
+                truth.insert(clock->nowMs(), picture(live));
             }
             if (step % 50 == 0)
                 rec.flush();
@@ -477,9 +478,9 @@ private slots:
         auto r = Recording::open(o.path);
         QVERIFY(r);
         // 200 random instants of the recording (and the ends), in a random order.
-        QVector<qint64> instants{start - 1, start, clock};
+        QVector<qint64> instants{start - 1, start, clock->nowMs()};
         for (int i = 0; i < 200; ++i)
-            instants.push_back(start + std::uniform_int_distribution<qint64>(0, clock - start)(rng));
+            instants.push_back(start + std::uniform_int_distribution<qint64>(0, clock->nowMs() - start)(rng));
         // The replay's times are the file's (up to its last commit).
         auto liveAt = [&truth, &r](qint64 t) {
             const auto it = truth.upperBound(std::clamp(t, r->startMs(), r->endMs()));
@@ -619,8 +620,8 @@ private slots:
             o.flushIntervalMs = 5;
             o.messages = true;
             o.raw = raw;
-            qint64 clock = 1'700'000'000'000;
-            o.clock = [&clock] { return clock; };
+            auto clock = std::make_shared<ManualModelClock>(1'700'000'000'000);
+            o.clock = clock;
             QVERIFY(rec.start(o).isEmpty());
             MessageTap* tap = rec.messageTap();
             QVERIFY(tap);
@@ -629,15 +630,15 @@ private slots:
             const std::string iso = R"({"Header":{"Protocol":"ISO23725"},"PositionV1":{"X":1}})";
             const std::uint8_t osy[] = {9, 8, 7, 6, 5, 4, 3, 2, 1};
             const std::uint8_t junk[] = {0xFF, 0x00, 0xEE};
-            clock += 100;
+            clock->advance(100);
             tap->onDecoded({"jaus", "jaus", "42.1.1", "4402", jaus});
-            clock += 1500; // a new chunk
+            clock->advance(1500); // a new chunk
             tap->onDecoded({"iso23725", "ahs", "127.0.0.1:5000", "PositionV1", tapBytes(iso)});
-            clock += 10;
+            clock->advance(10);
             tap->onDecoded({"osyris", "osyris:239.1.1.1:7000", "3", "CmPos", osy});
             if (tap->wantsRaw())
                 tap->onRaw({"jaus", "jaus", "127.0.0.1:9", {}, junk});
-            clock += 10;
+            clock->advance(10);
             tap->onDecoded({"osyris", "osyris:239.1.1.1:7000", "3", "CmPos", osy});
             rec.flush();
             QCOMPARE(rec.stats().messages, raw ? 5u : 4u);
@@ -996,11 +997,11 @@ private slots:
         FleetContext ctx;
         FleetModel* live = ctx.fleet();
         const qint64 t0 = 1'700'000'000'000;
-        qint64 clock = t0;
+        auto clock = std::make_shared<ManualModelClock>(t0);
         Recorder rec;
         RecorderOptions o;
         o.path = m_dir.filePath(QStringLiteral("schema4.sqlite"));
-        o.clock = [&clock] { return clock; };
+        o.clock = clock;
         o.flushIntervalMs = 5;
         o.originLat = origin.lat;
         o.originLon = origin.lon;
@@ -1012,7 +1013,7 @@ private slots:
         std::uniform_real_distribution<double> noise(-0.02, 0.02);
         const int machines = 24, steps = 3000; // 5 minutes at 10 Hz
         for (int step = 0; step < steps; ++step) {
-            clock = t0 + step * 100;
+            clock->set(t0 + step * 100);
             QVector<MachineState> batch;
             for (int k = 0; k < machines; ++k) {
                 const QString id = QStringLiteral("m%1").arg(k);
@@ -1026,7 +1027,7 @@ private slots:
                 m.u = 20 * std::sin(a) + noise(rng);
                 m.headingDeg = std::fmod(a * 57.29578 + 90, 360) + 10 * noise(rng);
                 m.speed = 3.2 + std::sin(a) + noise(rng);
-                m.lastDataMs = clock - 3 - step % 7;
+                m.lastDataMs = clock->nowMs() - 3 - step % 7;
                 m.lastMessageMs = m.lastDataMs - 15;
                 switch (k % 4) {
                 case 0: // lat/lon and e/n/u agree through the site frame, as a bridge makes them
@@ -1063,7 +1064,7 @@ private slots:
             for (const MachineState& m : live->machinesSnapshot())
                 now.insert(m.id, m);
             truth.now = now;
-            truth.at[clock] = now;
+            truth.at[clock->nowMs()] = now;
             if (step % 2 == 0)
                 rec.flush();
         }
@@ -1203,11 +1204,11 @@ private slots:
         const qint64 limit = 1024 * 1024;
         const QString file = d.filePath(QStringLiteral("ocu-20260102-000000-2.sqlite"));
         const qint64 t0 = 1'700'000'000'000;
-        qint64 clock = t0;
+        auto clock = std::make_shared<ManualModelClock>(t0);
         Recorder rec;
         RecorderOptions o;
         o.path = file;
-        o.clock = [&clock] { return clock; };
+        o.clock = clock;
         o.maxFileBytes = effectiveMaxFileBytes(0, 1.0);
         o.retentionDir = d.path();
         o.maxTotalBytes = limit;
@@ -1219,14 +1220,14 @@ private slots:
         qint64 biggest = 0;
         QHash<QString, MachineState> last;
         for (qint64 ms = 0; ms <= seconds * 1000; ms += 100) {
-            clock = t0 + ms;
+            clock->set(t0 + ms);
             QVector<MachineState> batch;
             for (int i = 0; i < machines; ++i) {
                 const double a = double(ms) / 1000.0 * 0.05 + i;
                 MachineState m = machine(QStringLiteral("iso23725:t%1").arg(i),
                                          500 * std::cos(a) + i + noise(rng), 500 * std::sin(a) + noise(rng));
                 m.headingDeg = std::fmod(a * 57.3, 360);
-                m.lastDataMs = clock;
+                m.lastDataMs = clock->nowMs();
                 batch.push_back(m);
                 last.insert(m.id, m);
             }
