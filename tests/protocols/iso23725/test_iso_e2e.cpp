@@ -17,7 +17,7 @@ namespace {
 SimulatedAhsConfig simConfig() {
     SimulatedAhsConfig c;
     c.truckCount = 6;
-    c.positionRateHz = 5;
+    c.positionRateHz = 10;
     c.timeScale = 4;
     c.pingInterval = std::chrono::milliseconds(500);
     c.deadAfter = std::chrono::milliseconds(3000);
