@@ -272,7 +272,8 @@ private slots:
         IsoStack stack(ic, rec);
         QVERIFY(stack.start());
         QVERIFY(waitFor([&] { return rec.machinesWith([](auto& m) { return m.stateKnown; }) == 6; }));
-        ahs.freezeFor(std::chrono::milliseconds(2500)); // no frames and no pongs from the AHS
+        // No frames and no pongs from the AHS for twice dead_after.
+        ahs.freezeFor(2 * ic.links[0].ws.deadAfter);
         QVERIFY(waitFor([&] { return stack.counters().get("ws.dead") == 1; }, std::chrono::seconds(5)));
         QVERIFY(waitFor([&] { return rec.hasEvent("link dead: no frame for"); }));
         QCOMPARE(rec.allStop(), AllStopState::Unknown); // set before the link-down event is raised
