@@ -6,6 +6,7 @@
 // - no panel of controls needs to scroll sideways (its controls' row is cut at the dock's edge otherwise), on
 //   every tab of every dock (each tab raised in turn);
 // - no button is narrower than its text.
+#include "app/LinkIndicator.h"
 #include "app/MainWindow.h"
 #include "app/SiteLoader.h"
 #include "app/SiteRuntime.h"
@@ -24,15 +25,50 @@
 #include <QTranslator>
 #include <QtTest>
 
+#include <algorithm>
+
 using namespace ocu;
 
 namespace {
 
-void settle(int ms) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < ms)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+// The site runs: every link indicator of the status bar shows its link up, so the simulators' machines
+// are in the panels.
+bool siteUp(MainWindow& w) {
+    const QList<LinkIndicator*> links = w.findChildren<LinkIndicator*>();
+    return !links.isEmpty() && std::all_of(links.begin(), links.end(), [](const LinkIndicator* l) {
+        return l->state() == LinkIndicator::State::Up;
+    });
+}
+
+// What the checks below read: the docks on screen, their panels' scroll ranges and their buttons.
+QString layoutFingerprint(MainWindow& w) {
+    QStringList parts;
+    for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
+        if (!d->isVisible() || d->visibleRegion().isEmpty())
+            continue;
+        parts << QStringLiteral("%1 %2x%3").arg(d->objectName()).arg(d->width()).arg(d->height());
+        for (QScrollArea* s : d->findChildren<QScrollArea*>())
+            if (s->isVisible())
+                parts << QString::number(s->horizontalScrollBar()->maximum());
+        for (QAbstractButton* b : d->findChildren<QAbstractButton*>())
+            if (b->isVisible())
+                parts << QStringLiteral("%1 %2").arg(b->width()).arg(b->minimumSizeHint().width());
+    }
+    return parts.join(QLatin1Char(';'));
+}
+
+// The layout has settled once a pass of the event loop (posted layout requests, resizes, deferred shows)
+// changes nothing the checks read.
+bool layoutSettled(MainWindow& w) {
+    const QString before = layoutFingerprint(w);
+    QCoreApplication::sendPostedEvents();
+    QCoreApplication::processEvents();
+    return !before.isEmpty() && layoutFingerprint(w) == before;
+}
+
+// `dock` raised over its tab group: on screen and laid out.
+bool raisedAndSettled(MainWindow& w, QDockWidget* dock) {
+    return dock->isVisible() && !dock->visibleRegion().isEmpty() && layoutSettled(w);
 }
 
 // The console on the built-in simulated site, shown at `size`; the run's recording goes into a temporary
@@ -131,7 +167,8 @@ private slots:
         const QString opened = console.open(size);
         QVERIFY2(opened.isEmpty(), qPrintable(opened));
         MainWindow& window = *console.window;
-        settle(1500);
+        QTRY_VERIFY_WITH_TIMEOUT(siteUp(window), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(layoutSettled(window), 10000);
 
         QStringList problems;
         auto* map = qobject_cast<SiteMapView*>(window.panelWidget(Panel::SiteMap));
@@ -159,14 +196,15 @@ private slots:
         // Every tab of every tabbed dock, raised in turn.
         problems << cutOff(window);
         for (const char* p : {"3d", "teleop", "passcounts"}) {
-            window.dock(QLatin1String(p))->raise();
-            settle(300);
+            QDockWidget* d = window.dock(QLatin1String(p));
+            d->raise();
+            QTRY_VERIFY_WITH_TIMEOUT(raisedAndSettled(window, d), 10000);
             problems << cutOff(window);
         }
         for (QDockWidget* d : window.findChildren<QDockWidget*>())
             if (d->objectName() == QLatin1String("dock-production")) {
                 d->raise();
-                settle(300);
+                QTRY_VERIFY_WITH_TIMEOUT(raisedAndSettled(window, d), 10000);
                 problems << cutOff(window);
             }
         problems.removeDuplicates();
@@ -183,11 +221,12 @@ private slots:
         const QString opened = console.open(QSize(1366, 768));
         QVERIFY2(opened.isEmpty(), qPrintable(opened));
         MainWindow& window = *console.window;
-        settle(500);
+        QTRY_VERIFY_WITH_TIMEOUT(siteUp(window), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(layoutSettled(window), 10000);
         auto* pane = window.findChild<TeleopVideoPane*>();
         QVERIFY(pane);
         window.dock(QStringLiteral("jaus"))->raise();
-        settle(300);
+        QTRY_VERIFY_WITH_TIMEOUT(raisedAndSettled(window, window.dock(QStringLiteral("jaus"))), 10000);
         QVERIFY2(!pane->wantsVideo(), "teleop tab behind JAUS control wants video");
         window.dock(QStringLiteral("teleop"))->raise();
         QTRY_VERIFY_WITH_TIMEOUT(pane->wantsVideo(), 5000);

@@ -260,7 +260,7 @@ private slots:
         // ISO 23725: the simulated AHS with two trucks, the console's IsoStack connected to it.
         sim::SimulatedAhsConfig ahsCfg;
         ahsCfg.truckCount = 2;
-        ahsCfg.positionRateHz = 5;
+        ahsCfg.positionRateHz = 20; // configurable: new data of every truck within a Beat or so
         ahsCfg.healthEvents = false;
         sim::SimulatedAhs ahs(ahsCfg);
         QVERIFY(ahs.start());
@@ -273,6 +273,7 @@ private slots:
         jausCfg.subsystemId = 200;
         jausCfg.callSign = "OCU-200";
         jausCfg.authority = 205;
+        jausCfg.poseRateHz = 20; // the UGVs' pose events as often as the roller's positions
         jausDemo.configure(jausCfg);
         JausQuiet jausQuiet;
         jaus::JausStack jausStack(jausCfg, jausQuiet);

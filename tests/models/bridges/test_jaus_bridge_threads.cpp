@@ -67,7 +67,9 @@ class TestJausBridgeThreads : public QObject {
 private slots:
     void queuedDeliveryAndCoalescing() {
         sim::JausDemo demo(oneUgv());
-        JausBridge bridge(consoleConfig(demo, 60), GeoFrame(oneUgv().origin));
+        jaus::JausConfig config = consoleConfig(demo, 60);
+        config.heartbeatRateHz = 2; // configurable: the link is degraded 1.25 s into a silence
+        JausBridge bridge(config, GeoFrame(oneUgv().origin));
         bridgetest::Deliveries seen(&bridge);
         bridgetest::ProbeThread worker(&bridge);
         QSignalSpy views(&bridge, &JausVehicleBridge::subsystemUpdated);
@@ -208,7 +210,7 @@ private slots:
         sim::JausDemo demo(oneUgv());
         auto& ugv = *demo.ugvs().front();
         received.tap(ugv);
-        JausBridge bridge(consoleConfig(demo, 1.5), GeoFrame(oneUgv().origin));
+        JausBridge bridge(consoleConfig(demo, 1), GeoFrame(oneUgv().origin)); // link lost after 1 s
         QVERIFY(bridge.start().isEmpty());
         auto vehicle = [&] { return bridge.subsystem(126).value_or(JausVehicle{}); };
         QTRY_VERIFY_WITH_TIMEOUT(vehicle().link == JausLink::Up && vehicle().mobilityComponent.subsystem != 0,
@@ -217,7 +219,7 @@ private slots:
         QVERIFY(ocu::testing::bridgeResult([&](auto d) { bridge.command(RequestControl{kVehicle}, d); }).ok);
         QTRY_VERIFY_WITH_TIMEOUT(vehicle().controlledByUs, 10000);
 
-        // The vehicle falls silent (it still hears us): after 1.5 s its link is down.
+        // The vehicle falls silent (it still hears us): after 1 s its link is down.
         ugv.setPacketLoss(1.0);
         QTRY_COMPARE_WITH_TIMEOUT(vehicle().link, JausLink::Down, 20000);
         const QList<CommandResult> refused{

@@ -17,7 +17,7 @@ namespace {
 SimulatedAhsConfig simConfig() {
     SimulatedAhsConfig c;
     c.truckCount = 6;
-    c.positionRateHz = 5;
+    c.positionRateHz = 10;
     c.timeScale = 4;
     c.pingInterval = std::chrono::milliseconds(500);
     c.deadAfter = std::chrono::milliseconds(3000);
@@ -272,7 +272,8 @@ private slots:
         IsoStack stack(ic, rec);
         QVERIFY(stack.start());
         QVERIFY(waitFor([&] { return rec.machinesWith([](auto& m) { return m.stateKnown; }) == 6; }));
-        ahs.freezeFor(std::chrono::milliseconds(2500)); // no frames and no pongs from the AHS
+        // No frames and no pongs from the AHS for twice dead_after.
+        ahs.freezeFor(2 * ic.links[0].ws.deadAfter);
         QVERIFY(waitFor([&] { return stack.counters().get("ws.dead") == 1; }, std::chrono::seconds(5)));
         QVERIFY(waitFor([&] { return rec.hasEvent("link dead: no frame for"); }));
         QCOMPARE(rec.allStop(), AllStopState::Unknown); // set before the link-down event is raised

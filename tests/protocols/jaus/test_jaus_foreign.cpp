@@ -55,9 +55,8 @@ JausConfig console(std::uint16_t ss, Role role, std::uint8_t authority, std::uin
 
 struct Console {
     Console(std::uint16_t ss, Role role, std::uint8_t authority, std::uint16_t vehiclePort)
-        : stack(console(ss, role, authority, vehiclePort), quiet) {
-        stack.start();
-    }
+        : Console(console(ss, role, authority, vehiclePort)) {}
+    explicit Console(const JausConfig& c) : stack(c, quiet) { stack.start(); }
     ~Console() { stack.stop(); }
     std::optional<SubsystemSnapshot> snap() { return stack.snapshot(126); }
     bool discovered() {
@@ -223,12 +222,16 @@ private slots:
     }
 
     // §7: a vehicle answering late (every reply 600 ms after the request): discovered, controlled and stopped
-    // all the same, and control holds through re-requests answered late.
+    // all the same, and control holds through re-requests answered late. Access timeout 2 s on both sides
+    // (configurable): re-requests every 0.8 s, each answered 0.6 s later.
     void lateAnswersStillWork() {
         VehicleOptions o;
         o.replyDelayMs = 600;
+        o.accessTimeoutS = 2;
         ForeignJausVehicle v(o);
-        Console ocu(200, Role::PrimaryOperator, 205, v.port());
+        JausConfig c = console(200, Role::PrimaryOperator, 205, v.port());
+        c.accessTimeoutS = o.accessTimeoutS;
+        Console ocu(c);
         QVERIFY(waitFor([&] { return ocu.discovered(); }));
         ocu.stack.requestControl(126, {});
         QVERIFY(waitFor([&] { return ocu.snap()->controlledByUs; }));
@@ -244,7 +247,10 @@ private slots:
     // discovery broadcast (main: polling stopped while down, the vehicle was never asked again).
     void linkRestoredByProbeAfterOutage() {
         ForeignJausVehicle v(VehicleOptions{});
-        Console ocu(200, Role::PrimaryOperator, 205, v.port());
+        JausConfig c = console(200, Role::PrimaryOperator, 205, v.port());
+        c.statusPollHz = 5; // fast timers (configurable): the outage is noticed after 1 s
+        c.linkLostS = 1;
+        Console ocu(c);
         QVERIFY(waitFor([&] { return ocu.discovered(); }));
         v.setOffline(true);
         QVERIFY(waitFor([&] { return ocu.snap()->link == LinkState::Down; }));
@@ -261,6 +267,9 @@ private slots:
         JausConfig a = console(204, Role::Monitor, 0, v.port());
         JausConfig b = console(205, Role::Monitor, 0, v.port());
         a.transport.port = b.transport.port = groupPort();
+        // Fast timers (configurable): polled at 5 Hz, a link is down after 1 s without a reply.
+        a.statusPollHz = b.statusPollHz = 5;
+        a.linkLostS = b.linkLostS = 1;
         Quiet q;
         JausStack sa(a, q), sb(b, q);
         sa.start();
@@ -272,7 +281,7 @@ private slots:
             return x && !x->services.empty() && x->link == LinkState::Up;
         };
         QVERIFY(waitFor([&] { return up(sa) && up(sb); }));
-        QTest::qWait(3000); // longer than link_lost_s: both still hear their own replies
+        QTest::qWait(int(1200 * a.linkLostS)); // longer than link_lost_s: both still hear their own replies
         QVERIFY(up(sa));
         QVERIFY(up(sb));
         sb.stop();

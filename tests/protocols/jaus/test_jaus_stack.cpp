@@ -60,7 +60,18 @@ JausConfig ocuConfig(const JausDemo& demo, std::uint16_t ss = 200, std::uint8_t 
 }
 
 struct Fixture {
-    explicit Fixture(JausDemoOptions o = {}) : demo(o), stack(ocuConfig(demo), rec) { stack.start(); }
+    explicit Fixture(JausDemoOptions o = {}, double driveRateHz = JausConfig{}.driveRateHz)
+        : demo(o), stack(withDriveRate(ocuConfig(demo), driveRateHz), rec) {
+        stack.start();
+    }
+    static JausConfig withDriveRate(JausConfig c, double hz) {
+        c.driveRateHz = hz;
+        return c;
+    }
+    // A wait of `n` periods of the console's drive stream: what streamed in it would have moved the UGV.
+    void waitDrivePeriods(int n) const {
+        std::this_thread::sleep_for(std::chrono::duration<double>(n / stack.config().driveRateHz));
+    }
     ~Fixture() {
         stack.stop();
         demo.stop();
@@ -161,7 +172,7 @@ private slots:
     }
 
     void emergencyStopsUntilCleared() {
-        Fixture f;
+        Fixture f({}, 50); // the drive rate is configurable: ten periods in 200 ms (the UGV's physics: 50 Hz)
         QVERIFY(f.takeControl(126));
         f.drive(126, 1.0);
         QVERIFY(waitFor([&] { return f.demo.find(126)->state().v > 0.9; }));
@@ -173,12 +184,12 @@ private slots:
         const double x = f.demo.find(126)->state().x;
         f.drive(126, 1.0); // refused while in emergency
         QVERIFY(waitFor([&] { return f.rec.count(EventKind::CommandRefused, 126) >= 1; }));
-        std::this_thread::sleep_for(std::chrono::milliseconds(500)); // ten drive periods: nothing moves
+        f.waitDrivePeriods(10); // nothing moves
         QCOMPARE(f.demo.find(126)->state().x, x);
         f.stack.clearEmergency(126, {});
         QVERIFY(waitFor([&] { return !f.snap(126)->emergency; }));
         QCOMPARE(f.rec.count(EventKind::EmergencyCleared, 126), 1);
-        std::this_thread::sleep_for(std::chrono::milliseconds(500));
+        f.waitDrivePeriods(10);
         QCOMPARE(f.demo.find(126)->state().x, x); // still stopped: nothing drives it
     }
 
@@ -216,10 +227,13 @@ private slots:
     }
 
     // The UGV's own watchdog on its real clock. Its 1 s window (not before 0.9 s, by 1.2 s) is proven on a
-    // FakeClock by test_jaus_services driveTimeoutStopsAndRecovers; here it never fires early.
+    // FakeClock by test_jaus_services driveTimeoutStopsAndRecovers; here it never fires early. The timeout
+    // is configurable: half a second is still ten periods of the 20 Hz drive stream.
     void ugvStopsAfterDriveTimeoutWhenStreamingStops() {
+        JausDemoOptions o;
+        o.driveTimeoutS = 0.5;
         LastReceived lastDrive;
-        Fixture f;
+        Fixture f(o);
         lastDrive.watch(*f.demo.find(126), msg::SetVelocityCommand);
         QVERIFY(f.takeControl(126));
         f.drive(126, 1.0);
@@ -228,7 +242,7 @@ private slots:
         f.stack.setTransmitFaults(1.0); // the OCU stops streaming (and everything else)
         QVERIFY(waitFor([&] { return f.demo.find(126)->state().driveTimedOut; }));
         const double quiet = lastDrive.secondsSince();
-        QVERIFY2(quiet >= 1.0, qPrintable(QString::number(quiet))); // not before the drive timeout
+        QVERIFY2(quiet >= o.driveTimeoutS, qPrintable(QString::number(quiet))); // not before the timeout
         QCOMPARE(f.demo.find(126)->counters().get("drive.timeouts"), std::uint64_t(1));
         QVERIFY(waitFor([&] { return f.demo.find(126)->state().v == 0.0; }));
         f.demo.find(126)->setMessageTap({});
@@ -238,16 +252,16 @@ private slots:
     // Kept while re-requests flow and lost within the window: test_jaus_services (FakeClock).
     void silentOcuLosesControlAfterAccessTimeout() {
         JausDemoOptions o;
-        o.accessTimeoutS = 2; // fast timer: the UGV's timeout is configurable
+        o.accessTimeoutS = 1; // fast timer: the UGV's timeout is configurable (whole seconds on the wire)
         LastReceived lastRequest;
         Fixture f(o);
         lastRequest.watch(*f.demo.find(126), msg::RequestControl);
         QVERIFY(f.takeControl(126));
-        QVERIFY(waitFor([&] { return f.snap(126)->accessTimeoutS == 2; }));
+        QVERIFY(waitFor([&] { return f.snap(126)->accessTimeoutS == 1; }));
         f.stack.setTransmitFaults(1.0);
         QVERIFY(waitFor([&] { return f.demo.find(126)->state().controller.subsystem == 0; }));
         const double quiet = lastRequest.secondsSince();
-        QVERIFY2(quiet >= 2.0, qPrintable(QString::number(quiet)));
+        QVERIFY2(quiet >= o.accessTimeoutS, qPrintable(QString::number(quiet)));
         // The OCU notices it too (it still hears the UGV).
         QVERIFY(waitFor([&] { return !f.snap(126)->controlledByUs; }));
         f.demo.find(126)->setMessageTap({});
@@ -293,7 +307,7 @@ private slots:
         JausDemo demo(o);
         Recorder rec;
         JausConfig c = ocuConfig(demo);
-        c.linkLostS = 1.5; // fast timer (configurable)
+        c.linkLostS = 1; // fast timer (configurable)
         JausStack stack(c, rec);
         stack.start();
         QVERIFY(waitFor([&] {
@@ -305,7 +319,7 @@ private slots:
         ugv->setPacketLoss(0.3);
         ugv->setPacketDelay(20);
         ugv->setReorder(true);
-        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        std::this_thread::sleep_for(std::chrono::duration<double>(c.linkLostS)); // one link_lost_s
         QCOMPARE(stack.snapshot(126)->link, LinkState::Up);
         QCOMPARE(rec.count(EventKind::LinkLost, 126), 0);
         // Total silence: link lost after link_lost_s.
