@@ -163,7 +163,9 @@ private slots:
         SiteConfig cfg = std::move(site.value());
         cfg.simulation.ahsTrucks = 2;
         cfg.simulation.osyrisPavingJob = OCU_SOURCE_DIR "/resources/designs/paving-job.xml";
-        cfg.simulation.osyrisSpeedUp = 100;
+        // 200 simulated seconds a second: positions 5 simulated s apart, a roller's 6 m between two of them
+        // still under the 10 m step that breaks a traversal (PassCountSettings::maxJump).
+        cfg.simulation.osyrisSpeedUp = 200;
         cfg.simulation.osyrisLifts = 2;
         cfg.record.enabled = false;
         SiteRuntime runtime(cfg);
@@ -236,7 +238,9 @@ private slots:
             countColour(img, img.rect().adjusted(0, 0, 0, -60), CompactionMapOverlay::centreLineColour(), 10),
             0);
 
-        // ---- An area around station 0+100 ... 0+300, 8 m either side (as the map's polygon tool gives it).
+        // ---- An area around station 0+000 ... 0+200, 8 m either side (as the map's polygon tool gives it):
+        // at the start of the job, where the rollers are within seconds (the paver starts at 0+000 at 5
+        // m/min).
         auto ring = [&](double from, double to) {
             QPolygonF left, right;
             for (const auto& t : geo.ticks)
@@ -248,7 +252,7 @@ private slots:
                 }
             return left + right;
         };
-        const QPolygonF lot = ring(100, 300);
+        const QPolygonF lot = ring(0, 200);
         QCOMPARE(lot.size(), 6);
         QCOMPARE(session->addArea(QStringLiteral("Lot A"), lot), QString());
         // Shown on the map: its outline in the area colour along its edge.
@@ -374,6 +378,15 @@ private slots:
                      qPrintable(QString::number(c)));
 
         // ---- The report from the panel (PDF + CSV + GeoTIFF with one base name) ...
+        // Of a rolled stretch some 170 m long (the rollers have been over station 0+160 ... 0+180), whose
+        // GeoTIFF is more than its header.
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                const auto t = session->coverageTable(-1);
+                return t.stations.size() > 8 && t.stations[8].coveragePercent > 0;
+            }(),
+            60000);
+        qInfo("rolled past 0+160 after %lld ms", clock.elapsed());
         QTemporaryDir out;
         const QString text = areasPanel->writeReport(out.filePath(QStringLiteral("gui.pdf")));
         QVERIFY2(text.contains(QStringLiteral("PDF, CSV, GEOTIFF")), qPrintable(text));
@@ -462,9 +475,9 @@ void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapVie
     QTRY_VERIFY(!map->visibleRegion().isEmpty());
     QTRY_VERIFY(map->hasFocus());
 
-    // Frame stations 0+100 ... 0+400 (the rollers have been over 0+100 ... 0+300 by now).
-    const QPolygonF lotM{at(100, 10), at(200, 12), at(300, 10), at(300, -10), at(100, -10)};
-    QRectF box = lotM.boundingRect().united(QRectF(at(400, 10), at(400, -10)).normalized());
+    // Frame stations 0+000 ... 0+300 (the rollers have been over the start of 0+000 ... 0+200 by now).
+    const QPolygonF lotM{at(0, 10), at(100, 12), at(200, 10), at(200, -10), at(0, -10)};
+    QRectF box = lotM.boundingRect().united(QRectF(at(300, 10), at(300, -10)).normalized());
     const double scale = std::min(0.8 * map->width() / box.width(), 0.8 * map->height() / box.height());
     QVERIFY2(scale > 0.5, qPrintable(QString::number(scale))); // a pixel is at most 2 m
     map->panByPixels({0, 0}); // the operator's view: no auto-fitting while we click
@@ -481,8 +494,8 @@ void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapVie
     const QPointF centre = map->center();
 
     // ---- Esc cancels: two points, Enter cannot close yet (the hint says how many are needed), Esc.
-    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(100, 10)));
-    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(200, 12)));
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(0, 10)));
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(100, 12)));
     QCOMPARE(overlay->drawnPoints().size(), 2);
     QVERIFY2(overlay->drawingHint().startsWith(QStringLiteral("New area: 2 points (3 needed)")),
              qPrintable(overlay->drawingHint()));
@@ -505,7 +518,7 @@ void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapVie
     QTRY_VERIFY(map->hasFocus());
     for (int i = 0; i < 3; ++i)
         QTest::mouseClick(map, Qt::LeftButton, {}, px(lotM[i]));
-    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(200, -14))); // stray
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(100, -14))); // stray
     QCOMPARE(overlay->drawnPoints().size(), 4);
     QTest::keyClick(map, Qt::Key_Backspace);
     QCOMPARE(overlay->drawnPoints().size(), 3);
@@ -642,7 +655,7 @@ void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapVie
 
     // ---- A second area closed by a click on its first point; the name the operator types exists: the
     // console asks before replacing it, "No" goes back to the name.
-    const QPolygonF lotN{at(300, 10), at(400, 10), at(400, -10), at(300, -10)};
+    const QPolygonF lotN{at(200, 10), at(300, 10), at(300, -10), at(200, -10)};
     QTest::mouseClick(draw, Qt::LeftButton);
     for (const QPointF& w : lotN)
         QTest::mouseClick(map, Qt::LeftButton, {}, px(w));
@@ -669,7 +682,7 @@ void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapVie
 
     // ---- Enter closes; cancelling the name discards the outline.
     QTest::mouseClick(draw, Qt::LeftButton);
-    for (const QPointF& w : {at(100, 4), at(200, 4), at(200, -4)})
+    for (const QPointF& w : {at(0, 4), at(100, 4), at(100, -4)})
         QTest::mouseClick(map, Qt::LeftButton, {}, px(w));
     {
         ModalAnswers answers({nameDialog(QString(), &offered)});
@@ -682,7 +695,7 @@ void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapVie
 
     // ---- The button cancels too.
     QTest::mouseClick(draw, Qt::LeftButton);
-    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(100, 4)));
+    QTest::mouseClick(map, Qt::LeftButton, {}, px(at(0, 4)));
     QTest::mouseClick(draw, Qt::LeftButton);
     QVERIFY(!overlay->isDrawing());
     QCOMPARE(session->areaCount(), areasBefore + 2);

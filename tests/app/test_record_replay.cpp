@@ -19,6 +19,7 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -47,6 +48,74 @@ struct Picture {
     QSet<QString> nearStaleBoundary;
     int alarms = 0, unacked = 0;
 };
+
+// What a recording made with record.messages and record.raw holds (recordsEveryProtocolsMessages).
+struct RecordedMessages {
+    bool opened = false;
+    QString bad; // a message out of order, outside the run or not matching its channel
+    int n = 0;
+    QHash<QString, QSet<QString>> types, rawOf; // per protocol: message types, raw links
+    bool hasPassCounts = false, replayHasPassCounts = false;
+    qint64 coveredCells = 0; // in the replay's pass counts at the end
+    bool complete() const {
+        return opened && bad.isEmpty() && n > 100 &&
+               types.value(QStringLiteral("osyris")).contains(QStringLiteral("CmPos")) &&
+               types.value(QStringLiteral("iso23725")).contains(QStringLiteral("FleetDefinitionV2")) &&
+               types.value(QStringLiteral("jaus")).size() >= 3 &&
+               !rawOf.value(QStringLiteral("jaus")).isEmpty() &&
+               !rawOf.value(QStringLiteral("iso23725")).isEmpty() &&
+               !rawOf.value(QStringLiteral("osyris")).isEmpty() && hasPassCounts && replayHasPassCounts &&
+               coveredCells > 0;
+    }
+};
+
+// Reads the messages of the recording in `file` (messages received between tStart and tEnd) and replays
+// its end for the pass counts.
+RecordedMessages inspectMessages(const QString& file, qint64 tStart, qint64 tEnd) {
+    RecordedMessages out;
+    auto rec = Recording::open(file);
+    if (!rec)
+        return out;
+    out.opened = true;
+    const auto channels = rec->messageChannels();
+    qint64 last = 0;
+    rec->messages(0, std::numeric_limits<qint64>::max(), [&](const RecordedMessage& m) {
+        const MessageChannel c = channels.value(m.channel);
+        ++out.n;
+        if (m.t < last || m.t < tStart || m.t > tEnd)
+            out.bad = QStringLiteral("time %1 out of order or outside the run").arg(m.t);
+        last = m.t;
+        if (m.raw) {
+            out.rawOf[c.protocol].insert(c.link);
+            return true;
+        }
+        out.types[c.protocol].insert(c.type);
+        if (c.protocol == QLatin1String("jaus") &&
+            (m.bytes.size() < 2 ||
+             c.type != QStringLiteral("%1")
+                           .arg(quint8(m.bytes[0]) | quint8(m.bytes[1]) << 8, 4, 16, QLatin1Char('0'))
+                           .toUpper()))
+            out.bad = QStringLiteral("JAUS type %1 does not match its message code").arg(c.type);
+        if (c.protocol == QLatin1String("iso23725") && c.type != QLatin1String("MapDocument") &&
+            !m.bytes.contains(c.type.section(QLatin1Char('+'), 0, 0).toUtf8()))
+            out.bad = QStringLiteral("ISO 23725 type %1 not in its frame").arg(c.type);
+        if (c.protocol == QLatin1String("osyris") && c.type == QLatin1String("CmPos") && m.bytes.size() != 73)
+            out.bad = QStringLiteral("CmPos of %1 bytes").arg(m.bytes.size());
+        if (c.peer.isEmpty() && c.protocol != QLatin1String("iso23725"))
+            out.bad = QStringLiteral("%1 message without a peer").arg(c.protocol);
+        return out.bad.isEmpty();
+    });
+    out.hasPassCounts = rec->hasPassCounts();
+    if (out.hasPassCounts) {
+        FleetModel fleet;
+        ReplayController replay(rec.get(), &fleet);
+        replay.seek(rec->endMs());
+        out.replayHasPassCounts = replay.passCounts() != nullptr;
+        if (out.replayHasPassCounts)
+            out.coveredCells = qint64(summarize(*replay.passCounts(), PassTarget{}).coveredCells);
+    }
+    return out;
+}
 
 Picture pictureOf(const FleetModel& fleet, const AlarmModel& alarms) {
     Picture p;
@@ -183,61 +252,37 @@ private slots:
             runtime.start();
             QVERIFY(runtime.recorder());
             file = runtime.recorder()->path();
-            QTest::qWait(6000);
+            // Recording until the file holds everything asserted below (read while it is written, as a
+            // replay of a running console does), at most a minute.
+            QElapsedTimer waited;
+            waited.start();
+            for (;;) {
+                const RecordedMessages now =
+                    inspectMessages(file, tStart, QDateTime::currentMSecsSinceEpoch());
+                if (now.complete() || !now.bad.isEmpty() || waited.elapsed() > 60000)
+                    break;
+                QTest::qWait(250);
+            }
             runtime.stop();
             tEnd = QDateTime::currentMSecsSinceEpoch();
             QCOMPARE(runtime.recorder()->stats().dropped, 0u);
         }
-        auto rec = Recording::open(file);
-        QVERIFY(rec);
-        const auto channels = rec->messageChannels();
-        QHash<QString, QSet<QString>> types, rawOf;
-        qint64 last = 0;
-        int n = 0;
-        QString bad;
-        rec->messages(0, std::numeric_limits<qint64>::max(), [&](const RecordedMessage& m) {
-            const MessageChannel c = channels.value(m.channel);
-            ++n;
-            if (m.t < last || m.t < tStart || m.t > tEnd)
-                bad = QStringLiteral("time %1 out of order or outside the run").arg(m.t);
-            last = m.t;
-            if (m.raw) {
-                rawOf[c.protocol].insert(c.link);
-                return true;
-            }
-            types[c.protocol].insert(c.type);
-            if (c.protocol == QLatin1String("jaus") &&
-                (m.bytes.size() < 2 ||
-                 c.type != QStringLiteral("%1")
-                               .arg(quint8(m.bytes[0]) | quint8(m.bytes[1]) << 8, 4, 16, QLatin1Char('0'))
-                               .toUpper()))
-                bad = QStringLiteral("JAUS type %1 does not match its message code").arg(c.type);
-            if (c.protocol == QLatin1String("iso23725") && c.type != QLatin1String("MapDocument") &&
-                !m.bytes.contains(c.type.section(QLatin1Char('+'), 0, 0).toUtf8()))
-                bad = QStringLiteral("ISO 23725 type %1 not in its frame").arg(c.type);
-            if (c.protocol == QLatin1String("osyris") && c.type == QLatin1String("CmPos") &&
-                m.bytes.size() != 73)
-                bad = QStringLiteral("CmPos of %1 bytes").arg(m.bytes.size());
-            if (c.peer.isEmpty() && c.protocol != QLatin1String("iso23725"))
-                bad = QStringLiteral("%1 message without a peer").arg(c.protocol);
-            return bad.isEmpty();
-        });
-        QVERIFY2(bad.isEmpty(), qPrintable(bad));
-        QVERIFY(n > 100);
-        QVERIFY2(types.value(QStringLiteral("osyris")).contains(QStringLiteral("CmPos")),
-                 qPrintable(QStringList(types.value(QStringLiteral("osyris")).values()).join(',')));
-        QVERIFY2(types.value(QStringLiteral("iso23725")).contains(QStringLiteral("FleetDefinitionV2")),
-                 qPrintable(QStringList(types.value(QStringLiteral("iso23725")).values()).join(',')));
-        QVERIFY(types.value(QStringLiteral("jaus")).size() >= 3);
+        // The whole file once the recorder closed it.
+        const RecordedMessages m = inspectMessages(file, tStart, tEnd);
+        QVERIFY(m.opened);
+        QVERIFY2(m.bad.isEmpty(), qPrintable(m.bad));
+        QVERIFY(m.n > 100);
+        QVERIFY2(m.types.value(QStringLiteral("osyris")).contains(QStringLiteral("CmPos")),
+                 qPrintable(QStringList(m.types.value(QStringLiteral("osyris")).values()).join(',')));
+        QVERIFY2(m.types.value(QStringLiteral("iso23725")).contains(QStringLiteral("FleetDefinitionV2")),
+                 qPrintable(QStringList(m.types.value(QStringLiteral("iso23725")).values()).join(',')));
+        QVERIFY(m.types.value(QStringLiteral("jaus")).size() >= 3);
         for (const char* p : {"jaus", "iso23725", "osyris"})
-            QVERIFY2(!rawOf.value(QString::fromLatin1(p)).isEmpty(), p);
+            QVERIFY2(!m.rawOf.value(QString::fromLatin1(p)).isEmpty(), p);
         // The rollers' pass counts are recorded, and the replay at the end shows covered cells.
-        QVERIFY(rec->hasPassCounts());
-        FleetModel fleet;
-        ReplayController replay(rec.get(), &fleet);
-        replay.seek(rec->endMs());
-        QVERIFY(replay.passCounts());
-        QVERIFY(summarize(*replay.passCounts(), PassTarget{}).coveredCells > 0);
+        QVERIFY(m.hasPassCounts);
+        QVERIFY(m.replayHasPassCounts);
+        QVERIFY(m.coveredCells > 0);
     }
 
     // Without record.dir the run records into OCU_RECORD_DIR (tests: a temporary folder, never the

@@ -234,6 +234,9 @@ private slots:
         o.speedUp = 10;
         o.relay = false;
         o.impairment = RxImpairment{0.30, 0.10, 0.20, 120, 5};
+        // A 50 ms Beat: the repair goes in NAK rounds of 30 Beats and announcements every SendPeriod, and
+        // what is asserted is that every slot comes back, not how long the rounds are (half the time).
+        o.beatMs = 50;
         OsyrisDemo demo(o); // paver + 3 rollers + the OCU = five stations
         std::string err;
         QVERIFY2(demo.start(&err), err.c_str());
