@@ -12,7 +12,9 @@
 #include "app/SiteRuntime.h"
 
 #include "widgets/SiteMapView.h"
+#ifdef OCU_HAVE_JAUS_WIDGETS
 #include "widgets/jaus/TeleopVideoPane.h"
+#endif
 
 #include <QAbstractButton>
 #include <QDockWidget>
@@ -213,6 +215,7 @@ private slots:
             QCoreApplication::removeTranslator(&tr);
     }
 
+#ifdef OCU_HAVE_JAUS_WIDGETS
     // In the default layout the teleop panel is a tab behind "JAUS control". Nobody sees it there,
     // so its video pane must want no video (nothing received or decoded) until its tab is raised, and again
     // none once another tab is raised over it.
@@ -233,6 +236,7 @@ private slots:
         window.dock(QStringLiteral("jaus"))->raise();
         QTRY_VERIFY_WITH_TIMEOUT(!pane->wantsVideo(), 5000);
     }
+#endif
 };
 
 QTEST_MAIN(TestWindowFit)
