@@ -61,6 +61,7 @@ function(ocu_add_test)
   endif()
   add_executable(${T_NAME} ${T_SOURCES})
   target_link_libraries(${T_NAME} PRIVATE Qt6::Test ${T_LIBS})
+  target_include_directories(${T_NAME} PRIVATE ${CMAKE_SOURCE_DIR}) # tests/support/, one include root
   ocu_set_warnings(${T_NAME})
   # Qt's test defines carry the absolute build and source folders; no test uses QFINDTESTDATA. Undefined, the
   # preprocessed test is the same in every clone or worktree, so ccache can share the objects between them.

@@ -102,8 +102,10 @@ struct BuiltInConsole {
 };
 
 // The table of a panel: the largest visible QTableView in it.
-QTableView* mainTable(QWidget* panel) {
+QTableView* mainTable(QWidget* panel) { // null: no such panel in this build
     QTableView* best = nullptr;
+    if (!panel)
+        return nullptr;
     for (QTableView* t : panel->findChildren<QTableView*>())
         if (t->isVisible() && (!best || t->height() > best->height()))
             best = t;
