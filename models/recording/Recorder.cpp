@@ -209,7 +209,7 @@ void Recorder::attach(FleetContext* ctx) {
     // What is already in the models when the recorder starts late.
     recordStates(fleet->machinesSnapshot());
     // A writer that falls behind drops (the io threads never wait for it): the operator hears of it, at most
-    // once every 5 s, with the count.
+    // once per dropReportIntervalMs (5 s), with the count.
     auto* dropWatch = new QTimer(this);
     connect(dropWatch, &QTimer::timeout, this, [this] {
         const quint64 dropped = m_dropped.load(std::memory_order_relaxed);
@@ -223,7 +223,7 @@ void Recorder::attach(FleetContext* ctx) {
                                            .arg(dropped),
                                        QStringLiteral("recorder")));
     });
-    dropWatch->start(5000);
+    dropWatch->start(std::max(50, m_options.dropReportIntervalMs));
 }
 
 void Recorder::watchPassCounts(const PassCountLayer* layer) {

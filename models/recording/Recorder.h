@@ -58,6 +58,9 @@ struct RecorderOptions {
     qint64 maxTotalBytes = 0;
     double maxAgeDays = 0;
     int retentionIntervalMs = 60000;
+    // A writer that falls behind is told to the operator at most this often (with the count of dropped
+    // records).
+    int dropReportIntervalMs = 5000;
     bool raw = false; // record.raw: raw frames (recordRaw); off by default
     // record.messages: every decoded inbound message (the tap's onDecoded). Off by default: the replay is
     // driven by the machine states alone, and the messages cost several times what the states cost

@@ -28,11 +28,11 @@ namespace {
 constexpr int kWait = 60000;
 
 sim::SimulatedAhsConfig ahsConfig() {
-    return isosim::ahsConfig(3, 10, 30);
+    return isosim::ahsConfig(3, 10, 60);
 }
 
 iso23725::IsoConfig consoleConfig(const std::string& url) {
-    return isosim::consoleConfig(url, std::chrono::milliseconds(5000), 800);
+    return isosim::consoleConfig(url, std::chrono::milliseconds(5000), 1600);
 }
 
 } // namespace

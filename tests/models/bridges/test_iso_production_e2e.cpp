@@ -29,11 +29,11 @@ namespace {
 constexpr int kWait = 60000;
 
 sim::SimulatedAhsConfig ahsConfig() {
-    return isosim::ahsConfig(2, 10, 30);
+    return isosim::ahsConfig(2, 10, 60);
 }
 
 iso23725::IsoConfig consoleConfig(const std::string& url) {
-    return isosim::consoleConfig(url, std::chrono::milliseconds(5000), 800);
+    return isosim::consoleConfig(url, std::chrono::milliseconds(5000), 1600);
 }
 
 // Distance from p to the polyline (or polygon outline) of a map feature.

@@ -798,6 +798,7 @@ private slots:
         o.queueCapacity = 5;
         o.flushIntervalMs = 60000;
         o.messages = true;
+        o.dropReportIntervalMs = 200; // the report itself is what is checked, not its 5 s pace
         QVERIFY(rec.start(o).isEmpty());
         QString warning;
         connect(ctx.alarms(), &AlarmModel::eventAdded, this, [&](const FleetEvent& e) {
