@@ -11,6 +11,7 @@
 #include "models/AlarmModel.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
+#include "models/ModelClock.h"
 #include "models/recording/RecordCodec.h"
 #include "models/recording/Recorder.h"
 #include "models/recording/Recording.h"
@@ -42,8 +43,14 @@ using namespace ocu::recording;
 
 namespace {
 
-// Machines the checks expect at least: 8 of the built-in site's, or fewer where this build leaves a protocol out
-// (each brings at least: JAUS 2 UGVs, ISO 23725 6 trucks, OSYRIS 2 rollers).
+// The time the console's models and its recorder stamp with (models/ModelClock.h): the run's instants are
+// taken on it, so "the picture at T" and the records' times compare like with like.
+qint64 modelNow() {
+    return systemModelClock()->nowMs();
+}
+
+// Machines the checks expect at least: 8 of the built-in site's, or fewer where this build leaves a protocol
+// out (each brings at least: JAUS 2 UGVs, ISO 23725 6 trucks, OSYRIS 2 rollers).
 constexpr int kSiteMachines = std::min(8, (ocutest::kWithJaus ? 2 : 0) + (ocutest::kWithIso23725 ? 6 : 0) +
                                               (ocutest::kWithOsyris ? 2 : 0));
 
@@ -133,8 +140,7 @@ Picture pictureOf(const FleetModel& fleet, const AlarmModel& alarms) {
     for (const MachineState& m : fleet.machinesSnapshot()) {
         p.machines.insert(m.id, m);
         p.stale.insert(m.id, fleet.isStale(m.id));
-        if (std::abs(QDateTime::currentMSecsSinceEpoch() - m.lastDataMs - fleet.staleAfterMs(m.protocol)) <
-            1000)
+        if (std::abs(fleet.nowMs() - m.lastDataMs - fleet.staleAfterMs(m.protocol)) < 1000)
             p.nearStaleBoundary.insert(m.id);
     }
     p.alarms = alarms.rowCount();
@@ -197,7 +203,7 @@ private slots:
             file = runtime.recorder()->path();
             auto* ctx = runtime.findChild<FleetContext*>();
             QVERIFY(ctx);
-            tStart = QDateTime::currentMSecsSinceEpoch();
+            tStart = modelNow();
             QTest::qWait(seconds * 500);
             // An operator acknowledges what is there, so acknowledgements are part of the picture.
             ctx->alarms()->acknowledgeAll();
@@ -205,7 +211,7 @@ private slots:
             // The live picture at T: staleness evaluated now; records made after this instant carry a later
             // time (the 2 ms pause), records before it an earlier or equal one.
             ctx->fleet()->refresh();
-            tLive = QDateTime::currentMSecsSinceEpoch();
+            tLive = modelNow();
             live = pictureOf(*ctx->fleet(), *ctx->alarms());
             QThread::msleep(2);
             QVERIFY2(int(live.machines.size()) >= kSiteMachines, "the simulated site's machines");
@@ -259,7 +265,7 @@ private slots:
         qint64 tStart = 0, tEnd = 0;
         {
             SiteRuntime runtime(cfg);
-            tStart = QDateTime::currentMSecsSinceEpoch();
+            tStart = modelNow();
             runtime.start();
             QVERIFY(runtime.recorder());
             file = runtime.recorder()->path();
@@ -268,14 +274,13 @@ private slots:
             QElapsedTimer waited;
             waited.start();
             for (;;) {
-                const RecordedMessages now =
-                    inspectMessages(file, tStart, QDateTime::currentMSecsSinceEpoch());
+                const RecordedMessages now = inspectMessages(file, tStart, modelNow());
                 if (now.complete() || !now.bad.isEmpty() || waited.elapsed() > 60000)
                     break;
                 QTest::qWait(250);
             }
             runtime.stop();
-            tEnd = QDateTime::currentMSecsSinceEpoch();
+            tEnd = modelNow();
             QCOMPARE(runtime.recorder()->stats().dropped, 0u);
         }
         // The whole file once the recorder closed it.
@@ -375,7 +380,7 @@ private slots:
                 return r->endMs() - firstData >= 3000;
             }(),
             60000);
-        const qint64 killedAt = QDateTime::currentMSecsSinceEpoch();
+        const qint64 killedAt = modelNow();
         ::kill(pid_t(ocu.processId()), SIGKILL);
         QVERIFY(ocu.waitForFinished(10000));
         QCOMPARE(ocu.exitStatus(), QProcess::CrashExit);
