@@ -3,6 +3,8 @@
 // consumed by the fleet model, the 2D map, the 3D view and the headless monitor.
 // Units are SI (anchors-features.md §8.2): metres, m/s, degrees for heading/lat/lon, times in ms since
 // the Unix epoch (UTC).
+#include "protocols/common/GeoFrame.h"
+
 #include <QColor>
 #include <QMetaType>
 #include <QString>
@@ -74,6 +76,16 @@ Protocol protocolOfId(const QString& id);
 // autonomous (blue) > OK (green).
 StatusCategory statusOf(const MachineState& m, bool stale);
 QColor statusColor(StatusCategory c);
+
+// A position fix as a row shows it: the point in the site frame and the same point in WGS84.
+inline void placeAt(MachineState& m, const EnuPoint& site, const GeoPoint& wgs84) {
+    m.hasPosition = true;
+    m.e = site.e;
+    m.n = site.n;
+    m.u = site.u;
+    m.lat = wgs84.lat;
+    m.lon = wgs84.lon;
+}
 
 } // namespace ocu
 

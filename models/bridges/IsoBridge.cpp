@@ -561,13 +561,8 @@ bool IsoBridge::admitPosition(const std::string& link, const std::string& key, I
 }
 
 void IsoBridge::setPosition(MachineState& m, const IsoPosition& p) const {
-    const EnuPoint e = m_frame.toLocal({p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)});
-    m.hasPosition = true;
-    m.e = e.e;
-    m.n = e.n;
-    m.u = e.u;
-    m.lat = p.latitude;
-    m.lon = p.longitude;
+    const GeoPoint g{p.latitude, p.longitude, p.elevation.value_or(m_frame.origin().alt)};
+    placeAt(m, m_frame.toLocal(g), g);
     m.headingDeg = p.heading.value_or(0);
     m.speed = p.speedKmh.value_or(0) / 3.6;
     m.lastDataMs = modelTimeOfWallMs(p.receivedUnixMs);

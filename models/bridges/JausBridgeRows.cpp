@@ -159,24 +159,13 @@ MachineState JausBridge::toMachine(const SubsystemSnapshot& s) const {
     if (s.globalPose && s.globalPose->lat && s.globalPose->lon) {
         const GeoPoint g{*s.globalPose->lat, *s.globalPose->lon,
                          s.globalPose->alt.value_or(m_frame.origin().alt)};
-        const EnuPoint p = m_frame.toLocal(g);
-        m.hasPosition = true;
-        m.e = p.e;
-        m.n = p.n;
-        m.u = p.u;
-        m.lat = g.lat;
-        m.lon = g.lon;
+        placeAt(m, m_frame.toLocal(g), g);
         if (s.globalPose->yaw) // JAUS yaw: from north, positive clockwise (NED), radians
             m.headingDeg = std::fmod(*s.globalPose->yaw * 180.0 / M_PI + 360.0, 360.0);
     } else if (s.localPose && s.localPose->x && s.localPose->y) {
         // Local pose is in the vehicle's NED-like frame: x north, y east.
         const EnuPoint p{*s.localPose->y, *s.localPose->x, 0};
-        const GeoPoint g = m_frame.toGeodetic(p);
-        m.hasPosition = true;
-        m.e = p.e;
-        m.n = p.n;
-        m.lat = g.lat;
-        m.lon = g.lon;
+        placeAt(m, p, m_frame.toGeodetic(p));
         if (s.localPose->yaw)
             m.headingDeg = std::fmod(*s.localPose->yaw * 180.0 / M_PI + 360.0, 360.0);
     }

@@ -5,7 +5,7 @@
 #include "models/AlarmModel.h"
 #include "models/DisplayText.h"
 #include "models/FleetModel.h"
-#ifdef OCU_HAVE_JAUS_MODELS
+#ifdef OCU_TEST_WITH_JAUS
 #include "models/jaus/JausSubsystemModel.h"
 #endif
 #include "widgets/EventLogWidget.h"
@@ -148,7 +148,7 @@ void TestTranslatedTexts::germanInPanels() {
                  !details.contains(QStringLiteral("degraded")),
              qPrintable(details));
 
-#ifdef OCU_HAVE_JAUS_MODELS
+#ifdef OCU_TEST_WITH_JAUS
     // JAUS panel: the link column and the details use the translated word, not the stack's.
     QCOMPARE(JausSubsystemModel::linkText(JausLink::Down), QStringLiteral("ausgefallen"));
 #endif

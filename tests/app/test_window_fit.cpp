@@ -13,7 +13,7 @@
 
 #include "tests/support/BuiltProtocols.h"
 #include "widgets/SiteMapView.h"
-#ifdef OCU_HAVE_JAUS_WIDGETS
+#ifdef OCU_TEST_WITH_JAUS
 #include "widgets/jaus/TeleopVideoPane.h"
 #endif
 
@@ -222,7 +222,7 @@ private slots:
             QCoreApplication::removeTranslator(&tr);
     }
 
-#ifdef OCU_HAVE_JAUS_WIDGETS
+#ifdef OCU_TEST_WITH_JAUS
     // In the default layout the teleop panel is a tab behind "JAUS control". Nobody sees it there,
     // so its video pane must want no video (nothing received or decoded) until its tab is raised, and again
     // none once another tab is raised over it.
