@@ -1,6 +1,7 @@
 #include "protocols/iso23725/FmsCore.h"
 
 #include "protocols/common/Log.h"
+#include "protocols/iso23725/LogCategory.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,6 @@
 
 namespace ocu::iso23725 {
 
-static constexpr const char* kLog = "ocu.iso";
 // At most this many error entries wait for the next rate-limited diagnostic; the rest are only counted.
 static constexpr std::size_t kMaxPendingErrors = 20;
 

@@ -4,6 +4,7 @@
 
 #include "protocols/common/IoThread.h"
 #include "protocols/common/Log.h"
+#include "protocols/iso23725/LogCategory.h"
 
 #include <boost/asio/steady_timer.hpp>
 
@@ -17,7 +18,6 @@
 
 namespace ocu::iso23725 {
 
-static constexpr const char* kLog = "ocu.iso";
 // How often the sessions' deadlines are checked: the resolution of the all-stop and diagnostic timers.
 static constexpr std::chrono::milliseconds kPollInterval{100};
 // Positions reach the listener in batches (FmsCore::flushPositions), at most this long after they arrived:

@@ -1,11 +1,11 @@
 #include "protocols/iso23725/MapServiceClient.h"
 
 #include "protocols/common/Log.h"
+#include "protocols/iso23725/LogCategory.h"
 
 namespace ocu::iso23725 {
 
 namespace {
-constexpr const char* kLog = "ocu.iso";
 // The API version of the map service this console speaks (§10.6.1 [I]).
 constexpr std::int64_t kMapServiceApi = 1;
 constexpr std::chrono::seconds kIdentificationWait{5};

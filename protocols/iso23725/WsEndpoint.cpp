@@ -4,6 +4,7 @@
 #include "protocols/iso23725/LinkTiming.h"
 
 #include "protocols/common/Log.h"
+#include "protocols/iso23725/LogCategory.h"
 
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/ssl.hpp>
@@ -28,8 +29,6 @@ namespace websocket = beast::websocket;
 namespace ssl = asio::ssl;
 using tcp = asio::ip::tcp;
 using beast::error_code;
-
-static constexpr const char* kLog = "ocu.iso";
 
 namespace {
 

@@ -12,8 +12,6 @@ using namespace codec;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Field tables (JSIDL layouts, jaus-wire.md §3 and §5): presence-vector bits in table order.
 constexpr std::array<ScaledField<WrenchEffort>, 12> kWrenchFields{{
     {&WrenchEffort::propLinX, 2, -100, 100},
@@ -42,20 +40,20 @@ constexpr std::array<ScaledField<GlobalPose>, 8> kGlobalPoseFields{{
     {&GlobalPose::lon, 4, -180, 180},
     {&GlobalPose::alt, 4, -10000, 35000},
     {&GlobalPose::positionRms, 4, 0, 100},
-    {&GlobalPose::roll, 2, -kPi, kPi},
-    {&GlobalPose::pitch, 2, -kPi, kPi},
-    {&GlobalPose::yaw, 2, -kPi, kPi},
-    {&GlobalPose::attitudeRms, 2, 0, kPi},
+    {&GlobalPose::roll, 2, -std::numbers::pi, std::numbers::pi},
+    {&GlobalPose::pitch, 2, -std::numbers::pi, std::numbers::pi},
+    {&GlobalPose::yaw, 2, -std::numbers::pi, std::numbers::pi},
+    {&GlobalPose::attitudeRms, 2, 0, std::numbers::pi},
 }};
 constexpr std::array<ScaledField<LocalPose>, 8> kLocalPoseFields{{
     {&LocalPose::x, 4, -100000, 100000},
     {&LocalPose::y, 4, -100000, 100000},
     {&LocalPose::z, 4, -100000, 100000},
     {&LocalPose::positionRms, 4, 0, 100},
-    {&LocalPose::roll, 2, -kPi, kPi},
-    {&LocalPose::pitch, 2, -kPi, kPi},
-    {&LocalPose::yaw, 2, -kPi, kPi},
-    {&LocalPose::attitudeRms, 2, 0, kPi},
+    {&LocalPose::roll, 2, -std::numbers::pi, std::numbers::pi},
+    {&LocalPose::pitch, 2, -std::numbers::pi, std::numbers::pi},
+    {&LocalPose::yaw, 2, -std::numbers::pi, std::numbers::pi},
+    {&LocalPose::attitudeRms, 2, 0, std::numbers::pi},
 }};
 constexpr std::array<ScaledField<VelocityState>, 8> kVelocityStateFields{{
     {&VelocityState::vx, 4, -327.68, 327.67},
@@ -65,7 +63,7 @@ constexpr std::array<ScaledField<VelocityState>, 8> kVelocityStateFields{{
     {&VelocityState::rollRate, 2, -32.768, 32.767},
     {&VelocityState::pitchRate, 2, -32.768, 32.767},
     {&VelocityState::yawRate, 2, -32.768, 32.767},
-    {&VelocityState::rateRms, 2, 0, kPi},
+    {&VelocityState::rateRms, 2, 0, std::numbers::pi},
 }};
 
 // Pose and velocity-state reports share one shape: PV u16, the table's fields, then a raw u32 timestamp on

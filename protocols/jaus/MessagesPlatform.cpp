@@ -12,8 +12,6 @@ using namespace codec;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 using Specs = PlatformSpecifications;
 // Field tables (JSIDL ReportPlatformSpecifications, jaus-wire.md §5): each record has its own presence
 // vector.
@@ -22,7 +20,7 @@ constexpr std::array<ScaledField<Specs>, 2> kSkidSteerFields{{
     {&Specs::driveWheelRadius, 2, 0, 10},
 }};
 constexpr std::array<ScaledField<Specs>, 4> kAckermannFields{{
-    {&Specs::steeringAngleRange, 2, -kPi / 2, kPi / 2},
+    {&Specs::steeringAngleRange, 2, -std::numbers::pi / 2, std::numbers::pi / 2},
     {&Specs::minTurnRadius, 2, 0, 25},
     {&Specs::wheelSeparation, 2, 0, 30},
     {&Specs::ackDriveWheelRadius, 2, 0, 10},

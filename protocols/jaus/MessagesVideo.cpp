@@ -13,8 +13,6 @@ using namespace codec;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // A record's optional fields as data, in presence-vector bit order: either a raw unsigned integer (enums,
 // bit sets, plain counts) or a scaled one uN[lo,hi]. Field i owns PV bit i.
 template <class T> struct Field {
@@ -126,8 +124,8 @@ constexpr std::array<Field<Conf>, 16> kConfFields{{
     raw8(&Conf::zoomMode),
     scaled(2, &Conf::zoomLevel, 0, 100),
     scaled(4, &Conf::focalLength, 0, 2),
-    scaled(4, &Conf::horizontalFov, -kPi, kPi),
-    scaled(4, &Conf::verticalFov, -kPi, kPi),
+    scaled(4, &Conf::horizontalFov, -std::numbers::pi, std::numbers::pi),
+    scaled(4, &Conf::verticalFov, -std::numbers::pi, std::numbers::pi),
     raw8(&Conf::focusMode),
     scaled(2, &Conf::focusValue, 0, 100),
     raw8(&Conf::whiteBalance),
@@ -208,7 +206,8 @@ void getEndpoint(ByteReader& r, DigitalResourceEndpoint& e) {
         e.resourceId = r.u16();
 }
 
-constexpr double kPosLo = -8 * kPi, kPosHi = 8 * kPi, kVelLo = -10 * kPi, kVelHi = 10 * kPi;
+constexpr double kPosLo = -8 * std::numbers::pi, kPosHi = 8 * std::numbers::pi,
+                 kVelLo = -10 * std::numbers::pi, kVelHi = 10 * std::numbers::pi;
 
 Bytes encodeJoints(std::uint16_t id, const PanTiltJoints& m, double lo, double hi) {
     Bytes out;

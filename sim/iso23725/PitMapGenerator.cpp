@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace ocu::sim {
 
 using namespace ocu::iso23725;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Adds nodes and ways to a PitMap, numbering nodes from 700001.
 class PitMapGenerator {
@@ -73,7 +72,7 @@ public:
         std::vector<EnuPoint> down, up;
         for (int k = 0; k <= 10; ++k) {
             double t = k / 10.0;
-            double bend = 90 * std::sin(kPi * t);
+            double bend = 90 * std::sin(std::numbers::pi * t);
             down.push_back({-6 + bend, 200 - 500 * t, -60 * t});
             up.push_back({6 + bend, -300 + 500 * t, -60 + 60 * t});
         }

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace ocu::sim {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 double horizontal(const EnuPoint& a, const EnuPoint& b) {
     return std::hypot(b.e - a.e, b.n - a.n);
@@ -36,7 +36,8 @@ std::optional<Route::Pose> Route::poseAt(double s) const {
             const double f = len > 0 ? std::clamp(rem / len, 0.0, 1.0) : 0.0;
             p.position = {a.e + f * (b.e - a.e), a.n + f * (b.n - a.n), a.u + f * (b.u - a.u)};
             if (len > 0.01)
-                p.headingDeg = std::fmod(std::atan2(b.e - a.e, b.n - a.n) * 180 / kPi + 360.0, 360.0);
+                p.headingDeg =
+                    std::fmod(std::atan2(b.e - a.e, b.n - a.n) * 180 / std::numbers::pi + 360.0, 360.0);
             std::size_t leg = 0;
             for (std::size_t k = 0; k < m_legStart.size(); ++k)
                 if (m_legStart[k] <= i)

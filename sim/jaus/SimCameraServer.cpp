@@ -17,7 +17,7 @@ namespace ocu::sim {
 
 namespace {
 
-constexpr const char* kLog = "ocu.sim.camera";
+constexpr const char* kCameraLog = "ocu.sim.camera";
 using SteadyTime = std::chrono::steady_clock::time_point;
 
 void initGstreamerOnce() {
@@ -234,7 +234,7 @@ std::string SimCameraServer::start(std::uint16_t port) {
     for (auto& s : d.streams)
         s->serving = true;
     d.running = true;
-    logInfo(kLog, "camera RTSP server on rtsp://127.0.0.1:" + std::to_string(d.port));
+    logInfo(kCameraLog, "camera RTSP server on rtsp://127.0.0.1:" + std::to_string(d.port));
     return {};
 }
 
@@ -271,7 +271,7 @@ void SimCameraServer::stop() {
     d.loop = nullptr;
     d.context = nullptr;
     d.running = false;
-    logInfo(kLog, "camera RTSP server on port " + std::to_string(d.port) + " stopped");
+    logInfo(kCameraLog, "camera RTSP server on port " + std::to_string(d.port) + " stopped");
 }
 
 bool SimCameraServer::running() const {

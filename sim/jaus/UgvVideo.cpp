@@ -12,8 +12,8 @@ using namespace ocu::jaus;
 
 namespace {
 constexpr const char* kLog = "ocu.sim.jaus";
-constexpr double kPi = std::numbers::pi;
-constexpr double kPanLimit = 170 * kPi / 180, kTiltMin = -45 * kPi / 180, kTiltMax = 30 * kPi / 180;
+constexpr double kPanLimit = 170 * std::numbers::pi / 180, kTiltMin = -45 * std::numbers::pi / 180,
+                 kTiltMax = 30 * std::numbers::pi / 180;
 constexpr double kMaxRate = 1.5;        // rad/s, the unit's own limit
 constexpr double kPtAccessTimeoutS = 5; // AEP-4818 §4.3.4 default
 constexpr double kActuatorTimeoutS = 1; // AEP-4818 §9.3.1.2 default
