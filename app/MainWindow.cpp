@@ -377,6 +377,11 @@ LinkIndicator* MainWindow::addLinkIndicator(const QString& protocol) {
     return ind;
 }
 
+void MainWindow::addStatusWidget(QWidget* widget) {
+    statusBar()->insertPermanentWidget(static_cast<int>(m_links.size()) + m_statusWidgets, widget);
+    ++m_statusWidgets;
+}
+
 void MainWindow::setUnacknowledgedAlarms(int count) {
     m_unacked = count;
     m_alarmLabel->setText(count == 0 ? tr("No unacknowledged alarms")

@@ -77,6 +77,8 @@ public:
     // One indicator per protocol link, added by the runtime for each protocol module (left to right).
     LinkIndicator* addLinkIndicator(const QString& protocol);
     LinkIndicator* linkIndicator(const QString& protocol) const { return m_links.value(protocol); }
+    // A status-bar widget of the console's own (not a link), right of the link indicators.
+    void addStatusWidget(QWidget* widget);
     void setUnacknowledgedAlarms(int count);
 
     // The red banner naming what a stop did not reach; stays until dismissed or cleared (a later full stop).
@@ -136,6 +138,7 @@ private:
     QStringList m_aboutProtocols;
     QStringList m_raisedPanels; // raisePanel() before the first show
     QMap<QString, LinkIndicator*> m_links;
+    int m_statusWidgets = 0; // addStatusWidget's, between the link indicators and the alarm label
     QAction* m_stopAll = nullptr;
     QToolButton* m_stopAllButton = nullptr;
     QAction* m_nightAction = nullptr;

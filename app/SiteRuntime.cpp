@@ -14,7 +14,6 @@
 
 #include "app/HardwareStopButton.h"
 #include "app/HeadlessMonitor.h"
-#include "app/LinkIndicator.h"
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/FleetContext.h"
@@ -472,14 +471,23 @@ void SiteRuntime::Impl::connectAlarmsAndStops(MainWindow& window) const {
     connect(&window, &MainWindow::stopAllRequested, c->gate(),
             [c] { c->gate()->stopAll(QStringLiteral("gui")); });
     if (HardwareStopButton* button = stopButton.get()) {
-        LinkIndicator* lamp = window.addLinkIndicator(SiteRuntime::tr("STOP button"));
+        // Its own words: "down" beside a button would read as "pressed".
+        auto* lamp = new QLabel(&window);
+        lamp->setObjectName(QStringLiteral("label-stop-button"));
         auto show = [lamp, button](bool up, const QString& device) {
-            lamp->setState(up ? LinkIndicator::State::Up : LinkIndicator::State::Down,
-                           up ? SiteRuntime::tr("%1: %2").arg(device, button->description())
-                              : SiteRuntime::tr("no device with %1").arg(button->description()));
+            const QString dot = up ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828");
+            lamp->setText(QStringLiteral("<span style='color:%1'>&#9679;</span> %2")
+                              .arg(dot, up ? SiteRuntime::tr("STOP button ready")
+                                           : SiteRuntime::tr("STOP button not connected")));
+            lamp->setToolTip(
+                up ? SiteRuntime::tr("%1: %2 triggers STOP ALL").arg(device, button->description())
+                   : SiteRuntime::tr("No device with %1 is connected; STOP ALL stays on F12, "
+                                     "Ctrl+Shift+Space and the toolbar")
+                         .arg(button->description()));
         };
         show(button->connected(), button->deviceName());
         connect(button, &HardwareStopButton::connectionChanged, lamp, show);
+        window.addStatusWidget(lamp);
     }
     // A stop that did not reach every target, or that a machine did not confirm, is shown loudly until the
     // operator dismisses it or a later STOP ALL reaches everything.
