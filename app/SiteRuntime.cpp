@@ -12,6 +12,7 @@
 #include "widgets/view3d/Site3DView.h"
 #endif
 
+#include "app/EarlyStopPress.h"
 #include "app/HardwareStopButton.h"
 #include "app/HeadlessMonitor.h"
 #include "models/AlarmModel.h"
@@ -50,6 +51,7 @@ struct SiteRuntime::Impl {
     std::vector<std::unique_ptr<ProtocolModule>> modules = makeProtocolModules();
     recording::Recorder* recorder = nullptr;        // the flight recorder of this run
     std::unique_ptr<HardwareStopButton> stopButton; // site configuration `stop_button`
+    QPointer<EarlyStopPress> earlyPress;            // the window's STOP ALL press, off the GUI thread
     QStringList startProblems;
     bool stopped = false;
 
@@ -206,6 +208,7 @@ void SiteRuntime::stop() {
         return;
     d.stopped = true;
     d.stopButton.reset(); // its thread calls the bridges: gone before they are
+    delete d.earlyPress;  // likewise
     // Stacks first (a stack may still send, e.g. release its control), then the simulators.
     for (const auto& m : d.modules)
         m->stop();
@@ -296,6 +299,7 @@ void SiteRuntime::populate(MainWindow& window) {
     d.connectPassCounts(passPanel, map, feed);
     d.connectBridges(window, map, passPanel, feed, this);
     d.connectAlarmsAndStops(window);
+    d.earlyPress = new EarlyStopPress(window, d.ctx->gate());
     for (const QString& p : std::as_const(d.startProblems))
         window.statusBar()->showMessage(p, 15000);
 }

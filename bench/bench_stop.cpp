@@ -1,17 +1,22 @@
-// STOP ALL latency at the wire (docs/decisions/stop-from-callers-thread.md): from the trigger to the first byte of each protocol's stop
-// message on the loopback interface, timed by the kernel (AF_PACKET socket on "lo" with SO_TIMESTAMPNS: the
-// realtime stamp each packet gets when lo passes it on, in the same call as its transmission), so the figure
-// does not depend on how the console reports results.
+// STOP ALL latency at the wire (docs/decisions/stop-from-callers-thread.md): from the trigger to the first
+// byte of each protocol's stop message on the loopback interface, timed by the kernel (AF_PACKET socket on
+// "lo" with SO_TIMESTAMPNS: the realtime stamp each packet gets when lo passes it on, in the same call as its
+// transmission), so the figure does not depend on how the console reports results.
 //   (a) window:   the real MainWindow's STOP ALL action (QAction::trigger) of an in-process console
 //                 (SiteRuntime + MainWindow on the offscreen platform, drawing);
-//   (b) headless: the line {"cmd":"stop_all"} written into the stdin of `ocu --headless` (its own process).
+//   (b) click:    a real press of the mouse on the window's STOP ALL button, injected through the X server
+//                 (XTest, tests/support/XTestClicker) under Xvfb: the press goes through the X server, Qt's
+//                 xcb event reader and the GUI thread's queue behind painting, as an operator's click does;
+//   (c) headless: the line {"cmd":"stop_all"} written into the stdin of `ocu --headless` (its own process).
 // The machines are `ocu-sim` in its own process: idle = 1 UGV, 1 truck at 2 Hz, 1 roller; full = 20 UGVs,
 // 1,000 trucks at 10 Hz, 3 rollers. Stop messages recognised on the wire:
 //   JAUS      a JUDP datagram carrying SetEmergency (0x0006) to a vehicle (first and last of each trial),
 //   ISO 23725 a WebSocket frame to the AHS whose (unmasked) JSON holds "ModeAllStop":"Apply",
 //   OSYRIS    a datagram to the group holding the CmMsg text "STOP ALL".
 // Needs CAP_NET_RAW (root) for the packet socket. Usage:
-//   bench_stop [--load idle,full] [--trigger window,headless] [--trials 1000] [--sim-nice 10]
+//   bench_stop [--load idle,full] [--trigger window,click,headless] [--trials 1000] [--sim-nice 10]
+// The click trigger needs an X server: xvfb-run -a -s "-screen 0 1920x1200x24" ./bench/bench_stop --trigger
+// click
 // --sim-nice runs ocu-sim (the machines, on other hosts in reality) at that nice value. The console's
 // stop-path threads raise their priority as in `ocu` (OCU_THREAD_PRIORITY=off|nice to measure without).
 #include "app/MainWindow.h"
@@ -20,6 +25,7 @@
 #include "protocols/common/ThreadPriority.h"
 #include "protocols/jaus/JudpCodec.h"
 #include "protocols/jaus/Messages.h"
+#include "tests/support/XTestClicker.h"
 
 #include <QAction>
 #include <QApplication>
@@ -32,6 +38,7 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QUrl>
+#include <QWindow>
 
 #include <algorithm>
 #include <atomic>
@@ -344,8 +351,11 @@ void pause(int ms, bool qt) {
 // Runs n trials of `trigger` (warm-up first: repeated until every protocol's stop is on the wire).
 // mask: the protocols whose stop must be on the wire (see main: JAUS only where this console controls
 // vehicles).
-template <class Trigger, class Prelude>
-bool trials(WireSniffer& sn, Samples& s, int n, bool qt, unsigned mask, Trigger trigger, Prelude prelude) {
+// `after` runs after each trigger, outside the timing (the click's release).
+template <class Trigger, class Prelude, class After = void (*)()>
+bool trials(
+    WireSniffer& sn, Samples& s, int n, bool qt, unsigned mask, Trigger trigger, Prelude prelude,
+    After after = [] {}) {
     // Warm-up: the console has discovered the machines and its links are up once a stop reaches all three.
     QElapsedTimer warm;
     warm.start();
@@ -356,6 +366,7 @@ bool trials(WireSniffer& sn, Samples& s, int n, bool qt, unsigned mask, Trigger 
         sn.arm(realtimeNs());
         trigger();
         ready = waitAll(sn, 1000, qt, mask);
+        after();
         if (!ready)
             pause(500, qt);
     }
@@ -374,6 +385,7 @@ bool trials(WireSniffer& sn, Samples& s, int n, bool qt, unsigned mask, Trigger 
         sn.arm(t0);
         trigger();
         waitAll(sn, 2000, qt, mask);
+        after();
         pause(gap(rng), qt); // the remaining vehicles' SetEmergency leave meanwhile
         for (int p = 0; p < kProtos; ++p) {
             if (sn.first(p))
@@ -461,8 +473,8 @@ int main(int argc, char** argv) {
         else if (k == "--sim-nice") // the load generator at lower priority (it stands for other hosts)
             simNice = v.toInt();
     }
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) // a click needs a real window system (Xvfb)
+        qputenv("QT_QPA_PLATFORM", triggers.contains("click") ? "xcb" : "offscreen");
     qputenv("QT_LOGGING_RULES", "*.debug=false;*.info=false;*.warning=false");
     QApplication app(argc, argv);
     ::signal(SIGPIPE, SIG_IGN);
@@ -506,7 +518,7 @@ int main(int argc, char** argv) {
                         ? "rt (default)"
                         : qgetenv("OCU_THREAD_PRIORITY").constData());
 
-        if (triggers.contains("window")) {
+        if (triggers.contains("window") || triggers.contains("click")) {
             auto loaded = ocu::loadSite(cfg);
             if (!loaded) {
                 std::fprintf(stderr, "bench_stop: %s\n", loaded.error().c_str());
@@ -532,9 +544,36 @@ int main(int argc, char** argv) {
                 // stops (STOP ALL reaches every discovered UGV, controlled or not; the headless trials below
                 // take control first, as their warm-up always did).
                 const unsigned mask = (1u << Iso) | (1u << Osyris);
-                if (trials(
+                if (triggers.contains("window") &&
+                    trials(
                         sn, s, n, true, mask, [stopAll] { stopAll->trigger(); }, [] {}))
                     report(qPrintable(load), "window (QAction::trigger)", s, before);
+                if (triggers.contains("click")) {
+                    ocu::test::XTestClicker clicker;
+                    if (!clicker.open(error)) {
+                        std::fprintf(stderr, "bench_stop: --trigger click: %s\n", error.c_str());
+                        return 3;
+                    }
+                    auto* button = window.findChild<QWidget*>("button-stop-all");
+                    QElapsedTimer shown;
+                    shown.start();
+                    while ((!window.windowHandle() || !window.windowHandle()->isExposed()) &&
+                           shown.elapsed() < 10000)
+                        pause(20, true);
+                    if (!button || !button->isVisible()) {
+                        std::fprintf(stderr, "bench_stop: the main window shows no button-stop-all\n");
+                        return 3;
+                    }
+                    const QPoint at = button->mapToGlobal(button->rect().center());
+                    clicker.moveTo(at.x(), at.y());
+                    Samples c;
+                    const std::string clickBefore = loadAverage();
+                    if (trials(
+                            sn, c, n, true, mask, [&clicker] { clicker.press(); }, [] {},
+                            [&clicker] { clicker.release(); }))
+                        report(qPrintable(load), "click (XTest press on the STOP ALL button)", c,
+                               clickBefore);
+                }
                 runtime.stop();
             }
         }
@@ -550,8 +589,8 @@ int main(int argc, char** argv) {
             static const char kLine[] = "{\"cmd\":\"stop_all\"}\n";
             Samples s;
             const std::string before = loadAverage();
-            // The warm-up takes control of every UGV (as a UGV operator's console would), and JAUS is measured
-            // too.
+            // The warm-up takes control of every UGV (as a UGV operator's console would), and JAUS is
+            // measured too.
             std::string control;
             for (const auto& e : site["jaus"]["static_endpoints"].toArray())
                 control += "{\"cmd\":\"request_control\",\"id\":\"jaus:" +

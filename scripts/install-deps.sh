@@ -12,6 +12,8 @@ packages=(
   libgeographiclib-dev libpugixml-dev libsdl2-dev libsqlite3-dev
   libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-dev libegl-mesa0 libglew-dev
+  # XInput 2: the STOP ALL press seen off the GUI thread; XTest: bench_stop's real clicks under Xvfb.
+  libxi-dev libxtst-dev
   # Fuzzing (scripts/fuzz.sh): clang 14; -fsanitize=fuzzer needs libclang_rt.fuzzer*.a, which Debian 12
   # ships in libclang-rt-14-dev (only a Recommends of clang-14, so not installed by --no-install-recommends).
   clang-14 libclang-rt-14-dev

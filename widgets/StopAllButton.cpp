@@ -52,6 +52,10 @@ void StopAllButton::mousePressEvent(QMouseEvent* e) {
         return;
     }
     e->accept();
+    if (m_claim && !m_claim(static_cast<unsigned long>(e->timestamp()))) {
+        setDown(true); // stopped already, off the GUI thread: only the button goes down
+        return;
+    }
     fire();
 }
 

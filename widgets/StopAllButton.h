@@ -5,12 +5,18 @@
 // is the default action's (its shortcuts fire on key-down too).
 #include <QToolButton>
 
+#include <functional>
+
 namespace ocu {
 
 class StopAllButton : public QToolButton {
     Q_OBJECT
 public:
     explicit StopAllButton(QWidget* parent = nullptr);
+
+    // A mouse press acts only when `claim(press time)` is true: the same press may have been acted on
+    // already, off the GUI thread (X11StopPressWatcher, StopPressClaims). None set: every press acts.
+    void setPressClaim(std::function<bool(unsigned long serverTimeMs)> claim) { m_claim = std::move(claim); }
 
 protected:
     bool event(QEvent* e) override;
@@ -23,6 +29,7 @@ protected:
 private:
     void fire();
     static bool isActivationKey(int key);
+    std::function<bool(unsigned long)> m_claim;
 };
 
 } // namespace ocu

@@ -1,0 +1,86 @@
+#include "app/EarlyStopPress.h"
+
+#include "app/MainWindow.h"
+#include "models/CommandGate.h"
+#include "widgets/StopAllButton.h"
+#include "widgets/StopPressClaims.h"
+#include "widgets/X11StopPressWatcher.h"
+
+#include <QEvent>
+#include <QGuiApplication>
+#include <QLoggingCategory>
+#include <QMetaObject>
+
+namespace ocu {
+
+EarlyStopPress::EarlyStopPress(MainWindow& window, CommandGate* gate)
+    : QObject(&window), m_window(window), m_gate(gate), m_claims(std::make_shared<StopPressClaims>()) {
+    auto* button = qobject_cast<StopAllButton*>(window.stopAllButton());
+    m_button = button;
+    if (!button || QGuiApplication::platformName() != QLatin1String("xcb"))
+        return;
+    auto claims = m_claims;
+    auto watcher = std::make_unique<X11StopPressWatcher>([claims, gate](unsigned long time) {
+        if (!claims->claim(time))
+            return; // the button's own press event came first and stopped
+        auto early = gate->stopAllEarly();
+        QMetaObject::invokeMethod(
+            gate, [gate, early] { gate->stopAll(QStringLiteral("gui"), {}, early); }, Qt::QueuedConnection);
+    });
+    std::string error;
+    if (!watcher->start(error)) {
+        qWarning().noquote() << "STOP ALL press watched on the GUI thread only:"
+                             << QString::fromStdString(error);
+        return;
+    }
+    m_watcher = std::move(watcher);
+    button->setPressClaim([claims](unsigned long time) { return claims->claim(time); });
+    button->installEventFilter(this);
+    window.installEventFilter(this);
+    publishTarget();
+}
+
+EarlyStopPress::~EarlyStopPress() {
+    m_watcher.reset(); // no press is claimed after this
+    if (m_button)
+        m_button->setPressClaim({});
+}
+
+int EarlyStopPress::pressesSeen() const {
+    return m_watcher ? m_watcher->pressesSeen() : 0;
+}
+
+int EarlyStopPress::pressesActed() const {
+    return m_watcher ? m_watcher->pressesActed() : 0;
+}
+
+bool EarlyStopPress::eventFilter(QObject* watched, QEvent* event) {
+    switch (event->type()) {
+    case QEvent::Move:
+    case QEvent::Resize:
+    case QEvent::Show:
+    case QEvent::Hide:
+    case QEvent::EnabledChange:
+    case QEvent::WindowStateChange:
+    case QEvent::WinIdChange:
+        publishTarget();
+        break;
+    default:
+        break;
+    }
+    return QObject::eventFilter(watched, event);
+}
+
+// The button's rectangle in root-window pixels (X counts device pixels) and our top-level X window.
+void EarlyStopPress::publishTarget() {
+    StopAllButton* b = m_button;
+    if (!m_watcher || !b)
+        return;
+    const qreal dpr = b->devicePixelRatioF();
+    const QPoint tl = b->mapToGlobal(QPoint(0, 0));
+    const bool armed = b->isVisible() && b->isEnabled() && !m_window.isMinimized();
+    m_watcher->setTarget(static_cast<unsigned long>(m_window.winId()), int(tl.x() * dpr), int(tl.y() * dpr),
+                         int(b->width() * dpr), int(b->height() * dpr), armed);
+}
+
+} // namespace ocu
