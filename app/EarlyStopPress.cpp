@@ -6,10 +6,13 @@
 #include "widgets/StopPressClaims.h"
 #include "widgets/X11StopPressWatcher.h"
 
+#include <QApplication>
 #include <QEvent>
-#include <QGuiApplication>
+#include <QKeyEvent>
 #include <QLoggingCategory>
 #include <QMetaObject>
+
+#include <optional>
 
 namespace ocu {
 
@@ -20,8 +23,8 @@ EarlyStopPress::EarlyStopPress(MainWindow& window, CommandGate* gate)
     if (!button || QGuiApplication::platformName() != QLatin1String("xcb"))
         return;
     auto claims = m_claims;
-    auto watcher = std::make_unique<X11StopPressWatcher>([claims, gate](unsigned long time) {
-        if (!claims->claim(time))
+    auto watcher = std::make_unique<X11StopPressWatcher>([claims, gate](StopInput input, unsigned long time) {
+        if (!claims->claim(input, time))
             return; // the button's own press event came first and stopped
         auto early = gate->stopAllEarly();
         QMetaObject::invokeMethod(
@@ -34,9 +37,11 @@ EarlyStopPress::EarlyStopPress(MainWindow& window, CommandGate* gate)
         return;
     }
     m_watcher = std::move(watcher);
-    button->setPressClaim([claims](unsigned long time) { return claims->claim(time); });
+    button->setPressClaim(
+        [claims](StopInput input, unsigned long time) { return claims->claim(input, time); });
     button->installEventFilter(this);
     window.installEventFilter(this);
+    qApp->installEventFilter(this); // the stop keys' shortcut events, whichever widget has the focus
     publishTarget();
 }
 
@@ -54,7 +59,46 @@ int EarlyStopPress::pressesActed() const {
     return m_watcher ? m_watcher->pressesActed() : 0;
 }
 
+int EarlyStopPress::keysSeen() const {
+    return m_watcher ? m_watcher->keysSeen() : 0;
+}
+
+int EarlyStopPress::keysActed() const {
+    return m_watcher ? m_watcher->keysActed() : 0;
+}
+
+namespace {
+// The STOP ALL action's shortcuts (MainWindow): F12, Ctrl+Shift+Space; nothing for any other key.
+std::optional<StopInput> stopKey(const QKeyEvent* k) {
+    const auto mods =
+        k->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier | Qt::AltModifier | Qt::MetaModifier);
+    if (k->key() == Qt::Key_F12 && mods == Qt::NoModifier)
+        return StopInput::F12;
+    if (k->key() == Qt::Key_Space && mods == (Qt::ControlModifier | Qt::ShiftModifier))
+        return StopInput::CtrlShiftSpace;
+    return std::nullopt;
+}
+} // namespace
+
 bool EarlyStopPress::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        // Shortcuts are tried after this event: accepted, the key goes to the focus widget instead (which
+        // ignores it). A key the watcher already acted on must not stop a second time.
+        // The same event comes here once per widget it propagates through: claimed once, by its time.
+        auto* k = static_cast<QKeyEvent*>(event);
+        const std::optional<StopInput> input = stopKey(k);
+        if (m_watcher && !k->isAutoRepeat() && input) {
+            const auto time = static_cast<unsigned long>(k->timestamp());
+            if (time != m_keyPassed && !m_claims->claim(*input, time)) {
+                k->accept();
+                return true;
+            }
+            m_keyPassed = time;
+        }
+        return QObject::eventFilter(watched, event);
+    }
+    if (watched != m_button && watched != &m_window)
+        return QObject::eventFilter(watched, event);
     switch (event->type()) {
     case QEvent::Move:
     case QEvent::Resize:

@@ -52,7 +52,7 @@ void StopAllButton::mousePressEvent(QMouseEvent* e) {
         return;
     }
     e->accept();
-    if (m_claim && !m_claim(static_cast<unsigned long>(e->timestamp()))) {
+    if (m_claim && !m_claim(StopInput::MouseButton, static_cast<unsigned long>(e->timestamp()))) {
         setDown(true); // stopped already, off the GUI thread: only the button goes down
         return;
     }
@@ -75,8 +75,16 @@ void StopAllButton::keyPressEvent(QKeyEvent* e) {
         return;
     }
     e->accept();
-    if (!e->isAutoRepeat())
-        fire();
+    if (e->isAutoRepeat())
+        return;
+    const auto mods =
+        e->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier | Qt::AltModifier | Qt::MetaModifier);
+    if (m_claim && e->key() == Qt::Key_Space && mods == (Qt::ControlModifier | Qt::ShiftModifier) &&
+        !m_claim(StopInput::CtrlShiftSpace, static_cast<unsigned long>(e->timestamp()))) {
+        setDown(true); // Ctrl+Shift+Space, stopped already off the GUI thread
+        return;
+    }
+    fire();
 }
 
 void StopAllButton::keyReleaseEvent(QKeyEvent* e) {

@@ -2,6 +2,7 @@
 
 #include <X11/Xlib.h>
 #include <X11/extensions/XInput2.h>
+#include <X11/keysym.h>
 #include <fcntl.h>
 #include <poll.h>
 #include <unistd.h>
@@ -14,8 +15,7 @@ Display* dpy(void* d) {
 }
 } // namespace
 
-X11StopPressWatcher::X11StopPressWatcher(std::function<void(unsigned long)> pressed)
-    : m_pressed(std::move(pressed)) {}
+X11StopPressWatcher::X11StopPressWatcher(Pressed pressed) : m_pressed(std::move(pressed)) {}
 
 X11StopPressWatcher::~X11StopPressWatcher() {
     m_stop = true;
@@ -50,6 +50,16 @@ bool X11StopPressWatcher::start(std::string& error) {
     // or a grab (XI 2.1+); the position is asked for when one comes.
     unsigned char bits[XIMaskLen(XI_LASTEVENT)] = {};
     XISetMask(bits, XI_RawButtonPress);
+    XISetMask(bits, XI_RawKeyPress);
+    XISetMask(bits, XI_RawKeyRelease);
+    m_f12 = XKeysymToKeycode(d, XK_F12);
+    m_space = XKeysymToKeycode(d, XK_space);
+    for (KeySym k : {XK_Control_L, XK_Control_R})
+        m_ctrlKeys.insert(XKeysymToKeycode(d, k));
+    for (KeySym k : {XK_Shift_L, XK_Shift_R})
+        m_shiftKeys.insert(XKeysymToKeycode(d, k));
+    for (KeySym k : {XK_Alt_L, XK_Alt_R, XK_Super_L, XK_Super_R, XK_Meta_L, XK_Meta_R})
+        m_otherModKeys.insert(XKeysymToKeycode(d, k));
     XIEventMask mask{XIAllMasterDevices, sizeof(bits), bits};
     XISelectEvents(d, DefaultRootWindow(d), &mask, 1);
     XFlush(d);
@@ -92,6 +102,65 @@ bool X11StopPressWatcher::overTarget(const Target& t) {
     return ours;
 }
 
+// The window with the keyboard focus is ours or inside ours.
+bool X11StopPressWatcher::focusInTarget(const Target& t) {
+    Display* d = dpy(m_display);
+    Window focus = 0;
+    int revert = 0;
+    XGetInputFocus(d, &focus, &revert);
+    const Window root = DefaultRootWindow(d);
+    for (int depth = 0; focus != 0 && focus != PointerRoot && focus != root && depth < 16; ++depth) {
+        if (focus == t.window)
+            return true;
+        Window r = 0, parent = 0, *children = nullptr;
+        unsigned int n = 0;
+        if (!XQueryTree(d, focus, &r, &parent, &children, &n))
+            return false;
+        if (children)
+            XFree(children);
+        focus = parent;
+    }
+    return false;
+}
+
+// F12 alone, or Space with Ctrl and Shift: the STOP ALL action's shortcuts (app/MainWindow.cpp).
+void X11StopPressWatcher::onRawKey(int keycode, bool down, unsigned long time) {
+    if (m_ctrlKeys.count(keycode) || m_shiftKeys.count(keycode) || m_otherModKeys.count(keycode)) {
+        if (down)
+            m_heldMods.insert(keycode);
+        else
+            m_heldMods.erase(keycode);
+        return;
+    }
+    bool* held = keycode == m_f12 ? &m_f12Down : keycode == m_space ? &m_spaceDown : nullptr;
+    if (!held)
+        return;
+    if (!down || *held) {
+        *held = down;
+        return;
+    }
+    *held = true;
+    auto any = [this](const std::set<int>& codes) {
+        for (int c : m_heldMods)
+            if (codes.count(c))
+                return true;
+        return false;
+    };
+    const bool ctrl = any(m_ctrlKeys), shift = any(m_shiftKeys), other = any(m_otherModKeys);
+    const bool f12 = keycode == m_f12 && !ctrl && !shift && !other;
+    const bool space = keycode == m_space && ctrl && shift && !other;
+    Target t;
+    {
+        std::lock_guard lock(m_targetMutex);
+        t = m_target;
+    }
+    if ((f12 || space) && t.armed && t.window != 0 && focusInTarget(t)) {
+        ++m_keysActed;
+        m_pressed(f12 ? StopInput::F12 : StopInput::CtrlShiftSpace, time);
+    }
+    ++m_keysSeen;
+}
+
 void X11StopPressWatcher::run() {
     Display* d = dpy(m_display);
     pollfd fds[2] = {{ConnectionNumber(d), POLLIN, 0}, {m_wake[0], POLLIN, 0}};
@@ -120,9 +189,16 @@ void X11StopPressWatcher::run() {
                 }
                 if (t.armed && t.window != 0 && overTarget(t)) {
                     ++m_acted;
-                    m_pressed(time);
+                    m_pressed(StopInput::MouseButton, time);
                 }
                 ++m_seen; // after the decision: a test waiting for it sees the outcome
+            } else if (cookie->evtype == XI_RawKeyPress || cookie->evtype == XI_RawKeyRelease) {
+                const auto* raw = static_cast<const XIRawEvent*>(cookie->data);
+                const int keycode = raw->detail;
+                const unsigned long time = raw->time;
+                const bool down = cookie->evtype == XI_RawKeyPress;
+                XFreeEventData(d, cookie);
+                onRawKey(keycode, down, time);
             } else {
                 XFreeEventData(d, cookie);
             }

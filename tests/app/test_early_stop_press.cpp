@@ -25,6 +25,15 @@ int stopAllCalls(const FakeFleetBridge& b) {
     return n;
 }
 
+// A person's presses are tens of milliseconds apart; the watcher and the button recognise one press by its X
+// server time (milliseconds), so two injected presses must not share a millisecond.
+void apart() {
+    static QElapsedTimer last;
+    while (last.isValid() && last.elapsed() < 3)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    last.start();
+}
+
 template <class Pred> bool waitWithoutEvents(Pred pred) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (!pred() && std::chrono::steady_clock::now() < deadline)
@@ -114,6 +123,7 @@ private slots:
         const QPoint at = buttonCentre();
         m_clicker.moveTo(at.x(), at.y());
         for (int i = 1; i <= 3; ++i) {
+            apart();
             m_clicker.press();
             QTRY_VERIFY(m_window->stopAllButton()->isDown());
             QTRY_COMPARE(finished.count(), i);
@@ -122,6 +132,56 @@ private slots:
             QCOMPARE(stopAllCalls(*m_bridge), i);
         }
         QCOMPARE(finished.count(), 3);
+    }
+
+    // F12 while the GUI thread sleeps: the stop leaves from the watcher; held, it does not repeat; the
+    // shortcut, when the GUI thread runs, does not stop again. Then F12 and Ctrl+Shift+Space with the GUI
+    // idle: one STOP ALL each.
+    void stopKeysWhileTheGuiThreadIsBusy() {
+        QSignalSpy finished(m_gate, &CommandGate::commandFinished);
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window));
+        m_clicker.key("F12", true);
+        QVERIFY(waitWithoutEvents([this] { return stopAllCalls(*m_bridge) == 1; }));
+        QVERIFY(m_bridge->stopAllThread() != std::this_thread::get_id());
+        QCOMPARE(m_early->keysActed(), 1);
+        QTRY_COMPARE(finished.count(), 1);
+        m_clicker.key("F12", false);
+        QTRY_COMPARE(m_early->keysSeen(), 1);
+
+        apart();
+        m_clicker.key("F12", true);
+        m_clicker.key("F12", false);
+        QTRY_COMPARE(finished.count(), 2);
+        QTRY_COMPARE(m_early->keysSeen(), 2);
+        apart();
+        m_clicker.key("Control_L", true);
+        m_clicker.key("Shift_L", true);
+        m_clicker.key("space", true);
+        m_clicker.key("space", false);
+        m_clicker.key("Shift_L", false);
+        m_clicker.key("Control_L", false);
+        QTRY_COMPARE(finished.count(), 3);
+        QTRY_COMPARE(m_early->keysSeen(), 3);
+        QCOMPARE(stopAllCalls(*m_bridge), 3);
+        QCOMPARE(finished.count(), 3);
+    }
+
+    // F12 with the focus in another window: the watcher leaves it alone (another program may own that
+    // window); this one is ours, so the application-wide shortcut stops, once, on the GUI thread.
+    void stopKeyWithTheFocusElsewhere() {
+        QSignalSpy finished(m_gate, &CommandGate::commandFinished);
+        PressCounter other;
+        other.setGeometry(900, 600, 200, 100);
+        other.show();
+        other.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&other));
+        m_clicker.key("F12", true);
+        m_clicker.key("F12", false);
+        QTRY_COMPARE(m_early->keysSeen(), 1);
+        QCOMPARE(m_early->keysActed(), 0);
+        QTRY_COMPARE(finished.count(), 1);
+        QCOMPARE(stopAllCalls(*m_bridge), 1);
     }
 
     // A press beside the button, or on a window that covers it, stops nothing.

@@ -42,6 +42,12 @@ void XTestClicker::press() {
     XFlush(dpy(m_display));
 }
 
+void XTestClicker::key(const char* keysymName, bool down) {
+    Display* d = dpy(m_display);
+    XTestFakeKeyEvent(d, XKeysymToKeycode(d, XStringToKeysym(keysymName)), down ? True : False, CurrentTime);
+    XSync(d, False);
+}
+
 void XTestClicker::release() {
     XTestFakeButtonEvent(dpy(m_display), 1, False, CurrentTime);
     XSync(dpy(m_display), False);

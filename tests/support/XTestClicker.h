@@ -19,6 +19,8 @@ public:
     void moveTo(int x, int y); // root-window coordinates
     void press();              // button 1 down, flushed to the server before returning
     void release();            // button 1 up, flushed
+    // A key down or up by its X keysym name ("F12", "space", "Control_L", "Shift_L"), flushed.
+    void key(const char* keysymName, bool down);
 
 private:
     void* m_display = nullptr; // Display*
