@@ -66,6 +66,9 @@ public:
 
     // Output device (not owned); default stdout.
     void setOutput(QIODevice* out);
+    // Further devices (not owned) that get every line from now on: the command socket's clients.
+    void addOutput(QIODevice* out);
+    void removeOutput(QIODevice* out);
     // Per-machine minimum interval between routine lines (ms); 0 = every change. Default 1000.
     void setRateLimitMs(int ms);
     int rateLimitMs() const { return m_rateMs; }
@@ -121,6 +124,7 @@ private:
     QPointer<CommandGate> m_gate;
     QPointer<QIODevice> m_out;
     std::unique_ptr<QFile> m_stdout;
+    QList<QPointer<QIODevice>> m_extraOutputs;
     int m_rateMs = 1000;
     QTimer m_flushTimer;
     QElapsedTimer m_clock;
