@@ -104,7 +104,7 @@ echo "headless: $(wc -l <"$work/headless.jsonl") JSON lines, $(grep -c '"type":"
 [ "$(grep -c '"type":"machine"' "$work/headless.jsonl")" -gt 0 ] || fail "no machine line"
 
 stage "systemd-analyze verify (root's systemd)"
-in_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends systemd \
+in_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends systemd man-db \
   >"$work/apt-systemd.log" 2>&1 || { tail -20 "$work/apt-systemd.log"; fail "apt-get install systemd"; }
 cp "$chroot_dir/usr/share/doc/ocu/examples/demo-site.json" "$chroot_dir/etc/ocu/demo.json"
 in_root systemd-analyze verify /usr/lib/systemd/system/ocu-monitor@demo.service 2>&1 | tee "$work/verify.log"
