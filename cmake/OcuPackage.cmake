@@ -18,7 +18,7 @@ foreach(exe ocu ocu-sim)
     OUTPUT ${_man_dir}/${exe}.1.gz
     COMMAND ${CMAKE_COMMAND} -E make_directory ${_man_dir}
     COMMAND ${CMAKE_COMMAND} -E env LANG=C LC_ALL=C QT_QPA_PLATFORM=offscreen
-            ${OCU_HELP2MAN} --no-info --no-discard-stderr --section=1 --name=${_what}
+            ${OCU_HELP2MAN} --no-info --section=1 --name=${_what}
             --output=${_man_dir}/${exe}.1 $<TARGET_FILE:${exe}>
     COMMAND gzip -9nf ${_man_dir}/${exe}.1
     DEPENDS ${exe} VERBATIM

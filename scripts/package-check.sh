@@ -118,20 +118,26 @@ unit_value() { sed -n "s/^$1=//p" "$unit" | sed 's/%i/demo/g'; }
 in_root setpriv --reuid=ocu --regid=ocu --init-groups $(unit_value ExecStartPre) || fail "ExecStartPre"
 # What systemd would create: RuntimeDirectory (0750 ocu:ocu), StateDirectory.
 install -d -m 0750 -o "$(stat -c %u "$chroot_dir/var/lib/ocu")" -g "$(stat -c %g "$chroot_dir/var/lib/ocu")" \
-  "$chroot_dir/run/ocu" "$chroot_dir/var/lib/ocu/demo"
+  "$chroot_dir/run/ocu" "$chroot_dir/run/ocu/demo" "$chroot_dir/var/lib/ocu/demo"
 envs=$(grep '^Environment=' "$unit" | sed 's/^Environment=//; s/%i/demo/g' | tr '\n' ' ')
 rtprio=$(unit_value LimitRTPRIO)
 nice=$(unit_value LimitNICE)
 # The unit's limits (LimitNICE=-10 is RLIMIT_NICE 30), then the user, umask, no new privileges, no stdin/stdout.
+# Raising a hard limit needs CAP_SYS_RESOURCE, which some containers withhold even from root: then without them.
+limits=(prlimit --rtprio="$rtprio:$rtprio" --nice="$((20 - nice)):$((20 - nice))")
+if ! "${limits[@]}" true 2>/dev/null; then
+  echo "service: this machine cannot raise RLIMIT_RTPRIO/RLIMIT_NICE (no CAP_SYS_RESOURCE): started without them"
+  limits=()
+fi
 chroot "$chroot_dir" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin $envs \
-  prlimit --rtprio="$rtprio:$rtprio" --nice="$((20 - nice)):$((20 - nice))" \
+  "${limits[@]}" \
   setpriv --reuid=ocu --regid=ocu --init-groups --no-new-privs --inh-caps=-all --bounding-set=-all \
   sh -c "umask $(unit_value UMask); exec $(unit_value ExecStart)" </dev/null >/dev/null 2>"$work/service.log" &
 ocu_pid=$!
 sock="$chroot_dir/run/ocu/demo.sock"
 for _ in $(seq 100); do [ -S "$sock" ] && break; sleep 0.2; done
 [ -S "$sock" ] || { cat "$work/service.log"; fail "no command socket"; }
-echo "socket: $(stat -c '%n %U:%G %a' "$sock") (run folder $(stat -c '%a' "$chroot_dir/run/ocu"))"
+echo "socket: $(in_root stat -c '%n %U:%G %a' /run/ocu/demo.sock) (run folder $(in_root stat -c '%U:%G %a' /run/ocu))"
 [ "$(stat -c %a "$sock")" = 660 ] || fail "socket mode is not 0660"
 python3 - "$sock" <<'PY' || fail "list through the socket"
 import json, socket, sys, time
@@ -161,7 +167,7 @@ wait "$ocu_pid" && rc=0 || rc=$?
 ocu_pid=""
 stop_s=$(echo "$(date +%s.%N) - $t_term" | bc)
 printf 'service: stopped %s, exit status %s, %.2f s after SIGTERM\n' "${stopped:+yes}" "$rc" "$stop_s"
-grep -E 'stop-path|SIG' "$work/service.log" || true
+grep -E 'stop-path|SIGTERM' "$work/service.log" || true
 [ -n "$stopped" ] && [ "$rc" = 0 ] && [ "$(echo "$stop_s <= 2" | bc)" = 1 ] || fail "stop on SIGTERM"
 [ ! -e "$sock" ] || fail "socket file left behind"
 
