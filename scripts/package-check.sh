@@ -114,12 +114,12 @@ echo "systemd-analyze verify: no finding"
 stage "service by hand: start, list, SIGTERM"
 unit="$chroot_dir/usr/lib/systemd/system/ocu-monitor@.service"
 unit_value() { sed -n "s/^$1=//p" "$unit" | sed 's/%i/demo/g'; }
-# ExecStartPre as the service user.
-in_root setpriv --reuid=ocu --regid=ocu --init-groups $(unit_value ExecStartPre) || fail "ExecStartPre"
+envs=$(grep '^Environment=' "$unit" | sed 's/^Environment=//; s/%i/demo/g' | tr '\n' ' ')
 # What systemd would create: RuntimeDirectory (0750 ocu:ocu), StateDirectory.
 install -d -m 0750 -o "$(stat -c %u "$chroot_dir/var/lib/ocu")" -g "$(stat -c %g "$chroot_dir/var/lib/ocu")" \
   "$chroot_dir/run/ocu" "$chroot_dir/run/ocu/demo" "$chroot_dir/var/lib/ocu/demo"
-envs=$(grep '^Environment=' "$unit" | sed 's/^Environment=//; s/%i/demo/g' | tr '\n' ' ')
+# ExecStartPre as the service user, with the unit's environment.
+in_root $envs setpriv --reuid=ocu --regid=ocu --init-groups $(unit_value ExecStartPre) || fail "ExecStartPre"
 rtprio=$(unit_value LimitRTPRIO)
 nice=$(unit_value LimitNICE)
 # The unit's limits (LimitNICE=-10 is RLIMIT_NICE 30), then the user, umask, no new privileges, no stdin/stdout.
