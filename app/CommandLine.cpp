@@ -24,6 +24,12 @@ QList<QCommandLineOption> consoleOptions() {
                                                                          "docs/site-config.md). Default: the "
                                                                          "built-in simulated site."),
                               QStringLiteral("FILE"));
+    QCommandLineOption checkConfig(QStringLiteral("check-config"),
+                                   QCoreApplication::translate("CommandLine",
+                                                               "Check the site configuration FILE, print "
+                                                               "each problem as file:line, start nothing; "
+                                                               "exit 0 when valid, 1 when not."),
+                                   QStringLiteral("FILE"));
     QCommandLineOption noSim(QStringLiteral("no-sim"),
                              QCoreApplication::translate("CommandLine",
                                                          "Do not start the built-in simulators, "
@@ -73,10 +79,18 @@ QList<QCommandLineOption> consoleOptions() {
                                                             "With --headless: stop after SECONDS "
                                                             "(default: run until stdin closes)."),
                                 QStringLiteral("SECONDS"), QStringLiteral("0"));
+    QCommandLineOption socket(QStringLiteral("command-socket"),
+                              QCoreApplication::translate("CommandLine",
+                                                          "With --headless: also take JSON-line commands on "
+                                                          "a local socket at PATH (mode 0660: owner and "
+                                                          "group); the run then ends on SIGTERM or "
+                                                          "--duration, not at the end of stdin."),
+                              QStringLiteral("PATH"));
     QCommandLineOption reset(QStringLiteral("reset-layout"),
                              QCoreApplication::translate("CommandLine", "Start with the default panel layout "
                                                                         "instead of the saved one."));
-    return {config, noSim, shot, view, size, settle, lang, log, headless, duration, reset};
+    return {config, checkConfig, noSim,    shot,     view,   size, settle,
+            lang,   log,         headless, duration, socket, reset};
 }
 
 // The shift report, the flight recorder, the replay and its exports, the night palette.
@@ -136,6 +150,7 @@ QString name(const char* option) {
 // --view, --size, --settle, --lang.
 bool readWindowOptions(const QCommandLineParser& p, CommandLineOptions& o, QString& error) {
     o.configFile = p.value(name("config"));
+    o.checkConfigFile = p.value(name("check-config"));
     o.noSim = p.isSet(name("no-sim"));
     o.screenshotFile = p.value(name("screenshot"));
     o.view = p.value(name("view")).toLower();
@@ -191,6 +206,11 @@ bool readRunOptions(const QCommandLineParser& p, CommandLineOptions& o, QString&
     if (!ok || o.durationSeconds < 0) {
         error = QCoreApplication::translate("CommandLine", "--duration: expected seconds >= 0, got \"%1\"")
                     .arg(p.value(name("duration")));
+        return false;
+    }
+    o.commandSocket = p.value(name("command-socket"));
+    if (!o.commandSocket.isEmpty() && !o.headless) {
+        error = QCoreApplication::translate("CommandLine", "--command-socket needs --headless");
         return false;
     }
     if (o.headless && !o.screenshotFile.isEmpty()) {

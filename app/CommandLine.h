@@ -7,9 +7,10 @@
 namespace ocu {
 
 struct CommandLineOptions {
-    QString configFile;     // empty = built-in simulated site
-    bool noSim = false;     // do not start the built-in simulators even if the config enables them
-    QString screenshotFile; // write a PNG and exit
+    QString configFile;      // empty = built-in simulated site
+    QString checkConfigFile; // --check-config FILE: validate it, print its errors, start nothing
+    bool noSim = false;      // do not start the built-in simulators even if the config enables them
+    QString screenshotFile;  // write a PNG and exit
     QString view = QStringLiteral("all");
     QSize size{1600, 1000};
     double settleSeconds = 3.0;
@@ -17,6 +18,7 @@ struct CommandLineOptions {
     QString logCategories;      // comma-separated Qt logging categories to enable at debug level
     bool headless = false;      // JSON-lines monitor on stdout, commands on stdin, no window
     double durationSeconds = 0; // headless: stop after this long (0 = until stdin closes or SIGINT)
+    QString commandSocket;      // headless: also read commands from this local socket (app/HeadlessSocket.h)
     bool resetLayout = false;
     bool night = false; // --night: start with the night palette
     // With --headless, the shift report written when the run ends (PDF and/or CSV).

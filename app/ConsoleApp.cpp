@@ -133,7 +133,22 @@ static bool interactive(const CommandLineOptions& o) {
            QGuiApplication::platformName() != QLatin1String("offscreen");
 }
 
+// --check-config: the strict reader's verdict on the file (each problem with file:line), nothing started.
+static int checkConfig(const QString& file) {
+    const auto site = loadSite(file);
+    if (!site) {
+        std::fprintf(stderr, "%s\n", site.error().c_str());
+        return 1;
+    }
+    std::printf("%s\n", qPrintable(QCoreApplication::translate("ConsoleApp", "%1: the site configuration is "
+                                                                             "valid (%2)")
+                                       .arg(file, QString::fromStdString(site.value().name))));
+    return 0;
+}
+
 int runConsole(QApplication& app, const CommandLineOptions& options) {
+    if (!options.checkConfigFile.isEmpty())
+        return checkConfig(options.checkConfigFile);
     installLogRouting();
     if (!options.logCategories.isEmpty())
         enableLogCategories(options.logCategories);
@@ -169,7 +184,7 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
             std::fprintf(stderr, "ocu: %s\n", qPrintable(r.value(QStringLiteral("message")).toString()));
         });
     if (options.headless)
-        return runtime.runHeadless(app, options.durationSeconds);
+        return runtime.runHeadless(app, options.durationSeconds, options.commandSocket);
 
     MainWindow window;
     window.setWindowTitle(QCoreApplication::translate("ConsoleApp", "Operator Control Unit — %1")

@@ -125,6 +125,23 @@ void HeadlessMonitor::writeRaw(const QByteArray& line) {
     out->write(line);
     if (auto* f = qobject_cast<QFile*>(out))
         f->flush();
+    for (const QPointer<QIODevice>& extra : std::as_const(m_extraOutputs)) {
+        if (!extra || !extra->isOpen())
+            continue;
+        // A client that stopped reading is dropped rather than buffered without end.
+        if (extra->bytesToWrite() > (16 << 20))
+            extra->close();
+        else
+            extra->write(line);
+    }
+}
+
+void HeadlessMonitor::addOutput(QIODevice* out) {
+    m_extraOutputs.append(out);
+}
+
+void HeadlessMonitor::removeOutput(QIODevice* out) {
+    m_extraOutputs.removeAll(out);
 }
 
 void HeadlessMonitor::writeResultLine(const QByteArray& line) {

@@ -2,7 +2,7 @@
 // The headless monitor: JSON lines on an output device (stdout) for machine changes
 // (rate-limited per machine, default 1 Hz; stop/link/mode/control/health/staleness changes are printed at
 // once), link changes and alarm/event entries; JSON-line commands on an input device (stdin) answered with
-// one result line each. Role and authority are enforced by the bridges, exactly as for the GUI, and every
+// one result line each. The command socket (app/HeadlessSocket.h) adds clients as further outputs and inputs. Role and authority are enforced by the bridges, exactly as for the GUI, and every
 // command is audited by the CommandGate.
 //
 // Output lines:
@@ -66,6 +66,9 @@ public:
 
     // Output device (not owned); default stdout.
     void setOutput(QIODevice* out);
+    // Further devices (not owned) that get every line from now on: the command socket's clients.
+    void addOutput(QIODevice* out);
+    void removeOutput(QIODevice* out);
     // Per-machine minimum interval between routine lines (ms); 0 = every change. Default 1000.
     void setRateLimitMs(int ms);
     int rateLimitMs() const { return m_rateMs; }
@@ -121,6 +124,7 @@ private:
     QPointer<CommandGate> m_gate;
     QPointer<QIODevice> m_out;
     std::unique_ptr<QFile> m_stdout;
+    QList<QPointer<QIODevice>> m_extraOutputs;
     int m_rateMs = 1000;
     QTimer m_flushTimer;
     QElapsedTimer m_clock;

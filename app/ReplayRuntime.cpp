@@ -47,7 +47,7 @@ QString utc(qint64 ms) {
     return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
 }
 
-QWidget* notice(const QString& text) {
+QWidget* replayNotice(const QString& text) {
     auto* l = new QLabel(text);
     l->setAlignment(Qt::AlignCenter);
     l->setWordWrap(true);
@@ -55,7 +55,7 @@ QWidget* notice(const QString& text) {
     return l;
 }
 
-LinkIndicator::State indicatorState(LinkState s) {
+LinkIndicator::State replayIndicatorState(LinkState s) {
     switch (s) {
     case LinkState::Up:
         return LinkIndicator::State::Up;
@@ -188,7 +188,7 @@ void addLinkIndicators(MainWindow& window, ReplayController* c) {
             indicators.insert(l.protocol, window.addLinkIndicator(protocolLabel(l.protocol)));
     auto showLink = [indicators](const recording::RecordedLink& l) {
         if (LinkIndicator* ind = indicators.value(l.protocol)) {
-            ind->setState(indicatorState(l.state),
+            ind->setState(replayIndicatorState(l.state),
                           l.link + (l.detail.isEmpty() ? QString() : ": " + l.detail));
             if (l.dataAgeMs >= 0)
                 ind->setDataAgeMs(l.dataAgeMs);
@@ -302,9 +302,9 @@ void addPassCounts(MainWindow& window, ReplayController* c, const ReplayViews& v
         });
 #endif
     } else {
-        window.setPanelWidget(Panel::PassCounts,
-                              notice(QCoreApplication::translate("Replay", "This recording holds no pass "
-                                                                           "counts.")));
+        window.setPanelWidget(Panel::PassCounts, replayNotice(QCoreApplication::translate(
+                                                     "Replay", "This recording holds no pass "
+                                                               "counts.")));
     }
 }
 
@@ -318,7 +318,7 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     for (const auto& m : makeProtocolModules()) {
         window.addPanels(m->panels());
         for (const PanelSpec& p : m->panels())
-            window.setPanelWidget(p.key, notice(off));
+            window.setPanelWidget(p.key, replayNotice(off));
     }
     addReplayBanner(window, c->recording());
     addTimeline(window, c);

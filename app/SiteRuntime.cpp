@@ -15,6 +15,7 @@
 #include "app/EarlyStopPress.h"
 #include "app/HardwareStopButton.h"
 #include "app/HeadlessMonitor.h"
+#include "app/HeadlessSocket.h"
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/FleetContext.h"
@@ -527,20 +528,30 @@ HeadlessMonitor* SiteRuntime::attachHeadless(QIODevice* out) {
     return mon;
 }
 
-int SiteRuntime::runHeadless(QApplication& app, double durationSeconds) {
+int SiteRuntime::runHeadless(QApplication& app, double durationSeconds, const QString& commandSocket) {
     HeadlessMonitor* mon = attachHeadless();
     mon->setRateLimitMs(static_cast<int>(1000.0 / m_config.fleet.monitorRateHz));
-    if (!mon->startStdin() && durationSeconds <= 0) {
+    std::unique_ptr<HeadlessCommandSocket> socket;
+    if (!commandSocket.isEmpty()) {
+        socket = std::make_unique<HeadlessCommandSocket>(mon);
+        QString error;
+        if (!socket->listen(commandSocket, error)) {
+            std::fprintf(stderr, "ocu: %s\n", qPrintable(error));
+            return 2;
+        }
+    }
+    if (!mon->startStdin() && durationSeconds <= 0 && !socket) {
         std::fputs("ocu: --headless reads commands from stdin, which is not readable; give --duration\n",
                    stderr);
         return 2;
     }
     if (durationSeconds > 0)
         QTimer::singleShot(static_cast<int>(durationSeconds * 1000), &app, &QApplication::quit);
-    else
+    else if (!socket) // a service's stdin is /dev/null: with a socket, only a signal ends the run
         connect(mon, &HeadlessMonitor::inputFinished, &app, &QApplication::quit);
     const int rc = execUnlessQuitting(app); // SIGINT/SIGTERM quit as end of input does
     mon->stopStdin();                       // no early stop through the bridges once they are being torn down
+    socket.reset();                         // no command arrives while the stacks stop
     stop();
     return rc;
 }

@@ -35,8 +35,10 @@ public:
 
     // Fills the window's panels and connects STOP ALL, link indicators and alarms.
     void populate(MainWindow& window);
-    // JSON-lines monitor on stdout, commands on stdin; returns the exit code.
-    int runHeadless(QApplication& app, double durationSeconds);
+    // JSON-lines monitor on stdout, commands on stdin and, with a commandSocket path, on that local socket
+    // (app/HeadlessSocket.h; the run then ends by signal or duration, not at the end of stdin); returns the
+    // exit code.
+    int runHeadless(QApplication& app, double durationSeconds, const QString& commandSocket = {});
     // A headless monitor over the started site (owned by it) with every module's commands and queries;
     // out = nullptr: stdout.
     HeadlessMonitor* attachHeadless(QIODevice* out = nullptr);

@@ -1,6 +1,8 @@
 // ocu: the console. See README.md for the two commands and docs/site-config.md for the configuration.
 #include "app/CommandLine.h"
 #include "app/ConsoleApp.h"
+#include "app/LogFormat.h"
+#include "app/Version.h"
 #include "protocols/common/ThreadPriority.h"
 
 #include <QApplication>
@@ -14,6 +16,8 @@ int main(int argc, char** argv) {
     // The console's stop-path threads (stacks' io threads, the headless stdin reader) ahead of ordinary
     // threads where the OS permits (docs/decisions/stop-from-callers-thread.md).
     ocu::enableStopPathPriority();
+    // Log lines for a terminal, a file or the systemd journal (app/LogFormat.h).
+    ocu::installConsoleLogFormat();
     // --headless, --help and --version need no display at all, nor does --screenshot when there is none;
     // decide the platform before QApplication exists.
     const bool haveDisplay =
@@ -22,7 +26,7 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const QByteArray a(argv[i]);
         if (a == "--headless" || a == "--help" || a == "-h" || a == "--version" || a == "-v" ||
-            a == "--help-all" || a.startsWith("--export-"))
+            a == "--help-all" || a.startsWith("--export-") || a.startsWith("--check-config"))
             noWindowNeeded = true;
         if (a == "--screenshot" || a.startsWith("--screenshot="))
             screenshot = true;
@@ -41,7 +45,7 @@ int main(int argc, char** argv) {
     ocu::watchQuitSignals();
     QApplication::setOrganizationName(QStringLiteral("OCU"));
     QApplication::setApplicationName(QStringLiteral("ocu"));
-    QApplication::setApplicationVersion(QStringLiteral(OCU_VERSION));
+    QApplication::setApplicationVersion(ocu::versionString());
 
     ocu::CommandLineOptions options;
     QString error, help;

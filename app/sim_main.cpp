@@ -1,6 +1,8 @@
 // ocu-sim: the simulated site on its own — the simulators of every protocol of this build (sim/SimModule.h) —
 // for a second machine, for demos, or to drive another console.
+#include "app/LogFormat.h"
 #include "app/SiteLoader.h"
+#include "app/Version.h"
 
 #include "protocols/common/Log.h"
 #include "sim/SimModule.h"
@@ -151,9 +153,10 @@ bool writeConsoleConfigFile(const QString& path, const ocu::SiteConfig& cfg,
 } // namespace
 
 int main(int argc, char** argv) {
+    ocu::installConsoleLogFormat(); // terminal, file or journal (app/LogFormat.h)
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("ocu-sim"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(OCU_VERSION));
+    QCoreApplication::setApplicationVersion(ocu::versionString());
     SimSetup setup = parseArguments(app);
     if (setup.exitCode != 0)
         return setup.exitCode;

@@ -58,7 +58,9 @@ function(ocu_moc_own_sources target)
   set_target_properties(${target} PROPERTIES AUTOMOC OFF)
   get_target_property(srcs ${target} SOURCES)
   set(outdir ${CMAKE_CURRENT_BINARY_DIR}/${target}_moc)
-  set(incs "$<TARGET_PROPERTY:${target},INCLUDE_DIRECTORIES>")
+  # Without the target's own moc folder: moc would read an existing <stem>.moc through the .cpp's include of it and
+  # name its own output as its dependency, a cycle that stops the next ninja run.
+  set(incs "$<FILTER:$<TARGET_PROPERTY:${target},INCLUDE_DIRECTORIES>,EXCLUDE,_moc$>")
   set(defs "$<TARGET_PROPERTY:${target},COMPILE_DEFINITIONS>")
   set(flags "$<$<BOOL:${incs}>:-I$<JOIN:${incs},$<SEMICOLON>-I>>" "$<$<BOOL:${defs}>:-D$<JOIN:${defs},$<SEMICOLON>-D>>")
   set(any FALSE)

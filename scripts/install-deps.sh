@@ -34,6 +34,8 @@ packages=(
   libgstreamer1.0-dev gstreamer1.0-plugins-bad
   # The flight recorder compresses its machine-state chunks with zstd (docs/recording.md).
   libzstd-dev
+  # The Debian package (scripts/package.sh): man pages from --help, dpkg-shlibdeps for its Depends.
+  help2man dpkg-dev
 )
 
 missing=()

@@ -117,9 +117,19 @@ private slots:
         QString e, help;
         QVERIFY(!parseCommandLine({"ocu", "--help"}, o, e, help));
         QVERIFY(e.isEmpty());
-        for (const char* opt : {"--config", "--no-sim", "--screenshot", "--view", "--size", "--settle",
-                                "--lang", "--log", "--headless", "--duration", "--reset-layout"})
+        for (const char* opt :
+             {"--config", "--no-sim", "--screenshot", "--view", "--size", "--settle", "--lang", "--log",
+              "--headless", "--duration", "--reset-layout", "--check-config", "--version"})
             QVERIFY2(help.contains(QLatin1String(opt)), opt);
+    }
+    // --check-config FILE: the file to validate (nothing else starts).
+    void checkConfig() {
+        CommandLineOptions o;
+        QString e;
+        QVERIFY2(parse({"--check-config", "/etc/ocu/quarry.json"}, o, e), qPrintable(e));
+        QCOMPARE(o.checkConfigFile, QString("/etc/ocu/quarry.json"));
+        QVERIFY(!parse({"--check-config"}, o, e)); // FILE is required
+        QVERIFY2(e.contains("check-config"), qPrintable(e));
     }
     // Recording and replay options.
     void recordAndReplay() {

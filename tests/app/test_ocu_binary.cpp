@@ -1,8 +1,11 @@
 // Runs the real `ocu` executable the way a user or a script does.
 #include "tests/support/BuiltProtocols.h"
 
+#include <QElapsedTimer>
 #include <QImage>
+#include <QLocalSocket>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -50,6 +53,73 @@ private slots:
         QCOMPARE(r.exitCode, 0);
         QVERIFY(r.out.contains("--screenshot"));
         QVERIFY(r.out.contains("--headless"));
+    }
+    // The version from the repository (git describe at configure time), the one the package carries.
+    void version() {
+        const Run r = run({"--version"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out.trimmed(), QString("ocu " OCU_EXPECTED_VERSION));
+        QVERIFY2(QRegularExpression("^\\d+\\.\\d+\\.\\d+").match(OCU_EXPECTED_VERSION).hasMatch(),
+                 OCU_EXPECTED_VERSION);
+    }
+    // --check-config: file:line errors and exit 1 for a bad file, exit 0 for a good one; nothing starts (no
+    // window, no stacks: it returns at once even without --duration).
+    void checkConfig() {
+        const QString bad = writeFile("bad.json", "{\n  \"site\": {\n    \"origin\": {\"latitude\": 48, "
+                                                  "\"longitude\": 11},\n    \"nmae\": \"Quarry\"\n  }\n}\n");
+        QElapsedTimer t;
+        t.start();
+        Run r = run({"--check-config", bad}, 20000);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(bad + ":4: site.nmae: unknown key"), qPrintable(r.err));
+        const QString good = OCU_SOURCE_DIR "/resources/sites/simulated-site.json";
+        r = run({"--check-config", good}, 20000);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(good + ": the site configuration is valid"), qPrintable(r.out));
+        r = run({"--check-config", m_dir.filePath("missing.json")}, 20000);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("cannot open"), qPrintable(r.err));
+        QVERIFY2(t.elapsed() < 15000, qPrintable(QString::number(t.elapsed())));
+    }
+    // As the service runs it: stdin at its end (/dev/null), commands on the socket; `list` answered there,
+    // and SIGTERM ends it within 2 s, the socket file gone.
+    void commandSocketAsAService() {
+        const QString sock = m_dir.filePath("ocu.sock");
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY");
+        env.insert("XDG_CONFIG_HOME", m_dir.path());
+        env.insert("XDG_CACHE_HOME", m_dir.path());
+        p.setProcessEnvironment(env);
+        p.setStandardInputFile(QProcess::nullDevice());
+        p.start(OCU_BINARY, {"--headless", "--no-record", "--command-socket", sock});
+        QVERIFY(p.waitForStarted());
+        QLocalSocket client;
+        QElapsedTimer t;
+        t.start();
+        while (client.state() != QLocalSocket::ConnectedState && t.elapsed() < 30000) {
+            client.connectToServer(sock);
+            if (!client.waitForConnected(200))
+                QTest::qWait(200);
+        }
+        QVERIFY2(client.state() == QLocalSocket::ConnectedState, qPrintable(p.readAllStandardError()));
+        QCOMPARE(p.state(), QProcess::Running); // the end of stdin did not end it
+        client.write("{\"cmd\":\"list\",\"req\":42}\n");
+        QByteArray got;
+        t.restart();
+        while (!got.contains("\"req\":42") && t.elapsed() < 10000)
+            if (client.waitForReadyRead(200))
+                got += client.readAll();
+        const QByteArray line =
+            got.mid(got.lastIndexOf('\n', got.indexOf("\"req\":42")) + 1).split('\n').first();
+        QVERIFY2(line.contains("\"type\":\"result\"") && line.contains("\"ok\":true"), line.constData());
+        t.restart();
+        p.terminate(); // SIGTERM, as systemctl stop sends it
+        QVERIFY(p.waitForFinished(5000));
+        QVERIFY2(t.elapsed() < 2000, qPrintable(QString::number(t.elapsed())));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 0);
+        QVERIFY(!QFile::exists(sock));
     }
     void misspelledKeyIsRefused() {
         QString path = writeFile("typo.json",
