@@ -113,6 +113,10 @@ void SiteRuntime::start() {
     if (!m_config.fleet.auditLog.empty())
         d.ctx->gate()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
     d.ctx->gate()->setConfirmTimeoutMs(int(m_config.fleet.stopConfirmTimeoutSeconds * 1000));
+    for (const auto& m : d.modules)
+        m->addPermissions(d.ctx->gate()->permissions());
+    const OperatorIdentity who = identityOf(QString::fromStdString(currentOsUser().name));
+    setOperator(who);
     startRecorder();
     startControlRoomHistory();
 
@@ -120,7 +124,8 @@ void SiteRuntime::start() {
     // reason is an alarm.
     for (const auto& m : d.modules) {
         const QString e = m->start({m_config, d.frame, d.ctx, this,
-                                    d.recorder ? d.recorder->messageTap() : nullptr, &d.startProblems});
+                                    d.recorder ? d.recorder->messageTap() : nullptr, &d.startProblems,
+                                    m_config.roles.configured ? m_config.roles.authorityOf(who.role) : -1});
         if (!e.isEmpty())
             d.startProblems << e;
     }
@@ -176,7 +181,6 @@ void SiteRuntime::startControlRoomHistory() {
         hc.outboxPath = dir + QStringLiteral("/history-outbox-%1.sqlite").arg(hc.console);
     }
     AlarmModel* alarms = d.ctx->alarms();
-    alarms->setOperatorName(hc.console);
     auto* history = new PgHistory(hc, this);
     history->attach(alarms);
     history->attachGate(d.ctx->gate());
@@ -192,6 +196,28 @@ void SiteRuntime::startControlRoomHistory() {
     const QString e = history->start();
     if (!e.isEmpty())
         d.startProblems << tr("Control-room history: %1").arg(e);
+}
+
+// The console's name in audit lines and the shared history: the history's console name, else the host's.
+static QString consoleName(const SiteConfig& config) {
+    if (config.historyPostgres && !config.historyPostgres->console.empty())
+        return QString::fromStdString(config.historyPostgres->console);
+    return QSysInfo::machineHostName();
+}
+
+OperatorIdentity SiteRuntime::identityOf(const QString& user) const {
+    const std::string name = user.toStdString();
+    return {user, m_config.roles.roleOf(name, groupsOfUser(name)), consoleName(m_config)};
+}
+
+OperatorIdentity SiteRuntime::operatorIdentity() const {
+    return m_impl->ctx ? m_impl->ctx->gate()->operatorIdentity() : OperatorIdentity{};
+}
+
+void SiteRuntime::setOperator(const OperatorIdentity& identity) {
+    Impl& d = *m_impl;
+    d.ctx->gate()->setOperator(identity);
+    d.ctx->alarms()->setOperatorName(identity.byText());
 }
 
 void SiteRuntime::stop() {

@@ -295,9 +295,37 @@ QString CommandGate::requestClearToken(const QString& id) {
     return token;
 }
 
+bool CommandGate::mayIssue(const QString& command, QString* why) const {
+    if (m_permissions.isStop(command))
+        return true; // never refused: locked or not, whatever the role
+    QString text;
+    if (m_locked)
+        text = tr("the console is locked: only stops are accepted");
+    else if (m_operator.role != OperatorRole::Admin || m_permissions.hasRow(command))
+        text = m_permissions.refusalText(command, m_operator.role);
+    if (why)
+        *why = text;
+    return text.isEmpty();
+}
+
+bool CommandGate::admit(const OperatorCommand& command, const QString& origin, const ResultHandler& onFinal) {
+    QString why;
+    if (mayIssue(commandName(command), &why))
+        return true;
+    const CommandRoute route = commandRoute(command);
+    const QString target = !route.machine.isEmpty() ? route.machine
+                           : route.protocol         ? toText(*route.protocol)
+                                                    : commandName(command);
+    finishNow(command, origin,
+              CommandResult::fromTargets({refusal(target, OutcomeReason::NotPermitted, why)}), onFinal);
+    return false;
+}
+
 void CommandGate::clearStop(const QString& id, const QString& token, const QString& origin,
                             ResultHandler onFinal) {
     const ClearStop clear{id, false, {}}; // the token is never audited
+    if (!admit(clear, origin, onFinal))
+        return;
     auto it = m_tokens.find(token);
     if (token.isEmpty() || it == m_tokens.end() || it->id != id || it->expiresMs < m_clock->nowMs()) {
         finishNow(clear, origin,
@@ -335,6 +363,8 @@ void CommandGate::command(const OperatorCommand& command, const QString& origin,
         return stopMachine(stop->id, origin, std::move(onFinal));
     if (const auto* clear = std::get_if<ClearStop>(&command))
         return clearStop(clear->id, clear->token, origin, std::move(onFinal));
+    if (!admit(command, origin, onFinal))
+        return;
     // The bridge owning the machine, else (commands for a whole stack: JAUS release_all, an OSYRIS text
     // to every station) the bridge of the command's protocol.
     const CommandRoute route = commandRoute(command);
@@ -507,6 +537,9 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
     QJsonObject o;
     o[QStringLiteral("time")] = QDateTime::fromMSecsSinceEpoch(now, Qt::UTC).toString(Qt::ISODateWithMs);
     o[QStringLiteral("origin")] = origin;
+    o[QStringLiteral("operator")] = m_operator.user;
+    o[QStringLiteral("role")] = m_operator.roleText();
+    o[QStringLiteral("console")] = m_operator.console;
     o[QStringLiteral("action")] = action;
     if (!target.isEmpty())
         o[QStringLiteral("target")] = target;
@@ -518,9 +551,11 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
 
     if (m_alarms) {
         // A command that did not reach every target is an alarm the operator must see; the rest is info.
-        FleetEvent ev =
-            makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit, target,
-                      QStringLiteral("%1 by %2: %3").arg(action, origin, result.message), origin);
+        QString text = QStringLiteral("%1 by %2: %3").arg(action, origin, result.message);
+        if (!m_operator.user.isEmpty())
+            text += QStringLiteral(" (%1, %2)").arg(m_operator.user, m_operator.roleText());
+        FleetEvent ev = makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit,
+                                  target, text, origin);
         ev.timeMs = now;
         m_alarms->add(ev);
     }
