@@ -12,7 +12,9 @@
 #include "widgets/view3d/Site3DView.h"
 #endif
 
+#include "app/HardwareStopButton.h"
 #include "app/HeadlessMonitor.h"
+#include "app/LinkIndicator.h"
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/FleetContext.h"
@@ -47,7 +49,8 @@ struct SiteRuntime::Impl {
     FleetContext* ctx = nullptr;
     OwnPosition* own = nullptr;
     std::vector<std::unique_ptr<ProtocolModule>> modules = makeProtocolModules();
-    recording::Recorder* recorder = nullptr; // the flight recorder of this run
+    recording::Recorder* recorder = nullptr;        // the flight recorder of this run
+    std::unique_ptr<HardwareStopButton> stopButton; // site configuration `stop_button`
     QStringList startProblems;
     bool stopped = false;
 
@@ -129,6 +132,10 @@ void SiteRuntime::start() {
         if (!e.isEmpty())
             d.startProblems << e;
     }
+    // After the stacks: the button's first press may come at once (a latched button).
+    if (m_config.stopButton)
+        d.stopButton = std::make_unique<HardwareStopButton>(
+            m_config.stopButton->device, m_config.stopButton->button, d.ctx->gate(), d.ctx->alarms());
     d.own = new OwnPosition(d.frame, this);
     const auto& op = m_config.ownPosition;
     if (op.source == "system")
@@ -225,6 +232,7 @@ void SiteRuntime::stop() {
     if (d.stopped)
         return;
     d.stopped = true;
+    d.stopButton.reset(); // its thread calls the bridges: gone before they are
     // Stacks first (a stack may still send, e.g. release its control), then the simulators.
     for (const auto& m : d.modules)
         m->stop();
@@ -489,6 +497,16 @@ void SiteRuntime::Impl::connectAlarmsAndStops(MainWindow& window) const {
     window.setUnacknowledgedAlarms(c->alarms()->unacknowledgedCount());
     connect(&window, &MainWindow::stopAllRequested, c->gate(),
             [c] { c->gate()->stopAll(QStringLiteral("gui")); });
+    if (HardwareStopButton* button = stopButton.get()) {
+        LinkIndicator* lamp = window.addLinkIndicator(SiteRuntime::tr("STOP button"));
+        auto show = [lamp, button](bool up, const QString& device) {
+            lamp->setState(up ? LinkIndicator::State::Up : LinkIndicator::State::Down,
+                           up ? SiteRuntime::tr("%1: %2").arg(device, button->description())
+                              : SiteRuntime::tr("no device with %1").arg(button->description()));
+        };
+        show(button->connected(), button->deviceName());
+        connect(button, &HardwareStopButton::connectionChanged, lamp, show);
+    }
     // A stop that did not reach every target, or that a machine did not confirm, is shown loudly until the
     // operator dismisses it or a later STOP ALL reaches everything.
     QPointer<MainWindow> win(&window);

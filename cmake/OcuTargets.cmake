@@ -53,6 +53,7 @@ endfunction()
 # and the mocs_compilation.cpp it adds cost ~0.75 s of a clean build per target (~170 such targets) for at most
 # one moc call. A .cpp with Q_OBJECT includes "<stem>.moc" at its end; a listed header with Q_OBJECT gets
 # moc_<stem>.cpp compiled into the target. Include paths and defines are the target's, as AUTOMOC passes them.
+# No moc dep file: it would list the .moc that the .cpp includes, a cycle; the classes are in the file itself.
 function(ocu_moc_own_sources target)
   set_target_properties(${target} PROPERTIES AUTOMOC OFF)
   get_target_property(srcs ${target} SOURCES)
@@ -79,9 +80,8 @@ function(ocu_moc_own_sources target)
     target_sources(${target} PRIVATE ${out})
     add_custom_command(
       OUTPUT ${out}
-      COMMAND Qt6::moc ${flags} --output-dep-file --dep-file-path ${out}.d -o ${out} ${abs}
+      COMMAND Qt6::moc ${flags} -o ${out} ${abs}
       DEPENDS ${abs} Qt6::moc
-      DEPFILE ${out}.d
       COMMAND_EXPAND_LISTS VERBATIM)
     set(any TRUE)
   endforeach()

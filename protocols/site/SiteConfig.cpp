@@ -117,6 +117,17 @@ static void readTeleop(ConfigObject& root, SiteConfig& cfg) {
     }
 }
 
+// The hardware STOP ALL button.
+static void readStopButton(ConfigObject& root, SiteConfig& cfg) {
+    if (auto b = root.object("stop_button")) {
+        StopButtonConfig c;
+        c.device = b->string("device", c.device);
+        c.button = static_cast<int>(b->integer("button", c.button, 0, 31));
+        b->finish();
+        cfg.stopButton = c;
+    }
+}
+
 // The flight recorder and its retention.
 static void readRecord(ConfigObject& root, SiteConfig& cfg) {
     if (auto r = root.object("record")) {
@@ -196,6 +207,7 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
     readFleet(root, cfg);
     readOwnPosition(root, cfg);
     readTeleop(root, cfg);
+    readStopButton(root, cfg);
     readRecord(root, cfg);
     if (auto b = root.object("background")) {
         cfg.background.raster = resolveSitePath(b->string("raster", cfg.background.raster), fileName);

@@ -73,6 +73,13 @@ struct TeleopInputConfig {
     double videoWatchdogS = 1.0;
 };
 
+// A gamepad or USB button that triggers STOP ALL, read off the GUI thread (docs/site-config.md
+// `stop_button`).
+struct StopButtonConfig {
+    std::string device; // part of the device's name; empty = the first device that has the button
+    int button = 0;     // SDL button index
+};
+
 // The flight recorder (docs/recording.md): always on unless enabled is false.
 struct RecordConfig {
     bool enabled = true;
@@ -124,6 +131,7 @@ struct SiteConfig {
     FleetConfig fleet;
     OwnPositionConfig ownPosition;
     TeleopInputConfig teleop;
+    std::optional<StopButtonConfig> stopButton;
     RecordConfig record;
     MapBackgroundConfig background;
     TerrainConfig terrain;

@@ -1,5 +1,7 @@
 #include "widgets/teleop/SdlJoystickInput.h"
 
+#include "widgets/teleop/SdlJoysticks.h"
+
 #include <QTimer>
 
 #include <SDL.h>
@@ -7,14 +9,9 @@
 namespace ocu {
 
 SdlJoystickInput::SdlJoystickInput(QObject* parent) : InputDevice(parent) {
-    SDL_SetHint(SDL_HINT_JOYSTICK_ALLOW_BACKGROUND_EVENTS, "1");
-    // The joystick subsystem starts SDL's event subsystem, which would install SIGINT/SIGTERM handlers that
-    // only queue an SDL_QUIT nobody reads: the console would ignore kill and Ctrl+C. The application owns the
-    // signals (app/ConsoleApp.cpp, installQuitSignalHandlers).
-    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-    SDL_SetMainReady();
-    if (SDL_InitSubSystem(SDL_INIT_JOYSTICK) != 0) {
-        m_error = QString::fromUtf8(SDL_GetError());
+    std::string error;
+    if (!startSdlJoysticks(error)) {
+        m_error = QString::fromStdString(error);
         return;
     }
     m_available = true;
@@ -28,7 +25,7 @@ SdlJoystickInput::SdlJoystickInput(QObject* parent) : InputDevice(parent) {
 SdlJoystickInput::~SdlJoystickInput() {
     close();
     if (m_available)
-        SDL_QuitSubSystem(SDL_INIT_JOYSTICK);
+        stopSdlJoysticks();
 }
 
 QString SdlJoystickInput::name() const {

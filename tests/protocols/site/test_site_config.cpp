@@ -158,6 +158,30 @@ private slots:
         QVERIFY(!bad.ok());
         QVERIFY(QString::fromStdString(bad.error()).contains("teleop.video_watchdog_s"));
     }
+    // The hardware STOP ALL button: absent by default, device and button read, a bad button index refused.
+    void stopButton() {
+        auto def = parseSiteConfig(R"({"site": {"origin": {"latitude": 1, "longitude": 2}}})", "d.json");
+        QVERIFY(def.ok());
+        QVERIFY(!def->stopButton);
+        auto cfg = parseSiteConfig(R"({"site": {"origin": {"latitude": 1, "longitude": 2}},
+                "stop_button": {"device": "Big red", "button": 3}})",
+                                   "s.json");
+        QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
+        QVERIFY(cfg->stopButton);
+        QCOMPARE(cfg->stopButton->device, std::string("Big red"));
+        QCOMPARE(cfg->stopButton->button, 3);
+        auto any = parseSiteConfig(
+            R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "stop_button": {}})", "a.json");
+        QVERIFY(any.ok());
+        QCOMPARE(any->stopButton->device, std::string());
+        QCOMPARE(any->stopButton->button, 0);
+        auto bad = parseSiteConfig(R"({"site": {"origin": {"latitude": 1, "longitude": 2}},
+                "stop_button": {"button": 40, "colour": "red"}})",
+                                   "b.json");
+        QVERIFY(!bad.ok());
+        QVERIFY(QString::fromStdString(bad.error()).contains("stop_button.button: 40 is out of range"));
+        QVERIFY(QString::fromStdString(bad.error()).contains("stop_button.colour"));
+    }
     void crossFieldCheck() {
         auto cfg = parseSiteConfig(
             R"({"site": {"origin": {"latitude": 1, "longitude": 2}}, "fleet": {"stale_after_s": 10, "remove_after_s": 5}})",
