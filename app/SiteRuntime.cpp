@@ -4,6 +4,7 @@
 #include "app/ConsoleApp.h"
 #include "app/LogRouting.h"
 #include "app/MainWindow.h"
+#include "app/OperatorUi.h"
 #include "app/PassCountDock.h"
 #include "app/ProtocolModule.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
@@ -20,9 +21,11 @@
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
+#include "models/OperatorSession.h"
 #include "models/OwnPosition.h"
 #include "models/history/PgHistory.h"
 #include "models/recording/Recorder.h"
+#include "protocols/site/PamAuthenticator.h"
 #include "sim/SimulatedSite.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/FleetListWidget.h"
@@ -48,6 +51,7 @@ struct SiteRuntime::Impl {
     std::unique_ptr<sim::SimulatedSite> sim;
     FleetContext* ctx = nullptr;
     OwnPosition* own = nullptr;
+    OperatorSession* session = nullptr;
     std::vector<std::unique_ptr<ProtocolModule>> modules = makeProtocolModules();
     recording::Recorder* recorder = nullptr;        // the flight recorder of this run
     std::unique_ptr<HardwareStopButton> stopButton; // site configuration `stop_button`
@@ -119,7 +123,15 @@ void SiteRuntime::start() {
     for (const auto& m : d.modules)
         m->addPermissions(d.ctx->gate()->permissions());
     const OperatorIdentity who = identityOf(QString::fromStdString(currentOsUser().name));
-    setOperator(who);
+    d.session = new OperatorSession(
+        d.ctx->gate(), d.ctx->fleet(), d.ctx->alarms(),
+        [](const QString& user, const QString& password) {
+            return QString::fromStdString(
+                PamAuthenticator().authenticate(user.toStdString(), password.toStdString()));
+        },
+        [this](const QString& user) { return identityOf(user); }, this);
+    d.session->setOperator(who);
+    d.session->setIdleLockMs(int(m_config.roles.lockAfterIdleS * 1000));
     startRecorder();
     startControlRoomHistory();
 
@@ -221,10 +233,8 @@ OperatorIdentity SiteRuntime::operatorIdentity() const {
     return m_impl->ctx ? m_impl->ctx->gate()->operatorIdentity() : OperatorIdentity{};
 }
 
-void SiteRuntime::setOperator(const OperatorIdentity& identity) {
-    Impl& d = *m_impl;
-    d.ctx->gate()->setOperator(identity);
-    d.ctx->alarms()->setOperatorName(identity.byText());
+OperatorSession* SiteRuntime::operatorSession() const {
+    return m_impl->session;
 }
 
 void SiteRuntime::stop() {
@@ -323,6 +333,8 @@ void SiteRuntime::populate(MainWindow& window) {
     d.connectPassCounts(passPanel, map, feed);
     d.connectBridges(window, map, passPanel, feed, this);
     d.connectAlarmsAndStops(window);
+    if (d.session)
+        new OperatorUi(window, d.session);
     for (const QString& p : std::as_const(d.startProblems))
         window.statusBar()->showMessage(p, 15000);
 }

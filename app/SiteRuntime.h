@@ -17,6 +17,7 @@ class QIODevice;
 namespace ocu {
 
 class HeadlessMonitor;
+class OperatorSession;
 class MainWindow;
 namespace recording {
 class Recorder;
@@ -34,11 +35,11 @@ public:
     void stop();
     const SiteConfig& config() const { return m_config; }
 
-    // Who is at the console: the OS user running it, their role from the site's "roles" section
-    // (docs/roles.md). Set on the command gate (permissions, audit) and the alarms (acknowledgements,
-    // shelvings) at start; setOperator changes it (a switch of operator).
+    // Who is at the console: the OS user running it at start, their role from the site's "roles" section
+    // (docs/roles.md), on the command gate (permissions, audit) and the alarms (acknowledgements,
+    // shelvings); the session switches operator and locks (passwords through PAM, service "ocu").
     OperatorIdentity operatorIdentity() const;
-    void setOperator(const OperatorIdentity& identity);
+    OperatorSession* operatorSession() const;
     // The identity the site's roles give an OS user at this console.
     OperatorIdentity identityOf(const QString& user) const;
 

@@ -64,6 +64,7 @@ RolesConfig parseRolesConfig(ConfigObject& section) {
     c.configured = true;
     c.users = readRoleMap(section, "users");
     c.groups = readRoleMap(section, "groups");
+    c.lockAfterIdleS = section.number("lock_after_idle_s", c.lockAfterIdleS, 0, 86400);
     if (auto a = section.object("authority")) {
         for (OperatorRole role : kAllOperatorRoles) {
             const std::string key(roleName(role));

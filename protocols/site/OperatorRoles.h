@@ -33,6 +33,8 @@ struct RolesConfig {
     // JAUS authority per role (AEP-4818 §4.3.2: 0 = monitor, 205-239 primary operator, 240-254 safety
     // critical), indexed by OperatorRole.
     std::array<int, 6> authority{0, 0, 0, 205, 220, 230};
+    // The console locks after this long without keyboard or mouse activity (seconds; 0 = never).
+    double lockAfterIdleS = 0;
 
     // The role of a user who belongs to `groups`: their own entry, else the highest role of their groups,
     // else monitor. Admin when roles are not configured.

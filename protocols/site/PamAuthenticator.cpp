@@ -39,6 +39,9 @@ int converse(int count, const pam_message** messages, pam_response** responses, 
     return PAM_SUCCESS;
 }
 
+// No wait after a wrong password: the caller is the console's GUI thread, which must keep STOP ALL at once.
+void noFailDelay(int, unsigned, void*) {}
+
 } // namespace
 
 PamAuthenticator::PamAuthenticator(std::string service, std::string confDir)
@@ -54,6 +57,7 @@ std::string PamAuthenticator::authenticate(const std::string& user, const std::s
                                m_confDir.empty() ? nullptr : m_confDir.c_str(), &pamh);
     if (rc != PAM_SUCCESS)
         return "PAM service \"" + m_service + "\" cannot start";
+    pam_set_item(pamh, PAM_FAIL_DELAY, reinterpret_cast<const void*>(&noFailDelay));
     rc = pam_authenticate(pamh, PAM_SILENT | PAM_DISALLOW_NULL_AUTHTOK);
     if (rc == PAM_SUCCESS)
         rc = pam_acct_mgmt(pamh, PAM_SILENT);

@@ -48,7 +48,7 @@ private slots:
         auto cfg = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},
             "roles":{"users":{"alice":"supervisor","bob":"monitor"},
                      "groups":{"ocu-dispatch":"dispatcher","ugv":"ugv_operator","paving":"site_manager"},
-                     "authority":{"ugv_operator":210,"supervisor":240}}})",
+                     "authority":{"ugv_operator":210,"supervisor":240},"lock_after_idle_s":300}})",
                                    "r.json");
         QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
         const RolesConfig& r = cfg->roles;
@@ -62,6 +62,7 @@ private slots:
         QCOMPARE(r.authorityOf(OperatorRole::Supervisor), 240);
         QCOMPARE(r.authorityOf(OperatorRole::Admin), 230); // default
         QCOMPARE(r.authorityOf(OperatorRole::Monitor), 0);
+        QCOMPARE(r.lockAfterIdleS, 300.0);
         const char* text = "{\"site\":{\"origin\":{\"latitude\":1,\"longitude\":2}},\n"
                            "\"roles\":{\n"
                            "  \"users\":{\"alice\":\"superviser\"},\n"
