@@ -46,22 +46,21 @@ OperatorSession::Switch OperatorSession::switchTo(const QString& user, const QSt
     }
     const OperatorIdentity next = m_identityOf(user);
     const QStringList release = controlToRelease(next);
-    if (!release.isEmpty()) {
-        if (!confirm || !confirm(release)) {
-            if (why)
-                *why = tr("switch cancelled: control kept by %1").arg(current().user);
-            return Switch::Cancelled;
-        }
-        // Released by the operator who held it (audited as theirs), before the next one is in.
-        for (const QString& id : release)
-            m_gate->command(ReleaseControl{id}, QStringLiteral("switch"));
+    if (!release.isEmpty() && (!confirm || !confirm(release))) {
+        if (why)
+            *why = tr("switch cancelled: control kept by %1").arg(current().user);
+        return Switch::Cancelled;
     }
+    // A person signed in: the console is theirs, unlocked (also so that the release below may go out).
     const bool wasLocked = isLocked();
-    setOperator(next);
-    if (wasLocked && m_gate) {
+    if (wasLocked)
         m_gate->setLocked(false);
+    // Released by the operator who held it (audited as theirs), before the next one is in.
+    for (const QString& id : release)
+        m_gate->command(ReleaseControl{id}, QStringLiteral("switch"));
+    setOperator(next);
+    if (wasLocked)
         emit lockedChanged(false);
-    }
     activity();
     return Switch::Switched;
 }

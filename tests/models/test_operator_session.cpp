@@ -129,6 +129,20 @@ private slots:
         QVERIFY(!c.gate.mayIssue(QStringLiteral("request_control")));
     }
 
+    // A person switching at a locked console: the previous operator's control is released (refused while
+    // locked otherwise) and the console is theirs, unlocked.
+    void switchAtLockedConsole() {
+        Console c;
+        c.session->lock();
+        QCOMPARE(c.session->switchTo(QStringLiteral("bob"), QStringLiteral("b-pass"),
+                                     [](const QStringList&) { return true; }),
+                 OperatorSession::Switch::Switched);
+        QTRY_COMPARE(c.ugv.calls().size(), 1);
+        QCOMPARE(c.ugv.calls().first().name, QStringLiteral("release_control"));
+        QVERIFY(!c.session->isLocked());
+        QCOMPARE(c.session->current().user, QStringLiteral("bob"));
+    }
+
     // Locked: only stops pass (STOP ALL reaches the bridge); the operator's own password unlocks.
     void lockAndUnlock() {
         Console c;
