@@ -6,7 +6,7 @@
 // end of a drive session) are allowed to every role, signed in or locked: no row can narrow them.
 // A command without a row is refused (a new command must be given its roles), naming no role.
 #include "models/commands/OperatorCommand.h"
-#include "protocols/site/OperatorRoles.h"
+#include "protocols/common/OperatorRoles.h"
 
 #include <QCoreApplication>
 #include <QHash>

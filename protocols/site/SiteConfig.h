@@ -5,7 +5,7 @@
 #include "protocols/common/ConfigReader.h"
 #include "protocols/common/GeoFrame.h"
 #include "protocols/common/Result.h"
-#include "protocols/site/OperatorRoles.h"
+#include "protocols/common/OperatorRoles.h"
 
 #include <optional>
 #include <string>

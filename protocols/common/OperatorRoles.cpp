@@ -1,4 +1,4 @@
-#include "protocols/site/OperatorRoles.h"
+#include "protocols/common/OperatorRoles.h"
 
 #include <nlohmann/json.hpp>
 
