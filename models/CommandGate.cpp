@@ -70,6 +70,7 @@ struct CommandGate::Pending {
     QString target;      // the machine (or empty for STOP ALL)
     QJsonObject command; // the typed command as JSON (the audit line's "command")
     QString origin;
+    OperatorIdentity issuer; // the operator when it was issued
     QVector<QPointer<FleetBridge>> bridges;
     std::vector<std::optional<std::vector<TargetOutcome>>> outcomes; // per bridge; nullopt = not answered
     int answered = 0;
@@ -131,6 +132,7 @@ void CommandGate::dispatch(const OperatorCommand& command, const QString& origin
     p->target = commandTarget(command);
     p->command = toJson(command);
     p->origin = origin;
+    p->issuer = m_operator;
     p->onFinal = std::move(onFinal);
     p->since.start();
     for (FleetBridge* b : to)
@@ -216,7 +218,7 @@ void CommandGate::finish(quint64 id) {
     }
     finishNow(p->action, p->target, p->command, p->origin,
               CommandResult::fromTargets(targets, tr("no protocol bridge registered: nothing sent")),
-              p->onFinal);
+              p->onFinal, &p->issuer);
 }
 
 void CommandGate::finishNow(const OperatorCommand& command, const QString& origin, CommandResult r,
@@ -225,9 +227,10 @@ void CommandGate::finishNow(const OperatorCommand& command, const QString& origi
 }
 
 void CommandGate::finishNow(const QString& action, const QString& target, const QJsonObject& command,
-                            const QString& origin, CommandResult r, const ResultHandler& onFinal) {
+                            const QString& origin, CommandResult r, const ResultHandler& onFinal,
+                            const OperatorIdentity* issuer) {
     r.action = action;
-    audit(origin, action, target, command, r);
+    audit(origin, action, target, command, r, issuer ? *issuer : m_operator);
     const bool isStop = action == QLatin1String("stop_all") || action == QLatin1String("stop");
     if (onFinal)
         onFinal(r);
@@ -532,14 +535,15 @@ void CommandGate::onCommandReported(const QString& action, const QString& target
 }
 
 void CommandGate::audit(const QString& origin, const QString& action, const QString& target,
-                        const QJsonObject& command, const CommandResult& result) {
+                        const QJsonObject& command, const CommandResult& result,
+                        const OperatorIdentity& issuer) {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     QJsonObject o;
     o[QStringLiteral("time")] = QDateTime::fromMSecsSinceEpoch(now, Qt::UTC).toString(Qt::ISODateWithMs);
     o[QStringLiteral("origin")] = origin;
-    o[QStringLiteral("operator")] = m_operator.user;
-    o[QStringLiteral("role")] = m_operator.roleText();
-    o[QStringLiteral("console")] = m_operator.console;
+    o[QStringLiteral("operator")] = issuer.user;
+    o[QStringLiteral("role")] = issuer.roleText();
+    o[QStringLiteral("console")] = issuer.console;
     o[QStringLiteral("action")] = action;
     if (!target.isEmpty())
         o[QStringLiteral("target")] = target;
@@ -552,8 +556,8 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
     if (m_alarms) {
         // A command that did not reach every target is an alarm the operator must see; the rest is info.
         QString text = QStringLiteral("%1 by %2: %3").arg(action, origin, result.message);
-        if (!m_operator.user.isEmpty())
-            text += QStringLiteral(" (%1, %2)").arg(m_operator.user, m_operator.roleText());
+        if (!issuer.user.isEmpty())
+            text += QStringLiteral(" (%1, %2)").arg(issuer.user, issuer.roleText());
         FleetEvent ev = makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit,
                                   target, text, origin);
         ev.timeMs = now;

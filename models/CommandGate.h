@@ -141,8 +141,11 @@ private:
     void finish(quint64 id);
     void finishNow(const OperatorCommand& command, const QString& origin, CommandResult r,
                    const ResultHandler& onFinal);
+    // `issuer`: who issued the command (its audit names them, also when a switch of operator came between);
+    // null: the operator now.
     void finishNow(const QString& action, const QString& target, const QJsonObject& command,
-                   const QString& origin, CommandResult r, const ResultHandler& onFinal);
+                   const QString& origin, CommandResult r, const ResultHandler& onFinal,
+                   const OperatorIdentity* issuer = nullptr);
     FleetBridge* bridgeOf(Protocol protocol) const;
     // Refuses (audited, nothing sent) and returns false when the operator may not issue `command` now.
     bool admit(const OperatorCommand& command, const QString& origin, const ResultHandler& onFinal);
@@ -155,7 +158,7 @@ private:
                       const QElapsedTimer& since);
     void onCommandReported(const QString& action, const QString& target, const QString& text);
     void audit(const QString& origin, const QString& action, const QString& target,
-               const QJsonObject& command, const CommandResult& result);
+               const QJsonObject& command, const CommandResult& result, const OperatorIdentity& issuer);
 
     QVector<QPointer<FleetBridge>> m_bridges;
     std::mutex m_earlyMutex;                  // stopAllEarly() from another thread

@@ -129,6 +129,23 @@ private slots:
         QVERIFY(!c.gate.mayIssue(QStringLiteral("request_control")));
     }
 
+    // The release's result comes after the switch (a stack answers later): its audit still names the
+    // operator who issued it.
+    void releaseAnsweredAfterTheSwitchIsTheirs() {
+        Console c;
+        c.ugv.silent = true;
+        c.gate.setAnswerDeadlineMs(200);
+        QCOMPARE(c.session->switchTo(QStringLiteral("bob"), QStringLiteral("b-pass"),
+                                     [](const QStringList&) { return true; }),
+                 OperatorSession::Switch::Switched);
+        QCOMPARE(c.session->current().user, QStringLiteral("bob"));
+        QVERIFY(c.audit.isEmpty());
+        QTRY_VERIFY(!c.audit.isEmpty());
+        const QJsonObject line = QJsonDocument::fromJson(c.audit.first().toUtf8()).object();
+        QCOMPARE(line.value(QStringLiteral("action")).toString(), QStringLiteral("release_control"));
+        QCOMPARE(line.value(QStringLiteral("operator")).toString(), QStringLiteral("alice"));
+    }
+
     // A person switching at a locked console: the previous operator's control is released (refused while
     // locked otherwise) and the console is theirs, unlocked.
     void switchAtLockedConsole() {
