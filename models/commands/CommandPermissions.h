@@ -36,7 +36,7 @@ struct OperatorIdentity {
 QString roleDisplayName(OperatorRole role);
 
 class CommandPermissions {
-    Q_DECLARE_TR_FUNCTIONS(CommandPermissions)
+    Q_DECLARE_TR_FUNCTIONS(ocu::CommandPermissions)
 public:
     CommandPermissions(); // the shared rows: stop_all and stop for everyone, clear_stop
 
