@@ -275,6 +275,7 @@ void MainWindow::clearStopBanner() {
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    m_fileMenu = file;
     QAction* shot = file->addAction(tr("Save &screenshot…"));
     shot->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
     connect(shot, &QAction::triggered, this, [this] {

@@ -70,6 +70,8 @@ public:
     // What STOP ALL reaches, one phrase per protocol module, for its tooltip; the protocols of this build for
     // Help › About.
     void setStopAllReach(const QStringList& reach);
+    // The File menu (others add their actions before Quit).
+    QMenu* fileMenu() const { return m_fileMenu; }
     void setAboutProtocols(const QStringList& protocols);
 
     QAction* stopAllAction() const { return m_stopAll; }
@@ -133,6 +135,7 @@ private:
     QMap<QString, QAction*> m_goActions;
     QDockWidget* m_sideColumn = nullptr; // the first module panel right of the map
     QMenu* m_viewMenu = nullptr;
+    QMenu* m_fileMenu = nullptr;
     QMenu* m_goMenu = nullptr;
     QAction* m_resetAction = nullptr;
     QStringList m_aboutProtocols;

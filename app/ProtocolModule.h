@@ -8,6 +8,7 @@
 // the protocol's simulators are the sim-side modules (sim/SimModule.h).
 #include "app/MainWindow.h"
 #include "models/MachineState.h"
+#include "models/commands/CommandPermissions.h"
 #include "protocols/common/GeoFrame.h"
 #include "protocols/site/SiteConfig.h"
 
@@ -37,6 +38,9 @@ struct ModuleStart {
     QObject* owner;                  // owns the bridge
     MessageTap* tap = nullptr;       // the flight recorder's tap on inbound messages (nullptr: none)
     QStringList* problems = nullptr; // what else did not start (each becomes an alarm)
+    // The operator's role's authority for protocols that command with one (docs/roles.md); -1 when the site
+    // manages no roles (the protocol section's own setting stays).
+    int roleAuthority = -1;
 };
 
 // What a module needs to fill its panels.
@@ -83,6 +87,11 @@ public:
 
     // Capabilities. The production (tonnes, loads) of the machines this module's bridge reports, or nullptr.
     virtual ProductionModel* production() const { return nullptr; }
+
+    // The rows of the command gate's permission table for this protocol's commands (which roles may issue
+    // each; the stops among them with CommandPermissions::addStop). Called before start, also in builds of
+    // tests that start nothing.
+    virtual void addPermissions(CommandPermissions& table) const { (void)table; }
 
     // Once started: the headless monitor's commands and queries this protocol adds (app/HeadlessCommands.h),
     // besides stop and clear_stop, which every bridge answers.

@@ -4,6 +4,7 @@
 #include "app/ConsoleApp.h"
 #include "app/LogRouting.h"
 #include "app/MainWindow.h"
+#include "app/OperatorUi.h"
 #include "app/PassCountDock.h"
 #include "app/ProtocolModule.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
@@ -21,9 +22,11 @@
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
+#include "models/OperatorSession.h"
 #include "models/OwnPosition.h"
 #include "models/history/PgHistory.h"
 #include "models/recording/Recorder.h"
+#include "protocols/site/PamAuthenticator.h"
 #include "sim/SimulatedSite.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/FleetListWidget.h"
@@ -49,6 +52,7 @@ struct SiteRuntime::Impl {
     std::unique_ptr<sim::SimulatedSite> sim;
     FleetContext* ctx = nullptr;
     OwnPosition* own = nullptr;
+    OperatorSession* session = nullptr;
     std::vector<std::unique_ptr<ProtocolModule>> modules = makeProtocolModules();
     recording::Recorder* recorder = nullptr;        // the flight recorder of this run
     std::unique_ptr<HardwareStopButton> stopButton; // site configuration `stop_button`
@@ -118,6 +122,18 @@ void SiteRuntime::start() {
     if (!m_config.fleet.auditLog.empty())
         d.ctx->gate()->setAuditLogPath(QString::fromStdString(m_config.fleet.auditLog));
     d.ctx->gate()->setConfirmTimeoutMs(int(m_config.fleet.stopConfirmTimeoutSeconds * 1000));
+    for (const auto& m : d.modules)
+        m->addPermissions(d.ctx->gate()->permissions());
+    const OperatorIdentity who = identityOf(QString::fromStdString(currentOsUser().name));
+    d.session = new OperatorSession(
+        d.ctx->gate(), d.ctx->fleet(), d.ctx->alarms(),
+        [](const QString& user, const QString& password) {
+            return QString::fromStdString(
+                PamAuthenticator().authenticate(user.toStdString(), password.toStdString()));
+        },
+        [this](const QString& user) { return identityOf(user); }, this);
+    d.session->setOperator(who);
+    d.session->setIdleLockMs(int(m_config.roles.lockAfterIdleS * 1000));
     startRecorder();
     startControlRoomHistory();
 
@@ -125,7 +141,8 @@ void SiteRuntime::start() {
     // reason is an alarm.
     for (const auto& m : d.modules) {
         const QString e = m->start({m_config, d.frame, d.ctx, this,
-                                    d.recorder ? d.recorder->messageTap() : nullptr, &d.startProblems});
+                                    d.recorder ? d.recorder->messageTap() : nullptr, &d.startProblems,
+                                    m_config.roles.configured ? m_config.roles.authorityOf(who.role) : -1});
         if (!e.isEmpty())
             d.startProblems << e;
     }
@@ -185,7 +202,6 @@ void SiteRuntime::startControlRoomHistory() {
         hc.outboxPath = dir + QStringLiteral("/history-outbox-%1.sqlite").arg(hc.console);
     }
     AlarmModel* alarms = d.ctx->alarms();
-    alarms->setOperatorName(hc.console);
     auto* history = new PgHistory(hc, this);
     history->attach(alarms);
     history->attachGate(d.ctx->gate());
@@ -201,6 +217,26 @@ void SiteRuntime::startControlRoomHistory() {
     const QString e = history->start();
     if (!e.isEmpty())
         d.startProblems << tr("Control-room history: %1").arg(e);
+}
+
+// The console's name in audit lines and the shared history: the history's console name, else the host's.
+static QString consoleName(const SiteConfig& config) {
+    if (config.historyPostgres && !config.historyPostgres->console.empty())
+        return QString::fromStdString(config.historyPostgres->console);
+    return QSysInfo::machineHostName();
+}
+
+OperatorIdentity SiteRuntime::identityOf(const QString& user) const {
+    const std::string name = user.toStdString();
+    return {user, m_config.roles.roleOf(name, groupsOfUser(name)), consoleName(m_config)};
+}
+
+OperatorIdentity SiteRuntime::operatorIdentity() const {
+    return m_impl->ctx ? m_impl->ctx->gate()->operatorIdentity() : OperatorIdentity{};
+}
+
+OperatorSession* SiteRuntime::operatorSession() const {
+    return m_impl->session;
 }
 
 void SiteRuntime::stop() {
@@ -301,6 +337,8 @@ void SiteRuntime::populate(MainWindow& window) {
     d.connectBridges(window, map, passPanel, feed, this);
     d.connectAlarmsAndStops(window);
     d.earlyPress = new EarlyStopPress(window, d.ctx->gate());
+    if (d.session)
+        new OperatorUi(window, d.session);
     for (const QString& p : std::as_const(d.startProblems))
         window.statusBar()->showMessage(p, 15000);
 }

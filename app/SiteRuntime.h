@@ -1,6 +1,7 @@
 #pragma once
 // Everything that runs behind the window for one site: the built-in simulators (when enabled), the
 // protocol stacks on their worker threads, the bridges into Qt, and the models the panels show.
+#include "models/commands/CommandPermissions.h"
 #include "protocols/site/SiteConfig.h"
 
 #include <QJsonObject>
@@ -16,6 +17,7 @@ class QIODevice;
 namespace ocu {
 
 class HeadlessMonitor;
+class OperatorSession;
 class MainWindow;
 namespace recording {
 class Recorder;
@@ -32,6 +34,14 @@ public:
     void start();
     void stop();
     const SiteConfig& config() const { return m_config; }
+
+    // Who is at the console: the OS user running it at start, their role from the site's "roles" section
+    // (docs/roles.md), on the command gate (permissions, audit) and the alarms (acknowledgements,
+    // shelvings); the session switches operator and locks (passwords through PAM, service "ocu").
+    OperatorIdentity operatorIdentity() const;
+    OperatorSession* operatorSession() const;
+    // The identity the site's roles give an OS user at this console.
+    OperatorIdentity identityOf(const QString& user) const;
 
     // Fills the window's panels and connects STOP ALL, link indicators and alarms.
     void populate(MainWindow& window);

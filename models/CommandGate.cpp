@@ -70,6 +70,7 @@ struct CommandGate::Pending {
     QString target;      // the machine (or empty for STOP ALL)
     QJsonObject command; // the typed command as JSON (the audit line's "command")
     QString origin;
+    OperatorIdentity issuer; // the operator when it was issued
     QVector<QPointer<FleetBridge>> bridges;
     std::vector<std::optional<std::vector<TargetOutcome>>> outcomes; // per bridge; nullopt = not answered
     int answered = 0;
@@ -131,6 +132,7 @@ void CommandGate::dispatch(const OperatorCommand& command, const QString& origin
     p->target = commandTarget(command);
     p->command = toJson(command);
     p->origin = origin;
+    p->issuer = m_operator;
     p->onFinal = std::move(onFinal);
     p->since.start();
     for (FleetBridge* b : to)
@@ -216,7 +218,7 @@ void CommandGate::finish(quint64 id) {
     }
     finishNow(p->action, p->target, p->command, p->origin,
               CommandResult::fromTargets(targets, tr("no protocol bridge registered: nothing sent")),
-              p->onFinal);
+              p->onFinal, &p->issuer);
 }
 
 void CommandGate::finishNow(const OperatorCommand& command, const QString& origin, CommandResult r,
@@ -225,9 +227,10 @@ void CommandGate::finishNow(const OperatorCommand& command, const QString& origi
 }
 
 void CommandGate::finishNow(const QString& action, const QString& target, const QJsonObject& command,
-                            const QString& origin, CommandResult r, const ResultHandler& onFinal) {
+                            const QString& origin, CommandResult r, const ResultHandler& onFinal,
+                            const OperatorIdentity* issuer) {
     r.action = action;
-    audit(origin, action, target, command, r);
+    audit(origin, action, target, command, r, issuer ? *issuer : m_operator);
     const bool isStop = action == QLatin1String("stop_all") || action == QLatin1String("stop");
     if (onFinal)
         onFinal(r);
@@ -295,9 +298,37 @@ QString CommandGate::requestClearToken(const QString& id) {
     return token;
 }
 
+bool CommandGate::mayIssue(const QString& command, QString* why) const {
+    if (m_permissions.isStop(command))
+        return true; // never refused: locked or not, whatever the role
+    QString text;
+    if (m_locked)
+        text = tr("the console is locked: only stops are accepted");
+    else if (m_operator.role != OperatorRole::Admin || m_permissions.hasRow(command))
+        text = m_permissions.refusalText(command, m_operator.role);
+    if (why)
+        *why = text;
+    return text.isEmpty();
+}
+
+bool CommandGate::admit(const OperatorCommand& command, const QString& origin, const ResultHandler& onFinal) {
+    QString why;
+    if (mayIssue(commandName(command), &why))
+        return true;
+    const CommandRoute route = commandRoute(command);
+    const QString target = !route.machine.isEmpty() ? route.machine
+                           : route.protocol         ? toText(*route.protocol)
+                                                    : commandName(command);
+    finishNow(command, origin,
+              CommandResult::fromTargets({refusal(target, OutcomeReason::NotPermitted, why)}), onFinal);
+    return false;
+}
+
 void CommandGate::clearStop(const QString& id, const QString& token, const QString& origin,
                             ResultHandler onFinal) {
     const ClearStop clear{id, false, {}}; // the token is never audited
+    if (!admit(clear, origin, onFinal))
+        return;
     auto it = m_tokens.find(token);
     if (token.isEmpty() || it == m_tokens.end() || it->id != id || it->expiresMs < m_clock->nowMs()) {
         finishNow(clear, origin,
@@ -335,6 +366,8 @@ void CommandGate::command(const OperatorCommand& command, const QString& origin,
         return stopMachine(stop->id, origin, std::move(onFinal));
     if (const auto* clear = std::get_if<ClearStop>(&command))
         return clearStop(clear->id, clear->token, origin, std::move(onFinal));
+    if (!admit(command, origin, onFinal))
+        return;
     // The bridge owning the machine, else (commands for a whole stack: JAUS release_all, an OSYRIS text
     // to every station) the bridge of the command's protocol.
     const CommandRoute route = commandRoute(command);
@@ -502,11 +535,15 @@ void CommandGate::onCommandReported(const QString& action, const QString& target
 }
 
 void CommandGate::audit(const QString& origin, const QString& action, const QString& target,
-                        const QJsonObject& command, const CommandResult& result) {
+                        const QJsonObject& command, const CommandResult& result,
+                        const OperatorIdentity& issuer) {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     QJsonObject o;
     o[QStringLiteral("time")] = QDateTime::fromMSecsSinceEpoch(now, Qt::UTC).toString(Qt::ISODateWithMs);
     o[QStringLiteral("origin")] = origin;
+    o[QStringLiteral("operator")] = issuer.user;
+    o[QStringLiteral("role")] = issuer.roleText();
+    o[QStringLiteral("console")] = issuer.console;
     o[QStringLiteral("action")] = action;
     if (!target.isEmpty())
         o[QStringLiteral("target")] = target;
@@ -518,9 +555,11 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
 
     if (m_alarms) {
         // A command that did not reach every target is an alarm the operator must see; the rest is info.
-        FleetEvent ev =
-            makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit, target,
-                      QStringLiteral("%1 by %2: %3").arg(action, origin, result.message), origin);
+        QString text = QStringLiteral("%1 by %2: %3").arg(action, origin, result.message);
+        if (!issuer.user.isEmpty())
+            text += QStringLiteral(" (%1, %2)").arg(issuer.user, issuer.roleText());
+        FleetEvent ev = makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit,
+                                  target, text, origin);
         ev.timeMs = now;
         m_alarms->add(ev);
     }

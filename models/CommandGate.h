@@ -15,8 +15,15 @@
 // Confirmation comes from the machines' own reports: after a stop, each sent target is watched until its
 // bridge reports it stopped (FleetBridge::stopReported); the latency is logged as an event, and no report
 // within the confirmation time raises an alarm. Protocols without a stop state (OSYRIS) are said to be so.
+//
+// Who may issue what: the operator at the console (OperatorIdentity) and the one permission table
+// (CommandPermissions). A command the operator's role may not issue, or any command but a stop while the
+// console is locked, is refused before any bridge sees it (audited as not sent, reason NotPermitted, the
+// text naming the role needed). STOP ALL and per-machine stops always pass. Every audit line carries the
+// operator, role and console.
 #include "models/FleetBridge.h"
 #include "models/ModelClock.h"
+#include "models/commands/CommandPermissions.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -93,6 +100,17 @@ public:
     void refuse(const QString& action, const QString& target, OutcomeReason cause, const QString& reason,
                 const QString& origin, ResultHandler onFinal = {});
 
+    // Who is at the console (default: an unnamed admin, the console without roles) and whether it is locked
+    // (only stops pass). The table the modules add their rows to.
+    void setOperator(const OperatorIdentity& identity) { m_operator = identity; }
+    const OperatorIdentity& operatorIdentity() const { return m_operator; }
+    void setLocked(bool locked) { m_locked = locked; }
+    bool isLocked() const { return m_locked; }
+    CommandPermissions& permissions() { return m_permissions; }
+    const CommandPermissions& permissions() const { return m_permissions; }
+    // Whether the operator may issue `command` (commandName) now; `why` gets the refusal text.
+    bool mayIssue(const QString& command, QString* why = nullptr) const;
+
     // Commands whose final result is not in yet.
     int pendingCommands() const { return int(m_pending.size()); }
     // Stops sent and not yet confirmed by the machines (target ids).
@@ -123,9 +141,14 @@ private:
     void finish(quint64 id);
     void finishNow(const OperatorCommand& command, const QString& origin, CommandResult r,
                    const ResultHandler& onFinal);
+    // `issuer`: who issued the command (its audit names them, also when a switch of operator came between);
+    // null: the operator now.
     void finishNow(const QString& action, const QString& target, const QJsonObject& command,
-                   const QString& origin, CommandResult r, const ResultHandler& onFinal);
+                   const QString& origin, CommandResult r, const ResultHandler& onFinal,
+                   const OperatorIdentity* issuer = nullptr);
     FleetBridge* bridgeOf(Protocol protocol) const;
+    // Refuses (audited, nothing sent) and returns false when the operator may not issue `command` now.
+    bool admit(const OperatorCommand& command, const QString& origin, const ResultHandler& onFinal);
     // `bridge` answered for these targets (null when it is gone): it says whether it can confirm a stop.
     void watchStops(FleetBridge* bridge, const std::vector<TargetOutcome>& outcomes,
                     const QElapsedTimer& since);
@@ -135,12 +158,15 @@ private:
                       const QElapsedTimer& since);
     void onCommandReported(const QString& action, const QString& target, const QString& text);
     void audit(const QString& origin, const QString& action, const QString& target,
-               const QJsonObject& command, const CommandResult& result);
+               const QJsonObject& command, const CommandResult& result, const OperatorIdentity& issuer);
 
     QVector<QPointer<FleetBridge>> m_bridges;
     std::mutex m_earlyMutex;                  // stopAllEarly() from another thread
     std::vector<FleetBridge*> m_earlyBridges; // bridges that stop from the caller's thread
     QPointer<AlarmModel> m_alarms;
+    CommandPermissions m_permissions;
+    OperatorIdentity m_operator{QString(), OperatorRole::Admin, QString()};
+    bool m_locked = false;
     QString m_auditPath;
     qint64 m_tokenLifetimeMs = 10000;
     std::shared_ptr<const ModelClock> m_clock = systemModelClock();

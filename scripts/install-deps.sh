@@ -24,6 +24,8 @@ packages=(
   libgdal-dev
   # Shared control-room history: libpq to build; the server for the tests' throwaway instances.
   libpq-dev postgresql
+  # Operator sign-in, switch and unlock through PAM.
+  libpam0g-dev
   # PROJ for the coverage report's projected CRS (CSV, GeoTIFF).
   libproj-dev
   # RTSP server + appsrc (dev), x264enc (ugly), rtph264pay/rtspsrc/udp

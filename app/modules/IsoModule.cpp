@@ -102,6 +102,16 @@ public:
     }
 
     // assign, reset_assignment, production, auto_dispatch, shift_report (app/modules/IsoHeadless.h).
+    // The all-stop of a link is a stop; its removal, assignments: the dispatcher, the supervisor and the
+    // admin. Fetching the map changes nothing: every role.
+    void addPermissions(CommandPermissions& table) const override {
+        using R = OperatorRole;
+        table.addStop(QStringLiteral("all_stop_apply"));
+        for (const char* name : {"all_stop_remove", "assign", "reset_assignment"})
+            table.allow(QLatin1String(name), {R::Dispatcher, R::Supervisor, R::Admin});
+        table.allow(QStringLiteral("fetch_map"),
+                    QVector<R>(kAllOperatorRoles.begin(), kAllOperatorRoles.end()));
+    }
     void registerHeadless(HeadlessCommands& table) override {
         registerIsoHeadless(table,
                             {m_bridge, m_production, m_autoDispatch, m_fleet ? m_fleet->fleet() : nullptr});

@@ -30,7 +30,14 @@ public:
     QString start(const ModuleStart& s) override {
         if (!s.config.jaus)
             return {};
-        m_bridge = new JausBridge(*s.config.jaus, s.frame, s.owner);
+        jaus::JausConfig cfg = *s.config.jaus;
+        if (s.roleAuthority >= 0) { // the operator's role decides (AEP-4818 §4.3.2 bands)
+            cfg.authority = std::uint8_t(s.roleAuthority);
+            cfg.role = s.roleAuthority == 0    ? jaus::Role::Monitor
+                       : s.roleAuthority < 240 ? jaus::Role::PrimaryOperator
+                                               : jaus::Role::SafetyCritical;
+        }
+        m_bridge = new JausBridge(cfg, s.frame, s.owner);
         m_bridge->setMessageTap(s.tap);
         s.fleet->addBridge(m_bridge);
         return m_bridge->start();
@@ -81,6 +88,17 @@ public:
     QString notConfiguredText() const override {
         return QCoreApplication::translate(
             "ocu::SiteRuntime", "No JAUS section in the site configuration: no JAUS vehicles on this site.");
+    }
+
+    // Control, management and driving: the UGV operator, the supervisor and the admin. Ending a drive
+    // session sends zeros: a stop.
+    void addPermissions(CommandPermissions& table) const override {
+        using R = OperatorRole;
+        table.addStop(QStringLiteral("drive_stop"));
+        for (const char* name : {"request_control", "release_control", "release_all", "drive", "drive_start",
+                                 "resume", "standby", "reset"})
+            table.allow(QLatin1String(name), {R::UgvOperator, R::Supervisor, R::Admin});
+        table.allow(QStringLiteral("shutdown"), {R::Supervisor, R::Admin});
     }
 
     // To the bridge of the machine named by "id" (asked for when missing); video_status, video_play and

@@ -60,6 +60,12 @@ public:
 
 #ifdef OCU_HAVE_COVERAGE
     // The compaction job's "coverage_report".
+    // Crew messages: the site manager, the supervisor and the admin; a station ping changes nothing.
+    void addPermissions(CommandPermissions& table) const override {
+        using R = OperatorRole;
+        table.allow(QStringLiteral("send_text"), {R::SiteManager, R::Supervisor, R::Admin});
+        table.allow(QStringLiteral("ping"), QVector<R>(kAllOperatorRoles.begin(), kAllOperatorRoles.end()));
+    }
     void registerHeadless(HeadlessCommands& table) override {
         registerCompactionHeadless(table, m_compaction);
     }

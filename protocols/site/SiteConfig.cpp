@@ -220,6 +220,8 @@ static SiteConfig readSite(const ConfigDocument& doc, ConfigErrors& errors, cons
     cfg.compaction.configFile = fileName;
     readCompaction(root, cfg, fileName);
     readHistory(root, cfg);
+    if (auto r = root.object("roles"))
+        cfg.roles = parseRolesConfig(*r);
 #ifdef OCU_SITE_HAVE_JAUS
     if (auto s = root.object("jaus"))
         cfg.jaus = jaus::parseJausConfig(*s);

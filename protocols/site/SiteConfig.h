@@ -5,6 +5,7 @@
 #include "protocols/common/ConfigReader.h"
 #include "protocols/common/GeoFrame.h"
 #include "protocols/common/Result.h"
+#include "protocols/common/OperatorRoles.h"
 
 #include <optional>
 #include <string>
@@ -136,6 +137,7 @@ struct SiteConfig {
     TerrainConfig terrain;
     std::optional<PostgresHistoryConfig> historyPostgres;
     CompactionConfig compaction;
+    RolesConfig roles; // who may do what (docs/roles.md)
 #ifdef OCU_SITE_HAVE_JAUS
     std::optional<jaus::JausConfig> jaus;
 #endif

@@ -114,6 +114,39 @@ private slots:
         bridge.stop();
     }
 
+    // A command the operator's role may not issue is refused at the gate and never reaches the wire (the
+    // vehicle receives no RequestControl); STOP ALL from a monitor at a locked console does (SetEmergency).
+    void refusedByRoleSendsNothing() {
+        foreign::ForeignJausVehicle vehicle(foreign::VehicleOptions{});
+        AlarmModel alarms;
+        CommandGate gate(&alarms);
+        JausBridge bridge(consoleConfig(vehicle.port(), findFreeUdpPort()),
+                          GeoFrame(GeoPoint{-23.36, 119.73, 550}));
+        gate.addBridge(&bridge);
+        gate.permissions().allow(QStringLiteral("request_control"),
+                                 {OperatorRole::UgvOperator, OperatorRole::Supervisor, OperatorRole::Admin});
+        QVERIFY(bridge.start().isEmpty());
+        const QString id = QStringLiteral("jaus:126");
+        QTRY_VERIFY_WITH_TIMEOUT(bridge.subsystem(126) && bridge.subsystem(126)->link == JausLink::Up &&
+                                     !bridge.subsystem(126)->services.isEmpty(),
+                                 20000);
+        gate.setOperator({QStringLiteral("mon"), OperatorRole::Monitor, QStringLiteral("ocu-151")});
+        const CommandResult r =
+            gateResult([&](auto h) { gate.command(RequestControl{id}, QStringLiteral("test"), h); });
+        QVERIFY(!r.ok);
+        QCOMPARE(r.targets.first().cause, OutcomeReason::NotPermitted);
+        QTest::qWait(500);
+        QCOMPARE(vehicle.received(msg::RequestControl), 0);
+        QCOMPARE(vehicle.controller(), 0u);
+
+        gate.setLocked(true);
+        QVERIFY(gateResult([&](auto h) { gate.stopAll(QStringLiteral("test"), h); }).ok);
+        QTRY_VERIFY_WITH_TIMEOUT(vehicle.received(msg::SetEmergency) > 0, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(vehicle.status(), std::uint8_t(5), 10000);
+        QCOMPARE(vehicle.received(msg::RequestControl), 0);
+        bridge.stop();
+    }
+
     // The drive commands' results say what went on the wire: refused without control; the
     // session start and the demand sent when the socket took them (the vehicle receives them); the session
     // end noted with its reason; with the stack stopped, nothing is sent and the result says why.

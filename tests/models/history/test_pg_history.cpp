@@ -119,7 +119,9 @@ private slots:
                  QStringLiteral("1"));
 
         // The command audit goes in whole (the gate's JSON line as jsonb), once.
+        // It names the operator and role beside the console.
         CommandGate gate(&a.alarms);
+        gate.setOperator({QStringLiteral("carol"), OperatorRole::Dispatcher, QStringLiteral("dispatcher")});
         a.history->attachGate(&gate);
         gate.stopMachine(QStringLiteral("no-such-machine"), QStringLiteral("test"));
         QTRY_COMPARE_WITH_TIMEOUT(
@@ -127,7 +129,8 @@ private slots:
                    QStringLiteral(
                        "SELECT count(*) FROM ocu_history WHERE kind = 'audit' AND console = 'dispatcher' "
                        "AND details->>'action' = 'stop' AND details->>'target' = 'no-such-machine' AND "
-                       "NOT (details->>'ok')::boolean")),
+                       "NOT (details->>'ok')::boolean AND details->>'operator' = 'carol' AND "
+                       "details->>'role' = 'dispatcher'")),
             QStringLiteral("1"), 10000);
     }
 

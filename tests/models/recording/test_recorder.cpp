@@ -758,6 +758,11 @@ private slots:
         FleetEvent alarm =
             makeEvent(EventSeverity::Alarm, EventKind::HealthFault, m.id, QStringLiteral("fault"));
         ctx.alarms()->add(alarm);
+        // Who is at the console: in the acknowledgement and the audit line.
+        const OperatorIdentity who{QStringLiteral("alice"), OperatorRole::Supervisor,
+                                   QStringLiteral("ocu-2")};
+        ctx.gate()->setOperator(who);
+        ctx.alarms()->setOperatorName(who.byText());
         ctx.alarms()->acknowledge(0);
         const QString key = ctx.alarms()->keyAt(0);
         ctx.gate()->stopMachine(QStringLiteral("no-such-machine"), QStringLiteral("test"));
@@ -778,7 +783,7 @@ private slots:
         const auto acks = r->acks(r->startMs() - 1, r->endMs());
         QCOMPARE(acks.size(), 1);
         QCOMPARE(acks.first().key, key);
-        QVERIFY(!acks.first().by.isEmpty());
+        QCOMPARE(acks.first().by, QStringLiteral("alice (supervisor) @ ocu-2"));
         const auto cmds = r->commands(r->startMs() - 1, r->endMs());
         QCOMPARE(cmds.size(), 1);
         QCOMPARE(cmds.first().origin, QStringLiteral("test"));
@@ -787,6 +792,9 @@ private slots:
         const QJsonObject audit = QJsonDocument::fromJson(cmds.first().audit.toUtf8()).object();
         QCOMPARE(audit.value(QStringLiteral("target")).toString(), QStringLiteral("no-such-machine"));
         QVERIFY(audit.contains(QStringLiteral("targets")));
+        QCOMPARE(audit.value(QStringLiteral("operator")).toString(), QStringLiteral("alice"));
+        QCOMPARE(audit.value(QStringLiteral("role")).toString(), QStringLiteral("supervisor"));
+        QCOMPARE(audit.value(QStringLiteral("console")).toString(), QStringLiteral("ocu-2"));
     }
 
     // The writer behind: dropped records reach the operator as a warning with the count.

@@ -39,6 +39,46 @@ private slots:
         QVERIFY(QString::fromStdString(bad.error()).contains("record.max_age_days"));
         QVERIFY(QString::fromStdString(bad.error()).contains("record.keep"));
     }
+    // Users and groups mapped to roles; no entry = monitor; strict errors with file:line.
+    void rolesSection() {
+        auto none = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}}})", "n.json");
+        QVERIFY(none.ok());
+        QVERIFY(!none->roles.configured);
+        QCOMPARE(none->roles.roleOf("anyone", {}), OperatorRole::Admin);
+        auto cfg = parseSiteConfig(R"({"site":{"origin":{"latitude":1,"longitude":2}},
+            "roles":{"users":{"alice":"supervisor","bob":"monitor"},
+                     "groups":{"ocu-dispatch":"dispatcher","ugv":"ugv_operator","paving":"site_manager"},
+                     "authority":{"ugv_operator":210,"supervisor":240},"lock_after_idle_s":300}})",
+                                   "r.json");
+        QVERIFY2(cfg.ok(), cfg.ok() ? "" : cfg.error().c_str());
+        const RolesConfig& r = cfg->roles;
+        QVERIFY(r.configured);
+        QCOMPARE(r.roleOf("alice", {"ugv"}), OperatorRole::Supervisor); // the user's own entry first
+        QCOMPARE(r.roleOf("bob", {"ugv"}), OperatorRole::Monitor);
+        QCOMPARE(r.roleOf("carol", {"paving", "ocu-dispatch"}), OperatorRole::SiteManager); // highest role
+        QCOMPARE(r.roleOf("dave", {"ugv", "users"}), OperatorRole::UgvOperator);
+        QCOMPARE(r.roleOf("erin", {"users"}), OperatorRole::Monitor); // no role: monitor
+        QCOMPARE(r.authorityOf(OperatorRole::UgvOperator), 210);
+        QCOMPARE(r.authorityOf(OperatorRole::Supervisor), 240);
+        QCOMPARE(r.authorityOf(OperatorRole::Admin), 230); // default
+        QCOMPARE(r.authorityOf(OperatorRole::Monitor), 0);
+        QCOMPARE(r.lockAfterIdleS, 300.0);
+        const char* text = "{\"site\":{\"origin\":{\"latitude\":1,\"longitude\":2}},\n"
+                           "\"roles\":{\n"
+                           "  \"users\":{\"alice\":\"superviser\"},\n"
+                           "  \"authority\":{\"admin\":100},\n"
+                           "  \"group\":{}}}\n";
+        auto bad = parseSiteConfig(text, "bad.json");
+        QVERIFY(!bad.ok());
+        const QString e = QString::fromStdString(bad.error());
+        QVERIFY2(e.contains("bad.json:3: roles.users.alice: \"superviser\" is not one of"), qPrintable(e));
+        QVERIFY2(e.contains("bad.json:4: roles.authority.admin: authority 100 is in no OCU band"),
+                 qPrintable(e));
+        QVERIFY2(e.contains("bad.json:5: roles.group: unknown key \"group\""), qPrintable(e));
+        QCOMPARE(roleFromName("ugv_operator"), std::optional(OperatorRole::UgvOperator));
+        for (OperatorRole role : kAllOperatorRoles)
+            QCOMPARE(roleFromName(roleName(role)), std::optional(role));
+    }
     void misspelledKeyNamesKeyAndLine() {
         const char* text = "{\n"
                            "  \"site\": {\n"
