@@ -8,10 +8,10 @@ namespace ocu::recording {
 
 namespace {
 
-constexpr int kHeader = 3 * 8 + 6 * 4;
+constexpr int kGridHeader = 3 * 8 + 6 * 4;
 constexpr qint64 kMaxCells = qint64(64) * 1024 * 1024; // 128 MB of counts: far beyond any site
 
-template <class T> void put(QByteArray& out, T v) {
+template <class T> void putLe(QByteArray& out, T v) {
     char b[sizeof(T)];
     if constexpr (std::is_same_v<T, double>) {
         quint64 u;
@@ -39,23 +39,23 @@ template <class T> T get(const char*& p) {
 
 QByteArray encodePassCounts(const PassCountChange& c) {
     QByteArray out;
-    out.reserve(kHeader + qsizetype(c.counts.size()) * 2);
-    put<double>(out, c.origin.x());
-    put<double>(out, c.origin.y());
-    put<double>(out, c.cellSize);
-    put<qint32>(out, c.columns);
-    put<qint32>(out, c.rows);
-    put<qint32>(out, c.cells.x());
-    put<qint32>(out, c.cells.y());
-    put<qint32>(out, c.cells.width());
-    put<qint32>(out, c.cells.height());
+    out.reserve(kGridHeader + qsizetype(c.counts.size()) * 2);
+    putLe<double>(out, c.origin.x());
+    putLe<double>(out, c.origin.y());
+    putLe<double>(out, c.cellSize);
+    putLe<qint32>(out, c.columns);
+    putLe<qint32>(out, c.rows);
+    putLe<qint32>(out, c.cells.x());
+    putLe<qint32>(out, c.cells.y());
+    putLe<qint32>(out, c.cells.width());
+    putLe<qint32>(out, c.cells.height());
     for (std::uint16_t v : c.counts)
-        put<quint16>(out, v);
+        putLe<quint16>(out, v);
     return out;
 }
 
 bool decodePassCounts(const QByteArray& bytes, PassCountChange& out) {
-    if (bytes.size() < kHeader)
+    if (bytes.size() < kGridHeader)
         return false;
     const char* p = bytes.constData();
     const double ox = get<double>(p), oy = get<double>(p);
@@ -67,7 +67,7 @@ bool decodePassCounts(const QByteArray& bytes, PassCountChange& out) {
     if (!(out.cellSize > 0) || out.columns < 0 || out.rows < 0 ||
         qint64(out.columns) * out.rows > kMaxCells || x < 0 || y < 0 || w < 0 || h < 0 ||
         qint64(x) + w > out.columns || qint64(y) + h > out.rows ||
-        bytes.size() - kHeader != qint64(w) * h * 2)
+        bytes.size() - kGridHeader != qint64(w) * h * 2)
         return false;
     out.cells = QRect(x, y, w, h);
     out.counts.resize(std::size_t(w) * std::size_t(h));

@@ -11,7 +11,7 @@ namespace ocu::sim {
 using namespace ocu::jaus;
 
 namespace {
-constexpr const char* kLog = "ocu.sim.jaus";
+constexpr const char* kVideoLog = "ocu.sim.jaus";
 constexpr double kPanLimit = 170 * std::numbers::pi / 180, kTiltMin = -45 * std::numbers::pi / 180,
                  kTiltMax = 30 * std::numbers::pi / 180;
 constexpr double kMaxRate = 1.5;        // rad/s, the unit's own limit
@@ -226,8 +226,9 @@ void UgvVideo::registerStreams(TimePoint now) {
                 const Bytes remove = encode(RemoveDigitalResourceEndpoint{*r.endpointId, m_nextRequest++});
                 auto m = decodeRemoveDigitalResourceEndpoint(remove);
                 if (m && drdRemove(*m))
-                    logInfo(kLog, "UGV " + std::to_string(m_ss) + ": stream of sensor " +
-                                      std::to_string(sensor) + " removed from Digital Resource Discovery");
+                    logInfo(kVideoLog, "UGV " + std::to_string(m_ss) + ": stream of sensor " +
+                                           std::to_string(sensor) +
+                                           " removed from Digital Resource Discovery");
             }
             r.endpointId.reset();
             r.sent.clear();
