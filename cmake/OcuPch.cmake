@@ -80,15 +80,6 @@ function(_ocu_pch_qt_closure target out_var)
   set(${out_var} ${found} PARENT_SCOPE)
 endfunction()
 
-function(_ocu_pch_targets_in dir out_var)
-  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
-  get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
-  foreach(s IN LISTS subdirs)
-    _ocu_pch_targets_in(${s} sub)
-    list(APPEND targets ${sub})
-  endforeach()
-  set(${out_var} ${targets} PARENT_SCOPE)
-endfunction()
 
 # Loading a PCH costs ~0.7 s CPU even for an empty TU. AUTOMOC's mocs_compilation.cpp is empty when no header of
 # the target (listed, or beside a listed .cpp, as AUTOMOC looks) declares Q_OBJECT & co (tests include their own
@@ -137,7 +128,7 @@ function(ocu_apply_pch)
     target_precompile_headers(ocu_pch_${lm} PRIVATE ${hdrs_${m}})
   endforeach()
 
-  _ocu_pch_targets_in(${CMAKE_SOURCE_DIR} targets)
+  ocu_targets_in(${CMAKE_SOURCE_DIR} targets)
   set(n 0)
   foreach(t IN LISTS targets)
     get_target_property(type ${t} TYPE)

@@ -176,3 +176,15 @@ ${calls}    return out;
 " @ONLY)
   target_sources(${R_TARGET} PRIVATE ${out})
 endfunction()
+
+# ocu_targets_in(DIR OUT): every target defined in DIR and its subdirectories (for passes over all targets at
+# the end of the top CMakeLists.txt: precompiled headers, unity builds).
+function(ocu_targets_in dir out_var)
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(s IN LISTS subdirs)
+    ocu_targets_in(${s} sub)
+    list(APPEND targets ${sub})
+  endforeach()
+  set(${out_var} ${targets} PARENT_SCOPE)
+endfunction()
