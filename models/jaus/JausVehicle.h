@@ -2,6 +2,8 @@
 // Qt-typed views of the JAUS picture for the JAUS panels (widgets/jaus): one vehicle (subsystem) as this
 // console knows it, a JAUS event about one, a drive demand, and this console's own JAUS identity. The JAUS
 // bridge fills them on the GUI thread from the stack's snapshots; the panels never see a protocols/jaus type.
+#include "models/jaus/JausMission.h"
+
 #include <QMetaType>
 #include <QPair>
 #include <QString>
@@ -108,6 +110,7 @@ struct JausVehicle {
     JausAddress mobilityComponent; // zero until discovered
     QVector<JausNodeServices> services;
     QVector<JausVideoEndpoint> videoEndpoints; // empty until announced or configured
+    JausMission mission;                       // state None until this console uploads one
 };
 
 enum class JausEventSeverity { Info, Warning, Error };
