@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Screenshots of the 2D map and the 3D view of the built-in simulated site and of `ocu-sim`
 # with 1,000 trucks (10 Hz), 20 UGVs and 3 rollers, at 1366x768 and 1920x1080, written to docs/.
-# Usage: scripts/screenshots-issue19.sh [BUILD_DIR] [SETTLE_S]
+# Usage: scripts/screenshots-site-views.sh [BUILD_DIR] [SETTLE_S]
 set -euo pipefail
 build=${1:-build}
 settle=${2:-15}
@@ -18,7 +18,7 @@ shot() { # out view size [extra args...]
 }
 for size in 1366x768 1920x1080; do
   shot "docs/map-2d-site-$size.png" map "$size"
-  shot "docs/issue19-3d-$size.png" 3d "$size"
+  shot "docs/view-3d-$size.png" 3d "$size"
 done
 "$build/app/ocu-sim" --trucks 1000 --position-rate 10 --ugvs 20 --rollers 3 --write-config "$work/site.json" \
   >"$work/sim.log" 2>&1 &
@@ -29,5 +29,5 @@ for _ in $(seq 100); do
 done
 for size in 1366x768 1920x1080; do
   shot "docs/map-2d-1000trucks-$size.png" map "$size" --config "$work/site.json" --no-sim
-  shot "docs/issue19-3d-1000trucks-$size.png" 3d "$size" --config "$work/site.json" --no-sim
+  shot "docs/view-3d-1000trucks-$size.png" 3d "$size" --config "$work/site.json" --no-sim
 done
