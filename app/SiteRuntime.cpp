@@ -136,6 +136,8 @@ void SiteRuntime::start() {
     d.session->setIdleLockMs(int(m_config.roles.lockAfterIdleS * 1000));
     startRecorder();
     startControlRoomHistory();
+    // After the recorder and the history start, so that both keep who opened the console.
+    d.ctx->gate()->auditSession(QStringLiteral("sign_in"), who, true, tr("console started"));
 
     // A stack that cannot start (port taken, bad URL) does not stop the console: its link shows down and the
     // reason is an alarm.

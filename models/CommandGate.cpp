@@ -536,7 +536,7 @@ void CommandGate::onCommandReported(const QString& action, const QString& target
 
 void CommandGate::audit(const QString& origin, const QString& action, const QString& target,
                         const QJsonObject& command, const CommandResult& result,
-                        const OperatorIdentity& issuer) {
+                        const OperatorIdentity& issuer, EventSeverity failed) {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     QJsonObject o;
     o[QStringLiteral("time")] = QDateTime::fromMSecsSinceEpoch(now, Qt::UTC).toString(Qt::ISODateWithMs);
@@ -558,8 +558,8 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
         QString text = QStringLiteral("%1 by %2: %3").arg(action, origin, result.message);
         if (!issuer.user.isEmpty())
             text += QStringLiteral(" (%1, %2)").arg(issuer.user, issuer.roleText());
-        FleetEvent ev = makeEvent(result.ok ? EventSeverity::Info : EventSeverity::Alarm, EventKind::Audit,
-                                  target, text, origin);
+        FleetEvent ev =
+            makeEvent(result.ok ? EventSeverity::Info : failed, EventKind::Audit, target, text, origin);
         ev.timeMs = now;
         m_alarms->add(ev);
     }
@@ -569,6 +569,14 @@ void CommandGate::audit(const QString& origin, const QString& action, const QStr
             f.write(line.toUtf8() + '\n');
     }
     emit audited(line);
+}
+
+void CommandGate::auditSession(const QString& action, const OperatorIdentity& who, bool ok,
+                               const QString& message) {
+    CommandResult r;
+    r.ok = ok;
+    r.message = message;
+    audit(QStringLiteral("gui"), action, QString(), QJsonObject(), r, who, EventSeverity::Info);
 }
 
 } // namespace ocu

@@ -106,6 +106,10 @@ public:
     const OperatorIdentity& operatorIdentity() const { return m_operator; }
     void setLocked(bool locked) { m_locked = locked; }
     bool isLocked() const { return m_locked; }
+    // Who signed in or out, and when the console was locked or unlocked: an audit record like a command's
+    // (action "sign_in", "sign_out", "lock", "unlock"), with no machine target. A refusal (wrong password) is
+    // information in the event log, not an alarm: it asks no action of the operator.
+    void auditSession(const QString& action, const OperatorIdentity& who, bool ok, const QString& message);
     CommandPermissions& permissions() { return m_permissions; }
     const CommandPermissions& permissions() const { return m_permissions; }
     // Whether the operator may issue `command` (commandName) now; `why` gets the refusal text.
@@ -158,7 +162,8 @@ private:
                       const QElapsedTimer& since);
     void onCommandReported(const QString& action, const QString& target, const QString& text);
     void audit(const QString& origin, const QString& action, const QString& target,
-               const QJsonObject& command, const CommandResult& result, const OperatorIdentity& issuer);
+               const QJsonObject& command, const CommandResult& result, const OperatorIdentity& issuer,
+               EventSeverity failed = EventSeverity::Alarm);
 
     QVector<QPointer<FleetBridge>> m_bridges;
     std::mutex m_earlyMutex;                  // stopAllEarly() from another thread

@@ -11,7 +11,8 @@ OperatorSession::OperatorSession(CommandGate* gate, FleetModel* fleet, AlarmMode
     : QObject(parent), m_gate(gate), m_fleet(fleet), m_alarms(alarms),
       m_authenticate(std::move(authenticate)), m_identityOf(std::move(identityOf)) {
     m_idle.setSingleShot(true);
-    connect(&m_idle, &QTimer::timeout, this, &OperatorSession::lock);
+    connect(&m_idle, &QTimer::timeout, this,
+            [this] { lockBecause(tr("idle for %1 s").arg(m_idleMs / 1000)); });
 }
 
 OperatorIdentity OperatorSession::current() const {
@@ -39,12 +40,15 @@ QStringList OperatorSession::controlToRelease(const OperatorIdentity& next) cons
 OperatorSession::Switch OperatorSession::switchTo(const QString& user, const QString& password,
                                                   const ConfirmRelease& confirm, QString* why) {
     const QString refused = m_authenticate ? m_authenticate(user, password) : tr("no authentication");
+    const OperatorIdentity next = m_identityOf(user);
     if (!refused.isEmpty()) {
+        if (m_gate)
+            m_gate->auditSession(QStringLiteral("sign_in"), next, false,
+                                 tr("sign-in refused: %1").arg(refused));
         if (why)
             *why = refused;
         return Switch::WrongPassword;
     }
-    const OperatorIdentity next = m_identityOf(user);
     const QStringList release = controlToRelease(next);
     if (!release.isEmpty() && (!confirm || !confirm(release))) {
         if (why)
@@ -58,7 +62,12 @@ OperatorSession::Switch OperatorSession::switchTo(const QString& user, const QSt
     // Released by the operator who held it (audited as theirs), before the next one is in.
     for (const QString& id : release)
         m_gate->command(ReleaseControl{id}, QStringLiteral("switch"));
+    const OperatorIdentity previous = current();
+    m_gate->auditSession(QStringLiteral("sign_out"), previous, true,
+                         tr("operator switched to %1").arg(next.user));
     setOperator(next);
+    m_gate->auditSession(QStringLiteral("sign_in"), next, true,
+                         tr("signed in as %1 after %2").arg(next.roleText(), previous.user));
     if (wasLocked)
         emit lockedChanged(false);
     activity();
@@ -66,9 +75,14 @@ OperatorSession::Switch OperatorSession::switchTo(const QString& user, const QSt
 }
 
 void OperatorSession::lock() {
+    lockBecause(tr("on demand"));
+}
+
+void OperatorSession::lockBecause(const QString& why) {
     if (!m_gate || m_gate->isLocked())
         return;
     m_gate->setLocked(true);
+    m_gate->auditSession(QStringLiteral("lock"), current(), true, tr("console locked: %1").arg(why));
     m_idle.stop();
     emit lockedChanged(true);
 }
@@ -79,11 +93,14 @@ bool OperatorSession::unlock(const QString& password, QString* why) {
     const QString refused =
         m_authenticate ? m_authenticate(current().user, password) : tr("no authentication");
     if (!refused.isEmpty()) {
+        m_gate->auditSession(QStringLiteral("unlock"), current(), false,
+                             tr("unlock refused: %1").arg(refused));
         if (why)
             *why = refused;
         return false;
     }
     m_gate->setLocked(false);
+    m_gate->auditSession(QStringLiteral("unlock"), current(), true, tr("console unlocked"));
     emit lockedChanged(false);
     activity();
     return true;

@@ -5,7 +5,7 @@
 // machines held by the console is kept across the switch when the next person's role may take control,
 // and otherwise released (as the previous operator, audited) after the caller's confirmation. The lock
 // (on demand, or after the idle time) leaves only stops to the command gate; the same person's password
-// unlocks it.
+// unlocks it. Sign-in, sign-out, lock and unlock (and their refusals) are audited with the person's name.
 #include "models/commands/CommandPermissions.h"
 
 #include <QObject>
@@ -59,6 +59,8 @@ signals:
     void lockedChanged(bool locked);
 
 private:
+    void lockBecause(const QString& why);
+
     QPointer<CommandGate> m_gate;
     QPointer<FleetModel> m_fleet;
     QPointer<AlarmModel> m_alarms;
