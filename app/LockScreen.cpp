@@ -1,5 +1,6 @@
 #include "app/LockScreen.h"
 
+#include <QApplication>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -66,6 +67,22 @@ bool LockScreen::eventFilter(QObject* watched, QEvent* event) {
 void LockScreen::showEvent(QShowEvent* event) {
     place();
     QWidget::showEvent(event);
+    m_focusWatch = connect(qApp, &QApplication::focusChanged, this,
+                           [this](QWidget*, QWidget* now) { keepFocusOff(now); });
+    keepFocusOff(QApplication::focusWidget());
+}
+
+void LockScreen::hideEvent(QHideEvent* event) {
+    disconnect(m_focusWatch);
+    QWidget::hideEvent(event);
+}
+
+void LockScreen::keepFocusOff(QWidget* now) {
+    if (!now || now == this || isAncestorOf(now) || !m_window->isAncestorOf(now))
+        return; // ours, or another window (a dialog, a floating panel: the gate refuses its commands)
+    if (m_keep && (now == m_keep || m_keep->isAncestorOf(now)))
+        return; // STOP ALL and the safety toolbar stay reachable
+    m_unlock->setFocus(Qt::OtherFocusReason);
 }
 
 void LockScreen::paintEvent(QPaintEvent*) {

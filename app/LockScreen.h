@@ -1,8 +1,8 @@
 #pragma once
 // The locked console: a veil over the window below the safety toolbar. The picture stays visible under it
 // and keeps moving, but takes no input (read-only); STOP ALL stays visible above it and reachable by its
-// keys (F12, Ctrl+Shift+Space) and by Tab. The veil says who locked it and offers Unlock and Switch
-// operator.
+// keys (F12, Ctrl+Shift+Space) and by Tab. Keyboard focus stays on the veil and the safety toolbar: Tab or a
+// click cannot reach a widget under it. The veil says who locked it and offers Unlock and Switch operator.
 #include <QWidget>
 
 class QLabel;
@@ -28,14 +28,18 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
     void paintEvent(QPaintEvent* event) override;
     void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
 
 private:
     void place();
+    // Focus that lands on a widget under the veil goes to Unlock instead.
+    void keepFocusOff(QWidget* now);
     QWidget* m_window;
     QWidget* m_keep;
     QLabel* m_who = nullptr;
     QPushButton* m_unlock = nullptr;
     QPushButton* m_switch = nullptr;
+    QMetaObject::Connection m_focusWatch;
 };
 
 } // namespace ocu

@@ -112,6 +112,48 @@ private slots:
         QTRY_VERIFY(!veil->isVisible());
     }
 
+    // Tab and Shift+Tab on a locked console go round the veil and the safety toolbar only.
+    void focusStaysOnTheVeilAndTheSafetyToolbar() {
+        Console c;
+        c.window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&c.window));
+        QWidget* behind = nullptr;
+        for (QWidget* w : c.window.findChildren<QWidget*>())
+            if (w->isVisible() && w->focusPolicy() & Qt::TabFocus &&
+                !w->objectName().contains(QLatin1String("stop")) &&
+                !qobject_cast<QToolBar*>(w->parentWidget())) {
+                behind = w;
+                break;
+            }
+        QVERIFY(behind);
+        c.action("action-lock")->trigger();
+        LockScreen* veil = c.ui->lockScreen();
+        QTRY_VERIFY(veil->isVisible());
+        auto* toolbar = c.window.findChild<QToolBar*>(QStringLiteral("toolbar-safety"));
+        QVERIFY(toolbar);
+        const auto allowed = [&](QWidget* f) {
+            return f && (veil->isAncestorOf(f) || f == veil || toolbar->isAncestorOf(f) || f == toolbar);
+        };
+        QTRY_VERIFY(allowed(QApplication::focusWidget()));
+        behind->setFocus(Qt::MouseFocusReason); // a click or a shortcut that would focus a panel
+        QVERIFY2(allowed(QApplication::focusWidget()), qPrintable(QApplication::focusWidget()->objectName()));
+        bool reachedStop = false;
+        for (int i = 0; i < 40; ++i) {
+            QTest::keyClick(QApplication::focusWidget(), i % 10 == 9 ? Qt::Key_Backtab : Qt::Key_Tab);
+            QWidget* f = QApplication::focusWidget();
+            QVERIFY2(allowed(f),
+                     qPrintable(QStringLiteral("Tab reached %1 (%2) under the veil")
+                                    .arg(f ? f->objectName() : QStringLiteral("nothing"),
+                                         f ? QString::fromLatin1(f->metaObject()->className()) : QString())));
+            reachedStop = reachedStop || f->objectName() == QLatin1String("button-stop-all");
+        }
+        QVERIFY2(reachedStop, "STOP ALL not reachable by Tab on the locked console");
+        QVERIFY(c.session->unlock(QStringLiteral("a-pass")));
+        QTRY_VERIFY(!veil->isVisible());
+        behind->setFocus(Qt::MouseFocusReason);
+        QCOMPARE(QApplication::focusWidget(), behind);
+    }
+
     void switchOperatorDialog() {
         Console c;
         std::unique_ptr<SignInDialog> d(c.ui->makeSwitchDialog());
@@ -170,9 +212,26 @@ private slots:
             saveShot(window.grab().toImage(), QStringLiteral("lock-screen-site-1366x768.png"));
             QTest::keyClick(&window, Qt::Key_F12);
             QFile audit(recordings.filePath(QStringLiteral("audit.jsonl")));
-            QTRY_VERIFY_WITH_TIMEOUT(audit.size() > 0, 5000);
+            const auto actions = [&audit] {
+                QStringList out;
+                if (audit.open(QIODevice::ReadOnly)) {
+                    for (const QByteArray& l : audit.readAll().split('\n'))
+                        if (!l.isEmpty())
+                            out << QJsonDocument::fromJson(l)
+                                       .object()
+                                       .value(QStringLiteral("action"))
+                                       .toString();
+                    audit.close();
+                }
+                return out;
+            };
+            // The console's start and the lock are the person's too.
+            QTRY_COMPARE_WITH_TIMEOUT(
+                actions(),
+                (QStringList{QStringLiteral("sign_in"), QStringLiteral("lock"), QStringLiteral("stop_all")}),
+                5000);
             QVERIFY(audit.open(QIODevice::ReadOnly));
-            const QJsonObject line = QJsonDocument::fromJson(audit.readLine()).object();
+            const QJsonObject line = QJsonDocument::fromJson(audit.readAll().split('\n').at(2)).object();
             QCOMPARE(line.value(QStringLiteral("action")).toString(), QStringLiteral("stop_all"));
             QCOMPARE(line.value(QStringLiteral("role")).toString(), QStringLiteral("supervisor"));
             QCOMPARE(line.value(QStringLiteral("operator")).toString(), runtime.operatorIdentity().user);
