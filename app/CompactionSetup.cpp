@@ -50,11 +50,15 @@ void registerCompactionHeadless(HeadlessCommands& table, CompactionSession* sess
     if (!session)
         return;
     QPointer<CompactionSession> s(session);
-    table.addLocal(QStringLiteral("coverage_report"), [s](const QJsonObject& cmd) {
-        return s ? s->reportCommand(cmd)
-                 : QJsonObject{{QStringLiteral("ok"), false},
-                               {QStringLiteral("message"), QStringLiteral("the compaction job has ended")}};
-    });
+    table.addLocal(
+        QStringLiteral("coverage_report"),
+        [s](const QJsonObject& cmd) {
+            return s ? s->reportCommand(cmd)
+                     : QJsonObject{
+                           {QStringLiteral("ok"), false},
+                           {QStringLiteral("message"), QStringLiteral("the compaction job has ended")}};
+        },
+        HeadlessCommands::always); // writes the job's proof of compaction: the permission table decides who
 }
 
 void watchCompactionCounts(CompactionSession* session, QObject* fleetBridge) {

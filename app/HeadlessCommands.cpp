@@ -10,12 +10,12 @@ namespace ocu {
 HeadlessCommands::HeadlessCommands(CommandGate* gate, LineSink sink, QObject* parent)
     : QObject(parent), m_gate(gate), m_sink(std::move(sink)) {}
 
-void HeadlessCommands::addLocal(const QString& name, Answer answer) {
-    m_entries.insert(name, Entry{std::move(answer), {}, false});
+void HeadlessCommands::addLocal(const QString& name, Answer answer, Acts acts) {
+    m_entries.insert(name, Entry{std::move(answer), {}, false, std::move(acts)});
 }
 
 void HeadlessCommands::addGateCommand(const QString& name, Prepare prepare) {
-    m_entries.insert(name, Entry{{}, std::move(prepare), true});
+    m_entries.insert(name, Entry{{}, std::move(prepare), true, {}});
 }
 
 void HeadlessCommands::remove(const QString& name) {
@@ -55,7 +55,7 @@ QByteArray HeadlessCommands::execute(const QJsonObject& cmd, std::shared_ptr<Ear
         early.reset(); // cannot happen (the reader asked the same question): never attach it elsewhere
     const auto entry = m_entries.constFind(name);
     if (entry != m_entries.constEnd() && !entry->gate)
-        return reply(cmd, entry->answer(cmd));
+        return localEntry(name, *entry, cmd);
     if (!m_gate)
         return refuse(cmd, QStringLiteral("no stop controller"));
     if (name == QLatin1String("stop_all") || name == QLatin1String("stop") ||
@@ -90,6 +90,22 @@ QByteArray HeadlessCommands::stopCommand(const QString& name, const QJsonObject&
     return viaGate(cmd, {}, [&](CommandGate::ResultHandler h) {
         gate->clearStop(id, gate->requestClearToken(id), origin(), std::move(h));
     });
+}
+
+QByteArray HeadlessCommands::localEntry(const QString& name, const Entry& entry, const QJsonObject& cmd) {
+    if (!entry.acts || !entry.acts(cmd))
+        return reply(cmd, entry.answer(cmd));
+    QString why;
+    if (!m_gate)
+        return refuse(cmd, QStringLiteral("no command gate"));
+    if (!m_gate->mayIssue(name, &why)) {
+        m_gate->auditLocal(origin(), name, cmd, false, why);
+        return refuse(cmd, why);
+    }
+    const QJsonObject fields = entry.answer(cmd);
+    m_gate->auditLocal(origin(), name, cmd, fields.value(QStringLiteral("ok")).toBool(),
+                       fields.value(QStringLiteral("message")).toString());
+    return reply(cmd, fields);
 }
 
 QByteArray HeadlessCommands::gateEntry(const QString& name, const Entry& entry, const QJsonObject& cmd) {

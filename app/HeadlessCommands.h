@@ -1,9 +1,10 @@
 #pragma once
 // The headless monitor's command table: what a JSON command line does, by name. One table per monitor (no
 // process-wide state); each entry maps a name to its handler, of one of two kinds:
-//   local — answered here at once, without the command gate: a read-only query ("list", "counters", a
-//           module's status query) or an action of this process (a module's report writer). The handler
-//           returns the result's fields ("ok", "message", and its own).
+//   local — answered here at once, without a bridge: a read-only query ("list", "counters", a module's
+//           status query) or an action of this process (a module's report writer, auto dispatch on/off),
+//           which the gate's permission table and lock check and which is audited. The handler returns the
+//           result's fields ("ok", "message", and its own).
 //   gate  — read into its typed OperatorCommand here, once (models/commands/OperatorCommand.h), and forwarded
 //           through the CommandGate to the bridge of the machine it names (or of its protocol): audited,
 //           answered when every target reported (or at the gate's deadline). An optional prepare step
@@ -52,8 +53,14 @@ public:
     // The JSON command read by parseOperatorCommand under `name`: the default prepare step.
     static GateRequest read(const QString& name, const QJsonObject& cmd);
 
-    // A later entry of the same name replaces the earlier one.
-    void addLocal(const QString& name, Answer answer);
+    // Whether a local command line acts (switches something, writes a file) rather than asks: an acting line
+    // passes the permission table and the lock like a gate command (refused with the reason, nothing done)
+    // and is audited as the operator's.
+    using Acts = std::function<bool(const QJsonObject& cmd)>;
+    static bool always(const QJsonObject&) { return true; }
+
+    // A later entry of the same name replaces the earlier one. Without `acts` the entry only asks.
+    void addLocal(const QString& name, Answer answer, Acts acts = {});
     void addGateCommand(const QString& name, Prepare prepare = {});
     void remove(const QString& name);
     bool contains(const QString& name) const;
@@ -79,9 +86,11 @@ private:
         Answer answer;   // local
         Prepare prepare; // gate (may be empty)
         bool gate = false;
+        Acts acts; // local: empty = a query
     };
     QByteArray stopCommand(const QString& name, const QJsonObject& cmd, std::shared_ptr<EarlyStop> early);
     QByteArray gateEntry(const QString& name, const Entry& entry, const QJsonObject& cmd);
+    QByteArray localEntry(const QString& name, const Entry& entry, const QJsonObject& cmd);
     // The one place a command leaves for a bridge through the gate; the result answers cmd.
     QByteArray forwardToGate(const QJsonObject& cmd, const QString& name, const GateRequest& request);
     QByteArray viaGate(const QJsonObject& cmd, const QJsonObject& echo,

@@ -579,4 +579,12 @@ void CommandGate::auditSession(const QString& action, const OperatorIdentity& wh
     audit(QStringLiteral("gui"), action, QString(), QJsonObject(), r, who, EventSeverity::Info);
 }
 
+void CommandGate::auditLocal(const QString& origin, const QString& action, const QJsonObject& command,
+                             bool ok, const QString& message) {
+    CommandResult r;
+    r.ok = ok;
+    r.message = message;
+    audit(origin, action, QString(), command, r, m_operator);
+}
+
 } // namespace ocu

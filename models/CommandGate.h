@@ -110,6 +110,10 @@ public:
     // (action "sign_in", "sign_out", "lock", "unlock"), with no machine target. A refusal (wrong password) is
     // information in the event log, not an alarm: it asks no action of the operator.
     void auditSession(const QString& action, const OperatorIdentity& who, bool ok, const QString& message);
+    // An action of this console with no machine target (auto dispatch switched, a report written), audited as
+    // the current operator's; a refusal is an alarm like a command's.
+    void auditLocal(const QString& origin, const QString& action, const QJsonObject& command, bool ok,
+                    const QString& message);
     CommandPermissions& permissions() { return m_permissions; }
     const CommandPermissions& permissions() const { return m_permissions; }
     // Whether the operator may issue `command` (commandName) now; `why` gets the refusal text.

@@ -96,19 +96,25 @@ void registerIsoHeadless(HeadlessCommands& table, const IsoHeadlessParts& parts)
     table.addLocal(QStringLiteral("production"),
                    [bridge](const QJsonObject& cmd) { return productionFields(bridge.data(), cmd); });
     QPointer<AutoDispatcher> dispatcher(parts.dispatcher);
-    table.addLocal(QStringLiteral("auto_dispatch"), [bridge, dispatcher](const QJsonObject& cmd) {
-        return autoDispatchFields(dispatcher.data(), bridge.data(), cmd);
-    });
+    table.addLocal(
+        QStringLiteral("auto_dispatch"),
+        [bridge, dispatcher](const QJsonObject& cmd) {
+            return autoDispatchFields(dispatcher.data(), bridge.data(), cmd);
+        },
+        [](const QJsonObject& cmd) { return cmd.contains(QStringLiteral("on")); }); // without "on": a query
     QPointer<ProductionModel> production(parts.production);
     QPointer<FleetModel> fleet(parts.fleet);
-    table.addLocal(QStringLiteral("shift_report"), [bridge, production, fleet](const QJsonObject& cmd) {
-        ShiftReportRequest r{cmd.value(QStringLiteral("pdf")).toString(),
-                             cmd.value(QStringLiteral("csv")).toString(), std::nullopt,
-                             cmd.value(QStringLiteral("site")).toString()};
-        if (cmd.contains(QStringLiteral("plan_tonnes")))
-            r.planTonnes = cmd.value(QStringLiteral("plan_tonnes")).toDouble();
-        return writeShiftReport(production.data(), bridge.data(), fleet.data(), r);
-    });
+    table.addLocal(
+        QStringLiteral("shift_report"),
+        [bridge, production, fleet](const QJsonObject& cmd) {
+            ShiftReportRequest r{cmd.value(QStringLiteral("pdf")).toString(),
+                                 cmd.value(QStringLiteral("csv")).toString(), std::nullopt,
+                                 cmd.value(QStringLiteral("site")).toString()};
+            if (cmd.contains(QStringLiteral("plan_tonnes")))
+                r.planTonnes = cmd.value(QStringLiteral("plan_tonnes")).toDouble();
+            return writeShiftReport(production.data(), bridge.data(), fleet.data(), r);
+        },
+        HeadlessCommands::always);
 }
 
 } // namespace ocu

@@ -111,6 +111,10 @@ public:
             table.allow(QLatin1String(name), {R::Dispatcher, R::Supervisor, R::Admin});
         table.allow(QStringLiteral("fetch_map"),
                     QVector<R>(kAllOperatorRoles.begin(), kAllOperatorRoles.end()));
+        // Console-local actions of the headless table: switching auto dispatch dispatches trucks; the shift
+        // report is the production record of the people who run the shift.
+        table.allow(QStringLiteral("auto_dispatch"), {R::Dispatcher, R::Supervisor, R::Admin});
+        table.allow(QStringLiteral("shift_report"), {R::Dispatcher, R::SiteManager, R::Supervisor, R::Admin});
     }
     void registerHeadless(HeadlessCommands& table) override {
         registerIsoHeadless(table,

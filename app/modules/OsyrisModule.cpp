@@ -65,6 +65,7 @@ public:
         using R = OperatorRole;
         table.allow(QStringLiteral("send_text"), {R::SiteManager, R::Supervisor, R::Admin});
         table.allow(QStringLiteral("ping"), QVector<R>(kAllOperatorRoles.begin(), kAllOperatorRoles.end()));
+        table.allow(QStringLiteral("coverage_report"), {R::SiteManager, R::Supervisor, R::Admin});
     }
     void registerHeadless(HeadlessCommands& table) override {
         registerCompactionHeadless(table, m_compaction);

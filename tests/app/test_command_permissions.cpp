@@ -250,6 +250,68 @@ private slots:
         QCOMPARE(audited.value(QStringLiteral("operator")).toString(), QStringLiteral("svc-ocu"));
     }
 
+    // The headless monitor's own actions (not machine commands) pass the same table and the lock: a refused
+    // one does nothing; its queries answer every role.
+    void headlessLocalActions() {
+        Console c;
+        int done = 0;
+        HeadlessCommands lines(&c.gate, {});
+        const auto answer = [&done](const QJsonObject&) {
+            ++done;
+            return QJsonObject{{QStringLiteral("ok"), true},
+                               {QStringLiteral("message"), QStringLiteral("done")}};
+        };
+        lines.addLocal(QStringLiteral("auto_dispatch"), answer,
+                       [](const QJsonObject& cmd) { return cmd.contains(QStringLiteral("on")); });
+        for (const char* name : {"shift_report", "coverage_report"})
+            lines.addLocal(QLatin1String(name), answer, HeadlessCommands::always);
+        const QSet<R> dispatchRoles{R::Dispatcher, R::Supervisor, R::Admin};
+        const struct {
+            QJsonObject line;
+            QSet<R> roles;
+        } cases[] = {
+            {{{QStringLiteral("cmd"), QStringLiteral("auto_dispatch")}, {QStringLiteral("on"), true}},
+             dispatchRoles},
+            {{{QStringLiteral("cmd"), QStringLiteral("auto_dispatch")}}, everyone()},
+            {{{QStringLiteral("cmd"), QStringLiteral("shift_report")}},
+             {R::Dispatcher, R::SiteManager, R::Supervisor, R::Admin}},
+            {{{QStringLiteral("cmd"), QStringLiteral("coverage_report")}},
+             {R::SiteManager, R::Supervisor, R::Admin}},
+        };
+        for (const auto& k : cases) {
+            for (R role : kAllOperatorRoles) {
+                c.gate.setOperator({QStringLiteral("bob"), role, QStringLiteral("ocu-7")});
+                c.audit.clear();
+                done = 0;
+                const QJsonObject result = QJsonDocument::fromJson(lines.execute(k.line)).object();
+                const bool allowed = k.roles.contains(role);
+                const QString what = QString::fromUtf8(QJsonDocument(k.line).toJson(QJsonDocument::Compact)) +
+                                     QLatin1Char(' ') + OperatorIdentity{{}, role, {}}.roleText();
+                QVERIFY2(result.value(QStringLiteral("ok")).toBool() == allowed, qPrintable(what));
+                QVERIFY2(done == (allowed ? 1 : 0), qPrintable(what));
+                const bool acts =
+                    k.line.contains(QStringLiteral("on")) ||
+                    k.line.value(QStringLiteral("cmd")).toString() != QLatin1String("auto_dispatch");
+                QCOMPARE(c.audit.size(), acts ? 1 : 0);
+                if (acts)
+                    QCOMPARE(QJsonDocument::fromJson(c.audit.first().toUtf8())
+                                 .object()
+                                 .value(QStringLiteral("ok"))
+                                 .toBool(),
+                             allowed);
+            }
+        }
+        c.gate.setOperator({QStringLiteral("root"), R::Admin, QStringLiteral("ocu-7")});
+        c.gate.setLocked(true);
+        done = 0;
+        QVERIFY(
+            !QJsonDocument::fromJson(lines.execute({{QStringLiteral("cmd"), QStringLiteral("shift_report")}}))
+                 .object()
+                 .value(QStringLiteral("ok"))
+                 .toBool());
+        QCOMPARE(done, 0);
+    }
+
     // No row can narrow a stop; a later row replaces an earlier one; the refusal text lists the roles.
     void tableRules() {
         CommandPermissions t;
