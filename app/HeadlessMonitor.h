@@ -2,9 +2,8 @@
 // The headless monitor: JSON lines on an output device (stdout) for machine changes
 // (rate-limited per machine, default 1 Hz; stop/link/mode/control/health/staleness changes are printed at
 // once), link changes and alarm/event entries; JSON-line commands on an input device (stdin) answered with
-// one result line each. The command socket (app/HeadlessSocket.h) adds clients as further outputs and inputs.
-// Role and authority are enforced by the bridges, exactly as for the GUI, and every command is audited by the
-// CommandGate.
+// one result line each. The command socket (app/HeadlessSocket.h) adds clients as further outputs and inputs. Role and authority are enforced by the bridges, exactly as for the GUI, and every
+// command is audited by the CommandGate.
 //
 // Output lines:
 //   {"type":"machine","id":"<protocol>:<id>","protocol":..,"name":..,"machine_type":..,"lat":..,"lon":..,"e":..,

@@ -208,7 +208,7 @@ void TeleopPanel::buildLayout(QBoxLayout* inputs) {
     l->addWidget(m_problem);
     l->addWidget(m_videoHold);
     l->addWidget(m_video, 3);
-    l->addLayout(inputs, 1);
+    l->addLayout(inputs); // at its size: every pixel of height more goes to the video
     auto* stops = new QBoxLayout(QBoxLayout::LeftToRight);
     m_stops = stops;
     stops->addWidget(m_estop, 2);
