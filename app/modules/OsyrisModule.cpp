@@ -68,6 +68,7 @@ public:
         out << PanelSpec{.key = kAreasPanel,
                          .title = QCoreApplication::translate("ocu::SiteRuntime", "Areas and reports"),
                          .place = PanelPlace::BesidePassCounts,
+                         .scrolls = false, // its tables shrink; its buttons stay in view in a low dock
                          .kind = PanelKind::CompactionAreas,
                          .shortcutKey = Qt::Key_0};
 #endif
