@@ -76,8 +76,8 @@ void MainWindow::applyDefaultLayout() {
     // show wait hidden as tabs of its last group: Ctrl+N or the View menu brings one there.
     const Groups g = workspaceGroups();
     for (QDockWidget* d : std::as_const(m_docks)) {
-        removeDockWidget(d);
         d->setFloating(false);
+        removeDockWidget(d);
     }
     if (g.main.isEmpty())
         return;
@@ -199,13 +199,17 @@ QString MainWindow::settingsGroup() const {
 }
 
 void MainWindow::keepArrangement() {
-    // Only a shown window has sizes worth keeping.
-    if (!isVisible() || m_fitPending)
+    // Only a shown window has sizes worth keeping (shared out first if a new arrangement still waits for it).
+    if (!isVisible())
         return;
+    if (m_fitPending)
+        fitDocksToWindow();
     const QByteArray state = saveState(kLayoutVersion);
     m_arrangements.insert(m_workspace, state);
-    QSettings().setValue(
+    QSettings settings;
+    settings.setValue(
         settingsGroup() + QLatin1Char('/') + workspaceKey(m_workspace) + QStringLiteral("/state"), state);
+    settings.setValue(settingsGroup() + QStringLiteral("/current"), workspaceKey(m_workspace));
 }
 
 bool MainWindow::restoreArrangement(Workspace workspace) {
