@@ -21,8 +21,8 @@ class WorkspaceBar;
 // The panels every console has. A protocol module adds its own (addPanels(), app/ProtocolModule.h).
 enum class Panel { Fleet, SiteMap, Site3D, PassCounts, EventLog };
 
-// Where a module's panel goes among panels of the same workspace group (its PanelKind decides the
-// workspaces and the group, app/WorkspaceLayout.h).
+// Where a panel of PanelKind::Other goes in the All workspace (a panel's kind decides the workspaces and
+// the group, app/WorkspaceLayout.h).
 enum class PanelPlace {
     SideColumn,       // with the vehicle and fleet panels
     BesidePassCounts, // with the pass counts and the tables
@@ -34,7 +34,7 @@ struct PanelSpec {
     QString title{}; // the dock's title, the View menu's and the go-to action's text
     PanelPlace place = PanelPlace::SideColumn;
     int shortcutDigit = 0; // Ctrl+<digit> raises it and focuses its first control (docs/keyboard.md); 0: none
-    bool front = false;    // the visible tab of its group in the default layout
+    bool front = false;    // not read: the order of the kinds in a workspace decides the tab in front
     bool scrolls = true;   // a panel of controls scrolls in a dock narrower than it needs
     QString keyboardHelp{};            // its line in Help › Keyboard shortcuts (empty: none)
     PanelKind kind = PanelKind::Other; // what it shows: the workspaces it appears in (app/WorkspaceLayout.h)

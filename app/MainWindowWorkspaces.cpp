@@ -58,6 +58,12 @@ MainWindow::Groups MainWindow::workspaceGroups() const {
     take(plan.main, g.main);
     take(plan.sideTop, g.top);
     take(plan.sideBottom, g.bottom);
+    // A panel of no kind a workspace names (shown in All) goes where its module places it: with the vehicle
+    // and fleet panels, or with the tables.
+    for (const PanelSpec& p : m_panels)
+        if (QDockWidget* d = m_docks.value(p.key);
+            p.kind == PanelKind::Other && p.place == PanelPlace::SideColumn && g.bottom.removeOne(d))
+            g.top << d;
     // A workspace without its main panel on this site: the side column's panels move up.
     while (g.main.isEmpty() && (!g.top.isEmpty() || !g.bottom.isEmpty())) {
         g.main = g.top;

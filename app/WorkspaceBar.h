@@ -22,7 +22,7 @@ public:
     // Checks the workspace's button (no signal).
     void setCurrent(Workspace workspace);
     QAction* action(Workspace workspace) const { return m_actions.value(workspace); }
-    // The keys of the offered workspaces for Help › Keyboard shortcuts ("Alt+1: Dispatch").
+    // The keys of the offered workspaces for Help › Keyboard shortcuts ("Alt+4: Monitor").
     QStringList keyboardHelp() const;
 
 signals:
