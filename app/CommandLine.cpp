@@ -1,5 +1,6 @@
 #include "app/CommandLine.h"
 #include "app/ProtocolModule.h"
+#include "app/WorkspaceLayout.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -139,8 +140,12 @@ QList<QCommandLineOption> runOptions() {
     // The night palette from the start (screenshots of it; the View menu toggles it too).
     QCommandLineOption night(QStringLiteral("night"),
                              QCoreApplication::translate("CommandLine", "Start with the night palette."));
-    return {shiftPdf, shiftCsv, record,  noRecord, replay, at,   speed,
-            exJsonl,  exCsv,    exSlice, from,     to,     night};
+    QCommandLineOption workspace(QStringLiteral("workspace"),
+                                 tr("Start in this workspace: dispatch, compaction, ugv, monitor or all "
+                                    "(default: the one last used, else the operator's role's)."),
+                                 QStringLiteral("NAME"));
+    return {shiftPdf, shiftCsv, record,  noRecord, replay, at,    speed,
+            exJsonl,  exCsv,    exSlice, from,     to,     night, workspace};
 }
 
 QString name(const char* option) {
@@ -194,6 +199,14 @@ bool readWindowOptions(const QCommandLineParser& p, CommandLineOptions& o, QStri
     }
     o.resetLayout = p.isSet(name("reset-layout"));
     o.night = p.isSet(name("night"));
+    o.workspace = p.value(name("workspace")).toLower();
+    if (Workspace w; !o.workspace.isEmpty() && !workspaceFromKey(o.workspace, &w)) {
+        error = QCoreApplication::translate("CommandLine",
+                                            "--workspace: \"%1\" is not one of dispatch, compaction, ugv, "
+                                            "monitor, all")
+                    .arg(o.workspace);
+        return false;
+    }
     return true;
 }
 

@@ -21,6 +21,7 @@ struct CommandLineOptions {
     QString commandSocket;      // headless: also read commands from this local socket (app/HeadlessSocket.h)
     bool resetLayout = false;
     bool night = false; // --night: start with the night palette
+    QString workspace;  // --workspace: dispatch | compaction | ugv | monitor | all; empty = the role's
     // With --headless, the shift report written when the run ends (PDF and/or CSV).
     QString shiftReportPdf;
     QString shiftReportCsv;

@@ -9,7 +9,6 @@
 #include "widgets/coverage/CompactionPanel.h"
 
 #include <QPointer>
-#include <QSplitter>
 
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "widgets/view3d/RouteOverlay3D.h"
@@ -66,19 +65,8 @@ void watchCompactionCounts(CompactionSession* session, QObject* fleetBridge) {
         QObject::connect(b, &FleetBridge::passCountChanged, session, &CompactionSession::countsChanged);
 }
 
-QWidget* buildCompactionGui(CompactionSession* session, SiteMapView* map, QWidget* passPanel) {
-    if (!session)
-        return passPanel;
-    auto* overlay = new CompactionMapOverlay(map, session);
-    // Side by side: the pass-count dock is wide and low at 1366 x 768 (under the map), so the areas table and
-    // its buttons stay in view beside the pass counts (which scroll inside their tab).
-    auto* split = new QSplitter(Qt::Horizontal);
-    split->addWidget(passPanel);
-    split->addWidget(new CompactionPanel(session, overlay));
-    split->setChildrenCollapsible(false);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 2); // the areas table has six columns
-    return split;
+QWidget* buildCompactionPanel(CompactionSession* session, SiteMapView* map) {
+    return new CompactionPanel(session, new CompactionMapOverlay(map, session));
 }
 
 void attachCompaction3D(CompactionSession* session, QWidget* site3DView) {

@@ -1,7 +1,7 @@
 #pragma once
 // The compaction job of a started site: the session (design, areas, reports) fed by the OSYRIS
-// pass counts, the headless "coverage_report" command, and in the GUI the map overlay and the areas panel
-// beside the pass-count summary. The OSYRIS module (app/modules/OsyrisModule.cpp) owns it.
+// pass counts, the headless "coverage_report" command, and in the GUI the map overlay and the areas panel.
+// The OSYRIS module (app/modules/OsyrisModule.cpp) owns it.
 #include "protocols/site/SiteConfig.h"
 
 #include <QObject>
@@ -23,8 +23,8 @@ CompactionSession* startCompaction(const SiteConfig& config, const GeoFrame& fra
 void registerCompactionHeadless(HeadlessCommands& table, CompactionSession* session);
 // The session's countsChanged() follows the bridge's passCountChanged() (the areas table refreshes).
 void watchCompactionCounts(CompactionSession* session, QObject* fleetBridge);
-// The pass-count panel with the areas panel beside it (the panel itself when session is nullptr).
-QWidget* buildCompactionGui(CompactionSession* session, SiteMapView* map, QWidget* passPanel);
+// The areas panel (areas, stations, lifts, the coverage report) with its overlay on the map.
+QWidget* buildCompactionPanel(CompactionSession* session, SiteMapView* map);
 // The design's centre line and boundary and the areas in the 3D view (a build with the 3D view).
 void attachCompaction3D(CompactionSession* session, QWidget* site3DView);
 

@@ -192,6 +192,8 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
     runtime.populate(window);
     const bool screenshot = !options.screenshotFile.isEmpty();
     if (screenshot) {
+        if (Workspace w; workspaceFromKey(options.workspace, &w))
+            window.setWorkspace(w);
         window.resize(options.size);
         window.show();
     } else if (options.resetLayout || !window.restoreLayout()) {
@@ -201,6 +203,8 @@ int runConsole(QApplication& app, const CommandLineOptions& options) {
     }
     if (options.night)
         window.setNightMode(true);
+    if (Workspace w; !screenshot && workspaceFromKey(options.workspace, &w))
+        window.setWorkspace(w); // over the one last used
 
     int exitCode = 0;
     if (screenshot) {

@@ -1,6 +1,7 @@
 #include "app/MainWindow.h"
 
 #include "app/Theme.h"
+#include "app/WorkspaceBar.h"
 #include "widgets/StopAllButton.h"
 
 #include <QAction>
@@ -26,24 +27,50 @@
 namespace ocu {
 
 namespace {
-constexpr int kLayoutVersion = 1;
 
-// The main panels with their Ctrl+N (docs/keyboard.md); the protocol modules' panels have 4, 5 and 8.
+// The main panels with their Ctrl+N (docs/keyboard.md); the protocol modules' panels have 4, 5, 8 and 9.
 QList<PanelSpec> mainPanels() {
-    const PanelPlace none = PanelPlace::SideColumn; // the main panels have their own places
-    return {
-        {MainWindow::panelKey(Panel::Fleet), MainWindow::tr("Fleet"), none, 1, false, false, {}},
-        {MainWindow::panelKey(Panel::SiteMap), MainWindow::tr("Site map (2D)"), none, 2, false, false, {}},
-        {MainWindow::panelKey(Panel::Site3D), MainWindow::tr("Site 3D"), none, 3, false, false, {}},
-        {MainWindow::panelKey(Panel::PassCounts), MainWindow::tr("Pass counts"), none, 6, false, true, {}},
-        {MainWindow::panelKey(Panel::EventLog), MainWindow::tr("Event log"), none, 7, false, true, {}}};
-}
-
-bool isMainPanel(const QString& key) {
-    for (const PanelSpec& p : mainPanels())
-        if (p.key == key)
-            return true;
-    return false;
+    const PanelPlace side = PanelPlace::SideColumn, table = PanelPlace::BesidePassCounts;
+    return {{MainWindow::panelKey(Panel::Fleet),
+             MainWindow::tr("Fleet"),
+             side,
+             1,
+             false,
+             false,
+             {},
+             PanelKind::Fleet},
+            {MainWindow::panelKey(Panel::SiteMap),
+             MainWindow::tr("Site map (2D)"),
+             side,
+             2,
+             false,
+             false,
+             {},
+             PanelKind::Map},
+            {MainWindow::panelKey(Panel::Site3D),
+             MainWindow::tr("Site 3D"),
+             side,
+             3,
+             false,
+             false,
+             {},
+             PanelKind::Site3D},
+            {MainWindow::panelKey(Panel::PassCounts),
+             MainWindow::tr("Pass counts"),
+             table,
+             6,
+             false,
+             true,
+             {},
+             PanelKind::PassCounts},
+            {MainWindow::panelKey(Panel::EventLog),
+             MainWindow::tr("Event log"),
+             table,
+             7,
+             false,
+             true,
+             {},
+             PanelKind::Alarms}};
 }
 
 // Shortcut order (the View menu, Ctrl+N); panels without a shortcut last, in the order given.
@@ -74,8 +101,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createToolBar();
     createMenus();
     createStatusBar();
+    updateOfferedWorkspaces();
     applyDefaultLayout();
-    m_defaultState = saveState(kLayoutVersion);
 }
 
 MainWindow::~MainWindow() = default;
@@ -137,21 +164,39 @@ void MainWindow::addPanels(const QList<PanelSpec>& panels) {
             continue;
         createDock(p);
         m_panels << p;
-        if (p.place == PanelPlace::SideColumn && !m_sideColumn)
-            m_sideColumn = m_docks.value(p.key);
         added = true;
     }
     if (!added)
         return;
     sortPanels(m_panels);
     fillPanelMenus();
-    // The default layout again with them: splits before tabs (a split beside a tabbed dock only adds a tab).
-    for (QDockWidget* d : std::as_const(m_docks))
-        removeDockWidget(d);
+    updateOfferedWorkspaces();
+    // The workspace's default arrangement again with them.
+    m_arrangements.clear();
     applyDefaultLayout();
-    m_defaultState = saveState(kLayoutVersion);
-    m_fitPending = true;
-    m_raisePending = true; // a tab group laid out again keeps its first tab in front until shown
+}
+
+void MainWindow::removePanel(const QString& key) {
+    QDockWidget* d = m_docks.take(key);
+    if (!d)
+        return;
+    m_panels.erase(
+        std::remove_if(m_panels.begin(), m_panels.end(), [&key](const PanelSpec& p) { return p.key == key; }),
+        m_panels.end());
+    removeDockWidget(d);
+    delete d;
+    delete m_goActions.take(key);
+    fillPanelMenus();
+    updateOfferedWorkspaces();
+    m_arrangements.clear();
+    applyDefaultLayout();
+}
+
+PanelKind MainWindow::panelKind(const QString& key) const {
+    for (const PanelSpec& p : m_panels)
+        if (p.key == key)
+            return p.kind;
+    return PanelKind::Other;
 }
 
 void MainWindow::setPanelWidget(const QString& key, QWidget* widget) {
@@ -228,6 +273,10 @@ void MainWindow::createToolBar() {
             "QToolButton:focus { border:3px solid #ffd400; }"));
     }
     tb->addSeparator();
+    // The workspaces beside STOP ALL, in the same row (no height taken from the map).
+    m_workspaceBar = new WorkspaceBar(this);
+    addToolBar(Qt::TopToolBarArea, m_workspaceBar);
+    connect(m_workspaceBar, &WorkspaceBar::chosen, this, &MainWindow::setWorkspace);
 
     // The failed-stop banner: a full-width red bar under the safety toolbar, shown only while a stop did not
     // reach every target. Not movable, not closable except by its own Dismiss button.
@@ -290,7 +339,7 @@ void MainWindow::createMenus() {
     connect(quit, &QAction::triggered, this, &QWidget::close);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
-    m_resetAction = new QAction(tr("&Reset layout"), this);
+    m_resetAction = new QAction(tr("&Reset workspace"), this);
     m_resetAction->setObjectName(QStringLiteral("action-reset-layout"));
     connect(m_resetAction, &QAction::triggered, this, &MainWindow::resetLayout);
     m_nightAction = new QAction(tr("&Night palette"), this);
@@ -327,6 +376,8 @@ void MainWindow::fillPanelMenus() {
             go->setObjectName(QStringLiteral("action-go-") + p.key);
             if (p.shortcutDigit > 0)
                 go->setShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_0 + p.shortcutDigit)));
+            else if (p.shortcutKey != Qt::Key_unknown)
+                go->setShortcut(QKeySequence(Qt::CTRL | p.shortcutKey));
             go->setShortcutContext(Qt::ApplicationShortcut);
             connect(go, &QAction::triggered, this, [this, key = p.key] { focusPanel(key); });
             addAction(go); // active even when the menu bar is hidden
@@ -401,47 +452,6 @@ void MainWindow::setNightMode(bool night) {
         applyTheme(*app, night ? Theme::Night : Theme::Day);
 }
 
-QList<QDockWidget*> MainWindow::frontDocks() const {
-    QList<QDockWidget*> out{m_docks.value(panelKey(Panel::SiteMap))};
-    for (const PanelSpec& p : m_panels)
-        if (p.front && !isMainPanel(p.key))
-            out << m_docks.value(p.key);
-    return out;
-}
-
-void MainWindow::applyDefaultLayout() {
-    // The default layout: fleet list left, map in the middle with 3D as a tab, the modules' side column
-    // right, event log and pass counts (with the modules' panels beside them) along the bottom. Splits first,
-    // tabs last: tabifying before a split drags the whole tab group along.
-    QDockWidget* fleet = dock(Panel::Fleet);
-    QDockWidget* map = dock(Panel::SiteMap);
-    QDockWidget* events = dock(Panel::EventLog);
-    QDockWidget* passCounts = dock(Panel::PassCounts);
-    QDockWidget* side = m_sideColumn;
-    addDockWidget(Qt::LeftDockWidgetArea, fleet);
-    addDockWidget(Qt::LeftDockWidgetArea, map);
-    splitDockWidget(fleet, map, Qt::Horizontal);
-    if (side)
-        splitDockWidget(map, side, Qt::Horizontal);
-    addDockWidget(Qt::BottomDockWidgetArea, events);
-    splitDockWidget(events, passCounts, Qt::Horizontal);
-    tabifyDockWidget(map, dock(Panel::Site3D));
-    for (const PanelSpec& p : std::as_const(m_panels)) {
-        if (isMainPanel(p.key) || m_docks.value(p.key) == side)
-            continue;
-        tabifyDockWidget(p.place == PanelPlace::SideColumn ? side : passCounts, m_docks.value(p.key));
-    }
-    for (QDockWidget* d : std::as_const(m_docks))
-        d->show();
-    for (QDockWidget* d : frontDocks())
-        d->raise();
-    if (side)
-        resizeDocks({fleet, map, side}, {420, 900, 380}, Qt::Horizontal);
-    else
-        resizeDocks({fleet, map}, {420, 1280}, Qt::Horizontal);
-    resizeDocks({map, events}, {700, 220}, Qt::Vertical);
-}
-
 void MainWindow::focusPanel(const QString& key) {
     QDockWidget* d = m_docks.value(key);
     if (d == nullptr)
@@ -475,106 +485,21 @@ QString MainWindow::keyboardHelpText() const {
            "whole site, Shift+Home the fleet, S the selection, A the area under the cursor, C centre; "
            "double-click selects; click an edge arrow to go to machines outside the view"),
         tr("Ctrl+Shift+N: night palette"), tr("Ctrl+Shift+P: save a screenshot"),
-        tr("Go to a panel (raises it and puts the keyboard focus in it):")};
+        tr("Workspaces (View › Reset workspace puts the current one back as it was):")};
+    lines << m_workspaceBar->keyboardHelp();
+    lines << tr("Go to a panel (raises it and puts the keyboard focus in it):");
     QStringList go;
     for (const QAction* a : actions())
         if (a->objectName().startsWith(QLatin1String("action-go-")) && !a->shortcut().isEmpty())
             go << QStringLiteral("    %1: %2")
                       .arg(a->shortcut().toString(QKeySequence::NativeText),
                            QString(a->text()).remove(QLatin1Char('&')));
-    go.sort(); // Ctrl+1 … Ctrl+9, whichever module added its panel when
+    go.sort(); // Ctrl+0 … Ctrl+9, then the letters, whichever module added its panel when
     lines << go;
     lines << tr("Tab / Shift+Tab: next / previous control in a panel; arrows move in lists and tables; Space "
                 "or Enter presses the focused button")
           << tr("See docs/keyboard.md for the full list.");
     return lines.join(QLatin1Char('\n'));
-}
-
-void MainWindow::fitDocksToWindow() {
-    const int w = width(), h = height();
-    if (w < 200 || h < 200)
-        return;
-    // Fleet list a quarter, the map the most, the modules' side column about a quarter; the bottom row a
-    // quarter of the height. Minimum sizes of the panels still apply.
-    if (QDockWidget* side = m_sideColumn)
-        resizeDocks({dock(Panel::Fleet), dock(Panel::SiteMap), side},
-                    {w * 24 / 100, w * 50 / 100, w * 26 / 100}, Qt::Horizontal);
-    else
-        resizeDocks({dock(Panel::Fleet), dock(Panel::SiteMap)}, {w * 24 / 100, w * 76 / 100}, Qt::Horizontal);
-    // On a short screen (a 1366x768 field laptop) the bottom row (event log, the tables beside the pass
-    // counts) gets 40 % and its right side half of it, so a table there shows its rows, not two.
-    // 30 % left the event log four table rows at 1920x1080 (40 % three at 1366x768, German two
-    // rows of controls more); 36 % / 42 % give it ten / six rows and the map
-    // still ~60 % of the height.
-    const int bottom = h < 900 ? 42 : 36;
-    const int right = w < 1600 ? 50 : 55; // at 1920: all ten columns of a table of ten
-    resizeDocks({dock(Panel::SiteMap), dock(Panel::EventLog)}, {h * (100 - bottom) / 100, h * bottom / 100},
-                Qt::Vertical);
-    resizeDocks({dock(Panel::EventLog), dock(Panel::PassCounts)}, {w * (100 - right) / 100, w * right / 100},
-                Qt::Horizontal);
-    m_fitPending = false;
-}
-
-void MainWindow::showFirstStart() {
-    if (QScreen* s = screen())
-        resize(s->availableGeometry().size());
-    showMaximized();
-}
-
-void MainWindow::resizeEvent(QResizeEvent* event) {
-    QMainWindow::resizeEvent(event);
-    if (m_fitPending && isVisible())
-        fitDocksToWindow();
-}
-
-void MainWindow::showEvent(QShowEvent* event) {
-    QMainWindow::showEvent(event);
-    if (m_raisePending) {
-        m_raisePending = false;
-        for (QDockWidget* d : frontDocks())
-            d->raise();
-        for (const QString& key : std::as_const(m_raisedPanels))
-            if (QDockWidget* d = dock(key))
-                d->raise();
-    }
-    if (m_fitPending) // the size was set before show (screenshot, restored geometry without a state)
-        fitDocksToWindow();
-}
-
-void MainWindow::resetLayout() {
-    for (QDockWidget* d : std::as_const(m_docks)) {
-        d->setFloating(false);
-        d->show();
-    }
-    if (!restoreState(m_defaultState, kLayoutVersion))
-        applyDefaultLayout();
-    fitDocksToWindow();
-    for (QDockWidget* d : frontDocks())
-        d->raise();
-    m_bannerBar->setVisible(!m_bannerText.isEmpty()); // a saved layout never hides a failed stop
-}
-
-void MainWindow::saveLayout() const {
-    QSettings s;
-    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    s.setValue(QStringLiteral("window/state"), saveState(kLayoutVersion));
-    s.setValue(QStringLiteral("window/night"), m_night);
-}
-
-bool MainWindow::restoreLayout() {
-    QSettings s;
-    const QByteArray geometry = s.value(QStringLiteral("window/geometry")).toByteArray();
-    const QByteArray state = s.value(QStringLiteral("window/state")).toByteArray();
-    setNightMode(s.value(QStringLiteral("window/night"), false).toBool());
-    if (geometry.isEmpty() || state.isEmpty())
-        return false;
-    restoreGeometry(geometry);
-    const bool ok = restoreState(state, kLayoutVersion);
-    // The operator's own sizes and the tabs they had in front stay.
-    m_fitPending = !ok;
-    m_raisePending = m_raisePending && !ok;
-    m_bannerBar->setVisible(!m_bannerText.isEmpty()); // a saved layout never hides a failed stop
-    return ok;
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

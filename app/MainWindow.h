@@ -6,6 +6,7 @@
 #include <QStringList>
 
 #include "app/LinkIndicator.h"
+#include "app/WorkspaceLayout.h"
 
 class QDockWidget;
 class QLabel;
@@ -15,24 +16,29 @@ class QToolButton;
 
 namespace ocu {
 
+class WorkspaceBar;
+
 // The panels every console has. A protocol module adds its own (addPanels(), app/ProtocolModule.h).
 enum class Panel { Fleet, SiteMap, Site3D, PassCounts, EventLog };
 
-// Where a module's panel goes in the default layout.
+// Where a panel of PanelKind::Other goes in the All workspace (a panel's kind decides the workspaces and
+// the group, app/WorkspaceLayout.h).
 enum class PanelPlace {
-    SideColumn,       // right of the map: the first such panel splits off a column, the others tab into it
-    BesidePassCounts, // a tab beside the pass counts along the bottom
+    SideColumn,       // with the vehicle and fleet panels
+    BesidePassCounts, // with the pass counts and the tables
 };
 
 // A panel contributed by a protocol module.
 struct PanelSpec {
-    QString key;   // stable name: the dock's object name "dock-<key>" (saved layouts) and `--view <key>`
-    QString title; // the dock's title, the View menu's and the go-to action's text
+    QString key{};   // stable name: the dock's object name "dock-<key>" (saved layouts) and `--view <key>`
+    QString title{}; // the dock's title, the View menu's and the go-to action's text
     PanelPlace place = PanelPlace::SideColumn;
     int shortcutDigit = 0; // Ctrl+<digit> raises it and focuses its first control (docs/keyboard.md); 0: none
-    bool front = false;    // the visible tab of its group in the default layout
+    bool front = false;    // not read: the order of the kinds in a workspace decides the tab in front
     bool scrolls = true;   // a panel of controls scrolls in a dock narrower than it needs
-    QString keyboardHelp;  // its line in Help › Keyboard shortcuts (empty: none)
+    QString keyboardHelp{};            // its line in Help › Keyboard shortcuts (empty: none)
+    PanelKind kind = PanelKind::Other; // what it shows: the workspaces it appears in (app/WorkspaceLayout.h)
+    Qt::Key shortcutKey = Qt::Key_unknown; // Ctrl+<key> for a panel past Ctrl+9 (shortcutDigit 0)
 };
 
 class MainWindow : public QMainWindow {
@@ -94,13 +100,31 @@ public:
     void setNightMode(bool night);
     bool nightMode() const { return m_night; }
 
-    // Layout persistence (QSettings). restoreLayout() returns false when nothing was saved.
-    void saveLayout() const;
+    // Takes a panel out of the window (a panel whose data this site does not have: no protocol feeds it).
+    void removePanel(const QString& key);
+    PanelKind panelKind(const QString& key) const;
+
+    // Workspaces (app/WorkspaceLayout.h): the one shown, switching (the arrangement of the one left is kept),
+    // the ones the panels of this site make worth offering.
+    Workspace workspace() const { return m_workspace; }
+    void setWorkspace(Workspace workspace);
+    QList<Workspace> offeredWorkspaces() const;
+    WorkspaceBar* workspaceBar() const { return m_workspaceBar; }
+    // The person at the console: their arrangements are kept apart from other people's (per person and per
+    // screen set-up); shows their last workspace, else `first` (their role's).
+    void setOperator(const QString& user, Workspace first);
+    QString operatorName() const { return m_user; }
+    // The key of the screen set-up the arrangements are saved under (each screen's geometry).
+    static QString screenSetupKey();
+
+    // Layout persistence (QSettings, per person and screen set-up): the window, the workspace shown and
+    // each workspace's arrangement. restoreLayout() returns false when nothing was saved.
+    void saveLayout();
     bool restoreLayout();
+    // View › Reset workspace: the current workspace's default arrangement, its saved one forgotten.
     void resetLayout();
-    // Shares the window's width and height among the default docks in proportion (at 1366 x 768
-    // the map must not end up a small square); called on the first show of a default layout and by
-    // resetLayout().
+    // Shares the window's width and height among the workspace's docks (the map or the video keeps most of
+    // the window); called on the first show of a default arrangement and by resetLayout().
     void fitDocksToWindow();
     // First start (no saved layout): maximized, or the screen's available size where maximizing is not
     // possible (offscreen).
@@ -127,13 +151,25 @@ private:
     void createMenus();
     void fillPanelMenus();
     void createStatusBar();
+    // The workspace's default arrangement (app/MainWindowWorkspaces.cpp).
     void applyDefaultLayout();
-    QList<QDockWidget*> frontDocks() const;
+    void layOutAgain(); // applyDefaultLayout(), sized for the window once laid out
+    struct Groups {
+        QList<QDockWidget*> main, top, bottom, others;
+    };
+    Groups workspaceGroups() const;
+    QString settingsGroup() const;
+    void keepArrangement(); // the current workspace's arrangement, in memory and in the settings
+    bool restoreArrangement(Workspace workspace);
+    void updateOfferedWorkspaces();
 
     QList<PanelSpec> m_panels; // every panel, in the order of their shortcuts
     QMap<QString, QDockWidget*> m_docks;
     QMap<QString, QAction*> m_goActions;
-    QDockWidget* m_sideColumn = nullptr; // the first module panel right of the map
+    WorkspaceBar* m_workspaceBar = nullptr;
+    Workspace m_workspace = Workspace::All;
+    QString m_user;                             // whose arrangements (empty: the console's)
+    QMap<Workspace, QByteArray> m_arrangements; // this run's, by workspace
     QMenu* m_viewMenu = nullptr;
     QMenu* m_fileMenu = nullptr;
     QMenu* m_goMenu = nullptr;
@@ -149,7 +185,6 @@ private:
     QToolBar* m_bannerBar = nullptr;
     QLabel* m_bannerLabel = nullptr;
     QString m_bannerText;
-    QByteArray m_defaultState;
     int m_unacked = 0;
     bool m_night = false;
     bool m_fitPending = true;    // default layout not yet shared out for the real window size

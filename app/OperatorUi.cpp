@@ -71,6 +71,8 @@ void OperatorUi::showOperator() {
     label->setToolTip(tr("Operator %1, role %2, at console %3 (File › Switch operator…)")
                           .arg(who.user, roleDisplayName(who.role), who.console));
     m_lock->setWho(tr("Locked by %1 (%2)").arg(who.user, roleDisplayName(who.role)));
+    // Their own arrangement of the workspaces, in their role's workspace the first time.
+    m_window.setOperator(who.user, firstWorkspaceFor(who.role));
 }
 
 void OperatorUi::onLocked(bool locked) {

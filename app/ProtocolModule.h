@@ -23,7 +23,7 @@ namespace ocu {
 
 class FleetBridge;
 class HeadlessCommands;
-class PassCountDock;
+class PassCountPanel;
 class ProductionModel;
 class MessageTap;
 class FleetContext;
@@ -48,7 +48,7 @@ struct ModulePanels {
     MainWindow& window; // the main panels are filled (map, 3D) when a module populates
     FleetContext* fleet;
     const SiteConfig& config;
-    PassCountDock& passCounts; // the pass-count panel and what a module adds beside it
+    PassCountPanel* passCounts; // the pass-count panel (its data: the first bridge's pass-count layer)
 };
 
 class ProtocolModule {
@@ -75,11 +75,11 @@ public:
         (void)config;
     }
 
-    // The panels this module adds to the main window, filled by populate() when its bridge exists, and else
-    // with notConfiguredText().
+    // The panels this module adds to the main window when the site runs its protocol (its bridge exists),
+    // filled by populate(); on a site without it they appear nowhere. Each declares its PanelKind: the
+    // workspaces it appears in (app/WorkspaceLayout.h).
     virtual QList<PanelSpec> panels() const { return {}; }
     virtual void populate(const ModulePanels& ui) { (void)ui; }
-    virtual QString notConfiguredText() const { return {}; }
     // What STOP ALL does on this protocol, for its tooltip ("JAUS emergency stop to every ...").
     virtual QString stopAllReach() const { return {}; }
     // The protocol for Help › About, with its standards.

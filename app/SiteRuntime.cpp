@@ -5,7 +5,6 @@
 #include "app/LogRouting.h"
 #include "app/MainWindow.h"
 #include "app/OperatorUi.h"
-#include "app/PassCountDock.h"
 #include "app/ProtocolModule.h"
 #ifdef OCU_HAVE_OCU_VIEW3D
 #include "app/Site3DFeed.h"
@@ -93,7 +92,7 @@ struct SiteRuntime::Impl {
     void addModulePanels(MainWindow& window) const;
     SiteMapView* populateFleetAndMap(MainWindow& window, const SiteConfig& config, SiteRuntime* q) const;
     QObject* populate3D(MainWindow& window, const SiteConfig& config) const;
-    void populateModules(MainWindow& window, const SiteConfig& config, PassCountDock& passCounts) const;
+    void populateModules(MainWindow& window, const SiteConfig& config, PassCountPanel* passCounts) const;
     void connectPassCounts(PassCountPanel* panel, SiteMapView* map, QObject* feed) const;
     void connectBridges(MainWindow& window, SiteMapView* map, PassCountPanel* passPanel, QObject* feed,
                         SiteRuntime* q) const;
@@ -303,7 +302,7 @@ void SiteRuntime::startRecorder() {
                                    tr("Recording this run to %1").arg(o.path), QStringLiteral("recorder")));
 }
 
-static QWidget* notice(const QString& text) {
+[[maybe_unused]] static QWidget* notice(const QString& text) { // a build without the 3D view
     auto* l = new QLabel(text);
     l->setAlignment(Qt::AlignCenter);
     l->setWordWrap(true);
@@ -332,9 +331,14 @@ void SiteRuntime::populate(MainWindow& window) {
 
     auto* passPanel = new PassCountPanel;
     passPanel->setLayer(d.passLayer());
-    PassCountDock passCounts(passPanel);
-    d.populateModules(window, m_config, passCounts);
-    window.setPanelWidget(Panel::PassCounts, passCounts.content());
+    d.populateModules(window, m_config, passPanel);
+    if (d.passLayer()) {
+        window.setPanelWidget(Panel::PassCounts, passPanel);
+    } else { // no protocol of this site counts passes: no pass-count panel anywhere
+        window.removePanel(MainWindow::panelKey(Panel::PassCounts));
+        passPanel->setParent(&window);
+        passPanel->hide();
+    }
     d.connectPassCounts(passPanel, map, feed);
     d.connectBridges(window, map, passPanel, feed, this);
     d.connectAlarmsAndStops(window);
@@ -345,16 +349,18 @@ void SiteRuntime::populate(MainWindow& window) {
         window.statusBar()->showMessage(p, 15000);
 }
 
-// The modules' panels, one link indicator per module (in module order), what STOP ALL reaches and the
-// protocols for Help › About.
+// The panels and the link indicator of each protocol the site runs (in module order), what STOP ALL reaches
+// and the protocols of this build for Help › About. A protocol the site does not run shows nothing.
 void SiteRuntime::Impl::addModulePanels(MainWindow& window) const {
     QStringList reach, about;
     for (const auto& m : modules) {
+        about << m->aboutName();
+        if (!m->bridge())
+            continue;
         window.addPanels(m->panels());
         window.addLinkIndicator(m->displayName());
         if (const QString r = m->stopAllReach(); !r.isEmpty())
             reach << r;
-        about << m->aboutName();
     }
     window.setStopAllReach(reach);
     window.setAboutProtocols(about);
@@ -416,24 +422,12 @@ QObject* SiteRuntime::Impl::populate3D(MainWindow& window, const SiteConfig& con
 #endif
 }
 
-// The protocols' own panels (a module without its site section says so in them) and what they add beside the
-// pass counts.
+// The panels of the protocols the site runs.
 void SiteRuntime::Impl::populateModules(MainWindow& window, const SiteConfig& config,
-                                        PassCountDock& passCounts) const {
-    bool liveBesidePassCounts = false;
-    for (const auto& m : modules) {
+                                        PassCountPanel* passCounts) const {
+    for (const auto& m : modules)
         if (m->bridge())
             m->populate({window, ctx, config, passCounts});
-        else
-            for (const PanelSpec& p : m->panels())
-                window.setPanelWidget(p.key, notice(m->notConfiguredText()));
-        for (const PanelSpec& p : m->panels())
-            liveBesidePassCounts |= p.place == PanelPlace::BesidePassCounts && m->bridge();
-    }
-    // A site with pass counts shows them in front of a module's notice that shares their place (a saved
-    // layout still wins, it is restored after this).
-    if (!liveBesidePassCounts && passLayer())
-        window.raisePanel(Panel::PassCounts);
 }
 
 // The pass-count panel's palette and target on the 2D map, and on the 3D surface cell for cell.
@@ -474,6 +468,8 @@ void SiteRuntime::Impl::connectBridges(MainWindow& window, SiteMapView* map, Pas
 #endif
         });
         LinkIndicator* ind = window.linkIndicator(module->displayName());
+        if (!ind)
+            continue;
         ind->watchBridge(b); // reject counters per link in its details
         // A standing condition of the stack (e.g. a missing group socket); the stacks started in start(),
         // before the window is filled.

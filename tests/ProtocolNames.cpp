@@ -6,12 +6,16 @@
 namespace ocu::rules {
 
 QStringList protocolNeutralFiles() {
-    return {QStringLiteral("app/MainWindow.h"),       QStringLiteral("app/MainWindow.cpp"),
-            QStringLiteral("app/SiteRuntime.h"),      QStringLiteral("app/SiteRuntime.cpp"),
-            QStringLiteral("app/ReplayRuntime.h"),    QStringLiteral("app/ReplayRuntime.cpp"),
-            QStringLiteral("app/HeadlessMonitor.h"),  QStringLiteral("app/HeadlessMonitor.cpp"),
+    return {QStringLiteral("app/MainWindow.h"), QStringLiteral("app/MainWindow.cpp"),
+            QStringLiteral("app/SiteRuntime.h"), QStringLiteral("app/SiteRuntime.cpp"),
+            QStringLiteral("app/ReplayRuntime.h"), QStringLiteral("app/ReplayRuntime.cpp"),
+            QStringLiteral("app/HeadlessMonitor.h"), QStringLiteral("app/HeadlessMonitor.cpp"),
             QStringLiteral("app/HeadlessCommands.h"), QStringLiteral("app/HeadlessCommands.cpp"),
-            QStringLiteral("app/sim_main.cpp")};
+            QStringLiteral("app/sim_main.cpp"),
+            // The workspaces are laid out from the kinds the panels declare (the one table of jobs and kinds,
+            // app/WorkspaceLayout.cpp, names the jobs: Dispatch, UGV, crew messages).
+            QStringLiteral("app/MainWindowWorkspaces.cpp"), QStringLiteral("app/WorkspaceBar.h"),
+            QStringLiteral("app/WorkspaceBar.cpp")};
 }
 
 QVector<ProtocolNameUse> findProtocolNames(const QString& root, const QStringList& files) {

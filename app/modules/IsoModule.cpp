@@ -25,7 +25,9 @@ namespace ocu {
 
 namespace {
 
-const QString kDispatchPanel = QStringLiteral("dispatch"); // its --view name and saved-layout key
+// Their --view names and saved-layout keys.
+const QString kDispatchPanel = QStringLiteral("dispatch");
+const QString kProductionPanel = QStringLiteral("production");
 
 class IsoModule final : public ProtocolModule {
 public:
@@ -67,24 +69,30 @@ public:
     }
 
     // The dispatch panel over this bridge; the selected truck's route on the 2D map and in 3D.
-    // The dispatcher's table beside the pass counts, in front (Ctrl+8).
+    // The dispatcher's table (Ctrl+8) and the production (Ctrl+9).
     QList<PanelSpec> panels() const override {
         return {{kDispatchPanel, QCoreApplication::translate("ocu::MainWindow", "Dispatch"),
                  PanelPlace::BesidePassCounts, 8, true, true,
                  QCoreApplication::translate(
                      "ocu::MainWindow", "Dispatch: F6 next truck needing work, Alt+T task, Alt+D "
-                                        "destination, Alt+M pick on map, Ctrl+Enter assign, Alt+R reset")}};
+                                        "destination, Alt+M pick on map, Ctrl+Enter assign, Alt+R reset"),
+                 PanelKind::Dispatch},
+                {kProductionPanel,
+                 QCoreApplication::translate("ocu::MainWindow", "Production"),
+                 PanelPlace::BesidePassCounts,
+                 9,
+                 false,
+                 true,
+                 {},
+                 PanelKind::Production}};
     }
     QString stopAllReach() const override {
         return QCoreApplication::translate("ocu::MainWindow", "ISO 23725 all-stop to every AHS link");
     }
-    QString notConfiguredText() const override {
-        return QCoreApplication::translate(
-            "IsoModule", "Dispatch needs an ISO 23725 AHS link (site configuration \"iso23725\").");
-    }
     void populate(const ModulePanels& ui) override {
-        addProductionDock(ui.window, ui.fleet, m_bridge, m_production,
-                          QString::fromStdString(ui.config.name));
+        ui.window.setPanelWidget(
+            kProductionPanel,
+            makeProductionView(ui.fleet, m_bridge, m_production, QString::fromStdString(ui.config.name)));
         auto* panel = new DispatchPanel(m_autoDispatch->source(), ui.fleet->gate(), ui.fleet->selection());
         panel->setAutoDispatcher(m_autoDispatch);
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));

@@ -56,12 +56,14 @@ public:
                  4,
                  true,
                  true,
-                 {}},
+                 {},
+                 PanelKind::VehicleControl},
                 {kTeleopPanel, QCoreApplication::translate("ocu::MainWindow", "Teleop"),
                  PanelPlace::SideColumn, 5, false, true,
                  QCoreApplication::translate("ocu::MainWindow", "Teleop panel: W/A/S/D or arrows with the "
                                                                 "dead-man key held; Space or Esc: emergency "
-                                                                "stop")}};
+                                                                "stop"),
+                 PanelKind::Video}};
     }
     QString stopAllReach() const override {
         return QCoreApplication::translate("ocu::MainWindow",
@@ -84,10 +86,6 @@ public:
         auto* teleop = new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick);
         teleop->video()->watchdog().setLimitMs(static_cast<int>(t.videoWatchdogS * 1000));
         ui.window.setPanelWidget(kTeleopPanel, teleop);
-    }
-    QString notConfiguredText() const override {
-        return QCoreApplication::translate(
-            "ocu::SiteRuntime", "No JAUS section in the site configuration: no JAUS vehicles on this site.");
     }
 
     // Control, management and driving: the UGV operator, the supervisor and the admin. Ending a drive

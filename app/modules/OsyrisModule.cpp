@@ -1,10 +1,9 @@
 // The OSYRIS module of the console: the OsyrisBridge over the OCU's OSYRIS station, whose pass counts are the
 // pass-count layer of the 2D map, the 3D view and the pass-count panel (with the station's lifts and
-// filters), the crew messages in a tab beside the pass counts, the compaction job fed by the counts, and the
+// filters), the crew messages panel, the compaction job fed by the counts with its areas panel, and the
 // "OSYRIS" link indicator.
 #include "app/ProtocolModule.h"
 
-#include "app/PassCountDock.h"
 #include "models/FleetContext.h"
 #include "models/bridges/OsyrisBridge.h"
 #include "widgets/PassCountPanel.h"
@@ -15,11 +14,15 @@
 #endif
 
 #include <QCoreApplication>
-#include <QTabWidget>
+#include <QDockWidget>
 
 namespace ocu {
 
 namespace {
+
+// Their --view names and saved-layout keys.
+const QString kCrewPanel = QStringLiteral("crew");
+const QString kAreasPanel = QStringLiteral("areas");
 
 QString crewTitle(int unread) {
     return unread > 0 ? QCoreApplication::translate("ocu::SiteRuntime", "Crew messages (%1)").arg(unread)
@@ -58,6 +61,26 @@ public:
         return m_bridge;
     }
 
+    // The compaction job's areas (Ctrl+0) and the crew messages (Ctrl+M).
+    QList<PanelSpec> panels() const override {
+        QList<PanelSpec> out;
+#ifdef OCU_HAVE_COVERAGE
+        out << PanelSpec{.key = kAreasPanel,
+                         .title = QCoreApplication::translate("ocu::SiteRuntime", "Areas and reports"),
+                         .place = PanelPlace::BesidePassCounts,
+                         .scrolls = false, // its tables shrink; its buttons stay in view in a low dock
+                         .kind = PanelKind::CompactionAreas,
+                         .shortcutKey = Qt::Key_0};
+#endif
+        out << PanelSpec{.key = kCrewPanel,
+                         .title = crewTitle(0),
+                         .place = PanelPlace::BesidePassCounts,
+                         .scrolls = false, // a list and a line to type in: they keep to the dock's width
+                         .kind = PanelKind::CrewMessages,
+                         .shortcutKey = Qt::Key_M};
+        return out;
+    }
+
 #ifdef OCU_HAVE_COVERAGE
     // The compaction job's "coverage_report".
     // Crew messages: the site manager, the supervisor and the admin; a station ping changes nothing.
@@ -74,20 +97,19 @@ public:
 
     void populate(const ModulePanels& ui) override {
         // The station's lifts and filters when the panel shows its counts.
-        if (ui.passCounts.panel()->layer() == m_bridge->passCountLayer())
-            ui.passCounts.panel()->setControls(m_bridge);
+        if (ui.passCounts->layer() == m_bridge->passCountLayer())
+            ui.passCounts->setControls(m_bridge);
         auto* crew = new CrewMessagesPanel;
         crew->setCommandGate(ui.fleet->gate());
         crew->setBridge(m_bridge, m_bridge);
-        const int tab = ui.passCounts.addTab(crew, crewTitle(0));
-        // Unread messages in the tab's title: seen from any tab of the panel.
-        QTabWidget* tabs = ui.passCounts.tabs();
-        QObject::connect(crew, &CrewMessagesPanel::unreadChanged, tabs,
-                         [tabs, tab](int unread) { tabs->setTabText(tab, crewTitle(unread)); });
+        ui.window.setPanelWidget(kCrewPanel, crew);
+        // Unread messages in the dock's title: its tab when it is behind another panel.
+        if (QDockWidget* dock = ui.window.dock(kCrewPanel))
+            QObject::connect(crew, &CrewMessagesPanel::unreadChanged, dock,
+                             [dock](int unread) { dock->setWindowTitle(crewTitle(unread)); });
 #ifdef OCU_HAVE_COVERAGE
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
-        ui.passCounts.wrap(
-            [this, map](QWidget* content) { return buildCompactionGui(m_compaction, map, content); });
+        ui.window.setPanelWidget(kAreasPanel, buildCompactionPanel(m_compaction, map));
         attachCompaction3D(m_compaction, ui.window.panelWidget(Panel::Site3D));
         watchCompactionCounts(m_compaction, m_bridge); // the areas' statistics follow the counts
 #endif

@@ -39,9 +39,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSplitter>
 #include <QStandardPaths>
-#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -176,19 +174,17 @@ private slots:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
 
-        // ---- The pass-count dock: pass counts (lift picker, filters) and crew messages as tabs, the areas
-        // panel under them; the whole window fits 1366 x 768 with the dock in front.
-        QWidget* dockWidget = window.panelWidget(Panel::PassCounts);
-        auto* split = qobject_cast<QSplitter*>(dockWidget);
-        QVERIFY2(split, dockWidget ? dockWidget->metaObject()->className() : "none");
-        auto* tabs = split->findChild<QTabWidget*>();
-        QVERIFY(tabs);
-        QCOMPARE(tabs->count(), 2);
-        auto* passPanel = tabs->widget(0)->findChild<PassCountPanel*>();
+        // ---- The Compaction workspace: the pass counts (lift picker, filters), the crew messages and the
+        // areas panel, each a panel of its own; the whole window fits 1366 x 768 with each of them in front.
+        QVERIFY(window.offeredWorkspaces().contains(Workspace::Compaction));
+        window.setWorkspace(Workspace::Compaction);
+        auto* passPanel = qobject_cast<PassCountPanel*>(window.panelWidget(Panel::PassCounts));
         QVERIFY(passPanel);
-        QVERIFY(qobject_cast<CrewMessagesPanel*>(tabs->widget(1)));
-        auto* areasPanel = split->findChild<CompactionPanel*>();
+        QVERIFY(qobject_cast<CrewMessagesPanel*>(window.panelWidget(QStringLiteral("crew"))));
+        auto* areasPanel = qobject_cast<CompactionPanel*>(window.panelWidget(QStringLiteral("areas")));
         QVERIFY(areasPanel);
+        for (const char* key : {"passcounts", "crew", "areas"})
+            QVERIFY2(window.dock(QLatin1String(key))->toggleViewAction()->isChecked(), key);
         QDockWidget* dock = window.dock(Panel::PassCounts);
         dock->show();
         dock->raise();
@@ -200,14 +196,17 @@ private slots:
                                 .arg(window.minimumSizeHint().height())));
         QVERIFY(passPanel->isVisible());
         QVERIFY(passPanel->liftPicker()->isEnabled()); // the OSYRIS source's lifts and filters are wired
+        QDockWidget* areasDock = window.dock(QStringLiteral("areas"));
+        areasDock->raise();
+        QTest::qWait(200);
         QVERIFY(areasPanel->isVisible());
         QVERIFY(areasPanel->table()->isVisible());
         QVERIFY2(areasPanel->table()->height() >= 40,
                  qPrintable(QString::number(areasPanel->table()->height())));
         for (QPushButton* b : areasPanel->findChildren<QPushButton*>()) {
             // Every button of the areas panel is inside the dock, not cut off.
-            const QRect inDock(b->mapTo(dock, QPoint(0, 0)), b->size());
-            QVERIFY2(dock->rect().contains(inDock), qPrintable(b->text()));
+            const QRect inDock(b->mapTo(areasDock, QPoint(0, 0)), b->size());
+            QVERIFY2(areasDock->rect().contains(inDock), qPrintable(b->text()));
         }
 
         // ---- The design (shipped LandXML, the built-in site's default) on the 2D map.
@@ -282,7 +281,8 @@ private slots:
 #endif
 
         // ---- The areas' statistics follow the counts (the rollers reach the lot) ...
-        window.dock(Panel::PassCounts)->raise();
+        window.dock(QStringLiteral("areas"))
+            ->raise(); // the areas panel (its tab group holds the pass counts)
         QElapsedTimer clock;
         clock.start();
         QTRY_VERIFY_WITH_TIMEOUT(coveredPercent(areasPanel->table(), QStringLiteral("Lot A")) > 0, 90000);
@@ -336,11 +336,16 @@ private slots:
         QVERIFY(overlay->zoomToBand());
         QVERIFY(map->scale() > 5.0);
         img = map->grab().toImage();
-        const QPoint bandCorner = map->worldToScreen(band[0]).toPoint();
-        QVERIFY2(countColour(img, QRect(bandCorner - QPoint(5, 5), QSize(11, 11)),
-                             CompactionMapOverlay::centreLineColour(), 12) > 0,
-                 qPrintable(img.pixelColor(bandCorner).name()));
-        window.dock(Panel::PassCounts)->raise();
+        // The outline in the centre line's colour at a corner of the band (one corner may lie under the
+        // legend).
+        int outlined = 0;
+        for (const QPointF& corner : band) {
+            const QPoint c = map->worldToScreen(corner).toPoint();
+            outlined += countColour(img, QRect(c - QPoint(5, 5), QSize(11, 11)),
+                                    CompactionMapOverlay::centreLineColour(), 12);
+        }
+        QVERIFY2(outlined > 0, qPrintable(img.pixelColor(map->worldToScreen(band[0]).toPoint()).name()));
+        window.dock(QStringLiteral("areas"))->raise();
         if (qEnvironmentVariableIsSet("OCU_TEST_SHOTS")) // for the docs: the picked range on the map
             window.grab().save(QString::fromLocal8Bit(qgetenv("OCU_TEST_SHOTS")) +
                                "/compaction-stations.png");
@@ -463,9 +468,12 @@ void TestCompactionConsole::drawAreasWithTheMouse(MainWindow& window, SiteMapVie
     const QStringList before = areaNames();
     const int areasBefore = session->areaCount();
 
-    // ---- The 3D tab is in front of the map: "Draw area" brings the map back and gives it the keyboard.
+    // ---- The 3D tab is in front of the map (the operator has tabbed it there): "Draw area" brings the map
+    // back and gives it the keyboard.
     window.activateWindow();
     QVERIFY(QTest::qWaitForWindowActive(&window));
+    window.tabifyDockWidget(window.dock(Panel::SiteMap), window.dock(Panel::Site3D));
+    window.dock(Panel::Site3D)->show();
     window.dock(Panel::Site3D)->raise();
     // (A dock behind another tab stays isVisible(), with nothing of it on screen.)
     QTRY_VERIFY(map->visibleRegion().isEmpty());

@@ -2,6 +2,7 @@
 #include "app/ProtocolModule.h"
 #include "app/SiteLoader.h"
 #include "app/SiteRuntime.h"
+#include "app/WorkspaceBar.h"
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
 #include "models/FleetContext.h"
@@ -14,6 +15,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QScreen>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QToolBar>
@@ -234,7 +236,8 @@ private slots:
         }
         if (makeProtocolModules().size() == 3) // every protocol: the panels in their Ctrl+N order
             QCOMPARE(titles, QStringList({"Fleet", "Site map (2D)", "Site 3D", "JAUS control", "Teleop",
-                                          "Pass counts", "Event log", "Dispatch"}));
+                                          "Pass counts", "Event log", "Dispatch", "Production",
+                                          "Areas and reports", "Crew messages"}));
     }
     void stopAllAlwaysVisibleWithShortcut() {
         MainWindow w;
@@ -405,6 +408,144 @@ private slots:
         QVERIFY(!w2.dock(Panel::Fleet)->isFloating());
         if (!modulePanel.isEmpty())
             QVERIFY(w2.dock(modulePanel)->isVisible());
+    }
+    // The workspace bar beside STOP ALL: a button per workspace the panels make worth offering, Alt+1 …
+    // Alt+5 from anywhere, listed in Help; each workspace shows the panels of its kinds and no other; STOP
+    // ALL stays visible and on F12 in every one.
+    void workspaceBarSwitchesWorkspaces() {
+        QSettings().clear();
+        MainWindow w;
+        w.addPanels(modulePanels());
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        auto* bar = w.findChild<QToolBar*>("toolbar-workspaces");
+        QVERIFY(bar && bar->isVisible());
+        // In STOP ALL's row: no height taken from the map.
+        QCOMPARE(bar->geometry().top(), w.findChild<QToolBar*>("toolbar-safety")->geometry().top());
+        QSignalSpy stops(&w, &MainWindow::stopAllRequested);
+        const QString help = w.keyboardHelpText();
+        int digit = 0, offered = 0;
+        for (Workspace ws : kAllWorkspaces) {
+            ++digit;
+            const QKeySequence key(Qt::ALT | static_cast<Qt::Key>(Qt::Key_0 + digit));
+            QCOMPARE(w.workspaceBar()->action(ws)->shortcut(), key);
+            if (!w.offeredWorkspaces().contains(ws))
+                continue;
+            ++offered;
+            const QString line =
+                key.toString(QKeySequence::NativeText) + QStringLiteral(": ") + workspaceTitle(ws);
+            QVERIFY2(help.contains(line), qPrintable(line + QStringLiteral(" missing in:\n") + help));
+            QTest::keyClick(&w, static_cast<Qt::Key>(Qt::Key_0 + digit), Qt::AltModifier);
+            QTRY_COMPARE(w.workspace(), ws);
+            QVERIFY(w.workspaceBar()->action(ws)->isChecked());
+            const WorkspacePlan plan = workspacePlan(ws);
+            const QList<PanelKind> kinds = plan.main + plan.sideTop + plan.sideBottom;
+            for (const QString& p : w.panelKeys())
+                QVERIFY2(w.dock(p)->toggleViewAction()->isChecked() == kinds.contains(w.panelKind(p)),
+                         qPrintable(workspaceKey(ws) + QLatin1Char(' ') + p));
+            QVERIFY(w.stopAllButton()->isVisible());
+            QTest::keyClick(&w, Qt::Key_F12);
+            QCOMPARE(stops.count(), offered);
+            // A panel of another workspace still comes on its Ctrl+N, in this workspace.
+            if (!w.dock(Panel::Fleet)->toggleViewAction()->isChecked()) {
+                QTest::keyClick(&w, Qt::Key_1, Qt::ControlModifier);
+                QTRY_VERIFY(w.dock(Panel::Fleet)->isVisible());
+                QCOMPARE(w.workspace(), ws);
+            }
+        }
+        QVERIFY(offered >= 3); // Compaction (the pass counts), Monitor, All
+    }
+    // The role chooses the first workspace.
+    void roleChoosesTheFirstWorkspace() {
+        QCOMPARE(firstWorkspaceFor(OperatorRole::Monitor), Workspace::Monitor);
+        QCOMPARE(firstWorkspaceFor(OperatorRole::Dispatcher), Workspace::Dispatch);
+        QCOMPARE(firstWorkspaceFor(OperatorRole::SiteManager), Workspace::Compaction);
+        QCOMPARE(firstWorkspaceFor(OperatorRole::UgvOperator), Workspace::Ugv);
+        QCOMPARE(firstWorkspaceFor(OperatorRole::Supervisor), Workspace::All);
+        QCOMPARE(firstWorkspaceFor(OperatorRole::Admin), Workspace::All);
+        QSettings().clear();
+        MainWindow w;
+        w.addPanels(modulePanels());
+        w.setOperator(QStringLiteral("mona"), Workspace::Monitor);
+        QCOMPARE(w.workspace(), Workspace::Monitor);
+        // A role's workspace this site does not offer (no panel of its kinds): All.
+        MainWindow bare;
+        bare.removePanel(MainWindow::panelKey(Panel::PassCounts));
+        QVERIFY(!bare.offeredWorkspaces().contains(Workspace::Compaction));
+        bare.setOperator(QStringLiteral("sam"), Workspace::Compaction);
+        QCOMPARE(bare.workspace(), Workspace::All);
+        QVERIFY(!bare.workspaceBar()->action(Workspace::Compaction)->isVisible());
+    }
+    // Each person's arrangement of each workspace comes back for them on the next start, per screen set-up:
+    // a dock closed and a dock floated (onto a second screen, say) stay so; another person starts from the
+    // default; View › Reset workspace puts the default back.
+    void arrangementKeptPerPersonAndScreenSetup() {
+        QSettings().clear();
+        {
+            MainWindow w;
+            w.addPanels(modulePanels());
+            w.setOperator(QStringLiteral("alice"), Workspace::Monitor);
+            QCOMPARE(w.workspace(), Workspace::Monitor);
+            w.resize(1366, 768);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            w.dock(Panel::Fleet)->setFloating(true);
+            w.setWorkspace(Workspace::All);
+            QVERIFY(!w.dock(Panel::Fleet)->isFloating()); // All's own arrangement
+            w.dock(Panel::EventLog)->close();
+            w.close(); // saves
+        }
+        const QString group = QStringLiteral("workspaces/alice/") + MainWindow::screenSetupKey();
+        QVERIFY(QSettings().contains(group + QStringLiteral("/monitor/state")));
+        QVERIFY(QSettings().contains(group + QStringLiteral("/all/state")));
+        {
+            MainWindow w;
+            w.addPanels(modulePanels());
+            w.setOperator(QStringLiteral("alice"), Workspace::Monitor);
+            QVERIFY(w.restoreLayout());
+            QCOMPARE(w.workspace(), Workspace::All); // where she left
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(!w.dock(Panel::EventLog)->isVisible());
+            w.setWorkspace(Workspace::Monitor);
+            QTRY_VERIFY(w.dock(Panel::Fleet)->isFloating());
+            w.resetLayout();
+            QVERIFY(!w.dock(Panel::Fleet)->isFloating());
+            QVERIFY(w.dock(Panel::Fleet)->isVisible());
+        }
+        {
+            MainWindow w;
+            w.addPanels(modulePanels());
+            w.setOperator(QStringLiteral("bob"), Workspace::Monitor);
+            QVERIFY(!w.restoreLayout());
+            QCOMPARE(w.workspace(), Workspace::Monitor);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(!w.dock(Panel::Fleet)->isFloating());
+            QVERIFY(w.dock(Panel::EventLog)->isVisible());
+        }
+    }
+    // A switch of operator at a running console keeps the previous person's arrangement and shows the next
+    // person's (their last workspace, else their role's).
+    void switchOfOperatorShowsTheirArrangement() {
+        QSettings().clear();
+        MainWindow w;
+        w.addPanels(modulePanels());
+        w.setOperator(QStringLiteral("alice"), Workspace::All);
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY(w.dock(Panel::Fleet)->isVisible());
+        w.dock(Panel::Fleet)->close();
+        w.setOperator(QStringLiteral("bob"), Workspace::Monitor);
+        QCOMPARE(w.workspace(), Workspace::Monitor);
+        QTRY_VERIFY(w.dock(Panel::Fleet)->isVisible());
+        w.setOperator(QStringLiteral("alice"), Workspace::Monitor);
+        QCOMPARE(w.workspace(), Workspace::All);
+        QVERIFY(!w.dock(Panel::Fleet)->isVisible());
     }
     void nightPalette() {
         MainWindow w;

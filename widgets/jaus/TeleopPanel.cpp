@@ -206,14 +206,15 @@ void TeleopPanel::buildLayout(QBoxLayout* inputs) {
     m_problem->setStyleSheet(QStringLiteral("color:#c81e1e; font-weight:bold;"));
     m_problem->hide();
     l->addWidget(m_problem);
-    l->addWidget(m_videoHold);
-    l->addWidget(m_video, 3);
-    l->addLayout(inputs, 1);
+    // The stop above the video: below it, a large video (the UGV workspace) pushed it out of a short dock.
     auto* stops = new QBoxLayout(QBoxLayout::LeftToRight);
     m_stops = stops;
     stops->addWidget(m_estop, 2);
     stops->addWidget(m_clear, 1);
     l->addLayout(stops);
+    l->addWidget(m_videoHold);
+    l->addWidget(m_video, 3);
+    l->addLayout(inputs); // at its size: every pixel of height more goes to the video
 }
 
 // The on-screen stick drives or moves the camera; the video pane reports its watchdog and camera changes.
