@@ -1,5 +1,6 @@
 // Core service messages (AS5710A): names, management, access control, one-integer bodies.
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/MessagesMission.h"
 #include "protocols/jaus/MessagesVideo.h"
 
 #include "protocols/jaus/MessageSupport.h"
@@ -125,6 +126,8 @@ const char* messageName(std::uint16_t id) {
     case msg::ReportHealthSummary:
         return "ReportHealthSummary";
     default:
+        if (const char* name = missionMessageName(id))
+            return name;
         return videoMessageName(id);
     }
 }
