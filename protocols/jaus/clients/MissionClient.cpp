@@ -416,6 +416,10 @@ void MissionClient::sendNextPart(RemoteSubsystem& r, State& s) {
 }
 
 void MissionClient::beginReadying(RemoteSubsystem& r, State& s) {
+    // A driver of its own may have left Ready since it last said so (control released, an emergency):
+    // only a report after this Resume counts.
+    if (ownComponent(r, s))
+        s.driverStatus.reset();
     if (driverStatus(r, s) == ManagementState::Ready) {
         const std::uint16_t uid = std::uint16_t(s.startIndex + 1);
         sendExecute(r, s, uid);
