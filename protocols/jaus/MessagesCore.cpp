@@ -9,6 +9,14 @@ namespace ocu::jaus {
 
 using namespace codec;
 
+namespace {
+// The names of the message families with tables of their own (mission, video).
+const char* familyMessageName(std::uint16_t id) {
+    const char* name = missionMessageName(id);
+    return name ? name : videoMessageName(id);
+}
+} // namespace
+
 const char* messageName(std::uint16_t id) {
     switch (id) {
     case msg::SetAuthority:
@@ -126,9 +134,7 @@ const char* messageName(std::uint16_t id) {
     case msg::ReportHealthSummary:
         return "ReportHealthSummary";
     default:
-        if (const char* name = missionMessageName(id))
-            return name;
-        return videoMessageName(id);
+        return familyMessageName(id);
     }
 }
 
