@@ -73,6 +73,12 @@ std::vector<Row> specification() {
         {ResetAssignment{truck}, dispatchRoles},
         {SendText{station, QStringLiteral("rolled up to x=15 m")}, {R::SiteManager, R::Supervisor, R::Admin}},
         {PingStation{1}, everyone()},
+        {MissionUpload{ugv, {MissionWaypoint{48.1, 11.5, 1.0, 0.5}}, std::nullopt}, ugvRoles},
+        {MissionStart{ugv, 0}, ugvRoles},
+        {MissionPause{ugv}, ugvRoles},
+        {MissionResume{ugv}, ugvRoles},
+        {MissionAbort{ugv}, ugvRoles},
+        {GoTo{ugv, MissionWaypoint{48.1, 11.5, 1.0, 0.5}}, ugvRoles},
     };
 }
 
