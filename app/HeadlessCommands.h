@@ -2,7 +2,7 @@
 // The headless monitor's command table: what a JSON command line does, by name. One table per monitor (no
 // process-wide state); each entry maps a name to its handler, of one of two kinds:
 //   local — answered here at once, without a bridge: a read-only query ("list", "counters", a module's
-//           status query) or an action of this process (a module's report writer, auto dispatch on/off),
+//           status query) or an action of this process (a module's report writer or switch),
 //           which the gate's permission table and lock check and which is audited. The handler returns the
 //           result's fields ("ok", "message", and its own).
 //   gate  — read into its typed OperatorCommand here, once (models/commands/OperatorCommand.h), and forwarded

@@ -3,10 +3,13 @@
 #include <QApplication>
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QPainter>
 #include <QPushButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace ocu {
 
@@ -57,7 +60,43 @@ void LockScreen::place() {
     raise();
 }
 
+QList<QWidget*> LockScreen::tabCycle() const {
+    QList<QWidget*> above, veil;
+    for (QWidget* w : m_window->findChildren<QWidget*>()) {
+        if (!w->isVisible() || !w->isEnabled() || !(w->focusPolicy() & Qt::TabFocus) ||
+            w->window() != m_window)
+            continue;
+        if (isAncestorOf(w))
+            veil << w;
+        else if (w->mapTo(m_window, QPoint(0, w->height())).y() <= geometry().top())
+            above << w;
+    }
+    const auto leftToRight = [this](QWidget* a, QWidget* b) {
+        return a->mapTo(m_window, QPoint()).x() < b->mapTo(m_window, QPoint()).x();
+    };
+    std::sort(above.begin(), above.end(), leftToRight);
+    std::sort(veil.begin(), veil.end(), leftToRight);
+    return above + veil;
+}
+
 bool LockScreen::eventFilter(QObject* watched, QEvent* event) {
+    // Tab and Shift+Tab go round what the locked console offers (the row above the veil with STOP ALL, then
+    // the veil's buttons) instead of the window's focus chain, which runs through the panels under it.
+    if (event->type() == QEvent::KeyPress && isVisible()) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        QWidget* focus = QApplication::focusWidget();
+        if ((key->key() == Qt::Key_Tab || key->key() == Qt::Key_Backtab) && focus &&
+            focus->window() == m_window && !(key->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
+            const QList<QWidget*> cycle = tabCycle();
+            if (!cycle.isEmpty()) {
+                const int at = int(cycle.indexOf(focus));
+                const int step = key->key() == Qt::Key_Backtab ? -1 : 1;
+                const int next = at < 0 ? 0 : (at + step + int(cycle.size())) % int(cycle.size());
+                cycle.at(next)->setFocus(step > 0 ? Qt::TabFocusReason : Qt::BacktabFocusReason);
+                return true;
+            }
+        }
+    }
     if (watched == m_window && (event->type() == QEvent::Resize || event->type() == QEvent::LayoutRequest) &&
         isVisible())
         place();
@@ -69,11 +108,13 @@ void LockScreen::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
     m_focusWatch = connect(qApp, &QApplication::focusChanged, this,
                            [this](QWidget*, QWidget* now) { keepFocusOff(now); });
+    qApp->installEventFilter(this);
     keepFocusOff(QApplication::focusWidget());
 }
 
 void LockScreen::hideEvent(QHideEvent* event) {
     disconnect(m_focusWatch);
+    qApp->removeEventFilter(this);
     QWidget::hideEvent(event);
 }
 
@@ -82,6 +123,8 @@ void LockScreen::keepFocusOff(QWidget* now) {
         return; // ours, or another window (a dialog, a floating panel: the gate refuses its commands)
     if (m_keep && (now == m_keep || m_keep->isAncestorOf(now)))
         return; // STOP ALL and the safety toolbar stay reachable
+    if (now->mapTo(m_window, QPoint(0, now->height())).y() <= geometry().top())
+        return; // above the veil, beside STOP ALL (the workspace bar): only changes what the picture shows
     m_unlock->setFocus(Qt::OtherFocusReason);
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // The locked console: a veil over the window below the safety toolbar. The picture stays visible under it
 // and keeps moving, but takes no input (read-only); STOP ALL stays visible above it and reachable by its
-// keys (F12, Ctrl+Shift+Space) and by Tab. Keyboard focus stays on the veil and the safety toolbar: Tab or a
-// click cannot reach a widget under it. The veil says who locked it and offers Unlock and Switch operator.
+// keys (F12, Ctrl+Shift+Space) and by Tab. Keyboard focus stays on the veil and the row above it (STOP ALL,
+// the workspaces): Tab or a click cannot reach a widget under it. The veil says who locked it and offers
+// Unlock and Switch operator.
 #include <QWidget>
 
 class QLabel;
@@ -34,6 +35,8 @@ private:
     void place();
     // Focus that lands on a widget under the veil goes to Unlock instead.
     void keepFocusOff(QWidget* now);
+    // The widgets Tab visits while locked: the row above the veil, then the veil's buttons.
+    QList<QWidget*> tabCycle() const;
     QWidget* m_window;
     QWidget* m_keep;
     QLabel* m_who = nullptr;
