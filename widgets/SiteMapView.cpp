@@ -88,8 +88,7 @@ void SiteMapView::setPassCountLayer(const PassCountLayer* layer) {
 }
 
 void SiteMapView::passCountChanged() {
-    invalidateStatic();
-    requestDataRepaint();
+    requestDataRepaint(); // the static layer redraws the changed cells' patch (ensureStaticLayer)
 }
 
 void SiteMapView::setOwnFix(const OwnFix& fix) {
@@ -101,7 +100,8 @@ void SiteMapView::setLayerVisible(Layer layer, bool visible) {
     const unsigned before = m_layers;
     m_layers = visible ? (m_layers | layer) : (m_layers & ~unsigned(layer));
     if (before != m_layers) {
-        invalidateStatic();
+        if ((before ^ m_layers) & (LayerMap | LayerMapNames | LayerPassCount))
+            invalidateStatic(); // what the cached static layer shows
         update();
     }
 }

@@ -1,6 +1,7 @@
 // SiteMapView under load: data-driven repaints coalesced to a capped rate, and the per-frame caches
 // that keep a frame with 1,000 machines free of string building and allocation. SiteMapView.cpp lists where
 // the rest of the view is.
+#include "widgets/MapLineRaster.h"
 #include "widgets/SiteMapView.h"
 
 #include <algorithm>
@@ -44,52 +45,6 @@ const QImage& SiteMapView::machineLabelImage(const QString& text, qreal dpr) {
     return *it;
 }
 
-namespace {
-// A 1 px opaque line into 32-bit pixels: clipped to the image (Liang-Barsky), then Bresenham. What
-// QPainter's aliased cosmetic pen draws, without a span call per pixel (1,000 trails are ~100,000 pixels).
-void rasterLine(uchar* bits, qsizetype bpl, int w, int h, QPointF a, QPointF b, QRgb colour) {
-    const double maxX = w - 0.001, maxY = h - 0.001;
-    const double dx = b.x() - a.x(), dy = b.y() - a.y();
-    double t0 = 0, t1 = 1;
-    auto clip = [&](double p, double q) {
-        if (p == 0)
-            return q >= 0;
-        const double r = q / p;
-        if (p < 0) {
-            if (r > t1)
-                return false;
-            t0 = std::max(t0, r);
-        } else {
-            if (r < t0)
-                return false;
-            t1 = std::min(t1, r);
-        }
-        return true;
-    };
-    if (!clip(-dx, a.x()) || !clip(dx, maxX - a.x()) || !clip(-dy, a.y()) || !clip(dy, maxY - a.y()))
-        return;
-    int x0 = int(a.x() + t0 * dx), y0 = int(a.y() + t0 * dy);
-    const int x1 = int(a.x() + t1 * dx), y1 = int(a.y() + t1 * dy);
-    const int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
-    const int ax = std::abs(x1 - x0), ay = -std::abs(y1 - y0);
-    int err = ax + ay;
-    for (;;) {
-        reinterpret_cast<QRgb*>(bits + y0 * bpl)[x0] = colour;
-        if (x0 == x1 && y0 == y1)
-            break;
-        const int e2 = 2 * err;
-        if (e2 >= ay) {
-            err += ay;
-            x0 += sx;
-        }
-        if (e2 <= ax) {
-            err += ax;
-            y0 += sy;
-        }
-    }
-}
-} // namespace
-
 bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {
     // Few trails are drawn antialiased by drawTrails(); hundreds aliased, which is what this does faster.
     if (m_trails.size() < 200 || m_static.format() != QImage::Format_RGB32 || m_static.isNull())
@@ -118,7 +73,7 @@ bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {
             const QPointF& q = t[size_t(k)];
             const QPointF px(cx + (q.x() - m_center.x()) * s, cy - (q.y() - m_center.y()) * s);
             if (!first)
-                rasterLine(bits, bpl, w, h, prev, px, colour);
+                clippedLine(bits, bpl, w, h, prev, px, colour);
             prev = px;
             first = false;
         }
