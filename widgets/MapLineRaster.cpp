@@ -7,9 +7,15 @@
 
 namespace ocu {
 
-void clippedLine(uchar* bits, qsizetype bpl, int w, int h, QPointF a, QPointF b, QRgb colour) {
-    // Clipped to the image (Liang-Barsky), then Bresenham.
-    const double maxX = w - 0.001, maxY = h - 0.001;
+void clippedLine(uchar* bits, qsizetype bpl, const QRect& clipRect, QPointF a, QPointF b, QRgb colour) {
+    // Clipped to the rectangle (Liang-Barsky), then Bresenham.
+    if (clipRect.isEmpty())
+        return;
+    const QPoint o = clipRect.topLeft();
+    bits += o.y() * bpl + o.x() * 4;
+    a -= QPointF(o);
+    b -= QPointF(o);
+    const double maxX = clipRect.width() - 0.001, maxY = clipRect.height() - 0.001;
     const double dx = b.x() - a.x(), dy = b.y() - a.y();
     double t0 = 0, t1 = 1;
     auto clip = [&](double p, double q) {

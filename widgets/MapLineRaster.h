@@ -2,7 +2,7 @@
 // 1 px opaque lines written straight into the 32-bit pixels of the map's images: what QPainter's aliased
 // cosmetic pen draws, without a span call per pixel (5,000 ways or 1,000 trails are several hundred
 // thousand pixels, and QPainter spent ~40 ns on each).
-//  * clippedLine: clipped to the image first (the trails, drawn afresh every frame).
+//  * clippedLine: clipped to a rectangle first (the trails, drawn afresh every frame).
 //  * MapLineRaster: the pixels of a line do not depend on the clip rectangle, so the static layer can be
 //    redrawn in pieces (a pan's exposed strip, a changed pass-count patch) and match a redraw of the whole.
 #include <QImage>
@@ -11,8 +11,8 @@
 
 namespace ocu {
 
-void clippedLine(uchar* bits, qsizetype bytesPerLine, int width, int height, QPointF a, QPointF b,
-                 QRgb colour);
+// `clip`: device pixels inside the image.
+void clippedLine(uchar* bits, qsizetype bytesPerLine, const QRect& clip, QPointF a, QPointF b, QRgb colour);
 
 class MapLineRaster {
 public:

@@ -176,10 +176,16 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     const qreal dpr = p.device() ? p.device()->devicePixelRatioF() : 1.0;
     ensureStaticLayer(size, dpr);
     const QRectF world = visibleWorld(size);
-    const bool trailsInBase = (m_layers & LayerTrails) && drawTrailsIntoBase(world, dpr);
+    // Hundreds of trails: aliased 1 px lines written into the pixels (SiteMapViewPerf.cpp).
+    const bool manyTrails = (m_layers & LayerTrails) && m_trails.size() >= 200;
+    QVector<QRect> clip;
+    QImage* direct = manyTrails ? painterImage(p, clip) : nullptr;
+    const bool trailsInBase = manyTrails && !direct && drawTrailsIntoBase(world, dpr);
     p.drawImage(QPointF(0, 0), trailsInBase ? m_frameBase : m_static);
+    if (direct)
+        rasterTrails(*direct, clip, p.deviceTransform(), world);
     p.setRenderHint(QPainter::Antialiasing, true);
-    if ((m_layers & LayerTrails) && !trailsInBase)
+    if ((m_layers & LayerTrails) && !trailsInBase && !direct)
         drawTrails(p, world);
     m_reservedLabels.clear();
     for (SiteMapOverlay* o : std::as_const(m_overlays))

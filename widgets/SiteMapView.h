@@ -209,6 +209,7 @@ private:
     static constexpr double kDefaultLength = 4.0;
     static constexpr double kDefaultWidth = 2.0;
     static constexpr double kFitRadius = 50000.0; // m from the site origin: machines beyond are not fitted
+    static constexpr int kDenseWays = 1000;       // more features on screen: ways drawn as aliased 1 px lines
 
     // Data (SiteMapView.cpp).
     void onMachinesChanged(const QStringList& ids);
@@ -261,8 +262,12 @@ private:
     // Load: capped repaints, per-frame caches (SiteMapViewPerf.cpp).
     void requestDataRepaint();
     const QImage& machineLabelImage(const QString& text, qreal dpr);
-    // Many trails (aliased 1 px): rasterised straight into a copy of the static layer, which is then blitted
-    // instead of it. False when the painter path is used instead (few trails: antialiased).
+    // Many trails (aliased 1 px) are rasterised straight into the painter's image after the static layer's
+    // blit (painterImage), else into a copy of the static layer blitted instead of it (drawTrailsIntoBase);
+    // few are drawn antialiased by drawTrails().
+    QImage* painterImage(QPainter& p, QVector<QRect>& clipDevicePx) const;
+    void rasterTrails(QImage& img, const QVector<QRect>& clipDevicePx, const QTransform& toDevice,
+                      const QRectF& visibleWorld);
     bool drawTrailsIntoBase(const QRectF& visibleWorld, qreal dpr);
 
     QPointer<FleetModel> m_fleet;

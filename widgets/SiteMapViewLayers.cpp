@@ -15,6 +15,47 @@
 
 namespace ocu {
 
+namespace {
+// Qt::DashLine on a 1 px pen (4 px on, 2 off, running on along the polyline), cut here rather than by the
+// stroker: the stroker restarts the pattern where the view's edge cuts a line, so the strip drawn after a pan
+// would not match the rest. Only the dashes within `within` (px) are made (a lane zoomed in is long).
+void dashes(const QPolygonF& poly, const QRectF& within, QVector<QLineF>& out) {
+    out.clear();
+    double at = 0; // px along the polyline
+    for (int i = 1; i < poly.size(); ++i) {
+        const QPointF a = poly[i - 1], b = poly[i];
+        const double len = QLineF(a, b).length();
+        // The part of the segment within the rectangle (Liang-Barsky), as distances along it.
+        double t0 = 0, t1 = 1;
+        const double dx = b.x() - a.x(), dy = b.y() - a.y();
+        const double ps[4] = {-dx, dx, -dy, dy};
+        const double qs[4] = {a.x() - within.left(), within.right() - a.x(), a.y() - within.top(),
+                              within.bottom() - a.y()};
+        bool inside = len > 0;
+        for (int k = 0; k < 4 && inside; ++k) {
+            if (ps[k] == 0) {
+                inside = qs[k] >= 0;
+                continue;
+            }
+            const double t = qs[k] / ps[k];
+            if (ps[k] < 0)
+                t0 = std::max(t0, t);
+            else
+                t1 = std::min(t1, t);
+        }
+        if (inside && t0 < t1) {
+            const double from = at + t0 * len, to = at + t1 * len;
+            for (double d = std::floor(from / 6) * 6; d < to; d += 6) {
+                const double on0 = std::max(d, at), on1 = std::min(d + 4, at + len);
+                if (on1 > on0)
+                    out.push_back(QLineF(a + (b - a) * ((on0 - at) / len), a + (b - a) * ((on1 - at) / len)));
+            }
+        }
+        at += len;
+    }
+}
+} // namespace
+
 int SiteMapView::visibleFeatureCount(const QRectF& world) const {
     int visible = 0;
     for (const QRectF& b : m_featureBounds)
@@ -36,11 +77,13 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size, const QRectF& cull,
         return QPointF(cx + (q.x() - m_center.x()) * s, cy - (q.y() - m_center.y()) * s);
     };
     QPolygonF poly;
+    QVector<QLineF> dashLines;
+    const QRectF viewPx = QRectF(QPointF(0, 0), QSizeF(size)).adjusted(-8, -8, 8, 8);
     int drawn = 0;
     // Many thin lines: aliased 1 px lines are several times cheaper and look the same at that density;
     // written straight into the pixels (MapLineRaster) they cost a tenth of QPainter's cosmetic stroker.
     // Decided by the whole view (m_staticVisible), so a strip drawn after a pan matches the rest.
-    const bool dense = m_staticVisible > 1000;
+    const bool dense = m_staticVisible > kDenseWays;
     const qreal dpr = p.device() ? p.device()->devicePixelRatioF() : 1.0;
     p.setRenderHint(QPainter::Antialiasing, !dense);
     // Areas first, then the pass-count overlay (translucent area fills must not tint it), then roads and
@@ -81,8 +124,12 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size, const QRectF& cull,
                     for (QPointF& q : poly)
                         q *= dpr;
                     lines->polyline(poly.constData(), int(poly.size()), line.rgb(), lane);
+                } else if (lane) {
+                    dashes(poly, viewPx, dashLines);
+                    p.setPen(QPen(line, 0));
+                    p.drawLines(dashLines);
                 } else {
-                    p.setPen(QPen(line, 0, lane ? Qt::DashLine : Qt::SolidLine));
+                    p.setPen(QPen(line, 0));
                     p.drawPolyline(poly);
                 }
             }

@@ -4,6 +4,8 @@
 #include "widgets/MapLineRaster.h"
 #include "widgets/SiteMapView.h"
 
+#include <QPaintEngine>
+#include <QPainter>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -45,19 +47,40 @@ const QImage& SiteMapView::machineLabelImage(const QString& text, qreal dpr) {
     return *it;
 }
 
-bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {
-    // Few trails are drawn antialiased by drawTrails(); hundreds aliased, which is what this does faster.
-    if (m_trails.size() < 200 || m_static.format() != QImage::Format_RGB32 || m_static.isNull())
-        return false;
-    if (m_frameBase.size() != m_static.size() || m_frameBase.format() != m_static.format())
-        m_frameBase = QImage(m_static.size(), m_static.format());
-    m_frameBase.setDevicePixelRatio(m_static.devicePixelRatio());
-    std::memcpy(m_frameBase.bits(), m_static.constBits(), size_t(m_static.sizeInBytes()));
-    uchar* bits = m_frameBase.bits();
-    const qsizetype bpl = m_frameBase.bytesPerLine();
-    const int w = m_frameBase.width(), h = m_frameBase.height();
-    const double s = m_scale * dpr;
-    const double cx = m_viewSize.width() / 2.0 * dpr, cy = m_viewSize.height() / 2.0 * dpr;
+QImage* SiteMapView::painterImage(QPainter& p, QVector<QRect>& clip) const {
+    // The image the painter writes into (a widget's backing store, an offscreen target), when trails can be
+    // written into it directly: 32 bits, only translated and scaled, not shared, no clip of the caller's.
+    QPaintEngine* engine = p.paintEngine();
+    QPaintDevice* device = engine ? engine->paintDevice() : nullptr;
+    if (!device || device->devType() != QInternal::Image || p.hasClipping())
+        return nullptr;
+    auto* img = static_cast<QImage*>(device);
+    const QImage::Format f = img->format();
+    if ((f != QImage::Format_RGB32 && f != QImage::Format_ARGB32_Premultiplied) || !img->isDetached())
+        return nullptr;
+    const QTransform t = p.deviceTransform();
+    if (t.type() > QTransform::TxScale || t.m11() != t.m22() || t.m11() <= 0)
+        return nullptr;
+    const QRect view = t.mapRect(QRectF(QPointF(0, 0), QSizeF(m_viewSize))).toAlignedRect() & img->rect();
+    const QRegion system = engine->systemClip(); // a widget's exposed region, device px; empty: all of it
+    clip.clear();
+    if (system.isEmpty())
+        clip.push_back(view);
+    else
+        for (const QRect& r : system)
+            if (const QRect c = r & view; !c.isEmpty())
+                clip.push_back(c);
+    return img;
+}
+
+void SiteMapView::rasterTrails(QImage& img, const QVector<QRect>& clip, const QTransform& toDevice,
+                               const QRectF& world) {
+    uchar* bits = const_cast<uchar*>(img.constBits()); // the painter's own buffer: no detach
+    const qsizetype bpl = img.bytesPerLine();
+    const double k = toDevice.m11();
+    const double s = m_scale * k;
+    const double cx = toDevice.dx() + m_viewSize.width() / 2.0 * k;
+    const double cy = toDevice.dy() + m_viewSize.height() / 2.0 * k;
     const QRgb colour = qRgb(0x55, 0x55, 0x88); // drawTrails' pen
     const QRectF grown = world.adjusted(-50, -50, 50, 50);
     // As drawTrails: zoomed out, every step-th point (segments of ~4 px), the newest always.
@@ -69,15 +92,27 @@ bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {
             continue;
         QPointF prev;
         bool first = true;
-        for (int k = (n - 1) % step; k < n; k += step) {
-            const QPointF& q = t[size_t(k)];
+        for (int i = (n - 1) % step; i < n; i += step) {
+            const QPointF& q = t[size_t(i)];
             const QPointF px(cx + (q.x() - m_center.x()) * s, cy - (q.y() - m_center.y()) * s);
             if (!first)
-                clippedLine(bits, bpl, w, h, prev, px, colour);
+                for (const QRect& c : clip)
+                    clippedLine(bits, bpl, c, prev, px, colour);
             prev = px;
             first = false;
         }
     }
+}
+
+bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {
+    // A painter without an image of its own (a QPixmap, a printer): trails into a copy of the static layer.
+    if (m_static.format() != QImage::Format_RGB32 || m_static.isNull())
+        return false;
+    if (m_frameBase.size() != m_static.size() || m_frameBase.format() != m_static.format())
+        m_frameBase = QImage(m_static.size(), m_static.format());
+    m_frameBase.setDevicePixelRatio(m_static.devicePixelRatio());
+    std::memcpy(m_frameBase.bits(), m_static.constBits(), size_t(m_static.sizeInBytes()));
+    rasterTrails(m_frameBase, {m_frameBase.rect()}, QTransform::fromScale(dpr, dpr), world);
     return true;
 }
 

@@ -61,6 +61,10 @@ void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
                 std::abs(shift.x()) >= px.width() || std::abs(shift.y()) >= px.height() ||
                 dpr != std::round(dpr);
     }
+    // Thousands of ways on screen are drawn differently (SiteMapViewLayers.cpp): the layer must not mix both.
+    const int visible = whole || shift.isNull() ? -1 : visibleFeatureCount(visibleWorld(size));
+    if (visible >= 0 && (visible > kDenseWays) != (m_staticVisible > kDenseWays))
+        whole = true;
     const QRect patch = !whole && passShown && m_pass->revision() != m_passImageRevision
                             ? passCountPatch(size, dpr).intersected(QRect(QPoint(), px))
                             : QRect();
@@ -68,7 +72,7 @@ void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
     if (viewChanged) {
         m_staticCenter = m_center;
         m_staticScale = m_scale;
-        m_staticVisible = visibleFeatureCount(visibleWorld(size));
+        m_staticVisible = visible >= 0 ? visible : visibleFeatureCount(visibleWorld(size));
         // Names only when they can be read (not with hundreds of features on screen); placed per frame
         // together with the machine labels so that none overlaps another (SiteMapViewSymbols.cpp).
         m_mapLabels.clear();
