@@ -261,7 +261,8 @@ private:
     void drawCursor(QPainter& p, const QSize& size);
     // Load: capped repaints, per-frame caches (SiteMapViewPerf.cpp).
     void requestDataRepaint();
-    const QImage& machineLabelImage(const QString& text, qreal dpr);
+    // Valid until the next call.
+    const QImage& machineLabelImage(int row, const QString& text, qreal dpr);
     // Many trails (aliased 1 px) are rasterised straight into the painter's image after the static layer's
     // blit (painterImage), else into a copy of the static layer blitted instead of it (drawTrailsIntoBase);
     // few are drawn antialiased by drawTrails().
@@ -337,6 +338,11 @@ private:
     QElapsedTimer m_lastPaint;
     int m_framesPainted = 0;
     QHash<QString, QImage> m_machineLabels; // machine name label per text, at m_machineLabelsDpr
+    struct RowLabel {
+        QString text;
+        QImage image;
+    };
+    QVector<RowLabel> m_rowLabels; // the label last drawn per fleet row
     qreal m_machineLabelsDpr = 0;
     QImage m_frameBase; // static layer + trails (drawTrailsIntoBase)
 };

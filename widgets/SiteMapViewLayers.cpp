@@ -192,6 +192,7 @@ void SiteMapView::changeEvent(QEvent* e) {
             m_night = night;
             m_labelImages.clear();
             m_machineLabels.clear(); // keyed by text only: their colours follow the palette
+            m_rowLabels.clear();
             invalidateStatic();
             update();
         }

@@ -34,17 +34,25 @@ void SiteMapView::requestDataRepaint() {
     m_dataRepaint.start(int(intervalMs - since));
 }
 
-const QImage& SiteMapView::machineLabelImage(const QString& text, qreal dpr) {
-    // Keyed by the text alone (the colour and kind are fixed for machine labels): no key string is built per
-    // label and frame.
+const QImage& SiteMapView::machineLabelImage(int row, const QString& text, qreal dpr) {
+    // Keyed by the text alone (the colour and kind are fixed for machine labels), and remembered per fleet
+    // row: a label whose text did not change costs a string compare, not a hash of it.
     if (dpr != m_machineLabelsDpr || m_machineLabels.size() > 8000) {
         m_machineLabels.clear();
+        m_rowLabels.clear();
         m_machineLabelsDpr = dpr;
     }
+    if (row >= m_rowLabels.size())
+        m_rowLabels.resize(row + 1);
+    RowLabel& memo = m_rowLabels[row];
+    if (!memo.image.isNull() && memo.text == text)
+        return memo.image;
     auto it = m_machineLabels.constFind(text);
     if (it == m_machineLabels.constEnd())
         it = m_machineLabels.insert(text, labelImage(text, MapLabelLayout::Kind::Machine, Qt::black, dpr));
-    return *it;
+    memo.text = text;
+    memo.image = *it;
+    return memo.image;
 }
 
 QImage* SiteMapView::painterImage(QPainter& p, QVector<QRect>& clip) const {
