@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <numeric>
 
 namespace ocu {
 
@@ -93,6 +95,8 @@ void SiteMapView::rasterTrails(QImage& img, const QVector<QRect>& clip, const QT
     const QRectF grown = world.adjusted(-50, -50, 50, 50);
     // As drawTrails: zoomed out, every step-th point (segments of ~4 px), the newest always.
     const int step = std::max(1, int(std::ceil(4.0 / m_scale)));
+    const QRect bounds = std::accumulate(clip.begin(), clip.end(), QRect(), std::bit_or<QRect>());
+    const bool one = clip.size() == 1;
     for (auto it = m_trails.cbegin(); it != m_trails.cend(); ++it) {
         const auto& t = it.value();
         const int n = int(t.size());
@@ -100,12 +104,17 @@ void SiteMapView::rasterTrails(QImage& img, const QVector<QRect>& clip, const QT
             continue;
         QPointF prev;
         bool first = true;
-        for (int i = (n - 1) % step; i < n; i += step) {
-            const QPointF& q = t[size_t(i)];
-            const QPointF px(cx + (q.x() - m_center.x()) * s, cy - (q.y() - m_center.y()) * s);
-            if (!first)
-                for (const QRect& c : clip)
-                    clippedLine(bits, bpl, c, prev, px, colour);
+        // Iterators, not indices: a deque's operator[] divides per access.
+        auto q = t.begin() + (n - 1) % step;
+        for (int i = (n - 1) % step; i < n; i += step, q += (i < n ? step : 0)) {
+            const QPointF px(cx + (q->x() - m_center.x()) * s, cy - (q->y() - m_center.y()) * s);
+            if (!first) {
+                if (one)
+                    clippedLine(bits, bpl, bounds, prev, px, colour);
+                else if (QRectF(prev, px).normalized().adjusted(-1, -1, 1, 1).intersects(QRectF(bounds)))
+                    for (const QRect& c : clip) // a widget's exposed region: only its own rectangles
+                        clippedLine(bits, bpl, c, prev, px, colour);
+            }
             prev = px;
             first = false;
         }

@@ -103,21 +103,6 @@ private:
     // stroker starts their antialiasing where the clip cuts them, a fraction of a pixel's coverage).
     void expectSame(const QImage& cached, const QImage& fresh, const char* what, int tolerance = 0) {
         const Differences d = compare(cached, fresh);
-        if (d.pixels && qEnvironmentVariableIsSet("OCU_DUMP")) {
-            static int n = 0;
-            cached.save(QStringLiteral("/tmp/cache-%1-a.png").arg(n));
-            fresh.save(QStringLiteral("/tmp/cache-%1-b.png").arg(n));
-            QImage diff(cached.size(), QImage::Format_RGB32);
-            for (int y = 0; y < diff.height(); ++y)
-                for (int x = 0; x < diff.width(); ++x)
-                    diff.setPixel(x, y,
-                                  cached.pixel(x, y) == fresh.pixel(x, y) ? qRgb(255, 255, 255)
-                                                                          : qRgb(255, 0, 0));
-            diff.save(QStringLiteral("/tmp/cache-%1-d.png").arg(n));
-            const QRect crop(d.where.topLeft(), QSize(60, 60));
-            cached.copy(crop).scaled(240, 240).save(QStringLiteral("/tmp/cache-%1-ca.png").arg(n));
-            fresh.copy(crop).scaled(240, 240).save(QStringLiteral("/tmp/cache-%1-cb.png").arg(n++));
-        }
         QVERIFY2(d.pixels <= tolerance, qPrintable(QStringLiteral("%1: %2 pixels differ, by up to %3, in %4")
                                                        .arg(QLatin1String(what))
                                                        .arg(d.pixels)
