@@ -124,18 +124,26 @@ int MapLineRaster::segment(QPointF a, QPointF b, QRgb colour, bool dashed, int d
         const std::int64_t den = 2 * std::max<std::int64_t>(major, 1);
         const std::int64_t num = 2 * k0 * minor + major;
         std::int64_t q = num / den, r = num % den;
+        // Walk a pixel offset: one step along the major axis per pixel, one along the minor axis when the
+        // remainder carries (branch-free: the carry is unpredictable).
+        const qsizetype stepMaj = xMajor ? sMaj * 4 : sMaj * m_bpl;
+        const qsizetype stepMin = xMajor ? sMin * m_bpl : sMin * 4;
+        std::int64_t m = min0 + sMin * q;
+        const std::int64_t maj = maj0 + sMaj * k0;
+        // An offset, not a pointer: it may point outside the image while the minor axis is outside the clip.
+        std::int64_t px = xMajor ? m * m_bpl + maj * 4 : maj * m_bpl + m * 4;
+        const std::int64_t twoMinor = 2 * minor;
+        int dash = int((dashPos + k0) % 6);
         for (std::int64_t k = k0; k <= k1; ++k) {
-            const std::int64_t m = min0 + sMin * q;
-            if (m >= minLo && m <= minHi && (!dashed || (dashPos + k) % 6 < 4)) {
-                const std::int64_t maj = maj0 + sMaj * k;
-                const std::int64_t x = xMajor ? maj : m, y = xMajor ? m : maj;
-                reinterpret_cast<QRgb*>(m_bits + y * m_bpl)[x] = colour;
-            }
-            r += 2 * minor;
-            if (r >= den) {
-                r -= den;
-                ++q;
-            }
+            if (m >= minLo && m <= minHi && (!dashed || dash < 4))
+                *reinterpret_cast<QRgb*>(m_bits + px) = colour;
+            px += stepMaj;
+            dash = dash == 5 ? 0 : dash + 1;
+            r += twoMinor;
+            const bool carry = r >= den;
+            r -= carry ? den : 0;
+            m += carry ? sMin : 0;
+            px += carry ? stepMin : 0;
         }
     }
     return int((dashPos + major) % 6);
