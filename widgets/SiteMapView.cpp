@@ -188,8 +188,10 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     QImage* direct = manyTrails ? painterImage(p, clip) : nullptr;
     const bool trailsInBase = manyTrails && !direct && drawTrailsIntoBase(world, dpr);
     p.drawImage(QPointF(0, 0), trailsInBase ? m_frameBase : m_static);
-    if (direct)
+    if (direct) {
         rasterTrails(*direct, clip, p.deviceTransform(), world);
+        m_stats.trailsIntoTarget = true;
+    }
     p.setRenderHint(QPainter::Antialiasing, true);
     if ((m_layers & LayerTrails) && !trailsInBase && !direct)
         drawTrails(p, world);

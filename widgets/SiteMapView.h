@@ -155,8 +155,9 @@ public:
 
     // Frame statistics of the last paintScene (for benchmarks and the status bar).
     struct FrameStats {
-        bool staticRebuilt = false; // the whole static layer was redrawn
-        bool staticUpdated = false; // only a part: a pan's exposed strips or a changed pass-count patch
+        bool staticRebuilt = false;    // the whole static layer was redrawn
+        bool staticUpdated = false;    // only a part: a pan's exposed strips or a changed pass-count patch
+        bool trailsIntoTarget = false; // trails written into the painter's own image (SiteMapViewPerf.cpp)
         int machinesDrawn = 0;
         int featuresDrawn = 0;
     };

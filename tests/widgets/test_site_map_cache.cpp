@@ -1,11 +1,15 @@
 // The site map's cached static layer: what a view shows after pans (the layer shifted, only strips drawn),
 // pass-count changes (only their patch redrawn), a zoom, new ways and the night palette equals, pixel for
 // pixel, what a fresh view that never cached anything draws at the same place.
+#include "models/FleetModel.h"
+#include "models/FleetSelection.h"
 #include "models/PassCountLayer.h"
 #include "widgets/SiteMapView.h"
 
+#include <QBoxLayout>
 #include <QPainter>
 #include <QRandomGenerator>
+#include <QScreen>
 #include <QTest>
 
 using namespace ocu;
@@ -222,6 +226,60 @@ private slots:
         const QImage summary = render(view);
         QVERIFY(view.lastFrame().staticRebuilt);
         QVERIFY(compare(summary, after).pixels > 1000);
+    }
+
+    // Hundreds of trails are written straight into the window's backing store, where the map sits in the
+    // window (here 40 px right and 30 px down), and nowhere else.
+    void trailsAreWrittenIntoTheWindowWhereTheMapIs() {
+        FleetModel fleet;
+        fleet.setRefreshIntervalMs(0);
+        FleetSelection selection(&fleet);
+        QWidget window;
+        auto* layout = new QVBoxLayout(&window);
+        layout->setContentsMargins(40, 30, 0, 0);
+        auto* view = new SiteMapView;
+        layout->addWidget(view);
+        window.resize(440, 330);
+        view->setFleet(&fleet, &selection);
+        view->setMaxDataFrameRate(0);
+        QVector<MachineState> ms;
+        for (int i = 0; i < 250; ++i) {
+            MachineState m;
+            m.id = QStringLiteral("iso23725:T%1").arg(i);
+            m.protocol = Protocol::Iso23725;
+            m.name = m.id;
+            m.hasPosition = true;
+            m.link = LinkState::Up;
+            m.e = -100;
+            m.n = i * 2.0;
+            ms.push_back(m);
+        }
+        for (int k = 0; k <= 50; ++k) { // eastwards from E -100 to E 0
+            for (MachineState& m : ms)
+                m.e = -100 + 2.0 * k;
+            fleet.upsert(ms);
+        }
+        staticOnly(*view);
+        view->setLayerVisible(SiteMapView::LayerTrails, true);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QCOMPARE(view->pos(), QPoint(40, 30));
+        view->setView({0, 150}, 1.0); // whole pixels: E -50 is x 150 in the map
+        QTest::qWait(50);
+        QCoreApplication::processEvents();
+        const QImage shot = window.screen()->grabWindow(window.winId()).toImage();
+        const QColor trail(0x55, 0x55, 0x88);
+        int found = 0;
+        QVERIFY(view->lastFrame().trailsIntoTarget); // not into a copy of the static layer
+        for (int i = 10; i < 150; i += 10) {         // N 20..280 m: y 280..20
+            const QPoint at = view->mapTo(&window, view->worldToScreen({-50, i * 2.0}).toPoint());
+            found += shot.pixelColor(at) == trail ? 1 : 0;
+            QVERIFY(shot.pixelColor(at + QPoint(0, 1)) != trail); // 1 px high, 2 m apart
+        }
+        QCOMPARE(found, 14);
+        for (int y = 0; y < 30; ++y) // the margin outside the map stays the window's
+            for (int x = 0; x < shot.width(); x += 7)
+                QVERIFY(shot.pixelColor(x, y) != trail);
     }
 };
 
