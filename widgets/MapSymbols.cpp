@@ -73,6 +73,16 @@ MapSymbolCache::MapSymbolCache() {
 MapSymbolCache::~MapSymbolCache() = default;
 
 MachineSymbol MapSymbolCache::symbolFor(const QString& type) {
+    // A fleet is mostly one or two types: the last one answers without hashing the text.
+    if (m_lastTypeValid && type == m_lastType)
+        return m_lastSymbol;
+    m_lastType = type;
+    m_lastTypeValid = true;
+    m_lastSymbol = symbolForTypeCached(type);
+    return m_lastSymbol;
+}
+
+MachineSymbol MapSymbolCache::symbolForTypeCached(const QString& type) {
     auto it = m_typeSymbols.constFind(type);
     if (it != m_typeSymbols.constEnd())
         return *it;

@@ -61,6 +61,7 @@ public:
     int renders() const { return m_renders; } // images rendered so far (cache misses)
 
 private:
+    MachineSymbol symbolForTypeCached(const QString& type);
     QSvgRenderer* renderer(MachineSymbol s, StatusCategory status);
     void paintSymbol(QPainter& p, QPointF centre, QSizeF footprint, double headingDeg,
                      const SymbolStyle& style);
@@ -69,6 +70,9 @@ private:
     QHash<int, std::shared_ptr<QSvgRenderer>> m_renderers; // per (symbol, status colour)
     QHash<int, QByteArray> m_sources;                      // SVG text per symbol
     QHash<QString, MachineSymbol> m_typeSymbols;
+    QString m_lastType;
+    bool m_lastTypeValid = false;
+    MachineSymbol m_lastSymbol = MachineSymbol::Unknown;
     int m_renders = 0;
 };
 

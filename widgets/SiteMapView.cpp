@@ -88,8 +88,7 @@ void SiteMapView::setPassCountLayer(const PassCountLayer* layer) {
 }
 
 void SiteMapView::passCountChanged() {
-    invalidateStatic();
-    requestDataRepaint();
+    requestDataRepaint(); // the static layer redraws the changed cells' patch (ensureStaticLayer)
 }
 
 void SiteMapView::setOwnFix(const OwnFix& fix) {
@@ -101,7 +100,8 @@ void SiteMapView::setLayerVisible(Layer layer, bool visible) {
     const unsigned before = m_layers;
     m_layers = visible ? (m_layers | layer) : (m_layers & ~unsigned(layer));
     if (before != m_layers) {
-        invalidateStatic();
+        if ((before ^ m_layers) & (LayerMap | LayerMapNames | LayerPassCount))
+            invalidateStatic(); // what the cached static layer shows
         update();
     }
 }
@@ -119,36 +119,42 @@ void SiteMapView::setPassTarget(PassTarget target) {
 }
 
 void SiteMapView::onMachinesChanged(const QStringList& ids) {
-    if (m_trailMax > 0 && m_fleet) {
+    // 10,000 positions a second: one row lookup per machine serves the trail and the start-up fit.
+    const bool fit = m_autoFit && !m_follow && m_fleet;
+    QRectF inner;
+    if (fit) {
+        // Start-up: keep every machine in view until the operator takes over.
+        const QRectF world = visibleWorld(m_viewSize);
+        inner = world.adjusted(world.width() * 0.03, world.height() * 0.03, -world.width() * 0.03,
+                               -world.height() * 0.03);
+    }
+    bool refit = false;
+    if (m_fleet && (m_trailMax > 0 || fit)) {
         for (const QString& id : ids) {
-            const MachineState* m = m_fleet->machine(id);
-            if (!m || !m->hasPosition)
+            const int row = m_fleet->rowOf(id);
+            if (row < 0)
                 continue;
-            auto& trail = m_trails[id];
-            const QPointF p(m->e, m->n);
-            // One point per metre travelled keeps trails short to draw.
-            if (trail.empty() || std::hypot(trail.back().x() - p.x(), trail.back().y() - p.y()) >= 1.0) {
-                trail.push_back(p);
-                while (int(trail.size()) > m_trailMax)
-                    trail.pop_front();
+            const MachineState& m = m_fleet->machineAt(row);
+            if (!m.hasPosition)
+                continue;
+            if (m_trailMax > 0) {
+                auto& trail = m_trails[id];
+                const QPointF p(m.e, m.n);
+                // One point per metre travelled keeps trails short to draw.
+                if (trail.empty() || std::hypot(trail.back().x() - p.x(), trail.back().y() - p.y()) >= 1.0) {
+                    trail.push_back(p);
+                    while (int(trail.size()) > m_trailMax)
+                        trail.pop_front();
+                }
             }
+            if (fit && !refit && std::abs(m.e) < kFitRadius && std::abs(m.n) < kFitRadius &&
+                !inner.contains(m.e, m.n))
+                refit = true;
         }
     }
     followCurrent();
-    if (m_autoFit && !m_follow && m_fleet) {
-        // Start-up: keep every machine in view until the operator takes over.
-        const QRectF world = visibleWorld(m_viewSize);
-        const QRectF inner = world.adjusted(world.width() * 0.03, world.height() * 0.03,
-                                            -world.width() * 0.03, -world.height() * 0.03);
-        for (const QString& id : ids) {
-            const MachineState* m = m_fleet->machine(id);
-            if (m && m->hasPosition && std::abs(m->e) < kFitRadius && std::abs(m->n) < kFitRadius &&
-                !inner.contains(m->e, m->n)) {
-                fitToContent();
-                break;
-            }
-        }
-    }
+    if (refit)
+        fitToContent();
     requestDataRepaint();
 }
 
@@ -176,10 +182,18 @@ void SiteMapView::paintScene(QPainter& p, const QSize& size) {
     const qreal dpr = p.device() ? p.device()->devicePixelRatioF() : 1.0;
     ensureStaticLayer(size, dpr);
     const QRectF world = visibleWorld(size);
-    const bool trailsInBase = (m_layers & LayerTrails) && drawTrailsIntoBase(world, dpr);
+    // Hundreds of trails: aliased 1 px lines written into the pixels (SiteMapViewPerf.cpp).
+    const bool manyTrails = (m_layers & LayerTrails) && m_trails.size() >= 200;
+    QVector<QRect> clip;
+    QImage* direct = manyTrails ? painterImage(p, clip) : nullptr;
+    const bool trailsInBase = manyTrails && !direct && drawTrailsIntoBase(world, dpr);
     p.drawImage(QPointF(0, 0), trailsInBase ? m_frameBase : m_static);
+    if (direct) {
+        rasterTrails(*direct, clip, p.deviceTransform(), world);
+        m_stats.trailsIntoTarget = true;
+    }
     p.setRenderHint(QPainter::Antialiasing, true);
-    if ((m_layers & LayerTrails) && !trailsInBase)
+    if ((m_layers & LayerTrails) && !trailsInBase && !direct)
         drawTrails(p, world);
     m_reservedLabels.clear();
     for (SiteMapOverlay* o : std::as_const(m_overlays))

@@ -2,11 +2,15 @@
 // The live 2D site map, drawn with QPainter on the raster engine.
 //
 // Performance design (perf-anchors.md §4): everything that does not move with the machines (map roads,
-// lanes, areas, names, pass-count overlay) is rendered into a cached static layer that is rebuilt only when
-// the view (centre/scale/size), the data revision or a layer switch changes; each frame blits it and draws
-// trails (1 px opaque pens: the raster engine's fast path), footprints as precomputed polygons, and the
-// overlays. Level of detail: footprints below 4 px become 5 px squares, glyphs and labels appear only when
-// big enough, map names only when the feature is large on screen, features outside the view are culled.
+// lanes, areas, the background raster, the pass-count overlay) is rendered into a cached static layer
+// (SiteMapViewStaticCache.cpp) kept per scale, size and content: a pan shifts it by whole pixels and draws
+// only the exposed strips, a pass-count change redraws only the changed cells' patch, and only a zoom, a
+// resize, a data or palette change redraws it whole. Each frame blits it and draws the live layers on top:
+// trails (1 px opaque pens: the raster engine's fast path), footprints as cached symbols, labels (machine
+// names and the road and area names, decluttered together), overlays, selection and hover. Level of detail:
+// footprints below 4 px become 5 px squares, glyphs and labels appear only when big enough, map names only
+// when the feature is large on screen, features outside the view are culled; thousands of ways on screen are
+// drawn as aliased 1 px lines straight into the pixels (MapLineRaster).
 #include "models/MachineState.h"
 #include "models/OwnPosition.h"
 #include "models/PassCountLayer.h"
@@ -38,6 +42,7 @@ public:
     virtual void paintOverlay(QPainter& p, const SiteMapView& view) = 0;
 };
 class MapBackground;
+class MapLineRaster;
 
 class SiteMapView : public QWidget {
     Q_OBJECT
@@ -150,7 +155,9 @@ public:
 
     // Frame statistics of the last paintScene (for benchmarks and the status bar).
     struct FrameStats {
-        bool staticRebuilt = false;
+        bool staticRebuilt = false;    // the whole static layer was redrawn
+        bool staticUpdated = false;    // only a part: a pan's exposed strips or a changed pass-count patch
+        bool trailsIntoTarget = false; // trails written into the painter's own image (SiteMapViewPerf.cpp)
         int machinesDrawn = 0;
         int featuresDrawn = 0;
     };
@@ -203,6 +210,7 @@ private:
     static constexpr double kDefaultLength = 4.0;
     static constexpr double kDefaultWidth = 2.0;
     static constexpr double kFitRadius = 50000.0; // m from the site origin: machines beyond are not fitted
+    static constexpr int kDenseWays = 1000;       // more features on screen: ways drawn as aliased 1 px lines
 
     // Data (SiteMapView.cpp).
     void onMachinesChanged(const QStringList& ids);
@@ -212,12 +220,17 @@ private:
     QRectF visibleWorld(const QSize& size) const;
     void userTookOver() { m_autoFit = false; }
     bool clickEdgeIndicator(QPointF px);
-    // Static layer: background raster, site map features, night dimming (SiteMapViewLayers.cpp).
+    // Static layer cache: what is redrawn and where (SiteMapViewStaticCache.cpp).
     void ensureStaticLayer(const QSize& size, qreal dpr);
-    void drawStatic(QPainter& p, const QSize& size);
+    void renderStaticRegion(const QSize& size, const QRect& devicePx);
+    QRect passCountPatch(const QSize& size, qreal dpr) const; // device px changed since the cached counts
     void invalidateStatic() { m_staticValid = false; }
+    // Static layer content: background raster, site map features, night dimming (SiteMapViewLayers.cpp).
+    // `cull`: the world rectangle the painter's clip shows; `lines`: dense ways go straight into its pixels.
+    void drawStatic(QPainter& p, const QSize& size, const QRectF& cull, MapLineRaster* lines);
+    int visibleFeatureCount(const QRectF& world) const;
     void drawBackgroundRaster(QPainter& p, const QSize& size);
-    void dimStaticForNight(QPainter& p, const QSize& size);
+    void dimStaticForNight(QPainter& p, const QRectF& region);
     // Symbols and labels (SiteMapViewSymbols.cpp).
     struct MachineLabel {
         QPointF centre;
@@ -249,9 +262,14 @@ private:
     void drawCursor(QPainter& p, const QSize& size);
     // Load: capped repaints, per-frame caches (SiteMapViewPerf.cpp).
     void requestDataRepaint();
-    const QImage& machineLabelImage(const QString& text, qreal dpr);
-    // Many trails (aliased 1 px): rasterised straight into a copy of the static layer, which is then blitted
-    // instead of it. False when the painter path is used instead (few trails: antialiased).
+    // Valid until the next call.
+    const QImage& machineLabelImage(int row, const QString& text, qreal dpr);
+    // Many trails (aliased 1 px) are rasterised straight into the painter's image after the static layer's
+    // blit (painterImage), else into a copy of the static layer blitted instead of it (drawTrailsIntoBase);
+    // few are drawn antialiased by drawTrails().
+    QImage* painterImage(QPainter& p, QVector<QRect>& clipDevicePx) const;
+    void rasterTrails(QImage& img, const QVector<QRect>& clipDevicePx, const QTransform& toDevice,
+                      const QRectF& visibleWorld);
     bool drawTrailsIntoBase(const QRectF& visibleWorld, qreal dpr);
 
     QPointer<FleetModel> m_fleet;
@@ -277,6 +295,8 @@ private:
     bool m_staticValid = false;
     QPointF m_staticCenter;
     double m_staticScale = 0;
+    QPointF m_staticDrift;   // device px the cached image is off the exact view after whole-pixel pans
+    int m_staticVisible = 0; // features in the cached view (dense drawing and names depend on it)
     // Pass-count colour image (one pixel per cell, row 0 = southernmost at the bottom).
     PassCountOverlay m_passOverlay; // tile pyramid (widgets/PassCountOverlay.h)
     quint64 m_passImageRevision = 0;
@@ -319,6 +339,11 @@ private:
     QElapsedTimer m_lastPaint;
     int m_framesPainted = 0;
     QHash<QString, QImage> m_machineLabels; // machine name label per text, at m_machineLabelsDpr
+    struct RowLabel {
+        QString text;
+        QImage image;
+    };
+    QVector<RowLabel> m_rowLabels; // the label last drawn per fleet row
     qreal m_machineLabelsDpr = 0;
     QImage m_frameBase; // static layer + trails (drawTrailsIntoBase)
 };

@@ -37,7 +37,6 @@ QRectF SiteMapView::visibleWorld(const QSize& size) const {
 void SiteMapView::setView(QPointF centerEN, double pixelsPerMetre) {
     m_center = centerEN;
     m_scale = std::clamp(pixelsPerMetre, kMinScale, kMaxScale);
-    invalidateStatic();
     update();
 }
 
@@ -47,7 +46,6 @@ void SiteMapView::zoomBy(double factor, QPointF anchorPx) {
     const QPointF after = screenToWorld(anchorPx);
     if (!m_follow)
         m_center += before - after; // keep the point under the cursor fixed
-    invalidateStatic();
     update();
 }
 
@@ -56,7 +54,6 @@ void SiteMapView::panByPixels(QPointF delta) {
     if (m_follow)
         setFollow(false); // a manual pan ends following
     m_center += QPointF(-delta.x() / m_scale, delta.y() / m_scale);
-    invalidateStatic();
     update();
 }
 
@@ -107,7 +104,6 @@ void SiteMapView::followCurrent() {
     const MachineState* m = m_fleet ? m_fleet->machine(m_selection->currentId()) : nullptr;
     if (m && m->hasPosition && (m->e != m_center.x() || m->n != m_center.y())) {
         m_center = {m->e, m->n};
-        invalidateStatic();
     }
 }
 

@@ -1,6 +1,8 @@
-// SiteMapView: the cached static layer (what does not move with the machines: the background raster, the
-// site map's areas, roads and lanes, the pass-count overlay) and the night palette that dims it.
+// SiteMapView: what the cached static layer shows (what does not move with the machines: the background
+// raster, the site map's areas, roads and lanes, the pass-count overlay) and the night palette that dims it.
+// When and where it is redrawn: SiteMapViewStaticCache.cpp.
 #include "widgets/MapBackground.h"
+#include "widgets/MapLineRaster.h"
 #include "widgets/SiteMapView.h"
 
 #include <QApplication>
@@ -13,56 +15,76 @@
 
 namespace ocu {
 
-void SiteMapView::ensureStaticLayer(const QSize& size, qreal dpr) {
-    const QSize px = (QSizeF(size) * dpr).toSize();
-    if (m_pass && (m_pass->revision() != m_passImageRevision || m_palette != m_passImagePalette ||
-                   m_target.min != m_passImageTarget.min || m_target.max != m_passImageTarget.max))
-        m_staticValid = false;
-    if (m_passOverlayPending)
-        m_staticValid = false; // owed pass-count tiles: this frame renders more of them
-    if (m_staticValid && m_static.size() == px && m_staticCenter == m_center && m_staticScale == m_scale)
-        return;
-    if (m_static.size() != px)
-        m_static = QImage(px, QImage::Format_RGB32); // opaque: the per-frame blit is a copy, not a blend
-    m_static.setDevicePixelRatio(dpr);
-    m_static.fill(QColor(0xf4, 0xf1, 0xea)); // light site-plan background
-    QPainter sp(&m_static);
-    m_passOverlayPending = false; // drawPassCount says again if tiles are still owed
-    drawStatic(sp, size);
-    // Screenshots (app/Screenshot.cpp) wait while tiles are owed, like for a video view's first frame.
-    setProperty("screenshotPending", m_passOverlayPending);
-    if (m_night)
-        dimStaticForNight(sp, size);
-    sp.end();
-    m_staticValid = true;
-    m_staticCenter = m_center;
-    m_staticScale = m_scale;
-    m_stats.staticRebuilt = true;
+namespace {
+// Qt::DashLine on a 1 px pen (4 px on, 2 off, running on along the polyline), cut here rather than by the
+// stroker: the stroker restarts the pattern where the view's edge cuts a line, so the strip drawn after a pan
+// would not match the rest. Only the dashes within `within` (px) are made (a lane zoomed in is long).
+void dashes(const QPolygonF& poly, const QRectF& within, QVector<QLineF>& out) {
+    out.clear();
+    double at = 0; // px along the polyline
+    for (int i = 1; i < poly.size(); ++i) {
+        const QPointF a = poly[i - 1], b = poly[i];
+        const double len = QLineF(a, b).length();
+        // The part of the segment within the rectangle (Liang-Barsky), as distances along it.
+        double t0 = 0, t1 = 1;
+        const double dx = b.x() - a.x(), dy = b.y() - a.y();
+        const double ps[4] = {-dx, dx, -dy, dy};
+        const double qs[4] = {a.x() - within.left(), within.right() - a.x(), a.y() - within.top(),
+                              within.bottom() - a.y()};
+        bool inside = len > 0;
+        for (int k = 0; k < 4 && inside; ++k) {
+            if (ps[k] == 0) {
+                inside = qs[k] >= 0;
+                continue;
+            }
+            const double t = qs[k] / ps[k];
+            if (ps[k] < 0)
+                t0 = std::max(t0, t);
+            else
+                t1 = std::min(t1, t);
+        }
+        if (inside && t0 < t1) {
+            const double from = at + t0 * len, to = at + t1 * len;
+            for (double d = std::floor(from / 6) * 6; d < to; d += 6) {
+                const double on0 = std::max(d, at), on1 = std::min(d + 4, at + len);
+                if (on1 > on0)
+                    out.push_back(QLineF(a + (b - a) * ((on0 - at) / len), a + (b - a) * ((on1 - at) / len)));
+            }
+        }
+        at += len;
+    }
+}
+} // namespace
+
+int SiteMapView::visibleFeatureCount(const QRectF& world) const {
+    int visible = 0;
+    for (const QRectF& b : m_featureBounds)
+        visible += world.intersects(b) ? 1 : 0;
+    return visible;
 }
 
-void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
-    const QRectF world = visibleWorld(size);
+void SiteMapView::drawStatic(QPainter& p, const QSize& size, const QRectF& cull, MapLineRaster* lines) {
     const bool passCounts = (m_layers & LayerPassCount) && m_pass;
-    m_mapLabels.clear();
     drawBackgroundRaster(p, size);
     if (!(m_layers & LayerMap)) {
         if (passCounts)
             drawPassCount(p, size);
         return;
     }
-    p.setRenderHint(QPainter::Antialiasing, true);
     const double s = m_scale;
     const double cx = size.width() / 2.0, cy = size.height() / 2.0;
     auto toPx = [&](const QPointF& q) {
         return QPointF(cx + (q.x() - m_center.x()) * s, cy - (q.y() - m_center.y()) * s);
     };
     QPolygonF poly;
+    QVector<QLineF> dashLines;
+    const QRectF viewPx = QRectF(QPointF(0, 0), QSizeF(size)).adjusted(-8, -8, 8, 8);
     int drawn = 0;
-    int visible = 0;
-    for (int i = 0; i < m_featureBounds.size(); ++i)
-        visible += world.intersects(m_featureBounds[i]) ? 1 : 0;
-    // Many thin lines: aliased 1 px lines are several times cheaper and look the same at that density.
-    const bool dense = visible > 1000;
+    // Many thin lines: aliased 1 px lines are several times cheaper and look the same at that density;
+    // written straight into the pixels (MapLineRaster) they cost a tenth of QPainter's cosmetic stroker.
+    // Decided by the whole view (m_staticVisible), so a strip drawn after a pan matches the rest.
+    const bool dense = m_staticVisible > kDenseWays;
+    const qreal dpr = p.device() ? p.device()->devicePixelRatioF() : 1.0;
     p.setRenderHint(QPainter::Antialiasing, !dense);
     // Areas first, then the pass-count overlay (translucent area fills must not tint it), then roads and
     // lanes on top.
@@ -74,7 +96,7 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
         for (int i = 0; i < m_map.features.size(); ++i) {
             const MapFeature& f = m_map.features[i];
             const bool area = f.kind == MapFeatureKind::Area;
-            if ((pass == 0) != area || f.points.size() < 2 || !world.intersects(m_featureBounds[i]))
+            if ((pass == 0) != area || f.points.size() < 2 || !cull.intersects(m_featureBounds[i]))
                 continue;
             poly.resize(f.points.size());
             for (int k = 0; k < f.points.size(); ++k)
@@ -96,19 +118,26 @@ void SiteMapView::drawStatic(QPainter& p, const QSize& size) {
                     p.drawPolyline(poly);
                     p.setRenderHint(QPainter::Antialiasing, !dense);
                 }
-                p.setPen(QPen(f.kind == MapFeatureKind::Lane ? c.lighter(120) : c, 0,
-                              f.kind == MapFeatureKind::Lane ? Qt::DashLine : Qt::SolidLine));
-                p.drawPolyline(poly);
+                const bool lane = f.kind == MapFeatureKind::Lane;
+                const QColor line = lane ? c.lighter(120) : c;
+                if (dense && lines) {
+                    for (QPointF& q : poly)
+                        q *= dpr;
+                    lines->polyline(poly.constData(), int(poly.size()), line.rgb(), lane);
+                } else if (lane) {
+                    dashes(poly, viewPx, dashLines);
+                    p.setPen(QPen(line, 0));
+                    p.drawLines(dashLines);
+                } else {
+                    p.setPen(QPen(line, 0));
+                    p.drawPolyline(poly);
+                }
             }
             ++drawn;
         }
         p.setBrush(Qt::NoBrush);
     }
-    m_stats.featuresDrawn = drawn;
-    // Names only when they can be read (not with thousands of features on screen); placed per frame
-    // together with the machine labels so that none overlaps another (SiteMapViewSymbols.cpp).
-    if ((m_layers & LayerMapNames) && visible <= 400)
-        collectMapLabels(size);
+    m_stats.featuresDrawn += drawn;
 }
 
 void SiteMapView::setBackground(std::shared_ptr<const MapBackground> background) {
@@ -163,6 +192,7 @@ void SiteMapView::changeEvent(QEvent* e) {
             m_night = night;
             m_labelImages.clear();
             m_machineLabels.clear(); // keyed by text only: their colours follow the palette
+            m_rowLabels.clear();
             invalidateStatic();
             update();
         }
@@ -170,12 +200,12 @@ void SiteMapView::changeEvent(QEvent* e) {
     QWidget::changeEvent(e);
 }
 
-void SiteMapView::dimStaticForNight(QPainter& p, const QSize& size) {
+void SiteMapView::dimStaticForNight(QPainter& p, const QRectF& region) {
     // Multiplying keeps every hue of the plan, the background raster and the pass-count layer apart while
     // taking the light site-plan ground (#f4f1ea) down to about #5c5a58.
     p.save();
     p.setCompositionMode(QPainter::CompositionMode_Multiply);
-    p.fillRect(QRect(QPoint(0, 0), size), QColor(0x60, 0x60, 0x64));
+    p.fillRect(region, QColor(0x60, 0x60, 0x64));
     p.restore();
 }
 

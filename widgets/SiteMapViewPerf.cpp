@@ -1,11 +1,16 @@
 // SiteMapView under load: data-driven repaints coalesced to a capped rate, and the per-frame caches
 // that keep a frame with 1,000 machines free of string building and allocation. SiteMapView.cpp lists where
 // the rest of the view is.
+#include "widgets/MapLineRaster.h"
 #include "widgets/SiteMapView.h"
 
+#include <QPaintEngine>
+#include <QPainter>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <numeric>
 
 namespace ocu {
 
@@ -31,82 +36,67 @@ void SiteMapView::requestDataRepaint() {
     m_dataRepaint.start(int(intervalMs - since));
 }
 
-const QImage& SiteMapView::machineLabelImage(const QString& text, qreal dpr) {
-    // Keyed by the text alone (the colour and kind are fixed for machine labels): no key string is built per
-    // label and frame.
+const QImage& SiteMapView::machineLabelImage(int row, const QString& text, qreal dpr) {
+    // Keyed by the text alone (the colour and kind are fixed for machine labels), and remembered per fleet
+    // row: a label whose text did not change costs a string compare, not a hash of it.
     if (dpr != m_machineLabelsDpr || m_machineLabels.size() > 8000) {
         m_machineLabels.clear();
+        m_rowLabels.clear();
         m_machineLabelsDpr = dpr;
     }
+    if (row >= m_rowLabels.size())
+        m_rowLabels.resize(row + 1);
+    RowLabel& memo = m_rowLabels[row];
+    if (!memo.image.isNull() && memo.text == text)
+        return memo.image;
     auto it = m_machineLabels.constFind(text);
     if (it == m_machineLabels.constEnd())
         it = m_machineLabels.insert(text, labelImage(text, MapLabelLayout::Kind::Machine, Qt::black, dpr));
-    return *it;
+    memo.text = text;
+    memo.image = *it;
+    return memo.image;
 }
 
-namespace {
-// A 1 px opaque line into 32-bit pixels: clipped to the image (Liang-Barsky), then Bresenham. What
-// QPainter's aliased cosmetic pen draws, without a span call per pixel (1,000 trails are ~100,000 pixels).
-void rasterLine(uchar* bits, qsizetype bpl, int w, int h, QPointF a, QPointF b, QRgb colour) {
-    const double maxX = w - 0.001, maxY = h - 0.001;
-    const double dx = b.x() - a.x(), dy = b.y() - a.y();
-    double t0 = 0, t1 = 1;
-    auto clip = [&](double p, double q) {
-        if (p == 0)
-            return q >= 0;
-        const double r = q / p;
-        if (p < 0) {
-            if (r > t1)
-                return false;
-            t0 = std::max(t0, r);
-        } else {
-            if (r < t0)
-                return false;
-            t1 = std::min(t1, r);
-        }
-        return true;
-    };
-    if (!clip(-dx, a.x()) || !clip(dx, maxX - a.x()) || !clip(-dy, a.y()) || !clip(dy, maxY - a.y()))
-        return;
-    int x0 = int(a.x() + t0 * dx), y0 = int(a.y() + t0 * dy);
-    const int x1 = int(a.x() + t1 * dx), y1 = int(a.y() + t1 * dy);
-    const int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
-    const int ax = std::abs(x1 - x0), ay = -std::abs(y1 - y0);
-    int err = ax + ay;
-    for (;;) {
-        reinterpret_cast<QRgb*>(bits + y0 * bpl)[x0] = colour;
-        if (x0 == x1 && y0 == y1)
-            break;
-        const int e2 = 2 * err;
-        if (e2 >= ay) {
-            err += ay;
-            x0 += sx;
-        }
-        if (e2 <= ax) {
-            err += ax;
-            y0 += sy;
-        }
-    }
+QImage* SiteMapView::painterImage(QPainter& p, QVector<QRect>& clip) const {
+    // The image the painter writes into (a widget's backing store, an offscreen target), when trails can be
+    // written into it directly: 32 bits, only translated and scaled, not shared, no clip of the caller's.
+    QPaintEngine* engine = p.paintEngine();
+    QPaintDevice* device = engine ? engine->paintDevice() : nullptr;
+    if (!device || device->devType() != QInternal::Image || p.hasClipping())
+        return nullptr;
+    auto* img = static_cast<QImage*>(device);
+    const QImage::Format f = img->format();
+    if ((f != QImage::Format_RGB32 && f != QImage::Format_ARGB32_Premultiplied) || !img->isDetached())
+        return nullptr;
+    const QTransform t = p.deviceTransform();
+    if (t.type() > QTransform::TxScale || t.m11() != t.m22() || t.m11() <= 0)
+        return nullptr;
+    const QRect view = t.mapRect(QRectF(QPointF(0, 0), QSizeF(m_viewSize))).toAlignedRect() & img->rect();
+    const QRegion system = engine->systemClip(); // a widget's exposed region, device px; empty: all of it
+    clip.clear();
+    if (system.isEmpty())
+        clip.push_back(view);
+    else
+        for (const QRect& r : system)
+            if (const QRect c = r & view; !c.isEmpty())
+                clip.push_back(c);
+    return img;
 }
-} // namespace
 
-bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {
-    // Few trails are drawn antialiased by drawTrails(); hundreds aliased, which is what this does faster.
-    if (m_trails.size() < 200 || m_static.format() != QImage::Format_RGB32 || m_static.isNull())
-        return false;
-    if (m_frameBase.size() != m_static.size() || m_frameBase.format() != m_static.format())
-        m_frameBase = QImage(m_static.size(), m_static.format());
-    m_frameBase.setDevicePixelRatio(m_static.devicePixelRatio());
-    std::memcpy(m_frameBase.bits(), m_static.constBits(), size_t(m_static.sizeInBytes()));
-    uchar* bits = m_frameBase.bits();
-    const qsizetype bpl = m_frameBase.bytesPerLine();
-    const int w = m_frameBase.width(), h = m_frameBase.height();
-    const double s = m_scale * dpr;
-    const double cx = m_viewSize.width() / 2.0 * dpr, cy = m_viewSize.height() / 2.0 * dpr;
+void SiteMapView::rasterTrails(QImage& img, const QVector<QRect>& clip, const QTransform& toDevice,
+                               const QRectF& world) {
+    uchar* bits = const_cast<uchar*>(img.constBits()); // the painter's own buffer: no detach
+    const qsizetype bpl = img.bytesPerLine();
+    const double k = toDevice.m11();
+    const double s = m_scale * k;
+    const double cx = toDevice.dx() + m_viewSize.width() / 2.0 * k;
+    const double cy = toDevice.dy() + m_viewSize.height() / 2.0 * k;
     const QRgb colour = qRgb(0x55, 0x55, 0x88); // drawTrails' pen
     const QRectF grown = world.adjusted(-50, -50, 50, 50);
     // As drawTrails: zoomed out, every step-th point (segments of ~4 px), the newest always.
     const int step = std::max(1, int(std::ceil(4.0 / m_scale)));
+    const QRect bounds = std::accumulate(clip.begin(), clip.end(), QRect(), std::bit_or<QRect>());
+    const bool one = clip.size() == 1;
     for (auto it = m_trails.cbegin(); it != m_trails.cend(); ++it) {
         const auto& t = it.value();
         const int n = int(t.size());
@@ -114,15 +104,32 @@ bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {
             continue;
         QPointF prev;
         bool first = true;
-        for (int k = (n - 1) % step; k < n; k += step) {
-            const QPointF& q = t[size_t(k)];
-            const QPointF px(cx + (q.x() - m_center.x()) * s, cy - (q.y() - m_center.y()) * s);
-            if (!first)
-                rasterLine(bits, bpl, w, h, prev, px, colour);
+        // Iterators, not indices: a deque's operator[] divides per access.
+        auto q = t.begin() + (n - 1) % step;
+        for (int i = (n - 1) % step; i < n; i += step, q += (i < n ? step : 0)) {
+            const QPointF px(cx + (q->x() - m_center.x()) * s, cy - (q->y() - m_center.y()) * s);
+            if (!first) {
+                if (one)
+                    clippedLine(bits, bpl, bounds, prev, px, colour);
+                else if (QRectF(prev, px).normalized().adjusted(-1, -1, 1, 1).intersects(QRectF(bounds)))
+                    for (const QRect& c : clip) // a widget's exposed region: only its own rectangles
+                        clippedLine(bits, bpl, c, prev, px, colour);
+            }
             prev = px;
             first = false;
         }
     }
+}
+
+bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {
+    // A painter without an image of its own (a QPixmap, a printer): trails into a copy of the static layer.
+    if (m_static.format() != QImage::Format_RGB32 || m_static.isNull())
+        return false;
+    if (m_frameBase.size() != m_static.size() || m_frameBase.format() != m_static.format())
+        m_frameBase = QImage(m_static.size(), m_static.format());
+    m_frameBase.setDevicePixelRatio(m_static.devicePixelRatio());
+    std::memcpy(m_frameBase.bits(), m_static.constBits(), size_t(m_static.sizeInBytes()));
+    rasterTrails(m_frameBase, {m_frameBase.rect()}, QTransform::fromScale(dpr, dpr), world);
     return true;
 }
 

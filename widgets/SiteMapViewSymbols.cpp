@@ -412,7 +412,7 @@ void SiteMapView::layoutAndDrawLabels(QPainter& p, const QSize& size, QVector<Ma
         for (const MachineLabel& ml : machines) {
             const MachineState& m = m_fleet->machineAt(ml.row);
             const QString text = m.name.isEmpty() ? m.id : m.name;
-            const QImage& img = machineLabelImage(text, dpr);
+            const QImage& img = machineLabelImage(ml.row, text, dpr);
             const QSizeF sz = QSizeF(img.size()) / dpr;
             const double r = ml.radius + 2;
             const QPointF c = ml.centre;
