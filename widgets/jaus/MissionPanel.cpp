@@ -20,6 +20,7 @@
 #include <QShortcut>
 #include <QSpinBox>
 #include <QTableView>
+#include <QTimer>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -41,6 +42,11 @@ QString duration(double s) {
 QString metres(double m) {
     return m < 1000 ? MissionPanel::tr("%1 m").arg(qint64(std::llround(m)))
                     : MissionPanel::tr("%1 km").arg(m / 1000, 0, 'f', 2);
+}
+
+// "1 waypoint", "3 waypoints" (no plural forms needed in the translations).
+QString waypointCount(int n) {
+    return n == 1 ? MissionPanel::tr("1 waypoint") : MissionPanel::tr("%1 waypoints").arg(n);
 }
 
 bool isOneOf(MissionState s, std::initializer_list<MissionState> states) {
@@ -79,6 +85,14 @@ QPushButton* MissionPanel::button(Action a) const {
 }
 
 void MissionPanel::build() {
+    m_routeTimer = new QTimer(this);
+    m_routeTimer->setSingleShot(true);
+    m_routeTimer->setInterval(100);
+    connect(m_routeTimer, &QTimer::timeout, this, [this] {
+        MissionPlan* p = plan();
+        emit planRouteChanged(p ? p->waypoints() : QVector<MissionWaypoint>{},
+                              MissionPlanLayer::missionColour(m_vehicle));
+    });
     m_title = new QLabel(this);
     m_title->setWordWrap(true);
     QFont bold = m_title->font();
@@ -335,8 +349,7 @@ void MissionPanel::onPlanChanged() {
         m_table->selectRow(m_editor->selected());
     refreshState();
     refreshButtons();
-    emit planRouteChanged(p ? p->waypoints() : QVector<MissionWaypoint>{},
-                          MissionPlanLayer::missionColour(m_vehicle));
+    m_routeTimer->start(); // the 3D route follows a drag at most every 100 ms
 }
 
 QString MissionPanel::summaryText() const {
@@ -344,8 +357,7 @@ QString MissionPanel::summaryText() const {
     if (!p || p->isEmpty())
         return m_vehicle ? tr("No waypoints yet: Edit on map, then click on the map to add them.")
                          : QString();
-    QString s =
-        tr("%n waypoint(s), %1, ETA %2", "", p->size()).arg(metres(p->lengthM()), duration(p->etaS()));
+    QString s = tr("%1, %2, ETA %3").arg(waypointCount(p->size()), metres(p->lengthM()), duration(p->etaS()));
     const auto v = m_bridge ? m_bridge->subsystem(m_vehicle) : std::nullopt;
     if (v && v->globalPose && v->globalPose->lat && v->globalPose->lon) {
         const QPair<double, double> from{*v->globalPose->lat, *v->globalPose->lon};
@@ -360,13 +372,13 @@ QString MissionPanel::describe(const JausMission& m, int planned) {
     QString s;
     switch (m.state) {
     case MissionState::None:
-        s = planned > 0 ? tr("Planned: %n waypoint(s), not uploaded", "", planned) : tr("No mission");
+        s = planned > 0 ? tr("Planned: %1, not uploaded").arg(waypointCount(planned)) : tr("No mission");
         break;
     case MissionState::Uploading:
-        s = tr("Uploading %n waypoint(s)…", "", n);
+        s = tr("Uploading %1…").arg(waypointCount(n));
         break;
     case MissionState::Uploaded:
-        s = tr("Uploaded and verified: %n waypoint(s)", "", n);
+        s = tr("Uploaded and verified: %1").arg(waypointCount(n));
         break;
     case MissionState::Running:
         s = tr("Running: waypoint %1 of %2").arg(k).arg(n);
@@ -379,7 +391,7 @@ QString MissionPanel::describe(const JausMission& m, int planned) {
         s = k > 0 ? tr("Paused at waypoint %1 of %2").arg(k).arg(n) : tr("Paused");
         break;
     case MissionState::Completed:
-        s = tr("Completed: %n waypoint(s)", "", n);
+        s = tr("Completed: %1").arg(waypointCount(n));
         break;
     case MissionState::Aborted:
         s = k > 0 ? tr("Aborted at waypoint %1 of %2").arg(k).arg(n) : tr("Aborted");
@@ -493,7 +505,7 @@ QString MissionPanel::openFile(const QString& path) {
         return r.error;
     }
     plan()->replace(r.waypoints, tr("Open %1").arg(QFileInfo(path).fileName()));
-    showMessage(tr("Opened %1: %n waypoint(s)", "", int(r.waypoints.size())).arg(QFileInfo(path).fileName()),
+    showMessage(tr("Opened %1: %2").arg(QFileInfo(path).fileName(), waypointCount(int(r.waypoints.size()))),
                 false);
     return {};
 }
@@ -507,9 +519,8 @@ QString MissionPanel::importFile(const QString& path) {
     for (MissionWaypoint& w : r.waypoints) // the vehicle's defaults: the file has none
         w = plan()->makeWaypoint(w.lat, w.lon);
     plan()->replace(r.waypoints, tr("Import %1").arg(QFileInfo(path).fileName()));
-    showMessage(tr("Imported %1: %n waypoint(s) with the vehicle's default speed and tolerance", "",
-                   int(r.waypoints.size()))
-                    .arg(QFileInfo(path).fileName()),
+    showMessage(tr("Imported %1: %2 with the vehicle's default speed and tolerance")
+                    .arg(QFileInfo(path).fileName(), waypointCount(int(r.waypoints.size()))),
                 false);
     return {};
 }

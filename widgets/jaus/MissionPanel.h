@@ -19,6 +19,7 @@ class QLabel;
 class QPushButton;
 class QSpinBox;
 class QTableView;
+class QTimer;
 
 namespace ocu {
 
@@ -81,7 +82,8 @@ public:
     QPushButton* button(Action a) const;
 
 signals:
-    // The plan drawn on the map changed (for the 3D view): WGS84 waypoints and the vehicle's colour.
+    // The plan drawn on the map changed (for the 3D view; at most every 100 ms while dragging): WGS84
+    // waypoints and the vehicle's colour.
     void planRouteChanged(const QVector<ocu::MissionWaypoint>& waypoints, const QColor& colour);
 
 private:
@@ -119,6 +121,7 @@ private:
     QTableView* m_table;
     MissionPlanTableModel* m_model;
     QSpinBox* m_from;
+    QTimer* m_routeTimer;
     QHash<int, QPushButton*> m_buttons;
 };
 
