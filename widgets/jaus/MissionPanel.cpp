@@ -141,21 +141,21 @@ void MissionPanel::build() {
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                              QAbstractItemView::AnyKeyPressed);
 
-    auto* files = new QHBoxLayout;
-    for (Action a : {Action::Edit, Action::Open, Action::Import, Action::Save, Action::Clear})
-        files->addWidget(button(a));
-    files->addStretch();
-    auto* edits = new QHBoxLayout;
-    for (Action a : {Action::Delete, Action::Undo, Action::Redo})
-        edits->addWidget(button(a));
-    edits->addStretch();
-    auto* commands = new QHBoxLayout;
-    commands->addWidget(button(Action::Upload));
-    commands->addWidget(button(Action::Start));
-    commands->addWidget(m_from);
-    for (Action a : {Action::Pause, Action::Resume, Action::Abort})
-        commands->addWidget(button(a));
-    commands->addStretch();
+    // Rows of at most three buttons: the panel shares the side column with the JAUS panels.
+    auto row = [this](std::initializer_list<QWidget*> widgets) {
+        auto* h = new QHBoxLayout;
+        for (QWidget* w : widgets)
+            h->addWidget(w);
+        h->addStretch();
+        return h;
+    };
+    auto* files = new QVBoxLayout;
+    files->addLayout(row({button(Action::Edit), button(Action::Clear)}));
+    files->addLayout(row({button(Action::Open), button(Action::Import), button(Action::Save)}));
+    auto* edits = row({button(Action::Delete), button(Action::Undo), button(Action::Redo)});
+    auto* commands = new QVBoxLayout;
+    commands->addLayout(row({button(Action::Upload), button(Action::Start), m_from}));
+    commands->addLayout(row({button(Action::Pause), button(Action::Resume), button(Action::Abort)}));
     auto* v = new QVBoxLayout(this);
     v->addWidget(m_title);
     v->addWidget(m_state);
