@@ -13,32 +13,37 @@ namespace ocu {
 
 namespace {
 
-// The LineString of a FeatureCollection (its first line feature), of a Feature, or the geometry itself; with
-// the properties of its feature.
-bool findLine(const QJsonObject& root, QJsonArray& coordinates, QJsonObject& properties) {
+// The route of a FeatureCollection (its first LineString or Point feature), of a Feature, or the geometry
+// itself, as positions; with the properties of its feature.
+bool findRoute(const QJsonObject& root, QJsonArray& positions, QJsonObject& properties) {
     const QString type = root.value(QLatin1String("type")).toString();
     if (type == QLatin1String("LineString")) {
-        coordinates = root.value(QLatin1String("coordinates")).toArray();
+        positions = root.value(QLatin1String("coordinates")).toArray();
+        return true;
+    }
+    if (type == QLatin1String("Point")) {
+        positions = QJsonArray{root.value(QLatin1String("coordinates"))};
         return true;
     }
     if (type == QLatin1String("Feature")) {
         const QJsonObject g = root.value(QLatin1String("geometry")).toObject();
-        if (g.value(QLatin1String("type")).toString() != QLatin1String("LineString"))
+        const QString gt = g.value(QLatin1String("type")).toString();
+        if (gt != QLatin1String("LineString") && gt != QLatin1String("Point"))
             return false;
-        coordinates = g.value(QLatin1String("coordinates")).toArray();
+        findRoute(g, positions, properties);
         properties = root.value(QLatin1String("properties")).toObject();
         return true;
     }
     if (type == QLatin1String("FeatureCollection"))
         for (const QJsonValue& f : root.value(QLatin1String("features")).toArray())
-            if (findLine(f.toObject(), coordinates, properties))
+            if (findRoute(f.toObject(), positions, properties))
                 return true;
     return false;
 }
 
 } // namespace
 
-QByteArray missionToGeoJson(const QVector<MissionWaypoint>& waypoints) {
+QByteArray writeMissionGeoJson(const QVector<MissionWaypoint>& waypoints) {
     QJsonArray coordinates, perPoint;
     for (const MissionWaypoint& w : waypoints) {
         coordinates.append(QJsonArray{w.lon, w.lat});
@@ -55,104 +60,95 @@ QByteArray missionToGeoJson(const QVector<MissionWaypoint>& waypoints) {
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
-MissionFileRead missionFromGeoJson(const QByteArray& json) {
-    MissionFileRead r;
+std::optional<QVector<MissionWaypoint>> readMissionGeoJson(const QByteArray& json, QString* error) {
+    auto fail = [error](const QString& why) -> std::optional<QVector<MissionWaypoint>> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
-    if (pe.error != QJsonParseError::NoError) {
-        r.error = QCoreApplication::translate("ocu::MissionGeoJson", "not JSON (%1 at byte %2)")
-                      .arg(pe.errorString())
-                      .arg(pe.offset);
-        return r;
-    }
-    QJsonArray coordinates;
+    if (pe.error != QJsonParseError::NoError)
+        return fail(QCoreApplication::translate("ocu::MissionGeoJson", "not JSON (%1 at byte %2)")
+                        .arg(pe.errorString())
+                        .arg(pe.offset));
+    QJsonArray positions;
     QJsonObject properties;
-    if (!doc.isObject() || !findLine(doc.object(), coordinates, properties)) {
-        r.error = QCoreApplication::translate("ocu::MissionGeoJson", "no GeoJSON LineString in it");
-        return r;
-    }
-    if (coordinates.isEmpty()) {
-        r.error = QCoreApplication::translate("ocu::MissionGeoJson", "the LineString has no points");
-        return r;
-    }
+    if (!doc.isObject() || !findRoute(doc.object(), positions, properties))
+        return fail(
+            QCoreApplication::translate("ocu::MissionGeoJson", "no GeoJSON LineString (the route) in it"));
+    if (positions.isEmpty())
+        return fail(QCoreApplication::translate("ocu::MissionGeoJson", "the route has no positions"));
     const QJsonValue per = properties.value(QLatin1String("waypoints"));
-    if (!per.isUndefined() && (!per.isArray() || per.toArray().size() != coordinates.size())) {
-        r.error = QCoreApplication::translate(
-                      "ocu::MissionGeoJson",
-                      "properties.waypoints must list one {speed, tolerance} per point (%1 points)")
-                      .arg(coordinates.size());
-        return r;
-    }
+    if (!per.isUndefined() && (!per.isArray() || per.toArray().size() != positions.size()))
+        return fail(QCoreApplication::translate("ocu::MissionGeoJson",
+                                                "properties.waypoints must list one {speed, tolerance} per "
+                                                "position (%1 positions)")
+                        .arg(positions.size()));
     const QJsonArray perArray = per.toArray();
-    for (int i = 0; i < coordinates.size(); ++i) {
-        const QJsonArray c = coordinates[i].toArray();
-        if (c.size() < 2 || !c[0].isDouble() || !c[1].isDouble()) {
-            r.error =
-                QCoreApplication::translate("ocu::MissionGeoJson", "point %1 is not [longitude, latitude]")
-                    .arg(i + 1);
-            return {{}, r.error};
-        }
+    QVector<MissionWaypoint> out;
+    for (int i = 0; i < positions.size(); ++i) {
+        const QJsonArray c = positions[i].toArray();
+        if (c.size() < 2 || !c[0].isDouble() || !c[1].isDouble())
+            return fail(
+                QCoreApplication::translate("ocu::MissionGeoJson", "position %1 is not [longitude, latitude]")
+                    .arg(i + 1));
         MissionWaypoint w;
         w.lon = c[0].toDouble();
         w.lat = c[1].toDouble();
-        if (!std::isfinite(w.lat) || !std::isfinite(w.lon) || std::abs(w.lat) > 90 || std::abs(w.lon) > 180) {
-            r.error = QCoreApplication::translate("ocu::MissionGeoJson",
-                                                  "point %1 is outside WGS84 (latitude %2, longitude %3)")
-                          .arg(i + 1)
-                          .arg(w.lat)
-                          .arg(w.lon);
-            return {{}, r.error};
-        }
+        if (!(std::abs(w.lat) <= 90 && std::abs(w.lon) <= 180))
+            return fail(
+                QCoreApplication::translate("ocu::MissionGeoJson",
+                                            "position %1 lies outside WGS84 (latitude %2, longitude %3)")
+                    .arg(i + 1)
+                    .arg(w.lat)
+                    .arg(w.lon));
         if (!perArray.isEmpty()) {
             const QJsonObject p = perArray[i].toObject();
             const QJsonValue speed = p.value(QLatin1String("speed")),
                              tol = p.value(QLatin1String("tolerance"));
-            if ((!speed.isUndefined() && (!speed.isDouble() || speed.toDouble() < 0)) ||
-                (!tol.isUndefined() && (!tol.isDouble() || tol.toDouble() < 0))) {
-                r.error = QCoreApplication::translate(
-                              "ocu::MissionGeoJson",
-                              "waypoint %1: speed and tolerance must be numbers of 0 or more")
-                              .arg(i + 1);
-                return {{}, r.error};
-            }
             w.speed = speed.toDouble();
             w.tolerance = tol.toDouble();
+            if ((!speed.isUndefined() && !speed.isDouble()) || (!tol.isUndefined() && !tol.isDouble()) ||
+                !(w.speed >= 0) || !(w.tolerance >= 0 && w.tolerance <= kMaxMissionToleranceM))
+                return fail(QCoreApplication::translate("ocu::MissionGeoJson",
+                                                        "waypoint %1: speed must be a number of 0 or more, "
+                                                        "tolerance 0 to 100 m")
+                                .arg(i + 1));
         }
-        r.waypoints << w;
+        out << w;
     }
-    return r;
+    return out;
 }
 
-QString saveMissionGeoJson(const QString& path, const QVector<MissionWaypoint>& waypoints) {
-    if (waypoints.isEmpty())
-        return QCoreApplication::translate("ocu::MissionGeoJson", "%1: the plan has no waypoints to save")
-            .arg(path);
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("ocu::MissionGeoJson", "%1: cannot be written (%2)")
-            .arg(path, f.errorString());
-    f.write(missionToGeoJson(waypoints));
-    if (!f.commit())
-        return QCoreApplication::translate("ocu::MissionGeoJson", "%1: cannot be written (%2)")
-            .arg(path, f.errorString());
-    return {};
-}
-
-MissionFileRead readMissionGeoJson(const QString& path) {
+std::optional<QVector<MissionWaypoint>> readMissionGeoJsonFile(const QString& path, QString* error) {
     QFile f(path);
+    QString why;
+    std::optional<QVector<MissionWaypoint>> out;
+    constexpr qint64 kMaxBytes = 64 << 20; // far beyond any route: a wrong file is refused, not read whole
     if (!f.open(QIODevice::ReadOnly))
-        return {{},
-                QCoreApplication::translate("ocu::MissionGeoJson", "%1: cannot be opened (%2)")
-                    .arg(path, f.errorString())};
-    constexpr qint64 kMaxBytes = 64 << 20; // far beyond any route; a wrong file is refused, not read whole
-    if (f.size() > kMaxBytes)
-        return {
-            {},
-            QCoreApplication::translate("ocu::MissionGeoJson", "%1: too large for a mission file").arg(path)};
-    MissionFileRead r = missionFromGeoJson(f.readAll());
-    if (!r.ok())
-        r.error = QStringLiteral("%1: %2").arg(path, r.error);
-    return r;
+        why =
+            QCoreApplication::translate("ocu::MissionGeoJson", "cannot be opened (%1)").arg(f.errorString());
+    else if (f.size() > kMaxBytes)
+        why = QCoreApplication::translate("ocu::MissionGeoJson", "too large for a mission file");
+    else
+        out = readMissionGeoJson(f.readAll(), &why);
+    if (!out && error)
+        *error = QStringLiteral("%1: %2").arg(path, why);
+    return out;
+}
+
+bool writeMissionGeoJsonFile(const QString& path, const QVector<MissionWaypoint>& waypoints, QString* error) {
+    QString why;
+    QSaveFile f(path);
+    if (waypoints.isEmpty())
+        why = QCoreApplication::translate("ocu::MissionGeoJson", "the plan has no waypoints to save");
+    else if (!f.open(QIODevice::WriteOnly) || f.write(writeMissionGeoJson(waypoints)) < 0 || !f.commit())
+        why =
+            QCoreApplication::translate("ocu::MissionGeoJson", "cannot be written (%1)").arg(f.errorString());
+    if (!why.isEmpty() && error)
+        *error = QStringLiteral("%1: %2").arg(path, why);
+    return why.isEmpty();
 }
 
 } // namespace ocu

@@ -1,5 +1,7 @@
 #include "models/jaus/MissionPlan.h"
 
+#include "models/jaus/MissionGeoJson.h"
+
 #include <QUndoCommand>
 #include <QUndoStack>
 
@@ -45,7 +47,8 @@ MissionPlan::Defaults MissionPlan::defaultsFor(const std::optional<JausPlatform>
     if (platform->maxForwardSpeed && *platform->maxForwardSpeed > 0)
         d.speed = *platform->maxForwardSpeed / 2;
     if (platform->front || platform->back)
-        d.tolerance = std::max(1.0, platform->front.value_or(0) + platform->back.value_or(0));
+        d.tolerance =
+            std::clamp(platform->front.value_or(0) + platform->back.value_or(0), 1.0, kMaxMissionToleranceM);
     return d;
 }
 
@@ -104,7 +107,8 @@ void MissionPlan::setSpeed(int index, double speed) {
 }
 
 void MissionPlan::setTolerance(int index, double tolerance) {
-    if (index < 0 || index >= size() || tolerance < 0 || m_points[index].tolerance == tolerance)
+    if (index < 0 || index >= size() || !(tolerance >= 0 && tolerance <= kMaxMissionToleranceM) ||
+        m_points[index].tolerance == tolerance)
         return;
     QVector<MissionWaypoint> after = m_points;
     after[index].tolerance = tolerance;

@@ -44,7 +44,8 @@ public:
     // A waypoint at (lat, lon) with the defaults.
     MissionWaypoint makeWaypoint(double lat, double lon) const;
 
-    // Edits, each one undo step (indexes out of range are ignored). `gesture` merges the moves of one drag
+    // Edits, each one undo step (indexes out of range, negative speeds and tolerances outside 0 to 100 m are
+    // ignored). `gesture` merges the moves of one drag
     // (same waypoint, same non-zero gesture) into one step.
     void insert(int index, const MissionWaypoint& waypoint);
     void append(const MissionWaypoint& waypoint) { insert(size(), waypoint); }

@@ -499,13 +499,14 @@ void MissionPanel::goHere(double lat, double lon) {
 }
 
 QString MissionPanel::openFile(const QString& path) {
-    const MissionFileRead r = readMissionGeoJson(path);
-    if (!r.ok()) {
-        showMessage(r.error, true);
-        return r.error;
+    QString error;
+    const auto waypoints = readMissionGeoJsonFile(path, &error);
+    if (!waypoints) {
+        showMessage(error, true);
+        return error;
     }
-    plan()->replace(r.waypoints, tr("Open %1").arg(QFileInfo(path).fileName()));
-    showMessage(tr("Opened %1: %2").arg(QFileInfo(path).fileName(), waypointCount(int(r.waypoints.size()))),
+    plan()->replace(*waypoints, tr("Open %1").arg(QFileInfo(path).fileName()));
+    showMessage(tr("Opened %1: %2").arg(QFileInfo(path).fileName(), waypointCount(int(waypoints->size()))),
                 false);
     return {};
 }
@@ -526,8 +527,8 @@ QString MissionPanel::importFile(const QString& path) {
 }
 
 QString MissionPanel::saveFile(const QString& path) {
-    const QString error = saveMissionGeoJson(path, plan() ? plan()->waypoints() : QVector<MissionWaypoint>{});
-    if (!error.isEmpty()) {
+    QString error;
+    if (!writeMissionGeoJsonFile(path, plan() ? plan()->waypoints() : QVector<MissionWaypoint>{}, &error)) {
         showMessage(error, true);
         return error;
     }

@@ -1,5 +1,6 @@
 #include "widgets/jaus/MissionPlanTableModel.h"
 
+#include "models/jaus/MissionGeoJson.h"
 #include "models/jaus/MissionPlan.h"
 
 #include <cmath>
@@ -87,7 +88,7 @@ bool MissionPlanTableModel::setData(const QModelIndex& index, const QVariant& va
         m_plan->setSpeed(row, v);
         return true;
     case Tolerance:
-        if (v < 0)
+        if (v < 0 || v > kMaxMissionToleranceM)
             return false;
         m_plan->setTolerance(row, v);
         return true;

@@ -100,7 +100,8 @@ private slots:
         QCOMPARE(plan.waypoints(), route());
         plan.setSpeed(0, 3);
         plan.setTolerance(0, 4);
-        plan.setSpeed(0, -1); // refused
+        plan.setSpeed(0, -1);      // refused
+        plan.setTolerance(0, 101); // beyond the wire's 0 to 100 m
         QCOMPARE(plan.at(0).speed, 3.0);
         QCOMPARE(plan.at(0).tolerance, 4.0);
         plan.setDefaults({0.8, 1.2});
@@ -158,17 +159,18 @@ private slots:
     void geoJsonRoundTripIsIdentical() {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("m.geojson"));
-        QCOMPARE(saveMissionGeoJson(path, route()), QString());
-        const MissionFileRead r = readMissionGeoJson(path);
-        QVERIFY2(r.ok(), qPrintable(r.error));
-        QCOMPARE(r.waypoints, route()); // bit for bit
+        QString error;
+        QVERIFY(writeMissionGeoJsonFile(path, route(), &error));
+        const auto read = readMissionGeoJsonFile(path, &error);
+        QVERIFY2(read, qPrintable(error));
+        QCOMPARE(*read, route()); // bit for bit
         const QString again = dir.filePath(QStringLiteral("again.geojson"));
-        QCOMPARE(saveMissionGeoJson(again, r.waypoints), QString());
+        QVERIFY(writeMissionGeoJsonFile(again, *read, &error));
         QFile a(path), b(again);
         QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
         QCOMPARE(a.readAll(), b.readAll());
         // The format: a FeatureCollection with one LineString, longitude first, per-point properties.
-        const QJsonObject root = QJsonDocument::fromJson(missionToGeoJson(route())).object();
+        const QJsonObject root = QJsonDocument::fromJson(writeMissionGeoJson(route())).object();
         QCOMPARE(root.value("type").toString(), QString("FeatureCollection"));
         const QJsonObject f = root.value("features").toArray().at(0).toObject();
         QCOMPARE(f.value("geometry").toObject().value("type").toString(), QString("LineString"));
@@ -181,11 +183,19 @@ private slots:
     }
 
     void geoJsonWithoutPropertiesOrAsBareGeometry() {
-        const MissionFileRead r =
-            missionFromGeoJson("{\"type\":\"LineString\",\"coordinates\":[[11,48],[11.1,48.1]]}");
-        QVERIFY(r.ok());
-        QCOMPARE(r.waypoints.size(), 2);
-        QCOMPARE(r.waypoints[1], (MissionWaypoint{48.1, 11.1, 0, 0}));
+        const auto line =
+            readMissionGeoJson("{\"type\":\"LineString\",\"coordinates\":[[11,48],[11.1,48.1]]}", nullptr);
+        QVERIFY(line);
+        QCOMPARE(line->size(), 2);
+        QCOMPARE(line->at(1), (MissionWaypoint{48.1, 11.1, 0, 0}));
+        // One waypoint: a Point feature.
+        const auto point =
+            readMissionGeoJson("{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\","
+                               "\"geometry\":{\"type\":\"Point\",\"coordinates\":[11,48]},"
+                               "\"properties\":{\"waypoints\":[{\"speed\":2,\"tolerance\":3}]}}]}",
+                               nullptr);
+        QVERIFY(point);
+        QCOMPARE(*point, (QVector<MissionWaypoint>{{48, 11, 2, 3}}));
     }
 
     void badGeoJsonIsRefusedWithAMessage_data() {
@@ -193,43 +203,51 @@ private slots:
         QTest::addColumn<QString>("says");
         QTest::newRow("not json") << QByteArray("{\"type\": ") << "not JSON";
         QTest::newRow("binary") << QByteArray("\x89PNG\r\n\x1a\n\0\0", 10) << "not JSON";
-        QTest::newRow("no line") << QByteArray("{\"type\":\"Point\",\"coordinates\":[1,2]}")
+        QTest::newRow("no line") << QByteArray("{\"type\":\"Polygon\",\"coordinates\":[[[1,2],[2,3],[1,2]]]}")
                                  << "no GeoJSON LineString";
         QTest::newRow("empty line") << QByteArray("{\"type\":\"LineString\",\"coordinates\":[]}")
-                                    << "no points";
+                                    << "no positions";
         QTest::newRow("bad point") << QByteArray("{\"type\":\"LineString\",\"coordinates\":[[1],[2,3]]}")
-                                   << "point 1";
+                                   << "position 1";
         QTest::newRow("text point") << QByteArray("{\"type\":\"LineString\",\"coordinates\":[[\"a\",\"b\"]]}")
-                                    << "point 1";
+                                    << "position 1";
         QTest::newRow("latitude") << QByteArray("{\"type\":\"LineString\",\"coordinates\":[[1,2],[11,95]]}")
-                                  << "point 2 is outside WGS84";
+                                  << "position 2 lies outside WGS84";
         QTest::newRow("count")
-            << QByteArray("{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":\n"
-                          "            [[1,2],[3,4]]},\"properties\":{\"waypoints\":[{\"speed\":1}]}}")
-            << "one {speed, tolerance} per point";
+            << QByteArray("{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":"
+                          "[[1,2],[3,4]]},\"properties\":{\"waypoints\":[{\"speed\":1}]}}")
+            << "one {speed, tolerance} per position";
         QTest::newRow("negative")
-            << QByteArray(
-                   "{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":\n"
-                   "            [[1,2]]},\"properties\":{\"waypoints\":[{\"speed\":-1,\"tolerance\":1}]}}")
+            << QByteArray("{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":"
+                          "[[1,2]]},\"properties\":{\"waypoints\":[{\"speed\":-1,\"tolerance\":1}]}}")
+            << "waypoint 1";
+        QTest::newRow("tolerance")
+            << QByteArray("{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":"
+                          "[[1,2]]},\"properties\":{\"waypoints\":[{\"speed\":1,\"tolerance\":250}]}}")
+            << "tolerance 0 to 100 m";
+        QTest::newRow("text speed")
+            << QByteArray("{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":"
+                          "[[1,2]]},\"properties\":{\"waypoints\":[{\"speed\":\"fast\"}]}}")
             << "waypoint 1";
     }
     void badGeoJsonIsRefusedWithAMessage() {
         QFETCH(QByteArray, json);
         QFETCH(QString, says);
-        const MissionFileRead r = missionFromGeoJson(json);
-        QVERIFY(!r.ok());
-        QVERIFY(r.waypoints.isEmpty());
-        QVERIFY2(r.error.contains(says), qPrintable(r.error));
+        QString error;
+        QVERIFY(!readMissionGeoJson(json, &error));
+        QVERIFY2(error.contains(says), qPrintable(error));
     }
 
     void filesThatCannotBeReadOrWritten() {
         QTemporaryDir dir;
-        const MissionFileRead missing = readMissionGeoJson(dir.filePath(QStringLiteral("none.geojson")));
-        QVERIFY(!missing.ok() && missing.error.contains("none.geojson"));
+        QString error;
+        QVERIFY(!readMissionGeoJsonFile(dir.filePath(QStringLiteral("none.geojson")), &error));
+        QVERIFY(error.contains("none.geojson"));
+        QVERIFY(!writeMissionGeoJsonFile(dir.filePath(QStringLiteral("x.geojson")), {}, &error)); // nothing
+        QVERIFY(error.contains("no waypoints"));
         QVERIFY(
-            !saveMissionGeoJson(dir.filePath(QStringLiteral("x.geojson")), {}).isEmpty()); // nothing to save
-        QVERIFY(saveMissionGeoJson(dir.filePath(QStringLiteral("no/such/dir/x.geojson")), route())
-                    .contains("cannot be written"));
+            !writeMissionGeoJsonFile(dir.filePath(QStringLiteral("no/such/dir/x.geojson")), route(), &error));
+        QVERIFY2(error.contains("cannot be written"), qPrintable(error));
     }
 
     void gpxRouteImportsToTheSamePoints() {
