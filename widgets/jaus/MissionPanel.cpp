@@ -167,7 +167,11 @@ void MissionPanel::build() {
     v->addWidget(m_unavailable);
     v->addWidget(m_message);
 
-    connect(edit, &QPushButton::toggled, this, [this](bool on) {
+    connectButtons();
+}
+
+void MissionPanel::connectButtons() {
+    connect(button(Action::Edit), &QPushButton::toggled, this, [this](bool on) {
         if (m_editor)
             m_editor->setEditing(on);
     });

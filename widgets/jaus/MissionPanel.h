@@ -88,6 +88,7 @@ signals:
 
 private:
     void build();
+    void connectButtons();
     QPushButton* addButton(Action a, const QString& text, const QString& tip);
     void onSelection(const QString& id);
     void onVehicle(const JausVehicle& v);
