@@ -1,12 +1,14 @@
 // The JAUS module of the console: the JausBridge over the JAUS stack, the access-control and teleop panels
 // (with the SDL2 joystick mapped as the site configuration says), the "JAUS" link indicator and the headless
-// commands request_control, release_control and drive.
+// commands request_control, release_control, drive and the waypoint missions (mission_upload, mission_start,
+// mission_pause, mission_resume, mission_abort, goto).
 #include "app/HeadlessCommands.h"
 #include "app/ProtocolModule.h"
 #include "app/modules/JausVideoHeadless.h"
 
 #include "models/FleetContext.h"
 #include "models/bridges/JausBridge.h"
+#include "models/jaus/MissionGeoJson.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/jaus/JausControlPanel.h"
 #include "widgets/jaus/MissionPanel.h"
@@ -28,6 +30,31 @@ namespace {
 const QString kControlPanel = QStringLiteral("jaus");
 const QString kTeleopPanel = QStringLiteral("teleop");
 const QString kMissionPanel = QStringLiteral("mission");
+
+// mission_upload: inline "waypoints", or "file": a GeoJSON route read into them (the result echoes the file).
+HeadlessCommands::GateRequest readMissionUpload(const QJsonObject& cmd) {
+    const QString name = QStringLiteral("mission_upload");
+    const QString path = cmd.value(QStringLiteral("file")).toString();
+    if (path.isEmpty())
+        return HeadlessCommands::read(name, cmd);
+    QString why;
+    const auto waypoints = readMissionGeoJsonFile(path, &why);
+    if (!waypoints) {
+        HeadlessCommands::GateRequest r;
+        r.refusal = QCoreApplication::translate("JausModule", "mission_upload: %1; nothing sent").arg(why);
+        r.refusalTarget = cmd.value(QStringLiteral("id")).toString();
+        return r;
+    }
+    QJsonObject withPoints = cmd;
+    withPoints.remove(QStringLiteral("file"));
+    QJsonArray list;
+    for (const MissionWaypoint& w : *waypoints)
+        list << waypointToJson(w);
+    withPoints[QStringLiteral("waypoints")] = list;
+    HeadlessCommands::GateRequest r = HeadlessCommands::read(name, withPoints);
+    r.echo[QStringLiteral("file")] = path;
+    return r;
+}
 
 class JausModule final : public ProtocolModule {
 public:
@@ -119,13 +146,21 @@ public:
                                  "resume", "standby", "reset"})
             table.allow(QLatin1String(name), {R::UgvOperator, R::Supervisor, R::Admin});
         table.allow(QStringLiteral("shutdown"), {R::Supervisor, R::Admin});
+        // Missions move the vehicle: whoever may drive may run them (mission_abort stops one, but it is
+        // no emergency stop: STOP ALL is for everyone).
+        for (const char* name :
+             {"mission_upload", "mission_start", "mission_pause", "mission_resume", "mission_abort", "goto"})
+            table.allow(QLatin1String(name), {R::UgvOperator, R::Supervisor, R::Admin});
     }
 
     // To the bridge of the machine named by "id" (asked for when missing); video_status, video_play and
     // video_stop when the site has JAUS vehicles.
     void registerHeadless(HeadlessCommands& table) override {
-        for (const char* name : {"request_control", "release_control", "drive", "drive_start", "drive_stop"})
+        for (const char* name : {"request_control", "release_control", "drive", "drive_start", "drive_stop",
+                                 "mission_start", "mission_pause", "mission_resume", "mission_abort", "goto"})
             table.addGateCommand(QLatin1String(name));
+        // Inline waypoints, or "file": a GeoJSON route (models/jaus/MissionGeoJson) read here, at the edge.
+        table.addGateCommand(QStringLiteral("mission_upload"), readMissionUpload);
         if (m_bridge)
             (new JausVideoHeadless(m_bridge, m_bridge))->registerIn(table);
     }

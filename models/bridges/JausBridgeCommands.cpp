@@ -245,6 +245,44 @@ void JausBridge::command(const OperatorCommand& command, OutcomeCallback done) {
                 endSession(*sub, c.reason, std::move(done));
             },
             [&](const TimedDrive& c) { timedDrive(c, std::move(done)); },
+            // Waypoint missions: the stack says what went on the wire; the mission's state comes from the
+            // vehicle's reports (JausVehicle::mission).
+            [&](const MissionUpload& c) {
+                std::vector<MissionPoint> points;
+                for (const MissionWaypoint& w : c.waypoints)
+                    points.push_back(MissionPoint{w.lat, w.lon, w.speed, w.tolerance});
+                sendToVehicle(c.id, what, std::move(done),
+                              [this, points, g = c.global](quint16 ss, OutcomeCallback d) {
+                                  m_stack->missionUpload(ss, points, g, std::move(d));
+                              });
+            },
+            [&](const MissionStart& c) {
+                sendToVehicle(c.id, what, std::move(done),
+                              [this, from = c.fromIndex](quint16 ss, OutcomeCallback d) {
+                                  m_stack->missionStart(ss, from, std::move(d));
+                              });
+            },
+            [&](const MissionPause& c) {
+                sendToVehicle(c.id, what, std::move(done), [this](quint16 ss, OutcomeCallback d) {
+                    m_stack->missionPause(ss, std::move(d));
+                });
+            },
+            [&](const MissionResume& c) {
+                sendToVehicle(c.id, what, std::move(done), [this](quint16 ss, OutcomeCallback d) {
+                    m_stack->missionResume(ss, std::move(d));
+                });
+            },
+            [&](const MissionAbort& c) {
+                sendToVehicle(c.id, what, std::move(done), [this](quint16 ss, OutcomeCallback d) {
+                    m_stack->missionAbort(ss, std::move(d));
+                });
+            },
+            [&](const GoTo& c) {
+                const MissionWaypoint& w = c.waypoint;
+                sendToVehicle(c.id, what, std::move(done), [this, w](quint16 ss, OutcomeCallback d) {
+                    m_stack->goTo(ss, MissionPoint{w.lat, w.lon, w.speed, w.tolerance}, std::move(d));
+                });
+            },
             [&](const auto&) { FleetBridge::command(command, std::move(done)); },
         },
         command);

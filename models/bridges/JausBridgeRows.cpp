@@ -128,7 +128,58 @@ JausVehicle toVehicle(const SubsystemSnapshot& s) {
     for (const jaus::VideoEndpoint& e : s.videoEndpoints)
         v.videoEndpoints.push_back({e.resourceId, e.sensorId, QString::fromStdString(e.url),
                                     QString::fromStdString(e.name), e.panTilt, e.configured});
+    v.mission = toMission(s.mission);
     return v;
+}
+
+JausMission toMission(const MissionStatus& m) {
+    JausMission out;
+    switch (m.phase) {
+    case MissionPhase::None:
+        out.state = MissionState::None;
+        break;
+    case MissionPhase::Uploading:
+        out.state = MissionState::Uploading;
+        break;
+    case MissionPhase::Uploaded:
+        out.state = MissionState::Uploaded;
+        break;
+    case MissionPhase::Running:
+        out.state = MissionState::Running;
+        break;
+    case MissionPhase::Paused:
+        out.state = MissionState::Paused;
+        break;
+    case MissionPhase::Completed:
+        out.state = MissionState::Completed;
+        break;
+    case MissionPhase::Aborted:
+        out.state = MissionState::Aborted;
+        break;
+    case MissionPhase::StoppedByEmergency:
+        out.state = MissionState::StoppedByEmergency;
+        break;
+    case MissionPhase::Lost:
+        out.state = MissionState::Lost;
+        break;
+    case MissionPhase::Rejected:
+        out.state = MissionState::Rejected;
+        break;
+    }
+    for (const MissionPoint& p : m.waypoints)
+        out.waypoints.push_back(MissionWaypoint{p.lat, p.lon, p.speed, p.tolerance});
+    out.global = m.global;
+    out.activeIndex = m.activeIndex;
+    out.lastSeenIndex = m.lastSeenIndex;
+    out.distanceToGoM = m.distanceToGoM;
+    out.etaS = m.etaS;
+    out.ours = m.ours;
+    out.reason = QString::fromStdString(m.reason);
+    out.drivenPath.reserve(qsizetype(m.drivenPath.size()));
+    for (const auto& [lat, lon] : m.drivenPath)
+        out.drivenPath.push_back({lat, lon});
+    out.pathSource = QString::fromStdString(m.pathSource);
+    return out;
 }
 
 JausVehicleEvent toVehicleEvent(const JausEvent& e) {

@@ -11,5 +11,7 @@ namespace ocu::jausrow {
 JausAddress toAddress(const jaus::JausId& id);
 JausVehicle toVehicle(const jaus::SubsystemSnapshot& s);
 JausVehicleEvent toVehicleEvent(const jaus::JausEvent& e);
+// The mission as the stack knows it, in the models' types (state from the vehicle's reports).
+JausMission toMission(const jaus::MissionStatus& m);
 
 } // namespace ocu::jausrow

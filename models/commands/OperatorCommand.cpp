@@ -125,6 +125,41 @@ ParsedCommand parseAssign(const QString& name, const QJsonObject& json) {
     return a.done(c);
 }
 
+ParsedCommand parseMissionUpload(const QString& name, const QJsonObject& json) {
+    Args a(name, json);
+    MissionUpload c;
+    c.id = a.id();
+    const QJsonValue list = json.value(QStringLiteral("waypoints"));
+    if (!list.isArray() || list.toArray().isEmpty())
+        a.fail(text("mission_upload: \"waypoints\" must be a non-empty array of {\"lat\", \"lon\"} (or a "
+                    "\"file\" with a GeoJSON route)"));
+    for (const QJsonValue& v : list.toArray()) {
+        QString why;
+        if (auto w = waypointFromJson(v, &why))
+            c.waypoints << *w;
+        else
+            a.fail(text("mission_upload: waypoint %1: %2").arg(c.waypoints.size() + 1).arg(why));
+    }
+    const QJsonValue global = json.value(QStringLiteral("global"));
+    if (global.isBool())
+        c.global = global.toBool();
+    else if (!global.isUndefined() && !global.isNull())
+        a.fail(text("mission_upload: \"global\" must be true or false"));
+    return a.done(c);
+}
+
+ParsedCommand parseGoTo(const QString& name, const QJsonObject& json) {
+    Args a(name, json);
+    GoTo c;
+    c.id = a.id();
+    QString why;
+    if (auto w = waypointFromJson(json, &why))
+        c.waypoint = *w;
+    else
+        a.fail(text("goto: %1").arg(why));
+    return a.done(c);
+}
+
 template <class LinkCommand> ParsedCommand parseLinkCommand(const QString& name, const QJsonObject& json) {
     Args a(name, json);
     LinkCommand c;
@@ -154,6 +189,12 @@ QString commandName(const OperatorCommand& command) {
                           [](const ResetAssignment&) { return QStringLiteral("reset_assignment"); },
                           [](const SendText&) { return QStringLiteral("send_text"); },
                           [](const PingStation&) { return QStringLiteral("ping"); },
+                          [](const MissionUpload&) { return QStringLiteral("mission_upload"); },
+                          [](const MissionStart&) { return QStringLiteral("mission_start"); },
+                          [](const MissionPause&) { return QStringLiteral("mission_pause"); },
+                          [](const MissionResume&) { return QStringLiteral("mission_resume"); },
+                          [](const MissionAbort&) { return QStringLiteral("mission_abort"); },
+                          [](const GoTo&) { return QStringLiteral("goto"); },
                       },
                       command);
 }
@@ -231,6 +272,24 @@ QJsonObject toJson(const OperatorCommand& command) {
                        o[QStringLiteral("text")] = c.text;
                    },
                    [&](const PingStation& c) { o[QStringLiteral("idx")] = c.idx; },
+                   [&](const MissionUpload& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       QJsonArray list;
+                       for (const MissionWaypoint& w : c.waypoints)
+                           list << waypointToJson(w);
+                       o[QStringLiteral("waypoints")] = list;
+                       if (c.global)
+                           o[QStringLiteral("global")] = *c.global;
+                   },
+                   [&](const MissionStart& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       o[QStringLiteral("from_index")] = c.fromIndex;
+                   },
+                   [&](const GoTo& c) {
+                       o = waypointToJson(c.waypoint);
+                       o[QStringLiteral("cmd")] = QStringLiteral("goto");
+                       o[QStringLiteral("id")] = c.id;
+                   },
                    [&](const auto& c) { o[QStringLiteral("id")] = c.id; }, // machine commands
                },
                command);
@@ -247,7 +306,10 @@ bool isOperatorCommand(const QString& name) {
                                    QStringLiteral("drive"),           QStringLiteral("all_stop_apply"),
                                    QStringLiteral("all_stop_remove"), QStringLiteral("fetch_map"),
                                    QStringLiteral("assign"),          QStringLiteral("reset_assignment"),
-                                   QStringLiteral("send_text"),       QStringLiteral("ping")};
+                                   QStringLiteral("send_text"),       QStringLiteral("ping"),
+                                   QStringLiteral("mission_upload"),  QStringLiteral("mission_start"),
+                                   QStringLiteral("mission_pause"),   QStringLiteral("mission_resume"),
+                                   QStringLiteral("mission_abort"),   QStringLiteral("goto")};
     return names.contains(name);
 }
 
@@ -309,6 +371,25 @@ ParsedCommand parseOperatorCommand(const QString& name, const QJsonObject& json)
             a.fail(text("ping: \"idx\" must be a station index 0-253"));
         return a.done(PingStation{int(idx)});
     }
+    if (name == QLatin1String("mission_upload"))
+        return parseMissionUpload(name, json);
+    if (name == QLatin1String("mission_start")) {
+        MissionStart c;
+        c.id = a.id();
+        const double from = a.number("from_index", 0);
+        if (!(from >= 0 && from <= 65533 && std::floor(from) == from))
+            a.fail(text("mission_start: \"from_index\" must be a waypoint index (0 = the first)"));
+        c.fromIndex = int(from);
+        return a.done(c);
+    }
+    if (name == QLatin1String("mission_pause"))
+        return a.done(MissionPause{a.id()});
+    if (name == QLatin1String("mission_resume"))
+        return a.done(MissionResume{a.id()});
+    if (name == QLatin1String("mission_abort"))
+        return a.done(MissionAbort{a.id()});
+    if (name == QLatin1String("goto"))
+        return parseGoTo(name, json);
     if (name.isEmpty())
         return {std::nullopt, QStringLiteral("missing \"cmd\""), {}};
     return {std::nullopt, QStringLiteral("unknown command %1").arg(name), {}};
@@ -394,6 +475,51 @@ std::optional<QVector<AssignTask>> tasksFromJson(const QJsonObject& args, QStrin
         out << t;
     }
     return out;
+}
+
+QJsonObject waypointToJson(const MissionWaypoint& w) {
+    QJsonObject o;
+    o[QStringLiteral("lat")] = w.lat;
+    o[QStringLiteral("lon")] = w.lon;
+    o[QStringLiteral("speed")] = w.speed;
+    o[QStringLiteral("tolerance")] = w.tolerance;
+    return o;
+}
+
+std::optional<MissionWaypoint> waypointFromJson(const QJsonValue& v, QString* error) {
+    auto fail = [&](const QString& why) -> std::optional<MissionWaypoint> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    MissionWaypoint w;
+    if (v.isArray()) {
+        const QJsonArray a = v.toArray();
+        if (a.size() < 2 || !a[0].isDouble() || !a[1].isDouble())
+            return fail(text("[lat, lon] must be two numbers"));
+        w.lat = a[0].toDouble();
+        w.lon = a[1].toDouble();
+    } else if (v.isObject()) {
+        const QJsonObject o = v.toObject();
+        if (!o.value(QStringLiteral("lat")).isDouble() || !o.value(QStringLiteral("lon")).isDouble())
+            return fail(text("\"lat\" and \"lon\" must be numbers (degrees WGS84)"));
+        w.lat = o.value(QStringLiteral("lat")).toDouble();
+        w.lon = o.value(QStringLiteral("lon")).toDouble();
+        for (const char* key : {"speed", "tolerance"}) {
+            const QJsonValue x = o.value(QLatin1String(key));
+            if (!x.isUndefined() && !x.isNull() && !(x.isDouble() && x.toDouble() >= 0))
+                return fail(text("\"%1\" must be a number, 0 or more").arg(QLatin1String(key)));
+        }
+        w.speed = o.value(QStringLiteral("speed")).toDouble(0);
+        w.tolerance = o.value(QStringLiteral("tolerance")).toDouble(0);
+    } else {
+        return fail(text("a waypoint is {\"lat\", \"lon\", \"speed\", \"tolerance\"}"));
+    }
+    if (!(std::fabs(w.lat) <= 90 && std::fabs(w.lon) <= 180))
+        return fail(text("latitude must lie within ±90° and longitude within ±180°"));
+    if (w.tolerance > 100)
+        return fail(text("\"tolerance\" must be at most 100 m (AS6009 waypoint tolerance)"));
+    return w;
 }
 
 } // namespace ocu

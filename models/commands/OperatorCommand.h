@@ -8,6 +8,7 @@
 // Adding a command: a struct here (with operator==), its name in commandName, its JSON in toJson and
 // parseOperatorCommand, its route in commandRoute, and the bridge's visitor case.
 #include "models/MachineState.h"
+#include "models/jaus/JausMission.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -82,6 +83,41 @@ struct TimedDrive {
     bool operator==(const TimedDrive&) const = default;
 };
 
+// ---- JAUS: waypoint missions (AEP-4818 §8.2) ----
+
+// Uploads the route to the vehicle's waypoint list driver; global: the GlobalWaypointListDriver (true), the
+// local one (false), global where the vehicle offers it (empty).
+struct MissionUpload {
+    QString id;
+    QVector<MissionWaypoint> waypoints;
+    std::optional<bool> global;
+    bool operator==(const MissionUpload&) const = default;
+};
+// Executes the uploaded (verified) list from the 0-based waypoint fromIndex.
+struct MissionStart {
+    QString id;
+    int fromIndex = 0;
+    bool operator==(const MissionStart&) const = default;
+};
+struct MissionPause {
+    QString id;
+    bool operator==(const MissionPause&) const = default;
+};
+struct MissionResume {
+    QString id;
+    bool operator==(const MissionResume&) const = default;
+};
+struct MissionAbort {
+    QString id;
+    bool operator==(const MissionAbort&) const = default;
+};
+// One waypoint: the vehicle's single waypoint driver, else a one-waypoint list started at once.
+struct GoTo {
+    QString id;
+    MissionWaypoint waypoint;
+    bool operator==(const GoTo&) const = default;
+};
+
 // ---- ISO 23725: all-stop per AHS link, map, dispatch ----
 
 // The link by name, else the link of the machine `id`, else the only link.
@@ -134,9 +170,11 @@ struct PingStation {
     bool operator==(const PingStation&) const = default;
 };
 
-using OperatorCommand = std::variant<StopAll, StopMachine, ClearStop, RequestControl, ReleaseControl,
-                                     ReleaseAll, Management, DriveStart, DriveStop, TimedDrive, AllStopApply,
-                                     AllStopRemove, FetchMap, Assign, ResetAssignment, SendText, PingStation>;
+using OperatorCommand =
+    std::variant<StopAll, StopMachine, ClearStop, RequestControl, ReleaseControl, ReleaseAll, Management,
+                 DriveStart, DriveStop, TimedDrive, AllStopApply, AllStopRemove, FetchMap, Assign,
+                 ResetAssignment, SendText, PingStation, MissionUpload, MissionStart, MissionPause,
+                 MissionResume, MissionAbort, GoTo>;
 
 // The visitor idiom: std::visit(Overloaded{[](const StopAll&) {...}, [](const auto&) {...}}, command).
 template <class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
@@ -178,5 +216,10 @@ bool isOperatorCommand(const QString& name);
 QJsonArray tasksToJson(const QVector<AssignTask>& tasks);
 // An error text (and no tasks) when the arguments do not describe at least one well-formed task.
 std::optional<QVector<AssignTask>> tasksFromJson(const QJsonObject& args, QString* error);
+
+// A waypoint as JSON: {"lat","lon","speed","tolerance"} (speed and tolerance 0 = the vehicle's default).
+QJsonObject waypointToJson(const MissionWaypoint& waypoint);
+// The same read back; [lat, lon] is accepted too. An error text when it is not a waypoint in WGS84.
+std::optional<MissionWaypoint> waypointFromJson(const QJsonValue& value, QString* error);
 
 } // namespace ocu

@@ -24,6 +24,7 @@
 #include "protocols/jaus/clients/LivenessClient.h"
 #include "protocols/jaus/clients/ManagementClient.h"
 #include "protocols/jaus/clients/MessageTable.h"
+#include "protocols/jaus/clients/MissionClient.h"
 #include "protocols/jaus/clients/PlatformSpecificationsClient.h"
 #include "protocols/jaus/clients/PoseClient.h"
 #include "protocols/jaus/clients/VideoClient.h"
@@ -65,6 +66,18 @@ public:
     bool panTilt(std::uint16_t subsystem, std::uint16_t sensorId, double panRate, double tiltRate) {
         return m_video.panTilt(subsystem, sensorId, panRate, tiltRate);
     }
+    // Waypoint missions (MissionClient): each returns false with the reason when nothing went out.
+    bool missionUpload(std::uint16_t subsystem, const std::vector<MissionPoint>& points,
+                       std::optional<bool> global) {
+        return m_mission.upload(subsystem, points, global);
+    }
+    bool missionStart(std::uint16_t subsystem, int fromIndex) {
+        return m_mission.start(subsystem, fromIndex);
+    }
+    bool missionPause(std::uint16_t subsystem) { return m_mission.pause(subsystem); }
+    bool missionResume(std::uint16_t subsystem) { return m_mission.resume(subsystem); }
+    bool missionAbort(std::uint16_t subsystem) { return m_mission.abort(subsystem); }
+    bool goTo(std::uint16_t subsystem, const MissionPoint& point) { return m_mission.goTo(subsystem, point); }
     // STOP ALL: SetEmergency to every discovered subsystem, whether this console controls it
     // or not; one outcome per subsystem.
     // alreadySent: subsystems whose SetEmergency already left on the caller's thread (JausStack's fast path):
@@ -111,6 +124,7 @@ private:
     PlatformSpecificationsClient m_platform;
     HealthMonitorClient m_health;
     VideoClient m_video;
+    MissionClient m_mission;
     std::vector<ClientService*> m_all;
     // The timers that run once a subsystem's services are known, in this order (liveness and discovery
     // run before them, for every subsystem).

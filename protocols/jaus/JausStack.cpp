@@ -272,6 +272,25 @@ void JausStack::panTilt(std::uint16_t ss, std::uint16_t sensorId, double panRate
                         OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.panTilt(ss, sensorId, panRate, tiltRate));
 }
+void JausStack::missionUpload(std::uint16_t ss, std::vector<MissionPoint> points, std::optional<bool> global,
+                              OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.missionUpload(ss, points, global));
+}
+void JausStack::missionStart(std::uint16_t ss, int fromIndex, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.missionStart(ss, fromIndex));
+}
+void JausStack::missionPause(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.missionPause(ss));
+}
+void JausStack::missionResume(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.missionResume(ss));
+}
+void JausStack::missionAbort(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.missionAbort(ss));
+}
+void JausStack::goTo(std::uint16_t ss, MissionPoint point, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.goTo(ss, point));
+}
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
     if (!d->running)

@@ -67,6 +67,17 @@ public:
     void panTilt(std::uint16_t subsystem, std::uint16_t sensorId, double panRate, double tiltRate,
                  OutcomeCallback done);
 
+    // Waypoint missions (MissionClient): `done` says whether the first message of the step went out (or why
+    // not); the mission's progress is SubsystemSnapshot::mission, from the vehicle's reports.
+    // global: the GlobalWaypointListDriver (true), the local one (false), global where offered (empty).
+    void missionUpload(std::uint16_t subsystem, std::vector<MissionPoint> points, std::optional<bool> global,
+                       OutcomeCallback done);
+    void missionStart(std::uint16_t subsystem, int fromIndex, OutcomeCallback done);
+    void missionPause(std::uint16_t subsystem, OutcomeCallback done);
+    void missionResume(std::uint16_t subsystem, OutcomeCallback done);
+    void missionAbort(std::uint16_t subsystem, OutcomeCallback done);
+    void goTo(std::uint16_t subsystem, MissionPoint point, OutcomeCallback done);
+
     // Subsystems whose SetEmergency is planned for the caller's-thread fast path now (tests, diagnostics).
     std::size_t plannedStopCount() const;
 

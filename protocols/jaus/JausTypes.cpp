@@ -68,8 +68,36 @@ const char* toString(EventKind k) {
         return "transport-error";
     case EventKind::DriveNotSent:
         return "drive-not-sent";
+    case EventKind::MissionChanged:
+        return "mission-changed";
     }
     return "?";
+}
+
+const char* toString(MissionPhase p) {
+    switch (p) {
+    case MissionPhase::None:
+        return "none";
+    case MissionPhase::Uploading:
+        return "uploading";
+    case MissionPhase::Uploaded:
+        return "uploaded";
+    case MissionPhase::Running:
+        return "running";
+    case MissionPhase::Paused:
+        return "paused";
+    case MissionPhase::Completed:
+        return "completed";
+    case MissionPhase::Aborted:
+        return "aborted";
+    case MissionPhase::StoppedByEmergency:
+        return "stopped by emergency";
+    case MissionPhase::Lost:
+        return "lost";
+    case MissionPhase::Rejected:
+        return "rejected";
+    }
+    return "none";
 }
 
 std::string toText(const GroupSocketProblem& p) {

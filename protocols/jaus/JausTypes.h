@@ -8,6 +8,7 @@
 #include "protocols/common/Clock.h"
 #include "protocols/jaus/JudpCodec.h"
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/MissionTypes.h"
 #include "protocols/jaus/VideoTypes.h"
 
 namespace ocu::jaus {
@@ -74,6 +75,9 @@ struct SubsystemSnapshot {
     // per vehicle) and its pan-tilt units.
     std::vector<VideoEndpoint> videoEndpoints;
     std::vector<PanTiltState> panTilts;
+
+    // The waypoint mission this console uploaded (MissionClient), phase None when there is none.
+    MissionStatus mission;
 };
 
 enum class Severity { Info, Warning, Error };
@@ -93,7 +97,8 @@ enum class EventKind {
     DecodeError,
     CommandRefused,
     TransportError,
-    DriveNotSent // a drive stream message was not taken by the socket, or the stream recovered
+    DriveNotSent,  // a drive stream message was not taken by the socket, or the stream recovered
+    MissionChanged // the phase of a waypoint mission changed (text names the new one)
 };
 const char* toString(EventKind k);
 

@@ -1,5 +1,6 @@
 // Core service messages (AS5710A): names, management, access control, one-integer bodies.
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/MessagesMission.h"
 #include "protocols/jaus/MessagesVideo.h"
 
 #include "protocols/jaus/MessageSupport.h"
@@ -7,6 +8,14 @@
 namespace ocu::jaus {
 
 using namespace codec;
+
+namespace {
+// The names of the message families with tables of their own (mission, video).
+const char* familyMessageName(std::uint16_t id) {
+    const char* name = missionMessageName(id);
+    return name ? name : videoMessageName(id);
+}
+} // namespace
 
 const char* messageName(std::uint16_t id) {
     switch (id) {
@@ -125,7 +134,7 @@ const char* messageName(std::uint16_t id) {
     case msg::ReportHealthSummary:
         return "ReportHealthSummary";
     default:
-        return videoMessageName(id);
+        return familyMessageName(id);
     }
 }
 

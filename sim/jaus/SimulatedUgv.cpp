@@ -301,6 +301,11 @@ UgvState SimulatedUgv::state() const {
     return d->io.call([d] { return d->core.state(); });
 }
 
+UgvRoute SimulatedUgv::route() const {
+    Impl* d = m_impl.get();
+    return d->io.call([d] { return d->core.route(); });
+}
+
 jaus::GlobalPose SimulatedUgv::globalPose() const {
     Impl* d = m_impl.get();
     return d->io.call([d] { return d->core.globalPose(); });

@@ -65,6 +65,7 @@ public:
 
     // Blocking snapshot of the simulated state (tests, demo).
     UgvState state() const;
+    UgvRoute route() const; // the waypoint services' list, active element and path
     jaus::GlobalPose globalPose() const;
     Counters& counters();
 

@@ -24,6 +24,7 @@ UgvCore::UgvCore(SimulatedUgvConfig config, JausOutput& output, const Clock& clo
     registerManagement();
     registerDriving();
     registerPoseSensors();
+    registerWaypoints();
 }
 
 bool UgvCore::isLocal(const JausId& id) const {

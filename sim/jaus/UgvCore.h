@@ -6,7 +6,8 @@
 // every component, and a kinematic model. Driven by handle()/tick() with an ocu::Clock, so tests can use a
 // FakeClock. Messages reach the services through a table keyed by message ID (UgvMessageTable); each service
 // registers its messages from its own file: UgvDiscovery.cpp, UgvEvents.cpp, UgvAccessControl.cpp,
-// UgvManagement.cpp, UgvDrive.cpp, UgvPoseSensors.cpp.
+// UgvManagement.cpp, UgvDrive.cpp, UgvPoseSensors.cpp, UgvWaypoints.cpp (ListManager, the Local/Global
+// Waypoint (List) Drivers on 3.1, PathReporter on 3.2).
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -19,6 +20,7 @@
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausOutput.h"
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/MessagesMission.h"
 #include "sim/jaus/UgvMessageTable.h"
 #include "sim/jaus/UgvVideo.h"
 
@@ -63,6 +65,19 @@ struct SimulatedUgvConfig {
     std::vector<SimCameraConfig> cameras;
 };
 
+// The waypoint services' state (UgvWaypoints.cpp): one ListManager list shared by the Local and Global
+// Waypoint List Drivers (each element says which kind it is), the single waypoint drivers' waypoint, the
+// travel speed, and the historical path the PathReporter reports.
+struct UgvRoute {
+    std::map<std::uint16_t, jaus::ListElement> list;
+    std::uint16_t active = 0;                // 0 = no list executing
+    double speed = 0;                        // m/s; reset to 0 when the driver leaves Ready
+    std::optional<jaus::ListElement> single; // a SetLocalWaypoint / SetGlobalWaypoint of the single drivers
+    bool singleArrived = false;
+    std::vector<std::pair<double, double>> path; // (x, y) every 0.25 m, at most 1000 points
+    std::uint16_t captured = 0;                  // elements reached (tests)
+};
+
 struct UgvState {
     double x = 0, y = 0, yaw = 0, v = 0, w = 0;
     jaus::ManagementState management = jaus::ManagementState::Standby;
@@ -87,6 +102,7 @@ public:
     void enterFailure();
     void clearFailure();
     const UgvState& state() const { return m_s; }
+    const UgvRoute& route() const { return m_route; }
     const SimulatedUgvConfig& config() const { return m_cfg; }
     bool isLocal(const jaus::JausId& id) const;
     jaus::GlobalPose globalPose() const;
@@ -129,6 +145,7 @@ private:
     void registerManagement();    // Management (Core Mobility Component)
     void registerDriving();       // PrimitiveDriver, VelocityStateDriver (Core Mobility Component)
     void registerPoseSensors();   // pose and velocity sensors, PlatformSpecifications
+    void registerWaypoints();     // ListManager, waypoint (list) drivers (3.1), PathReporter (3.2)
 
     // Discovery
     std::vector<jaus::ServiceRecord> servicesOf(const jaus::JausId& comp) const;
@@ -155,6 +172,17 @@ private:
     Bytes reportLocalPose(ByteSpan query) const;
     Bytes reportVelocityState(ByteSpan query) const;
     Bytes reportPlatformSpecifications() const;
+    // Waypoints
+    void setElement(const jaus::JausId& src, ByteSpan p);
+    void deleteElement(const jaus::JausId& src, ByteSpan p);
+    void executeList(const jaus::JausId& src, ByteSpan p);
+    void setSingleWaypoint(const jaus::JausId& src, ByteSpan p);
+    void setTravelSpeed(const jaus::JausId& src, ByteSpan p);
+    std::optional<std::pair<double, double>> targetOf(const jaus::ListElement& e, double* tolerance) const;
+    std::optional<Bytes> reportWaypoint(std::uint16_t reportId) const;
+    Bytes reportPath(ByteSpan query) const;
+    void followRoute(TimePoint now); // sets the drive demand while a route runs (physics)
+    void recordPath();
 
     SimulatedUgvConfig m_cfg;
     jaus::JausOutput& m_out;
@@ -175,6 +203,8 @@ private:
     std::map<std::uint8_t, EventSub> m_events;
     std::uint8_t m_nextEventId = 1;
     UgvVideo m_video;
+    UgvRoute m_route;
+    jaus::ManagementState m_routeManagement = jaus::ManagementState::Standby;
     UgvMessageTable m_table;
 };
 

@@ -22,10 +22,17 @@ std::vector<ServiceRecord> UgvCore::servicesOf(const JausId& c) const {
         s.push_back({"urn:jaus:jss:mobility:PrimitiveDriver", 1, 1});
         s.push_back({"urn:jaus:jss:mobility:VelocityStateDriver", 1, 1});
         s.push_back({"urn:jaus:jss:ugv:PlatformSpecifications", 1, 0});
+        // The waypoint services (jaus-autonomy.md §13): ListManager core 1.1, the drivers mobility 1.1.
+        s.push_back({"urn:jaus:jss:core:ListManager", 1, 1});
+        s.push_back({"urn:jaus:jss:mobility:LocalWaypointListDriver", 1, 1});
+        s.push_back({"urn:jaus:jss:mobility:GlobalWaypointListDriver", 1, 1});
+        s.push_back({"urn:jaus:jss:mobility:LocalWaypointDriver", 1, 1});
+        s.push_back({"urn:jaus:jss:mobility:GlobalWaypointDriver", 1, 1});
     } else if (c == sensors()) {
         s.push_back({"urn:jaus:jss:mobility:GlobalPoseSensor", 1, 1});
         s.push_back({"urn:jaus:jss:mobility:LocalPoseSensor", 1, 1});
         s.push_back({"urn:jaus:jss:mobility:VelocityStateSensor", 1, 1});
+        s.push_back({"urn:jaus:jss:iop:PathReporter", 1, 1});
     }
     return s;
 }

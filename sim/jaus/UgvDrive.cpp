@@ -111,6 +111,7 @@ void UgvCore::physics(TimePoint now) {
     m_lastPhysics = now;
     if (dt <= 0)
         return;
+    followRoute(now);
     if (m_cfg.driveTimeoutS > 0 && m_haveDrive && !m_s.driveTimedOut &&
         now - m_lastDrive > secondsD(m_cfg.driveTimeoutS)) {
         m_s.driveTimedOut = true;
@@ -138,6 +139,7 @@ void UgvCore::physics(TimePoint now) {
     m_s.x += m_s.v * std::cos(m_s.yaw) * dt;
     m_s.y += m_s.v * std::sin(m_s.yaw) * dt;
     m_s.odometer += std::abs(m_s.v) * dt;
+    recordPath();
 }
 
 } // namespace ocu::sim

@@ -47,9 +47,10 @@ void UgvCore::managementCommand(const JausId& src, std::uint16_t id) {
     }
     if (id == msg::Resume && m != ManagementState::Shutdown)
         m = ManagementState::Ready;
-    else if (id == msg::Standby && m != ManagementState::Shutdown)
+    else if (id == msg::Standby && m != ManagementState::Shutdown) {
         m = ManagementState::Standby;
-    else if (id == msg::Shutdown)
+        m_route.speed = 0; // leaving Ready (JSIDL resetTravelSpeed)
+    } else if (id == msg::Shutdown)
         m = ManagementState::Shutdown;
     else if (id == msg::Reset)
         m = ManagementState::Standby;
@@ -63,6 +64,10 @@ void UgvCore::enterEmergency() {
     m_s.v = 0;
     m_s.w = 0;
     m_cmdV = m_cmdW = 0;
+    // Leaving Ready resets the waypoint drivers' travel speed at once (JSIDL resetTravelSpeed): a clear
+    // that follows within one physics step must not find the old speed.
+    m_route.speed = 0;
+    m_routeManagement = ManagementState::Emergency;
     logWarning(kLog, m_cfg.callSign + ": EMERGENCY");
 }
 

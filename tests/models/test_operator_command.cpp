@@ -66,6 +66,18 @@ private slots:
         QTest::newRow("send_text to one") << R"({"cmd":"send_text","id":"osyris:4","text":"lift 2 next"})";
         QTest::newRow("send_text to all") << R"({"cmd":"send_text","protocol":"osyris","text":"break"})";
         QTest::newRow("ping") << R"({"cmd":"ping","idx":7})";
+        QTest::newRow("mission_upload")
+            << R"({"cmd":"mission_upload","id":"jaus:126","global":false,"waypoints":[)"
+               R"({"lat":48.1,"lon":11.5,"speed":1.5,"tolerance":2},{"lat":48.1001,"lon":11.5002,"speed":0,)"
+               R"("tolerance":0}]})";
+        QTest::newRow("mission_upload, driver chosen by the vehicle")
+            << R"({"cmd":"mission_upload","id":"jaus:126","waypoints":[[48.1,11.5],[48.2,11.6]]})";
+        QTest::newRow("mission_start") << R"({"cmd":"mission_start","id":"jaus:126","from_index":2})";
+        QTest::newRow("mission_pause") << R"({"cmd":"mission_pause","id":"jaus:126"})";
+        QTest::newRow("mission_resume") << R"({"cmd":"mission_resume","id":"jaus:126"})";
+        QTest::newRow("mission_abort") << R"({"cmd":"mission_abort","id":"jaus:126"})";
+        QTest::newRow("goto")
+            << R"({"cmd":"goto","id":"jaus:126","lat":48.1,"lon":11.5,"speed":1,"tolerance":0.5})";
     }
     void roundTrip() {
         QFETCH(QString, line);
@@ -86,15 +98,29 @@ private slots:
 
     void everyCommandHasItsName() {
         // One name per alternative of the variant, and each of them parses.
-        const std::vector<OperatorCommand> all{StopAll{},         StopMachine{QStringLiteral("a:1")},
-                                               ClearStop{},       RequestControl{},
-                                               ReleaseControl{},  ReleaseAll{},
-                                               Management{},      DriveStart{},
-                                               DriveStop{},       TimedDrive{},
-                                               AllStopApply{},    AllStopRemove{},
-                                               FetchMap{},        Assign{},
-                                               ResetAssignment{}, SendText{},
-                                               PingStation{}};
+        const std::vector<OperatorCommand> all{StopAll{},
+                                               StopMachine{QStringLiteral("a:1")},
+                                               ClearStop{},
+                                               RequestControl{},
+                                               ReleaseControl{},
+                                               ReleaseAll{},
+                                               Management{},
+                                               DriveStart{},
+                                               DriveStop{},
+                                               TimedDrive{},
+                                               AllStopApply{},
+                                               AllStopRemove{},
+                                               FetchMap{},
+                                               Assign{},
+                                               ResetAssignment{},
+                                               SendText{},
+                                               PingStation{},
+                                               MissionUpload{},
+                                               MissionStart{},
+                                               MissionPause{},
+                                               MissionResume{},
+                                               MissionAbort{},
+                                               GoTo{}};
         QCOMPARE(all.size(), std::variant_size_v<OperatorCommand>);
         QSet<QString> names;
         for (const OperatorCommand& c : all) {
@@ -112,6 +138,8 @@ private slots:
                  std::optional<Protocol>(Protocol::Osyris));
         QCOMPARE(commandRoute(SendText{QStringLiteral("osyris:2"), QStringLiteral("x")}).machine,
                  QStringLiteral("osyris:2"));
+        QCOMPARE(commandRoute(MissionUpload{QStringLiteral("jaus:7"), {}, {}}).machine,
+                 QStringLiteral("jaus:7"));
         QCOMPARE(commandRoute(FetchMap{QStringLiteral("ahs"), {}}).protocol,
                  std::optional<Protocol>(Protocol::Iso23725));
     }
@@ -152,6 +180,23 @@ private slots:
         p = parseOperatorCommand(QStringLiteral("ping"), json(R"({"idx":300})"));
         QVERIFY(!p.command);
         QVERIFY2(p.error.contains(QStringLiteral("0-253")), qPrintable(p.error));
+
+        p = parseOperatorCommand(QStringLiteral("mission_upload"), json(R"({"id":"jaus:1","waypoints":[]})"));
+        QVERIFY(!p.command);
+        QVERIFY2(p.error.contains(QStringLiteral("\"waypoints\"")), qPrintable(p.error));
+        p = parseOperatorCommand(
+            QStringLiteral("mission_upload"),
+            json(R"({"id":"jaus:1","waypoints":[{"lat":48,"lon":11},{"lat":95,"lon":11}]})"));
+        QVERIFY(!p.command);
+        QVERIFY2(p.error.contains(QStringLiteral("waypoint 2")) && p.error.contains(QStringLiteral("±90")),
+                 qPrintable(p.error));
+        QCOMPARE(p.target, QStringLiteral("jaus:1"));
+        p = parseOperatorCommand(QStringLiteral("goto"),
+                                 json(R"({"id":"jaus:1","lat":48,"lon":11,"speed":-1})"));
+        QVERIFY(!p.command);
+        QVERIFY2(p.error.contains(QStringLiteral("\"speed\"")), qPrintable(p.error));
+        p = parseOperatorCommand(QStringLiteral("mission_start"), json(R"({"id":"jaus:1","from_index":-1})"));
+        QVERIFY(!p.command);
 
         p = parseOperatorCommand(QStringLiteral("clear_stop"), json(R"({"id":"jaus:1","confirm":"yes"})"));
         QVERIFY(!p.command);

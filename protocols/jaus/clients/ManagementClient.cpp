@@ -106,6 +106,8 @@ bool ManagementClient::clearEmergency(std::uint16_t ss) {
 }
 
 void ManagementClient::onStatus(RemoteSubsystem& r, const JausId& src, ByteSpan p) {
+    if (m_other && m_other(r, src, p))
+        return;
     auto m = decodeReportStatus(p);
     if (!m)
         return m_ctx.rejected(src, m.error());

@@ -5,6 +5,7 @@
 // ReportStatus shows EMERGENCY, allowed for every role; ClearEmergency with the same code, not for the
 // monitor.
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -40,6 +41,10 @@ public:
     // Where setEmergency would send SetEmergency now (nullopt: it would refuse). No side effects.
     std::optional<JausId> emergencyTarget(std::uint16_t subsystem) const;
     bool clearEmergency(std::uint16_t subsystem);
+    // ReportStatus from a component another client follows (a list driver on a component of its own): the
+    // filter returns true when it handled the message, which then is not the vehicle's Management state.
+    using OtherStatus = std::function<bool(RemoteSubsystem&, const JausId&, ByteSpan)>;
+    void setOtherStatus(OtherStatus filter) { m_other = std::move(filter); }
 
 private:
     struct State {
@@ -53,6 +58,7 @@ private:
 
     EventsClient& m_events;
     DriveClient& m_drive;
+    OtherStatus m_other;
     std::map<std::uint16_t, State> m_state;
 };
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <set>
 #include <thread>
 
@@ -148,6 +149,16 @@ struct ForeignJausVehicle::Impl {
         comps.push_back(Comp{opt.component, opt.services, opt.management, opt.accessControl, false});
         for (const ExtraComponent& e : opt.extraComponents)
             comps.push_back(Comp{e.component, e.services, e.management, e.accessControl, e.pose});
+        if (opt.listDriverComponent) {
+            ownList = opt.listDriverComponent != opt.component;
+            list = std::make_unique<WaypointListDriver>(
+                opt.listDriver, id(opt.subsystem, opt.node, opt.listDriverComponent),
+                ownList ? listController : controller, ownList ? listStatus : status, controller);
+        }
+        lat0 = opt.latitude;
+        lon0 = opt.longitude;
+        x0 = opt.localX;
+        y0 = opt.localY;
         started = Clock::now();
         receive();
         tick();
@@ -293,6 +304,16 @@ struct ForeignJausVehicle::Impl {
                 std::size_t len) {
         const bool first = &c == &comps.front(); // the Discovery component (platform manager)
         const std::uint32_t me = idOf(c);
+        if (list && c.component == opt.listDriverComponent) {
+            if (ownList && handleOwnControl(mid, src, body, len, me))
+                return;
+            std::vector<Buf> replies;
+            if (list->handle(mid, src, body, len, replies)) {
+                for (const Buf& r : replies)
+                    reply(src, r, me);
+                return;
+            }
+        }
         switch (mid) {
         case QueryIdentification: {
             if (len < 1 || (!first && !opt.everyComponentIdentifies))
@@ -390,6 +411,8 @@ struct ForeignJausVehicle::Impl {
             if (c.management && len >= 2 && status != 5) {
                 beforeEmergency = status;
                 status = 5;
+                if (list)
+                    list->emergency();
             }
             return;
         case ClearEmergency:
@@ -431,6 +454,61 @@ struct ForeignJausVehicle::Impl {
         }
     }
 
+    // The list driver's own access control and Management state (a component of its own).
+    bool handleOwnControl(std::uint16_t mid, std::uint32_t src, const std::uint8_t*, std::size_t len,
+                          std::uint32_t me) {
+        switch (mid) {
+        case RequestControl: {
+            if (len < 1)
+                return true;
+            Buf b = withId(ConfirmControl);
+            const bool ok = listController == 0 || listController == src;
+            if (ok)
+                listController = src;
+            put8(b, ok ? 0 : 2);
+            reply(src, b, me);
+            return true;
+        }
+        case ReleaseControl:
+            if (src == listController) {
+                listController = 0;
+                if (listStatus == 1)
+                    listStatus = 2;
+                rejectTo(src, 0, me);
+            }
+            return true;
+        case Resume:
+        case Standby:
+            if (src == listController && status != 5)
+                listStatus = mid == Resume ? 1 : 2;
+            return true;
+        case QueryStatus: {
+            Buf b = withId(ReportStatus);
+            put8(b, status == 5 ? 5 : listStatus);
+            put32(b, 0);
+            reply(src, b, me);
+            return true;
+        }
+        default:
+            return false;
+        }
+    }
+
+    // The list driver drives the pose: local x north, y east; the global pose follows on the WGS84
+    // ellipsoid's radii of curvature at the start.
+    void drive(double dt) {
+        if (!list)
+            return;
+        list->step(dt, status == 5, opt.localX, opt.localY);
+        constexpr double a = 6378137.0, e2 = 6.69437999014e-3, rad = 3.14159265358979 / 180;
+        const double s = std::sin(lat0 * rad), w = 1 - e2 * s * s;
+        const double meridian = a * (1 - e2) / std::pow(w, 1.5), normal = a / std::sqrt(w);
+        opt.latitude = lat0 + (opt.localX - x0) / meridian / rad;
+        opt.longitude = lon0 + (opt.localY - y0) / (normal * std::cos(lat0 * rad)) / rad;
+        if (list->executing() && controller == id(opt.subsystem, opt.node, opt.listDriverComponent))
+            lastRequest = Clock::now(); // it holds the drive component while it drives
+    }
+
     void rejectTo(std::uint32_t to, std::uint8_t code, std::uint32_t from = 0) {
         Buf b = withId(RejectControl);
         put8(b, code);
@@ -469,6 +547,7 @@ struct ForeignJausVehicle::Impl {
                 return;
             {
                 std::lock_guard lock(mutex);
+                drive(0.05);
                 // Each component (re-)registers its services with every console that asked (AS5710A
                 // RegisterServices; public stacks repeat it until their registration is verified).
                 if (opt.servicesDialect == ServicesDialect::EmptyWildcardRegister && opt.pushRegistrations &&
@@ -517,6 +596,12 @@ struct ForeignJausVehicle::Impl {
     Clock::time_point lastRequest{};
     std::uint8_t status = 2; // STANDBY
     std::uint8_t beforeEmergency = 2;
+    // The waypoint list driver (listDriverComponent): its own control and state when on its own component.
+    std::unique_ptr<WaypointListDriver> list;
+    bool ownList = false;
+    std::uint32_t listController = 0;
+    std::uint8_t listStatus = 2;
+    double lat0 = 0, lon0 = 0, x0 = 0, y0 = 0;
 };
 
 ForeignJausVehicle::ForeignJausVehicle(VehicleOptions options)
@@ -551,6 +636,14 @@ int ForeignJausVehicle::receivedBy(std::uint16_t mid, std::uint8_t component) co
     std::lock_guard lock(m_impl->mutex);
     auto it = m_impl->countsBy.find({mid, component});
     return it == m_impl->countsBy.end() ? 0 : it->second;
+}
+std::uint16_t ForeignJausVehicle::activeElement() const {
+    std::lock_guard lock(m_impl->mutex);
+    return m_impl->list ? m_impl->list->active() : 0;
+}
+std::pair<double, double> ForeignJausVehicle::localPosition() const {
+    std::lock_guard lock(m_impl->mutex);
+    return {m_impl->opt.localX, m_impl->opt.localY};
 }
 int ForeignJausVehicle::malformed() const {
     std::lock_guard lock(m_impl->mutex);

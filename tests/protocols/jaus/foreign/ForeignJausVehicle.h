@@ -16,7 +16,10 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "tests/protocols/jaus/foreign/ForeignWaypointList.h"
 
 namespace foreign {
 
@@ -80,6 +83,11 @@ struct VehicleOptions {
     std::vector<ExtraComponent> extraComponents;
     // Whether every component answers a QueryIdentification that reaches it (else only the first).
     bool everyComponentIdentifies = false;
+    // A Local Waypoint List Driver (ForeignWaypointList.h) on this component (0 = none). On a component other
+    // than the first it has its own control and Management state, and takes the drive component's control
+    // (the first component's) itself while it executes. The pose moves as it drives.
+    std::uint8_t listDriverComponent = 0;
+    WaypointListDriver::Options listDriver;
     // The pose the pose components report (WGS84 degrees, local metres, yaw radians).
     double latitude = 48.1, longitude = 11.5, localX = 12.5, localY = -3.25, yaw = 0.5;
 };
@@ -102,6 +110,9 @@ public:
     int receivedBy(std::uint16_t messageId, std::uint8_t component) const;
     int received(std::uint16_t messageId) const;
     int receivedFrom(std::uint16_t messageId, std::uint32_t source) const;
+    // The list driver's active element (0 = idle) and the local position it drove to.
+    std::uint16_t activeElement() const;
+    std::pair<double, double> localPosition() const;
     // Datagrams received that did not parse as AS5669A JUDP (must stay 0: our bytes are checked here).
     int malformed() const;
 
