@@ -11,6 +11,7 @@
 #include "models/jaus/MissionGeoJson.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/jaus/JausControlPanel.h"
+#include "widgets/jaus/MissionGateCommands.h"
 #include "widgets/jaus/MissionPanel.h"
 #include "widgets/jaus/TeleopPanel.h"
 #include "widgets/jaus/TeleopVideoPane.h"
@@ -169,6 +170,7 @@ private:
     // The mission panel, its editor and drawing on the 2D map, and the planned route in 3D.
     void populateMission(const ModulePanels& ui) {
         auto* mission = new MissionPanel(m_bridge, ui.fleet->selection());
+        mission->setCommands(new MissionGateCommands(ui.fleet->gate(), mission));
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
         mission->attachMap(map, m_frame);
         ui.window.setPanelWidget(kMissionPanel, mission);

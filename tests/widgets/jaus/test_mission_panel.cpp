@@ -1,6 +1,7 @@
 // The mission plan editor on the 2D map (mouse and keyboard), the map's "Go here", and the mission panel:
 // its table, files and commands through the MissionCommands seam, and each mission state a fake JAUS bridge
 // reports, with the driven path drawn beside the planned route.
+#include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/jaus/JausVehicleBridge.h"
@@ -8,6 +9,7 @@
 #include "models/jaus/MissionPlan.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/jaus/MissionCommands.h"
+#include "widgets/jaus/MissionGateCommands.h"
 #include "widgets/jaus/MissionPanel.h"
 #include "widgets/jaus/MissionPlanEditor.h"
 #include "widgets/jaus/MissionPlanLayer.h"
@@ -50,6 +52,12 @@ public:
     void report(const JausVehicle& v) {
         vehicles[v.subsystem] = v;
         emit subsystemUpdated(v);
+    }
+    // What the gate handed over, as the audit writes it.
+    QVector<OperatorCommand> commands;
+    void command(const OperatorCommand& c, OutcomeCallback done) override {
+        commands << c;
+        done({TargetOutcome::sentTo(commandTarget(c).toStdString())});
     }
 };
 
@@ -288,6 +296,31 @@ private slots:
         QVERIFY(!r.panel->button(A::Pause)->isEnabled());
         QVERIFY(!r.panel->button(A::Abort)->isEnabled());
         QCOMPARE(commands.calls.size(), 5);
+    }
+
+    // The JAUS module's seam: typed commands through the command gate to the vehicle's bridge.
+    void theGateSeamSendsTypedCommands() {
+        Rig r;
+        FleetContext ctx;
+        ctx.addBridge(&r.bridge);
+        r.panel->setCommands(new MissionGateCommands(ctx.gate(), r.panel));
+        r.plan()->append(r.plan()->makeWaypoint(48.1372, 11.5752));
+        r.plan()->append(r.plan()->makeWaypoint(48.1374, 11.5755));
+        r.panel->button(MissionPanel::Action::Upload)->click();
+        QTRY_COMPARE(r.bridge.commands.size(), 1);
+        const auto* upload = std::get_if<MissionUpload>(&r.bridge.commands[0]);
+        QVERIFY(upload);
+        QCOMPARE(upload->id, QString("jaus:1"));
+        QCOMPARE(upload->waypoints, r.plan()->waypoints());
+        r.report(MissionState::Uploaded);
+        r.panel->button(MissionPanel::Action::Start)->click();
+        QTRY_COMPARE(r.bridge.commands.size(), 2);
+        QCOMPARE(std::get<MissionStart>(r.bridge.commands[1]), (MissionStart{"jaus:1", 0}));
+        QMenu menu;
+        r.panel->editor()->addContextActions(&menu, {200, 200});
+        menu.findChild<QAction*>("mission-go-here")->trigger();
+        QTRY_COMPARE(r.bridge.commands.size(), 3);
+        QVERIFY(std::holds_alternative<GoTo>(r.bridge.commands[2]));
     }
 
     void withoutTheSeamNothingIsSent() {
