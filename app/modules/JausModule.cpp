@@ -9,10 +9,17 @@
 #include "models/FleetContext.h"
 #include "models/bridges/JausBridge.h"
 #include "models/jaus/MissionGeoJson.h"
+#include "widgets/SiteMapView.h"
 #include "widgets/jaus/JausControlPanel.h"
+#include "widgets/jaus/MissionGateCommands.h"
+#include "widgets/jaus/MissionPanel.h"
 #include "widgets/jaus/TeleopPanel.h"
 #include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/SdlJoystickInput.h"
+#ifdef OCU_HAVE_OCU_VIEW3D
+#include "widgets/view3d/RouteOverlay3D.h"
+#include "widgets/view3d/Site3DView.h"
+#endif
 
 #include <QCoreApplication>
 
@@ -23,6 +30,7 @@ namespace {
 // Their --view names and saved-layout keys.
 const QString kControlPanel = QStringLiteral("jaus");
 const QString kTeleopPanel = QStringLiteral("teleop");
+const QString kMissionPanel = QStringLiteral("mission");
 
 // mission_upload: inline "waypoints", or "file": a GeoJSON route read into them (the result echoes the file).
 HeadlessCommands::GateRequest readMissionUpload(const QJsonObject& cmd) {
@@ -64,6 +72,7 @@ public:
                        : s.roleAuthority < 240 ? jaus::Role::PrimaryOperator
                                                : jaus::Role::SafetyCritical;
         }
+        m_frame = s.frame;
         m_bridge = new JausBridge(cfg, s.frame, s.owner);
         m_bridge->setMessageTap(s.tap);
         s.fleet->addBridge(m_bridge);
@@ -75,22 +84,34 @@ public:
     }
     FleetBridge* bridge() const override { return m_bridge; }
 
-    // The access-control column right of the map, teleop as its second tab (Ctrl+4, Ctrl+5).
+    // The access-control column right of the map, teleop as its second tab (Ctrl+4, Ctrl+5), the mission
+    // panel in the UGV workspace's lower group (Ctrl+U: every Ctrl+digit is taken).
     QList<PanelSpec> panels() const override {
-        return {{kControlPanel,
-                 QCoreApplication::translate("ocu::MainWindow", "JAUS control"),
-                 PanelPlace::SideColumn,
-                 4,
-                 true,
-                 true,
-                 {},
-                 PanelKind::VehicleControl},
-                {kTeleopPanel, QCoreApplication::translate("ocu::MainWindow", "Teleop"),
-                 PanelPlace::SideColumn, 5, false, true,
-                 QCoreApplication::translate("ocu::MainWindow", "Teleop panel: W/A/S/D or arrows with the "
-                                                                "dead-man key held; Space or Esc: emergency "
-                                                                "stop"),
-                 PanelKind::Video}};
+        return {
+            {kControlPanel,
+             QCoreApplication::translate("ocu::MainWindow", "JAUS control"),
+             PanelPlace::SideColumn,
+             4,
+             true,
+             true,
+             {},
+             PanelKind::VehicleControl},
+            {kTeleopPanel, QCoreApplication::translate("ocu::MainWindow", "Teleop"), PanelPlace::SideColumn,
+             5, false, true,
+             QCoreApplication::translate("ocu::MainWindow", "Teleop panel: W/A/S/D or arrows with the "
+                                                            "dead-man key held; Space or Esc: emergency "
+                                                            "stop"),
+             PanelKind::Video},
+            {kMissionPanel, QCoreApplication::translate("ocu::MainWindow", "Mission"), PanelPlace::SideColumn,
+             0, false, true,
+             QCoreApplication::translate(
+                 "ocu::MainWindow",
+                 "Mission panel (Ctrl+U): Alt+E edit on the map, Alt+O open, Alt+I import GPX/KML, Alt+S "
+                 "save, Alt+L upload, Alt+P pause, Alt+B abort. Editing on the map: click adds a waypoint, "
+                 "drag moves it, click a leg inserts one; Insert or Enter adds at the cursor, Delete removes "
+                 "the selected one, Page Up/Down select, Shift+arrows move it, Ctrl+Z / Ctrl+Shift+Z undo / "
+                 "redo, Esc ends editing; right-click on the ground: Go here"),
+             PanelKind::Missions, Qt::Key_U}};
     }
     QString stopAllReach() const override {
         return QCoreApplication::translate("ocu::MainWindow",
@@ -113,6 +134,7 @@ public:
         auto* teleop = new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick);
         teleop->video()->watchdog().setLimitMs(static_cast<int>(t.videoWatchdogS * 1000));
         ui.window.setPanelWidget(kTeleopPanel, teleop);
+        populateMission(ui);
     }
 
     // Control, management and driving: the UGV operator, the supervisor and the admin. Ending a drive
@@ -144,7 +166,33 @@ public:
     }
 
 private:
+    // The mission panel, its editor and drawing on the 2D map, and the planned route in 3D.
+    void populateMission(const ModulePanels& ui) {
+        auto* mission = new MissionPanel(m_bridge, ui.fleet->selection());
+        mission->setCommands(new MissionGateCommands(ui.fleet->gate(), mission));
+        auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
+        mission->attachMap(map, m_frame);
+        ui.window.setPanelWidget(kMissionPanel, mission);
+#ifdef OCU_HAVE_OCU_VIEW3D
+        if (auto* view3d = qobject_cast<Site3DView*>(ui.window.panelWidget(Panel::Site3D))) {
+            auto* route3d = new RouteOverlay3D(view3d);
+            QObject::connect(
+                mission, &MissionPanel::planRouteChanged, route3d,
+                [route3d, frame = m_frame](const QVector<MissionWaypoint>& plan, const QColor& c) {
+                    QVector<QPointF> path;
+                    for (const MissionWaypoint& w : plan) {
+                        const EnuPoint e = frame.toLocal({w.lat, w.lon, 0});
+                        path << QPointF(e.e, e.n);
+                    }
+                    route3d->setStyle(c.redF(), c.greenF(), c.blueF(), 5);
+                    route3d->setPath(path);
+                });
+        }
+#endif
+    }
+
     JausBridge* m_bridge = nullptr;
+    GeoFrame m_frame;
 };
 
 } // namespace

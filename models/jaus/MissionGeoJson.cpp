@@ -13,74 +13,108 @@ namespace ocu {
 
 namespace {
 
-QString text(const char* source) {
-    return QCoreApplication::translate("MissionGeoJson", source);
-}
-
-// The one route Feature of a FeatureCollection (or a bare Feature).
-std::optional<QJsonObject> routeFeature(const QJsonObject& root, QString* why) {
-    const QString type = root.value(QStringLiteral("type")).toString();
-    if (type == QLatin1String("Feature"))
-        return root;
-    if (type != QLatin1String("FeatureCollection")) {
-        *why = text("not a GeoJSON FeatureCollection");
-        return std::nullopt;
+// The route of a FeatureCollection (its first LineString or Point feature), of a Feature, or the geometry
+// itself, as positions; with the properties of its feature.
+bool findRoute(const QJsonObject& root, QJsonArray& positions, QJsonObject& properties) {
+    const QString type = root.value(QLatin1String("type")).toString();
+    if (type == QLatin1String("LineString")) {
+        positions = root.value(QLatin1String("coordinates")).toArray();
+        return true;
     }
-    for (const QJsonValue& f : root.value(QStringLiteral("features")).toArray()) {
-        const QString g = f.toObject()
-                              .value(QStringLiteral("geometry"))
-                              .toObject()
-                              .value(QStringLiteral("type"))
-                              .toString();
-        if (g == QLatin1String("LineString") || g == QLatin1String("Point"))
-            return f.toObject();
+    if (type == QLatin1String("Point")) {
+        positions = QJsonArray{root.value(QLatin1String("coordinates"))};
+        return true;
     }
-    *why = text("no LineString feature (the route) in the file");
-    return std::nullopt;
+    if (type == QLatin1String("Feature")) {
+        const QJsonObject g = root.value(QLatin1String("geometry")).toObject();
+        const QString gt = g.value(QLatin1String("type")).toString();
+        if (gt != QLatin1String("LineString") && gt != QLatin1String("Point"))
+            return false;
+        findRoute(g, positions, properties);
+        properties = root.value(QLatin1String("properties")).toObject();
+        return true;
+    }
+    if (type == QLatin1String("FeatureCollection"))
+        for (const QJsonValue& f : root.value(QLatin1String("features")).toArray())
+            if (findRoute(f.toObject(), positions, properties))
+                return true;
+    return false;
 }
 
 } // namespace
 
+QByteArray writeMissionGeoJson(const QVector<MissionWaypoint>& waypoints) {
+    QJsonArray coordinates, perPoint;
+    for (const MissionWaypoint& w : waypoints) {
+        coordinates.append(QJsonArray{w.lon, w.lat});
+        perPoint.append(
+            QJsonObject{{QStringLiteral("speed"), w.speed}, {QStringLiteral("tolerance"), w.tolerance}});
+    }
+    const QJsonObject feature{
+        {QStringLiteral("type"), QStringLiteral("Feature")},
+        {QStringLiteral("geometry"), QJsonObject{{QStringLiteral("type"), QStringLiteral("LineString")},
+                                                 {QStringLiteral("coordinates"), coordinates}}},
+        {QStringLiteral("properties"), QJsonObject{{QStringLiteral("waypoints"), perPoint}}}};
+    const QJsonObject root{{QStringLiteral("type"), QStringLiteral("FeatureCollection")},
+                           {QStringLiteral("features"), QJsonArray{feature}}};
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
 std::optional<QVector<MissionWaypoint>> readMissionGeoJson(const QByteArray& json, QString* error) {
-    QString why;
-    auto fail = [&](const QString& w) -> std::optional<QVector<MissionWaypoint>> {
+    auto fail = [error](const QString& why) -> std::optional<QVector<MissionWaypoint>> {
         if (error)
-            *error = w;
+            *error = why;
         return std::nullopt;
     };
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
-    if (!doc.isObject())
-        return fail(text("not JSON: %1").arg(pe.errorString()));
-    const auto feature = routeFeature(doc.object(), &why);
-    if (!feature)
-        return fail(why);
-    const QJsonObject geometry = feature->value(QStringLiteral("geometry")).toObject();
+    if (pe.error != QJsonParseError::NoError)
+        return fail(QCoreApplication::translate("ocu::MissionGeoJson", "not JSON (%1 at byte %2)")
+                        .arg(pe.errorString())
+                        .arg(pe.offset));
     QJsonArray positions;
-    if (geometry.value(QStringLiteral("type")).toString() == QLatin1String("Point"))
-        positions << geometry.value(QStringLiteral("coordinates"));
-    else
-        positions = geometry.value(QStringLiteral("coordinates")).toArray();
+    QJsonObject properties;
+    if (!doc.isObject() || !findRoute(doc.object(), positions, properties))
+        return fail(
+            QCoreApplication::translate("ocu::MissionGeoJson", "no GeoJSON LineString (the route) in it"));
     if (positions.isEmpty())
-        return fail(text("the route has no positions"));
-    const QJsonArray props =
-        feature->value(QStringLiteral("properties")).toObject().value(QStringLiteral("waypoints")).toArray();
+        return fail(QCoreApplication::translate("ocu::MissionGeoJson", "the route has no positions"));
+    const QJsonValue per = properties.value(QLatin1String("waypoints"));
+    if (!per.isUndefined() && (!per.isArray() || per.toArray().size() != positions.size()))
+        return fail(QCoreApplication::translate("ocu::MissionGeoJson",
+                                                "properties.waypoints must list one {speed, tolerance} per "
+                                                "position (%1 positions)")
+                        .arg(positions.size()));
+    const QJsonArray perArray = per.toArray();
     QVector<MissionWaypoint> out;
     for (int i = 0; i < positions.size(); ++i) {
-        const QJsonArray p = positions[i].toArray();
-        if (p.size() < 2 || !p[0].isDouble() || !p[1].isDouble())
-            return fail(text("position %1 is not [longitude, latitude]").arg(i + 1));
+        const QJsonArray c = positions[i].toArray();
+        if (c.size() < 2 || !c[0].isDouble() || !c[1].isDouble())
+            return fail(
+                QCoreApplication::translate("ocu::MissionGeoJson", "position %1 is not [longitude, latitude]")
+                    .arg(i + 1));
         MissionWaypoint w;
-        w.lon = p[0].toDouble();
-        w.lat = p[1].toDouble();
-        if (!(std::fabs(w.lat) <= 90 && std::fabs(w.lon) <= 180))
-            return fail(text("position %1 lies outside ±90° latitude / ±180° longitude").arg(i + 1));
-        if (i < props.size()) {
-            const QJsonObject o = props[i].toObject();
-            w.speed = o.value(QStringLiteral("speed")).toDouble(0);
-            w.tolerance = o.value(QStringLiteral("tolerance")).toDouble(0);
-            if (!(w.speed >= 0) || !(w.tolerance >= 0 && w.tolerance <= 100))
-                return fail(text("waypoint %1: speed must be 0 or more, tolerance 0 to 100 m").arg(i + 1));
+        w.lon = c[0].toDouble();
+        w.lat = c[1].toDouble();
+        if (!(std::abs(w.lat) <= 90 && std::abs(w.lon) <= 180))
+            return fail(
+                QCoreApplication::translate("ocu::MissionGeoJson",
+                                            "position %1 lies outside WGS84 (latitude %2, longitude %3)")
+                    .arg(i + 1)
+                    .arg(w.lat)
+                    .arg(w.lon));
+        if (!perArray.isEmpty()) {
+            const QJsonObject p = perArray[i].toObject();
+            const QJsonValue speed = p.value(QLatin1String("speed")),
+                             tol = p.value(QLatin1String("tolerance"));
+            w.speed = speed.toDouble();
+            w.tolerance = tol.toDouble();
+            if ((!speed.isUndefined() && !speed.isDouble()) || (!tol.isUndefined() && !tol.isDouble()) ||
+                !(w.speed >= 0) || !(w.tolerance >= 0 && w.tolerance <= kMaxMissionToleranceM))
+                return fail(QCoreApplication::translate("ocu::MissionGeoJson",
+                                                        "waypoint %1: speed must be a number of 0 or more, "
+                                                        "tolerance 0 to 100 m")
+                                .arg(i + 1));
         }
         out << w;
     }
@@ -89,38 +123,32 @@ std::optional<QVector<MissionWaypoint>> readMissionGeoJson(const QByteArray& jso
 
 std::optional<QVector<MissionWaypoint>> readMissionGeoJsonFile(const QString& path, QString* error) {
     QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = text("cannot open %1: %2").arg(path, f.errorString());
-        return std::nullopt;
-    }
-    return readMissionGeoJson(f.readAll(), error);
-}
-
-QByteArray writeMissionGeoJson(const QVector<MissionWaypoint>& waypoints) {
-    QJsonArray coords, props;
-    for (const MissionWaypoint& w : waypoints) {
-        coords << QJsonArray{w.lon, w.lat};
-        props << QJsonObject{{QStringLiteral("speed"), w.speed}, {QStringLiteral("tolerance"), w.tolerance}};
-    }
-    QJsonObject feature{
-        {QStringLiteral("type"), QStringLiteral("Feature")},
-        {QStringLiteral("geometry"), QJsonObject{{QStringLiteral("type"), QStringLiteral("LineString")},
-                                                 {QStringLiteral("coordinates"), coords}}},
-        {QStringLiteral("properties"), QJsonObject{{QStringLiteral("waypoints"), props}}}};
-    QJsonObject root{{QStringLiteral("type"), QStringLiteral("FeatureCollection")},
-                     {QStringLiteral("features"), QJsonArray{feature}}};
-    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+    QString why;
+    std::optional<QVector<MissionWaypoint>> out;
+    constexpr qint64 kMaxBytes = 64 << 20; // far beyond any route: a wrong file is refused, not read whole
+    if (!f.open(QIODevice::ReadOnly))
+        why =
+            QCoreApplication::translate("ocu::MissionGeoJson", "cannot be opened (%1)").arg(f.errorString());
+    else if (f.size() > kMaxBytes)
+        why = QCoreApplication::translate("ocu::MissionGeoJson", "too large for a mission file");
+    else
+        out = readMissionGeoJson(f.readAll(), &why);
+    if (!out && error)
+        *error = QStringLiteral("%1: %2").arg(path, why);
+    return out;
 }
 
 bool writeMissionGeoJsonFile(const QString& path, const QVector<MissionWaypoint>& waypoints, QString* error) {
+    QString why;
     QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(writeMissionGeoJson(waypoints)) < 0 || !f.commit()) {
-        if (error)
-            *error = text("cannot write %1: %2").arg(path, f.errorString());
-        return false;
-    }
-    return true;
+    if (waypoints.isEmpty())
+        why = QCoreApplication::translate("ocu::MissionGeoJson", "the plan has no waypoints to save");
+    else if (!f.open(QIODevice::WriteOnly) || f.write(writeMissionGeoJson(waypoints)) < 0 || !f.commit())
+        why =
+            QCoreApplication::translate("ocu::MissionGeoJson", "cannot be written (%1)").arg(f.errorString());
+    if (!why.isEmpty() && error)
+        *error = QStringLiteral("%1: %2").arg(path, why);
+    return why.isEmpty();
 }
 
 } // namespace ocu
