@@ -85,6 +85,61 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>--headless and --screenshot cannot be combined</source>
         <translation>--headless et --screenshot ne peuvent pas être combinés</translation>
     </message>
+    <message>
+        <source>Check the site configuration FILE, print each problem as file:line, start nothing; exit 0 when valid, 1 when not.</source>
+        <translation>Vérifier la configuration du site FILE, afficher chaque problème sous la forme fichier:ligne, ne rien démarrer ; code de sortie 0 si valide, 1 sinon.</translation>
+    </message>
+    <message>
+        <source>all:PANEL: the whole window with that panel in front.</source>
+        <translation>all:PANEL : toute la fenêtre avec ce panneau au premier plan.</translation>
+    </message>
+    <message>
+        <source>With --headless: also take JSON-line commands on a local socket at PATH (mode 0660: owner and group); the run then ends on SIGTERM or --duration, not at the end of stdin.</source>
+        <translation>Avec --headless : accepter aussi des commandes en lignes JSON sur un socket local à PATH (mode 0660 : propriétaire et groupe) ; l&apos;exécution se termine alors sur SIGTERM ou --duration, et non à la fin de stdin.</translation>
+    </message>
+    <message>
+        <source>With --headless: write the shift report as PDF to FILE when the run ends.</source>
+        <translation>Avec --headless : écrire le rapport de poste en PDF dans FILE à la fin de l&apos;exécution.</translation>
+    </message>
+    <message>
+        <source>With --headless: write the shift report as CSV to FILE when the run ends.</source>
+        <translation>Avec --headless : écrire le rapport de poste en CSV dans FILE à la fin de l&apos;exécution.</translation>
+    </message>
+    <message>
+        <source>Start with the night palette.</source>
+        <translation>Démarrer avec la palette de nuit.</translation>
+    </message>
+    <message>
+        <source>--workspace: &quot;%1&quot; is not one of dispatch, compaction, ugv, monitor, all</source>
+        <translation>--workspace : « %1 » n&apos;est pas dispatch, compaction, ugv, monitor ou all</translation>
+    </message>
+    <message>
+        <source>--command-socket needs --headless</source>
+        <translation>--command-socket nécessite --headless</translation>
+    </message>
+    <message>
+        <source>--shift-report/--shift-csv need --headless (in the window: Production panel, Shift report)</source>
+        <translation>--shift-report/--shift-csv nécessitent --headless (dans la fenêtre : panneau Production, Rapport de poste)</translation>
+    </message>
+</context>
+<context>
+    <name>CommandResult</name>
+    <message>
+        <source>no target: nothing sent</source>
+        <translation>aucune cible : rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>sent to %1</source>
+        <translation>envoyé à %1</translation>
+    </message>
+    <message>
+        <source>NOT sent: %1</source>
+        <translation>NON envoyé : %1</translation>
+    </message>
+    <message>
+        <source>sent to %1; NOT sent: %2</source>
+        <translation>envoyé à %1 ; NON envoyé : %2</translation>
+    </message>
 </context>
 <context>
     <name>ConsoleApp</name>
@@ -102,20 +157,264 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>Operator Control Unit — %1</source>
         <translation>Poste de commande opérateur — %1</translation>
     </message>
+    <message>
+        <source>%1: the site configuration is valid (%2)</source>
+        <translation>%1 : la configuration du site est valide (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>HeadlessSocket</name>
+    <message>
+        <source>%1: another console answers on this command socket</source>
+        <translation>%1 : une autre console répond déjà sur ce socket de commandes</translation>
+    </message>
+    <message>
+        <source>%1: cannot open the command socket: %2</source>
+        <translation>%1 : impossible d&apos;ouvrir le socket de commandes : %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot set the command socket&apos;s mode</source>
+        <translation>%1 : impossible de définir le mode du socket de commandes</translation>
+    </message>
+</context>
+<context>
+    <name>JausModule</name>
+    <message>
+        <source>mission_upload: %1; nothing sent</source>
+        <translation>mission_upload : %1 ; rien n&apos;a été envoyé</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
     <message>
-        <source>STOP ALL</source>
-        <translation>ARRÊT GÉNÉRAL</translation>
+        <source>Compaction design not loaded: %1</source>
+        <translation>Projet de compactage non chargé : %1</translation>
     </message>
     <message>
-        <source>Stop every machine of every protocol (F12)</source>
-        <translation>Arrêter toutes les machines de tous les protocoles (F12)</translation>
+        <source>Queue</source>
+        <translation>Attente</translation>
     </message>
     <message>
-        <source>Production</source>
-        <translation>Production</translation>
+        <source>Spot</source>
+        <translation>Mise en place</translation>
+    </message>
+    <message>
+        <source>Load</source>
+        <translation>Chargement</translation>
+    </message>
+    <message>
+        <source>Haul</source>
+        <translation>Transport</translation>
+    </message>
+    <message>
+        <source>Dump</source>
+        <translation>Déversement</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>Retour</translation>
+    </message>
+    <message>
+        <source>Other</source>
+        <translation>Autre</translation>
+    </message>
+    <message>
+        <source>Tonnes over the shift: %1 t in %2 loads</source>
+        <translation>Tonnes sur le poste : %1 t en %2 chargements</translation>
+    </message>
+    <message>
+        <source>Dumped (t)</source>
+        <translation>Déversé (t)</translation>
+    </message>
+    <message>
+        <source>Plan (t, %1 t/shift)</source>
+        <translation>Plan (t, %1 t/poste)</translation>
+    </message>
+    <message>
+        <source>t</source>
+        <translation>t</translation>
+    </message>
+    <message>
+        <source>Cycle time breakdown (average minutes per cycle)</source>
+        <translation>Répartition du temps de cycle (minutes moyennes par cycle)</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>impossible d&apos;écrire %1 : %2</translation>
+    </message>
+    <message>
+        <source>Shift report</source>
+        <translation>Rapport de poste</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>impossible d&apos;écrire %1</translation>
+    </message>
+    <message>
+        <source>Shift report — %1</source>
+        <translation>Rapport de poste — %1</translation>
+    </message>
+    <message>
+        <source>Shift %1 to %2 · written %3</source>
+        <translation>Poste de %1 à %2 · écrit %3</translation>
+    </message>
+    <message>
+        <source>plan %1 t for the shift, %2 t due by now (%3 %)</source>
+        <translation>plan %1 t pour le poste, %2 t dues à ce stade (%3 %)</translation>
+    </message>
+    <message>
+        <source>no plan set</source>
+        <translation>aucun plan défini</translation>
+    </message>
+    <message>
+        <source>%1 loads, %2 t dumped, %3 cycles, average cycle %4 · %5</source>
+        <translation>%1 chargements, %2 t déversées, %3 cycles, cycle moyen %4 · %5</translation>
+    </message>
+    <message>
+        <source>%1 loads were dumped without a reported weight (not in the tonnes)</source>
+        <translation>%1 chargements ont été déversés sans poids signalé (non comptés dans les tonnes)</translation>
+    </message>
+    <message>
+        <source>(no site map available for the snapshot)</source>
+        <translation>(aucun plan du site disponible pour l&apos;instantané)</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Loads</source>
+        <translation>Chargements</translation>
+    </message>
+    <message>
+        <source>Tonnes</source>
+        <translation>Tonnes</translation>
+    </message>
+    <message>
+        <source>t/load</source>
+        <translation>t/chargement</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Cycles</translation>
+    </message>
+    <message>
+        <source>Cycle</source>
+        <translation>Cycle</translation>
+    </message>
+    <message>
+        <source>Shift</source>
+        <translation>Poste</translation>
+    </message>
+    <message>
+        <source>Trucks (cycle parts: average min:s per cycle)</source>
+        <translation>Camions (parties du cycle : min:s moyennes par cycle)</translation>
+    </message>
+    <message>
+        <source>Shovels (load areas)</source>
+        <translation>Pelles (zones de chargement)</translation>
+    </message>
+    <message>
+        <source>Dumps and crusher</source>
+        <translation>Déversements et concasseur</translation>
+    </message>
+</context>
+<context>
+    <name>Recording</name>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1 : fichier introuvable</translation>
+    </message>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1 : impossible d&apos;ouvrir : %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an OCU recording (%2)</source>
+        <translation>%1 n&apos;est pas un enregistrement OCU (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not an OCU recording</source>
+        <translation>%1 n&apos;est pas un enregistrement OCU</translation>
+    </message>
+    <message>
+        <source>%1: recording schema %2 is not supported</source>
+        <translation>%1 : le schéma d&apos;enregistrement %2 n&apos;est pas pris en charge</translation>
+    </message>
+    <message>
+        <source> - not every target reached</source>
+        <translation> - toutes les cibles n&apos;ont pas été atteintes</translation>
+    </message>
+    <message>
+        <source>the output is not writable</source>
+        <translation>la sortie n&apos;est pas accessible en écriture</translation>
+    </message>
+    <message>
+        <source>write failed: %1</source>
+        <translation>échec de l&apos;écriture : %1</translation>
+    </message>
+    <message>
+        <source>%1 exists already</source>
+        <translation>%1 existe déjà</translation>
+    </message>
+    <message>
+        <source>the window ends before it starts</source>
+        <translation>la fenêtre se termine avant de commencer</translation>
+    </message>
+    <message>
+        <source>cannot create %1: %2</source>
+        <translation>impossible de créer %1 : %2</translation>
+    </message>
+    <message>
+        <source>slice to %1 failed: %2</source>
+        <translation>échec de l&apos;extraction vers %1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>Replay</name>
+    <message>
+        <source>Replay: acknowledgements are replayed, not made</source>
+        <translation>Relecture : les acquittements sont rejoués, pas effectués</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Relecture</translation>
+    </message>
+    <message>
+        <source>REPLAY — %1 — recorded %2 to %3 UTC — not live, commands disabled</source>
+        <translation>RELECTURE — %1 — enregistré de %2 à %3 UTC — pas en direct, commandes désactivées</translation>
+    </message>
+    <message>
+        <source>Replay: commands are disabled</source>
+        <translation>Relecture : les commandes sont désactivées</translation>
+    </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Chronologie</translation>
+    </message>
+    <message>
+        <source>This recording holds no pass counts.</source>
+        <translation>Cet enregistrement ne contient aucun nombre de passes.</translation>
+    </message>
+    <message>
+        <source>Replay: commands are disabled. This panel acts on live machines only.</source>
+        <translation>Relecture : les commandes sont désactivées. Ce panneau n&apos;agit que sur des machines en direct.</translation>
+    </message>
+    <message>
+        <source>--from/--to: not a time</source>
+        <translation>--from/--to : pas une heure</translation>
+    </message>
+    <message>
+        <source>--at: &quot;%1&quot; is not a time</source>
+        <translation>--at : « %1 » n&apos;est pas une heure</translation>
+    </message>
+    <message>
+        <source>Operator Control Unit — REPLAY %1</source>
+        <translation>Poste de commande opérateur — RELECTURE %1</translation>
     </message>
 </context>
 <context>
@@ -142,6 +441,61 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>%1: larger than 64 MiB</source>
         <translation>%1 : plus de 64 Mio</translation>
+    </message>
+</context>
+<context>
+    <name>ocu</name>
+    <message>
+        <source>Folder for this run&apos;s flight recording (default: record.dir of the site configuration, else the user&apos;s data folder).</source>
+        <translation>Dossier de l&apos;enregistrement de vol de cette exécution (par défaut : record.dir de la configuration du site, sinon le dossier de données de l&apos;utilisateur).</translation>
+    </message>
+    <message>
+        <source>Do not record this run.</source>
+        <translation>Ne pas enregistrer cette exécution.</translation>
+    </message>
+    <message>
+        <source>Replay a flight recording (no protocol stacks, commands disabled).</source>
+        <translation>Relire un enregistrement de vol (aucune pile de protocole, commandes désactivées).</translation>
+    </message>
+    <message>
+        <source>With --replay: start at T (seconds after the start, HH:MM:SS UTC or ISO 8601).</source>
+        <translation>Avec --replay : commencer à T (secondes après le début, HH:MM:SS UTC ou ISO 8601).</translation>
+    </message>
+    <message>
+        <source>With --replay: playing speed 0.1 to 16 (--headless: default as fast as possible).</source>
+        <translation>Avec --replay : vitesse de lecture de 0,1 à 16 (--headless : par défaut aussi vite que possible).</translation>
+    </message>
+    <message>
+        <source>With --replay: write the window --from/--to as JSON lines and exit.</source>
+        <translation>Avec --replay : écrire la fenêtre --from/--to en lignes JSON et quitter.</translation>
+    </message>
+    <message>
+        <source>With --replay: write machine states of the window as CSV and exit.</source>
+        <translation>Avec --replay : écrire les états des machines de la fenêtre en CSV et quitter.</translation>
+    </message>
+    <message>
+        <source>With --replay: write the window as a new recording and exit.</source>
+        <translation>Avec --replay : écrire la fenêtre comme nouvel enregistrement et quitter.</translation>
+    </message>
+    <message>
+        <source>Start of the export window (as --at).</source>
+        <translation>Début de la fenêtre d&apos;export (comme --at).</translation>
+    </message>
+    <message>
+        <source>End of the export window (as --at).</source>
+        <translation>Fin de la fenêtre d&apos;export (comme --at).</translation>
+    </message>
+    <message>
+        <source>Start in this workspace: dispatch, compaction, ugv, monitor or all (default: the one last used, else the operator&apos;s role&apos;s).</source>
+        <translation>Démarrer dans cet espace de travail : dispatch, compaction, ugv, monitor ou all (par défaut : le dernier utilisé, sinon celui du rôle de l&apos;opérateur).</translation>
+    </message>
+    <message>
+        <source>--speed: expected 0.1 to 16, got &quot;%1&quot;</source>
+        <translation>--speed : 0,1 à 16 attendu, reçu « %1 »</translation>
+    </message>
+    <message>
+        <source>--at, --speed, --export-* and --from/--to need --replay FILE</source>
+        <translation>--at, --speed, --export-* et --from/--to nécessitent --replay FILE</translation>
     </message>
 </context>
 <context>
@@ -214,6 +568,45 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     </message>
 </context>
 <context>
+    <name>ocu::AutoDispatcher</name>
+    <message>
+        <source>way %1</source>
+        <translation>voie %1</translation>
+    </message>
+    <message>
+        <source>Auto dispatch ON (%1): idle FMS trucks go to the shortest queue</source>
+        <translation>Répartition automatique ACTIVÉE (%1) : les camions FMS libres vont vers la file d&apos;attente la plus courte</translation>
+    </message>
+    <message>
+        <source>Auto dispatch OFF (%1)</source>
+        <translation>Répartition automatique DÉSACTIVÉE (%1)</translation>
+    </message>
+    <message>
+        <source>Auto dispatch: %1</source>
+        <translation>Répartition automatique : %1</translation>
+    </message>
+    <message>
+        <source>%1 rejected way %2: %3</source>
+        <translation>%1 a refusé la voie %2 : %3</translation>
+    </message>
+    <message>
+        <source>%1 did not report the assignment to way %2 within %3 s</source>
+        <translation>%1 n&apos;a pas signalé l&apos;affectation à la voie %2 dans les %3 s</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3 (queue %4)</source>
+        <translation>%1 : %2 à %3 (file %4)</translation>
+    </message>
+    <message>
+        <source>%1 — sent</source>
+        <translation>%1 — envoyé</translation>
+    </message>
+    <message>
+        <source>%1 — NOT sent: %2</source>
+        <translation>%1 — NON envoyé : %2</translation>
+    </message>
+</context>
+<context>
     <name>ocu::AxisDisplay</name>
     <message>
         <source>forward</source>
@@ -226,6 +619,1159 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>axis %1</source>
         <translation>axe %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CommandGate</name>
+    <message>
+        <source>protocol stack</source>
+        <translation>pile de protocole</translation>
+    </message>
+    <message>
+        <source>stack did not answer within %1 ms</source>
+        <translation>la pile n&apos;a pas répondu dans les %1 ms</translation>
+    </message>
+    <message>
+        <source>no protocol bridge registered: nothing sent</source>
+        <translation>aucune passerelle de protocole enregistrée : rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>unknown machine %1</source>
+        <translation>machine inconnue %1</translation>
+    </message>
+    <message>
+        <source>the console is locked: only stops are accepted</source>
+        <translation>la console est verrouillée : seuls les arrêts sont acceptés</translation>
+    </message>
+    <message>
+        <source>release needs a deliberate confirmation</source>
+        <translation>la levée exige une confirmation délibérée</translation>
+    </message>
+    <message>
+        <source>no %1 bridge in this console: nothing sent</source>
+        <translation>aucune passerelle %1 dans cette console : rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>%1 already reports being stopped</source>
+        <translation>%1 signale déjà être arrêté</translation>
+    </message>
+    <message>
+        <source>%1 has not reported being stopped %2 ms after the stop command was sent</source>
+        <translation>%1 n&apos;a pas signalé être arrêté %2 ms après l&apos;envoi de la commande d&apos;arrêt</translation>
+    </message>
+    <message>
+        <source>%1: OSYRIS carries no stop state, so no machine can confirm the stop; the STOP text went to the drivers&apos; displays</source>
+        <translation>%1 : OSYRIS ne transmet aucun état d&apos;arrêt, aucune machine ne peut donc confirmer l&apos;arrêt ; le texte STOP a été envoyé aux écrans des conducteurs</translation>
+    </message>
+    <message>
+        <source>%1 %2 ms after the command</source>
+        <translation>%1 %2 ms après la commande</translation>
+    </message>
+    <message>
+        <source>%1 already reports the effect of %2</source>
+        <translation>%1 signale déjà l&apos;effet de %2</translation>
+    </message>
+    <message>
+        <source>%1 has not confirmed %2 %3 ms after the command was sent</source>
+        <translation>%1 n&apos;a pas confirmé %2 %3 ms après l&apos;envoi de la commande</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CommandPermissions</name>
+    <message>
+        <source>monitor</source>
+        <translation>observateur</translation>
+    </message>
+    <message>
+        <source>dispatcher</source>
+        <translation>répartiteur</translation>
+    </message>
+    <message>
+        <source>site manager</source>
+        <translation>chef de site</translation>
+    </message>
+    <message>
+        <source>UGV operator</source>
+        <translation>opérateur UGV</translation>
+    </message>
+    <message>
+        <source>supervisor</source>
+        <translation>superviseur</translation>
+    </message>
+    <message>
+        <source>admin</source>
+        <translation>administrateur</translation>
+    </message>
+    <message>
+        <source>%1 is not permitted to any role at this console</source>
+        <translation>%1 n&apos;est autorisé à aucun rôle sur cette console</translation>
+    </message>
+    <message>
+        <source>%1 or %2</source>
+        <translation>%1 ou %2</translation>
+    </message>
+    <message>
+        <source>%1 needs the %2 role (you are %3)</source>
+        <translation>%1 nécessite le rôle %2 (vous êtes %3)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CompactionMapOverlay</name>
+    <message>
+        <source>New area: %1 points (3 needed)</source>
+        <translation>Nouvelle zone : %1 points (3 nécessaires)</translation>
+    </message>
+    <message>
+        <source>New area: %1 points, %2 m²</source>
+        <translation>Nouvelle zone : %1 points, %2 m²</translation>
+    </message>
+    <message>
+        <source>click adds a point · Enter, double click or the first point closes · Backspace undoes · Esc cancels</source>
+        <translation>un clic ajoute un point · Entrée, double clic ou le premier point ferme · Retour arrière annule · Échap abandonne</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CompactionPanel</name>
+    <message>
+        <source>Lift:</source>
+        <translation>Couche :</translation>
+    </message>
+    <message>
+        <source>Top view</source>
+        <translation>Vue de dessus</translation>
+    </message>
+    <message>
+        <source>Areas</source>
+        <translation>Zones</translation>
+    </message>
+    <message>
+        <source>Stations</source>
+        <translation>Profils</translation>
+    </message>
+    <message>
+        <source>Draw area</source>
+        <translation>Dessiner une zone</translation>
+    </message>
+    <message>
+        <source>Draw a compaction area on the 2D map: click to add points; Enter, a double click or a click on the first point closes; Backspace undoes; Esc cancels</source>
+        <translation>Dessiner une zone de compactage sur la carte 2D : cliquer pour ajouter des points ; Entrée, un double clic ou un clic sur le premier point ferme ; Retour arrière annule ; Échap abandonne</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Coverage report…</source>
+        <translation>Rapport de couverture…</translation>
+    </message>
+    <message>
+        <source>PDF, Veta-style CSV and GeoTIFF of the pass counts, in the site&apos;s projected CRS</source>
+        <translation>PDF, CSV de style Veta et GeoTIFF des nombres de passes, dans le SCR projeté du site</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Zone</translation>
+    </message>
+    <message>
+        <source>Covered %</source>
+        <translation>Couvert %</translation>
+    </message>
+    <message>
+        <source>Target %</source>
+        <translation>Dans la cible %</translation>
+    </message>
+    <message>
+        <source>Under %</source>
+        <translation>Sous %</translation>
+    </message>
+    <message>
+        <source>Over %</source>
+        <translation>Au-dessus %</translation>
+    </message>
+    <message>
+        <source>Incompl.</source>
+        <translation>Incompl.</translation>
+    </message>
+    <message>
+        <source>Covered cells within the target passes, % of the area</source>
+        <translation>Cellules couvertes dont les passes sont dans la cible, en % de la zone</translation>
+    </message>
+    <message>
+        <source>Cells a given-up ribbon gap may have passed over: their counts are lower bounds</source>
+        <translation>Cellules qu&apos;une lacune abandonnée du ruban a pu parcourir : leurs nombres sont des minorants</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>De</translation>
+    </message>
+    <message>
+        <source>Covered cells within the target passes, % of the range&apos;s band</source>
+        <translation>Cellules couvertes dont les passes sont dans la cible, en % de la bande de l&apos;intervalle</translation>
+    </message>
+    <message>
+        <source>Pick a range to outline it on the map; double click to show it</source>
+        <translation>Choisir un intervalle pour le tracer sur la carte ; double-cliquer pour l&apos;afficher</translation>
+    </message>
+    <message>
+        <source>Cancel drawing</source>
+        <translation>Annuler le dessin</translation>
+    </message>
+    <message>
+        <source>Area &quot;%1&quot; removed.</source>
+        <translation>Zone « %1 » supprimée.</translation>
+    </message>
+    <message>
+        <source>Double click an area to show it on the map</source>
+        <translation>Double-cliquer sur une zone pour l&apos;afficher sur la carte</translation>
+    </message>
+    <message>
+        <source>Design: %1 — %2 alignment(s), %3 boundary(ies)%4</source>
+        <translation>Projet : %1 — %2 axe(s), %3 limite(s)%4</translation>
+    </message>
+    <message>
+        <source> · %1 warning(s): %2</source>
+        <translation> · %1 avertissement(s) : %2</translation>
+    </message>
+    <message>
+        <source>No design loaded (site configuration &quot;compaction&quot;: {&quot;design&quot;: …}).</source>
+        <translation>Aucun projet chargé (configuration du site &quot;compaction&quot;: {&quot;design&quot;: …}).</translation>
+    </message>
+    <message>
+        <source>Lift %1 (z %2 … %3 m)</source>
+        <translation>Couche %1 (z %2 … %3 m)</translation>
+    </message>
+    <message>
+        <source>%1 (design)</source>
+        <translation>%1 (projet)</translation>
+    </message>
+    <message>
+        <source>No station ranges: the alignment cannot be placed (no EPSG code or worksite frame).</source>
+        <translation>Aucun intervalle de profils : l&apos;axe ne peut pas être placé (pas de code EPSG ni de repère de chantier).</translation>
+    </message>
+    <message>
+        <source>No station ranges without a design alignment.</source>
+        <translation>Aucun intervalle de profils sans axe dans le projet.</translation>
+    </message>
+    <message>
+        <source>Every %1 m along %2 (%3 m left, %4 m right)</source>
+        <translation>Tous les %1 m le long de %2 (%3 m à gauche, %4 m à droite)</translation>
+    </message>
+    <message>
+        <source>the alignment</source>
+        <translation>l&apos;axe</translation>
+    </message>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>Area %1</source>
+        <translation>Zone %1</translation>
+    </message>
+    <message>
+        <source>New compaction area</source>
+        <translation>Nouvelle zone de compactage</translation>
+    </message>
+    <message>
+        <source>Name of the area:</source>
+        <translation>Nom de la zone :</translation>
+    </message>
+    <message>
+        <source>The drawn area was discarded.</source>
+        <translation>La zone dessinée a été abandonnée.</translation>
+    </message>
+    <message>
+        <source>Replace area</source>
+        <translation>Remplacer la zone</translation>
+    </message>
+    <message>
+        <source>An area named &quot;%1&quot; exists. Replace it with the new outline?</source>
+        <translation>Une zone nommée « %1 » existe. La remplacer par le nouveau contour ?</translation>
+    </message>
+    <message>
+        <source>Area &quot;%1&quot; saved to %2.</source>
+        <translation>Zone « %1 » enregistrée dans %2.</translation>
+    </message>
+    <message>
+        <source>Coverage report not written.</source>
+        <translation>Rapport de couverture non écrit.</translation>
+    </message>
+    <message>
+        <source>Written: %1 (%2.*).</source>
+        <translation>Écrit : %1 (%2.*).</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>Échec : %1</translation>
+    </message>
+    <message>
+        <source>Coverage report</source>
+        <translation>Rapport de couverture</translation>
+    </message>
+    <message>
+        <source>coverage-report.pdf</source>
+        <translation>rapport-couverture.pdf</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CompactionSession</name>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>impossible d&apos;ouvrir %1 : %2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 MiB</source>
+        <translation>%1 dépasse %2 Mio</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>the design names no EPSG code (CoordinateSystem/@epsgCode): it cannot be placed on the map</source>
+        <translation>le projet n&apos;indique aucun code EPSG (CoordinateSystem/@epsgCode) : il ne peut pas être placé sur la carte</translation>
+    </message>
+    <message>
+        <source>an area needs a name</source>
+        <translation>une zone doit avoir un nom</translation>
+    </message>
+    <message>
+        <source>an area needs at least 3 points</source>
+        <translation>une zone doit avoir au moins 3 points</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>impossible de lire %1 : %2</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON (%2): areas not saved</source>
+        <translation>%1 n&apos;est pas un JSON valide (%2) : zones non enregistrées</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>impossible d&apos;écrire %1 : %2</translation>
+    </message>
+    <message>
+        <source>no OSYRIS station in this console: no pass counts to report</source>
+        <translation>aucune station OSYRIS dans cette console : aucun nombre de passes à rapporter</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CoverageReport</name>
+    <message>
+        <source>no pass counts yet</source>
+        <translation>pas encore de nombres de passes</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>impossible d&apos;écrire %1 : %2</translation>
+    </message>
+    <message>
+        <source>no area named &quot;%1&quot;</source>
+        <translation>aucune zone nommée « %1 »</translation>
+    </message>
+    <message>
+        <source>PROJ could not convert a cell to EPSG:%1</source>
+        <translation>PROJ n&apos;a pas pu convertir une cellule vers EPSG:%1</translation>
+    </message>
+    <message>
+        <source>design CRS: %1</source>
+        <translation>SCR du projet : %1</translation>
+    </message>
+    <message>
+        <source>GDAL has no GTiff driver</source>
+        <translation>GDAL n&apos;a pas de pilote GTiff</translation>
+    </message>
+    <message>
+        <source>PROJ could not convert the raster&apos;s corners</source>
+        <translation>PROJ n&apos;a pas pu convertir les coins du raster</translation>
+    </message>
+    <message>
+        <source>GDAL cannot create %1: %2</source>
+        <translation>GDAL ne peut pas créer %1 : %2</translation>
+    </message>
+    <message>
+        <source>GDAL does not know EPSG:%1</source>
+        <translation>GDAL ne connaît pas EPSG:%1</translation>
+    </message>
+    <message>
+        <source>GDAL cannot write %1: %2</source>
+        <translation>GDAL ne peut pas écrire %1 : %2</translation>
+    </message>
+    <message>
+        <source>Passes</source>
+        <translation>Passes</translation>
+    </message>
+    <message>
+        <source> (target)</source>
+        <translation> (cible)</translation>
+    </message>
+    <message>
+        <source>incomplete</source>
+        <translation>incomplet</translation>
+    </message>
+    <message>
+        <source>vibration on only</source>
+        <translation>vibration active uniquement</translation>
+    </message>
+    <message>
+        <source>vibration off only</source>
+        <translation>vibration coupée uniquement</translation>
+    </message>
+    <message>
+        <source>vibration on or off</source>
+        <translation>vibration active ou coupée</translation>
+    </message>
+    <message>
+        <source>forward passes only</source>
+        <translation>passes avant uniquement</translation>
+    </message>
+    <message>
+        <source>backward passes only</source>
+        <translation>passes arrière uniquement</translation>
+    </message>
+    <message>
+        <source>both directions</source>
+        <translation>les deux sens</translation>
+    </message>
+    <message>
+        <source>speed %1 … %2 m/s</source>
+        <translation>vitesse %1 … %2 m/s</translation>
+    </message>
+    <message>
+        <source>time %1 … %2</source>
+        <translation>heure %1 … %2</translation>
+    </message>
+    <message>
+        <source>machines %1 only</source>
+        <translation>machines %1 uniquement</translation>
+    </message>
+    <message>
+        <source>Compaction coverage report</source>
+        <translation>Rapport de couverture du compactage</translation>
+    </message>
+    <message>
+        <source>Compaction coverage report — %1</source>
+        <translation>Rapport de couverture du compactage — %1</translation>
+    </message>
+    <message>
+        <source>Written %1 · %2 · cell %3 m · target %4–%5 passes</source>
+        <translation>Écrit %1 · %2 · cellule %3 m · cible %4–%5 passes</translation>
+    </message>
+    <message>
+        <source>CRS: EPSG:%1 (%2) · design: %3</source>
+        <translation>SCR : EPSG:%1 (%2) · projet : %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucun</translation>
+    </message>
+    <message>
+        <source>Machines: %1 · data %2</source>
+        <translation>Machines : %1 · données %2</translation>
+    </message>
+    <message>
+        <source>none known</source>
+        <translation>aucune connue</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 à %2</translation>
+    </message>
+    <message>
+        <source>time range not known</source>
+        <translation>période inconnue</translation>
+    </message>
+    <message>
+        <source>Filters: %1</source>
+        <translation>Filtres : %1</translation>
+    </message>
+    <message>
+        <source>%1: z %2 … %3 m</source>
+        <translation>%1 : z %2 … %3 m</translation>
+    </message>
+    <message>
+        <source>Lifts (thickness %1): %2</source>
+        <translation>Couches (épaisseur %1) : %2</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>désactivée</translation>
+    </message>
+    <message>
+        <source>machine %1: %2 slot ranges</source>
+        <translation>machine %1 : %2 plages de slots</translation>
+    </message>
+    <message>
+        <source>INCOMPLETE: %1 cells may be under-counted: ribbon data that never arrived was given up (%2). Their counts are lower bounds.</source>
+        <translation>INCOMPLET : %1 cellules peuvent être sous-comptées : des données de ruban jamais arrivées ont été abandonnées (%2). Leurs nombres sont des minorants.</translation>
+    </message>
+    <message>
+        <source>Complete: every ribbon slot of every machine was received; no cell is marked incomplete.</source>
+        <translation>Complet : chaque slot de ruban de chaque machine a été reçu ; aucune cellule n&apos;est marquée incomplète.</translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Remarque : %1</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Zone</translation>
+    </message>
+    <message>
+        <source>m²</source>
+        <translation>m²</translation>
+    </message>
+    <message>
+        <source>covered %</source>
+        <translation>couvert %</translation>
+    </message>
+    <message>
+        <source>under %</source>
+        <translation>sous %</translation>
+    </message>
+    <message>
+        <source>at %</source>
+        <translation>dans %</translation>
+    </message>
+    <message>
+        <source>over %</source>
+        <translation>au-dessus %</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>moyenne</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>Statistics per area</source>
+        <translation>Statistiques par zone</translation>
+    </message>
+    <message>
+        <source>All counted cells</source>
+        <translation>Toutes les cellules comptées</translation>
+    </message>
+    <message>
+        <source>Cells belong to an area when their centre lies inside it. covered = at least one pass; under/at/over the target as % of the area&apos;s cells; min/mean/max over covered cells.</source>
+        <translation>Une cellule appartient à une zone quand son centre s&apos;y trouve. couvert = au moins une passe ; sous/dans/au-dessus de la cible en % des cellules de la zone ; min/moyenne/max sur les cellules couvertes.</translation>
+    </message>
+    <message>
+        <source>Statistics per station range — %1, %2 m left to %3 m right of the centre line</source>
+        <translation>Statistiques par intervalle de profils — %1, de %2 m à gauche à %3 m à droite de l&apos;axe</translation>
+    </message>
+    <message>
+        <source>Stations</source>
+        <translation>Profils</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>impossible d&apos;écrire %1</translation>
+    </message>
+    <message>
+        <source>coverage report written</source>
+        <translation>rapport de couverture écrit</translation>
+    </message>
+    <message>
+        <source>give &quot;pdf&quot;, &quot;csv&quot; and/or &quot;geotiff&quot; (file names)</source>
+        <translation>indiquer &quot;pdf&quot;, &quot;csv&quot; et/ou &quot;geotiff&quot; (noms de fichiers)</translation>
+    </message>
+    <message>
+        <source>no pass counts yet (no OSYRIS station, or nothing counted)</source>
+        <translation>pas encore de nombres de passes (aucune station OSYRIS, ou rien compté)</translation>
+    </message>
+    <message>
+        <source>no lift %1 (the data has %2)</source>
+        <translation>aucune couche %1 (les données en ont %2)</translation>
+    </message>
+    <message>
+        <source>every lift</source>
+        <translation>toutes les couches</translation>
+    </message>
+    <message>
+        <source>top view (top-most lift per cell)</source>
+        <translation>vue de dessus (couche la plus haute par cellule)</translation>
+    </message>
+    <message>
+        <source>lift %1 (z %2 … %3 m)</source>
+        <translation>couche %1 (z %2 … %3 m)</translation>
+    </message>
+    <message>
+        <source>area &quot;%1&quot; has fewer than 3 usable vertices</source>
+        <translation>la zone « %1 » a moins de 3 sommets utilisables</translation>
+    </message>
+    <message>
+        <source>the design names no EPSG code: station ranges cannot be placed</source>
+        <translation>le projet n&apos;indique aucun code EPSG : les intervalles de profils ne peuvent pas être placés</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::CrewMessagesPanel</name>
+    <message>
+        <source>Send</source>
+        <translation>Envoyer</translation>
+    </message>
+    <message>
+        <source>Message to the crew (Enter sends)</source>
+        <translation>Message à l&apos;équipe (Entrée envoie)</translation>
+    </message>
+    <message>
+        <source>Recipient</source>
+        <translation>Destinataire</translation>
+    </message>
+    <message>
+        <source>All machines</source>
+        <translation>Toutes les machines</translation>
+    </message>
+    <message>
+        <source>%1  → %2: %3 (sending…)</source>
+        <translation>%1  → %2 : %3 (envoi…)</translation>
+    </message>
+    <message>
+        <source>%1  → %2: %3 (sent)</source>
+        <translation>%1  → %2 : %3 (envoyé)</translation>
+    </message>
+    <message>
+        <source>%1  → %2: %3 (NOT sent: %4)</source>
+        <translation>%1  → %2 : %3 (NON envoyé : %4)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DispatchModel</name>
+    <message>
+        <source>link down</source>
+        <translation>liaison coupée</translation>
+    </message>
+    <message>
+        <source>way %1</source>
+        <translation>voie %1</translation>
+    </message>
+    <message>
+        <source>NEEDS ASSIGNMENT</source>
+        <translation>AFFECTATION REQUISE</translation>
+    </message>
+    <message>
+        <source>Reported assignment: %1</source>
+        <translation>Affectation signalée : %1</translation>
+    </message>
+    <message>
+        <source>Last request from this console: %1 to way %2 — %3</source>
+        <translation>Dernière demande de cette console : %1 vers la voie %2 — %3</translation>
+    </message>
+    <message>
+        <source>no answer yet</source>
+        <translation>pas encore de réponse</translation>
+    </message>
+    <message>
+        <source>Detail: %1</source>
+        <translation>Détail : %1</translation>
+    </message>
+    <message>
+        <source>The truck asks for work (or was handed back to the FMS).</source>
+        <translation>Le camion demande du travail (ou a été rendu au FMS).</translation>
+    </message>
+    <message>
+        <source>No route: %1</source>
+        <translation>Aucun itinéraire : %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 m over %n way(s) (%2); %3</source>
+        <translation>
+            <numerusform>%1 m sur %n voie (%2) ; %3</numerusform>
+            <numerusform>%1 m sur %n voies (%2) ; %3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>route of the assignment</source>
+        <translation>itinéraire de l&apos;affectation</translation>
+    </message>
+    <message>
+        <source>shortest path</source>
+        <translation>chemin le plus court</translation>
+    </message>
+    <message>
+        <source>nominal 25 km/h (the truck is slower than 1 m/s)</source>
+        <translation>25 km/h nominal (le camion roule à moins de 1 m/s)</translation>
+    </message>
+    <message>
+        <source>at the reported speed</source>
+        <translation>à la vitesse signalée</translation>
+    </message>
+    <message>
+        <source>DispatchingCustodian: who dispatches this truck (only FMS trucks can be assigned)</source>
+        <translation>DispatchingCustodian : qui répartit ce camion (seuls les camions FMS peuvent être affectés)</translation>
+    </message>
+    <message>
+        <source>Truck</source>
+        <translation>Camion</translation>
+    </message>
+    <message>
+        <source>Custodian</source>
+        <translation>Répartiteur</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Mode</translation>
+    </message>
+    <message>
+        <source>Assignment</source>
+        <translation>Affectation</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Tâche</translation>
+    </message>
+    <message>
+        <source>Destination</source>
+        <translation>Destination</translation>
+    </message>
+    <message>
+        <source>ETA</source>
+        <translation>Arrivée</translation>
+    </message>
+    <message>
+        <source>Production</source>
+        <translation>Production</translation>
+    </message>
+    <message>
+        <source>Payload</source>
+        <translation>Charge utile</translation>
+    </message>
+    <message>
+        <source>In state</source>
+        <translation>Dans l&apos;état</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DispatchPanel</name>
+    <message>
+        <source>way %1</source>
+        <translation>voie %1</translation>
+    </message>
+    <message>
+        <source>Dispatch panel keys:
+Up/Down: choose a truck in the table (Alt+K: go to the table)
+F6: next truck that needs an assignment
+Alt+T: task, Alt+D: destination (type to search), Alt+M: pick the destination on the 2D map (click an area; Esc cancels)
+Ctrl+Enter or Alt+A: assign (re-assigning a truck that has a task asks first)
+Alt+R: reset the truck&apos;s assignment (asks first)
+Alt+Q: go to the queues per shovel and dump
+Alt+U: auto dispatch on/off (switching on asks first)</source>
+        <translation>Touches du panneau de répartition :
+Haut/Bas : choisir un camion dans le tableau (Alt+M : aller au tableau)
+F6 : camion suivant qui a besoin d&apos;une affectation
+Alt+T : tâche, Alt+D : destination (taper pour chercher), Alt+C : choisir la destination sur la carte 2D (cliquer une zone ; Échap annule)
+Ctrl+Entrée ou Alt+A : affecter (réaffecter un camion qui a une tâche demande confirmation)
+Alt+R : réinitialiser l&apos;affectation du camion (demande confirmation)
+Alt+F : aller aux files d&apos;attente par pelle et déversement
+Alt+U : répartition automatique activée/désactivée (l&apos;activation demande confirmation)</translation>
+    </message>
+    <message>
+        <source>Truc&amp;ks</source>
+        <translation>Ca&amp;mions</translation>
+    </message>
+    <message>
+        <source>Next needing work (F6)</source>
+        <translation>Suivant sans travail (F6)</translation>
+    </message>
+    <message>
+        <source>Select the next truck that asks for work or was handed back to the FMS.</source>
+        <translation>Sélectionner le camion suivant qui demande du travail ou a été rendu au FMS.</translation>
+    </message>
+    <message>
+        <source>A&amp;uto dispatch</source>
+        <translation>Répartition a&amp;uto</translation>
+    </message>
+    <message>
+        <source>Assign every idle FMS truck automatically: empty to the shovel with the shortest queue, loaded to the dump with the shortest queue (Alt+U; switching on asks first).</source>
+        <translation>Affecter automatiquement chaque camion FMS libre : vide vers la pelle avec la file la plus courte, chargé vers le déversement avec la file la plus courte (Alt+U ; l&apos;activation demande confirmation).</translation>
+    </message>
+    <message>
+        <source>&amp;Queues</source>
+        <translation>&amp;Files d&apos;attente</translation>
+    </message>
+    <message>
+        <source>Queues per shovel and dump: trucks at the area and trucks coming to it</source>
+        <translation>Files d&apos;attente par pelle et déversement : camions sur la zone et camions en route</translation>
+    </message>
+    <message>
+        <source>&amp;Task</source>
+        <translation>&amp;Tâche</translation>
+    </message>
+    <message>
+        <source>&amp;Destination</source>
+        <translation>&amp;Destination</translation>
+    </message>
+    <message>
+        <source>Pick on &amp;map</source>
+        <translation>Choisir sur la &amp;carte</translation>
+    </message>
+    <message>
+        <source>Then click a load, dump, crusher, park or fuel area on the 2D map (Esc cancels).</source>
+        <translation>Puis cliquer une zone de chargement, de déversement, de concasseur, de stationnement ou de carburant sur la carte 2D (Échap annule).</translation>
+    </message>
+    <message>
+        <source>&amp;Assign</source>
+        <translation>&amp;Affecter</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>&amp;Réinitialiser</translation>
+    </message>
+    <message>
+        <source>Reset the truck&apos;s assignment (HaulTruckAssignmentResetV1); asks first.</source>
+        <translation>Réinitialiser l&apos;affectation du camion (HaulTruckAssignmentResetV1) ; demande confirmation.</translation>
+    </message>
+    <message>
+        <source>Switch auto dispatch on?</source>
+        <translation>Activer la répartition automatique ?</translation>
+    </message>
+    <message>
+        <source>Every idle truck the FMS dispatches will be assigned automatically (empty: shortest shovel queue; loaded: shortest dump queue) until you switch it off.</source>
+        <translation>Chaque camion libre réparti par le FMS sera affecté automatiquement (vide : file de pelle la plus courte ; chargé : file de déversement la plus courte) jusqu&apos;à ce que vous la désactiviez.</translation>
+    </message>
+    <message>
+        <source>A&amp;uto dispatch ON</source>
+        <translation>Répartition a&amp;uto ACTIVÉE</translation>
+    </message>
+    <message>
+        <source>Auto dispatch ON — last: %1</source>
+        <translation>Répartition automatique ACTIVÉE — dernière : %1</translation>
+    </message>
+    <message>
+        <source>nothing yet</source>
+        <translation>rien pour l&apos;instant</translation>
+    </message>
+    <message>
+        <source>Auto dispatch OFF — last: %1</source>
+        <translation>Répartition automatique DÉSACTIVÉE — dernière : %1</translation>
+    </message>
+    <message>
+        <source>no areas yet (waiting for the road network)</source>
+        <translation>pas encore de zones (attente du réseau routier)</translation>
+    </message>
+    <message>
+        <source>no truck needs an assignment</source>
+        <translation>aucun camion n&apos;a besoin d&apos;affectation</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n truck(s) need an assignment</source>
+        <translation>
+            <numerusform>%n camion a besoin d&apos;une affectation</numerusform>
+            <numerusform>%n camions ont besoin d&apos;une affectation</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No haul truck reports dispatch data yet.</source>
+        <translation>Aucun tombereau ne signale encore de données de répartition.</translation>
+    </message>
+    <message>
+        <source>no dispatch source</source>
+        <translation>aucune source de répartition</translation>
+    </message>
+    <message>
+        <source>Re-&amp;assign</source>
+        <translation>Ré&amp;affecter</translation>
+    </message>
+    <message>
+        <source>Send %1 to %2 as %3 (Ctrl+Enter)</source>
+        <translation>Envoyer %1 vers %2 en %3 (Ctrl+Entrée)</translation>
+    </message>
+    <message>
+        <source>preview: %1 → %2 · %3 m</source>
+        <translation>aperçu : %1 → %2 · %3 m</translation>
+    </message>
+    <message>
+        <source>Click an area on the 2D map for %1 (Esc cancels).</source>
+        <translation>Cliquer une zone sur la carte 2D pour %1 (Échap annule).</translation>
+    </message>
+    <message>
+        <source>That map area is not a destination of the road network (no area way %1).</source>
+        <translation>Cette zone de la carte n&apos;est pas une destination du réseau routier (aucune voie de zone %1).</translation>
+    </message>
+    <message>
+        <source>Destination picked on the map: %1</source>
+        <translation>Destination choisie sur la carte : %1</translation>
+    </message>
+    <message>
+        <source>%1 to %2 for %3</source>
+        <translation>%1 vers %2 pour %3</translation>
+    </message>
+    <message>
+        <source>Re-assign %1?</source>
+        <translation>Réaffecter %1 ?</translation>
+    </message>
+    <message>
+        <source>%1 has a %2 assignment (%3 to %4). Replace it with %5?</source>
+        <translation>%1 a une affectation %2 (%3 vers %4). La remplacer par %5 ?</translation>
+    </message>
+    <message>
+        <source>Assign %1</source>
+        <translation>Affecter %1</translation>
+    </message>
+    <message>
+        <source>Reset %1&apos;s assignment?</source>
+        <translation>Réinitialiser l&apos;affectation de %1 ?</translation>
+    </message>
+    <message>
+        <source>%1 will drop its %2 assignment (%3) and wait for a new one.</source>
+        <translation>%1 abandonnera son affectation %2 (%3) et attendra une nouvelle.</translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation>actuelle</translation>
+    </message>
+    <message>
+        <source>no task reported</source>
+        <translation>aucune tâche signalée</translation>
+    </message>
+    <message>
+        <source>Reset %1</source>
+        <translation>Réinitialiser %1</translation>
+    </message>
+    <message>
+        <source>%1: sent</source>
+        <translation>%1 : envoyé</translation>
+    </message>
+    <message>
+        <source>%1: NOT sent — %2</source>
+        <translation>%1 : NON envoyé — %2</translation>
+    </message>
+    <message>
+        <source>NOT sent — %1</source>
+        <translation>NON envoyé — %1</translation>
+    </message>
+    <message>
+        <source>the truck answered Accepted</source>
+        <translation>le camion a répondu Accepted</translation>
+    </message>
+    <message>
+        <source>the truck answered %1: %2</source>
+        <translation>le camion a répondu %1 : %2</translation>
+    </message>
+    <message>
+        <source>, assignment %1</source>
+        <translation>, affectation %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DispatchQueueModel</name>
+    <message>
+        <source>at: %1</source>
+        <translation>sur place : %1</translation>
+    </message>
+    <message>
+        <source>coming: %1</source>
+        <translation>en route : %1</translation>
+    </message>
+    <message>
+        <source>way %1</source>
+        <translation>voie %1</translation>
+    </message>
+    <message>
+        <source>Shovel (load)</source>
+        <translation>Pelle (chargement)</translation>
+    </message>
+    <message>
+        <source>Dump (offload)</source>
+        <translation>Déversement (déchargement)</translation>
+    </message>
+    <message>
+        <source>Way %1 on %2. Coming: assigned (Pending/Active) and not yet there; at: the truck reports this area as its way (queued, spotting, loading or dumping).</source>
+        <translation>Voie %1 sur %2. En route : affecté (Pending/Active) et pas encore arrivé ; sur place : le camion signale cette zone comme sa voie (en attente, en mise en place, en chargement ou en déversement).</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Zone</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Coming</source>
+        <translation>En route</translation>
+    </message>
+    <message>
+        <source>At area</source>
+        <translation>Sur place</translation>
+    </message>
+    <message>
+        <source>Trucks</source>
+        <translation>Camions</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::DisplayText</name>
+    <message>
+        <source>Info</source>
+        <translation>Info</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Avertissement</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <source>Critical</source>
+        <translation>Critique</translation>
+    </message>
+    <message>
+        <source>link loss</source>
+        <translation>perte de liaison</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>délai dépassé</translation>
+    </message>
+    <message>
+        <source>health fault</source>
+        <translation>défaut de santé</translation>
+    </message>
+    <message>
+        <source>diagnostic</source>
+        <translation>diagnostic</translation>
+    </message>
+    <message>
+        <source>discrepancy</source>
+        <translation>écart</translation>
+    </message>
+    <message>
+        <source>control lost</source>
+        <translation>contrôle perdu</translation>
+    </message>
+    <message>
+        <source>text message</source>
+        <translation>message texte</translation>
+    </message>
+    <message>
+        <source>operator action</source>
+        <translation>action opérateur</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>info</translation>
+    </message>
+    <message>
+        <source>low</source>
+        <translation>basse</translation>
+    </message>
+    <message>
+        <source>medium</source>
+        <translation>moyenne</translation>
+    </message>
+    <message>
+        <source>high</source>
+        <translation>haute</translation>
+    </message>
+    <message>
+        <source>urgent</source>
+        <translation>urgente</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>active</translation>
+    </message>
+    <message>
+        <source>degraded</source>
+        <translation>dégradée</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>coupée</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>inconnu</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>en marche</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>arrêté</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>avertissement</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>défaut</translation>
+    </message>
+    <message>
+        <source>manual</source>
+        <translation>manuel</translation>
+    </message>
+    <message>
+        <source>autonomous</source>
+        <translation>autonome</translation>
+    </message>
+    <message>
+        <source>remote</source>
+        <translation>télécommandé</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>au repos</translation>
+    </message>
+    <message>
+        <source>transition</source>
+        <translation>transition</translation>
+    </message>
+    <message>
+        <source>shutdown</source>
+        <translation>éteint</translation>
+    </message>
+    <message>
+        <source>monitoring</source>
+        <translation>surveillance</translation>
+    </message>
+    <message>
+        <source>this console</source>
+        <translation>cette console</translation>
+    </message>
+    <message>
+        <source>another console</source>
+        <translation>autre console</translation>
+    </message>
+    <message>
+        <source>denied</source>
+        <translation>refusé</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucun</translation>
+    </message>
+    <message>
+        <source>fault or stopped</source>
+        <translation>défaut ou arrêté</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>périmé</translation>
     </message>
 </context>
 <context>
@@ -348,6 +1894,60 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>%1 items:</source>
         <translation>%1 éléments :</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::FleetBridge</name>
+    <message>
+        <source>command &apos;%1&apos; not supported by %2</source>
+        <translation>commande &apos;%1&apos; non prise en charge par %2</translation>
+    </message>
+    <message>
+        <source>%1 io thread not turning</source>
+        <translation>le thread d&apos;E/S de %1 ne tourne pas</translation>
+    </message>
+    <message>
+        <source>%1 io thread has not turned for %2 s (watchdog): its links are degraded, data and commands are held up</source>
+        <translation>le thread d&apos;E/S de %1 n&apos;a pas tourné depuis %2 s (chien de garde) : ses liaisons sont dégradées, données et commandes sont bloquées</translation>
+    </message>
+    <message>
+        <source>%1 io thread turns again (watchdog)</source>
+        <translation>le thread d&apos;E/S de %1 tourne à nouveau (chien de garde)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::FleetDiscrepancyAlarms</name>
+    <message>
+        <source>%1 autonomous machines of the FMS fleet are missing from the AHS fleet on %2</source>
+        <translation>%1 machines autonomes de la flotte FMS manquent dans la flotte AHS sur %2</translation>
+    </message>
+    <message>
+        <source>%1 machines are listed by both the FMS (manned) and the AHS on %2</source>
+        <translation>%1 machines sont listées à la fois par le FMS (avec conducteur) et l&apos;AHS sur %2</translation>
+    </message>
+    <message>
+        <source>%1 machines have a different HID at the AHS and the FMS on %2</source>
+        <translation>%1 machines ont un HID différent dans l&apos;AHS et le FMS sur %2</translation>
+    </message>
+    <message>
+        <source>%1 machines have a different type at the AHS and the FMS on %2</source>
+        <translation>%1 machines ont un type différent dans l&apos;AHS et le FMS sur %2</translation>
+    </message>
+    <message>
+        <source>%1 machines have different dimensions at the AHS and the FMS on %2</source>
+        <translation>%1 machines ont des dimensions différentes dans l&apos;AHS et le FMS sur %2</translation>
+    </message>
+    <message>
+        <source>%1 machines of the AHS are not in the FMS fleet on %2</source>
+        <translation>%1 machines de l&apos;AHS ne sont pas dans la flotte FMS sur %2</translation>
+    </message>
+    <message>
+        <source>Fleet definition discrepancy on %1: %2</source>
+        <translation>Écart de définition de flotte sur %1 : %2</translation>
+    </message>
+    <message>
+        <source>… and %1 more</source>
+        <translation>… et %1 de plus</translation>
     </message>
 </context>
 <context>
@@ -561,6 +2161,29 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     </message>
 </context>
 <context>
+    <name>ocu::HardwareStopButton</name>
+    <message>
+        <source>STOP button unavailable: the joystick subsystem did not start (%1)</source>
+        <translation>Bouton STOP indisponible : le sous-système joystick n&apos;a pas démarré (%1)</translation>
+    </message>
+    <message>
+        <source>button %1 of any joystick</source>
+        <translation>bouton %1 de n&apos;importe quel joystick</translation>
+    </message>
+    <message>
+        <source>button %1 of &quot;%2&quot;</source>
+        <translation>bouton %1 de « %2 »</translation>
+    </message>
+    <message>
+        <source>STOP button connected: %1 (%2)</source>
+        <translation>Bouton STOP connecté : %1 (%2)</translation>
+    </message>
+    <message>
+        <source>STOP button disconnected: %1; STOP ALL stays available on the console</source>
+        <translation>Bouton STOP déconnecté : %1 ; ARRÊT GÉNÉRAL reste disponible sur la console</translation>
+    </message>
+</context>
+<context>
     <name>ocu::HoldToConfirmButton</name>
     <message>
         <source>Press and hold to confirm</source>
@@ -597,10 +2220,6 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <translation> (émis par un autre système)</translation>
     </message>
     <message>
-        <source>Fleet definition discrepancy on %1: %2</source>
-        <translation>Écart de définition de flotte sur %1 : %2</translation>
-    </message>
-    <message>
         <source>all-stop</source>
         <translation>arrêt général</translation>
     </message>
@@ -621,44 +2240,8 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <translation>aucune liaison ISO 23725 configurée</translation>
     </message>
     <message>
-        <source>all-stop Apply sent on %1 (state shown as the AHS reports it)</source>
-        <translation>Arrêt général Apply envoyé sur %1 (état affiché tel que signalé par l&apos;AHS)</translation>
-    </message>
-    <message>
-        <source>unknown ISO 23725 machine: %1</source>
-        <translation>machine ISO 23725 inconnue : %1</translation>
-    </message>
-    <message>
-        <source>all-stop Apply sent to AHS %1 (ISO 23725 stops per AHS, not per machine)</source>
-        <translation>Arrêt général Apply envoyé à l&apos;AHS %1 (ISO 23725 arrête par AHS, pas par machine)</translation>
-    </message>
-    <message>
-        <source>all-stop Remove sent to AHS %1</source>
-        <translation>Arrêt général Remove envoyé à l&apos;AHS %1</translation>
-    </message>
-    <message>
         <source>%1: unknown ISO 23725 link &quot;%2&quot;</source>
         <translation>%1 : liaison ISO 23725 inconnue « %2 »</translation>
-    </message>
-    <message>
-        <source>all-stop Apply sent to %1</source>
-        <translation>Arrêt général Apply envoyé à %1</translation>
-    </message>
-    <message>
-        <source>all-stop Remove sent to %1</source>
-        <translation>Arrêt général Remove envoyé à %1</translation>
-    </message>
-    <message>
-        <source>map requested from %1</source>
-        <translation>carte demandée à %1</translation>
-    </message>
-    <message>
-        <source>reset_assignment: &quot;id&quot; must name an ISO 23725 machine</source>
-        <translation>reset_assignment : &quot;id&quot; doit désigner une machine ISO 23725</translation>
-    </message>
-    <message>
-        <source>assignment reset sent</source>
-        <translation>réinitialisation de l&apos;affectation envoyée</translation>
     </message>
     <message>
         <source>%1 on way %2</source>
@@ -699,6 +2282,105 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>last dump at way %1</source>
         <translation>dernier déversement à la voie %1</translation>
+    </message>
+    <message>
+        <source>ISO 23725 stack stopped</source>
+        <translation>pile ISO 23725 arrêtée</translation>
+    </message>
+    <message>
+        <source>AHS %1 reports all-stop active</source>
+        <translation>l&apos;AHS %1 signale l&apos;arrêt général actif</translation>
+    </message>
+    <message>
+        <source>AHS %1 reports all-stop inactive</source>
+        <translation>l&apos;AHS %1 signale l&apos;arrêt général inactif</translation>
+    </message>
+    <message>
+        <source>unknown ISO 23725 machine %1</source>
+        <translation>machine ISO 23725 inconnue %1</translation>
+    </message>
+    <message>
+        <source>assignment</source>
+        <translation>affectation</translation>
+    </message>
+    <message>
+        <source>assignment refused: %1 has not reported its DispatchingCustodian yet</source>
+        <translation>affectation refusée : %1 n&apos;a pas encore signalé son DispatchingCustodian</translation>
+    </message>
+    <message>
+        <source>assignment refused: %1 is dispatched by the %2 (DispatchingCustodian %2)</source>
+        <translation>affectation refusée : %1 est réparti par le %2 (DispatchingCustodian %2)</translation>
+    </message>
+    <message>
+        <source>implausible position ignored (%1 so far): %2</source>
+        <translation>position invraisemblable ignorée (%1 jusqu&apos;ici) : %2</translation>
+    </message>
+    <message>
+        <source>ISO 23725 link %1, machine %2: position ignored, %3 (lat %4, lon %5, speed %6 km/h); last good position kept (counted in rx.implausible.%7; one warning per machine and cause every 30 s)</source>
+        <translation>liaison ISO 23725 %1, machine %2 : position ignorée, %3 (lat %4, lon %5, vitesse %6 km/h) ; dernière position valide conservée (comptée dans rx.implausible.%7 ; un avertissement par machine et par cause toutes les 30 s)</translation>
+    </message>
+    <message>
+        <source>%1 refused: ISO 23725 link %2 is down%3; nothing sent</source>
+        <translation>%1 refusé : la liaison ISO 23725 %2 est coupée%3 ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>%1 refused: ISO 23725 link %2 is not connected%3; nothing sent</source>
+        <translation>%1 refusé : la liaison ISO 23725 %2 n&apos;est pas connectée%3 ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>all-stop Apply</source>
+        <translation>arrêt général Apply</translation>
+    </message>
+    <message>
+        <source>all-stop Remove</source>
+        <translation>arrêt général Remove</translation>
+    </message>
+    <message>
+        <source>the ISO 23725 stack is not running; nothing sent</source>
+        <translation>la pile ISO 23725 ne tourne pas ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>unknown ISO 23725 machine</source>
+        <translation>machine ISO 23725 inconnue</translation>
+    </message>
+    <message>
+        <source>%1: &quot;id&quot; must name an ISO 23725 machine</source>
+        <translation>%1 : « id » doit désigner une machine ISO 23725</translation>
+    </message>
+    <message>
+        <source>assign refused: %1; nothing sent</source>
+        <translation>affectation refusée : %1 ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>no task given</source>
+        <translation>aucune tâche indiquée</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::IsoDispatchSource</name>
+    <message>
+        <source>the ISO 23725 bridge is gone</source>
+        <translation>la passerelle ISO 23725 n&apos;existe plus</translation>
+    </message>
+    <message>
+        <source>unknown truck</source>
+        <translation>camion inconnu</translation>
+    </message>
+    <message>
+        <source>no active assignment</source>
+        <translation>aucune affectation active</translation>
+    </message>
+    <message>
+        <source>the truck has not reported its way</source>
+        <translation>le camion n&apos;a pas signalé sa voie</translation>
+    </message>
+    <message>
+        <source>no MapConnectivityV1 from the AHS yet</source>
+        <translation>pas encore de MapConnectivityV1 de l&apos;AHS</translation>
+    </message>
+    <message>
+        <source>unknown truck or another AHS&apos;s area</source>
+        <translation>camion inconnu ou zone d&apos;un autre AHS</translation>
     </message>
 </context>
 <context>
@@ -746,28 +2428,9 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>emergency stop</source>
         <translation>arrêt d&apos;urgence</translation>
     </message>
-    <message numerus="yes">
-        <source>SetEmergency sent to %n vehicle(s) this console controls</source>
-        <translation>
-            <numerusform>SetEmergency envoyé à %n véhicule contrôlé par cette console</numerusform>
-            <numerusform>SetEmergency envoyé à %n véhicules contrôlés par cette console</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>not a JAUS machine: %1</source>
-        <translation>pas une machine JAUS : %1</translation>
-    </message>
-    <message>
-        <source>SetEmergency sent to %1</source>
-        <translation>SetEmergency envoyé à %1</translation>
-    </message>
     <message>
         <source>clear emergency</source>
         <translation>levée de l&apos;urgence</translation>
-    </message>
-    <message>
-        <source>ClearEmergency sent to %1</source>
-        <translation>ClearEmergency envoyé à %1</translation>
     </message>
     <message>
         <source>drive</source>
@@ -778,48 +2441,8 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <translation>conduite refusée : cette console ne contrôle pas %1</translation>
     </message>
     <message>
-        <source>drive command sent</source>
-        <translation>commande de conduite envoyée</translation>
-    </message>
-    <message>
-        <source>drive stopped</source>
-        <translation>conduite arrêtée</translation>
-    </message>
-    <message>
-        <source>control released on every subsystem</source>
-        <translation>contrôle libéré sur tous les sous-systèmes</translation>
-    </message>
-    <message>
         <source>%1: &quot;id&quot; must name a JAUS machine such as &quot;jaus:101&quot;</source>
         <translation>%1 : &quot;id&quot; doit désigner une machine JAUS, p. ex. &quot;jaus:101&quot;</translation>
-    </message>
-    <message>
-        <source>ReleaseControl sent to %1</source>
-        <translation>ReleaseControl envoyé à %1</translation>
-    </message>
-    <message>
-        <source>RequestControl sent to %1 with authority %2</source>
-        <translation>RequestControl envoyé à %1 avec l&apos;autorité %2</translation>
-    </message>
-    <message>
-        <source>Resume sent</source>
-        <translation>Resume envoyé</translation>
-    </message>
-    <message>
-        <source>Standby sent</source>
-        <translation>Standby envoyé</translation>
-    </message>
-    <message>
-        <source>Shutdown sent</source>
-        <translation>Shutdown envoyé</translation>
-    </message>
-    <message>
-        <source>Reset sent</source>
-        <translation>Reset envoyé</translation>
-    </message>
-    <message>
-        <source>drive: &quot;mode&quot; must be &quot;velocity&quot; or &quot;effort&quot;</source>
-        <translation>drive : &quot;mode&quot; doit valoir &quot;velocity&quot; ou &quot;effort&quot;</translation>
     </message>
     <message>
         <source>drive: &quot;duration&quot; must be between 0 and 60 seconds</source>
@@ -830,8 +2453,112 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <translation>drive : l&apos;effort doit rester dans ±100 %</translation>
     </message>
     <message>
-        <source>driving %1 for %2 s</source>
-        <translation>conduite de %1 pendant %2 s</translation>
+        <source>%1 reports EMERGENCY</source>
+        <translation>%1 signale une URGENCE</translation>
+    </message>
+    <message>
+        <source>%1 reports %2: emergency cleared</source>
+        <translation>%1 signale %2 : urgence levée</translation>
+    </message>
+    <message>
+        <source>no emergency</source>
+        <translation>pas d&apos;urgence</translation>
+    </message>
+    <message>
+        <source>%1 confirms control by this console</source>
+        <translation>%1 confirme le contrôle par cette console</translation>
+    </message>
+    <message>
+        <source>%1 refuses control: insufficient authority</source>
+        <translation>%1 refuse le contrôle : autorité insuffisante</translation>
+    </message>
+    <message>
+        <source>%1 reports control released</source>
+        <translation>%1 signale le contrôle libéré</translation>
+    </message>
+    <message>
+        <source>JAUS stack stopped</source>
+        <translation>pile JAUS arrêtée</translation>
+    </message>
+    <message>
+        <source>%1 refused: %2 has not been heard on the JAUS link; nothing sent</source>
+        <translation>%1 refusé : %2 n&apos;a pas été entendu sur la liaison JAUS ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>%1 refused: the link to %2 is down; nothing sent</source>
+        <translation>%1 refusé : la liaison avec %2 est coupée ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>the JAUS stack is not running; nothing sent</source>
+        <translation>la pile JAUS ne tourne pas ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>emergency stop refused by this console&apos;s JAUS role</source>
+        <translation>arrêt d&apos;urgence refusé par le rôle JAUS de cette console</translation>
+    </message>
+    <message>
+        <source>no JAUS vehicle known and the JAUS stack is not running; nothing sent</source>
+        <translation>aucun véhicule JAUS connu et la pile JAUS ne tourne pas ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>not a JAUS machine</source>
+        <translation>pas une machine JAUS</translation>
+    </message>
+    <message>
+        <source>clear emergency refused: this console&apos;s JAUS role has no command rights</source>
+        <translation>levée d&apos;urgence refusée : le rôle JAUS de cette console n&apos;a pas de droits de commande</translation>
+    </message>
+    <message>
+        <source>this console controls no JAUS vehicle: nothing to release</source>
+        <translation>cette console ne contrôle aucun véhicule JAUS : rien à libérer</translation>
+    </message>
+    <message>
+        <source>drive refused: the JAUS stack is not running; nothing sent</source>
+        <translation>conduite refusée : la pile JAUS ne tourne pas ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>drive refused: no drive session open for %1 (a session starts through the command gate)</source>
+        <translation>conduite refusée : aucune session de conduite ouverte pour %1 (une session démarre par le contrôleur de commandes)</translation>
+    </message>
+    <message>
+        <source>drive demand handed to the drive stream</source>
+        <translation>consigne de conduite transmise au flux de conduite</translation>
+    </message>
+    <message>
+        <source>the JAUS stack is not running; no zero drive commands sent</source>
+        <translation>la pile JAUS ne tourne pas ; aucune commande de conduite nulle envoyée</translation>
+    </message>
+    <message>
+        <source>zero drive commands handed to the stack</source>
+        <translation>commandes de conduite nulles transmises à la pile</translation>
+    </message>
+    <message>
+        <source>pan-tilt</source>
+        <translation>orientation caméra</translation>
+    </message>
+    <message>
+        <source>pan-tilt refused: the JAUS stack is not running; nothing sent</source>
+        <translation>orientation caméra refusée : la pile JAUS ne tourne pas ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>pan-tilt refused: this console does not control %1</source>
+        <translation>orientation caméra refusée : cette console ne contrôle pas %1</translation>
+    </message>
+    <message>
+        <source>pan-tilt refused: the rates must be finite numbers</source>
+        <translation>orientation caméra refusée : les vitesses doivent être des nombres finis</translation>
+    </message>
+    <message>
+        <source>pan-tilt demand handed to the stack</source>
+        <translation>consigne d&apos;orientation caméra transmise à la pile</translation>
+    </message>
+    <message>
+        <source>implausible pose ignored (%1 so far): %2</source>
+        <translation>pose invraisemblable ignorée (%1 jusqu&apos;ici) : %2</translation>
+    </message>
+    <message>
+        <source>JAUS subsystem %1: pose ignored, %2 (east %3 m, north %4 m, speed %5 m/s); last good pose kept (counted in rx.implausible.%6; one warning per vehicle and cause every 30 s)</source>
+        <translation>sous-système JAUS %1 : pose ignorée, %2 (est %3 m, nord %4 m, vitesse %5 m/s) ; dernière pose valide conservée (comptée dans rx.implausible.%6 ; un avertissement par véhicule et par cause toutes les 30 s)</translation>
     </message>
 </context>
 <context>
@@ -871,6 +2598,12 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>Release control of this vehicle</source>
         <translation>Libérer le contrôle de ce véhicule</translation>
+    </message>
+    <message>
+        <source>No machine selected.
+Select one in the fleet list, in the table above or on the map (click, or Tab to the list and use the arrow keys) to see its details here.</source>
+        <translation>Aucune machine sélectionnée.
+En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou sur la carte (clic, ou Tab jusqu&apos;à la liste puis les flèches) pour voir ses détails ici.</translation>
     </message>
 </context>
 <context>
@@ -930,6 +2663,13 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>Actions</source>
         <translation>Actions</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::JausVehicleBridge</name>
+    <message>
+        <source>pan-tilt: this vehicle link drives no pan-tilt; nothing sent</source>
+        <translation>orientation caméra : cette liaison véhicule ne pilote aucune tourelle ; rien n&apos;a été envoyé</translation>
     </message>
 </context>
 <context>
@@ -1044,32 +2784,32 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
+    <message>
+        <source>%1: no input rejected</source>
+        <translation>%1 : aucune entrée rejetée</translation>
+    </message>
+    <message>
+        <source>%1: %2 inputs rejected</source>
+        <translation>%1 : %2 entrées rejetées</translation>
+    </message>
 </context>
 <context>
-    <name>ocu::MachineStopControls</name>
+    <name>ocu::LockScreen</name>
     <message>
-        <source>Stop</source>
-        <translation>Arrêter</translation>
+        <source>Console locked</source>
+        <translation>Console verrouillée</translation>
     </message>
     <message>
-        <source>Hold to release</source>
-        <translation>Maintenir pour libérer</translation>
+        <source>The picture is read-only. STOP ALL stays active (F12).</source>
+        <translation>L&apos;affichage est en lecture seule. ARRÊT GÉNÉRAL reste actif (F12).</translation>
     </message>
     <message>
-        <source>No machine selected</source>
-        <translation>Aucune machine sélectionnée</translation>
+        <source>&amp;Unlock…</source>
+        <translation>&amp;Déverrouiller…</translation>
     </message>
     <message>
-        <source>STOPPED%1</source>
-        <translation>ARRÊTÉ%1</translation>
-    </message>
-    <message>
-        <source>running</source>
-        <translation>en marche</translation>
-    </message>
-    <message>
-        <source>stop state unknown</source>
-        <translation>état d&apos;arrêt inconnu</translation>
+        <source>S&amp;witch operator…</source>
+        <translation>&amp;Changer d&apos;opérateur…</translation>
     </message>
 </context>
 <context>
@@ -1119,10 +2859,6 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <translation>ARRÊT GÉNÉRAL</translation>
     </message>
     <message>
-        <source>Stop every machine this console may stop: JAUS emergency stop to the vehicles it controls and ISO 23725 all-stop to every AHS link (F12 or Ctrl+Shift+Space). Stopping never asks for confirmation.</source>
-        <translation>Arrêter toutes les machines que cette console peut arrêter : arrêt d&apos;urgence JAUS vers les véhicules qu&apos;elle contrôle et arrêt général ISO 23725 vers chaque liaison AHS (F12 ou Ctrl+Maj+Espace). L&apos;arrêt ne demande jamais de confirmation.</translation>
-    </message>
-    <message>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
@@ -1147,10 +2883,6 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <source>&amp;Reset layout</source>
-        <translation>&amp;Réinitialiser la disposition</translation>
-    </message>
-    <message>
         <source>&amp;Night palette</source>
         <translation>Palette de &amp;nuit</translation>
     </message>
@@ -1167,30 +2899,12 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <translation>Raccourcis clavier</translation>
     </message>
     <message>
-        <source>F12 or Ctrl+Shift+Space: STOP ALL
-Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop
-Site map: arrows pan, +/- zoom, F follow the selected machine
-Ctrl+Shift+N: night palette
-Ctrl+Shift+P: save a screenshot</source>
-        <translation>F12 ou Ctrl+Maj+Espace : ARRÊT GÉNÉRAL
-Téléopération : W/A/S/D ou flèches, touche homme mort maintenue ; Espace ou Échap : arrêt d&apos;urgence
-Plan du site : flèches pour déplacer, +/- pour zoomer, F pour suivre la machine sélectionnée
-Ctrl+Maj+N : palette de nuit
-Ctrl+Maj+P : enregistrer une capture d&apos;écran</translation>
-    </message>
-    <message>
         <source>&amp;About</source>
         <translation>À &amp;propos</translation>
     </message>
     <message>
         <source>About the Operator Control Unit</source>
         <translation>À propos du poste de commande opérateur</translation>
-    </message>
-    <message>
-        <source>Operator Control Unit %1
-JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 and OSYRIS on one console.</source>
-        <translation>Poste de commande opérateur %1
-JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.</translation>
     </message>
     <message>
         <source>No unacknowledged alarms</source>
@@ -1202,6 +2916,684 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
             <numerusform>%n alarme non acquittée</numerusform>
             <numerusform>%n alarmes non acquittées</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 and %2</source>
+        <translation>%1 et %2</translation>
+    </message>
+    <message>
+        <source>Stop failure</source>
+        <translation>Échec d&apos;arrêt</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Masquer</translation>
+    </message>
+    <message>
+        <source>Hide this warning. It does not change what the machines do.</source>
+        <translation>Masquer cet avertissement. Cela ne change rien à ce que font les machines.</translation>
+    </message>
+    <message>
+        <source>&amp;Reset workspace</source>
+        <translation>&amp;Réinitialiser l&apos;espace de travail</translation>
+    </message>
+    <message>
+        <source>&amp;Go to panel</source>
+        <translation>&amp;Aller au panneau</translation>
+    </message>
+    <message>
+        <source>Operator Control Unit %1
+%2 on one console.</source>
+        <translation>Poste de commande opérateur %1
+%2 sur une seule console.</translation>
+    </message>
+    <message>
+        <source>Stop every machine this console can reach</source>
+        <translation>Arrêter toutes les machines que cette console peut atteindre</translation>
+    </message>
+    <message>
+        <source>Stop every machine this console can reach: %1</source>
+        <translation>Arrêter toutes les machines que cette console peut atteindre : %1</translation>
+    </message>
+    <message>
+        <source>%1 (F12 or Ctrl+Shift+Space). Stopping never asks for confirmation; a stop that does not reach everything shows a red banner.</source>
+        <translation>%1 (F12 ou Ctrl+Maj+Espace). L&apos;arrêt ne demande jamais de confirmation ; un arrêt qui n&apos;atteint pas tout affiche un bandeau rouge.</translation>
+    </message>
+    <message>
+        <source>F12 or Ctrl+Shift+Space: STOP ALL</source>
+        <translation>F12 ou Ctrl+Maj+Espace : ARRÊT GÉNÉRAL</translation>
+    </message>
+    <message>
+        <source>Site map: arrows pan, +/- or wheel zoom (about the cursor), F follow the selected machine, Home whole site, Shift+Home the fleet, S the selection, A the area under the cursor, C centre; double-click selects; click an edge arrow to go to machines outside the view</source>
+        <translation>Plan du site : flèches pour déplacer, +/- ou molette pour zoomer (autour du curseur), F suivre la machine sélectionnée, Origine tout le site, Maj+Origine la flotte, S la sélection, A la zone sous le curseur, C centrer ; double clic pour sélectionner ; cliquer une flèche de bord pour aller aux machines hors de la vue</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+N: night palette</source>
+        <translation>Ctrl+Maj+N : palette de nuit</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+P: save a screenshot</source>
+        <translation>Ctrl+Maj+P : enregistrer une capture d&apos;écran</translation>
+    </message>
+    <message>
+        <source>Workspaces (View › Reset workspace puts the current one back as it was):</source>
+        <translation>Espaces de travail (Affichage › Réinitialiser l&apos;espace de travail rétablit l&apos;espace courant tel qu&apos;il était) :</translation>
+    </message>
+    <message>
+        <source>Go to a panel (raises it and puts the keyboard focus in it):</source>
+        <translation>Aller à un panneau (le met au premier plan et y place le focus clavier) :</translation>
+    </message>
+    <message>
+        <source>Tab / Shift+Tab: next / previous control in a panel; arrows move in lists and tables; Space or Enter presses the focused button</source>
+        <translation>Tab / Maj+Tab : contrôle suivant / précédent d&apos;un panneau ; les flèches se déplacent dans les listes et tableaux ; Espace ou Entrée appuie sur le bouton actif</translation>
+    </message>
+    <message>
+        <source>See docs/keyboard.md for the full list.</source>
+        <translation>Voir docs/keyboard.md pour la liste complète.</translation>
+    </message>
+    <message>
+        <source>%1 STOP ALL did NOT reach: %2</source>
+        <translation>%1 ARRÊT GÉNÉRAL n&apos;a PAS atteint : %2</translation>
+    </message>
+    <message>
+        <source>%1 STOP did NOT reach: %2</source>
+        <translation>%1 ARRÊT n&apos;a PAS atteint : %2</translation>
+    </message>
+    <message>
+        <source>Dispatch</source>
+        <translation>Répartition</translation>
+    </message>
+    <message>
+        <source>Dispatch: F6 next truck needing work, Alt+T task, Alt+D destination, Alt+M pick on map, Ctrl+Enter assign, Alt+R reset</source>
+        <translation>Répartition : F6 camion suivant sans travail, Alt+T tâche, Alt+D destination, Alt+C choisir sur la carte, Ctrl+Entrée affecter, Alt+R réinitialiser</translation>
+    </message>
+    <message>
+        <source>Production</source>
+        <translation>Production</translation>
+    </message>
+    <message>
+        <source>ISO 23725 all-stop to every AHS link</source>
+        <translation>arrêt général ISO 23725 vers chaque liaison AHS</translation>
+    </message>
+    <message>
+        <source>Teleop panel: W/A/S/D or arrows with the dead-man key held; Space or Esc: emergency stop</source>
+        <translation>Panneau de téléopération : W/A/S/D ou flèches avec la touche homme mort maintenue ; Espace ou Échap : arrêt d&apos;urgence</translation>
+    </message>
+    <message>
+        <source>Mission</source>
+        <translation>Mission</translation>
+    </message>
+    <message>
+        <source>Mission panel (Ctrl+U): Alt+E edit on the map, Alt+O open, Alt+I import GPX/KML, Alt+S save, Alt+L upload, Alt+P pause, Alt+B abort. Editing on the map: click adds a waypoint, drag moves it, click a leg inserts one; Insert or Enter adds at the cursor, Delete removes the selected one, Page Up/Down select, Shift+arrows move it, Ctrl+Z / Ctrl+Shift+Z undo / redo, Esc ends editing; right-click on the ground: Go here</source>
+        <translation>Panneau Mission (Ctrl+U) : Alt+S modifier sur la carte, Alt+O ouvrir, Alt+I importer GPX/KML, Alt+E enregistrer, Alt+V envoyer, Alt+P pause, Alt+B abandonner. Édition sur la carte : un clic ajoute un point de passage, le glisser le déplace, un clic sur un tronçon en insère un ; Inser ou Entrée ajoute au curseur, Suppr supprime le point sélectionné, Page préc./suiv. sélectionnent, Maj+flèches le déplacent, Ctrl+Z / Ctrl+Maj+Z annuler / rétablir, Échap termine l&apos;édition ; clic droit sur le sol : Aller ici</translation>
+    </message>
+    <message>
+        <source>JAUS emergency stop to every discovered vehicle</source>
+        <translation>arrêt d&apos;urgence JAUS vers chaque véhicule découvert</translation>
+    </message>
+    <message>
+        <source>the OSYRIS stop message</source>
+        <translation>le message d&apos;arrêt OSYRIS</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::MissionGeoJson</name>
+    <message>
+        <source>not JSON (%1 at byte %2)</source>
+        <translation>pas du JSON (%1 à l&apos;octet %2)</translation>
+    </message>
+    <message>
+        <source>no GeoJSON LineString (the route) in it</source>
+        <translation>aucun LineString GeoJSON (l&apos;itinéraire) dedans</translation>
+    </message>
+    <message>
+        <source>the route has no positions</source>
+        <translation>l&apos;itinéraire n&apos;a aucune position</translation>
+    </message>
+    <message>
+        <source>properties.waypoints must list one {speed, tolerance} per position (%1 positions)</source>
+        <translation>properties.waypoints doit lister un {speed, tolerance} par position (%1 positions)</translation>
+    </message>
+    <message>
+        <source>position %1 is not [longitude, latitude]</source>
+        <translation>la position %1 n&apos;est pas [longitude, latitude]</translation>
+    </message>
+    <message>
+        <source>position %1 lies outside WGS84 (latitude %2, longitude %3)</source>
+        <translation>la position %1 est hors WGS84 (latitude %2, longitude %3)</translation>
+    </message>
+    <message>
+        <source>waypoint %1: speed must be a number of 0 or more, tolerance 0 to 100 m</source>
+        <translation>point de passage %1 : la vitesse doit être un nombre supérieur ou égal à 0, la tolérance de 0 à 100 m</translation>
+    </message>
+    <message>
+        <source>cannot be opened (%1)</source>
+        <translation>ne peut pas être ouvert (%1)</translation>
+    </message>
+    <message>
+        <source>too large for a mission file</source>
+        <translation>trop volumineux pour un fichier de mission</translation>
+    </message>
+    <message>
+        <source>the plan has no waypoints to save</source>
+        <translation>le plan n&apos;a aucun point de passage à enregistrer</translation>
+    </message>
+    <message>
+        <source>cannot be written (%1)</source>
+        <translation>ne peut pas être écrit (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::MissionImport</name>
+    <message>
+        <source>no such readable file</source>
+        <translation>aucun fichier lisible de ce nom</translation>
+    </message>
+    <message>
+        <source>not a route GDAL can read (%1)</source>
+        <translation>pas un itinéraire lisible par GDAL (%1)</translation>
+    </message>
+    <message>
+        <source>unknown format</source>
+        <translation>format inconnu</translation>
+    </message>
+    <message>
+        <source>has no route, track or points</source>
+        <translation>ne contient ni itinéraire, ni trace, ni points</translation>
+    </message>
+    <message>
+        <source>has points outside WGS84</source>
+        <translation>contient des points hors WGS84</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::MissionPanel</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <source>1 waypoint</source>
+        <translation>1 point de passage</translation>
+    </message>
+    <message>
+        <source>%1 waypoints</source>
+        <translation>%1 points de passage</translation>
+    </message>
+    <message>
+        <source>Sending missions is not available in this build: the plan can be edited, saved, opened and drawn.</source>
+        <translation>L&apos;envoi de missions n&apos;est pas disponible dans cette version : le plan peut être modifié, enregistré, ouvert et affiché.</translation>
+    </message>
+    <message>
+        <source>&amp;Edit on map</source>
+        <translation>Modifier &amp;sur la carte</translation>
+    </message>
+    <message>
+        <source>Click on the map to add waypoints, drag them, click a leg to insert one</source>
+        <translation>Cliquer sur la carte pour ajouter des points de passage, les faire glisser, cliquer sur un tronçon pour en insérer un</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Ouvrir…</translation>
+    </message>
+    <message>
+        <source>Open a mission saved as GeoJSON</source>
+        <translation>Ouvrir une mission enregistrée en GeoJSON</translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importer…</translation>
+    </message>
+    <message>
+        <source>Import a route from GPX or KML</source>
+        <translation>Importer un itinéraire GPX ou KML</translation>
+    </message>
+    <message>
+        <source>&amp;Save…</source>
+        <translation>&amp;Enregistrer…</translation>
+    </message>
+    <message>
+        <source>Save the plan as GeoJSON</source>
+        <translation>Enregistrer le plan en GeoJSON</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vider</translation>
+    </message>
+    <message>
+        <source>Remove every waypoint (undo brings them back)</source>
+        <translation>Supprimer tous les points de passage (Annuler les rétablit)</translation>
+    </message>
+    <message>
+        <source>Delete waypoint</source>
+        <translation>Supprimer le point</translation>
+    </message>
+    <message>
+        <source>Delete the selected waypoint (Delete)</source>
+        <translation>Supprimer le point de passage sélectionné (Suppr)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Undo the last edit (Ctrl+Z)</source>
+        <translation>Annuler la dernière modification (Ctrl+Z)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Rétablir</translation>
+    </message>
+    <message>
+        <source>Redo (Ctrl+Shift+Z)</source>
+        <translation>Rétablir (Ctrl+Maj+Z)</translation>
+    </message>
+    <message>
+        <source>Up&amp;load</source>
+        <translation>En&amp;voyer</translation>
+    </message>
+    <message>
+        <source>Send the plan to the vehicle; uploaded once read back equal</source>
+        <translation>Envoyer le plan au véhicule ; considéré envoyé une fois relu à l&apos;identique</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Démarrer</translation>
+    </message>
+    <message>
+        <source>Run the uploaded mission from the waypoint chosen beside</source>
+        <translation>Exécuter la mission envoyée à partir du point de passage choisi à côté</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>Pause the running mission</source>
+        <translation>Mettre en pause la mission en cours</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reprendre</translation>
+    </message>
+    <message>
+        <source>Resume the paused mission</source>
+        <translation>Reprendre la mission en pause</translation>
+    </message>
+    <message>
+        <source>A&amp;bort</source>
+        <translation>A&amp;bandonner</translation>
+    </message>
+    <message>
+        <source>Abort the mission</source>
+        <translation>Abandonner la mission</translation>
+    </message>
+    <message>
+        <source>from </source>
+        <translation>depuis </translation>
+    </message>
+    <message>
+        <source>The waypoint the mission starts from</source>
+        <translation>Le point de passage d&apos;où part la mission</translation>
+    </message>
+    <message>
+        <source>Clear plan</source>
+        <translation>Vider le plan</translation>
+    </message>
+    <message>
+        <source>Sent to the command gate: the event log shows what went on the wire, the state above what the vehicle reports</source>
+        <translation>Envoyé au contrôleur de commandes : le journal des événements montre ce qui a été émis, l&apos;état ci-dessus ce que signale le véhicule</translation>
+    </message>
+    <message>
+        <source>UGV %1</source>
+        <translation>UGV %1</translation>
+    </message>
+    <message>
+        <source>Mission of %1 (%2)</source>
+        <translation>Mission de %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Select a UGV on the map or in the fleet list to plan its mission.</source>
+        <translation>Sélectionner un UGV sur la carte ou dans la liste de la flotte pour planifier sa mission.</translation>
+    </message>
+    <message>
+        <source>%1: %2, %3</source>
+        <translation>%1 : %2, %3</translation>
+    </message>
+    <message>
+        <source>No waypoints yet: Edit on map, then click on the map to add them.</source>
+        <translation>Aucun point de passage : Modifier sur la carte, puis cliquer sur la carte pour les ajouter.</translation>
+    </message>
+    <message>
+        <source>%1, %2, ETA %3</source>
+        <translation>%1, %2, arrivée %3</translation>
+    </message>
+    <message>
+        <source>; from the vehicle %1, %2</source>
+        <translation> ; du véhicule %1, %2</translation>
+    </message>
+    <message>
+        <source>Planned: %1, not uploaded</source>
+        <translation>Planifiée : %1, non envoyée</translation>
+    </message>
+    <message>
+        <source>No mission</source>
+        <translation>Aucune mission</translation>
+    </message>
+    <message>
+        <source>Uploading %1…</source>
+        <translation>Envoi de %1…</translation>
+    </message>
+    <message>
+        <source>Uploaded and verified: %1</source>
+        <translation>Envoyée et vérifiée : %1</translation>
+    </message>
+    <message>
+        <source>Running: waypoint %1 of %2</source>
+        <translation>En cours : point %1 sur %2</translation>
+    </message>
+    <message>
+        <source>, %1 to go</source>
+        <translation>, encore %1</translation>
+    </message>
+    <message>
+        <source>, ETA %1</source>
+        <translation>, arrivée %1</translation>
+    </message>
+    <message>
+        <source>Paused at waypoint %1 of %2</source>
+        <translation>En pause au point %1 sur %2</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>En pause</translation>
+    </message>
+    <message>
+        <source>Completed: %1</source>
+        <translation>Terminée : %1</translation>
+    </message>
+    <message>
+        <source>Aborted at waypoint %1 of %2</source>
+        <translation>Abandonnée au point %1 sur %2</translation>
+    </message>
+    <message>
+        <source>Aborted</source>
+        <translation>Abandonnée</translation>
+    </message>
+    <message>
+        <source>Stopped by emergency at waypoint %1 of %2</source>
+        <translation>Arrêtée par l&apos;urgence au point %1 sur %2</translation>
+    </message>
+    <message>
+        <source>Stopped by emergency</source>
+        <translation>Arrêtée par l&apos;urgence</translation>
+    </message>
+    <message>
+        <source>; clearing the emergency does not restart it</source>
+        <translation> ; lever l&apos;urgence ne la relance pas</translation>
+    </message>
+    <message>
+        <source>Unknown, last seen at waypoint %1 of %2</source>
+        <translation>Inconnu, vue pour la dernière fois au point %1 sur %2</translation>
+    </message>
+    <message>
+        <source>Unknown: not seen running</source>
+        <translation>Inconnu : jamais vue en cours</translation>
+    </message>
+    <message>
+        <source>Rejected: %1</source>
+        <translation>Refusée : %1</translation>
+    </message>
+    <message>
+        <source>no reason given</source>
+        <translation>aucune raison donnée</translation>
+    </message>
+    <message>
+        <source> (%1)</source>
+        <translation> (%1)</translation>
+    </message>
+    <message>
+        <source>; not ours: another console holds the vehicle&apos;s list driver</source>
+        <translation> ; pas la nôtre : une autre console détient le List Driver du véhicule</translation>
+    </message>
+    <message>
+        <source>; the plan differs from the uploaded mission</source>
+        <translation> ; le plan diffère de la mission envoyée</translation>
+    </message>
+    <message>
+        <source>; driven path from the %1</source>
+        <translation> ; trajet parcouru d&apos;après : %1</translation>
+    </message>
+    <message>
+        <source>Go here sent to the command gate for %1: the event log shows what went on the wire</source>
+        <translation>Aller ici pour %1 envoyé au contrôleur de commandes : le journal des événements montre ce qui a été émis</translation>
+    </message>
+    <message>
+        <source>Open %1</source>
+        <translation>Ouvrir %1</translation>
+    </message>
+    <message>
+        <source>Opened %1: %2</source>
+        <translation>%1 ouvert : %2</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importer %1</translation>
+    </message>
+    <message>
+        <source>Imported %1: %2 with the vehicle&apos;s default speed and tolerance</source>
+        <translation>%1 importé : %2 avec la vitesse et la tolérance par défaut du véhicule</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <source>Mission (*.geojson *.json)</source>
+        <translation>Mission (*.geojson *.json)</translation>
+    </message>
+    <message>
+        <source>Save mission</source>
+        <translation>Enregistrer la mission</translation>
+    </message>
+    <message>
+        <source>Open mission</source>
+        <translation>Ouvrir une mission</translation>
+    </message>
+    <message>
+        <source>Import route</source>
+        <translation>Importer un itinéraire</translation>
+    </message>
+    <message>
+        <source>Routes (*.gpx *.kml);;All files (*)</source>
+        <translation>Itinéraires (*.gpx *.kml);;Tous les fichiers (*)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::MissionPlan</name>
+    <message>
+        <source>Add waypoint %1</source>
+        <translation>Ajouter le point %1</translation>
+    </message>
+    <message>
+        <source>Insert waypoint %1</source>
+        <translation>Insérer le point %1</translation>
+    </message>
+    <message>
+        <source>Move waypoint %1</source>
+        <translation>Déplacer le point %1</translation>
+    </message>
+    <message>
+        <source>Delete waypoint %1</source>
+        <translation>Supprimer le point %1</translation>
+    </message>
+    <message>
+        <source>Speed of waypoint %1</source>
+        <translation>Vitesse du point %1</translation>
+    </message>
+    <message>
+        <source>Tolerance of waypoint %1</source>
+        <translation>Tolérance du point %1</translation>
+    </message>
+    <message>
+        <source>Default speeds and tolerances</source>
+        <translation>Vitesses et tolérances par défaut</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::MissionPlanEditor</name>
+    <message>
+        <source>Go here (%1)</source>
+        <translation>Aller ici (%1)</translation>
+    </message>
+    <message>
+        <source>Delete waypoint %1</source>
+        <translation>Supprimer le point %1</translation>
+    </message>
+    <message>
+        <source>Insert waypoint between %1 and %2</source>
+        <translation>Insérer un point entre %1 et %2</translation>
+    </message>
+    <message>
+        <source>Add waypoint here</source>
+        <translation>Ajouter un point ici</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::MissionPlanTableModel</name>
+    <message>
+        <source>vehicle</source>
+        <translation>véhicule</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Latitude</source>
+        <translation>Latitude</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Longitude</translation>
+    </message>
+    <message>
+        <source>Speed m/s</source>
+        <translation>Vitesse m/s</translation>
+    </message>
+    <message>
+        <source>Tolerance m</source>
+        <translation>Tolérance m</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::OperatorSession</name>
+    <message>
+        <source>idle for %1 s</source>
+        <translation>inactif depuis %1 s</translation>
+    </message>
+    <message>
+        <source>no authentication</source>
+        <translation>aucune authentification</translation>
+    </message>
+    <message>
+        <source>sign-in refused: %1</source>
+        <translation>connexion refusée : %1</translation>
+    </message>
+    <message>
+        <source>switch cancelled: control kept by %1</source>
+        <translation>changement annulé : le contrôle reste à %1</translation>
+    </message>
+    <message>
+        <source>operator switched to %1</source>
+        <translation>opérateur changé pour %1</translation>
+    </message>
+    <message>
+        <source>signed in as %1 after %2</source>
+        <translation>connecté en tant que %1 après %2</translation>
+    </message>
+    <message>
+        <source>on demand</source>
+        <translation>à la demande</translation>
+    </message>
+    <message>
+        <source>console locked: %1</source>
+        <translation>console verrouillée : %1</translation>
+    </message>
+    <message>
+        <source>unlock refused: %1</source>
+        <translation>déverrouillage refusé : %1</translation>
+    </message>
+    <message>
+        <source>console unlocked</source>
+        <translation>console déverrouillée</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::OperatorUi</name>
+    <message>
+        <source>S&amp;witch operator…</source>
+        <translation>Changer d&apos;&amp;opérateur…</translation>
+    </message>
+    <message>
+        <source>&amp;Lock</source>
+        <translation>&amp;Verrouiller</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>Operator %1, role %2, at console %3 (File › Switch operator…)</source>
+        <translation>Opérateur %1, rôle %2, sur la console %3 (Fichier › Changer d&apos;opérateur…)</translation>
+    </message>
+    <message>
+        <source>Locked by %1 (%2)</source>
+        <translation>Verrouillée par %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Switch operator</source>
+        <translation>Changer d&apos;opérateur</translation>
+    </message>
+    <message>
+        <source>The next operator signs in with their own password. The machines keep running.</source>
+        <translation>L&apos;opérateur suivant se connecte avec son propre mot de passe. Les machines continuent de fonctionner.</translation>
+    </message>
+    <message>
+        <source>no operator session</source>
+        <translation>aucune session opérateur</translation>
+    </message>
+    <message>
+        <source>Release control</source>
+        <translation>Libérer le contrôle</translation>
+    </message>
+    <message>
+        <source>The new operator&apos;s role may not control machines. Release control of %1?</source>
+        <translation>Le rôle du nouvel opérateur ne permet pas de contrôler des machines. Libérer le contrôle de %1 ?</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Déverrouiller</translation>
+    </message>
+    <message>
+        <source>Enter your password to unlock the console.</source>
+        <translation>Saisissez votre mot de passe pour déverrouiller la console.</translation>
     </message>
 </context>
 <context>
@@ -1263,40 +3655,56 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
         <translation>stations reçues</translation>
     </message>
     <message>
-        <source>Message from station %1: %2</source>
-        <translation>Message de la station %1 : %2</translation>
-    </message>
-    <message>
-        <source>OSYRIS has no remote stop: STOP message sent to every machine&apos;s display</source>
-        <translation>OSYRIS n&apos;a pas d&apos;arrêt à distance : message STOP envoyé à l&apos;afficheur de chaque machine</translation>
-    </message>
-    <message>
-        <source>not an OSYRIS machine: %1</source>
-        <translation>pas une machine OSYRIS : %1</translation>
-    </message>
-    <message>
-        <source>OSYRIS has no remote stop: STOP message sent to the machine displays</source>
-        <translation>OSYRIS n&apos;a pas d&apos;arrêt à distance : message STOP envoyé aux afficheurs des machines</translation>
-    </message>
-    <message>
-        <source>%1: OSYRIS machines carry no stop state to clear</source>
-        <translation>%1 : les machines OSYRIS n&apos;ont pas d&apos;état d&apos;arrêt à lever</translation>
-    </message>
-    <message>
-        <source>send_text: &quot;text&quot; must be 1 to 80 bytes (CmMsg)</source>
-        <translation>send_text : &quot;text&quot; doit faire de 1 à 80 octets (CmMsg)</translation>
-    </message>
-    <message>
-        <source>message sent to every station</source>
-        <translation>message envoyé à toutes les stations</translation>
-    </message>
-    <message>
         <source>ping: &quot;idx&quot; must be a station index 0-253</source>
         <translation>ping : &quot;idx&quot; doit être un index de station 0-253</translation>
     </message>
     <message>
-        <source>PING sent to station %1</source>
-        <translation>PING envoyé à la station %1</translation>
+        <source>OSYRIS station stopped</source>
+        <translation>station OSYRIS arrêtée</translation>
+    </message>
+    <message>
+        <source>implausible position ignored (slot %1): %2</source>
+        <translation>position invraisemblable ignorée (slot %1) : %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 positions given up as unobtainable (slots %3); their cells are marked incomplete</source>
+        <translation>%1 : %2 positions abandonnées comme impossibles à obtenir (slots %3) ; leurs cellules sont marquées incomplètes</translation>
+    </message>
+    <message>
+        <source>station %1</source>
+        <translation>station %1</translation>
+    </message>
+    <message>
+        <source>Message from %1 (%2): %3</source>
+        <translation>Message de %1 (%2) : %3</translation>
+    </message>
+    <message>
+        <source>%1 refused: the OSYRIS station is not running; nothing sent</source>
+        <translation>%1 refusé : la station OSYRIS ne tourne pas ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>%1 refused: no OSYRIS station heard on %2:%3 yet; nothing sent</source>
+        <translation>%1 refusé : aucune station OSYRIS encore entendue sur %2:%3 ; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <source>STOP message</source>
+        <translation>message STOP</translation>
+    </message>
+    <message>
+        <source>not an OSYRIS machine</source>
+        <translation>pas une machine OSYRIS</translation>
+    </message>
+    <message>
+        <source>OSYRIS machines carry no stop state to clear</source>
+        <translation>les machines OSYRIS n&apos;ont aucun état d&apos;arrêt à lever</translation>
+    </message>
+    <message>
+        <source>send_text: &quot;%1&quot; is not an OSYRIS station</source>
+        <translation>send_text : « %1 » n&apos;est pas une station OSYRIS</translation>
+    </message>
+    <message>
+        <source>send_text: &quot;text&quot; must be 1 to 79 bytes (CmMsg)</source>
+        <translation>send_text : « text » doit faire de 1 à 79 octets (CmMsg)</translation>
     </message>
 </context>
 <context>
@@ -1316,6 +3724,33 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
     <message>
         <source>no NMEA device</source>
         <translation>aucun périphérique NMEA</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::PanTiltController</name>
+    <message>
+        <source>camera control disabled</source>
+        <translation>contrôle caméra désactivé</translation>
+    </message>
+    <message>
+        <source>hat released</source>
+        <translation>chapeau chinois relâché</translation>
+    </message>
+    <message>
+        <source>joystick unplugged</source>
+        <translation>joystick débranché</translation>
+    </message>
+    <message>
+        <source>keys released</source>
+        <translation>touches relâchées</translation>
+    </message>
+    <message>
+        <source>stick released</source>
+        <translation>manche relâché</translation>
+    </message>
+    <message>
+        <source>input released</source>
+        <translation>commande relâchée</translation>
     </message>
 </context>
 <context>
@@ -1344,12 +3779,296 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
         <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%1&apos;&gt;■&lt;/span&gt; below %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%4&apos;&gt;■&lt;/span&gt; within %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%8&apos;&gt;■&lt;/span&gt; above %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;covered area&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%1&apos;&gt;■&lt;/span&gt; sous %2&lt;/td&gt;&lt;td align=right&gt;%3 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%4&apos;&gt;■&lt;/span&gt; dans %5–%6&lt;/td&gt;&lt;td align=right&gt;%7 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;span style=&apos;color:%8&apos;&gt;■&lt;/span&gt; au-dessus de %6&lt;/td&gt;&lt;td align=right&gt;%9 %&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;surface couverte&lt;/td&gt;&lt;td align=right&gt;%10 m²&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
+    <message>
+        <source>Passes</source>
+        <translation>Passes</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Zone</translation>
+    </message>
+    <message>
+        <source>Lift</source>
+        <translation>Couche</translation>
+    </message>
+    <message>
+        <source>Filters</source>
+        <translation>Filtres</translation>
+    </message>
+    <message>
+        <source>Vibrating only</source>
+        <translation>Avec vibration uniquement</translation>
+    </message>
+    <message>
+        <source>Static only</source>
+        <translation>Statique uniquement</translation>
+    </message>
+    <message>
+        <source>Vibrating and static</source>
+        <translation>Avec vibration et statique</translation>
+    </message>
+    <message>
+        <source>Both directions</source>
+        <translation>Les deux sens</translation>
+    </message>
+    <message>
+        <source>Forward only</source>
+        <translation>Avant uniquement</translation>
+    </message>
+    <message>
+        <source>Backward only</source>
+        <translation>Arrière uniquement</translation>
+    </message>
+    <message>
+        <source> km/h</source>
+        <translation> km/h</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>toutes</translation>
+    </message>
+    <message>
+        <source>Time window</source>
+        <translation>Plage horaire</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>one lift</source>
+        <translation>une couche</translation>
+    </message>
+    <message>
+        <source>Lifts are elevation bands of this thickness in the machines&apos; heights</source>
+        <translation>Les couches sont des tranches d&apos;altitude de cette épaisseur dans les hauteurs des machines</translation>
+    </message>
+    <message>
+        <source>Vibration</source>
+        <translation>Vibration</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Sens</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Vitesse</translation>
+    </message>
+    <message>
+        <source>Lift thickness</source>
+        <translation>Épaisseur de couche</translation>
+    </message>
+    <message>
+        <source>Top-most lift</source>
+        <translation>Couche la plus haute</translation>
+    </message>
+    <message>
+        <source>Lift %1 (z %2 – %3 m)</source>
+        <translation>Couche %1 (z %2 – %3 m)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::ProductionModel</name>
+    <message>
+        <source>Shift</source>
+        <translation>Poste</translation>
+    </message>
+    <message>
+        <source>way %1</source>
+        <translation>voie %1</translation>
+    </message>
+    <message>
+        <source>unknown shovel</source>
+        <translation>pelle inconnue</translation>
+    </message>
+    <message>
+        <source>unknown dump</source>
+        <translation>déversement inconnu</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::ProductionView</name>
+    <message>
+        <source>Plan (t/shift):</source>
+        <translation>Plan (t/poste) :</translation>
+    </message>
+    <message>
+        <source>Tonnes planned for the shift (0: no plan)</source>
+        <translation>Tonnes prévues pour le poste (0 : aucun plan)</translation>
+    </message>
+    <message>
+        <source>Shift &amp;report…</source>
+        <translation>&amp;Rapport de poste…</translation>
+    </message>
+    <message>
+        <source>Write the shift report as PDF and CSV</source>
+        <translation>Écrire le rapport de poste en PDF et CSV</translation>
+    </message>
+    <message>
+        <source>New shift</source>
+        <translation>Nouveau poste</translation>
+    </message>
+    <message>
+        <source>Start counting a new shift now (the current figures are discarded)</source>
+        <translation>Commencer à compter un nouveau poste maintenant (les chiffres actuels sont abandonnés)</translation>
+    </message>
+    <message>
+        <source>Start a new shift now? The current shift&apos;s figures are discarded; write the shift report first.</source>
+        <translation>Commencer un nouveau poste maintenant ? Les chiffres du poste actuel sont abandonnés ; écrivez d&apos;abord le rapport de poste.</translation>
+    </message>
+    <message>
+        <source>Trucks</source>
+        <translation>Camions</translation>
+    </message>
+    <message>
+        <source>Shovels</source>
+        <translation>Pelles</translation>
+    </message>
+    <message>
+        <source>Dumps</source>
+        <translation>Déversements</translation>
+    </message>
+    <message>
+        <source>Truck</source>
+        <translation>Camion</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Zone</translation>
+    </message>
+    <message>
+        <source>Loads</source>
+        <translation>Chargements</translation>
+    </message>
+    <message>
+        <source>Tonnes</source>
+        <translation>Tonnes</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Cycles</translation>
+    </message>
+    <message>
+        <source>Queue</source>
+        <translation>Attente</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Mise en place</translation>
+    </message>
+    <message>
+        <source>Load</source>
+        <translation>Chargement</translation>
+    </message>
+    <message>
+        <source>Haul</source>
+        <translation>Transport</translation>
+    </message>
+    <message>
+        <source>Dump</source>
+        <translation>Déversement</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>Retour</translation>
+    </message>
+    <message>
+        <source>Cycle parts: average minutes:seconds per cycle</source>
+        <translation>Parties du cycle : minutes:secondes moyennes par cycle</translation>
+    </message>
+    <message>
+        <source>%1 % of the %2 t due by now</source>
+        <translation>%1 % des %2 t dues à ce stade</translation>
+    </message>
+    <message>
+        <source>no plan set</source>
+        <translation>aucun plan défini</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 t&lt;/b&gt; in &lt;b&gt;%2 loads&lt;/b&gt; · %3 cycles, average %4 · %5</source>
+        <translation>&lt;b&gt;%1 t&lt;/b&gt; en &lt;b&gt;%2 chargements&lt;/b&gt; · %3 cycles, moyenne %4 · %5</translation>
+    </message>
+    <message>
+        <source>Shift report</source>
+        <translation>Rapport de poste</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Written:
+%1
+%2</source>
+        <translation>Écrit :
+%1
+%2</translation>
+    </message>
+    <message>
+        <source>The shift report was not written: %1</source>
+        <translation>Le rapport de poste n&apos;a pas été écrit : %1</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::ReplayTimeline</name>
+    <message>
+        <source>Step back (Left)</source>
+        <translation>Pas en arrière (Gauche)</translation>
+    </message>
+    <message>
+        <source>Play backwards</source>
+        <translation>Lire à rebours</translation>
+    </message>
+    <message>
+        <source>Play / pause (Space)</source>
+        <translation>Lecture / pause (Espace)</translation>
+    </message>
+    <message>
+        <source>Step forward (Right)</source>
+        <translation>Pas en avant (Droite)</translation>
+    </message>
+    <message>
+        <source>Speed (+ / -)</source>
+        <translation>Vitesse (+ / -)</translation>
+    </message>
+    <message>
+        <source>HH:MM:SS or seconds</source>
+        <translation>HH:MM:SS ou secondes</translation>
+    </message>
+    <message>
+        <source>Go to an exact time: HH:MM:SS[.mmm] (UTC), seconds after the start, or ISO 8601; Enter</source>
+        <translation>Aller à une heure exacte : HH:MM:SS[.mmm] (UTC), secondes après le début ou ISO 8601 ; Entrée</translation>
+    </message>
+    <message>
+        <source>Not a time: %1</source>
+        <translation>Pas une heure : %1</translation>
+    </message>
 </context>
 <context>
     <name>ocu::SdlJoystickInput</name>
     <message>
         <source>No joystick</source>
         <translation>Aucun joystick</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::SignInDialog</name>
+    <message>
+        <source>&amp;User:</source>
+        <translation>&amp;Utilisateur :</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Mot de passe :</translation>
+    </message>
+    <message>
+        <source>&amp;Sign in</source>
+        <translation>&amp;Se connecter</translation>
+    </message>
+    <message>
+        <source>no check</source>
+        <translation>aucune vérification</translation>
     </message>
 </context>
 <context>
@@ -1480,19 +4199,56 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
         <translation>Cette version n&apos;a pas de vue 3D (configurée avec OCU_WITH_VTK=OFF).</translation>
     </message>
     <message>
-        <source>No JAUS section in the site configuration: no JAUS vehicles on this site.</source>
-        <translation>Aucune section JAUS dans la configuration du site : aucun véhicule JAUS sur ce site.</translation>
-    </message>
-</context>
-<context>
-    <name>ocu::StopAllButton</name>
-    <message>
-        <source>STOP ALL</source>
-        <translation>ARRÊT GÉNÉRAL</translation>
+        <source>console started</source>
+        <translation>console démarrée</translation>
     </message>
     <message>
-        <source>Stop every machine of every protocol (F12)</source>
-        <translation>Arrêter toutes les machines de tous les protocoles (F12)</translation>
+        <source>control-room history connected</source>
+        <translation>historique de la salle de contrôle connecté</translation>
+    </message>
+    <message>
+        <source>control-room history unavailable (kept locally, back-filled on return): %1</source>
+        <translation>historique de la salle de contrôle indisponible (conservé localement, complété au retour) : %1</translation>
+    </message>
+    <message>
+        <source>Control-room history: %1</source>
+        <translation>Historique de la salle de contrôle : %1</translation>
+    </message>
+    <message>
+        <source>Flight recorder: %1</source>
+        <translation>Enregistreur de vol : %1</translation>
+    </message>
+    <message>
+        <source>Recording this run to %1</source>
+        <translation>Cette exécution est enregistrée dans %1</translation>
+    </message>
+    <message>
+        <source>Map background not shown: %1</source>
+        <translation>Fond de carte non affiché : %1</translation>
+    </message>
+    <message>
+        <source>3D terrain not shown: %1</source>
+        <translation>Terrain 3D non affiché : %1</translation>
+    </message>
+    <message>
+        <source>STOP button ready</source>
+        <translation>Bouton STOP prêt</translation>
+    </message>
+    <message>
+        <source>STOP button not connected</source>
+        <translation>Bouton STOP non connecté</translation>
+    </message>
+    <message>
+        <source>%1: %2 triggers STOP ALL</source>
+        <translation>%1 : %2 déclenche l&apos;ARRÊT GÉNÉRAL</translation>
+    </message>
+    <message>
+        <source>No device with %1 is connected; STOP ALL stays on F12, Ctrl+Shift+Space and the toolbar</source>
+        <translation>Aucun appareil avec %1 n&apos;est connecté ; ARRÊT GÉNÉRAL reste sur F12, Ctrl+Maj+Espace et la barre d&apos;outils</translation>
+    </message>
+    <message>
+        <source>Areas and reports</source>
+        <translation>Zones et rapports</translation>
     </message>
 </context>
 <context>
@@ -1559,10 +4315,6 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
     <message>
         <source>Joystick</source>
         <translation>Joystick</translation>
-    </message>
-    <message>
-        <source>Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows.</source>
-        <translation>Clavier : maintenir Maj (homme mort) et utiliser W/A/S/D ou les flèches.</translation>
     </message>
     <message>
         <source>window lost focus</source>
@@ -1671,6 +4423,148 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
     <message>
         <source>joystick mapping</source>
         <translation>affectation du joystick</translation>
+    </message>
+    <message>
+        <source>Stick: camera</source>
+        <translation>Manche : caméra</translation>
+    </message>
+    <message>
+        <source>The on-screen stick pans and tilts the camera instead of driving</source>
+        <translation>Le manche à l&apos;écran oriente la caméra au lieu de conduire</translation>
+    </message>
+    <message>
+        <source>Keyboard: hold Shift (dead-man) and use W/A/S/D or the arrows. Camera: J/L pan, I/K tilt (or the joystick hat).</source>
+        <translation>Clavier : maintenir Maj (homme mort) et utiliser W/A/S/D ou les flèches. Caméra : J/L panoramique, I/K inclinaison (ou le chapeau chinois du joystick).</translation>
+    </message>
+    <message>
+        <source>camera changed</source>
+        <translation>caméra changée</translation>
+    </message>
+    <message>
+        <source>teleop panel closed</source>
+        <translation>panneau de téléopération fermé</translation>
+    </message>
+    <message>
+        <source>Camera pan-tilt refused: %1</source>
+        <translation>Orientation de la caméra refusée : %1</translation>
+    </message>
+    <message>
+        <source>no command gate: driving is not possible</source>
+        <translation>aucun contrôleur de commandes : conduite impossible</translation>
+    </message>
+    <message>
+        <source>teleop input</source>
+        <translation>entrée de téléopération</translation>
+    </message>
+    <message>
+        <source>Drive session NOT started: %1</source>
+        <translation>Session de conduite NON démarrée : %1</translation>
+    </message>
+    <message>
+        <source>Drive session end: zero commands NOT sent: %1</source>
+        <translation>Fin de la session de conduite : commandes nulles NON envoyées : %1</translation>
+    </message>
+    <message>
+        <source>Driving stopped: %1</source>
+        <translation>Conduite arrêtée : %1</translation>
+    </message>
+    <message>
+        <source>the link to %1 is %2</source>
+        <translation>la liaison avec %1 est %2</translation>
+    </message>
+    <message>
+        <source>%1 is in EMERGENCY</source>
+        <translation>%1 est en URGENCE</translation>
+    </message>
+    <message>
+        <source>this console no longer controls %1</source>
+        <translation>cette console ne contrôle plus %1</translation>
+    </message>
+    <message>
+        <source>driving is not allowed</source>
+        <translation>la conduite n&apos;est pas autorisée</translation>
+    </message>
+    <message>
+        <source>EMERGENCY</source>
+        <translation>URGENCE</translation>
+    </message>
+    <message>
+        <source>driving held (video)</source>
+        <translation>conduite suspendue (vidéo)</translation>
+    </message>
+    <message>
+        <source>ready to drive</source>
+        <translation>prêt à conduire</translation>
+    </message>
+    <message>
+        <source>not driving</source>
+        <translation>ne conduit pas</translation>
+    </message>
+    <message>
+        <source>video window closed or lost focus</source>
+        <translation>fenêtre vidéo fermée ou focus perdu</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::TeleopVideoPane</name>
+    <message>
+        <source>Teleoperation video</source>
+        <translation>Vidéo de téléopération</translation>
+    </message>
+    <message>
+        <source>Full screen</source>
+        <translation>Plein écran</translation>
+    </message>
+    <message>
+        <source>Resume driving</source>
+        <translation>Reprendre la conduite</translation>
+    </message>
+    <message>
+        <source>No camera on this vehicle</source>
+        <translation>Aucune caméra sur ce véhicule</translation>
+    </message>
+    <message>
+        <source>Camera shown (announced by the vehicle or configured for it)</source>
+        <translation>Caméra affichée (annoncée par le véhicule ou configurée pour lui)</translation>
+    </message>
+    <message>
+        <source>Show the video full screen (Esc returns); driving keys keep working there</source>
+        <translation>Afficher la vidéo en plein écran (Échap pour revenir) ; les touches de conduite y fonctionnent toujours</translation>
+    </message>
+    <message>
+        <source>The video watchdog stopped driving: resume once the video is back</source>
+        <translation>Le chien de garde vidéo a arrêté la conduite : reprendre une fois la vidéo revenue</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <source>camera %1</source>
+        <translation>caméra %1</translation>
+    </message>
+    <message>
+        <source> (configured)</source>
+        <translation> (configurée)</translation>
+    </message>
+    <message>
+        <source>%1 — pan-tilt: J/L/I/K, the stick&apos;s camera mode or the joystick hat</source>
+        <translation>%1 — orientation : J/L/I/K, le mode caméra du manche ou le chapeau chinois du joystick</translation>
+    </message>
+    <message>
+        <source>no camera</source>
+        <translation>aucune caméra</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::TimelineMarkerStrip</name>
+    <message>
+        <source>command: </source>
+        <translation>commande : </translation>
+    </message>
+    <message>
+        <source>alarm: </source>
+        <translation>alarme : </translation>
     </message>
 </context>
 <context>
@@ -1857,6 +4751,95 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
     </message>
 </context>
 <context>
+    <name>ocu::VideoPlayer</name>
+    <message>
+        <source>no video</source>
+        <translation>pas de vidéo</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>connexion en cours</translation>
+    </message>
+    <message>
+        <source>playing</source>
+        <translation>lecture</translation>
+    </message>
+    <message>
+        <source>video LOST</source>
+        <translation>vidéo PERDUE</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>reconnexion</translation>
+    </message>
+    <message>
+        <source>no video URL</source>
+        <translation>aucune URL vidéo</translation>
+    </message>
+    <message>
+        <source>not an RTSP URL: %1</source>
+        <translation>pas une URL RTSP : %1</translation>
+    </message>
+    <message>
+        <source>GStreamer elements missing</source>
+        <translation>éléments GStreamer manquants</translation>
+    </message>
+    <message>
+        <source>cannot link the video pipeline</source>
+        <translation>impossible de relier le pipeline vidéo</translation>
+    </message>
+    <message>
+        <source>the video pipeline did not start</source>
+        <translation>le pipeline vidéo n&apos;a pas démarré</translation>
+    </message>
+    <message>
+        <source>no video from %1</source>
+        <translation>pas de vidéo de %1</translation>
+    </message>
+    <message>
+        <source>no frame for %1 ms</source>
+        <translation>aucune image depuis %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::VideoView</name>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 i/s</translation>
+    </message>
+    <message>
+        <source>frame age %1 ms</source>
+        <translation>âge de l&apos;image %1 ms</translation>
+    </message>
+    <message>
+        <source>frame age %1 ms (since arrival)</source>
+        <translation>âge de l&apos;image %1 ms (depuis l&apos;arrivée)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::VideoWatchdog</name>
+    <message>
+        <source>video %1</source>
+        <translation>vidéo %1</translation>
+    </message>
+    <message>
+        <source>video frame %1 ms old (limit %2 ms)</source>
+        <translation>image vidéo vieille de %1 ms (limite %2 ms)</translation>
+    </message>
+    <message>
+        <source>VIDEO WATCHDOG stopped driving (%1); video is back: press Resume driving</source>
+        <translation>Le CHIEN DE GARDE VIDÉO a arrêté la conduite (%1) ; la vidéo est revenue : appuyer sur Reprendre la conduite</translation>
+    </message>
+    <message>
+        <source>VIDEO WATCHDOG stopped driving: %1</source>
+        <translation>Le CHIEN DE GARDE VIDÉO a arrêté la conduite : %1</translation>
+    </message>
+    <message>
+        <source>Driving waits for video (%1)</source>
+        <translation>La conduite attend la vidéo (%1)</translation>
+    </message>
+</context>
+<context>
     <name>ocu::VirtualStick</name>
     <message>
         <source>Drag to drive: up = forward, right = turn right. Release to stop.</source>
@@ -1868,166 +4851,64 @@ JAUS (AS5669A/AS5710A, AEP-4818 IOP), ISO 23725 et OSYRIS sur une seule console.
     </message>
 </context>
 <context>
-    <name>ocu::DisplayText</name>
+    <name>ocu::WorkspaceBar</name>
     <message>
-        <source>Info</source>
-        <translation>Info</translation>
+        <source>Workspaces</source>
+        <translation>Espaces de travail</translation>
     </message>
     <message>
-        <source>Warning</source>
-        <translation>Avertissement</translation>
+        <source>%1 workspace (%2)</source>
+        <translation>Espace de travail %1 (%2)</translation>
     </message>
     <message>
-        <source>Alarm</source>
-        <translation>Alarme</translation>
+        <source>Dispatch</source>
+        <translation>Répartition</translation>
     </message>
     <message>
-        <source>Critical</source>
-        <translation>Critique</translation>
+        <source>Compaction</source>
+        <translation>Compactage</translation>
     </message>
     <message>
-        <source>link loss</source>
-        <translation>perte de liaison</translation>
+        <source>UGV</source>
+        <translation>UGV</translation>
     </message>
     <message>
-        <source>timeout</source>
-        <translation>délai dépassé</translation>
+        <source>Monitor</source>
+        <translation>Surveiller</translation>
     </message>
     <message>
-        <source>health fault</source>
-        <translation>défaut de santé</translation>
+        <source>All</source>
+        <translation>Tout</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::recording::Recorder</name>
+    <message>
+        <source>the recorder is already running</source>
+        <translation>l&apos;enregistreur tourne déjà</translation>
     </message>
     <message>
-        <source>diagnostic</source>
-        <translation>diagnostic</translation>
+        <source>%1 exists already; a recording is never overwritten</source>
+        <translation>%1 existe déjà ; un enregistrement n&apos;est jamais écrasé</translation>
+    </message>
+    <message numerus="yes">
+        <source>Flight recorder behind: %n record(s) dropped (%1 in all)</source>
+        <translation>
+            <numerusform>Enregistreur de vol en retard : %n enregistrement abandonné (%1 au total)</numerusform>
+            <numerusform>Enregistreur de vol en retard : %n enregistrements abandonnés (%1 au total)</numerusform>
+        </translation>
     </message>
     <message>
-        <source>discrepancy</source>
-        <translation>écart</translation>
+        <source>cannot create %1: %2</source>
+        <translation>impossible de créer %1 : %2</translation>
     </message>
     <message>
-        <source>control lost</source>
-        <translation>contrôle perdu</translation>
+        <source>out of memory</source>
+        <translation>mémoire insuffisante</translation>
     </message>
     <message>
-        <source>text message</source>
-        <translation>message texte</translation>
-    </message>
-    <message>
-        <source>operator action</source>
-        <translation>action opérateur</translation>
-    </message>
-    <message>
-        <source>info</source>
-        <translation>info</translation>
-    </message>
-    <message>
-        <source>low</source>
-        <translation>basse</translation>
-    </message>
-    <message>
-        <source>medium</source>
-        <translation>moyenne</translation>
-    </message>
-    <message>
-        <source>high</source>
-        <translation>haute</translation>
-    </message>
-    <message>
-        <source>urgent</source>
-        <translation>urgente</translation>
-    </message>
-    <message>
-        <source>auto</source>
-        <translation>auto</translation>
-    </message>
-    <message>
-        <source>up</source>
-        <translation>active</translation>
-    </message>
-    <message>
-        <source>degraded</source>
-        <translation>dégradée</translation>
-    </message>
-    <message>
-        <source>down</source>
-        <translation>coupée</translation>
-    </message>
-    <message>
-        <source>unknown</source>
-        <translation>inconnu</translation>
-    </message>
-    <message>
-        <source>running</source>
-        <translation>en marche</translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation>arrêté</translation>
-    </message>
-    <message>
-        <source>ok</source>
-        <translation>ok</translation>
-    </message>
-    <message>
-        <source>warning</source>
-        <translation>avertissement</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>défaut</translation>
-    </message>
-    <message>
-        <source>manual</source>
-        <translation>manuel</translation>
-    </message>
-    <message>
-        <source>autonomous</source>
-        <translation>autonome</translation>
-    </message>
-    <message>
-        <source>remote</source>
-        <translation>télécommandé</translation>
-    </message>
-    <message>
-        <source>idle</source>
-        <translation>au repos</translation>
-    </message>
-    <message>
-        <source>transition</source>
-        <translation>transition</translation>
-    </message>
-    <message>
-        <source>shutdown</source>
-        <translation>éteint</translation>
-    </message>
-    <message>
-        <source>monitoring</source>
-        <translation>surveillance</translation>
-    </message>
-    <message>
-        <source>this console</source>
-        <translation>cette console</translation>
-    </message>
-    <message>
-        <source>another console</source>
-        <translation>autre console</translation>
-    </message>
-    <message>
-        <source>denied</source>
-        <translation>refusé</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>aucun</translation>
-    </message>
-    <message>
-        <source>fault or stopped</source>
-        <translation>défaut ou arrêté</translation>
-    </message>
-    <message>
-        <source>stale</source>
-        <translation>périmé</translation>
+        <source>cannot create the recording schema in %1: %2</source>
+        <translation>impossible de créer le schéma d&apos;enregistrement dans %1 : %2</translation>
     </message>
 </context>
 </TS>
