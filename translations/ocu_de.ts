@@ -3487,11 +3487,11 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
     </message>
     <message>
         <source>Latitude</source>
-        <translation>Breitengrad</translation>
+        <translation>Breite</translation>
     </message>
     <message>
         <source>Longitude</source>
-        <translation>Längengrad</translation>
+        <translation>Länge</translation>
     </message>
     <message>
         <source>Speed m/s</source>
