@@ -49,10 +49,10 @@ struct JausConfig {
 
     TransportSettings transport;
 
-    double driveRateHz = 20;         // drive stream while a session is open
-    double heartbeatRateHz = 1;      // requested ReportHeartbeatPulse event rate (≥ 1 Hz, AEP-4818 §4.8)
-    double poseRateHz = 10;          // requested pose / velocity-state event rate
-    double statusPollHz = 1;         // QueryStatus / QueryControl polling
+    double driveRateHz = 20;    // drive stream while a session is open
+    double heartbeatRateHz = 1; // requested ReportHeartbeatPulse event rate (≥ 1 Hz, AEP-4818 §4.8)
+    double poseRateHz = 10;     // requested pose / velocity-state event rate
+    double statusPollHz = 1;    // QueryStatus / QueryControl polling (a mission's active element: ≥ 1 Hz)
     double discoveryIntervalS = 30;  // re-check of every platform manager (AEP-4818 §6.2.2.2.2.1)
     double linkLostS = 5;            // link down after this long without any message
     double accessTimeoutS = 5;       // assumed access-control timeout until QueryTimeout answers

@@ -52,6 +52,8 @@ JausDemo::JausDemo(JausDemoOptions options) : m_opt(std::move(options)) {
             }
             c.cameras = {front, rear};
         }
+        if (m_opt.adjustUgv)
+            m_opt.adjustUgv(c);
         auto u = std::make_unique<SimulatedUgv>(c);
         u->start();
         m_ugvs.push_back(std::move(u));

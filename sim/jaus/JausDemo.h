@@ -1,6 +1,7 @@
 #pragma once
 // Starts N simulated UGVs on loopback (free ports, one multicast group) and points a JausConfig at them:
 // the built-in simulated site and ocu-sim use it.
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct JausDemoOptions {
     // video start no GStreamer); the simulated site turns it on.
     bool video = false;
     int videoWidth = 640, videoHeight = 360, videoFps = 15;
+    // Adjusts every UGV's configuration before it starts (tests: a faster vehicle, so that missions end
+    // sooner with the same route logic); empty = the defaults above.
+    std::function<void(SimulatedUgvConfig&)> adjustUgv;
 };
 
 class JausDemo {

@@ -59,6 +59,7 @@ struct SimulatedUgvConfig {
     double trackWidth = 0.6, wheelRadius = 0.15, minTurnRadius = 2.0, wheelBase = 1.2;
     double length = 1.2, width = 0.8, height = 0.9;
     double physicsRateHz = 50;
+    double headingGain = 2; // waypoint following: yaw rate (rad/s) per radian of heading error
     UgvFaults faults;
     // Cameras served over RTSP by SimulatedUgv and announced through Digital Resource Discovery
     // (UgvVideo); empty = no video services.

@@ -24,7 +24,6 @@ namespace {
 constexpr double kDefaultToleranceM = 1.0; // capture radius when the waypoint gives none
 constexpr double kPathStepM = 0.25;        // one historical path point per 0.25 m (FKIE's server)
 constexpr std::size_t kPathPoints = 1000;
-constexpr double kHeadingGain = 2.0; // yaw rate per radian of heading error
 
 bool supportedElement(const ListElement& e) {
     const std::uint16_t id = peekMessageId(e.data);
@@ -347,7 +346,7 @@ void UgvCore::followRoute(TimePoint now) {
     }
     // Turn towards the target (x north, y east, yaw clockwise from north), slow while pointing away.
     const double err = ugv::wrapAngle(std::atan2(dy, dx) - m_s.yaw);
-    m_cmdW = std::clamp(kHeadingGain * err, -m_cfg.maxYawRate, m_cfg.maxYawRate);
+    m_cmdW = std::clamp(m_cfg.headingGain * err, -m_cfg.maxYawRate, m_cfg.maxYawRate);
     m_cmdV = std::min(m_route.speed, m_cfg.maxForwardSpeed) * std::max(0.0, std::cos(err));
     m_brake = 0;
     m_velocityMode = true;

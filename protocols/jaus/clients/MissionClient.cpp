@@ -153,6 +153,10 @@ void MissionClient::fail(RemoteSubsystem& r, State& s, std::string reason) {
     setPhase(r, s, MissionPhase::Rejected, std::move(reason));
 }
 
+double MissionClient::activePollHz() const {
+    return std::max(1.0, m_ctx.config().statusPollHz);
+}
+
 double MissionClient::speedFor(const RemoteSubsystem& r, const State& s, int index) const {
     double v = kDefaultSpeed;
     if (index >= 0 && std::size_t(index) < s.status.waypoints.size() && s.status.waypoints[index].speed > 0)
@@ -225,7 +229,8 @@ bool MissionClient::upload(std::uint16_t ss, const std::vector<MissionPoint>& po
     s.startAfterUpload = false;
     s.goal = Goal::Upload;
     // Progress on an on-change event where the driver offers it, else polled (EventsClient falls back).
-    m_events.subscribe(r, driver, encodeEmpty(msg::QueryActiveElement), 1.0, EventType::EveryChange);
+    m_events.subscribe(r, driver, encodeEmpty(msg::QueryActiveElement), activePollHz(),
+                       EventType::EveryChange);
     setPhase(r, s, MissionPhase::Uploading);
     if (haveControl(r, s)) {
         afterControl(r, s);
@@ -600,7 +605,7 @@ void MissionClient::tickSteps(RemoteSubsystem& r, State& s, TimePoint now) {
         return;
     case Step::Running:
         // The active element at 1 Hz at least, whether or not the event arrives.
-        if (!s.status.single && now - s.lastActiveQuery >= kRetry) {
+        if (!s.status.single && now - s.lastActiveQuery >= periodOf(activePollHz())) {
             s.lastActiveQuery = now;
             if (m_events.state(r.id(), msg::QueryActiveElement) != EventsClient::SubscriptionState::Active)
                 sendToDriver(s, encodeEmpty(msg::QueryActiveElement));

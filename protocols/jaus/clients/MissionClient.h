@@ -146,6 +146,8 @@ private:
     void tickSteps(RemoteSubsystem& remote, State& state, TimePoint now);
     void watchSafety(RemoteSubsystem& remote, State& state);
     double speedFor(const RemoteSubsystem& remote, const State& state, int index) const;
+    // Polls of the active element (no event from the driver): at the status poll rate, 1 Hz at least.
+    double activePollHz() const;
     bool goToSingle(RemoteSubsystem& remote, State& state, const MissionPoint& point);
 
     // Reports (MissionClientReports.cpp)
