@@ -2927,7 +2927,7 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
     </message>
     <message>
         <source>Dispatch: F6 next truck needing work, Alt+T task, Alt+D destination, Alt+M pick on map, Ctrl+Enter assign, Alt+R reset</source>
-        <translation>Disposition: F6 nächster Lkw ohne Auftrag, Alt+T Aufgabe, Alt+D Ziel, Alt+M auf der Karte wählen, Strg+Eingabe zuweisen, Alt+R zurücksetzen</translation>
+        <translation>Disposition: F6 nächster Lkw ohne Auftrag, Alt+G Aufgabe, Alt+Z Ziel, Alt+K auf der Karte wählen, Strg+Eingabe zuweisen, Alt+R zurücksetzen</translation>
     </message>
     <message>
         <source>Site map: arrows pan, +/- or wheel zoom (about the cursor), F follow the selected machine, Home whole site, Shift+Home the fleet, S the selection, A the area under the cursor, C centre; double-click selects; click an edge arrow to go to machines outside the view</source>
