@@ -17,7 +17,6 @@ namespace foreign {
 
 namespace asio = boost::asio;
 using asio::ip::udp;
-using Buf = std::vector<std::uint8_t>;
 using Clock = std::chrono::steady_clock;
 
 namespace {
@@ -54,29 +53,6 @@ enum : std::uint16_t {
     QueryDigitalResourceEndpoint = 0xE702,
     ReportDigitalResourceEndpoint = 0xF702,
 };
-
-void put8(Buf& b, std::uint8_t v) {
-    b.push_back(v);
-}
-void put16(Buf& b, std::uint16_t v) {
-    b.push_back(std::uint8_t(v));
-    b.push_back(std::uint8_t(v >> 8));
-}
-void put32(Buf& b, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i)
-        b.push_back(std::uint8_t(v >> (8 * i)));
-}
-void putStr8(Buf& b, const std::string& s) {
-    put8(b, std::uint8_t(s.size()));
-    b.insert(b.end(), s.begin(), s.end());
-}
-std::uint16_t get16(const std::uint8_t* p) {
-    return std::uint16_t(p[0] | p[1] << 8);
-}
-std::uint32_t get32(const std::uint8_t* p) {
-    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
-           std::uint32_t(p[3]) << 24;
-}
 
 // AS6009 scaled integers: value in [lo, hi] over the whole unsigned range (jaus-wire.md §3.4).
 std::uint32_t scaled32(double v, double lo, double hi) {

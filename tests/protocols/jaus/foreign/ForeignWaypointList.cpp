@@ -26,20 +26,6 @@ enum : std::uint16_t {
     SetLocalWaypoint = 0x040D,
 };
 
-void put8(Buf& b, std::uint8_t v) {
-    b.push_back(v);
-}
-void put16(Buf& b, std::uint16_t v) {
-    b.push_back(std::uint8_t(v));
-    b.push_back(std::uint8_t(v >> 8));
-}
-std::uint16_t get16(const std::uint8_t* p) {
-    return std::uint16_t(p[0] | p[1] << 8);
-}
-std::uint32_t get32(const std::uint8_t* p) {
-    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
-           std::uint32_t(p[3]) << 24;
-}
 double unscale(std::uint32_t v, double lo, double hi, double maxRaw) {
     return lo + double(v) * (hi - lo) / maxRaw;
 }

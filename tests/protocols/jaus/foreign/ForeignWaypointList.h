@@ -7,13 +7,13 @@
 // 1 m/s. Written from the research note with its own decoding (nothing from protocols/ or sim/).
 // On a component of its own it keeps its own control and management state and, while it executes, takes
 // control of the vehicle's drive component itself (refusing to start while a console holds it).
+#include "tests/protocols/jaus/foreign/ForeignBytes.h"
+
 #include <cstdint>
 #include <map>
 #include <vector>
 
 namespace foreign {
-
-using Buf = std::vector<std::uint8_t>;
 
 class WaypointListDriver {
 public:
