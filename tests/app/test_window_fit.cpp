@@ -277,7 +277,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(siteUp(window), 20000);
 
         // The built-in site runs every protocol of the build: every workspace of it is offered.
-        QList<Workspace> expected{Workspace::Compaction, Workspace::Monitor, Workspace::All};
+        QList<Workspace> expected{Workspace::Monitor, Workspace::All};
+        if (ocutest::kWithOsyris)
+            expected.prepend(Workspace::Compaction);
         if (ocutest::kWithIso23725)
             expected.prepend(Workspace::Dispatch);
         if (ocutest::kWithJaus)
