@@ -3,6 +3,8 @@
 #include "models/jaus/JausVehicleBridge.h"
 #include "models/jaus/MissionJson.h"
 
+#include <algorithm>
+
 namespace ocu {
 
 namespace {

@@ -9,6 +9,8 @@
 #include <QPointer>
 #include <QVector>
 
+#include <limits>
+
 namespace ocu {
 
 class FleetModel;

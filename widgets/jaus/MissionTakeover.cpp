@@ -61,7 +61,9 @@ void MissionTakeover::pauseThen(quint16 subsystem, std::function<void()> proceed
     m_question->setAttribute(Qt::WA_DeleteOnClose);
     connect(m_question, &QMessageBox::finished, this,
             [this, yes, box = m_question.data()] { answered(box->clickedButton() == yes); });
-    m_question->open();
+    // Not modal: STOP ALL and the panel's E-STOP stay at hand while the operator decides.
+    m_question->setWindowModality(Qt::NonModal);
+    m_question->show();
 }
 
 void MissionTakeover::answered(bool yes) {

@@ -21,7 +21,7 @@ class JausVehicleBridge;
 class MissionTakeover : public QObject {
     Q_OBJECT
 public:
-    // `dialogParent` shows the question (window-modal, not blocking the event loop).
+    // `dialogParent` shows the question (not modal: STOP ALL stays at hand).
     MissionTakeover(JausVehicleBridge* bridge, CommandGate* gate, QWidget* dialogParent);
 
     // Whether `subsystem` runs a mission as the vehicle reports it (a drive session must then wait).
