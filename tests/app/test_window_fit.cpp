@@ -95,7 +95,9 @@ struct Console {
         SiteConfig cfg = std::move(site.value());
         cfg.record.dir = recordings.path().toStdString();
         if (withoutOsyris) {
-            cfg.osyris.reset();
+#ifdef OCU_TEST_WITH_OSYRIS
+            cfg.osyris.reset(); // a build without OSYRIS has no such section
+#endif
             cfg.simulation.osyrisRollers = 0;
         }
         runtime = std::make_unique<SiteRuntime>(cfg);
