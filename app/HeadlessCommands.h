@@ -63,6 +63,15 @@ public:
     void addLocal(const QString& name, Answer answer, Acts acts = {});
     void addGateCommand(const QString& name, Prepare prepare = {});
     void remove(const QString& name);
+
+    // What a module adds to a machine's line ("machine" lines and the "list" answer), e.g. a vehicle's
+    // mission under "mission"; called for every machine, it adds nothing to the machines it does not know.
+    using MachineFields = std::function<void(const QString& machineId, QJsonObject& line)>;
+    void addMachineFields(MachineFields fields) { m_machineFields.push_back(std::move(fields)); }
+    void machineFields(const QString& machineId, QJsonObject& line) const {
+        for (const MachineFields& f : m_machineFields)
+            f(machineId, line);
+    }
     bool contains(const QString& name) const;
 
     // Executes one command (a parsed line). The result line is written when final; it is also returned when
@@ -102,6 +111,7 @@ private:
     QHash<QString, Entry> m_entries;
     int m_pendingResults = 0;
     std::function<void()> m_settled;
+    QList<MachineFields> m_machineFields;
 };
 
 // The "counters" answer: every bridge's stack counters per link, its rejects per reason.

@@ -154,6 +154,7 @@ QJsonObject HeadlessMonitor::machineJson(const MachineState& m, bool stale, qint
     o[QStringLiteral("stale")] = stale;
     o[QStringLiteral("status")] = toText(statusOf(m, stale));
     o[QStringLiteral("age_ms")] = double(ageMs);
+    m_commands.machineFields(m.id, o); // the modules' own (a vehicle's mission)
     return o;
 }
 

@@ -26,6 +26,11 @@ class HeadlessCommands;
 class PassCountPanel;
 class ProductionModel;
 class MessageTap;
+class FleetSelection;
+class SiteMapView;
+namespace recording {
+class ReplayController;
+}
 class FleetContext;
 class OwnPosition;
 class ProductionModel;
@@ -49,6 +54,17 @@ struct ModulePanels {
     FleetContext* fleet;
     const SiteConfig& config;
     PassCountPanel* passCounts; // the pass-count panel (its data: the first bridge's pass-count layer)
+};
+
+// What a module needs to fill its panels in a replay (`ocu --replay`): the recording through its controller
+// (the replayed fleet, the time), the window's map and the fleet selection. Every panel already says that
+// commands are disabled; a module may put a view of the recording in its place.
+struct ModuleReplay {
+    MainWindow& window;
+    recording::ReplayController* controller;
+    FleetSelection* selection;
+    SiteMapView* map; // nullptr when there is none
+    const GeoFrame& frame;
 };
 
 class ProtocolModule {
@@ -80,6 +96,9 @@ public:
     // workspaces it appears in (app/WorkspaceLayout.h).
     virtual QList<PanelSpec> panels() const { return {}; }
     virtual void populate(const ModulePanels& ui) { (void)ui; }
+    // In a replay: the views of this protocol's own records (none by default: the panels say that commands
+    // are disabled).
+    virtual void populateReplay(const ModuleReplay& replay) { (void)replay; }
     // What STOP ALL does on this protocol, for its tooltip ("JAUS emergency stop to every ...").
     virtual QString stopAllReach() const { return {}; }
     // The protocol for Help › About, with its standards.

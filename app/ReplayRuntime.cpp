@@ -205,6 +205,7 @@ void addLinkIndicators(MainWindow& window, ReplayController* c) {
 
 struct ReplayViews {
     SiteMapView* map = nullptr;
+    FleetSelection* selection = nullptr;
 #ifdef OCU_HAVE_OCU_VIEW3D
     Site3DFeed* feed = nullptr;
 #endif
@@ -258,9 +259,9 @@ ReplayViews addViews(MainWindow& window, ReplayController* c) {
                      &MainWindow::setUnacknowledgedAlarms);
     window.setUnacknowledgedAlarms(c->alarms()->unacknowledgedCount());
 #ifdef OCU_HAVE_OCU_VIEW3D
-    return {map, feed};
+    return {map, selection, feed};
 #else
-    return {map};
+    return {map, selection};
 #endif
 }
 
@@ -315,7 +316,8 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     const QString off =
         QCoreApplication::translate("Replay", "Replay: commands are disabled. This panel acts on "
                                               "live machines only.");
-    for (const auto& m : makeProtocolModules()) {
+    const auto modules = makeProtocolModules();
+    for (const auto& m : modules) {
         window.addPanels(m->panels());
         for (const PanelSpec& p : m->panels())
             window.setPanelWidget(p.key, replayNotice(off));
@@ -323,7 +325,14 @@ void populateReplayWindow(MainWindow& window, ReplayController* c) {
     addReplayBanner(window, c->recording());
     addTimeline(window, c);
     addLinkIndicators(window, c);
-    addPassCounts(window, c, addViews(window, c));
+    const ReplayViews views = addViews(window, c);
+    addPassCounts(window, c, views);
+    // The modules' views of their own records (a vehicle's mission), on the same map and selection.
+    const GeoFrame frame(GeoPoint{c->recording()->meta(QStringLiteral("origin_lat")).toDouble(),
+                                  c->recording()->meta(QStringLiteral("origin_lon")).toDouble(),
+                                  c->recording()->meta(QStringLiteral("origin_alt")).toDouble()});
+    for (const auto& m : modules)
+        m->populateReplay({window, c, views.selection, views.map, frame});
 }
 
 static int runExports(const Recording& rec, const CommandLineOptions& o) {

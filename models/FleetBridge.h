@@ -113,6 +113,11 @@ public:
     void publishRemoval(const QString& id);
     void publishLink(const LinkStatus& status);
     void publishEvent(const FleetEvent& event);
+    // GUI thread: a record of the protocol's own for the flight recorder, beside the machine states (a UGV's
+    // mission): `kind` names it, `data` is the protocol's encoding, handed back as it is in a replay.
+    void publishDetail(const QString& machineId, const QString& kind, const QByteArray& data) {
+        emit detailRecorded(machineId, kind, data);
+    }
 
     // ---- GUI thread: commands (asynchronous; `done` as described above) ----
     // STOP ALL for this protocol: JAUS SetEmergency to every discovered UGV, ISO 23725 all-stop Apply on
@@ -193,6 +198,8 @@ signals:
     // Emitted by concrete bridges (GUI thread) when their map or pass-count data change.
     void siteMapChanged();
     void passCountChanged();
+    // publishDetail(): the flight recorder keeps it.
+    void detailRecorded(const QString& machineId, const QString& kind, const QByteArray& data);
     // A stop target (as named in TargetOutcome) reports being stopped: the machine's own report (JAUS
     // emergency state, ISO 23725 MachineAllStop on). `text` says so for people ("UGV-126 reports EMERGENCY").
     void stopReported(const QString& target, const QString& text);

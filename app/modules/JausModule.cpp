@@ -4,11 +4,14 @@
 // mission_pause, mission_resume, mission_abort, goto).
 #include "app/HeadlessCommands.h"
 #include "app/ProtocolModule.h"
+#include "app/modules/JausMissionReplay.h"
 #include "app/modules/JausVideoHeadless.h"
 
 #include "models/FleetContext.h"
 #include "models/bridges/JausBridge.h"
 #include "models/jaus/MissionGeoJson.h"
+#include "models/jaus/MissionJson.h"
+#include "models/jaus/MissionRecordFeed.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/jaus/JausControlPanel.h"
 #include "widgets/jaus/MissionGateCommands.h"
@@ -75,6 +78,7 @@ public:
         m_frame = s.frame;
         m_bridge = new JausBridge(cfg, s.frame, s.owner);
         m_bridge->setMessageTap(s.tap);
+        new MissionRecordFeed(m_bridge); // the missions into the flight recorder (the bridge owns it)
         s.fleet->addBridge(m_bridge);
         return m_bridge->start();
     }
@@ -113,6 +117,7 @@ public:
                  "redo, Esc ends editing; right-click on the ground: Go here"),
              PanelKind::Missions, Qt::Key_U}};
     }
+    void populateReplay(const ModuleReplay& replay) override { populateMissionReplay(replay, kMissionPanel); }
     QString stopAllReach() const override {
         return QCoreApplication::translate("ocu::MainWindow",
                                            "JAUS emergency stop to every discovered vehicle");
@@ -163,6 +168,14 @@ public:
         table.addGateCommand(QStringLiteral("mission_upload"), readMissionUpload);
         if (m_bridge)
             (new JausVideoHeadless(m_bridge, m_bridge))->registerIn(table);
+        // Each UGV's mission in its machine line and in "list": state, waypoint k of n, distance, ETA.
+        table.addMachineFields(
+            [bridge = QPointer<JausBridge>(m_bridge)](const QString& id, QJsonObject& line) {
+                const auto sub = JausVehicleBridge::subsystemOf(id);
+                const auto v = sub && bridge ? bridge->subsystem(*sub) : std::nullopt;
+                if (v && (v->mission.state != MissionState::None || !v->mission.drivenPath.isEmpty()))
+                    line[QStringLiteral("mission")] = missionJson(v->mission);
+            });
     }
 
 private:

@@ -28,6 +28,7 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
                   const bool wasStopped = latest.emergency;
                   const bool wasOurs = latest.controlledByUs;
                   const bool wasDenied = latest.access == JausAccess::InsufficientAuthority;
+                  const bool wasRunning = latest.mission.state == MissionState::Running;
                   latest = v;
                   emit subsystemUpdated(v);
                   const QString name = v.callSign.isEmpty() ? machineId(id) : v.callSign;
@@ -48,6 +49,10 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
                   if (!v.controlledByUs && wasOurs)
                       emit commandReported(QStringLiteral("release_control"), machineId(id),
                                            tr("%1 reports control released").arg(name));
+                  if (wasRunning && v.mission.state != MissionState::Running)
+                      emit commandReported(
+                          QStringLiteral("mission_pause"), machineId(id),
+                          tr("%1 reports the mission %2").arg(name, toText(v.mission.state)));
               }
           }),
       m_poseGate(config.plausibility) {
@@ -196,7 +201,7 @@ void JausBridge::onEvent(const JausEvent& event) {
 
 bool JausBridge::confirmsCommand(const QString& action) const {
     return action == QLatin1String("clear_stop") || action == QLatin1String("request_control") ||
-           action == QLatin1String("release_control");
+           action == QLatin1String("release_control") || action == QLatin1String("mission_pause");
 }
 
 bool JausBridge::reportsConfirmed(const QString& action, const QString& target) const {
@@ -210,6 +215,8 @@ bool JausBridge::reportsConfirmed(const QString& action, const QString& target) 
         return it->controlledByUs;
     if (action == QLatin1String("release_control"))
         return !it->controlledByUs;
+    if (action == QLatin1String("mission_pause")) // the list driver no longer drives the vehicle
+        return it->mission.state != MissionState::Running;
     return false;
 }
 

@@ -11,7 +11,8 @@ namespace ocu::recording {
 // 3: the `states` and `keyframes` blobs are qCompress'ed (meta states_codec = zlib); 1 and 2 still read.
 // 4: compact record headers and Move records (fixed point) in columns, blobs compressed with zstd
 //    (states_codec, messages_codec = zstd); decoded inbound messages only with record.messages; an index on
-//    links. 1 to 3 still read.
+//    links. 1 to 3 still read. The `details` table (a protocol's own records, e.g. a UGV's mission) came
+//    later within 4: a file without it has none.
 constexpr int kSchemaVersion = 4;
 constexpr int kLegacySchemaVersion = 3; // RecorderOptions::legacySchema3
 
@@ -39,6 +40,9 @@ CREATE TABLE IF NOT EXISTS messages(id INTEGER PRIMARY KEY, t0 INTEGER NOT NULL,
                                     n INTEGER NOT NULL, data BLOB NOT NULL);
 CREATE INDEX IF NOT EXISTS messages_t1 ON messages(t1);
 CREATE TABLE IF NOT EXISTS passcounts(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, data BLOB NOT NULL);
+CREATE TABLE IF NOT EXISTS details(id INTEGER PRIMARY KEY, t INTEGER NOT NULL, machine TEXT, kind TEXT,
+                                   data BLOB);
+CREATE INDEX IF NOT EXISTS details_t ON details(t);
 )SQL";
 
 // The site map as compact JSON ({"revision":..,"features":[{"id","name","kind","task","auto","width",

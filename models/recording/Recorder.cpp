@@ -144,6 +144,15 @@ void Recorder::recordSiteMap(const SiteMapData& map) {
     push(std::move(it));
 }
 
+void Recorder::recordDetail(const QString& machineId, const QString& kind, const QByteArray& data) {
+    Item it;
+    it.kind = Item::Detail;
+    it.a = machineId;
+    it.b = kind;
+    it.blob = data;
+    push(std::move(it));
+}
+
 void Recorder::flush() {
     if (!m_running)
         return;
@@ -191,6 +200,7 @@ void Recorder::attach(FleetContext* ctx) {
         const QString protocol = toText(b->protocol());
         connect(b, &FleetBridge::linkChanged, this,
                 [this, protocol](const LinkStatus& s) { recordLink(protocol, s); });
+        connect(b, &FleetBridge::detailRecorded, this, &Recorder::recordDetail);
         for (const LinkStatus& s : b->links())
             recordLink(protocol, s);
     };

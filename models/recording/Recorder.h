@@ -106,6 +106,9 @@ public:
     void recordCommand(const QString& auditJson);
     void recordLink(const QString& protocol, const LinkStatus& status);
     void recordSiteMap(const SiteMapData& map);
+    // A protocol's own record about a machine (FleetBridge::publishDetail, e.g. a UGV's mission), kept as it
+    // is for the protocol's replay.
+    void recordDetail(const QString& machineId, const QString& kind, const QByteArray& data);
     // record.raw: one raw frame/datagram as received on `link` (ignored when raw is off).
     void recordRaw(const QString& link, const QByteArray& frame);
     // The stacks' tap: every decoded inbound message with its receive time, protocol, link,

@@ -107,6 +107,7 @@ Recorder::Writer::~Writer() {
     insChannel.reset();
     insMessages.reset();
     insPass.reset();
+    insDetail.reset();
     if (db)
         sqlite3_close(db);
 }
@@ -342,6 +343,7 @@ QString Recorder::Writer::open(const RecorderOptions& options) {
         db, "INSERT OR REPLACE INTO msg_channels(idx, protocol, link, peer, type) VALUES(?,?,?,?,?)");
     insMessages = std::make_unique<Stmt>(db, "INSERT INTO messages(t0, t1, n, data) VALUES(?,?,?,?)");
     insPass = std::make_unique<Stmt>(db, "INSERT INTO passcounts(t, data) VALUES(?,?)");
+    insDetail = std::make_unique<Stmt>(db, "INSERT INTO details(t, machine, kind, data) VALUES(?,?,?,?)");
     legacy = options.legacySchema3;
     zstdLevel = options.zstdLevel;
     if (!legacy) {
@@ -428,6 +430,15 @@ void Recorder::Writer::write(const Item& it) {
         Stmt& s = *insPass;
         s.i64(1, it.t);
         s.blob(2, qCompress(it.blob, 1));
+        s.run();
+        break;
+    }
+    case Item::Detail: {
+        Stmt& s = *insDetail;
+        s.i64(1, it.t);
+        s.text(2, it.a);
+        s.text(3, it.b);
+        s.blob(4, it.blob);
         s.run();
         break;
     }

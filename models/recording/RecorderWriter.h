@@ -25,7 +25,8 @@ struct Recorder::Item {
         SiteMap,
         Meta,
         Message,
-        PassCounts
+        PassCounts,
+        Detail
     } kind = State;
     qint64 t = 0;
     MachineState state;
@@ -87,7 +88,7 @@ struct Recorder::Writer {
     qint64 chunkT0 = 0, chunkT1 = 0;
     int chunkN = 0;
     std::unique_ptr<Stmt> insState, updState, insMachine, insKeyframe, insEvent, insAck, insCommand, insLink,
-        insMap, insChannel, insMessages, insPass;
+        insMap, insChannel, insMessages, insPass, insDetail;
     // Inbound messages: channel (protocol, link, peer, type) -> index, and the chunk being filled.
     QHash<QByteArray, std::uint32_t> channelOf;
     std::uint32_t nextChannel = 1;

@@ -403,6 +403,18 @@ SiteMapData Recording::siteMapAt(qint64 t) const {
     return first.next() ? siteMapFromJson(first.blob(0)) : SiteMapData{};
 }
 
+QVector<RecordedDetail> Recording::details(const QString& kind, qint64 fromExclusive,
+                                           qint64 toInclusive) const {
+    QVector<RecordedDetail> out;
+    Query q(m_db,
+            "SELECT t, machine, kind, data FROM details WHERE (?1 = '' OR kind = ?1) AND t > ?2 AND t <= ?3 "
+            "ORDER BY id");
+    q.bind(1, kind).bind(2, fromExclusive).bind(3, toInclusive);
+    while (q.next())
+        out.push_back({q.i64(0), q.text(1), q.text(2), q.blob(3)});
+    return out;
+}
+
 QVector<Marker> Recording::markers() const {
     QVector<Marker> out;
     {

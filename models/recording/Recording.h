@@ -46,6 +46,12 @@ struct RecordedLink {
     LinkState state = LinkState::Unknown;
     qint64 dataAgeMs = -1;
 };
+// A protocol's own record about a machine (FleetBridge::publishDetail: a UGV's mission), as it was given.
+struct RecordedDetail {
+    qint64 t = 0;
+    QString machine, kind;
+    QByteArray data;
+};
 struct Marker {
     enum class Kind { Alarm, Command };
     Kind kind = Kind::Alarm;
@@ -98,6 +104,9 @@ public:
     QVector<RecordedLink> linksAt(qint64 t) const;
     // The newest site map recorded at or before t (or the first one when none is yet).
     SiteMapData siteMapAt(qint64 t) const;
+    // The protocols' own records of `kind` (empty: of every kind) in (from, to], in order (none in a file
+    // from before the details table).
+    QVector<RecordedDetail> details(const QString& kind, qint64 fromExclusive, qint64 toInclusive) const;
     // Alarms (events that required acknowledgement) and commands, for the timeline.
     QVector<Marker> markers() const;
     // Inbound protocol messages (and record.raw frames) received in [from, to], in time order; `fn` returning
@@ -115,7 +124,7 @@ public:
     // ---- export ----
     // JSON lines in time order: {"type":"machine",...} per state change (the headless monitor's fields plus
     // "t"), {"type":"machine_removed"}, {"type":"event"}, {"type":"ack"}, {"type":"command"},
-    // {"type":"link"}.
+    // {"type":"link"}, {"type":"detail"} (a protocol's own record: machine, kind, data).
     bool exportJsonLines(QIODevice* out, qint64 from, qint64 to, QString* error = nullptr) const;
     // CSV per machine state change: time (ISO 8601 UTC), t_ms, id, name, protocol, e, n, u, lat, lon,
     // heading, speed (m/s), mode, stop, health, link.

@@ -50,6 +50,16 @@ bool Recording::exportJsonLines(QIODevice* out, qint64 from, qint64 to, QString*
                                           {QStringLiteral("state"), toText(l.state)},
                                           {QStringLiteral("age_ms"), double(l.dataAgeMs)},
                                           {QStringLiteral("detail"), l.detail}}});
+    for (const RecordedDetail& d : details(QString(), from - 1, to)) {
+        const QJsonDocument doc = QJsonDocument::fromJson(d.data);
+        other.push_back(
+            {d.t, QJsonObject{{QStringLiteral("type"), QStringLiteral("detail")},
+                              {QStringLiteral("machine"), d.machine},
+                              {QStringLiteral("kind"), d.kind},
+                              {QStringLiteral("data"),
+                               doc.isObject() ? QJsonValue(doc.object())
+                                              : QJsonValue(QString::fromLatin1(d.data.toBase64()))}}});
+    }
     {
         const QHash<std::uint32_t, MessageChannel> channels = messageChannels();
         messages(from, to, [&](const RecordedMessage& m) {

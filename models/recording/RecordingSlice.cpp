@@ -48,8 +48,8 @@ bool beginSlice(sqlite3* dst, const QString& srcPath, qint64 from, qint64 to) {
     return ok;
 }
 
-// Everything else of the window; the site map and the links as they were at its start, the pass counts up to
-// its end, the inbound messages overlapping it.
+// Everything else of the window; the site map and the links as they were at its start, the pass counts and
+// the protocols' own records up to its end, the inbound messages overlapping it.
 void copyWindowRows(sqlite3* dst, sqlite3* src, qint64 from, qint64 to, bool& ok) {
     for (const char* sql :
          {"INSERT INTO events(t, time_ms, severity, kind, machine, source, text, requires_ack, key) SELECT "
@@ -75,6 +75,14 @@ void copyWindowRows(sqlite3* dst, sqlite3* src, qint64 from, qint64 to, bool& ok
         Query q(
             dst,
             "INSERT INTO passcounts(t, data) SELECT t, data FROM src.passcounts WHERE t <= ?2 ORDER BY id");
+        q.bind(2, to);
+        ok = ok && q.run();
+    }
+    // The protocols' own records up to the end: like the links, the picture at `from` is built from those
+    // before it (a mission's driven path grows record by record).
+    if (Query has(src, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'details'"); has.next()) {
+        Query q(dst, "INSERT INTO details(t, machine, kind, data) SELECT t, machine, kind, data FROM "
+                     "src.details WHERE t <= ?2 ORDER BY id");
         q.bind(2, to);
         ok = ok && q.run();
     }

@@ -121,6 +121,55 @@ private slots:
         QVERIFY(waitFor([&] { return !result(10).isEmpty(); }, 20000));
         QCOMPARE(result(10).value("ok").toBool(), false);
     }
+    // "list" gives each UGV's mission beside its machine fields: state, active waypoint k of n, distance.
+    void listShowsTheMissionOfEachUgv() {
+        const QJsonObject ugv = machines().value("jaus:126");
+        QVERIFY(!ugv.isEmpty());
+        QJsonArray points;
+        for (int i = 1; i <= 5; ++i)
+            points << QJsonArray{ugv.value("lat").toDouble() + 0.00003 * i, ugv.value("lon").toDouble()};
+        send(QJsonDocument(
+                 QJsonObject{
+                     {"cmd", "mission_upload"}, {"id", "jaus:126"}, {"req", 20}, {"waypoints", points}})
+                 .toJson(QJsonDocument::Compact));
+        QVERIFY(waitFor([&] { return !result(20).isEmpty(); }, 20000));
+        QVERIFY2(result(20).value("ok").toBool(), QJsonDocument(result(20)).toJson().constData());
+        auto listed = [&](int req) {
+            m_lines.clear();
+            send(QStringLiteral(R"({"cmd":"list","req":%1})").arg(req).toUtf8());
+            waitFor([&] { return !result(req).isEmpty(); }, 10000);
+            return machines();
+        };
+        auto missionOf = [&](const QHash<QString, QJsonObject>& m, const QString& id) {
+            return m.value(id).value("mission").toObject();
+        };
+        QJsonObject mission;
+        QVERIFY(waitFor(
+            [&] {
+                mission = missionOf(listed(21), "jaus:126");
+                return mission.value("state") == "uploaded";
+            },
+            20000));
+        QCOMPARE(mission.value("waypoints").toInt(), 5);
+        send(R"({"cmd":"mission_start","id":"jaus:126","from_index":0,"req":22})");
+        int req = 23;
+        QVERIFY2(waitFor(
+                     [&] {
+                         mission = missionOf(listed(req++), "jaus:126");
+                         return mission.value("state") == "running" && mission.contains("active_waypoint");
+                     },
+                     20000),
+                 QJsonDocument(mission).toJson().constData());
+        QCOMPARE(mission.value("waypoints").toInt(), 5);
+        QVERIFY(mission.value("active_waypoint").toInt() >= 1 &&
+                mission.value("active_waypoint").toInt() <= 5);
+        QVERIFY(mission.contains("distance_to_go_m"));
+        QVERIFY(mission.value("ours").toBool());
+        // A UGV without a mission has no "mission" field.
+        QVERIFY(missionOf(listed(req++), "jaus:127").isEmpty());
+        send(R"({"cmd":"mission_abort","id":"jaus:126","req":90})");
+        QVERIFY(waitFor([&] { return !result(90).isEmpty(); }, 20000));
+    }
     void stopAllStopsEveryMachineWithinTwoSeconds() {
         // STOP ALL reaches every discovered JAUS vehicle, controlled by this console or not, so
         // no control is taken here. Both vehicles must be known first.

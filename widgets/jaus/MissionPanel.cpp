@@ -231,6 +231,10 @@ void MissionPanel::setCommands(MissionCommands* commands) {
     refreshButtons();
 }
 
+void MissionPanel::setUnavailableText(const QString& text) {
+    m_unavailable->setText(text);
+}
+
 void MissionPanel::attachMap(SiteMapView* map, const GeoFrame& frame) {
     if (!map || m_layer)
         return;

@@ -41,6 +41,8 @@ public:
 
     // Not owned (must outlive the panel or be reset); nullptr: sending is not available.
     void setCommands(MissionCommands* commands);
+    // What the panel says while it has no commands (default: this build cannot send missions).
+    void setUnavailableText(const QString& text);
     // The plan editor and the missions' drawing on this map (site frame for WGS84 <-> map metres).
     void attachMap(SiteMapView* map, const GeoFrame& frame);
     MissionPlanLayer* layer() const { return m_layer; }

@@ -7,6 +7,7 @@
 #include "models/video/VideoPlayer.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/OnScreenWatcher.h"
+#include "widgets/jaus/MissionTakeover.h"
 #include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
 #include "widgets/teleop/PanTiltController.h"
@@ -98,6 +99,7 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
             releaseAll(tr("window lost focus"));
     });
     m_stick->installEventFilter(this);
+    m_takeover = new MissionTakeover(bridge, gate, this);
     refresh();
 }
 
@@ -317,6 +319,7 @@ void TeleopPanel::setVehicle(std::uint16_t subsystem) {
     if (subsystem == m_subsystem)
         return;
     releaseAll(tr("vehicle changed"));
+    m_takeover->cancel();
     if (m_subsystem && m_session != Session::Closed)
         endSession(tr("vehicle changed"));
     m_subsystem = subsystem;
@@ -340,6 +343,10 @@ void TeleopPanel::startSession() {
         showDriveProblem(tr("no command gate: driving is not possible"));
         return;
     }
+    if (m_takeover->runsMission(m_subsystem)) {
+        takeOverMission();
+        return;
+    }
     m_session = Session::Opening;
     const quint16 sub = m_subsystem;
     QPointer<TeleopPanel> self(this);
@@ -360,6 +367,27 @@ void TeleopPanel::startSession() {
                         self->showDriveProblem({});
                         self->onCommand(self->m_controller->demand()); // the demand held meanwhile
                     });
+}
+
+void TeleopPanel::takeOverMission() {
+    const quint16 sub = m_subsystem;
+    QPointer<TeleopPanel> self(this);
+    showDriveProblem(tr("The vehicle runs a mission: confirm to pause it before driving"));
+    m_takeover->pauseThen(
+        sub,
+        [self, sub] {
+            if (!self || self->m_subsystem != sub)
+                return;
+            self->showDriveProblem(tr("Mission paused: driving by hand (Resume in the mission panel)"));
+            if (!self->m_controller->demand().isZero())
+                self->startSession(); // the stick is still held
+        },
+        [self, sub](const QString& why) {
+            if (!self || self->m_subsystem != sub)
+                return;
+            self->m_waitForRelease = true;
+            self->showDriveProblem(tr("Drive session NOT started: %1").arg(why));
+        });
 }
 
 void TeleopPanel::endSession(const QString& reason) {
@@ -407,9 +435,13 @@ void TeleopPanel::onCommand(DriveAxes axes) {
         return;
     switch (m_session) {
     case Session::Closed:
-        if (axes.isZero())
-            m_waitForRelease = false;
-        else if (!m_waitForRelease && (m_onScreen->onScreen() || m_video->fullScreenWindow()))
+        // Released means the input itself: a zero sent for a focus change (a question opening over the panel)
+        // while the joystick is still deflected is not a release.
+        if (axes.isZero()) {
+            if (m_controller->demand().isZero())
+                m_waitForRelease = false;
+        } else if (!m_waitForRelease && !m_takeover->pending() &&
+                   (m_onScreen->onScreen() || m_video->fullScreenWindow()))
             startSession(); // the demand follows once the gate says the session is open
         return;
     case Session::Opening:

@@ -34,6 +34,7 @@ class HoldToConfirmButton;
 class InputDevice;
 class PanTiltController;
 class TeleopVideoPane;
+class MissionTakeover;
 
 class TeleopPanel : public QWidget {
     Q_OBJECT
@@ -55,6 +56,8 @@ public:
     QString driveProblem() const;
     // True while a drive session is open (started through the command gate and not ended).
     bool sessionOpen() const { return m_session == Session::Open; }
+    // Taking the stick over a running mission (its question while it is open).
+    MissionTakeover* missionTakeover() const { return m_takeover; }
     // The JAUS drive command for a normalised demand, with the current mode and platform limits.
     JausDrive toDriveCommand(DriveAxes axes) const;
     bool velocityMode() const;
@@ -100,6 +103,8 @@ private:
     // Drive sessions go through the command gate: start at the first demand, end on release,
     // focus loss, joystick loss, vehicle change, a refused demand; one audit line each.
     void startSession();
+    // The vehicle runs a mission: ask, pause it through the gate, then drive (MissionTakeover).
+    void takeOverMission();
     void endSession(const QString& reason);
     void showDriveProblem(const QString& text);
     void onWatchdog();
@@ -144,6 +149,7 @@ private:
     QBoxLayout* m_stops = nullptr;
     QPointer<QWidget> m_widthSource; // whose width is available (the scroll area's viewport, or the panel)
     OnScreenWatcher* m_onScreen = nullptr; // in front of the operator (not a dock tab behind another)
+    MissionTakeover* m_takeover = nullptr;
 };
 
 } // namespace ocu

@@ -357,6 +357,44 @@ private slots:
         QCOMPARE(v.malformed(), 0);
     }
 
+    // The JTS examples' layout: one component hosts everything, the list driver beside the pose sensors and
+    // the primitive driver. The console controls that one component, runs the mission on it and keeps it
+    // (nothing to let go: the driver drives for the component's controller).
+    void foreignListDriverOnThePoseComponent() {
+        foreign::VehicleOptions o;
+        o.callSign = "JTS-126";
+        o.services = {"urn:jaus:jss:core:Discovery",
+                      "urn:jaus:jss:core:Liveness",
+                      "urn:jaus:jss:core:AccessControl",
+                      "urn:jaus:jss:core:Management",
+                      "urn:jaus:jss:mobility:PrimitiveDriver",
+                      "urn:jaus:jss:mobility:GlobalPoseSensor",
+                      "urn:jaus:jss:mobility:LocalPoseSensor",
+                      "urn:jaus:jss:mobility:ListManager",
+                      "urn:jaus:jss:mobility:LocalWaypointListDriver"};
+        o.pose = true;
+        o.listDriverComponent = o.component;
+        o.listDriver.maxSpeed = kForeignSpeed;
+        foreign::ForeignJausVehicle v(o);
+        Console c(foreignConsole(v.port()));
+        QVERIFY(c.posed(126));
+        QCOMPARE(c.stack.snapshot(126)->mobilityComponent.component, std::uint8_t(1));
+        const auto [x0, y0] = v.localPosition();
+        c.stack.missionUpload(
+            126, routeFrom(GeoFrame(GeoPoint{48.1, 11.5, 0}), x0, y0, x0, y0, 0.5, kForeignSpeed), false, {});
+        QVERIFY2(c.phase(126, MissionPhase::Uploaded), c.mission(126).reason.c_str());
+        QCOMPARE(v.controller(), (std::uint32_t(200) << 16) | (1u << 8) | 1u); // control of that component
+        runToTheEnd(
+            c, [&v] { return v.localPosition(); }, localTargets(x0, y0), 0.5);
+        QCOMPARE(v.activeElement(), std::uint16_t(0));
+        QCOMPARE(c.mission(126).pathSource, std::string("pose trail"));
+        QVERIFY(c.mission(126).drivenPath.size() > 5);
+        QCOMPARE(v.receivedBy(0x000E, 1), 0); // never let go of the one component: it is the driver's
+        QVERIFY(c.stack.snapshot(126)->controlledByUs);
+        QVERIFY(v.receivedBy(0x241E, 1) > 3); // QueryActiveElement, polled
+        QCOMPARE(v.malformed(), 0);
+    }
+
     void foreignPauseResumeAndStopAll() {
         foreign::ForeignJausVehicle v(publicListDriver());
         Console c(foreignConsole(v.port()));

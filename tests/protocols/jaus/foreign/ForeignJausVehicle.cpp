@@ -122,7 +122,7 @@ struct ForeignJausVehicle::Impl {
         socket.open(udp::v4());
         socket.bind(udp::endpoint(asio::ip::make_address_v4("127.0.0.1"), opt.port));
         self = id(opt.subsystem, opt.node, opt.component);
-        comps.push_back(Comp{opt.component, opt.services, opt.management, opt.accessControl, false});
+        comps.push_back(Comp{opt.component, opt.services, opt.management, opt.accessControl, opt.pose});
         for (const ExtraComponent& e : opt.extraComponents)
             comps.push_back(Comp{e.component, e.services, e.management, e.accessControl, e.pose});
         if (opt.listDriverComponent) {

@@ -63,6 +63,8 @@ struct VehicleOptions {
     bool management = true;
     // Whether it implements AccessControl (RequestControl ...): LocalPoseSensor derives from it.
     bool accessControl = true;
+    // Whether this component answers the pose queries too (the one-component layout of the JTS examples).
+    bool pose = false;
     bool answerQueryControl = false;
     bool answerQueryTimeout = false;
     // A pre-empting RequestControl: RejectControl(0) to the requester, then ConfirmControl(0).
@@ -85,7 +87,8 @@ struct VehicleOptions {
     bool everyComponentIdentifies = false;
     // A Local Waypoint List Driver (ForeignWaypointList.h) on this component (0 = none). On a component other
     // than the first it has its own control and Management state, and takes the drive component's control
-    // (the first component's) itself while it executes. The pose moves as it drives.
+    // (the first component's) itself while it executes; on the first it shares the vehicle's control and
+    // state (whoever controls the component runs the list). The pose moves as it drives.
     std::uint8_t listDriverComponent = 0;
     WaypointListDriver::Options listDriver;
     // The pose the pose components report (WGS84 degrees, local metres, yaw radians).

@@ -152,10 +152,13 @@ bool WaypointListDriver::handle(std::uint16_t mid, std::uint32_t src, const std:
             m_speed = speed;
         if ((body[0] & 1) && len >= 5) {
             const std::uint16_t uid = get16(body + 3);
-            // Executing means taking the drive component: not while a console holds it.
-            if (!m_list.count(uid) || (m_driveController != 0 && m_driveController != m_self))
+            // Executing means taking the drive component: not while a console holds it. A driver on the drive
+            // component itself drives for whoever controls that component.
+            if (!m_list.count(uid) ||
+                (!sharesDriveComponent() && m_driveController != 0 && m_driveController != m_self))
                 return true;
-            m_driveController = m_self;
+            if (!sharesDriveComponent())
+                m_driveController = m_self;
             m_active = uid;
         }
         return true;

@@ -32,6 +32,8 @@ public:
     // A message to the driver's component: true when it is the driver's (answers appended to `replies`).
     bool handle(std::uint16_t mid, std::uint32_t src, const std::uint8_t* body, std::size_t len,
                 std::vector<Buf>& replies);
+    // On the drive component itself: its control is the vehicle's (the one-component layout).
+    bool sharesDriveComponent() const { return &m_controller == &m_driveController; }
     // Moves (x, y) (metres, x north, y east) towards the active element; vehicleEmergency stops it.
     void step(double dt, bool vehicleEmergency, double& x, double& y);
     // The vehicle went into emergency: its own Ready is left and the speed reset at once.
