@@ -320,8 +320,10 @@ bool PlatformClient::handleControlMessage(RemoteSubsystem& r, const JausId& src,
             m_ctx.send(src, encodeEmpty(msg::ReleaseControl)); // late: no longer wanted
             return true;
         }
+        if (c->second.phase == OwnControl::Requested)
+            c->second.lastUse = m_ctx.now(); // the hold counts from the first grant, not from re-requests
         c->second.phase = OwnControl::Controlled;
-        c->second.lastConfirm = c->second.lastUse = m_ctx.now();
+        c->second.lastConfirm = m_ctx.now();
         return true;
     }
     const bool refused = id == msg::ConfirmControl;
