@@ -62,6 +62,9 @@ struct SimulatedUgvConfig {
     double physicsRateHz = 50;
     double headingGain = 2; // waypoint following: yaw rate (rad/s) per radian of heading error
     UgvFaults faults;
+    // IlluminationState at start (UgvPlatform.cpp): the running lights (b3), safety lights a UGV on a site
+    // keeps on.
+    std::uint32_t lights = 1u << 3;
     // Cameras served over RTSP by SimulatedUgv and announced through Digital Resource Discovery
     // (UgvVideo); empty = no video services.
     std::vector<SimCameraConfig> cameras;

@@ -53,6 +53,7 @@ std::uint32_t UgvCore::odometerM(std::uint8_t type) const {
 
 void UgvCore::registerPlatform() {
     const JausId mob = mobility();
+    m_platform.lights = m_cfg.lights & kLights;
     m_table.onCommand(msg::SetPlatformMode, mob, [this](const JausId&, const JausId& src, ByteSpan p) {
         auto mode = decodeU8(p, msg::SetPlatformMode);
         if (!mode)

@@ -37,6 +37,11 @@ IlluminationBar::IlluminationBar(JausVehicleBridge* bridge, CommandGate* gate,
     : QWidget(parent), m_bridge(bridge), m_gate(gate), m_vehicle(std::move(vehicle)),
       m_label(new QLabel(this)) {
     setObjectName(QStringLiteral("illumination-bar"));
+    // A light the vehicle reports on stands out (amber, like a lamp) in the day and the night palette.
+    setStyleSheet(
+        QStringLiteral("QToolButton:checked { background: #f2b01e; color: black; font-weight: bold; "
+                       "border: 1px solid #8a6200; border-radius: 3px; padding: 2px 6px; }"
+                       "QToolButton { padding: 2px 6px; }"));
     auto* h = new QHBoxLayout(this);
     h->setContentsMargins(0, 0, 0, 0);
     h->setSpacing(3);

@@ -101,8 +101,8 @@ private slots:
         QCOMPARE(*p.state, std::uint8_t(PlatformState::Operational));
         QCOMPARE(*p.mode, std::uint8_t(PlatformMode::StandardOperating));
         QCOMPARE(p.stateService.uri, std::string("urn:jaus:jss:iop:PlatformState"));
-        QVERIFY(!p.commsLostService.offered); // the simulated UGV has no comms-lost policy service
-        QCOMPARE(*p.lights, 0u);
+        QVERIFY(!p.commsLostService.offered);      // the simulated UGV has no comms-lost policy service
+        QCOMPARE(*p.lights, light::RunningLights); // the simulated UGV starts with its running lights on
         QVERIFY(c.control());
 
         // Lights: the vehicle's report changes; its visible-light source is never asked for.
