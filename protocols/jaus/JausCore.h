@@ -1,9 +1,9 @@
 #pragma once
 // The OCU's JAUS client services as one state machine without sockets (AEP-4818 §9): one client per JAUS
 // service (clients/: discovery, liveness, events, access control, management, driving, pose, platform
-// specifications, health), composed here behind a dispatch table keyed by message ID. Messages enter via
-// handle(), time via tick(); messages leave through JausOutput. JausStack drives it from its io thread;
-// tests drive it with a FakeClock.
+// specifications, health, video, missions, platform mode/state with lights and odometry), composed here
+// behind a dispatch table keyed by message ID. Messages enter via handle(), time via tick(); messages leave
+// through JausOutput. JausStack drives it from its io thread; tests drive it with a FakeClock.
 #include <cstdint>
 #include <optional>
 #include <vector>
