@@ -121,6 +121,34 @@ private slots:
         QVERIFY(waitFor([&] { return !result(10).isEmpty(); }, 20000));
         QCOMPARE(result(10).value("ok").toBool(), false);
     }
+    // The platform services' commands reach the simulated UGV with results per target; the console's own
+    // refusals name their reason.
+    void platformCommandsPerTarget() {
+        send(R"({"cmd":"lights","id":"jaus:126","headlights":true,"req":20})");
+        send(R"({"cmd":"odometry","id":"jaus:126","req":21})");
+        send(R"({"cmd":"platform_mode","id":"jaus:126","mode":"training","req":22})");
+        send(R"({"cmd":"lights","id":"jaus:126","visible_light":true,"req":23})");
+        QVERIFY(waitFor(
+            [&] {
+                return !result(20).isEmpty() && !result(21).isEmpty() && !result(22).isEmpty() &&
+                       !result(23).isEmpty();
+            },
+            20000));
+        for (int req : {20, 21, 22}) {
+            const QJsonObject r = result(req);
+            QVERIFY2(r.value("ok").toBool(), QJsonDocument(r).toJson().constData());
+            const QJsonArray targets = r.value("targets").toArray();
+            QCOMPARE(targets.size(), 1);
+            QCOMPARE(targets[0].toObject().value("id").toString(), QStringLiteral("jaus:126"));
+            QVERIFY(targets[0].toObject().value("sent").toBool());
+        }
+        // The read's note says what the vehicle last reported.
+        QVERIFY2(QJsonDocument(result(21)).toJson().contains("odometer"),
+                 QJsonDocument(result(21)).toJson().constData());
+        QCOMPARE(result(23).value("ok").toBool(), false);
+        QVERIFY2(QJsonDocument(result(23)).toJson().contains("9.2.2"),
+                 QJsonDocument(result(23)).toJson().constData());
+    }
     void stopAllStopsEveryMachineWithinTwoSeconds() {
         // STOP ALL reaches every discovered JAUS vehicle, controlled by this console or not, so
         // no control is taken here. Both vehicles must be known first.
