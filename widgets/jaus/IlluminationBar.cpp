@@ -3,9 +3,11 @@
 #include "models/CommandGate.h"
 #include "models/jaus/JausVehicleBridge.h"
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QToolButton>
+
+#include <algorithm>
 
 namespace ocu {
 
@@ -42,28 +44,50 @@ IlluminationBar::IlluminationBar(JausVehicleBridge* bridge, CommandGate* gate,
         QStringLiteral("QToolButton:checked { background: #f2b01e; color: black; font-weight: bold; "
                        "border: 1px solid #8a6200; border-radius: 3px; padding: 2px 6px; }"
                        "QToolButton { padding: 2px 6px; }"));
-    auto* h = new QHBoxLayout(this);
-    h->setContentsMargins(0, 0, 0, 0);
-    h->setSpacing(3);
+    m_grid = new QGridLayout(this);
+    m_grid->setContentsMargins(0, 0, 0, 0);
+    m_grid->setSpacing(3);
     m_label->setText(tr("Lights:"));
-    h->addWidget(m_label);
+    m_grid->addWidget(m_label, 0, 0);
     for (JausLight l : kJausLights) {
         auto* b = new QToolButton(this);
         b->setObjectName(QStringLiteral("light-") + jausLightKey(l));
         b->setText(shortLabel(l));
         b->setCheckable(true);
         b->setFocusPolicy(Qt::StrongFocus); // reachable by Tab, toggled by Space
-        b->setAutoRaise(false);
         connect(b, &QToolButton::clicked, this, [this, l] { clicked(l); });
-        h->addWidget(b);
         m_toggles.append({l, b});
     }
-    h->addStretch(1);
+    // A narrow dock (the teleop panel in a side column) wraps the toggles into more rows instead of
+    // widening the panel.
+    setMinimumWidth(m_label->sizeHint().width() + 3 + m_toggles.front().second->sizeHint().width() * 2);
+    arrange();
     connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& v) {
         if (v.subsystem == m_vehicle())
             refresh();
     });
     refresh();
+}
+
+void IlluminationBar::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    arrange();
+}
+
+void IlluminationBar::arrange() {
+    int widest = 0;
+    for (const auto& [l, b] : m_toggles)
+        widest = std::max(widest, b->sizeHint().width());
+    const int room = width() - m_label->sizeHint().width() - m_grid->spacing();
+    const int perRow = std::clamp(room / (widest + m_grid->spacing()), 1, int(m_toggles.size()));
+    if (perRow == m_perRow)
+        return;
+    m_perRow = perRow;
+    for (int i = 0; i < m_toggles.size(); ++i)
+        m_grid->addWidget(m_toggles[i].second, i / perRow, 1 + i % perRow);
+    for (int c = 1; c <= int(m_toggles.size()); ++c)
+        m_grid->setColumnStretch(c, 0);
+    m_grid->setColumnStretch(perRow + 1, 1);
 }
 
 QToolButton* IlluminationBar::toggle(JausLight light) const {

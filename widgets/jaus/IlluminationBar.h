@@ -12,6 +12,7 @@
 
 #include <functional>
 
+class QGridLayout;
 class QLabel;
 class QToolButton;
 
@@ -30,12 +31,18 @@ public:
     // Updates from the bridge's latest view of the vehicle (also called on every vehicle update).
     void refresh();
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     void clicked(JausLight light);
+    void arrange(); // as many toggles per row as the width takes
     JausVehicleBridge* m_bridge;
     QPointer<CommandGate> m_gate;
     std::function<quint16()> m_vehicle;
     QLabel* m_label;
+    QGridLayout* m_grid = nullptr;
+    int m_perRow = 0;
     QVector<QPair<JausLight, QToolButton*>> m_toggles;
 };
 
