@@ -50,7 +50,8 @@ public:
     void stopMachine(const QString& id, OutcomeCallback done) override;
     void clearStop(const QString& id, OutcomeCallback done) override;
     // RequestControl, ReleaseControl, ReleaseAll, Management (resume, standby, shutdown, reset), DriveStart,
-    // DriveStop and TimedDrive; every other command is not supported.
+    // DriveStop, TimedDrive, the mission commands and the platform services' (SetPlatformMode,
+    // SetPlatformState, SetLights, Odometry); every other command is not supported.
     void command(const OperatorCommand& command, OutcomeCallback done) override;
     bool reportsStopped(const QString& target) const override;
     // clear_stop (the vehicle reports no EMERGENCY), request_control / release_control (ReportControl /
@@ -90,6 +91,8 @@ private:
                        const std::function<void(quint16, OutcomeCallback)>& send);
     void releaseAll(OutcomeCallback done);
     void timedDrive(const TimedDrive& command, OutcomeCallback done);
+    // Reads the odometers now (or resets the trip); a sent target's note says what was last reported.
+    void odometry(const Odometry& command, OutcomeCallback done);
     // Opens a drive session in the stack (its first zero demand): `done` says whether it left.
     void startSession(quint16 subsystem, OutcomeCallback done);
     // A timed drive (headless "drive"): opens the session if needed, hands the demand to the stack (`done`

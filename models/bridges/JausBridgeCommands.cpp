@@ -283,9 +283,53 @@ void JausBridge::command(const OperatorCommand& command, OutcomeCallback done) {
                     m_stack->goTo(ss, MissionPoint{w.lat, w.lon, w.speed, w.tolerance}, std::move(d));
                 });
             },
+            [&](const SetPlatformMode& c) {
+                sendToVehicle(c.id, what, std::move(done), [this, m = c.mode](quint16 ss, OutcomeCallback d) {
+                    m_stack->setPlatformMode(ss, std::uint8_t(m), std::move(d));
+                });
+            },
+            [&](const SetPlatformState& c) {
+                sendToVehicle(c.id, what, std::move(done),
+                              [this, st = c.state](quint16 ss, OutcomeCallback d) {
+                                  m_stack->setPlatformState(ss, std::uint8_t(st), std::move(d));
+                              });
+            },
+            [&](const SetLights& c) {
+                sendToVehicle(c.id, what, std::move(done),
+                              [this, mask = c.mask, on = c.on](quint16 ss, OutcomeCallback d) {
+                                  m_stack->setLights(ss, mask, on, std::move(d));
+                              });
+            },
+            [&](const Odometry& c) { odometry(c, std::move(done)); },
             [&](const auto&) { FleetBridge::command(command, std::move(done)); },
         },
         command);
+}
+
+void JausBridge::odometry(const Odometry& c, OutcomeCallback done) {
+    // A read says what the vehicle last reported (the fresh report follows in the vehicle's view).
+    std::string note;
+    if (auto sub = subsystemOf(c.id); sub && m_latest.contains(*sub)) {
+        const JausPlatformServices& p = m_latest.value(*sub).platformServices;
+        if (p.odometerM || p.tripM)
+            note = tr("last reported: odometer %1 m, trip %2 m")
+                       .arg(p.odometerM ? QString::number(*p.odometerM) : QStringLiteral("?"),
+                            p.tripM ? QString::number(*p.tripM) : QStringLiteral("?"))
+                       .toStdString();
+    }
+    auto withNote = [note, done = std::move(done)](std::vector<TargetOutcome> outcomes) {
+        for (TargetOutcome& o : outcomes)
+            if (o.sent && o.note.empty())
+                o.note = note;
+        done(std::move(outcomes));
+    };
+    sendToVehicle(c.id, commandName(c), std::move(withNote),
+                  [this, reset = c.resetTrip](quint16 ss, OutcomeCallback d) {
+                      if (reset)
+                          m_stack->resetTripOdometer(ss, std::move(d));
+                      else
+                          m_stack->queryOdometry(ss, std::move(d));
+                  });
 }
 
 } // namespace ocu

@@ -129,7 +129,33 @@ JausVehicle toVehicle(const SubsystemSnapshot& s) {
         v.videoEndpoints.push_back({e.resourceId, e.sensorId, QString::fromStdString(e.url),
                                     QString::fromStdString(e.name), e.panTilt, e.configured});
     v.mission = toMission(s.mission);
+    v.platformServices = toPlatformServices(s.platformServices);
     return v;
+}
+
+JausPlatformServices toPlatformServices(const PlatformServicesStatus& p) {
+    auto offered = [](const OfferedService& s) {
+        return JausOfferedService{s.offered, QString::fromStdString(s.uri), s.major, s.minor};
+    };
+    auto number = [](const auto& o) { return o ? std::optional<int>(int(*o)) : std::nullopt; };
+    JausPlatformServices out;
+    out.modeService = offered(p.modeService);
+    out.stateService = offered(p.stateService);
+    out.illuminationService = offered(p.illuminationService);
+    out.odometryService = offered(p.odometryService);
+    out.commsLostService = offered(p.commsLostService);
+    out.mode = number(p.mode);
+    out.modeStatus = number(p.modeStatus);
+    for (std::uint8_t m : p.supportedModes)
+        out.supportedModes.push_back(m);
+    out.state = number(p.state);
+    out.stateRefusal = QString::fromStdString(p.stateRefusal);
+    // The light bits are the wire's (JausLight mirrors them).
+    out.lights = p.lights;
+    out.lightsSupported = p.lightsSupported;
+    out.odometerM = p.odometerM;
+    out.tripM = p.tripM;
+    return out;
 }
 
 JausMission toMission(const MissionStatus& m) {

@@ -13,5 +13,7 @@ JausVehicle toVehicle(const jaus::SubsystemSnapshot& s);
 JausVehicleEvent toVehicleEvent(const jaus::JausEvent& e);
 // The mission as the stack knows it, in the models' types (state from the vehicle's reports).
 JausMission toMission(const jaus::MissionStatus& m);
+// Platform mode and state, lights, odometer, the comms-lost service (from the vehicle's reports).
+JausPlatformServices toPlatformServices(const jaus::PlatformServicesStatus& p);
 
 } // namespace ocu::jausrow

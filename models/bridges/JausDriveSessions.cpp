@@ -36,6 +36,11 @@ std::optional<TargetOutcome> JausBridge::refuseDriving(quint16 subsystem) const 
     if (!s || !s->controlledByUs)
         return refusal(target, OutcomeReason::NotControlled,
                        tr("drive refused: this console does not control %1").arg(target));
+    // Components accept no command in the emergency platform state (AEP-4818 §6.2.6).
+    if (s->platformServices.emergencyState())
+        return refusal(
+            target, OutcomeReason::Refused,
+            tr("drive refused: %1 reports the emergency platform state; nothing sent").arg(target));
     return std::nullopt;
 }
 

@@ -1,5 +1,7 @@
 #include "models/commands/OperatorCommand.h"
 
+#include "models/commands/PlatformCommandJson.h"
+
 #include <QCoreApplication>
 
 #include <cmath>
@@ -195,6 +197,10 @@ QString commandName(const OperatorCommand& command) {
                           [](const MissionResume&) { return QStringLiteral("mission_resume"); },
                           [](const MissionAbort&) { return QStringLiteral("mission_abort"); },
                           [](const GoTo&) { return QStringLiteral("goto"); },
+                          [](const SetPlatformMode&) { return QStringLiteral("platform_mode"); },
+                          [](const SetPlatformState&) { return QStringLiteral("platform_state"); },
+                          [](const SetLights&) { return QStringLiteral("lights"); },
+                          [](const Odometry&) { return QStringLiteral("odometry"); },
                       },
                       command);
 }
@@ -290,6 +296,10 @@ QJsonObject toJson(const OperatorCommand& command) {
                        o[QStringLiteral("cmd")] = QStringLiteral("goto");
                        o[QStringLiteral("id")] = c.id;
                    },
+                   [&](const SetPlatformMode& c) { platformjson::addArguments(o, c); },
+                   [&](const SetPlatformState& c) { platformjson::addArguments(o, c); },
+                   [&](const SetLights& c) { platformjson::addArguments(o, c); },
+                   [&](const Odometry& c) { platformjson::addArguments(o, c); },
                    [&](const auto& c) { o[QStringLiteral("id")] = c.id; }, // machine commands
                },
                command);
@@ -310,7 +320,7 @@ bool isOperatorCommand(const QString& name) {
                                    QStringLiteral("mission_upload"),  QStringLiteral("mission_start"),
                                    QStringLiteral("mission_pause"),   QStringLiteral("mission_resume"),
                                    QStringLiteral("mission_abort"),   QStringLiteral("goto")};
-    return names.contains(name);
+    return names.contains(name) || platformjson::isPlatformCommand(name);
 }
 
 ParsedCommand parseOperatorCommand(const QString& name, const QJsonObject& json) {
@@ -390,6 +400,8 @@ ParsedCommand parseOperatorCommand(const QString& name, const QJsonObject& json)
         return a.done(MissionAbort{a.id()});
     if (name == QLatin1String("goto"))
         return parseGoTo(name, json);
+    if (platformjson::isPlatformCommand(name))
+        return platformjson::parse(name, json);
     if (name.isEmpty())
         return {std::nullopt, QStringLiteral("missing \"cmd\""), {}};
     return {std::nullopt, QStringLiteral("unknown command %1").arg(name), {}};

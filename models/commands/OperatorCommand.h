@@ -9,6 +9,7 @@
 // parseOperatorCommand, its route in commandRoute, and the bridge's visitor case.
 #include "models/MachineState.h"
 #include "models/jaus/JausMission.h"
+#include "models/jaus/JausPlatformServices.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -118,6 +119,34 @@ struct GoTo {
     bool operator==(const GoTo&) const = default;
 };
 
+// ---- JAUS: platform services (AEP-4818 §6.2.5, §6.2.6, §9.2.2, §5.7); JSON in PlatformCommandJson.cpp ----
+
+// "platform_mode": 0 standard, 1 training, 2 maintenance, 175-255 program-specific.
+struct SetPlatformMode {
+    QString id;
+    int mode = 0;
+    bool operator==(const SetPlatformMode&) const = default;
+};
+// "platform_state": 0 initialize ... 5 render useless (JausPlatformState); the vehicle decides which it
+// takes.
+struct SetPlatformState {
+    QString id;
+    int state = 1;
+    bool operator==(const SetPlatformState&) const = default;
+};
+// "lights": the lights in `mask` (JausLight bits) switched to their bits in `on`; the others unchanged.
+struct SetLights {
+    QString id;
+    quint32 mask = 0, on = 0;
+    bool operator==(const SetLights&) const = default;
+};
+// "odometry": read the odometers now; resetTrip also starts a new trip (ResetOdometry TRIP_A).
+struct Odometry {
+    QString id;
+    bool resetTrip = false;
+    bool operator==(const Odometry&) const = default;
+};
+
 // ---- ISO 23725: all-stop per AHS link, map, dispatch ----
 
 // The link by name, else the link of the machine `id`, else the only link.
@@ -174,7 +203,7 @@ using OperatorCommand =
     std::variant<StopAll, StopMachine, ClearStop, RequestControl, ReleaseControl, ReleaseAll, Management,
                  DriveStart, DriveStop, TimedDrive, AllStopApply, AllStopRemove, FetchMap, Assign,
                  ResetAssignment, SendText, PingStation, MissionUpload, MissionStart, MissionPause,
-                 MissionResume, MissionAbort, GoTo>;
+                 MissionResume, MissionAbort, GoTo, SetPlatformMode, SetPlatformState, SetLights, Odometry>;
 
 // The visitor idiom: std::visit(Overloaded{[](const StopAll&) {...}, [](const auto&) {...}}, command).
 template <class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };

@@ -3,6 +3,7 @@
 // console knows it, a JAUS event about one, a drive demand, and this console's own JAUS identity. The JAUS
 // bridge fills them on the GUI thread from the stack's snapshots; the panels never see a protocols/jaus type.
 #include "models/jaus/JausMission.h"
+#include "models/jaus/JausPlatformServices.h"
 
 #include <QMetaType>
 #include <QPair>
@@ -111,6 +112,7 @@ struct JausVehicle {
     QVector<JausNodeServices> services;
     QVector<JausVideoEndpoint> videoEndpoints; // empty until announced or configured
     JausMission mission;                       // state None until this console uploads one
+    JausPlatformServices platformServices;     // mode, state, lights, odometer as the vehicle reports them
 };
 
 enum class JausEventSeverity { Info, Warning, Error };

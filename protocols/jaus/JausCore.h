@@ -1,9 +1,9 @@
 #pragma once
 // The OCU's JAUS client services as one state machine without sockets (AEP-4818 §9): one client per JAUS
 // service (clients/: discovery, liveness, events, access control, management, driving, pose, platform
-// specifications, health), composed here behind a dispatch table keyed by message ID. Messages enter via
-// handle(), time via tick(); messages leave through JausOutput. JausStack drives it from its io thread;
-// tests drive it with a FakeClock.
+// specifications, health, video, missions, platform mode/state with lights and odometry), composed here
+// behind a dispatch table keyed by message ID. Messages enter via handle(), time via tick(); messages leave
+// through JausOutput. JausStack drives it from its io thread; tests drive it with a FakeClock.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -25,6 +25,7 @@
 #include "protocols/jaus/clients/ManagementClient.h"
 #include "protocols/jaus/clients/MessageTable.h"
 #include "protocols/jaus/clients/MissionClient.h"
+#include "protocols/jaus/clients/PlatformClient.h"
 #include "protocols/jaus/clients/PlatformSpecificationsClient.h"
 #include "protocols/jaus/clients/PoseClient.h"
 #include "protocols/jaus/clients/VideoClient.h"
@@ -57,9 +58,13 @@ public:
         return m_management.command(subsystem, msg::Shutdown, "shutdown");
     }
     bool reset(std::uint16_t subsystem) { return m_management.command(subsystem, msg::Reset, "reset"); }
-    bool startDriving(std::uint16_t subsystem) { return m_drive.startDriving(subsystem); }
+    // Drive and mission commands are refused while the vehicle reports the emergency platform state.
+    bool startDriving(std::uint16_t subsystem) {
+        return !m_platformServices.refuseInEmergency(subsystem, "driving") && m_drive.startDriving(subsystem);
+    }
     bool setDriveCommand(std::uint16_t subsystem, DriveCommand command) {
-        return m_drive.setDriveCommand(subsystem, command);
+        return !m_platformServices.refuseInEmergency(subsystem, "driving", true) &&
+               m_drive.setDriveCommand(subsystem, command);
     }
     bool stopDriving(std::uint16_t subsystem) { return m_drive.stopDriving(subsystem); }
     // Pan-tilt rates (rad/s) for a camera of the subsystem; zero stops (VideoClient).
@@ -69,15 +74,36 @@ public:
     // Waypoint missions (MissionClient): each returns false with the reason when nothing went out.
     bool missionUpload(std::uint16_t subsystem, const std::vector<MissionPoint>& points,
                        std::optional<bool> global) {
-        return m_mission.upload(subsystem, points, global);
+        return !m_platformServices.refuseInEmergency(subsystem, "a mission upload") &&
+               m_mission.upload(subsystem, points, global);
     }
     bool missionStart(std::uint16_t subsystem, int fromIndex) {
-        return m_mission.start(subsystem, fromIndex);
+        return !m_platformServices.refuseInEmergency(subsystem, "a mission start") &&
+               m_mission.start(subsystem, fromIndex);
     }
     bool missionPause(std::uint16_t subsystem) { return m_mission.pause(subsystem); }
-    bool missionResume(std::uint16_t subsystem) { return m_mission.resume(subsystem); }
+    bool missionResume(std::uint16_t subsystem) {
+        return !m_platformServices.refuseInEmergency(subsystem, "a mission resume") &&
+               m_mission.resume(subsystem);
+    }
     bool missionAbort(std::uint16_t subsystem) { return m_mission.abort(subsystem); }
-    bool goTo(std::uint16_t subsystem, const MissionPoint& point) { return m_mission.goTo(subsystem, point); }
+    bool goTo(std::uint16_t subsystem, const MissionPoint& point) {
+        return !m_platformServices.refuseInEmergency(subsystem, "a go-to") &&
+               m_mission.goTo(subsystem, point);
+    }
+    // Platform mode and state, lights, odometry (PlatformClient): false with the reason when nothing went
+    // out.
+    bool setPlatformMode(std::uint16_t subsystem, std::uint8_t mode) {
+        return m_platformServices.setMode(subsystem, mode);
+    }
+    bool setPlatformState(std::uint16_t subsystem, std::uint8_t state) {
+        return m_platformServices.setState(subsystem, state);
+    }
+    bool setLights(std::uint16_t subsystem, std::uint32_t mask, std::uint32_t on) {
+        return m_platformServices.setLights(subsystem, mask, on);
+    }
+    bool resetTripOdometer(std::uint16_t subsystem) { return m_platformServices.resetTrip(subsystem); }
+    bool queryOdometry(std::uint16_t subsystem) { return m_platformServices.queryOdometry(subsystem); }
     // STOP ALL: SetEmergency to every discovered subsystem, whether this console controls it
     // or not; one outcome per subsystem.
     // alreadySent: subsystems whose SetEmergency already left on the caller's thread (JausStack's fast path):
@@ -125,6 +151,7 @@ private:
     HealthMonitorClient m_health;
     VideoClient m_video;
     MissionClient m_mission;
+    PlatformClient m_platformServices;
     std::vector<ClientService*> m_all;
     // The timers that run once a subsystem's services are known, in this order (liveness and discovery
     // run before them, for every subsystem).

@@ -291,6 +291,21 @@ void JausStack::missionAbort(std::uint16_t ss, OutcomeCallback done) {
 void JausStack::goTo(std::uint16_t ss, MissionPoint point, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.goTo(ss, point));
 }
+void JausStack::setPlatformMode(std::uint16_t ss, std::uint8_t mode, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.setPlatformMode(ss, mode));
+}
+void JausStack::setPlatformState(std::uint16_t ss, std::uint8_t state, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.setPlatformState(ss, state));
+}
+void JausStack::setLights(std::uint16_t ss, std::uint32_t mask, std::uint32_t on, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.setLights(ss, mask, on));
+}
+void JausStack::resetTripOdometer(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.resetTripOdometer(ss));
+}
+void JausStack::queryOdometry(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.queryOdometry(ss));
+}
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
     if (!d->running)

@@ -77,6 +77,14 @@ public:
     void missionResume(std::uint16_t subsystem, OutcomeCallback done);
     void missionAbort(std::uint16_t subsystem, OutcomeCallback done);
     void goTo(std::uint16_t subsystem, MissionPoint point, OutcomeCallback done);
+    // Platform services (PlatformClient): `done` says whether the Set went out, or waits for control just
+    // requested (or why not); what the vehicle then reports is SubsystemSnapshot::platformServices.
+    void setPlatformMode(std::uint16_t subsystem, std::uint8_t mode, OutcomeCallback done);
+    void setPlatformState(std::uint16_t subsystem, std::uint8_t state, OutcomeCallback done);
+    // The lights in `mask` switched to their bits in `on` (light:: bits of MessagesPlatformServices.h).
+    void setLights(std::uint16_t subsystem, std::uint32_t mask, std::uint32_t on, OutcomeCallback done);
+    void resetTripOdometer(std::uint16_t subsystem, OutcomeCallback done);
+    void queryOdometry(std::uint16_t subsystem, OutcomeCallback done);
 
     // Subsystems whose SetEmergency is planned for the caller's-thread fast path now (tests, diagnostics).
     std::size_t plannedStopCount() const;

@@ -9,6 +9,7 @@
 #include "protocols/jaus/JudpCodec.h"
 #include "protocols/jaus/Messages.h"
 #include "protocols/jaus/MissionTypes.h"
+#include "protocols/jaus/PlatformTypes.h"
 #include "protocols/jaus/VideoTypes.h"
 
 namespace ocu::jaus {
@@ -78,6 +79,8 @@ struct SubsystemSnapshot {
 
     // The waypoint mission this console uploaded (MissionClient), phase None when there is none.
     MissionStatus mission;
+    // Platform mode and state, lights, odometer, comms-lost service (PlatformClient), from its reports.
+    PlatformServicesStatus platformServices;
 };
 
 enum class Severity { Info, Warning, Error };

@@ -1,6 +1,7 @@
 // Core service messages (AS5710A): names, management, access control, one-integer bodies.
 #include "protocols/jaus/Messages.h"
 #include "protocols/jaus/MessagesMission.h"
+#include "protocols/jaus/MessagesPlatformServices.h"
 #include "protocols/jaus/MessagesVideo.h"
 
 #include "protocols/jaus/MessageSupport.h"
@@ -10,9 +11,11 @@ namespace ocu::jaus {
 using namespace codec;
 
 namespace {
-// The names of the message families with tables of their own (mission, video).
+// The names of the message families with tables of their own (mission, video, platform services).
 const char* familyMessageName(std::uint16_t id) {
     const char* name = missionMessageName(id);
+    if (!name)
+        name = platformServicesMessageName(id);
     return name ? name : videoMessageName(id);
 }
 } // namespace

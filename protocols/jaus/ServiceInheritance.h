@@ -69,6 +69,8 @@ inline constexpr std::array kServiceParents{
     ServiceParent{service::VelocityStateSensor, service::Events},
     // UGV
     ServiceParent{service::PlatformSpecifications, service::Events},
+    ServiceParent{"urn:jaus:jss:ugv:IlluminationService", service::AccessControl},
+    ServiceParent{"urn:jaus:jss:ugv:OdometryService", service::AccessControl},
     // Environment sensing (AS6060)
     ServiceParent{"urn:jaus:jss:environmentSensing:VisualSensor", service::AccessControl},
     ServiceParent{"urn:jaus:jss:environmentSensing:DigitalVideo",

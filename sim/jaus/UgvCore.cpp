@@ -25,6 +25,7 @@ UgvCore::UgvCore(SimulatedUgvConfig config, JausOutput& output, const Clock& clo
     registerDriving();
     registerPoseSensors();
     registerWaypoints();
+    registerPlatform();
 }
 
 bool UgvCore::isLocal(const JausId& id) const {

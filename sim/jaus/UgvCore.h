@@ -7,7 +7,8 @@
 // FakeClock. Messages reach the services through a table keyed by message ID (UgvMessageTable); each service
 // registers its messages from its own file: UgvDiscovery.cpp, UgvEvents.cpp, UgvAccessControl.cpp,
 // UgvManagement.cpp, UgvDrive.cpp, UgvPoseSensors.cpp, UgvWaypoints.cpp (ListManager, the Local/Global
-// Waypoint (List) Drivers on 3.1, PathReporter on 3.2).
+// Waypoint (List) Drivers on 3.1, PathReporter on 3.2), UgvPlatform.cpp (Platform Mode/State, Illumination,
+// Odometry on 3.1).
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -61,6 +62,9 @@ struct SimulatedUgvConfig {
     double physicsRateHz = 50;
     double headingGain = 2; // waypoint following: yaw rate (rad/s) per radian of heading error
     UgvFaults faults;
+    // IlluminationState at start (UgvPlatform.cpp): the running lights (b3), safety lights a UGV on a site
+    // keeps on.
+    std::uint32_t lights = 1u << 3;
     // Cameras served over RTSP by SimulatedUgv and announced through Digital Resource Discovery
     // (UgvVideo); empty = no video services.
     std::vector<SimCameraConfig> cameras;
@@ -77,6 +81,15 @@ struct UgvRoute {
     bool singleArrived = false;
     std::vector<std::pair<double, double>> path; // (x, y) every 0.25 m, at most 1000 points
     std::uint16_t captured = 0;                  // elements reached (tests)
+};
+
+// The platform services' state (UgvPlatform.cpp): mode, lights, where the trip odometers started, and who
+// set the platform's emergency (only that client may ask for Operational without control).
+struct UgvPlatformServices {
+    std::uint8_t mode = 0;
+    std::uint32_t lights = 0;
+    double tripStart[3] = {0, 0, 0}; // TRIP_A-C, odometer metres at their reset
+    jaus::JausId emergencyBy;
 };
 
 struct UgvState {
@@ -104,6 +117,9 @@ public:
     void clearFailure();
     const UgvState& state() const { return m_s; }
     const UgvRoute& route() const { return m_route; }
+    const UgvPlatformServices& platformServices() const { return m_platform; }
+    std::uint8_t platformState() const;               // as ReportPlatformState says it (UgvPlatform.cpp)
+    std::uint32_t odometerM(std::uint8_t type) const; // as ReportOdometry says it
     const SimulatedUgvConfig& config() const { return m_cfg; }
     bool isLocal(const jaus::JausId& id) const;
     jaus::GlobalPose globalPose() const;
@@ -147,6 +163,7 @@ private:
     void registerDriving();       // PrimitiveDriver, VelocityStateDriver (Core Mobility Component)
     void registerPoseSensors();   // pose and velocity sensors, PlatformSpecifications
     void registerWaypoints();     // ListManager, waypoint (list) drivers (3.1), PathReporter (3.2)
+    void registerPlatform();      // Platform Mode/State, Illumination, Odometry (3.1)
 
     // Discovery
     std::vector<jaus::ServiceRecord> servicesOf(const jaus::JausId& comp) const;
@@ -205,6 +222,7 @@ private:
     std::uint8_t m_nextEventId = 1;
     UgvVideo m_video;
     UgvRoute m_route;
+    UgvPlatformServices m_platform;
     jaus::ManagementState m_routeManagement = jaus::ManagementState::Standby;
     UgvMessageTable m_table;
 };

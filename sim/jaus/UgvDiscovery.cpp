@@ -28,6 +28,11 @@ std::vector<ServiceRecord> UgvCore::servicesOf(const JausId& c) const {
         s.push_back({"urn:jaus:jss:mobility:GlobalWaypointListDriver", 1, 1});
         s.push_back({"urn:jaus:jss:mobility:LocalWaypointDriver", 1, 1});
         s.push_back({"urn:jaus:jss:mobility:GlobalWaypointDriver", 1, 1});
+        // The platform services (UgvPlatform.cpp) sit here, with the one access control of the vehicle.
+        s.push_back({"urn:jaus:jss:iop:PlatformMode", 1, 1});
+        s.push_back({"urn:jaus:jss:iop:PlatformState", 1, 1});
+        s.push_back({"urn:jaus:jss:ugv:IlluminationService", 1, 0});
+        s.push_back({"urn:jaus:jss:ugv:OdometryService", 1, 0});
     } else if (c == sensors()) {
         s.push_back({"urn:jaus:jss:mobility:GlobalPoseSensor", 1, 1});
         s.push_back({"urn:jaus:jss:mobility:LocalPoseSensor", 1, 1});

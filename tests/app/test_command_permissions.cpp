@@ -79,6 +79,10 @@ std::vector<Row> specification() {
         {MissionResume{ugv}, ugvRoles},
         {MissionAbort{ugv}, ugvRoles},
         {GoTo{ugv, MissionWaypoint{48.1, 11.5, 1.0, 0.5}}, ugvRoles},
+        {SetPlatformMode{ugv, 1}, ugvRoles},
+        {SetPlatformState{ugv, 4}, ugvRoles},
+        {SetLights{ugv, bitOf(JausLight::Headlights), bitOf(JausLight::Headlights)}, ugvRoles},
+        {Odometry{ugv, true}, ugvRoles},
     };
 }
 

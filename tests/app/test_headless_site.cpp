@@ -170,6 +170,34 @@ private slots:
         send(R"({"cmd":"mission_abort","id":"jaus:126","req":90})");
         QVERIFY(waitFor([&] { return !result(90).isEmpty(); }, 20000));
     }
+    // The platform services' commands reach the simulated UGV with results per target; the console's own
+    // refusals name their reason.
+    void platformCommandsPerTarget() {
+        send(R"({"cmd":"lights","id":"jaus:126","headlights":true,"req":940})");
+        send(R"({"cmd":"odometry","id":"jaus:126","req":941})");
+        send(R"({"cmd":"platform_mode","id":"jaus:126","mode":"training","req":942})");
+        send(R"({"cmd":"lights","id":"jaus:126","visible_light":true,"req":943})");
+        QVERIFY(waitFor(
+            [&] {
+                return !result(940).isEmpty() && !result(941).isEmpty() && !result(942).isEmpty() &&
+                       !result(943).isEmpty();
+            },
+            20000));
+        for (int req : {940, 941, 942}) {
+            const QJsonObject r = result(req);
+            QVERIFY2(r.value("ok").toBool(), QJsonDocument(r).toJson().constData());
+            const QJsonArray targets = r.value("targets").toArray();
+            QCOMPARE(targets.size(), 1);
+            QCOMPARE(targets[0].toObject().value("id").toString(), QStringLiteral("jaus:126"));
+            QVERIFY(targets[0].toObject().value("sent").toBool());
+        }
+        // The read's note says what the vehicle last reported.
+        QVERIFY2(QJsonDocument(result(941)).toJson().contains("odometer"),
+                 QJsonDocument(result(941)).toJson().constData());
+        QCOMPARE(result(943).value("ok").toBool(), false);
+        QVERIFY2(QJsonDocument(result(943)).toJson().contains("9.2.2"),
+                 QJsonDocument(result(943)).toJson().constData());
+    }
     void stopAllStopsEveryMachineWithinTwoSeconds() {
         // STOP ALL reaches every discovered JAUS vehicle, controlled by this console or not, so
         // no control is taken here. Both vehicles must be known first.

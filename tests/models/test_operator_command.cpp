@@ -78,6 +78,42 @@ private slots:
         QTest::newRow("mission_abort") << R"({"cmd":"mission_abort","id":"jaus:126"})";
         QTest::newRow("goto")
             << R"({"cmd":"goto","id":"jaus:126","lat":48.1,"lon":11.5,"speed":1,"tolerance":0.5})";
+        QTest::newRow("platform_mode") << R"({"cmd":"platform_mode","id":"jaus:126","mode":"training"})";
+        QTest::newRow("platform_mode, program mode")
+            << R"({"cmd":"platform_mode","id":"jaus:126","mode":180})";
+        QTest::newRow("platform_state") << R"({"cmd":"platform_state","id":"jaus:126","state":"emergency"})";
+        QTest::newRow("lights")
+            << R"({"cmd":"lights","id":"jaus:126","headlights":true,"left_turn_signal":false,"ir_light":true})";
+        QTest::newRow("odometry read") << R"({"cmd":"odometry","id":"jaus:126"})";
+        QTest::newRow("odometry reset") << R"({"cmd":"odometry","id":"jaus:126","reset_trip":true})";
+    }
+    // The platform commands' arguments: what reaches the bridge, and what is refused at the edge.
+    void platformCommands() {
+        auto parse = [](const char* line) {
+            const QJsonObject in = json(line);
+            return parseOperatorCommand(in.value(QStringLiteral("cmd")).toString(), in);
+        };
+        const ParsedCommand lights =
+            parse(R"({"cmd":"lights","id":"jaus:1","headlights":true,"brake_lights":false})");
+        QVERIFY(lights.command);
+        const auto& l = std::get<SetLights>(*lights.command);
+        QCOMPARE(l.mask, bitOf(JausLight::Headlights) | bitOf(JausLight::BrakeLights));
+        QCOMPARE(l.on, bitOf(JausLight::Headlights));
+        QCOMPARE(std::get<SetPlatformMode>(
+                     *parse(R"({"cmd":"platform_mode","id":"jaus:1","mode":"maintenance"})").command)
+                     .mode,
+                 2);
+        // Never the whole vehicle's visible-light source; at least one light; booleans only.
+        QVERIFY(parse(R"({"cmd":"lights","id":"jaus:1","visible_light":true})").error.contains("§9.2.2"));
+        QVERIFY(!parse(R"({"cmd":"lights","id":"jaus:1"})").command);
+        QVERIFY(!parse(R"({"cmd":"lights","id":"jaus:1","headlights":1})").command);
+        QVERIFY(!parse(R"({"cmd":"platform_mode","id":"jaus:1","mode":"racing"})").command);
+        QVERIFY(!parse(R"({"cmd":"platform_mode","id":"jaus:1","mode":100})").command);
+        QVERIFY(!parse(R"({"cmd":"platform_state","id":"jaus:1","state":"asleep"})").command);
+        QVERIFY(!parse(R"({"cmd":"odometry","id":"jaus:1","reset_trip":"yes"})").command);
+        const ParsedCommand noId = parse(R"({"cmd":"odometry"})");
+        QVERIFY(!noId.command);
+        QCOMPARE(noId.error, QStringLiteral("missing \"id\""));
     }
     void roundTrip() {
         QFETCH(QString, line);
@@ -120,7 +156,11 @@ private slots:
                                                MissionPause{},
                                                MissionResume{},
                                                MissionAbort{},
-                                               GoTo{}};
+                                               GoTo{},
+                                               SetPlatformMode{},
+                                               SetPlatformState{},
+                                               SetLights{},
+                                               Odometry{}};
         QCOMPARE(all.size(), std::variant_size_v<OperatorCommand>);
         QSet<QString> names;
         for (const OperatorCommand& c : all) {

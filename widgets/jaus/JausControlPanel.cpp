@@ -6,6 +6,7 @@
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
 #include "widgets/FleetListWidget.h"
+#include "widgets/jaus/PlatformServicesWidget.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
 
 #include <QHBoxLayout>
@@ -92,6 +93,8 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     l->setContentsMargins(2, 2, 2, 2);
     l->addLayout(top);
     l->addWidget(split);
+    m_platform = new PlatformServicesWidget(bridge, gate, this);
+    l->addWidget(m_platform);
 
     connect(m_model, &QAbstractItemModel::rowsInserted, this,
             [this](const QModelIndex&, int first, int last) { installRowButtons(first, last); });
@@ -102,6 +105,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
             [this](const QModelIndex& current) {
                 const std::uint16_t sub = m_model->subsystemAt(current.row());
                 m_details->showSubsystem(sub);
+                m_platform->setVehicle(sub);
                 if (sub)
                     m_detailsStack->setCurrentWidget(m_details);
                 if (m_selection && sub)

@@ -20,6 +20,7 @@ class JausVehicleBridge;
 class CommandGate;
 class JausSubsystemModel;
 class VehicleDetailsWidget;
+class PlatformServicesWidget;
 class FleetSelection;
 
 class JausControlPanel : public QWidget {
@@ -32,6 +33,8 @@ public:
     JausSubsystemModel* model() const { return m_model; }
     QTableView* table() const { return m_table; }
     VehicleDetailsWidget* details() const { return m_details; }
+    // The selected vehicle's platform mode and state, odometer and comms-lost service, with their commands.
+    PlatformServicesWidget* platformServices() const { return m_platform; }
     // The action buttons of a row (for keyboard users and tests).
     QPushButton* controlButton(std::uint16_t subsystem) const;
     QPushButton* releaseButton(std::uint16_t subsystem) const;
@@ -53,6 +56,7 @@ private:
     JausSubsystemModel* m_model;
     QTableView* m_table;
     VehicleDetailsWidget* m_details;
+    PlatformServicesWidget* m_platform = nullptr;
     QLabel* m_roleLabel;
     QPushButton* m_releaseAll;
     QStackedWidget* m_detailsStack;

@@ -7,6 +7,7 @@
 #include "models/video/VideoPlayer.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/OnScreenWatcher.h"
+#include "widgets/jaus/IlluminationBar.h"
 #include "widgets/jaus/MissionTakeover.h"
 #include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
@@ -215,6 +216,8 @@ void TeleopPanel::buildLayout(QBoxLayout* inputs) {
     stops->addWidget(m_clear, 1);
     l->addLayout(stops);
     l->addWidget(m_videoHold);
+    l->addWidget(new IlluminationBar(
+        m_bridge, m_gate, [this] { return m_subsystem; }, this));
     l->addWidget(m_video, 3);
     l->addLayout(inputs); // at its size: every pixel of height more goes to the video
 }

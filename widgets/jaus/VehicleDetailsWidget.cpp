@@ -101,6 +101,8 @@ void VehicleDetailsWidget::rebuild(const JausVehicle& s) {
         row(platform, tr("Specifications"), tr("not reported yet"));
     }
 
+    addPlatformServices(section(tr("Platform services")), s.platformServices);
+
     auto* pose = section(tr("Pose"));
     if (s.globalPose) {
         row(pose, tr("Latitude"), num(s.globalPose->lat, 7, QStringLiteral("°")));
@@ -143,6 +145,33 @@ void VehicleDetailsWidget::rebuild(const JausVehicle& s) {
                 row(comp, r.uri, QStringLiteral("v%1.%2").arg(r.major).arg(r.minor));
         }
     }
+}
+
+// Mode, state, lights, odometer and the comms-lost service, as the vehicle reports them.
+void VehicleDetailsWidget::addPlatformServices(QTreeWidgetItem* parent, const JausPlatformServices& p) {
+    auto row = [parent](const QString& k, const QString& v) { new QTreeWidgetItem(parent, {k, v}); };
+    auto value = [](const JausOfferedService& s, const std::optional<int>& v, QString (*name)(int)) {
+        return !s.offered ? tr("not offered") : v ? name(*v) : tr("not reported yet");
+    };
+    row(tr("Platform mode"), value(p.modeService, p.mode, &JausPlatformText::modeName));
+    row(tr("Platform state"), value(p.stateService, p.state, &JausPlatformText::stateName));
+    QStringList on;
+    for (JausLight l : kJausLights)
+        if (p.lightOn(l))
+            on << JausPlatformText::lightName(l);
+    row(tr("Lights"), !p.illuminationService.offered ? tr("not offered")
+                      : !p.lights                    ? tr("not reported yet")
+                      : on.isEmpty()                 ? tr("all off")
+                                                     : on.join(QStringLiteral(", ")));
+    auto metres = [](const std::optional<quint32>& m) {
+        return m ? tr("%1 m").arg(*m) : tr("not reported yet");
+    };
+    row(tr("Odometer"), p.odometryService.offered ? metres(p.odometerM) : tr("not offered"));
+    row(tr("Trip"), p.odometryService.offered ? metres(p.tripM) : tr("not offered"));
+    row(tr("Comms-lost policy service"),
+        p.commsLostService.offered
+            ? QStringLiteral("%1 v%2").arg(p.commsLostService.uri, p.commsLostService.versionText())
+            : tr("not offered"));
 }
 
 } // namespace ocu

@@ -1,5 +1,6 @@
 #pragma once
-// Vehicle details: platform specifications, mode and state, health, the services tree
+// Vehicle details: platform specifications, mode and state, platform services (mode, state, lights,
+// odometer, comms-lost service), health, the services tree
 // subsystem → node → component [s.n.c] → service URI and version, and the vehicle's last messages.
 #include "models/jaus/JausVehicle.h"
 
@@ -7,6 +8,7 @@
 
 class QTreeWidget;
 class QListWidget;
+class QTreeWidgetItem;
 
 namespace ocu {
 
@@ -23,6 +25,7 @@ public:
 
 private:
     void rebuild(const JausVehicle& s);
+    static void addPlatformServices(QTreeWidgetItem* parent, const JausPlatformServices& p);
     JausVehicleBridge* m_bridge;
     std::uint16_t m_subsystem = 0;
     QTreeWidget* m_tree;

@@ -131,6 +131,8 @@ struct ForeignJausVehicle::Impl {
                 opt.listDriver, id(opt.subsystem, opt.node, opt.listDriverComponent),
                 ownList ? listController : controller, ownList ? listStatus : status, controller);
         }
+        if (opt.platformServicesComponent)
+            platform = std::make_unique<PlatformServices>(controller, status, beforeEmergency);
         lat0 = opt.latitude;
         lon0 = opt.longitude;
         x0 = opt.localX;
@@ -285,6 +287,14 @@ struct ForeignJausVehicle::Impl {
                 return;
             std::vector<Buf> replies;
             if (list->handle(mid, src, body, len, replies)) {
+                for (const Buf& r : replies)
+                    reply(src, r, me);
+                return;
+            }
+        }
+        if (platform && c.component == opt.platformServicesComponent) {
+            std::vector<Buf> replies;
+            if (platform->handle(mid, src, body, len, replies)) {
                 for (const Buf& r : replies)
                     reply(src, r, me);
                 return;
@@ -577,6 +587,7 @@ struct ForeignJausVehicle::Impl {
     bool ownList = false;
     std::uint32_t listController = 0;
     std::uint8_t listStatus = 2;
+    std::unique_ptr<PlatformServices> platform; // platformServicesComponent
     double lat0 = 0, lon0 = 0, x0 = 0, y0 = 0;
 };
 
@@ -593,6 +604,10 @@ void ForeignJausVehicle::setOffline(bool offline) {
 std::uint32_t ForeignJausVehicle::controller() const {
     std::lock_guard lock(m_impl->mutex);
     return m_impl->controller;
+}
+std::uint32_t ForeignJausVehicle::lights() const {
+    std::lock_guard lock(m_impl->mutex);
+    return m_impl->platform ? m_impl->platform->lights() : 0;
 }
 std::uint8_t ForeignJausVehicle::status() const {
     std::lock_guard lock(m_impl->mutex);

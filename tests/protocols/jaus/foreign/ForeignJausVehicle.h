@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "tests/protocols/jaus/foreign/ForeignPlatformServices.h"
 #include "tests/protocols/jaus/foreign/ForeignWaypointList.h"
 
 namespace foreign {
@@ -91,6 +92,9 @@ struct VehicleOptions {
     // state (whoever controls the component runs the list). The pose moves as it drives.
     std::uint8_t listDriverComponent = 0;
     WaypointListDriver::Options listDriver;
+    // Platform State and Illumination (ForeignPlatformServices.h) on this component (0 = none; list their
+    // URIs in that component's services), under the vehicle's one access control.
+    std::uint8_t platformServicesComponent = 0;
     // The pose the pose components report (WGS84 degrees, local metres, yaw radians).
     double latitude = 48.1, longitude = 11.5, localX = 12.5, localY = -3.25, yaw = 0.5;
 };
@@ -116,6 +120,8 @@ public:
     // The list driver's active element (0 = idle) and the local position it drove to.
     std::uint16_t activeElement() const;
     std::pair<double, double> localPosition() const;
+    // The lights the platform services have on (IlluminationState bits; 0 without the services).
+    std::uint32_t lights() const;
     // Datagrams received that did not parse as AS5669A JUDP (must stay 0: our bytes are checked here).
     int malformed() const;
 
