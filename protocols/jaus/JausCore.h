@@ -20,6 +20,7 @@
 #include "protocols/jaus/clients/DiscoveryClient.h"
 #include "protocols/jaus/clients/DriveClient.h"
 #include "protocols/jaus/clients/EventsClient.h"
+#include "protocols/jaus/clients/HandoffClient.h"
 #include "protocols/jaus/clients/HealthMonitorClient.h"
 #include "protocols/jaus/clients/LivenessClient.h"
 #include "protocols/jaus/clients/ManagementClient.h"
@@ -78,6 +79,14 @@ public:
     bool missionResume(std::uint16_t subsystem) { return m_mission.resume(subsystem); }
     bool missionAbort(std::uint16_t subsystem) { return m_mission.abort(subsystem); }
     bool goTo(std::uint16_t subsystem, const MissionPoint& point) { return m_mission.goTo(subsystem, point); }
+    // Hand-off between consoles (HandoffClient): ask the holder, withdraw, answer a forwarded request.
+    bool handoffRequest(std::uint16_t subsystem, const std::string& reason) {
+        return m_handoff.request(subsystem, reason);
+    }
+    bool handoffCancel(std::uint16_t subsystem) { return m_handoff.cancel(subsystem); }
+    bool handoffAnswer(std::uint16_t subsystem, std::uint8_t id, bool accept) {
+        return m_handoff.answer(subsystem, id, accept);
+    }
     // STOP ALL: SetEmergency to every discovered subsystem, whether this console controls it
     // or not; one outcome per subsystem.
     // alreadySent: subsystems whose SetEmergency already left on the caller's thread (JausStack's fast path):
@@ -125,6 +134,7 @@ private:
     HealthMonitorClient m_health;
     VideoClient m_video;
     MissionClient m_mission;
+    HandoffClient m_handoff;
     std::vector<ClientService*> m_all;
     // The timers that run once a subsystem's services are known, in this order (liveness and discovery
     // run before them, for every subsystem).

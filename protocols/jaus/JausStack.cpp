@@ -291,6 +291,15 @@ void JausStack::missionAbort(std::uint16_t ss, OutcomeCallback done) {
 void JausStack::goTo(std::uint16_t ss, MissionPoint point, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.goTo(ss, point));
 }
+void JausStack::handoffRequest(std::uint16_t ss, std::string reason, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.handoffRequest(ss, reason));
+}
+void JausStack::handoffCancel(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.handoffCancel(ss));
+}
+void JausStack::handoffAnswer(std::uint16_t ss, std::uint8_t requestId, bool accept, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.handoffAnswer(ss, requestId, accept));
+}
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
     if (!d->running)

@@ -78,6 +78,13 @@ public:
     void missionAbort(std::uint16_t subsystem, OutcomeCallback done);
     void goTo(std::uint16_t subsystem, MissionPoint point, OutcomeCallback done);
 
+    // Hand-off between consoles (HandoffClient, AEP-4818 §6.3): `done` says whether RequestHandoff (or, for
+    // a vehicle without Enhanced Access Control, RequestControl), RemoveHandoffRequest or
+    // ConfirmReleaseControl went out; what followed is SubsystemSnapshot::handoff and HandoffChanged events.
+    void handoffRequest(std::uint16_t subsystem, std::string reason, OutcomeCallback done);
+    void handoffCancel(std::uint16_t subsystem, OutcomeCallback done);
+    void handoffAnswer(std::uint16_t subsystem, std::uint8_t requestId, bool accept, OutcomeCallback done);
+
     // Subsystems whose SetEmergency is planned for the caller's-thread fast path now (tests, diagnostics).
     std::size_t plannedStopCount() const;
 

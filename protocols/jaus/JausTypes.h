@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "protocols/common/Clock.h"
+#include "protocols/jaus/HandoffTypes.h"
 #include "protocols/jaus/JudpCodec.h"
 #include "protocols/jaus/Messages.h"
 #include "protocols/jaus/MissionTypes.h"
@@ -78,6 +79,8 @@ struct SubsystemSnapshot {
 
     // The waypoint mission this console uploaded (MissionClient), phase None when there is none.
     MissionStatus mission;
+    // Hand-off between consoles (HandoffClient): our request, and the requests forwarded to us.
+    HandoffStatus handoff;
 };
 
 enum class Severity { Info, Warning, Error };
@@ -97,8 +100,9 @@ enum class EventKind {
     DecodeError,
     CommandRefused,
     TransportError,
-    DriveNotSent,  // a drive stream message was not taken by the socket, or the stream recovered
-    MissionChanged // the phase of a waypoint mission changed (text names the new one)
+    DriveNotSent,   // a drive stream message was not taken by the socket, or the stream recovered
+    MissionChanged, // the phase of a waypoint mission changed (text names the new one)
+    HandoffChanged, // a hand-off request: ours answered, or another console's forwarded to us (text says)
 };
 const char* toString(EventKind k);
 
