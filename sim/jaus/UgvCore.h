@@ -7,7 +7,7 @@
 // FakeClock. Messages reach the services through a table keyed by message ID (UgvMessageTable); each service
 // registers its messages from its own file: UgvDiscovery.cpp, UgvEvents.cpp, UgvAccessControl.cpp,
 // UgvManagement.cpp, UgvDrive.cpp, UgvPoseSensors.cpp, UgvWaypoints.cpp (ListManager, the Local/Global
-// Waypoint (List) Drivers on 3.1, PathReporter on 3.2).
+// Waypoint (List) Drivers on 3.1, PathReporter on 3.2), UgvHandoff.cpp (Enhanced Access Control on 3.1).
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -20,6 +20,7 @@
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausOutput.h"
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/MessagesHandoff.h"
 #include "protocols/jaus/MessagesMission.h"
 #include "sim/jaus/UgvMessageTable.h"
 #include "sim/jaus/UgvVideo.h"
@@ -61,6 +62,11 @@ struct SimulatedUgvConfig {
     double physicsRateHz = 50;
     double headingGain = 2; // waypoint following: yaw rate (rad/s) per radian of heading error
     UgvFaults faults;
+    // Enhanced Access Control 1.1 on the Core Mobility Component (UgvHandoff.cpp, AEP-4818 §6.3.2.2): the
+    // Handoff Decision Timeout (the controller's answer) and the Handoff Request Timeout (the requester's
+    // re-assertion), whole seconds on the wire, 0 = off.
+    bool enhancedAccessControl = true;
+    double handoffDecisionTimeoutS = 60, handoffRequestTimeoutS = 5;
     // Cameras served over RTSP by SimulatedUgv and announced through Digital Resource Discovery
     // (UgvVideo); empty = no video services.
     std::vector<SimCameraConfig> cameras;
@@ -77,6 +83,20 @@ struct UgvRoute {
     bool singleArrived = false;
     std::vector<std::pair<double, double>> path; // (x, y) every 0.25 m, at most 1000 points
     std::uint16_t captured = 0;                  // elements reached (tests)
+};
+
+// Enhanced Access Control's queue (UgvHandoff.cpp): the hand-off requests forwarded to the controller.
+struct UgvHandoffRequest {
+    std::uint8_t id = 0;
+    jaus::JausId requester;
+    std::uint8_t authority = 0;
+    std::string explanation;
+    TimePoint lastAsserted{}, forwarded{};
+};
+struct UgvHandoffQueue {
+    std::vector<UgvHandoffRequest> requests;
+    jaus::JausId forwardedTo; // the controller the queue was last sent to
+    std::uint8_t nextId = 1;
 };
 
 struct UgvState {
@@ -147,6 +167,7 @@ private:
     void registerDriving();       // PrimitiveDriver, VelocityStateDriver (Core Mobility Component)
     void registerPoseSensors();   // pose and velocity sensors, PlatformSpecifications
     void registerWaypoints();     // ListManager, waypoint (list) drivers (3.1), PathReporter (3.2)
+    void registerHandoff();       // Enhanced Access Control (3.1)
 
     // Discovery
     std::vector<jaus::ServiceRecord> servicesOf(const jaus::JausId& comp) const;
@@ -184,6 +205,12 @@ private:
     Bytes reportPath(ByteSpan query) const;
     void followRoute(TimePoint now); // sets the drive demand while a route runs (physics)
     void recordPath();
+    // Enhanced Access Control
+    void requestHandoff(const jaus::JausId& src, const jaus::RequestHandoff& request);
+    void confirmRelease(const jaus::JausId& src, ByteSpan p);
+    void answerHandoff(const jaus::JausId& to, std::uint8_t id, jaus::HandoffCode code);
+    void forwardHandoffQueue();
+    void tickHandoff(TimePoint now);
 
     SimulatedUgvConfig m_cfg;
     jaus::JausOutput& m_out;
@@ -206,6 +233,7 @@ private:
     UgvVideo m_video;
     UgvRoute m_route;
     jaus::ManagementState m_routeManagement = jaus::ManagementState::Standby;
+    UgvHandoffQueue m_handoff;
     UgvMessageTable m_table;
 };
 
