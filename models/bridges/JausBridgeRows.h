@@ -13,5 +13,7 @@ JausVehicle toVehicle(const jaus::SubsystemSnapshot& s);
 JausVehicleEvent toVehicleEvent(const jaus::JausEvent& e);
 // The mission as the stack knows it, in the models' types (state from the vehicle's reports).
 JausMission toMission(const jaus::MissionStatus& m);
+// Hand-off between consoles (prompt stamps still on the wall clock: the bridge moves them to the models').
+JausHandoff toHandoff(const jaus::HandoffStatus& h);
 
 } // namespace ocu::jausrow

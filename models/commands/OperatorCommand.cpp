@@ -160,6 +160,32 @@ ParsedCommand parseGoTo(const QString& name, const QJsonObject& json) {
     return a.done(c);
 }
 
+// handoff_request {"id", "reason", "cancel"}; handoff_answer {"id", "request": queue ID, "accept": bool}.
+ParsedCommand parseHandoff(const QString& name, const QJsonObject& json) {
+    Args a(name, json);
+    const QString id = a.id();
+    auto flag = [&](const char* key, bool required) {
+        const QJsonValue v = json.value(QLatin1String(key));
+        if ((v.isUndefined() && required) || (!v.isUndefined() && !v.isBool()))
+            a.fail(text("%1: \"%2\" must be true or false").arg(name, QLatin1String(key)));
+        return v.toBool(false);
+    };
+    if (name == QLatin1String("handoff_request")) {
+        HandoffRequest c{id, a.string("reason"), flag("cancel", false)};
+        if (c.reason.toUtf8().size() > 200)
+            a.fail(text("handoff_request: \"reason\" is longer than 200 bytes"));
+        return a.done(c);
+    }
+    HandoffAnswer c;
+    c.id = id;
+    const double request = a.number("request", -1);
+    if (!(request >= 0 && request <= 255 && std::floor(request) == request))
+        a.fail(text("handoff_answer: \"request\" must be the request's number (0-255)"));
+    c.requestId = int(request);
+    c.accept = flag("accept", true);
+    return a.done(c);
+}
+
 template <class LinkCommand> ParsedCommand parseLinkCommand(const QString& name, const QJsonObject& json) {
     Args a(name, json);
     LinkCommand c;
@@ -195,6 +221,8 @@ QString commandName(const OperatorCommand& command) {
                           [](const MissionResume&) { return QStringLiteral("mission_resume"); },
                           [](const MissionAbort&) { return QStringLiteral("mission_abort"); },
                           [](const GoTo&) { return QStringLiteral("goto"); },
+                          [](const HandoffRequest&) { return QStringLiteral("handoff_request"); },
+                          [](const HandoffAnswer&) { return QStringLiteral("handoff_answer"); },
                       },
                       command);
 }
@@ -290,6 +318,17 @@ QJsonObject toJson(const OperatorCommand& command) {
                        o[QStringLiteral("cmd")] = QStringLiteral("goto");
                        o[QStringLiteral("id")] = c.id;
                    },
+                   [&](const HandoffRequest& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       putIfSet(o, "reason", c.reason);
+                       if (c.cancel)
+                           o[QStringLiteral("cancel")] = true;
+                   },
+                   [&](const HandoffAnswer& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       o[QStringLiteral("request")] = c.requestId;
+                       o[QStringLiteral("accept")] = c.accept;
+                   },
                    [&](const auto& c) { o[QStringLiteral("id")] = c.id; }, // machine commands
                },
                command);
@@ -309,7 +348,8 @@ bool isOperatorCommand(const QString& name) {
                                    QStringLiteral("send_text"),       QStringLiteral("ping"),
                                    QStringLiteral("mission_upload"),  QStringLiteral("mission_start"),
                                    QStringLiteral("mission_pause"),   QStringLiteral("mission_resume"),
-                                   QStringLiteral("mission_abort"),   QStringLiteral("goto")};
+                                   QStringLiteral("mission_abort"),   QStringLiteral("goto"),
+                                   QStringLiteral("handoff_request"), QStringLiteral("handoff_answer")};
     return names.contains(name);
 }
 
@@ -390,6 +430,8 @@ ParsedCommand parseOperatorCommand(const QString& name, const QJsonObject& json)
         return a.done(MissionAbort{a.id()});
     if (name == QLatin1String("goto"))
         return parseGoTo(name, json);
+    if (name == QLatin1String("handoff_request") || name == QLatin1String("handoff_answer"))
+        return parseHandoff(name, json);
     if (name.isEmpty())
         return {std::nullopt, QStringLiteral("missing \"cmd\""), {}};
     return {std::nullopt, QStringLiteral("unknown command %1").arg(name), {}};

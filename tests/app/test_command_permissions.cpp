@@ -79,6 +79,8 @@ std::vector<Row> specification() {
         {MissionResume{ugv}, ugvRoles},
         {MissionAbort{ugv}, ugvRoles},
         {GoTo{ugv, MissionWaypoint{48.1, 11.5, 1.0, 0.5}}, ugvRoles},
+        {HandoffRequest{ugv, QStringLiteral("shift change"), false}, ugvRoles},
+        {HandoffAnswer{ugv, 3, true}, ugvRoles},
     };
 }
 

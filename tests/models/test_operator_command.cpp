@@ -78,6 +78,12 @@ private slots:
         QTest::newRow("mission_abort") << R"({"cmd":"mission_abort","id":"jaus:126"})";
         QTest::newRow("goto")
             << R"({"cmd":"goto","id":"jaus:126","lat":48.1,"lon":11.5,"speed":1,"tolerance":0.5})";
+        QTest::newRow("handoff_request")
+            << R"({"cmd":"handoff_request","id":"jaus:126","reason":"shift change"})";
+        QTest::newRow("handoff_request, withdrawn")
+            << R"({"cmd":"handoff_request","id":"jaus:126","cancel":true})";
+        QTest::newRow("handoff_answer")
+            << R"({"cmd":"handoff_answer","id":"jaus:126","request":3,"accept":true})";
     }
     void roundTrip() {
         QFETCH(QString, line);
@@ -120,7 +126,9 @@ private slots:
                                                MissionPause{},
                                                MissionResume{},
                                                MissionAbort{},
-                                               GoTo{}};
+                                               GoTo{},
+                                               HandoffRequest{},
+                                               HandoffAnswer{}};
         QCOMPARE(all.size(), std::variant_size_v<OperatorCommand>);
         QSet<QString> names;
         for (const OperatorCommand& c : all) {
@@ -197,6 +205,14 @@ private slots:
         QVERIFY2(p.error.contains(QStringLiteral("\"speed\"")), qPrintable(p.error));
         p = parseOperatorCommand(QStringLiteral("mission_start"), json(R"({"id":"jaus:1","from_index":-1})"));
         QVERIFY(!p.command);
+
+        p = parseOperatorCommand(QStringLiteral("handoff_answer"), json(R"({"id":"jaus:1","request":3})"));
+        QVERIFY(!p.command);
+        QVERIFY2(p.error.contains(QStringLiteral("\"accept\"")), qPrintable(p.error));
+        p = parseOperatorCommand(QStringLiteral("handoff_answer"),
+                                 json(R"({"id":"jaus:1","request":300,"accept":false})"));
+        QVERIFY(!p.command);
+        QVERIFY2(p.error.contains(QStringLiteral("\"request\"")), qPrintable(p.error));
 
         p = parseOperatorCommand(QStringLiteral("clear_stop"), json(R"({"id":"jaus:1","confirm":"yes"})"));
         QVERIFY(!p.command);
