@@ -6,6 +6,7 @@
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
 #include "widgets/FleetListWidget.h"
+#include "widgets/jaus/HandoffBanner.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
 
 #include <QHBoxLayout>
@@ -45,6 +46,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_releaseAll->setEnabled(me.mayControl);
     connect(m_releaseAll, &QPushButton::clicked, this, [this] { send(ReleaseAll{}); });
     top->addWidget(m_releaseAll);
+    m_handoff = new HandoffBanner(bridge, gate, selection, this);
 
     m_table->setModel(m_model);
     m_table->setObjectName(QStringLiteral("jaus-subsystems"));
@@ -91,6 +93,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     auto* l = new QVBoxLayout(this);
     l->setContentsMargins(2, 2, 2, 2);
     l->addLayout(top);
+    l->addWidget(m_handoff);
     l->addWidget(split);
 
     connect(m_model, &QAbstractItemModel::rowsInserted, this,

@@ -21,6 +21,7 @@ class CommandGate;
 class JausSubsystemModel;
 class VehicleDetailsWidget;
 class FleetSelection;
+class HandoffBanner;
 
 class JausControlPanel : public QWidget {
     Q_OBJECT
@@ -32,6 +33,8 @@ public:
     JausSubsystemModel* model() const { return m_model; }
     QTableView* table() const { return m_table; }
     VehicleDetailsWidget* details() const { return m_details; }
+    // Hand-off between consoles: requests to answer, our own request, asking for a held vehicle.
+    HandoffBanner* handoff() const { return m_handoff; }
     // The action buttons of a row (for keyboard users and tests).
     QPushButton* controlButton(std::uint16_t subsystem) const;
     QPushButton* releaseButton(std::uint16_t subsystem) const;
@@ -53,6 +56,7 @@ private:
     JausSubsystemModel* m_model;
     QTableView* m_table;
     VehicleDetailsWidget* m_details;
+    HandoffBanner* m_handoff;
     QLabel* m_roleLabel;
     QPushButton* m_releaseAll;
     QStackedWidget* m_detailsStack;
