@@ -274,8 +274,8 @@ void HandoffClient::onReleaseRequest(RemoteSubsystem& r, const JausId& src, Byte
         m_ctx.notify(Severity::Warning, EventKind::HandoffChanged, r.id(),
                      q.requester.toString() + " asks for control of " + r.snap.callSign + " (authority " +
                          std::to_string(q.authority) + ")" +
-                         (q.explanation.empty() ? "" : ": " + q.explanation) + "; answer within " +
-                         seconds(h.decisionTimeoutS));
+                         (q.explanation.empty() ? "" : ": " + q.explanation) + "; request " +
+                         std::to_string(q.id) + ", answer within " + seconds(h.decisionTimeoutS));
         next.push_back(std::move(n));
     }
     for (const HandoffPrompt& o : h.prompts)
