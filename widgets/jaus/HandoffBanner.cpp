@@ -101,8 +101,7 @@ HandoffBanner::HandoffBanner(JausVehicleBridge* bridge, CommandGate* gate, Fleet
                             QStringLiteral("gui"));
     });
     connect(m_dismiss, &QPushButton::clicked, this, [this] {
-        if (auto v = m_bridge->subsystem(m_statusVehicle))
-            m_dismissed[m_statusVehicle] = v->handoff.reason;
+        m_dismissed[m_statusVehicle] = m_seen.value(m_statusVehicle).handoff.reason;
         refresh();
     });
 
@@ -116,7 +115,11 @@ HandoffBanner::HandoffBanner(JausVehicleBridge* bridge, CommandGate* gate, Fleet
 
     m_tick->setInterval(1000);
     connect(m_tick, &QTimer::timeout, this, &HandoffBanner::updateCountdown);
-    connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this] { refresh(); });
+    connect(bridge, &JausVehicleBridge::subsystemUpdated, this, &HandoffBanner::onVehicle);
+    for (quint16 ss : bridge->subsystems())
+        if (auto v = bridge->subsystem(ss))
+            m_seen[ss] = Seen{v->subsystem,      v->callSign, v->controller, v->controllerAuthority,
+                              v->controlledByUs, v->link,     v->handoff};
     if (m_selection)
         connect(m_selection, &FleetSelection::currentMachineChanged, this, [this] { refresh(); });
     refresh();
@@ -127,20 +130,26 @@ void HandoffBanner::setClock(std::shared_ptr<const ModelClock> clock) {
     updateCountdown();
 }
 
-QString HandoffBanner::nameOf(const JausVehicle& v) const {
+QString HandoffBanner::nameOf(const Seen& v) {
     return v.callSign.isEmpty() ? JausVehicleBridge::machineId(v.subsystem) : v.callSign;
 }
 
+void HandoffBanner::onVehicle(const JausVehicle& v) {
+    Seen seen{v.subsystem,      v.callSign, v.controller, v.controllerAuthority,
+              v.controlledByUs, v.link,     v.handoff};
+    auto it = m_seen.find(v.subsystem);
+    if (it != m_seen.end() && *it == seen)
+        return;
+    m_seen[v.subsystem] = std::move(seen);
+    refresh();
+}
+
 void HandoffBanner::refresh() {
-    const JausVehicle* holder = nullptr;
-    const JausVehicle* own = nullptr;
-    std::optional<JausVehicle> selected;
-    QList<JausVehicle> all;
-    for (quint16 ss : m_bridge->subsystems())
-        if (auto v = m_bridge->subsystem(ss))
-            all.push_back(*v);
+    const Seen* holder = nullptr;
+    const Seen* own = nullptr;
+    const Seen* selected = nullptr;
     const QString current = m_selection ? m_selection->currentId() : QString();
-    for (const JausVehicle& v : all) {
+    for (const Seen& v : m_seen) {
         if (!holder && !v.handoff.prompts.isEmpty())
             holder = &v;
         const bool outcome =
@@ -150,16 +159,16 @@ void HandoffBanner::refresh() {
             (JausVehicleBridge::machineId(v.subsystem) == current || (!own && isWaiting(v.handoff.state))))
             own = &v;
         if (JausVehicleBridge::machineId(v.subsystem) == current)
-            selected = v;
+            selected = &v;
     }
     showPrompt(holder);
     showStatus(own);
-    showAsk(selected ? &*selected : nullptr);
+    showAsk(selected);
     setVisible(m_promptBox->isVisibleTo(this) || m_statusBox->isVisibleTo(this) ||
                m_askBox->isVisibleTo(this));
 }
 
-void HandoffBanner::showPrompt(const JausVehicle* v) {
+void HandoffBanner::showPrompt(const Seen* v) {
     if (!v) {
         m_promptVehicle = 0;
         m_promptBox->setVisible(false);
@@ -205,7 +214,7 @@ void HandoffBanner::answer(bool accept) {
                     QStringLiteral("gui"));
 }
 
-void HandoffBanner::showAsk(const JausVehicle* v) {
+void HandoffBanner::showAsk(const Seen* v) {
     const bool heldByOther = v && v->controller.subsystem != 0 && !v->controlledByUs &&
                              v->link != JausLink::Down && !isWaiting(v->handoff.state) &&
                              v->handoff.prompts.isEmpty();
@@ -234,7 +243,7 @@ void HandoffBanner::showAsk(const JausVehicle* v) {
     m_askBox->setVisible(true);
 }
 
-void HandoffBanner::showStatus(const JausVehicle* v) {
+void HandoffBanner::showStatus(const Seen* v) {
     if (!v) {
         m_statusVehicle = 0;
         m_statusBox->setVisible(false);

@@ -13,6 +13,7 @@
 
 #include <QFrame>
 #include <QHash>
+#include <QMap>
 #include <QPointer>
 
 #include <memory>
@@ -49,13 +50,26 @@ public:
     bool promptShown() const;
 
 private:
+    // What the banner needs of a vehicle, kept from its updates (which come at the pose rate): the banner
+    // redraws only when this changes.
+    struct Seen {
+        quint16 subsystem = 0;
+        QString callSign;
+        JausAddress controller;
+        int controllerAuthority = 0;
+        bool controlledByUs = false;
+        JausLink link = JausLink::Down;
+        JausHandoff handoff;
+        bool operator==(const Seen&) const = default;
+    };
+    void onVehicle(const JausVehicle& v);
     void refresh();
-    void showPrompt(const JausVehicle* holder);
-    void showAsk(const JausVehicle* selected);
-    void showStatus(const JausVehicle* own);
+    void showPrompt(const Seen* holder);
+    void showAsk(const Seen* selected);
+    void showStatus(const Seen* own);
     void updateCountdown();
     void answer(bool accept);
-    QString nameOf(const JausVehicle& v) const;
+    static QString nameOf(const Seen& v);
 
     JausVehicleBridge* m_bridge;
     QPointer<CommandGate> m_gate;
@@ -79,6 +93,7 @@ private:
     quint16 m_promptVehicle = 0;
     JausHandoffPrompt m_prompt;
     quint16 m_askVehicle = 0, m_statusVehicle = 0;
+    QMap<quint16, Seen> m_seen;
     // Outcomes put away with OK, per vehicle (a new outcome shows again).
     QHash<quint16, QString> m_dismissed;
 };
