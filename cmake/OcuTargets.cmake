@@ -99,11 +99,14 @@ function(ocu_moc_own_sources target)
   endif()
 endfunction()
 
-# ocu_add_test(NAME n SOURCES s... [LIBS l...] [XVFB] [TIMEOUT sec] [LABELS l...])
+# ocu_add_test(NAME n SOURCES s... [LIBS l...] [XVFB] [WAITS] [TIMEOUT sec] [LABELS l...])
 # A Qt Test executable registered in CTest. GUI tests run on the offscreen platform with DISPLAY unset;
 # XVFB tests (OpenGL/VTK) run under xvfb-run with the xcb platform.
+# The suite runs with `ctest -j8` on two cores: a test takes 4 of the 8 slots (a core) unless it is marked
+# WAITS, because it spends its time waiting on the clock (timeouts, a vehicle driving, an outage), uses
+# well under a quarter of a core and takes one slot, so such tests run beside the ones that compute.
 function(ocu_add_test)
-  cmake_parse_arguments(T "XVFB;SERIAL" "NAME;TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  cmake_parse_arguments(T "XVFB;SERIAL;WAITS" "NAME;TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   # A build that leaves a protocol out (OCU_PROTOCOLS) leaves out the tests of its libraries.
   ocu_libraries_in_build(in_build ${T_NAME} ${T_LIBS})
   if(NOT in_build)
@@ -134,6 +137,11 @@ function(ocu_add_test)
   # A console started by a test records into the build tree, never into the user's home.
   set_property(TEST ${T_NAME} APPEND PROPERTY ENVIRONMENT
                "OCU_RECORD_DIR=${CMAKE_BINARY_DIR}/test-recordings/${T_NAME}")
+  if(T_WAITS)
+    set_tests_properties(${T_NAME} PROPERTIES PROCESSORS 1)
+  else()
+    set_tests_properties(${T_NAME} PROPERTIES PROCESSORS 4)
+  endif()
   if(T_SERIAL)
     set_tests_properties(${T_NAME} PROPERTIES RUN_SERIAL TRUE)
   endif()

@@ -3,12 +3,12 @@
 # OCU_ALL_PROTOCOLS in CMakeLists.txt, or those given as arguments) it configures a build that leaves it out
 # (build-seams/<protocol>, ccache on), builds everything and runs the tests of that build. First it checks that
 # the shared app files name no protocol (the same check test_include_rules makes, tests/ProtocolNames.cpp).
-#   scripts/check-protocol-seams.sh [protocol...]     OCU_JOBS=N (default 2) compile jobs, OCU_CTEST_JOBS=N (2)
+#   scripts/check-protocol-seams.sh [protocol...]     OCU_JOBS=N (default 2) compile jobs, OCU_CTEST_JOBS=N (8, the test command's slots)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 jobs="${OCU_JOBS:-2}"
-ctest_jobs="${OCU_CTEST_JOBS:-2}"
+ctest_jobs="${OCU_CTEST_JOBS:-8}"
 export CCACHE_DIR="${CCACHE_DIR:-$root/.cache/ccache}"
 export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros}"
 # The builds differ only in their folder for most objects: share them in the cache.

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs the whole test suite RUNS times (default 5) with `ctest -j2` while CPU hogs keep every core busy, and
+# Runs the whole test suite RUNS times (default 5) with `ctest -j8` (the test command's slots, see
+# cmake/OcuTargets.cmake) while CPU hogs keep every core busy, and
 # prints every test that failed in any run (failures/RUNS) with each run's wall time. A test that fails only
 # here waits on a real clock or asserts before an asynchronous state has arrived: fix the test, do not retry.
 #   scripts/stress-tests.sh [RUNS] [ctest arguments...]   e.g. scripts/stress-tests.sh 3 -R jaus
@@ -56,14 +57,14 @@ logs="$build/stress"
 mkdir -p "$logs"
 declare -A failures=()
 times=()
-echo "stress-tests: $runs run(s) of ctest -j2 at nice $niceness beside $nhogs CPU hog(s) on $(nproc) core(s);" \
+echo "stress-tests: $runs run(s) of ctest -j8 at nice $niceness beside $nhogs CPU hog(s) on $(nproc) core(s);" \
   "load:$(uptime | sed 's/.*load average://')"
 cd "$build"
 for ((run = 1; run <= runs; ++run)); do
   log="$logs/run-$run.log"
   start=$(date +%s%N)
   rc=0
-  nice -n "$niceness" ctest -j2 --output-on-failure --timeout 300 "$@" >"$log" 2>&1 || rc=$?
+  nice -n "$niceness" ctest -j8 --output-on-failure --timeout 300 "$@" >"$log" 2>&1 || rc=$?
   ms=$((($(date +%s%N) - start) / 1000000))
   secs=$(printf '%d.%d' $((ms / 1000)) $((ms % 1000 / 100)))
   times+=("$secs")

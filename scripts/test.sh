@@ -19,7 +19,7 @@ sanitized_run() { # build-dir sanitizers ctest-selection...
   cd "$build"
   mapfile -t targets < <(ctest -N "$@" | sed -n 's/^ *Test *#[0-9]*: *//p')
   cmake --build . -j "$(nproc)" --target "${targets[@]}"
-  exec ctest -j2 --output-on-failure --timeout 900 "$@"
+  exec ctest -j4 --output-on-failure --timeout 900 "$@"
 }
 if [ "${1:-}" = "--sanitize" ]; then
   # AddressSanitizer + UBSan: the protocol stacks, the simulators, the models and the bridges (plain C++ and
@@ -44,4 +44,4 @@ fi
 build="${OCU_BUILD_DIR:-$root/build}"
 OCU_BUILD_DIR="$build" "$root/scripts/build.sh"
 cd "$build"
-exec ctest -j2 --output-on-failure --timeout 300
+exec ctest -j8 --output-on-failure --timeout 300
