@@ -290,6 +290,10 @@ void HandoffBanner::showStatus(const Seen* v) {
     m_statusBox->setVisible(true);
 }
 
+QList<QWidget*> HandoffBanner::tabChain() const {
+    return {m_accept, m_deny, m_withdraw, m_dismiss, m_reason, m_ask};
+}
+
 QString HandoffBanner::promptText() const {
     return m_promptBox->isVisibleTo(this) ? m_promptLabel->text() + QLatin1Char('\n') + m_countdown->text()
                                           : QString();

@@ -45,6 +45,8 @@ public:
     QPushButton* withdrawButton() const { return m_withdraw; }
     QPushButton* dismissButton() const { return m_dismiss; }
     QLineEdit* reasonEdit() const { return m_reason; }
+    // Its focusable widgets in Tab order (the panel puts them between "Release all" and the vehicle table).
+    QList<QWidget*> tabChain() const;
     QString promptText() const;
     QString statusText() const;
     bool promptShown() const;

@@ -47,6 +47,13 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     connect(m_releaseAll, &QPushButton::clicked, this, [this] { send(ReleaseAll{}); });
     top->addWidget(m_releaseAll);
     m_handoff = new HandoffBanner(bridge, gate, selection, this);
+    // Keyboard path: Release all, the banner's buttons while it shows, then the vehicle table.
+    QWidget* prev = m_releaseAll;
+    for (QWidget* w : m_handoff->tabChain()) {
+        QWidget::setTabOrder(prev, w);
+        prev = w;
+    }
+    QWidget::setTabOrder(prev, m_table);
 
     m_table->setModel(m_model);
     m_table->setObjectName(QStringLiteral("jaus-subsystems"));
