@@ -12,6 +12,7 @@
 #include "widgets/jaus/HandoffBanner.h"
 #include "widgets/jaus/JausControlPanel.h"
 
+#include <QApplication>
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
@@ -106,7 +107,13 @@ private slots:
         askFromB(a, b);
         if (const QByteArray dir = qgetenv("OCU_SCREENSHOT_DIR"); !dir.isEmpty())
             a.window.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath("handoff-prompt-1366x768.png"));
-        a.banner()->acceptButton()->setFocus();
+        // Keyboard path: from "Release all", Tab reaches Accept.
+        a.window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&a.window));
+        auto* releaseAll = a.panel->findChild<QPushButton*>(QStringLiteral("button-release-all"));
+        releaseAll->setFocus();
+        QTest::keyClick(releaseAll, Qt::Key_Tab);
+        QCOMPARE(QApplication::focusWidget(), a.banner()->acceptButton());
         QTest::keyClick(a.banner()->acceptButton(), Qt::Key_Space);
         QTRY_VERIFY_WITH_TIMEOUT(a.result(QStringLiteral("handoff_answer")).has_value(), 15000);
         QVERIFY(a.result(QStringLiteral("handoff_answer"))->ok);
