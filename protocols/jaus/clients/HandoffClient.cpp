@@ -109,12 +109,15 @@ bool HandoffClient::request(std::uint16_t ss, const std::string& reason) {
     State& s = m_state[ss];
     s.explanation = cfg.callSign + ": " + (reason.empty() ? std::string("hand-off requested") : reason);
     if (!r->snap.handoff.offered)
-        return preempt(*r, r->snap.callSign +
-                               " offers no Enhanced Access Control: the ordinary pre-emption rules apply "
-                               "(RequestControl with authority " +
-                               std::to_string(cfg.authority) +
-                               "; granted only above the holder's authority " +
-                               std::to_string(r->snap.controllerAuthority) + ")");
+        return preempt(*r,
+                       r->snap.callSign +
+                           " offers no Enhanced Access Control: the ordinary pre-emption rules apply "
+                           "(RequestControl with authority " +
+                           std::to_string(cfg.authority) +
+                           (r->snap.controller.subsystem ? "; granted only above the holder's authority " +
+                                                               std::to_string(r->snap.controllerAuthority)
+                                                         : std::string("; no holder known")) +
+                           ")");
     if (!m_ctx.send(r->snap.handoff.component, encode(RequestHandoff{cfg.authority, s.explanation})))
         return m_ctx.sendFailed(ss, "RequestHandoff");
     s.since = s.lastSent = m_ctx.now();
