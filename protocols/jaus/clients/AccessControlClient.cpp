@@ -140,6 +140,12 @@ void AccessControlClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteS
         }
         return;
     }
+    if (!s.wants() &&
+        (s.phase == Phase::Releasing || m_ctx.now() - s.lastReleaseSent < std::chrono::seconds(2))) {
+        // A refusal of a re-request sent before we let go (released or handed over): the release's own answer
+        // (RejectControl) decides, not this one.
+        return;
+    }
     const bool had = r.snap.controlledByUs;
     s.giveUp();
     r.snap.controlledByUs = false;

@@ -252,6 +252,10 @@ private slots:
         QVERIFY(rig.deliver(r, encodeU8(msg::RejectControl, 0)));
         QVERIFY(!r.snap.controlledByUs);
         QCOMPARE(r.snap.access, AccessState::ControlReleased);
+        // A re-request of ours that crossed the grant is refused by the vehicle: still a release.
+        QVERIFY(rig.deliver(r, encodeU8(msg::ConfirmControl, 2)));
+        QCOMPARE(r.snap.access, AccessState::ControlReleased);
+        QCOMPARE(rig.rec.count(EventKind::ControlRejected), 0);
         QCOMPARE(rig.rec.count(EventKind::ControlLost), 0);
         QCOMPARE(rig.rec.count(EventKind::ControlPreempted), 0);
         const int requests = rig.out.count(msg::RequestControl);
