@@ -281,11 +281,19 @@ void HandoffClient::onReleaseRequest(RemoteSubsystem& r, const JausId& src, Byte
                          std::to_string(q.id) + ", answer within " + seconds(h.decisionTimeoutS));
         next.push_back(std::move(n));
     }
-    for (const HandoffPrompt& o : h.prompts)
-        if (std::none_of(next.begin(), next.end(), [&](const HandoffPrompt& n) { return n.id == o.id; }))
-            m_ctx.notify(Severity::Info, EventKind::HandoffChanged, r.id(),
-                         "hand-off request of " + o.requester.toString() + " for " + r.snap.callSign +
-                             " withdrawn or timed out");
+    for (const HandoffPrompt& o : h.prompts) {
+        if (std::any_of(next.begin(), next.end(), [&](const HandoffPrompt& n) { return n.id == o.id; }))
+            continue;
+        // Gone from the vehicle's queue: at the end of the decision time its own timeout (the vehicle's clock
+        // runs a transit ahead of ours), before it the requester withdrew it or stopped re-asserting it.
+        const bool decisionOver =
+            o.decisionTimeoutS > 0 && m_ctx.now() - o.received > secondsD(o.decisionTimeoutS - 1);
+        m_ctx.notify(decisionOver ? Severity::Warning : Severity::Info, EventKind::HandoffChanged, r.id(),
+                     "hand-off request of " + o.requester.toString() + " for " + r.snap.callSign +
+                         (decisionOver ? " not answered within " + seconds(o.decisionTimeoutS) +
+                                             ": the vehicle answers it TIMEOUT"
+                                       : " withdrawn (or no longer re-asserted)"));
+    }
     h.prompts = std::move(next);
     m_ctx.changed(r);
 }

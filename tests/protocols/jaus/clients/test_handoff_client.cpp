@@ -298,6 +298,15 @@ private slots:
         QCOMPARE(r.snap.handoff.prompts.size(), std::size_t(2));
         QVERIFY(rig.deliver(r, encode(RequestReleaseControl{})));
         QVERIFY(r.snap.handoff.prompts.empty());
+        QVERIFY(QString::fromStdString(rig.lastEventText()).contains("withdrawn"));
+        // Dropped by the vehicle at the end of the decision time, a little before our own clock gets there:
+        // said as the timeout it is.
+        QVERIFY(rig.deliver(r, encode(fwd)));
+        rig.runFor(9.8, [&](TimePoint) {});
+        QVERIFY(rig.deliver(r, encode(RequestReleaseControl{})));
+        QVERIFY(r.snap.handoff.prompts.empty());
+        QVERIFY2(QString::fromStdString(rig.lastEventText()).contains("not answered within 10 s"),
+                 rig.lastEventText().c_str());
     }
 };
 
