@@ -159,14 +159,19 @@ public:
         // The platform services (mode, state, lights, trip odometer) are the vehicle driver's too.
         for (const char* name : {"platform_mode", "platform_state", "lights", "odometry"})
             table.allow(QLatin1String(name), {R::UgvOperator, R::Supervisor, R::Admin});
+        // Hand-off between consoles (AEP-4818 §6.3): asking for a vehicle and giving one away are control
+        // commands, for whoever may take control.
+        for (const char* name : {"handoff_request", "handoff_answer"})
+            table.allow(QLatin1String(name), {R::UgvOperator, R::Supervisor, R::Admin});
     }
 
     // To the bridge of the machine named by "id" (asked for when missing); video_status, video_play and
     // video_stop when the site has JAUS vehicles.
     void registerHeadless(HeadlessCommands& table) override {
-        for (const char* name : {"request_control", "release_control", "drive", "drive_start", "drive_stop",
-                                 "mission_start", "mission_pause", "mission_resume", "mission_abort", "goto",
-                                 "platform_mode", "platform_state", "lights", "odometry"})
+        for (const char* name :
+             {"request_control", "release_control", "drive", "drive_start", "drive_stop", "mission_start",
+              "mission_pause", "mission_resume", "mission_abort", "goto", "platform_mode", "platform_state",
+              "lights", "odometry", "handoff_request", "handoff_answer"})
             table.addGateCommand(QLatin1String(name));
         // Inline waypoints, or "file": a GeoJSON route (models/jaus/MissionGeoJson) read here, at the edge.
         table.addGateCommand(QStringLiteral("mission_upload"), readMissionUpload);

@@ -24,6 +24,8 @@ JausBridge::JausBridge(const JausConfig& config, const GeoFrame& frame, QObject*
               for (auto& [id, snap] : batch) {
                   JausVehicle v = jausrow::toVehicle(snap);
                   v.lastMessageUnixMs = modelTimeOfWallMs(v.lastMessageUnixMs); // ages on the models' clock
+                  for (JausHandoffPrompt& p : v.handoff.prompts)
+                      p.receivedMs = modelTimeOfWallMs(p.receivedMs);
                   JausVehicle& latest = m_latest[id]; // a new vehicle starts default: not in emergency
                   const bool wasStopped = latest.emergency;
                   const bool wasOurs = latest.controlledByUs;

@@ -301,6 +301,25 @@ void JausBridge::command(const OperatorCommand& command, OutcomeCallback done) {
                               });
             },
             [&](const Odometry& c) { odometry(c, std::move(done)); },
+            // Hand-off between consoles: the stack says what went on the wire; what followed is the vehicle's
+            // answer (JausVehicle::handoff and the events).
+            [&](const HandoffRequest& c) {
+                sendToVehicle(c.id, what, std::move(done),
+                              [this, reason = c.reason.toStdString(), cancel = c.cancel](quint16 ss,
+                                                                                         OutcomeCallback d) {
+                                  if (cancel)
+                                      m_stack->handoffCancel(ss, std::move(d));
+                                  else
+                                      m_stack->handoffRequest(ss, reason, std::move(d));
+                              });
+            },
+            [&](const HandoffAnswer& c) {
+                sendToVehicle(
+                    c.id, what, std::move(done),
+                    [this, id = std::uint8_t(c.requestId), accept = c.accept](quint16 ss, OutcomeCallback d) {
+                        m_stack->handoffAnswer(ss, id, accept, std::move(d));
+                    });
+            },
             [&](const auto&) { FleetBridge::command(command, std::move(done)); },
         },
         command);

@@ -130,6 +130,7 @@ JausVehicle toVehicle(const SubsystemSnapshot& s) {
                                     QString::fromStdString(e.name), e.panTilt, e.configured});
     v.mission = toMission(s.mission);
     v.platformServices = toPlatformServices(s.platformServices);
+    v.handoff = toHandoff(s.handoff);
     return v;
 }
 
@@ -155,6 +156,25 @@ JausPlatformServices toPlatformServices(const PlatformServicesStatus& p) {
     out.lightsSupported = p.lightsSupported;
     out.odometerM = p.odometerM;
     out.tripM = p.tripM;
+    return out;
+}
+
+static_assert(int(HandoffPhase::None) == int(HandoffState::None) &&
+                  int(HandoffPhase::Completed) == int(HandoffState::Completed) &&
+                  int(HandoffPhase::Preempting) == int(HandoffState::Preempting),
+              "HandoffState mirrors jaus::HandoffPhase");
+
+JausHandoff toHandoff(const HandoffStatus& h) {
+    JausHandoff out;
+    out.offered = h.offered;
+    out.state = HandoffState(int(h.phase)); // the same states in the same order (HandoffTypes.h)
+    out.reason = QString::fromStdString(h.reason);
+    out.requestTimeoutS = h.requestTimeoutS;
+    out.decisionTimeoutS = h.decisionTimeoutS;
+    for (const HandoffPrompt& p : h.prompts)
+        out.prompts.push_back({p.id, p.requester.subsystem, QString::fromStdString(p.requester.toString()),
+                               p.authority, QString::fromStdString(p.explanation), p.receivedUnixMs,
+                               p.decisionTimeoutS});
     return out;
 }
 

@@ -15,5 +15,7 @@ JausVehicleEvent toVehicleEvent(const jaus::JausEvent& e);
 JausMission toMission(const jaus::MissionStatus& m);
 // Platform mode and state, lights, odometer, the comms-lost service (from the vehicle's reports).
 JausPlatformServices toPlatformServices(const jaus::PlatformServicesStatus& p);
+// Hand-off between consoles (prompt stamps still on the wall clock: the bridge moves them to the models').
+JausHandoff toHandoff(const jaus::HandoffStatus& h);
 
 } // namespace ocu::jausrow

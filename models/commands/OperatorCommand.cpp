@@ -162,6 +162,32 @@ ParsedCommand parseGoTo(const QString& name, const QJsonObject& json) {
     return a.done(c);
 }
 
+// handoff_request {"id", "reason", "cancel"}; handoff_answer {"id", "request": queue ID, "accept": bool}.
+ParsedCommand parseHandoff(const QString& name, const QJsonObject& json) {
+    Args a(name, json);
+    const QString id = a.id();
+    auto flag = [&](const char* key, bool required) {
+        const QJsonValue v = json.value(QLatin1String(key));
+        if ((v.isUndefined() && required) || (!v.isUndefined() && !v.isBool()))
+            a.fail(text("%1: \"%2\" must be true or false").arg(name, QLatin1String(key)));
+        return v.toBool(false);
+    };
+    if (name == QLatin1String("handoff_request")) {
+        HandoffRequest c{id, a.string("reason"), flag("cancel", false)};
+        if (c.reason.toUtf8().size() > 200)
+            a.fail(text("handoff_request: \"reason\" is longer than 200 bytes"));
+        return a.done(c);
+    }
+    HandoffAnswer c;
+    c.id = id;
+    const double request = a.number("request", -1);
+    if (!(request >= 0 && request <= 255 && std::floor(request) == request))
+        a.fail(text("handoff_answer: \"request\" must be the request's number (0-255)"));
+    c.requestId = int(request);
+    c.accept = flag("accept", true);
+    return a.done(c);
+}
+
 template <class LinkCommand> ParsedCommand parseLinkCommand(const QString& name, const QJsonObject& json) {
     Args a(name, json);
     LinkCommand c;
@@ -201,6 +227,8 @@ QString commandName(const OperatorCommand& command) {
                           [](const SetPlatformState&) { return QStringLiteral("platform_state"); },
                           [](const SetLights&) { return QStringLiteral("lights"); },
                           [](const Odometry&) { return QStringLiteral("odometry"); },
+                          [](const HandoffRequest&) { return QStringLiteral("handoff_request"); },
+                          [](const HandoffAnswer&) { return QStringLiteral("handoff_answer"); },
                       },
                       command);
 }
@@ -300,6 +328,17 @@ QJsonObject toJson(const OperatorCommand& command) {
                    [&](const SetPlatformState& c) { platformjson::addArguments(o, c); },
                    [&](const SetLights& c) { platformjson::addArguments(o, c); },
                    [&](const Odometry& c) { platformjson::addArguments(o, c); },
+                   [&](const HandoffRequest& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       putIfSet(o, "reason", c.reason);
+                       if (c.cancel)
+                           o[QStringLiteral("cancel")] = true;
+                   },
+                   [&](const HandoffAnswer& c) {
+                       o[QStringLiteral("id")] = c.id;
+                       o[QStringLiteral("request")] = c.requestId;
+                       o[QStringLiteral("accept")] = c.accept;
+                   },
                    [&](const auto& c) { o[QStringLiteral("id")] = c.id; }, // machine commands
                },
                command);
@@ -319,7 +358,8 @@ bool isOperatorCommand(const QString& name) {
                                    QStringLiteral("send_text"),       QStringLiteral("ping"),
                                    QStringLiteral("mission_upload"),  QStringLiteral("mission_start"),
                                    QStringLiteral("mission_pause"),   QStringLiteral("mission_resume"),
-                                   QStringLiteral("mission_abort"),   QStringLiteral("goto")};
+                                   QStringLiteral("mission_abort"),   QStringLiteral("goto"),
+                                   QStringLiteral("handoff_request"), QStringLiteral("handoff_answer")};
     return names.contains(name) || platformjson::isPlatformCommand(name);
 }
 
@@ -402,6 +442,8 @@ ParsedCommand parseOperatorCommand(const QString& name, const QJsonObject& json)
         return parseGoTo(name, json);
     if (platformjson::isPlatformCommand(name))
         return platformjson::parse(name, json);
+    if (name == QLatin1String("handoff_request") || name == QLatin1String("handoff_answer"))
+        return parseHandoff(name, json);
     if (name.isEmpty())
         return {std::nullopt, QStringLiteral("missing \"cmd\""), {}};
     return {std::nullopt, QStringLiteral("unknown command %1").arg(name), {}};

@@ -147,6 +147,24 @@ struct Odometry {
     bool operator==(const Odometry&) const = default;
 };
 
+// ---- JAUS: hand-off between consoles (AEP-4818 §6.3) ----
+
+// Asks the console holding the vehicle to hand it over (Enhanced Access Control), with the reason its
+// operator sees; a vehicle without it is asked by the ordinary pre-emption rules. cancel: withdraw ours.
+struct HandoffRequest {
+    QString id;
+    QString reason;
+    bool cancel = false;
+    bool operator==(const HandoffRequest&) const = default;
+};
+// This console's answer to a request the vehicle forwarded (requestId: the vehicle's queue entry).
+struct HandoffAnswer {
+    QString id;
+    int requestId = 0;
+    bool accept = false;
+    bool operator==(const HandoffAnswer&) const = default;
+};
+
 // ---- ISO 23725: all-stop per AHS link, map, dispatch ----
 
 // The link by name, else the link of the machine `id`, else the only link.
@@ -203,7 +221,8 @@ using OperatorCommand =
     std::variant<StopAll, StopMachine, ClearStop, RequestControl, ReleaseControl, ReleaseAll, Management,
                  DriveStart, DriveStop, TimedDrive, AllStopApply, AllStopRemove, FetchMap, Assign,
                  ResetAssignment, SendText, PingStation, MissionUpload, MissionStart, MissionPause,
-                 MissionResume, MissionAbort, GoTo, SetPlatformMode, SetPlatformState, SetLights, Odometry>;
+                 MissionResume, MissionAbort, GoTo, SetPlatformMode, SetPlatformState, SetLights, Odometry,
+                 HandoffRequest, HandoffAnswer>;
 
 // The visitor idiom: std::visit(Overloaded{[](const StopAll&) {...}, [](const auto&) {...}}, command).
 template <class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };

@@ -2,6 +2,7 @@
 // Qt-typed views of the JAUS picture for the JAUS panels (widgets/jaus): one vehicle (subsystem) as this
 // console knows it, a JAUS event about one, a drive demand, and this console's own JAUS identity. The JAUS
 // bridge fills them on the GUI thread from the stack's snapshots; the panels never see a protocols/jaus type.
+#include "models/jaus/JausHandoff.h"
 #include "models/jaus/JausMission.h"
 #include "models/jaus/JausPlatformServices.h"
 
@@ -113,6 +114,7 @@ struct JausVehicle {
     QVector<JausVideoEndpoint> videoEndpoints; // empty until announced or configured
     JausMission mission;                       // state None until this console uploads one
     JausPlatformServices platformServices;     // mode, state, lights, odometer as the vehicle reports them
+    JausHandoff handoff;                       // hand-off between consoles (our request, requests to us)
 };
 
 enum class JausEventSeverity { Info, Warning, Error };

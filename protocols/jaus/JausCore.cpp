@@ -11,12 +11,12 @@ JausCore::JausCore(JausConfig config, JausListener& listener, JausOutput& output
       m_liveness(m_ctx, m_events), m_discovery(m_ctx, [this](RemoteSubsystem& r) { servicesKnown(r); }),
       m_access(m_ctx, m_drive), m_management(m_ctx, m_events, m_drive), m_pose(m_ctx, m_events),
       m_platform(m_ctx), m_health(m_ctx), m_video(m_ctx), m_mission(m_ctx, m_events, m_access),
-      m_platformServices(m_ctx, m_events, m_access) {
-    m_all = {&m_liveness, &m_discovery, &m_events, &m_access, &m_management, &m_drive,
-             &m_pose,     &m_platform,  &m_health, &m_video,  &m_mission,    &m_platformServices};
+      m_platformServices(m_ctx, m_events, m_access), m_handoff(m_ctx, m_access) {
+    m_all = {&m_liveness, &m_discovery, &m_events, &m_access,  &m_management,       &m_drive,  &m_pose,
+             &m_platform, &m_health,    &m_video,  &m_mission, &m_platformServices, &m_handoff};
     // Timer order within one tick: what discovery found is queried first, commands and streams last.
-    m_afterDiscovery = {&m_platform, &m_events, &m_management, &m_access,          &m_health,
-                        &m_drive,    &m_video,  &m_mission,    &m_platformServices};
+    m_afterDiscovery = {&m_platform, &m_events, &m_management, &m_access,           &m_health,
+                        &m_drive,    &m_video,  &m_mission,    &m_platformServices, &m_handoff};
     // Pan-tilt units and a list driver on a component of its own hold their own access control: their
     // confirmations are the video and mission clients'; so is the list driver's ReportStatus. So are those
     // of a platform-services component the platform client controls itself.

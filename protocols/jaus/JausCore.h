@@ -20,6 +20,7 @@
 #include "protocols/jaus/clients/DiscoveryClient.h"
 #include "protocols/jaus/clients/DriveClient.h"
 #include "protocols/jaus/clients/EventsClient.h"
+#include "protocols/jaus/clients/HandoffClient.h"
 #include "protocols/jaus/clients/HealthMonitorClient.h"
 #include "protocols/jaus/clients/LivenessClient.h"
 #include "protocols/jaus/clients/ManagementClient.h"
@@ -104,6 +105,14 @@ public:
     }
     bool resetTripOdometer(std::uint16_t subsystem) { return m_platformServices.resetTrip(subsystem); }
     bool queryOdometry(std::uint16_t subsystem) { return m_platformServices.queryOdometry(subsystem); }
+    // Hand-off between consoles (HandoffClient): ask the holder, withdraw, answer a forwarded request.
+    bool handoffRequest(std::uint16_t subsystem, const std::string& reason) {
+        return m_handoff.request(subsystem, reason);
+    }
+    bool handoffCancel(std::uint16_t subsystem) { return m_handoff.cancel(subsystem); }
+    bool handoffAnswer(std::uint16_t subsystem, std::uint8_t id, bool accept) {
+        return m_handoff.answer(subsystem, id, accept);
+    }
     // STOP ALL: SetEmergency to every discovered subsystem, whether this console controls it
     // or not; one outcome per subsystem.
     // alreadySent: subsystems whose SetEmergency already left on the caller's thread (JausStack's fast path):
@@ -152,6 +161,7 @@ private:
     VideoClient m_video;
     MissionClient m_mission;
     PlatformClient m_platformServices;
+    HandoffClient m_handoff;
     std::vector<ClientService*> m_all;
     // The timers that run once a subsystem's services are known, in this order (liveness and discovery
     // run before them, for every subsystem).

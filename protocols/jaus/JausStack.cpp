@@ -306,6 +306,15 @@ void JausStack::resetTripOdometer(std::uint16_t ss, OutcomeCallback done) {
 void JausStack::queryOdometry(std::uint16_t ss, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.queryOdometry(ss));
 }
+void JausStack::handoffRequest(std::uint16_t ss, std::string reason, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.handoffRequest(ss, reason));
+}
+void JausStack::handoffCancel(std::uint16_t ss, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.handoffCancel(ss));
+}
+void JausStack::handoffAnswer(std::uint16_t ss, std::uint8_t requestId, bool accept, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.handoffAnswer(ss, requestId, accept));
+}
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
     if (!d->running)

@@ -86,6 +86,13 @@ public:
     void resetTripOdometer(std::uint16_t subsystem, OutcomeCallback done);
     void queryOdometry(std::uint16_t subsystem, OutcomeCallback done);
 
+    // Hand-off between consoles (HandoffClient, AEP-4818 §6.3): `done` says whether RequestHandoff (or, for
+    // a vehicle without Enhanced Access Control, RequestControl), RemoveHandoffRequest or
+    // ConfirmReleaseControl went out; what followed is SubsystemSnapshot::handoff and HandoffChanged events.
+    void handoffRequest(std::uint16_t subsystem, std::string reason, OutcomeCallback done);
+    void handoffCancel(std::uint16_t subsystem, OutcomeCallback done);
+    void handoffAnswer(std::uint16_t subsystem, std::uint8_t requestId, bool accept, OutcomeCallback done);
+
     // Subsystems whose SetEmergency is planned for the caller's-thread fast path now (tests, diagnostics).
     std::size_t plannedStopCount() const;
 

@@ -70,6 +70,8 @@ const char* toString(EventKind k) {
         return "drive-not-sent";
     case EventKind::MissionChanged:
         return "mission-changed";
+    case EventKind::HandoffChanged:
+        return "handoff-changed";
     }
     return "?";
 }
@@ -96,6 +98,32 @@ const char* toString(MissionPhase p) {
         return "lost";
     case MissionPhase::Rejected:
         return "rejected";
+    }
+    return "none";
+}
+
+const char* toString(HandoffPhase p) {
+    switch (p) {
+    case HandoffPhase::None:
+        return "none";
+    case HandoffPhase::Requesting:
+        return "requesting";
+    case HandoffPhase::Queued:
+        return "queued";
+    case HandoffPhase::Granted:
+        return "granted";
+    case HandoffPhase::Completed:
+        return "completed";
+    case HandoffPhase::Denied:
+        return "denied";
+    case HandoffPhase::TimedOut:
+        return "timed out";
+    case HandoffPhase::Refused:
+        return "refused";
+    case HandoffPhase::Cancelled:
+        return "cancelled";
+    case HandoffPhase::Preempting:
+        return "pre-empting";
     }
     return "none";
 }

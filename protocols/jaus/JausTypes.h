@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "protocols/common/Clock.h"
+#include "protocols/jaus/HandoffTypes.h"
 #include "protocols/jaus/JudpCodec.h"
 #include "protocols/jaus/Messages.h"
 #include "protocols/jaus/MissionTypes.h"
@@ -81,6 +82,8 @@ struct SubsystemSnapshot {
     MissionStatus mission;
     // Platform mode and state, lights, odometer, comms-lost service (PlatformClient), from its reports.
     PlatformServicesStatus platformServices;
+    // Hand-off between consoles (HandoffClient): our request, and the requests forwarded to us.
+    HandoffStatus handoff;
 };
 
 enum class Severity { Info, Warning, Error };
@@ -100,8 +103,9 @@ enum class EventKind {
     DecodeError,
     CommandRefused,
     TransportError,
-    DriveNotSent,  // a drive stream message was not taken by the socket, or the stream recovered
-    MissionChanged // the phase of a waypoint mission changed (text names the new one)
+    DriveNotSent,   // a drive stream message was not taken by the socket, or the stream recovered
+    MissionChanged, // the phase of a waypoint mission changed (text names the new one)
+    HandoffChanged, // a hand-off request: ours answered, or another console's forwarded to us (text says)
 };
 const char* toString(EventKind k);
 

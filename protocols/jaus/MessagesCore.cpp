@@ -1,5 +1,6 @@
 // Core service messages (AS5710A): names, management, access control, one-integer bodies.
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/MessagesHandoff.h"
 #include "protocols/jaus/MessagesMission.h"
 #include "protocols/jaus/MessagesPlatformServices.h"
 #include "protocols/jaus/MessagesVideo.h"
@@ -11,11 +12,13 @@ namespace ocu::jaus {
 using namespace codec;
 
 namespace {
-// The names of the message families with tables of their own (mission, video, platform services).
+// The names of the message families with tables of their own (mission, hand-off, video, platform services).
 const char* familyMessageName(std::uint16_t id) {
     const char* name = missionMessageName(id);
     if (!name)
         name = platformServicesMessageName(id);
+    if (!name)
+        name = handoffMessageName(id);
     return name ? name : videoMessageName(id);
 }
 } // namespace

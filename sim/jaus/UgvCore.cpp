@@ -26,6 +26,8 @@ UgvCore::UgvCore(SimulatedUgvConfig config, JausOutput& output, const Clock& clo
     registerPoseSensors();
     registerWaypoints();
     registerPlatform();
+    if (m_cfg.enhancedAccessControl)
+        registerHandoff();
 }
 
 bool UgvCore::isLocal(const JausId& id) const {
@@ -78,6 +80,7 @@ void UgvCore::tick() {
     physics(now);
     m_video.tick();
     tickAccessTimeout(now);
+    tickHandoff(now);
     // Unsolicited heartbeat to [SubsystemID].255.255 at ≥ 1 Hz (AEP-4818 V1.JAUS-43).
     const auto& f = m_cfg.faults;
     if (!f.dropHeartbeat && f.heartbeatRateHz > 0 &&

@@ -8,7 +8,8 @@
 // registers its messages from its own file: UgvDiscovery.cpp, UgvEvents.cpp, UgvAccessControl.cpp,
 // UgvManagement.cpp, UgvDrive.cpp, UgvPoseSensors.cpp, UgvWaypoints.cpp (ListManager, the Local/Global
 // Waypoint (List) Drivers on 3.1, PathReporter on 3.2), UgvPlatform.cpp (Platform Mode/State, Illumination,
-// Odometry on 3.1).
+// Odometry on 3.1),
+// UgvHandoff.cpp (Enhanced Access Control on 3.1).
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -21,6 +22,7 @@
 #include "protocols/jaus/JausConfig.h"
 #include "protocols/jaus/JausOutput.h"
 #include "protocols/jaus/Messages.h"
+#include "protocols/jaus/MessagesHandoff.h"
 #include "protocols/jaus/MessagesMission.h"
 #include "sim/jaus/UgvMessageTable.h"
 #include "sim/jaus/UgvVideo.h"
@@ -65,6 +67,11 @@ struct SimulatedUgvConfig {
     // IlluminationState at start (UgvPlatform.cpp): the running lights (b3), safety lights a UGV on a site
     // keeps on.
     std::uint32_t lights = 1u << 3;
+    // Enhanced Access Control 1.1 on the Core Mobility Component (UgvHandoff.cpp, AEP-4818 §6.3.2.2): the
+    // Handoff Decision Timeout (the controller's answer) and the Handoff Request Timeout (the requester's
+    // re-assertion), whole seconds on the wire, 0 = off.
+    bool enhancedAccessControl = true;
+    double handoffDecisionTimeoutS = 60, handoffRequestTimeoutS = 5;
     // Cameras served over RTSP by SimulatedUgv and announced through Digital Resource Discovery
     // (UgvVideo); empty = no video services.
     std::vector<SimCameraConfig> cameras;
@@ -90,6 +97,19 @@ struct UgvPlatformServices {
     std::uint32_t lights = 0;
     double tripStart[3] = {0, 0, 0}; // TRIP_A-C, odometer metres at their reset
     jaus::JausId emergencyBy;
+};
+// Enhanced Access Control's queue (UgvHandoff.cpp): the hand-off requests forwarded to the controller.
+struct UgvHandoffRequest {
+    std::uint8_t id = 0;
+    jaus::JausId requester;
+    std::uint8_t authority = 0;
+    std::string explanation;
+    TimePoint lastAsserted{}, forwarded{};
+};
+struct UgvHandoffQueue {
+    std::vector<UgvHandoffRequest> requests;
+    jaus::JausId forwardedTo; // the controller the queue was last sent to
+    std::uint8_t nextId = 1;
 };
 
 struct UgvState {
@@ -164,6 +184,7 @@ private:
     void registerPoseSensors();   // pose and velocity sensors, PlatformSpecifications
     void registerWaypoints();     // ListManager, waypoint (list) drivers (3.1), PathReporter (3.2)
     void registerPlatform();      // Platform Mode/State, Illumination, Odometry (3.1)
+    void registerHandoff();       // Enhanced Access Control (3.1)
 
     // Discovery
     std::vector<jaus::ServiceRecord> servicesOf(const jaus::JausId& comp) const;
@@ -201,6 +222,12 @@ private:
     Bytes reportPath(ByteSpan query) const;
     void followRoute(TimePoint now); // sets the drive demand while a route runs (physics)
     void recordPath();
+    // Enhanced Access Control
+    void requestHandoff(const jaus::JausId& src, const jaus::RequestHandoff& request);
+    void confirmRelease(const jaus::JausId& src, ByteSpan p);
+    void answerHandoff(const jaus::JausId& to, std::uint8_t id, jaus::HandoffCode code);
+    void forwardHandoffQueue();
+    void tickHandoff(TimePoint now);
 
     SimulatedUgvConfig m_cfg;
     jaus::JausOutput& m_out;
@@ -224,6 +251,7 @@ private:
     UgvRoute m_route;
     UgvPlatformServices m_platform;
     jaus::ManagementState m_routeManagement = jaus::ManagementState::Standby;
+    UgvHandoffQueue m_handoff;
     UgvMessageTable m_table;
 };
 

@@ -19,6 +19,8 @@ std::vector<ServiceRecord> UgvCore::servicesOf(const JausId& c) const {
     } else if (c == mobility()) {
         s.push_back({"urn:jaus:jss:core:AccessControl", 1, 1});
         s.push_back({"urn:jaus:jss:core:Management", 1, 1});
+        if (m_cfg.enhancedAccessControl)
+            s.push_back({"urn:jaus:jss:iop:EnhancedAccessControl", 1, 1});
         s.push_back({"urn:jaus:jss:mobility:PrimitiveDriver", 1, 1});
         s.push_back({"urn:jaus:jss:mobility:VelocityStateDriver", 1, 1});
         s.push_back({"urn:jaus:jss:ugv:PlatformSpecifications", 1, 0});

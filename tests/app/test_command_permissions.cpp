@@ -83,6 +83,8 @@ std::vector<Row> specification() {
         {SetPlatformState{ugv, 4}, ugvRoles},
         {SetLights{ugv, bitOf(JausLight::Headlights), bitOf(JausLight::Headlights)}, ugvRoles},
         {Odometry{ugv, true}, ugvRoles},
+        {HandoffRequest{ugv, QStringLiteral("shift change"), false}, ugvRoles},
+        {HandoffAnswer{ugv, 3, true}, ugvRoles},
     };
 }
 

@@ -338,6 +338,43 @@ private slots:
                  QStringLiteral("unknown command fake_status"));
     }
 
+    // The JAUS module's hand-off commands: typed, forwarded to the vehicle's bridge with their arguments, and
+    // a malformed answer refused before anything is sent.
+    void jausHandoffCommandsReachTheBridge() {
+#if OCU_TEST_WITH_JAUS
+        Rig rig;
+        for (const auto& m : makeProtocolModules())
+            if (m->aboutName().startsWith(QLatin1String("JAUS")))
+                m->registerHeadless(rig.monitor.commands());
+        QJsonObject r =
+            QJsonDocument::fromJson(
+                rig.monitor.handleLine(R"({"cmd":"handoff_request","id":"jaus:7","reason":"shift change"})"))
+                .object();
+        QVERIFY(r.value(QStringLiteral("ok")).toBool());
+        QCOMPARE(rig.jaus.calls().size(), 1);
+        QCOMPARE(rig.jaus.calls()[0].name, QStringLiteral("handoff_request"));
+        QCOMPARE(rig.jaus.calls()[0].args.value(QStringLiteral("reason")).toString(),
+                 QStringLiteral("shift change"));
+        r = QJsonDocument::fromJson(
+                rig.monitor.handleLine(
+                    R"({"cmd":"handoff_answer","id":"jaus:7","request":3,"accept":false})"))
+                .object();
+        QVERIFY(r.value(QStringLiteral("ok")).toBool());
+        QCOMPARE(rig.jaus.calls().size(), 2);
+        QCOMPARE(rig.jaus.calls()[1].name, QStringLiteral("handoff_answer"));
+        QCOMPARE(rig.jaus.calls()[1].args.value(QStringLiteral("request")).toInt(), 3);
+        QCOMPARE(rig.jaus.calls()[1].args.value(QStringLiteral("accept")).toBool(), false);
+        r = QJsonDocument::fromJson(
+                rig.monitor.handleLine(R"({"cmd":"handoff_answer","id":"jaus:7","request":3})"))
+                .object();
+        QVERIFY(!r.value(QStringLiteral("ok")).toBool());
+        QVERIFY(r.value(QStringLiteral("message")).toString().contains(QStringLiteral("\"accept\"")));
+        QCOMPARE(rig.jaus.calls().size(), 2);
+#else
+        QSKIP("built without JAUS");
+#endif
+    }
+
     void unknownCommandGivesTheSameErrorLineAsBefore() {
         Rig rig;
         const QByteArray expected =

@@ -86,6 +86,12 @@ private slots:
             << R"({"cmd":"lights","id":"jaus:126","headlights":true,"left_turn_signal":false,"ir_light":true})";
         QTest::newRow("odometry read") << R"({"cmd":"odometry","id":"jaus:126"})";
         QTest::newRow("odometry reset") << R"({"cmd":"odometry","id":"jaus:126","reset_trip":true})";
+        QTest::newRow("handoff_request")
+            << R"({"cmd":"handoff_request","id":"jaus:126","reason":"shift change"})";
+        QTest::newRow("handoff_request, withdrawn")
+            << R"({"cmd":"handoff_request","id":"jaus:126","cancel":true})";
+        QTest::newRow("handoff_answer")
+            << R"({"cmd":"handoff_answer","id":"jaus:126","request":3,"accept":true})";
     }
     // The platform commands' arguments: what reaches the bridge, and what is refused at the edge.
     void platformCommands() {
@@ -160,7 +166,9 @@ private slots:
                                                SetPlatformMode{},
                                                SetPlatformState{},
                                                SetLights{},
-                                               Odometry{}};
+                                               Odometry{},
+                                               HandoffRequest{},
+                                               HandoffAnswer{}};
         QCOMPARE(all.size(), std::variant_size_v<OperatorCommand>);
         QSet<QString> names;
         for (const OperatorCommand& c : all) {
@@ -237,6 +245,14 @@ private slots:
         QVERIFY2(p.error.contains(QStringLiteral("\"speed\"")), qPrintable(p.error));
         p = parseOperatorCommand(QStringLiteral("mission_start"), json(R"({"id":"jaus:1","from_index":-1})"));
         QVERIFY(!p.command);
+
+        p = parseOperatorCommand(QStringLiteral("handoff_answer"), json(R"({"id":"jaus:1","request":3})"));
+        QVERIFY(!p.command);
+        QVERIFY2(p.error.contains(QStringLiteral("\"accept\"")), qPrintable(p.error));
+        p = parseOperatorCommand(QStringLiteral("handoff_answer"),
+                                 json(R"({"id":"jaus:1","request":300,"accept":false})"));
+        QVERIFY(!p.command);
+        QVERIFY2(p.error.contains(QStringLiteral("\"request\"")), qPrintable(p.error));
 
         p = parseOperatorCommand(QStringLiteral("clear_stop"), json(R"({"id":"jaus:1","confirm":"yes"})"));
         QVERIFY(!p.command);

@@ -6,6 +6,7 @@
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
 #include "widgets/FleetListWidget.h"
+#include "widgets/jaus/HandoffBanner.h"
 #include "widgets/jaus/PlatformServicesWidget.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
 
@@ -46,6 +47,14 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_releaseAll->setEnabled(me.mayControl);
     connect(m_releaseAll, &QPushButton::clicked, this, [this] { send(ReleaseAll{}); });
     top->addWidget(m_releaseAll);
+    m_handoff = new HandoffBanner(bridge, gate, selection, this);
+    // Keyboard path: Release all, the banner's buttons while it shows, then the vehicle table.
+    QWidget* prev = m_releaseAll;
+    for (QWidget* w : m_handoff->tabChain()) {
+        QWidget::setTabOrder(prev, w);
+        prev = w;
+    }
+    QWidget::setTabOrder(prev, m_table);
 
     m_table->setModel(m_model);
     m_table->setObjectName(QStringLiteral("jaus-subsystems"));
@@ -92,6 +101,7 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     auto* l = new QVBoxLayout(this);
     l->setContentsMargins(2, 2, 2, 2);
     l->addLayout(top);
+    l->addWidget(m_handoff);
     l->addWidget(split);
     m_platform = new PlatformServicesWidget(bridge, gate, this);
     l->addWidget(m_platform);

@@ -22,6 +22,7 @@ class JausSubsystemModel;
 class VehicleDetailsWidget;
 class PlatformServicesWidget;
 class FleetSelection;
+class HandoffBanner;
 
 class JausControlPanel : public QWidget {
     Q_OBJECT
@@ -35,6 +36,8 @@ public:
     VehicleDetailsWidget* details() const { return m_details; }
     // The selected vehicle's platform mode and state, odometer and comms-lost service, with their commands.
     PlatformServicesWidget* platformServices() const { return m_platform; }
+    // Hand-off between consoles: requests to answer, our own request, asking for a held vehicle.
+    HandoffBanner* handoff() const { return m_handoff; }
     // The action buttons of a row (for keyboard users and tests).
     QPushButton* controlButton(std::uint16_t subsystem) const;
     QPushButton* releaseButton(std::uint16_t subsystem) const;
@@ -57,6 +60,7 @@ private:
     QTableView* m_table;
     VehicleDetailsWidget* m_details;
     PlatformServicesWidget* m_platform = nullptr;
+    HandoffBanner* m_handoff;
     QLabel* m_roleLabel;
     QPushButton* m_releaseAll;
     QStackedWidget* m_detailsStack;

@@ -93,6 +93,17 @@ bool AccessControlClient::releaseControl(std::uint16_t ss) {
     return true;
 }
 
+void AccessControlClient::handOver(std::uint16_t ss) {
+    RemoteSubsystem* r = m_ctx.find(ss);
+    if (!r)
+        return;
+    m_drive.beforeRelease(*r);
+    State& s = m_state[ss];
+    s.phase = r->snap.controlledByUs ? Phase::Releasing : Phase::Idle;
+    s.releaseDeadline = m_ctx.now() + secondsD(timeoutS(*r));
+    s.lastReleaseSent = m_ctx.now();
+}
+
 void AccessControlClient::releaseAll() {
     for (auto& [ss, r] : m_ctx.remotes())
         if (wantsControl(ss) || r.snap.controlledByUs)
@@ -127,6 +138,12 @@ void AccessControlClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteS
                              std::to_string(authority) + ")");
             m_ctx.changed(r);
         }
+        return;
+    }
+    if (!s.wants() &&
+        (s.phase == Phase::Releasing || m_ctx.now() - s.lastReleaseSent < std::chrono::seconds(2))) {
+        // A refusal of a re-request sent before we let go (released or handed over): the release's own answer
+        // (RejectControl) decides, not this one.
         return;
     }
     const bool had = r.snap.controlledByUs;
@@ -208,7 +225,14 @@ void AccessControlClient::onReport(RemoteSubsystem& r, const JausId& src, ByteSp
         m_ctx.changed(r);
         return;
     }
-    if (s.lossCheckUntil) {
+    if (s.phase == Phase::Releasing && r.snap.controlledByUs && !ours && m->controller.subsystem != 0) {
+        // Released (or handed over) and someone else holds it already: the RejectControl may still come.
+        s.phase = Phase::Idle;
+        r.snap.controlledByUs = false;
+        r.snap.access = AccessState::ControlReleased;
+        m_ctx.notify(Severity::Info, EventKind::ControlReleased, r.id(),
+                     "control of " + r.snap.callSign + " released to " + m->controller.toString());
+    } else if (s.lossCheckUntil) {
         classify(r, s, *m);
     } else if (r.snap.controlledByUs && !ours && m->controller.subsystem != 0 &&
                m_ctx.now() - s.lastConfirm > std::chrono::milliseconds(500)) {

@@ -30,6 +30,9 @@ public:
     // Commands; each returns false and emits CommandRefused when not allowed.
     bool requestControl(std::uint16_t subsystem);
     bool releaseControl(std::uint16_t subsystem);
+    // We granted a hand-off (HandoffClient): zero drive commands, stop re-requesting and take the vehicle's
+    // RejectControl as a release, without a ReleaseControl of our own (the vehicle passes control on).
+    void handOver(std::uint16_t subsystem);
     // Every subsystem we control or asked for (stop() of the stack).
     void releaseAll();
     // True between requestControl and its refusal, loss or release.

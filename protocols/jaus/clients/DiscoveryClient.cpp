@@ -92,6 +92,10 @@ bool DiscoveryClient::answerServices(const JausId& src, std::uint16_t id) {
                          {"urn:jaus:jss:core:Events", 1, 1},
                          {"urn:jaus:jss:core:Liveness", 1, 1},
                          {"urn:jaus:jss:core:Discovery", 1, 1}}}}};
+    // A console that may hold a vehicle answers hand-off requests the vehicle forwards (HandoffClient): the
+    // HandoffController of AEP-4818 §6.3, in the public 1.1 layouts.
+    if (m_ctx.config().mayControl())
+        node.components.front().services.push_back({"urn:jaus:jss:iop:HandoffController", 1, 1});
     if (id == msg::QueryServices)
         m_ctx.send(src, encode(ReportServices{{node}}));
     else

@@ -278,7 +278,11 @@ private slots:
         QVERIFY(ri && ri->type == IdType::Ocu && ri->identification == "OCU-200");
         QCOMPARE(decodeReportIdentification(rig.out.sent[1].payload)->type, IdType::Node);
         auto rs = decodeReportServices(rig.out.sent[2].payload);
-        QVERIFY(rs && rs->nodes.size() == 1 && rs->nodes[0].components[0].services.size() == 4);
+        QVERIFY(rs && rs->nodes.size() == 1 && rs->nodes[0].components[0].services.size() == 5);
+        // Transport, Events, Liveness, Discovery and, for a console that may hold a vehicle,
+        // HandoffController.
+        QCOMPARE(QString::fromStdString(rs->nodes[0].components[0].services.back().uri),
+                 QStringLiteral("urn:jaus:jss:iop:HandoffController"));
         auto sl = decodeReportServiceList(rig.out.sent[3].payload);
         QVERIFY(sl && sl->subsystems.size() == 1 && sl->subsystems[0].subsystem == 200);
         for (auto& s : rig.out.sent)
