@@ -17,8 +17,9 @@
 namespace ocu {
 
 namespace {
-// Arrangements saved before there were workspaces are not restored (their docks were in other places).
-constexpr int kLayoutVersion = 2;
+// Arrangements saved before there were workspaces, or before a vehicle's video was a panel of its own, are
+// not restored (their docks were in other places).
+constexpr int kLayoutVersion = 3;
 } // namespace
 
 QList<Workspace> MainWindow::offeredWorkspaces() const {

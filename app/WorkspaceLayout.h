@@ -22,7 +22,8 @@ enum class PanelKind {
     CrewMessages,    // text messages with the crews
     Dispatch,        // assignments of haul trucks
     Production,      // tonnes and loads
-    Video,           // a vehicle's camera with its drive controls
+    Video,           // a vehicle's camera
+    Teleop,          // a vehicle's drive controls (stick, speed, emergency stop)
     VehicleControl,  // control of vehicles and their details
     Missions,        // a vehicle's missions (plans of waypoints)
 };

@@ -165,7 +165,8 @@ private slots:
         QStringList views{"fleet", "map", "3d", "passcounts", "events"};
         if (ocutest::kWithJaus) // the JAUS module's panels
             views << "jaus"
-                  << "teleop";
+                  << "teleop"
+                  << "video";
         for (const QString& view : views) {
             const QString png = m_dir.filePath(QString("%1.png").arg(view));
             Run r = run({"--screenshot", png, "--view", view, "--settle", "0"});

@@ -180,6 +180,8 @@ QBoxLayout* TeleopPanel::buildInputs() {
     settings->setRowWrapPolicy(QFormLayout::WrapLongRows);
     auto* inputs = new QBoxLayout(QBoxLayout::LeftToRight);
     m_inputs = inputs;
+    // The settings get two thirds of the width (their labels then stay beside their fields, a row each: a
+    // short dock, the laptop's side column, has no height to spare).
     inputs->addWidget(m_stick, 1);
     auto* right = new QVBoxLayout;
     m_inputsRight = right;
@@ -190,9 +192,9 @@ QBoxLayout* TeleopPanel::buildInputs() {
                                    "J/L pan, I/K tilt (or the joystick hat)."),
                                 this);
     keysHint->setWordWrap(true);
-    right->addWidget(keysHint);
+    m_keysHint = keysHint;
     right->addStretch(1);
-    inputs->addLayout(right, 1);
+    inputs->addLayout(right, 2);
     return inputs;
 }
 
@@ -214,7 +216,8 @@ void TeleopPanel::buildLayout(QBoxLayout* inputs) {
     l->addLayout(stops);
     l->addWidget(m_videoHold);
     l->addWidget(m_video, 3);
-    l->addLayout(inputs); // at its size: every pixel of height more goes to the video
+    l->addLayout(inputs);     // at its size: every pixel of height more goes to the video
+    l->addWidget(m_keysHint); // the whole width: fewer lines than beside the stick
 }
 
 // The on-screen stick drives or moves the camera; the video pane reports its watchdog and camera changes.
@@ -264,7 +267,8 @@ void TeleopPanel::connectInputDevice(InputDevice* device) {
 
 TeleopPanel::~TeleopPanel() {
     // Closing the window hides the video pane after this object is gone: no more calls into it from there.
-    disconnect(m_video, nullptr, this, nullptr);
+    if (m_video)
+        disconnect(m_video, nullptr, this, nullptr);
     if (!m_subsystem || m_session == Session::Closed)
         return;
     if (m_gate) // no handler: this panel is going away
@@ -272,6 +276,30 @@ TeleopPanel::~TeleopPanel() {
                         QStringLiteral("teleop"));
     else
         m_bridge->stopDriving(m_subsystem);
+}
+
+TeleopVideoPane* TeleopPanel::video() const {
+    return m_video;
+}
+
+TeleopVideoPane* TeleopPanel::detachVideo() {
+    if (m_videoOnScreen)
+        return m_video;
+    layout()->removeWidget(m_video);
+    m_video->setParent(nullptr);
+    static_cast<QBoxLayout*>(layout())->addStretch(1); // the controls together at the top
+    m_videoOnScreen = new OnScreenWatcher(m_video);
+    connect(m_videoOnScreen, &OnScreenWatcher::changed, this, [this](bool on) {
+        if (!on && !m_video->fullScreenWindow())
+            releaseAll(tr("teleop video hidden"));
+    });
+    return m_video;
+}
+
+bool TeleopPanel::inSight() const {
+    if (m_video->fullScreenWindow())
+        return true;
+    return m_onScreen->onScreen() && (!m_videoOnScreen || m_videoOnScreen->onScreen());
 }
 
 void TeleopPanel::releaseAll(const QString& reason) {
@@ -409,7 +437,7 @@ void TeleopPanel::onCommand(DriveAxes axes) {
     case Session::Closed:
         if (axes.isZero())
             m_waitForRelease = false;
-        else if (!m_waitForRelease && (m_onScreen->onScreen() || m_video->fullScreenWindow()))
+        else if (!m_waitForRelease && inSight())
             startSession(); // the demand follows once the gate says the session is open
         return;
     case Session::Opening:
