@@ -15,7 +15,9 @@
 #include "app/SiteRuntime.h"
 #include "app/WorkspaceBar.h"
 
+#include "models/AlarmModel.h"
 #include "tests/support/BuiltProtocols.h"
+#include "widgets/EventLogWidget.h"
 #include "widgets/SiteMapView.h"
 #ifdef OCU_TEST_WITH_JAUS
 #include "widgets/jaus/TeleopVideoPane.h"
@@ -130,8 +132,15 @@ int visibleRows(QTableView* t) {
     return row > 0 ? t->viewport()->height() / row : 0;
 }
 
-// Problems of the docks now on screen: a panel scroll area that needs to scroll sideways, a button narrower
-// than its text.
+// The tables checked for sideways scrolling: those of the dispatcher's panels and the event log (their long
+// texts elide).
+bool sidewaysChecked(QDockWidget* d) {
+    return d->objectName() == QLatin1String("dock-dispatch") ||
+           d->objectName() == QLatin1String("dock-events");
+}
+
+// Problems of the docks now on screen: a panel scroll area or a table that needs to scroll sideways, a
+// button narrower than its text.
 QStringList cutOff(MainWindow& w) {
     QStringList out;
     for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
@@ -145,6 +154,15 @@ QStringList cutOff(MainWindow& w) {
                            .arg(d->windowTitle())
                            .arg(s->horizontalScrollBar()->maximum())
                            .arg(d->width());
+        }
+        for (QTableView* t : d->findChildren<QTableView*>()) {
+            if (!t->isVisible() || t->visibleRegion().isEmpty() || !sidewaysChecked(d))
+                continue;
+            if (t->horizontalHeader()->length() > t->viewport()->width())
+                out << QStringLiteral("%1: table %2 scrolls sideways (columns %3 px, view %4 px)")
+                           .arg(d->windowTitle(), t->objectName())
+                           .arg(t->horizontalHeader()->length())
+                           .arg(t->viewport()->width());
         }
         for (QAbstractButton* b : d->findChildren<QAbstractButton*>()) {
             if (!b->isVisible() || b->text().isEmpty() || b->visibleRegion().isEmpty())
@@ -259,6 +277,12 @@ QStringList checkWorkspace(MainWindow& window, QSize size) {
         const int rows = visibleRows(events);
         if (rows < (small ? 6 : 10))
             problems << QStringLiteral("%1: event log shows %2 rows").arg(ws).arg(rows);
+        // The message gets the width the other columns leave, never less than its share.
+        const int message = events->columnWidth(AlarmModel::ColText), all = events->viewport()->width();
+        qInfo("  %s: event log message column %d of %d px", qPrintable(ws), message, all);
+        if (message * 100 < all * EventLogWidget::kMessagePercent - all)
+            problems
+                << QStringLiteral("%1: event log message column %2 of %3 px").arg(ws).arg(message).arg(all);
     }
     if (QTableView* dispatch = mainTable(window.panelWidget(QStringLiteral("dispatch")));
         dispatch && dispatch->isVisible()) {
