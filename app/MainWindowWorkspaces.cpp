@@ -142,9 +142,9 @@ void MainWindow::fitDocksToWindow() {
     if (QDockWidget* side = top ? top : bottom)
         resizeDocks({g.main.first(), side}, {w * mainPercent / 100, w * (100 - mainPercent) / 100},
                     Qt::Horizontal);
+    const int topPercent = w >= 1600 && plan.topPercentLarge > 0 ? plan.topPercentLarge : plan.topPercent;
     if (top && bottom)
-        resizeDocks({top, bottom}, {h * plan.topPercent / 100, h * (100 - plan.topPercent) / 100},
-                    Qt::Vertical);
+        resizeDocks({top, bottom}, {h * topPercent / 100, h * (100 - topPercent) / 100}, Qt::Vertical);
     m_fitPending = false;
 }
 

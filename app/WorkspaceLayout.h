@@ -44,6 +44,7 @@ struct WorkspacePlan {
     int mainPercentSmall = 58; // share of the window's width for the main area below 1600 px
     int mainPercentLarge = 64; // and from 1600 px
     int topPercent = 50;       // the side column's top group's share of its height
+    int topPercentLarge = 0;   // and from 1600 px (0: the same)
 };
 
 WorkspacePlan workspacePlan(Workspace workspace);

@@ -184,12 +184,14 @@ static void applyWithinWidth(QTableView* view) {
                              header->fontMetrics().horizontalAdvance(QStringLiteral("Mm…")) + 8);
     QList<Fitted> fitted;
     QMap<int, int> width;
-    int stretched = 0;
+    int stretched = 0; // the width the stretched columns keep at least
     for (int c = 0; c < columns; ++c) {
         if (header->isSectionHidden(c))
             continue;
         if (!isFitted(header, c, columns)) {
-            ++stretched;
+            // A stretched last section is never narrower than the default size (QHeaderView keeps it).
+            stretched += header->stretchLastSection() && c == columns - 1 ? header->defaultSectionSize()
+                                                                          : header->minimumSectionSize();
             continue;
         }
         const int w = preferred.value(QString::number(c), header->sectionSize(c)).toInt();
@@ -199,9 +201,7 @@ static void applyWithinWidth(QTableView* view) {
         width[c] = w;
     }
     const int stretchPercent = view->property(kWithinProperty).toInt();
-    const int budget = available - (stretched > 0 ? qMax(header->minimumSectionSize() * stretched,
-                                                         available * stretchPercent / 100)
-                                                  : 0);
+    const int budget = available - (stretched > 0 ? qMax(stretched, available * stretchPercent / 100) : 0);
     // What they want when it fits; else tier by tier, the lowest first, each down to its floors.
     int total = 0;
     QMap<int, QList<Fitted*>> byTier;

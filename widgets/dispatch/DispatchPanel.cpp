@@ -85,6 +85,7 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     // The truck's name whole, the others elided as far as need be.
     setColumnShrinkTier(m_table, DispatchModel::ColTruck, 1, m_table->columnWidth(DispatchModel::ColTruck));
     keepColumnsWithinWidth(m_queueTable);
+    keepColumnsFitted(m_queueTable); // a few rows: their texts ("Shovel (load)") set the widths wanted
 
     buildControls(top);
     connectControls(source, selection);
@@ -97,11 +98,12 @@ void DispatchPanel::resizeEvent(QResizeEvent* event) {
     const Qt::Orientation o = width() >= m_sideBySideWidth ? Qt::Horizontal : Qt::Vertical;
     if (m_split->orientation() != o) {
         m_split->setOrientation(o);
-        // Below the trucks the queues get a quarter of the height (five areas of a pit: a few rows).
-        m_split->setStretchFactor(0, o == Qt::Horizontal ? 4 : 3);
+        // Below the trucks the queues get a third of the height (the areas of a pit: a few rows).
+        m_split->setStretchFactor(0, o == Qt::Horizontal ? 4 : 2);
         m_split->setStretchFactor(1, 1);
         const int total = o == Qt::Horizontal ? m_split->width() : m_split->height();
-        m_split->setSizes({total * 3 / 4, total / 4});
+        m_split->setSizes(o == Qt::Horizontal ? QList<int>{total * 4 / 5, total / 5}
+                                              : QList<int>{total * 2 / 3, total / 3});
     }
 }
 
