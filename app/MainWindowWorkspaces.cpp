@@ -296,8 +296,13 @@ void MainWindow::showEvent(QShowEvent* event) {
             if (QDockWidget* d = dock(key); d && d->isVisible())
                 d->raise();
     }
-    if (m_fitPending) // the size was set before show (screenshot, restored geometry without a state)
-        fitDocksToWindow();
+    // The size was set before show (first start, screenshot, restored geometry without a state): shared out
+    // once the layout has placed the docks at it (shared out now, the layout's first pass undoes it).
+    if (m_fitPending)
+        QTimer::singleShot(0, this, [this] {
+            if (m_fitPending)
+                fitDocksToWindow();
+        });
 }
 
 } // namespace ocu
