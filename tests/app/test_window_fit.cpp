@@ -2,10 +2,12 @@
 // its default arrangement, at 1366x768 and 1920x1080, in English and German. Checked from the real widgets:
 // - the map (the video in the UGV workspace) gets at least 45 % of a 1366x768 window and 55 % of 1920x1080;
 // - no panel of controls needs to scroll sideways (its controls' row is cut at the dock's edge otherwise), on
-//   every tab of every dock of the workspace (each tab raised in turn), and no button is narrower than its
-//   text;
+//   every tab of every dock of the workspace (each tab raised in turn), nor do the dispatch tables and the
+//   event log (their texts elide), and no button is narrower than its text;
 // - the workspace shows the panels of its kinds and no other; STOP ALL stays visible;
-// - the event log and the dispatch table show a useful number of rows where they are in front;
+// - the event log and the dispatch table show a useful number of rows where they are in front, the event
+//   log's message column keeps its share of the width;
+// - the UGV workspace's drive controls need no scrolling, with a row to spare;
 // - a site without a protocol has none of its panels, in no workspace (the paving demo: no JAUS, no ISO
 // 23725;
 //   the built-in site without OSYRIS: no pass counts, no crew messages).

@@ -3,7 +3,8 @@
 // (W/A/S/D or arrows with the dead-man key), SDL2 joysticks; wrench effort or velocity as the platform
 // offers; a speed limit within the platform specifications; zero on release, focus loss and joystick
 // loss; a large E-STOP (Space, Esc) and clear-emergency only by holding a confirm button.
-// The vehicle's video above the controls (TeleopVideoPane: cameras, overlays, full-screen window),
+// The vehicle's video above the controls, or in a panel of its own (detachVideo; TeleopVideoPane: cameras,
+// overlays, full-screen window),
 // the video watchdog (driving is held while the video is lost or too old, and resumes only by the
 // operator's Resume once it is back), and the camera's pan-tilt from J/L/I/K, the stick's camera mode and
 // a joystick hat.
