@@ -105,7 +105,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     applyDefaultLayout();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The panels go in their order, whatever the docks' order among the window's children after a layout:
+    // a panel may use one listed after it (drive controls whose picture is a panel of its own).
+    for (const PanelSpec& p : std::as_const(m_panels))
+        delete m_docks.take(p.key);
+}
 
 QString MainWindow::panelKey(Panel panel) {
     switch (panel) {

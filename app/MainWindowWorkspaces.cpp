@@ -17,8 +17,9 @@
 namespace ocu {
 
 namespace {
-// Arrangements saved before there were workspaces are not restored (their docks were in other places).
-constexpr int kLayoutVersion = 2;
+// Arrangements saved before there were workspaces, or before a vehicle's video was a panel of its own, are
+// not restored (their docks were in other places).
+constexpr int kLayoutVersion = 3;
 } // namespace
 
 QList<Workspace> MainWindow::offeredWorkspaces() const {
@@ -141,9 +142,9 @@ void MainWindow::fitDocksToWindow() {
     if (QDockWidget* side = top ? top : bottom)
         resizeDocks({g.main.first(), side}, {w * mainPercent / 100, w * (100 - mainPercent) / 100},
                     Qt::Horizontal);
+    const int topPercent = w >= 1600 && plan.topPercentLarge > 0 ? plan.topPercentLarge : plan.topPercent;
     if (top && bottom)
-        resizeDocks({top, bottom}, {h * plan.topPercent / 100, h * (100 - plan.topPercent) / 100},
-                    Qt::Vertical);
+        resizeDocks({top, bottom}, {h * topPercent / 100, h * (100 - topPercent) / 100}, Qt::Vertical);
     m_fitPending = false;
 }
 
@@ -295,8 +296,13 @@ void MainWindow::showEvent(QShowEvent* event) {
             if (QDockWidget* d = dock(key); d && d->isVisible())
                 d->raise();
     }
-    if (m_fitPending) // the size was set before show (screenshot, restored geometry without a state)
-        fitDocksToWindow();
+    // The size was set before show (first start, screenshot, restored geometry without a state): shared out
+    // once the layout has placed the docks at it (shared out now, the layout's first pass undoes it).
+    if (m_fitPending)
+        QTimer::singleShot(0, this, [this] {
+            if (m_fitPending)
+                fitDocksToWindow();
+        });
 }
 
 } // namespace ocu

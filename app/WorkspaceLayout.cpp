@@ -19,15 +19,18 @@ WorkspacePlan workspacePlan(Workspace workspace) {
                 {K::CrewMessages, K::Site3D, K::Alarms},
                 {K::PassCounts, K::CompactionAreas, K::CrewMessages}};
     case Workspace::Ugv:
-        // The video is the main area; it needs more of the width than a map does. The event log's controls
-        // need more than the narrow side column (the alarm count stays in the status bar).
+        // The video is the main area, the drive controls in front below the map (both in sight: driving
+        // needs them; on a 768-px screen the controls take most of the column's height, with a row to
+        // spare). The event log's controls need more than the side column (the alarm count stays in the
+        // status bar).
         return {{K::Video},
                 {K::Map},
-                {K::VehicleControl, K::Missions},
-                {K::Video, K::VehicleControl, K::Missions},
-                72,
-                72,
-                45};
+                {K::Teleop, K::VehicleControl, K::Missions},
+                {K::Video, K::Teleop, K::VehicleControl, K::Missions},
+                62,
+                68,
+                30,
+                48};
     case Workspace::Monitor:
         return {{K::Map}, {K::Fleet}, {K::Alarms}, {}};
     case Workspace::All:
@@ -35,13 +38,13 @@ WorkspacePlan workspacePlan(Workspace workspace) {
     }
     // Every panel: the 3D view below with the tables (as a tab beside the map its tab bar would take the
     // map's height), the side column as wide as for Dispatch.
-    return {
-        {K::Map},
-        {K::Fleet, K::Dispatch, K::VehicleControl, K::Video, K::Missions},
-        {K::Alarms, K::PassCounts, K::CompactionAreas, K::CrewMessages, K::Production, K::Site3D, K::Other},
-        {},
-        55,
-        64};
+    return {{K::Map},
+            {K::Fleet, K::Dispatch, K::VehicleControl, K::Video, K::Missions},
+            {K::Alarms, K::Teleop, K::PassCounts, K::CompactionAreas, K::CrewMessages, K::Production,
+             K::Site3D, K::Other},
+            {},
+            55,
+            64};
 }
 
 QString workspaceKey(Workspace workspace) {

@@ -22,7 +22,8 @@ enum class PanelKind {
     CrewMessages,    // text messages with the crews
     Dispatch,        // assignments of haul trucks
     Production,      // tonnes and loads
-    Video,           // a vehicle's camera with its drive controls
+    Video,           // a vehicle's camera
+    Teleop,          // a vehicle's drive controls (stick, speed, emergency stop)
     VehicleControl,  // control of vehicles and their details
     Missions,        // a vehicle's missions (plans of waypoints)
 };
@@ -43,6 +44,7 @@ struct WorkspacePlan {
     int mainPercentSmall = 58; // share of the window's width for the main area below 1600 px
     int mainPercentLarge = 64; // and from 1600 px
     int topPercent = 50;       // the side column's top group's share of its height
+    int topPercentLarge = 0;   // and from 1600 px (0: the same)
 };
 
 WorkspacePlan workspacePlan(Workspace workspace);

@@ -9,6 +9,8 @@ ocu=$(cd "${1:-$root/build}" && pwd)/app/ocu
 out=$root/docs/screenshots/workspaces
 mkdir -p "$out"
 cd "$(mktemp -d)"
+# The default arrangements: no arrangement saved by an earlier run or by the user is restored.
+export XDG_CONFIG_HOME=$PWD/config
 shot() { # FILE SETTLE ARGS...
   local file=$1 settle=$2
   shift 2

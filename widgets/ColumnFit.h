@@ -25,4 +25,18 @@ void setColumnFitCap(QTableView* view, int column, int maxPx);
 // title rather than the header's default section size (100 px for a two-digit count column).
 void startColumnsAtHeaderWidth(QTableView* view);
 
+// Gives the view a horizontal header whose titles are elided where their column is narrower than they are
+// (Qt 6.4's styles cut them at both ends). Before the header is set up: it replaces the view's.
+void useElidingHeader(QTableView* view);
+
+// Keeps the columns within the view's width, so that it never scrolls sideways: where their widths (as set,
+// or as fitted to their content) add up to more than the viewport, the widest fitted columns give up width
+// first, each down to a floor of two letters of its title, their text elided; the stretched column keeps at
+// least `stretchPercent` of the width. Applied on every resize of the view.
+void keepColumnsWithinWidth(QTableView* view, int stretchPercent = 0);
+// The order in which columns give up width: a column of a higher tier (default 0) only once those of the
+// lower tiers are at their floors, and then down to minPx (0: two letters of its title; a name that must stay
+// whole, a time of day).
+void setColumnShrinkTier(QTableView* view, int column, int tier, int minPx = 0);
+
 } // namespace ocu

@@ -19,6 +19,7 @@
 #include <QResizeEvent>
 #include <QScrollBar>
 #include <QSplitter>
+#include <QStyledItemDelegate>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -108,8 +109,26 @@ void EventLogWidget::buildLayout() {
         {bar->minimumSize().width(), shelfRow->minimumSize().width(), countsRow->minimumSize().width()}));
 }
 
+namespace {
+
+// A narrowed time column keeps the time of day ("…01:24:42"): elided at the left, the date first.
+class TimeOfDayDelegate : public QStyledItemDelegate {
+public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+
+protected:
+    void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override {
+        QStyledItemDelegate::initStyleOption(option, index);
+        option->textElideMode = Qt::ElideLeft;
+        option->features &= ~QStyleOptionViewItem::WrapText; // one line: wrapped, the date would stay
+    }
+};
+
+} // namespace
+
 void EventLogWidget::setupTable() {
     m_view->setModel(m_proxy);
+    useElidingHeader(m_view);
     m_view->setToolTip(m_details->placeholderText());
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
@@ -119,12 +138,22 @@ void EventLogWidget::setupTable() {
     m_view->verticalHeader()->setDefaultSectionSize(20);
     m_view->horizontalHeader()->setStretchLastSection(false);
     m_view->horizontalHeader()->setSectionResizeMode(AlarmModel::ColText, QHeaderView::Stretch);
-    // The message takes the remaining width; the other columns fit their content from their
-    // title up, the long ones capped (the tooltip shows the full text) so a 1366-px laptop keeps the message.
+    // The message takes the remaining width, at least kMessagePercent of it; the other columns fit their
+    // content from their title up, the long ones capped, and give up width (elided: the tooltip shows the
+    // full text) where the view is narrower than they want, so a 1366-px laptop keeps the message. The time
+    // keeps its time of day.
     startColumnsAtHeaderWidth(m_view);
     setColumnFitCap(m_view, AlarmModel::ColKind, 130);
     setColumnFitCap(m_view, AlarmModel::ColMachine, 120);
     setColumnFitCap(m_view, AlarmModel::ColAck, 130);
+    // The long columns (kind, machine, acknowledged by) give up width first, then the time (its time of day
+    // stays), the short ones last.
+    m_view->setItemDelegateForColumn(AlarmModel::ColTime, new TimeOfDayDelegate(m_view));
+    setColumnShrinkTier(m_view, AlarmModel::ColTime, 1,
+                        m_view->fontMetrics().horizontalAdvance(QStringLiteral("…00:00:00")) + 12);
+    for (int c : {int(AlarmModel::ColSeverity), int(AlarmModel::ColPriority), int(AlarmModel::ColCount)})
+        setColumnShrinkTier(m_view, c, 2);
+    keepColumnsWithinWidth(m_view, kMessagePercent);
     keepColumnsFitted(m_view);
 }
 

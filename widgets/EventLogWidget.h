@@ -24,6 +24,8 @@ class EventLogWidget : public QWidget {
     Q_OBJECT
 public:
     explicit EventLogWidget(AlarmModel* alarms, QWidget* parent = nullptr);
+    // The message column's least share of the table's width (the other columns elide below their widths).
+    static constexpr int kMessagePercent = 35;
 
     QTableView* tableView() const { return m_view; }
     AlarmFilterProxy* proxy() const { return m_proxy; }

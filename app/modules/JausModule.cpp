@@ -33,6 +33,7 @@ namespace {
 // Their --view names and saved-layout keys.
 const QString kControlPanel = QStringLiteral("jaus");
 const QString kTeleopPanel = QStringLiteral("teleop");
+const QString kVideoPanel = QStringLiteral("video");
 const QString kMissionPanel = QStringLiteral("mission");
 
 // mission_upload: inline "waypoints", or "file": a GeoJSON route read into them (the result echoes the file).
@@ -88,8 +89,10 @@ public:
     }
     FleetBridge* bridge() const override { return m_bridge; }
 
-    // The access-control column right of the map, teleop as its second tab (Ctrl+4, Ctrl+5), the mission
-    // panel in the UGV workspace's lower group (Ctrl+U: every Ctrl+digit is taken).
+    // The access-control column right of the map, teleop as its second tab (Ctrl+4, Ctrl+5), the teleop
+    // video in a panel of its own (the UGV workspace's main area; Ctrl+I) and the mission panel in the UGV
+    // workspace's lower group (Ctrl+U: every Ctrl+digit is taken). The video comes after teleop: its dock is
+    // created, and destroyed, after the teleop panel's that drives from it.
     QList<PanelSpec> panels() const override {
         return {
             {kControlPanel,
@@ -105,7 +108,15 @@ public:
              QCoreApplication::translate("ocu::MainWindow", "Teleop panel: W/A/S/D or arrows with the "
                                                             "dead-man key held; Space or Esc: emergency "
                                                             "stop"),
-             PanelKind::Video},
+             PanelKind::Teleop},
+            {.key = kVideoPanel,
+             .title = QCoreApplication::translate("ocu::MainWindow", "Video"),
+             .scrolls = false,
+             .keyboardHelp = QCoreApplication::translate(
+                 "ocu::MainWindow",
+                 "Video panel (Ctrl+I): camera, full screen (Esc returns), resume driving"),
+             .kind = PanelKind::Video,
+             .shortcutKey = Qt::Key_I},
             {kMissionPanel, QCoreApplication::translate("ocu::MainWindow", "Mission"), PanelPlace::SideColumn,
              0, false, true,
              QCoreApplication::translate(
@@ -139,6 +150,7 @@ public:
         auto* teleop = new TeleopPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection(), joystick);
         teleop->video()->watchdog().setLimitMs(static_cast<int>(t.videoWatchdogS * 1000));
         ui.window.setPanelWidget(kTeleopPanel, teleop);
+        ui.window.setPanelWidget(kVideoPanel, teleop->detachVideo());
         populateMission(ui);
     }
 

@@ -70,7 +70,7 @@ private slots:
         }
         if (makeProtocolModules().size() == 3) // every protocol of today
             QCOMPARE(names, QStringList({"fleet", "map", "3d", "jaus", "teleop", "passcounts", "events",
-                                         "dispatch", "production", "mission", "areas", "crew"}));
+                                         "dispatch", "production", "video", "mission", "areas", "crew"}));
     }
     void headless() {
         CommandLineOptions o;

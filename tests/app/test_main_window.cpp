@@ -239,8 +239,8 @@ private slots:
         }
         if (makeProtocolModules().size() == 3) // every protocol: the panels in their Ctrl+N order
             QCOMPARE(titles, QStringList({"Fleet", "Site map (2D)", "Site 3D", "JAUS control", "Teleop",
-                                          "Pass counts", "Event log", "Dispatch", "Production", "Mission",
-                                          "Areas and reports", "Crew messages"}));
+                                          "Pass counts", "Event log", "Dispatch", "Production", "Video",
+                                          "Mission", "Areas and reports", "Crew messages"}));
     }
     void stopAllAlwaysVisibleWithShortcut() {
         MainWindow w;

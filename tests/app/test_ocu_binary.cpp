@@ -167,7 +167,8 @@ private slots:
             views << "passcounts";
         if (ocutest::kWithJaus) // the JAUS module's panels
             views << "jaus"
-                  << "teleop";
+                  << "teleop"
+                  << "video";
         for (const QString& view : views) {
             const QString png = m_dir.filePath(QString("%1.png").arg(view));
             Run r = run({"--screenshot", png, "--view", view, "--settle", "0"});

@@ -2,10 +2,12 @@
 // its default arrangement, at 1366x768 and 1920x1080, in English and German. Checked from the real widgets:
 // - the map (the video in the UGV workspace) gets at least 45 % of a 1366x768 window and 55 % of 1920x1080;
 // - no panel of controls needs to scroll sideways (its controls' row is cut at the dock's edge otherwise), on
-//   every tab of every dock of the workspace (each tab raised in turn), and no button is narrower than its
-//   text;
+//   every tab of every dock of the workspace (each tab raised in turn), nor do the dispatch tables and the
+//   event log (their texts elide), and no button is narrower than its text;
 // - the workspace shows the panels of its kinds and no other; STOP ALL stays visible;
-// - the event log and the dispatch table show a useful number of rows where they are in front;
+// - the event log and the dispatch table show a useful number of rows where they are in front, the event
+//   log's message column keeps its share of the width;
+// - the UGV workspace's drive controls need no scrolling, with a row to spare;
 // - a site without a protocol has none of its panels, in no workspace (the paving demo: no JAUS, no ISO
 // 23725;
 //   the built-in site without OSYRIS: no pass counts, no crew messages).
@@ -15,7 +17,9 @@
 #include "app/SiteRuntime.h"
 #include "app/WorkspaceBar.h"
 
+#include "models/AlarmModel.h"
 #include "tests/support/BuiltProtocols.h"
+#include "widgets/EventLogWidget.h"
 #include "widgets/SiteMapView.h"
 #ifdef OCU_TEST_WITH_JAUS
 #include "widgets/jaus/TeleopVideoPane.h"
@@ -25,6 +29,8 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSet>
@@ -130,8 +136,15 @@ int visibleRows(QTableView* t) {
     return row > 0 ? t->viewport()->height() / row : 0;
 }
 
-// Problems of the docks now on screen: a panel scroll area that needs to scroll sideways, a button narrower
-// than its text.
+// The tables checked for sideways scrolling: those of the dispatcher's panels and the event log (their long
+// texts elide).
+bool sidewaysChecked(QDockWidget* d) {
+    return d->objectName() == QLatin1String("dock-dispatch") ||
+           d->objectName() == QLatin1String("dock-events");
+}
+
+// Problems of the docks now on screen: a panel scroll area or a table that needs to scroll sideways, a
+// button narrower than its text.
 QStringList cutOff(MainWindow& w) {
     QStringList out;
     for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
@@ -145,6 +158,15 @@ QStringList cutOff(MainWindow& w) {
                            .arg(d->windowTitle())
                            .arg(s->horizontalScrollBar()->maximum())
                            .arg(d->width());
+        }
+        for (QTableView* t : d->findChildren<QTableView*>()) {
+            if (!t->isVisible() || t->visibleRegion().isEmpty() || !sidewaysChecked(d))
+                continue;
+            if (t->horizontalHeader()->length() > t->viewport()->width())
+                out << QStringLiteral("%1: table %2 scrolls sideways (columns %3 px, view %4 px)")
+                           .arg(d->windowTitle(), t->objectName())
+                           .arg(t->horizontalHeader()->length())
+                           .arg(t->viewport()->width());
         }
         for (QAbstractButton* b : d->findChildren<QAbstractButton*>()) {
             if (!b->isVisible() || b->text().isEmpty() || b->visibleRegion().isEmpty())
@@ -180,6 +202,35 @@ QWidget* mainView(MainWindow& w) {
 #endif
     return w.panelWidget(Panel::SiteMap);
 }
+
+#ifdef OCU_TEST_WITH_JAUS
+// The teleop panel's controls in the height their dock gives them, at its width, one row to spare.
+QStringList teleopRoom(MainWindow& w) {
+    QWidget* panel = w.panelWidget(QStringLiteral("teleop"));
+    auto* scroll = w.dock(QStringLiteral("teleop"))->findChild<QScrollArea*>(QStringLiteral("panel-scroll"));
+    if (!panel || !scroll || !panel->isVisible())
+        return {QStringLiteral("ugv: teleop panel not in front")};
+    // Measured with the video playing: while it is not, a line says that driving is held.
+    auto* hold = panel->findChild<QLabel*>(QStringLiteral("label-video-watchdog"));
+    if (!hold || !QTest::qWaitFor([&] { return !hold->isVisible() && layoutSettled(w); }, 10000))
+        return {QStringLiteral("ugv: the video does not play")};
+    const int width = scroll->viewport()->width();
+    const int need = panel->hasHeightForWidth() ? panel->heightForWidth(width) : panel->sizeHint().height();
+    const int oneRow = QPushButton(QStringLiteral("Lights")).sizeHint().height() + panel->layout()->spacing();
+    qInfo("  ugv: teleop controls need %dx%d (+%d for a row), have %dx%d", width, need, oneRow, width,
+          scroll->viewport()->height());
+    QStringList out;
+    if (need + oneRow > scroll->viewport()->height())
+        out << QStringLiteral("ugv: teleop controls need %1 px (and %2 for one more row), have %3 px")
+                   .arg(need)
+                   .arg(oneRow)
+                   .arg(scroll->viewport()->height());
+    if (scroll->verticalScrollBar()->maximum() > 0)
+        out << QStringLiteral("ugv: teleop controls scroll by %1 px")
+                   .arg(scroll->verticalScrollBar()->maximum());
+    return out;
+}
+#endif
 
 // The checks of one workspace, in the window as it is now.
 QStringList checkWorkspace(MainWindow& window, QSize size) {
@@ -218,11 +269,24 @@ QStringList checkWorkspace(MainWindow& window, QSize size) {
                             .arg(share * 100, 0, 'f', 1);
     }
 
+#ifdef OCU_TEST_WITH_JAUS
+    // The drive controls in front of the UGV workspace need no scrolling, with one row to spare (a bar of
+    // toggles beside the stop): the stop, the stick and the settings are in sight together.
+    if (window.workspace() == Workspace::Ugv)
+        problems << teleopRoom(window);
+#endif
+
     // Rows of the tables in front.
     if (QTableView* events = mainTable(window.panelWidget(Panel::EventLog)); events && events->isVisible()) {
         const int rows = visibleRows(events);
         if (rows < (small ? 6 : 10))
             problems << QStringLiteral("%1: event log shows %2 rows").arg(ws).arg(rows);
+        // The message gets the width the other columns leave, never less than its share.
+        const int message = events->columnWidth(AlarmModel::ColText), all = events->viewport()->width();
+        qInfo("  %s: event log message column %d of %d px", qPrintable(ws), message, all);
+        if (message * 100 < all * EventLogWidget::kMessagePercent - all)
+            problems
+                << QStringLiteral("%1: event log message column %2 of %3 px").arg(ws).arg(message).arg(all);
     }
     if (QTableView* dispatch = mainTable(window.panelWidget(QStringLiteral("dispatch")));
         dispatch && dispatch->isVisible()) {
@@ -286,23 +350,16 @@ private slots:
             expected.insert(expected.indexOf(Workspace::Monitor), Workspace::Ugv);
         QCOMPARE(window.offeredWorkspaces(), expected);
 
-        QStringList problems, videoShare;
+        QStringList problems;
         for (Workspace w : window.offeredWorkspaces()) {
             window.setWorkspace(w);
             QCOMPARE(window.workspace(), w);
             QTRY_VERIFY_WITH_TIMEOUT(layoutSettled(window), 10000);
-            for (const QString& p : checkWorkspace(window, size))
-                (p.startsWith(QLatin1String("ugv: ocu::TeleopVideoPane only")) ? videoShare : problems) << p;
+            problems << checkWorkspace(window, size);
         }
         problems.removeDuplicates();
         QCoreApplication::removeTranslator(&tr);
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QStringLiteral("\n"))));
-        // The teleop panel's drive controls (stick, settings, E-STOP) share its dock with the video: at
-        // 1920x1080 the video gets about 39 % of the window, not 55 %, until the video is a panel of its own.
-        if (size.height() >= 900 && ocutest::kWithJaus)
-            QEXPECT_FAIL(QTest::currentDataTag(), "UGV video below 55 % at 1920x1080 (controls in its dock)",
-                         Continue);
-        QVERIFY2(videoShare.isEmpty(), qPrintable(videoShare.join(QStringLiteral("\n"))));
     }
 
     // The paving demo runs OSYRIS only: no JAUS, ISO 23725 or their panels anywhere, and neither the Dispatch
@@ -349,9 +406,9 @@ private slots:
     }
 
 #ifdef OCU_TEST_WITH_JAUS
-    // A video nobody sees costs nothing: the teleop panel behind another tab wants no video (nothing received
+    // A video nobody sees costs nothing: the video panel behind another tab wants no video (nothing received
     // or decoded) until its tab is raised, and again none once another tab is raised over it.
-    void teleopTabBehindAnotherWantsNoVideo() {
+    void videoTabBehindAnotherWantsNoVideo() {
         Console console;
         const QString opened = console.open(QSize(1366, 768));
         QVERIFY2(opened.isEmpty(), qPrintable(opened));
@@ -362,8 +419,8 @@ private slots:
         QVERIFY(pane);
         window.dock(QStringLiteral("jaus"))->raise();
         QTRY_VERIFY_WITH_TIMEOUT(raisedAndSettled(window, window.dock(QStringLiteral("jaus"))), 10000);
-        QVERIFY2(!pane->wantsVideo(), "teleop tab behind JAUS control wants video");
-        window.dock(QStringLiteral("teleop"))->raise();
+        QVERIFY2(!pane->wantsVideo(), "video tab behind JAUS control wants video");
+        window.dock(QStringLiteral("video"))->raise();
         QTRY_VERIFY_WITH_TIMEOUT(pane->wantsVideo(), 5000);
         window.dock(QStringLiteral("jaus"))->raise();
         QTRY_VERIFY_WITH_TIMEOUT(!pane->wantsVideo(), 5000);

@@ -217,7 +217,7 @@ private slots:
                  qPrintable(QStringLiteral("%1x%2").arg(view->width()).arg(view->height())));
         scroll.resize(1000, 900);
         QTRY_VERIFY(panel->stickCameraButton()->x() >= panel->stick()->geometry().right());
-        QCOMPARE(panel->width(), scroll.viewport()->width());
+        QTRY_COMPARE(panel->width(), scroll.viewport()->width());
     }
 
     // A pane that is not shown receives and decodes nothing (a teleop panel in a hidden tab costs nothing);

@@ -16,10 +16,13 @@
 #include "widgets/dispatch/RouteOverlay2D.h"
 
 #include <QComboBox>
+#include <QHeaderView>
+#include <QHeaderView>
 #include <QJsonArray>
 #include <QLabel>
 #include <QPainter>
 #include <QPushButton>
+#include <QSplitter>
 #include <QTableView>
 #include <QtTest>
 
@@ -166,6 +169,34 @@ private slots:
         const QRect next = table->visualRect(panel.model()->index(1, DispatchModel::ColTask));
         QVERIFY(a.width() <= 41 && next.left() > a.right());
         QVERIFY(delegate->cachedTexts() > cached); // the elided "NEEDS ASSIGNMENT" is its own layout
+    }
+
+    // A laptop's side column (600 px): the queues go below the trucks and neither table scrolls sideways,
+    // their columns elided (the truck's name whole); wide again, the queues are beside the trucks at their
+    // columns' widths.
+    void narrowPanelTablesDoNotScrollSideways() {
+        Rig r;
+        QVERIFY(QTest::qWaitForWindowExposed(&r.panel));
+        auto* split = r.panel.findChild<QSplitter*>();
+        QVERIFY(split);
+        const int truckWidth = r.panel.table()->columnWidth(DispatchModel::ColTruck);
+        const auto fits = [&] {
+            for (QTableView* t : {r.panel.table(), r.panel.queueTable()})
+                if (t->horizontalHeader()->length() > t->viewport()->width())
+                    return false;
+            return true;
+        };
+        r.panel.resize(600, 420);
+        QTRY_COMPARE(split->orientation(), Qt::Vertical);
+        QTRY_VERIFY(fits());
+        QCOMPARE(r.panel.table()->columnWidth(DispatchModel::ColTruck), truckWidth);
+        QVERIFY(r.panel.table()->columnWidth(DispatchModel::ColAssignment) <
+                r.panel.table()->fontMetrics().horizontalAdvance(QStringLiteral("NEEDS ASSIGNMENT")));
+        r.panel.resize(1800, 420);
+        QTRY_COMPARE(split->orientation(), Qt::Horizontal);
+        QTRY_VERIFY(fits());
+        QTRY_VERIFY(r.panel.table()->columnWidth(DispatchModel::ColAssignment) >
+                    r.panel.table()->fontMetrics().horizontalAdvance(QStringLiteral("NEEDS ASSIGNMENT")));
     }
 
     // The automatic dispatcher's switch in the panel: hidden without one; switching on asks

@@ -3,6 +3,7 @@
 #include "models/AutoDispatcher.h"
 #include "models/CommandGate.h"
 #include "models/FleetSelection.h"
+#include "widgets/ColumnFit.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/dispatch/CachedTextDelegate.h"
 #include "widgets/dispatch/RouteOverlay2D.h"
@@ -16,6 +17,7 @@
 #include <QPushButton>
 #include <QShortcut>
 #include <QSplitter>
+#include <QStyle>
 #include <QTableView>
 #include <QTime>
 #include <QVBoxLayout>
@@ -67,7 +69,7 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     top->setContentsMargins(2, 2, 2, 2);
     top->setSpacing(2);
 
-    auto* split = new QSplitter(Qt::Horizontal, this);
+    auto* split = m_split = new QSplitter(Qt::Horizontal, this);
     QWidget* left = buildTruckList(split);
     QWidget* queues = buildQueueList(split);
     split->addWidget(left);
@@ -76,11 +78,33 @@ DispatchPanel::DispatchPanel(DispatchSource* source, CommandGate* gate, FleetSel
     split->setStretchFactor(1, 1);
     split->setChildrenCollapsible(true); // the queues can be dragged away on a narrow screen
     top->addWidget(split, 1);
+    for (QTableView* t : {m_table, m_queueTable})
+        m_sideBySideWidth +=
+            t->horizontalHeader()->length() + t->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 8;
+    keepColumnsWithinWidth(m_table);
+    // The truck's name whole, the others elided as far as need be.
+    setColumnShrinkTier(m_table, DispatchModel::ColTruck, 1, m_table->columnWidth(DispatchModel::ColTruck));
+    keepColumnsWithinWidth(m_queueTable);
+    keepColumnsFitted(m_queueTable); // a few rows: their texts ("Shovel (load)") set the widths wanted
 
     buildControls(top);
     connectControls(source, selection);
     rebuildDestinations();
     onTrucksUpdated({});
+}
+
+void DispatchPanel::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    const Qt::Orientation o = width() >= m_sideBySideWidth ? Qt::Horizontal : Qt::Vertical;
+    if (m_split->orientation() != o) {
+        m_split->setOrientation(o);
+        // Below the trucks the queues get a third of the height (the areas of a pit: a few rows).
+        m_split->setStretchFactor(0, o == Qt::Horizontal ? 4 : 2);
+        m_split->setStretchFactor(1, 1);
+        const int total = o == Qt::Horizontal ? m_split->width() : m_split->height();
+        m_split->setSizes(o == Qt::Horizontal ? QList<int>{total * 4 / 5, total / 5}
+                                              : QList<int>{total * 2 / 3, total / 3});
+    }
 }
 
 // The trucks: a header row (needs-assignment count, next, auto dispatch) over the truck table.
@@ -119,6 +143,7 @@ QWidget* DispatchPanel::buildTruckList(QSplitter* split) {
     m_autoLabel->hide();
     leftLayout->addWidget(m_autoLabel);
     m_table = new QTableView(left);
+    useElidingHeader(m_table);
     leftLayout->addWidget(m_table, 1);
     m_table->setObjectName(QStringLiteral("dispatch-table"));
     m_table->setModel(m_model);
@@ -167,6 +192,7 @@ QWidget* DispatchPanel::buildQueueList(QSplitter* split) {
     queueLabel->setStyleSheet(QStringLiteral("font-weight:bold"));
     queueLayout->addWidget(queueLabel);
     m_queueTable = new QTableView(queues);
+    useElidingHeader(m_queueTable);
     m_queueTable->setObjectName(QStringLiteral("dispatch-queues"));
     m_queueTable->setModel(m_queues);
     m_queueTable->verticalHeader()->hide();

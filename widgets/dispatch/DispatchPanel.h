@@ -76,6 +76,9 @@ public slots:
     void pickOnMap(bool on);
     void pickArea(const QString& featureId); // a map area was clicked
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     // Construction, in the order the panel is laid out.
     QWidget* buildTruckList(QSplitter* split);
@@ -119,6 +122,10 @@ private:
     QPushButton* m_auto = nullptr;
     QLabel* m_autoLabel = nullptr;
     void updateAuto();
+    // The queues beside the trucks where both tables have their columns' widths, else below them (a
+    // laptop's side column): neither table then scrolls sideways, their long texts elided.
+    QSplitter* m_split = nullptr;
+    int m_sideBySideWidth = 0;
 };
 
 } // namespace ocu

@@ -3,7 +3,8 @@
 // (W/A/S/D or arrows with the dead-man key), SDL2 joysticks; wrench effort or velocity as the platform
 // offers; a speed limit within the platform specifications; zero on release, focus loss and joystick
 // loss; a large E-STOP (Space, Esc) and clear-emergency only by holding a confirm button.
-// The vehicle's video above the controls (TeleopVideoPane: cameras, overlays, full-screen window),
+// The vehicle's video above the controls, or in a panel of its own (detachVideo; TeleopVideoPane: cameras,
+// overlays, full-screen window),
 // the video watchdog (driving is held while the video is lost or too old, and resumes only by the
 // operator's Resume once it is back), and the camera's pan-tilt from J/L/I/K, the stick's camera mode and
 // a joystick hat.
@@ -69,7 +70,11 @@ public:
     // Pan-tilt rate (rad/s) at full stick deflection (AEP-4818 §9.3.3 rates; the unit clamps to its own).
     static constexpr double kPanTiltFullRate = 1.0;
     // The video pane, the pan-tilt stream, cameras configured for vehicles that announce none.
-    TeleopVideoPane* video() const { return m_video; }
+    TeleopVideoPane* video() const;
+    // Takes the video out of this panel for a panel of its own (the UGV workspace gives it the largest area);
+    // the caller reparents it, created after this panel so that this one goes first. Driving then needs
+    // both in the operator's sight: the video leaving the screen releases the controls too.
+    TeleopVideoPane* detachVideo();
     PanTiltController* panTilt() const { return m_panTilt; }
     // The on-screen stick drives the camera's pan-tilt instead of the vehicle while checked.
     QPushButton* stickCameraButton() const { return m_stickCamera; }
@@ -110,6 +115,8 @@ private:
     void onWatchdog();
     void onPanTilt(double pan, double tilt);
     void releaseAll(const QString& reason);
+    // The controls and the video are in front of the operator (or the full-screen video window is open).
+    bool inSight() const;
 
     JausVehicleBridge* m_bridge;
     QPointer<CommandGate> m_gate;
@@ -135,7 +142,8 @@ private:
     // (no new session, and audit line, per 20 Hz demand while the operator still holds the stick).
     bool m_waitForRelease = false;
     QLabel* m_problem;
-    TeleopVideoPane* m_video = nullptr;
+    QLabel* m_keysHint = nullptr;
+    QPointer<TeleopVideoPane> m_video; // in another dock once detached: may go first
     PanTiltController* m_panTilt = nullptr;
     QPushButton* m_stickCamera = nullptr;
     QLabel* m_videoHold = nullptr;
@@ -148,7 +156,8 @@ private:
     QBoxLayout* m_inputsRight = nullptr;
     QBoxLayout* m_stops = nullptr;
     QPointer<QWidget> m_widthSource; // whose width is available (the scroll area's viewport, or the panel)
-    OnScreenWatcher* m_onScreen = nullptr; // in front of the operator (not a dock tab behind another)
+    OnScreenWatcher* m_onScreen = nullptr;      // in front of the operator (not a dock tab behind another)
+    OnScreenWatcher* m_videoOnScreen = nullptr; // the video's, once it is in a panel of its own
     MissionTakeover* m_takeover = nullptr;
 };
 

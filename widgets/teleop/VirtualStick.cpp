@@ -115,7 +115,10 @@ AxisDisplay::AxisDisplay(QWidget* parent) : QWidget(parent) {
 }
 
 void AxisDisplay::setAxes(const QVector<double>& raw) {
+    const bool rows = raw.size() != m_raw.size();
     m_raw = raw;
+    if (rows)
+        updateGeometry();
     update();
 }
 

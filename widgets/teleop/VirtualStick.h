@@ -12,7 +12,8 @@ class VirtualStick : public QWidget {
 public:
     explicit VirtualStick(QWidget* parent = nullptr);
     DriveAxes axes() const { return m_axes; }
-    QSize sizeHint() const override { return {220, 220}; }
+    // Beside the drive settings in a laptop's side column; it grows where there is room.
+    QSize sizeHint() const override { return {160, 160}; }
     QSize minimumSizeHint() const override { return {120, 120}; }
     // Pixel position of a demand (for tests and for drawing).
     QPointF pointFor(DriveAxes a) const;
@@ -43,7 +44,8 @@ public:
     explicit AxisDisplay(QWidget* parent = nullptr);
     void setAxes(const QVector<double>& raw);
     void setMapped(DriveAxes a);
-    QSize sizeHint() const override { return {220, 90}; }
+    // A bar a row: the demand's two, then the device's axes (thinner); no room taken for a device not there.
+    QSize sizeHint() const override { return {220, 2 * 18 + int(m_raw.size()) * 10}; }
 
 protected:
     void paintEvent(QPaintEvent*) override;

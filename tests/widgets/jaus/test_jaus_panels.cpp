@@ -10,6 +10,7 @@
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/jaus/JausControlPanel.h"
 #include "widgets/jaus/TeleopPanel.h"
+#include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
 #include "widgets/teleop/JoystickMappingDialog.h"
 #include "widgets/teleop/TeleopController.h"
@@ -423,6 +424,34 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(127).state().v) < 1e-3, 10000);
         QVERIFY(!s.ugv(127).state().driveTimedOut); // stopped by the zeros, not by its drive timeout
         QVERIFY(!win.teleop->controller()->isDriving());
+    }
+
+    // The video in a panel of its own (the UGV workspace's main area): its leaving the operator's sight
+    // sends the zeros as well, and says why: driving needs the controls and the picture in front.
+    void hidingTheDetachedVideoSendsZeros() {
+        Site s;
+        Window win(s);
+        TeleopVideoPane* video = win.teleop->detachVideo();
+        QCOMPARE(win.teleop->detachVideo(), video); // once
+        QVERIFY(!win.teleop->isAncestorOf(video));
+        win.w.layout()->addWidget(video); // after the teleop panel: it goes first
+        driveAheadByKeys(s, win, 127, Qt::Key_Up);
+        if (QTest::currentTestFailed())
+            return;
+        QSignalSpy stopped(win.teleop->controller(), &TeleopController::stopped);
+        video->hide();
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.ugv(127).state().v) < 1e-3, 10000);
+        QVERIFY(!s.ugv(127).state().driveTimedOut); // stopped by the zeros, not by its drive timeout
+        QVERIFY(!win.teleop->controller()->isDriving());
+        QVERIFY(!stopped.isEmpty());
+        QCOMPARE(stopped.first().at(0).toString(), QStringLiteral("teleop video hidden"));
+        // Out of sight, the keys start no new session.
+        QTest::keyRelease(win.teleop, Qt::Key_Up, Qt::ShiftModifier);
+        QTest::keyPress(win.teleop, Qt::Key_Up, Qt::ShiftModifier);
+        QTest::qWait(300);
+        QVERIFY(!win.teleop->sessionOpen());
+        QTest::keyRelease(win.teleop, Qt::Key_Up, Qt::ShiftModifier);
+        QTest::keyRelease(win.teleop, Qt::Key_Shift);
     }
 
     void spaceStopsTheVehicle() {
