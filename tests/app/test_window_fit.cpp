@@ -88,6 +88,13 @@ bool raisedAndSettled(MainWindow& w, QDockWidget* dock) {
     return dock->isVisible() && !dock->visibleRegion().isEmpty() && layoutSettled(w);
 }
 
+// Waits until two samples of the layout agree. Not through QTRY_VERIFY: it evaluates its expression again
+// after success, and a second pair of samples of a layout still settling can differ and fail the test.
+bool waitSettled(MainWindow& w, QDockWidget* raised = nullptr, int timeoutMs = 10000) {
+    return QTest::qWaitFor([&] { return raised ? raisedAndSettled(w, raised) : layoutSettled(w); },
+                           timeoutMs);
+}
+
 // The console on a site (the built-in simulated site when file is empty), shown at `size`; the run's
 // recording goes into a temporary directory, not into the home directory.
 struct Console {
@@ -216,15 +223,19 @@ QStringList teleopRoom(MainWindow& w) {
         return {QStringLiteral("ugv: the video does not play")};
     const int width = scroll->viewport()->width();
     const int need = panel->hasHeightForWidth() ? panel->heightForWidth(width) : panel->sizeHint().height();
-    const int oneRow = QPushButton(QStringLiteral("Lights")).sizeHint().height() + panel->layout()->spacing();
-    qInfo("  ugv: teleop controls need %dx%d (+%d for a row), have %dx%d", width, need, oneRow, width,
-          scroll->viewport()->height());
+    // The lights bar is one of the rows: it must lie on a single row at this width.
+    auto* lights = panel->findChild<QWidget*>(QStringLiteral("illumination-bar"));
+    qInfo("  ugv: teleop controls need %dx%d, have %dx%d; lights bar %d px high", width, need, width,
+          scroll->viewport()->height(), lights ? lights->height() : -1);
     QStringList out;
-    if (need + oneRow > scroll->viewport()->height())
-        out << QStringLiteral("ugv: teleop controls need %1 px (and %2 for one more row), have %3 px")
+    if (need > scroll->viewport()->height())
+        out << QStringLiteral("ugv: teleop controls need %1 px, have %2 px")
                    .arg(need)
-                   .arg(oneRow)
                    .arg(scroll->viewport()->height());
+    if (!lights)
+        out << QStringLiteral("ugv: no lights bar in the teleop panel");
+    else if (lights->height() > 2 * QPushButton(QStringLiteral("Lights")).sizeHint().height() - 4)
+        out << QStringLiteral("ugv: the lights bar wraps (%1 px high)").arg(lights->height());
     if (scroll->verticalScrollBar()->maximum() > 0)
         out << QStringLiteral("ugv: teleop controls scroll by %1 px")
                    .arg(scroll->verticalScrollBar()->maximum());
@@ -354,7 +365,7 @@ private slots:
         for (Workspace w : window.offeredWorkspaces()) {
             window.setWorkspace(w);
             QCOMPARE(window.workspace(), w);
-            QTRY_VERIFY_WITH_TIMEOUT(layoutSettled(window), 10000);
+            QVERIFY(waitSettled(window));
             problems << checkWorkspace(window, size);
         }
         problems.removeDuplicates();
@@ -386,7 +397,7 @@ private slots:
         QStringList problems;
         for (Workspace w : window.offeredWorkspaces()) {
             window.setWorkspace(w);
-            QTRY_VERIFY_WITH_TIMEOUT(layoutSettled(window), 10000);
+            QVERIFY(waitSettled(window));
             problems << checkWorkspace(window, window.size());
         }
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QStringLiteral("\n"))));
@@ -414,11 +425,11 @@ private slots:
         QVERIFY2(opened.isEmpty(), qPrintable(opened));
         MainWindow& window = *console.window;
         QTRY_VERIFY_WITH_TIMEOUT(siteUp(window), 20000);
-        QTRY_VERIFY_WITH_TIMEOUT(layoutSettled(window), 10000);
+        QVERIFY(waitSettled(window));
         auto* pane = window.findChild<TeleopVideoPane*>();
         QVERIFY(pane);
         window.dock(QStringLiteral("jaus"))->raise();
-        QTRY_VERIFY_WITH_TIMEOUT(raisedAndSettled(window, window.dock(QStringLiteral("jaus"))), 10000);
+        QVERIFY(waitSettled(window, window.dock(QStringLiteral("jaus"))));
         QVERIFY2(!pane->wantsVideo(), "video tab behind JAUS control wants video");
         window.dock(QStringLiteral("video"))->raise();
         QTRY_VERIFY_WITH_TIMEOUT(pane->wantsVideo(), 5000);

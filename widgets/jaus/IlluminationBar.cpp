@@ -75,11 +75,17 @@ void IlluminationBar::resizeEvent(QResizeEvent* e) {
 }
 
 void IlluminationBar::arrange() {
-    int widest = 0;
-    for (const auto& [l, b] : m_toggles)
+    int widest = 0, oneRow = -m_grid->spacing();
+    for (const auto& [l, b] : m_toggles) {
         widest = std::max(widest, b->sizeHint().width());
+        oneRow += b->sizeHint().width() + m_grid->spacing();
+    }
     const int room = width() - m_label->sizeHint().width() - m_grid->spacing();
-    const int perRow = std::clamp(room / (widest + m_grid->spacing()), 1, int(m_toggles.size()));
+    // One row when the toggles fit side by side at their own widths (each its own column); more rows are
+    // columns of the widest toggle.
+    const int perRow = oneRow <= room
+                           ? int(m_toggles.size())
+                           : std::clamp(room / (widest + m_grid->spacing()), 1, int(m_toggles.size()));
     if (perRow == m_perRow)
         return;
     m_perRow = perRow;

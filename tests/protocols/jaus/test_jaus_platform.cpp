@@ -160,7 +160,13 @@ private slots:
         // Back to Operational: driving is accepted again.
         QVERIFY(c.outcome([&](auto cb) { c.stack.setPlatformState(126, 1, cb); }).sent);
         QVERIFY(waitFor([&] { return c.platform().state == std::uint8_t(PlatformState::Operational); }));
-        QVERIFY(c.outcome([&](auto cb) { c.stack.startDriving(126, cb); }).sent);
+        // The emergency ends on the vehicle's management report too (polled, it may come a second later).
+        QVERIFY(waitFor([&] {
+            auto s = c.stack.snapshot(126);
+            return s && !s->emergency;
+        }));
+        const TargetOutcome again = c.outcome([&](auto cb) { c.stack.startDriving(126, cb); });
+        QVERIFY2(again.sent, again.reason.c_str());
         c.stack.stopDriving(126, {});
     }
 
