@@ -93,6 +93,7 @@ private:
     void timedDrive(const TimedDrive& command, OutcomeCallback done);
     // Reads the odometers now (or resets the trip); a sent target's note says what was last reported.
     void odometry(const Odometry& command, OutcomeCallback done);
+    void platformOrHandoffCommand(const OperatorCommand& command, const QString& what, OutcomeCallback done);
     // Opens a drive session in the stack (its first zero demand): `done` says whether it left.
     void startSession(quint16 subsystem, OutcomeCallback done);
     // A timed drive (headless "drive"): opens the session if needed, hands the demand to the stack (`done`

@@ -283,46 +283,58 @@ void JausBridge::command(const OperatorCommand& command, OutcomeCallback done) {
                     m_stack->goTo(ss, MissionPoint{w.lat, w.lon, w.speed, w.tolerance}, std::move(d));
                 });
             },
-            [&](const SetPlatformMode& c) {
-                sendToVehicle(c.id, what, std::move(done), [this, m = c.mode](quint16 ss, OutcomeCallback d) {
-                    m_stack->setPlatformMode(ss, std::uint8_t(m), std::move(d));
-                });
-            },
-            [&](const SetPlatformState& c) {
-                sendToVehicle(c.id, what, std::move(done),
-                              [this, st = c.state](quint16 ss, OutcomeCallback d) {
-                                  m_stack->setPlatformState(ss, std::uint8_t(st), std::move(d));
-                              });
-            },
-            [&](const SetLights& c) {
-                sendToVehicle(c.id, what, std::move(done),
-                              [this, mask = c.mask, on = c.on](quint16 ss, OutcomeCallback d) {
-                                  m_stack->setLights(ss, mask, on, std::move(d));
-                              });
-            },
-            [&](const Odometry& c) { odometry(c, std::move(done)); },
-            // Hand-off between consoles: the stack says what went on the wire; what followed is the vehicle's
-            // answer (JausVehicle::handoff and the events).
-            [&](const HandoffRequest& c) {
-                sendToVehicle(c.id, what, std::move(done),
-                              [this, reason = c.reason.toStdString(), cancel = c.cancel](quint16 ss,
-                                                                                         OutcomeCallback d) {
-                                  if (cancel)
-                                      m_stack->handoffCancel(ss, std::move(d));
-                                  else
-                                      m_stack->handoffRequest(ss, reason, std::move(d));
-                              });
-            },
-            [&](const HandoffAnswer& c) {
-                sendToVehicle(
-                    c.id, what, std::move(done),
-                    [this, id = std::uint8_t(c.requestId), accept = c.accept](quint16 ss, OutcomeCallback d) {
-                        m_stack->handoffAnswer(ss, id, accept, std::move(d));
-                    });
-            },
-            [&](const auto&) { FleetBridge::command(command, std::move(done)); },
+            // The platform services and the hand-off: their own visitor below.
+            [&](const auto&) { platformOrHandoffCommand(command, what, std::move(done)); },
         },
         command);
+}
+
+// Platform mode and state, lights, odometry (AEP-4818 §6.2, §9.2.2) and the hand-off between consoles
+// (§6.3); every other command is refused as not supported.
+void JausBridge::platformOrHandoffCommand(const OperatorCommand& command, const QString& what,
+                                          OutcomeCallback done) {
+    std::visit(Overloaded{
+                   [&](const SetPlatformMode& c) {
+                       sendToVehicle(c.id, what, std::move(done),
+                                     [this, m = c.mode](quint16 ss, OutcomeCallback d) {
+                                         m_stack->setPlatformMode(ss, std::uint8_t(m), std::move(d));
+                                     });
+                   },
+                   [&](const SetPlatformState& c) {
+                       sendToVehicle(c.id, what, std::move(done),
+                                     [this, st = c.state](quint16 ss, OutcomeCallback d) {
+                                         m_stack->setPlatformState(ss, std::uint8_t(st), std::move(d));
+                                     });
+                   },
+                   [&](const SetLights& c) {
+                       sendToVehicle(c.id, what, std::move(done),
+                                     [this, mask = c.mask, on = c.on](quint16 ss, OutcomeCallback d) {
+                                         m_stack->setLights(ss, mask, on, std::move(d));
+                                     });
+                   },
+                   [&](const Odometry& c) { odometry(c, std::move(done)); },
+                   // Hand-off between consoles: the stack says what went on the wire; what followed is the
+                   // vehicle's answer (JausVehicle::handoff and the events).
+                   [&](const HandoffRequest& c) {
+                       sendToVehicle(c.id, what, std::move(done),
+                                     [this, reason = c.reason.toStdString(),
+                                      cancel = c.cancel](quint16 ss, OutcomeCallback d) {
+                                         if (cancel)
+                                             m_stack->handoffCancel(ss, std::move(d));
+                                         else
+                                             m_stack->handoffRequest(ss, reason, std::move(d));
+                                     });
+                   },
+                   [&](const HandoffAnswer& c) {
+                       sendToVehicle(c.id, what, std::move(done),
+                                     [this, id = std::uint8_t(c.requestId),
+                                      accept = c.accept](quint16 ss, OutcomeCallback d) {
+                                         m_stack->handoffAnswer(ss, id, accept, std::move(d));
+                                     });
+                   },
+                   [&](const auto&) { FleetBridge::command(command, std::move(done)); },
+               },
+               command);
 }
 
 void JausBridge::odometry(const Odometry& c, OutcomeCallback done) {
