@@ -57,7 +57,7 @@ jaus_lost_s=5
 iso_dead_s=15
 iso_backoff_max_s=36 # 30 s + 20 % jitter
 stop_confirm_s=3
-osyris_silent_s=5 # degraded after 2.5 SendPeriods without a station (docs/osyris.md; ocu-sim's SendPeriod 2 s)
+osyris_silent_s=13 # degraded after 2.5 SendPeriods without a station (docs/osyris.md; the console's SendPeriod 5 s)
 
 P="ft$$"
 NS_CON="$P-con"; NS_MID="$P-mid"; NS_SIM="$P-sim"
@@ -453,8 +453,8 @@ check_control() { # AT -> text; status 0 when consistent
 }
 
 take_control() {
-  cmd '{"cmd":"request_control","id":"jaus:126","req":"ctl"}'
   control_at=$(now)
+  cmd '{"cmd":"request_control","id":"jaus:126","req":"ctl"}'
   wait_for "$con_log" "$control_at" '.type == "machine" and .id == "jaus:126" and .control == "me"' 15 >/dev/null
 }
 
@@ -485,8 +485,8 @@ run_row_faults() { # ROW SPEC FAULT_TEXT: a fault for fault_s seconds, then heal
   t0=$(now)
   # Nothing may be shown down for a fault that never silences a link for link_lost_s / 15 s.
   sleep $((fault_s / 2))
-  cmd '{"cmd":"stop_all","req":"stop"}'
   local stop_at; stop_at=$(now)
+  cmd '{"cmd":"stop_all","req":"stop"}'
   sleep $((fault_s - fault_s / 2))
   local t1; t1=$(now)
   local jdown idown
@@ -526,10 +526,13 @@ run_row_rate() { # c: 20 kbit/s on the OSYRIS radio, the paving train alone
   local down; down=$(first "$con_log" "$t0" '.type == "link" and .protocol == "osyris" and .state == "down"')
   local st; st=$(link_state_at osyris "$(now)")
   set_faults ""
+  # What the limit did (the proxy's counters as it ended: frames dropped because the queue was full).
+  local queued=""
+  [ $use_netem = 0 ] && queued=$(grep '"direction"' "$work/proxy.log" | tail -2 |
+    jq -rs '"\(map(.in) | add) frames offered, \(map(.overflow) | add) dropped by the full queue"')
   sleep 15
-  kill -HUP "$proxy_pid" 2>/dev/null
   add_row $r OSYRIS "$what" "station link never down" \
-    "$([ -z "$down" ] && echo "never down" || echo "DOWN at +$(elapsed "$t0" "$down") s"), $st at the end of the limit" \
+    "$([ -z "$down" ] && echo "never down" || echo "DOWN at +$(elapsed "$t0" "$down") s"), $st at the end of the limit${queued:+; $queued}" \
     ${#down}
   finish_osyris $r "$what, then lifted"
   stop_site
@@ -547,8 +550,8 @@ run_row_partition() { # ROW SECONDS
   local t0; t0=$(now)
   local stop_in=$((secs > 4 ? secs - 2 : 1))
   sleep $stop_in
-  cmd '{"cmd":"stop_all","req":"stop"}'
   local stop_at; stop_at=$(now)
+  cmd '{"cmd":"stop_all","req":"stop"}'
   sleep $((secs - stop_in))
   partition off
   local t1; t1=$(now)
@@ -574,9 +577,10 @@ run_row_partition() { # ROW SECONDS
   add_row "$r" JAUS "$what" "$([ "$secs" -gt $jaus_lost_s ] && echo "down ≤ ${jaus_lost_s}+2 s" || echo "degraded"), up ≤ 10 s after; stop honest; control held or reported lost" \
     "$m; $stext; $ctext" $((ok || cst || sst))
   # ISO 23725: down after 15 s of silence; reconnected within the backoff; the fleet definition first.
-  local idown iup
+  local idown iup=""
   idown=$(first "$con_log" "$t0" '.type == "link" and .protocol == "iso23725" and .state != "up"')
-  iup=$(wait_for "$con_log" "$t1" '.type == "link" and .protocol == "iso23725" and .state == "up"' $((iso_backoff_max_s + 5)))
+  [ -n "$idown" ] &&
+    iup=$(wait_for "$con_log" "$idown" '.type == "link" and .protocol == "iso23725" and .state == "up"' $((iso_backoff_max_s + 5)))
   local istate; istate=$(link_state_at iso23725 "$(now)")
   ok=0
   if [ "$secs" -gt $iso_dead_s ]; then
@@ -596,7 +600,7 @@ run_row_partition() { # ROW SECONDS
   # OSYRIS: the station link degraded after 2.5 SendPeriods of silence, up again when a station is heard.
   local odown oup
   odown=$(first "$con_log" "$t0" '.type == "link" and .protocol == "osyris" and .state != "up"')
-  oup=$(wait_for "$con_log" "$t0" '.type == "link" and .protocol == "osyris" and .state == "up"' 15)
+  oup=""
   [ -n "$odown" ] && oup=$(wait_for "$con_log" "$odown" '.type == "link" and .protocol == "osyris" and .state == "up"' 15)
   ok=0
   if [ "$secs" -gt $((osyris_silent_s + 1)) ]; then
@@ -679,8 +683,8 @@ run_row_base() {
     "$([ -n "$up" ] && echo "up" || echo "NOT up")" "$([ -n "$up" ]; echo $?)"
   [ -n "$up" ] || { stop_site; return; }
   take_control
-  cmd '{"cmd":"stop_all","req":"stop"}'
   local stop_at; stop_at=$(now)
+  cmd '{"cmd":"stop_all","req":"stop"}'
   sleep $((stop_confirm_s + 2))
   local text st
   for p in jaus iso23725 osyris; do
