@@ -10,9 +10,10 @@
 #   sudo scripts/fault-tests.sh [--quick] [--rows base,a,b,c,d1,d2,d3,e] [--keep DIR] [--seed N] [--proxy]
 #
 # Rows: base (no fault), a (loss, duplication, reordering), b (delay), c (20 kbit/s, OSYRIS), d1-d3 (partitions
-# of 5, 30, 120 s), e (100 flaps). --quick shortens faults and partitions (5, 10, 20 s) and flaps faster, for a smoke run (about 8 minutes; the
-# full run about 20). --proxy uses the fault proxy even where netem exists. Everything ends within a bound and
-# is cleaned up on exit (namespaces, processes). Exit status 0 only when every row passed. Not in CI.
+# of 5, 30, 120 s), e (100 flaps). --quick shortens faults and partitions (5, 10, 20 s) and flaps faster, for a
+# smoke run (about 9 minutes; the full run about 22). --proxy uses the fault proxy even where netem exists.
+# Everything ends within a bound and is cleaned up on exit (namespaces, processes). Exit status 0 only when
+# every row passed. Not in CI.
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${OCU_BUILD_DIR:-$root/build}"
@@ -32,7 +33,7 @@ while [ $# -gt 0 ]; do
     --keep) keep="$2"; shift ;;
     --seed) seed="$2"; shift ;;
     --proxy) force_proxy=1 ;;
-    -h | --help) sed -n 2,15p "$0"; exit 0 ;;
+    -h | --help) sed -n 2,16p "$0"; exit 0 ;;
     *) echo "fault-tests: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
   shift
