@@ -11,7 +11,7 @@
 #
 # Rows: base (no fault), a (loss, duplication, reordering), b (delay), c (20 kbit/s, OSYRIS), d1-d3 (partitions
 # of 5, 30, 120 s), e (100 flaps). --quick shortens faults and partitions (5, 10, 20 s) and flaps faster, for a
-# smoke run (about 9 minutes; the full run about 22). --proxy uses the fault proxy even where netem exists.
+# smoke run (about 8 minutes; the full run about 16). --proxy uses the fault proxy even where netem exists.
 # Everything ends within a bound and is cleaned up on exit (namespaces, processes). Exit status 0 only when
 # every row passed. Not in CI.
 set -uo pipefail
