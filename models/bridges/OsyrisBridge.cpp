@@ -4,6 +4,7 @@
 #include <QJsonObject>
 #include <QMetaObject>
 
+#include <chrono>
 #include <cmath>
 
 namespace ocu {
@@ -15,6 +16,8 @@ OsyrisBridge::OsyrisBridge(const OsyrisConfig& config, const GeoFrame& siteFrame
     m_station = std::make_unique<OsyrisStack>(m_config, static_cast<OsyrisListener&>(*this));
     const EnuPoint o = m_frame.toLocal({config.originLat, config.originLon, config.originAlt});
     m_layer = std::make_unique<OsyrisPassCountLayer>(m_config.passCount.cellSize, QPointF(o.e, o.n));
+    // Every station sends ALIVE each SendPeriod (§4), so silence is judged on the io thread, where "heard" is.
+    connect(&m_silenceCheck, &QTimer::timeout, this, [this] { postToIo([this] { checkSilence(); }); });
 }
 
 OsyrisBridge::~OsyrisBridge() {
@@ -34,12 +37,14 @@ QString OsyrisBridge::start() {
     }
     m_running = true;
     publishLink({link, ocu::LinkState::Degraded, -1, tr("joined, waiting for stations")});
+    m_silenceCheck.start(1000);
     return {};
 }
 
 void OsyrisBridge::stop() {
     const bool wasRunning = m_running;
     m_running = false;
+    m_silenceCheck.stop();
     if (m_station)
         m_station->stop();
     if (wasRunning) {
@@ -55,8 +60,34 @@ osyris::PassCountSummary OsyrisBridge::passCountSummary() const {
 
 // ---- io thread ----
 
-void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
+namespace {
+std::int64_t steadyMs() {
+    return std::chrono::duration_cast<std::chrono::milliseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+} // namespace
+
+void OsyrisBridge::noteHeard() {
     m_heard = true;
+    m_lastHeardMs = steadyMs();
+    if (m_linkUp.exchange(true))
+        return; // published once; positions keep the data age fresh
+    publishLink({QStringLiteral("osyris:%1:%2").arg(toQString(m_config.group)).arg(m_config.port),
+                 ocu::LinkState::Up, 0, tr("stations heard")});
+}
+
+void OsyrisBridge::checkSilence() {
+    // Like JAUS's heartbeat rule: degraded after 2.5 periods of the stations' ALIVE without anything heard.
+    const std::int64_t silentMs = steadyMs() - m_lastHeardMs;
+    if (!m_running || silentMs <= m_config.sendPeriodMs * 5 / 2 || !m_linkUp.exchange(false))
+        return;
+    publishLink({QStringLiteral("osyris:%1:%2").arg(toQString(m_config.group)).arg(m_config.port),
+                 ocu::LinkState::Degraded, silentMs, tr("no station heard for %1 s").arg(silentMs / 1000)});
+}
+
+void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
+    noteHeard();
     if (!s.implausible.empty()) {
         // The station's plausibility gate refused this position: keep what was good, say why.
         auto it = m_lastGoodIo.find(s.idx);
@@ -128,11 +159,7 @@ void OsyrisBridge::onMachinePosition(const MachineSnapshot& s) {
 
 void OsyrisBridge::onStationAlive(std::uint8_t idx, std::optional<SlotRange>) {
     (void)idx;
-    m_heard = true;
-    if (m_linkUp.exchange(true))
-        return; // published once; positions keep the data age fresh
-    publishLink({QStringLiteral("osyris:%1:%2").arg(toQString(m_config.group)).arg(m_config.port),
-                 ocu::LinkState::Up, 0, tr("stations heard")});
+    noteHeard();
 }
 
 PassCountFilter OsyrisBridge::passCountFilter() const {

@@ -13,7 +13,10 @@
 #include "protocols/osyris/OsyrisConfig.h"
 #include "protocols/osyris/OsyrisStack.h"
 
+#include <QTimer>
+
 #include <atomic>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <set>
@@ -86,7 +89,12 @@ private:
     std::unique_ptr<OsyrisPassCountLayer> m_layer;
     std::atomic<bool> m_passCountQueued{false};
     std::atomic<bool> m_linkUp{false};
-    std::atomic<bool> m_heard{false};                  // a station (position or alive) was heard
+    std::atomic<bool> m_heard{false};           // a station (position or alive) was heard
+    std::atomic<std::int64_t> m_lastHeardMs{0}; // steady clock, io thread writes
+    QTimer m_silenceCheck;                      // GUI thread: asks the io thread to look every second
+    // io thread: a station was heard (link up again); no station for 2.5 SendPeriods (link degraded).
+    void noteHeard();
+    void checkSilence();
     std::map<std::uint8_t, MachineState> m_lastGoodIo; // io thread only: the last plausible state per machine
     std::atomic<bool> m_running{false};
     std::set<int> m_textSenders; // GUI thread

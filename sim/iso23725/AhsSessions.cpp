@@ -305,6 +305,8 @@ void AhsSessions::onFrame(Sock k, SessionId id, const std::string& text) {
         if (k == Sock::Main && !st.gotFirst && !env->members.empty()) {
             st.gotFirst = true;
             m_fmsFirst.push_back(std::string(memberName(env->members.front().body)));
+            // Said per session so a run over a faulty network can check every reconnect began with it.
+            logInfo(kLog, "FMS session's first message: " + m_fmsFirst.back());
         }
         for (auto& m : env->members) {
             if (onlyAhsSends(m.body)) {

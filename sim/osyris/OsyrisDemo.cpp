@@ -88,7 +88,8 @@ OsyrisConfig OsyrisDemo::ocuConfig() const {
     c.group = m_opts.group;
     c.port = m_opts.port;
     c.interfaceAddress = m_opts.interfaceAddress;
-    c.multicastTtl = 0; // never leaves the host
+    // On loopback never leaves the host; on a LAN address one segment (as the JAUS simulators).
+    c.multicastTtl = m_opts.interfaceAddress == "127.0.0.1" ? 0 : 1;
     c.beatMs = m_opts.beatMs;
     c.checksum = m_opts.checksum;
     c.stationIndex = m_opts.ocuIndex;

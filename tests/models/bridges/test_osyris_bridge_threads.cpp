@@ -133,6 +133,35 @@ private slots:
         demo.stop();
     }
 
+    void silentStationsDegradeTheLinkAndHeardAgainUp() {
+        // A partitioned radio: the link shown degraded after 2.5 SendPeriods without a station, up when one
+        // is heard again (stations restarted on the same group and port).
+        auto opts = oneRoller();
+        auto demo = std::make_unique<sim::osyris::OsyrisDemo>(opts);
+        std::string err;
+        QVERIFY2(demo->start(&err), err.c_str());
+        osyris::OsyrisConfig cfg = consoleConfig(demo->ocuConfig());
+        cfg.sendPeriodMs = 400; // silent for 1 s: degraded
+        OsyrisBridge bridge(cfg, GeoFrame(kOrigin));
+        QVector<LinkStatus> seen;
+        connect(&bridge, &FleetBridge::linkChanged, this, [&](const LinkStatus& s) { seen.push_back(s); });
+        QVERIFY(bridge.start().isEmpty());
+        auto last = [&] { return seen.isEmpty() ? LinkState::Unknown : seen.last().state; };
+        QTRY_COMPARE_WITH_TIMEOUT(last(), LinkState::Up, 10000);
+        demo->stop();
+        QElapsedTimer silent;
+        silent.start();
+        QTRY_COMPARE_WITH_TIMEOUT(last(), LinkState::Degraded, 5000);
+        QVERIFY2(silent.elapsed() >= 900, qPrintable(QString::number(silent.elapsed())));
+        QVERIFY(seen.last().detail.startsWith(QStringLiteral("no station heard")));
+        opts.port = cfg.port;
+        demo = std::make_unique<sim::osyris::OsyrisDemo>(opts);
+        QVERIFY2(demo->start(&err), err.c_str());
+        QTRY_COMPARE_WITH_TIMEOUT(last(), LinkState::Up, 10000);
+        bridge.stop();
+        demo->stop();
+    }
+
     void commandsWhileNoStationIsHeardAreRefused() {
         osyris::OsyrisConfig cfg = sim::osyris::OsyrisDemo(oneRoller()).ocuConfig();
         cfg.port = findFreeUdpPort();

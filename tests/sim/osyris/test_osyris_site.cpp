@@ -1,5 +1,6 @@
 // OSYRIS stations on the in-memory radio with a fake clock (accelerated time): recovery under loss,
 // late join, static and dynamic relay, restart on the same SQLite file, PING/PONG, text, range.
+#include "sim/osyris/OsyrisDemo.h"
 #include "sim/osyris/SimSite.h"
 
 #include <QTemporaryDir>
@@ -80,6 +81,15 @@ struct Recorder : OsyrisListener {
 class TestOsyrisSite : public QObject {
     Q_OBJECT
 private slots:
+    // ocu-sim --interface ADDR serves consoles on other hosts: the stations' multicast must leave the host
+    // there (TTL 1, one LAN segment), and never on loopback.
+    void multicastTtlFollowsTheInterface() {
+        QCOMPARE(OsyrisDemo().ocuConfig().multicastTtl, 0);
+        OsyrisDemoOptions lan;
+        lan.interfaceAddress = "192.168.10.5";
+        QCOMPARE(OsyrisDemo(lan).ocuConfig().multicastTtl, 1);
+    }
+
     void machineModels() {
         SimulatedMachine paver(paverSpec());
         auto p0 = paver.poseAt(0), p60 = paver.poseAt(60);
