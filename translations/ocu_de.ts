@@ -183,6 +183,21 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
         <source>mission_upload: %1; nothing sent</source>
         <translation>mission_upload: %1; nichts gesendet</translation>
     </message>
+    <message>
+        <source>Replay: the missions as the vehicles reported them then; commands are disabled.</source>
+        <translation>Wiedergabe: die Missionen, wie die Fahrzeuge sie damals meldeten; Befehle sind gesperrt.</translation>
+    </message>
+    <message>
+        <source>Recorded mission</source>
+        <translation>Aufgezeichnete Mission</translation>
+    </message>
+</context>
+<context>
+    <name>MissionReplayBridge</name>
+    <message>
+        <source>replay: commands are disabled</source>
+        <translation>Wiedergabe: Befehle sind gesperrt</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -2161,6 +2176,111 @@ Alt+U: automatische Disposition ein/aus (Einschalten fragt zuerst)</translation>
     </message>
 </context>
 <context>
+    <name>ocu::HandoffBanner</name>
+    <message>
+        <source>Accept</source>
+        <translation>Annehmen</translation>
+    </message>
+    <message>
+        <source>Deny</source>
+        <translation>Ablehnen</translation>
+    </message>
+    <message>
+        <source>Ask for hand-off</source>
+        <translation>Übergabe erbitten</translation>
+    </message>
+    <message>
+        <source>Withdraw</source>
+        <translation>Zurückziehen</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Hand control of this vehicle to the console that asks</source>
+        <translation>Steuerung dieses Fahrzeugs an die anfragende Konsole übergeben</translation>
+    </message>
+    <message>
+        <source>Keep control; the console that asks is told</source>
+        <translation>Steuerung behalten; die anfragende Konsole wird benachrichtigt</translation>
+    </message>
+    <message>
+        <source>Reason the holder&apos;s operator sees</source>
+        <translation>Grund, den der Bediener des Inhabers sieht</translation>
+    </message>
+    <message>
+        <source>Console %1 asks for control of %2 (authority %3).</source>
+        <translation>Konsole %1 fordert die Steuerung von %2 an (Autorität %3).</translation>
+    </message>
+    <message>
+        <source>Reason: %1</source>
+        <translation>Grund: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more request(s) waiting after this one.</source>
+        <translation>
+            <numerusform>Nach dieser wartet noch %n Anfrage.</numerusform>
+            <numerusform>Nach dieser warten noch %n Anfragen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No time limit: the vehicle waits for your answer.</source>
+        <translation>Keine Frist: das Fahrzeug wartet auf Ihre Antwort.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Answer within %n s, else the vehicle refuses it (timeout).</source>
+        <translation>
+            <numerusform>Antworten Sie binnen %n s, sonst lehnt das Fahrzeug ab (Zeitüberschreitung).</numerusform>
+            <numerusform>Antworten Sie binnen %n s, sonst lehnt das Fahrzeug ab (Zeitüberschreitung).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 is held by console %2 (authority %3). Ask its operator to hand it over:</source>
+        <translation>%1 wird von Konsole %2 gesteuert (Autorität %3). Dessen Bediener um Übergabe bitten:</translation>
+    </message>
+    <message>
+        <source>%1 is held by %2 (authority %3) and offers no Enhanced Access Control: asking takes control only with a higher authority than the holder&apos;s (ordinary pre-emption, authority %4 here).</source>
+        <translation>%1 wird von %2 gesteuert (Autorität %3) und bietet keine erweiterte Zugriffskontrolle (Enhanced Access Control): eine Anfrage übernimmt die Steuerung nur mit höherer Autorität als der des Inhabers (normale Verdrängung, hier Autorität %4).</translation>
+    </message>
+    <message>
+        <source>Waiting for the holder&apos;s answer</source>
+        <translation>Warte auf die Antwort des Inhabers</translation>
+    </message>
+    <message>
+        <source>Granted: taking control</source>
+        <translation>Gewährt: Steuerung wird übernommen</translation>
+    </message>
+    <message>
+        <source>Control handed over</source>
+        <translation>Steuerung übergeben</translation>
+    </message>
+    <message>
+        <source>Denied</source>
+        <translation>Abgelehnt</translation>
+    </message>
+    <message>
+        <source>No answer in time</source>
+        <translation>Keine Antwort in der Frist</translation>
+    </message>
+    <message>
+        <source>Refused</source>
+        <translation>Verweigert</translation>
+    </message>
+    <message>
+        <source>Withdrawn</source>
+        <translation>Zurückgezogen</translation>
+    </message>
+    <message>
+        <source>Requesting control (ordinary pre-emption)</source>
+        <translation>Steuerung wird angefordert (normale Verdrängung)</translation>
+    </message>
+    <message>
+        <source>Hand-off of %1: %2.</source>
+        <translation>Übergabe von %1: %2.</translation>
+    </message>
+</context>
+<context>
     <name>ocu::HardwareStopButton</name>
     <message>
         <source>STOP button unavailable: the joystick subsystem did not start (%1)</source>
@@ -2188,6 +2308,57 @@ Alt+U: automatische Disposition ein/aus (Einschalten fragt zuerst)</translation>
     <message>
         <source>Press and hold to confirm</source>
         <translation>Zum Bestätigen gedrückt halten</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::IlluminationBar</name>
+    <message>
+        <source>Head</source>
+        <translation>Front</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Fahrl.</translation>
+    </message>
+    <message>
+        <source>◀ Turn</source>
+        <translation>◀ Blink</translation>
+    </message>
+    <message>
+        <source>Turn ▶</source>
+        <translation>Blink ▶</translation>
+    </message>
+    <message>
+        <source>Brake</source>
+        <translation>Brems</translation>
+    </message>
+    <message>
+        <source>IR</source>
+        <translation>IR</translation>
+    </message>
+    <message>
+        <source>Lights:</source>
+        <translation>Licht:</translation>
+    </message>
+    <message>
+        <source>Lights: not offered by this vehicle</source>
+        <translation>Licht: von diesem Fahrzeug nicht angeboten</translation>
+    </message>
+    <message>
+        <source>%1: this vehicle has none</source>
+        <translation>%1: an diesem Fahrzeug nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>%1: not reported yet</source>
+        <translation>%1: noch nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>%1: on, as the vehicle reports (click to switch off)</source>
+        <translation>%1: an, laut Fahrzeug (Klick schaltet aus)</translation>
+    </message>
+    <message>
+        <source>%1: off, as the vehicle reports (click to switch on)</source>
+        <translation>%1: aus, laut Fahrzeug (Klick schaltet ein)</translation>
     </message>
 </context>
 <context>
@@ -2560,6 +2731,18 @@ Alt+U: automatische Disposition ein/aus (Einschalten fragt zuerst)</translation>
         <source>JAUS subsystem %1: pose ignored, %2 (east %3 m, north %4 m, speed %5 m/s); last good pose kept (counted in rx.implausible.%6; one warning per vehicle and cause every 30 s)</source>
         <translation>JAUS-Subsystem %1: Lage verworfen, %2 (Ost %3 m, Nord %4 m, Geschwindigkeit %5 m/s); letzte gute Lage beibehalten (gezählt in rx.implausible.%6; eine Warnung je Fahrzeug und Ursache alle 30 s)</translation>
     </message>
+    <message>
+        <source>%1 reports the mission %2</source>
+        <translation>%1 meldet die Mission %2</translation>
+    </message>
+    <message>
+        <source>last reported: odometer %1 m, trip %2 m</source>
+        <translation>zuletzt gemeldet: Gesamtstrecke %1 m, Tagesstrecke %2 m</translation>
+    </message>
+    <message>
+        <source>drive refused: %1 reports the emergency platform state; nothing sent</source>
+        <translation>Fahren abgelehnt: %1 meldet den Plattform-Notzustand; nichts gesendet</translation>
+    </message>
 </context>
 <context>
     <name>ocu::JausControlPanel</name>
@@ -2604,6 +2787,77 @@ Alt+U: automatische Disposition ein/aus (Einschalten fragt zuerst)</translation>
 Select one in the fleet list, in the table above or on the map (click, or Tab to the list and use the arrow keys) to see its details here.</source>
         <translation>Keine Maschine ausgewählt.
 Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus (Klick, oder mit Tab zur Liste und den Pfeiltasten), um hier ihre Details zu sehen.</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::JausPlatform</name>
+    <message>
+        <source>standard</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <source>training</source>
+        <translation>Training</translation>
+    </message>
+    <message>
+        <source>maintenance</source>
+        <translation>Wartung</translation>
+    </message>
+    <message>
+        <source>program mode %1</source>
+        <translation>Programmmodus %1</translation>
+    </message>
+    <message>
+        <source>initialize</source>
+        <translation>Initialisierung</translation>
+    </message>
+    <message>
+        <source>operational</source>
+        <translation>betriebsbereit</translation>
+    </message>
+    <message>
+        <source>shutdown</source>
+        <translation>Abschaltung</translation>
+    </message>
+    <message>
+        <source>system abort</source>
+        <translation>Systemabbruch</translation>
+    </message>
+    <message>
+        <source>emergency</source>
+        <translation>Notzustand</translation>
+    </message>
+    <message>
+        <source>render useless</source>
+        <translation>unbrauchbar machen</translation>
+    </message>
+    <message>
+        <source>state %1</source>
+        <translation>Zustand %1</translation>
+    </message>
+    <message>
+        <source>headlights</source>
+        <translation>Scheinwerfer</translation>
+    </message>
+    <message>
+        <source>left turn signal</source>
+        <translation>Blinker links</translation>
+    </message>
+    <message>
+        <source>right turn signal</source>
+        <translation>Blinker rechts</translation>
+    </message>
+    <message>
+        <source>running lights</source>
+        <translation>Tagfahrlicht</translation>
+    </message>
+    <message>
+        <source>brake lights</source>
+        <translation>Bremslicht</translation>
+    </message>
+    <message>
+        <source>IR source</source>
+        <translation>IR-Strahler</translation>
     </message>
 </context>
 <context>
@@ -3034,6 +3288,14 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
     <message>
         <source>the OSYRIS stop message</source>
         <translation>die OSYRIS-Stoppmeldung</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Video</translation>
+    </message>
+    <message>
+        <source>Video panel (Ctrl+I): camera, full screen (Esc returns), resume driving</source>
+        <translation>Videofeld (Strg+I): Kamera, Vollbild (Esc kehrt zurück), Fahren fortsetzen</translation>
     </message>
 </context>
 <context>
@@ -3503,6 +3765,41 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
     </message>
 </context>
 <context>
+    <name>ocu::MissionTakeover</name>
+    <message>
+        <source>the mission was not paused: %1</source>
+        <translation>die Mission wurde nicht angehalten: %1</translation>
+    </message>
+    <message>
+        <source>a takeover of the mission is already being confirmed</source>
+        <translation>eine Übernahme der Mission wird bereits bestätigt</translation>
+    </message>
+    <message>
+        <source>Take over the mission?</source>
+        <translation>Mission übernehmen?</translation>
+    </message>
+    <message>
+        <source>%1 is running a mission (waypoint %2 of %3). Driving it by hand pauses the mission first; Resume in the mission panel continues it.</source>
+        <translation>%1 fährt eine Mission (Wegpunkt %2 von %3). Manuelles Fahren hält die Mission zuerst an; „Fortsetzen“ im Missionsfeld setzt sie fort.</translation>
+    </message>
+    <message>
+        <source>&amp;Pause and drive</source>
+        <translation>&amp;Anhalten und fahren</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the mission</source>
+        <translation>Mission &amp;behalten</translation>
+    </message>
+    <message>
+        <source>no command gate</source>
+        <translation>kein Befehls-Gate</translation>
+    </message>
+    <message>
+        <source>the operator kept the mission</source>
+        <translation>der Bediener hat die Mission behalten</translation>
+    </message>
+</context>
+<context>
     <name>ocu::OperatorSession</name>
     <message>
         <source>idle for %1 s</source>
@@ -3706,6 +4003,10 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
         <source>OSYRIS machines carry no stop state to clear</source>
         <translation>OSYRIS-Maschinen haben keinen Stoppzustand zum Aufheben</translation>
     </message>
+    <message>
+        <source>no station heard for %1 s</source>
+        <translation>seit %1 s keine Station gehört</translation>
+    </message>
 </context>
 <context>
     <name>ocu::OwnPosition</name>
@@ -3866,6 +4167,77 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
     <message>
         <source>Lift %1 (z %2 – %3 m)</source>
         <translation>Lage %1 (z %2 – %3 m)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::PlatformServicesWidget</name>
+    <message>
+        <source>Set mode</source>
+        <translation>Modus setzen</translation>
+    </message>
+    <message>
+        <source>Set state…</source>
+        <translation>Zustand setzen…</translation>
+    </message>
+    <message>
+        <source>Emergency state</source>
+        <translation>Notzustand</translation>
+    </message>
+    <message>
+        <source>Reset trip</source>
+        <translation>Tagesstrecke nullen</translation>
+    </message>
+    <message>
+        <source>Platform state</source>
+        <translation>Plattformzustand</translation>
+    </message>
+    <message>
+        <source>Put the whole platform in its emergency state: every component halts and refuses commands until it is set back to operational (AEP-4818 §6.2.6)</source>
+        <translation>Die gesamte Plattform in den Notzustand setzen: jede Komponente hält an und verweigert Befehle, bis sie wieder auf betriebsbereit gesetzt wird (AEP-4818 §6.2.6)</translation>
+    </message>
+    <message>
+        <source>Platform mode:</source>
+        <translation>Plattformmodus:</translation>
+    </message>
+    <message>
+        <source>Platform state:</source>
+        <translation>Plattformzustand:</translation>
+    </message>
+    <message>
+        <source>Odometer:</source>
+        <translation>Wegstrecke:</translation>
+    </message>
+    <message>
+        <source>Put %1 in the platform state &quot;%2&quot;?</source>
+        <translation>%1 in den Plattformzustand „%2“ setzen?</translation>
+    </message>
+    <message>
+        <source>not offered</source>
+        <translation>nicht angeboten</translation>
+    </message>
+    <message>
+        <source>not reported yet</source>
+        <translation>noch nicht gemeldet</translation>
+    </message>
+    <message>
+        <source> (last request refused: %1)</source>
+        <translation> (letzte Anfrage abgelehnt: %1)</translation>
+    </message>
+    <message>
+        <source>%1 · trip %2</source>
+        <translation>%1 · Tagesstrecke %2</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Comms-lost policy: offered (%1 %2); setting a policy waits for a published message layout</source>
+        <translation>Verhalten bei Verbindungsverlust: angeboten (%1 %2); das Setzen wartet auf ein veröffentlichtes Nachrichtenformat</translation>
+    </message>
+    <message>
+        <source>Comms-lost policy: not offered by this vehicle</source>
+        <translation>Verhalten bei Verbindungsverlust: von diesem Fahrzeug nicht angeboten</translation>
     </message>
 </context>
 <context>
@@ -4504,6 +4876,18 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
         <source>driving is not allowed</source>
         <translation>Fahren ist nicht erlaubt</translation>
     </message>
+    <message>
+        <source>teleop video hidden</source>
+        <translation>Fernsteuerungsvideo ausgeblendet</translation>
+    </message>
+    <message>
+        <source>The vehicle runs a mission: confirm to pause it before driving</source>
+        <translation>Das Fahrzeug fährt eine Mission: zum Fahren erst deren Anhalten bestätigen</translation>
+    </message>
+    <message>
+        <source>Mission paused: driving by hand (Resume in the mission panel)</source>
+        <translation>Mission angehalten: manuelles Fahren (Fortsetzen im Missionsfeld)</translation>
+    </message>
 </context>
 <context>
     <name>ocu::TeleopVideoPane</name>
@@ -4748,6 +5132,46 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
     <message>
         <source>Subsystem %1</source>
         <translation>Subsystem %1</translation>
+    </message>
+    <message>
+        <source>Platform services</source>
+        <translation>Plattformdienste</translation>
+    </message>
+    <message>
+        <source>not offered</source>
+        <translation>nicht angeboten</translation>
+    </message>
+    <message>
+        <source>Platform mode</source>
+        <translation>Plattformmodus</translation>
+    </message>
+    <message>
+        <source>Platform state</source>
+        <translation>Plattformzustand</translation>
+    </message>
+    <message>
+        <source>Lights</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>all off</source>
+        <translation>alle aus</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Odometer</source>
+        <translation>Wegstrecke</translation>
+    </message>
+    <message>
+        <source>Trip</source>
+        <translation>Tagesstrecke</translation>
+    </message>
+    <message>
+        <source>Comms-lost policy service</source>
+        <translation>Dienst für Verhalten bei Verbindungsverlust</translation>
     </message>
 </context>
 <context>

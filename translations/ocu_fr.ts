@@ -183,6 +183,21 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
         <source>mission_upload: %1; nothing sent</source>
         <translation>mission_upload : %1 ; rien n&apos;a été envoyé</translation>
     </message>
+    <message>
+        <source>Replay: the missions as the vehicles reported them then; commands are disabled.</source>
+        <translation>Relecture : les missions telles que les véhicules les signalaient alors ; les commandes sont désactivées.</translation>
+    </message>
+    <message>
+        <source>Recorded mission</source>
+        <translation>Mission enregistrée</translation>
+    </message>
+</context>
+<context>
+    <name>MissionReplayBridge</name>
+    <message>
+        <source>replay: commands are disabled</source>
+        <translation>relecture : les commandes sont désactivées</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -2161,6 +2176,111 @@ Alt+U : répartition automatique activée/désactivée (l&apos;activation demand
     </message>
 </context>
 <context>
+    <name>ocu::HandoffBanner</name>
+    <message>
+        <source>Accept</source>
+        <translation>Accepter</translation>
+    </message>
+    <message>
+        <source>Deny</source>
+        <translation>Refuser</translation>
+    </message>
+    <message>
+        <source>Ask for hand-off</source>
+        <translation>Demander le transfert</translation>
+    </message>
+    <message>
+        <source>Withdraw</source>
+        <translation>Retirer</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Hand control of this vehicle to the console that asks</source>
+        <translation>Céder le contrôle de ce véhicule à la console qui le demande</translation>
+    </message>
+    <message>
+        <source>Keep control; the console that asks is told</source>
+        <translation>Garder le contrôle ; la console qui le demande en est informée</translation>
+    </message>
+    <message>
+        <source>Reason the holder&apos;s operator sees</source>
+        <translation>Motif affiché à l&apos;opérateur du détenteur</translation>
+    </message>
+    <message>
+        <source>Console %1 asks for control of %2 (authority %3).</source>
+        <translation>La console %1 demande le contrôle de %2 (autorité %3).</translation>
+    </message>
+    <message>
+        <source>Reason: %1</source>
+        <translation>Motif : %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more request(s) waiting after this one.</source>
+        <translation>
+            <numerusform>%n autre demande en attente après celle-ci.</numerusform>
+            <numerusform>%n autres demandes en attente après celle-ci.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No time limit: the vehicle waits for your answer.</source>
+        <translation>Pas de délai : le véhicule attend votre réponse.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Answer within %n s, else the vehicle refuses it (timeout).</source>
+        <translation>
+            <numerusform>Répondez sous %n s, sinon le véhicule refuse (délai dépassé).</numerusform>
+            <numerusform>Répondez sous %n s, sinon le véhicule refuse (délai dépassé).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 is held by console %2 (authority %3). Ask its operator to hand it over:</source>
+        <translation>%1 est contrôlé par la console %2 (autorité %3). Demander à son opérateur de le céder :</translation>
+    </message>
+    <message>
+        <source>%1 is held by %2 (authority %3) and offers no Enhanced Access Control: asking takes control only with a higher authority than the holder&apos;s (ordinary pre-emption, authority %4 here).</source>
+        <translation>%1 est contrôlé par %2 (autorité %3) et n&apos;offre pas le contrôle d&apos;accès étendu (Enhanced Access Control) : la demande ne prend le contrôle qu&apos;avec une autorité supérieure à celle du détenteur (préemption ordinaire, autorité %4 ici).</translation>
+    </message>
+    <message>
+        <source>Waiting for the holder&apos;s answer</source>
+        <translation>En attente de la réponse du détenteur</translation>
+    </message>
+    <message>
+        <source>Granted: taking control</source>
+        <translation>Accordé : prise de contrôle</translation>
+    </message>
+    <message>
+        <source>Control handed over</source>
+        <translation>Contrôle cédé</translation>
+    </message>
+    <message>
+        <source>Denied</source>
+        <translation>Refusé</translation>
+    </message>
+    <message>
+        <source>No answer in time</source>
+        <translation>Pas de réponse dans le délai</translation>
+    </message>
+    <message>
+        <source>Refused</source>
+        <translation>Rejeté</translation>
+    </message>
+    <message>
+        <source>Withdrawn</source>
+        <translation>Retiré</translation>
+    </message>
+    <message>
+        <source>Requesting control (ordinary pre-emption)</source>
+        <translation>Demande de contrôle (préemption ordinaire)</translation>
+    </message>
+    <message>
+        <source>Hand-off of %1: %2.</source>
+        <translation>Transfert de %1 : %2.</translation>
+    </message>
+</context>
+<context>
     <name>ocu::HardwareStopButton</name>
     <message>
         <source>STOP button unavailable: the joystick subsystem did not start (%1)</source>
@@ -2188,6 +2308,57 @@ Alt+U : répartition automatique activée/désactivée (l&apos;activation demand
     <message>
         <source>Press and hold to confirm</source>
         <translation>Maintenir appuyé pour confirmer</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::IlluminationBar</name>
+    <message>
+        <source>Head</source>
+        <translation>Phares</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Jour</translation>
+    </message>
+    <message>
+        <source>◀ Turn</source>
+        <translation>◀ Clign.</translation>
+    </message>
+    <message>
+        <source>Turn ▶</source>
+        <translation>Clign. ▶</translation>
+    </message>
+    <message>
+        <source>Brake</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>IR</source>
+        <translation>IR</translation>
+    </message>
+    <message>
+        <source>Lights:</source>
+        <translation>Feux :</translation>
+    </message>
+    <message>
+        <source>Lights: not offered by this vehicle</source>
+        <translation>Feux : non proposés par ce véhicule</translation>
+    </message>
+    <message>
+        <source>%1: this vehicle has none</source>
+        <translation>%1 : ce véhicule n&apos;en a pas</translation>
+    </message>
+    <message>
+        <source>%1: not reported yet</source>
+        <translation>%1 : pas encore signalé</translation>
+    </message>
+    <message>
+        <source>%1: on, as the vehicle reports (click to switch off)</source>
+        <translation>%1 : allumé selon le véhicule (cliquer pour éteindre)</translation>
+    </message>
+    <message>
+        <source>%1: off, as the vehicle reports (click to switch on)</source>
+        <translation>%1 : éteint selon le véhicule (cliquer pour allumer)</translation>
     </message>
 </context>
 <context>
@@ -2560,6 +2731,18 @@ Alt+U : répartition automatique activée/désactivée (l&apos;activation demand
         <source>JAUS subsystem %1: pose ignored, %2 (east %3 m, north %4 m, speed %5 m/s); last good pose kept (counted in rx.implausible.%6; one warning per vehicle and cause every 30 s)</source>
         <translation>sous-système JAUS %1 : pose ignorée, %2 (est %3 m, nord %4 m, vitesse %5 m/s) ; dernière pose valide conservée (comptée dans rx.implausible.%6 ; un avertissement par véhicule et par cause toutes les 30 s)</translation>
     </message>
+    <message>
+        <source>%1 reports the mission %2</source>
+        <translation>%1 signale la mission %2</translation>
+    </message>
+    <message>
+        <source>last reported: odometer %1 m, trip %2 m</source>
+        <translation>dernier relevé : odomètre %1 m, trajet %2 m</translation>
+    </message>
+    <message>
+        <source>drive refused: %1 reports the emergency platform state; nothing sent</source>
+        <translation>conduite refusée : %1 signale l&apos;état d&apos;urgence de la plateforme ; rien n&apos;est envoyé</translation>
+    </message>
 </context>
 <context>
     <name>ocu::JausControlPanel</name>
@@ -2604,6 +2787,77 @@ Alt+U : répartition automatique activée/désactivée (l&apos;activation demand
 Select one in the fleet list, in the table above or on the map (click, or Tab to the list and use the arrow keys) to see its details here.</source>
         <translation>Aucune machine sélectionnée.
 En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou sur la carte (clic, ou Tab jusqu&apos;à la liste puis les flèches) pour voir ses détails ici.</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::JausPlatform</name>
+    <message>
+        <source>standard</source>
+        <translation>standard</translation>
+    </message>
+    <message>
+        <source>training</source>
+        <translation>entraînement</translation>
+    </message>
+    <message>
+        <source>maintenance</source>
+        <translation>maintenance</translation>
+    </message>
+    <message>
+        <source>program mode %1</source>
+        <translation>mode programme %1</translation>
+    </message>
+    <message>
+        <source>initialize</source>
+        <translation>initialisation</translation>
+    </message>
+    <message>
+        <source>operational</source>
+        <translation>opérationnel</translation>
+    </message>
+    <message>
+        <source>shutdown</source>
+        <translation>arrêt</translation>
+    </message>
+    <message>
+        <source>system abort</source>
+        <translation>abandon système</translation>
+    </message>
+    <message>
+        <source>emergency</source>
+        <translation>urgence</translation>
+    </message>
+    <message>
+        <source>render useless</source>
+        <translation>mise hors d&apos;usage</translation>
+    </message>
+    <message>
+        <source>state %1</source>
+        <translation>état %1</translation>
+    </message>
+    <message>
+        <source>headlights</source>
+        <translation>phares</translation>
+    </message>
+    <message>
+        <source>left turn signal</source>
+        <translation>clignotant gauche</translation>
+    </message>
+    <message>
+        <source>right turn signal</source>
+        <translation>clignotant droit</translation>
+    </message>
+    <message>
+        <source>running lights</source>
+        <translation>feux de jour</translation>
+    </message>
+    <message>
+        <source>brake lights</source>
+        <translation>feux stop</translation>
+    </message>
+    <message>
+        <source>IR source</source>
+        <translation>source IR</translation>
     </message>
 </context>
 <context>
@@ -3034,6 +3288,14 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
     <message>
         <source>the OSYRIS stop message</source>
         <translation>le message d&apos;arrêt OSYRIS</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Vidéo</translation>
+    </message>
+    <message>
+        <source>Video panel (Ctrl+I): camera, full screen (Esc returns), resume driving</source>
+        <translation>Panneau Vidéo (Ctrl+I) : caméra, plein écran (Échap pour revenir), reprendre la conduite</translation>
     </message>
 </context>
 <context>
@@ -3503,6 +3765,41 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
     </message>
 </context>
 <context>
+    <name>ocu::MissionTakeover</name>
+    <message>
+        <source>the mission was not paused: %1</source>
+        <translation>la mission n&apos;a pas été mise en pause : %1</translation>
+    </message>
+    <message>
+        <source>a takeover of the mission is already being confirmed</source>
+        <translation>une reprise en main de la mission est déjà en cours de confirmation</translation>
+    </message>
+    <message>
+        <source>Take over the mission?</source>
+        <translation>Reprendre la mission en main ?</translation>
+    </message>
+    <message>
+        <source>%1 is running a mission (waypoint %2 of %3). Driving it by hand pauses the mission first; Resume in the mission panel continues it.</source>
+        <translation>%1 exécute une mission (point %2 sur %3). La conduite manuelle met d&apos;abord la mission en pause ; « Reprendre » dans le panneau Mission la poursuit.</translation>
+    </message>
+    <message>
+        <source>&amp;Pause and drive</source>
+        <translation>&amp;Pause et conduite</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the mission</source>
+        <translation>&amp;Garder la mission</translation>
+    </message>
+    <message>
+        <source>no command gate</source>
+        <translation>aucun filtre de commandes</translation>
+    </message>
+    <message>
+        <source>the operator kept the mission</source>
+        <translation>l&apos;opérateur a gardé la mission</translation>
+    </message>
+</context>
+<context>
     <name>ocu::OperatorSession</name>
     <message>
         <source>idle for %1 s</source>
@@ -3706,6 +4003,10 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
         <source>send_text: &quot;text&quot; must be 1 to 79 bytes (CmMsg)</source>
         <translation>send_text : « text » doit faire de 1 à 79 octets (CmMsg)</translation>
     </message>
+    <message>
+        <source>no station heard for %1 s</source>
+        <translation>aucune station entendue depuis %1 s</translation>
+    </message>
 </context>
 <context>
     <name>ocu::OwnPosition</name>
@@ -3866,6 +4167,77 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
     <message>
         <source>Lift %1 (z %2 – %3 m)</source>
         <translation>Couche %1 (z %2 – %3 m)</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::PlatformServicesWidget</name>
+    <message>
+        <source>Set mode</source>
+        <translation>Définir le mode</translation>
+    </message>
+    <message>
+        <source>Set state…</source>
+        <translation>Définir l&apos;état…</translation>
+    </message>
+    <message>
+        <source>Emergency state</source>
+        <translation>État d&apos;urgence</translation>
+    </message>
+    <message>
+        <source>Reset trip</source>
+        <translation>Remettre le trajet à zéro</translation>
+    </message>
+    <message>
+        <source>Platform state</source>
+        <translation>État de la plateforme</translation>
+    </message>
+    <message>
+        <source>Put the whole platform in its emergency state: every component halts and refuses commands until it is set back to operational (AEP-4818 §6.2.6)</source>
+        <translation>Mettre toute la plateforme dans son état d&apos;urgence : chaque composant s&apos;arrête et refuse les commandes jusqu&apos;au retour à l&apos;état opérationnel (AEP-4818 §6.2.6)</translation>
+    </message>
+    <message>
+        <source>Platform mode:</source>
+        <translation>Mode de la plateforme :</translation>
+    </message>
+    <message>
+        <source>Platform state:</source>
+        <translation>État de la plateforme :</translation>
+    </message>
+    <message>
+        <source>Odometer:</source>
+        <translation>Odomètre :</translation>
+    </message>
+    <message>
+        <source>Put %1 in the platform state &quot;%2&quot;?</source>
+        <translation>Mettre %1 dans l&apos;état de plateforme « %2 » ?</translation>
+    </message>
+    <message>
+        <source>not offered</source>
+        <translation>non proposé</translation>
+    </message>
+    <message>
+        <source>not reported yet</source>
+        <translation>pas encore signalé</translation>
+    </message>
+    <message>
+        <source> (last request refused: %1)</source>
+        <translation> (dernière demande refusée : %1)</translation>
+    </message>
+    <message>
+        <source>%1 · trip %2</source>
+        <translation>%1 · trajet %2</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Comms-lost policy: offered (%1 %2); setting a policy waits for a published message layout</source>
+        <translation>Politique de perte de liaison : proposée (%1 %2) ; sa définition attend un format de message publié</translation>
+    </message>
+    <message>
+        <source>Comms-lost policy: not offered by this vehicle</source>
+        <translation>Politique de perte de liaison : non proposée par ce véhicule</translation>
     </message>
 </context>
 <context>
@@ -4504,6 +4876,18 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
         <source>video window closed or lost focus</source>
         <translation>fenêtre vidéo fermée ou focus perdu</translation>
     </message>
+    <message>
+        <source>teleop video hidden</source>
+        <translation>vidéo de téléopération masquée</translation>
+    </message>
+    <message>
+        <source>The vehicle runs a mission: confirm to pause it before driving</source>
+        <translation>Le véhicule exécute une mission : confirmer sa mise en pause avant de conduire</translation>
+    </message>
+    <message>
+        <source>Mission paused: driving by hand (Resume in the mission panel)</source>
+        <translation>Mission en pause : conduite manuelle (Reprendre dans le panneau Mission)</translation>
+    </message>
 </context>
 <context>
     <name>ocu::TeleopVideoPane</name>
@@ -4748,6 +5132,46 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
     <message>
         <source>Subsystem %1</source>
         <translation>Sous-système %1</translation>
+    </message>
+    <message>
+        <source>Platform services</source>
+        <translation>Services de plateforme</translation>
+    </message>
+    <message>
+        <source>not offered</source>
+        <translation>non proposé</translation>
+    </message>
+    <message>
+        <source>Platform mode</source>
+        <translation>Mode de la plateforme</translation>
+    </message>
+    <message>
+        <source>Platform state</source>
+        <translation>État de la plateforme</translation>
+    </message>
+    <message>
+        <source>Lights</source>
+        <translation>Feux</translation>
+    </message>
+    <message>
+        <source>all off</source>
+        <translation>tous éteints</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Odometer</source>
+        <translation>Odomètre</translation>
+    </message>
+    <message>
+        <source>Trip</source>
+        <translation>Trajet</translation>
+    </message>
+    <message>
+        <source>Comms-lost policy service</source>
+        <translation>Service de politique de perte de liaison</translation>
     </message>
 </context>
 <context>
