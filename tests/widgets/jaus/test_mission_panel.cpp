@@ -7,6 +7,7 @@
 #include "models/jaus/JausVehicleBridge.h"
 #include "models/jaus/MissionGeoJson.h"
 #include "models/jaus/MissionPlan.h"
+#include "tests/widgets/jaus/FakeJausBridge.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/jaus/MissionCommands.h"
 #include "widgets/jaus/MissionGateCommands.h"
@@ -34,32 +35,7 @@ namespace {
 
 const GeoPoint kOrigin{48.137, 11.575, 500};
 
-// A JAUS bridge without a stack: the test sets each vehicle's view, as the real bridge would from reports.
-class FakeJausBridge final : public JausVehicleBridge {
-public:
-    JausConsoleIdentity ident{QStringLiteral("OCU"), 200, 205, true, true, true, 20, {}};
-    QMap<quint16, JausVehicle> vehicles;
-    JausConsoleIdentity identity() const override { return ident; }
-    QList<quint16> subsystems() const override { return vehicles.keys(); }
-    std::optional<JausVehicle> subsystem(quint16 id) const override {
-        return vehicles.contains(id) ? std::optional<JausVehicle>(vehicles.value(id)) : std::nullopt;
-    }
-    CommandResult drive(quint16, const JausDrive&) override { return CommandResult::failure("no drive"); }
-    CommandResult stopDriving(quint16) override { return CommandResult::failure("no drive"); }
-    void stopAll(OutcomeCallback done) override { done({}); }
-    void stopMachine(const QString&, OutcomeCallback done) override { done({}); }
-    void clearStop(const QString&, OutcomeCallback done) override { done({}); }
-    void report(const JausVehicle& v) {
-        vehicles[v.subsystem] = v;
-        emit subsystemUpdated(v);
-    }
-    // What the gate handed over, as the audit writes it.
-    QVector<OperatorCommand> commands;
-    void command(const OperatorCommand& c, OutcomeCallback done) override {
-        commands << c;
-        done({TargetOutcome::sentTo(commandTarget(c).toStdString())});
-    }
-};
+using ocu::testing::FakeJausBridge;
 
 // The sending seam, recording each call as the JAUS module's implementation would send it.
 class RecordingCommands final : public MissionCommands {

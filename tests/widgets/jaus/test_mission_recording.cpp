@@ -13,6 +13,7 @@
 #include "models/recording/Recorder.h"
 #include "models/recording/Recording.h"
 #include "models/recording/ReplayController.h"
+#include "tests/widgets/jaus/FakeJausBridge.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/jaus/MissionPanel.h"
 #include "widgets/jaus/MissionPlanLayer.h"
@@ -32,24 +33,7 @@ namespace {
 
 const GeoPoint kOrigin{48.137, 11.575, 500};
 
-class FakeJausBridge final : public JausVehicleBridge {
-public:
-    QMap<quint16, JausVehicle> vehicles;
-    JausConsoleIdentity identity() const override { return {}; }
-    QList<quint16> subsystems() const override { return vehicles.keys(); }
-    std::optional<JausVehicle> subsystem(quint16 id) const override {
-        return vehicles.contains(id) ? std::optional<JausVehicle>(vehicles.value(id)) : std::nullopt;
-    }
-    CommandResult drive(quint16, const JausDrive&) override { return CommandResult::failure("no drive"); }
-    CommandResult stopDriving(quint16) override { return CommandResult::failure("no drive"); }
-    void stopAll(OutcomeCallback done) override { done({}); }
-    void stopMachine(const QString&, OutcomeCallback done) override { done({}); }
-    void clearStop(const QString&, OutcomeCallback done) override { done({}); }
-    void report(const JausVehicle& v) {
-        vehicles[v.subsystem] = v;
-        emit subsystemUpdated(v);
-    }
-};
+using ocu::testing::FakeJausBridge;
 
 QVector<MissionWaypoint> route() {
     QVector<MissionWaypoint> w;
@@ -145,6 +129,7 @@ private slots:
 
     void progressIsRecordedAtMostOncePerInterval() {
         FakeJausBridge bridge;
+        bridge.ident = {}; // a console that may command nothing: the recording is read, never sent
         auto* feed = new MissionRecordFeed(&bridge, 60000);
         QSignalSpy records(&bridge, &FleetBridge::detailRecorded);
         JausVehicle v;
@@ -185,6 +170,7 @@ private slots:
         FleetContext ctx;
         ctx.fleet()->setClock(clock);
         auto* bridge = new FakeJausBridge;
+        bridge->ident = {};
         bridge->setClock(clock);
         ctx.addBridge(bridge);
         new MissionRecordFeed(bridge, 0); // every change: the test compares every instant

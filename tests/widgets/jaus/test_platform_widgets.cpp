@@ -5,6 +5,7 @@
 // its version) and the details tree's platform rows.
 #include "models/FleetContext.h"
 #include "models/jaus/JausVehicleBridge.h"
+#include "tests/widgets/jaus/FakeJausBridge.h"
 #include "widgets/jaus/IlluminationBar.h"
 #include "widgets/jaus/PlatformServicesWidget.h"
 #include "widgets/jaus/VehicleDetailsWidget.h"
@@ -21,31 +22,7 @@ using namespace ocu;
 
 namespace {
 
-// A JAUS bridge without a stack: the test sets each vehicle's view, as the real bridge would from reports.
-class FakeJausBridge final : public JausVehicleBridge {
-public:
-    JausConsoleIdentity ident{QStringLiteral("OCU"), 200, 205, true, true, true, 20, {}};
-    QMap<quint16, JausVehicle> vehicles;
-    JausConsoleIdentity identity() const override { return ident; }
-    QList<quint16> subsystems() const override { return vehicles.keys(); }
-    std::optional<JausVehicle> subsystem(quint16 id) const override {
-        return vehicles.contains(id) ? std::optional<JausVehicle>(vehicles.value(id)) : std::nullopt;
-    }
-    CommandResult drive(quint16, const JausDrive&) override { return CommandResult::failure("no drive"); }
-    CommandResult stopDriving(quint16) override { return CommandResult::failure("no drive"); }
-    void stopAll(OutcomeCallback done) override { done({}); }
-    void stopMachine(const QString&, OutcomeCallback done) override { done({}); }
-    void clearStop(const QString&, OutcomeCallback done) override { done({}); }
-    void report(const JausVehicle& v) {
-        vehicles[v.subsystem] = v;
-        emit subsystemUpdated(v);
-    }
-    QVector<OperatorCommand> commands;
-    void command(const OperatorCommand& c, OutcomeCallback done) override {
-        commands << c;
-        done({TargetOutcome::sentTo(commandTarget(c).toStdString())});
-    }
-};
+using ocu::testing::FakeJausBridge;
 
 JausOfferedService offered(const char* uri, int minor) {
     return JausOfferedService{true, QString::fromLatin1(uri), 1, minor};
