@@ -32,6 +32,7 @@ namespace recording {
 class ReplayController;
 }
 class FleetContext;
+class ControlRoomModel;
 class OwnPosition;
 class ProductionModel;
 
@@ -54,6 +55,9 @@ struct ModulePanels {
     FleetContext* fleet;
     const SiteConfig& config;
     PassCountPanel* passCounts; // the pass-count panel (its data: the first bridge's pass-count layer)
+    // Who is where across the control room (nullptr without the shared history): a panel that names a
+    // machine's controller names the person and the console with it.
+    ControlRoomModel* controlRoom = nullptr;
 };
 
 // What a module needs to fill its panels in a replay (`ocu --replay`): the recording through its controller
@@ -103,6 +107,10 @@ public:
     virtual QString stopAllReach() const { return {}; }
     // The protocol for Help › About, with its standards.
     virtual QString aboutName() const { return displayName(); }
+
+    // Once started: the addresses this console's stack commands machines with, as the machines report their
+    // controller ("jaus:3.1.1"), published in the control room so that other consoles can name this one.
+    virtual QStringList controllerAddresses() const { return {}; }
 
     // Capabilities. The production (tonnes, loads) of the machines this module's bridge reports, or nullptr.
     virtual ProductionModel* production() const { return nullptr; }

@@ -18,6 +18,7 @@
 #include "app/HeadlessSocket.h"
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
+#include "models/ControlRoomModel.h"
 #include "models/FleetContext.h"
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
@@ -27,6 +28,7 @@
 #include "models/recording/Recorder.h"
 #include "protocols/site/PamAuthenticator.h"
 #include "sim/SimulatedSite.h"
+#include "widgets/ControlRoomPanel.h"
 #include "widgets/EventLogWidget.h"
 #include "widgets/FleetListWidget.h"
 #include "widgets/PassCountPanel.h"
@@ -54,6 +56,8 @@ struct SiteRuntime::Impl {
     OperatorSession* session = nullptr;
     std::vector<std::unique_ptr<ProtocolModule>> modules = makeProtocolModules();
     recording::Recorder* recorder = nullptr;        // the flight recorder of this run
+    PgHistory* history = nullptr;                   // the shared control-room history, when configured
+    ControlRoomModel* room = nullptr;               // who is where, read from it
     std::unique_ptr<HardwareStopButton> stopButton; // site configuration `stop_button`
     QPointer<EarlyStopPress> earlyPress;            // the window's STOP ALL press, off the GUI thread
     QStringList startProblems;
@@ -97,6 +101,7 @@ struct SiteRuntime::Impl {
     void connectBridges(MainWindow& window, SiteMapView* map, PassCountPanel* passPanel, QObject* feed,
                         SiteRuntime* q) const;
     void connectAlarmsAndStops(MainWindow& window) const;
+    void addControlRoomPanel(MainWindow& window) const;
 };
 
 SiteRuntime::SiteRuntime(SiteConfig config, QObject* parent)
@@ -146,6 +151,12 @@ void SiteRuntime::start() {
                                     m_config.roles.configured ? m_config.roles.authorityOf(who.role) : -1});
         if (!e.isEmpty())
             d.startProblems << e;
+    }
+    if (d.history) { // who is here, and the addresses the stacks just started control machines with
+        QStringList addresses;
+        for (const auto& m : d.modules)
+            addresses << m->controllerAddresses();
+        d.history->attachSession(d.session, addresses);
     }
     // After the stacks: the button's first press may come at once (a latched button).
     if (m_config.stopButton)
@@ -216,8 +227,14 @@ void SiteRuntime::startControlRoomHistory() {
                                    QStringLiteral("history")));
     });
     const QString e = history->start();
-    if (!e.isEmpty())
+    if (!e.isEmpty()) {
         d.startProblems << tr("Control-room history: %1").arg(e);
+        return;
+    }
+    d.history = history;
+    d.room = new ControlRoomModel(this);
+    d.room->setThisConsole(hc.console);
+    connect(history, &PgHistory::roomChanged, d.room, &ControlRoomModel::setRoom);
 }
 
 // The console's name in audit lines and the shared history: the history's console name, else the host's.
@@ -245,6 +262,9 @@ void SiteRuntime::stop() {
     if (d.stopped)
         return;
     d.stopped = true;
+    if (d.ctx) // after the last command of this run could be given, before the recorder and the history stop
+        d.ctx->gate()->auditSession(QStringLiteral("sign_out"), d.ctx->gate()->operatorIdentity(), true,
+                                    tr("console closed"));
     d.stopButton.reset(); // its thread calls the bridges: gone before they are
     delete d.earlyPress;  // likewise
     // Stacks first (a stack may still send, e.g. release its control), then the simulators.
@@ -254,6 +274,8 @@ void SiteRuntime::stop() {
         d.sim->stop();
     if (d.recorder)
         d.recorder->stop(); // commits what is queued and closes the file
+    if (d.history)
+        d.history->stop(); // leaves the room (a clean exit) and sends the sign-out
 }
 
 recording::Recorder* SiteRuntime::recorder() const {
@@ -331,6 +353,7 @@ void SiteRuntime::populate(MainWindow& window) {
 
     auto* passPanel = new PassCountPanel;
     passPanel->setLayer(d.passLayer());
+    d.addControlRoomPanel(window);
     d.populateModules(window, m_config, passPanel);
     if (d.passLayer()) {
         window.setPanelWidget(Panel::PassCounts, passPanel);
@@ -427,7 +450,25 @@ void SiteRuntime::Impl::populateModules(MainWindow& window, const SiteConfig& co
                                         PassCountPanel* passCounts) const {
     for (const auto& m : modules)
         if (m->bridge())
-            m->populate({window, ctx, config, passCounts});
+            m->populate({window, ctx, config, passCounts, room});
+}
+
+// The control room (who is at which console), with the shared history only.
+void SiteRuntime::Impl::addControlRoomPanel(MainWindow& window) const {
+    if (!room)
+        return;
+    const QString key = QStringLiteral("room");
+    PanelSpec spec;
+    spec.key = key;
+    spec.title = QCoreApplication::translate("ocu::MainWindow", "Control room");
+    spec.scrolls = false; // a table: it elides
+    spec.kind = PanelKind::ControlRoom;
+    window.addPanels({spec});
+    auto* panel = new ControlRoomPanel(room);
+    if (history->isConnected()) // else "waiting" until it says
+        panel->setConnected(true);
+    connect(history, &PgHistory::connectionChanged, panel, &ControlRoomPanel::setConnected);
+    window.setPanelWidget(key, panel);
 }
 
 // The pass-count panel's palette and target on the 2D map, and on the 3D surface cell for cell.

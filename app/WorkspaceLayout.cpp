@@ -9,9 +9,12 @@ WorkspacePlan workspacePlan(Workspace workspace) {
     switch (workspace) {
     case Workspace::Dispatch:
         // The dispatch table needs 610 px in German: a little more of the width for the side column.
-        return {
-            {K::Map}, {K::Dispatch, K::Fleet}, {K::Alarms, K::Production}, {K::Dispatch, K::Production}, 55,
-            64};
+        return {{K::Map},
+                {K::Dispatch, K::Fleet},
+                {K::Alarms, K::Production, K::ControlRoom},
+                {K::Dispatch, K::Production},
+                55,
+                64};
     case Workspace::Compaction:
         // The event log is a tab here too: an alarm needs the site manager's action (EEMUA 191).
         return {{K::Map},
@@ -32,7 +35,7 @@ WorkspacePlan workspacePlan(Workspace workspace) {
                 30,
                 48};
     case Workspace::Monitor:
-        return {{K::Map}, {K::Fleet}, {K::Alarms}, {}};
+        return {{K::Map}, {K::Fleet}, {K::Alarms, K::ControlRoom}, {}};
     case Workspace::All:
         break;
     }
@@ -41,7 +44,7 @@ WorkspacePlan workspacePlan(Workspace workspace) {
     return {{K::Map},
             {K::Fleet, K::Dispatch, K::VehicleControl, K::Video, K::Missions},
             {K::Alarms, K::Teleop, K::PassCounts, K::CompactionAreas, K::CrewMessages, K::Production,
-             K::Site3D, K::Other},
+             K::Site3D, K::ControlRoom, K::Other},
             {},
             55,
             64};

@@ -26,6 +26,7 @@ enum class PanelKind {
     Teleop,          // a vehicle's drive controls (stick, speed, emergency stop)
     VehicleControl,  // control of vehicles and their details
     Missions,        // a vehicle's missions (plans of waypoints)
+    ControlRoom,     // who is at which console of the control room (with the shared history only)
 };
 
 enum class Workspace { Dispatch, Compaction, Ugv, Monitor, All };

@@ -9,6 +9,7 @@
 
 #include "models/FleetContext.h"
 #include "models/bridges/JausBridge.h"
+#include "models/jaus/JausSubsystemModel.h"
 #include "models/jaus/MissionGeoJson.h"
 #include "models/jaus/MissionJson.h"
 #include "models/jaus/MissionRecordFeed.h"
@@ -88,6 +89,11 @@ public:
             m_bridge->stop(); // releases control after zero drive commands
     }
     FleetBridge* bridge() const override { return m_bridge; }
+    QStringList controllerAddresses() const override {
+        if (!m_bridge)
+            return {};
+        return {JausSubsystemModel::roomAddress(m_bridge->identity().ownId)};
+    }
 
     // The access-control column right of the map, teleop as its second tab (Ctrl+4, Ctrl+5), the teleop
     // video in a panel of its own (the UGV workspace's main area; Ctrl+I) and the mission panel in the UGV
@@ -136,8 +142,9 @@ public:
     QString aboutName() const override { return QStringLiteral("JAUS (AS5669A/AS5710A, AEP-4818 IOP)"); }
 
     void populate(const ModulePanels& ui) override {
-        ui.window.setPanelWidget(kControlPanel,
-                                 new JausControlPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection()));
+        auto* control = new JausControlPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection());
+        control->model()->setControlRoom(ui.controlRoom);
+        ui.window.setPanelWidget(kControlPanel, control);
         auto* joystick = new SdlJoystickInput(&ui.window);
         const TeleopInputConfig& t = ui.config.teleop;
         AxisMapping mapping;

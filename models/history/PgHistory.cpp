@@ -2,6 +2,7 @@
 
 #include "models/AlarmModel.h"
 #include "models/CommandGate.h"
+#include "models/history/PgPresence.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -68,8 +69,7 @@ BEGIN
 END $$;
 CREATE OR REPLACE TRIGGER ocu_history_notify AFTER INSERT ON ocu_history FOR EACH ROW
     WHEN (NEW.kind IN ('ack', 'shelve', 'unshelve')) EXECUTE FUNCTION ocu_history_notify();
-COMMIT;
-)sql";
+)sql"; // + the presence table (PgPresence::schemaSql()), then COMMIT
 
 constexpr const char* kInsertSql =
     "INSERT INTO ocu_history (console, origin, seq, kind, at, alarm_key, severity, priority, machine, "
@@ -98,7 +98,8 @@ QByteArray pgText(const QString& s) {
 class PgHistoryWorker : public QObject {
     Q_OBJECT
 public:
-    PgHistoryWorker(PgHistory* owner, PgHistoryConfig config) : m_owner(owner), m_cfg(std::move(config)) {}
+    PgHistoryWorker(PgHistory* owner, PgHistoryConfig config)
+        : m_owner(owner), m_cfg(std::move(config)), m_presence(m_cfg.console, m_cfg.staleAfterMs) {}
     ~PgHistoryWorker() override { close(); }
 
     // Worker thread from here on.
@@ -143,6 +144,8 @@ public:
         m_retry = new QTimer(this);
         m_retry->setSingleShot(true);
         connect(m_retry, &QTimer::timeout, this, &PgHistoryWorker::tryConnect);
+        m_heartbeat = new QTimer(this);
+        connect(m_heartbeat, &QTimer::timeout, this, &PgHistoryWorker::beat);
         QTimer::singleShot(0, this, &PgHistoryWorker::tryConnect);
         return {};
     }
@@ -150,6 +153,13 @@ public:
     void close() {
         delete m_retry; // on the worker's thread, where it runs
         m_retry = nullptr;
+        delete m_heartbeat;
+        m_heartbeat = nullptr;
+        // A clean exit leaves the room (a crash leaves a row whose heartbeat ages into "not seen since"). The
+        // server answered in time: what the outbox still holds (the sign-out) goes now, not at the next
+        // start.
+        if (m_pg && PQstatus(m_pg) == CONNECTION_OK && m_presence.end(m_pg, 2000))
+            sendOutbox();
         dropConnection(QString(), false);
         if (m_db) {
             sqlite3_close(m_db);
@@ -203,8 +213,15 @@ public:
         }
     }
 
+    void setPresence(const ConsolePresence& mine) {
+        m_presence.set(mine);
+        if (m_pg && !(m_presence.publish(m_pg) && readRoom()))
+            lost();
+    }
+
 signals:
     void connectionChanged(bool connected, const QString& detail);
+    void room(const QVector<ocu::ConsolePresence>& room);
     void remote(const QString& kind, const QString& key, const QString& by, qint64 atMs, qint64 untilMs);
 
 private:
@@ -239,7 +256,9 @@ private:
                 qCDebug(lcPgHistory).noquote() << QString::fromUtf8(message).trimmed();
             },
             nullptr);
-        if (!exec(kSchemaSql) || !exec("LISTEN ocu_alarm_state")) {
+        const QByteArray schema = QByteArray(kSchemaSql) + PgPresence::schemaSql() + "COMMIT;\n";
+        if (!exec(schema.constData()) || !exec("LISTEN ocu_alarm_state") || !exec("LISTEN ocu_presence") ||
+            !m_presence.publish(m_pg) || !readRoom()) {
             dropConnection(QString::fromUtf8(PQerrorMessage(m_pg)).trimmed(), true);
             return;
         }
@@ -257,6 +276,7 @@ private:
         m_downReported = false;
         qCInfo(lcPgHistory) << "connected to the control-room history as" << m_cfg.console;
         emit connectionChanged(true, QString());
+        m_heartbeat->start(m_cfg.heartbeatMs);
         // What other consoles decided while this one was away, then what this one kept meanwhile.
         catchUp();
         flush();
@@ -282,6 +302,8 @@ private:
     }
 
     void dropConnection(const QString& why, bool retry) {
+        if (m_heartbeat)
+            m_heartbeat->stop();
         delete m_notifier;
         m_notifier = nullptr;
         if (m_pg) {
@@ -317,17 +339,36 @@ private:
     void drainNotifies() {
         for (int round = 0; m_pg && round < 100; ++round) {
             QStringList ids;
+            bool roomChanged = false; // someone signed in, switched, locked or left
             while (PGnotify* n = PQnotifies(m_pg)) {
                 bool ok = false;
                 const qint64 id = QByteArray(n->extra).toLongLong(&ok);
-                if (ok && !m_applied.contains(id))
+                if (qstrcmp(n->relname, PgPresence::channel()) == 0)
+                    roomChanged = true;
+                else if (ok && !m_applied.contains(id))
                     ids << QString::number(id);
                 PQfreemem(n);
             }
-            if (ids.isEmpty())
+            if (ids.isEmpty() && !roomChanged)
                 return;
-            fetchRemote("id = ANY($2::bigint[])", QStringLiteral("{%1}").arg(ids.join(QLatin1Char(','))));
+            if (!ids.isEmpty())
+                fetchRemote("id = ANY($2::bigint[])", QStringLiteral("{%1}").arg(ids.join(QLatin1Char(','))));
+            if (roomChanged && m_pg && !readRoom() && lost())
+                return;
         }
+    }
+
+    // Every heartbeat: this console is alive, and the room is read again (stale rows age without a NOTIFY).
+    void beat() {
+        if (m_pg && !(m_presence.heartbeat(m_pg) && readRoom()))
+            lost();
+    }
+
+    bool readRoom() {
+        const auto r = m_presence.readRoom(m_pg);
+        if (r)
+            emit room(*r);
+        return r.has_value();
     }
 
     void catchUp() {
@@ -476,6 +517,8 @@ private:
 
     PgHistory* m_owner;
     PgHistoryConfig m_cfg;
+    PgPresence m_presence;
+    QTimer* m_heartbeat = nullptr;
     sqlite3* m_db = nullptr;
     PGconn* m_pg = nullptr;
     QSocketNotifier* m_notifier = nullptr;
@@ -489,6 +532,7 @@ private:
 };
 
 PgHistory::PgHistory(PgHistoryConfig config, QObject* parent) : QObject(parent), m_config(std::move(config)) {
+    qRegisterMetaType<QVector<ocu::ConsolePresence>>();
     if (m_config.console.isEmpty())
         m_config.console = QSysInfo::machineHostName();
 }
@@ -507,12 +551,23 @@ QString PgHistory::start() {
     connect(m_worker, &PgHistoryWorker::connectionChanged, this, &PgHistory::connectionChanged,
             Qt::QueuedConnection);
     connect(m_worker, &PgHistoryWorker::remote, this, &PgHistory::applyRemote, Qt::QueuedConnection);
+    connect(
+        m_worker, &PgHistoryWorker::room, this,
+        [this](const QVector<ConsolePresence>& room) {
+            if (room == m_room)
+                return;
+            m_room = room;
+            emit roomChanged(room);
+        },
+        Qt::QueuedConnection);
     m_thread->start();
     QString error;
     QMetaObject::invokeMethod(
         m_worker, [&] { error = m_worker->open(); }, Qt::BlockingQueuedConnection);
     if (!error.isEmpty())
         stop();
+    else if (m_presence)
+        publishPresence(*m_presence);
     return error;
 }
 
@@ -558,6 +613,13 @@ void PgHistory::attach(AlarmModel* alarms) {
                 if (!m_applyingRemote)
                     post(Record{QStringLiteral("unshelve"), at, key, {}, {}, {}, {}, {}, by, 0, {}});
             });
+}
+
+void PgHistory::publishPresence(const ConsolePresence& presence) {
+    m_presence = presence;
+    if (m_worker)
+        QMetaObject::invokeMethod(
+            m_worker, [w = m_worker, presence] { w->setPresence(presence); }, Qt::QueuedConnection);
 }
 
 void PgHistory::attachGate(CommandGate* gate) {

@@ -6,13 +6,18 @@
 // (one file per console) and leaves it only once PostgreSQL has it, so a console that loses the database
 // keeps working and back-fills when it returns: each record carries an idempotent key (console, outbox
 // origin, sequence) and is inserted with ON CONFLICT DO NOTHING, so nothing is lost and nothing doubled.
+// Each console also publishes who is at it (operator, role, since, locked, the addresses its stacks control
+// machines with) with a heartbeat, and reads the room: who is where (models/history/PgPresence.h).
 // Schema and operation: docs/recording.md ("Shared control-room history on PostgreSQL").
+#include "models/ControlRoomModel.h"
+
 #include <QObject>
 #include <QPointer>
 #include <QString>
 
 #include <atomic>
 #include <memory>
+#include <optional>
 
 class QThread;
 
@@ -20,6 +25,7 @@ namespace ocu {
 
 class AlarmModel;
 class CommandGate;
+class OperatorSession;
 struct FleetEvent;
 
 struct PgHistoryConfig {
@@ -27,6 +33,10 @@ struct PgHistoryConfig {
     QString console;        // this console's name in the shared history ("dispatcher", "site-manager")
     QString outboxPath;     // the local SQLite outbox
     int reconnectMs = 1000; // retry period while the database is away
+    // Presence: this console's heartbeat, and how long another console's row may go without one before it
+    // reads as stale ("not seen since ..."): three heartbeats missed.
+    int heartbeatMs = 10000;
+    int staleAfterMs = 30000;
 };
 
 class PgHistoryWorker;
@@ -46,6 +56,14 @@ public:
     void attach(AlarmModel* alarms);
     // Records the gate's command audit (every command, its per-target outcome).
     void attachGate(CommandGate* gate);
+    // Publishes who is at this console and keeps it current: on every sign-in, switch, lock and unlock;
+    // stop() (a clean exit) ends it. `controllerAddresses`: what this console's stacks control machines with
+    // ("jaus:3.1.1"), so that the other consoles can name it as a machine's controller.
+    void attachSession(OperatorSession* session, const QStringList& controllerAddresses);
+    // Publishes (or replaces) this console's presence.
+    void publishPresence(const ConsolePresence& presence);
+    // Every console's presence as last read (this one's too); empty until connected.
+    const QVector<ConsolePresence>& room() const { return m_room; }
 
     bool isConnected() const { return m_connected.load(); }
     // Records in the outbox not yet in PostgreSQL.
@@ -58,6 +76,8 @@ signals:
     void connectionChanged(bool connected, const QString& detail);
     // Another console acknowledged / shelved / unshelved (already applied to the attached model).
     void remoteAcknowledged(const QString& key, const QString& by, qint64 atMs);
+    // The room was read again and differs from before.
+    void roomChanged(const QVector<ocu::ConsolePresence>& room);
 
 private:
     friend class PgHistoryWorker;
@@ -70,6 +90,8 @@ private:
     QThread* m_thread = nullptr;
     PgHistoryWorker* m_worker = nullptr;
     QPointer<AlarmModel> m_alarms;
+    QVector<ConsolePresence> m_room;
+    std::optional<ConsolePresence> m_presence; // this console's, published again by start()
     bool m_applyingRemote = false;
     bool m_gateAttached = false;
     qint64 m_recorded = 0;

@@ -1,5 +1,6 @@
 #include "models/jaus/JausSubsystemModel.h"
 
+#include "models/ControlRoomModel.h"
 #include "models/DisplayText.h"
 
 #include <QBrush>
@@ -171,15 +172,7 @@ QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
     case Access:
         return accessText(s.access);
     case Controller:
-        if (s.controlledByUs)
-            return tr("this console (%1)").arg(s.controllerAuthority);
-        if (s.controller.subsystem != 0 && !(s.controller == m_ownId))
-            return tr("%1.%2.%3 (%4)")
-                .arg(s.controller.subsystem)
-                .arg(s.controller.node)
-                .arg(s.controller.component)
-                .arg(s.controllerAuthority);
-        return tr("nobody");
+        return controllerText(s, role == Qt::ToolTipRole);
     case Management: {
         QString t = s.management ? s.managementText : tr("unknown");
         if (s.emergency)
@@ -195,6 +188,40 @@ QVariant JausSubsystemModel::data(const QModelIndex& index, int role) const {
     default:
         return {};
     }
+}
+
+void JausSubsystemModel::setControlRoom(ControlRoomModel* room) {
+    if (m_room)
+        disconnect(m_room, nullptr, this, nullptr);
+    m_room = room;
+    if (room)
+        connect(room, &ControlRoomModel::roomChanged, this, [this] {
+            if (!m_rows.isEmpty())
+                emit dataChanged(index(0, Controller), index(rowCount() - 1, Controller));
+        });
+}
+
+QString JausSubsystemModel::roomAddress(const JausAddress& a) {
+    return QStringLiteral("jaus:%1.%2.%3").arg(a.subsystem).arg(a.node).arg(a.component);
+}
+
+QString JausSubsystemModel::controllerText(const JausVehicle& s, bool tooltip) const {
+    if (s.controlledByUs)
+        return tr("this console (%1)").arg(s.controllerAuthority);
+    if (s.controller.subsystem == 0 || s.controller == m_ownId)
+        return tr("nobody");
+    const QString id = tr("%1.%2.%3 (%4)")
+                           .arg(s.controller.subsystem)
+                           .arg(s.controller.node)
+                           .arg(s.controller.component)
+                           .arg(s.controllerAuthority);
+    // Another console of the room: its person and name; the JAUS ID stays in the tooltip.
+    const auto console = m_room ? m_room->consoleControllingWith(roomAddress(s.controller)) : std::nullopt;
+    if (!console)
+        return id;
+    const QString person =
+        tr("%1 (%2)").arg(ControlRoomModel::personAtConsole(*console)).arg(s.controllerAuthority);
+    return tooltip ? tr("%1, JAUS %2").arg(person, id) : person;
 }
 
 QVariant JausSubsystemModel::headerData(int section, Qt::Orientation o, int role) const {

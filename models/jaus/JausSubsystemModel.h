@@ -5,8 +5,11 @@
 
 #include <QAbstractTableModel>
 #include <QElapsedTimer>
+#include <QPointer>
 
 namespace ocu {
+
+class ControlRoomModel;
 
 class JausSubsystemModel : public QAbstractTableModel {
     Q_OBJECT
@@ -30,15 +33,22 @@ public:
     // The link state in the operator's language (JausVehicle::linkText keeps the stack's English word).
     static QString linkText(JausLink s);
     RowColour rowColour(const JausVehicle& s) const;
+    // Who is where across the control room: a controller that is another console of the room is named by its
+    // operator and console instead of its JAUS ID (the tooltip keeps the ID). nullptr: IDs only.
+    void setControlRoom(ControlRoomModel* room);
+    // "jaus:3.1.1": a controller's address as consoles publish it in the room (models/ControlRoomModel.h).
+    static QString roomAddress(const JausAddress& a);
     // The clock data ages are measured on, the bridge's (null: the system clock).
     void setClock(std::shared_ptr<const ModelClock> clock) { m_clock = clockOrSystem(std::move(clock)); }
 
 private:
     void onVehicle(const JausVehicle& s);
     JausVehicleBridge* m_bridge;
+    QString controllerText(const JausVehicle& s, bool tooltip) const;
     JausAddress m_ownId; // this console's component: our own ID in a report is not another controller
     QVector<JausVehicle> m_rows;
     std::shared_ptr<const ModelClock> m_clock = systemModelClock();
+    QPointer<ControlRoomModel> m_room;
 };
 
 } // namespace ocu
