@@ -186,7 +186,7 @@ private slots:
     }
 
     // The whole console on the built-in site with a roles section: the OS user's role in the status bar and
-    // in STOP ALL's audit line from the locked console.
+    // in STOP ALL's audit line from the locked console; the console's end is the person's sign-out.
     void builtInSite() {
         QTemporaryDir recordings;
         auto site = loadSite({});
@@ -239,6 +239,13 @@ private slots:
             QCOMPARE(line.value(QStringLiteral("operator")).toString(), runtime.operatorIdentity().user);
         }
         runtime.stop();
+        QFile audit(recordings.filePath(QStringLiteral("audit.jsonl")));
+        QVERIFY(audit.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = audit.readAll().trimmed().split('\n');
+        const QJsonObject last = QJsonDocument::fromJson(lines.last()).object();
+        QCOMPARE(last.value(QStringLiteral("action")).toString(), QStringLiteral("sign_out"));
+        QCOMPARE(last.value(QStringLiteral("operator")).toString(), runtime.operatorIdentity().user);
+        QCOMPARE(last.value(QStringLiteral("role")).toString(), QStringLiteral("supervisor"));
     }
 };
 
