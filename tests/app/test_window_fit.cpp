@@ -1,5 +1,6 @@
 // Every workspace fits a field laptop: the whole console on the built-in simulated site, each workspace in
-// its default arrangement, at 1366x768 and 1920x1080, in English and German. Checked from the real widgets:
+// its default arrangement, at 1366x768 and 1920x1080, in English and German, with the control-room panel (a
+// control-room history configured) in the workspaces that show it. Checked from the real widgets:
 // - the map (the video in the UGV workspace) gets at least 45 % of a 1366x768 window and 55 % of 1920x1080;
 // - no panel of controls needs to scroll sideways (its controls' row is cut at the dock's edge otherwise), on
 //   every tab of every dock of the workspace (each tab raised in turn), nor do the dispatch tables and the
@@ -101,12 +102,19 @@ struct Console {
     QTemporaryDir recordings;
     std::unique_ptr<SiteRuntime> runtime;
     std::unique_ptr<MainWindow> window;
-    QString open(QSize size, const QString& file = {}, bool withoutOsyris = false) { // empty on success
+    // withRoom: with a control-room history (a database that is not there: the console works on its outbox),
+    // so that the control-room panel is in its workspaces.
+    QString open(QSize size, const QString& file = {}, bool withoutOsyris = false,
+                 bool withRoom = false) { // empty on success
         auto site = loadSite(file);
         if (!site.ok() || !recordings.isValid())
             return QStringLiteral("site or temporary directory not available");
         SiteConfig cfg = std::move(site.value());
         cfg.record.dir = recordings.path().toStdString();
+        if (withRoom)
+            cfg.historyPostgres = PostgresHistoryConfig{
+                "host=" + recordings.path().toStdString() + "/no-server port=1 user=ocu dbname=ocu",
+                "fit-desk", recordings.filePath(QStringLiteral("outbox.sqlite")).toStdString()};
         if (withoutOsyris) {
 #ifdef OCU_TEST_WITH_OSYRIS
             cfg.osyris.reset(); // a build without OSYRIS has no such section
@@ -143,11 +151,11 @@ int visibleRows(QTableView* t) {
     return row > 0 ? t->viewport()->height() / row : 0;
 }
 
-// The tables checked for sideways scrolling: those of the dispatcher's panels and the event log (their long
-// texts elide).
+// The tables checked for sideways scrolling: those of the dispatcher's panels, the event log and the control
+// room (their long texts elide).
 bool sidewaysChecked(QDockWidget* d) {
     return d->objectName() == QLatin1String("dock-dispatch") ||
-           d->objectName() == QLatin1String("dock-events");
+           d->objectName() == QLatin1String("dock-events") || d->objectName() == QLatin1String("dock-room");
 }
 
 // Problems of the docks now on screen: a panel scroll area or a table that needs to scroll sideways, a
@@ -346,10 +354,11 @@ private slots:
         loadLanguage(tr, lang);
         QVERIFY(lang.isEmpty() || !tr.isEmpty());
         Console console;
-        const QString opened = console.open(size);
+        const QString opened = console.open(size, {}, false, /*withRoom*/ true);
         QVERIFY2(opened.isEmpty(), qPrintable(opened));
         MainWindow& window = *console.window;
         QTRY_VERIFY_WITH_TIMEOUT(siteUp(window), 20000);
+        QVERIFY(window.dock(QStringLiteral("room")));
 
         // The built-in site runs every protocol of the build: every workspace of it is offered.
         QList<Workspace> expected{Workspace::Monitor, Workspace::All};
