@@ -1,5 +1,6 @@
 #include "app/CommandLine.h"
 #include "app/ProtocolModule.h"
+#include "app/SiteRuntime.h"
 #include "app/WorkspaceLayout.h"
 
 #include <QCommandLineParser>
@@ -9,10 +10,12 @@
 namespace ocu {
 
 QStringList screenshotViewNames() {
-    // The panels of the console's window: the main ones and those of the protocol modules of this build.
+    // The panels of the console's window: the main ones, those of the protocol modules of this build and the
+    // control room (a site with the shared history).
     QList<PanelSpec> modulePanels;
     for (const auto& m : makeProtocolModules())
         modulePanels += m->panels();
+    modulePanels << SiteRuntime::controlRoomPanel();
     return MainWindow::panelKeysWith(modulePanels);
 }
 

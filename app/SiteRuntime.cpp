@@ -457,18 +457,22 @@ void SiteRuntime::Impl::populateModules(MainWindow& window, const SiteConfig& co
 void SiteRuntime::Impl::addControlRoomPanel(MainWindow& window) const {
     if (!room)
         return;
-    const QString key = QStringLiteral("room");
-    PanelSpec spec;
-    spec.key = key;
-    spec.title = QCoreApplication::translate("ocu::MainWindow", "Control room");
-    spec.scrolls = false; // a table: it elides
-    spec.kind = PanelKind::ControlRoom;
+    const PanelSpec spec = controlRoomPanel();
     window.addPanels({spec});
     auto* panel = new ControlRoomPanel(room);
     if (history->isConnected()) // else "waiting" until it says
         panel->setConnected(true);
     connect(history, &PgHistory::connectionChanged, panel, &ControlRoomPanel::setConnected);
-    window.setPanelWidget(key, panel);
+    window.setPanelWidget(spec.key, panel);
+}
+
+PanelSpec SiteRuntime::controlRoomPanel() {
+    PanelSpec spec;
+    spec.key = QStringLiteral("room");
+    spec.title = QCoreApplication::translate("ocu::MainWindow", "Control room");
+    spec.scrolls = false; // a table: it elides
+    spec.kind = PanelKind::ControlRoom;
+    return spec;
 }
 
 // The pass-count panel's palette and target on the 2D map, and on the 3D surface cell for cell.

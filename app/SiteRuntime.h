@@ -19,6 +19,7 @@ namespace ocu {
 class HeadlessMonitor;
 class OperatorSession;
 class MainWindow;
+struct PanelSpec;
 namespace recording {
 class Recorder;
 }
@@ -43,6 +44,9 @@ public:
     // The identity the site's roles give an OS user at this console.
     OperatorIdentity identityOf(const QString& user) const;
 
+    // The control-room panel (who is at which console), added to the window when the site configures the
+    // shared history.
+    static PanelSpec controlRoomPanel();
     // Fills the window's panels and connects STOP ALL, link indicators and alarms.
     void populate(MainWindow& window);
     // JSON-lines monitor on stdout, commands on stdin and, with a commandSocket path, on that local socket

@@ -91,8 +91,8 @@ QVariant ControlRoomModel::data(const QModelIndex& index, int role) const {
     if (role != Qt::DisplayRole && role != Qt::ToolTipRole)
         return {};
     switch (index.column()) {
-    case Console:
-        return mine ? tr("%1 (this console)").arg(p.console) : p.console;
+    case Console: // this console's row is bold; the tooltip says why
+        return mine && role == Qt::ToolTipRole ? tr("%1 (this console)").arg(p.console) : p.console;
     case Operator:
         return p.operatorName;
     case Role:

@@ -1,6 +1,7 @@
 #include "app/CommandLine.h"
 #include "app/MainWindow.h"
 #include "app/ProtocolModule.h"
+#include "app/SiteRuntime.h"
 
 #include <QtTest>
 
@@ -53,10 +54,11 @@ private slots:
     }
     // Every panel can be captured: --view all:dispatch was refused (the list had no Dispatch panel).
     void everyPanelIsAView() {
-        // The main panels and every protocol module's, in the window's order.
+        // The main panels, every protocol module's and the control room's, in the window's order.
         QList<PanelSpec> modulePanels;
         for (const auto& m : makeProtocolModules())
             modulePanels += m->panels();
+        modulePanels << SiteRuntime::controlRoomPanel();
         const QStringList names = screenshotViewNames();
         QCOMPARE(names, MainWindow::panelKeysWith(modulePanels));
         QCOMPARE(names.mid(0, 3), QStringList({"fleet", "map", "3d"}));
@@ -69,8 +71,9 @@ private slots:
             QVERIFY2(parse({"--screenshot", "o.png", "--view", p.key}, o, e), qPrintable(e));
         }
         if (makeProtocolModules().size() == 3) // every protocol of today
-            QCOMPARE(names, QStringList({"fleet", "map", "3d", "jaus", "teleop", "passcounts", "events",
-                                         "dispatch", "production", "video", "mission", "areas", "crew"}));
+            QCOMPARE(names,
+                     QStringList({"fleet", "map", "3d", "jaus", "teleop", "passcounts", "events", "dispatch",
+                                  "production", "video", "mission", "areas", "crew", "room"}));
     }
     void headless() {
         CommandLineOptions o;

@@ -1,5 +1,5 @@
 // The control-room panel: one row per console with operator, role, since and state (signed in, locked, not
-// seen since); this console marked; long names elide in a narrow dock instead of scrolling sideways; the
+// seen since); this console in bold; long names elide in a narrow dock instead of scrolling sideways; the
 // notice while the history is out of reach.
 #include "models/ControlRoomModel.h"
 #include "widgets/ControlRoomPanel.h"
@@ -53,7 +53,10 @@ private slots:
         QTableView* t = panel.table();
         QCOMPARE(t->model()->rowCount(), 3);
         const auto text = [t](int row, int col) { return t->model()->index(row, col).data().toString(); };
-        QCOMPARE(text(0, ControlRoomModel::Console), QStringLiteral("dispatch-desk (this console)"));
+        QCOMPARE(text(0, ControlRoomModel::Console), QStringLiteral("dispatch-desk"));
+        QCOMPARE(t->model()->index(0, ControlRoomModel::Console).data(Qt::ToolTipRole).toString(),
+                 QStringLiteral("dispatch-desk (this console)"));
+        QVERIFY(t->model()->index(0, ControlRoomModel::Console).data(Qt::FontRole).value<QFont>().bold());
         QCOMPARE(text(0, ControlRoomModel::Operator), QStringLiteral("bob"));
         QCOMPARE(text(0, ControlRoomModel::Role), QStringLiteral("dispatcher"));
         QCOMPARE(text(0, ControlRoomModel::Since), QDateTime::fromMSecsSinceEpoch(now).toString("HH:mm"));
