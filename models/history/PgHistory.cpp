@@ -158,7 +158,8 @@ public:
         // A clean exit leaves the room (a crash leaves a row whose heartbeat ages into "not seen since"). The
         // server answered in time: what the outbox still holds (the sign-out) goes now, not at the next
         // start.
-        if (m_pg && PQstatus(m_pg) == CONNECTION_OK && m_presence.end(m_pg, 2000))
+        if (m_pg && PQstatus(m_pg) == CONNECTION_OK && m_presence.end(m_pg, 2000) &&
+            m_owner->m_pending <= kBatch) // a long back-fill waits for the next start
             sendOutbox();
         dropConnection(QString(), false);
         if (m_db) {

@@ -219,9 +219,11 @@ QString JausSubsystemModel::controllerText(const JausVehicle& s, bool tooltip) c
     const auto console = m_room ? m_room->consoleControllingWith(roomAddress(s.controller)) : std::nullopt;
     if (!console)
         return id;
-    const QString person =
-        tr("%1 (%2)").arg(ControlRoomModel::personAtConsole(*console)).arg(s.controllerAuthority);
-    return tooltip ? tr("%1, JAUS %2").arg(person, id) : person;
+    const QString person = tr("%1 (%2)", "operator at console (JAUS authority)")
+                               .arg(ControlRoomModel::personAtConsole(*console))
+                               .arg(s.controllerAuthority);
+    return tooltip ? tr("%1, JAUS %2", "operator at console, JAUS ID of its component").arg(person, id)
+                   : person;
 }
 
 QVariant JausSubsystemModel::headerData(int section, Qt::Orientation o, int role) const {
