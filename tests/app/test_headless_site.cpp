@@ -370,10 +370,14 @@ private slots:
                  text.constData());
         QVERIFY2(byId["jaus:127"].value("sent").toBool(), text.constData());
         QVERIFY2(byId["jaus:127"].value("note").toString().contains("never heard"), text.constData());
-        // The audit log records the same truth.
+        // The audit log records the same truth; the monitor's end (terminated above) is its sign-out.
         QFile audit(dir.filePath("audit.jsonl"));
         QVERIFY(audit.open(QIODevice::ReadOnly));
-        const QJsonObject a = QJsonDocument::fromJson(audit.readAll().trimmed().split('\n').last()).object();
+        const QList<QByteArray> lines = audit.readAll().trimmed().split('\n');
+        QVERIFY(lines.size() >= 2);
+        QCOMPARE(QJsonDocument::fromJson(lines.last()).object().value("action").toString(),
+                 QString("sign_out"));
+        const QJsonObject a = QJsonDocument::fromJson(lines.at(lines.size() - 2)).object();
         QCOMPARE(a.value("action").toString(), QString("stop_all"));
         QCOMPARE(a.value("ok").toBool(), false);
         QCOMPARE(a.value("targets").toArray().size(), 4);
