@@ -121,6 +121,7 @@ bool HandoffClient::request(std::uint16_t ss, const std::string& reason) {
     if (!m_ctx.send(r->snap.handoff.component, encode(RequestHandoff{cfg.authority, s.explanation})))
         return m_ctx.sendFailed(ss, "RequestHandoff");
     s.since = s.lastSent = m_ctx.now();
+    s.holder = r->snap.controller;
     r->snap.handoff.queueId = kNoHandoffId;
     s.timeoutsQueried = false;
     queryTimeouts(*r, s);
@@ -168,7 +169,8 @@ void HandoffClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteSpan p)
     if (!active(h.phase))
         return; // an answer to a request we no longer make (cancelled, already final)
     State& s = m_state[r.id()];
-    const std::string who = r.snap.controller.subsystem ? r.snap.controller.toString() : "the holder";
+    const JausId holder = r.snap.controller.subsystem ? r.snap.controller : s.holder;
+    const std::string who = holder.subsystem ? holder.toString() : "the holder";
     switch (m->code) {
     case HandoffCode::Queued:
     case HandoffCode::Deferred:
@@ -218,6 +220,8 @@ void HandoffClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteSpan p)
 void HandoffClient::tickRequest(RemoteSubsystem& r, State& s, TimePoint now) {
     HandoffStatus& h = r.snap.handoff;
     if (active(h.phase)) {
+        if (r.snap.controller.subsystem)
+            s.holder = r.snap.controller;
         // Re-assert within the Handoff Request Timeout (AEP-4818 §6.3.2.2): every third of it, as FKIE does.
         const double period = std::max(0.2, (h.requestTimeoutS > 0 ? h.requestTimeoutS : 5.0) / 3);
         if (now - s.lastSent >= secondsD(period))

@@ -49,6 +49,9 @@ private:
         std::string explanation;
         bool timeoutsQueried = false;
         JausId eacOfPrompts; // the component that forwarded the prompts (answers go there)
+        // Who held the vehicle while we asked: the vehicle may report it uncontrolled before its late
+        // GRANTED arrives.
+        JausId holder;
     };
     // The component offering EnhancedAccessControl (the control target when it does), zero when none.
     static JausId locate(const RemoteSubsystem& remote);
