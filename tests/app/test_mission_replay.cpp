@@ -7,6 +7,7 @@
 #include "app/HeadlessReplay.h"
 #include "app/MainWindow.h"
 #include "app/ReplayRuntime.h"
+#include "app/Screenshot.h"
 #include "app/modules/JausMission3D.h"
 
 #include "models/FleetContext.h"
@@ -26,6 +27,7 @@
 #endif
 
 #include <QBuffer>
+#include <QDir>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSettings>
@@ -165,6 +167,15 @@ private slots:
         auto* view3d = qobject_cast<Site3DView*>(window.panelWidget(Panel::Site3D));
         QVERIFY(view3d);
         checkOverlays(view3d, 5, 24);
+        if (const QString dir = qEnvironmentVariable("OCU_SCREENSHOT_DIR"); !dir.isEmpty()) {
+            window.resize(1366, 768);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QTest::qWait(1500);
+            QCOMPARE(
+                saveScreenshot(window, QStringLiteral("3d"), QDir(dir).filePath("mission-replay-3d.png")),
+                QString());
+        }
         c.seek(rec->startMs()); // no mission yet: no path driven (the table keeps the recorded plan)
         auto* driven = view3d->findChild<RouteOverlay3D*>(drivenPath3DName());
         QTRY_VERIFY(driven->drawnPoints().isEmpty());

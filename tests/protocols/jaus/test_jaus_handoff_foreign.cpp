@@ -4,7 +4,8 @@
 // authority: the vehicle queues the request and forwards it to A, which accepts (B takes control with its
 // RequestControl, A sees it released), denies, or does not answer (the vehicle's TIMEOUT); the vehicle's
 // answers arrive late (a busy stack) in the accepted case; a vehicle policy that denies every request and a
-// requester below the vehicle's default authority are refused without asking A; B withdraws a request.
+// requester below the vehicle's default authority are refused without asking A; B withdraws a request; A
+// asks B to wait, in the three ways vehicles pass a WAIT on.
 #include <QtTest>
 
 #include <mutex>
@@ -255,6 +256,50 @@ private slots:
         QVERIFY(waitFor([&] { return rig.holder->handoff().prompts.empty(); }));
         QCOMPARE(rig.vehicle.handoffsQueued(), std::size_t(0));
         QVERIFY(rig.holder->controls());
+    }
+
+    // A answers WAIT half-way through the 4 s decision time: the request stays, its decision time starts
+    // again (alive past the first 4 s), B keeps it up and shows the wait where the vehicle says so (DEFERRED,
+    // or FKIE's private 7; FKIE's EAC answers QUEUED again, which B cannot tell from its re-assertions'
+    // answers); A then accepts.
+    void holderAsksToWait_data() {
+        QTest::addColumn<int>("code");
+        QTest::addColumn<bool>("shown");
+        QTest::newRow("DEFERRED") << 5 << true;
+        QTest::newRow("FKIE's private WAIT") << 7 << true;
+        QTest::newRow("QUEUED again") << 4 << false;
+    }
+    void holderAsksToWait() {
+        QFETCH(int, code);
+        QFETCH(bool, shown);
+        foreign::HandoffOptions h;
+        h.decisionTimeoutS = 4;
+        h.waitAnswer = std::uint8_t(code);
+        ForeignRig rig(h);
+        QVERIFY(rig.ready());
+        const int id = rig.ask();
+        QVERIFY(id > 0);
+        QTest::qWait(2000);
+        Outcomes o;
+        rig.holder->stack.handoffWait(126, std::uint8_t(id), o.callback());
+        QVERIFY(Console::sent(o));
+        QVERIFY(waitFor(
+            [&] { return rig.vehicle.receivedFrom(kConfirmReleaseControl, rig.holder->id().value()); }));
+        QVERIFY(rig.holder->listener.saw("hand-off of FOREIGN-126 to 201.1.1: asked to wait"));
+        QCOMPARE(rig.holder->handoff().prompts.size(), std::size_t(1));
+        QVERIFY(rig.holder->handoff().prompts.front().waited);
+        if (shown) {
+            QVERIFY(waitFor([&] { return rig.asker->handoff().phase == HandoffPhase::Waiting; }));
+            QVERIFY(rig.asker->listener.saw("200.1.1 asks to wait for FOREIGN-126"));
+        }
+        QTest::qWait(3000); // 5 s after the request: past the first decision time, within the second
+        const HandoffPhase phase = rig.asker->handoff().phase;
+        QVERIFY2(phase == (shown ? HandoffPhase::Waiting : HandoffPhase::Queued), toString(phase));
+        QCOMPARE(rig.vehicle.handoffsQueued(), std::size_t(1));
+        QCOMPARE(rig.holder->handoff().prompts.size(), std::size_t(1));
+        QVERIFY(rig.answer(id, true));
+        QVERIFY(waitFor([&] { return rig.asker->handoff().phase == HandoffPhase::Completed; }));
+        QCOMPARE(rig.vehicle.controller(), rig.asker->id().value());
     }
 };
 
