@@ -72,6 +72,14 @@ public:
         for (const MachineFields& f : m_machineFields)
             f(machineId, line);
     }
+    // A module's fields of a machine changed without its machine state (a vehicle's mission): the monitor
+    // prints the machine's line again, at once when `atOnce` (a change of state), else within its rate limit.
+    using MachineRefresh = std::function<void(const QString& machineId, bool atOnce)>;
+    void setMachineRefresh(MachineRefresh refresh) { m_refresh = std::move(refresh); }
+    void machineFieldsChanged(const QString& machineId, bool atOnce) const {
+        if (m_refresh)
+            m_refresh(machineId, atOnce);
+    }
     bool contains(const QString& name) const;
 
     // Executes one command (a parsed line). The result line is written when final; it is also returned when
@@ -112,6 +120,7 @@ private:
     int m_pendingResults = 0;
     std::function<void()> m_settled;
     QList<MachineFields> m_machineFields;
+    MachineRefresh m_refresh;
 };
 
 // The "counters" answer: every bridge's stack counters per link, its rejects per reason.

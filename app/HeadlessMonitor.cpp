@@ -32,6 +32,12 @@ HeadlessMonitor::HeadlessMonitor(FleetModel* fleet, AlarmModel* alarms, CommandG
                            {QStringLiteral("message"),
                             QStringLiteral("%1 machines").arg(m_fleet ? m_fleet->rowCount() : 0)}};
     });
+    m_commands.setMachineRefresh([this](const QString& id, bool atOnce) {
+        if (atOnce)
+            printMachine(id);
+        else
+            onMachinesChanged({id});
+    });
     // Rejects per link and reason.
     m_commands.addLocal(QStringLiteral("counters"),
                         [this](const QJsonObject&) { return linkCountersFields(m_bridges); });

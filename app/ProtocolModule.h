@@ -71,6 +71,14 @@ struct ModuleReplay {
     const GeoFrame& frame;
 };
 
+// What a module needs in a headless replay (`ocu --replay FILE --headless`): the monitor's command table
+// (machine fields and queries answered from the recording) and the recording through its controller.
+struct ModuleHeadlessReplay {
+    HeadlessCommands& commands;
+    recording::ReplayController* controller;
+    QObject* owner; // owns what the module creates for it
+};
+
 class ProtocolModule {
 public:
     virtual ~ProtocolModule() = default;
@@ -103,6 +111,8 @@ public:
     // In a replay: the views of this protocol's own records (none by default: the panels say that commands
     // are disabled).
     virtual void populateReplay(const ModuleReplay& replay) { (void)replay; }
+    // In a headless replay: the fields and queries of this protocol's own records (none by default).
+    virtual void registerHeadlessReplay(const ModuleHeadlessReplay& replay) { (void)replay; }
     // What STOP ALL does on this protocol, for its tooltip ("JAUS emergency stop to every ...").
     virtual QString stopAllReach() const { return {}; }
     // The protocol for Help › About, with its standards.

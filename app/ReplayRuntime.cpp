@@ -2,6 +2,7 @@
 
 #include "app/ConsoleApp.h"
 #include "app/HeadlessMonitor.h"
+#include "app/HeadlessReplay.h"
 #include "app/MainWindow.h"
 #include "app/ProtocolModule.h"
 #include "app/Screenshot.h"
@@ -25,8 +26,6 @@
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QLabel>
 #include <QPushButton>
 #include <QShortcut>
@@ -381,37 +380,13 @@ int runReplay(QApplication& app, const CommandLineOptions& options) {
     controller.seek(at);
 
     if (options.headless) {
-        // The JSON lines of the run, as the headless monitor printed them (every change, with a "replay" line
-        // carrying the recording's time before each step).
         QFile out;
         if (!out.open(stdout, QIODevice::WriteOnly | QIODevice::Unbuffered))
             return fail(QStringLiteral("stdout: %1").arg(out.errorString()));
-        HeadlessMonitor mon(&fleet, controller.alarms(), nullptr);
-        mon.setOutput(&out);
-        mon.setRateLimitMs(0);
-        mon.printAll();
-        qint64 lastStamp = -1;
-        QObject::connect(&controller, &ReplayController::positionChanged, &mon, [&](qint64 t) {
-            if (t == lastStamp)
-                return;
-            lastStamp = t;
-            out.write(
-                QJsonDocument(
-                    QJsonObject{{QStringLiteral("type"), QStringLiteral("replay")},
-                                {QStringLiteral("time"),
-                                 QDateTime::fromMSecsSinceEpoch(t, Qt::UTC).toString(Qt::ISODateWithMs)}})
-                    .toJson(QJsonDocument::Compact) +
-                '\n');
-        });
+        HeadlessReplay replay(&controller, &out);
+        replay.monitor().startStdin(); // queries ("list") answered from the replayed state
         if (!options.replaySpeedSet || options.replaySpeed <= 0) {
-            for (qint64 t = controller.position(); t < controller.endMs();) {
-                t = std::min(controller.endMs(), t + 100);
-                controller.moveTo(t);
-                QCoreApplication::processEvents();
-                if (quitSignal() != 0)
-                    break;
-            }
-            QCoreApplication::processEvents();
+            replay.runToEnd(100, [] { return quitSignal() != 0; });
             return 0;
         }
         controller.setSpeed(options.replaySpeed);

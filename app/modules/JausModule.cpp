@@ -4,6 +4,8 @@
 // mission_pause, mission_resume, mission_abort, goto).
 #include "app/HeadlessCommands.h"
 #include "app/ProtocolModule.h"
+#include "app/modules/JausMission3D.h"
+#include "app/modules/JausMissionHeadless.h"
 #include "app/modules/JausMissionReplay.h"
 #include "app/modules/JausVideoHeadless.h"
 
@@ -20,10 +22,6 @@
 #include "widgets/jaus/TeleopPanel.h"
 #include "widgets/jaus/TeleopVideoPane.h"
 #include "widgets/teleop/SdlJoystickInput.h"
-#ifdef OCU_HAVE_OCU_VIEW3D
-#include "widgets/view3d/RouteOverlay3D.h"
-#include "widgets/view3d/Site3DView.h"
-#endif
 
 #include <QCoreApplication>
 
@@ -197,39 +195,21 @@ public:
         if (m_bridge)
             (new JausVideoHeadless(m_bridge, m_bridge))->registerIn(table);
         // Each UGV's mission in its machine line and in "list": state, waypoint k of n, distance, ETA.
-        table.addMachineFields(
-            [bridge = QPointer<JausBridge>(m_bridge)](const QString& id, QJsonObject& line) {
-                const auto sub = JausVehicleBridge::subsystemOf(id);
-                const auto v = sub && bridge ? bridge->subsystem(*sub) : std::nullopt;
-                if (v && (v->mission.state != MissionState::None || !v->mission.drivenPath.isEmpty()))
-                    line[QStringLiteral("mission")] = missionJson(v->mission);
-            });
+        addMissionLines(m_bridge, table);
+    }
+    void registerHeadlessReplay(const ModuleHeadlessReplay& replay) override {
+        registerMissionReplayHeadless(replay);
     }
 
 private:
-    // The mission panel, its editor and drawing on the 2D map, and the planned route in 3D.
+    // The mission panel, its editor and drawing on the 2D map, the planned route and the driven path in 3D.
     void populateMission(const ModulePanels& ui) {
         auto* mission = new MissionPanel(m_bridge, ui.fleet->selection());
         mission->setCommands(new MissionGateCommands(ui.fleet->gate(), mission));
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
         mission->attachMap(map, m_frame);
         ui.window.setPanelWidget(kMissionPanel, mission);
-#ifdef OCU_HAVE_OCU_VIEW3D
-        if (auto* view3d = qobject_cast<Site3DView*>(ui.window.panelWidget(Panel::Site3D))) {
-            auto* route3d = new RouteOverlay3D(view3d);
-            QObject::connect(
-                mission, &MissionPanel::planRouteChanged, route3d,
-                [route3d, frame = m_frame](const QVector<MissionWaypoint>& plan, const QColor& c) {
-                    QVector<QPointF> path;
-                    for (const MissionWaypoint& w : plan) {
-                        const EnuPoint e = frame.toLocal({w.lat, w.lon, 0});
-                        path << QPointF(e.e, e.n);
-                    }
-                    route3d->setStyle(c.redF(), c.greenF(), c.blueF(), 5);
-                    route3d->setPath(path);
-                });
-        }
-#endif
+        attachMissionRoutes3D(ui.window, mission, m_frame); // the route and the path driven in 3D
     }
 
     JausBridge* m_bridge = nullptr;

@@ -327,9 +327,12 @@ void JausBridge::platformOrHandoffCommand(const OperatorCommand& command, const 
                    },
                    [&](const HandoffAnswer& c) {
                        sendToVehicle(c.id, what, std::move(done),
-                                     [this, id = std::uint8_t(c.requestId),
-                                      accept = c.accept](quint16 ss, OutcomeCallback d) {
-                                         m_stack->handoffAnswer(ss, id, accept, std::move(d));
+                                     [this, id = std::uint8_t(c.requestId), accept = c.accept,
+                                      wait = c.wait](quint16 ss, OutcomeCallback d) {
+                                         if (wait)
+                                             m_stack->handoffWait(ss, id, std::move(d));
+                                         else
+                                             m_stack->handoffAnswer(ss, id, accept, std::move(d));
                                      });
                    },
                    [&](const auto&) { FleetBridge::command(command, std::move(done)); },

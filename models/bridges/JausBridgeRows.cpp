@@ -161,7 +161,8 @@ JausPlatformServices toPlatformServices(const PlatformServicesStatus& p) {
 
 static_assert(int(HandoffPhase::None) == int(HandoffState::None) &&
                   int(HandoffPhase::Completed) == int(HandoffState::Completed) &&
-                  int(HandoffPhase::Preempting) == int(HandoffState::Preempting),
+                  int(HandoffPhase::Preempting) == int(HandoffState::Preempting) &&
+                  int(HandoffPhase::Waiting) == int(HandoffState::Waiting),
               "HandoffState mirrors jaus::HandoffPhase");
 
 JausHandoff toHandoff(const HandoffStatus& h) {
@@ -174,7 +175,7 @@ JausHandoff toHandoff(const HandoffStatus& h) {
     for (const HandoffPrompt& p : h.prompts)
         out.prompts.push_back({p.id, p.requester.subsystem, QString::fromStdString(p.requester.toString()),
                                p.authority, QString::fromStdString(p.explanation), p.receivedUnixMs,
-                               p.decisionTimeoutS});
+                               p.decisionTimeoutS, p.waited});
     return out;
 }
 

@@ -162,7 +162,8 @@ ParsedCommand parseGoTo(const QString& name, const QJsonObject& json) {
     return a.done(c);
 }
 
-// handoff_request {"id", "reason", "cancel"}; handoff_answer {"id", "request": queue ID, "accept": bool}.
+// handoff_request {"id", "reason", "cancel"}; handoff_answer {"id", "request": queue ID, "accept": bool} or
+// {"id", "request", "wait": true} (WAIT: "accept" is not asked for then).
 ParsedCommand parseHandoff(const QString& name, const QJsonObject& json) {
     Args a(name, json);
     const QString id = a.id();
@@ -184,7 +185,8 @@ ParsedCommand parseHandoff(const QString& name, const QJsonObject& json) {
     if (!(request >= 0 && request <= 255 && std::floor(request) == request))
         a.fail(text("handoff_answer: \"request\" must be the request's number (0-255)"));
     c.requestId = int(request);
-    c.accept = flag("accept", true);
+    c.wait = flag("wait", false);
+    c.accept = !c.wait && flag("accept", true);
     return a.done(c);
 }
 
@@ -337,7 +339,10 @@ QJsonObject toJson(const OperatorCommand& command) {
                    [&](const HandoffAnswer& c) {
                        o[QStringLiteral("id")] = c.id;
                        o[QStringLiteral("request")] = c.requestId;
-                       o[QStringLiteral("accept")] = c.accept;
+                       if (c.wait)
+                           o[QStringLiteral("wait")] = true;
+                       else
+                           o[QStringLiteral("accept")] = c.accept;
                    },
                    [&](const auto& c) { o[QStringLiteral("id")] = c.id; }, // machine commands
                },

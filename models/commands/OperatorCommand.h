@@ -162,6 +162,7 @@ struct HandoffAnswer {
     QString id;
     int requestId = 0;
     bool accept = false;
+    bool wait = false; // WAIT instead: the request stays queued, its decision time starts again
     bool operator==(const HandoffAnswer&) const = default;
 };
 

@@ -19,6 +19,7 @@ enum class HandoffState {
     Refused,    // not available, insufficient authority, or refused by the ordinary pre-emption rules
     Cancelled,  // withdrawn by this console
     Preempting, // the vehicle offers no Enhanced Access Control: control requested with our authority
+    Waiting,    // the holder asks us to wait: still queued, re-asserted
 };
 
 // Another console's request the vehicle forwarded to us.
@@ -30,6 +31,7 @@ struct JausHandoffPrompt {
     QString explanation;          // its words; our consoles send "<call sign>: <reason>"
     qint64 receivedMs = 0;        // on the models' clock (models/ModelClock.h)
     double decisionTimeoutS = 60; // 0 = the vehicle never times it out
+    bool waited = false;          // this console answered "wait" (the decision time started again then)
     bool operator==(const JausHandoffPrompt&) const = default;
 };
 
@@ -45,7 +47,7 @@ struct JausHandoff {
 // True while our request waits for an answer (it can be withdrawn).
 inline bool isWaiting(HandoffState s) {
     return s == HandoffState::Requesting || s == HandoffState::Queued || s == HandoffState::Granted ||
-           s == HandoffState::Preempting;
+           s == HandoffState::Preempting || s == HandoffState::Waiting;
 }
 
 // The word headless JSON and the event lines use for a state.
@@ -71,6 +73,8 @@ inline QString toText(HandoffState s) {
         return QStringLiteral("cancelled");
     case HandoffState::Preempting:
         return QStringLiteral("pre-empting");
+    case HandoffState::Waiting:
+        return QStringLiteral("waiting");
     }
     return QStringLiteral("none");
 }

@@ -57,6 +57,13 @@ void putOptional(QJsonObject& o, const QString& key, const std::optional<double>
 
 } // namespace
 
+bool onlyProgressDiffers(JausMission a, const JausMission& b) {
+    a.distanceToGoM = b.distanceToGoM;
+    a.etaS = b.etaS;
+    a.drivenPath = b.drivenPath;
+    return a == b;
+}
+
 std::optional<MissionState> missionStateFromText(const QString& text) {
     for (MissionState s : kStates)
         if (toText(s) == text)

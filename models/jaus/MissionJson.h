@@ -22,6 +22,10 @@ std::optional<MissionState> missionStateFromText(const QString& text);
 // "path_source" and "path_points" (when a driven path is known).
 QJsonObject missionJson(const JausMission& mission);
 
+// Whether `a` and `b` differ at most in what changes with every pose (distance to go, ETA, driven path):
+// the recorder and the headless lines keep such changes to their interval, the others go out at once.
+bool onlyProgressDiffers(JausMission a, const JausMission& b);
+
 // One record of the change from `before` (what the previous records gave) to `now`: the state fields, the
 // waypoints when they changed, the driven path as the points dropped from its front and added at its end (a
 // growing trail, a sliding window of the PathReporter's path), or whole when it does not continue the one

@@ -7,18 +7,6 @@
 
 namespace ocu {
 
-namespace {
-
-// What changes with every pose: recorded at most once per interval.
-bool onlyProgressDiffers(JausMission a, const JausMission& b) {
-    a.distanceToGoM = b.distanceToGoM;
-    a.etaS = b.etaS;
-    a.drivenPath = b.drivenPath;
-    return a == b;
-}
-
-} // namespace
-
 MissionRecordFeed::MissionRecordFeed(JausVehicleBridge* bridge, int intervalMs)
     : QObject(bridge), m_bridge(bridge), m_intervalMs(intervalMs) {
     m_clock.start();

@@ -22,8 +22,9 @@ MissionReplayBridge::MissionReplayBridge(QVector<Record> records, const FleetMod
     : JausVehicleBridge(parent), m_records(std::move(records)), m_fleet(fleet) {}
 
 void MissionReplayBridge::setTime(qint64 t) {
-    QHash<quint16, JausMission> before = m_missions;
-    if (t < m_t) { // backwards: the paths grow record by record, so start over
+    QHash<quint16, JausMission> before = m_missions; // what the views were told
+    const bool forwards = t >= m_t;
+    if (!forwards) { // backwards: the paths grow record by record, so start over
         m_missions.clear();
         m_next = 0;
     }
@@ -31,8 +32,19 @@ void MissionReplayBridge::setTime(qint64 t) {
     for (; m_next < m_records.size() && m_records[m_next].t <= t; ++m_next) {
         const Record& r = m_records[m_next];
         const auto sub = subsystemOf(r.machine);
-        if (!sub || !applyMissionRecord(m_missions[*sub], r.data))
+        JausMission* m = sub ? &m_missions[*sub] : nullptr;
+        const JausMission was = forwards && m ? *m : JausMission{}; // only compared forwards
+        if (!m || !applyMissionRecord(*m, r.data)) {
             ++m_malformed;
+            continue;
+        }
+        // Playing forwards, each change of state, waypoint, ownership or reason is told on its own, as live
+        // (two within one step of the replay clock are two headless lines, not one).
+        if (forwards && !onlyProgressDiffers(was, *m) && m_next + 1 < m_records.size() &&
+            m_records[m_next + 1].t <= t) {
+            emit subsystemUpdated(*subsystem(*sub));
+            before[*sub] = *m;
+        }
     }
     QSet<quint16> ids(m_missions.keyBegin(), m_missions.keyEnd());
     for (auto it = before.keyBegin(); it != before.keyEnd(); ++it)

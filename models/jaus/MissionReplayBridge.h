@@ -27,7 +27,8 @@ public:
     MissionReplayBridge(QVector<Record> records, const FleetModel* fleet, QObject* parent = nullptr);
 
     // The missions after every record <= t (forwards from the last time without starting over); emits
-    // subsystemUpdated for each vehicle whose mission changed.
+    // subsystemUpdated for each vehicle whose mission changed, and forwards also for each change of state
+    // on the way (not only the last).
     void setTime(qint64 t);
     qint64 time() const { return m_t; }
     // Records that did not decode (skipped).

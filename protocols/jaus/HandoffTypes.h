@@ -24,6 +24,8 @@ enum class HandoffPhase {
     Refused,    // NOT_AVAILABLE or INSUFFICIENT_AUTHORITY from the vehicle (reason says which)
     Cancelled,  // withdrawn by this console (RemoveHandoffRequest)
     Preempting, // the vehicle offers no Enhanced Access Control: RequestControl with our authority instead
+    Waiting,    // the holder answered WAIT (DEFERRED, or FKIE's 7): still queued, re-asserted, decision time
+                // anew
 };
 const char* toString(HandoffPhase p);
 
@@ -36,7 +38,8 @@ struct HandoffPrompt {
     TimePoint received{};       // when the vehicle first forwarded it (the stack's clock)
     std::int64_t receivedUnixMs = 0;
     double decisionTimeoutS =
-        60; // the vehicle's Handoff Decision Timeout (ReportHandoffTimeout), 60 s default
+        60;              // the vehicle's Handoff Decision Timeout (ReportHandoffTimeout), 60 s default
+    bool waited = false; // we answered WAIT (its decision time started again then)
     bool operator==(const HandoffPrompt&) const = default;
 };
 

@@ -111,7 +111,10 @@ public:
     }
     bool handoffCancel(std::uint16_t subsystem) { return m_handoff.cancel(subsystem); }
     bool handoffAnswer(std::uint16_t subsystem, std::uint8_t id, bool accept) {
-        return m_handoff.answer(subsystem, id, accept);
+        return m_handoff.answer(subsystem, id, accept ? ReleaseCode::Granted : ReleaseCode::Denied);
+    }
+    bool handoffWait(std::uint16_t subsystem, std::uint8_t id) {
+        return m_handoff.answer(subsystem, id, ReleaseCode::Wait);
     }
     // STOP ALL: SetEmergency to every discovered subsystem, whether this console controls it
     // or not; one outcome per subsystem.

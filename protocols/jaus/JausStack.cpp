@@ -315,6 +315,9 @@ void JausStack::handoffCancel(std::uint16_t ss, OutcomeCallback done) {
 void JausStack::handoffAnswer(std::uint16_t ss, std::uint8_t requestId, bool accept, OutcomeCallback done) {
     OCU_JAUS_OUTCOME(ss, d->core.handoffAnswer(ss, requestId, accept));
 }
+void JausStack::handoffWait(std::uint16_t ss, std::uint8_t requestId, OutcomeCallback done) {
+    OCU_JAUS_OUTCOME(ss, d->core.handoffWait(ss, requestId));
+}
 void JausStack::setEmergencyAll(EmergencyCode code, OutcomeCallback done) {
     Impl* d = m_impl.get();
     if (!d->running)

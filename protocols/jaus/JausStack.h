@@ -92,6 +92,8 @@ public:
     void handoffRequest(std::uint16_t subsystem, std::string reason, OutcomeCallback done);
     void handoffCancel(std::uint16_t subsystem, OutcomeCallback done);
     void handoffAnswer(std::uint16_t subsystem, std::uint8_t requestId, bool accept, OutcomeCallback done);
+    // WAIT to a forwarded request: it stays queued and its decision time starts again.
+    void handoffWait(std::uint16_t subsystem, std::uint8_t requestId, OutcomeCallback done);
 
     // Subsystems whose SetEmergency is planned for the caller's-thread fast path now (tests, diagnostics).
     std::size_t plannedStopCount() const;

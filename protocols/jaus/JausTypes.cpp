@@ -124,6 +124,8 @@ const char* toString(HandoffPhase p) {
         return "cancelled";
     case HandoffPhase::Preempting:
         return "pre-empting";
+    case HandoffPhase::Waiting:
+        return "waiting";
     }
     return "none";
 }

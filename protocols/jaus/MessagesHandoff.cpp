@@ -48,6 +48,8 @@ const char* toString(HandoffCode c) {
         return "deferred";
     case HandoffCode::InsufficientAuthority:
         return "insufficient authority";
+    case HandoffCode::Wait:
+        return "wait";
     }
     return "unknown";
 }
@@ -114,7 +116,7 @@ Result<ConfirmHandoffRequest> decodeConfirmHandoffRequest(ByteSpan p) {
     ConfirmHandoffRequest m;
     m.id = r->u8();
     const std::uint8_t code = r->u8();
-    if (r->ok() && code > std::uint8_t(HandoffCode::InsufficientAuthority))
+    if (r->ok() && code > std::uint8_t(HandoffCode::Wait))
         return makeError("value: ConfirmHandoffRequest response code " + std::to_string(code));
     m.code = HandoffCode(code);
     return finish(*r, m, msg::ConfirmHandoffRequest);

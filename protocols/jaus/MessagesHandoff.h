@@ -46,6 +46,9 @@ enum class HandoffCode : std::uint8_t {
     Queued = 4,
     Deferred = 5,
     InsufficientAuthority = 6,
+    // FKIE's HandoffController reads a private 7 as the holder's WAIT (jaus-autonomy.md §8); the public
+    // layout's answer to a WAIT is DEFERRED (or QUEUED again, as FKIE's EAC sends).
+    Wait = 7,
 };
 const char* toString(HandoffCode c);
 

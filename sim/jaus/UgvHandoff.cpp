@@ -115,8 +115,8 @@ void UgvCore::confirmRelease(const JausId& src, ByteSpan p) {
         if (it == q.end())
             continue;
         if (a.code == ReleaseCode::Wait) {
-            it->forwarded = m_clock.now(); // the controller asks for more time
-            answerHandoff(it->requester, it->id, HandoffCode::Queued);
+            it->forwarded = m_clock.now();                               // the controller asks for more time
+            answerHandoff(it->requester, it->id, HandoffCode::Deferred); // the requester can show it
             continue;
         }
         const UgvHandoffRequest r = *it;

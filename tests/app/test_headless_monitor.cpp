@@ -370,6 +370,13 @@ private slots:
         QVERIFY(!r.value(QStringLiteral("ok")).toBool());
         QVERIFY(r.value(QStringLiteral("message")).toString().contains(QStringLiteral("\"accept\"")));
         QCOMPARE(rig.jaus.calls().size(), 2);
+        // WAIT: the request stays with the holder's answer "wait".
+        r = QJsonDocument::fromJson(
+                rig.monitor.handleLine(R"({"cmd":"handoff_answer","id":"jaus:7","request":3,"wait":true})"))
+                .object();
+        QVERIFY(r.value(QStringLiteral("ok")).toBool());
+        QCOMPARE(rig.jaus.calls().size(), 3);
+        QCOMPARE(rig.jaus.calls()[2].args.value(QStringLiteral("wait")).toBool(), true);
 #else
         QSKIP("built without JAUS");
 #endif

@@ -92,6 +92,8 @@ private slots:
             << R"({"cmd":"handoff_request","id":"jaus:126","cancel":true})";
         QTest::newRow("handoff_answer")
             << R"({"cmd":"handoff_answer","id":"jaus:126","request":3,"accept":true})";
+        QTest::newRow("handoff_answer, wait")
+            << R"({"cmd":"handoff_answer","id":"jaus:126","request":3,"wait":true})";
     }
     // The platform commands' arguments: what reaches the bridge, and what is refused at the edge.
     void platformCommands() {
@@ -249,6 +251,10 @@ private slots:
         p = parseOperatorCommand(QStringLiteral("handoff_answer"), json(R"({"id":"jaus:1","request":3})"));
         QVERIFY(!p.command);
         QVERIFY2(p.error.contains(QStringLiteral("\"accept\"")), qPrintable(p.error));
+        p = parseOperatorCommand(QStringLiteral("handoff_answer"),
+                                 json(R"({"id":"jaus:1","request":3,"wait":true})"));
+        QVERIFY(p.command); // WAIT needs no "accept"
+        QVERIFY(std::get<HandoffAnswer>(*p.command).wait && !std::get<HandoffAnswer>(*p.command).accept);
         p = parseOperatorCommand(QStringLiteral("handoff_answer"),
                                  json(R"({"id":"jaus:1","request":300,"accept":false})"));
         QVERIFY(!p.command);

@@ -37,8 +37,8 @@ HandoffBanner::HandoffBanner(JausVehicleBridge* bridge, CommandGate* gate, Fleet
     : QFrame(parent), m_bridge(bridge), m_gate(gate), m_selection(selection), m_clock(systemModelClock()),
       m_promptBox(box("handoff-prompt", this)), m_promptLabel(new QLabel(m_promptBox)),
       m_countdown(new QLabel(m_promptBox)), m_accept(new QPushButton(tr("Accept"), m_promptBox)),
-      m_deny(new QPushButton(tr("Deny"), m_promptBox)), m_askBox(box("handoff-ask", this)),
-      m_askLabel(new QLabel(m_askBox)), m_reason(new QLineEdit(m_askBox)),
+      m_deny(new QPushButton(tr("Deny"), m_promptBox)), m_wait(new QPushButton(tr("Wait"), m_promptBox)),
+      m_askBox(box("handoff-ask", this)), m_askLabel(new QLabel(m_askBox)), m_reason(new QLineEdit(m_askBox)),
       m_ask(new QPushButton(tr("Ask for hand-off"), m_askBox)), m_statusBox(box("handoff-status", this)),
       m_statusLabel(new QLabel(m_statusBox)), m_withdraw(new QPushButton(tr("Withdraw"), m_statusBox)),
       m_dismiss(new QPushButton(tr("OK"), m_statusBox)), m_tick(new QTimer(this)) {
@@ -53,16 +53,21 @@ HandoffBanner::HandoffBanner(JausVehicleBridge* bridge, CommandGate* gate, Fleet
     m_accept->setToolTip(tr("Hand control of this vehicle to the console that asks"));
     m_deny->setObjectName(QStringLiteral("handoff-deny"));
     m_deny->setToolTip(tr("Keep control; the console that asks is told"));
+    m_wait->setObjectName(QStringLiteral("handoff-wait"));
+    m_wait->setToolTip(tr("Not yet: the request stays and the decision time starts again; the console that "
+                          "asks is told to wait"));
     auto* promptButtons = new QHBoxLayout;
     promptButtons->addWidget(m_countdown, 1);
     promptButtons->addWidget(m_accept);
     promptButtons->addWidget(m_deny);
+    promptButtons->addWidget(m_wait);
     auto* pl = new QVBoxLayout(m_promptBox);
     pl->setContentsMargins(6, 4, 6, 4);
     pl->addWidget(m_promptLabel);
     pl->addLayout(promptButtons);
     connect(m_accept, &QPushButton::clicked, this, [this] { answer(true); });
     connect(m_deny, &QPushButton::clicked, this, [this] { answer(false); });
+    connect(m_wait, &QPushButton::clicked, this, [this] { answer(false, true); });
 
     m_askLabel->setObjectName(QStringLiteral("handoff-ask-text"));
     m_askLabel->setWordWrap(true);
@@ -182,6 +187,8 @@ void HandoffBanner::showPrompt(const Seen* v) {
                        .arg(m_prompt.authority);
     if (!m_prompt.explanation.isEmpty())
         text += QLatin1Char('\n') + tr("Reason: %1").arg(m_prompt.explanation);
+    if (m_prompt.waited)
+        text += QLatin1Char('\n') + tr("You asked it to wait; its console keeps the request up.");
     if (v->handoff.prompts.size() > 1)
         text += QLatin1Char('\n') +
                 tr("%n more request(s) waiting after this one.", "", int(v->handoff.prompts.size() - 1));
@@ -189,6 +196,7 @@ void HandoffBanner::showPrompt(const Seen* v) {
     const bool may = m_bridge->mayCommand();
     m_accept->setEnabled(may);
     m_deny->setEnabled(may);
+    m_wait->setEnabled(may);
     m_promptBox->setVisible(true);
     updateCountdown();
     if (!m_tick->isActive())
@@ -207,10 +215,10 @@ void HandoffBanner::updateCountdown() {
     m_countdown->setText(tr("Answer within %n s, else the vehicle refuses it (timeout).", "", left));
 }
 
-void HandoffBanner::answer(bool accept) {
+void HandoffBanner::answer(bool accept, bool wait) {
     if (!m_gate || !m_promptVehicle)
         return;
-    m_gate->command(HandoffAnswer{JausVehicleBridge::machineId(m_promptVehicle), m_prompt.id, accept},
+    m_gate->command(HandoffAnswer{JausVehicleBridge::machineId(m_promptVehicle), m_prompt.id, accept, wait},
                     QStringLiteral("gui"));
 }
 
@@ -278,20 +286,24 @@ void HandoffBanner::showStatus(const Seen* v) {
     case HandoffState::Preempting:
         state = tr("Requesting control (ordinary pre-emption)");
         break;
+    case HandoffState::Waiting:
+        state = tr("The holder asks you to wait; the request is kept up");
+        break;
     case HandoffState::None:
         break;
     }
     // The state in the operator's language, the details in the stack's words (as in the event log).
     m_statusLabel->setText(tr("Hand-off of %1: %2.").arg(nameOf(*v), state) + QLatin1Char('\n') +
                            v->handoff.reason);
-    const bool waiting = s == HandoffState::Requesting || s == HandoffState::Queued;
+    const bool waiting =
+        s == HandoffState::Requesting || s == HandoffState::Queued || s == HandoffState::Waiting;
     m_withdraw->setVisible(waiting);
     m_dismiss->setVisible(!isWaiting(s));
     m_statusBox->setVisible(true);
 }
 
 QList<QWidget*> HandoffBanner::tabChain() const {
-    return {m_accept, m_deny, m_withdraw, m_dismiss, m_reason, m_ask};
+    return {m_accept, m_deny, m_wait, m_withdraw, m_dismiss, m_reason, m_ask};
 }
 
 QString HandoffBanner::promptText() const {

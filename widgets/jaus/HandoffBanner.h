@@ -1,8 +1,10 @@
 #pragma once
 // Hand-off of control between consoles in the JAUS panel (AEP-4818 §6.3), a banner above the vehicle table,
 // never a modal dialog (the operator may be driving):
-//  * another console asks for a vehicle this console holds: who asks (its JAUS ID, authority) and why, Accept
-//    and Deny, and the seconds left before the vehicle's decision timeout answers it TIMEOUT;
+//  * another console asks for a vehicle this console holds: who asks (its JAUS ID, authority) and why,
+//  Accept,
+//    Deny and Wait (the request stays, its decision time starts again), and the seconds left before the
+//    vehicle's decision timeout answers it TIMEOUT;
 //  * the selected vehicle is held by another console: a reason and "Ask for hand-off" (for a vehicle without
 //    Enhanced Access Control the banner says that the ordinary pre-emption rules apply instead);
 //  * this console's own request: where it stands (waiting, granted, denied, timed out...) with Withdraw while
@@ -41,6 +43,7 @@ public:
     // For keyboard users' tests and the screenshots.
     QPushButton* acceptButton() const { return m_accept; }
     QPushButton* denyButton() const { return m_deny; }
+    QPushButton* waitButton() const { return m_wait; }
     QPushButton* askButton() const { return m_ask; }
     QPushButton* withdrawButton() const { return m_withdraw; }
     QPushButton* dismissButton() const { return m_dismiss; }
@@ -70,7 +73,7 @@ private:
     void showAsk(const Seen* selected);
     void showStatus(const Seen* own);
     void updateCountdown();
-    void answer(bool accept);
+    void answer(bool accept, bool wait = false);
     static QString nameOf(const Seen& v);
 
     JausVehicleBridge* m_bridge;
@@ -82,6 +85,7 @@ private:
     QLabel* m_countdown;
     QPushButton* m_accept;
     QPushButton* m_deny;
+    QPushButton* m_wait;
     QFrame* m_askBox;
     QLabel* m_askLabel;
     QLineEdit* m_reason;

@@ -90,8 +90,14 @@ void MissionPanel::build() {
     m_routeTimer->setInterval(100);
     connect(m_routeTimer, &QTimer::timeout, this, [this] {
         MissionPlan* p = plan();
-        emit planRouteChanged(p ? p->waypoints() : QVector<MissionWaypoint>{},
-                              MissionPlanLayer::missionColour(m_vehicle));
+        const QColor colour = MissionPlanLayer::missionColour(m_vehicle);
+        emit planRouteChanged(p ? p->waypoints() : QVector<MissionWaypoint>{}, colour);
+        const QVector<QPair<double, double>> path = m_reported.value(m_vehicle).drivenPath;
+        if (path != m_pathSent || m_vehicle != m_pathSentFor) {
+            m_pathSent = path;
+            m_pathSentFor = m_vehicle;
+            emit drivenPathChanged(path, colour);
+        }
     });
     m_title = new QLabel(this);
     m_title->setWordWrap(true);
@@ -330,6 +336,8 @@ void MissionPanel::onVehicle(const JausVehicle& v) {
     if (v.subsystem == m_vehicle) {
         refreshState();
         refreshButtons();
+        if (v.mission.drivenPath != m_pathSent && !m_routeTimer->isActive())
+            m_routeTimer->start(); // the 3D path follows the vehicle at most every 100 ms
     }
 }
 

@@ -87,6 +87,9 @@ signals:
     // The plan drawn on the map changed (for the 3D view; at most every 100 ms while dragging): WGS84
     // waypoints and the vehicle's colour.
     void planRouteChanged(const QVector<ocu::MissionWaypoint>& waypoints, const QColor& colour);
+    // The path the panel's vehicle drove, as it reports it (for the 3D view; at most every 100 ms): WGS84
+    // (lat, lon) points, empty when none, and the vehicle's colour.
+    void drivenPathChanged(const QVector<QPair<double, double>>& path, const QColor& colour);
 
 private:
     void build();
@@ -125,6 +128,8 @@ private:
     MissionPlanTableModel* m_model;
     QSpinBox* m_from;
     QTimer* m_routeTimer;
+    QVector<QPair<double, double>> m_pathSent; // the driven path last sent to the 3D view
+    quint16 m_pathSentFor = 0;
     QHash<int, QPushButton*> m_buttons;
 };
 

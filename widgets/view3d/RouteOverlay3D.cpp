@@ -88,6 +88,16 @@ void RouteOverlay3D::setStyle(double r, double g, double b, float width) {
         m_impl->view->refresh();
 }
 
+QVector3D RouteOverlay3D::colour() const {
+    double c[3];
+    m_impl->actor->GetProperty()->GetColor(c);
+    return QVector3D(float(c[0]), float(c[1]), float(c[2]));
+}
+
+float RouteOverlay3D::width() const {
+    return m_impl->actor->GetProperty()->GetLineWidth();
+}
+
 QVector<QVector3D> RouteOverlay3D::drawnPoints() const {
     return m_impl->points;
 }

@@ -24,6 +24,9 @@ public:
     void setPath(const QVector<QPointF>& pathEN);
     // Line colour (0..1) and width (px).
     void setStyle(double r, double g, double b, float width);
+    // The line's colour (r, g, b in 0..1) and width (px), for tests.
+    QVector3D colour() const;
+    float width() const;
     // The drawn polyline in ENU (x = E, y = N, z = height on the terrain + kLift), for tests.
     QVector<QVector3D> drawnPoints() const;
     static constexpr double kLift = 1.5;  // m above the terrain, so the line is not buried in it

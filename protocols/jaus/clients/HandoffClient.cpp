@@ -16,7 +16,7 @@ constexpr auto kGrantedControlWait = std::chrono::seconds(5);
 constexpr double kDecisionMarginS = 5;
 
 bool active(HandoffPhase p) {
-    return p == HandoffPhase::Requesting || p == HandoffPhase::Queued;
+    return p == HandoffPhase::Requesting || p == HandoffPhase::Queued || p == HandoffPhase::Waiting;
 }
 std::string seconds(double s) {
     return std::to_string(int(s + 0.5)) + " s";
@@ -121,6 +121,7 @@ bool HandoffClient::request(std::uint16_t ss, const std::string& reason) {
     if (!m_ctx.send(r->snap.handoff.component, encode(RequestHandoff{cfg.authority, s.explanation})))
         return m_ctx.sendFailed(ss, "RequestHandoff");
     s.since = s.lastSent = m_ctx.now();
+    s.holder = r->snap.controller;
     r->snap.handoff.queueId = kNoHandoffId;
     s.timeoutsQueried = false;
     queryTimeouts(*r, s);
@@ -168,12 +169,24 @@ void HandoffClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteSpan p)
     if (!active(h.phase))
         return; // an answer to a request we no longer make (cancelled, already final)
     State& s = m_state[r.id()];
-    const std::string who = r.snap.controller.subsystem ? r.snap.controller.toString() : "the holder";
+    const JausId holder = r.snap.controller.subsystem ? r.snap.controller : s.holder;
+    const std::string who = holder.subsystem ? holder.toString() : "the holder";
     switch (m->code) {
-    case HandoffCode::Queued:
     case HandoffCode::Deferred:
+    case HandoffCode::Wait:
         h.queueId = m->id;
-        if (h.phase != HandoffPhase::Queued)
+        if (h.phase != HandoffPhase::Waiting) {
+            s.since = m_ctx.now(); // the vehicle gives the holder its decision time again
+            setPhase(r, HandoffPhase::Waiting,
+                     who + " asks to wait for " + r.snap.callSign +
+                         ": the request is kept up (answer within " + seconds(h.decisionTimeoutS) + ")",
+                     Severity::Info);
+        }
+        return;
+    case HandoffCode::Queued:
+        h.queueId = m->id;
+        // QUEUED again (a re-assertion answered, or a WAIT passed on as QUEUED) changes nothing.
+        if (h.phase == HandoffPhase::Requesting)
             setPhase(r, HandoffPhase::Queued,
                      "hand-off of " + r.snap.callSign + " waiting for " + who + " to answer (up to " +
                          seconds(h.decisionTimeoutS) + ")",
@@ -218,6 +231,8 @@ void HandoffClient::onConfirm(RemoteSubsystem& r, const JausId& src, ByteSpan p)
 void HandoffClient::tickRequest(RemoteSubsystem& r, State& s, TimePoint now) {
     HandoffStatus& h = r.snap.handoff;
     if (active(h.phase)) {
+        if (r.snap.controller.subsystem)
+            s.holder = r.snap.controller;
         // Re-assert within the Handoff Request Timeout (AEP-4818 §6.3.2.2): every third of it, as FKIE does.
         const double period = std::max(0.2, (h.requestTimeoutS > 0 ? h.requestTimeoutS : 5.0) / 3);
         if (now - s.lastSent >= secondsD(period))
@@ -298,7 +313,7 @@ void HandoffClient::onReleaseRequest(RemoteSubsystem& r, const JausId& src, Byte
     m_ctx.changed(r);
 }
 
-bool HandoffClient::answer(std::uint16_t ss, std::uint8_t id, bool accept) {
+bool HandoffClient::answer(std::uint16_t ss, std::uint8_t id, ReleaseCode code) {
     RemoteSubsystem* r = m_ctx.find(ss);
     if (!r)
         return m_ctx.refuseNoTarget(ss, "EnhancedAccessControl");
@@ -312,10 +327,20 @@ bool HandoffClient::answer(std::uint16_t ss, std::uint8_t id, bool accept) {
                             OutcomeReason::InvalidArgument);
     const State& s = m_state[ss];
     const JausId to = s.eacOfPrompts.subsystem ? s.eacOfPrompts : r->snap.handoff.component;
-    const ConfirmReleaseControl answer{{{id, accept ? ReleaseCode::Granted : ReleaseCode::Denied}}};
+    const ConfirmReleaseControl answer{{{id, code}}};
     if (!m_ctx.send(to, encode(answer)))
         return m_ctx.sendFailed(ss, "ConfirmReleaseControl");
     const std::string who = it->requester.toString();
+    if (code == ReleaseCode::Wait) {
+        it->waited = true;
+        it->received = m_ctx.now(); // the vehicle restarts its decision time
+        it->receivedUnixMs = unixMillisNow();
+        m_ctx.notify(Severity::Info, EventKind::HandoffChanged, ss,
+                     "hand-off of " + r->snap.callSign + " to " + who + ": asked to wait");
+        m_ctx.changed(*r);
+        return true;
+    }
+    const bool accept = code == ReleaseCode::Granted;
     if (accept) {
         // At most one GRANTED (EnhancedAccessControl_V1.xml); the others go to the new holder.
         m_access.handOver(ss);

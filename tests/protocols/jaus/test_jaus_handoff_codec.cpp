@@ -54,13 +54,16 @@ private slots:
         QVERIFY(m->code == HandoffCode::Granted);
         for (auto [code, name] : {std::pair{HandoffCode::Timeout, "timeout"},
                                   {HandoffCode::Denied, "denied"},
-                                  {HandoffCode::Deferred, "deferred"}}) {
+                                  {HandoffCode::Deferred, "deferred"},
+                                  {HandoffCode::Wait, "wait"}}) {
             auto d = decodeConfirmHandoffRequest(encode(ConfirmHandoffRequest{1, code}));
             QVERIFY(d);
             QVERIFY(d->code == code);
             QCOMPARE(toString(d->code), name);
         }
-        QVERIFY(!decodeConfirmHandoffRequest(hex("35 ff 01 07"))); // no such code
+        auto fkieWait = decodeConfirmHandoffRequest(hex("35 ff 01 07")); // FKIE's private WAIT
+        QVERIFY(fkieWait && fkieWait->code == HandoffCode::Wait);
+        QVERIFY(!decodeConfirmHandoffRequest(hex("35 ff 01 08"))); // no such code
         QVERIFY(!decodeConfirmHandoffRequest(hex("35 ff 01")));    // truncated
     }
 

@@ -1,9 +1,9 @@
 // Hand-off between two consoles through their JAUS panels (two FleetContexts, each with its JausBridge and
 // command gate: subsystems 200 and 201) and the simulated UGV's Enhanced Access Control over loopback.
 // Console B sees the vehicle held by A and asks with a reason (keyboard: type it, Enter); A's banner shows
-// who asks and why with a countdown, and A's operator accepts or denies from the keyboard; the outcome shows
-// on both consoles; each step is a gate command with its per-target result. With OCU_SCREENSHOT_DIR set, A's
-// panel with the prompt is saved at 1366x768.
+// who asks and why with a countdown, and A's operator accepts, denies or asks to wait from the keyboard; the
+// outcome shows on both consoles; each step is a gate command with its per-target result. With
+// OCU_SCREENSHOT_DIR set, A's panel with the prompt is saved at 1366x768.
 #include "models/CommandGate.h"
 #include "models/FleetContext.h"
 #include "models/FleetSelection.h"
@@ -139,6 +139,28 @@ private slots:
         QVERIFY(!a.banner()->promptShown());
         QVERIFY(a.ugv()->controlledByUs);
         QVERIFY(!b.ugv()->controlledByUs);
+    }
+
+    // A answers "wait": B shows it and keeps the request up (re-asserted past the vehicle's 5 s request
+    // timeout), A's prompt stays with the decision time started again; A then accepts.
+    void waitThenAccepted() {
+        sim::JausDemo demo(demoOptions());
+        Console a(demo, 200), b(demo, 201);
+        askFromB(a, b);
+        a.banner()->waitButton()->setFocus();
+        QTest::keyClick(a.banner()->waitButton(), Qt::Key_Space);
+        QTRY_VERIFY_WITH_TIMEOUT(a.result(QStringLiteral("handoff_answer")).has_value(), 15000);
+        QVERIFY(a.result(QStringLiteral("handoff_answer"))->ok);
+        QTRY_VERIFY_WITH_TIMEOUT(b.banner()->statusText().contains("The holder asks you to wait"), 15000);
+        QCOMPARE(b.ugv()->handoff.state, HandoffState::Waiting);
+        QVERIFY(b.banner()->withdrawButton()->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(a.banner()->promptText().contains("You asked it to wait"), 15000);
+        QTest::qWait(6000);
+        QCOMPARE(b.ugv()->handoff.state, HandoffState::Waiting);
+        QVERIFY(a.banner()->promptShown());
+        a.banner()->acceptButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(b.ugv()->controlledByUs, 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(b.banner()->statusText().contains("Control handed over"), 15000);
     }
 };
 

@@ -241,8 +241,8 @@ private slots:
         QCOMPARE(r.snap.handoff.prompts.size(), std::size_t(1));
         QCOMPARE(rig.handoffEvents(), events);
 
-        QVERIFY(!rig.handoff.answer(126, 9, true)); // no such request
-        QVERIFY(rig.handoff.answer(126, 7, true));
+        QVERIFY(!rig.handoff.answer(126, 9, ReleaseCode::Granted)); // no such request
+        QVERIFY(rig.handoff.answer(126, 7, ReleaseCode::Granted));
         const Sent* a = rig.out.last(msg::ConfirmReleaseControl);
         QVERIFY(a);
         QCOMPARE(a->payload, (Bytes{0x39, 0xff, 0x01, 0x07, 0x00}));
@@ -273,7 +273,7 @@ private slots:
         fwd.requests.push_back({2, JausId{202, 1, 1}, 210, "b"});
         QVERIFY(rig.deliver(r, encode(fwd)));
         QCOMPARE(r.snap.handoff.prompts.size(), std::size_t(2));
-        QVERIFY(rig.handoff.answer(126, 1, false));
+        QVERIFY(rig.handoff.answer(126, 1, ReleaseCode::Denied));
         QCOMPARE(rig.out.last(msg::ConfirmReleaseControl)->payload, (Bytes{0x39, 0xff, 0x01, 0x01, 0x01}));
         QCOMPARE(r.snap.handoff.prompts.size(), std::size_t(1));
         QVERIFY(r.snap.controlledByUs);

@@ -133,6 +133,11 @@ struct ForeignJausVehicle::Impl {
         }
         if (opt.platformServicesComponent)
             platform = std::make_unique<PlatformServices>(controller, status, beforeEmergency);
+        if (opt.handoffComponent)
+            eac = std::make_unique<EnhancedAccessControl>(
+                opt.handoff, controller, controllerAuthority,
+                [this, from = id(opt.subsystem, opt.node, opt.handoffComponent)](
+                    std::uint32_t to, const Buf& b) { reply(to, b, from); });
         lat0 = opt.latitude;
         lon0 = opt.longitude;
         x0 = opt.localX;
@@ -300,6 +305,8 @@ struct ForeignJausVehicle::Impl {
                 return;
             }
         }
+        if (eac && c.component == opt.handoffComponent && eac->handle(mid, src, body, len))
+            return;
         switch (mid) {
         case QueryIdentification: {
             if (len < 1 || (!first && !opt.everyComponentIdentifies))
@@ -534,6 +541,8 @@ struct ForeignJausVehicle::Impl {
             {
                 std::lock_guard lock(mutex);
                 drive(0.05);
+                if (eac)
+                    eac->tick(Clock::now());
                 // Each component (re-)registers its services with every console that asked (AS5710A
                 // RegisterServices; public stacks repeat it until their registration is verified).
                 if (opt.servicesDialect == ServicesDialect::EmptyWildcardRegister && opt.pushRegistrations &&
@@ -588,6 +597,7 @@ struct ForeignJausVehicle::Impl {
     std::uint32_t listController = 0;
     std::uint8_t listStatus = 2;
     std::unique_ptr<PlatformServices> platform; // platformServicesComponent
+    std::unique_ptr<EnhancedAccessControl> eac; // handoffComponent
     double lat0 = 0, lon0 = 0, x0 = 0, y0 = 0;
 };
 
@@ -635,6 +645,14 @@ std::uint16_t ForeignJausVehicle::activeElement() const {
 std::pair<double, double> ForeignJausVehicle::localPosition() const {
     std::lock_guard lock(m_impl->mutex);
     return {m_impl->opt.localX, m_impl->opt.localY};
+}
+std::size_t ForeignJausVehicle::handoffsQueued() const {
+    std::lock_guard lock(m_impl->mutex);
+    return m_impl->eac ? m_impl->eac->queued() : 0;
+}
+int ForeignJausVehicle::handoffsGranted() const {
+    std::lock_guard lock(m_impl->mutex);
+    return m_impl->eac ? m_impl->eac->granted() : 0;
 }
 int ForeignJausVehicle::malformed() const {
     std::lock_guard lock(m_impl->mutex);

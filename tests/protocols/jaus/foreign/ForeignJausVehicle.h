@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "tests/protocols/jaus/foreign/ForeignHandoff.h"
 #include "tests/protocols/jaus/foreign/ForeignPlatformServices.h"
 #include "tests/protocols/jaus/foreign/ForeignWaypointList.h"
 
@@ -95,6 +96,11 @@ struct VehicleOptions {
     // Platform State and Illumination (ForeignPlatformServices.h) on this component (0 = none; list their
     // URIs in that component's services), under the vehicle's one access control.
     std::uint8_t platformServicesComponent = 0;
+    // Enhanced Access Control 1.1 (ForeignHandoff.h) on this component (0 = none; list
+    // "urn:jaus:jss:iop:EnhancedAccessControl" in that component's services), over the vehicle's one access
+    // control: the component that answers RequestControl.
+    std::uint8_t handoffComponent = 0;
+    HandoffOptions handoff;
     // The pose the pose components report (WGS84 degrees, local metres, yaw radians).
     double latitude = 48.1, longitude = 11.5, localX = 12.5, localY = -3.25, yaw = 0.5;
 };
@@ -122,6 +128,9 @@ public:
     std::pair<double, double> localPosition() const;
     // The lights the platform services have on (IlluminationState bits; 0 without the services).
     std::uint32_t lights() const;
+    // Hand-off requests in the Enhanced Access Control's queue, and hand-offs granted (0 without it).
+    std::size_t handoffsQueued() const;
+    int handoffsGranted() const;
     // Datagrams received that did not parse as AS5669A JUDP (must stay 0: our bytes are checked here).
     int malformed() const;
 
