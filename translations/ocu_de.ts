@@ -976,6 +976,64 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     </message>
 </context>
 <context>
+    <name>ocu::ControlRoomModel</name>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 an %2</translation>
+    </message>
+    <message>
+        <source>not seen since %1</source>
+        <translation>nicht gesehen seit %1</translation>
+    </message>
+    <message>
+        <source>locked</source>
+        <translation>gesperrt</translation>
+    </message>
+    <message>
+        <source>signed in</source>
+        <translation>angemeldet</translation>
+    </message>
+    <message>
+        <source>controls machines as %1</source>
+        <translation>steuert Maschinen als %1</translation>
+    </message>
+    <message>
+        <source>%1 (this console)</source>
+        <translation>%1 (diese Konsole)</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Konsole</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>Bediener</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <source>Since</source>
+        <translation>Seit</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::ControlRoomPanel</name>
+    <message>
+        <source>Waiting for the control-room history…</source>
+        <translation>Warte auf die Leitstand-Historie…</translation>
+    </message>
+    <message>
+        <source>Control-room history unavailable since %1: the room as last seen. %2</source>
+        <translation>Leitstand-Historie nicht erreichbar seit %1: der Raum wie zuletzt gesehen. %2</translation>
+    </message>
+</context>
+<context>
     <name>ocu::CoverageReport</name>
     <message>
         <source>every lift</source>
@@ -2279,6 +2337,22 @@ Alt+U: automatische Disposition ein/aus (Einschalten fragt zuerst)</translation>
         <source>Hand-off of %1: %2.</source>
         <translation>Übergabe von %1: %2.</translation>
     </message>
+    <message>
+        <source>Wait</source>
+        <translation>Warten</translation>
+    </message>
+    <message>
+        <source>Not yet: the request stays and the decision time starts again; the console that asks is told to wait</source>
+        <translation>Noch nicht: die Anfrage bleibt, die Entscheidungszeit beginnt neu; die anfragende Konsole wird gebeten zu warten</translation>
+    </message>
+    <message>
+        <source>You asked it to wait; its console keeps the request up.</source>
+        <translation>Sie haben um Warten gebeten; die Konsole hält die Anfrage aufrecht.</translation>
+    </message>
+    <message>
+        <source>The holder asks you to wait; the request is kept up</source>
+        <translation>Der Inhaber bittet Sie zu warten; die Anfrage bleibt bestehen</translation>
+    </message>
 </context>
 <context>
     <name>ocu::HardwareStopButton</name>
@@ -2918,6 +2992,16 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
         <source>Actions</source>
         <translation>Aktionen</translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>operator at console (JAUS authority)</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, JAUS %2</source>
+        <comment>operator at console, JAUS ID of its component</comment>
+        <translation>%1, JAUS %2</translation>
+    </message>
 </context>
 <context>
     <name>ocu::JausVehicleBridge</name>
@@ -3296,6 +3380,10 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
     <message>
         <source>Video panel (Ctrl+I): camera, full screen (Esc returns), resume driving</source>
         <translation>Videofeld (Strg+I): Kamera, Vollbild (Esc kehrt zurück), Fahren fortsetzen</translation>
+    </message>
+    <message>
+        <source>Control room</source>
+        <translation>Leitstand</translation>
     </message>
 </context>
 <context>
@@ -4621,6 +4709,10 @@ Wählen Sie eine in der Flottenliste, in der Tabelle oben oder auf der Karte aus
     <message>
         <source>Areas and reports</source>
         <translation>Flächen und Berichte</translation>
+    </message>
+    <message>
+        <source>console closed</source>
+        <translation>Konsole geschlossen</translation>
     </message>
 </context>
 <context>

@@ -976,6 +976,64 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     </message>
 </context>
 <context>
+    <name>ocu::ControlRoomModel</name>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 à %2</translation>
+    </message>
+    <message>
+        <source>not seen since %1</source>
+        <translation>non vu depuis %1</translation>
+    </message>
+    <message>
+        <source>locked</source>
+        <translation>verrouillé</translation>
+    </message>
+    <message>
+        <source>signed in</source>
+        <translation>connecté</translation>
+    </message>
+    <message>
+        <source>controls machines as %1</source>
+        <translation>commande les machines en tant que %1</translation>
+    </message>
+    <message>
+        <source>%1 (this console)</source>
+        <translation>%1 (cette console)</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Console</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>Opérateur</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rôle</translation>
+    </message>
+    <message>
+        <source>Since</source>
+        <translation>Depuis</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>État</translation>
+    </message>
+</context>
+<context>
+    <name>ocu::ControlRoomPanel</name>
+    <message>
+        <source>Waiting for the control-room history…</source>
+        <translation>En attente de l’historique de la salle de contrôle…</translation>
+    </message>
+    <message>
+        <source>Control-room history unavailable since %1: the room as last seen. %2</source>
+        <translation>Historique de la salle de contrôle indisponible depuis %1 : la salle telle que vue en dernier. %2</translation>
+    </message>
+</context>
+<context>
     <name>ocu::CoverageReport</name>
     <message>
         <source>no pass counts yet</source>
@@ -2279,6 +2337,22 @@ Alt+U : répartition automatique activée/désactivée (l&apos;activation demand
         <source>Hand-off of %1: %2.</source>
         <translation>Transfert de %1 : %2.</translation>
     </message>
+    <message>
+        <source>Wait</source>
+        <translation>Attendre</translation>
+    </message>
+    <message>
+        <source>Not yet: the request stays and the decision time starts again; the console that asks is told to wait</source>
+        <translation>Pas encore : la demande reste et le délai de décision recommence ; la console qui demande est priée d’attendre</translation>
+    </message>
+    <message>
+        <source>You asked it to wait; its console keeps the request up.</source>
+        <translation>Vous lui avez demandé d’attendre ; sa console maintient la demande.</translation>
+    </message>
+    <message>
+        <source>The holder asks you to wait; the request is kept up</source>
+        <translation>Le détenteur vous demande d’attendre ; la demande est maintenue</translation>
+    </message>
 </context>
 <context>
     <name>ocu::HardwareStopButton</name>
@@ -2918,6 +2992,16 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
         <source>Actions</source>
         <translation>Actions</translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>operator at console (JAUS authority)</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, JAUS %2</source>
+        <comment>operator at console, JAUS ID of its component</comment>
+        <translation>%1, JAUS %2</translation>
+    </message>
 </context>
 <context>
     <name>ocu::JausVehicleBridge</name>
@@ -3296,6 +3380,10 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
     <message>
         <source>Video panel (Ctrl+I): camera, full screen (Esc returns), resume driving</source>
         <translation>Panneau Vidéo (Ctrl+I) : caméra, plein écran (Échap pour revenir), reprendre la conduite</translation>
+    </message>
+    <message>
+        <source>Control room</source>
+        <translation>Salle de contrôle</translation>
     </message>
 </context>
 <context>
@@ -4621,6 +4709,10 @@ En sélectionner une dans la liste de la flotte, dans le tableau ci-dessus ou su
     <message>
         <source>Areas and reports</source>
         <translation>Zones et rapports</translation>
+    </message>
+    <message>
+        <source>console closed</source>
+        <translation>console fermée</translation>
     </message>
 </context>
 <context>
