@@ -157,8 +157,9 @@ private slots:
     void deniedWaitAndWithdrawn() {
         Rig rig;
         const std::uint8_t id = rig.heldByAAskedByB();
+        // WAIT is passed on so the requester can tell "the holder is deciding" from "nobody has looked".
         rig.from(kA, encode(ConfirmReleaseControl{{{id, ReleaseCode::Wait}}}));
-        QCOMPARE(rig.answerTo(kB)->code, HandoffCode::Queued);
+        QCOMPARE(rig.answerTo(kB)->code, HandoffCode::Deferred);
         rig.from(kA, encode(ConfirmReleaseControl{{{id, ReleaseCode::Denied}}}));
         QCOMPARE(rig.answerTo(kB)->code, HandoffCode::Denied);
         QCOMPARE(rig.ugv.state().controller, kA);
