@@ -23,6 +23,8 @@ class FleetListWidget : public QWidget {
     Q_OBJECT
 public:
     enum class Density { Dense, Large };
+    // The last message's share of a narrow list's width (the other columns elide or go out of sight first).
+    static constexpr int kLastMessagePercent = 25;
 
     FleetListWidget(FleetModel* fleet, FleetSelection* selection, QWidget* parent = nullptr);
 
@@ -48,6 +50,7 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    void fitColumnsWithinWidth();
     void syncFromShared();
     void syncToShared();
     void applyFilters();

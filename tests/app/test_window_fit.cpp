@@ -1,9 +1,9 @@
 // Every workspace fits a field laptop: the whole console on the built-in simulated site, each workspace in
 // its default arrangement, at 1366x768 and 1920x1080, in English and German. Checked from the real widgets:
 // - the map (the video in the UGV workspace) gets at least 45 % of a 1366x768 window and 55 % of 1920x1080;
-// - no panel of controls needs to scroll sideways (its controls' row is cut at the dock's edge otherwise), on
-//   every tab of every dock of the workspace (each tab raised in turn), nor do the dispatch tables and the
-//   event log (their texts elide), and no button is narrower than its text;
+// - nothing in a dock scrolls sideways (a panel of controls would have its row cut at the dock's edge; the
+//   tables and lists elide their long texts instead), on every tab of every dock of the workspace (each tab
+//   raised in turn), and no button is narrower than its text;
 // - the workspace shows the panels of its kinds and no other; STOP ALL stays visible;
 // - the event log and the dispatch table show a useful number of rows where they are in front, the event
 //   log's message column keeps its share of the width;
@@ -26,6 +26,7 @@
 #endif
 
 #include <QAbstractButton>
+#include <QAbstractScrollArea>
 #include <QAction>
 #include <QDockWidget>
 #include <QHeaderView>
@@ -64,7 +65,7 @@ QString layoutFingerprint(MainWindow& w) {
         if (!d->isVisible() || d->visibleRegion().isEmpty())
             continue;
         parts << QStringLiteral("%1 %2x%3").arg(d->objectName()).arg(d->width()).arg(d->height());
-        for (QScrollArea* s : d->findChildren<QScrollArea*>())
+        for (QAbstractScrollArea* s : d->findChildren<QAbstractScrollArea*>())
             if (s->isVisible())
                 parts << QString::number(s->horizontalScrollBar()->maximum());
         for (QAbstractButton* b : d->findChildren<QAbstractButton*>())
@@ -143,33 +144,24 @@ int visibleRows(QTableView* t) {
     return row > 0 ? t->viewport()->height() / row : 0;
 }
 
-// The tables checked for sideways scrolling: those of the dispatcher's panels and the event log (their long
-// texts elide).
-bool sidewaysChecked(QDockWidget* d) {
-    return d->objectName() == QLatin1String("dock-dispatch") ||
-           d->objectName() == QLatin1String("dock-events");
-}
-
-// Problems of the docks now on screen: a panel scroll area or a table that needs to scroll sideways, a
-// button narrower than its text.
+// Problems of the docks now on screen: a scroll area (a panel, a table, a list, a text) that needs to scroll
+// sideways, a table whose columns are wider than it, a button narrower than its text.
 QStringList cutOff(MainWindow& w) {
     QStringList out;
     for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
         if (!d->isVisible() || d->visibleRegion().isEmpty())
             continue;
-        for (QScrollArea* s : d->findChildren<QScrollArea*>()) {
-            if (s->objectName() != QLatin1String("panel-scroll") && s->parentWidget() != d)
+        for (QAbstractScrollArea* s : d->findChildren<QAbstractScrollArea*>()) {
+            if (!s->isVisible() || s->visibleRegion().isEmpty())
                 continue;
-            if (s->isVisible() && s->horizontalScrollBar()->maximum() > 0)
-                out << QStringLiteral("%1 scrolls sideways by %2 px (dock %3 px wide)")
-                           .arg(d->windowTitle())
+            if (s->horizontalScrollBar()->maximum() > 0)
+                out << QStringLiteral("%1: %2 %3 scrolls sideways by %4 px (dock %5 px wide)")
+                           .arg(d->windowTitle(), QString::fromLatin1(s->metaObject()->className()),
+                                s->objectName())
                            .arg(s->horizontalScrollBar()->maximum())
                            .arg(d->width());
-        }
-        for (QTableView* t : d->findChildren<QTableView*>()) {
-            if (!t->isVisible() || t->visibleRegion().isEmpty() || !sidewaysChecked(d))
-                continue;
-            if (t->horizontalHeader()->length() > t->viewport()->width())
+            auto* t = qobject_cast<QTableView*>(s);
+            if (t && t->horizontalHeader()->length() > t->viewport()->width())
                 out << QStringLiteral("%1: table %2 scrolls sideways (columns %3 px, view %4 px)")
                            .arg(d->windowTitle(), t->objectName())
                            .arg(t->horizontalHeader()->length())

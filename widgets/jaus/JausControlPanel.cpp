@@ -5,6 +5,7 @@
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
+#include "widgets/ColumnFit.h"
 #include "widgets/FleetListWidget.h"
 #include "widgets/jaus/HandoffBanner.h"
 #include "widgets/jaus/PlatformServicesWidget.h"
@@ -61,9 +62,8 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->setVisible(false);
-    m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->verticalHeader()->setDefaultSectionSize(30);
+    fitColumnsWithinWidth();
     // Keyboard-only path (docs/keyboard.md): arrows move between vehicles, Tab leaves the table
     // for the row's Monitor / Control / Release buttons (with tab navigation on, Tab cycled the cells).
     m_table->setTabKeyNavigation(false);
@@ -127,6 +127,25 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
                 selectSubsystem(*sub);
             showMachineDetails(id);
         });
+}
+
+void JausControlPanel::fitColumnsWithinWidth() {
+    // The table fits its dock: the controller takes the width left (elided, its whole text in the tooltip),
+    // the health and management go out of sight in a narrow dock (the header's menu brings them back), the
+    // vehicle's name elides last and the row's buttons never.
+    using S = JausSubsystemModel;
+    useElidingHeader(m_table);
+    QHeaderView* h = m_table->horizontalHeader();
+    h->setSectionResizeMode(QHeaderView::Interactive);
+    h->setSectionResizeMode(S::Controller, QHeaderView::Stretch);
+    setColumnDroppable(m_table, S::Management, 0);
+    setColumnDroppable(m_table, S::Health, 1);
+    setColumnShrinkTier(m_table, S::Vehicle, 1);
+    startColumnsAtHeaderWidth(m_table);
+    keepColumnsWithinWidth(m_table);
+    keepColumnsFitted(m_table);
+    addColumnMenu(m_table);
+    showElidedTextInTooltips(m_table);
 }
 
 void JausControlPanel::showMachineDetails(const QString& id) {
@@ -212,9 +231,14 @@ void JausControlPanel::installRowButtons(int first, int last) {
         connect(release, &QPushButton::clicked, this,
                 [this, sub] { send(ReleaseControl{JausVehicleBridge::machineId(sub)}); });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
-        // Index widgets do not take part in ResizeToContents: size the column for the buttons.
-        m_table->horizontalHeader()->setSectionResizeMode(JausSubsystemModel::Actions, QHeaderView::Fixed);
-        m_table->setColumnWidth(JausSubsystemModel::Actions, cell->sizeHint().width() + 4);
+        // The buttons whole, always: their column never gives up width.
+        const int buttons = cell->sizeHint().width() + 4;
+        if (buttons > m_actionsWidth) {
+            m_actionsWidth = buttons;
+            m_table->setColumnWidth(JausSubsystemModel::Actions, buttons);
+            setColumnShrinkTier(m_table, JausSubsystemModel::Actions, 9, buttons);
+            fitColumnsToContent(m_table);
+        }
     }
     // Rows inserted above shift the index widgets: reinstall them for every row.
     if (first < m_model->rowCount() - 1 && last < m_model->rowCount() - 1 && first >= 0) {
