@@ -7,7 +7,8 @@
 // - the workspace shows the panels of its kinds and no other; STOP ALL stays visible;
 // - the event log and the dispatch table show a useful number of rows where they are in front, the event
 //   log's message column keeps its share of the width;
-// - the UGV workspace's drive controls need no scrolling, with a row to spare;
+// - the UGV workspace's drive controls need no scrolling, with a row to spare, and its map is over 200 px
+//   high;
 // - a site without a protocol has none of its panels, in no workspace (the paving demo: no JAUS, no ISO
 // 23725;
 //   the built-in site without OSYRIS: no pass counts, no crew messages).
@@ -235,6 +236,9 @@ QStringList teleopRoom(MainWindow& w) {
 }
 #endif
 
+// The UGV workspace's map beside the video: at least this high (and twice as wide).
+constexpr int kUgvMapMinHeight = 200;
+
 // The checks of one workspace, in the window as it is now.
 QStringList checkWorkspace(MainWindow& window, QSize size) {
     QStringList problems;
@@ -273,6 +277,16 @@ QStringList checkWorkspace(MainWindow& window, QSize size) {
     }
 
 #ifdef OCU_TEST_WITH_JAUS
+    // Beside the video, the UGV operator's map is big enough to follow the vehicle's mission on.
+    if (window.workspace() == Workspace::Ugv) {
+        QWidget* map = window.panelWidget(Panel::SiteMap);
+        qInfo("  ugv: map %dx%d", map ? map->width() : -1, map ? map->height() : -1);
+        if (!map || !map->isVisible() || map->height() < kUgvMapMinHeight ||
+            map->width() < 2 * kUgvMapMinHeight)
+            problems << QStringLiteral("ugv: map only %1x%2")
+                            .arg(map ? map->width() : -1)
+                            .arg(map ? map->height() : -1);
+    }
     // The drive controls in front of the UGV workspace need no scrolling, with one row to spare (a bar of
     // toggles beside the stop): the stop, the stick and the settings are in sight together.
     if (window.workspace() == Workspace::Ugv)
