@@ -173,11 +173,14 @@ void FleetListWidget::fitColumnsWithinWidth() {
             setColumnDroppable(m_view, c, priority);
         ++priority;
     }
-    // Then the names and texts elide; the link, stop and health keep their width longest.
-    for (int c : {M::ColLink, M::ColStop, M::ColHealth})
+    // Then the health text and the name elide, the name never below a few letters; the link and stop keep
+    // their width longest.
+    setColumnShrinkTier(m_view, M::ColName, 0,
+                        m_view->fontMetrics().horizontalAdvance(QStringLiteral("MMMMMM")));
+    for (int c : {M::ColLink, M::ColStop})
         setColumnShrinkTier(m_view, c, 1);
     startColumnsAtHeaderWidth(m_view);
-    keepColumnsWithinWidth(m_view, kLastMessagePercent);
+    keepColumnsWithinWidth(m_view);
     keepColumnsFitted(m_view);
     addColumnMenu(m_view);
     showElidedTextInTooltips(m_view);

@@ -23,8 +23,6 @@ class FleetListWidget : public QWidget {
     Q_OBJECT
 public:
     enum class Density { Dense, Large };
-    // The last message's share of a narrow list's width (the other columns elide or go out of sight first).
-    static constexpr int kLastMessagePercent = 25;
 
     FleetListWidget(FleetModel* fleet, FleetSelection* selection, QWidget* parent = nullptr);
 
