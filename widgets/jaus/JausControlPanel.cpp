@@ -6,6 +6,7 @@
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
 #include "widgets/ColumnFit.h"
+#include "widgets/CommandPermissionHint.h"
 #include "widgets/FleetListWidget.h"
 #include "widgets/jaus/HandoffBanner.h"
 #include "widgets/jaus/PlatformServicesWidget.h"
@@ -45,7 +46,6 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_roleLabel->setWordWrap(true); // a narrow dock wraps it rather than cutting off "Release all"
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
-    m_releaseAll->setEnabled(me.mayControl);
     connect(m_releaseAll, &QPushButton::clicked, this, [this] { send(ReleaseAll{}); });
     top->addWidget(m_releaseAll);
     m_handoff = new HandoffBanner(bridge, gate, selection, this);
@@ -109,6 +109,8 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     connect(m_model, &QAbstractItemModel::rowsInserted, this,
             [this](const QModelIndex&, int first, int last) { installRowButtons(first, last); });
     connect(m_model, &QAbstractItemModel::dataChanged, this, &JausControlPanel::refreshButtons);
+    if (gate)
+        connect(gate, &CommandGate::permissionsChanged, this, &JausControlPanel::refreshButtons);
     installRowButtons(0, m_model->rowCount() - 1);
 
     connect(m_table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
@@ -261,6 +263,8 @@ void JausControlPanel::installRowButtons(int first, int last) {
 
 void JausControlPanel::refreshButtons() {
     const bool may = m_bridge->mayCommand();
+    // The operator's role too (the gate's table): greyed with the role needed in the tooltip.
+    m_releaseAll->setEnabled(permittedShowingWhy(m_releaseAll, m_gate, QStringLiteral("release_all")) && may);
     for (int row = 0; row < m_model->rowCount(); ++row) {
         const JausVehicle* s = m_model->vehicleAt(row);
         QWidget* cell = m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions));
@@ -270,9 +274,11 @@ void JausControlPanel::refreshButtons() {
         // known.
         const bool up = s->link != JausLink::Down && s->mobilityComponent.subsystem != 0;
         if (auto* b = findButton(cell, "control"))
-            b->setEnabled(may && up && !s->controlledByUs);
+            b->setEnabled(permittedShowingWhy(b, m_gate, QStringLiteral("request_control")) && may && up &&
+                          !s->controlledByUs);
         if (auto* b = findButton(cell, "release"))
-            b->setEnabled(may && s->controlledByUs);
+            b->setEnabled(permittedShowingWhy(b, m_gate, QStringLiteral("release_control")) && may &&
+                          s->controlledByUs);
     }
 }
 
