@@ -23,16 +23,17 @@ WorkspacePlan workspacePlan(Workspace workspace) {
                 {K::PassCounts, K::CompactionAreas, K::CrewMessages}};
     case Workspace::Ugv:
         // The video is the main area, the drive controls in front below the map (both in sight: driving
-        // needs them; on a 768-px screen the controls take most of the column's height, with a row to
-        // spare). The event log's controls need more than the side column (the alarm count stays in the
-        // status bar).
+        // needs them; on a 768-px screen the controls take most of the column's height). Below 1600 px the
+        // video gives the side column nearly half the width (it keeps 45 % of the window; its picture is
+        // letterboxed anyway), so that the map above the controls is wide and over 200 px high. The event
+        // log's controls need more than the side column (the alarm count stays in the status bar).
         return {{K::Video},
                 {K::Map},
                 {K::Teleop, K::VehicleControl, K::Missions},
                 {K::Video, K::Teleop, K::VehicleControl, K::Missions},
-                62,
+                54,
                 68,
-                30,
+                35,
                 48};
     case Workspace::Monitor:
         return {{K::Map}, {K::Fleet}, {K::Alarms, K::ControlRoom}, {}};

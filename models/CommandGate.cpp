@@ -298,6 +298,20 @@ QString CommandGate::requestClearToken(const QString& id) {
     return token;
 }
 
+void CommandGate::setOperator(const OperatorIdentity& identity) {
+    if (identity == m_operator)
+        return;
+    m_operator = identity;
+    emit permissionsChanged();
+}
+
+void CommandGate::setLocked(bool locked) {
+    if (locked == m_locked)
+        return;
+    m_locked = locked;
+    emit permissionsChanged();
+}
+
 bool CommandGate::mayIssue(const QString& command, QString* why) const {
     if (m_permissions.isStop(command))
         return true; // never refused: locked or not, whatever the role

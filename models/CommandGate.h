@@ -102,9 +102,9 @@ public:
 
     // Who is at the console (default: an unnamed admin, the console without roles) and whether it is locked
     // (only stops pass). The table the modules add their rows to.
-    void setOperator(const OperatorIdentity& identity) { m_operator = identity; }
+    void setOperator(const OperatorIdentity& identity);
     const OperatorIdentity& operatorIdentity() const { return m_operator; }
-    void setLocked(bool locked) { m_locked = locked; }
+    void setLocked(bool locked);
     bool isLocked() const { return m_locked; }
     // Who signed in or out, and when the console was locked or unlocked: an audit record like a command's
     // (action "sign_in", "sign_out", "lock", "unlock"), with no machine target. A refusal (wrong password) is
@@ -140,6 +140,9 @@ signals:
                           qint64 latencyMs);
     void commandUnconfirmed(const QString& action, const QString& target, const QString& text);
     void audited(const QString& jsonLine);
+    // What the operator may issue changed (another operator or role, locked or unlocked): panels enable and
+    // disable their controls again.
+    void permissionsChanged();
 
 private:
     struct Pending;

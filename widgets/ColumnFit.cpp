@@ -1,15 +1,21 @@
 #include "widgets/ColumnFit.h"
 
 #include <QAbstractItemModel>
+#include <QAction>
 #include <QEvent>
 #include <QHeaderView>
+#include <QHelpEvent>
 #include <QMap>
+#include <QMenu>
 #include <QScrollBar>
 #include <QStyle>
 #include <QStyleOptionHeader>
 #include <QTableView>
 #include <QTimer>
+#include <QToolTip>
 #include <QVariantMap>
+
+#include <algorithm>
 
 namespace ocu {
 
@@ -34,6 +40,9 @@ static const char* const kCapsProperty = "ocuColumnFitCaps";
 static const char* const kWithinProperty = "ocuColumnFitWithin";       // stretchPercent; absent: not kept
 static const char* const kPreferredProperty = "ocuColumnFitPreferred"; // column -> width before shrinking
 static const char* const kTiersProperty = "ocuColumnFitTiers";         // column -> [tier, floor]
+static const char* const kDroppableProperty = "ocuColumnFitDroppable"; // column -> priority
+static const char* const kChosenProperty = "ocuColumnFitChosen";       // column -> shown (the header menu)
+static const char* const kApplyingProperty = "ocuColumnFitApplying";   // hiding a column resizes the view
 
 static bool isFitted(const QHeaderView* header, int c, int columns) {
     return !header->isSectionHidden(c) && header->sectionResizeMode(c) != QHeaderView::Stretch &&
@@ -68,6 +77,7 @@ int fitColumnsToContent(QTableView* view) {
     QHeaderView* header = view->horizontalHeader();
     const int columns = view->model()->columnCount();
     const QVariantMap caps = view->property(kCapsProperty).toMap();
+    const QVariantMap tiers = view->property(kTiersProperty).toMap();
     int widened = 0;
     for (int c = 0; c < columns; ++c) {
         if (!isFitted(header, c, columns))
@@ -79,6 +89,7 @@ int fitColumnsToContent(QTableView* view) {
         const int cap = caps.value(QString::number(c), -1).toInt();
         if (cap > 0)
             want = qMax(title, qMin(want, cap));
+        want = qMax(want, tiers.value(QString::number(c)).toList().value(1).toInt()); // never below its floor
         if (keptWithinWidth(view)) { // the width it would like; applyWithinWidth shares the view's out
             QVariantMap preferred = view->property(kPreferredProperty).toMap();
             if (want > preferred.value(QString::number(c), header->sectionSize(c)).toInt()) {
@@ -168,6 +179,49 @@ void shareOut(QList<Fitted*>& group, int budget, QMap<int, int>& width) {
 
 } // namespace
 
+// Hides the droppable columns the width has no room for (the lowest priority first) and shows again those it
+// has room for: room is every column at its wanted width and the stretched column at its share.
+static void dropForWidth(QTableView* view, int available) {
+    const QVariantMap droppable = view->property(kDroppableProperty).toMap();
+    if (droppable.isEmpty())
+        return;
+    QHeaderView* header = view->horizontalHeader();
+    const int columns = view->model()->columnCount();
+    const QVariantMap chosen = view->property(kChosenProperty).toMap();
+    const QVariantMap preferred = view->property(kPreferredProperty).toMap();
+    QList<int> candidates; // droppable and not chosen in the menu, the first to go first
+    int want = 0, stretched = 0;
+    for (int c = 0; c < columns; ++c) {
+        const QString key = QString::number(c);
+        const bool isDroppable = droppable.contains(key) && !chosen.contains(key);
+        if (!isDroppable && header->isSectionHidden(c))
+            continue;
+        if (isDroppable)
+            candidates << c;
+        if (header->sectionResizeMode(c) == QHeaderView::Stretch ||
+            (header->stretchLastSection() && c == columns - 1))
+            stretched += header->stretchLastSection() && c == columns - 1 ? header->defaultSectionSize()
+                                                                          : header->minimumSectionSize();
+        else
+            want += preferred.value(key, header->sectionSize(c)).toInt();
+    }
+    std::stable_sort(candidates.begin(), candidates.end(), [&droppable](int a, int b) {
+        return droppable.value(QString::number(a)).toInt() < droppable.value(QString::number(b)).toInt();
+    });
+    const int stretchPercent = view->property(kWithinProperty).toInt();
+    const int budget = available - (stretched > 0 ? qMax(stretched, available * stretchPercent / 100) : 0);
+    QList<int> dropped;
+    for (int c : std::as_const(candidates)) {
+        if (want <= budget)
+            break;
+        want -= preferred.value(QString::number(c), header->sectionSize(c)).toInt();
+        dropped << c;
+    }
+    for (int c : std::as_const(candidates))
+        if (header->isSectionHidden(c) != dropped.contains(c))
+            header->setSectionHidden(c, dropped.contains(c));
+}
+
 static void applyWithinWidth(QTableView* view) {
     QHeaderView* header = view->horizontalHeader();
     const int columns = view->model() ? view->model()->columnCount() : 0;
@@ -176,8 +230,11 @@ static void applyWithinWidth(QTableView* view) {
     int available = view->viewport()->width();
     if (!view->verticalScrollBar()->isVisible())
         available -= view->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, view);
-    if (columns == 0 || available <= 0)
+    if (columns == 0 || available <= 0 || view->property(kApplyingProperty).toBool())
         return;
+    view->setProperty(kApplyingProperty, true);
+    dropForWidth(view, available);
+    view->setProperty(kApplyingProperty, false);
     const QVariantMap preferred = view->property(kPreferredProperty).toMap();
     const QVariantMap tiers = view->property(kTiersProperty).toMap(); // column -> [tier, floor]
     const int floorPx = qMax(header->minimumSectionSize(),
@@ -255,6 +312,91 @@ void setColumnShrinkTier(QTableView* view, int column, int tier, int minPx) {
     QVariantMap tiers = view->property(kTiersProperty).toMap();
     tiers.insert(QString::number(column), QVariantList{tier, minPx});
     view->setProperty(kTiersProperty, tiers);
+}
+
+void setColumnDroppable(QTableView* view, int column, int priority) {
+    QVariantMap droppable = view->property(kDroppableProperty).toMap();
+    droppable.insert(QString::number(column), priority);
+    view->setProperty(kDroppableProperty, droppable);
+}
+
+void addColumnMenu(QTableView* view) {
+    QHeaderView* header = view->horizontalHeader();
+    header->setContextMenuPolicy(Qt::CustomContextMenu);
+    QObject::connect(header, &QHeaderView::customContextMenuRequested, view, [view](const QPoint& pos) {
+        QHeaderView* h = view->horizontalHeader();
+        QAbstractItemModel* model = view->model();
+        if (model == nullptr)
+            return;
+        QMenu menu(view);
+        int shown = 0;
+        for (int c = 0; c < model->columnCount(); ++c)
+            shown += h->isSectionHidden(c) ? 0 : 1;
+        for (int c = 0; c < model->columnCount(); ++c) {
+            const QString title = model->headerData(c, Qt::Horizontal, Qt::DisplayRole).toString();
+            QAction* a = menu.addAction(title.isEmpty() ? QString::number(c + 1) : title);
+            a->setCheckable(true);
+            a->setChecked(!h->isSectionHidden(c));
+            a->setEnabled(h->isSectionHidden(c) || shown > 1); // the last column shown stays
+            QObject::connect(a, &QAction::toggled, view, [view, c](bool on) {
+                QVariantMap chosen = view->property(kChosenProperty).toMap();
+                chosen.insert(QString::number(c), on);
+                view->setProperty(kChosenProperty, chosen);
+                view->horizontalHeader()->setSectionHidden(c, !on);
+                if (on)
+                    fitColumnsToContent(view);
+                if (keptWithinWidth(view))
+                    applyWithinWidth(view);
+            });
+        }
+        menu.exec(h->viewport()->mapToGlobal(pos));
+    });
+}
+
+namespace {
+
+// Shows the whole text of an elided cell as its tooltip, the model's own tooltip below it.
+class ElidedTooltips : public QObject {
+public:
+    explicit ElidedTooltips(QTableView* view) : QObject(view), m_view(view) {
+        view->viewport()->installEventFilter(this);
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (watched != m_view->viewport() || event->type() != QEvent::ToolTip)
+            return QObject::eventFilter(watched, event);
+        auto* help = static_cast<QHelpEvent*>(event);
+        const QModelIndex index = m_view->indexAt(help->pos());
+        const QString text = index.data(Qt::DisplayRole).toString();
+        const QRect rect = m_view->visualRect(index);
+        if (!index.isValid() || text.isEmpty() || m_view->indexWidget(index) != nullptr)
+            return QObject::eventFilter(watched, event);
+        // The room the delegate gives the text: the cell less its margins and a decoration.
+        const int margin = m_view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, m_view) + 1;
+        int room = rect.width() - 2 * margin;
+        if (index.data(Qt::DecorationRole).isValid())
+            room -= m_view->iconSize().isValid()
+                        ? m_view->iconSize().width() + margin
+                        : m_view->style()->pixelMetric(QStyle::PM_SmallIconSize) + margin;
+        if (m_view->fontMetrics().horizontalAdvance(text) <= room)
+            return QObject::eventFilter(watched, event);
+        QString tip = text;
+        const QString own = index.data(Qt::ToolTipRole).toString();
+        if (!own.isEmpty() && own != text)
+            tip += QLatin1Char('\n') + own;
+        QToolTip::showText(help->globalPos(), tip, m_view->viewport(), rect);
+        return true;
+    }
+
+private:
+    QTableView* m_view;
+};
+
+} // namespace
+
+void showElidedTextInTooltips(QTableView* view) {
+    new ElidedTooltips(view);
 }
 
 void keepColumnsFitted(QTableView* view) {

@@ -39,4 +39,17 @@ void keepColumnsWithinWidth(QTableView* view, int stretchPercent = 0);
 // whole, a time of day).
 void setColumnShrinkTier(QTableView* view, int column, int tier, int minPx = 0);
 
+// A column of low value (coordinates, a second name) that goes out of sight where the view is too narrow for
+// every column at its wanted width: the lowest priority first, before any column is elided; it comes back
+// when the view is wide enough again. The header's column menu (addColumnMenu) shows it for good, or hides
+// any column. Before keepColumnsWithinWidth.
+void setColumnDroppable(QTableView* view, int column, int priority);
+
+// A context menu on the header: a check box per column, to show or hide it (a column shown there is never
+// dropped for width, one hidden there stays hidden).
+void addColumnMenu(QTableView* view);
+
+// A cell whose text is elided shows its whole text as its tooltip (before the model's own tooltip).
+void showElidedTextInTooltips(QTableView* view);
+
 } // namespace ocu

@@ -124,6 +124,7 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     setMinimumWidth(std::max(m_filter->minimumWidth(), combos->minimumSize().width()));
 
     m_view->setModel(m_proxy);
+    useElidingHeader(m_view);
     m_view->setItemDelegate(new FleetDelegate(m_view));
     m_view->setSortingEnabled(true);
     m_view->sortByColumn(FleetModel::ColName, Qt::AscendingOrder);
@@ -136,7 +137,7 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_view->setTabKeyNavigation(false); // arrows move in the table, Tab leaves it (docs/keyboard.md)
     setDensity(Density::Dense);
-    keepColumnsFitted(m_view); // headers and cells in view never elided
+    fitColumnsWithinWidth();
 
     connect(m_filter, &QLineEdit::textChanged, this, &FleetListWidget::applyFilters);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, &FleetListWidget::applyFilters);
@@ -157,6 +158,32 @@ FleetListWidget::FleetListWidget(FleetModel* fleet, FleetSelection* selection, Q
     connect(m_view, &QTableView::doubleClicked, this, [this](const QModelIndex& idx) {
         emit centerOnMapRequested(idx.data(FleetModel::IdRole).toString());
     });
+}
+
+void FleetListWidget::fitColumnsWithinWidth() {
+    // A narrow dock (a laptop's side column) loses the coordinates first, then the columns a machine's row
+    // can do without; the name, link, stop, health and last message stay (the header's menu brings any back).
+    using M = FleetModel;
+    int priority = 0;
+    for (const QList<int>& group :
+         {QList<int>{M::ColLatitude, M::ColLongitude}, QList<int>{M::ColEast, M::ColNorth},
+          QList<int>{M::ColHeading}, QList<int>{M::ColController}, QList<int>{M::ColProtocol},
+          QList<int>{M::ColType}, QList<int>{M::ColSpeed}, QList<int>{M::ColMode}}) {
+        for (int c : group)
+            setColumnDroppable(m_view, c, priority);
+        ++priority;
+    }
+    // Then the health text and the name elide, the name never below a few letters; the link and stop keep
+    // their width longest.
+    setColumnShrinkTier(m_view, M::ColName, 0,
+                        m_view->fontMetrics().horizontalAdvance(QStringLiteral("MMMMMM")));
+    for (int c : {M::ColLink, M::ColStop})
+        setColumnShrinkTier(m_view, c, 1);
+    startColumnsAtHeaderWidth(m_view);
+    keepColumnsWithinWidth(m_view);
+    keepColumnsFitted(m_view);
+    addColumnMenu(m_view);
+    showElidedTextInTooltips(m_view);
 }
 
 void FleetListWidget::setCommandGate(CommandGate* stop) {

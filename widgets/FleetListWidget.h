@@ -48,6 +48,7 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    void fitColumnsWithinWidth();
     void syncFromShared();
     void syncToShared();
     void applyFilters();

@@ -70,18 +70,28 @@ QStringList CommandPermissions::commands() const {
     return out;
 }
 
+QString CommandPermissions::roleList(const QString& command) const {
+    QStringList names;
+    for (OperatorRole r : m_rows.value(command))
+        names << roleDisplayName(r);
+    const QString last = names.takeLast();
+    return names.isEmpty() ? last : tr("%1 or %2").arg(names.join(QStringLiteral(", ")), last);
+}
+
 QString CommandPermissions::refusalText(const QString& command, OperatorRole role) const {
     if (permits(command, role))
         return {};
-    const QVector<OperatorRole> roles = m_rows.value(command);
-    if (roles.isEmpty())
+    if (m_rows.value(command).isEmpty())
         return tr("%1 is not permitted to any role at this console").arg(command);
-    QStringList names;
-    for (OperatorRole r : roles)
-        names << roleDisplayName(r);
-    const QString last = names.takeLast();
-    const QString list = names.isEmpty() ? last : tr("%1 or %2").arg(names.join(QStringLiteral(", ")), last);
-    return tr("%1 needs the %2 role (you are %3)").arg(command, list, roleDisplayName(role));
+    return tr("%1 needs the %2 role (you are %3)").arg(command, roleList(command), roleDisplayName(role));
+}
+
+QString CommandPermissions::roleNeededText(const QString& command, OperatorRole role) const {
+    if (permits(command, role))
+        return {};
+    if (m_rows.value(command).isEmpty())
+        return tr("Not permitted to any role at this console");
+    return tr("Needs the %1 role (you are %2)").arg(roleList(command), roleDisplayName(role));
 }
 
 } // namespace ocu

@@ -54,8 +54,12 @@ public:
     QStringList commands() const;
     // Why `role` may not issue `command`: "needs the supervisor or admin role" (empty when it may).
     QString refusalText(const QString& command, OperatorRole role) const;
+    // The same for people, without the command's name: "Needs the supervisor or admin role (you are
+    // Monitor)" (a disabled button's tooltip).
+    QString roleNeededText(const QString& command, OperatorRole role) const;
 
 private:
+    QString roleList(const QString& command) const; // "UGV operator, supervisor or admin"
     QHash<QString, QVector<OperatorRole>> m_rows;
     QSet<QString> m_stops;
 };

@@ -2,13 +2,14 @@
 // its default arrangement, at 1366x768 and 1920x1080, in English and German, with the control-room panel (a
 // control-room history configured) in the workspaces that show it. Checked from the real widgets:
 // - the map (the video in the UGV workspace) gets at least 45 % of a 1366x768 window and 55 % of 1920x1080;
-// - no panel of controls needs to scroll sideways (its controls' row is cut at the dock's edge otherwise), on
-//   every tab of every dock of the workspace (each tab raised in turn), nor do the dispatch tables and the
-//   event log (their texts elide), and no button is narrower than its text;
+// - nothing in a dock scrolls sideways (a panel of controls would have its row cut at the dock's edge; the
+//   tables and lists elide their long texts instead), on every tab of every dock of the workspace (each tab
+//   raised in turn), and no button is narrower than its text;
 // - the workspace shows the panels of its kinds and no other; STOP ALL stays visible;
 // - the event log and the dispatch table show a useful number of rows where they are in front, the event
 //   log's message column keeps its share of the width;
-// - the UGV workspace's drive controls need no scrolling, with a row to spare;
+// - the UGV workspace's drive controls need no scrolling, with a row to spare, and its map is over 200 px
+//   high;
 // - a site without a protocol has none of its panels, in no workspace (the paving demo: no JAUS, no ISO
 // 23725;
 //   the built-in site without OSYRIS: no pass counts, no crew messages).
@@ -27,6 +28,7 @@
 #endif
 
 #include <QAbstractButton>
+#include <QAbstractScrollArea>
 #include <QAction>
 #include <QDockWidget>
 #include <QHeaderView>
@@ -65,7 +67,7 @@ QString layoutFingerprint(MainWindow& w) {
         if (!d->isVisible() || d->visibleRegion().isEmpty())
             continue;
         parts << QStringLiteral("%1 %2x%3").arg(d->objectName()).arg(d->width()).arg(d->height());
-        for (QScrollArea* s : d->findChildren<QScrollArea*>())
+        for (QAbstractScrollArea* s : d->findChildren<QAbstractScrollArea*>())
             if (s->isVisible())
                 parts << QString::number(s->horizontalScrollBar()->maximum());
         for (QAbstractButton* b : d->findChildren<QAbstractButton*>())
@@ -151,33 +153,24 @@ int visibleRows(QTableView* t) {
     return row > 0 ? t->viewport()->height() / row : 0;
 }
 
-// The tables checked for sideways scrolling: those of the dispatcher's panels, the event log and the control
-// room (their long texts elide).
-bool sidewaysChecked(QDockWidget* d) {
-    return d->objectName() == QLatin1String("dock-dispatch") ||
-           d->objectName() == QLatin1String("dock-events") || d->objectName() == QLatin1String("dock-room");
-}
-
-// Problems of the docks now on screen: a panel scroll area or a table that needs to scroll sideways, a
-// button narrower than its text.
+// Problems of the docks now on screen: a scroll area (a panel, a table, a list, a text) that needs to scroll
+// sideways, a table whose columns are wider than it, a button narrower than its text.
 QStringList cutOff(MainWindow& w) {
     QStringList out;
     for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
         if (!d->isVisible() || d->visibleRegion().isEmpty())
             continue;
-        for (QScrollArea* s : d->findChildren<QScrollArea*>()) {
-            if (s->objectName() != QLatin1String("panel-scroll") && s->parentWidget() != d)
+        for (QAbstractScrollArea* s : d->findChildren<QAbstractScrollArea*>()) {
+            if (!s->isVisible() || s->visibleRegion().isEmpty())
                 continue;
-            if (s->isVisible() && s->horizontalScrollBar()->maximum() > 0)
-                out << QStringLiteral("%1 scrolls sideways by %2 px (dock %3 px wide)")
-                           .arg(d->windowTitle())
+            if (s->horizontalScrollBar()->maximum() > 0)
+                out << QStringLiteral("%1: %2 %3 scrolls sideways by %4 px (dock %5 px wide)")
+                           .arg(d->windowTitle(), QString::fromLatin1(s->metaObject()->className()),
+                                s->objectName())
                            .arg(s->horizontalScrollBar()->maximum())
                            .arg(d->width());
-        }
-        for (QTableView* t : d->findChildren<QTableView*>()) {
-            if (!t->isVisible() || t->visibleRegion().isEmpty() || !sidewaysChecked(d))
-                continue;
-            if (t->horizontalHeader()->length() > t->viewport()->width())
+            auto* t = qobject_cast<QTableView*>(s);
+            if (t && t->horizontalHeader()->length() > t->viewport()->width())
                 out << QStringLiteral("%1: table %2 scrolls sideways (columns %3 px, view %4 px)")
                            .arg(d->windowTitle(), t->objectName())
                            .arg(t->horizontalHeader()->length())
@@ -251,6 +244,9 @@ QStringList teleopRoom(MainWindow& w) {
 }
 #endif
 
+// The UGV workspace's map beside the video: at least this high (and twice as wide).
+constexpr int kUgvMapMinHeight = 200;
+
 // The checks of one workspace, in the window as it is now.
 QStringList checkWorkspace(MainWindow& window, QSize size) {
     QStringList problems;
@@ -289,6 +285,16 @@ QStringList checkWorkspace(MainWindow& window, QSize size) {
     }
 
 #ifdef OCU_TEST_WITH_JAUS
+    // Beside the video, the UGV operator's map is big enough to follow the vehicle's mission on.
+    if (window.workspace() == Workspace::Ugv) {
+        QWidget* map = window.panelWidget(Panel::SiteMap);
+        qInfo("  ugv: map %dx%d", map ? map->width() : -1, map ? map->height() : -1);
+        if (!map || !map->isVisible() || map->height() < kUgvMapMinHeight ||
+            map->width() < 2 * kUgvMapMinHeight)
+            problems << QStringLiteral("ugv: map only %1x%2")
+                            .arg(map ? map->width() : -1)
+                            .arg(map ? map->height() : -1);
+    }
     // The drive controls in front of the UGV workspace need no scrolling, with one row to spare (a bar of
     // toggles beside the stop): the stop, the stick and the settings are in sight together.
     if (window.workspace() == Workspace::Ugv)

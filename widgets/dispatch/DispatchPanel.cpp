@@ -4,6 +4,7 @@
 #include "models/CommandGate.h"
 #include "models/FleetSelection.h"
 #include "widgets/ColumnFit.h"
+#include "widgets/CommandPermissionHint.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/dispatch/CachedTextDelegate.h"
 #include "widgets/dispatch/RouteOverlay2D.h"
@@ -285,6 +286,8 @@ void DispatchPanel::connectControls(DispatchSource* source, FleetSelection* sele
             m_pick->setChecked(false);
     });
 
+    if (m_gate)
+        connect(m_gate, &CommandGate::permissionsChanged, this, &DispatchPanel::updateControls);
     connect(m_assign, &QPushButton::clicked, this, &DispatchPanel::assignCurrent);
     connect(m_reset, &QPushButton::clicked, this, &DispatchPanel::resetCurrent);
     connect(m_pick, &QPushButton::toggled, this, &DispatchPanel::pickOnMap);
@@ -474,6 +477,8 @@ void DispatchPanel::updateControls() {
     if (row < 0) {
         m_assign->setEnabled(false);
         m_reset->setEnabled(false);
+        permittedShowingWhy(m_assign, m_gate, QStringLiteral("assign"));
+        permittedShowingWhy(m_reset, m_gate, QStringLiteral("reset_assignment"));
         m_pick->setEnabled(false);
         setLine(m_refusal,
                 m_model->rowCount() == 0 ? tr("No haul truck reports dispatch data yet.") : QString());
@@ -486,8 +491,11 @@ void DispatchPanel::updateControls() {
     m_assign->setToolTip(why.isEmpty() ? tr("Send %1 to %2 as %3 (Ctrl+Enter)")
                                              .arg(t.name, m_destination->currentText(), m_task->currentText())
                                        : why);
-    m_assign->setEnabled(why.isEmpty() && m_destination->currentIndex() >= 0 && m_gate);
-    m_reset->setEnabled(why.isEmpty() && hasTask(t) && m_gate);
+    // The operator's role too (the gate's table): greyed with the role needed in the tooltip.
+    m_assign->setEnabled(permittedShowingWhy(m_assign, m_gate, QStringLiteral("assign")) && why.isEmpty() &&
+                         m_destination->currentIndex() >= 0 && m_gate);
+    m_reset->setEnabled(permittedShowingWhy(m_reset, m_gate, QStringLiteral("reset_assignment")) &&
+                        why.isEmpty() && hasTask(t) && m_gate);
     m_pick->setEnabled(m_map != nullptr);
 }
 

@@ -5,6 +5,8 @@
 #include "models/FleetModel.h"
 #include "models/FleetSelection.h"
 #include "models/jaus/JausSubsystemModel.h"
+#include "widgets/ColumnFit.h"
+#include "widgets/CommandPermissionHint.h"
 #include "widgets/FleetListWidget.h"
 #include "widgets/jaus/HandoffBanner.h"
 #include "widgets/jaus/PlatformServicesWidget.h"
@@ -44,7 +46,6 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_roleLabel->setWordWrap(true); // a narrow dock wraps it rather than cutting off "Release all"
     top->addWidget(m_roleLabel, 1);
     m_releaseAll->setObjectName(QStringLiteral("button-release-all"));
-    m_releaseAll->setEnabled(me.mayControl);
     connect(m_releaseAll, &QPushButton::clicked, this, [this] { send(ReleaseAll{}); });
     top->addWidget(m_releaseAll);
     m_handoff = new HandoffBanner(bridge, gate, selection, this);
@@ -61,9 +62,8 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->setVisible(false);
-    m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->verticalHeader()->setDefaultSectionSize(30);
+    fitColumnsWithinWidth();
     // Keyboard-only path (docs/keyboard.md): arrows move between vehicles, Tab leaves the table
     // for the row's Monitor / Control / Release buttons (with tab navigation on, Tab cycled the cells).
     m_table->setTabKeyNavigation(false);
@@ -109,6 +109,8 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
     connect(m_model, &QAbstractItemModel::rowsInserted, this,
             [this](const QModelIndex&, int first, int last) { installRowButtons(first, last); });
     connect(m_model, &QAbstractItemModel::dataChanged, this, &JausControlPanel::refreshButtons);
+    if (gate)
+        connect(gate, &CommandGate::permissionsChanged, this, &JausControlPanel::refreshButtons);
     installRowButtons(0, m_model->rowCount() - 1);
 
     connect(m_table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
@@ -127,6 +129,25 @@ JausControlPanel::JausControlPanel(JausVehicleBridge* bridge, CommandGate* gate,
                 selectSubsystem(*sub);
             showMachineDetails(id);
         });
+}
+
+void JausControlPanel::fitColumnsWithinWidth() {
+    // The table fits its dock: the controller takes the width left (elided, its whole text in the tooltip),
+    // the health and management go out of sight in a narrow dock (the header's menu brings them back), the
+    // vehicle's name elides last and the row's buttons never.
+    using S = JausSubsystemModel;
+    useElidingHeader(m_table);
+    QHeaderView* h = m_table->horizontalHeader();
+    h->setSectionResizeMode(QHeaderView::Interactive);
+    h->setSectionResizeMode(S::Controller, QHeaderView::Stretch);
+    setColumnDroppable(m_table, S::Management, 0);
+    setColumnDroppable(m_table, S::Health, 1);
+    setColumnShrinkTier(m_table, S::Vehicle, 1);
+    startColumnsAtHeaderWidth(m_table);
+    keepColumnsWithinWidth(m_table);
+    keepColumnsFitted(m_table);
+    addColumnMenu(m_table);
+    showElidedTextInTooltips(m_table);
 }
 
 void JausControlPanel::showMachineDetails(const QString& id) {
@@ -212,9 +233,14 @@ void JausControlPanel::installRowButtons(int first, int last) {
         connect(release, &QPushButton::clicked, this,
                 [this, sub] { send(ReleaseControl{JausVehicleBridge::machineId(sub)}); });
         m_table->setIndexWidget(m_model->index(row, JausSubsystemModel::Actions), cell);
-        // Index widgets do not take part in ResizeToContents: size the column for the buttons.
-        m_table->horizontalHeader()->setSectionResizeMode(JausSubsystemModel::Actions, QHeaderView::Fixed);
-        m_table->setColumnWidth(JausSubsystemModel::Actions, cell->sizeHint().width() + 4);
+        // The buttons whole, always: their column never gives up width.
+        const int buttons = cell->sizeHint().width() + 4;
+        if (buttons > m_actionsWidth) {
+            m_actionsWidth = buttons;
+            m_table->setColumnWidth(JausSubsystemModel::Actions, buttons);
+            setColumnShrinkTier(m_table, JausSubsystemModel::Actions, 9, buttons);
+            fitColumnsToContent(m_table);
+        }
     }
     // Rows inserted above shift the index widgets: reinstall them for every row.
     if (first < m_model->rowCount() - 1 && last < m_model->rowCount() - 1 && first >= 0) {
@@ -237,6 +263,8 @@ void JausControlPanel::installRowButtons(int first, int last) {
 
 void JausControlPanel::refreshButtons() {
     const bool may = m_bridge->mayCommand();
+    // The operator's role too (the gate's table): greyed with the role needed in the tooltip.
+    m_releaseAll->setEnabled(permittedShowingWhy(m_releaseAll, m_gate, QStringLiteral("release_all")) && may);
     for (int row = 0; row < m_model->rowCount(); ++row) {
         const JausVehicle* s = m_model->vehicleAt(row);
         QWidget* cell = m_table->indexWidget(m_model->index(row, JausSubsystemModel::Actions));
@@ -246,9 +274,11 @@ void JausControlPanel::refreshButtons() {
         // known.
         const bool up = s->link != JausLink::Down && s->mobilityComponent.subsystem != 0;
         if (auto* b = findButton(cell, "control"))
-            b->setEnabled(may && up && !s->controlledByUs);
+            b->setEnabled(permittedShowingWhy(b, m_gate, QStringLiteral("request_control")) && may && up &&
+                          !s->controlledByUs);
         if (auto* b = findButton(cell, "release"))
-            b->setEnabled(may && s->controlledByUs);
+            b->setEnabled(permittedShowingWhy(b, m_gate, QStringLiteral("release_control")) && may &&
+                          s->controlledByUs);
     }
 }
 

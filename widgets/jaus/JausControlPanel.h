@@ -47,6 +47,7 @@ public:
     QString detailsText() const;
 
 private:
+    void fitColumnsWithinWidth();
     void installRowButtons(int first, int last);
     void refreshButtons();
     void selectSubsystem(std::uint16_t subsystem);
@@ -68,6 +69,7 @@ private:
     QLabel* m_generic;
     QTimer* m_detailsRefresh;
     QString m_detailsId;
+    int m_actionsWidth = 0; // the row buttons' width
 };
 
 } // namespace ocu

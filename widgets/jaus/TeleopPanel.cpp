@@ -5,6 +5,7 @@
 #include "models/jaus/JausSubsystemModel.h"
 #include "models/jaus/JausVehicleBridge.h"
 #include "models/video/VideoPlayer.h"
+#include "widgets/CommandPermissionHint.h"
 #include "widgets/HoldToConfirmButton.h"
 #include "widgets/OnScreenWatcher.h"
 #include "widgets/jaus/IlluminationBar.h"
@@ -101,6 +102,8 @@ TeleopPanel::TeleopPanel(JausVehicleBridge* bridge, CommandGate* gate, FleetSele
     });
     m_stick->installEventFilter(this);
     m_takeover = new MissionTakeover(bridge, gate, this);
+    if (gate)
+        connect(gate, &CommandGate::permissionsChanged, this, &TeleopPanel::refresh);
     refresh();
 }
 
@@ -364,6 +367,7 @@ void TeleopPanel::refresh() {
         m_controller->setEnabled(false);
         m_estop->setEnabled(false);
         m_clear->setEnabled(false);
+        permittedShowingWhy(m_clear, m_gate, QStringLiteral("clear_stop"));
         return;
     }
     m_title->setText(tr("%1 [%2]").arg(s->callSign).arg(s->subsystem));
@@ -403,8 +407,10 @@ void TeleopPanel::refresh() {
         endSession(why);
     }
     m_controller->setEnabled(canDrive);
-    m_estop->setEnabled(me.mayStop);                      // any role may stop (the JAUS stop rule)
-    m_clear->setEnabled(me.mayClearStop && s->emergency); // only roles with command rights may clear
+    m_estop->setEnabled(me.mayStop); // any role may stop (the JAUS stop rule)
+    // Only roles with command rights may clear (the JAUS rule and the gate's table, whose role is named).
+    m_clear->setEnabled(permittedShowingWhy(m_clear, m_gate, QStringLiteral("clear_stop")) &&
+                        me.mayClearStop && s->emergency);
     QStringList state;
     if (!may)
         state << tr("MONITOR role: driving disabled");

@@ -1,6 +1,7 @@
 #include "widgets/production/ProductionView.h"
 
 #include "models/ProductionModel.h"
+#include "widgets/ColumnFit.h"
 #include "widgets/production/ProductionCharts.h"
 #include "widgets/production/ShiftReport.h"
 
@@ -87,9 +88,16 @@ ProductionView::ProductionView(ProductionModel* model, QWidget* parent) : QWidge
         t->setEditTriggers(QAbstractItemView::NoEditTriggers);
         t->setSelectionBehavior(QAbstractItemView::SelectRows);
         t->verticalHeader()->setVisible(false);
-        t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-        t->horizontalHeader()->setStretchLastSection(true);
         t->setToolTip(tr("Cycle parts: average minutes:seconds per cycle"));
+        // The table fits its tab: the name takes the width left (elided, whole in its tooltip), the
+        // figures keep theirs, their titles elided first.
+        useElidingHeader(t);
+        t->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+        t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+        startColumnsAtHeaderWidth(t);
+        keepColumnsWithinWidth(t);
+        keepColumnsFitted(t);
+        showElidedTextInTooltips(t);
         m_tables[i] = t;
         m_tabs->addTab(t, names[i]);
     }
