@@ -83,15 +83,22 @@ RouteOverlay2D::~RouteOverlay2D() {
 
 void RouteOverlay2D::setRoute(const QString& link, const QVector<qint64>& ways, const QString& label,
                               bool preview) {
-    if (link == m_link && ways == m_ways && label == m_label && preview == m_preview)
+    const bool lineChanged = link != m_link || ways != m_ways || preview != m_preview;
+    if (!lineChanged && label == m_label)
         return;
-    m_preview = preview;
-    m_link = link;
-    m_ways = ways;
     m_label = label;
-    m_pathValid = false;
-    if (m_view)
-        m_view->update();
+    if (lineChanged) {
+        m_preview = preview;
+        m_link = link;
+        m_ways = ways;
+        m_pathValid = false;
+    }
+    if (!m_view)
+        return;
+    if (lineChanged)
+        m_view->staticOverlayChanged(); // the line is in the view's static layer
+    else
+        m_view->update(); // the label is drawn every frame (ETA)
 }
 
 const QVector<QPointF>& RouteOverlay2D::path() const {
@@ -110,7 +117,9 @@ QString RouteOverlay2D::destinationFeature() const {
                             : m_link + QLatin1Char('/') + QString::number(std::llabs(m_ways.back()));
 }
 
-void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
+void RouteOverlay2D::paintStatic(QPainter& p, const SiteMapView& view) {
+    // The line, the destination and the arrow change only with the route and the view: drawn into the
+    // view's cached static layer, not again in every 10 Hz frame (two wide antialiased strokes).
     const QVector<QPointF>& world = path();
     if (world.isEmpty())
         return;
@@ -152,19 +161,26 @@ void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
              << end - QPointF(std::cos(a + 0.45) * s, std::sin(a + 0.45) * s);
         p.drawPolygon(head);
     }
-    if (!m_label.isEmpty()) {
-        QFont f = p.font();
-        f.setBold(true);
-        p.setFont(f);
-        const QRectF box = QFontMetricsF(f).boundingRect(m_label).adjusted(-4, -2, 4, 2);
-        const QRectF at = box.translated(end + QPointF(10, -10) - box.bottomLeft());
-        p.setPen(Qt::NoPen);
-        p.setBrush(QColor(0x4a, 0x14, 0x8c, 220));
-        p.drawRoundedRect(at, 3, 3);
-        p.setPen(Qt::white);
-        p.drawText(at, Qt::AlignCenter, m_label);
-        view.reserveLabelArea(at); // machine labels keep clear of it
-    }
+    p.restore();
+}
+
+void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
+    const QVector<QPointF>& world = path();
+    if (world.isEmpty() || m_label.isEmpty())
+        return;
+    const QPointF end = view.worldToScreen(world.back());
+    p.save();
+    QFont f = p.font();
+    f.setBold(true);
+    p.setFont(f);
+    const QRectF box = QFontMetricsF(f).boundingRect(m_label).adjusted(-4, -2, 4, 2);
+    const QRectF at = box.translated(end + QPointF(10, -10) - box.bottomLeft());
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0x4a, 0x14, 0x8c, 220));
+    p.drawRoundedRect(at, 3, 3);
+    p.setPen(Qt::white);
+    p.drawText(at, Qt::AlignCenter, m_label);
+    view.reserveLabelArea(at); // machine labels keep clear of it
     p.restore();
 }
 

@@ -35,7 +35,8 @@ public:
     const QVector<QPointF>& path() const;
     QString destinationFeature() const;
 
-    void paintOverlay(QPainter& p, const SiteMapView& view) override;
+    void paintStatic(QPainter& p, const SiteMapView& view) override;  // line, destination, arrow
+    void paintOverlay(QPainter& p, const SiteMapView& view) override; // the label
     // The view is being destroyed (its destroyed signal): forget it without touching it.
     void forgetView() { m_view = nullptr; }
 
