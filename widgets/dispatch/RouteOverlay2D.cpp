@@ -106,6 +106,8 @@ const QVector<QPointF>& RouteOverlay2D::path() const {
     if (!m_pathValid || rev != m_pathRevision) {
         m_path =
             m_view && !m_ways.isEmpty() ? routePath(m_view->siteMap(), m_link, m_ways) : QVector<QPointF>{};
+        const MapFeature* dest = m_view ? featureOf(m_view->siteMap(), destinationFeature()) : nullptr;
+        m_destinationArea = dest && dest->kind == MapFeatureKind::Area ? dest->points : QVector<QPointF>{};
         m_pathRevision = rev;
         m_pathValid = true;
     }
@@ -123,22 +125,25 @@ void RouteOverlay2D::paintStatic(QPainter& p, const SiteMapView& view) {
     const QVector<QPointF>& world = path();
     if (world.isEmpty())
         return;
-    p.save();
-    p.setRenderHint(QPainter::Antialiasing, true);
-    // The destination area, outlined.
-    if (const MapFeature* dest = featureOf(view.siteMap(), destinationFeature());
-        dest && dest->kind == MapFeatureKind::Area) {
-        QPolygonF poly;
-        for (const auto& q : dest->points)
-            poly << view.worldToScreen(q);
-        p.setPen(QPen(QColor(0x6a, 0x1b, 0x9a), 3, Qt::DashLine));
-        p.setBrush(QColor(0x6a, 0x1b, 0x9a, 40));
-        p.drawPolygon(poly);
-    }
     QPolygonF screen;
     screen.reserve(world.size());
     for (const auto& q : world)
         screen << view.worldToScreen(q);
+    QPolygonF area;
+    for (const auto& q : m_destinationArea)
+        area << view.worldToScreen(q);
+    // A part of the layer away from the route (a roller's pass-count patch, a pan's strip): nothing to
+    // draw there (the margin: half the casing, the arrowhead).
+    const QRectF bounds = (screen.boundingRect() | area.boundingRect()).adjusted(-16, -16, 16, 16);
+    if (p.hasClipping() && !p.clipBoundingRect().intersects(bounds))
+        return;
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    if (!area.isEmpty()) { // the destination area, outlined
+        p.setPen(QPen(QColor(0x6a, 0x1b, 0x9a), 3, Qt::DashLine));
+        p.setBrush(QColor(0x6a, 0x1b, 0x9a, 40));
+        p.drawPolygon(area);
+    }
     p.setBrush(Qt::NoBrush);
     p.setPen(QPen(QColor(255, 255, 255, 220), 9, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
     p.drawPolyline(screen);

@@ -47,6 +47,7 @@ private:
     QString m_label;
     bool m_preview = false;
     mutable QVector<QPointF> m_path;
+    mutable QVector<QPointF> m_destinationArea; // outline of the destination when it is an area
     mutable quint64 m_pathRevision = ~quint64(0);
     mutable bool m_pathValid = false;
 };
