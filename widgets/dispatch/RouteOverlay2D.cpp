@@ -134,9 +134,15 @@ void RouteOverlay2D::paintStatic(QPainter& p, const SiteMapView& view) {
         area << view.worldToScreen(q);
     // A part of the layer away from the route (a roller's pass-count patch, a pan's strip): nothing to
     // draw there (the margin: half the casing, the arrowhead).
-    const QRectF bounds = (screen.boundingRect() | area.boundingRect()).adjusted(-16, -16, 16, 16);
-    if (p.hasClipping() && !p.clipBoundingRect().intersects(bounds))
-        return;
+    if (p.hasClipping()) {
+        // Per segment: the route's box covers much of the map, its line little of it.
+        const QRectF clip = p.clipBoundingRect().adjusted(-16, -16, 16, 16);
+        bool near = area.boundingRect().intersects(clip) || clip.contains(screen.front());
+        for (qsizetype i = 1; i < screen.size() && !near; ++i)
+            near = clip.intersects(QRectF(screen[i - 1], screen[i]).normalized().adjusted(-1, -1, 1, 1));
+        if (!near)
+            return;
+    }
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     if (!area.isEmpty()) { // the destination area, outlined
@@ -173,20 +179,34 @@ void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
     const QVector<QPointF>& world = path();
     if (world.isEmpty() || m_label.isEmpty())
         return;
-    const QPointF end = view.worldToScreen(world.back());
-    p.save();
+    // The label as an image, laid out again only when its text changes (ETA), not in every frame.
     QFont f = p.font();
     f.setBold(true);
-    p.setFont(f);
-    const QRectF box = QFontMetricsF(f).boundingRect(m_label).adjusted(-4, -2, 4, 2);
-    const QRectF at = box.translated(end + QPointF(10, -10) - box.bottomLeft());
-    p.setPen(Qt::NoPen);
-    p.setBrush(QColor(0x4a, 0x14, 0x8c, 220));
-    p.drawRoundedRect(at, 3, 3);
-    p.setPen(Qt::white);
-    p.drawText(at, Qt::AlignCenter, m_label);
-    view.reserveLabelArea(at); // machine labels keep clear of it
-    p.restore();
+    const qreal dpr = p.device() ? p.device()->devicePixelRatioF() : 1.0;
+    if (m_labelImage.isNull() || m_labelImageText != m_label || m_labelImageFont != f ||
+        m_labelImage.devicePixelRatio() != dpr) {
+        const QRectF box = QFontMetricsF(f).boundingRect(m_label).adjusted(-4, -2, 4, 2);
+        const QRectF at(QPointF(0, 0), box.size());
+        m_labelImage = QImage((at.size() * dpr).toSize() + QSize(1, 1), QImage::Format_ARGB32_Premultiplied);
+        m_labelImage.setDevicePixelRatio(dpr);
+        m_labelImage.fill(Qt::transparent);
+        QPainter lp(&m_labelImage);
+        lp.setRenderHint(QPainter::Antialiasing, true);
+        lp.setFont(f);
+        lp.setPen(Qt::NoPen);
+        lp.setBrush(QColor(0x4a, 0x14, 0x8c, 220));
+        lp.drawRoundedRect(at, 3, 3);
+        lp.setPen(Qt::white);
+        lp.drawText(at, Qt::AlignCenter, m_label);
+        m_labelImageText = m_label;
+        m_labelImageFont = f;
+        m_labelSize = at.size();
+    }
+    // Above and right of the destination, on whole pixels.
+    const QPointF end = view.worldToScreen(world.back());
+    const QPointF topLeft(std::round(end.x() + 10), std::round(end.y() - 10 - m_labelSize.height()));
+    p.drawImage(topLeft, m_labelImage);
+    view.reserveLabelArea(QRectF(topLeft, m_labelSize)); // machine labels keep clear of it
 }
 
 } // namespace ocu
