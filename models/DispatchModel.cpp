@@ -405,22 +405,30 @@ bool DispatchQueueModel::isQueueArea(const DispatchArea& a) {
 
 void DispatchQueueModel::rebuild() {
     QVector<Queue> next;
-    QHash<QPair<QString, qint64>, int> at;
+    // By way id, the link compared only on a hit: 1,000 trucks per update, and hashing the link's string
+    // for each of them showed on the GUI thread.
+    QMultiHash<qint64, int> byWay;
     if (DispatchSource* src = m_trucks->source())
         for (const DispatchArea& a : src->areas())
             if (isQueueArea(a)) {
-                at.insert({a.link, a.wayId}, int(next.size()));
+                byWay.insert(a.wayId, int(next.size()));
                 next.push_back(Queue{a, {}, {}});
             }
+    const auto queueAt = [&](const QString& link, qint64 way) {
+        for (auto it = byWay.constFind(way); it != byWay.constEnd() && it.key() == way; ++it)
+            if (next[*it].area.link == link)
+                return *it;
+        return -1;
+    };
     for (int row = 0; row < m_trucks->rowCount(); ++row) {
         const DispatchTruck& t = m_trucks->truckAt(row);
         if (t.wayId)
-            if (const int i = at.value({t.link, *t.wayId}, -1); i >= 0) {
+            if (const int i = queueAt(t.link, *t.wayId); i >= 0) {
                 next[i].atArea << t.name;
                 continue;
             }
         if (const auto dest = t.activeDestination())
-            if (const int i = at.value({t.link, *dest}, -1); i >= 0)
+            if (const int i = queueAt(t.link, *dest); i >= 0)
                 next[i].enRoute << t.name;
     }
     const bool sameAreas =

@@ -19,6 +19,7 @@ SiteMapView::SiteMapView(QWidget* parent) : QWidget(parent) {
     setAttribute(Qt::WA_OpaquePaintEvent);
     setMinimumSize(200, 150);
     m_viewSize = size();
+    m_trails.setCapacity(120);
     m_dataRepaint.setSingleShot(true);
     connect(&m_dataRepaint, &QTimer::timeout, this, [this] { update(); });
 }
@@ -129,7 +130,7 @@ void SiteMapView::onMachinesChanged(const QStringList& ids) {
                                -world.height() * 0.03);
     }
     bool refit = false;
-    if (m_fleet && (m_trailMax > 0 || fit)) {
+    if (m_fleet && (m_trails.capacity() > 0 || fit)) {
         for (const QString& id : ids) {
             const int row = m_fleet->rowOf(id);
             if (row < 0)
@@ -137,16 +138,8 @@ void SiteMapView::onMachinesChanged(const QStringList& ids) {
             const MachineState& m = m_fleet->machineAt(row);
             if (!m.hasPosition)
                 continue;
-            if (m_trailMax > 0) {
-                auto& trail = m_trails[id];
-                const QPointF p(m.e, m.n);
-                // One point per metre travelled keeps trails short to draw.
-                if (trail.empty() || std::hypot(trail.back().x() - p.x(), trail.back().y() - p.y()) >= 1.0) {
-                    trail.push_back(p);
-                    while (int(trail.size()) > m_trailMax)
-                        trail.pop_front();
-                }
-            }
+            // One point per metre travelled keeps trails short to draw.
+            m_trails.appendIfMoved(id, QPointF(m.e, m.n), 1.0);
             if (fit && !refit && std::abs(m.e) < kFitRadius && std::abs(m.n) < kFitRadius &&
                 !inner.contains(m.e, m.n))
                 refit = true;

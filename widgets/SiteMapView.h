@@ -18,6 +18,7 @@
 #include "protocols/common/GeoFrame.h"
 #include "widgets/MapLabelLayout.h"
 #include "widgets/MapSymbols.h"
+#include "widgets/MapTrails.h"
 #include "widgets/PassCountOverlay.h"
 
 #include <QElapsedTimer>
@@ -26,7 +27,6 @@
 #include <QPointer>
 #include <QTimer>
 #include <QWidget>
-#include <deque>
 #include <memory>
 
 namespace ocu {
@@ -39,7 +39,16 @@ class SiteMapView;
 class SiteMapOverlay {
 public:
     virtual ~SiteMapOverlay() = default;
+    // Every frame, after the trails: what changes from frame to frame (labels, moving parts).
     virtual void paintOverlay(QPainter& p, const SiteMapView& view) = 0;
+    // Into the view's cached static layer, over the site plan and under the trails and machines: what
+    // changes only with the overlay's own content and the view, so a 10 Hz frame does not draw it again.
+    // The painter may be clipped to a part of the layer (a pan's strip). Call
+    // SiteMapView::staticOverlayChanged() whenever it would draw something else.
+    virtual void paintStatic(QPainter& p, const SiteMapView& view) {
+        (void)p;
+        (void)view;
+    }
 };
 class MapBackground;
 class MapLineRaster;
@@ -82,7 +91,7 @@ public:
     PassPalette passPalette() const { return m_palette; }
     void setPassTarget(PassTarget target);
     PassTarget passTarget() const { return m_target; }
-    void setTrailLength(int points) { m_trailMax = std::max(0, points); }
+    void setTrailLength(int points) { m_trails.setCapacity(points); }
 
     // View: centre in site ENU metres, scale in pixels per metre.
     QPointF center() const { return m_center; }
@@ -149,6 +158,8 @@ public:
     // Overlays (not owned; remove before deleting), drawn in order after the trails.
     void addOverlay(SiteMapOverlay* overlay);
     void removeOverlay(SiteMapOverlay* overlay);
+    // An overlay's paintStatic() would draw something else: the static layer is redrawn.
+    void staticOverlayChanged();
     // While on, a left click on a map area emits areaClicked and leaves the selection alone.
     void setAreaPicking(bool on);
     bool isAreaPicking() const { return m_areaPicking; }
@@ -307,8 +318,7 @@ private:
     bool m_passOverlayPending = false;
     bool m_passMoreQueued = false;
 
-    QHash<QString, std::deque<QPointF>> m_trails;
-    int m_trailMax = 120;
+    MapTrails m_trails; // 120 points each (SiteMapView's constructor)
 
     // Interaction.
     bool m_dragging = false;

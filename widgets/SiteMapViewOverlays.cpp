@@ -21,11 +21,16 @@ double niceLength(double metres) {
 void SiteMapView::addOverlay(SiteMapOverlay* overlay) {
     if (overlay && !m_overlays.contains(overlay))
         m_overlays.push_back(overlay);
-    update();
+    staticOverlayChanged(); // its static part
 }
 
 void SiteMapView::removeOverlay(SiteMapOverlay* overlay) {
-    m_overlays.removeAll(overlay);
+    if (m_overlays.removeAll(overlay) > 0)
+        staticOverlayChanged();
+}
+
+void SiteMapView::staticOverlayChanged() {
+    invalidateStatic();
     update();
 }
 

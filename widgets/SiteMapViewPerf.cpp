@@ -97,17 +97,15 @@ void SiteMapView::rasterTrails(QImage& img, const QVector<QRect>& clip, const QT
     const int step = std::max(1, int(std::ceil(4.0 / m_scale)));
     const QRect bounds = std::accumulate(clip.begin(), clip.end(), QRect(), std::bit_or<QRect>());
     const bool one = clip.size() == 1;
-    for (auto it = m_trails.cbegin(); it != m_trails.cend(); ++it) {
-        const auto& t = it.value();
-        const int n = int(t.size());
+    m_trails.forEach([&](const MapTrails::Span& t) {
+        const int n = t.n;
         if (n < 2 || !grown.contains(t.back()))
-            continue;
+            return;
         QPointF prev;
         bool first = true;
-        // Iterators, not indices: a deque's operator[] divides per access.
-        auto q = t.begin() + (n - 1) % step;
-        for (int i = (n - 1) % step; i < n; i += step, q += (i < n ? step : 0)) {
-            const QPointF px(cx + (q->x() - m_center.x()) * s, cy - (q->y() - m_center.y()) * s);
+        for (int i = (n - 1) % step; i < n; i += step) {
+            const QPointF px(cx + (t.xy[2 * i] - m_center.x()) * s,
+                             cy - (t.xy[2 * i + 1] - m_center.y()) * s);
             if (!first) {
                 if (one)
                     clippedLine(bits, bpl, bounds, prev, px, colour);
@@ -118,7 +116,7 @@ void SiteMapView::rasterTrails(QImage& img, const QVector<QRect>& clip, const QT
             prev = px;
             first = false;
         }
-    }
+    });
 }
 
 bool SiteMapView::drawTrailsIntoBase(const QRectF& world, qreal dpr) {

@@ -2,7 +2,7 @@
 // content (site map, background, pass counts, layer switches, palette, night palette); a pan by whole device
 // pixels shifts it in place and draws only the exposed strips, a pass-count change redraws only the patch of
 // the changed cells. Each part is drawn clipped, from the ground up, so it equals a redraw of the whole.
-// What is drawn into it is in SiteMapViewLayers.cpp.
+// What is drawn into it is in SiteMapViewLayers.cpp, then the overlays' static parts (paintStatic).
 #include "widgets/MapLineRaster.h"
 #include "widgets/SiteMapView.h"
 
@@ -129,6 +129,9 @@ void SiteMapView::renderStaticRegion(const QSize& size, const QRect& devicePx) {
     drawStatic(sp, size, QRectF(tl, br).normalized(), &lines);
     if (m_night)
         dimStaticForNight(sp, region);
+    // Overlays' unchanging parts (a route) as before in the frame: after the dimming, not dimmed.
+    for (SiteMapOverlay* o : std::as_const(m_overlays))
+        o->paintStatic(sp, *this);
 }
 
 QRect SiteMapView::passCountPatch(const QSize& size, qreal dpr) const {

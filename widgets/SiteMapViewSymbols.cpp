@@ -73,20 +73,18 @@ void SiteMapView::drawTrails(QPainter& p, const QRectF& world) {
     const int step = std::max(1, int(std::ceil(4.0 / s)));
     // Hundreds of trails: aliased 1 px lines (about 3x cheaper, perf-anchors.md §4); a few: antialiased.
     p.setRenderHint(QPainter::Antialiasing, m_trails.size() < 200);
-    for (auto it = m_trails.cbegin(); it != m_trails.cend(); ++it) {
-        const auto& t = it.value();
-        const int n = int(t.size());
+    m_trails.forEach([&](const MapTrails::Span& t) {
+        const int n = t.n;
         if (n < 2 || !grown.contains(t.back()))
-            continue;
+            return;
         poly.resize(0);
         poly.reserve(n / step + 2);
-        for (int k = (n - 1) % step; k < n; k += step) {
-            const QPointF& q = t[size_t(k)];
-            poly.push_back(QPointF(cx + (q.x() - m_center.x()) * s, cy - (q.y() - m_center.y()) * s));
-        }
+        for (int k = (n - 1) % step; k < n; k += step)
+            poly.push_back(
+                QPointF(cx + (t.xy[2 * k] - m_center.x()) * s, cy - (t.xy[2 * k + 1] - m_center.y()) * s));
         if (poly.size() >= 2)
             p.drawPolyline(poly);
-    }
+    });
     p.setRenderHint(QPainter::Antialiasing, true);
 }
 

@@ -17,7 +17,6 @@
 
 #include <QComboBox>
 #include <QHeaderView>
-#include <QHeaderView>
 #include <QJsonArray>
 #include <QLabel>
 #include <QPainter>
@@ -384,6 +383,16 @@ private slots:
         const QColor onRoute = img.pixelColor(view.worldToScreen(QPointF(50, 0)).toPoint());
         QVERIFY2(onRoute.red() > 100 && onRoute.blue() > 130 && onRoute.green() < 80,
                  qPrintable(onRoute.name()));
+        // The line is kept in the map's cached static layer: the next frame draws it without redrawing
+        // the layer, and the same pixels are there.
+        const QImage first = img.copy();
+        img.fill(Qt::white);
+        {
+            QPainter p(&img);
+            view.paintScene(p, img.size());
+        }
+        QVERIFY(!view.lastFrame().staticRebuilt);
+        QCOMPARE(img, first);
         // T1 has no task: the route it would drive to the chosen destination, dashed.
         r.src.previews.insert(QStringLiteral("iso23725:T1/10"),
                               DispatchRoute{kLink, {1, 10}, 300, {}, false});
@@ -391,6 +400,17 @@ private slots:
         QCOMPARE(r.panel.destinationBox()->currentText(), QStringLiteral("Shovel A — Load"));
         QVERIFY(r.panel.routeOverlay()->isPreview());
         QCOMPARE(r.panel.routeOverlay()->path(), QVector<QPointF>({{0, 0}, {100, 0}, {310, 0}}));
+        // Another route redraws the layer: the old line (road 2, north of x=100) is gone, the new one there.
+        {
+            QPainter p(&img);
+            view.paintScene(p, img.size());
+        }
+        QVERIFY(view.lastFrame().staticRebuilt);
+        const QColor oldLine = img.pixelColor(view.worldToScreen(QPointF(100, 120)).toPoint());
+        QVERIFY2(oldLine.green() > 150, qPrintable(oldLine.name()));
+        const QColor newLine = img.pixelColor(view.worldToScreen(QPointF(200, 0)).toPoint());
+        QVERIFY2(newLine.red() > 100 && newLine.blue() > 130 && newLine.green() < 80,
+                 qPrintable(newLine.name()));
     }
 };
 

@@ -83,15 +83,22 @@ RouteOverlay2D::~RouteOverlay2D() {
 
 void RouteOverlay2D::setRoute(const QString& link, const QVector<qint64>& ways, const QString& label,
                               bool preview) {
-    if (link == m_link && ways == m_ways && label == m_label && preview == m_preview)
+    const bool lineChanged = link != m_link || ways != m_ways || preview != m_preview;
+    if (!lineChanged && label == m_label)
         return;
-    m_preview = preview;
-    m_link = link;
-    m_ways = ways;
     m_label = label;
-    m_pathValid = false;
-    if (m_view)
-        m_view->update();
+    if (lineChanged) {
+        m_preview = preview;
+        m_link = link;
+        m_ways = ways;
+        m_pathValid = false;
+    }
+    if (!m_view)
+        return;
+    if (lineChanged)
+        m_view->staticOverlayChanged(); // the line is in the view's static layer
+    else
+        m_view->update(); // the label is drawn every frame (ETA)
 }
 
 const QVector<QPointF>& RouteOverlay2D::path() const {
@@ -99,6 +106,8 @@ const QVector<QPointF>& RouteOverlay2D::path() const {
     if (!m_pathValid || rev != m_pathRevision) {
         m_path =
             m_view && !m_ways.isEmpty() ? routePath(m_view->siteMap(), m_link, m_ways) : QVector<QPointF>{};
+        const MapFeature* dest = m_view ? featureOf(m_view->siteMap(), destinationFeature()) : nullptr;
+        m_destinationArea = dest && dest->kind == MapFeatureKind::Area ? dest->points : QVector<QPointF>{};
         m_pathRevision = rev;
         m_pathValid = true;
     }
@@ -110,26 +119,37 @@ QString RouteOverlay2D::destinationFeature() const {
                             : m_link + QLatin1Char('/') + QString::number(std::llabs(m_ways.back()));
 }
 
-void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
+void RouteOverlay2D::paintStatic(QPainter& p, const SiteMapView& view) {
+    // The line, the destination and the arrow change only with the route and the view: drawn into the
+    // view's cached static layer, not again in every 10 Hz frame (two wide antialiased strokes).
     const QVector<QPointF>& world = path();
     if (world.isEmpty())
         return;
-    p.save();
-    p.setRenderHint(QPainter::Antialiasing, true);
-    // The destination area, outlined.
-    if (const MapFeature* dest = featureOf(view.siteMap(), destinationFeature());
-        dest && dest->kind == MapFeatureKind::Area) {
-        QPolygonF poly;
-        for (const auto& q : dest->points)
-            poly << view.worldToScreen(q);
-        p.setPen(QPen(QColor(0x6a, 0x1b, 0x9a), 3, Qt::DashLine));
-        p.setBrush(QColor(0x6a, 0x1b, 0x9a, 40));
-        p.drawPolygon(poly);
-    }
     QPolygonF screen;
     screen.reserve(world.size());
     for (const auto& q : world)
         screen << view.worldToScreen(q);
+    QPolygonF area;
+    for (const auto& q : m_destinationArea)
+        area << view.worldToScreen(q);
+    // A part of the layer away from the route (a roller's pass-count patch, a pan's strip): nothing to
+    // draw there (the margin: half the casing, the arrowhead).
+    if (p.hasClipping()) {
+        // Per segment: the route's box covers much of the map, its line little of it.
+        const QRectF clip = p.clipBoundingRect().adjusted(-16, -16, 16, 16);
+        bool near = area.boundingRect().intersects(clip) || clip.contains(screen.front());
+        for (qsizetype i = 1; i < screen.size() && !near; ++i)
+            near = clip.intersects(QRectF(screen[i - 1], screen[i]).normalized().adjusted(-1, -1, 1, 1));
+        if (!near)
+            return;
+    }
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    if (!area.isEmpty()) { // the destination area, outlined
+        p.setPen(QPen(QColor(0x6a, 0x1b, 0x9a), 3, Qt::DashLine));
+        p.setBrush(QColor(0x6a, 0x1b, 0x9a, 40));
+        p.drawPolygon(area);
+    }
     p.setBrush(Qt::NoBrush);
     p.setPen(QPen(QColor(255, 255, 255, 220), 9, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
     p.drawPolyline(screen);
@@ -152,20 +172,41 @@ void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
              << end - QPointF(std::cos(a + 0.45) * s, std::sin(a + 0.45) * s);
         p.drawPolygon(head);
     }
-    if (!m_label.isEmpty()) {
-        QFont f = p.font();
-        f.setBold(true);
-        p.setFont(f);
-        const QRectF box = QFontMetricsF(f).boundingRect(m_label).adjusted(-4, -2, 4, 2);
-        const QRectF at = box.translated(end + QPointF(10, -10) - box.bottomLeft());
-        p.setPen(Qt::NoPen);
-        p.setBrush(QColor(0x4a, 0x14, 0x8c, 220));
-        p.drawRoundedRect(at, 3, 3);
-        p.setPen(Qt::white);
-        p.drawText(at, Qt::AlignCenter, m_label);
-        view.reserveLabelArea(at); // machine labels keep clear of it
-    }
     p.restore();
+}
+
+void RouteOverlay2D::paintOverlay(QPainter& p, const SiteMapView& view) {
+    const QVector<QPointF>& world = path();
+    if (world.isEmpty() || m_label.isEmpty())
+        return;
+    // The label as an image, laid out again only when its text changes (ETA), not in every frame.
+    QFont f = p.font();
+    f.setBold(true);
+    const qreal dpr = p.device() ? p.device()->devicePixelRatioF() : 1.0;
+    if (m_labelImage.isNull() || m_labelImageText != m_label || m_labelImageFont != f ||
+        m_labelImage.devicePixelRatio() != dpr) {
+        const QRectF box = QFontMetricsF(f).boundingRect(m_label).adjusted(-4, -2, 4, 2);
+        const QRectF at(QPointF(0, 0), box.size());
+        m_labelImage = QImage((at.size() * dpr).toSize() + QSize(1, 1), QImage::Format_ARGB32_Premultiplied);
+        m_labelImage.setDevicePixelRatio(dpr);
+        m_labelImage.fill(Qt::transparent);
+        QPainter lp(&m_labelImage);
+        lp.setRenderHint(QPainter::Antialiasing, true);
+        lp.setFont(f);
+        lp.setPen(Qt::NoPen);
+        lp.setBrush(QColor(0x4a, 0x14, 0x8c, 220));
+        lp.drawRoundedRect(at, 3, 3);
+        lp.setPen(Qt::white);
+        lp.drawText(at, Qt::AlignCenter, m_label);
+        m_labelImageText = m_label;
+        m_labelImageFont = f;
+        m_labelSize = at.size();
+    }
+    // Above and right of the destination, on whole pixels.
+    const QPointF end = view.worldToScreen(world.back());
+    const QPointF topLeft(std::round(end.x() + 10), std::round(end.y() - 10 - m_labelSize.height()));
+    p.drawImage(topLeft, m_labelImage);
+    view.reserveLabelArea(QRectF(topLeft, m_labelSize)); // machine labels keep clear of it
 }
 
 } // namespace ocu

@@ -6,6 +6,8 @@
 // (SiteMapOverlay); the geometry is a pure function, shared with the 3D view's route.
 #include "widgets/SiteMapView.h"
 
+#include <QFont>
+#include <QImage>
 #include <QPointF>
 #include <QPointer>
 #include <QString>
@@ -35,7 +37,8 @@ public:
     const QVector<QPointF>& path() const;
     QString destinationFeature() const;
 
-    void paintOverlay(QPainter& p, const SiteMapView& view) override;
+    void paintStatic(QPainter& p, const SiteMapView& view) override;  // line, destination, arrow
+    void paintOverlay(QPainter& p, const SiteMapView& view) override; // the label
     // The view is being destroyed (its destroyed signal): forget it without touching it.
     void forgetView() { m_view = nullptr; }
 
@@ -46,6 +49,11 @@ private:
     QString m_label;
     bool m_preview = false;
     mutable QVector<QPointF> m_path;
+    QImage m_labelImage; // the label drawn, for the frames until its text changes
+    QString m_labelImageText;
+    QFont m_labelImageFont;
+    QSizeF m_labelSize;
+    mutable QVector<QPointF> m_destinationArea; // outline of the destination when it is an area
     mutable quint64 m_pathRevision = ~quint64(0);
     mutable bool m_pathValid = false;
 };
