@@ -7,7 +7,9 @@
 # more than OCU_SOAK_RSS_MB_PER_H (default 5) or threads or file descriptors grow at all.
 #   scripts/shift-soak.sh [SECONDS] [headless|window]     default: 3600 headless
 # Environment: OCU_SOAK_WARMUP_S (default 600), OCU_SOAK_SAMPLE_S (15), OCU_BUILD_DIR (build), OCU_SOAK_DIR
-# (where the run's files and samples go; default a new folder under /tmp, kept for inspection).
+# (where the run's files and samples go; default a new folder under /tmp, kept for inspection),
+# OCU_SOAK_OSYRIS_SPEEDUP (the paving train's time-lapse, default 1: real pace), OCU_SOAK_WRAPPER (a tool the
+# console runs under, e.g. "heaptrack -o /tmp/soak-heap"; its RSS then includes the tool's).
 # Not in CI (it runs for an hour). Loopback only; everything it starts it ends, also on Ctrl-C.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -16,6 +18,7 @@ mode="${2:-headless}"
 warmup="${OCU_SOAK_WARMUP_S:-600}"
 every="${OCU_SOAK_SAMPLE_S:-15}"
 bound="${OCU_SOAK_RSS_MB_PER_H:-5}"
+speedup="${OCU_SOAK_OSYRIS_SPEEDUP:-1}"
 build="${OCU_BUILD_DIR:-$root/build}"
 dir="${OCU_SOAK_DIR:-$(mktemp -d /tmp/ocu-soak.XXXXXX)}"
 mkdir -p "$dir"
@@ -35,9 +38,11 @@ esac
 
 pids=()
 pgdir=""
+console=""
 cleanup() {
   for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
-  wait 2>/dev/null || true
+  [ -n "$console" ] && kill "$console" 2>/dev/null || true # under a wrapper or xvfb-run: not in pids
+  wait "${pids[@]}" 2>/dev/null || true
   if [ -n "$pgdir" ] && [ -f "$pgdir/data/postmaster.pid" ]; then
     runuser -u "$pguser" -- "$pgbin/pg_ctl" -D "$pgdir/data" -m immediate stop >/dev/null 2>&1 || true
   fi
@@ -45,7 +50,10 @@ cleanup() {
 trap cleanup EXIT INT TERM
 
 # The simulated site at full load; it writes the console's site configuration.
-"$build/app/ocu-sim" --trucks 1000 --position-rate 10 --ugvs 20 --rollers 3 \
+# The paving train at its real pace (ocu-sim's default is a 30x time-lapse for demos, which paves, counts and
+# sends crew messages 30 hours' worth per hour: the pass-count grid and the event log then grow 30 times
+# faster than in any shift; see docs/reliability.md).
+"$build/app/ocu-sim" --trucks 1000 --position-rate 10 --ugvs 20 --rollers 3 --speedup "$speedup" \
   --write-config "$dir/sim-site.json" --duration $((duration + 120)) >"$dir/ocu-sim.log" 2>&1 &
 pids+=($!)
 for _ in $(seq 1 120); do [ -s "$dir/sim-site.json" ] && break; sleep 0.5; done
@@ -84,19 +92,29 @@ EOF
 
 mkdir -p "$dir/recordings"
 args=(--config "$dir/site.json" --no-sim --record "$dir/recordings")
+# OCU_SOAK_WRAPPER runs the console under a tool that execs it, e.g. "heaptrack -o $dir/heaptrack".
+read -r -a wrapper <<<"${OCU_SOAK_WRAPPER:-}"
 if [ "$mode" = headless ]; then
-  # stdin held open: the headless monitor ends at end of input.
-  tail -f /dev/null | "$build/app/ocu" --headless "${args[@]}" >"$dir/console.out" 2>"$dir/console.err" &
+  # The headless monitor ends at end of input: its stdin is a FIFO this script holds open, so the console
+  # also ends when the script does, however it ends.
+  mkfifo "$dir/console.in"
+  "${wrapper[@]}" "$build/app/ocu" --headless "${args[@]}" <"$dir/console.in" >"$dir/console.out" \
+    2>"$dir/console.err" &
   pids+=($!)
-  sleep 2
-  console="$(pgrep -n -f "^$build/app/ocu --headless")"
+  exec 3>"$dir/console.in"
+  pattern="^$build/app/ocu --headless"
 else
-  xvfb-run -a -s "-screen 0 1920x1080x24 -nolisten tcp" "$build/app/ocu" "${args[@]}" \
+  command -v xvfb-run >/dev/null || { echo "shift-soak: window mode needs xvfb-run (package xvfb)" >&2; exit 2; }
+  xvfb-run -a -s "-screen 0 1920x1080x24 -nolisten tcp" "${wrapper[@]}" "$build/app/ocu" "${args[@]}" \
     >"$dir/console.out" 2>"$dir/console.err" &
   pids+=($!)
-  sleep 5
-  console="$(pgrep -n -f "^$build/app/ocu --config")"
+  pattern="^$build/app/ocu --config $dir/"
 fi
+for _ in $(seq 1 60); do
+  console="$(pgrep -n -f "$pattern" || true)"
+  [ -n "$console" ] && break
+  sleep 0.5
+done
 [ -n "$console" ] || { echo "shift-soak: the console did not start (see $dir/console.err)" >&2; exit 1; }
 echo "shift-soak: $mode console pid $console, $duration s, warm-up $warmup s, samples every $every s in $dir"
 
@@ -111,7 +129,8 @@ while :; do
   threads=$(ls "/proc/$console/task" | wc -l)
   fds=$(ls "/proc/$console/fd" | wc -l)
   rec=$(du -sk "$dir/recordings" | cut -f1)
-  wal=$(cat "$dir"/*.sqlite-wal "$dir"/recordings/*.sqlite-wal 2>/dev/null | wc -c)
+  # A WAL file that does not exist (yet) counts 0.
+  wal=$({ cat "$dir"/*.sqlite-wal "$dir"/recordings/*.sqlite-wal 2>/dev/null || true; } | wc -c)
   events=$(grep -c '"type":"event"' "$dir/console.out" 2>/dev/null || true)
   alarms=$(grep -c '"requires_ack":true' "$dir/console.out" 2>/dev/null || true)
   echo -e "$t\t$rss\t$threads\t$fds\t$rec\t$((wal / 1024))\t${events:-0}\t${alarms:-0}" >>"$samples"

@@ -9,11 +9,14 @@
 
 #include <QComboBox>
 #include <QHBoxLayout>
+#include <QHash>
 #include <QHeaderView>
+#include <QIcon>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPainter>
+#include <QPixmap>
 #include <QResizeEvent>
 #include <QStyledItemDelegate>
 #include <QTableView>
@@ -30,6 +33,31 @@ namespace {
 class FleetDelegate : public QStyledItemDelegate {
 public:
     using QStyledItemDelegate::QStyledItemDelegate;
+
+protected:
+    // The base class turns a colour decoration into a new pixmap at every paint; the icon engine caches a
+    // scaled copy of each under a new key in QPixmapCache, which (Qt 6.4) never evicts pixmaps this small:
+    // at 1,000 machines the window grew ~50 MB an hour. One icon per colour and size keeps the keys the same.
+    void initStyleOption(QStyleOptionViewItem* opt, const QModelIndex& index) const override {
+        QStyledItemDelegate::initStyleOption(opt, index);
+        const QVariant deco = index.data(Qt::DecorationRole);
+        if (deco.typeId() != QMetaType::QColor)
+            return;
+        const QColor c = deco.value<QColor>();
+        const QString key = QStringLiteral("%1/%2x%3")
+                                .arg(c.rgba())
+                                .arg(opt->decorationSize.width())
+                                .arg(opt->decorationSize.height());
+        auto it = m_icons.find(key);
+        if (it == m_icons.end()) {
+            QPixmap pm(opt->decorationSize);
+            pm.fill(c);
+            it = m_icons.insert(key, QIcon(pm)); // a handful: one per status colour
+        }
+        opt->icon = it.value();
+    }
+
+public:
     void paint(QPainter* p, const QStyleOptionViewItem& option, const QModelIndex& index) const override {
         const int col = index.column();
         if (col == FleetModel::ColLink) {
@@ -74,6 +102,9 @@ public:
             p->fillRect(QRect(option.rect.left(), option.rect.top(), 5, option.rect.height()), c);
         }
     }
+
+private:
+    mutable QHash<QString, QIcon> m_icons; // colour and size -> icon
 };
 } // namespace
 
