@@ -692,6 +692,13 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     </message>
 </context>
 <context>
+    <name>ocu::CommandPermissionHint</name>
+    <message>
+        <source>Not permitted</source>
+        <translation>Nicht erlaubt</translation>
+    </message>
+</context>
+<context>
     <name>ocu::CommandPermissions</name>
     <message>
         <source>monitor</source>
@@ -728,6 +735,14 @@ Ohne --config startet sie mit der eingebauten simulierten Baustelle.</translatio
     <message>
         <source>%1 needs the %2 role (you are %3)</source>
         <translation>%1 erfordert die Rolle %2 (Sie sind %3)</translation>
+    </message>
+    <message>
+        <source>Not permitted to any role at this console</source>
+        <translation>An dieser Konsole keiner Rolle erlaubt</translation>
+    </message>
+    <message>
+        <source>Needs the %1 role (you are %2)</source>
+        <translation>Erfordert die Rolle %1 (Sie sind %2)</translation>
     </message>
 </context>
 <context>

@@ -692,6 +692,13 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     </message>
 </context>
 <context>
+    <name>ocu::CommandPermissionHint</name>
+    <message>
+        <source>Not permitted</source>
+        <translation>Non autorisé</translation>
+    </message>
+</context>
+<context>
     <name>ocu::CommandPermissions</name>
     <message>
         <source>monitor</source>
@@ -728,6 +735,14 @@ Sans --config, il démarre sur le site simulé intégré.</translation>
     <message>
         <source>%1 needs the %2 role (you are %3)</source>
         <translation>%1 nécessite le rôle %2 (vous êtes %3)</translation>
+    </message>
+    <message>
+        <source>Not permitted to any role at this console</source>
+        <translation>Autorisé à aucun rôle sur cette console</translation>
+    </message>
+    <message>
+        <source>Needs the %1 role (you are %2)</source>
+        <translation>Nécessite le rôle %1 (vous êtes %2)</translation>
     </message>
 </context>
 <context>
