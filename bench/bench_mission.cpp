@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
                 120)) {
             auto s = snap();
             std::fprintf(stderr, "bench_mission: not uploaded (%s: %s)\n",
-                         s ? toString(s->mission.phase) : "?", s ? s->mission.reason.c_str() : "");
+                         s ? nameFor(s->mission.phase) : "?", s ? s->mission.reason.c_str() : "");
             return 1;
         }
         ms.push_back(std::chrono::duration<double, std::milli>(Clk::now() - t0).count());

@@ -13,7 +13,7 @@ QJsonArray targetsToJson(const QVector<TargetOutcome>& targets) {
         j[QStringLiteral("id")] = targetId(t);
         j[QStringLiteral("sent")] = t.sent;
         if (!t.sent) {
-            j[QStringLiteral("cause")] = QLatin1String(toString(t.cause));
+            j[QStringLiteral("cause")] = QLatin1String(nameFor(t.cause));
             j[QStringLiteral("reason")] = reasonText(t);
         }
         if (!t.note.empty())

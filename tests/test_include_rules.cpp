@@ -5,6 +5,7 @@
 #include "tests/ProtocolNames.h"
 
 #include <QDir>
+#include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryDir>
@@ -56,6 +57,34 @@ const Tree kBase{
     {"app/Main.cpp", "#include \"widgets/FleetList.h\"\n#include \"models/bridges/JausBridge.h\"\n"
                      "#include \"sim/jaus/SimulatedUgv.h\"\n"},
 };
+
+// Declarations of a toString that takes an argument, as "path:line". QCOMPARE prints a value with an
+// unqualified toString(value), so argument-dependent lookup picks such a function over QTest's own and
+// then frees the static text it returns: a failing comparison aborts instead of reporting.
+QStringList toStringTakingAnArgument(const QString& root) {
+    static const QRegularExpression decl(
+        QStringLiteral(R"(^\s*(?:static\s+)?(?:const\s+)?[\w:]+\s*\*?\s*toString\(\s*\w)"),
+        QRegularExpression::MultilineOption);
+    QStringList out;
+    QDirIterator it(root, {QStringLiteral("*.h"), QStringLiteral("*.cpp")}, QDir::Files,
+                    QDirIterator::Subdirectories);
+    while (it.hasNext()) {
+        const QString path = it.next();
+        const QString rel = QDir(root).relativeFilePath(path);
+        if (rel.startsWith(QLatin1String("build")) || rel.startsWith(QLatin1Char('.')))
+            continue;
+        QFile f(path);
+        if (!f.open(QIODevice::ReadOnly))
+            continue;
+        const QString text = QString::fromUtf8(f.readAll());
+        for (auto m = decl.globalMatch(text); m.hasNext();) {
+            const auto hit = m.next();
+            out << QStringLiteral("%1:%2").arg(rel).arg(
+                text.left(hit.capturedStart()).count(QLatin1Char('\n')) + 1);
+        }
+    }
+    return out;
+}
 
 } // namespace
 
@@ -199,6 +228,21 @@ private slots:
         for (const auto& u : uses)
             lines << u.toString();
         QVERIFY2(uses.isEmpty(), qPrintable(lines.join(QLatin1Char('\n'))));
+    }
+
+    void noToStringThatQTestWouldFree() {
+        const QStringList found = toStringTakingAnArgument(QStringLiteral(OCU_SOURCE_DIR));
+        QVERIFY2(found.isEmpty(),
+                 qPrintable(QStringLiteral("name these nameFor: ") + found.join(QLatin1Char(' '))));
+
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QFile f(dir.filePath(QStringLiteral("Kinds.h")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("#pragma once\nstruct Id { std::string toString() const; };\nconst char* nameFor(Kind k);\n"
+                "const char* toString(Kind k);\n");
+        f.close();
+        QCOMPARE(toStringTakingAnArgument(dir.path()), QStringList{QStringLiteral("Kinds.h:4")});
     }
 
     void protocolNameInASharedFileIsFound() {

@@ -216,7 +216,7 @@ void IsoBridge::onAllStopChanged(const std::string& link, const AllStopStatus& s
     publishEvent(makeEvent(status.state == AllStopState::On ? EventSeverity::Alarm : EventSeverity::Info,
                            ocu::EventKind::Info, {},
                            tr("AHS %1 reports all-stop %2%3")
-                               .arg(l, QString::fromUtf8(toString(status.state)),
+                               .arg(l, QString::fromUtf8(nameFor(status.state)),
                                     status.external ? tr(" (issued by another system)") : QString()),
                            QStringLiteral("iso23725")));
 }
@@ -538,7 +538,7 @@ bool IsoBridge::admitPosition(const std::string& link, const std::string& key, I
         io.implausible.clear();
         return true;
     }
-    const char* cause = toString(v.fault);
+    const char* cause = nameFor(v.fault);
     if (Counters* c = m_stack->linkCounters(link))
         c->add(std::string("rx.implausible.") + cause);
     const QString why = toQString(describe(v.fault, m_poseGate.limits()));

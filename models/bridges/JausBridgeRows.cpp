@@ -74,7 +74,7 @@ JausVehicle toVehicle(const SubsystemSnapshot& s) {
     v.link = s.link == jaus::LinkState::Up         ? JausLink::Up
              : s.link == jaus::LinkState::Degraded ? JausLink::Degraded
                                                    : JausLink::Down;
-    v.linkText = QString::fromUtf8(jaus::toString(s.link));
+    v.linkText = QString::fromUtf8(jaus::nameFor(s.link));
     v.lastMessageUnixMs = s.lastMessageUnixMs;
     v.access = toAccess(s.access);
     v.controller = toAddress(s.controller);
@@ -83,7 +83,7 @@ JausVehicle toVehicle(const SubsystemSnapshot& s) {
     v.accessTimeoutS = s.accessTimeoutS;
     if (s.management) {
         v.management = toManagement(*s.management);
-        v.managementText = QString::fromUtf8(jaus::toString(*s.management));
+        v.managementText = QString::fromUtf8(jaus::nameFor(*s.management));
     }
     v.emergency = s.emergency;
     v.driving = s.driving;
@@ -234,7 +234,7 @@ JausVehicleEvent toVehicleEvent(const JausEvent& e) {
     v.severity = e.severity == Severity::Error     ? JausEventSeverity::Error
                  : e.severity == Severity::Warning ? JausEventSeverity::Warning
                                                    : JausEventSeverity::Info;
-    v.kindText = QString::fromUtf8(jaus::toString(e.kind));
+    v.kindText = QString::fromUtf8(jaus::nameFor(e.kind));
     v.subsystem = e.subsystem;
     v.text = QString::fromStdString(e.text);
     return v;
@@ -283,7 +283,7 @@ MachineState JausBridge::toMachine(const SubsystemSnapshot& s) const {
     if (m.width <= 0)
         m.width = 0.8;
     if (s.management) {
-        m.modeText = QString::fromUtf8(jaus::toString(*s.management));
+        m.modeText = QString::fromUtf8(jaus::nameFor(*s.management));
         switch (*s.management) {
         case ManagementState::Ready:
             m.mode = s.controlledByUs || s.controller.subsystem ? ModeCategory::Remote : ModeCategory::Idle;

@@ -46,7 +46,7 @@ QString JausBridge::admitPose(SubsystemSnapshot& s) {
             io.localPose = s.localPose;
             io.velocity = s.velocity;
         } else {
-            const char* cause = toString(v.fault);
+            const char* cause = nameFor(v.fault);
             m_stack->counters().add(std::string("rx.implausible.") + cause);
             const QString why = QString::fromStdString(describe(v.fault, m_poseGate.limits()));
             io.implausible = tr("implausible pose ignored (%1 so far): %2").arg(v.peerCount).arg(why);

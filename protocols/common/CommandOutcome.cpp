@@ -2,7 +2,7 @@
 
 namespace ocu {
 
-const char* toString(OutcomeReason reason) {
+const char* nameFor(OutcomeReason reason) {
     switch (reason) {
     case OutcomeReason::None:
         return "none";

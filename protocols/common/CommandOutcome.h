@@ -27,7 +27,7 @@ enum class OutcomeReason {
 };
 
 // "none", "not_permitted", "unknown_target", ... (headless results and audit lines).
-const char* toString(OutcomeReason reason);
+const char* nameFor(OutcomeReason reason);
 
 struct TargetOutcome {
     TargetOutcome() = default;

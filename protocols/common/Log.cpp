@@ -11,7 +11,7 @@ LogSink g_sink;
 std::atomic<int> g_threshold{static_cast<int>(LogLevel::Info)};
 } // namespace
 
-const char* toString(LogLevel level) {
+const char* nameFor(LogLevel level) {
     switch (level) {
     case LogLevel::Debug:
         return "debug";
@@ -50,7 +50,7 @@ void logMessage(LogLevel level, std::string_view category, std::string_view mess
         sink(level, category, message);
         return;
     }
-    std::fprintf(stderr, "[%s] %.*s: %.*s\n", toString(level), static_cast<int>(category.size()),
+    std::fprintf(stderr, "[%s] %.*s: %.*s\n", nameFor(level), static_cast<int>(category.size()),
                  category.data(), static_cast<int>(message.size()), message.data());
 }
 

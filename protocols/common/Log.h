@@ -32,6 +32,6 @@ inline void logError(std::string_view cat, std::string_view msg) {
     logMessage(LogLevel::Error, cat, msg);
 }
 
-const char* toString(LogLevel level);
+const char* nameFor(LogLevel level);
 
 } // namespace ocu

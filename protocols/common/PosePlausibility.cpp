@@ -4,7 +4,7 @@
 
 namespace ocu {
 
-const char* toString(PoseFault fault) {
+const char* nameFor(PoseFault fault) {
     switch (fault) {
     case PoseFault::None:
         return "none";

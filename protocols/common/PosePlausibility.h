@@ -28,7 +28,7 @@ struct PoseLimits {
 enum class PoseFault { None, NonFinite, OutsideExtent, Speed, Jump };
 
 // Stable names for counters and events: "non_finite", "outside_extent", "speed", "jump".
-const char* toString(PoseFault fault);
+const char* nameFor(PoseFault fault);
 // For people: what the limit is ("beyond 50000 m from the site origin", ...).
 std::string describe(PoseFault fault, const PoseLimits& limits);
 

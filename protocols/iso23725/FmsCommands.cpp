@@ -213,7 +213,7 @@ bool FmsCore::fetchMap() {
         return true;
     if (separateMapService() && m_mapService.channelState() != LinkState::Up)
         setRefusal(OutcomeReason::LinkDown,
-                   "the map service of link " + m_link.name + " is " + toString(m_mapService.channelState()));
+                   "the map service of link " + m_link.name + " is " + nameFor(m_mapService.channelState()));
     else
         setRefusal(OutcomeReason::SendFailed,
                    "the WebSocket of link " + m_link.name + " did not take the frame (closing)");

@@ -12,7 +12,7 @@ namespace ocu::iso23725 {
 // At most this many error entries wait for the next rate-limited diagnostic; the rest are only counted.
 static constexpr std::size_t kMaxPendingErrors = 20;
 
-const char* toString(LinkState s) {
+const char* nameFor(LinkState s) {
     switch (s) {
     case LinkState::Up:
         return "UP";
@@ -23,7 +23,7 @@ const char* toString(LinkState s) {
     }
 }
 
-const char* toString(AllStopState s) {
+const char* nameFor(AllStopState s) {
     switch (s) {
     case AllStopState::On:
         return "On";
@@ -114,9 +114,9 @@ bool FmsCore::upOrRefuse(const char* what) {
     if (m_state != LinkState::Up) {
         // §2.1 rule 1: commands are never queued while the link is down.
         m_counters.add("cmd.refused.link_down");
-        setRefusal(OutcomeReason::LinkDown, "link " + m_link.name + " is " + toString(m_state));
+        setRefusal(OutcomeReason::LinkDown, "link " + m_link.name + " is " + nameFor(m_state));
         event(IsoSeverity::Warning, std::string(what) + " refused: link '" + m_link.name + "' is " +
-                                        toString(m_state) + " (commands are not queued)");
+                                        nameFor(m_state) + " (commands are not queued)");
         return false;
     }
     return true;

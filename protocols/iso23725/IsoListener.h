@@ -14,7 +14,7 @@
 namespace ocu::iso23725 {
 
 enum class LinkState { Unknown, Up, Down };
-const char* toString(LinkState s);
+const char* nameFor(LinkState s);
 
 enum class IsoSeverity { Info, Warning, Error };
 
@@ -65,7 +65,7 @@ struct IsoMachineSnapshot {
 };
 
 enum class AllStopState { Unknown, Off, On };
-const char* toString(AllStopState s);
+const char* nameFor(AllStopState s);
 
 struct AllStopStatus {
     AllStopState state = AllStopState::Unknown; // only from MachineAllStopV1 (never from the response)

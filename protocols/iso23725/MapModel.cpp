@@ -11,7 +11,7 @@
 
 namespace ocu::iso23725 {
 
-const char* toString(WayKind k) {
+const char* nameFor(WayKind k) {
     switch (k) {
     case WayKind::Road:
         return "road";
@@ -286,7 +286,7 @@ Result<MapModel> MapAssembler::finish() {
             if (!allowed.count(it->second))
                 m.warnings.push_back(wn + ": tag " + key + "='" + it->second + "' is not a standard value");
             if ((areaOnly && !closed) || (roadOnly && closed))
-                m.warnings.push_back(wn + ": tag " + key + " is not allowed on a " + toString(w.kind));
+                m.warnings.push_back(wn + ": tag " + key + " is not allowed on a " + nameFor(w.kind));
         };
         check("autonomy", autonomyValues, false, false);
         check("autonomy:area", areaValues, true, false);

@@ -27,7 +27,7 @@ struct MapNode {
 };
 
 enum class WayKind { Road, Lane, Area };
-const char* toString(WayKind k);
+const char* nameFor(WayKind k);
 
 struct MapWay {
     std::int64_t id = 0;

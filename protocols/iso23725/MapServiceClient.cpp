@@ -138,7 +138,7 @@ bool MapServiceClient::fetch() {
     if (m_separate && m_channelState != LinkState::Up) {
         m_counters.add("cmd.refused.link_down");
         m_hooks.event(IsoSeverity::Warning, "map fetch refused: the map service of '" + m_link + "' is " +
-                                                toString(m_channelState) + " (commands are not queued)");
+                                                nameFor(m_channelState) + " (commands are not queued)");
         return false;
     }
     m_assembler.reset();

@@ -27,7 +27,7 @@ enum class HandoffPhase {
     Waiting,    // the holder answered WAIT (DEFERRED, or FKIE's 7): still queued, re-asserted, decision time
                 // anew
 };
-const char* toString(HandoffPhase p);
+const char* nameFor(HandoffPhase p);
 
 // A request the vehicle forwarded to us (RequestReleaseControl) while we hold it, waiting for our answer.
 struct HandoffPrompt {

@@ -2,7 +2,7 @@
 
 namespace ocu::jaus {
 
-const char* toString(LinkState s) {
+const char* nameFor(LinkState s) {
     switch (s) {
     case LinkState::Up:
         return "up";
@@ -13,7 +13,7 @@ const char* toString(LinkState s) {
     }
     return "?";
 }
-const char* toString(AccessState s) {
+const char* nameFor(AccessState s) {
     switch (s) {
     case AccessState::NotAvailable:
         return "NOT_AVAILABLE";
@@ -34,7 +34,7 @@ const char* toString(AccessState s) {
     }
     return "?";
 }
-const char* toString(EventKind k) {
+const char* nameFor(EventKind k) {
     switch (k) {
     case EventKind::Discovered:
         return "discovered";
@@ -76,7 +76,7 @@ const char* toString(EventKind k) {
     return "?";
 }
 
-const char* toString(MissionPhase p) {
+const char* nameFor(MissionPhase p) {
     switch (p) {
     case MissionPhase::None:
         return "none";
@@ -102,7 +102,7 @@ const char* toString(MissionPhase p) {
     return "none";
 }
 
-const char* toString(HandoffPhase p) {
+const char* nameFor(HandoffPhase p) {
     switch (p) {
     case HandoffPhase::None:
         return "none";

@@ -26,8 +26,8 @@ enum class AccessState {
     InsufficientAuthority,
     Preempted
 };
-const char* toString(LinkState s);
-const char* toString(AccessState s);
+const char* nameFor(LinkState s);
+const char* nameFor(AccessState s);
 
 struct ComponentInfo {
     std::uint8_t component = 0;
@@ -107,7 +107,7 @@ enum class EventKind {
     MissionChanged, // the phase of a waypoint mission changed (text names the new one)
     HandoffChanged, // a hand-off request: ours answered, or another console's forwarded to us (text says)
 };
-const char* toString(EventKind k);
+const char* nameFor(EventKind k);
 
 struct JausEvent {
     Severity severity = Severity::Info;

@@ -61,7 +61,7 @@ enum class ManagementState : std::uint8_t {
     Failure = 4,
     Emergency = 5
 };
-const char* toString(ManagementState s);
+const char* nameFor(ManagementState s);
 enum class EmergencyCode : std::uint16_t {
     Stop = 1,
     Safety = 2

@@ -144,7 +144,7 @@ const char* messageName(std::uint16_t id) {
     }
 }
 
-const char* toString(ManagementState s) {
+const char* nameFor(ManagementState s) {
     switch (s) {
     case ManagementState::Init:
         return "INIT";

@@ -32,7 +32,7 @@ const char* handoffMessageName(std::uint16_t id) {
     }
 }
 
-const char* toString(HandoffCode c) {
+const char* nameFor(HandoffCode c) {
     switch (c) {
     case HandoffCode::Granted:
         return "granted";

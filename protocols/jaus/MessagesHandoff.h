@@ -50,7 +50,7 @@ enum class HandoffCode : std::uint8_t {
     // layout's answer to a WAIT is DEFERRED (or QUEUED again, as FKIE's EAC sends).
     Wait = 7,
 };
-const char* toString(HandoffCode c);
+const char* nameFor(HandoffCode c);
 
 struct ConfirmHandoffRequest {
     std::uint8_t id = 0;

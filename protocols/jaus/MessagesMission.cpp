@@ -159,7 +159,7 @@ const char* missionMessageName(std::uint16_t id) {
     }
 }
 
-const char* toString(ElementRejection code) {
+const char* nameFor(ElementRejection code) {
     switch (code) {
     case ElementRejection::InvalidElementId:
         return "invalid element ID";

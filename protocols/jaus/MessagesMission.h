@@ -63,7 +63,7 @@ enum class ElementRejection : std::uint8_t {
     OutOfMemory = 6,
     Unspecified = 7
 };
-const char* toString(ElementRejection code); // words for the operator; "code N" for others
+const char* nameFor(ElementRejection code); // words for the operator; "code N" for others
 struct RejectElementRequest {
     std::uint8_t requestId = 0;
     std::uint8_t code = 7;

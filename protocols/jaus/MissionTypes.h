@@ -33,7 +33,7 @@ enum class MissionPhase {
     Lost,               // control lost or link down: the vehicle's progress is unknown
     Rejected            // an element, the read-back or ExecuteList was refused (reason says why)
 };
-const char* toString(MissionPhase p);
+const char* nameFor(MissionPhase p);
 
 struct MissionStatus {
     MissionPhase phase = MissionPhase::None;

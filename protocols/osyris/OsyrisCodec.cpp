@@ -4,7 +4,7 @@
 
 namespace ocu::osyris {
 
-const char* toString(RequestType t) {
+const char* nameFor(RequestType t) {
     switch (t) {
     case RequestType::Nak:
         return "NAK";
@@ -22,7 +22,7 @@ const char* toString(RequestType t) {
     return "?";
 }
 
-const char* toString(Checksum c) {
+const char* nameFor(Checksum c) {
     switch (c) {
     case Checksum::None:
         return "none";
@@ -242,7 +242,7 @@ bool decodeRequest(ByteReader& r, std::size_t body, CmRequest& q, Failure& f) {
     if (body == 1) {
         // Only ALL, PING and PONG make sense without fields (other reading: no fields when unused).
         if (q.type != RequestType::All && !xy) {
-            f = {"bad_length", std::string("CmRequest ") + toString(q.type) + " without From/To"};
+            f = {"bad_length", std::string("CmRequest ") + nameFor(q.type) + " without From/To"};
             return false;
         }
         if (q.type == RequestType::All)
@@ -287,7 +287,7 @@ bool decodeOne(ByteSpan bytes, Checksum cs, std::vector<Message>& out, Failure& 
     if (cs != Checksum::None) {
         std::uint16_t want = checksum(cs, bytes.subspan(2));
         if (want != h.crc) {
-            f = {"bad_checksum", std::string(toString(cs)) + " checksum mismatch"};
+            f = {"bad_checksum", std::string(nameFor(cs)) + " checksum mismatch"};
             return false;
         }
     }

@@ -47,8 +47,8 @@ constexpr std::uint32_t kPosGpsShadow = 0x00000800u;
 enum class RequestType : std::uint8_t { Nak = 0, Ncf = 1, All = 2, Ping = 3, Pong = 4, Alive = 5 };
 enum class Checksum { None, Xor, Crc16 };
 
-const char* toString(RequestType t);
-const char* toString(Checksum c);
+const char* nameFor(RequestType t);
+const char* nameFor(Checksum c);
 
 struct CmHeader {
     std::uint16_t crc = 0;

@@ -4,7 +4,7 @@
 
 namespace ocu::osyris {
 
-const char* toString(PositionFault fault) {
+const char* nameFor(PositionFault fault) {
     switch (fault) {
     case PositionFault::None:
         return "none";

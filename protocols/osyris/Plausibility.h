@@ -18,7 +18,7 @@ struct PlausibilityLimits {
 enum class PositionFault { None, NonFinite, OutsideExtent, DrumWidth, Speed };
 
 // Stable names for counters and events: "non_finite", "outside_extent", "drum_width", "speed".
-const char* toString(PositionFault fault);
+const char* nameFor(PositionFault fault);
 
 // The first rule the position breaks, or None.
 PositionFault checkPosition(const CmPos& p, const PlausibilityLimits& limits);

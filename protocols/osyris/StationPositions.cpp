@@ -135,7 +135,7 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
                 bad.slot = p.slot;
                 bad.flags = p.flags;
                 bad.timestampMs = p.time ? fileTimeToUnixMillis(p.time) : 0;
-                bad.implausible = std::string("implausible position ignored (") + toString(fault) + ")";
+                bad.implausible = std::string("implausible position ignored (") + nameFor(fault) + ")";
                 m_listener->onMachinePosition(bad);
             }
         }
@@ -147,7 +147,7 @@ void StationCore::handlePosition(const CmHeader& h, const CmPos& p, const std::v
 }
 
 void StationCore::implausible(std::uint8_t owner, const CmPos& p, PositionFault fault, TimePoint now) {
-    m_counters.add(std::string("rx.implausible.") + toString(fault));
+    m_counters.add(std::string("rx.implausible.") + nameFor(fault));
     // Bounded: at most 254 owners x 4 causes.
     auto [it, first] = m_implausibleEventAt.try_emplace({owner, fault}, now);
     if (!first && now - it->second < kImplausibleEventGap)
@@ -177,7 +177,7 @@ void StationCore::implausible(std::uint8_t owner, const CmPos& p, PositionFault 
     event(Severity::Warning, "OSYRIS station " + std::to_string(owner) +
                                  (name.empty() ? "" : " (" + name + ")") + ": position of slot " +
                                  std::to_string(p.slot) + " ignored: " + what +
-                                 " (counted in rx.implausible." + toString(fault) +
+                                 " (counted in rx.implausible." + nameFor(fault) +
                                  "; one warning per machine and cause every 30 s)");
 }
 

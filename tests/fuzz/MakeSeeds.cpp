@@ -157,7 +157,7 @@ void osyrisSeeds() {
     using namespace ocu::osyris;
     const Checksum modes[] = {Checksum::None, Checksum::Xor, Checksum::Crc16};
     for (Checksum cs : modes) {
-        std::string suffix = std::string("_") + toString(cs);
+        std::string suffix = std::string("_") + nameFor(cs);
         Bytes b;
         encodePos(b, 7, 7, pos(3, 10, 20), cs);
         write("osyris_codec", "pos" + suffix, b);
@@ -167,7 +167,7 @@ void osyrisSeeds() {
                               RequestType::Pong, RequestType::Alive}) {
             Bytes r;
             encodeRequest(r, 3, 7, {t, 10, 20, 1.5f, -2.5f}, cs);
-            write("osyris_codec", std::string("request_") + toString(t) + suffix, r);
+            write("osyris_codec", std::string("request_") + nameFor(t) + suffix, r);
         }
         Bytes m;
         encodeMsg(m, 5, kIdxAll, "STOP", cs);

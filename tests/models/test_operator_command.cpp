@@ -353,8 +353,8 @@ private slots:
     void outcomeCauses() {
         QCOMPARE(TargetOutcome::sentTo("x").cause, OutcomeReason::None);
         QCOMPARE(TargetOutcome("x", false, "why").cause, OutcomeReason::Refused);
-        QCOMPARE(std::string(toString(OutcomeReason::LinkDown)), std::string("link_down"));
-        QCOMPARE(std::string(toString(OutcomeReason::NotSupported)), std::string("not_supported"));
+        QCOMPARE(std::string(nameFor(OutcomeReason::LinkDown)), std::string("link_down"));
+        QCOMPARE(std::string(nameFor(OutcomeReason::NotSupported)), std::string("not_supported"));
     }
 };
 

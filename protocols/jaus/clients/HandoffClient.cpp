@@ -256,7 +256,7 @@ void HandoffClient::tickRequest(RemoteSubsystem& r, State& s, TimePoint now) {
                      Severity::Warning);
         } else if (h.phase == HandoffPhase::Preempting && !m_access.wantsControl(r.id())) {
             setPhase(r, HandoffPhase::Refused,
-                     "control of " + r.snap.callSign + " refused: " + toString(r.snap.access) +
+                     "control of " + r.snap.callSign + " refused: " + nameFor(r.snap.access) +
                          " (ordinary pre-emption: the holder's authority is not lower)",
                      Severity::Warning);
         }

@@ -125,7 +125,7 @@ void ManagementClient::onStatus(RemoteSubsystem& r, const JausId& src, ByteSpan 
     if (old != m->status)
         m_ctx.notify(m->status == ManagementState::Failure ? Severity::Error : Severity::Info,
                      EventKind::ManagementChanged, r.id(),
-                     r.snap.callSign + " management " + toString(m->status));
+                     r.snap.callSign + " management " + nameFor(m->status));
     m_ctx.changed(r);
 }
 

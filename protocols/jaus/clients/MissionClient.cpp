@@ -134,7 +134,7 @@ void MissionClient::setPhase(RemoteSubsystem& r, State& s, MissionPhase phase, s
     }
     r.snap.mission = s.status;
     if (changed) {
-        std::string text = r.snap.callSign + " mission " + toString(phase);
+        std::string text = r.snap.callSign + " mission " + nameFor(phase);
         if (phase == MissionPhase::Running && s.status.activeIndex >= 0)
             text += ": " + waypointWord(s.status.activeIndex, s.status.waypoints.size());
         if (!s.status.reason.empty())

@@ -136,7 +136,7 @@ void MissionClient::onReject(RemoteSubsystem& r, const JausId& src, ByteSpan p) 
         return;
     State& s = it->second;
     const std::string what =
-        std::string(toString(ElementRejection(m->code))) + " (code " + std::to_string(m->code) + ")";
+        std::string(nameFor(ElementRejection(m->code))) + " (code " + std::to_string(m->code) + ")";
     if (s.step == Step::Clearing && (m->requestId == s.requestId || m->requestId == 0)) {
         s.sentUpTo = 0; // an empty list cannot be cleared on some stacks: go on
         sendNextPart(r, s);

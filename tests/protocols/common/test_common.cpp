@@ -120,7 +120,7 @@ private slots:
         QVERIFY(!v.warn); // the same cause within 30 s: counted, not warned
         QCOMPARE(v.peerCount, std::uint64_t(7));
         QVERIFY(g.check("a", 100, 200, 0, -40.0, t0 + std::chrono::seconds(31)).warn);
-        QCOMPARE(QString(toString(PoseFault::Jump)), QStringLiteral("jump"));
+        QCOMPARE(QString(nameFor(PoseFault::Jump)), QStringLiteral("jump"));
         // Another peer has its own count and its own warnings.
         v = g.check("b", 1e9, 0, 0, std::nullopt, t0);
         QVERIFY(v.warn);

@@ -46,12 +46,12 @@ struct Listener final : IsoListener {
     std::vector<std::vector<std::string>> discrepancies;
     int maps = 0;
     void onLinkState(const std::string&, LinkState s, const std::string&) override {
-        order.push_back(std::string("link:") + toString(s));
+        order.push_back(std::string("link:") + nameFor(s));
     }
     void onMachineChanged(const IsoMachineSnapshot&) override { order.push_back("machine"); }
     void onAllStopChanged(const std::string&, const AllStopStatus& s) override {
         allStops.push_back(s);
-        order.push_back(std::string("allstop:") + toString(s.state));
+        order.push_back(std::string("allstop:") + nameFor(s.state));
     }
     void onMapChanged(const std::string&, const MapModel&) override { ++maps; }
     void onFleetDiscrepancies(const std::string&, const std::vector<FleetDiscrepancy>& items) override {

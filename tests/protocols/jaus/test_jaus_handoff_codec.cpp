@@ -59,7 +59,7 @@ private slots:
             auto d = decodeConfirmHandoffRequest(encode(ConfirmHandoffRequest{1, code}));
             QVERIFY(d);
             QVERIFY(d->code == code);
-            QCOMPARE(toString(d->code), name);
+            QCOMPARE(nameFor(d->code), name);
         }
         auto fkieWait = decodeConfirmHandoffRequest(hex("35 ff 01 07")); // FKIE's private WAIT
         QVERIFY(fkieWait && fkieWait->code == HandoffCode::Wait);

@@ -294,7 +294,7 @@ private slots:
         }
         QTest::qWait(3000); // 5 s after the request: past the first decision time, within the second
         const HandoffPhase phase = rig.asker->handoff().phase;
-        QVERIFY2(phase == (shown ? HandoffPhase::Waiting : HandoffPhase::Queued), toString(phase));
+        QVERIFY2(phase == (shown ? HandoffPhase::Waiting : HandoffPhase::Queued), nameFor(phase));
         QCOMPARE(rig.vehicle.handoffsQueued(), std::size_t(1));
         QCOMPARE(rig.holder->handoff().prompts.size(), std::size_t(1));
         QVERIFY(rig.answer(id, true));

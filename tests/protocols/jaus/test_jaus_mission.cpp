@@ -226,7 +226,7 @@ class TestJausMission : public QObject {
         w.start(where, [&c] { return c.mission(126).activeIndex; });
         c.stack.missionStart(126, 0, {});
         QVERIFY(c.phase(126, MissionPhase::Running));
-        QVERIFY2(c.phase(126, MissionPhase::Completed, kMissionWaitS), toString(c.mission(126).phase));
+        QVERIFY2(c.phase(126, MissionPhase::Completed, kMissionWaitS), nameFor(c.mission(126).phase));
         w.finish();
         for (int i = 0; i < 5; ++i)
             QVERIFY2(w.activeSeen.count(i),

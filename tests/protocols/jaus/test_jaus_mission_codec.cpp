@@ -91,7 +91,7 @@ private slots:
         QVERIFY(r);
         QCOMPARE(r->requestId, 1);
         QCOMPARE(r->code, 3);
-        QCOMPARE(QString(toString(ElementRejection(r->code))), QStringLiteral("invalid next element"));
+        QCOMPARE(QString(nameFor(ElementRejection(r->code))), QStringLiteral("invalid next element"));
         QVERIFY(!decodeRejectElementRequest(hex("1d0401")));
     }
     // V3: ExecuteList(UID 1, 1.0 m/s), its frame, speed only, FKIE's speed change.

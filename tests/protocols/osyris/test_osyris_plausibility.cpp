@@ -65,7 +65,7 @@ private slots:
         CmPos fast = pos(1, 10, 10);
         fast.speed = 31;
         QCOMPARE(checkPosition(fast, l), PositionFault::Speed);
-        QCOMPARE(QString(toString(PositionFault::DrumWidth)), QString("drum_width"));
+        QCOMPARE(QString(nameFor(PositionFault::DrumWidth)), QString("drum_width"));
     }
 
     void gridIgnoresImplausiblePositionsAndKeepsCounting() {
