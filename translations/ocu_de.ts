@@ -2368,6 +2368,14 @@ Alt+U: automatische Disposition ein/aus (Einschalten fragt zuerst)</translation>
         <source>The holder asks you to wait; the request is kept up</source>
         <translation>Der Inhaber bittet Sie zu warten; die Anfrage bleibt bestehen</translation>
     </message>
+    <message>
+        <source>%1 (console %2) asks for control of %3 (authority %4).</source>
+        <translation>%1 (Konsole %2) fordert die Steuerung von %3 an (Autorität %4).</translation>
+    </message>
+    <message>
+        <source>%1 is held by %2 (console %3, authority %4). Ask them to hand it over:</source>
+        <translation>%1 wird von %2 gesteuert (Konsole %3, Autorität %4). Um Übergabe bitten:</translation>
+    </message>
 </context>
 <context>
     <name>ocu::HardwareStopButton</name>

@@ -2368,6 +2368,14 @@ Alt+U : répartition automatique activée/désactivée (l&apos;activation demand
         <source>The holder asks you to wait; the request is kept up</source>
         <translation>Le détenteur vous demande d’attendre ; la demande est maintenue</translation>
     </message>
+    <message>
+        <source>%1 (console %2) asks for control of %3 (authority %4).</source>
+        <translation>%1 (console %2) demande le contrôle de %3 (autorité %4).</translation>
+    </message>
+    <message>
+        <source>%1 is held by %2 (console %3, authority %4). Ask them to hand it over:</source>
+        <translation>%1 est contrôlé par %2 (console %3, autorité %4). Lui demander de le céder :</translation>
+    </message>
 </context>
 <context>
     <name>ocu::HardwareStopButton</name>

@@ -16,6 +16,7 @@
 #include "models/jaus/MissionJson.h"
 #include "models/jaus/MissionRecordFeed.h"
 #include "widgets/SiteMapView.h"
+#include "widgets/jaus/HandoffBanner.h"
 #include "widgets/jaus/JausControlPanel.h"
 #include "widgets/jaus/MissionGateCommands.h"
 #include "widgets/jaus/MissionPanel.h"
@@ -142,6 +143,7 @@ public:
     void populate(const ModulePanels& ui) override {
         auto* control = new JausControlPanel(m_bridge, ui.fleet->gate(), ui.fleet->selection());
         control->model()->setControlRoom(ui.controlRoom);
+        control->handoff()->setControlRoom(ui.controlRoom);
         ui.window.setPanelWidget(kControlPanel, control);
         auto* joystick = new SdlJoystickInput(&ui.window);
         const TeleopInputConfig& t = ui.config.teleop;
@@ -206,6 +208,7 @@ private:
     void populateMission(const ModulePanels& ui) {
         auto* mission = new MissionPanel(m_bridge, ui.fleet->selection());
         mission->setCommands(new MissionGateCommands(ui.fleet->gate(), mission));
+        mission->setCommandGate(ui.fleet->gate());
         auto* map = qobject_cast<SiteMapView*>(ui.window.panelWidget(Panel::SiteMap));
         mission->attachMap(map, m_frame);
         ui.window.setPanelWidget(kMissionPanel, mission);

@@ -1,7 +1,9 @@
 // Panels grey out what the operator's role may not do: in the whole console on the built-in site, a monitor
 // finds JAUS "Control", the dispatcher's "Assign" and the teleop's "Hold to clear emergency" disabled, each
 // tooltip naming the role needed, while the E-STOP stays enabled; a switch to the supervisor enables them
-// again. The gate's table decides (app/modules/*Module.cpp, CommandPermissions).
+// again. The same for every other panel's commands: the mission buttons, the platform services, the lights,
+// automatic dispatch and the crew messages' Send. The gate's table decides (app/modules/*Module.cpp,
+// CommandPermissions).
 #include "app/MainWindow.h"
 #include "app/SiteLoader.h"
 #include "app/SiteRuntime.h"
@@ -9,13 +11,16 @@
 #include "models/commands/CommandPermissions.h"
 #include "models/jaus/JausSubsystemModel.h"
 #include "widgets/jaus/JausControlPanel.h"
+#include "widgets/jaus/MissionPanel.h"
 #include "widgets/jaus/TeleopPanel.h"
 
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QtTest>
 
 #include <memory>
@@ -130,6 +135,60 @@ private slots:
         QVERIFY(control->isEnabled());
         QVERIFY(clear->isEnabled());
         QVERIFY(!assign->isEnabled());
+    }
+
+    void everyPanelGreysItsCommands() {
+        Console c;
+        QVERIFY(c.open());
+        c.signIn(R::Supervisor);
+        MainWindow& w = *c.window;
+        auto* jaus = w.findChild<JausControlPanel*>();
+        auto* mission = w.findChild<MissionPanel*>();
+        QVERIFY(jaus && mission);
+        QTRY_VERIFY_WITH_TIMEOUT(jaus->model()->rowCount() > 0, 20000);
+        // A vehicle chosen: the platform services, the mission panel and the teleop's lights show it.
+        auto* table = jaus->findChild<QTableView*>();
+        QVERIFY(table);
+        table->setCurrentIndex(jaus->model()->index(0, 0));
+
+        QList<std::pair<QWidget*, R>> controls;
+        using A = MissionPanel::Action;
+        for (A a : {A::Upload, A::Start, A::Pause, A::Resume, A::Abort})
+            controls.append({mission->button(a), R::UgvOperator});
+        for (const char* name :
+             {"platform-set-mode", "platform-set-state", "platform-emergency", "platform-reset-trip"})
+            controls.append({w.findChild<QPushButton*>(QLatin1String(name)), R::UgvOperator});
+        int lights = 0;
+        for (QToolButton* b : w.findChildren<QToolButton*>())
+            if (b->objectName().startsWith(QLatin1String("light-")) && ++lights)
+                controls.append({b, R::UgvOperator});
+        QVERIFY(lights > 0);
+        auto* autoDispatch = w.findChild<QPushButton*>(QStringLiteral("button-auto-dispatch"));
+        auto* send = w.findChild<QPushButton*>(QStringLiteral("crew-send"));
+        controls.append({autoDispatch, R::Dispatcher});
+        controls.append({send, R::SiteManager});
+        for (const auto& [widget, role] : controls)
+            QVERIFY2(widget != nullptr, qPrintable(roleDisplayName(role)));
+        // Send needs a text, automatic dispatch nothing else: both enabled for the supervisor.
+        auto* entry = send->parentWidget()->findChild<QLineEdit*>();
+        QVERIFY(entry);
+        entry->setText(QStringLiteral("next lift at 14:00"));
+        QVERIFY(send->isEnabled());
+        QVERIFY(autoDispatch->isEnabled());
+
+        const QString you = QStringLiteral("(you are %1)").arg(roleDisplayName(R::Monitor));
+        c.signIn(R::Monitor);
+        for (const auto& [widget, role] : controls) {
+            const QString tip = widget->toolTip();
+            QVERIFY2(!widget->isEnabled(), qPrintable(widget->objectName() + QLatin1Char(' ') + tip));
+            QVERIFY2(tip.contains(roleDisplayName(role)) && tip.contains(you),
+                     qPrintable(widget->objectName() + QLatin1Char(' ') + tip));
+        }
+        c.signIn(R::Supervisor);
+        for (const auto& [widget, role] : controls)
+            QVERIFY2(!widget->toolTip().contains(you), qPrintable(widget->toolTip()));
+        QVERIFY(send->isEnabled());
+        QVERIFY(autoDispatch->isEnabled());
     }
 };
 

@@ -473,6 +473,8 @@ void DispatchPanel::onTrucksUpdated(const QStringList& ids) {
 }
 
 void DispatchPanel::updateControls() {
+    // Switching automatic dispatch is in the role table too (its state stays shown while greyed).
+    m_auto->setEnabled(permittedShowingWhy(m_auto, m_gate, QStringLiteral("auto_dispatch")));
     const int row = m_model->rowOf(m_current);
     if (row < 0) {
         m_assign->setEnabled(false);

@@ -1,9 +1,12 @@
 #include "widgets/jaus/HandoffBanner.h"
 
 #include "models/CommandGate.h"
+#include "models/ControlRoomModel.h"
 #include "models/FleetSelection.h"
 #include "models/ModelClock.h"
+#include "models/jaus/JausSubsystemModel.h"
 #include "models/jaus/JausVehicleBridge.h"
+#include "widgets/CommandPermissionHint.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -127,7 +130,24 @@ HandoffBanner::HandoffBanner(JausVehicleBridge* bridge, CommandGate* gate, Fleet
                               v->controlledByUs, v->link,     v->handoff};
     if (m_selection)
         connect(m_selection, &FleetSelection::currentMachineChanged, this, [this] { refresh(); });
+    if (gate)
+        connect(gate, &CommandGate::permissionsChanged, this, &HandoffBanner::refresh);
     refresh();
+}
+
+void HandoffBanner::setControlRoom(ControlRoomModel* room) {
+    if (m_room)
+        disconnect(m_room, nullptr, this, nullptr);
+    m_room = room;
+    if (room)
+        connect(room, &ControlRoomModel::roomChanged, this, &HandoffBanner::refresh);
+    refresh();
+}
+
+QString HandoffBanner::personAt(const QString& jausId) const {
+    const auto console =
+        m_room ? m_room->consoleControllingWith(QStringLiteral("jaus:") + jausId) : std::nullopt;
+    return console ? ControlRoomModel::personAtConsole(*console) : QString();
 }
 
 void HandoffBanner::setClock(std::shared_ptr<const ModelClock> clock) {
@@ -182,9 +202,13 @@ void HandoffBanner::showPrompt(const Seen* v) {
     }
     m_promptVehicle = v->subsystem;
     m_prompt = v->handoff.prompts.front();
-    QString text = tr("Console %1 asks for control of %2 (authority %3).")
-                       .arg(m_prompt.requester, nameOf(*v))
-                       .arg(m_prompt.authority);
+    const QString person = personAt(m_prompt.requester);
+    QString text = person.isEmpty() ? tr("Console %1 asks for control of %2 (authority %3).")
+                                          .arg(m_prompt.requester, nameOf(*v))
+                                          .arg(m_prompt.authority)
+                                    : tr("%1 (console %2) asks for control of %3 (authority %4).")
+                                          .arg(person, m_prompt.requester, nameOf(*v))
+                                          .arg(m_prompt.authority);
     if (!m_prompt.explanation.isEmpty())
         text += QLatin1Char('\n') + tr("Reason: %1").arg(m_prompt.explanation);
     if (m_prompt.waited)
@@ -194,9 +218,8 @@ void HandoffBanner::showPrompt(const Seen* v) {
                 tr("%n more request(s) waiting after this one.", "", int(v->handoff.prompts.size() - 1));
     m_promptLabel->setText(text);
     const bool may = m_bridge->mayCommand();
-    m_accept->setEnabled(may);
-    m_deny->setEnabled(may);
-    m_wait->setEnabled(may);
+    for (QPushButton* b : {m_accept, m_deny, m_wait})
+        b->setEnabled(permittedShowingWhy(b, m_gate, QStringLiteral("handoff_answer")) && may);
     m_promptBox->setVisible(true);
     updateCountdown();
     if (!m_tick->isActive())
@@ -236,7 +259,12 @@ void HandoffBanner::showAsk(const Seen* v) {
                                .arg(v->controller.subsystem)
                                .arg(v->controller.node)
                                .arg(v->controller.component);
-    if (v->handoff.offered)
+    const QString person = personAt(holder);
+    if (v->handoff.offered && !person.isEmpty())
+        m_askLabel->setText(tr("%1 is held by %2 (console %3, authority %4). Ask them to hand it over:")
+                                .arg(nameOf(*v), person, holder)
+                                .arg(v->controllerAuthority));
+    else if (v->handoff.offered)
         m_askLabel->setText(tr("%1 is held by console %2 (authority %3). Ask its operator to hand it over:")
                                 .arg(nameOf(*v), holder)
                                 .arg(v->controllerAuthority));
@@ -248,6 +276,7 @@ void HandoffBanner::showAsk(const Seen* v) {
                 .arg(nameOf(*v), holder)
                 .arg(v->controllerAuthority)
                 .arg(m_bridge->identity().authority));
+    m_ask->setEnabled(permittedShowingWhy(m_ask, m_gate, QStringLiteral("handoff_request")));
     m_askBox->setVisible(true);
 }
 

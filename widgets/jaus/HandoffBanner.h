@@ -28,6 +28,7 @@ class QTimer;
 namespace ocu {
 
 class CommandGate;
+class ControlRoomModel;
 class FleetSelection;
 class JausVehicleBridge;
 class ModelClock;
@@ -39,6 +40,9 @@ public:
                   QWidget* parent = nullptr);
     // The countdown's clock (null: the models' system clock).
     void setClock(std::shared_ptr<const ModelClock> clock);
+    // Who is where across the control room: a requester or holder that is a console of the room is named
+    // by its operator and console, the JAUS ID beside them (null: JAUS IDs only).
+    void setControlRoom(ControlRoomModel* room);
 
     // For keyboard users' tests and the screenshots.
     QPushButton* acceptButton() const { return m_accept; }
@@ -55,6 +59,8 @@ public:
     bool promptShown() const;
 
 private:
+    // "bob at dispatch-desk (console 201.1.1)" for a console of the room, empty for another.
+    QString personAt(const QString& jausId) const;
     // What the banner needs of a vehicle, kept from its updates (which come at the pose rate): the banner
     // redraws only when this changes.
     struct Seen {
@@ -78,6 +84,7 @@ private:
 
     JausVehicleBridge* m_bridge;
     QPointer<CommandGate> m_gate;
+    QPointer<ControlRoomModel> m_room;
     FleetSelection* m_selection;
     std::shared_ptr<const ModelClock> m_clock;
     QFrame* m_promptBox;

@@ -2,6 +2,7 @@
 
 #include "models/CommandGate.h"
 #include "models/jaus/JausVehicleBridge.h"
+#include "widgets/CommandPermissionHint.h"
 
 #include <QGridLayout>
 #include <QLabel>
@@ -62,6 +63,8 @@ IlluminationBar::IlluminationBar(JausVehicleBridge* bridge, CommandGate* gate,
     // widening the panel.
     setMinimumWidth(m_label->sizeHint().width() + 3 + m_toggles.front().second->sizeHint().width() * 2);
     arrange();
+    if (gate) // another operator or role, or the lock: what may be sent changes
+        connect(gate, &CommandGate::permissionsChanged, this, &IlluminationBar::refresh);
     connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& v) {
         if (v.subsystem == m_vehicle())
             refresh();
@@ -113,13 +116,14 @@ void IlluminationBar::refresh() {
     for (const auto& [l, b] : m_toggles) {
         const QSignalBlocker block(b);
         b->setChecked(p.lightOn(l)); // as the vehicle reports it
-        b->setEnabled(offered && may && p.hasLight(l));
         b->setVisible(offered || !v);
         const QString name = JausPlatformText::lightName(l);
         b->setToolTip(!p.hasLight(l) ? tr("%1: this vehicle has none").arg(name)
                       : !p.lights    ? tr("%1: not reported yet").arg(name)
                       : p.lightOn(l) ? tr("%1: on, as the vehicle reports (click to switch off)").arg(name)
                                      : tr("%1: off, as the vehicle reports (click to switch on)").arg(name));
+        b->setEnabled(permittedShowingWhy(b, m_gate, QStringLiteral("lights")) && offered && may &&
+                      p.hasLight(l));
     }
 }
 

@@ -1,10 +1,12 @@
 #include "widgets/jaus/MissionPanel.h"
 
+#include "models/CommandGate.h"
 #include "models/FleetSelection.h"
 #include "models/jaus/JausVehicleBridge.h"
 #include "models/jaus/MissionGeoJson.h"
 #include "models/jaus/MissionImport.h"
 #include "models/jaus/MissionPlan.h"
+#include "widgets/CommandPermissionHint.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/jaus/MissionCommands.h"
 #include "widgets/jaus/MissionPlanEditor.h"
@@ -456,6 +458,15 @@ void MissionPanel::refreshState() {
     m_state->setText(s);
 }
 
+void MissionPanel::setCommandGate(CommandGate* gate) {
+    if (m_gate)
+        disconnect(m_gate, nullptr, this, nullptr);
+    m_gate = gate;
+    if (gate)
+        connect(gate, &CommandGate::permissionsChanged, this, &MissionPanel::refreshButtons);
+    refreshButtons();
+}
+
 void MissionPanel::refreshButtons() {
     MissionPlan* p = plan();
     const auto v = m_vehicle && m_bridge ? m_bridge->subsystem(m_vehicle) : std::nullopt;
@@ -472,17 +483,27 @@ void MissionPanel::refreshButtons() {
     button(Action::Delete)->setEnabled(p && selectedRow() >= 0);
     button(Action::Undo)->setEnabled(p && p->undoStack()->canUndo());
     button(Action::Redo)->setEnabled(p && p->undoStack()->canRedo());
+    // The role's permission per command (the tooltip says which role would do).
+    const auto permitted = [this](Action a, const char* command) {
+        return permittedShowingWhy(button(a), m_gate, QLatin1String(command));
+    };
+    const bool mayUpload = permitted(Action::Upload, "mission_upload");
+    const bool mayStart = permitted(Action::Start, "mission_start");
+    const bool mayPause = permitted(Action::Pause, "mission_pause");
+    const bool mayResume = permitted(Action::Resume, "mission_resume");
+    const bool mayAbort = permitted(Action::Abort, "mission_abort");
     button(Action::Upload)
-        ->setEnabled(may && planned && !isOneOf(s, {MissionState::Uploading, MissionState::Running}));
+        ->setEnabled(mayUpload && may && planned &&
+                     !isOneOf(s, {MissionState::Uploading, MissionState::Running}));
     button(Action::Start)
-        ->setEnabled(may && same &&
+        ->setEnabled(mayStart && may && same &&
                      isOneOf(s, {MissionState::Uploaded, MissionState::Completed, MissionState::Aborted,
                                  MissionState::StoppedByEmergency}));
     m_from->setEnabled(button(Action::Start)->isEnabled());
-    button(Action::Pause)->setEnabled(may && s == MissionState::Running);
-    button(Action::Resume)->setEnabled(may && s == MissionState::Paused);
+    button(Action::Pause)->setEnabled(mayPause && may && s == MissionState::Running);
+    button(Action::Resume)->setEnabled(mayResume && may && s == MissionState::Paused);
     button(Action::Abort)
-        ->setEnabled(may &&
+        ->setEnabled(mayAbort && may &&
                      isOneOf(s, {MissionState::Running, MissionState::Paused, MissionState::Uploading}));
     m_unavailable->setVisible(!m_commands && m_vehicle);
 }

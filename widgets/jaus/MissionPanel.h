@@ -27,6 +27,7 @@ class FleetSelection;
 class GeoFrame;
 class JausVehicleBridge;
 class MissionCommands;
+class CommandGate;
 class MissionPlan;
 class MissionPlanEditor;
 class MissionPlanLayer;
@@ -41,6 +42,9 @@ public:
 
     // Not owned (must outlive the panel or be reset); nullptr: sending is not available.
     void setCommands(MissionCommands* commands);
+    // The operator's role decides too: a mission command the gate would refuse is greyed, its tooltip naming
+    // the role needed (null: no role check here).
+    void setCommandGate(CommandGate* gate);
     // What the panel says while it has no commands (default: this build cannot send missions).
     void setUnavailableText(const QString& text);
     // The plan editor and the missions' drawing on this map (site frame for WGS84 <-> map metres).
@@ -111,6 +115,7 @@ private:
 
     QPointer<JausVehicleBridge> m_bridge;
     QPointer<FleetSelection> m_selection;
+    QPointer<CommandGate> m_gate;
     MissionCommands* m_commands = nullptr;
     MissionPlanLayer* m_layer = nullptr;
     MissionPlanEditor* m_editor = nullptr;

@@ -2,6 +2,7 @@
 
 #include "models/CommandGate.h"
 #include "models/jaus/JausVehicleBridge.h"
+#include "widgets/CommandPermissionHint.h"
 
 #include <QComboBox>
 #include <QGridLayout>
@@ -33,6 +34,8 @@ PlatformServicesWidget::PlatformServicesWidget(JausVehicleBridge* bridge, Comman
         m_stateChoice->addItem(JausPlatformText::stateName(int(s)), int(s));
     m_modeChoice->setObjectName(QStringLiteral("platform-mode-choice"));
     m_stateChoice->setObjectName(QStringLiteral("platform-state-choice"));
+    m_setMode->setObjectName(QStringLiteral("platform-set-mode"));
+    m_setState->setObjectName(QStringLiteral("platform-set-state"));
     m_emergency->setObjectName(QStringLiteral("platform-emergency"));
     m_resetTrip->setObjectName(QStringLiteral("platform-reset-trip"));
     m_emergency->setToolTip(tr("Put the whole platform in its emergency state: every component halts and "
@@ -66,6 +69,8 @@ PlatformServicesWidget::PlatformServicesWidget(JausVehicleBridge* bridge, Comman
     connect(m_resetTrip, &QPushButton::clicked, this, [this] {
         send(Odometry{JausVehicleBridge::machineId(m_subsystem), true});
     });
+    if (gate) // another operator or role, or the lock: what may be sent changes
+        connect(gate, &CommandGate::permissionsChanged, this, &PlatformServicesWidget::refresh);
     connect(bridge, &JausVehicleBridge::subsystemUpdated, this, [this](const JausVehicle& v) {
         if (v.subsystem == m_subsystem)
             refresh();
@@ -121,18 +126,22 @@ void PlatformServicesWidget::refresh() {
             const int mode = m_modeChoice->itemData(i).toInt();
             model->item(i)->setEnabled(p.supportedModes.isEmpty() || p.supportedModes.contains(mode));
         }
-    m_modeChoice->setEnabled(may && p.modeService.offered);
-    m_setMode->setEnabled(may && p.modeService.offered);
-    m_stateChoice->setEnabled(may && p.stateService.offered);
-    m_setState->setEnabled(may && p.stateService.offered);
-    m_emergency->setEnabled(may && p.stateService.offered && !p.emergencyState());
+    const bool mayMode = permittedShowingWhy(m_setMode, m_gate, QStringLiteral("platform_mode"));
+    const bool mayState = permittedShowingWhy(m_setState, m_gate, QStringLiteral("platform_state"));
+    permittedShowingWhy(m_emergency, m_gate, QStringLiteral("platform_state"));
+    m_modeChoice->setEnabled(may && mayMode && p.modeService.offered);
+    m_setMode->setEnabled(may && mayMode && p.modeService.offered);
+    m_stateChoice->setEnabled(may && mayState && p.stateService.offered);
+    m_setState->setEnabled(may && mayState && p.stateService.offered);
+    m_emergency->setEnabled(may && mayState && p.stateService.offered && !p.emergencyState());
     if (!p.odometryService.offered)
         m_odometer->setText(tr("not offered"));
     else
         m_odometer->setText(tr("%1 · trip %2")
                                 .arg(p.odometerM ? tr("%1 m").arg(*p.odometerM) : tr("not reported yet"),
                                      p.tripM ? tr("%1 m").arg(*p.tripM) : tr("not reported yet")));
-    m_resetTrip->setEnabled(may && p.odometryService.offered);
+    m_resetTrip->setEnabled(permittedShowingWhy(m_resetTrip, m_gate, QStringLiteral("odometry")) && may &&
+                            p.odometryService.offered);
     m_commsLost->setText(
         p.commsLostService.offered
             ? tr("Comms-lost policy: offered (%1 %2); setting a policy waits for a published "

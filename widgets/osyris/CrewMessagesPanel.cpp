@@ -2,6 +2,7 @@
 
 #include "models/CommandGate.h"
 #include "models/FleetBridge.h"
+#include "widgets/CommandPermissionHint.h"
 #include "widgets/OnScreenWatcher.h"
 
 #include <QApplication>
@@ -21,6 +22,7 @@ CrewMessagesPanel::CrewMessagesPanel(QWidget* parent)
     : QWidget(parent), m_history(new QListWidget(this)), m_to(new QComboBox(this)),
       m_entry(new QLineEdit(this)), m_send(new QPushButton(tr("Send"), this)), m_bytes(new QLabel(this)),
       m_onScreen(new OnScreenWatcher(this)) {
+    m_send->setObjectName(QStringLiteral("crew-send"));
     connect(m_onScreen, &OnScreenWatcher::changed, this, [this](bool onScreen) {
         if (onScreen && m_unread > 0) {
             m_unread = 0;
@@ -45,14 +47,20 @@ CrewMessagesPanel::CrewMessagesPanel(QWidget* parent)
         const int max = m_crew ? m_crew->crewMessageMaxBytes() : 79;
         const int n = int(t.toUtf8().size());
         m_bytes->setText(QStringLiteral("%1/%2").arg(n).arg(max));
-        m_send->setEnabled(n > 0 && n <= max && m_gate && m_bridge);
+        m_send->setEnabled(permittedShowingWhy(m_send, m_gate, QStringLiteral("send_text")) && n > 0 &&
+                           n <= max && m_gate && m_bridge);
     });
     refreshRecipients();
     m_entry->textChanged(QString());
 }
 
 void CrewMessagesPanel::setCommandGate(CommandGate* gate) {
+    if (m_gate)
+        disconnect(m_gate, nullptr, this, nullptr);
     m_gate = gate;
+    if (gate)
+        connect(gate, &CommandGate::permissionsChanged, this,
+                [this] { m_entry->textChanged(m_entry->text()); });
     m_entry->textChanged(m_entry->text());
 }
 

@@ -3,8 +3,11 @@
 // Console B sees the vehicle held by A and asks with a reason (keyboard: type it, Enter); A's banner shows
 // who asks and why with a countdown, and A's operator accepts, denies or asks to wait from the keyboard; the
 // outcome shows on both consoles; each step is a gate command with its per-target result. With
-// OCU_SCREENSHOT_DIR set, A's panel with the prompt is saved at 1366x768.
+// the consoles in one control room (the shared history's presence) the prompt and the ask name the operator
+// at the other console beside its JAUS ID. With OCU_SCREENSHOT_DIR set, A's panel with the prompt is saved at
+// 1366x768.
 #include "models/CommandGate.h"
+#include "models/ControlRoomModel.h"
 #include "models/FleetContext.h"
 #include "models/FleetSelection.h"
 #include "models/bridges/JausBridge.h"
@@ -74,7 +77,8 @@ class TestHandoffBanner : public QObject {
     Q_OBJECT
 
     // A holds the UGV; B, with it selected, asks for it from the keyboard. Returns with A's prompt shown.
-    void askFromB(Console& a, Console& b) {
+    void askFromB(Console& a, Console& b, const QString& holder = QStringLiteral("200.1.1"),
+                  const QString& asker = QStringLiteral("Console 201.1.1")) {
         QTRY_VERIFY_WITH_TIMEOUT(a.ugv() && a.ugv()->handoff.offered && b.ugv() && b.ugv()->handoff.offered,
                                  15000);
         a.ctx.gate()->command(RequestControl{QStringLiteral("jaus:126")}, QStringLiteral("gui"));
@@ -82,8 +86,8 @@ class TestHandoffBanner : public QObject {
         QVERIFY(!a.banner()->isVisible()); // nothing to ask or answer on A
         b.ctx.selection()->setCurrent(QStringLiteral("jaus:126"));
         QTRY_VERIFY_WITH_TIMEOUT(b.banner()->askButton()->isVisible(), 15000);
-        QVERIFY(
-            b.banner()->findChild<QLabel*>(QStringLiteral("handoff-ask-text"))->text().contains("200.1.1"));
+        const QString askText = b.banner()->findChild<QLabel*>(QStringLiteral("handoff-ask-text"))->text();
+        QVERIFY2(askText.contains(holder), qPrintable(askText));
         b.banner()->reasonEdit()->setFocus();
         QTest::keyClicks(b.banner()->reasonEdit(), QStringLiteral("shift change"));
         QTest::keyClick(b.banner()->reasonEdit(), Qt::Key_Return);
@@ -92,7 +96,7 @@ class TestHandoffBanner : public QObject {
                  qPrintable(b.result(QStringLiteral("handoff_request"))->message));
         QTRY_VERIFY_WITH_TIMEOUT(a.banner()->promptShown(), 15000);
         const QString prompt = a.banner()->promptText();
-        QVERIFY2(prompt.contains("Console 201.1.1 asks for control of UGV-126 (authority 205)"),
+        QVERIFY2(prompt.contains(asker + QStringLiteral(" asks for control of UGV-126 (authority 205)")),
                  qPrintable(prompt));
         QVERIFY2(prompt.contains("Reason: OCU-201: shift change"), qPrintable(prompt));
         QVERIFY2(prompt.contains("Answer within"), qPrintable(prompt));
@@ -143,6 +147,33 @@ private slots:
 
     // A answers "wait": B shows it and keeps the request up (re-asserted past the vehicle's 5 s request
     // timeout), A's prompt stays with the decision time started again; A then accepts.
+    void namedByTheControlRoom() {
+        sim::JausDemo demo(demoOptions());
+        Console a(demo, 200), b(demo, 201);
+        // The room as both consoles read it from the shared history: who sits where, and the JAUS
+        // addresses their stacks control with.
+        ControlRoomModel room;
+        ConsolePresence alice;
+        alice.console = QStringLiteral("dispatch-desk");
+        alice.operatorName = QStringLiteral("alice");
+        alice.controllerAddresses = {QStringLiteral("jaus:200.1.1")};
+        ConsolePresence bob;
+        bob.console = QStringLiteral("ugv-desk");
+        bob.operatorName = QStringLiteral("bob");
+        bob.controllerAddresses = {QStringLiteral("jaus:201.1.1")};
+        room.setRoom({alice, bob});
+        a.banner()->setControlRoom(&room);
+        b.banner()->setControlRoom(&room);
+        askFromB(a, b, QStringLiteral("held by alice at dispatch-desk (console 200.1.1, authority 205)"),
+                 QStringLiteral("bob at ugv-desk (console 201.1.1)"));
+        // bob leaves the room (his console's presence gone): the prompt falls back to the JAUS ID.
+        room.setRoom({alice});
+        QVERIFY2(a.banner()->promptText().contains("Console 201.1.1 asks"),
+                 qPrintable(a.banner()->promptText()));
+        a.banner()->denyButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(b.banner()->statusText().contains("Denied"), 15000);
+    }
+
     void waitThenAccepted() {
         sim::JausDemo demo(demoOptions());
         Console a(demo, 200), b(demo, 201);
