@@ -268,6 +268,8 @@ private:
     void drawPassCount(QPainter& p, const QSize& size);
     void drawLegend(QPainter& p, const QSize& size);
     QRectF legendRect(const QSize& size) const;
+    struct LegendEntries legendEntries() const;
+    QString legendTitle() const;
     void drawScaleBar(QPainter& p, const QSize& size);
     void drawNorthArrow(QPainter& p, const QSize& size);
     void drawCursor(QPainter& p, const QSize& size);

@@ -52,57 +52,116 @@ void SiteMapView::drawPassCount(QPainter& p, const QSize& size) {
     m_passImageTarget = m_target;
 }
 
-void SiteMapView::drawLegend(QPainter& p, const QSize& size) {
-    QStringList labels;
+// The legend's entries: the nine pass counts, or the three classes against the target (with their short
+// forms for the one-row legend of a small map).
+struct LegendEntries {
+    QStringList labels, shortLabels;
     QVector<QColor> colours;
+};
+
+namespace {
+
+// A legend that would take more than this share of the map's height becomes one row (a small map, such as
+// the UGV workspace's above the drive controls, keeps its picture).
+constexpr double kLegendMaxHeightShare = 0.4;
+
+struct LegendLayout {
+    QRect box;
+    bool oneRow = false;
+    int lineHeight = 0;
+    int swatch = 0; // one-row: the width of each colour cell
+};
+
+LegendLayout layOutLegend(const QFontMetrics& fm, const QString& title, const LegendEntries& e,
+                          const QSize& size) {
+    LegendLayout l;
+    l.lineHeight = fm.height() + 2;
+    const int columnH = l.lineHeight * (int(e.labels.size()) + 1) + 8;
+    l.oneRow = columnH > size.height() * kLegendMaxHeightShare;
+    if (!l.oneRow) {
+        int w = fm.horizontalAdvance(title) + 12;
+        for (const QString& s : e.labels)
+            w = std::max(w, fm.horizontalAdvance(s) + 34);
+        l.box = QRect(8, size.height() - columnH - 30, w, columnH);
+        return l;
+    }
+    for (const QString& s : e.shortLabels)
+        l.swatch = std::max(l.swatch, fm.horizontalAdvance(s) + 8);
+    const int h = l.lineHeight + 8;
+    const int w = 6 + fm.horizontalAdvance(title) + 6 + l.swatch * int(e.shortLabels.size()) + 6;
+    l.box = QRect(8, size.height() - h - 30, w, h);
+    return l;
+}
+
+} // namespace
+
+LegendEntries SiteMapView::legendEntries() const {
+    LegendEntries e;
     if (m_palette == PassPalette::Discrete) {
         for (int c = 1; c <= 9; ++c) {
-            labels << (c == 9 ? QStringLiteral("9+") : QString::number(c));
-            colours << passCountDiscreteColor(c);
+            e.labels << (c == 9 ? QStringLiteral("9+") : QString::number(c));
+            e.colours << passCountDiscreteColor(c);
         }
+        e.shortLabels = e.labels;
     } else {
-        labels << tr("below (<%1)").arg(m_target.min)
-               << tr("within %1–%2").arg(m_target.min).arg(m_target.max)
-               << tr("above (>%1)").arg(m_target.max);
+        e.labels << tr("below (<%1)").arg(m_target.min)
+                 << tr("within %1–%2").arg(m_target.min).arg(m_target.max)
+                 << tr("above (>%1)").arg(m_target.max);
+        e.shortLabels << QStringLiteral("<%1").arg(m_target.min)
+                      << QStringLiteral("%1–%2").arg(m_target.min).arg(m_target.max)
+                      << QStringLiteral(">%1").arg(m_target.max);
         const PassTarget t{2, 3}; // representative counts for the three classes
-        colours << passCountSummaryColor(1, t) << passCountSummaryColor(2, t) << passCountSummaryColor(4, t);
+        e.colours << passCountSummaryColor(1, t) << passCountSummaryColor(2, t)
+                  << passCountSummaryColor(4, t);
     }
+    return e;
+}
+
+QString SiteMapView::legendTitle() const {
+    return tr("Passes · target %1–%2").arg(m_target.min).arg(m_target.max);
+}
+
+void SiteMapView::drawLegend(QPainter& p, const QSize& size) {
+    const LegendEntries e = legendEntries();
     QFont font = p.font();
     font.setPointSizeF(8);
     font.setBold(false);
     p.setFont(font);
     const QFontMetrics fm(font);
-    const int lh = fm.height() + 2;
-    const QString title = tr("Passes · target %1–%2").arg(m_target.min).arg(m_target.max);
-    int w = fm.horizontalAdvance(title) + 12;
-    for (const QString& l : labels)
-        w = std::max(w, fm.horizontalAdvance(l) + 34);
-    const int h = lh * (int(labels.size()) + 1) + 8;
-    const QRect box(8, size.height() - h - 30, w, h);
+    const QString title = legendTitle();
+    const LegendLayout l = layOutLegend(fm, title, e, size);
+    const QRect box = l.box;
     p.setRenderHint(QPainter::Antialiasing, false);
     // Night palette: a dark box with light text like the machine labels (a white box glared at night).
     p.fillRect(box, m_night ? QColor(30, 30, 34, 235) : QColor(255, 255, 255, 230));
     p.setPen(QPen(m_night ? QColor(0x90, 0x90, 0x90) : QColor(Qt::gray), 0));
     p.drawRect(box);
-    p.setPen(m_night ? QColor(0xe6, 0xe6, 0xe0) : QColor(Qt::black));
+    const QColor text = m_night ? QColor(0xe6, 0xe6, 0xe0) : QColor(Qt::black);
+    p.setPen(text);
     p.drawText(box.left() + 6, box.top() + 4 + fm.ascent(), title);
-    for (int i = 0; i < labels.size(); ++i) {
-        const int y = box.top() + 4 + lh * (i + 1);
-        p.fillRect(QRect(box.left() + 6, y + 1, 18, lh - 4), colours[i]);
-        p.drawText(box.left() + 30, y + fm.ascent(), labels[i]);
+    if (l.oneRow) {
+        // Each count's colour with its number in it, in black or white by the colour's lightness.
+        int x = box.left() + 6 + fm.horizontalAdvance(title) + 6;
+        for (int i = 0; i < e.shortLabels.size(); ++i, x += l.swatch) {
+            const QRect cell(x, box.top() + 3, l.swatch, l.lineHeight + 2);
+            p.fillRect(cell, e.colours[i]);
+            p.setPen(e.colours[i].lightnessF() > 0.55 ? QColor(Qt::black) : QColor(Qt::white));
+            p.drawText(cell, Qt::AlignCenter, e.shortLabels[i]);
+        }
+    } else {
+        for (int i = 0; i < e.labels.size(); ++i) {
+            const int y = box.top() + 4 + l.lineHeight * (i + 1);
+            p.fillRect(QRect(box.left() + 6, y + 1, 18, l.lineHeight - 4), e.colours[i]);
+            p.drawText(box.left() + 30, y + fm.ascent(), e.labels[i]);
+        }
     }
     p.setRenderHint(QPainter::Antialiasing, true);
 }
 
 QRectF SiteMapView::legendRect(const QSize& size) const {
-    // Mirrors drawLegend's box (title + 9 or 3 rows at 8 pt).
     QFont font = this->font();
     font.setPointSizeF(8);
-    const QFontMetrics fm(font);
-    const int lh = fm.height() + 2;
-    const int rows = m_palette == PassPalette::Discrete ? 9 : 3;
-    const int h = lh * (rows + 1) + 8;
-    return QRectF(8, size.height() - h - 30, 200, h);
+    return layOutLegend(QFontMetrics(font), legendTitle(), legendEntries(), size).box;
 }
 
 void SiteMapView::drawScaleBar(QPainter& p, const QSize& size) {

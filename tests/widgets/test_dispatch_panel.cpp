@@ -398,7 +398,12 @@ private slots:
                               DispatchRoute{kLink, {1, 10}, 300, {}, false});
         r.panel.setCurrentTruck(QStringLiteral("iso23725:T1"));
         QCOMPARE(r.panel.destinationBox()->currentText(), QStringLiteral("Shovel A — Load"));
-        QVERIFY(r.panel.routeOverlay()->isPreview());
+        // Only while the panel is in front of the dispatcher (another workspace's map shows no preview).
+        r.panel.hide();
+        QTRY_VERIFY(r.panel.routeOverlay()->path().isEmpty());
+        r.panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&r.panel));
+        QTRY_VERIFY(r.panel.routeOverlay()->isPreview());
         QCOMPARE(r.panel.routeOverlay()->path(), QVector<QPointF>({{0, 0}, {100, 0}, {310, 0}}));
         // Another route redraws the layer: the old line (road 2, north of x=100) is gone, the new one there.
         {

@@ -5,6 +5,7 @@
 #include "models/FleetSelection.h"
 #include "widgets/ColumnFit.h"
 #include "widgets/CommandPermissionHint.h"
+#include "widgets/OnScreenWatcher.h"
 #include "widgets/SiteMapView.h"
 #include "widgets/dispatch/CachedTextDelegate.h"
 #include "widgets/dispatch/RouteOverlay2D.h"
@@ -288,6 +289,9 @@ void DispatchPanel::connectControls(DispatchSource* source, FleetSelection* sele
 
     if (m_gate)
         connect(m_gate, &CommandGate::permissionsChanged, this, &DispatchPanel::updateControls);
+    // The preview is a question the dispatcher asks at this panel: another workspace's map does not show it.
+    m_onScreen = new OnScreenWatcher(this);
+    connect(m_onScreen, &OnScreenWatcher::changed, this, &DispatchPanel::updateRoute);
     connect(m_assign, &QPushButton::clicked, this, &DispatchPanel::assignCurrent);
     connect(m_reset, &QPushButton::clicked, this, &DispatchPanel::resetCurrent);
     connect(m_pick, &QPushButton::toggled, this, &DispatchPanel::pickOnMap);
@@ -514,7 +518,8 @@ void DispatchPanel::updateRoute() {
                 QStringLiteral("%1 → %2 · ETA %3")
                     .arg(t.name, m_model->data(m_model->index(row, DispatchModel::ColDestination)).toString(),
                          m_model->data(m_model->index(row, DispatchModel::ColEta)).toString());
-        } else if (const auto area = currentArea(); area && m_source) {
+        } else if (const auto area = currentArea();
+                   area && m_source && m_onScreen && m_onScreen->onScreen()) {
             // No task: the route the truck would drive to the chosen destination, before it is sent.
             r = m_source->routeTo(t.id, *area);
             preview = true;

@@ -26,6 +26,7 @@ class AutoDispatcher;
 class CommandGate;
 class FleetSelection;
 class SiteMapView;
+class OnScreenWatcher;
 class RouteOverlay2D;
 struct CommandResult;
 
@@ -111,6 +112,7 @@ private:
     QLabel* m_refusal = nullptr;
     QLabel* m_result = nullptr;
     RouteOverlay2D* m_overlay = nullptr;
+    OnScreenWatcher* m_onScreen = nullptr;
     QString m_current;
     QString m_pickFor; // the truck a map pick is for
     // The last request sent from here, to show the truck's answer when it comes.
