@@ -183,6 +183,47 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(view.passOverlayComplete(), 10000);
         QVERIFY(!view.property("screenshotPending").toBool());
     }
+
+    // The legend lists the counts down the side of a tall map and in one row on a small one (the UGV
+    // workspace's map above the drive controls), where nine rows would cover most of it.
+    void theLegendIsOneRowOnASmallMap() {
+        auto layer = strip();
+        SiteMapView view;
+        for (auto l : {SiteMapView::LayerMap, SiteMapView::LayerMapNames, SiteMapView::LayerMachines,
+                       SiteMapView::LayerLabels, SiteMapView::LayerTrails, SiteMapView::LayerOwnPosition,
+                       SiteMapView::LayerScaleBar, SiteMapView::LayerNorthArrow, SiteMapView::LayerCursor})
+            view.setLayerVisible(l, false);
+        view.setPassCountLayer(layer.get());
+        const auto swatch = [](const QImage& img, int count) {
+            const QRgb want = passCountDiscreteColor(count).rgb();
+            QRect r;
+            for (int y = 0; y < img.height(); ++y)
+                for (int x = 0; x < img.width(); ++x)
+                    if ((img.pixel(x, y) & 0xffffff) == (want & 0xffffff))
+                        r |= QRect(x, y, 1, 1);
+            return r;
+        };
+        for (const QSize size : {QSize(800, 600), QSize(800, 200)}) {
+            view.resize(size);
+            view.setView(QPointF(1e6, 1e6), 1.0); // away from the strip: only the legend has these colours
+            QImage img(size, QImage::Format_RGB32);
+            img.fill(Qt::white);
+            {
+                QPainter p(&img);
+                view.paintScene(p, size);
+            }
+            const QRect one = swatch(img, 1), nine = swatch(img, 9);
+            QVERIFY(!one.isEmpty() && !nine.isEmpty());
+            if (size.height() > 300) { // a column: 9+ below 1
+                QCOMPARE(nine.left(), one.left());
+                QVERIFY(nine.top() > one.bottom());
+            } else { // a row: 9+ right of 1, the legend within the lowest quarter
+                QCOMPARE(nine.top(), one.top());
+                QVERIFY(nine.left() > one.right());
+                QVERIFY2(one.top() > size.height() * 3 / 4 - 30, qPrintable(QString::number(one.top())));
+            }
+        }
+    }
 };
 
 QTEST_MAIN(TestPassCountOverlay)
